@@ -1,0 +1,13 @@
+#include "solver/common/errors.h"
+
+#include <fmt/format.h>
+
+namespace flexure {
+
+void require_finite(double value, const std::string& what) {
+  if (!std::isfinite(value)) {
+    throw InvalidInput(fmt::format("{} must be a finite number (got {})", what, value));
+  }
+}
+
+}  // namespace flexure
