@@ -13,31 +13,9 @@
 #include <vector>
 
 #include "solver/common/end_load.h"
+#include "solver/elliptic/elastica_parameters.h"
 
 namespace flexure {
-
-enum class ElasticaFamily {
-  kStraight,          // no transverse load and no moment: the beam stays straight
-  kCircularArc,       // no force: a circular arc of curvature mu (eqs. 2.53-2.64)
-  kInflectional,      // family A, -F < H < F: curvature may change sign
-  kNonInflectional,   // family B, H > F: curvature keeps its sign (needs mu != 0)
-};
-const char* to_string(ElasticaFamily family);
-
-// Everything needed to evaluate the closed-form shape at any arc length. Filled by the solver.
-struct ElasticaParameters {
-  ElasticaFamily family = ElasticaFamily::kStraight;
-  double force = 0.0;       // F = |(Fx, Fy)| (after reflection so that Fy >= 0)
-  double psi = 0.0;         // force angle in [0, pi] (after reflection)
-  bool reflected = false;   // true when the problem was mirrored about the x axis (Fy < 0)
-  double mu = 0.0;          // end moment (after reflection)
-  double chi_tip = 0.0;     // pendulum angle at the tip, chi = theta - psi + pi (after reflection)
-  double modulus2 = 0.0;    // k^2 (family A) or m (family B)
-  double complement2 = 1.0; // 1 - modulus2, kept separately for accuracy near the separatrix
-  double u_root = 0.0;      // elliptic argument at the clamp
-  double u_tip = 0.0;       // elliptic argument at the tip
-  int winding = 0;          // family A: chi oscillates about 2*pi*winding
-};
 
 struct EllipticResult {
   bool converged = false;

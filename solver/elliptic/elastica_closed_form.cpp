@@ -1,0 +1,188 @@
+#include "solver/elliptic/elastica_closed_form.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "solver/elliptic/elliptic_functions.h"
+
+namespace flexure {
+
+const char* to_string(ElasticaFamily family) {
+  switch (family) {
+    case ElasticaFamily::kStraight:
+      return "straight";
+    case ElasticaFamily::kCircularArc:
+      return "circular arc";
+    case ElasticaFamily::kInflectional:
+      return "inflectional";
+    case ElasticaFamily::kNonInflectional:
+      return "non-inflectional";
+  }
+  return "unknown";
+}
+
+namespace elliptic {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+Parameter parameter_of(const ElasticaParameters& p) { return {p.modulus2, p.complement2}; }
+
+}  // namespace
+
+PendulumProblem make_pendulum_problem(double force, double psi, double mu) {
+  PendulumProblem p;
+  p.force = force;
+  p.psi = psi;
+  p.mu = mu;
+  p.chi0 = kPi - psi;
+  p.s0 = std::cos(0.5 * psi);
+  p.c0 = std::sin(0.5 * psi);
+  return p;
+}
+
+BackwardIntegration integrate_from_tip(const PendulumProblem& problem, double chi_tip) {
+  const double F = problem.force;
+  const double mu = problem.mu;
+  const double half_sin = std::sin(0.5 * chi_tip);
+  const double half_cos = std::cos(0.5 * chi_tip);
+  // (H + F)/2 = mu^2/4 + F sin^2(chi1/2) and (F - H)/2 = F cos^2(chi1/2) - mu^2/4: the sign of the
+  // second decides the family (elastica-general.md, "Pendulum form").
+  const double h_plus = 0.25 * mu * mu + F * half_sin * half_sin;
+  const double h_minus = F * half_cos * half_cos - 0.25 * mu * mu;
+
+  BackwardIntegration out;
+  ElasticaParameters& e = out.parameters;
+  e.force = F;
+  e.psi = problem.psi;
+  e.mu = mu;
+  e.chi_tip = chi_tip;
+  if (h_minus > 0.0 || mu == 0.0) {
+    // Family A: sin(chi/2) = k sn(u), chi' = 2 k sqrt(F) cn(u), u = sqrt(F) s + u0.
+    e.family = ElasticaFamily::kInflectional;
+    e.modulus2 = h_plus / F;
+    e.complement2 = std::max(h_minus / F, 0.0);
+    const Parameter k{e.modulus2, e.complement2};
+    const double sqrtF = std::sqrt(F);
+    e.winding = static_cast<int>(std::nearbyint(chi_tip / (2.0 * kPi)));
+    const double chi_reduced = chi_tip - 2.0 * kPi * e.winding;
+    // Tip amplitude: sin(phi1) = sin(chi1/2)/k, cos(phi1) = mu/(2 k sqrt(F)).
+    const double phi_tip = std::atan2(std::sin(0.5 * chi_reduced), 0.5 * mu / sqrtF);
+    e.u_tip = incomplete_F(phi_tip, k);
+    e.u_root = e.u_tip - sqrtF;
+    const double phi_root = jacobi_amplitude(e.u_root, k);
+    out.chi_root = 2.0 * kPi * e.winding +
+                   2.0 * std::atan2(std::sqrt(e.modulus2) * std::sin(phi_root),
+                                    delta_amplitude(phi_root, k));
+  } else {
+    // Family B: chi = 2 am(v), chi' = 2 sigma q dn(v), v = sigma q s + v0, q^2 = (H + F)/2.
+    e.family = ElasticaFamily::kNonInflectional;
+    e.modulus2 = F / h_plus;
+    e.complement2 = -h_minus / h_plus;
+    const Parameter m{e.modulus2, e.complement2};
+    const double q = std::sqrt(h_plus);
+    const double sigma = mu > 0.0 ? 1.0 : -1.0;
+    e.u_tip = incomplete_F(0.5 * chi_tip, m);
+    e.u_root = e.u_tip - sigma * q;
+    out.chi_root = 2.0 * jacobi_amplitude(e.u_root, m);
+  }
+  return out;
+}
+
+double tip_angle_residual(const PendulumProblem& problem, double chi_tip) {
+  return integrate_from_tip(problem, chi_tip).chi_root - problem.chi0;
+}
+
+ShapePoint evaluate_normalised(const ElasticaParameters& p, double s) {
+  ShapePoint point;
+  point.s = s;
+  if (p.family == ElasticaFamily::kStraight) {
+    point.x = s;
+    return point;
+  }
+  if (p.family == ElasticaFamily::kCircularArc) {
+    // Howell eqs. 2.53, 2.59, 2.64 at arc length s: theta = mu s.
+    const double t = p.mu * s;
+    point.theta = t;
+    if (p.mu == 0.0) {
+      point.x = s;
+    } else {
+      point.x = std::sin(t) / p.mu;
+      const double h = std::sin(0.5 * t);
+      point.y = 2.0 * h * h / p.mu;
+    }
+    return point;
+  }
+  const Parameter k = parameter_of(p);
+  double chi = 0.0;
+  double sin2_integral = 0.0;  // I(s) = int_0^s sin^2(chi/2) ds
+  double sin_integral = 0.0;   // J(s) = int_0^s sin(chi) ds
+  if (p.family == ElasticaFamily::kInflectional) {
+    const double sqrtF = std::sqrt(p.force);
+    const double kk = std::sqrt(p.modulus2);
+    const double phi0 = jacobi_amplitude(p.u_root, k);
+    const double phi = jacobi_amplitude(p.u_root + sqrtF * s, k);
+    const double d0 = incomplete_integrals(phi0, k).D_over_m;
+    const double d = incomplete_integrals(phi, k).D_over_m;
+    // int k^2 sn^2 du = u - E(u); int 2k sn dn du = -2k cn(u)  (elastica-general.md, family A)
+    sin2_integral = p.modulus2 * (d - d0) / sqrtF;
+    sin_integral = 4.0 * kk * std::sin(0.5 * (phi + phi0)) * std::sin(0.5 * (phi - phi0)) / sqrtF;
+    chi = 2.0 * kPi * p.winding +
+          2.0 * std::atan2(kk * std::sin(phi), delta_amplitude(phi, k));
+  } else {
+    const double span = p.u_tip - p.u_root;  // sigma q
+    const double phi0 = jacobi_amplitude(p.u_root, k);
+    const double phi = jacobi_amplitude(p.u_root + span * s, k);
+    const double d0 = incomplete_integrals(phi0, k).D_over_m;
+    const double d = incomplete_integrals(phi, k).D_over_m;
+    // int sn^2 dv = (v - E(v))/m; int 2 sn cn dv = -2 dn/m, written without cancellation.
+    sin2_integral = (d - d0) / span;
+    sin_integral = 2.0 * std::sin(phi - phi0) * std::sin(phi + phi0) /
+                   (span * (delta_amplitude(phi, k) + delta_amplitude(phi0, k)));
+    chi = 2.0 * phi;
+  }
+  // Tangent in the force frame: t.eF = -cos chi, t.ePerp = -sin chi; rotate back by psi.
+  const double cos_integral = s - 2.0 * sin2_integral;
+  const double cp = std::cos(p.psi);
+  const double sp = std::sin(p.psi);
+  point.x = -cp * cos_integral + sp * sin_integral;
+  point.y = -cp * sin_integral - sp * cos_integral;
+  point.theta = chi + p.psi - kPi;
+  return point;
+}
+
+double root_curvature(const ElasticaParameters& p) {
+  switch (p.family) {
+    case ElasticaFamily::kStraight:
+      return 0.0;
+    case ElasticaFamily::kCircularArc:
+      return p.mu;
+    case ElasticaFamily::kInflectional: {
+      const Parameter k = parameter_of(p);
+      const double phi0 = jacobi_amplitude(p.u_root, k);
+      return 2.0 * std::sqrt(p.modulus2 * p.force) * std::cos(phi0);
+    }
+    case ElasticaFamily::kNonInflectional: {
+      const Parameter m = parameter_of(p);
+      const double phi0 = jacobi_amplitude(p.u_root, m);
+      return 2.0 * (p.u_tip - p.u_root) * delta_amplitude(phi0, m);
+    }
+  }
+  return 0.0;
+}
+
+int count_inflection_points(const ElasticaParameters& p) {
+  if (p.family != ElasticaFamily::kInflectional) return 0;
+  // Curvature 2k sqrt(F) cn(u) vanishes where am(u) = pi/2 + j pi, strictly inside the beam.
+  const Parameter k = parameter_of(p);
+  const double phi0 = jacobi_amplitude(p.u_root, k);
+  const double phi1 = jacobi_amplitude(p.u_tip, k);
+  // A zero within 1e-9 rad of an end (e.g. the tip of a beam with mu = 0) is not interior.
+  constexpr double kEndSlack = 1e-9;
+  const double j_min = std::floor((phi0 - 0.5 * kPi) / kPi + kEndSlack) + 1.0;
+  const double j_max = std::ceil((phi1 - 0.5 * kPi) / kPi - kEndSlack) - 1.0;
+  return std::max(0, static_cast<int>(j_max - j_min + 1.0));
+}
+
+}  // namespace elliptic
+}  // namespace flexure

@@ -1,0 +1,45 @@
+#pragma once
+// Closed-form evaluation of the planar elastica as a pendulum (elastica-general.md).
+//
+// Normalised problem: force F >= 0 at angle psi in [0, pi] (the caller mirrors problems with
+// Fy < 0), end moment mu. With chi = theta - psi + pi the equilibrium equation theta'' =
+// F sin(theta - psi) becomes chi'' = -F sin chi, first integral chi'^2/2 - F cos chi = H.
+// The clamp fixes chi(0) = chi0 = pi - psi; the tip fixes chi'(1) = mu.
+//
+// The forward problem is solved for the tip angle chi1: given chi1, the tip state (chi1, mu) fixes H
+// and the whole trajectory, which is integrated back to s = 0 in closed form; the residual is the
+// root angle reached minus chi0. Shooting from the tip (rather than from the clamp with the root
+// moment) is well conditioned for tension loads, where the beam approaches the pendulum's
+// unstable top towards the tip.
+#include "solver/elliptic/elastica_parameters.h"
+
+namespace flexure::elliptic {
+
+struct PendulumProblem {
+  double force = 0.0;  // F > 0
+  double psi = 0.0;    // force angle in [0, pi]
+  double mu = 0.0;     // end moment
+  double chi0 = 0.0;   // pi - psi: pendulum angle at the clamp
+  double s0 = 0.0;     // sin(chi0 / 2) = cos(psi / 2)
+  double c0 = 1.0;     // cos(chi0 / 2) = sin(psi / 2)
+};
+PendulumProblem make_pendulum_problem(double force, double psi, double mu);
+
+// Trajectory through the tip state (chi_tip, mu), integrated back to the clamp.
+struct BackwardIntegration {
+  ElasticaParameters parameters;
+  double chi_root = 0.0;  // pendulum angle reached at s = 0
+};
+BackwardIntegration integrate_from_tip(const PendulumProblem& problem, double chi_tip);
+
+// Tip-angle residual: chi(0) - chi0 for the trajectory through (chi_tip, mu).
+double tip_angle_residual(const PendulumProblem& problem, double chi_tip);
+
+// Position and angle at arc length s in [0, 1] in the normalised (unmirrored) frame.
+ShapePoint evaluate_normalised(const ElasticaParameters& parameters, double s);
+
+// Curvature at the clamp (root moment) and number of interior inflection points.
+double root_curvature(const ElasticaParameters& parameters);
+int count_inflection_points(const ElasticaParameters& parameters);
+
+}  // namespace flexure::elliptic

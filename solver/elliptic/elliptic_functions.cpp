@@ -1,0 +1,105 @@
+#include "solver/elliptic/elliptic_functions.h"
+
+#include <fmt/format.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_sf_ellint.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "solver/common/errors.h"
+#include "solver/common/gsl_guard.h"
+
+namespace flexure::elliptic {
+namespace {
+
+struct GslHandlerOff {
+  GslHandlerOff() { disable_gsl_abort(); }
+};
+const GslHandlerOff gsl_handler_off;
+
+}  // namespace
+
+double carlson_rf(double x, double y, double z) {
+  gsl_sf_result r;
+  const int status = gsl_sf_ellint_RF_e(x, y, z, GSL_PREC_DOUBLE, &r);
+  if (status != GSL_SUCCESS) {
+    throw NoConvergence(fmt::format(
+        "GSL gsl_sf_ellint_RF({}, {}, {}) failed: {}", x, y, z, gsl_strerror(status)));
+  }
+  return r.val;
+}
+
+double carlson_rd(double x, double y, double z) {
+  gsl_sf_result r;
+  const int status = gsl_sf_ellint_RD_e(x, y, z, GSL_PREC_DOUBLE, &r);
+  if (status != GSL_SUCCESS) {
+    throw NoConvergence(fmt::format(
+        "GSL gsl_sf_ellint_RD({}, {}, {}) failed: {}", x, y, z, gsl_strerror(status)));
+  }
+  return r.val;
+}
+
+double complete_K(Parameter k) { return carlson_rf(0.0, k.mc, 1.0); }
+
+double complete_K_minus_E_over_m(Parameter k) { return carlson_rd(0.0, k.mc, 1.0) / 3.0; }
+
+double delta_amplitude(double phi, Parameter k) {
+  const double c = std::cos(phi);
+  return std::sqrt(k.mc + k.m * c * c);
+}
+
+IncompleteIntegrals incomplete_integrals(double phi, Parameter k) {
+  // Reduce to |phi_r| <= pi/2 and add whole half-periods (Howell eqs. F.17-F.18).
+  const double j = std::nearbyint(phi / std::numbers::pi);
+  const double phi_r = phi - j * std::numbers::pi;
+  const double s = std::sin(phi_r);
+  const double c = std::cos(phi_r);
+  const double delta2 = k.mc + k.m * c * c;
+  IncompleteIntegrals out;
+  if (s != 0.0) {
+    out.F = s * carlson_rf(c * c, delta2, 1.0);
+    out.D_over_m = s * s * s * carlson_rd(c * c, delta2, 1.0) / 3.0;
+  }
+  if (j != 0.0) {
+    out.F += 2.0 * j * complete_K(k);
+    out.D_over_m += 2.0 * j * complete_K_minus_E_over_m(k);
+  }
+  return out;
+}
+
+double incomplete_F(double phi, Parameter k) {
+  const double j = std::nearbyint(phi / std::numbers::pi);
+  const double phi_r = phi - j * std::numbers::pi;
+  const double s = std::sin(phi_r);
+  const double c = std::cos(phi_r);
+  double F = (s != 0.0) ? s * carlson_rf(c * c, k.mc + k.m * c * c, 1.0) : 0.0;
+  if (j != 0.0) F += 2.0 * j * complete_K(k);
+  return F;
+}
+
+double jacobi_amplitude(double u, Parameter k) {
+  if (k.m <= 0.0) return u;
+  if (k.mc <= 0.0) return 2.0 * std::atan(std::tanh(0.5 * u));  // m = 1: gudermannian
+  // Descending AGM (A&S 16.4.2-16.4.3): a_{n+1} = (a_n + b_n)/2, b_{n+1} = sqrt(a_n b_n),
+  // c_{n+1} = (a_n - b_n)/2; phi_N = 2^N a_N u; phi_{n-1} = (phi_n + asin(c_n/a_n sin phi_n))/2.
+  constexpr int kMaxLevels = 40;
+  double a[kMaxLevels + 1];
+  double c[kMaxLevels + 1];
+  a[0] = 1.0;
+  c[0] = std::sqrt(k.m);
+  double b = std::sqrt(k.mc);
+  int n = 0;
+  // Stop once c_n is at round-off: the next term, c_n^2 / (4 a_n), is then far below it.
+  while (n < kMaxLevels && std::fabs(c[n]) > 1e-15 * a[n]) {
+    a[n + 1] = 0.5 * (a[n] + b);
+    c[n + 1] = 0.5 * (a[n] - b);
+    b = std::sqrt(a[n] * b);
+    ++n;
+  }
+  double phi = std::ldexp(a[n] * u, n);
+  for (int i = n; i > 0; --i) phi = 0.5 * (phi + std::asin(c[i] / a[i] * std::sin(phi)));
+  return phi;
+}
+
+}  // namespace flexure::elliptic

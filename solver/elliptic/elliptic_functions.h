@@ -1,0 +1,45 @@
+#pragma once
+// Elliptic integrals and the Jacobi amplitude, for real amplitudes of any size.
+//
+// Every function takes the parameter m = k^2 together with its complement mc = 1 - m, computed by
+// the caller from quantities that keep full relative precision. Near the separatrix of the elastica
+// (m -> 1) the complement is 1e-8 or smaller; forming it as 1 - m would lose half the digits
+// (elastica-general.md, "Limits that need their own code path"). The integrals use Carlson's
+// symmetric forms from GSL (gsl_sf_ellint_RF / RD), which accept the complement directly:
+//   F(phi|m) = sin(phi) RF(cos^2 phi, 1 - m sin^2 phi, 1)                      (DLMF 19.25.5)
+//   F(phi|m) - E(phi|m) = (m/3) sin^3(phi) RD(cos^2 phi, 1 - m sin^2 phi, 1)   (DLMF 19.25.9)
+// extended to any real phi by F(phi + j pi) = F(phi) + 2 j K (Howell eqs. F.17-F.18).
+// GSL's own gsl_sf_elljac_e takes only m, so the amplitude am(u|m) is computed here by the
+// arithmetic-geometric mean (Abramowitz & Stegun 16.4), started from sqrt(mc).
+namespace flexure::elliptic {
+
+struct Parameter {
+  double m = 0.0;   // k^2, in [0, 1]
+  double mc = 1.0;  // 1 - k^2, in [0, 1]
+};
+
+// Carlson's symmetric integrals; throw NoConvergence if GSL reports an error.
+double carlson_rf(double x, double y, double z);
+double carlson_rd(double x, double y, double z);
+
+// K(m) = RF(0, mc, 1).
+double complete_K(Parameter k);
+// (K(m) - E(m)) / m = RD(0, mc, 1) / 3, finite as m -> 0.
+double complete_K_minus_E_over_m(Parameter k);
+
+// F(phi|m) and (F(phi|m) - E(phi|m)) / m for any real phi. Dividing by m keeps the second value
+// accurate when m -> 0 (pure end moment limit of the non-inflectional family).
+struct IncompleteIntegrals {
+  double F = 0.0;
+  double D_over_m = 0.0;
+};
+IncompleteIntegrals incomplete_integrals(double phi, Parameter k);
+double incomplete_F(double phi, Parameter k);
+
+// Jacobi amplitude am(u|m), continuous in u (am(u + 2K) = am(u) + pi).
+double jacobi_amplitude(double u, Parameter k);
+
+// delta(phi) = sqrt(1 - m sin^2 phi) = dn(u) at phi = am(u), formed as sqrt(mc + m cos^2 phi).
+double delta_amplitude(double phi, Parameter k);
+
+}  // namespace flexure::elliptic

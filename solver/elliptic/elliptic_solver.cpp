@@ -1,0 +1,183 @@
+#include "solver/elliptic/elliptic_solver.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "solver/common/errors.h"
+#include "solver/elliptic/elastica_closed_form.h"
+#include "solver/elliptic/howell_branch.h"
+#include "solver/elliptic/load_continuation.h"
+
+namespace flexure {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// Loads beyond this (in units of EI/l^2) put the separatrix closer than double precision can
+// resolve (k' ~ e^{-sqrt F}); no physical cantilever is loaded that far.
+constexpr double kMaxForce = 1e5;
+constexpr double kMaxMoment = 1e4;
+// Below this force the closed form would divide by numbers near underflow; linear theory is
+// exact to round-off there.
+constexpr double kNegligibleForce = 1e-200;
+
+void validate_load(const EndLoad& load) {
+  require_finite(load.Fx, "horizontal force Fx l^2/EI");
+  require_finite(load.Fy, "vertical force Fy l^2/EI (alpha2)");
+  require_finite(load.mu, "end moment mu = M l/EI");
+  if (std::hypot(load.Fx, load.Fy) > kMaxForce) {
+    throw InvalidInput(fmt::format(
+        "end force |F| l^2/EI = {:.6g} is outside the elliptic solver's range (at most {:.0e})",
+        std::hypot(load.Fx, load.Fy),
+        kMaxForce));
+  }
+  if (std::fabs(load.mu) > kMaxMoment) {
+    throw InvalidInput(fmt::format(
+        "end moment |mu| = {:.6g} is outside the elliptic solver's range (at most {:.0e})",
+        std::fabs(load.mu),
+        kMaxMoment));
+  }
+}
+
+// Mirrors a solution computed for (Fx, |Fy|, +-mu) back to the original sign of Fy.
+void unmirror(EllipticResult& r) {
+  if (!r.parameters.mirrored) return;
+  r.tip.b_over_l = -r.tip.b_over_l;
+  r.tip.theta0 = -r.tip.theta0;
+  r.root_moment = -r.root_moment;
+}
+
+void fill_from_parameters(EllipticResult& r) {
+  const ShapePoint tip = elliptic::evaluate_normalised(r.parameters, 1.0);
+  r.tip = {tip.x, tip.y, tip.theta};
+  r.root_moment = elliptic::root_curvature(r.parameters);
+  r.inflection_points = elliptic::count_inflection_points(r.parameters);
+}
+
+}  // namespace
+
+EllipticResult EllipticSolver::solve(const EndLoad& load) const {
+  validate_load(load);
+  EllipticResult r;
+  r.load = load;
+  ElasticaParameters& p = r.parameters;
+  p.mirrored = load.Fy < 0.0;
+  const double Fy = std::fabs(load.Fy);
+  const double mu = p.mirrored ? -load.mu : load.mu;
+  const double force = std::hypot(load.Fx, Fy);
+  p.mu = mu;
+
+  if (force == 0.0 || (force < kNegligibleForce && mu != 0.0)) {
+    // Pure end moment: a circular arc (Howell eqs. 2.53-2.64).
+    p.family = mu == 0.0 ? ElasticaFamily::kStraight : ElasticaFamily::kCircularArc;
+    fill_from_parameters(r);
+    r.converged = true;
+    r.branch = "unique (pure end moment: circular arc)";
+  } else if (mu == 0.0 && (Fy == 0.0 || force < kNegligibleForce)) {
+    p.family = ElasticaFamily::kStraight;
+    p.force = force;
+    p.psi = std::atan2(Fy, load.Fx);
+    if (Fy == 0.0) {
+      fill_from_parameters(r);
+      r.branch = load.Fx < -kPi * kPi / 4.0
+                     ? "straight (proportional loading along the axis; above the Euler load "
+                       "pi^2/4 the straight shape is unstable and buckled equilibria exist)"
+                     : "straight (axial load only)";
+    } else {
+      // Linear theory, exact to round-off at this load: theta0 = Fy/2, b = Fy/3.
+      r.tip = {1.0, Fy / 3.0, Fy / 2.0};
+      r.root_moment = Fy;
+      r.branch = "linear theory (negligible load)";
+    }
+    r.converged = true;
+  } else if (mu == 0.0) {
+    const double psi = std::atan2(Fy, load.Fx);
+    const elliptic::HowellBranchSolution h =
+        elliptic::solve_howell_branch(force, psi, options_.tolerance);
+    r.iterations = h.iterations;
+    r.residual = std::fabs(h.residual);
+    if (h.converged) {
+      p = h.parameters;
+      p.mirrored = load.Fy < 0.0;
+      r.tip = h.tip;
+      r.root_moment = h.root_moment;
+      r.inflection_points = 0;
+      r.converged = true;
+      r.branch = "proportional loading (unique for mu = 0: 0 < theta0 < force angle)";
+    } else {
+      r.message = fmt::format(
+          "elliptic solve for n-branch did not converge (force {:.6g}, angle {:.6g} rad)",
+          force,
+          psi);
+    }
+  } else {
+    const double psi = std::atan2(Fy, load.Fx);
+    elliptic::ContinuationOptions copts;
+    copts.x_tolerance = options_.tolerance;
+    copts.max_steps = options_.max_continuation_steps;
+    const elliptic::ContinuationSolution c =
+        elliptic::solve_by_continuation(force, psi, mu, copts);
+    r.iterations = c.iterations;
+    r.continuation_steps = c.steps;
+    r.residual = std::fabs(c.residual);
+    if (c.converged) {
+      const elliptic::PendulumProblem problem = elliptic::make_pendulum_problem(force, psi, mu);
+      p = elliptic::integrate_from_tip(problem, c.chi_tip).parameters;
+      p.mirrored = load.Fy < 0.0;
+      fill_from_parameters(r);
+      r.converged = true;
+      r.branch = fmt::format("proportional loading (continuation in {} load steps)", c.steps);
+    } else {
+      r.message = c.message;
+    }
+  }
+  if (r.converged) {
+    unmirror(r);
+    if (!(std::isfinite(r.tip.a_over_l) && std::isfinite(r.tip.b_over_l) &&
+          std::isfinite(r.tip.theta0))) {
+      r.converged = false;
+      r.message = "elliptic solution evaluated to a non-finite tip (internal error)";
+    } else {
+      r.message = "converged";
+    }
+  }
+  return r;
+}
+
+std::vector<ShapePoint> EllipticSolver::shape(const EllipticResult& result, int count) const {
+  if (count < 2) {
+    throw InvalidInput(fmt::format("shape point count must be at least 2 (got {})", count));
+  }
+  std::vector<double> s(static_cast<std::size_t>(count));
+  for (int i = 0; i < count; ++i) s[static_cast<std::size_t>(i)] = double(i) / (count - 1);
+  return shape_at(result, s);
+}
+
+std::vector<ShapePoint> EllipticSolver::shape_at(const EllipticResult& result,
+                                                 const std::vector<double>& s) const {
+  if (!result.converged) throw InvalidInput("cannot evaluate the shape of an unconverged result");
+  std::vector<ShapePoint> points;
+  points.reserve(s.size());
+  for (double si : s) {
+    if (!(si >= 0.0 && si <= 1.0)) {
+      throw InvalidInput(fmt::format("arc length s = {} is outside [0, 1]", si));
+    }
+    ShapePoint p;
+    if (result.branch.rfind("linear theory", 0) == 0) {
+      // theta = Fy (s - s^2/2), y = Fy (s^2/2 - s^3/6) for a negligible load.
+      const double Fy = result.load.Fy;
+      p = {si, si, Fy * (0.5 * si * si - si * si * si / 6.0), Fy * (si - 0.5 * si * si)};
+    } else {
+      p = elliptic::evaluate_normalised(result.parameters, si);
+      if (result.parameters.mirrored) {
+        p.y = -p.y;
+        p.theta = -p.theta;
+      }
+    }
+    points.push_back(p);
+  }
+  return points;
+}
+
+}  // namespace flexure
