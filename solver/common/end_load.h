@@ -2,9 +2,9 @@
 // Loads on the free end of an initially straight cantilever, nondimensional (length l = 1, EI = 1).
 //
 // The beam is clamped at the origin with its tangent along +x. A dead force (Fx, Fy) = F l^2/EI and
-// an end moment mu = M l/EI (counter-clockwise positive) act at the tip. Howell's load ratio n gives
-// the horizontal component as nP with n > 0 compressive (Howell Fig. 2.14, eq. 2.67), so
-// Fy = alpha2 = P l^2/EI and Fx = -n * alpha2.
+// an end moment mu = M l/EI (counter-clockwise positive) act at the tip. Howell's load ratio n
+// gives the horizontal component as nP with n > 0 compressive (Howell Fig. 2.14, eq. 2.67), so Fy =
+// alpha2 = P l^2/EI and Fx = -n * alpha2.
 namespace flexure {
 
 struct EndLoad {

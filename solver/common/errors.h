@@ -3,8 +3,8 @@
 //
 // Bad input (NaN, negative length, unknown name, a load outside a method's domain) is reported by
 // throwing InvalidInput; the CLI maps it to exit code 2. A method that cannot produce a converged
-// solution returns a result with converged == false and a message; the CLI maps that to exit code 3.
-// Programmer errors are not caught.
+// solution returns a result with converged == false and a message; the CLI maps that to exit
+// code 3. Programmer errors are not caught.
 #include <cmath>
 #include <stdexcept>
 #include <string>

@@ -52,7 +52,10 @@ ScalarRootResult brent_root(const std::function<double(double)>& f,
         p = s * (2.0 * m * q * (q - r) - (b - a) * (r - 1.0));
         q = (q - 1.0) * (r - 1.0) * (s - 1.0);
       }
-      if (p > 0.0) q = -q; else p = -p;
+      if (p > 0.0)
+        q = -q;
+      else
+        p = -p;
       if (2.0 * p < std::min(3.0 * m * q - std::fabs(tol * q), std::fabs(e * q))) {
         e = d;
         d = p / q;

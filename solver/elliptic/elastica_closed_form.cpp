@@ -41,11 +41,14 @@ PendulumProblem make_pendulum_problem(double force, double psi, double mu) {
   return p;
 }
 
-BackwardIntegration integrate_from_tip(const PendulumProblem& problem, double chi_tip) {
+BackwardIntegration integrate_from_tip(const PendulumProblem& problem, double tip_from_force) {
   const double F = problem.force;
   const double mu = problem.mu;
-  const double half_sin = std::sin(0.5 * chi_tip);
-  const double half_cos = std::cos(0.5 * chi_tip);
+  const double t = tip_from_force;
+  const double chi_tip = t + kPi;
+  // sin(chi1/2) = cos(t/2), cos(chi1/2) = -sin(t/2).
+  const double half_sin = std::cos(0.5 * t);
+  const double half_cos = -std::sin(0.5 * t);
   // (H + F)/2 = mu^2/4 + F sin^2(chi1/2) and (F - H)/2 = F cos^2(chi1/2) - mu^2/4: the sign of the
   // second decides the family (elastica-general.md, "Pendulum form").
   const double h_plus = 0.25 * mu * mu + F * half_sin * half_sin;
@@ -63,17 +66,20 @@ BackwardIntegration integrate_from_tip(const PendulumProblem& problem, double ch
     e.modulus2 = h_plus / F;
     e.complement2 = std::max(h_minus / F, 0.0);
     const Parameter k{e.modulus2, e.complement2};
+    const double kk = std::sqrt(e.modulus2);
     const double sqrtF = std::sqrt(F);
     e.winding = static_cast<int>(std::nearbyint(chi_tip / (2.0 * kPi)));
-    const double chi_reduced = chi_tip - 2.0 * kPi * e.winding;
-    // Tip amplitude: sin(phi1) = sin(chi1/2)/k, cos(phi1) = mu/(2 k sqrt(F)).
-    const double phi_tip = std::atan2(std::sin(0.5 * chi_reduced), 0.5 * mu / sqrtF);
-    e.u_tip = incomplete_F(phi_tip, k);
+    // Tip amplitude: sin(phi1) = sin(chi1/2 - pi w)/k, cos(phi1) = mu/(2 k sqrt(F)); reduced to
+    // |phi_r| <= pi/2 by whole half-turns so that its cosine is never formed by subtraction.
+    const double sin_phi = (e.winding % 2 == 0 ? half_sin : -half_sin) / kk;
+    const double cos_phi = 0.5 * mu / (kk * sqrtF);
+    const int turns = cos_phi >= 0.0 ? 0 : (sin_phi >= 0.0 ? 1 : -1);
+    e.u_tip = turns == 0 ? incomplete_F(0, sin_phi, cos_phi, k)
+                         : incomplete_F(turns, -sin_phi, -cos_phi, k);
     e.u_root = e.u_tip - sqrtF;
     const double phi_root = jacobi_amplitude(e.u_root, k);
     out.chi_root = 2.0 * kPi * e.winding +
-                   2.0 * std::atan2(std::sqrt(e.modulus2) * std::sin(phi_root),
-                                    delta_amplitude(phi_root, k));
+                   2.0 * std::atan2(kk * std::sin(phi_root), delta_amplitude(phi_root, k));
   } else {
     // Family B: chi = 2 am(v), chi' = 2 sigma q dn(v), v = sigma q s + v0, q^2 = (H + F)/2.
     e.family = ElasticaFamily::kNonInflectional;
@@ -82,15 +88,19 @@ BackwardIntegration integrate_from_tip(const PendulumProblem& problem, double ch
     const Parameter m{e.modulus2, e.complement2};
     const double q = std::sqrt(h_plus);
     const double sigma = mu > 0.0 ? 1.0 : -1.0;
-    e.u_tip = incomplete_F(0.5 * chi_tip, m);
+    // Amplitude chi1/2 = j pi + phi_r: sin(phi_r) = (-1)^j cos(t/2), cos(phi_r) = (-1)^(j+1)
+    // sin(t/2).
+    const int turns = static_cast<int>(std::nearbyint(0.5 * chi_tip / kPi));
+    const double parity = turns % 2 == 0 ? 1.0 : -1.0;
+    e.u_tip = incomplete_F(turns, parity * half_sin, parity * half_cos, m);
     e.u_root = e.u_tip - sigma * q;
     out.chi_root = 2.0 * jacobi_amplitude(e.u_root, m);
   }
   return out;
 }
 
-double tip_angle_residual(const PendulumProblem& problem, double chi_tip) {
-  return integrate_from_tip(problem, chi_tip).chi_root - problem.chi0;
+double tip_angle_residual(const PendulumProblem& problem, double tip_from_force) {
+  return integrate_from_tip(problem, tip_from_force).chi_root - problem.chi0;
 }
 
 ShapePoint evaluate_normalised(const ElasticaParameters& p, double s) {
@@ -122,19 +132,18 @@ ShapePoint evaluate_normalised(const ElasticaParameters& p, double s) {
     const double kk = std::sqrt(p.modulus2);
     const double phi0 = jacobi_amplitude(p.u_root, k);
     const double phi = jacobi_amplitude(p.u_root + sqrtF * s, k);
-    const double d0 = incomplete_integrals(phi0, k).D_over_m;
-    const double d = incomplete_integrals(phi, k).D_over_m;
+    const double d0 = D_over_m_at(p.u_root, phi0, k);
+    const double d = D_over_m_at(p.u_root + sqrtF * s, phi, k);
     // int k^2 sn^2 du = u - E(u); int 2k sn dn du = -2k cn(u)  (elastica-general.md, family A)
     sin2_integral = p.modulus2 * (d - d0) / sqrtF;
     sin_integral = 4.0 * kk * std::sin(0.5 * (phi + phi0)) * std::sin(0.5 * (phi - phi0)) / sqrtF;
-    chi = 2.0 * kPi * p.winding +
-          2.0 * std::atan2(kk * std::sin(phi), delta_amplitude(phi, k));
+    chi = 2.0 * kPi * p.winding + 2.0 * std::atan2(kk * std::sin(phi), delta_amplitude(phi, k));
   } else {
     const double span = p.u_tip - p.u_root;  // sigma q
     const double phi0 = jacobi_amplitude(p.u_root, k);
     const double phi = jacobi_amplitude(p.u_root + span * s, k);
-    const double d0 = incomplete_integrals(phi0, k).D_over_m;
-    const double d = incomplete_integrals(phi, k).D_over_m;
+    const double d0 = D_over_m_at(p.u_root, phi0, k);
+    const double d = D_over_m_at(p.u_root + span * s, phi, k);
     // int sn^2 dv = (v - E(v))/m; int 2 sn cn dv = -2 dn/m, written without cancellation.
     sin2_integral = (d - d0) / span;
     sin_integral = 2.0 * std::sin(phi - phi0) * std::sin(phi + phi0) /

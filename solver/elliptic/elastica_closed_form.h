@@ -6,11 +6,13 @@
 // F sin(theta - psi) becomes chi'' = -F sin chi, first integral chi'^2/2 - F cos chi = H.
 // The clamp fixes chi(0) = chi0 = pi - psi; the tip fixes chi'(1) = mu.
 //
-// The forward problem is solved for the tip angle chi1: given chi1, the tip state (chi1, mu) fixes H
-// and the whole trajectory, which is integrated back to s = 0 in closed form; the residual is the
-// root angle reached minus chi0. Shooting from the tip (rather than from the clamp with the root
-// moment) is well conditioned for tension loads, where the beam approaches the pendulum's
-// unstable top towards the tip.
+// The forward problem is solved for the tip angle: given it, the tip state (chi1, mu) fixes H and
+// the whole trajectory, which is integrated back to s = 0 in closed form; the residual is the root
+// angle reached minus chi0. The unknown is t = chi1 - pi = theta0 - psi, the tip angle measured
+// from the force direction: in tension the tip aligns with the force (t -> 0) and every quantity
+// near the separatrix is formed from sin(t/2) and cos(t/2) without cancellation. Shooting from the
+// tip (rather than from the clamp with the root moment) is well conditioned for tension loads,
+// where the beam approaches the pendulum's unstable top towards the tip.
 #include "solver/elliptic/elastica_parameters.h"
 
 namespace flexure::elliptic {
@@ -30,10 +32,10 @@ struct BackwardIntegration {
   ElasticaParameters parameters;
   double chi_root = 0.0;  // pendulum angle reached at s = 0
 };
-BackwardIntegration integrate_from_tip(const PendulumProblem& problem, double chi_tip);
+BackwardIntegration integrate_from_tip(const PendulumProblem& problem, double tip_from_force);
 
-// Tip-angle residual: chi(0) - chi0 for the trajectory through (chi_tip, mu).
-double tip_angle_residual(const PendulumProblem& problem, double chi_tip);
+// Tip-angle residual: chi(0) - chi0 for the trajectory through the tip angle t = theta0 - psi.
+double tip_angle_residual(const PendulumProblem& problem, double tip_from_force);
 
 // Position and angle at arc length s in [0, 1] in the normalised (unmirrored) frame.
 ShapePoint evaluate_normalised(const ElasticaParameters& parameters, double s);

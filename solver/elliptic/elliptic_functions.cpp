@@ -24,8 +24,8 @@ double carlson_rf(double x, double y, double z) {
   gsl_sf_result r;
   const int status = gsl_sf_ellint_RF_e(x, y, z, GSL_PREC_DOUBLE, &r);
   if (status != GSL_SUCCESS) {
-    throw NoConvergence(fmt::format(
-        "GSL gsl_sf_ellint_RF({}, {}, {}) failed: {}", x, y, z, gsl_strerror(status)));
+    throw NoConvergence(
+        fmt::format("GSL gsl_sf_ellint_RF({}, {}, {}) failed: {}", x, y, z, gsl_strerror(status)));
   }
   return r.val;
 }
@@ -34,8 +34,8 @@ double carlson_rd(double x, double y, double z) {
   gsl_sf_result r;
   const int status = gsl_sf_ellint_RD_e(x, y, z, GSL_PREC_DOUBLE, &r);
   if (status != GSL_SUCCESS) {
-    throw NoConvergence(fmt::format(
-        "GSL gsl_sf_ellint_RD({}, {}, {}) failed: {}", x, y, z, gsl_strerror(status)));
+    throw NoConvergence(
+        fmt::format("GSL gsl_sf_ellint_RD({}, {}, {}) failed: {}", x, y, z, gsl_strerror(status)));
   }
   return r.val;
 }
@@ -76,6 +76,22 @@ double incomplete_F(double phi, Parameter k) {
   double F = (s != 0.0) ? s * carlson_rf(c * c, k.mc + k.m * c * c, 1.0) : 0.0;
   if (j != 0.0) F += 2.0 * j * complete_K(k);
   return F;
+}
+
+double incomplete_F(int half_turns, double sin_phi_r, double cos_phi_r, Parameter k) {
+  double F =
+      (sin_phi_r != 0.0)
+          ? sin_phi_r * carlson_rf(cos_phi_r * cos_phi_r, k.mc + k.m * cos_phi_r * cos_phi_r, 1.0)
+          : 0.0;
+  if (half_turns != 0) F += 2.0 * half_turns * complete_K(k);
+  return F;
+}
+
+double D_over_m_at(double u, double phi, Parameter k) {
+  const IncompleteIntegrals integrals = incomplete_integrals(phi, k);
+  if (k.m <= 0.5) return integrals.D_over_m;
+  const double E = integrals.F - k.m * integrals.D_over_m;
+  return (u - E) / k.m;
 }
 
 double jacobi_amplitude(double u, Parameter k) {

@@ -36,6 +36,16 @@ struct IncompleteIntegrals {
 IncompleteIntegrals incomplete_integrals(double phi, Parameter k);
 double incomplete_F(double phi, Parameter k);
 
+// F(phi|m) for phi = half_turns * pi + phi_r, given sin(phi_r) and cos(phi_r) >= 0 directly. Near
+// the separatrix the amplitude sits at pi/2 to within 1e-9 and only its cosine, formed by the
+// caller without cancellation, carries the digits.
+double incomplete_F(int half_turns, double sin_phi_r, double cos_phi_r, Parameter k);
+
+// (F - E)/m at argument u with amplitude phi = am(u). For m > 1/2 it is formed as (u - E(phi))/m:
+// E varies slowly where F is steep (phi near pi/2, m near 1), so an amplitude recomputed from u
+// costs no digits; for m <= 1/2 the Carlson form keeps the pure-moment limit m -> 0 exact.
+double D_over_m_at(double u, double phi, Parameter k);
+
 // Jacobi amplitude am(u|m), continuous in u (am(u + 2K) = am(u) + pi).
 double jacobi_amplitude(double u, Parameter k);
 

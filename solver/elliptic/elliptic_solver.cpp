@@ -116,14 +116,13 @@ EllipticResult EllipticSolver::solve(const EndLoad& load) const {
     elliptic::ContinuationOptions copts;
     copts.x_tolerance = options_.tolerance;
     copts.max_steps = options_.max_continuation_steps;
-    const elliptic::ContinuationSolution c =
-        elliptic::solve_by_continuation(force, psi, mu, copts);
+    const elliptic::ContinuationSolution c = elliptic::solve_by_continuation(force, psi, mu, copts);
     r.iterations = c.iterations;
     r.continuation_steps = c.steps;
     r.residual = std::fabs(c.residual);
     if (c.converged) {
       const elliptic::PendulumProblem problem = elliptic::make_pendulum_problem(force, psi, mu);
-      p = elliptic::integrate_from_tip(problem, c.chi_tip).parameters;
+      p = elliptic::integrate_from_tip(problem, c.tip_from_force).parameters;
       p.mirrored = load.Fy < 0.0;
       fill_from_parameters(r);
       r.converged = true;

@@ -6,9 +6,9 @@
 // inflectional (|H| < F, modulus k, Jacobi sn/cn) and non-inflectional (H > F, parameter m).
 // Howell's eqs. 2.89-2.98 are the special case mu = 0, theta0 below the force angle.
 //
-// Where several equilibria exist (large compressive loads, large moments) the solver returns the one
-// reached by proportional loading from the unloaded beam, found by continuation in the load factor;
-// the result says which branch it is and how many inflection points the shape has.
+// Where several equilibria exist (large compressive loads, large moments) the solver returns the
+// one reached by proportional loading from the unloaded beam, found by continuation in the load
+// factor; the result says which branch it is and how many inflection points the shape has.
 #include <string>
 #include <vector>
 
@@ -19,24 +19,24 @@ namespace flexure {
 
 struct EllipticResult {
   bool converged = false;
-  std::string message;      // why it stopped; names the offending quantity when it failed
-  int iterations = 0;       // root-finder iterations, summed over continuation steps
+  std::string message;  // why it stopped; names the offending quantity when it failed
+  int iterations = 0;   // root-finder iterations, summed over continuation steps
   int continuation_steps = 0;
 
-  EndLoad load;             // the load solved for (inverse problems fill in alpha2 here)
+  EndLoad load;  // the load solved for (inverse problems fill in alpha2 here)
   TipPose tip;
-  double root_moment = 0.0; // curvature at the clamp, M(0) l/EI
+  double root_moment = 0.0;  // curvature at the clamp, M(0) l/EI
   int inflection_points = 0;
-  double residual = 0.0;    // |tip condition| at the returned solution
-  std::string branch;       // "proportional loading" or a note on how the branch was chosen
+  double residual = 0.0;  // |tip condition| at the returned solution
+  std::string branch;     // "proportional loading" or a note on how the branch was chosen
   ElasticaParameters parameters;
 };
 
 class EllipticSolver {
  public:
   struct Options {
-    double tolerance = 1e-14;       // relative tolerance on the unknown of each scalar solve
-    int max_iterations = 200;       // per scalar solve
+    double tolerance = 1e-14;  // relative tolerance on the unknown of each scalar solve
+    int max_iterations = 200;  // per scalar solve
     int max_continuation_steps = 4000;
   };
 
@@ -55,7 +55,8 @@ class EllipticSolver {
   // Deflected shape at `count` equally spaced arc lengths from 0 to 1 (count >= 2).
   std::vector<ShapePoint> shape(const EllipticResult& result, int count) const;
   // Shape at given arc lengths in [0, 1].
-  std::vector<ShapePoint> shape_at(const EllipticResult& result, const std::vector<double>& s) const;
+  std::vector<ShapePoint> shape_at(const EllipticResult& result,
+                                   const std::vector<double>& s) const;
 
   const Options& options() const { return options_; }
 

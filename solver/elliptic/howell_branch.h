@@ -20,7 +20,7 @@ struct HowellBranchSolution {
   int iterations = 0;
   double residual = 0.0;  // ln(K - F(beta)) - ln(sqrt(F)) at the solution
   ElasticaParameters parameters;
-  TipPose tip;            // normalised frame (force angle psi in (0, pi))
+  TipPose tip;  // normalised frame (force angle psi in (0, pi))
   double root_moment = 0.0;
 };
 

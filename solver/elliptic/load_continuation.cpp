@@ -43,7 +43,8 @@ Corrected correct(const PendulumProblem& problem,
         if (r1 == r0) break;
         const double x2 = x1 - r1 * (x1 - x0) / (r1 - r0);
         if (!std::isfinite(x2) || std::fabs(x2 - predicted) > 4.0 * window) break;
-        if (std::fabs(x2 - x1) <= x_tolerance * std::max(1.0, std::fabs(x1))) {
+        // Relative to |t|: near the separatrix k'^2 ~ sin^2(t/2), so t needs relative precision.
+        if (std::fabs(x2 - x1) <= x_tolerance * std::max(std::fabs(x1), 1e-200)) {
           return {true, x2, r1};
         }
         x0 = x1;
@@ -59,7 +60,7 @@ Corrected correct(const PendulumProblem& problem,
   double left = predicted, r_left = r_center;
   double right = predicted, r_right = r_center;
   ScalarRootOptions opts;
-  opts.x_tolerance = x_tolerance;
+  opts.x_tolerance = x_tolerance * std::max(std::fabs(predicted), 1e-200);
   for (int level = 0; level < 6; ++level) {
     const double reach = window * std::ldexp(1.0, level);
     for (int side = 0; side < 2; ++side) {
@@ -89,19 +90,19 @@ ContinuationSolution solve_by_continuation(double force,
                                            double mu,
                                            const ContinuationOptions& options) {
   ContinuationSolution out;
-  const double chi0 = make_pendulum_problem(force, psi, mu).chi0;
+  // Unknown: t = theta0 - psi (elastica_closed_form.h); unloaded, theta0 = 0.
   // Linear theory at lambda -> 0: theta0 = Fy/2 + mu (axial load neglected), the first slope.
   double slope = 0.5 * force * std::sin(psi) + mu;
   double lambda = 0.0;
-  double chi = chi0;
+  double chi = -psi;
   double step = std::min(1.0, options.max_angle_step / std::max(std::fabs(slope), 1e-12));
   int evaluations = 0;
   while (lambda < 1.0) {
     if (out.steps >= options.max_steps) {
-      out.message = fmt::format(
-          "elliptic continuation stopped after {} load steps at load factor {:.6g}",
-          out.steps,
-          lambda);
+      out.message =
+          fmt::format("elliptic continuation stopped after {} load steps at load factor {:.6g}",
+                      out.steps,
+                      lambda);
       break;
     }
     const double next = std::min(1.0, lambda + step);
@@ -120,7 +121,8 @@ ContinuationSolution solve_by_continuation(double force,
       step *= 0.5;
       if (step < options.min_load_step) {
         out.message = fmt::format(
-            "no equilibrium continuous with proportional loading beyond load factor {:.9g}: a limit "
+            "no equilibrium continuous with proportional loading beyond load factor {:.9g}: a "
+            "limit "
             "point (the beam snaps through); the shooting method with arc-length continuation can "
             "follow the path past it",
             lambda);
@@ -138,7 +140,7 @@ ContinuationSolution solve_by_continuation(double force,
   }
   out.iterations = evaluations;
   out.load_factor_reached = lambda;
-  out.chi_tip = chi;
+  out.tip_from_force = chi;
   out.converged = lambda >= 1.0;
   if (out.converged) out.message = "converged";
   return out;

@@ -14,12 +14,12 @@
 namespace flexure::elliptic {
 
 struct ContinuationOptions {
-  double x_tolerance = 1e-15;     // final tolerance on the tip angle (rad)
-  double step_tolerance = 1e-11;  // tolerance on the tip angle at intermediate load factors
-  double max_angle_step = 0.4;    // largest predicted change of tip angle per step (rad)
+  double x_tolerance = 1e-15;       // final relative tolerance on t = theta0 - psi
+  double step_tolerance = 1e-11;    // relative tolerance on t at intermediate load factors
+  double max_angle_step = 0.4;      // largest predicted change of tip angle per step (rad)
   double branch_jump_guard = 0.05;  // largest accepted corrector move beyond half the predicted
                                     // change of tip angle (rad)
-  double min_load_step = 1e-10;   // smaller steps mean a limit point
+  double min_load_step = 1e-10;     // smaller steps mean a limit point
   int max_steps = 4000;
 };
 
@@ -29,7 +29,7 @@ struct ContinuationSolution {
   int iterations = 0;  // residual evaluations
   int steps = 0;       // accepted load steps
   double load_factor_reached = 0.0;
-  double chi_tip = 0.0;
+  double tip_from_force = 0.0;  // t = theta0 - psi at the solution
   double residual = 0.0;
 };
 
