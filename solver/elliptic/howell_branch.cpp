@@ -101,15 +101,29 @@ HowellBranchSolution solve_howell_branch(double force, double psi, double x_tole
     return std::log(branch_length(split_from_zeta(zeta, c0_sq), s0_sq)) - log_target;
   };
 
-  // Starting guess from the two asymptotes: small loads, q ~ F c0^2 s0^2 (linear theory);
-  // large loads, k' ~ 4 exp(-sqrt(F) - atanh(s0)), i.e. p/c0^2 ~ 16 e^{-2 sqrt F}/(1 + s0)^2.
+  // Starting guess from the two asymptotes. Small loads: linear beam-column theory gives the tip
+  // angle theta0 (Timoshenko & Gere, "Theory of Elastic Stability", §1.11) and
+  // q = k^2 - s0^2 ~ s0 c0 theta0. Large loads: k' ~ 4 exp(-sqrt(F) - atanh(s0)), i.e.
+  // p/c0^2 ~ 16 e^{-2 sqrt F}/(1 + s0)^2.
   double zeta0 = 0.0;
-  if (force * s0_sq < 0.5) {
-    const double ratio = force * s0_sq;  // q / c0^2
-    zeta0 = std::log((1.0 - ratio) / ratio);
-  } else {
-    const double ratio = 16.0 * std::exp(-2.0 * sqrtF) / ((1.0 + pr.s0) * (1.0 + pr.s0));
-    if (ratio < 0.5) zeta0 = std::log(ratio / (1.0 - ratio));
+  const double axial = -force * std::cos(psi);  // compressive axial force, positive in compression
+  const double transverse = force * std::sin(psi);
+  const double kb = std::sqrt(std::fabs(axial));
+  double theta_linear = std::numeric_limits<double>::infinity();
+  if (axial >= 0.0 && kb < 1.4) {
+    // theta0 = Q (sec k - 1)/P, written as 2 Q sin^2(k/2)/(k^2 cos k) to keep small k exact.
+    const double h = kb > 0.0 ? std::sin(0.5 * kb) / (0.5 * kb) : 1.0;
+    theta_linear = 0.5 * transverse * h * h / std::cos(kb);
+  } else if (axial < 0.0) {
+    const double h = std::sinh(0.5 * kb) / (0.5 * kb);
+    theta_linear = 0.5 * transverse * h * h / std::cosh(kb);
+  }
+  const double q_linear = pr.s0 * pr.c0 * theta_linear;
+  const double p_large = 16.0 * c0_sq * std::exp(-2.0 * sqrtF) / ((1.0 + pr.s0) * (1.0 + pr.s0));
+  if (q_linear < 0.25 * c0_sq) {
+    zeta0 = std::log((c0_sq - q_linear) / q_linear);
+  } else if (p_large < 0.25 * c0_sq) {
+    zeta0 = std::log(p_large / (c0_sq - p_large));
   }
   // ln(K - F(beta)) decreases in zeta with slope about -1/(2 max(sqrt F, 1)) and is nearly linear
   // at both ends, so a secant iteration from the asymptotic guess converges in a few steps. The
@@ -117,7 +131,12 @@ HowellBranchSolution solve_howell_branch(double force, double psi, double x_tole
   // diverge.
   double z0 = zeta0;
   double r0 = residual(z0);
-  double z1 = z0 + r0 * 2.0 * std::max(sqrtF, 1.0);
+  // First step with the asymptotic slope d ln G/d zeta ~ -(p + q/G)/(2 c0^2), G = K - F(beta):
+  // -1/2 for small loads (G ~ sqrt q), -1/(2G) for large (G ~ -ln(p)/2).
+  const SplitModulus split0 = split_from_zeta(z0, c0_sq);
+  const double g0 = sqrtF * std::exp(r0);
+  const double slope0 = -0.5 * (split0.p + split0.q / g0) / c0_sq;
+  double z1 = z0 - r0 / slope0;
   double r1 = residual(z1);
   double lo = -std::numeric_limits<double>::infinity();
   double hi = std::numeric_limits<double>::infinity();
