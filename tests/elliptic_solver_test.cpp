@@ -304,6 +304,36 @@ TEST(EllipticSolver, ReturnsProportionalLoadingBranchAmongSeveralEquilibria) {
   EXPECT_NEAR(r.tip.theta0, theta0, 1e-9);
 }
 
+// Number of sign changes of the tip-angle residual over t in [-12, 4]: equilibria of the load.
+int count_equilibria(const EndLoad& load) {
+  const double force = std::hypot(load.Fx, load.Fy);
+  const double psi = std::atan2(load.Fy, load.Fx);
+  const elliptic::PendulumProblem problem = elliptic::make_pendulum_problem(force, psi, load.mu);
+  int roots = 0;
+  double previous = elliptic::tip_angle_residual(problem, -12.0);
+  for (double t = -12.0 + 1e-3; t < 4.0; t += 1e-3) {
+    const double r = elliptic::tip_angle_residual(problem, t);
+    if ((r > 0.0) != (previous > 0.0)) ++roots;
+    previous = r;
+  }
+  return roots;
+}
+
+TEST(EllipticSolver, ReportsLimitPointInsteadOfJumpingBranch) {
+  // alpha2 = 10, n = 0 with mu = -2 pi: along proportional loading two equilibria merge at
+  // lambda ~ 0.5958 (a fold, the beam snaps). Just before it three roots exist, just after only
+  // one, far away (t ~ -6.56). The solver must report the limit point, not return that root.
+  const EllipticSolver solver;
+  const EndLoad full = EndLoad::howell(0.0, 10.0, -2.0 * kPi);
+  const EllipticResult r = solver.solve(full);
+  EXPECT_FALSE(r.converged);
+  EXPECT_NE(r.message.find("limit point"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("0.5957"), std::string::npos) << r.message;
+  EXPECT_EQ(count_equilibria(full.scaled(0.5950)), 3);
+  EXPECT_EQ(count_equilibria(full.scaled(0.5965)), 1);
+  EXPECT_TRUE(solver.solve(full.scaled(0.5950)).converged);
+}
+
 TEST(EllipticSolver, TensionNearTheSeparatrixKeepsPrecision) {
   // Large tension: 1 - k is below 1e-8 here. Forward solve, the explicit inverse and the general
   // path must agree to round-off. (Beyond alpha2 ~ 50 at n = -5 the tip angle is within 1e-9 of
