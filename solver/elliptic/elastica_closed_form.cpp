@@ -103,61 +103,70 @@ double tip_angle_residual(const PendulumProblem& problem, double tip_from_force)
   return integrate_from_tip(problem, tip_from_force).chi_root - problem.chi0;
 }
 
-ShapePoint evaluate_normalised(const ElasticaParameters& p, double s) {
+ShapeEvaluator::ShapeEvaluator(const ElasticaParameters& parameters)
+    : p_(parameters), k_(parameter_of(parameters)) {
+  cos_psi_ = std::cos(p_.psi);
+  sin_psi_ = std::sin(p_.psi);
+  if (p_.family != ElasticaFamily::kInflectional && p_.family != ElasticaFamily::kNonInflectional) {
+    return;
+  }
+  // u_tip - u_root is sqrt(F) in family A and sigma q in family B: ds = du / span.
+  span_ = p_.u_tip - p_.u_root;
+  phi_root_ = jacobi_amplitude(p_.u_root, k_);
+  d_root_ = D_over_m_at(p_.u_root, phi_root_, k_);
+  delta_root_ = delta_amplitude(phi_root_, k_);
+}
+
+ShapePoint ShapeEvaluator::at(double s) const {
   ShapePoint point;
   point.s = s;
-  if (p.family == ElasticaFamily::kStraight) {
+  if (p_.family == ElasticaFamily::kStraight) {
     point.x = s;
     return point;
   }
-  if (p.family == ElasticaFamily::kCircularArc) {
+  if (p_.family == ElasticaFamily::kCircularArc) {
     // Howell eqs. 2.53, 2.59, 2.64 at arc length s: theta = mu s.
-    const double t = p.mu * s;
+    const double t = p_.mu * s;
     point.theta = t;
-    if (p.mu == 0.0) {
+    if (p_.mu == 0.0) {
       point.x = s;
     } else {
-      point.x = std::sin(t) / p.mu;
+      point.x = std::sin(t) / p_.mu;
       const double h = std::sin(0.5 * t);
-      point.y = 2.0 * h * h / p.mu;
+      point.y = 2.0 * h * h / p_.mu;
     }
     return point;
   }
-  const Parameter k = parameter_of(p);
+  const double u = p_.u_root + span_ * s;
+  const double phi = jacobi_amplitude(u, k_);
+  const double d = D_over_m_at(u, phi, k_);
+  const double phi0 = phi_root_;
   double chi = 0.0;
   double sin2_integral = 0.0;  // I(s) = int_0^s sin^2(chi/2) ds
   double sin_integral = 0.0;   // J(s) = int_0^s sin(chi) ds
-  if (p.family == ElasticaFamily::kInflectional) {
-    const double sqrtF = std::sqrt(p.force);
-    const double kk = std::sqrt(p.modulus2);
-    const double phi0 = jacobi_amplitude(p.u_root, k);
-    const double phi = jacobi_amplitude(p.u_root + sqrtF * s, k);
-    const double d0 = D_over_m_at(p.u_root, phi0, k);
-    const double d = D_over_m_at(p.u_root + sqrtF * s, phi, k);
+  if (p_.family == ElasticaFamily::kInflectional) {
+    const double kk = std::sqrt(p_.modulus2);
     // int k^2 sn^2 du = u - E(u); int 2k sn dn du = -2k cn(u)  (elastica-general.md, family A)
-    sin2_integral = p.modulus2 * (d - d0) / sqrtF;
-    sin_integral = 4.0 * kk * std::sin(0.5 * (phi + phi0)) * std::sin(0.5 * (phi - phi0)) / sqrtF;
-    chi = 2.0 * kPi * p.winding + 2.0 * std::atan2(kk * std::sin(phi), delta_amplitude(phi, k));
+    sin2_integral = p_.modulus2 * (d - d_root_) / span_;
+    sin_integral = 4.0 * kk * std::sin(0.5 * (phi + phi0)) * std::sin(0.5 * (phi - phi0)) / span_;
+    chi = 2.0 * kPi * p_.winding + 2.0 * std::atan2(kk * std::sin(phi), delta_amplitude(phi, k_));
   } else {
-    const double span = p.u_tip - p.u_root;  // sigma q
-    const double phi0 = jacobi_amplitude(p.u_root, k);
-    const double phi = jacobi_amplitude(p.u_root + span * s, k);
-    const double d0 = D_over_m_at(p.u_root, phi0, k);
-    const double d = D_over_m_at(p.u_root + span * s, phi, k);
     // int sn^2 dv = (v - E(v))/m; int 2 sn cn dv = -2 dn/m, written without cancellation.
-    sin2_integral = (d - d0) / span;
+    sin2_integral = (d - d_root_) / span_;
     sin_integral = 2.0 * std::sin(phi - phi0) * std::sin(phi + phi0) /
-                   (span * (delta_amplitude(phi, k) + delta_amplitude(phi0, k)));
+                   (span_ * (delta_amplitude(phi, k_) + delta_root_));
     chi = 2.0 * phi;
   }
   // Tangent in the force frame: t.eF = -cos chi, t.ePerp = -sin chi; rotate back by psi.
   const double cos_integral = s - 2.0 * sin2_integral;
-  const double cp = std::cos(p.psi);
-  const double sp = std::sin(p.psi);
-  point.x = -cp * cos_integral + sp * sin_integral;
-  point.y = -cp * sin_integral - sp * cos_integral;
-  point.theta = chi + p.psi - kPi;
+  point.x = -cos_psi_ * cos_integral + sin_psi_ * sin_integral;
+  point.y = -cos_psi_ * sin_integral - sin_psi_ * cos_integral;
+  point.theta = chi + p_.psi - kPi;
   return point;
+}
+
+ShapePoint evaluate_normalised(const ElasticaParameters& p, double s) {
+  return ShapeEvaluator(p).at(s);
 }
 
 double root_curvature(const ElasticaParameters& p) {

@@ -14,6 +14,7 @@
 // tip (rather than from the clamp with the root moment) is well conditioned for tension loads,
 // where the beam approaches the pendulum's unstable top towards the tip.
 #include "solver/elliptic/elastica_parameters.h"
+#include "solver/elliptic/elliptic_functions.h"
 
 namespace flexure::elliptic {
 
@@ -37,7 +38,23 @@ BackwardIntegration integrate_from_tip(const PendulumProblem& problem, double ti
 // Tip-angle residual: chi(0) - chi0 for the trajectory through the tip angle t = theta0 - psi.
 double tip_angle_residual(const PendulumProblem& problem, double tip_from_force);
 
-// Position and angle at arc length s in [0, 1] in the normalised (unmirrored) frame.
+// Position and angle at arc length s in [0, 1] in the normalised (unmirrored) frame. The evaluator
+// computes the clamp's amplitude and integrals once for many points.
+class ShapeEvaluator {
+ public:
+  explicit ShapeEvaluator(const ElasticaParameters& parameters);
+  ShapePoint at(double s) const;
+
+ private:
+  ElasticaParameters p_;
+  Parameter k_;
+  double cos_psi_ = 1.0;
+  double sin_psi_ = 0.0;
+  double span_ = 0.0;        // u_tip - u_root
+  double phi_root_ = 0.0;    // am(u_root)
+  double d_root_ = 0.0;      // (F - E)/m at the clamp
+  double delta_root_ = 1.0;  // dn(u_root)
+};
 ShapePoint evaluate_normalised(const ElasticaParameters& parameters, double s);
 
 // Curvature at the clamp (root moment) and number of interior inflection points.

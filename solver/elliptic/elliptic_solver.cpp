@@ -158,6 +158,7 @@ std::vector<ShapePoint> EllipticSolver::shape_at(const EllipticResult& result,
   if (!result.converged) throw InvalidInput("cannot evaluate the shape of an unconverged result");
   std::vector<ShapePoint> points;
   points.reserve(s.size());
+  const elliptic::ShapeEvaluator evaluator(result.parameters);
   for (double si : s) {
     if (!(si >= 0.0 && si <= 1.0)) {
       throw InvalidInput(fmt::format("arc length s = {} is outside [0, 1]", si));
@@ -168,7 +169,7 @@ std::vector<ShapePoint> EllipticSolver::shape_at(const EllipticResult& result,
       const double Fy = result.load.Fy;
       p = {si, si, Fy * (0.5 * si * si - si * si * si / 6.0), Fy * (si - 0.5 * si * si)};
     } else {
-      p = elliptic::evaluate_normalised(result.parameters, si);
+      p = evaluator.at(si);
       if (result.parameters.mirrored) {
         p.y = -p.y;
         p.theta = -p.theta;

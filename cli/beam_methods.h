@@ -1,0 +1,63 @@
+#pragma once
+// Method dispatch for the cantilever-with-end-load problem (`flexure beam`, `flexure sweep beam`).
+//
+// To plug in a new method (shooting, chain): add its name to kBeamMethodNames, and a branch in
+// solve_beam() (beam_methods.cpp) that fills a BeamSolution from that solver's result. Nothing
+// else in the CLI needs to change; `auto` picks the method used when none is named.
+#include <CLI/CLI.hpp>
+#include <array>
+#include <string>
+#include <vector>
+
+#include "solver/common/end_load.h"
+
+namespace flexure::cli {
+
+// Names accepted by --method (CLI11 rejects anything else with exit 2).
+inline constexpr std::array<const char*, 4> kBeamMethodNames = {
+    "auto", "elliptic", "shooting", "chain"};
+
+// What the user fixed: the load alpha2, the tip angle theta0 or the tip deflection b/l, with
+// Howell's load ratio n and end moment mu held fixed (Howell eqs. 2.67, 2.83).
+struct BeamProblem {
+  enum class Given { kAlpha2, kTheta0, kBOverL };
+  Given given = Given::kAlpha2;
+  double value = 0.0;         // alpha2, theta0 [rad] or b/l, as selected by `given`
+  double load_ratio_n = 0.0;  // n > 0 compressive
+  double mu = 0.0;            // end moment M l/EI
+  int shape_points = 0;       // 0: no shape; otherwise >= 2 points from s = 0 to s = 1
+};
+
+// A method-independent summary of one solve, with the keys `flexure beam --json` prints.
+struct BeamSolution {
+  std::string method;  // the method actually used ("elliptic" when "auto" was asked for)
+  bool converged = false;
+  std::string message;
+  int iterations = 0;
+  double alpha2 = 0.0;
+  TipPose tip;
+  std::string branch;
+  int inflection_points = 0;
+  double root_moment = 0.0;
+  std::string family;
+  double tolerance = 0.0;  // the method's convergence tolerance (recorded in output files)
+  std::vector<ShapePoint> shape;
+};
+
+// Adds `--method` (default "auto", restricted to kBeamMethodNames) to a subcommand.
+void add_method_option(CLI::App& command, std::string& method);
+
+// A sentence for non-convergence messages: which other method may work.
+std::string other_methods_hint(const std::string& failed_method);
+
+// The method `auto` resolves to for this build.
+std::string resolve_beam_method(const std::string& method);
+
+// Solves `problem` with `method` (one of kBeamMethodNames). Throws InvalidInput for bad input or a
+// method not available in this build; a failed solve returns converged == false and a message.
+BeamSolution solve_beam(const std::string& method, const BeamProblem& problem);
+
+// The convergence tolerance the method uses (for file attributes).
+double beam_method_tolerance(const std::string& method);
+
+}  // namespace flexure::cli

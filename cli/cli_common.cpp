@@ -1,0 +1,172 @@
+#include "cli/cli_common.h"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <iostream>
+
+#include "solver/common/errors.h"
+
+namespace flexure::cli {
+namespace {
+
+int g_exit_code = kExitOk;
+
+// Error messages must stay on one line even when they quote user input or library text.
+std::string one_line(std::string text) {
+  for (char& c : text) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text;
+}
+
+void report(const std::string& message) { std::cerr << "flexure: " << one_line(message) << '\n'; }
+
+// Depth-first search for the first non-finite number; returns its JSON pointer or "".
+std::string find_non_finite(const Json& node, const std::string& where) {
+  if (node.is_number_float()) {
+    return std::isfinite(node.get<double>()) ? std::string() : (where.empty() ? "/" : where);
+  }
+  if (node.is_object()) {
+    for (const auto& [key, value] : node.items()) {
+      std::string found = find_non_finite(value, where + "/" + key);
+      if (!found.empty()) return found;
+    }
+  } else if (node.is_array()) {
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      std::string found = find_non_finite(node[i], where + "/" + std::to_string(i));
+      if (!found.empty()) return found;
+    }
+  }
+  return {};
+}
+
+// Strict decimal parse of a whole token (no trailing characters); accepts "nan"/"inf" so that the
+// caller can reject them with a message naming the quantity.
+bool parse_double(const std::string& token, double& value) {
+  if (token.empty()) return false;
+  char* end = nullptr;
+  value = std::strtod(token.c_str(), &end);
+  return end == token.c_str() + token.size();
+}
+
+}  // namespace
+
+CLI::App& get_or_add_subcommand(CLI::App& parent,
+                                const std::string& name,
+                                const std::string& description) {
+  for (CLI::App* child : parent.get_subcommands([](CLI::App*) { return true; })) {
+    if (child->get_name() == name) return *child;
+  }
+  return *parent.add_subcommand(name, description);
+}
+
+void set_exit_code(int code) { g_exit_code = code; }
+int exit_code() { return g_exit_code; }
+
+int run_app(CLI::App& app, int argc, char** argv) {
+  g_exit_code = kExitOk;
+  try {
+    app.parse(argc, argv);
+    return g_exit_code;
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // CLI11 reports missing, conflicting, unknown and non-numeric arguments here.
+    report(fmt::format("{} (run 'flexure --help' for the allowed arguments)", e.what()));
+    return kExitInvalidInput;
+  } catch (const InvalidInput& e) {
+    report(e.what());
+    return kExitInvalidInput;
+  } catch (const NoConvergence& e) {
+    report(e.what());
+    return kExitNoConvergence;
+  } catch (const std::exception& e) {
+    report(fmt::format("error: {}", e.what()));
+    return kExitInternal;
+  }
+}
+
+void print_json(const Json& object) {
+  const std::string bad = find_non_finite(object, "");
+  if (!bad.empty()) {
+    throw NoConvergence(
+        fmt::format("result '{}' is not a finite number; no converged solution to report", bad));
+  }
+  std::cout << object.dump() << '\n';
+  std::cout.flush();
+}
+
+void require_finite_result(double value, const std::string& what) {
+  if (!std::isfinite(value)) {
+    throw NoConvergence(
+        fmt::format("{} came out as {}; no converged solution to report", what, value));
+  }
+}
+
+void require_finite_input(double value, const std::string& what) {
+  if (!std::isfinite(value)) {
+    throw InvalidInput(fmt::format(
+        "{} = {} is not allowed: it must be a finite number (not NaN or Inf)", what, value));
+  }
+}
+
+void require_in_range(double value, const std::string& what, double lo, double hi) {
+  if (!std::isfinite(value) || value < lo || value > hi) {
+    throw InvalidInput(
+        fmt::format("{} = {} is outside the allowed range [{}, {}]", what, value, lo, hi));
+  }
+}
+
+double Range::at(long i) const {
+  if (count <= 1) return start;
+  if (i == count - 1) return stop;
+  // Interpolate from both ends so that rounding is symmetric and the ends are exact.
+  const double f = static_cast<double>(i) / static_cast<double>(count - 1);
+  return start * (1.0 - f) + stop * f;
+}
+
+Range parse_range(const std::string& text, const std::string& what, long max_count) {
+  const auto fail = [&](const std::string& why) {
+    return InvalidInput(fmt::format(
+        "{} = '{}' is not a valid range: {} (expected START:STOP:COUNT with finite START, STOP "
+        "and an integer COUNT in [1, {}])",
+        what,
+        text,
+        why,
+        max_count));
+  };
+  const auto first = text.find(':');
+  const auto second = first == std::string::npos ? std::string::npos : text.find(':', first + 1);
+  if (second == std::string::npos || text.find(':', second + 1) != std::string::npos) {
+    throw fail("it needs exactly two ':'");
+  }
+  Range range;
+  if (!parse_double(text.substr(0, first), range.start) || !std::isfinite(range.start)) {
+    throw fail("START is not a finite number");
+  }
+  if (!parse_double(text.substr(first + 1, second - first - 1), range.stop) ||
+      !std::isfinite(range.stop)) {
+    throw fail("STOP is not a finite number");
+  }
+  const std::string count_text = text.substr(second + 1);
+  long count = 0;
+  const auto [ptr, ec] =
+      std::from_chars(count_text.data(), count_text.data() + count_text.size(), count);
+  if (count_text.empty() || ec != std::errc() || ptr != count_text.data() + count_text.size()) {
+    throw fail("COUNT is not an integer");
+  }
+  if (count < 1 || count > max_count) throw fail("COUNT is out of range");
+  range.count = count;
+  return range;
+}
+
+}  // namespace flexure::cli

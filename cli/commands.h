@@ -1,0 +1,12 @@
+#pragma once
+// One registration function per subcommand, each defined in its own file (see main.cpp).
+#include <CLI/CLI.hpp>
+
+namespace flexure::cli {
+
+void register_beam_command(CLI::App& app);      // beam_command.cpp
+void register_sweep_command(CLI::App& app);     // sweep_command.cpp
+void register_validate_command(CLI::App& app);  // validate_command.cpp
+void register_prbm_command(CLI::App& app);      // prbm_command.cpp
+
+}  // namespace flexure::cli

@@ -1,0 +1,48 @@
+// flexure: command-line tool for large-deflection beams and compliant mechanisms.
+//
+// How to add a subcommand (the pattern every command follows):
+//  1. Create cli/<name>_command.cpp with `void register_<name>_command(CLI::App& app)` in
+//     namespace flexure::cli; declare it in cli/commands.h and call it below.
+//  2. In it, keep the parsed arguments in a std::shared_ptr<Args> captured by the subcommand's
+//     callback (CLI11 runs the callback after a successful parse). Add `--json`.
+//  3. The callback validates input and throws flexure::InvalidInput (exit 2) naming the flag and
+//     the allowed range (require_finite_input, require_in_range, parse_range in cli_common.h);
+//     throws flexure::NoConvergence (exit 3) when a method does not converge, saying how far it
+//     got and which method may work; calls set_exit_code() only for other non-zero outcomes
+//     (validate: 1 = a reference check failed).
+//  4. With --json print exactly one object with print_json() (it refuses NaN/Inf); otherwise a
+//     short readable report on stdout. Errors never go to stdout: run_app() prints them as one
+//     line on stderr.
+//  5. Output files are written with io::AtomicHdf5File (temp name + rename), opened BEFORE the
+//     solve so that an unwritable path fails fast with exit 2.
+//  6. Method choice for the beam goes through cli/beam_methods.h (solve_beam); a new solver is
+//     plugged in there, not in the commands.
+// Nested commands (`sweep beam`) use get_or_add_subcommand() so that several files can add
+// children to the same parent.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/cli_common.h"
+#include "cli/commands.h"
+#include "flexure/version.h"
+#include "io/hdf5_file.h"
+#include "solver/common/gsl_guard.h"
+
+int main(int argc, char** argv) {
+  flexure::disable_gsl_abort();
+  flexure::io::disable_hdf5_error_printing();
+
+  CLI::App app{"flexure: exact large-deflection beams and compliant mechanisms", "flexure"};
+  app.set_version_flag(
+      "--version",
+      fmt::format("flexure {} (git commit {})", flexure::kVersion, flexure::kGitCommit));
+  app.require_subcommand(1);
+
+  flexure::cli::register_beam_command(app);
+  flexure::cli::register_sweep_command(app);
+  flexure::cli::register_validate_command(app);
+  flexure::cli::register_prbm_command(app);
+
+  return flexure::cli::run_app(app, argc, argv);
+}

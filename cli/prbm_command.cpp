@@ -1,0 +1,546 @@
+// `flexure prbm`: pseudo-rigid-body constants derived from the exact solution, the book's tables
+// beside them, and PRBM-vs-exact comparisons (docs/prbm.md).
+//
+//   flexure prbm derive  --segment fixed-pinned --n N [--step DEG] [--theta-max-K DEG] [--json]
+//   flexure prbm derive  --segment end-moment [--json]
+//   flexure prbm table   --segment fixed-pinned|initially-curved|end-moment [--json]
+//   flexure prbm compare --segment fixed-pinned --n N --alpha2 A [--constants table|fits|derived]
+//   flexure prbm compare --segment end-moment --mu MU [--json]
+//   flexure prbm compare ... --range START:STOP:COUNT   (a sweep of alpha2 or mu, one row per load)
+#include <fmt/format.h>
+
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <numbers>
+#include <string>
+
+#include "cli/cli_common.h"
+#include "cli/commands.h"
+#include "elements/end_moment_segment.h"
+#include "elements/fixed_pinned_segment.h"
+#include "elements/initially_curved_cantilever.h"
+#include "elements/prbm_curve_fits.h"
+#include "elements/prbm_derivation.h"
+#include "elements/prbm_tables.h"
+#include "solver/common/errors.h"
+#include "solver/elliptic/elliptic_solver.h"
+
+namespace flexure::cli {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+struct PrbmArgs {
+  std::string segment = "fixed-pinned";
+  double load_ratio_n = 0.0;
+  double alpha2 = 1.0;
+  double mu = 1.0;
+  double step_deg = 0.1;
+  double theta_max_K_deg = 0.0;
+  int tail = 0;
+  std::string constants = "table";
+  std::string range;  // START:STOP:COUNT of alpha2 (or mu) for compare
+  bool json = false;
+};
+
+PrbmDerivationOptions derivation_options(const PrbmArgs& args) {
+  require_in_range(args.step_deg, "--step (theta0 sampling step, deg)", 1e-3, 5.0);
+  require_in_range(args.theta_max_K_deg, "--theta-max-K (deg, 0 = rule)", 0.0, 180.0);
+  require_in_range(args.tail, "--tail (extra samples approaching phi)", 0, 60);
+  PrbmDerivationOptions options;
+  options.theta0_step_deg = args.step_deg;
+  options.theta_max_K_deg = args.theta_max_K_deg;
+  options.tail_samples = args.tail;
+  return options;
+}
+
+void require_converged(const PrbmDerivation& d) {
+  if (!d.converged) throw NoConvergence("PRB derivation did not converge: " + d.message);
+}
+
+Json derivation_json(const PrbmDerivation& d) {
+  Json j;
+  j["segment"] = d.segment;
+  if (d.segment == "fixed-pinned") {
+    j["n"] = d.load_ratio_n;
+    j["phi_deg"] = d.phi / kDeg;
+  }
+  j["gamma"] = d.gamma;
+  j["theta_max_gamma_deg"] = d.theta_max_gamma / kDeg;
+  j["c_theta"] = d.c_theta;
+  j["K_theta"] = d.K_theta;
+  j["theta_max_K_deg"] = d.theta_max_K / kDeg;
+  j["theta_max_K_source"] = d.theta_max_K_source;
+  j["theta0_at_theta_max_deg"] = d.theta0_at_theta_max / kDeg;
+  j["theta_max_at_path_end"] = d.theta_max_at_path_end;
+  j["samples"] = d.samples;
+  j["exact_evaluations"] = d.iterations;
+  j["converged"] = d.converged;
+  j["message"] = d.message;
+  return j;
+}
+
+void run_derive(const PrbmArgs& args) {
+  const PrbmDerivationOptions options = derivation_options(args);
+  PrbmDerivation d;
+  if (args.segment == "fixed-pinned") {
+    require_in_range(args.load_ratio_n, "--n (load ratio)", -20.0, 20.0);
+    d = derive_fixed_pinned(args.load_ratio_n, options);
+  } else if (args.segment == "end-moment") {
+    d = derive_end_moment(options);
+  } else {
+    throw InvalidInput(fmt::format(
+        "--segment = '{}' cannot be derived; allowed: fixed-pinned, end-moment", args.segment));
+  }
+  require_converged(d);
+  if (args.json) {
+    print_json(derivation_json(d));
+    return;
+  }
+  fmt::print("{} segment{}\n",
+             d.segment,
+             d.segment == "fixed-pinned"
+                 ? fmt::format(", n = {}, phi = {:.2f} deg", d.load_ratio_n, d.phi / kDeg)
+                 : "");
+  fmt::print("  gamma             = {:.5f}\n", d.gamma);
+  fmt::print("  Theta_max(gamma)  = {:.3f} deg (theta0 = {:.3f} deg)\n",
+             d.theta_max_gamma / kDeg,
+             d.theta0_at_theta_max / kDeg);
+  fmt::print("  c_theta           = {:.5f}\n", d.c_theta);
+  fmt::print("  K_theta           = {:.5f}\n", d.K_theta);
+  fmt::print("  Theta_max(K_theta)= {:.3f} deg ({})\n", d.theta_max_K / kDeg, d.theta_max_K_source);
+  fmt::print("  {}\n", d.message);
+}
+
+void table_fixed_pinned(const PrbmArgs& args) {
+  const PrbmDerivationOptions options = derivation_options(args);
+  Json rows = Json::array();
+  if (!args.json) {
+    fmt::print(
+        "Table 5.1 (fixed-pinned) recomputed from the exact elliptic solution; book value, "
+        "derived, "
+        "derived - book\n");
+    fmt::print("{:>6} {:>6} | {:>22} | {:>19} | {:>22} | {:>23} | {:>6}\n",
+               "n",
+               "phi",
+               "gamma",
+               "Theta_max(gamma) deg",
+               "c_theta",
+               "K_theta",
+               "ThK");
+  }
+  for (const FixedPinnedTableRow& row : table_5_1()) {
+    const PrbmDerivation d = derive_fixed_pinned(row.load_ratio_n, options);
+    require_converged(d);
+    const double tmax = d.theta_max_gamma / kDeg;
+    if (args.json) {
+      Json j = derivation_json(d);
+      j["book"] = {{"gamma", row.gamma},
+                   {"theta_max_gamma_deg", row.theta_max_gamma_deg},
+                   {"c_theta", row.c_theta},
+                   {"K_theta", row.K_theta},
+                   {"theta_max_K_deg", row.theta_max_K_deg}};
+      j["curve_fit"] = {{"gamma", gamma_curve_fit(row.load_ratio_n)},
+                        {"K_theta", K_theta_curve_fit(row.load_ratio_n)}};
+      rows.push_back(j);
+      continue;
+    }
+    fmt::print(
+        "{:6.1f} {:6.1f} | {:.4f} {:.4f} {:+.4f} | {:5.1f} {:5.1f} {:+5.1f} | {:.4f} {:.4f} "
+        "{:+.4f} | {:.4f} {:.4f} {:+.4f} | {:6.1f}\n",
+        row.load_ratio_n,
+        row.phi_deg,
+        row.gamma,
+        d.gamma,
+        d.gamma - row.gamma,
+        row.theta_max_gamma_deg,
+        tmax,
+        tmax - row.theta_max_gamma_deg,
+        row.c_theta,
+        d.c_theta,
+        d.c_theta - row.c_theta,
+        row.K_theta,
+        d.K_theta,
+        d.K_theta - row.K_theta,
+        d.theta_max_K / kDeg);
+  }
+  if (args.json) {
+    print_json({{"table", "5.1"}, {"segment", "fixed-pinned"}, {"rows", rows}});
+  } else {
+    fmt::print(
+        "ThK: Theta_max(K_theta) used for the K_theta fit (deg, Table 5.1's column). Rows n <= "
+        "-1.5: "
+        "gamma maximises Theta_max by the 0.5 % criterion and differs from the book "
+        "(docs/prbm.md).\n");
+  }
+}
+
+void table_initially_curved(const PrbmArgs& args) {
+  // Table 5.2 gives gamma and K_theta; rho follows from gamma by eqs. 5.116-5.118, so rho (and
+  // Theta_i) is what can be recomputed without a curved-beam derivation.
+  Json rows = Json::array();
+  if (!args.json) {
+    fmt::print(
+        "Table 5.2 (initially curved cantilever): rho and Theta_i recomputed from eqs. 5.115-5.118 "
+        "with the tabulated gamma\n");
+    fmt::print("{:>7} {:>6} | {:>7} {:>7} {:>8} | {:>9} | {:>6}\n",
+               "kappa0",
+               "gamma",
+               "rho bk",
+               "rho eq",
+               "diff",
+               "Theta_i",
+               "K_th");
+  }
+  for (const CurvedCantileverTableRow& row : table_5_2()) {
+    CurvedCantileverConstants c;
+    c.kappa0 = row.kappa0;
+    c.gamma = row.gamma;
+    c.K_theta = row.K_theta;
+    const InitiallyCurvedCantilever element(c);
+    if (args.json) {
+      rows.push_back({{"kappa0", row.kappa0},
+                      {"gamma", row.gamma},
+                      {"rho_book", row.rho},
+                      {"rho", element.rho()},
+                      {"rho_diff", element.rho() - row.rho},
+                      {"theta_i_rad", element.initial_angle()},
+                      {"K_theta", row.K_theta}});
+      continue;
+    }
+    fmt::print("{:7.2f} {:6.2f} | {:7.3f} {:7.4f} {:+8.4f} | {:9.4f} | {:6.2f}\n",
+               row.kappa0,
+               row.gamma,
+               row.rho,
+               element.rho(),
+               element.rho() - row.rho,
+               element.initial_angle(),
+               row.K_theta);
+  }
+  if (args.json) {
+    print_json({{"table", "5.2"}, {"segment", "initially-curved"}, {"rows", rows}});
+  } else {
+    fmt::print("gamma and K_theta are the book's (not re-derived); Theta_i in rad.\n");
+  }
+}
+
+void table_end_moment(const PrbmArgs& args) {
+  const PrbmDerivation d = derive_end_moment(derivation_options(args));
+  require_converged(d);
+  const EndMomentConstants book = kEndMomentBook;
+  const double theta0_max = d.theta0_at_theta_max / kDeg;
+  if (args.json) {
+    Json j = derivation_json(d);
+    j["book"] = {{"gamma", book.gamma},
+                 {"theta0_max_deg", book.theta0_max_deg},
+                 {"c_theta", book.c_theta},
+                 {"K_theta", book.K_theta}};
+    print_json(j);
+    return;
+  }
+  fmt::print(
+      "End-moment constants (eqs. 5.107-5.110): book, derived from the circular tip path, diff\n");
+  fmt::print(
+      "  gamma          {:.4f}  {:.5f}  {:+.5f}\n", book.gamma, d.gamma, d.gamma - book.gamma);
+  fmt::print("  theta0_max deg {:.1f}   {:.3f}  {:+.3f}\n",
+             book.theta0_max_deg,
+             theta0_max,
+             theta0_max - book.theta0_max_deg);
+  fmt::print("  c_theta        {:.4f}  {:.5f}  {:+.5f}\n",
+             book.c_theta,
+             d.c_theta,
+             d.c_theta - book.c_theta);
+  fmt::print("  K_theta        {:.4f}  {:.5f}  {:+.5f}\n",
+             book.K_theta,
+             d.K_theta,
+             d.K_theta - book.K_theta);
+  fmt::print("  Theta_max(gamma) = {:.3f} deg\n", d.theta_max_gamma / kDeg);
+}
+
+void run_table(const PrbmArgs& args) {
+  if (args.segment == "fixed-pinned") return table_fixed_pinned(args);
+  if (args.segment == "initially-curved") return table_initially_curved(args);
+  if (args.segment == "end-moment") return table_end_moment(args);
+  throw InvalidInput(fmt::format(
+      "--segment = '{}' has no table; allowed: fixed-pinned, initially-curved, end-moment",
+      args.segment));
+}
+
+// PRBM and exact tips for one load, and the errors between them.
+struct Comparison {
+  double load = 0.0;  // the given alpha2 or mu
+  TipPose exact;
+  TipPose prbm;
+  double Theta = 0.0;               // PRB angle under the load
+  double Theta_exact = 0.0;         // PRB angle of the exact tip (eq. 5.42)
+  double position_error = 0.0;      // |PRBM tip - exact tip| / exact deflection, same load
+  double path_error = 0.0;          // eq. 5.47 at the exact tip: the 0.5 % criterion quantity
+  double load_prbm_at_exact = 0.0;  // load the PRBM needs to reach the exact tip's Theta
+  double force_error = 0.0;         // (load_prbm_at_exact - load) / load
+  bool inside_position = false;     // Theta <= Theta_max(gamma)
+  bool inside_force = false;        // Theta <= Theta_max(K_theta)
+};
+
+// The PRBM of one segment type and the exact solution it is compared with.
+struct ComparedModel {
+  std::string constants;  // where the PRB constants come from
+  ValidityLimits limits;
+  std::function<Comparison(double)> at;  // comparison at one load value
+};
+
+void finish(Comparison& c, double gamma, const ValidityLimits& limits) {
+  const double deflection = std::hypot(1.0 - c.exact.a_over_l, c.exact.b_over_l);
+  require_finite_result(deflection, "exact tip deflection");
+  const PathSample sample{c.exact.theta0, c.exact.a_over_l, c.exact.b_over_l, c.load};
+  c.Theta_exact = prb_angle(sample, gamma);
+  c.path_error = relative_position_error(sample, gamma);
+  c.position_error =
+      std::hypot(c.prbm.a_over_l - c.exact.a_over_l, c.prbm.b_over_l - c.exact.b_over_l) /
+      deflection;
+  c.force_error = (c.load_prbm_at_exact - c.load) / c.load;
+  c.inside_position = c.Theta <= limits.theta_max_position;
+  c.inside_force = c.Theta <= limits.theta_max_force;
+}
+
+ComparedModel fixed_pinned_model(const PrbmArgs& args) {
+  require_in_range(args.load_ratio_n, "--n (load ratio)", -5.0, 10.0);
+  FixedPinnedConstants constants;
+  if (args.constants == "table") {
+    constants = FixedPinnedConstants::from_table(args.load_ratio_n);
+  } else if (args.constants == "fits") {
+    constants = FixedPinnedConstants::from_curve_fits(args.load_ratio_n);
+  } else if (args.constants == "derived") {
+    const PrbmDerivation d = derive_fixed_pinned(args.load_ratio_n, derivation_options(args));
+    require_converged(d);
+    constants = {args.load_ratio_n,
+                 d.gamma,
+                 d.c_theta,
+                 d.K_theta,
+                 d.theta_max_gamma,
+                 d.theta_max_K,
+                 "derived from the exact solution"};
+  } else {
+    throw InvalidInput(fmt::format(
+        "--constants = '{}' is not allowed; allowed: table, fits, derived", args.constants));
+  }
+  auto element = std::make_shared<FixedPinnedSegment>(constants);
+  const double n = args.load_ratio_n;
+  ComparedModel model{constants.source, element->limits(), {}};
+  model.at = [element, n](double alpha2) {
+    require_in_range(alpha2, "--alpha2 (P l^2/EI)", 1e-9, 1e4);
+    const EllipticResult exact = EllipticSolver().solve(EndLoad::howell(n, alpha2));
+    if (!exact.converged) throw NoConvergence("exact elliptic solve failed: " + exact.message);
+    const PrbEquilibrium eq = element->solve(EndLoad::howell(n, alpha2));
+    if (!eq.converged) throw NoConvergence("PRBM equilibrium failed: " + eq.message);
+    Comparison c;
+    c.load = alpha2;
+    c.exact = exact.tip;
+    c.prbm = eq.tip;
+    c.Theta = eq.Theta;
+    const double gamma = element->constants().gamma;
+    c.load_prbm_at_exact = element->alpha2_at(
+        prb_angle({exact.tip.theta0, exact.tip.a_over_l, exact.tip.b_over_l, alpha2}, gamma));
+    finish(c, gamma, element->limits());
+    return c;
+  };
+  return model;
+}
+
+ComparedModel end_moment_model() {
+  auto element = std::make_shared<EndMomentSegment>();
+  ComparedModel model{"eqs. 5.107-5.110", element->limits(), {}};
+  model.at = [element](double mu) {
+    require_in_range(mu, "--mu (M l/EI)", 1e-9, 6.0);
+    Comparison c;
+    c.load = mu;
+    c.exact = {std::sin(mu) / mu, (1.0 - std::cos(mu)) / mu, mu};  // circle, eqs. 2.59, 2.64
+    const PrbEquilibrium eq = element->solve(EndLoad{0.0, 0.0, mu});
+    if (!eq.converged) throw NoConvergence("PRBM equilibrium failed: " + eq.message);
+    c.prbm = eq.tip;
+    c.Theta = eq.Theta;
+    const double gamma = element->constants().gamma;
+    c.load_prbm_at_exact = element->stiffness_coefficient() *
+                           prb_angle({mu, c.exact.a_over_l, c.exact.b_over_l, mu}, gamma);
+    finish(c, gamma, element->limits());
+    return c;
+  };
+  return model;
+}
+
+Json comparison_json(const Comparison& c) {
+  return {{"load", c.load},
+          {"exact",
+           {{"a_over_l", c.exact.a_over_l},
+            {"b_over_l", c.exact.b_over_l},
+            {"theta0", c.exact.theta0}}},
+          {"prbm",
+           {{"a_over_l", c.prbm.a_over_l},
+            {"b_over_l", c.prbm.b_over_l},
+            {"theta0", c.prbm.theta0},
+            {"Theta", c.Theta}}},
+          {"Theta_exact", c.Theta_exact},
+          {"position_error_rel", c.position_error},
+          {"path_error_rel", c.path_error},
+          {"tip_angle_error", c.prbm.theta0 - c.exact.theta0},
+          {"load_prbm_at_exact_Theta", c.load_prbm_at_exact},
+          {"force_error_rel", c.force_error},
+          {"inside_position_range", c.inside_position},
+          {"inside_force_range", c.inside_force}};
+}
+
+void run_compare(const PrbmArgs& args) {
+  const bool force = args.segment == "fixed-pinned";
+  if (!force && args.segment != "end-moment") {
+    throw InvalidInput(fmt::format(
+        "--segment = '{}' cannot be compared; allowed: fixed-pinned, end-moment", args.segment));
+  }
+  const ComparedModel model = force ? fixed_pinned_model(args) : end_moment_model();
+  const char* load_name = force ? "alpha2" : "mu";
+  const bool ranged = !args.range.empty();
+  const Range range = ranged ? parse_range(args.range, "--range", 10'000)
+                             : Range{force ? args.alpha2 : args.mu, 0.0, 1};
+
+  Json head;
+  head["segment"] = args.segment;
+  if (force) head["n"] = args.load_ratio_n;
+  head["constants"] = model.constants;
+  head["theta_max_position_deg"] = model.limits.theta_max_position / kDeg;
+  head["theta_max_force_deg"] = model.limits.theta_max_force / kDeg;
+
+  if (!ranged) {
+    const Comparison c = model.at(range.start);
+    if (args.json) {
+      Json j = head;
+      j[load_name] = c.load;
+      const Json fields = comparison_json(c);  // named: items() must not outlive its object
+      for (const auto& [key, value] : fields.items()) {
+        if (key != "load") j[key] = value;
+      }
+      print_json(j);
+      return;
+    }
+    fmt::print("{} ({}), {} = {}\n", args.segment, model.constants, load_name, c.load);
+    fmt::print("  exact: a/l = {:.6f}  b/l = {:.6f}  theta0 = {:.6f} rad\n",
+               c.exact.a_over_l,
+               c.exact.b_over_l,
+               c.exact.theta0);
+    fmt::print("  PRBM : a/l = {:.6f}  b/l = {:.6f}  theta0 = {:.6f} rad  (Theta = {:.3f} deg)\n",
+               c.prbm.a_over_l,
+               c.prbm.b_over_l,
+               c.prbm.theta0,
+               c.Theta / kDeg);
+    fmt::print(
+        "  position error / deflection = {:.3f} % (same load; path error eq. 5.47 at the exact "
+        "tip: {:.3f} %)\n",
+        100.0 * c.position_error,
+        100.0 * c.path_error);
+    fmt::print("  load the PRBM needs for the exact tip's Theta = {:.6f}: {:+.3f} %\n",
+               c.load_prbm_at_exact,
+               100.0 * c.force_error);
+    fmt::print("  inside validity: position {} (Theta_max = {:.1f} deg), force {} ({:.1f} deg)\n",
+               c.inside_position ? "yes" : "NO",
+               model.limits.theta_max_position / kDeg,
+               c.inside_force ? "yes" : "NO",
+               model.limits.theta_max_force / kDeg);
+    return;
+  }
+
+  Json points = Json::array();
+  if (!args.json) {
+    fmt::print("{} ({}); Theta_max = {:.1f} deg (position), {:.1f} deg (force)\n",
+               args.segment,
+               model.constants,
+               model.limits.theta_max_position / kDeg,
+               model.limits.theta_max_force / kDeg);
+    fmt::print("{:>10} {:>9} {:>9} {:>10} {:>10} {:>10}  {}\n",
+               load_name,
+               "Theta",
+               "theta0",
+               "pos.err%",
+               "path.err%",
+               "force.err%",
+               "inside (pos, force)");
+  }
+  for (long i = 0; i < range.count; ++i) {
+    const Comparison c = model.at(range.at(i));
+    if (args.json) {
+      points.push_back(comparison_json(c));
+      continue;
+    }
+    fmt::print("{:10.5f} {:9.3f} {:9.4f} {:10.3f} {:10.3f} {:+10.3f}  {}, {}\n",
+               c.load,
+               c.Theta / kDeg,
+               c.exact.theta0,
+               100.0 * c.position_error,
+               100.0 * c.path_error,
+               100.0 * c.force_error,
+               c.inside_position ? "yes" : "NO",
+               c.inside_force ? "yes" : "NO");
+  }
+  if (args.json) {
+    head["load_name"] = load_name;
+    head["points"] = points;
+    print_json(head);
+  }
+}
+
+}  // namespace
+
+void register_prbm_command(CLI::App& app) {
+  CLI::App& prbm = get_or_add_subcommand(
+      app, "prbm", "Pseudo-rigid-body constants: derive, tables, compare with the exact solution");
+  prbm.require_subcommand(1);
+
+  auto derive_args = std::make_shared<PrbmArgs>();
+  CLI::App* derive = prbm.add_subcommand("derive", "Derive gamma, c_theta, K_theta, Theta_max");
+  derive->add_option("--segment", derive_args->segment, "fixed-pinned or end-moment")
+      ->default_str("fixed-pinned");
+  derive->add_option("--n", derive_args->load_ratio_n, "Load ratio n (-20..20), n > 0 compressive")
+      ->default_str("0");
+  derive->add_option("--step", derive_args->step_deg, "theta0 sampling step, deg")
+      ->default_str("0.1");
+  derive
+      ->add_option("--theta-max-K",
+                   derive_args->theta_max_K_deg,
+                   "Theta_max(K_theta) for the K_theta fit, deg (0: Table 5.1 / 0.7 phi)")
+      ->default_str("0");
+  derive
+      ->add_option("--tail",
+                   derive_args->tail,
+                   "Extra samples approaching theta0 -> phi (0-60), for Theta_max only")
+      ->default_str("0");
+  derive->add_flag("--json", derive_args->json, "Print one JSON object");
+  derive->callback([derive_args] { run_derive(*derive_args); });
+
+  auto table_args = std::make_shared<PrbmArgs>();
+  CLI::App* table = prbm.add_subcommand("table", "Book table recomputed beside the book values");
+  table->add_option("--segment", table_args->segment, "fixed-pinned, initially-curved, end-moment")
+      ->default_str("fixed-pinned");
+  table->add_option("--step", table_args->step_deg, "theta0 sampling step, deg")
+      ->default_str("0.1");
+  table->add_option("--tail", table_args->tail, "Extra samples approaching phi (0-60)")
+      ->default_str("0");
+  table->add_flag("--json", table_args->json, "Print one JSON object");
+  table->callback([table_args] { run_table(*table_args); });
+
+  auto compare_args = std::make_shared<PrbmArgs>();
+  CLI::App* compare =
+      prbm.add_subcommand("compare", "PRBM tip and load against the exact solution");
+  compare->add_option("--segment", compare_args->segment, "fixed-pinned or end-moment")
+      ->default_str("fixed-pinned");
+  compare->add_option("--n", compare_args->load_ratio_n, "Load ratio n (-5..10)")->default_str("0");
+  compare->add_option("--alpha2", compare_args->alpha2, "alpha2 = P l^2/EI (fixed-pinned)")
+      ->default_str("1");
+  compare->add_option("--mu", compare_args->mu, "mu = M l/EI (end-moment)")->default_str("1");
+  compare->add_option("--constants", compare_args->constants, "table, fits or derived")
+      ->default_str("table");
+  compare->add_option("--range",
+                      compare_args->range,
+                      "START:STOP:COUNT of alpha2 (or mu): one row per load instead of one load");
+  compare->add_flag("--json", compare_args->json, "Print one JSON object");
+  compare->callback([compare_args] { run_compare(*compare_args); });
+}
+
+}  // namespace flexure::cli

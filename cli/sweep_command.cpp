@@ -1,0 +1,149 @@
+// `flexure sweep beam`: the end-loaded cantilever over a range of alpha2, written to HDF5.
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+#include "cli/beam_methods.h"
+#include "cli/cli_common.h"
+#include "cli/commands.h"
+#include "io/beam_sweep.h"
+#include "io/hdf5_file.h"
+#include "solver/common/errors.h"
+
+namespace flexure::cli {
+namespace {
+
+struct SweepBeamArgs {
+  double load_ratio_n = 0.0;
+  double mu = 0.0;
+  std::string alpha2_range;
+  std::string method = "auto";
+  std::string out;
+  int threads = 2;
+  bool json = false;
+};
+
+// 10^7 points keep the five columns under 400 MB in memory.
+constexpr long kMaxSweepCount = 10'000'000;
+// Below this many points a sweep takes well under a second: no progress bar.
+constexpr long kProgressBarMinCount = 20'000;
+
+void draw_progress(long done, long total) {
+  constexpr int kWidth = 40;
+  const int filled = total > 0 ? static_cast<int>(kWidth * done / total) : kWidth;
+  std::fprintf(stderr,
+               "\r[%s%s] %3ld%% %ld/%ld",
+               std::string(filled, '#').c_str(),
+               std::string(kWidth - filled, ' ').c_str(),
+               total > 0 ? 100 * done / total : 100L,
+               done,
+               total);
+  if (done >= total) std::fputc('\n', stderr);
+  std::fflush(stderr);
+}
+
+void run_sweep_beam(const SweepBeamArgs& args) {
+  const auto started = std::chrono::steady_clock::now();
+  require_finite_input(args.load_ratio_n, "--n (load ratio n)");
+  require_finite_input(args.mu, "--mu (end moment M l/EI)");
+  require_in_range(args.threads, "--threads", 1, 64);
+  const Range range = parse_range(args.alpha2_range, "--alpha2", kMaxSweepCount);
+  // Fails (exit 2) for a method not in this build, before any file is touched.
+  const double tolerance = beam_method_tolerance(args.method);
+  const std::string method = resolve_beam_method(args.method);
+
+  // Open the output first: an unwritable path is reported before minutes of solving.
+  std::unique_ptr<io::AtomicHdf5File> file;
+  try {
+    file = std::make_unique<io::AtomicHdf5File>(args.out);
+  } catch (const io::Hdf5Error& e) {
+    throw InvalidInput(fmt::format("--out: {}", e.what()));
+  }
+
+  std::vector<double> alpha2(range.count);
+  for (long i = 0; i < range.count; ++i) alpha2[i] = range.at(i);
+
+  BeamProblem problem;
+  problem.given = BeamProblem::Given::kAlpha2;
+  problem.load_ratio_n = args.load_ratio_n;
+  problem.mu = args.mu;
+  const io::BeamPointSolver solve_point = [&](double load) {
+    BeamProblem at = problem;
+    at.value = load;
+    BeamSolution solution = solve_beam(method, at);
+    io::BeamSweepPoint point;
+    point.converged = solution.converged;
+    point.tip = solution.tip;
+    if (!solution.converged) point.message = std::move(solution.message);
+    return point;
+  };
+  io::BeamSweepOptions options;
+  options.threads = args.threads;
+  if (::isatty(STDERR_FILENO) && range.count >= kProgressBarMinCount) {
+    options.progress = draw_progress;
+  }
+  const io::BeamSweepTable table = io::run_beam_sweep(alpha2, solve_point, options);
+
+  io::write_beam_sweep(
+      file->root(), table, io::BeamSweepMetadata{method, args.load_ratio_n, args.mu, tolerance});
+  file->commit();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+
+  if (args.json) {
+    Json summary;
+    summary["out"] = args.out;
+    summary["count"] = range.count;
+    summary["converged_count"] = table.converged_count;
+    summary["seconds"] = seconds;
+    print_json(summary);
+  } else {
+    fmt::print("Wrote {} loads (alpha2 {} .. {}, method {}, n = {:g}, mu = {:g}) to {}\n",
+               range.count,
+               range.start,
+               range.stop,
+               method,
+               args.load_ratio_n,
+               args.mu,
+               args.out);
+    fmt::print("  converged: {} of {}; {:.3f} s\n", table.converged_count, range.count, seconds);
+  }
+  if (table.first_failure >= 0) {
+    throw NoConvergence(fmt::format(
+        "{} of {} loads have no converged solution (stored with status 1 and NaN in '{}'); the "
+        "first is alpha2 = {}: {}. {}",
+        range.count - table.converged_count,
+        range.count,
+        args.out,
+        table.alpha2[table.first_failure],
+        table.first_failure_message,
+        other_methods_hint(method)));
+  }
+}
+
+}  // namespace
+
+void register_sweep_command(CLI::App& app) {
+  CLI::App& sweep = get_or_add_subcommand(
+      app, "sweep", "Solve a range of loads and write the results to an HDF5 file");
+  sweep.require_subcommand(1);
+
+  auto args = std::make_shared<SweepBeamArgs>();
+  CLI::App* beam = sweep.add_subcommand(
+      "beam", "Cantilever with end load over alpha2 = START:STOP:COUNT (equally spaced)");
+  beam->add_option("--n", args->load_ratio_n, "Load ratio n: horizontal load nP, n > 0 compressive")
+      ->default_str("0");
+  beam->add_option("--mu", args->mu, "End moment mu = M l/EI")->default_str("0");
+  beam->add_option("--alpha2", args->alpha2_range, "Loads START:STOP:COUNT (COUNT >= 1)")
+      ->required();
+  add_method_option(*beam, args->method);
+  beam->add_option("--out", args->out, "Output HDF5 file (written atomically)")->required();
+  beam->add_option("--threads", args->threads, "Worker threads (1-64)")->default_str("2");
+  beam->add_flag("--json", args->json, "Print one JSON summary object on stdout");
+  beam->callback([args] { run_sweep_beam(*args); });
+}
+
+}  // namespace flexure::cli

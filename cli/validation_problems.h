@@ -1,0 +1,48 @@
+#pragma once
+// Reference problems for `flexure validate` and the registry of methods checked against them.
+//
+// Every reference value is independent of flexure: closed forms (Howell eqs. 2.53, 2.59, 2.64,
+// linear beam theory) or values from the book digest (/work/shared/reference/book-digest.md,
+// sec. 1.5 and sec. 8), which were computed from Howell's eqs. 2.90-2.98 and checked by quadrature.
+//
+// To add a method (shooting, chain, PRBM): append a ValidationMethod in validation_methods() with
+// a solve function and an `applies` filter for the problems it can handle. To add a problem:
+// append a ReferenceProblem in reference_problems() with its source.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "cli/beam_methods.h"
+
+namespace flexure::cli {
+
+// One number to compare. rel_error = |computed - reference| / max(|reference|, scale_floor).
+struct ReferenceValue {
+  std::string quantity;  // alpha, alpha2, a_over_l, b_over_l, theta0
+  double reference = 0.0;
+  double tolerance = 0.0;    // on rel_error
+  double scale_floor = 0.0;  // > 0 where the reference may vanish (then the error is absolute)
+};
+
+struct ReferenceProblem {
+  std::string name;    // short id shown in the table, e.g. "n=0 table theta0=0.25 inverse"
+  std::string source;  // where the reference comes from
+  BeamProblem problem;
+  std::vector<ReferenceValue> expected;
+};
+
+std::vector<ReferenceProblem> reference_problems();
+
+struct ValidationMethod {
+  std::string name;
+  std::function<bool(const ReferenceProblem&)> applies;  // false: the method skips the problem
+  std::function<BeamSolution(const BeamProblem&)> solve;
+};
+
+// Every method available in this build.
+std::vector<ValidationMethod> validation_methods();
+
+// The value of `quantity` in a solution (alpha = sqrt(alpha2), Howell eq. 2.83).
+double quantity_value(const BeamSolution& solution, const std::string& quantity);
+
+}  // namespace flexure::cli

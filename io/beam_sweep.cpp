@@ -1,0 +1,144 @@
+#include "io/beam_sweep.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <mutex>
+#include <thread>
+
+#include "flexure/version.h"
+#include "solver/common/errors.h"
+
+namespace flexure::io {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+bool finite_pose(const TipPose& tip) {
+  return std::isfinite(tip.a_over_l) && std::isfinite(tip.b_over_l) && std::isfinite(tip.theta0);
+}
+
+}  // namespace
+
+BeamSweepTable run_beam_sweep(const std::vector<double>& alpha2,
+                              const BeamPointSolver& solve,
+                              const BeamSweepOptions& options) {
+  const long total = static_cast<long>(alpha2.size());
+  BeamSweepTable table;
+  table.alpha2 = alpha2;
+  table.a_over_l.assign(total, kNaN);
+  table.b_over_l.assign(total, kNaN);
+  table.theta0.assign(total, kNaN);
+  table.status.assign(total, kSweepNotConverged);
+
+  const long chunk = std::max(1L, options.chunk);
+  std::atomic<long> next{0};
+  std::atomic<long> done{0};
+  std::atomic<bool> stop{false};
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  // Points write disjoint entries of the table, so no locking is needed for the results.
+  const auto work = [&] {
+    try {
+      while (!stop.load(std::memory_order_relaxed)) {
+        const long begin = next.fetch_add(chunk);
+        if (begin >= total) break;
+        const long end = std::min(total, begin + chunk);
+        for (long i = begin; i < end; ++i) {
+          BeamSweepPoint point;
+          try {
+            point = solve(alpha2[i]);
+          } catch (const NoConvergence& e) {
+            point.converged = false;
+            point.message = e.what();
+          } catch (const InvalidInput& e) {
+            throw InvalidInput(fmt::format("at alpha2 = {}: {}", alpha2[i], e.what()));
+          }
+          if (point.converged && finite_pose(point.tip)) {
+            table.a_over_l[i] = point.tip.a_over_l;
+            table.b_over_l[i] = point.tip.b_over_l;
+            table.theta0[i] = point.tip.theta0;
+            table.status[i] = kSweepConverged;
+          }
+        }
+        done.fetch_add(end - begin);
+      }
+    } catch (...) {
+      const std::lock_guard lock(error_mutex);
+      if (!error) error = std::current_exception();
+      stop = true;
+    }
+  };
+
+  const int threads = static_cast<int>(
+      std::clamp<long>(options.threads, 1, std::max(1L, (total + chunk - 1) / chunk)));
+  std::vector<std::thread> helpers;
+  helpers.reserve(threads - 1);
+  for (int t = 1; t < threads; ++t) helpers.emplace_back(work);
+  if (options.progress) {
+    // The caller reports progress between its own chunks; helpers never touch the terminal.
+    std::thread caller_worker(work);
+    while (done.load() < total && !stop.load()) {
+      options.progress(done.load(), total);
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    caller_worker.join();
+    if (!stop.load()) options.progress(total, total);
+  } else {
+    work();
+  }
+  for (std::thread& helper : helpers) helper.join();
+  if (error) std::rethrow_exception(error);
+
+  for (long i = 0; i < total; ++i) {
+    if (table.status[i] == kSweepConverged) {
+      ++table.converged_count;
+    } else if (table.first_failure < 0) {
+      table.first_failure = i;
+    }
+  }
+  if (table.first_failure >= 0) {
+    // Re-solve the first failure once, serially, for its message (cheaper than storing one
+    // message per point).
+    try {
+      BeamSweepPoint point = solve(alpha2[table.first_failure]);
+      table.first_failure_message =
+          point.converged ? "the solution contains a non-finite value" : point.message;
+    } catch (const NoConvergence& e) {
+      table.first_failure_message = e.what();
+    }
+  }
+  return table;
+}
+
+void write_provenance(Hdf5Group& group) {
+  group.set_attribute("tool", "flexure");
+  group.set_attribute("version", kVersion);
+  group.set_attribute("git_commit", kGitCommit);
+}
+
+void write_beam_sweep(Hdf5Group& group,
+                      const BeamSweepTable& table,
+                      const BeamSweepMetadata& metadata) {
+  group.write_dataset("alpha2", std::span<const double>(table.alpha2));
+  group.write_dataset("a_over_l", std::span<const double>(table.a_over_l));
+  group.write_dataset("b_over_l", std::span<const double>(table.b_over_l));
+  group.write_dataset("theta0", std::span<const double>(table.theta0));
+  group.write_dataset("status", std::span<const int>(table.status));
+  group.set_attribute("method", metadata.method);
+  group.set_attribute("n", metadata.load_ratio_n);
+  group.set_attribute("mu", metadata.mu);
+  group.set_attribute("tolerance", metadata.tolerance);
+  group.set_attribute("count", static_cast<std::int64_t>(table.alpha2.size()));
+  group.set_attribute("converged_count", static_cast<std::int64_t>(table.converged_count));
+  group.set_attribute("status_meaning",
+                      "0 converged; 1 no converged solution (a_over_l, b_over_l, theta0 are NaN)");
+  write_provenance(group);
+}
+
+}  // namespace flexure::io

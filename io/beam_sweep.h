@@ -1,0 +1,81 @@
+#pragma once
+// A load sweep of the end-loaded cantilever and its HDF5 layout (`flexure sweep beam`).
+//
+// It lives in the library, not in cli/, so that benchmarks/sweep_bench.cpp measures exactly what
+// the tool does: solve every point (optionally on a few threads), then write each column with a
+// single HDF5 call.
+//
+// File layout (all datasets 1-D, one entry per load, in the order of the requested range):
+//   /alpha2    float64  P l^2/EI (Howell eq. 2.83)
+//   /a_over_l  float64  a/l, NaN where status != 0
+//   /b_over_l  float64  b/l, NaN where status != 0
+//   /theta0    float64  tip angle in rad, NaN where status != 0
+//   /status    int32    0 converged, 1 no converged solution at this load
+// Root attributes: method, n (load ratio), mu, tolerance, count, converged_count, tool
+// ("flexure"), version, git_commit.
+// NaN in a stored float dataset always means "no solution" and is always flagged by status = 1.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "io/hdf5_file.h"
+#include "solver/common/end_load.h"
+
+namespace flexure::io {
+
+// Status codes stored in /status.
+inline constexpr int kSweepConverged = 0;
+inline constexpr int kSweepNotConverged = 1;
+
+// Result of one point as reported by the method.
+struct BeamSweepPoint {
+  bool converged = false;
+  TipPose tip;
+  std::string message;  // why it failed (only needed when !converged)
+};
+
+// Solves one load alpha2; must be safe to call from several threads at once. May throw
+// NoConvergence (stored as status 1) or InvalidInput (aborts the sweep).
+using BeamPointSolver = std::function<BeamSweepPoint(double alpha2)>;
+
+struct BeamSweepOptions {
+  int threads = 2;    // worker threads including the caller; 1 = serial
+  long chunk = 2048;  // loads handed to a thread at a time (amortises synchronisation)
+  // Called on the calling thread with the number of points done so far (may be null).
+  std::function<void(long done, long total)> progress;
+};
+
+struct BeamSweepTable {
+  std::vector<double> alpha2;
+  std::vector<double> a_over_l;
+  std::vector<double> b_over_l;
+  std::vector<double> theta0;
+  std::vector<int> status;
+  long converged_count = 0;
+  long first_failure = -1;            // index of the first point with status != 0, or -1
+  std::string first_failure_message;  // the method's message for that point
+};
+
+// Solves every load in `alpha2`. Non-converged points (or converged ones with a non-finite
+// value) get status 1 and NaN values. Rethrows the first InvalidInput, naming the load.
+BeamSweepTable run_beam_sweep(const std::vector<double>& alpha2,
+                              const BeamPointSolver& solve,
+                              const BeamSweepOptions& options = {});
+
+// What produced the table, stored as attributes.
+struct BeamSweepMetadata {
+  std::string method;
+  double load_ratio_n = 0.0;
+  double mu = 0.0;
+  double tolerance = 0.0;
+};
+
+// Writes the layout above into `group` (usually the root of an AtomicHdf5File).
+void write_beam_sweep(Hdf5Group& group,
+                      const BeamSweepTable& table,
+                      const BeamSweepMetadata& metadata);
+
+// Writes the tool name, version and git commit attributes (flexure/version.h) on `group`.
+void write_provenance(Hdf5Group& group);
+
+}  // namespace flexure::io

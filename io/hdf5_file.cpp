@@ -1,0 +1,278 @@
+#include "io/hdf5_file.h"
+
+#include <fmt/format.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <mutex>
+#include <utility>
+
+namespace flexure::io {
+namespace {
+
+// Closes an HDF5 identifier when leaving scope; close failures in cleanup paths are ignored
+// because the operation that needed the object has already succeeded or thrown.
+class ScopedId {
+ public:
+  using Closer = herr_t (*)(hid_t);
+  ScopedId(hid_t id, Closer closer) : id_(id), closer_(closer) {}
+  ScopedId(const ScopedId&) = delete;
+  ScopedId& operator=(const ScopedId&) = delete;
+  ~ScopedId() {
+    if (id_ >= 0) closer_(id_);
+  }
+  hid_t get() const { return id_; }
+
+ private:
+  hid_t id_;
+  Closer closer_;
+};
+
+hid_t check_id(hid_t id, const std::string& where, const char* what) {
+  if (id < 0) throw Hdf5Error(fmt::format("HDF5: {} failed for {}", what, where));
+  return id;
+}
+
+void check_status(herr_t status, const std::string& where, const char* what) {
+  if (status < 0) throw Hdf5Error(fmt::format("HDF5: {} failed for {}", what, where));
+}
+
+// A UTF-8 variable-length string type (read back as str by h5py and as char* by the C API).
+hid_t make_string_type(const std::string& where) {
+  hid_t type = check_id(H5Tcopy(H5T_C_S1), where, "copying the string type");
+  if (H5Tset_size(type, H5T_VARIABLE) < 0 || H5Tset_cset(type, H5T_CSET_UTF8) < 0) {
+    H5Tclose(type);
+    throw Hdf5Error(fmt::format("HDF5: setting up a UTF-8 string type failed for {}", where));
+  }
+  return type;
+}
+
+// Explains why a file cannot be created at `path` in words a user can act on, or "" if the
+// directory looks writable (HDF5's own messages do not say why).
+std::string why_not_writable(const std::filesystem::path& path) {
+  const std::filesystem::path dir = path.parent_path().empty() ? "." : path.parent_path();
+  struct stat info {};
+  if (::stat(dir.c_str(), &info) != 0) {
+    return fmt::format("directory '{}' does not exist ({})", dir.string(), std::strerror(errno));
+  }
+  if (!S_ISDIR(info.st_mode)) return fmt::format("'{}' is not a directory", dir.string());
+  if (::access(dir.c_str(), W_OK | X_OK) != 0) {
+    return fmt::format("directory '{}' is not writable ({})", dir.string(), std::strerror(errno));
+  }
+  if (path.filename().empty()) return "the path names a directory, not a file";
+  if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode)) {
+    return "the path is an existing directory";
+  }
+  return {};
+}
+
+}  // namespace
+
+void disable_hdf5_error_printing() {
+  static std::once_flag flag;
+  std::call_once(flag, [] { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); });
+}
+
+// ---------------------------------------------------------------------------------------------
+// Hdf5Group
+
+Hdf5Group::Hdf5Group(hid_t id, std::string file_path, std::string group_path)
+    : id_(id), file_path_(std::move(file_path)), group_path_(std::move(group_path)) {}
+
+Hdf5Group::Hdf5Group(Hdf5Group&& other) noexcept
+    : id_(std::exchange(other.id_, H5I_INVALID_HID)),
+      file_path_(std::move(other.file_path_)),
+      group_path_(std::move(other.group_path_)) {}
+
+Hdf5Group& Hdf5Group::operator=(Hdf5Group&& other) noexcept {
+  if (this != &other) {
+    if (id_ >= 0) H5Gclose(id_);
+    id_ = std::exchange(other.id_, H5I_INVALID_HID);
+    file_path_ = std::move(other.file_path_);
+    group_path_ = std::move(other.group_path_);
+  }
+  return *this;
+}
+
+Hdf5Group::~Hdf5Group() {
+  // After the file was closed with H5F_CLOSE_STRONG the id is no longer valid; H5Iis_valid
+  // avoids closing an identifier HDF5 may have reused.
+  if (id_ >= 0 && H5Iis_valid(id_) > 0) H5Gclose(id_);
+}
+
+std::string Hdf5Group::where() const { return fmt::format("{}:{}", file_path_, group_path_); }
+
+std::string Hdf5Group::child_path(const std::string& name) const {
+  return group_path_ == "/" ? "/" + name : group_path_ + "/" + name;
+}
+
+Hdf5Group Hdf5Group::create_group(const std::string& name) {
+  const std::string path = child_path(name);
+  const std::string where = fmt::format("group '{}' in {}", path, file_path_);
+  if (name.empty() || name.find('/') != std::string::npos) {
+    throw Hdf5Error(fmt::format("HDF5: invalid group name for {}", where));
+  }
+  hid_t id = check_id(H5Gcreate2(id_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                      where,
+                      "creating the group");
+  return Hdf5Group(id, file_path_, path);
+}
+
+template <typename T>
+void Hdf5Group::write_numeric(const std::string& name, std::span<const T> values, hid_t type) {
+  const std::string where = fmt::format("dataset '{}' in {}", child_path(name), file_path_);
+  const hsize_t size = values.size();
+  ScopedId space(check_id(H5Screate_simple(1, &size, nullptr), where, "creating the dataspace"),
+                 H5Sclose);
+  ScopedId dataset(
+      check_id(
+          H5Dcreate2(id_, name.c_str(), type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+          where,
+          "creating the dataset"),
+      H5Dclose);
+  if (size > 0) {
+    check_status(H5Dwrite(dataset.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
+                 where,
+                 "writing the data");
+  }
+}
+
+void Hdf5Group::write_dataset(const std::string& name, std::span<const double> values) {
+  write_numeric(name, values, H5T_NATIVE_DOUBLE);
+}
+
+void Hdf5Group::write_dataset(const std::string& name, std::span<const int> values) {
+  write_numeric(name, values, H5T_NATIVE_INT);
+}
+
+void Hdf5Group::write_dataset(const std::string& name, const std::vector<std::string>& values) {
+  const std::string where = fmt::format("dataset '{}' in {}", child_path(name), file_path_);
+  std::vector<const char*> pointers;
+  pointers.reserve(values.size());
+  for (const std::string& value : values) pointers.push_back(value.c_str());
+  ScopedId type(make_string_type(where), H5Tclose);
+  const hsize_t size = values.size();
+  ScopedId space(check_id(H5Screate_simple(1, &size, nullptr), where, "creating the dataspace"),
+                 H5Sclose);
+  ScopedId dataset(
+      check_id(
+          H5Dcreate2(
+              id_, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+          where,
+          "creating the dataset"),
+      H5Dclose);
+  if (size > 0) {
+    check_status(
+        H5Dwrite(dataset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()),
+        where,
+        "writing the strings");
+  }
+}
+
+void Hdf5Group::set_scalar_attribute(const std::string& name, hid_t type, const void* value) {
+  const std::string where = fmt::format("attribute '{}' of {}", name, this->where());
+  ScopedId space(check_id(H5Screate(H5S_SCALAR), where, "creating the dataspace"), H5Sclose);
+  ScopedId attribute(
+      check_id(H5Acreate2(id_, name.c_str(), type, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+               where,
+               "creating the attribute"),
+      H5Aclose);
+  check_status(H5Awrite(attribute.get(), type, value), where, "writing the attribute");
+}
+
+void Hdf5Group::set_attribute(const std::string& name, const std::string& value) {
+  const std::string where = fmt::format("attribute '{}' of {}", name, this->where());
+  ScopedId type(make_string_type(where), H5Tclose);
+  const char* pointer = value.c_str();
+  set_scalar_attribute(name, type.get(), &pointer);
+}
+
+void Hdf5Group::set_attribute(const std::string& name, const char* value) {
+  set_attribute(name, std::string(value));
+}
+
+void Hdf5Group::set_attribute(const std::string& name, double value) {
+  set_scalar_attribute(name, H5T_NATIVE_DOUBLE, &value);
+}
+
+void Hdf5Group::set_attribute(const std::string& name, std::int64_t value) {
+  set_scalar_attribute(name, H5T_NATIVE_INT64, &value);
+}
+
+// ---------------------------------------------------------------------------------------------
+// AtomicHdf5File
+
+AtomicHdf5File::AtomicHdf5File(std::string path)
+    : path_(std::move(path)), root_(H5I_INVALID_HID, path_, "/") {
+  disable_hdf5_error_printing();
+  if (path_.empty()) throw Hdf5Error("cannot write an HDF5 file to an empty path");
+  const std::string problem = why_not_writable(path_);
+  if (!problem.empty()) {
+    throw Hdf5Error(fmt::format("cannot write HDF5 file '{}': {}", path_, problem));
+  }
+
+  // Same directory as the target so that rename() is atomic (same file system). The name is
+  // unique per process and call; H5F_ACC_EXCL refuses to clobber anything.
+  static std::atomic<unsigned> counter{0};
+  const std::filesystem::path target(path_);
+  const std::filesystem::path temp =
+      target.parent_path() / fmt::format(".{}.{}-{}.tmp",
+                                         target.filename().string(),
+                                         static_cast<long>(::getpid()),
+                                         counter.fetch_add(1));
+  temp_path_ = temp.string();
+
+  ScopedId access(check_id(H5Pcreate(H5P_FILE_ACCESS), path_, "creating file-access properties"),
+                  H5Pclose);
+  // STRONG: closing the file closes every group or dataset still open, so commit() really has
+  // the complete file on disk before the rename.
+  check_status(H5Pset_fclose_degree(access.get(), H5F_CLOSE_STRONG), path_, "setting close degree");
+  file_ = H5Fcreate(temp_path_.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, access.get());
+  if (file_ < 0) {
+    throw Hdf5Error(
+        fmt::format("cannot write HDF5 file '{}': creating '{}' failed", path_, temp_path_));
+  }
+  hid_t root = H5Gopen2(file_, "/", H5P_DEFAULT);
+  if (root < 0) {
+    discard();
+    throw Hdf5Error(fmt::format("HDF5: opening the root group of '{}' failed", temp_path_));
+  }
+  root_ = Hdf5Group(root, path_, "/");
+}
+
+AtomicHdf5File::~AtomicHdf5File() {
+  if (!committed_) discard();
+}
+
+void AtomicHdf5File::discard() noexcept {
+  if (root_.id_ >= 0 && H5Iis_valid(root_.id_) > 0) H5Gclose(root_.id_);
+  root_.id_ = H5I_INVALID_HID;
+  if (file_ >= 0) H5Fclose(file_);
+  file_ = H5I_INVALID_HID;
+  if (!temp_path_.empty()) std::remove(temp_path_.c_str());
+}
+
+void AtomicHdf5File::commit() {
+  if (committed_) throw Hdf5Error(fmt::format("HDF5 file '{}' was already committed", path_));
+  if (root_.id_ >= 0) H5Gclose(root_.id_);
+  root_.id_ = H5I_INVALID_HID;
+  const herr_t closed = H5Fclose(file_);
+  file_ = H5I_INVALID_HID;
+  if (closed < 0) {
+    discard();
+    throw Hdf5Error(fmt::format("HDF5: closing (flushing) '{}' failed", temp_path_));
+  }
+  if (std::rename(temp_path_.c_str(), path_.c_str()) != 0) {
+    const std::string reason = std::strerror(errno);
+    discard();
+    throw Hdf5Error(fmt::format("cannot rename '{}' to '{}': {}", temp_path_, path_, reason));
+  }
+  committed_ = true;
+}
+
+}  // namespace flexure::io
