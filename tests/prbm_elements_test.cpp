@@ -16,6 +16,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "elements/curved_pinned_pinned_segment.h"
 #include "elements/end_moment_segment.h"
 #include "elements/fixed_fixed_segment.h"
 #include "elements/fixed_guided_segment.h"
@@ -233,6 +234,41 @@ TEST(FixedGuidedSegment, SmallDeflectionStiffnessIsNearLinearTheory) {
   EXPECT_EQ(seg.tip(0.7).theta0, 0.0);  // eq. 5.100
 }
 
+TEST(FixedGuidedSegment, BookEndEffectorSpringConstant) {
+  // §5.10 linear-motion end effector (L4307): Delrin E = 2.9 GPa, l = 22 mm, b = 7 mm, h = 0.8 mm,
+  // gamma = 0.85, K_theta = 2.65: I = 2.99e-13 m^4, K = 2 gamma K_theta EI/l = 0.18 N m/rad.
+  FixedPinnedConstants c = FixedPinnedConstants::from_table(0.0);
+  c.gamma = 0.85;
+  c.K_theta = 2.65;
+  const FixedGuidedSegment seg(c);
+  const RectangularSection section{7e-3, 0.8e-3, 2.9e9};
+  EXPECT_NEAR(section.second_moment(), 2.99e-13, printed(0.005e-13));
+  EXPECT_NEAR(seg.spring_constant(section.flexural_rigidity(), 22e-3), 0.18, printed(0.005));
+  // Digest [calc] 0.1776 uses the book's rounded I = 2.99e-13 m^4.
+  EXPECT_NEAR(seg.spring_constant(2.9e9 * 2.99e-13, 22e-3), 0.1776, 5e-5);
+}
+
+TEST(SmallLengthFlexuralPivot, BookBistableSwitchSpringConstant) {
+  // §5.10 bistable switch (L4294): polypropylene E = 200,000 psi, l = 0.13 in, 0.25 x 0.08 in:
+  // I = 1.07e-5 in^4, K = EI/l = 16.4 in lb/rad.
+  const SmallLengthFlexuralPivot pivot(10.0);
+  const RectangularSection section{0.25, 0.08, 2.0e5};
+  EXPECT_NEAR(section.second_moment(), 1.07e-5, printed(0.005e-5));
+  EXPECT_NEAR(pivot.spring_constant(section.flexural_rigidity(), 0.13), 16.4, printed(0.05));
+}
+
+TEST(FixedGuidedSegment, MatchesTheExactAntisymmetricSolutionWithinThePrbmAccuracy) {
+  // A fixed-guided beam is two antisymmetric fixed-pinned halves of length l/2, so its exact tip
+  // for alpha2 = F l^2/EI equals (in units of l) a half's tip for alpha2/4. Digest section 1.5 (n =
+  // 0): alpha2_half = 2.046504 gives b = 0.5 (book example) and a = 0.8345901.
+  const FixedGuidedSegment seg;
+  const PrbEquilibrium eq = seg.solve(EndLoad{0.0, 4.0 * 2.046504, 0.0});
+  ASSERT_TRUE(eq.converged) << eq.message;
+  constexpr double kPrbmPosition = 0.01;  // a few percent of the deflection, as for fixed-pinned
+  EXPECT_NEAR(eq.tip.b_over_l, 0.5, kPrbmPosition);
+  EXPECT_NEAR(eq.tip.a_over_l, 0.8345901, kPrbmPosition);
+}
+
 TEST(EndMomentSegment, SpringConstantEqualsCThetaAndMomentIsKTheta) {
   const EndMomentSegment seg;
   EXPECT_NEAR(seg.stiffness_coefficient(), 1.5164, 1e-4);  // eqs. 5.111-5.112
@@ -262,6 +298,20 @@ TEST(FixedFixedSegment, FreeEndUnderPureMomentMatchesItsClosedForm) {
   ASSERT_TRUE(eq_guided.converged) << eq_guided.message;
   EXPECT_NEAR(
       seg.max_moment(eq_guided.Theta, load), guided.max_moment(eq_guided.Theta, load), 1e-10);
+}
+
+TEST(PinnedPinnedSegment, StraightSegmentIsATwoForceMember) {
+  // Statics (eqs. 5.129-5.134): only a force along the pins; it does no virtual work on the free
+  // link, there is no bending moment, and the stress is the axial F/A.
+  const PinnedPinnedSegment seg;
+  EXPECT_THROW(seg.load_factor_at(0.0, EndLoad{-1.0, 0.0, 0.0}), InvalidInput);
+  // No spring: under a side load the free link turns until it lies along the force.
+  const PrbEquilibrium eq = seg.solve(EndLoad{0.0, 0.1, 0.0});
+  ASSERT_TRUE(eq.converged) << eq.message;
+  EXPECT_NEAR(eq.Theta, kPi / 2.0, 1e-12);
+  const SectionStress s = seg.max_stress(0.0, EndLoad{-2.0, 0.0, 0.0}, {1.0, 0.1, 1.0}, 1.0);
+  EXPECT_EQ(s.bending_moment, 0.0);
+  EXPECT_NEAR(s.sigma_top, -2.0 * 1.0 * (1.0 * 0.001 / 12.0) / 0.1, 1e-15);  // N/A, N = Fx EI/l^2
 }
 
 TEST(PrbmElements, RejectInvalidInput) {
