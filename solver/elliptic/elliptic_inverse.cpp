@@ -4,8 +4,10 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <optional>
 
 #include "solver/common/errors.h"
+#include "solver/common/load_search.h"
 #include "solver/common/scalar_root.h"
 #include "solver/elliptic/elliptic_solver.h"
 #include "solver/elliptic/howell_branch.h"
@@ -49,45 +51,31 @@ EllipticResult result_from_tip_angle(double load_ratio_n, double theta0) {
   return r;
 }
 
-// Finds alpha2 with target(solve(alpha2)) = value by scanning |alpha2| on a geometric grid on the
-// side given by `sign`, then refining the first bracket with Brent. Returns unconverged if no
-// bracket is found.
-EllipticResult scan_alpha2(const EllipticSolver& solver,
-                           double load_ratio_n,
-                           double mu,
-                           double sign,
-                           const std::function<double(const EllipticResult&)>& quantity,
-                           double value) {
+// Finds the smallest |alpha2| with quantity(solve(alpha2)) = value (solver/common/load_search.h).
+EllipticResult search_alpha2(const EllipticSolver& solver,
+                             double load_ratio_n,
+                             double mu,
+                             const std::function<double(const EllipticResult&)>& quantity,
+                             double value) {
   auto solve_at = [&](double alpha2) {
     return solver.solve(EndLoad::howell(load_ratio_n, alpha2, mu));
   };
-  double a = 0.0;
-  double fa = quantity(solve_at(0.0)) - value;
-  for (double mag = 1e-3; mag <= kMaxAlpha2Search * 1.0001; mag *= 1.5) {
-    const double b = sign * mag;
-    const EllipticResult rb = solve_at(b);
-    if (!rb.converged) break;
-    const double fb = quantity(rb) - value;
-    if ((fa > 0.0) != (fb > 0.0) || fb == 0.0) {
-      auto f = [&](double alpha2) {
-        const EllipticResult r = solve_at(alpha2);
-        if (!r.converged) return std::nan("");
-        return quantity(r) - value;
-      };
-      ScalarRootOptions opts;
-      opts.x_tolerance = 1e-14 * std::fabs(b);
-      const ScalarRootResult root = brent_root(f, a, b, fa, fb, opts);
-      if (!root.converged) break;
-      EllipticResult r = solve_at(root.x);
-      r.iterations += root.iterations;
-      return r;
-    }
-    a = b;
-    fa = fb;
+  auto q = [&](double alpha2) -> std::optional<double> {
+    const EllipticResult r = solve_at(alpha2);
+    if (!r.converged) return std::nullopt;
+    return quantity(r);
+  };
+  LoadSearchOptions options;
+  options.max_alpha2 = kMaxAlpha2Search;
+  const LoadSearchResult found = find_load_for_target(q, value, quantity(solve_at(0.0)), options);
+  if (!found.found) {
+    EllipticResult failed;
+    failed.message = found.message;
+    return failed;
   }
-  EllipticResult failed;
-  failed.converged = false;
-  return failed;
+  EllipticResult r = solve_at(found.alpha2);
+  r.iterations += found.solves;
+  return r;
 }
 
 }  // namespace
@@ -119,10 +107,8 @@ EllipticResult EllipticSolver::solve_for_tip_angle(double load_ratio_n,
   }
   // With an end moment the tip angle at alpha2 = 0 is mu; search the side that moves it to theta0.
   auto tip_angle = [](const EllipticResult& r) { return r.tip.theta0; };
-  for (double sign : {1.0, -1.0}) {
-    EllipticResult r = scan_alpha2(*this, load_ratio_n, mu, sign, tip_angle, theta0);
-    if (r.converged) return r;
-  }
+  EllipticResult r = search_alpha2(*this, load_ratio_n, mu, tip_angle, theta0);
+  if (r.converged) return r;
   throw InvalidInput(fmt::format(
       "tip angle theta0 = {:.6g} rad is not reached by any |alpha2| <= {:.0e} with load ratio "
       "n = {:.6g} and end moment mu = {:.6g}",
@@ -183,10 +169,8 @@ EllipticResult EllipticSolver::solve_for_deflection(double load_ratio_n,
         load_ratio_n,
         std::fabs(best)));
   }
-  for (double sign : {1.0, -1.0}) {
-    EllipticResult r = scan_alpha2(*this, load_ratio_n, mu, sign, deflection, b_over_l);
-    if (r.converged) return r;
-  }
+  EllipticResult r = search_alpha2(*this, load_ratio_n, mu, deflection, b_over_l);
+  if (r.converged) return r;
   throw InvalidInput(fmt::format(
       "tip deflection b/l = {:.6g} is not reached by any |alpha2| <= {:.0e} with load ratio "
       "n = {:.6g} and end moment mu = {:.6g}",

@@ -1,0 +1,116 @@
+#pragma once
+// Howell's chain algorithm (Compliant Mechanisms §7.2) with load increments (eqs. 7.24-7.27) and
+// the shooting method of §7.2.1 for tip boundary conditions other than a free end.
+//
+// Theory, accuracy and measured convergence orders: docs/theory-chain.md. In short:
+//   * kHowell reproduces the book: one chain pass per load increment with moment arms from the
+//     previous increment's geometry, then passes at full load until the geometry stops changing.
+//     Without that final iteration the error is first order in 1/increments; with it the answer
+//     is the fixed point, whose error is second order in 1/N. With prescribed tip coordinates it
+//     uses the same adaptive, converged continuation as kCorrected (with Howell's passes).
+//   * kCorrected iterates the moment arms to convergence inside every increment (a converged load
+//     path with adaptive steps) and keeps each element's arc length (foreshortening); its error is
+//     third order in 1/N, also for curved (kappa0) and tapered (EI profile) segments.
+//   Options::accelerate (both variants) converges the passes at a fixed load with Anderson
+//   acceleration and the element's own rotation in its moment arms; the fixed point is the same.
+//
+// Usage: ChainResult r = solve_chain(chain, options);  or
+// ChainAlgorithmSolver(options).solve(load).
+#include <string>
+#include <vector>
+
+#include "solver/chain_model/segment_chain.h"
+#include "solver/common/end_load.h"
+
+namespace flexure {
+
+enum class ChainVariant {
+  kHowell,     // Howell §7.2 as printed: eqs. 7.17-7.18, increments, then iterate at full load
+  kCorrected,  // converged at every increment; foreshortening, curved and tapered element terms
+};
+const char* to_string(ChainVariant variant);
+// Accepts "howell" and "corrected"; throws InvalidInput naming the allowed values otherwise.
+ChainVariant chain_variant_from_string(const std::string& name);
+
+// Loads in the root frame: (Fx, Fy) and a counter-clockwise moment M.
+struct ChainReaction {
+  double Fx = 0.0;
+  double Fy = 0.0;
+  double M = 0.0;
+};
+
+// One point of the load path: the state after a successful load increment.
+struct ChainLoadPathPoint {
+  double load_factor = 0.0;  // lambda in (0, 1]
+  ChainPose tip;
+  int iterations = 0;  // chain passes spent on this increment (including shooting evaluations)
+};
+
+struct ChainResult {
+  bool converged = false;
+  std::string message;  // what stopped the solve and how far it got
+  int iterations = 0;   // chain passes in total (all increments, retries and shooting evaluations)
+  int increments = 0;   // load increments that succeeded
+  int failed_increments = 0;  // increments that failed and were retried with a smaller step
+  int newton_iterations = 0;  // shooting-method Newton steps (eqs. 7.38-7.40), summed
+  double load_factor = 0.0;   // load factor reached (1 when converged)
+  double residual = 0.0;      // geometry change of the last pass (positions / total length, rad)
+  double boundary_residual = 0.0;  // max |tip coordinate - prescribed value| (scaled as above)
+  int elements = 0;                // flexible elements used (the requested N)
+
+  ChainPose tip;                  // tip position and tangent angle
+  TipPose tip_pose;               // the same as Howell's a/l, b/l, theta0 (l = total length)
+  ChainReaction tip_reaction;     // shooting unknowns: load the tip support exerts (zero if free)
+  ChainReaction root_reaction;    // load the clamp exerts on the chain (moment about the origin)
+  double root_moment = 0.0;       // bending moment at the clamp, m(0) = -root_reaction.M
+  std::vector<ShapePoint> nodes;  // every element node, s = arc length from the root
+  std::vector<ChainLoadPathPoint> load_path;
+};
+
+class ChainAlgorithmSolver {
+ public:
+  struct Options {
+    int elements = 100;   // N, elements over the flexible segments (rigid links add one each)
+    int increments = 10;  // load increments n_inc (eq. 7.27); adaptive steps: largest step 1/n_inc
+    ChainVariant variant = ChainVariant::kCorrected;  // see the header comment
+    double tolerance = 1e-12;  // passes stop when positions/total length and angles change less
+    // Adaptive steps before the last: pass tolerance (and 100x that for the tip conditions).
+    double path_tolerance = 1e-9;
+    int max_iterations = 2000;  // passes per converged evaluation (an increment, or full load)
+    bool iterate_at_full_load = true;  // kHowell: false returns the last increment unconverged
+    // Adaptive steps: a failed step is halved down to this, then the solve stops.
+    double min_load_step = 1e-5;
+    // Adaptive steps: a step that turns any node by more than this (rad) counts as failed, because
+    // a large jump may land on another equilibrium branch (a looped shape at alpha2 >= 300 turns
+    // the tip by about 2 pi).
+    double max_angle_step = 1.5;
+    double shooting_tolerance = 1e-10;  // |tip coordinate - prescribed| (scaled as residual)
+    int max_newton_iterations = 30;     // per increment
+    // Converge the passes at a fixed load with Anderson acceleration and the implicit own
+    // rotation of each element (chain_pass.h). The fixed point is the same; false gives Howell's
+    // plain passes, whose convergence slows down badly as the load grows (57 passes at
+    // alpha2 = 10, > 5000 at alpha2 = 200 for N = 100; docs/theory-chain.md §4).
+    bool accelerate = true;
+    int anderson_depth = 5;        // history length of the Anderson acceleration
+    bool record_load_path = true;  // fill ChainResult::load_path
+  };
+
+  ChainAlgorithmSolver() = default;
+  explicit ChainAlgorithmSolver(Options options) : options_(options) {}
+
+  // Throws InvalidInput for an invalid chain or invalid options.
+  ChainResult solve(const SegmentChain& chain) const;
+  // Howell's nondimensional cantilever (l = 1, EI = 1) with a dead end load.
+  ChainResult solve(const EndLoad& load) const;
+
+  const Options& options() const { return options_; }
+
+ private:
+  Options options_;
+};
+
+// One-call entry point.
+ChainResult solve_chain(const SegmentChain& chain,
+                        const ChainAlgorithmSolver::Options& options = {});
+
+}  // namespace flexure

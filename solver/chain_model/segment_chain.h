@@ -1,0 +1,149 @@
+#pragma once
+// ================================================================================================
+// Planar serial segment chain: the problem description shared by the shooting solver
+// (solver/shooting/) and Howell's chain algorithm (solver/chain/). This header is the contract
+// between the two; keep changes backward compatible.
+//
+// Geometry and frame
+//   * Node 0 (the root) is clamped at the origin, tangent along +x (theta = 0). Segments are listed
+//     from the root to the tip; node k (1 <= k <= n) is the far end of segment k-1, node n the tip.
+//   * Arc length s runs from the root; x' = cos(theta), y' = sin(theta).
+//   * FlexibleSegment: inextensible Euler-Bernoulli beam. Bending moment m = EI (theta' - kappa0),
+//     kappa0 the stress-free curvature (constant on the segment; positive bends toward +theta).
+//     EI is constant, or tabulated at equally spaced stations from the near end (s = 0) to the far
+//     end (s = length) and interpolated linearly.
+//   * RigidSegment: a straight link. Its direction is the incoming tangent angle plus angle_offset
+//     (a rigid kink at its near end); the next segment leaves along the link. A RigidSegment of
+//     length 0 is a pure kink, e.g. a clamp at an angle.
+//
+// Loads (dead loads are fixed in the root frame; moments counter-clockwise positive)
+//   * NodeLoad: dead force (Fx, Fy) and moment M at an intermediate node 1 <= node <= n-1.
+//   * TipLoad: dead force (Fx, Fy), moment M and a follower force of magnitude `follower` that
+//     always acts along the tip normal (-sin theta_tip, cos theta_tip), i.e. perpendicular to the
+//     deflected tip tangent (positive: toward +y for an undeflected straight beam).
+//
+// End condition at the tip: each of x, y, theta is either prescribed or its conjugate load
+// (Fx, Fy, M) is given. The load components conjugate to prescribed coordinates are the unknown
+// tip reactions; the given values for those components must be zero (validate() enforces it).
+//     kFree   : Fx, Fy, M given (cantilever)
+//     kGuided : theta prescribed, Fx and Fy given (Howell's fixed-guided beam)
+//     kPinned : x and y prescribed, M given
+//     kSlider : y prescribed, Fx and M given
+//     kFixed  : x, y, theta prescribed
+// A prescribed value left unset (std::nullopt) means "the stress-free tip value", e.g. the guided
+// beam keeps its initial tip angle (theta = 0 for an initially straight chain).
+//
+// Internal force convention (both solvers): N(s) is the force the distal part exerts on the
+// proximal part across the section at s; m(s) is the bending moment, same sense. At the root the
+// reaction the clamp exerts on the chain is -N(0) and the reaction moment is -m(0).
+// Equilibrium of the distal part: N' = 0 on segments, dm/ds = -(t x N) = N_x sin(theta) -
+// N_y cos(theta) (Howell eq. 2.67 differentiated); across node k, N and m drop by that node's load.
+//
+// Proportional loading (load factor lambda in [0, 1], used by continuation and by the chain
+// algorithm's load increments, Howell eqs. 7.24-7.27): every given load is multiplied by lambda
+// and every prescribed tip coordinate moves linearly from its stress-free value (lambda = 0) to its
+// prescribed value (lambda = 1). See SegmentChain::at_load_factor().
+//
+// Units: any consistent set; the solvers are dimensionless in the sense that nothing assumes
+// l = 1 or EI = 1, but uniform_cantilever() builds Howell's nondimensional beam (l = 1, EI = 1).
+// ================================================================================================
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "solver/common/end_load.h"
+
+namespace flexure {
+
+struct FlexibleSegment {
+  double length = 1.0;             // arc length of the segment, > 0
+  double EI = 1.0;                 // flexural rigidity, > 0 (used when EI_profile is empty)
+  std::vector<double> EI_profile;  // optional: EI at >= 2 equally spaced stations over the segment
+  double kappa0 = 0.0;             // stress-free curvature (1/length), constant on the segment
+
+  // EI at local arc length s_local in [0, length] (clamped to that range).
+  double EI_at(double s_local) const;
+};
+
+struct RigidSegment {
+  double length = 1.0;        // link length, >= 0 (0 = a pure kink)
+  double angle_offset = 0.0;  // link direction minus incoming tangent angle (radians)
+};
+
+using Segment = std::variant<FlexibleSegment, RigidSegment>;
+
+struct NodeLoad {
+  int node = 1;     // joint index, 1 <= node <= n-1 (node k is the far end of segment k-1)
+  double Fx = 0.0;  // dead force, root frame
+  double Fy = 0.0;
+  double M = 0.0;  // dead moment, counter-clockwise positive
+};
+
+struct TipLoad {
+  double Fx = 0.0;  // dead force, root frame
+  double Fy = 0.0;
+  double M = 0.0;         // dead moment, counter-clockwise positive
+  double follower = 0.0;  // force along the tip normal (-sin theta_tip, cos theta_tip)
+};
+
+enum class EndCondition { kFree, kGuided, kPinned, kSlider, kFixed };
+const char* to_string(EndCondition end);
+// Throws InvalidInput listing the allowed names ("free", "guided", "pinned", "slider", "fixed").
+EndCondition end_condition_from_string(const std::string& name);
+
+// Which tip coordinates an end condition prescribes.
+struct PrescribedMask {
+  bool x = false;
+  bool y = false;
+  bool theta = false;
+};
+PrescribedMask prescribed_mask(EndCondition end);
+
+// Prescribed tip values, root frame. Unset = the stress-free tip value.
+struct TipPrescription {
+  std::optional<double> x;
+  std::optional<double> y;
+  std::optional<double> theta;
+};
+
+// Position and tangent angle of a point of the chain.
+struct ChainPose {
+  double x = 0.0;
+  double y = 0.0;
+  double theta = 0.0;
+};
+
+struct SegmentChain {
+  std::vector<Segment> segments;     // root to tip, at least one
+  std::vector<NodeLoad> node_loads;  // dead loads at intermediate joints
+  TipLoad tip_load;
+  EndCondition end = EndCondition::kFree;
+  TipPrescription prescribed;
+
+  int segment_count() const { return static_cast<int>(segments.size()); }
+  double total_length() const;
+
+  // Throws InvalidInput naming the segment/node index and the field: empty chain, non-finite
+  // value, length <= 0 (flexible) or < 0 (rigid), EI <= 0, a bad EI_profile, a node index outside
+  // [1, n-1], a nonzero given load conjugate to a prescribed coordinate.
+  void validate() const;
+
+  // Stress-free pose at every node 0..n (kappa0 arcs and rigid links, no loads).
+  std::vector<ChainPose> unloaded_nodes() const;
+  ChainPose unloaded_tip() const;
+
+  // Resolved prescribed tip values at full load (unset values replaced by unloaded_tip()).
+  ChainPose prescribed_tip() const;
+
+  // The same chain under proportional loading: loads times lambda, prescribed tip coordinates
+  // moved linearly from the stress-free tip (lambda = 0) to their prescribed value (lambda = 1).
+  // The returned chain has every prescribed value set explicitly.
+  SegmentChain at_load_factor(double lambda) const;
+};
+
+// Howell's nondimensional cantilever: one flexible segment, length 1, EI 1, straight, free end
+// carrying the dead EndLoad {Fx, Fy, mu}.
+SegmentChain uniform_cantilever(const EndLoad& load);
+
+}  // namespace flexure

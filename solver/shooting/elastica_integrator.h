@@ -1,0 +1,119 @@
+#pragma once
+// Arc-length integration of a segment chain with SUNDIALS CVODES, with forward sensitivities.
+//
+// State along the chain: (x, y, theta, m), m the bending moment (convention of
+// solver/chain_model/segment_chain.h). On a flexible segment (Howell eqs. 2.67-2.69 in
+// differential form):
+//     x' = cos theta,  y' = sin theta,  theta' = m / EI(s) + kappa0,
+//     m' = N_x sin theta - N_y cos theta       (N the internal force, constant on the segment).
+// A rigid segment is crossed analytically (a straight link), and at node k the moment drops by the
+// node's dead moment. The caller supplies the internal force on every segment and the moment
+// drops, so the integrator knows nothing about which loads are unknown.
+//
+// Sensitivities: each parameter p declares d m(0)/dp, dN/dp on every segment and d(moment
+// drop)/dp at every node; CVODES integrates S' = J S + df/dp alongside the state (staggered off,
+// simultaneous corrector), which gives the exact Jacobian of the tip state for the Newton solver.
+#include <Eigen/Dense>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "solver/chain_model/segment_chain.h"
+#include "solver/common/end_load.h"
+
+namespace flexure {
+
+// Internal loads along the chain for one evaluation.
+struct ChainForces {
+  double m0 = 0.0;                  // bending moment at the root, m(0)
+  std::vector<Eigen::Vector2d> N;   // internal force on segment j (size n)
+  std::vector<double> moment_drop;  // m(after node k) = m(before) - moment_drop[k]; size n+1
+};
+
+// Derivatives of ChainForces with respect to one shooting parameter (the parameter's effect on
+// the start state is given separately, as a column of the start sensitivity).
+struct ForceDerivative {
+  std::vector<Eigen::Vector2d> dN;   // size n (empty = all zero)
+  std::vector<double> dmoment_drop;  // size n+1 (empty = all zero)
+};
+
+// A stretch of one segment integrated in one call: local arc lengths [begin, end] of segment
+// `segment` (a rigid segment is always whole). `crosses_far_node` applies node segment+1's moment
+// drop after the stretch.
+struct IntegrationPiece {
+  int segment = 0;
+  double begin = 0.0;  // local arc length on the segment
+  double end = 0.0;
+  double segment_start = 0.0;  // global arc length of the segment's near end
+  bool crosses_far_node = false;
+};
+
+// State at the end of an integration (the tip for the last stretch of the chain).
+struct TipState {
+  double x = 0.0;
+  double y = 0.0;
+  double theta = 0.0;
+  double m = 0.0;
+  Eigen::Matrix<double, 4, Eigen::Dynamic> sensitivity;  // d(x, y, theta, m)/dp, one column per p
+};
+
+struct ElasticaPieceData;
+
+class ElasticaIntegrator {
+ public:
+  // kCvodes is the reference; kDormandPrince is an explicit embedded Runge-Kutta 5(4) written here,
+  // about ten times cheaper per solve for these small systems (docs/performance.md).
+  enum class Backend { kCvodes, kDormandPrince };
+  struct Options {
+    Backend backend = Backend::kCvodes;  // which integrator runs the flexible pieces
+    double rtol = 1e-12;      // CVODES relative tolerance (issue: <= 1e-12 for the reference)
+    double atol = 1e-14;      // CVODES absolute tolerance on every state component
+    long max_steps = 200000;  // CVODES steps per segment piece before giving up
+    bool adams = true;        // Adams-Moulton (non-stiff); false = BDF for very stiff loads
+    bool sensitivity_error_control = true;  // include sensitivities in the local error test
+    bool fixed_point = true;  // Adams only: fixed-point corrector (no Jacobian, no dense
+                              // solve; the elastica is not stiff); false = Newton + dense
+  };
+
+  explicit ElasticaIntegrator(Options options);
+  ~ElasticaIntegrator();
+  ElasticaIntegrator(const ElasticaIntegrator&) = delete;
+  ElasticaIntegrator& operator=(const ElasticaIntegrator&) = delete;
+
+  // Integrates the consecutive `pieces` from the state `start` = (x, y, theta, m) with start
+  // sensitivities `start_sensitivity` (4 x Ns; Ns = derivatives.size(), may be 0). When `shape` is
+  // not null, the pose at the arc lengths `shape_s` (ascending) that fall inside the pieces is
+  // appended (all remaining ones when `last` is true). Returns false and sets `error` when CVODES
+  // fails (the flag is named) or the state is not finite.
+  bool integrate(const SegmentChain& chain,
+                 const std::vector<IntegrationPiece>& pieces,
+                 const ChainForces& forces,
+                 const std::vector<ForceDerivative>& derivatives,
+                 const Eigen::Vector4d& start,
+                 const Eigen::Matrix<double, 4, Eigen::Dynamic>& start_sensitivity,
+                 TipState& end,
+                 std::string& error,
+                 const std::vector<double>* shape_s = nullptr,
+                 std::vector<ShapePoint>* shape = nullptr,
+                 bool last = true);
+
+  const Options& options() const { return options_; }
+  long steps_taken() const;  // CVODES steps since construction (for performance notes)
+
+ private:
+  bool ensure_sensitivities(int Ns, std::string& error);
+  bool dormand_prince_piece(const ElasticaPieceData& piece,
+                            double s_a,
+                            double s_b,
+                            Eigen::Vector4d& state,
+                            Eigen::Matrix<double, 4, Eigen::Dynamic>& S,
+                            std::string& error,
+                            const std::vector<double>* shape_s,
+                            std::vector<ShapePoint>* shape,
+                            std::size_t& next_shape);
+  struct Impl;
+  Options options_;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace flexure

@@ -1,0 +1,139 @@
+#include "solver/shooting/newton.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace flexure {
+
+Eigen::VectorXd robust_solve(const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
+  qr.setThreshold(1e-13);
+  if (qr.rank() == A.cols()) return qr.solve(b);
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(A);
+  cod.setThreshold(1e-13);
+  return cod.solve(b);
+}
+
+namespace {
+
+struct Augmented {
+  Eigen::VectorXd g;  // residual (and constraint)
+  Eigen::MatrixXd J;  // Jacobian in the solver's unknowns
+};
+
+// Residual and Jacobian of the system Newton works on: g(z) or [g(z, lambda); constraint].
+bool assemble(const ShootingProblem& problem,
+              ElasticaIntegrator& integrator,
+              const Eigen::VectorXd& z,
+              double lambda,
+              const ArclengthConstraint* c,
+              ShootingEvaluation& eval,
+              Augmented& out) {
+  if (!problem.evaluate(z, lambda, true, c != nullptr, integrator, eval)) return false;
+  const int nz = problem.size();
+  if (c == nullptr) {
+    out.g = eval.residual;
+    out.J = eval.jacobian;
+    return true;
+  }
+  out.g.resize(nz + 1);
+  out.J.resize(nz + 1, nz + 1);
+  out.g.head(nz) = eval.residual;
+  out.J.topLeftCorner(nz, nz) = eval.jacobian;
+  out.J.topRightCorner(nz, 1) = eval.d_lambda;
+  Eigen::VectorXd u(nz + 1);
+  u.head(nz) = z.cwiseQuotient(c->scale);
+  u[nz] = lambda;
+  out.g[nz] = c->tangent.dot(u - c->predicted);
+  out.J.bottomLeftCorner(1, nz) = c->tangent.head(nz).cwiseQuotient(c->scale).transpose();
+  out.J(nz, nz) = c->tangent[nz];
+  return true;
+}
+
+}  // namespace
+
+NewtonOutcome newton_solve(const ShootingProblem& problem,
+                           ElasticaIntegrator& integrator,
+                           const NewtonOptions& options,
+                           Eigen::VectorXd& z,
+                           double& lambda,
+                           const ArclengthConstraint* constraint) {
+  NewtonOutcome out;
+  const int nz = problem.size();
+  Augmented sys;
+  if (!assemble(problem, integrator, z, lambda, constraint, out.last, sys)) {
+    out.message = "integration failed at the starting guess: " + out.last.error;
+    return out;
+  }
+  double norm = sys.g.lpNorm<Eigen::Infinity>();
+  for (int it = 0; it < options.max_iterations; ++it) {
+    out.residual_norm = norm;
+    if (norm <= options.residual_tolerance) {
+      out.converged = true;
+      out.message = fmt::format(
+          "converged: max residual {:.3e} after {} Newton iterations", norm, out.iterations);
+      return out;
+    }
+    const Eigen::VectorXd step = robust_solve(sys.J, -sys.g);
+    if (!step.allFinite()) {
+      out.message =
+          fmt::format("Newton step is not finite (singular Jacobian) at max residual {:.3e}", norm);
+      return out;
+    }
+    ++out.iterations;
+    // Backtracking on the max-norm of the residual: the sensitivity Jacobian is exact, so a
+    // full step is accepted near the solution; halving protects against jumping branches.
+    double t = 1.0;
+    bool accepted = false;
+    for (int bt = 0; bt <= options.max_backtracks; ++bt, t *= 0.5) {
+      Eigen::VectorXd z_try = z + t * step.head(nz);
+      double lambda_try = constraint != nullptr ? lambda + t * step[nz] : lambda;
+      ShootingEvaluation eval;
+      Augmented trial;
+      if (assemble(problem, integrator, z_try, lambda_try, constraint, eval, trial)) {
+        const double trial_norm = trial.g.lpNorm<Eigen::Infinity>();
+        if (trial_norm < (1.0 - 1e-4 * t) * norm || trial_norm <= options.residual_tolerance) {
+          z = z_try;
+          lambda = lambda_try;
+          sys = std::move(trial);
+          out.last = std::move(eval);
+          norm = trial_norm;
+          accepted = true;
+          if (bt > 0) out.damped = true;
+          break;
+        }
+      }
+    }
+    const double step_norm = step.head(nz).lpNorm<Eigen::Infinity>();
+    if (!accepted) {
+      // At the integration noise floor no step reduces the residual any more.
+      if (step_norm <= options.step_tolerance * (1.0 + z.lpNorm<Eigen::Infinity>()) &&
+          norm <= 1e3 * options.residual_tolerance) {
+        out.converged = true;
+        out.residual_norm = norm;
+        out.message =
+            fmt::format("converged at the integration noise floor: max residual {:.3e}", norm);
+        return out;
+      }
+      out.residual_norm = norm;
+      out.message =
+          fmt::format("line search failed after {} Newton iterations at max residual {:.3e}",
+                      out.iterations,
+                      norm);
+      return out;
+    }
+  }
+  out.residual_norm = norm;
+  if (norm <= options.residual_tolerance) {
+    out.converged = true;
+    out.message = fmt::format("converged: max residual {:.3e}", norm);
+  } else {
+    out.message = fmt::format("no convergence in {} Newton iterations (max residual {:.3e})",
+                              options.max_iterations,
+                              norm);
+  }
+  return out;
+}
+
+}  // namespace flexure

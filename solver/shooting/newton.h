@@ -1,0 +1,52 @@
+#pragma once
+// Damped Newton corrector for the shooting residual (Howell eqs. 7.38-7.40, with the Jacobian from
+// CVODES sensitivities instead of finite differences).
+//
+// Two modes: at a fixed load factor lambda (unknowns z), or pseudo-arclength (unknowns z and
+// lambda, plus the Keller constraint tangent . (u - u_predicted) = 0 in scaled variables
+// u = (z / scale, lambda)), which stays regular at limit points where dg/dz is singular.
+#include <Eigen/Dense>
+#include <string>
+
+#include "solver/shooting/shooting_problem.h"
+
+namespace flexure {
+
+struct NewtonOptions {
+  double residual_tolerance = 1e-10;  // converged when max |g_i| is below this
+  double step_tolerance = 1e-13;      // ...or the step is below this (relative) and max |g_i| is
+                                      // below 1e3 * residual_tolerance (integration noise floor)
+  int max_iterations = 25;            // Newton iterations per solve
+  int max_backtracks = 10;            // step halvings in the line search before giving up
+};
+
+struct NewtonOutcome {
+  bool converged = false;
+  bool damped = false;  // a step shorter than the full Newton step was taken
+  int iterations = 0;
+  double residual_norm = 0.0;  // max |g_i| at the returned point
+  std::string message;
+  ShootingEvaluation last;  // evaluation at the returned point (with Jacobian)
+};
+
+// Arclength constraint data; null for the fixed-lambda mode.
+struct ArclengthConstraint {
+  Eigen::VectorXd tangent;    // unit tangent in scaled variables (z / scale, lambda)
+  Eigen::VectorXd predicted;  // predicted point in scaled variables
+  Eigen::VectorXd scale;      // z = scale .* z_scaled
+};
+
+// Solves g(z, lambda) = 0 for z (lambda fixed) or for (z, lambda) with the constraint. On return z
+// and lambda hold the last accepted iterate.
+NewtonOutcome newton_solve(const ShootingProblem& problem,
+                           ElasticaIntegrator& integrator,
+                           const NewtonOptions& options,
+                           Eigen::VectorXd& z,
+                           double& lambda,
+                           const ArclengthConstraint* constraint = nullptr);
+
+// Solves A x = b; falls back to the minimum-norm least-squares solution when A is rank deficient
+// (e.g. the axial force of a straight pinned beam is indeterminate at first order).
+Eigen::VectorXd robust_solve(const Eigen::MatrixXd& A, const Eigen::VectorXd& b);
+
+}  // namespace flexure

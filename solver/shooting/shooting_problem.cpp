@@ -1,0 +1,332 @@
+#include "solver/shooting/shooting_problem.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace flexure {
+
+namespace {
+
+// Stress-free pose a distance s along a flexible segment that starts at `p` (a kappa0 arc).
+Eigen::Vector4d unloaded_along(const ChainPose& p, double kappa0, double s) {
+  const double turn = kappa0 * s;
+  const double half = 0.5 * turn;
+  const double sinc = std::abs(half) < 1e-4 ? 1.0 - half * half / 6.0 : std::sin(half) / half;
+  const double mean = p.theta + half;
+  return Eigen::Vector4d(
+      p.x + s * sinc * std::cos(mean), p.y + s * sinc * std::sin(mean), p.theta + turn, 0.0);
+}
+
+double min_EI(const FlexibleSegment& f) {
+  if (f.EI_profile.empty()) return f.EI;
+  return *std::min_element(f.EI_profile.begin(), f.EI_profile.end());
+}
+
+}  // namespace
+
+ShootingProblem::ShootingProblem(const SegmentChain& chain,
+                                 MultipleShootingOptions options,
+                                 Homotopy homotopy)
+    : chain_(chain), homotopy_(homotopy) {
+  chain_.validate();
+  mask_ = homotopy_.mask.value_or(prescribed_mask(chain_.end));
+  const PrescribedMask full = prescribed_mask(chain_.end);
+  if ((mask_.x && !full.x) || (mask_.y && !full.y) || (mask_.theta && !full.theta)) {
+    throw std::logic_error("ShootingProblem: a homotopy may only release prescribed coordinates");
+  }
+  tip_unloaded_ = chain_.unloaded_tip();
+  tip_start_ = homotopy_.tip_start.value_or(tip_unloaded_);
+  tip_target_ = chain_.prescribed_tip();
+  const bool follower = chain_.tip_load.follower != 0.0;
+  unknown_names_.push_back("m0");
+  if (mask_.x || follower) {
+    index_Nx_ = size();
+    unknown_names_.push_back("Nx0");
+  }
+  if (mask_.y || follower) {
+    index_Ny_ = size();
+    unknown_names_.push_back("Ny0");
+  }
+  root_count_ = size();
+  node_force_sum_.setZero();
+  double force_scale =
+      std::hypot(chain_.tip_load.Fx, chain_.tip_load.Fy) + std::abs(chain_.tip_load.follower);
+  for (const NodeLoad& load : chain_.node_loads) {
+    node_force_sum_ += Eigen::Vector2d(load.Fx, load.Fy);
+    force_scale += std::hypot(load.Fx, load.Fy);
+  }
+  tip_dead_force_ = Eigen::Vector2d(chain_.tip_load.Fx, chain_.tip_load.Fy);
+
+  // Cut the flexible segments so that no part amplifies errors by more than e^budget.
+  const std::vector<ChainPose> nodes = chain_.unloaded_nodes();
+  const int n = chain_.segment_count();
+  std::vector<IntegrationPiece> current;
+  double s_global = 0.0;
+  for (int j = 0; j < n; ++j) {
+    if (const auto* flex = std::get_if<FlexibleSegment>(&chain_.segments[j])) {
+      const double growth = flex->length * std::sqrt(force_scale / min_EI(*flex));
+      int parts = static_cast<int>(std::ceil(growth / options.amplification_budget));
+      parts = std::clamp(parts,
+                         std::max(1, options.min_parts_per_segment),
+                         std::max(1, options.max_parts_per_segment));
+      for (int p = 0; p < parts; ++p) {
+        IntegrationPiece piece;
+        piece.segment = j;
+        piece.begin = flex->length * p / parts;
+        piece.end = (p + 1 == parts) ? flex->length : flex->length * (p + 1) / parts;
+        piece.segment_start = s_global;
+        piece.crosses_far_node = (p + 1 == parts);
+        current.push_back(piece);
+        if (p + 1 < parts) {
+          intervals_.push_back(std::move(current));
+          current.clear();
+          unloaded_cut_states_.push_back(unloaded_along(nodes[j], flex->kappa0, piece.end));
+        }
+      }
+      s_global += flex->length;
+    } else {
+      const auto& rigid = std::get<RigidSegment>(chain_.segments[j]);
+      current.push_back(IntegrationPiece{j, 0.0, rigid.length, s_global, true});
+      s_global += rigid.length;
+    }
+  }
+  intervals_.push_back(std::move(current));
+  for (std::size_t k = 0; k < unloaded_cut_states_.size(); ++k) {
+    for (const char* name : {"x", "y", "theta", "m"}) {
+      unknown_names_.push_back(fmt::format("{}_cut{}", name, k + 1));
+    }
+  }
+}
+
+ChainForces ShootingProblem::forces(const Eigen::VectorXd& z, double lambda) const {
+  const int n = chain_.segment_count();
+  ChainForces f;
+  f.m0 = z[0];
+  // Where a component is not shot for, N(0) is the sum of the given dead loads (free-body diagram
+  // of the whole chain, Howell eqs. 7.2-7.3 summed from the root).
+  const double lf = load_factor(lambda);
+  Eigen::Vector2d N0 = lf * (tip_dead_force_ + node_force_sum_);
+  if (index_Nx_ >= 0) N0.x() = z[index_Nx_];
+  if (index_Ny_ >= 0) N0.y() = z[index_Ny_];
+  f.N.assign(n, N0);
+  f.moment_drop.assign(n + 1, 0.0);
+  for (const NodeLoad& load : chain_.node_loads) {
+    // Node k is the far end of segment k-1: segments k..n-1 no longer carry its force.
+    for (int j = load.node; j < n; ++j) f.N[j] -= lf * Eigen::Vector2d(load.Fx, load.Fy);
+    f.moment_drop[load.node] += lf * load.M;
+  }
+  return f;
+}
+
+RootReaction ShootingProblem::reaction(const Eigen::VectorXd& z, double lambda) const {
+  const ChainForces f = forces(z, lambda);
+  return RootReaction{-f.N[0].x(), -f.N[0].y(), -f.m0};
+}
+
+Eigen::VectorXd ShootingProblem::unloaded_unknowns() const {
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(size());
+  for (std::size_t k = 0; k < unloaded_cut_states_.size(); ++k) {
+    z.segment(root_count_ + 4 * k, 4) = unloaded_cut_states_[k];
+  }
+  return z;
+}
+
+Eigen::Vector4d ShootingProblem::interval_start(const Eigen::VectorXd& z, int k) const {
+  if (k == 0) return Eigen::Vector4d(0.0, 0.0, 0.0, z[0]);
+  return z.segment(root_count_ + 4 * (k - 1), 4);
+}
+
+bool ShootingProblem::complete_guess(const Eigen::VectorXd& root_unknowns,
+                                     double lambda,
+                                     ElasticaIntegrator& integrator,
+                                     Eigen::VectorXd& z,
+                                     std::string& error) const {
+  z = unloaded_unknowns();
+  z.head(root_count_) = root_unknowns.head(root_count_);
+  const ChainForces f = forces(z, lambda);
+  Eigen::Vector4d state = interval_start(z, 0);
+  const Eigen::Matrix<double, 4, Eigen::Dynamic> none(4, 0);
+  for (int k = 0; k + 1 < interval_count(); ++k) {
+    TipState end;
+    if (!integrator.integrate(chain_, intervals_[k], f, {}, state, none, end, error)) return false;
+    state = Eigen::Vector4d(end.x, end.y, end.theta, end.m);
+    z.segment(root_count_ + 4 * k, 4) = state;
+  }
+  return true;
+}
+
+bool ShootingProblem::integrate_solution(const Eigen::VectorXd& z,
+                                         double lambda,
+                                         ElasticaIntegrator& integrator,
+                                         TipState& tip,
+                                         std::string& error,
+                                         const std::vector<double>* s,
+                                         std::vector<ShapePoint>* shape) const {
+  const ChainForces f = forces(z, lambda);
+  const Eigen::Matrix<double, 4, Eigen::Dynamic> none(4, 0);
+  const int M = interval_count();
+  for (int k = 0; k < M; ++k) {
+    if (!integrator.integrate(chain_,
+                              intervals_[k],
+                              f,
+                              {},
+                              interval_start(z, k),
+                              none,
+                              tip,
+                              error,
+                              s,
+                              shape,
+                              k + 1 == M)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool ShootingProblem::evaluate(const Eigen::VectorXd& z,
+                               double lambda,
+                               bool want_jacobian,
+                               bool want_lambda_derivative,
+                               ElasticaIntegrator& integrator,
+                               ShootingEvaluation& out) const {
+  const int n = chain_.segment_count();
+  const int nz = size();
+  const int M = interval_count();
+  const ChainForces f = forces(z, lambda);
+
+  // Sensitivity columns of one interval: start-state columns (only m for single shooting), then
+  // the shot force components, then lambda.
+  const int init_cols = want_jacobian ? (M == 1 ? 1 : 4) : 0;
+  std::vector<ForceDerivative> derivs(init_cols);
+  std::vector<int> force_cols;  // global column of each force sensitivity
+  if (want_jacobian) {
+    for (int idx : {index_Nx_, index_Ny_}) {
+      if (idx < 0) continue;
+      ForceDerivative d;
+      d.dN.assign(n, idx == index_Nx_ ? Eigen::Vector2d(1.0, 0.0) : Eigen::Vector2d(0.0, 1.0));
+      derivs.push_back(std::move(d));
+      force_cols.push_back(idx);
+    }
+  }
+  const int lam_col = static_cast<int>(derivs.size());
+  if (want_lambda_derivative) {
+    ForceDerivative d;
+    const double slope = homotopy_.load_slope;
+    Eigen::Vector2d dN0 = slope * (tip_dead_force_ + node_force_sum_);
+    if (index_Nx_ >= 0) dN0.x() = 0.0;
+    if (index_Ny_ >= 0) dN0.y() = 0.0;
+    d.dN.assign(n, dN0);
+    d.dmoment_drop.assign(n + 1, 0.0);
+    for (const NodeLoad& load : chain_.node_loads) {
+      for (int j = load.node; j < n; ++j) d.dN[j] -= slope * Eigen::Vector2d(load.Fx, load.Fy);
+      d.dmoment_drop[load.node] += slope * load.M;
+    }
+    derivs.push_back(std::move(d));
+  }
+  const int Ns = static_cast<int>(derivs.size());
+  Eigen::Matrix<double, 4, Eigen::Dynamic> start_sens =
+      Eigen::Matrix<double, 4, Eigen::Dynamic>::Zero(4, Ns);
+  if (init_cols == 1) start_sens(3, 0) = 1.0;
+  if (init_cols == 4) start_sens.leftCols(4).setIdentity();
+
+  out.residual.setZero(nz);
+  if (want_jacobian) out.jacobian.setZero(nz, nz);
+  if (want_lambda_derivative) out.d_lambda.setZero(nz);
+
+  Eigen::Matrix<double, 4, Eigen::Dynamic> D(4, nz);  // d(end state)/dz of the current interval
+  Eigen::Vector4d D_lambda = Eigen::Vector4d::Zero();
+  for (int k = 0; k < M; ++k) {
+    TipState end;
+    out.ok = integrator.integrate(
+        chain_, intervals_[k], f, derivs, interval_start(z, k), start_sens, end, out.error);
+    if (!out.ok) return false;
+    if (want_jacobian) {
+      D.setZero();
+      if (M == 1) {
+        D.col(0) = end.sensitivity.col(0);
+      } else if (k == 0) {
+        D.col(0) = end.sensitivity.col(3);  // only m(0) is free at the clamp
+      } else {
+        D.middleCols(root_count_ + 4 * (k - 1), 4) = end.sensitivity.leftCols(4);
+      }
+      for (std::size_t c = 0; c < force_cols.size(); ++c) {
+        D.col(force_cols[c]) += end.sensitivity.col(init_cols + c);
+      }
+    }
+    if (want_lambda_derivative) D_lambda = end.sensitivity.col(lam_col);
+    const Eigen::Vector4d E(end.x, end.y, end.theta, end.m);
+    if (k + 1 < M) {
+      const int row = root_count_ + 4 * k;
+      out.residual.segment(row, 4) = E - z.segment(row, 4);
+      if (want_jacobian) {
+        out.jacobian.middleRows(row, 4) = D;
+        out.jacobian.block(row, row, 4, 4) -= Eigen::Matrix4d::Identity();
+      }
+      if (want_lambda_derivative) out.d_lambda.segment(row, 4) = D_lambda;
+      continue;
+    }
+    out.tip = end;
+  }
+
+  const TipState& t = out.tip;
+  const Eigen::Vector2d N_tip = f.N[n - 1];
+  const double lf = load_factor(lambda);
+  const double slope = homotopy_.load_slope;
+  const double P = chain_.tip_load.follower;
+  const double s_th = std::sin(t.theta), c_th = std::cos(t.theta);
+
+  // theta residual (row 0).
+  if (mask_.theta) {
+    out.residual[0] =
+        t.theta - (tip_start_.theta + lambda * (tip_target_.theta - tip_start_.theta));
+    if (want_jacobian) out.jacobian.row(0) = D.row(2);
+    if (want_lambda_derivative) {
+      out.d_lambda[0] = D_lambda[2] - (tip_target_.theta - tip_start_.theta);
+    }
+  } else {
+    out.residual[0] = t.m - lf * chain_.tip_load.M;
+    if (want_jacobian) out.jacobian.row(0) = D.row(3);
+    if (want_lambda_derivative) out.d_lambda[0] = D_lambda[3] - slope * chain_.tip_load.M;
+  }
+
+  // x and y residuals.
+  for (int axis = 0; axis < 2; ++axis) {
+    const int row = axis == 0 ? index_Nx_ : index_Ny_;
+    if (row < 0) continue;
+    const bool prescribed = axis == 0 ? mask_.x : mask_.y;
+    if (prescribed) {
+      const double start = axis == 0 ? tip_start_.x : tip_start_.y;
+      const double target = axis == 0 ? tip_target_.x : tip_target_.y;
+      const double value = axis == 0 ? t.x : t.y;
+      out.residual[row] = value - (start + lambda * (target - start));
+      if (want_jacobian) out.jacobian.row(row) = D.row(axis);
+      if (want_lambda_derivative) out.d_lambda[row] = D_lambda[axis] - (target - start);
+    } else {
+      // Force balance at the tip with the follower force P (-sin theta, cos theta).
+      const double follower = axis == 0 ? -P * s_th : P * c_th;
+      const double d_follower_dtheta = axis == 0 ? -P * c_th : -P * s_th;
+      const double dead = axis == 0 ? tip_dead_force_.x() : tip_dead_force_.y();
+      out.residual[row] = N_tip[axis] - lf * (dead + follower);
+      if (want_jacobian) {
+        out.jacobian.row(row) = -lf * d_follower_dtheta * D.row(2);
+        out.jacobian(row, row) += 1.0;
+      }
+      if (want_lambda_derivative) {
+        const double dN_tip = -slope * (axis == 0 ? node_force_sum_.x() : node_force_sum_.y());
+        out.d_lambda[row] =
+            dN_tip - slope * (dead + follower) - lf * d_follower_dtheta * D_lambda[2];
+      }
+    }
+  }
+  if (!out.residual.allFinite()) {
+    out.ok = false;
+    out.error = "the shooting residual is not finite";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace flexure

@@ -1,0 +1,403 @@
+#include "solver/shooting/shooting_solver.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "solver/common/errors.h"
+
+namespace flexure {
+
+namespace {
+
+ElasticaIntegrator::Options integrator_options(const ShootingSolver::Options& o) {
+  ElasticaIntegrator::Options io;
+  io.rtol = o.rtol;
+  io.atol = o.atol;
+  io.adams = o.adams;
+  io.backend = o.backend;
+  return io;
+}
+
+void check_options(const ShootingSolver::Options& o) {
+  if (!(o.rtol > 0.0 && o.rtol < 1e-2)) {
+    throw InvalidInput(fmt::format("shooting rtol must be in (0, 1e-2) (got {})", o.rtol));
+  }
+  if (!(o.atol > 0.0))
+    throw InvalidInput(fmt::format("shooting atol must be > 0 (got {})", o.atol));
+  if (o.newton.max_iterations < 1) {
+    throw InvalidInput(
+        fmt::format("max Newton iterations must be >= 1 (got {})", o.newton.max_iterations));
+  }
+  if (!(o.continuation.min_step > 0.0) ||
+      !(o.continuation.initial_step >= o.continuation.min_step)) {
+    throw InvalidInput("continuation steps must satisfy 0 < min_step <= initial_step");
+  }
+}
+
+}  // namespace
+
+double unique_equilibrium_bound(const SegmentChain& chain) {
+  chain.validate();
+  if (chain.end != EndCondition::kFree || chain.tip_load.follower != 0.0) {
+    return std::numeric_limits<double>::infinity();
+  }
+  // Largest internal force: partial sums of the dead loads from the tip.
+  const int n = chain.segment_count();
+  std::vector<double> node_fx(n + 1, 0.0), node_fy(n + 1, 0.0);
+  for (const NodeLoad& load : chain.node_loads) {
+    node_fx[load.node] += load.Fx;
+    node_fy[load.node] += load.Fy;
+  }
+  double fx = chain.tip_load.Fx, fy = chain.tip_load.Fy, max_force = std::hypot(fx, fy);
+  for (int k = n - 1; k >= 1; --k) {
+    fx += node_fx[k];
+    fy += node_fy[k];
+    max_force = std::max(max_force, std::hypot(fx, fy));
+  }
+  double flexible_length = 0.0, EI_min = std::numeric_limits<double>::infinity();
+  int flexible_count = 0;
+  bool uniform = true;
+  for (const Segment& seg : chain.segments) {
+    if (const auto* f = std::get_if<FlexibleSegment>(&seg)) {
+      ++flexible_count;
+      flexible_length += f->length;
+      if (f->EI_profile.empty()) {
+        EI_min = std::min(EI_min, f->EI);
+      } else {
+        uniform = false;
+        for (double v : f->EI_profile) EI_min = std::min(EI_min, v);
+      }
+    } else {
+      uniform = false;
+    }
+  }
+  if (flexible_count == 0 || max_force == 0.0) return 0.0;
+  if (uniform && flexible_count == 1 && chain.node_loads.empty()) {
+    return 4.0 * max_force * flexible_length * flexible_length /
+           (std::numbers::pi * std::numbers::pi * EI_min);
+  }
+  return max_force * flexible_length * chain.total_length() / (2.0 * EI_min);
+}
+
+double reachable_load_factor(const SegmentChain& chain) {
+  const PrescribedMask mask = prescribed_mask(chain.end);
+  if (!mask.x && !mask.y) return 1.0;
+  const double L = chain.total_length();
+  const ChainPose p0 = chain.unloaded_tip();
+  const ChainPose p1 = chain.prescribed_tip();
+  // Largest lambda with the prescribed tip coordinates inside the disk of radius L (the slider's
+  // free x is taken as 0, the most favourable value).
+  const double ax = mask.x ? p0.x : 0.0, bx = mask.x ? p1.x - p0.x : 0.0;
+  const double ay = mask.y ? p0.y : 0.0, by = mask.y ? p1.y - p0.y : 0.0;
+  auto outside = [&](double lam) {
+    return std::hypot(ax + lam * bx, ay + lam * by) > L * (1.0 + 1e-12);
+  };
+  if (!outside(1.0)) return 1.0;
+  // The start is inside (it is a configuration of the chain); bisect the crossing.
+  double lo = 0.0, hi = 1.0;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (outside(mid) ? hi : lo) = mid;
+  }
+  return lo;
+}
+
+ShootingResult ShootingSolver::finish(const ShootingProblem& problem,
+                                      ElasticaIntegrator& integrator,
+                                      const Eigen::VectorXd& z,
+                                      double lambda,
+                                      ShootingResult result,
+                                      const TipState* known_tip) const {
+  result.load_factor = lambda;
+  result.unknown_names = problem.unknown_names();
+  result.unknowns.assign(z.data(), z.data() + z.size());
+  result.shooting_intervals = problem.interval_count();
+  result.reaction = problem.reaction(z, lambda);
+  const ChainForces forces = problem.forces(z, lambda);
+  const Eigen::Vector2d N_tip = forces.N.back();
+  if (known_tip != nullptr && options_.shape_points <= 1) {
+    result.tip = ChainPose{known_tip->x, known_tip->y, known_tip->theta};
+    result.tip_load = RootReaction{N_tip.x(), N_tip.y(), known_tip->m};
+    return result;
+  }
+  TipState tip;
+  std::string error;
+  std::vector<double> s;
+  std::vector<double>* s_ptr = nullptr;
+  if (options_.shape_points > 1) {
+    const double total = problem.chain().total_length();
+    for (int i = 0; i < options_.shape_points; ++i) {
+      s.push_back(total * i / (options_.shape_points - 1));
+    }
+    s_ptr = &s;
+  }
+  if (!problem.integrate_solution(
+          z, lambda, integrator, tip, error, s_ptr, s_ptr ? &result.shape : nullptr)) {
+    result.converged = false;
+    result.message += "; final integration failed: " + error;
+    return result;
+  }
+  result.tip = ChainPose{tip.x, tip.y, tip.theta};
+  result.tip_load = RootReaction{N_tip.x(), N_tip.y(), tip.m};
+  return result;
+}
+
+ShootingResult ShootingSolver::solve(const SegmentChain& chain) const {
+  check_options(options_);
+  const ShootingProblem problem(chain, options_.multiple_shooting);
+  const double reachable = reachable_load_factor(chain);
+  if (reachable < 1.0) {
+    // An inextensible chain cannot reach the target: report without spending the step budget.
+    ShootingResult result;
+    result.method = "reachability check";
+    result.load_factor = reachable;
+    result.tip = chain.unloaded_tip();
+    result.unknown_names = problem.unknown_names();
+    result.message = fmt::format(
+        "not converged: the prescribed tip position lies farther from the root than the chain "
+        "length {:.6g}; the prescribed path leaves the reachable disk at load factor {:.9g}",
+        chain.total_length(),
+        reachable);
+    return result;
+  }
+  ElasticaIntegrator integrator(integrator_options(options_));
+  ShootingResult result;
+
+  const bool direct =
+      options_.strategy == ShootingStrategy::kDirect ||
+      (options_.strategy == ShootingStrategy::kAuto && unique_equilibrium_bound(chain) < 1.0);
+  if (direct) {
+    ShootingEvaluation start;
+    Eigen::VectorXd z0 = problem.unloaded_unknowns();
+    if (problem.evaluate(z0, 0.0, true, true, integrator, start)) {
+      // Linear theory: z(1) ~ z(0) + dz/dlambda, the path tangent at zero load.
+      Eigen::VectorXd z = z0 + robust_solve(start.jacobian, -start.d_lambda);
+      double lambda = 1.0;
+      NewtonOutcome nw = newton_solve(problem, integrator, options_.newton, z, lambda, nullptr);
+      result.iterations += nw.iterations;
+      if (nw.converged) {
+        result.converged = true;
+        result.method = "direct Newton";
+        result.residual_norm = nw.residual_norm;
+        result.message = nw.message;
+        return finish(problem, integrator, z, 1.0, result, &nw.last.tip);
+      }
+    }
+  }
+
+  if (options_.strategy == ShootingStrategy::kDirect) {
+    result.method = "direct Newton";
+    result.converged = false;
+    result.message = "direct Newton from the linear guess did not converge";
+    return finish(problem, integrator, problem.unloaded_unknowns(), 0.0, result);
+  }
+  ContinuationOptions copt = options_.continuation;
+  copt.record_path = false;
+  const LoadPath path = continue_load_path(problem, integrator, copt, options_.newton);
+  const PrescribedMask mask = prescribed_mask(chain.end);
+  if (path.singular_start && mask.x && mask.y) {
+    return solve_in_two_stages(chain, integrator, result);
+  }
+  result.method = "continuation";
+  result.iterations += path.newton_iterations;
+  result.continuation_steps = path.steps;
+  result.residual_norm = path.residual_norm;
+  result.converged = path.completed;
+  result.message = path.message;
+  if (!path.completed) {
+    // Report the furthest equilibrium that was reached.
+    result.message = fmt::format("not converged: {}", path.message);
+  }
+  return finish(problem, integrator, path.z, path.lambda, result, &path.tip_state);
+}
+
+ShootingSolver::TwoStageRun ShootingSolver::run_two_stages(const SegmentChain& chain,
+                                                           ElasticaIntegrator& integrator,
+                                                           bool record_path) const {
+  // Both end coordinates prescribed on a chain whose end-to-end distance cannot change at first
+  // order (straight and inextensible): proportional loading starts at a bifurcation. Stage 1
+  // releases the coordinate along the unloaded tip tangent and applies the loads and the other
+  // prescribed coordinates; stage 2 moves the released coordinate to its target at full load,
+  // from a bent chain where the problem is regular.
+  TwoStageRun run;
+  const ChainPose tangent = chain.unloaded_tip();
+  run.release_x = std::abs(std::cos(tangent.theta)) >= std::abs(std::sin(tangent.theta));
+  PrescribedMask stage1_mask = prescribed_mask(chain.end);
+  (run.release_x ? stage1_mask.x : stage1_mask.y) = false;
+  Homotopy stage1;
+  stage1.mask = stage1_mask;
+  run.p1.emplace(chain, options_.multiple_shooting, stage1);
+  ContinuationOptions copt = options_.continuation;
+  copt.record_path = record_path;
+  run.s1 = continue_load_path(*run.p1, integrator, copt, options_.newton);
+  if (!run.s1.completed) return run;
+
+  ChainPose start = chain.prescribed_tip();
+  (run.release_x ? start.x : start.y) = run.release_x ? run.s1.tip_state.x : run.s1.tip_state.y;
+  Homotopy stage2;
+  stage2.load_offset = 1.0;
+  stage2.load_slope = 0.0;
+  stage2.tip_start = start;
+  run.p2.emplace(chain, options_.multiple_shooting, stage2);
+  // Carry the stage-1 solution over; the released force component becomes an unknown.
+  const ShootingProblem& p1 = *run.p1;
+  const ShootingProblem& p2 = *run.p2;
+  Eigen::VectorXd z0 = p2.unloaded_unknowns();
+  const ChainForces f1 = p1.forces(run.s1.z, 1.0);
+  for (int i = 0; i < p2.size(); ++i) {
+    const std::string& name = p2.unknown_names()[i];
+    const auto& names1 = p1.unknown_names();
+    const auto it = std::find(names1.begin(), names1.end(), name);
+    if (it != names1.end()) {
+      z0[i] = run.s1.z[it - names1.begin()];
+    } else if (name == "Nx0") {
+      z0[i] = f1.N[0].x();
+    } else if (name == "Ny0") {
+      z0[i] = f1.N[0].y();
+    }
+  }
+  run.s2 = continue_load_path(p2, integrator, copt, options_.newton, &z0);
+  return run;
+}
+
+ShootingResult ShootingSolver::solve_in_two_stages(const SegmentChain& chain,
+                                                   ElasticaIntegrator& integrator,
+                                                   ShootingResult result) const {
+  const TwoStageRun run = run_two_stages(chain, integrator, false);
+  const char* released = run.release_x ? "x" : "y";
+  result.method = "two-stage continuation";
+  result.iterations += run.s1.newton_iterations;
+  result.continuation_steps = run.s1.steps;
+  if (!run.s1.completed) {
+    result.converged = false;
+    result.message =
+        fmt::format("not converged: stage 1 (loads, {} released) {}", released, run.s1.message);
+    return finish(*run.p1, integrator, run.s1.z, run.s1.lambda, result, &run.s1.tip_state);
+  }
+  result.iterations += run.s2.newton_iterations;
+  result.continuation_steps += run.s2.steps;
+  result.residual_norm = run.s2.residual_norm;
+  result.converged = run.s2.completed;
+  result.message =
+      run.s2.completed
+          ? fmt::format("stage 1 (loads, {} released): {}; stage 2 ({} to target): {}",
+                        released,
+                        run.s1.message,
+                        released,
+                        run.s2.message)
+          : fmt::format(
+                "not converged: full load reached with {} released, but stage 2 (moving {} to "
+                "its target) {}",
+                released,
+                released,
+                run.s2.message);
+  // Load factor 1 only when the full problem is solved; the stage-2 fraction is in the message.
+  ShootingResult out =
+      finish(*run.p2, integrator, run.s2.z, run.s2.lambda, result, &run.s2.tip_state);
+  out.load_factor = run.s2.completed ? 1.0 : 0.0;
+  return out;
+}
+
+ShootingResult ShootingSolver::solve_from(const SegmentChain& chain,
+                                          const std::vector<double>& guess) const {
+  check_options(options_);
+  const ShootingProblem problem(chain, options_.multiple_shooting);
+  const int count = static_cast<int>(guess.size());
+  if (count != problem.size() && count != problem.root_unknown_count()) {
+    throw InvalidInput(
+        fmt::format("shooting guess must have {} root unknowns or all {} unknowns (got {})",
+                    problem.root_unknown_count(),
+                    problem.size(),
+                    guess.size()));
+  }
+  for (double g : guess) require_finite(g, "shooting guess");
+  ElasticaIntegrator integrator(integrator_options(options_));
+  Eigen::VectorXd z = Eigen::Map<const Eigen::VectorXd>(guess.data(), count);
+  if (count != problem.size()) {
+    Eigen::VectorXd full;
+    std::string error;
+    if (!problem.complete_guess(z, 1.0, integrator, full, error)) {
+      ShootingResult failed;
+      failed.message = "integration from the guess failed: " + error;
+      failed.method = "Newton from guess";
+      return failed;
+    }
+    z = full;
+  }
+  double lambda = 1.0;
+  NewtonOutcome nw = newton_solve(problem, integrator, options_.newton, z, lambda, nullptr);
+  ShootingResult result;
+  result.method = "Newton from guess";
+  result.iterations = nw.iterations;
+  result.residual_norm = nw.residual_norm;
+  result.converged = nw.converged;
+  result.message = nw.message;
+  return finish(problem, integrator, z, nw.converged ? 1.0 : 0.0, result);
+}
+
+LoadPath ShootingSolver::load_path(const SegmentChain& chain) const {
+  check_options(options_);
+  const ShootingProblem problem(chain, options_.multiple_shooting);
+  const double reachable = reachable_load_factor(chain);
+  if (reachable < 1.0) {
+    LoadPath path;
+    path.message = fmt::format(
+        "the prescribed tip position lies farther from the root than the chain length {:.6g}; the "
+        "prescribed path leaves the reachable disk at load factor {:.9g}",
+        chain.total_length(),
+        reachable);
+    return path;
+  }
+  ElasticaIntegrator integrator(integrator_options(options_));
+  ContinuationOptions copt = options_.continuation;
+  copt.record_path = true;
+  LoadPath path = continue_load_path(problem, integrator, copt, options_.newton);
+  const PrescribedMask mask = prescribed_mask(chain.end);
+  if (!(path.singular_start && mask.x && mask.y)) return path;
+  // Straight chain with both end coordinates prescribed: the two stages of solve(), recorded.
+  TwoStageRun run = run_two_stages(chain, integrator, true);
+  LoadPath joined = std::move(run.s1);
+  const char* released = run.release_x ? "x" : "y";
+  if (!joined.completed) {
+    joined.message = fmt::format("stage 1 (loads, {} released) {}", released, joined.message);
+    return joined;
+  }
+  for (PathPoint p : run.s2.points) {
+    if (p.status == PathStatus::kStart) continue;
+    p.stage = 2;
+    joined.points.push_back(p);
+  }
+  joined.completed = run.s2.completed;
+  joined.steps += run.s2.steps;
+  joined.rejected_steps += run.s2.rejected_steps;
+  joined.newton_iterations += run.s2.newton_iterations;
+  joined.limit_points += run.s2.limit_points;
+  joined.z = run.s2.z;
+  joined.lambda = run.s2.completed ? 1.0 : 0.0;
+  joined.lambda_reached = joined.lambda;
+  joined.residual_norm = run.s2.residual_norm;
+  joined.tip = run.s2.tip;
+  joined.tip_state = run.s2.tip_state;
+  joined.message = fmt::format(
+      "two stages: stage 1 (loads, {} released) {}; stage 2 ({} moved to "
+      "its target, lambda = fraction moved) {}",
+      released,
+      joined.message,
+      released,
+      run.s2.message);
+  return joined;
+}
+
+ShootingResult solve_shooting(const SegmentChain& chain, const ShootingSolver::Options& options) {
+  return ShootingSolver(options).solve(chain);
+}
+
+LoadPath trace_load_path(const SegmentChain& chain, const ShootingSolver::Options& options) {
+  return ShootingSolver(options).load_path(chain);
+}
+
+}  // namespace flexure

@@ -1,0 +1,133 @@
+#pragma once
+// Reference solver for planar segment chains: shooting on the root loads with CVODES (rtol 1e-12)
+// and a Newton method whose Jacobian comes from CVODES forward sensitivities.
+//
+// Theory and conventions: docs/theory-shooting.md. Problem description:
+// solver/chain_model/segment_chain.h.
+//
+// Strategy of solve() (Options::strategy):
+//   kContinuation: pseudo-arclength continuation in the load factor from zero (continuation.h);
+//     passes limit points and returns the proportional-loading branch, like EllipticSolver.
+//   kDirect: Newton at full load from the linear-theory guess (the load-path tangent at zero).
+//     Fast, but for large or compressive loads it may converge to another equilibrium.
+//   kAuto (default): kDirect when the equilibrium is provably unique (the elastica operator is a
+//     contraction, see unique_equilibrium_bound()), otherwise kContinuation; a failed direct
+//     attempt falls back to continuation.
+// A problem that cannot be completed returns converged == false with the load factor reached.
+//
+// CLI entry points: solve_shooting(chain, options) and trace_load_path(chain, options).
+#include <Eigen/Dense>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "solver/chain_model/segment_chain.h"
+#include "solver/common/end_load.h"
+#include "solver/shooting/continuation.h"
+#include "solver/shooting/elastica_integrator.h"
+#include "solver/shooting/newton.h"
+#include "solver/shooting/shooting_problem.h"
+
+namespace flexure {
+
+struct ShootingResult {
+  bool converged = false;
+  std::string message;         // how it converged, or where and why it stopped
+  std::string method;          // "direct Newton" or "continuation"
+  int iterations = 0;          // Newton iterations, summed over continuation steps
+  int continuation_steps = 0;  // accepted continuation steps (0 for a direct solve)
+  int shooting_intervals = 1;  // 1 = single shooting; more = multiple shooting cuts + 1
+  double residual_norm = 0.0;  // max |g_i| of the far-end conditions at the returned point
+  double load_factor = 0.0;    // load factor reached (1 when converged)
+
+  ChainPose tip;          // tip x, y, theta (root frame)
+  RootReaction reaction;  // loads the clamp applies to the chain: -N(0), -m(0)
+  RootReaction tip_load;  // total load on the tip, given + reaction: N(tip), m(tip); for a
+                          // prescribed coordinate this is the support's reaction
+  std::vector<std::string> unknown_names;
+  std::vector<double> unknowns;   // m(0), shot force components, then the states at the cuts
+  std::vector<ShapePoint> shape;  // on request (Options::shape_points), s from 0 to total length
+
+  // Howell's tip description for a cantilever of length l: (x/l, y/l, theta).
+  TipPose tip_pose(double length = 1.0) const {
+    return TipPose{tip.x / length, tip.y / length, tip.theta};
+  }
+};
+
+enum class ShootingStrategy { kAuto, kContinuation, kDirect };
+
+// Contraction constant of the elastica map theta -> integral of m/EI for a chain with a free end
+// and dead loads only; below 1 the equilibrium is unique for any end moment. Returns +infinity when
+// the bound does not apply (prescribed tip coordinates, follower force). Uniform single segment:
+// 4 |F| L^2 / (pi^2 EI) (Green's operator of theta'' with theta(0) = theta'(L) = 0 has norm
+// 4 L^2 / pi^2); general chain: max|N| * L_flexible * L_total / (2 EI_min).
+double unique_equilibrium_bound(const SegmentChain& chain);
+
+// Largest load factor at which the prescribed tip position (pinned, slider, fixed) is still within
+// the chain's total length of the root; 1 when the full target is reachable. Beyond it no
+// inextensible equilibrium exists (the reactions grow without bound as it is approached).
+double reachable_load_factor(const SegmentChain& chain);
+
+class ShootingSolver {
+ public:
+  struct Options {
+    ShootingStrategy strategy = ShootingStrategy::kAuto;  // see the comment at the top
+    double rtol = 1e-12;  // CVODES relative tolerance (reference: <= 1e-12)
+    double atol = 1e-14;  // CVODES absolute tolerance
+    bool adams = true;    // Adams-Moulton; false = BDF
+    ElasticaIntegrator::Backend backend =
+        ElasticaIntegrator::Backend::kCvodes;   // kCvodes is the
+                                                // reference; kDormandPrince the fast explicit RK
+                                                // 5(4)
+    NewtonOptions newton;                       // Newton corrector tolerances and iteration limits
+    ContinuationOptions continuation;           // used when the direct attempt fails or is disabled
+    MultipleShootingOptions multiple_shooting;  // how finely large loads are cut (see
+                                                // shooting_problem.h)
+    int shape_points = 0;  // > 1: return the shape at this many equally spaced s
+  };
+
+  ShootingSolver() = default;
+  explicit ShootingSolver(Options options) : options_(options) {}
+
+  // Throws InvalidInput for an invalid chain; never throws for non-convergence.
+  ShootingResult solve(const SegmentChain& chain) const;
+  // Convenience: Howell's nondimensional cantilever (length 1, EI 1) with an end load.
+  ShootingResult solve(const EndLoad& load) const { return solve(uniform_cantilever(load)); }
+  // Newton at full load from given unknowns (e.g. a neighbouring solution); no continuation. The
+  // guess holds either the root unknowns (m0, then any shot force components) or all unknowns.
+  ShootingResult solve_from(const SegmentChain& chain, const std::vector<double>& guess) const;
+
+  // Load path by pseudo-arclength continuation from zero load (all points recorded). A straight
+  // chain with both end coordinates prescribed is recorded in the two stages solve() uses: stage 1
+  // points have PathPoint::stage = 1 (lambda = load factor), stage 2 points stage = 2 (lambda =
+  // fraction of the released coordinate's travel, loads at full value).
+  LoadPath load_path(const SegmentChain& chain) const;
+
+  const Options& options() const { return options_; }
+
+ private:
+  ShootingResult finish(const ShootingProblem& problem,
+                        ElasticaIntegrator& integrator,
+                        const Eigen::VectorXd& z,
+                        double lambda,
+                        ShootingResult result,
+                        const TipState* known_tip = nullptr) const;
+  struct TwoStageRun {
+    bool release_x = true;
+    std::optional<ShootingProblem> p1, p2;
+    LoadPath s1, s2;
+  };
+  TwoStageRun run_two_stages(const SegmentChain& chain,
+                             ElasticaIntegrator& integrator,
+                             bool record_path) const;
+  ShootingResult solve_in_two_stages(const SegmentChain& chain,
+                                     ElasticaIntegrator& integrator,
+                                     ShootingResult result) const;
+  Options options_;
+};
+
+// CLI entry points.
+ShootingResult solve_shooting(const SegmentChain& chain, const ShootingSolver::Options& options);
+LoadPath trace_load_path(const SegmentChain& chain, const ShootingSolver::Options& options);
+
+}  // namespace flexure
