@@ -9,6 +9,7 @@
 #include "cli/beam_methods.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "io/chain_toml.h"
 #include "solver/common/errors.h"
 
 namespace flexure::cli {
@@ -27,6 +28,20 @@ struct BeamArgs {
   CLI::Option* theta0_option = nullptr;
   CLI::Option* b_over_l_option = nullptr;
   CLI::Option* shape_option = nullptr;
+  // Issue 3: end conditions and the numerical methods.
+  std::string boundary = "free";
+  double tip_x = 0.0;
+  double tip_y = 0.0;
+  double tip_angle = 0.0;
+  double follower = 0.0;
+  int elements = 100;
+  int increments = 10;
+  std::string chain_variant = "corrected";
+  std::string chain_file;
+  CLI::Option* tip_x_option = nullptr;
+  CLI::Option* tip_y_option = nullptr;
+  CLI::Option* tip_angle_option = nullptr;
+  CLI::Option* chain_option = nullptr;
 };
 
 constexpr int kMaxShapePoints = 1'000'000;
@@ -37,6 +52,52 @@ BeamProblem make_problem(const BeamArgs& args) {
   require_finite_input(args.mu, "--mu (end moment M l/EI)");
   problem.load_ratio_n = args.load_ratio_n;
   problem.mu = args.mu;
+  problem.boundary = end_condition_from_string(args.boundary);
+  const PrescribedMask mask = prescribed_mask(problem.boundary);
+  auto prescribe = [&](CLI::Option* option, double value, bool allowed, const char* name) {
+    if (!*option) return std::optional<double>();
+    require_finite_input(value, name);
+    if (!allowed) {
+      throw InvalidInput(
+          fmt::format("{} is not prescribed by --boundary {} (it prescribes{}{}{})",
+                      name,
+                      args.boundary,
+                      mask.x ? " tip x" : "",
+                      mask.y ? " tip y" : "",
+                      mask.theta ? " tip angle" : (mask.x || mask.y ? "" : " nothing")));
+    }
+    return std::optional<double>(value);
+  };
+  problem.prescribed.x = prescribe(args.tip_x_option, args.tip_x, mask.x, "--tip-x");
+  problem.prescribed.y = prescribe(args.tip_y_option, args.tip_y, mask.y, "--tip-y");
+  problem.prescribed.theta =
+      prescribe(args.tip_angle_option, args.tip_angle, mask.theta, "--tip-angle");
+  require_finite_input(args.follower, "--follower (follower force F l^2/EI)");
+  problem.follower = args.follower;
+  require_in_range(args.elements, "--elements (chain algorithm elements N)", 1, 1'000'000);
+  require_in_range(args.increments, "--increments (load increments)", 1, 1'000'000);
+  problem.elements = args.elements;
+  problem.increments = args.increments;
+  problem.chain_variant = args.chain_variant;
+  const bool any_given = *args.alpha2_option || *args.theta0_option || *args.b_over_l_option;
+  if (*args.chain_option) {
+    if (any_given || args.load_ratio_n != 0.0 || args.mu != 0.0 || args.follower != 0.0 ||
+        args.boundary != "free") {
+      throw InvalidInput(
+          "--chain FILE.toml describes the whole problem (segments, loads, boundary); do not "
+          "combine it with --alpha2, --theta0, --b-over-l, --n, --mu, --follower or --boundary");
+    }
+    problem.chain = io::read_chain_toml(args.chain_file);
+    problem.boundary = problem.chain->end;
+    if (*args.shape_option) {
+      require_in_range(args.shape_points, "--shape (number of shape points)", 2, kMaxShapePoints);
+      problem.shape_points = args.shape_points;
+    }
+    return problem;
+  }
+  if (!any_given) {
+    throw InvalidInput("one of --alpha2, --theta0 or --b-over-l is required (or --chain FILE)");
+  }
   if (*args.alpha2_option) {
     require_finite_input(args.alpha2, "--alpha2 (P l^2/EI)");
     problem.given = BeamProblem::Given::kAlpha2;
@@ -59,16 +120,21 @@ BeamProblem make_problem(const BeamArgs& args) {
 
 void print_report(const BeamProblem& problem, const BeamSolution& solution) {
   const double degrees = 180.0 / std::numbers::pi;
-  fmt::print("Cantilever with end load, method {} (n = {:g}, mu = {:g})\n",
+  fmt::print("Cantilever with end load, method {} (n = {:g}, mu = {:g}, {} end)\n",
              solution.method,
              problem.load_ratio_n,
-             problem.mu);
+             problem.mu,
+             to_string(problem.boundary));
   fmt::print("  alpha2 = P l^2/EI = {:.10g}\n", solution.alpha2);
   fmt::print("  a/l    = {:.10g}\n", solution.tip.a_over_l);
   fmt::print("  b/l    = {:.10g}\n", solution.tip.b_over_l);
   fmt::print(
       "  theta0 = {:.10g} rad ({:.6g} deg)\n", solution.tip.theta0, solution.tip.theta0 * degrees);
   fmt::print("  root moment M(0) l/EI = {:.10g}\n", solution.root_moment);
+  fmt::print("  reactions at the clamp: Fx = {:.10g}, Fy = {:.10g}, M = {:.10g}\n",
+             solution.reactions.Fx,
+             solution.reactions.Fy,
+             solution.reactions.M);
   fmt::print("  {} elastica, {} inflection point(s), branch: {}\n",
              solution.family,
              solution.inflection_points,
@@ -90,9 +156,17 @@ void print_report(const BeamProblem& problem, const BeamSolution& solution) {
 Json to_json(const BeamProblem& problem, const BeamSolution& solution) {
   Json out;
   out["method"] = solution.method;
-  out["n"] = problem.load_ratio_n;
-  out["alpha2"] = solution.alpha2;
-  out["mu"] = problem.mu;
+  if (problem.chain) {
+    // Howell's parameters of the chain's tip load: alpha2 = Fy, n = -Fx/Fy, mu = M.
+    const TipLoad& tip = problem.chain->tip_load;
+    out["n"] = tip.Fy != 0.0 ? -tip.Fx / tip.Fy + 0.0 : 0.0;  // + 0.0: no "-0.0" in the output
+    out["alpha2"] = tip.Fy;
+    out["mu"] = tip.M;
+  } else {
+    out["n"] = problem.load_ratio_n;
+    out["alpha2"] = solution.alpha2;
+    out["mu"] = problem.mu;
+  }
   out["a_over_l"] = solution.tip.a_over_l;
   out["b_over_l"] = solution.tip.b_over_l;
   out["theta0"] = solution.tip.theta0;
@@ -103,6 +177,14 @@ Json to_json(const BeamProblem& problem, const BeamSolution& solution) {
   out["root_moment"] = solution.root_moment;
   out["family"] = solution.family;
   out["message"] = solution.message;
+  out["boundary"] = to_string(problem.boundary);
+  out["reactions"] = Json{{"Fx", solution.reactions.Fx + 0.0},
+                          {"Fy", solution.reactions.Fy + 0.0},
+                          {"M", solution.reactions.M + 0.0}};
+  if (solution.method == "chain") {
+    out["elements"] = solution.elements;
+    out["increments"] = solution.increments;
+  }
   if (problem.shape_points > 0) {
     Json shape = Json::array();
     for (const ShapePoint& p : solution.shape) {
@@ -162,8 +244,31 @@ void register_beam_command(CLI::App& app) {
   args->theta0_option = given->add_option("--theta0", args->theta0, "Tip angle theta0 (rad)");
   args->b_over_l_option =
       given->add_option("--b-over-l", args->b_over_l, "Tip deflection b/l (-1..1)");
-  given->require_option(1);
+  given->require_option(0, 1);
   add_method_option(*beam, args->method);
+  beam->add_option("--boundary",
+                   args->boundary,
+                   "Far end: free (loads given), guided (tip angle prescribed), pinned (tip x, y "
+                   "prescribed), slider (tip y prescribed), fixed (all prescribed)")
+      ->default_str("free")
+      ->check(CLI::IsMember({"free", "guided", "pinned", "slider", "fixed"}));
+  args->tip_x_option = beam->add_option(
+      "--tip-x", args->tip_x, "Prescribed tip x/l (pinned, fixed; default: unloaded tip)");
+  args->tip_y_option = beam->add_option(
+      "--tip-y", args->tip_y, "Prescribed tip y/l (pinned, slider, fixed; default 0)");
+  args->tip_angle_option = beam->add_option(
+      "--tip-angle", args->tip_angle, "Prescribed tip angle, rad (guided, fixed; default 0)");
+  beam->add_option("--follower", args->follower, "Follower tip force F l^2/EI, normal to the tip")
+      ->default_str("0");
+  beam->add_option("--elements", args->elements, "Chain algorithm: number of elements N")
+      ->default_str("100");
+  beam->add_option("--increments", args->increments, "Chain algorithm: load increments")
+      ->default_str("10");
+  beam->add_option("--chain-variant", args->chain_variant, "Chain algorithm: howell | corrected")
+      ->default_str("corrected")
+      ->check(CLI::IsMember({"howell", "corrected"}));
+  args->chain_option = beam->add_option(
+      "--chain", args->chain_file, "Segment chain from a TOML file (docs/chain-toml.md)");
   args->shape_option = beam->add_option(
       "--shape", args->shape_points, "Also output the deflected shape at K points (K >= 2)");
   beam->add_flag("--json", args->json, "Print one JSON object on stdout");

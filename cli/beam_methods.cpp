@@ -2,13 +2,23 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
+#include "solver/chain/chain_algorithm_solver.h"
 #include "solver/common/errors.h"
+#include "solver/common/load_search.h"
 #include "solver/elliptic/elliptic_solver.h"
+#include "solver/shooting/shooting_solver.h"
 
 namespace flexure::cli {
 namespace {
 
 BeamSolution solve_elliptic(const BeamProblem& problem) {
+  if (!problem.is_plain_cantilever()) {
+    throw InvalidInput(
+        "--method elliptic solves the uniform cantilever with a free end and dead loads only; use "
+        "--method shooting or chain for --boundary other than free, --follower or --chain");
+  }
   const EllipticSolver solver;
   EllipticResult result;
   switch (problem.given) {
@@ -35,50 +45,230 @@ BeamSolution solve_elliptic(const BeamProblem& problem) {
   solution.root_moment = result.root_moment;
   solution.family = to_string(result.parameters.family);
   solution.tolerance = solver.options().tolerance;
+  // The clamp holds the tip loads: -F, and the moment -M(0) (statics of the whole beam).
+  solution.reactions = {-result.load.Fx, -result.load.Fy, -result.root_moment};
+  solution.load_factor = result.converged ? 1.0 : 0.0;
   if (result.converged && problem.shape_points > 0) {
     solution.shape = solver.shape(result, problem.shape_points);
   }
   return solution;
 }
 
+// Interior sign changes of the curvature along a sampled shape (numerical methods).
+int count_curvature_sign_changes(const std::vector<ShapePoint>& shape) {
+  int changes = 0;
+  double previous = 0.0;
+  for (std::size_t i = 1; i < shape.size(); ++i) {
+    const double d = shape[i].theta - shape[i - 1].theta;
+    if (std::fabs(d) < 1e-12) continue;
+    if (previous != 0.0 && (d > 0.0) != (previous > 0.0)) ++changes;
+    previous = d;
+  }
+  return changes;
+}
+
+// Linear interpolation of a shape given at increasing s onto `count` equally spaced points.
+std::vector<ShapePoint> resample(const std::vector<ShapePoint>& nodes, int count) {
+  std::vector<ShapePoint> out;
+  if (nodes.size() < 2 || count < 2) return out;
+  const double s0 = nodes.front().s;
+  const double s1 = nodes.back().s;
+  std::size_t j = 0;
+  for (int i = 0; i < count; ++i) {
+    const double s = s0 + (s1 - s0) * i / (count - 1);
+    while (j + 2 < nodes.size() && nodes[j + 1].s < s) ++j;
+    const ShapePoint& a = nodes[j];
+    const ShapePoint& b = nodes[j + 1];
+    const double t = b.s > a.s ? (s - a.s) / (b.s - a.s) : 0.0;
+    out.push_back(
+        {s, a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.theta + t * (b.theta - a.theta)});
+  }
+  return out;
+}
+
+// Tip quantity used by the inverse problems.
+double given_quantity(const BeamProblem& problem, const TipPose& tip) {
+  return problem.given == BeamProblem::Given::kTheta0 ? tip.theta0 : tip.b_over_l;
+}
+
+BeamSolution solve_numerical_forward(const std::string& method,
+                                     const BeamProblem& problem,
+                                     double alpha2,
+                                     int shape_points) {
+  const SegmentChain chain = problem.to_chain(alpha2);
+  const double length = chain.total_length();
+  BeamSolution solution;
+  solution.method = method;
+  solution.alpha2 = alpha2;
+  solution.family = "numerical";
+  if (method == "shooting") {
+    ShootingSolver::Options options;
+    options.shape_points = std::max(shape_points, 401);
+    const ShootingResult r = solve_shooting(chain, options);
+    solution.converged = r.converged;
+    solution.message = r.message;
+    solution.iterations = r.iterations;
+    solution.tip = r.tip_pose(length);
+    solution.reactions = {r.reaction.Fx, r.reaction.Fy, r.reaction.M};
+    solution.root_moment = -r.reaction.M;
+    solution.load_factor = r.load_factor;
+    solution.tolerance = options.rtol;
+    solution.branch = r.method == "continuation"
+                          ? fmt::format(
+                                "proportional loading (pseudo-arclength continuation, {} "
+                                "steps)",
+                                r.continuation_steps)
+                          : "unique equilibrium (direct Newton; contraction bound below 1)";
+    if (r.message.find("limit point") != std::string::npos &&
+        r.message.find(" 0 limit points") == std::string::npos) {
+      solution.branch +=
+          "; the path passed limit points: under load control the beam would snap at the first";
+    }
+    solution.inflection_points = count_curvature_sign_changes(r.shape);
+    if (shape_points > 0 && r.converged) solution.shape = resample(r.shape, shape_points);
+  } else {
+    ChainAlgorithmSolver::Options options;
+    options.elements = problem.elements;
+    options.increments = problem.increments;
+    options.variant = chain_variant_from_string(problem.chain_variant);
+    const ChainResult r = solve_chain(chain, options);
+    solution.converged = r.converged;
+    solution.message = r.message;
+    solution.iterations = r.iterations;
+    solution.tip = r.tip_pose;
+    solution.reactions = {r.root_reaction.Fx, r.root_reaction.Fy, r.root_reaction.M};
+    solution.root_moment = r.root_moment;
+    solution.load_factor = r.load_factor;
+    solution.tolerance = options.tolerance;
+    solution.elements = r.elements;
+    solution.increments = r.increments;
+    solution.branch = fmt::format("proportional loading ({} load increments, {} variant)",
+                                  r.increments,
+                                  to_string(options.variant));
+    solution.inflection_points = count_curvature_sign_changes(r.nodes);
+    if (shape_points > 0 && r.converged) solution.shape = resample(r.nodes, shape_points);
+  }
+  // Howell's a/l, b/l are per unit length of the chain; the shape is reported the same way.
+  for (ShapePoint& p : solution.shape) {
+    p.s /= length;
+    p.x /= length;
+    p.y /= length;
+  }
+  return solution;
+}
+
+BeamSolution solve_numerical(const std::string& method, const BeamProblem& problem) {
+  if (problem.given == BeamProblem::Given::kAlpha2 || problem.chain) {
+    return solve_numerical_forward(method, problem, problem.value, problem.shape_points);
+  }
+  if (problem.boundary != EndCondition::kFree) {
+    throw InvalidInput(fmt::format(
+        "--theta0 and --b-over-l find the load of a free cantilever; with --boundary {} give "
+        "--alpha2 and prescribe the tip with --tip-x/--tip-y/--tip-angle",
+        to_string(problem.boundary)));
+  }
+  int solves = 0;
+  auto quantity = [&](double alpha2) -> std::optional<double> {
+    ++solves;
+    const BeamSolution s = solve_numerical_forward(method, problem, alpha2, 0);
+    if (!s.converged) return std::nullopt;
+    return given_quantity(problem, s.tip);
+  };
+  const double at_zero =
+      given_quantity(problem, solve_numerical_forward(method, problem, 0.0, 0).tip);
+  LoadSearchOptions options;
+  options.relative_tolerance = 1e-11;
+  const LoadSearchResult found = find_load_for_target(quantity, problem.value, at_zero, options);
+  if (!found.found) {
+    throw InvalidInput(
+        fmt::format("{} = {:.6g}: {}",
+                    problem.given == BeamProblem::Given::kTheta0 ? "--theta0" : "--b-over-l",
+                    problem.value,
+                    found.message));
+  }
+  BeamSolution solution =
+      solve_numerical_forward(method, problem, found.alpha2, problem.shape_points);
+  solution.iterations += solves;
+  return solution;
+}
+
 }  // namespace
+
+SegmentChain BeamProblem::to_chain(double alpha2) const {
+  if (chain) return *chain;
+  SegmentChain c = uniform_cantilever(EndLoad::howell(load_ratio_n, alpha2, mu));
+  c.tip_load.follower = follower;
+  c.end = boundary;
+  c.prescribed = prescribed;
+  // A prescribed coordinate takes the place of its conjugate load (segment_chain.h).
+  const PrescribedMask mask = prescribed_mask(boundary);
+  if (mask.x && c.tip_load.Fx != 0.0) {
+    throw InvalidInput(fmt::format(
+        "--boundary {} prescribes the tip x, so the horizontal load n alpha2 must be 0 (got {:g})",
+        to_string(boundary),
+        c.tip_load.Fx));
+  }
+  if (mask.y && c.tip_load.Fy != 0.0) {
+    throw InvalidInput(fmt::format(
+        "--boundary {} prescribes the tip y, so --alpha2 must be 0 (got {:g}); the vertical "
+        "reaction is an output",
+        to_string(boundary),
+        c.tip_load.Fy));
+  }
+  if (mask.theta && c.tip_load.M != 0.0) {
+    throw InvalidInput(fmt::format(
+        "--boundary {} prescribes the tip angle, so --mu must be 0 (got {:g}); the end moment is "
+        "an output",
+        to_string(boundary),
+        c.tip_load.M));
+  }
+  c.validate();
+  return c;
+}
 
 void add_method_option(CLI::App& command, std::string& method) {
   command
       .add_option("--method",
                   method,
-                  "Solution method: auto (= elliptic in this build), elliptic, shooting, chain")
+                  "Solution method: auto (elliptic for a free cantilever, else shooting), "
+                  "elliptic, shooting, chain")
       ->default_str("auto")
       ->check(CLI::IsMember(
           std::vector<std::string>(kBeamMethodNames.begin(), kBeamMethodNames.end())));
 }
 
 std::string other_methods_hint(const std::string& failed_method) {
-  // Shooting (Howell sec. 7.2.1) and the chain algorithm (sec. 7.2) follow a load path and can
-  // reach branches the closed form does not; they are the fallback once they are built in.
-  (void)failed_method;
-  return "No other method is available in this build yet.";
+  if (failed_method == "elliptic") {
+    return "The shooting method (--method shooting) follows the load path by arc-length "
+           "continuation past limit points.";
+  }
+  if (failed_method == "chain") {
+    return "The shooting method (--method shooting) is the reference for any chain.";
+  }
+  return "Try smaller loads or --method chain with more --increments.";
+}
+
+std::string resolve_beam_method(const std::string& method, const BeamProblem& problem) {
+  if (method != "auto") return method;
+  return problem.is_plain_cantilever() ? "elliptic" : "shooting";
 }
 
 std::string resolve_beam_method(const std::string& method) {
-  // Only the exact elliptic solution exists in this build; when shooting and chain arrive, auto
-  // should stay elliptic where it applies (it is exact and fastest) and fall back otherwise.
   return method == "auto" ? "elliptic" : method;
 }
 
 double beam_method_tolerance(const std::string& method) {
   const std::string used = resolve_beam_method(method);
   if (used == "elliptic") return EllipticSolver::Options{}.tolerance;
-  throw InvalidInput(fmt::format("method '{}' is not available yet in this build", used));
+  if (used == "shooting") return ShootingSolver::Options{}.rtol;
+  if (used == "chain") return ChainAlgorithmSolver::Options{}.tolerance;
+  throw InvalidInput(fmt::format("method '{}' is unknown", used));
 }
 
 BeamSolution solve_beam(const std::string& method, const BeamProblem& problem) {
-  const std::string used = resolve_beam_method(method);
+  const std::string used = resolve_beam_method(method, problem);
   if (used == "elliptic") return solve_elliptic(problem);
-  if (used == "shooting" || used == "chain") {
-    throw InvalidInput(fmt::format(
-        "method '{}' is not available yet in this build (available: elliptic, auto)", used));
-  }
+  if (used == "shooting" || used == "chain") return solve_numerical(used, problem);
   throw InvalidInput(
       fmt::format("--method '{}' is unknown (allowed: auto, elliptic, shooting, chain)", method));
 }

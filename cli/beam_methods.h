@@ -6,9 +6,11 @@
 // else in the CLI needs to change; `auto` picks the method used when none is named.
 #include <CLI/CLI.hpp>
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "solver/chain_model/segment_chain.h"
 #include "solver/common/end_load.h"
 
 namespace flexure::cli {
@@ -26,6 +28,28 @@ struct BeamProblem {
   double load_ratio_n = 0.0;  // n > 0 compressive
   double mu = 0.0;            // end moment M l/EI
   int shape_points = 0;       // 0: no shape; otherwise >= 2 points from s = 0 to s = 1
+  // Issue 3: the far end and the numerical methods (shooting, chain).
+  EndCondition boundary = EndCondition::kFree;
+  TipPrescription prescribed;  // unset = the stress-free tip value (e.g. guided: theta = 0)
+  double follower = 0.0;       // follower tip force F l^2/EI along the tip normal
+  int elements = 100;          // chain algorithm: N elements
+  int increments = 10;         // chain algorithm: load increments
+  std::string chain_variant = "corrected";  // chain algorithm: howell | corrected
+  std::optional<SegmentChain> chain;        // from --chain FILE.toml (overrides the loads above)
+
+  // The segment chain this problem describes (the TOML chain, or Howell's uniform cantilever with
+  // Fx = -n alpha2, Fy = alpha2, M = mu, the follower force and the end condition).
+  SegmentChain to_chain(double alpha2) const;
+  bool is_plain_cantilever() const {
+    return !chain && boundary == EndCondition::kFree && follower == 0.0;
+  }
+};
+
+// Loads the clamp exerts on the beam (root frame), Fx, Fy, M (nondimensional).
+struct Reactions {
+  double Fx = 0.0;
+  double Fy = 0.0;
+  double M = 0.0;
 };
 
 // A method-independent summary of one solve, with the keys `flexure beam --json` prints.
@@ -42,6 +66,10 @@ struct BeamSolution {
   std::string family;
   double tolerance = 0.0;  // the method's convergence tolerance (recorded in output files)
   std::vector<ShapePoint> shape;
+  Reactions reactions;       // at the root
+  int elements = 0;          // chain algorithm only (0 otherwise)
+  int increments = 0;        // chain algorithm only: increments taken
+  double load_factor = 1.0;  // load factor reached (1 when converged)
 };
 
 // Adds `--method` (default "auto", restricted to kBeamMethodNames) to a subcommand.
@@ -50,7 +78,9 @@ void add_method_option(CLI::App& command, std::string& method);
 // A sentence for non-convergence messages: which other method may work.
 std::string other_methods_hint(const std::string& failed_method);
 
-// The method `auto` resolves to for this build.
+// The method `auto` resolves to: elliptic for Howell's free cantilever (exact and fastest),
+// shooting (the reference for any chain and end condition) otherwise.
+std::string resolve_beam_method(const std::string& method, const BeamProblem& problem);
 std::string resolve_beam_method(const std::string& method);
 
 // Solves `problem` with `method` (one of kBeamMethodNames). Throws InvalidInput for bad input or a

@@ -8,5 +8,7 @@ void register_beam_command(CLI::App& app);      // beam_command.cpp
 void register_sweep_command(CLI::App& app);     // sweep_command.cpp
 void register_validate_command(CLI::App& app);  // validate_command.cpp
 void register_prbm_command(CLI::App& app);      // prbm_command.cpp
+void register_cfm_command(CLI::App& app);       // cfm_command.cpp
+void register_path_command(CLI::App& app);      // path_command.cpp
 
 }  // namespace flexure::cli

@@ -43,6 +43,8 @@ int main(int argc, char** argv) {
   flexure::cli::register_sweep_command(app);
   flexure::cli::register_validate_command(app);
   flexure::cli::register_prbm_command(app);
+  flexure::cli::register_cfm_command(app);
+  flexure::cli::register_path_command(app);
 
   return flexure::cli::run_app(app, argc, argv);
 }

@@ -3,7 +3,9 @@
 //
 //   flexure prbm derive  --segment fixed-pinned --n N [--step DEG] [--theta-max-K DEG] [--json]
 //   flexure prbm derive  --segment end-moment [--json]
+//   flexure prbm derive  --segment initially-curved --kappa0 K --n N [--json]
 //   flexure prbm table   --segment fixed-pinned|initially-curved|end-moment [--json]
+//   flexure prbm table   --segment initially-curved [--n-min A --n-max B --n-steps M] [--step D]
 //   flexure prbm compare --segment fixed-pinned --n N --alpha2 A [--constants table|fits|derived]
 //   flexure prbm compare --segment end-moment --mu MU [--json]
 //   flexure prbm compare ... --range START:STOP:COUNT   (a sweep of alpha2 or mu, one row per load)
@@ -41,7 +43,11 @@ struct PrbmArgs {
   double theta_max_K_deg = 0.0;
   int tail = 0;
   std::string constants = "table";
-  std::string range;  // START:STOP:COUNT of alpha2 (or mu) for compare
+  std::string range;    // START:STOP:COUNT of alpha2 (or mu) for compare
+  double kappa0 = 0.0;  // initially curved cantilever: l / R_i
+  double n_min = -0.5;  // load-ratio range of the Table 5.2 average (eqs. 5.51, 5.64)
+  double n_max = 1.0;
+  int n_steps = 6;
   bool json = false;
 };
 
@@ -63,9 +69,14 @@ void require_converged(const PrbmDerivation& d) {
 Json derivation_json(const PrbmDerivation& d) {
   Json j;
   j["segment"] = d.segment;
-  if (d.segment == "fixed-pinned") {
+  if (d.segment != "end-moment") {
     j["n"] = d.load_ratio_n;
     j["phi_deg"] = d.phi / kDeg;
+  }
+  if (d.segment == "initially-curved") {
+    j["kappa0"] = d.kappa0;
+    j["rho"] = d.rho;
+    j["theta_i_deg"] = d.theta_i / kDeg;
   }
   j["gamma"] = d.gamma;
   j["theta_max_gamma_deg"] = d.theta_max_gamma / kDeg;
@@ -90,22 +101,34 @@ void run_derive(const PrbmArgs& args) {
     d = derive_fixed_pinned(args.load_ratio_n, options);
   } else if (args.segment == "end-moment") {
     d = derive_end_moment(options);
+  } else if (args.segment == "initially-curved") {
+    require_in_range(args.load_ratio_n, "--n (load ratio)", -5.0, 10.0);
+    require_in_range(args.kappa0, "--kappa0 (l/R_i)", 0.0, 3.0);
+    d = derive_initially_curved(args.kappa0, args.load_ratio_n, options);
   } else {
-    throw InvalidInput(fmt::format(
-        "--segment = '{}' cannot be derived; allowed: fixed-pinned, end-moment", args.segment));
+    throw InvalidInput(
+        fmt::format("--segment = '{}' cannot be derived; allowed: fixed-pinned, end-moment, "
+                    "initially-curved",
+                    args.segment));
   }
   require_converged(d);
   if (args.json) {
     print_json(derivation_json(d));
     return;
   }
-  fmt::print("{} segment{}\n",
+  fmt::print("{} segment{}{}\n",
              d.segment,
-             d.segment == "fixed-pinned"
+             d.segment != "end-moment"
                  ? fmt::format(", n = {}, phi = {:.2f} deg", d.load_ratio_n, d.phi / kDeg)
+                 : "",
+             d.segment == "initially-curved"
+                 ? fmt::format(", kappa0 = {}, rho = {:.5f}, Theta_i = {:.3f} deg",
+                               d.kappa0,
+                               d.rho,
+                               d.theta_i / kDeg)
                  : "");
   fmt::print("  gamma             = {:.5f}\n", d.gamma);
-  fmt::print("  Theta_max(gamma)  = {:.3f} deg (theta0 = {:.3f} deg)\n",
+  fmt::print("  Theta_max(gamma)  = {:.3f} deg from Theta_i (theta0 = {:.3f} deg)\n",
              d.theta_max_gamma / kDeg,
              d.theta0_at_theta_max / kDeg);
   fmt::print("  c_theta           = {:.5f}\n", d.c_theta);
@@ -178,51 +201,100 @@ void table_fixed_pinned(const PrbmArgs& args) {
 }
 
 void table_initially_curved(const PrbmArgs& args) {
-  // Table 5.2 gives gamma and K_theta; rho follows from gamma by eqs. 5.116-5.118, so rho (and
-  // Theta_i) is what can be recomputed without a curved-beam derivation.
+  // Table 5.2's gamma and K_theta are "recommended values" (Howell §5.5.1), i.e. averages over load
+  // ratios like gamma = 0.85, K_theta = 2.65 of the straight beam (eqs. 5.51, 5.64); each row is
+  // re-derived per n from the exact curved-beam path and averaged over [n_min, n_max]
+  // (docs/prbm.md).
+  const PrbmDerivationOptions options = derivation_options(args);
+  require_in_range(args.n_min, "--n-min (load ratio)", -5.0, 10.0);
+  require_in_range(args.n_max, "--n-max (load ratio)", args.n_min + 1e-9, 10.0);
+  require_in_range(args.n_steps, "--n-steps (intervals of the load-ratio average)", 1, 200);
   Json rows = Json::array();
   if (!args.json) {
     fmt::print(
-        "Table 5.2 (initially curved cantilever): rho and Theta_i recomputed from eqs. 5.115-5.118 "
-        "with the tabulated gamma\n");
-    fmt::print("{:>7} {:>6} | {:>7} {:>7} {:>8} | {:>9} | {:>6}\n",
+        "Table 5.2 (initially curved cantilever) recomputed from the exact solution, averaged over "
+        "{:g} <= n <= {:g} ({} intervals); book, derived, derived - book\n",
+        args.n_min,
+        args.n_max,
+        args.n_steps);
+    fmt::print("{:>6} | {:>19} | {:>22} | {:>19} | {:>7} | {:>5} | {:>6}\n",
                "kappa0",
                "gamma",
-               "rho bk",
-               "rho eq",
-               "diff",
-               "Theta_i",
-               "K_th");
+               "rho",
+               "K_theta",
+               "Th_i",
+               "n ok",
+               "ThMin");
   }
   for (const CurvedCantileverTableRow& row : table_5_2()) {
-    CurvedCantileverConstants c;
-    c.kappa0 = row.kappa0;
-    c.gamma = row.gamma;
-    c.K_theta = row.K_theta;
-    const InitiallyCurvedCantilever element(c);
+    const CurvedCantileverAverage a =
+        derive_initially_curved_average(row.kappa0, args.n_min, args.n_max, args.n_steps, options);
+    if (!a.converged) throw NoConvergence("Table 5.2 derivation failed: " + a.message);
     if (args.json) {
+      Json per_n = Json::array();
+      for (std::size_t i = 0; i < a.per_n.size(); ++i) {
+        const PrbmDerivation& d = a.per_n[i];
+        Json j = derivation_json(d);
+        j["used_in_average"] = d.converged && !d.theta_max_at_path_end;
+        const PrbmDerivation& k = a.per_n_at_average_gamma[i];
+        j["at_average_gamma"] = {{"K_theta", k.K_theta},
+                                 {"theta_max_K_deg", k.theta_max_K / kDeg},
+                                 {"theta_max_gamma_deg", k.theta_max_gamma / kDeg},
+                                 {"used_in_average", k.converged && !k.theta_max_at_path_end}};
+        per_n.push_back(j);
+      }
       rows.push_back({{"kappa0", row.kappa0},
-                      {"gamma", row.gamma},
-                      {"rho_book", row.rho},
-                      {"rho", element.rho()},
-                      {"rho_diff", element.rho() - row.rho},
-                      {"theta_i_rad", element.initial_angle()},
-                      {"K_theta", row.K_theta}});
+                      {"book", {{"gamma", row.gamma}, {"rho", row.rho}, {"K_theta", row.K_theta}}},
+                      {"gamma", a.gamma},
+                      {"rho", a.rho},
+                      {"K_theta", a.K_theta},
+                      {"K_theta_per_n_gamma", a.K_theta_per_n_gamma},
+                      {"c_theta", a.c_theta},
+                      {"theta_i_deg", a.theta_i / kDeg},
+                      {"gamma_diff", a.gamma - row.gamma},
+                      {"rho_diff", a.rho - row.rho},
+                      {"K_theta_diff", a.K_theta - row.K_theta},
+                      {"load_ratios_used", a.used},
+                      {"load_ratios_used_K_theta", a.used_K},
+                      {"theta_max_gamma_min_deg", a.theta_max_gamma_min / kDeg},
+                      {"message", a.message},
+                      {"per_n", per_n}});
       continue;
     }
-    fmt::print("{:7.2f} {:6.2f} | {:7.3f} {:7.4f} {:+8.4f} | {:9.4f} | {:6.2f}\n",
-               row.kappa0,
-               row.gamma,
-               row.rho,
-               element.rho(),
-               element.rho() - row.rho,
-               element.initial_angle(),
-               row.K_theta);
+    fmt::print(
+        "{:6.2f} | {:.2f} {:.4f} {:+.4f} | {:.3f} {:.4f} {:+.4f} | {:.2f} {:.4f} {:+.4f} | {:7.2f} "
+        "| "
+        "{:2d}/{:<2d} | {:6.1f}\n",
+        row.kappa0,
+        row.gamma,
+        a.gamma,
+        a.gamma - row.gamma,
+        row.rho,
+        a.rho,
+        a.rho - row.rho,
+        row.K_theta,
+        a.K_theta,
+        a.K_theta - row.K_theta,
+        a.theta_i / kDeg,
+        a.used,
+        args.n_steps + 1,
+        a.theta_max_gamma_min / kDeg);
   }
   if (args.json) {
-    print_json({{"table", "5.2"}, {"segment", "initially-curved"}, {"rows", rows}});
+    print_json({{"table", "5.2"},
+                {"segment", "initially-curved"},
+                {"n_min", args.n_min},
+                {"n_max", args.n_max},
+                {"n_steps", args.n_steps},
+                {"rows", rows}});
   } else {
-    fmt::print("gamma and K_theta are the book's (not re-derived); Theta_i in rad.\n");
+    fmt::print(
+        "Per n: gamma maximises Theta_max(gamma) - Theta_i (0.5 % of the deflection from the "
+        "unloaded arc); averaged gamma -> rho, Theta_i (deg, eqs. 5.115-5.118); K_theta fitted per "
+        "n at the averaged gamma over the straight-beam Theta_max(K_theta) scaled by "
+        "(phi - Theta_i)/phi, then averaged. n ok: load ratios in the gamma average; ThMin: "
+        "smallest per-n Theta_max(gamma) - Theta_i, deg. Rows "
+        "kappa0 >= 1.5 are not reproduced (docs/prbm.md).\n");
   }
 }
 
@@ -257,6 +329,11 @@ void table_end_moment(const PrbmArgs& args) {
              d.K_theta,
              d.K_theta - book.K_theta);
   fmt::print("  Theta_max(gamma) = {:.3f} deg\n", d.theta_max_gamma / kDeg);
+  // mu = theta0 on the circle, so K = c_theta EI/l (eq. 5.112) makes c_theta = gamma K_theta an
+  // identity: one fitted slope, in the book and here (docs/prbm.md).
+  fmt::print("  gamma*K_theta: book {:.5f}, derived {:.5f} (= c_theta, eq. 5.112)\n",
+             book.gamma * book.K_theta,
+             d.gamma * d.K_theta);
 }
 
 void run_table(const PrbmArgs& args) {
@@ -495,8 +572,11 @@ void register_prbm_command(CLI::App& app) {
 
   auto derive_args = std::make_shared<PrbmArgs>();
   CLI::App* derive = prbm.add_subcommand("derive", "Derive gamma, c_theta, K_theta, Theta_max");
-  derive->add_option("--segment", derive_args->segment, "fixed-pinned or end-moment")
+  derive
+      ->add_option("--segment", derive_args->segment, "fixed-pinned, end-moment, initially-curved")
       ->default_str("fixed-pinned");
+  derive->add_option("--kappa0", derive_args->kappa0, "l/R_i (initially-curved, 0..3)")
+      ->default_str("0");
   derive->add_option("--n", derive_args->load_ratio_n, "Load ratio n (-20..20), n > 0 compressive")
       ->default_str("0");
   derive->add_option("--step", derive_args->step_deg, "theta0 sampling step, deg")
@@ -522,6 +602,12 @@ void register_prbm_command(CLI::App& app) {
       ->default_str("0.1");
   table->add_option("--tail", table_args->tail, "Extra samples approaching phi (0-60)")
       ->default_str("0");
+  table->add_option("--n-min", table_args->n_min, "Table 5.2: lowest load ratio averaged")
+      ->default_str("-0.5");
+  table->add_option("--n-max", table_args->n_max, "Table 5.2: highest load ratio averaged")
+      ->default_str("1");
+  table->add_option("--n-steps", table_args->n_steps, "Table 5.2: intervals of the average (1-200)")
+      ->default_str("6");
   table->add_flag("--json", table_args->json, "Print one JSON object");
   table->callback([table_args] { run_table(*table_args); });
 

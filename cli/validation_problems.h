@@ -37,6 +37,10 @@ struct ValidationMethod {
   std::string name;
   std::function<bool(const ReferenceProblem&)> applies;  // false: the method skips the problem
   std::function<BeamSolution(const BeamProblem&)> solve;
+  // The method's own stated accuracy (relative); a check passes within the larger of this and
+  // the reference's rounding tolerance. 0 for exact methods.
+  double accuracy = 0.0;
+  std::string accuracy_source;  // where that accuracy is established
 };
 
 // Every method available in this build.
