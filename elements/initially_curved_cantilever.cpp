@@ -6,6 +6,7 @@
 #include <numbers>
 #include <utility>
 
+#include "elements/prbm_derivation.h"
 #include "elements/prbm_tables.h"
 #include "solver/common/errors.h"
 
@@ -30,6 +31,23 @@ CurvedCantileverConstants CurvedCantileverConstants::from_table(double kappa0) {
     break;
   }
   c.source = fmt::format("Table 5.2 at kappa0 = {}", kappa0);
+  return c;
+}
+
+CurvedCantileverConstants CurvedCantileverConstants::from_derivation(double kappa0,
+                                                                     double n_min,
+                                                                     double n_max) {
+  const CurvedCantileverAverage a = derive_initially_curved_average(kappa0, n_min, n_max);
+  if (!a.converged) {
+    throw NoConvergence("curved-cantilever constants could not be derived: " + a.message);
+  }
+  CurvedCantileverConstants c;
+  c.kappa0 = kappa0;
+  c.gamma = a.gamma;
+  c.K_theta = a.K_theta;
+  c.c_theta = a.c_theta;
+  c.source =
+      fmt::format("derived at kappa0 = {}, averaged over {} <= n <= {}", kappa0, n_min, n_max);
   return c;
 }
 

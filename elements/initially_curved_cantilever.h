@@ -23,6 +23,12 @@ struct CurvedCantileverConstants {
 
   // Table 5.2's gamma and K_theta interpolated linearly in kappa0 (exact at its rows).
   static CurvedCantileverConstants from_table(double kappa0);
+  // gamma, K_theta and c_theta re-derived from the exact curved-beam path and averaged over
+  // n_min <= n <= n_max (derive_initially_curved_average, docs/prbm.md); 0 <= kappa0 <= 3. Throws
+  // NoConvergence when no load ratio in the range gives a derivation.
+  static CurvedCantileverConstants from_derivation(double kappa0,
+                                                   double n_min = -0.5,
+                                                   double n_max = 1.0);
 };
 
 class InitiallyCurvedCantilever : public PrbmElement {

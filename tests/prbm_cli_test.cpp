@@ -1,11 +1,13 @@
 // What is checked against what: the `flexure prbm` subcommands run as a user would run them.
 //  * `derive --json` prints one JSON object with the documented keys, and its gamma/c_theta/K_theta
 //    agree with Table 5.1 (n = 1) within the acceptance tolerances;
-//  * `table` prints every Table 5.1 row (17 data lines) and the end-moment and Table 5.2 tables;
+//  * `table` prints every Table 5.1 row (17 data lines) and the end-moment table; Table 5.2 is
+//    re-derived with the book's value beside it (kappa0 = 0.1 row: gamma 0.84 to 2 decimals);
 //  * `compare --json` reports the exact tip of the digest's oracle (n = 0, alpha2 = 2.046504 gives
 //    b/l = 0.5) and a path error below 0.5 % inside the validity range;
 //  * `compare --range` gives one row per load and flags the point beyond Theta_max(gamma), with the
 //    exact Theta of the digest's n = 0 oracle;
+//  * `derive --segment initially-curved --kappa0 0` gives Table 5.1's n = 0 row;
 //  * invalid input exits with code 2 and one line on stderr.
 #include <gtest/gtest.h>
 
@@ -41,9 +43,28 @@ TEST(PrbmCli, TablesPrintEveryRow) {
   const auto em = run_flexure("prbm table --segment end-moment --json");
   ASSERT_EQ(em.exit_code, 0) << em.err;
   EXPECT_NEAR(nlohmann::json::parse(em.out)["gamma"].get<double>(), 0.7346, 0.5e-4);
-  const auto ic = run_flexure("prbm table --segment initially-curved --json");
+  // Table 5.2 re-derived (coarse 0.5 deg samples for speed): every row, book and derived side by
+  // side; kappa0 = 0.1 gives the book's gamma = 0.84 to its printed 2 decimals.
+  const auto ic = run_flexure("prbm table --segment initially-curved --step 0.5 --json");
   ASSERT_EQ(ic.exit_code, 0) << ic.err;
-  EXPECT_EQ(nlohmann::json::parse(ic.out)["rows"].size(), 7u);
+  const auto rows = nlohmann::json::parse(ic.out)["rows"];
+  ASSERT_EQ(rows.size(), 7u);
+  EXPECT_DOUBLE_EQ(rows[1]["book"]["gamma"].get<double>(), 0.84);
+  EXPECT_NEAR(rows[1]["gamma"].get<double>(), 0.84, 0.005);
+  EXPECT_EQ(rows[1]["per_n"].size(), 7u);
+}
+
+TEST(PrbmCli, DeriveInitiallyCurvedAtZeroCurvatureGivesTheStraightBeam) {
+  // kappa0 = 0 is the straight beam: Table 5.1's n = 0 row (gamma 0.8517, Theta_max 64.3 deg)
+  // within the acceptance tolerances.
+  const auto r =
+      run_flexure("prbm derive --segment initially-curved --kappa0 0 --n 0 --step 0.25 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["gamma"].get<double>(), 0.8517, 0.001);
+  EXPECT_NEAR(j["theta_max_gamma_deg"].get<double>(), 64.3, 1.0);
+  EXPECT_DOUBLE_EQ(j["theta_i_deg"].get<double>(), 0.0);
+  EXPECT_EQ(run_flexure("prbm derive --segment initially-curved --kappa0 5").exit_code, 2);
 }
 
 TEST(PrbmCli, CompareReportsExactTipAndValidity) {
