@@ -16,8 +16,10 @@
 #include <functional>
 #include <string>
 
+#include "mechanisms/cfm/cfm_comparison.h"
 #include "mechanisms/cfm/cfm_model.h"
 #include "mechanisms/cfm/cfm_subclasses.h"
+#include "tests/cfm_test_support.h"
 
 namespace flexure::cfm {
 namespace {
@@ -25,7 +27,6 @@ namespace {
 constexpr double kHowellTolerance = 1e-4;    // acceptance for 1A, 2A, 3A
 constexpr double kClass1BTolerance = 2e-3;   // sampling sensitivity of class 1B
 constexpr double kPrintedHalfUnit = 0.5e-4;  // Table 2.1 prints 4 decimals
-constexpr double kHalfUnitInput = 0.5e-4;    // R, K1, K2 printed with 4 decimals
 constexpr double kRepresentation = 1e-12;
 // Howell 2B printed Xi/Phi vs the K2 ~ 1 model: "approximately" (no single K2 gives 4 digits,
 // thesis digest §1.6); 50 points give 8e-4/5e-4 (a) and 9e-4/5e-4 (b).
@@ -38,45 +39,18 @@ CfmModel fifty_points() {
   return CfmModel(options);
 }
 
-CfmParameters inputs(const CfmClassRow& row) {
-  const CfmConfiguration& c = find_cfm_configuration(row.config);
-  CfmParameters p;
-  p.config = row.config;
-  p.R = row.R;
-  if (c.has_spring(2) && !c.is_class_1B()) p.K1 = row.K1;
-  if (c.has_spring(3)) p.K2 = row.K2;
-  p.stroke_percent = row.stroke_percent;
-  return p;
-}
-
-double input_band(const CfmParameters& p, const std::function<double(const CfmResult&)>& q) {
-  const CfmModel model = fifty_points();
-  const double q0 = q(model.evaluate(p));
-  double band = 0.0;
-  for (int variable = 0; variable < 3; ++variable) {
-    if ((variable == 1 && !p.K1) || (variable == 2 && !p.K2)) continue;
-    double worst = 0.0;
-    for (double sign : {-1.0, 1.0}) {
-      CfmParameters v = p;
-      const double h = sign * kHalfUnitInput;
-      if (variable == 0) v.R += h;
-      if (variable == 1) v.K1 = *v.K1 + h;
-      if (variable == 2) v.K2 = *v.K2 + h;
-      worst = std::max(worst, std::abs(q(model.evaluate(v)) - q0));
-    }
-    band += worst;
-  }
-  return band;
-}
-
 void expect_row(const CfmClassRow& row, double tolerance) {
-  const CfmParameters p = inputs(row);
+  const CfmParameters p = parameters_of(row);
   const CfmResult r = fifty_points().evaluate(p);
   ASSERT_TRUE(r.converged) << row.name;
   const auto xi = [](const CfmResult& x) { return x.Xi; };
   const auto phi = [](const CfmResult& x) { return x.Phi; };
-  EXPECT_NEAR(r.Xi, row.Xi, tolerance + input_band(p, xi) + kRepresentation) << row.name;
-  EXPECT_NEAR(r.Phi, row.Phi, tolerance + input_band(p, phi) + kRepresentation) << row.name;
+  EXPECT_NEAR(
+      r.Xi, row.Xi, tolerance + testing::input_band(fifty_points(), p, xi) + kRepresentation)
+      << row.name;
+  EXPECT_NEAR(
+      r.Phi, row.Phi, tolerance + testing::input_band(fifty_points(), p, phi) + kRepresentation)
+      << row.name;
 }
 
 TEST(CfmHowellTable10_1, Classes1A2A3AWithinOneInTenThousand) {
@@ -97,10 +71,10 @@ TEST(CfmHowellTable10_1, Class2BPrintedValuesBelongToK2NearOneNotToPrintedK2) {
   for (const CfmClassRow& row : howell_table_10_1()) {
     if (std::string(row.class_name) != "2B") continue;
     EXPECT_FALSE(row.reproducible);
-    const CfmResult printed_inputs = model.evaluate(inputs(row));
+    const CfmResult printed_inputs = model.evaluate(parameters_of(row));
     EXPECT_GT(std::abs(printed_inputs.Phi - row.Phi), 0.5) << row.name;  // 0.523 vs 1.2259
     // The Ch. 7 originals (lps/sps-a: K2 = 1.0029; sps-b: 1.0235) land within 1e-3 of the book.
-    CfmParameters p = inputs(row);
+    CfmParameters p = parameters_of(row);
     p.K2 = row.stroke_percent == 16.0 ? 1.0029 : 1.0235;
     const CfmResult near_one = model.evaluate(p);
     EXPECT_NEAR(near_one.Phi, row.Phi, kBook2BNearOne) << row.name;
@@ -118,7 +92,7 @@ TEST(CfmThesisTable2_1, EveryRowIncluding2BWithPrintedK2) {
 TEST(CfmThesisTable2_1, Class2AbRowReproducesOnlyAtTheToggleClampedStroke) {
   const CfmClassRow* row = find_class_row("table2.1-2A-b");
   ASSERT_NE(row, nullptr);
-  const CfmResult r = fifty_points().evaluate(inputs(*row));
+  const CfmResult r = fifty_points().evaluate(parameters_of(*row));
   EXPECT_TRUE(r.stroke_clamped);
   EXPECT_NEAR(r.stroke_percent, 37.04, 0.005);  // thesis digest §0.3
 }

@@ -17,50 +17,19 @@
 #include <set>
 #include <string>
 
+#include "mechanisms/cfm/cfm_comparison.h"
 #include "mechanisms/cfm/cfm_model.h"
 #include "mechanisms/cfm/cfm_subclasses.h"
 #include "solver/common/errors.h"
+#include "tests/cfm_test_support.h"
 
 namespace flexure::cfm {
 namespace {
 
-constexpr double kHalfUnitInput = 0.5e-4;  // R, K1, K2 printed with 4 decimals
 // Decimal data are not exact binary numbers; a few ulps of slack on every comparison.
 constexpr double kRepresentation = 1e-12;
 
 double half_unit(int decimals) { return 0.5 * std::pow(10.0, -decimals); }
-
-CfmParameters inputs(const CfmSubclass& row) {
-  const CfmConfiguration& c = find_cfm_configuration(row.config);
-  CfmParameters p;
-  p.config = row.config;
-  p.R = row.R;
-  if (c.has_spring(2) && !c.is_class_1B()) p.K1 = row.K1;
-  if (c.has_spring(3)) p.K2 = row.K2;
-  p.stroke_percent = row.stroke_percent;
-  return p;
-}
-
-// Sum over the free design variables of the largest change of `q` under a +-half-unit change.
-double input_band(const CfmParameters& p, const std::function<double(const CfmResult&)>& q) {
-  const CfmModel model;
-  const double q0 = q(model.evaluate(p));
-  double band = 0.0;
-  for (int variable = 0; variable < 3; ++variable) {
-    if ((variable == 1 && !p.K1) || (variable == 2 && !p.K2)) continue;
-    double worst = 0.0;
-    for (double sign : {-1.0, 1.0}) {
-      CfmParameters v = p;
-      const double h = sign * kHalfUnitInput;
-      if (variable == 0) v.R += h;
-      if (variable == 1) v.K1 = *v.K1 + h;
-      if (variable == 2) v.K2 = std::max(0.0, *v.K2 + h);
-      worst = std::max(worst, std::abs(q(model.evaluate(v)) - q0));
-    }
-    band += worst;
-  }
-  return band;
-}
 
 void expect_printed(const CfmSubclass& row,
                     const CfmResult& result,
@@ -68,7 +37,8 @@ void expect_printed(const CfmSubclass& row,
                     double printed,
                     int decimals,
                     const std::function<double(const CfmResult&)>& q) {
-  const double tolerance = half_unit(decimals) + input_band(inputs(row), q) + kRepresentation;
+  const double tolerance = half_unit(decimals) +
+                           testing::input_band(CfmModel(), parameters_of(row), q) + kRepresentation;
   EXPECT_NEAR(q(result), printed, tolerance) << row.name << ": " << what;
 }
 
@@ -87,7 +57,7 @@ TEST(CfmThesisTables, HasTheSixtyEightSubclassesWithUniqueNames) {
 TEST(CfmThesisTables, EveryRowReproducesPhiXiBetaLambdaWithinPrintedRounding) {
   const CfmModel model;  // the thesis code's stroke sampling
   for (const CfmSubclass& row : thesis_subclasses()) {
-    const CfmResult r = model.evaluate(inputs(row));
+    const CfmResult r = model.evaluate(parameters_of(row));
     ASSERT_TRUE(r.converged) << row.name << ": " << r.message;
     expect_printed(
         row, r, "Phi", row.Phi, kPrintedDecimalsPhi, [](const CfmResult& x) { return x.Phi; });
@@ -106,7 +76,7 @@ TEST(CfmThesisTables, EveryRowReproducesPhiXiBetaLambdaWithinPrintedRounding) {
 TEST(CfmThesisTables, EveryRowReproducesPsiKappaAndNormalDisplacement) {
   const CfmModel model;
   for (const CfmSubclass& row : thesis_subclasses()) {
-    const CfmResult r = model.evaluate(inputs(row));
+    const CfmResult r = model.evaluate(parameters_of(row));
     ASSERT_TRUE(r.Psi.has_value()) << row.name;
     // Psi normalisers: 0.4518 at 16 % is the thesis code's `fgoal`; 0.1032 at 40 % was
     // back-computed in the digest from lpp-b's printed 1.002, so lpp-b itself is not independent.
@@ -133,7 +103,7 @@ TEST(CfmThesisTables, EveryRowReproducesPsiKappaAndNormalDisplacement) {
 TEST(CfmThesisTables, PrimaryPivotAgreesExceptTheExactMirrorTie) {
   const CfmModel model;
   for (const CfmSubclass& row : thesis_subclasses()) {
-    const CfmResult r = model.evaluate(inputs(row));
+    const CfmResult r = model.evaluate(parameters_of(row));
     if (std::string(row.name) == "sps-b86IO") {
       // R = 1 and K2 = 1: the mechanism is its own mirror image, pivots 1 and 3 carry exactly
       // the same stress and the thesis's Matlab chose pivot 3 by rounding noise (docs/cfm.md).
@@ -151,7 +121,7 @@ TEST(CfmThesisTables, ThicknessAndWidthRatiosOfTables7_7_7_10_7_13) {
   EXPECT_EQ(thesis_thickness_ratios().size(), 45u);
   for (const CfmThicknessRatios& printed : thesis_thickness_ratios()) {
     const CfmSubclass& row = find_thesis_subclass(printed.name);
-    const CfmResult r = model.evaluate(inputs(row));
+    const CfmResult r = model.evaluate(parameters_of(row));
     const std::array<std::optional<double>, 3> CfmResult::*fields[3] = {
         &CfmResult::C, &CfmResult::D_equal, &CfmResult::D_min};
     const std::array<std::optional<double>, 3>* printed_fields[3] = {
@@ -176,7 +146,7 @@ TEST(CfmThesisTables, ThicknessAndWidthRatiosOfTables7_7_7_10_7_13) {
 TEST(CfmThesisTables, ExactlyTheDaggerRowsAreClampedAtTheToggle) {
   const CfmModel model;
   for (const CfmSubclass& row : thesis_subclasses()) {
-    const CfmResult r = model.evaluate(inputs(row));
+    const CfmResult r = model.evaluate(parameters_of(row));
     EXPECT_EQ(r.stroke_clamped, row.toggle_clamped) << row.name;
     if (row.toggle_clamped) {
       EXPECT_LT(r.stroke_percent, row.stroke_percent) << row.name;

@@ -1,8 +1,9 @@
 #pragma once
 // Independent reference for the tests: the elastica initial-value problem integrated numerically
 // (classical RK4 with Richardson extrapolation), sharing no code with the closed-form solvers.
-//   x' = cos theta, y' = sin theta, theta' = m, m' = Fx sin theta - Fy cos theta
-// (moment balance of the segment [s, 1] under a dead tip force (Fx, Fy); l = 1, EI = 1).
+//   x' = cos theta, y' = sin theta, theta' = kappa0 + m, m' = Fx sin theta - Fy cos theta
+// (moment balance of the segment [s, 1] under a dead tip force (Fx, Fy); l = 1, EI = 1; kappa0 the
+// stress-free curvature of an initially curved beam, m the bending moment).
 #include <array>
 #include <cmath>
 
@@ -12,10 +13,12 @@ struct ElasticaState {
   double x = 0.0, y = 0.0, theta = 0.0, m = 0.0;
 };
 
-inline ElasticaState integrate_elastica(double Fx, double Fy, double root_moment, int steps) {
+inline ElasticaState integrate_elastica(
+    double Fx, double Fy, double root_moment, int steps, double kappa0 = 0.0) {
   using V = std::array<double, 4>;
   auto rhs = [&](const V& v) {
-    return V{std::cos(v[2]), std::sin(v[2]), v[3], Fx * std::sin(v[2]) - Fy * std::cos(v[2])};
+    return V{
+        std::cos(v[2]), std::sin(v[2]), kappa0 + v[3], Fx * std::sin(v[2]) - Fy * std::cos(v[2])};
   };
   V v{0.0, 0.0, 0.0, root_moment};
   const double h = 1.0 / steps;

@@ -25,6 +25,7 @@
 #include "elements/prbm_tables.h"
 #include "solver/common/errors.h"
 #include "solver/elliptic/elliptic_solver.h"
+#include "tests/elastica_reference.h"
 
 namespace flexure {
 namespace {
@@ -45,33 +46,6 @@ constexpr double kGammaRowTolerance = 0.005;
 constexpr double kRhoRowTolerance = 0.005;  // rho follows gamma (eq. 5.116), so gamma's rounding
 // K_theta: the book's rounding plus the Table 5.1 method tolerance of issue 4 (0.01).
 constexpr double kKThetaRowTolerance = 0.015;
-
-// RK4 of the initially curved beam: x' = cos theta, y' = sin theta, theta' = kappa0 + m (m = M l/EI
-// of the tip force alone), m' = Fx sin theta - Fy cos theta (moment balance of [s, 1]).
-struct CurvedState {
-  double x = 0.0, y = 0.0, theta = 0.0, m = 0.0;
-};
-CurvedState integrate_curved_beam(double kappa0, double Fx, double Fy, double m0, int steps) {
-  using V = std::array<double, 4>;
-  const auto rhs = [&](const V& v) {
-    return V{
-        std::cos(v[2]), std::sin(v[2]), kappa0 + v[3], Fx * std::sin(v[2]) - Fy * std::cos(v[2])};
-  };
-  V v{0.0, 0.0, 0.0, m0};
-  const double h = 1.0 / steps;
-  for (int i = 0; i < steps; ++i) {
-    const V k1 = rhs(v);
-    V t;
-    for (int j = 0; j < 4; ++j) t[j] = v[j] + 0.5 * h * k1[j];
-    const V k2 = rhs(t);
-    for (int j = 0; j < 4; ++j) t[j] = v[j] + 0.5 * h * k2[j];
-    const V k3 = rhs(t);
-    for (int j = 0; j < 4; ++j) t[j] = v[j] + h * k3[j];
-    const V k4 = rhs(t);
-    for (int j = 0; j < 4; ++j) v[j] += h / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j]);
-  }
-  return {v[0], v[1], v[2], v[3]};
-}
 
 PrbmDerivationOptions fast_options() {
   PrbmDerivationOptions o;
@@ -97,8 +71,9 @@ TEST(CurvedCantileverDerivation, ExactTipMatchesDirectIntegrationOfTheCurvedBeam
       const EllipticResult r = solver.solve(EndLoad::howell(n, alpha2, kappa0));
       ASSERT_TRUE(r.converged) << r.message;
       // The solver's root curvature is kappa0 + the bending moment of the force at the clamp.
-      const CurvedState c =
-          integrate_curved_beam(kappa0, -n * alpha2, alpha2, r.root_moment - kappa0, 4000);
+      // RK4 of the curved beam itself: theta' = kappa0 + m (tests/elastica_reference.h).
+      const flexure::testing::ElasticaState c = flexure::testing::integrate_elastica(
+          -n * alpha2, alpha2, r.root_moment - kappa0, 4000, kappa0);
       EXPECT_NEAR(c.x, r.tip.a_over_l, kRk4Tolerance) << kappa0 << " " << n;
       EXPECT_NEAR(c.y, r.tip.b_over_l, kRk4Tolerance) << kappa0 << " " << n;
       EXPECT_NEAR(c.theta, r.tip.theta0, kRk4Tolerance) << kappa0 << " " << n;
