@@ -386,6 +386,11 @@ TEST(EllipticSolver, RejectsBadInput) {
   EXPECT_THROW(solver.solve(EndLoad{0.0, INFINITY, 0.0}), InvalidInput);
   EXPECT_THROW(solver.solve(EndLoad{0.0, 1.0, -INFINITY}), InvalidInput);
   EXPECT_THROW(solver.solve(EndLoad{0.0, 1e7, 0.0}), InvalidInput);
+  EXPECT_THROW(solver.solve(EndLoad{0.0, 1e5, 0.0}), InvalidInput);  // k'^2 would underflow
+  // The largest accepted force still solves (1 - k ~ e^{-2 sqrt F}, about 1e-87 here).
+  const EllipticResult edge = solver.solve(EndLoad{0.0, 1e4, 0.0});
+  EXPECT_TRUE(edge.converged) << edge.message;
+  EXPECT_NEAR(edge.root_moment, 1e4 * edge.tip.a_over_l, 1e-8 * 1e4);  // statics
   // theta0 must lie below the force angle: pi/2 for n = 0, atan2(1, -1) = 45 deg for n = -1.
   EXPECT_THROW(solver.solve_for_tip_angle(0.0, 2.0), InvalidInput);
   EXPECT_THROW(solver.solve_for_tip_angle(-1.0, 0.8), InvalidInput);

@@ -16,7 +16,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 // Loads beyond this (in units of EI/l^2) put the separatrix closer than double precision can
 // resolve (k' ~ e^{-sqrt F}); no physical cantilever is loaded that far.
-constexpr double kMaxForce = 1e5;
+constexpr double kMaxForce = 1e4;
 constexpr double kMaxMoment = 1e4;
 // Below this force the closed form would divide by numbers near underflow; linear theory is
 // exact to round-off there.
