@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
   flexure::cli::register_prbm_command(app);
   flexure::cli::register_cfm_command(app);
   flexure::cli::register_path_command(app);
+  flexure::cli::register_dynamics_command(app);
 
   return flexure::cli::run_app(app, argc, argv);
 }

@@ -1,0 +1,268 @@
+// `flexure dynamics`: frequency sweep of the inverse dynamics of a modified constant-force slider
+// mechanism (Ugwuoke & Abolarin, seed 004; docs/dynamics.md).
+//
+//   flexure dynamics --mechanism NAME --omega START:STOP:COUNT --out FILE.h5
+//                    [--stroke-percent 40] [--preload-percent 1] [--samples 1024]
+//                    [--friction C1,C2,C3] [--axial-alpha RAD]
+//                    [--zero-slider-mass | --zero-inertia] [--history W1,W2,...] [--json]
+//   flexure dynamics --list [--json]
+//
+// Per frequency: mean, median, min, max and peak-to-peak input force of the whole symmetric
+// mechanism (N) over one period of Delta x(t) = preload + stroke (1 - cos omega t)/2, and the
+// percent constant force 100 min/max. The HDF5 file also holds the force history at the --history
+// frequencies (default: the paper's Figs. 11-13, 10.472, 31.416 and 62.832 rad/s).
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cli/cli_common.h"
+#include "cli/commands.h"
+#include "flexure/version.h"
+#include "io/hdf5_file.h"
+#include "mechanisms/dynamics/cfsm_designs.h"
+#include "mechanisms/dynamics/forward_dynamics.h"
+#include "mechanisms/dynamics/inverse_dynamics.h"
+#include "solver/common/errors.h"
+
+namespace flexure::cli {
+namespace {
+
+using dynamics::CfsmDesign;
+using dynamics::DynamicsParameters;
+using dynamics::ForceSample;
+using dynamics::ForceStatistics;
+using dynamics::InverseDynamics;
+using dynamics::SinusoidalMotion;
+using dynamics::SliderCrankDynamics;
+
+struct DynamicsArgs {
+  std::string mechanism;
+  std::string omega;
+  std::string out;
+  double stroke_percent = 40.0;
+  double preload_percent = 1.0;
+  int samples = 1024;
+  std::vector<double> friction;
+  double axial_alpha = 0.0;
+  bool zero_slider_mass = false;
+  bool zero_inertia = false;
+  std::vector<double> history{10.472, 31.416, 62.832};
+  bool list = false;
+  bool json = false;
+};
+
+void run_list(const DynamicsArgs& args) {
+  Json names = Json::array();
+  for (const CfsmDesign& d : dynamics::cfsm_designs()) names.push_back(d.name);
+  if (args.json) {
+    print_json(Json{{"mechanisms", names}});
+  } else {
+    for (const CfsmDesign& d : dynamics::cfsm_designs()) {
+      fmt::print("{:8}  r2 {:.4f} mm  r3 {:.4f} mm  k {:.4f} {:.4f} {:.4f} N m  m_S {:.4f} g\n",
+                 d.name,
+                 d.r2 * 1e3,
+                 d.r3 * 1e3,
+                 d.k[0],
+                 d.k[1],
+                 d.k[2],
+                 d.m_slider * 1e3);
+    }
+  }
+}
+
+void run_dynamics(const DynamicsArgs& args) {
+  if (args.list) {
+    run_list(args);
+    return;
+  }
+  if (args.mechanism.empty()) throw InvalidInput("--mechanism is required (see --list)");
+  if (args.omega.empty()) throw InvalidInput("--omega START:STOP:COUNT is required");
+  if (args.out.empty()) throw InvalidInput("--out FILE.h5 is required");
+  const CfsmDesign& d = dynamics::find_cfsm_design(args.mechanism);
+  const Range range = parse_range(args.omega, "--omega (rad/s)", 1'000'000);
+  require_in_range(range.start, "--omega START (rad/s)", 0.0, 1e6);
+  require_in_range(range.stop, "--omega STOP (rad/s)", 0.0, 1e6);
+  require_in_range(args.stroke_percent, "--stroke-percent", 1e-6, 100.0);
+  require_in_range(args.preload_percent, "--preload-percent", 1e-6, 100.0);
+  require_in_range(args.samples, "--samples (per period, even)", 8, 10'000'000);
+  require_in_range(args.axial_alpha, "--axial-alpha (rad)", -1.0, 1.0);
+  if (args.zero_slider_mass && args.zero_inertia) {
+    throw InvalidInput("--zero-slider-mass and --zero-inertia exclude each other");
+  }
+  if (!args.friction.empty() && args.friction.size() != 3) {
+    throw InvalidInput(
+        fmt::format("--friction needs three values C1,C2,C3 (N m), got {}", args.friction.size()));
+  }
+  for (double w : args.history) require_in_range(w, "--history (rad/s)", 0.0, 1e6);
+
+  DynamicsParameters p = dynamics::from_bar_links(d.r2, d.r3, d.m2, d.m3, d.m_slider, d.k);
+  if (args.zero_slider_mass) p.m_slider = 0.0;
+  if (args.zero_inertia) p.m2 = p.m3 = p.m_slider = p.J_C2 = p.J_C3 = 0.0;
+  for (std::size_t i = 0; i < args.friction.size(); ++i) {
+    require_in_range(args.friction[i], fmt::format("--friction C{} (N m)", i + 1), 0.0, 1e6);
+    p.coulomb[i] = args.friction[i];
+  }
+  p.axial_alpha = args.axial_alpha;
+  const SliderCrankDynamics model(p);
+  const InverseDynamics inverse(model, {.samples_per_period = args.samples});
+  const double r_tot = model.r_tot();
+  SinusoidalMotion motion{
+      args.preload_percent / 100.0 * r_tot, args.stroke_percent / 100.0 * r_tot, 0.0};
+  model.theta2_at(motion.preload + motion.stroke);  // throws (exit 2) past the toggle position
+
+  // Open the output first: an unwritable path fails before any work (exit 2).
+  std::unique_ptr<io::AtomicHdf5File> output;
+  try {
+    output = std::make_unique<io::AtomicHdf5File>(args.out);
+  } catch (const io::Hdf5Error& e) {
+    throw InvalidInput(fmt::format("--out {}: {}", args.out, e.what()));
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<double> omegas(range.count);
+  for (long i = 0; i < range.count; ++i) omegas[i] = range.at(i);
+  const std::vector<ForceStatistics> rows = inverse.sweep(motion, omegas);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::vector<double> mean, median, min, max, p2p, pcf;
+  for (const ForceStatistics& s : rows) {
+    mean.push_back(s.mean);
+    median.push_back(s.median);
+    min.push_back(s.min);
+    max.push_back(s.max);
+    p2p.push_back(s.peak_to_peak);
+    pcf.push_back(s.percent_constant_force);
+    require_finite_result(s.mean, fmt::format("mean force at omega = {}", s.omega));
+    require_finite_result(s.peak_to_peak, fmt::format("peak-to-peak force at omega = {}", s.omega));
+  }
+  const double F_nom = dynamics::static_nominal_force(model, motion.stroke);
+  const bool has_inertia = model.terms(0.0).M > 0.0;
+  const double omega_n = has_inertia ? dynamics::linearise(model, 0.0).omega_n : 0.0;
+
+  io::Hdf5Group& root = output->root();
+  root.write_dataset("omega", omegas);
+  root.write_dataset("mean_force", mean);
+  root.write_dataset("median_force", median);
+  root.write_dataset("min_force", min);
+  root.write_dataset("max_force", max);
+  root.write_dataset("peak_to_peak_force", p2p);
+  root.write_dataset("percent_constant_force", pcf);
+  root.set_attribute("mechanism", d.name);
+  root.set_attribute("stroke_m", motion.stroke);
+  root.set_attribute("preload_m", motion.preload);
+  root.set_attribute("samples_per_period", static_cast<std::int64_t>(args.samples));
+  root.set_attribute("zero_slider_mass", static_cast<std::int64_t>(args.zero_slider_mass));
+  root.set_attribute("zero_inertia", static_cast<std::int64_t>(args.zero_inertia));
+  root.set_attribute("friction_C1", p.coulomb[0]);
+  root.set_attribute("friction_C2", p.coulomb[1]);
+  root.set_attribute("friction_C3", p.coulomb[2]);
+  root.set_attribute("axial_alpha", p.axial_alpha);
+  root.set_attribute("static_nominal_force", F_nom);
+  root.set_attribute("paper_nominal_force", d.F_nom_paper);
+  root.set_attribute("natural_frequency", omega_n);
+  root.set_attribute("units", "omega rad/s, force N (whole symmetric mechanism), length m, t s");
+  root.set_attribute("tool", "flexure");
+  root.set_attribute("version", kVersion);
+  root.set_attribute("git_commit", kGitCommit);
+  io::Hdf5Group histories = root.create_group("history");
+  for (std::size_t i = 0; i < args.history.size(); ++i) {
+    motion.omega = args.history[i];
+    const std::vector<ForceSample> h = inverse.history(motion);
+    std::vector<double> t, x, theta2, force, static_force;
+    for (const ForceSample& s : h) {
+      t.push_back(s.t);
+      x.push_back(s.delta_x);
+      theta2.push_back(s.theta2);
+      force.push_back(s.force);
+      static_force.push_back(s.static_force);
+    }
+    io::Hdf5Group g = histories.create_group(fmt::format("{}", i));
+    g.set_attribute("omega", args.history[i]);
+    g.write_dataset("t", t);
+    g.write_dataset("delta_x", x);
+    g.write_dataset("theta2", theta2);
+    g.write_dataset("force", force);
+    g.write_dataset("static_force", static_force);
+  }
+  output->commit();
+
+  if (args.json) {
+    print_json(Json{{"mechanism", d.name},
+                    {"out", args.out},
+                    {"static_nominal_force", F_nom},
+                    {"paper_nominal_force", d.F_nom_paper},
+                    {"natural_frequency", omega_n},
+                    {"seconds", seconds},
+                    {"omega", omegas},
+                    {"mean_force", mean},
+                    {"median_force", median},
+                    {"peak_to_peak_force", p2p},
+                    {"percent_constant_force", pcf},
+                    {"min_force", min},
+                    {"max_force", max}});
+  } else {
+    fmt::print(
+        "{}: static nominal force {:.4f} N (paper {:.4f} N), natural frequency {:.4f} rad/s\n",
+        d.name,
+        F_nom,
+        d.F_nom_paper,
+        omega_n);
+    fmt::print("{:>12} {:>12} {:>12} {:>12} {:>8}\n",
+               "omega rad/s",
+               "mean N",
+               "median N",
+               "p-p N",
+               "PCF %");
+    for (const ForceStatistics& s : rows) {
+      fmt::print("{:12.4f} {:12.4f} {:12.4f} {:12.4f} {:8.3f}\n",
+                 s.omega,
+                 s.mean,
+                 s.median,
+                 s.peak_to_peak,
+                 s.percent_constant_force);
+    }
+    fmt::print("written to {}\n", args.out);
+  }
+}
+
+}  // namespace
+
+void register_dynamics_command(CLI::App& app) {
+  auto args = std::make_shared<DynamicsArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "dynamics", "Frequency sweep of a constant-force slider mechanism's input force (HDF5)");
+  cmd->add_option("--mechanism", args->mechanism, "Design of the paper's Table 5, e.g. 2B-lplm");
+  cmd->add_option("--omega", args->omega, "Drive frequencies START:STOP:COUNT, rad/s");
+  cmd->add_option("--out", args->out, "Output HDF5 file (written atomically)");
+  cmd->add_option(
+         "--stroke-percent", args->stroke_percent, "Peak-to-peak slider travel, % of r2 + r3")
+      ->default_str("40");
+  cmd->add_option("--preload-percent",
+                  args->preload_percent,
+                  "Slider pre-displacement at full expansion, % of r2 + r3 (> 0)")
+      ->default_str("1");
+  cmd->add_option("--samples", args->samples, "Time samples per period (even, >= 8)")
+      ->default_str("1024");
+  cmd->add_option("--friction",
+                  args->friction,
+                  "Coulomb pin friction C1,C2,C3 per half mechanism, N m (eq. 27)")
+      ->delimiter(',');
+  cmd->add_option("--axial-alpha",
+                  args->axial_alpha,
+                  "Angle of axial-force effect alpha of eq. 28, rad (0: off)")
+      ->default_str("0");
+  cmd->add_flag("--zero-slider-mass", args->zero_slider_mass, "Set the slider mass to zero");
+  cmd->add_flag("--zero-inertia", args->zero_inertia, "Set all masses and inertias to zero");
+  cmd->add_option("--history", args->history, "Frequencies (rad/s) whose force history is stored")
+      ->delimiter(',')
+      ->default_str("10.472,31.416,62.832");
+  cmd->add_flag("--list", args->list, "List the built-in mechanisms");
+  cmd->add_flag("--json", args->json, "Print one JSON object on stdout");
+  cmd->callback([args] { run_dynamics(*args); });
+}
+
+}  // namespace flexure::cli

@@ -1,0 +1,81 @@
+#!/usr/bin/python3
+"""Plot `flexure dynamics` sweeps: mean, median and peak-to-peak force against drive frequency
+(as the paper's Figs. 8-10 / 17-19), one curve per HDF5 file, plus the stored force histories of
+the first file (as Figs. 11-13).
+
+    /usr/bin/python3 scripts/plot_dynamics.py full.h5 no_slider.h5 no_inertia.h5 \
+        --labels "Table 5" "slider mass 0" "all inertias 0" --out dynamics.png
+
+Run with Debian's python3 (matplotlib and h5py from apt).
+"""
+import argparse
+import sys
+
+import h5py
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def read_sweep(path):
+    with h5py.File(path, "r") as f:
+        data = {key: f[key][()] for key in
+                ("omega", "mean_force", "median_force", "peak_to_peak_force",
+                 "percent_constant_force")}
+        data["mechanism"] = f.attrs["mechanism"]
+        if isinstance(data["mechanism"], bytes):
+            data["mechanism"] = data["mechanism"].decode()
+        data["history"] = []
+        if "history" in f:
+            for name in sorted(f["history"], key=int):
+                g = f["history"][name]
+                data["history"].append((float(g.attrs["omega"]), g["t"][()],
+                                        g["force"][()], g["static_force"][()]))
+    return data
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("files", nargs="+", help="HDF5 files written by `flexure dynamics`")
+    parser.add_argument("--labels", nargs="*", help="one label per file")
+    parser.add_argument("--out", default="dynamics.png", help="output image (png, pdf, svg)")
+    args = parser.parse_args(argv)
+    labels = args.labels or args.files
+    if len(labels) != len(args.files):
+        parser.error("--labels needs one label per file")
+    sweeps = [read_sweep(p) for p in args.files]
+
+    has_history = bool(sweeps[0]["history"])
+    fig, axes = plt.subplots(2 if has_history else 1, 3, figsize=(14, 8 if has_history else 4),
+                             squeeze=False)
+    quantities = (("mean_force", "mean force (N)"), ("median_force", "median force (N)"),
+                  ("peak_to_peak_force", "peak-to-peak force (N)"))
+    for ax, (key, ylabel) in zip(axes[0], quantities):
+        for sweep, label in zip(sweeps, labels):
+            ax.plot(sweep["omega"], sweep[key], label=label)
+        ax.set_xlabel("drive frequency omega (rad/s)")
+        ax.set_ylabel(ylabel)
+        ax.grid(True, alpha=0.3)
+    axes[0][0].legend()
+    axes[0][1].set_title(f"{sweeps[0]['mechanism']}: whole symmetric mechanism")
+    if has_history:
+        for ax, (omega, t, force, static_force) in zip(axes[1], sweeps[0]["history"][:3]):
+            period = t[-1] + t[1] if len(t) > 1 and t[1] > 0 else 1.0
+            phase = t / period if period > 0 else t
+            ax.plot(phase, force, label="dynamic model")
+            ax.plot(phase, static_force, "--", label="static PRBM")
+            ax.set_title(f"omega = {omega:g} rad/s")
+            ax.set_xlabel("t / period")
+            ax.set_ylabel("force (N)")
+            ax.grid(True, alpha=0.3)
+        axes[1][0].legend()
+    fig.tight_layout()
+    fig.savefig(args.out, dpi=120)
+    print(f"written {args.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
