@@ -22,6 +22,7 @@ struct BeamArgs {
   double theta0 = 0.0;
   double b_over_l = 0.0;
   std::string method = "auto";
+  double tol = 1e-6;  // --method auto: relative error allowed
   int shape_points = 0;
   bool json = false;
   CLI::Option* alpha2_option = nullptr;
@@ -52,6 +53,7 @@ BeamProblem make_problem(const BeamArgs& args) {
   require_finite_input(args.mu, "--mu (end moment M l/EI)");
   problem.load_ratio_n = args.load_ratio_n;
   problem.mu = args.mu;
+  problem.tolerance = args.tol;
   problem.boundary = end_condition_from_string(args.boundary);
   const PrescribedMask mask = prescribed_mask(problem.boundary);
   auto prescribe = [&](CLI::Option* option, double value, bool allowed, const char* name) {
@@ -156,6 +158,7 @@ void print_report(const BeamProblem& problem, const BeamSolution& solution) {
 Json to_json(const BeamProblem& problem, const BeamSolution& solution) {
   Json out;
   out["method"] = solution.method;
+  out["method_reason"] = solution.method_reason;
   if (problem.chain) {
     // Howell's parameters of the chain's tip load: alpha2 = Fy, n = -Fx/Fy, mu = M.
     const TipLoad& tip = problem.chain->tip_load;
@@ -246,6 +249,7 @@ void register_beam_command(CLI::App& app) {
       given->add_option("--b-over-l", args->b_over_l, "Tip deflection b/l (-1..1)");
   given->require_option(0, 1);
   add_method_option(*beam, args->method);
+  add_tolerance_option(*beam, args->tol);
   beam->add_option("--boundary",
                    args->boundary,
                    "Far end: free (loads given), guided (tip angle prescribed), pinned (tip x, y "

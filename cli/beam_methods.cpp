@@ -2,8 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <limits>
 
+#include "elements/fixed_pinned_segment.h"
+#include "io/bench/method_selector.h"
 #include "solver/chain/chain_algorithm_solver.h"
 #include "solver/common/errors.h"
 #include "solver/common/load_search.h"
@@ -51,6 +56,41 @@ BeamSolution solve_elliptic(const BeamProblem& problem) {
   if (result.converged && problem.shape_points > 0) {
     solution.shape = solver.shape(result, problem.shape_points);
   }
+  return solution;
+}
+
+// Howell's fixed-pinned PRBM (Table 5.1 constants for this n): a tip force, no moment.
+BeamSolution solve_prbm(const BeamProblem& problem) {
+  if (!problem.is_plain_cantilever() || problem.given != BeamProblem::Given::kAlpha2 ||
+      problem.mu != 0.0) {
+    throw InvalidInput(
+        "--method prbm (fixed-pinned segment) needs a free cantilever with --alpha2 and --mu 0; "
+        "use --method elliptic or shooting otherwise");
+  }
+  const FixedPinnedSegment element(FixedPinnedConstants::from_table(problem.load_ratio_n));
+  const EndLoad load = EndLoad::howell(problem.load_ratio_n, problem.value, 0.0);
+  const PrbEquilibrium eq = element.solve(load);
+  const ValidityLimits limits = element.limits();
+  BeamSolution solution;
+  solution.method = "prbm";
+  solution.converged = eq.converged;
+  solution.message = eq.message;
+  solution.iterations = eq.iterations;
+  solution.alpha2 = problem.value;
+  solution.tip = eq.tip;
+  solution.family = "prbm";
+  solution.tolerance = 1e-13;  // virtual-work residual of PrbmElement::solve
+  const bool inside =
+      std::fabs(eq.Theta) <= std::min(limits.theta_max_position, limits.theta_max_force);
+  solution.branch =
+      fmt::format("PRBM fixed-pinned segment ({}), Theta = {:.4f} rad, {} the validity limits",
+                  element.constants().source,
+                  eq.Theta,
+                  inside ? "inside" : "OUTSIDE");
+  // Moment at the clamp of the beam under the tip load (Howell eq. 5.21), mu = 0.
+  solution.root_moment = eq.tip.a_over_l * load.Fy - eq.tip.b_over_l * load.Fx;
+  solution.reactions = {-load.Fx, -load.Fy, -solution.root_moment};
+  solution.load_factor = eq.converged ? 1.0 : 0.0;
   return solution;
 }
 
@@ -230,8 +270,8 @@ void add_method_option(CLI::App& command, std::string& method) {
   command
       .add_option("--method",
                   method,
-                  "Solution method: auto (elliptic for a free cantilever, else shooting), "
-                  "elliptic, shooting, chain")
+                  "Solution method: auto (the cheapest within --tol: PRBM, elliptic or shooting), "
+                  "elliptic, shooting, chain, prbm")
       ->default_str("auto")
       ->check(CLI::IsMember(
           std::vector<std::string>(kBeamMethodNames.begin(), kBeamMethodNames.end())));
@@ -248,9 +288,40 @@ std::string other_methods_hint(const std::string& failed_method) {
   return "Try smaller loads or --method chain with more --increments.";
 }
 
+void add_tolerance_option(CLI::App& command, double& tolerance) {
+  command
+      .add_option(
+          "--tol", tolerance, "--method auto: relative tip error allowed (error / tip deflection)")
+      ->default_str("1e-6")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            char* end = nullptr;
+            const double value = std::strtod(text.c_str(), &end);
+            if (end == text.c_str() || *end != '\0' || !std::isfinite(value) || value <= 0.0) {
+              return "--tol must be a finite relative error > 0, e.g. 1e-6 (got " + text + ")";
+            }
+            return {};
+          },
+          "TOL > 0"));
+}
+
+MethodResolution resolve_beam_method_with_reason(const std::string& method,
+                                                 const BeamProblem& problem) {
+  if (method != "auto") return {method, fmt::format("requested with --method {}", method)};
+  bench::AutoMethodRequest request;
+  request.load_ratio_n = problem.load_ratio_n;
+  request.alpha2 = problem.given == BeamProblem::Given::kAlpha2
+                       ? problem.value
+                       : std::numeric_limits<double>::quiet_NaN();
+  request.mu = problem.mu;
+  request.plain_cantilever = problem.is_plain_cantilever();
+  request.tolerance = problem.tolerance;
+  const bench::AutoMethodChoice choice = bench::choose_beam_method(request);
+  return {choice.method, choice.reason};
+}
+
 std::string resolve_beam_method(const std::string& method, const BeamProblem& problem) {
-  if (method != "auto") return method;
-  return problem.is_plain_cantilever() ? "elliptic" : "shooting";
+  return resolve_beam_method_with_reason(method, problem).method;
 }
 
 std::string resolve_beam_method(const std::string& method) {
@@ -262,15 +333,25 @@ double beam_method_tolerance(const std::string& method) {
   if (used == "elliptic") return EllipticSolver::Options{}.tolerance;
   if (used == "shooting") return ShootingSolver::Options{}.rtol;
   if (used == "chain") return ChainAlgorithmSolver::Options{}.tolerance;
+  if (used == "prbm") return 1e-13;  // virtual-work residual of PrbmElement::solve
   throw InvalidInput(fmt::format("method '{}' is unknown", used));
 }
 
 BeamSolution solve_beam(const std::string& method, const BeamProblem& problem) {
-  const std::string used = resolve_beam_method(method, problem);
-  if (used == "elliptic") return solve_elliptic(problem);
-  if (used == "shooting" || used == "chain") return solve_numerical(used, problem);
-  throw InvalidInput(
-      fmt::format("--method '{}' is unknown (allowed: auto, elliptic, shooting, chain)", method));
+  const MethodResolution used = resolve_beam_method_with_reason(method, problem);
+  BeamSolution solution;
+  if (used.method == "elliptic") {
+    solution = solve_elliptic(problem);
+  } else if (used.method == "shooting" || used.method == "chain") {
+    solution = solve_numerical(used.method, problem);
+  } else if (used.method == "prbm") {
+    solution = solve_prbm(problem);
+  } else {
+    throw InvalidInput(fmt::format(
+        "--method '{}' is unknown (allowed: auto, elliptic, shooting, chain, prbm)", method));
+  }
+  solution.method_reason = used.reason;
+  return solution;
 }
 
 }  // namespace flexure::cli

@@ -16,8 +16,8 @@
 namespace flexure::cli {
 
 // Names accepted by --method (CLI11 rejects anything else with exit 2).
-inline constexpr std::array<const char*, 4> kBeamMethodNames = {
-    "auto", "elliptic", "shooting", "chain"};
+inline constexpr std::array<const char*, 5> kBeamMethodNames = {
+    "auto", "elliptic", "shooting", "chain", "prbm"};
 
 // What the user fixed: the load alpha2, the tip angle theta0 or the tip deflection b/l, with
 // Howell's load ratio n and end moment mu held fixed (Howell eqs. 2.67, 2.83).
@@ -36,6 +36,9 @@ struct BeamProblem {
   int increments = 10;         // chain algorithm: load increments
   std::string chain_variant = "corrected";  // chain algorithm: howell | corrected
   std::optional<SegmentChain> chain;        // from --chain FILE.toml (overrides the loads above)
+  // Issue 6: `--method auto` picks the cheapest method whose relative error is within this
+  // (io/bench/method_selector.h).
+  double tolerance = 1e-6;
 
   // The segment chain this problem describes (the TOML chain, or Howell's uniform cantilever with
   // Fx = -n alpha2, Fy = alpha2, M = mu, the follower force and the end condition).
@@ -54,7 +57,8 @@ struct Reactions {
 
 // A method-independent summary of one solve, with the keys `flexure beam --json` prints.
 struct BeamSolution {
-  std::string method;  // the method actually used ("elliptic" when "auto" was asked for)
+  std::string method;         // the method actually used (what "auto" resolved to)
+  std::string method_reason;  // why that method: the --method given, or auto's reasoning
   bool converged = false;
   std::string message;
   int iterations = 0;
@@ -74,13 +78,23 @@ struct BeamSolution {
 
 // Adds `--method` (default "auto", restricted to kBeamMethodNames) to a subcommand.
 void add_method_option(CLI::App& command, std::string& method);
+// Adds `--tol` (relative error allowed to `--method auto`, default 1e-6, > 0).
+void add_tolerance_option(CLI::App& command, double& tolerance);
 
 // A sentence for non-convergence messages: which other method may work.
 std::string other_methods_hint(const std::string& failed_method);
 
-// The method `auto` resolves to: elliptic for Howell's free cantilever (exact and fastest),
-// shooting (the reference for any chain and end condition) otherwise.
+// The method `auto` resolves to for this problem: the cheapest whose error is within
+// problem.tolerance (PRBM inside its validity limits and measured accuracy, else elliptic for
+// Howell's free cantilever, else shooting), with the reason (io/bench/method_selector.h).
+struct MethodResolution {
+  std::string method;
+  std::string reason;
+};
+MethodResolution resolve_beam_method_with_reason(const std::string& method,
+                                                 const BeamProblem& problem);
 std::string resolve_beam_method(const std::string& method, const BeamProblem& problem);
+// Without a problem (sweeps over alpha2): auto = elliptic.
 std::string resolve_beam_method(const std::string& method);
 
 // Solves `problem` with `method` (one of kBeamMethodNames). Throws InvalidInput for bad input or a

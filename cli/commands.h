@@ -11,5 +11,6 @@ void register_prbm_command(CLI::App& app);      // prbm_command.cpp
 void register_cfm_command(CLI::App& app);       // cfm_command.cpp
 void register_path_command(CLI::App& app);      // path_command.cpp
 void register_dynamics_command(CLI::App& app);  // dynamics_command.cpp
+void register_bench_command(CLI::App& app);     // bench_command.cpp
 
 }  // namespace flexure::cli

@@ -46,6 +46,7 @@ int main(int argc, char** argv) {
   flexure::cli::register_cfm_command(app);
   flexure::cli::register_path_command(app);
   flexure::cli::register_dynamics_command(app);
+  flexure::cli::register_bench_command(app);
 
   return flexure::cli::run_app(app, argc, argv);
 }

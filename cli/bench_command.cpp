@@ -1,0 +1,101 @@
+// `flexure bench`: the standard benchmark (accuracy against time of every method on every
+// problem), written to HDF5 (docs/hdf5-schema.md, docs/benchmarks.md).
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+#include "cli/cli_common.h"
+#include "cli/commands.h"
+#include "io/bench/bench_run.h"
+#include "io/hdf5_file.h"
+#include "solver/common/errors.h"
+
+namespace flexure::cli {
+namespace {
+
+struct BenchArgs {
+  bench::BenchOptions options;
+  bool json = false;
+};
+
+void run_bench(BenchArgs& args) {
+  bench::BenchOptions options = args.options;
+  // Fail fast (exit 2) on an unwritable path, before minutes of solving.
+  try {
+    io::AtomicHdf5File probe(options.out);
+  } catch (const io::Hdf5Error& e) {
+    throw InvalidInput(fmt::format("--out {}: {}", options.out, e.what()));
+  }
+  options.progress = [](const std::string& line) {
+    std::fprintf(stderr, "%s\n", line.c_str());
+    std::fflush(stderr);
+  };
+  const auto start = std::chrono::steady_clock::now();
+  const bench::BenchSummary summary = bench::run_benchmark(options);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  int points = 0;
+  int failed = 0;
+  for (const bench::MethodRun& run : summary.runs) {
+    for (int s : run.status) {
+      ++points;
+      failed += s == bench::kStatusNotConverged || s == bench::kStatusError ? 1 : 0;
+    }
+  }
+  const std::string written = summary.complete ? options.out : bench::checkpoint_path(options.out);
+  if (args.json) {
+    Json out;
+    out["file"] = written;
+    out["complete"] = summary.complete;
+    out["groups_computed"] = summary.groups_computed;
+    out["groups_reused"] = summary.groups_reused;
+    out["solves"] = points;
+    out["failed_solves"] = failed;
+    out["seconds"] = seconds;
+    print_json(out);
+  } else {
+    fmt::print("{} {}: {} groups computed, {} reused; {} loads solved, {} failed; {:.1f} s\n",
+               summary.complete ? "Wrote" : "Stopped early; checkpoint in",
+               written,
+               summary.groups_computed,
+               summary.groups_reused,
+               points,
+               failed,
+               seconds);
+  }
+}
+
+}  // namespace
+
+void register_bench_command(CLI::App& app) {
+  auto args = std::make_shared<BenchArgs>();
+  CLI::App* bench = app.add_subcommand(
+      "bench",
+      "Benchmark every method on the standard problems: error against the reference and median "
+      "time per solve, written to HDF5 (docs/benchmarks.md)");
+  bench->add_option("--out", args->options.out, "Results HDF5 file (written whole or not at all)")
+      ->required();
+  bench->add_flag("--quick", args->options.quick, "Small problem set (smoke test, < 1 minute)");
+  bench->add_option("--problems",
+                    args->options.problems,
+                    "Comma-separated problems: cantilever_force, tip_moment, force_and_moment, "
+                    "fixed_guided, post_buckled_column (default all)");
+  bench->add_option("--methods",
+                    args->options.methods,
+                    "Comma-separated methods or families: elliptic, shooting, chain, prbm, or "
+                    "names such as shooting_cvodes_rtol1e-09, chain_N050_inc05 (default all)");
+  bench->add_flag("--resume",
+                  args->options.resume,
+                  "Reuse the finished groups of FILE.partial (an interrupted run) or FILE");
+  bench
+      ->add_option("--stop-after",
+                   args->options.stop_after_groups,
+                   "Stop after computing this many groups, leaving FILE.partial (tests --resume)")
+      ->check(CLI::NonNegativeNumber);
+  bench->add_flag("--json", args->json, "Print one JSON summary object on stdout");
+  bench->callback([args] { run_bench(*args); });
+}
+
+}  // namespace flexure::cli

@@ -1,0 +1,113 @@
+#include "io/bench/bench_solve.h"
+
+#include <algorithm>
+#include <exception>
+
+#include "elements/end_moment_segment.h"
+#include "elements/fixed_guided_segment.h"
+#include "elements/fixed_pinned_segment.h"
+#include "solver/chain/chain_algorithm_solver.h"
+#include "solver/elliptic/elliptic_solver.h"
+#include "solver/shooting/shooting_solver.h"
+
+namespace flexure::bench {
+namespace {
+
+SegmentChain make_chain(const BenchProblem& problem, const LoadPoint& load) {
+  SegmentChain chain = uniform_cantilever(EndLoad::howell(load.load_ratio_n, load.alpha2, load.mu));
+  chain.end = problem.boundary;
+  return chain;
+}
+
+PointSolution solve_prbm(const BenchProblem& problem, const LoadPoint& load) {
+  PointSolution out;
+  const EndLoad end_load = EndLoad::howell(load.load_ratio_n, load.alpha2, load.mu);
+  PrbEquilibrium eq;
+  ValidityLimits limits;
+  if (problem.boundary == EndCondition::kGuided) {
+    const FixedGuidedSegment element;
+    eq = element.solve(end_load);
+    limits = element.limits();
+  } else if (load.alpha2 == 0.0) {
+    const EndMomentSegment element;
+    eq = element.solve(end_load);
+    limits = element.limits();
+  } else {
+    const FixedPinnedSegment element(FixedPinnedConstants::from_table(load.load_ratio_n));
+    eq = element.solve(end_load);
+    limits = element.limits();
+  }
+  out.status = eq.converged ? kStatusConverged : kStatusNotConverged;
+  out.tip = eq.tip;
+  out.iterations = eq.iterations;
+  out.message = eq.converged ? "" : eq.message;
+  // Howell eq. 5.47 (position) and eq. 5.63 (force): the constants are trusted below both.
+  out.inside_validity =
+      std::fabs(eq.Theta) <= std::min(limits.theta_max_position, limits.theta_max_force) ? 1 : 0;
+  return out;
+}
+
+}  // namespace
+
+BenchMethod reference_shooting_method() {
+  BenchMethod m;
+  m.name = "shooting_cvodes_rtol1e-12";
+  m.family = MethodFamily::kShooting;
+  m.backend = ElasticaIntegrator::Backend::kCvodes;
+  m.rtol = 1e-12;
+  return m;
+}
+
+PointSolution solve_point(const BenchMethod& method,
+                          const BenchProblem& problem,
+                          const LoadPoint& load) {
+  PointSolution out;
+  try {
+    switch (method.family) {
+      case MethodFamily::kElliptic: {
+        const EllipticResult r =
+            EllipticSolver().solve(EndLoad::howell(load.load_ratio_n, load.alpha2, load.mu));
+        out.status = r.converged ? kStatusConverged : kStatusNotConverged;
+        out.tip = r.tip;
+        out.iterations = r.iterations;
+        if (!r.converged) out.message = r.message;
+        break;
+      }
+      case MethodFamily::kShooting: {
+        ShootingSolver::Options options;
+        options.backend = method.backend;
+        options.rtol = method.rtol;
+        // atol two decades below rtol, as the reference (1e-12, 1e-14).
+        options.atol = method.rtol * 1e-2;
+        const ShootingResult r = solve_shooting(make_chain(problem, load), options);
+        out.status = r.converged ? kStatusConverged : kStatusNotConverged;
+        out.tip = r.tip_pose(1.0);
+        out.iterations = r.iterations;
+        if (!r.converged) out.message = r.message;
+        break;
+      }
+      case MethodFamily::kChain: {
+        ChainAlgorithmSolver::Options options;
+        options.elements = method.elements;
+        options.increments = method.increments;
+        options.record_load_path = false;
+        const ChainResult r = solve_chain(make_chain(problem, load), options);
+        out.status = r.converged ? kStatusConverged : kStatusNotConverged;
+        out.tip = r.tip_pose;
+        out.iterations = r.iterations;
+        if (!r.converged) out.message = r.message;
+        break;
+      }
+      case MethodFamily::kPrbm:
+        out = solve_prbm(problem, load);
+        break;
+    }
+  } catch (const std::exception& e) {
+    out = PointSolution{};
+    out.status = kStatusError;
+    out.message = e.what();
+  }
+  return out;
+}
+
+}  // namespace flexure::bench
