@@ -10,6 +10,7 @@ void register_validate_command(CLI::App& app);  // validate_command.cpp
 void register_prbm_command(CLI::App& app);      // prbm_command.cpp
 void register_cfm_command(CLI::App& app);       // cfm_command.cpp
 void register_path_command(CLI::App& app);      // path_command.cpp
+void register_mechanism_command(CLI::App& app);  // mechanism_command.cpp
 void register_dynamics_command(CLI::App& app);  // dynamics_command.cpp
 void register_bench_command(CLI::App& app);     // bench_command.cpp
 

@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
   flexure::cli::register_prbm_command(app);
   flexure::cli::register_cfm_command(app);
   flexure::cli::register_path_command(app);
+  flexure::cli::register_mechanism_command(app);
   flexure::cli::register_dynamics_command(app);
   flexure::cli::register_bench_command(app);
 

@@ -1,0 +1,47 @@
+// Speed of one 50-point stroke of a constant-force mechanism (issue 5 targets: PRBM < 50 us,
+// exact < 50 ms). Results: docs/mechanisms.md "Speed".
+#include <benchmark/benchmark.h>
+
+#include "mechanisms/mechanism.h"
+#include "mechanisms/mechanism_exact.h"
+#include "mechanisms/mechanism_prbm.h"
+#include "solver/common/gsl_guard.h"
+
+namespace {
+
+using namespace flexure::mechanism;
+
+void BM_PrbmStroke50(benchmark::State& state, const char* name) {
+  const MechanismDesign d = find_builtin_mechanism(name);
+  for (auto _ : state) {
+    PrbmStrokeResult r = prbm_stroke(d, 50);
+    benchmark::DoNotOptimize(r.mean_force);
+  }
+}
+BENCHMARK_CAPTURE(BM_PrbmStroke50, lpp, "1A-lpp");
+BENCHMARK_CAPTURE(BM_PrbmStroke50, sss, "3A-sss");
+
+// Exact stroke: shooting (Dormand-Prince backend) at 50 positions, each from the previous one.
+void BM_ExactStroke50(benchmark::State& state, const char* name) {
+  flexure::disable_gsl_abort();
+  const MechanismDesign d = find_builtin_mechanism(name);
+  const std::vector<double> dx = stroke_displacements(d, 50);
+  for (auto _ : state) {
+    ExactStrokeResult r = exact_stroke(d, dx);
+    if (!r.converged) state.SkipWithError(r.message.c_str());
+    benchmark::DoNotOptimize(r.points.back().force);
+  }
+}
+BENCHMARK_CAPTURE(BM_ExactStroke50, lpp, "1A-lpp")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactStroke50, spp, "1A-spp")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactStroke50, psp, "1B-psp")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactStroke50, plp, "1B-plp")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactStroke50, ssp, "2A-ssp")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactStroke50, slp, "2A-slp")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactStroke50, sps, "2B-sps")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactStroke50, lps, "2B-lps")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactStroke50, sss, "3A-sss")->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,232 @@
+#include "mechanisms/mechanism.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+#include "mechanisms/cfm/cfm_subclasses.h"
+#include "mechanisms/cfm/slider_crank.h"
+#include "mechanisms/mechanism_prbm.h"
+#include "solver/common/errors.h"
+
+namespace flexure::mechanism {
+namespace {
+
+constexpr double kGamma = 0.85;   // fixed-pinned characteristic radius factor (thesis §2.2)
+constexpr double kKtheta = 2.65;  // fixed-pinned stiffness coefficient (thesis §2.2)
+constexpr double kMu = 0.1;       // s flexure length / associated link (thesis Table 8.1)
+
+void require_positive(double value, const std::string& what) {
+  if (!std::isfinite(value) || value <= 0.0) {
+    throw InvalidInput(fmt::format("{} must be finite and > 0 (got {})", what, value));
+  }
+}
+
+const char* pivot_label(int pivot) {
+  return pivot == 1 ? "ground pivot 1" : pivot == 2 ? "middle pivot 2" : "slider pivot 3";
+}
+
+constexpr double kInch = 0.0254;      // m
+constexpr double kPsi = 6894.757293;  // Pa
+
+// Nine documented designs (docs/mechanisms.md "Built-in designs"): the design variables R, K1, K2
+// of the configuration's sub-class a (16 % stroke, thesis Tables 7.2-7.12), r_tot = r2 + r3 =
+// 100 mm, polypropylene (E = 1.4 GPa, S_y = 34.5 MPa, Howell Table A.1 order of magnitude), all
+// flexures 10 mm wide, the reference flexure (k1; k2 in class 1B) 0.4 mm thick, the others sized
+// at equal width so that k2/k1 = K1 and k3/k1 = K2; then all thicknesses scaled down together
+// (ratios kept) where needed for a PRBM safety factor of 1.5; stroke = the sub-class stroke (16 %
+// of r_tot, clamped at the toggle position as the thesis does).
+MechanismDesign subclass_design(const std::string& config) {
+  const cfm::CfmSubclass& row = cfm::find_thesis_subclass(config + "-a");
+  const cfm::CfmConfiguration& cfg = cfm::find_cfm_configuration(config);
+  MechanismDesign d;
+  d.config = config;
+  d.name = cfg.class_name + "-" + config;
+  d.note = fmt::format(
+      "sub-class {} (R = {}, K1 = {}, K2 = {}), r2 + r3 = 100 mm, polypropylene, b = 10 mm, "
+      "reference flexure h = 0.4 mm",
+      row.name,
+      row.R,
+      row.K1,
+      row.K2);
+  const double r_tot = 0.1;
+  d.r2 = r_tot / (row.R + 1.0);
+  d.r3 = r_tot - d.r2;
+  d.E = 1.4e9;
+  d.yield_strength = 34.5e6;
+  const double stroke_percent =
+      std::min(row.stroke_percent, 0.999 * cfm::toggle_stroke_percent(row.R));
+  d.stroke = stroke_percent / 100.0 * r_tot;
+  const double b = 0.01, h_ref = 0.4e-3;
+  for (int i = 0; i < 3; ++i) {
+    d.joints[i].type = cfg.pivots[i];
+    if (cfg.pivots[i] != PivotType::kPin) {
+      d.joints[i].width = b;
+      d.joints[i].thickness = h_ref;
+    }
+  }
+  d.finalise();
+  // Spring ratios: k_i/k_ref = K (thesis eqs. 2.11-2.12) at equal width -> h_i^3 scales with K.
+  const int ref = cfg.is_class_1B() ? 2 : 1;
+  const double k_ref = d.spring_constant(ref);
+  const double K[3] = {1.0, cfg.is_class_1B() ? 1.0 : row.K1, row.K2};
+  for (int p = 1; p <= 3; ++p) {
+    if (p == ref || !cfg.has_spring(p)) continue;
+    const double ratio = K[p - 1] / (d.spring_constant(p) / k_ref);
+    d.joints[p - 1].thickness *= std::cbrt(ratio);
+  }
+  d.finalise();
+  // Thin all flexures together (ratios kept) until the PRBM safety factor is 1.5: the bending
+  // stress at a given rotation grows like h (sigma = E h psi/(2 l)), so a few fixed-point steps.
+  for (int it = 0; it < 6; ++it) {
+    const double sf = prbm_stroke(d, 50).safety_factor;
+    if (sf >= 1.5 * (1.0 - 1e-3) && it > 0) break;
+    const double scale = std::min(1.0, sf / 1.5);
+    if (scale >= 1.0) break;
+    for (auto& j : d.joints) j.thickness *= scale;
+    d.finalise();
+  }
+  if (d.joints[ref - 1].thickness < h_ref) {
+    d.note += fmt::format(" thinned to {:.4g} mm for a PRBM safety factor of 1.5",
+                          d.joints[ref - 1].thickness * 1e3);
+  }
+  return d;
+}
+
+// Thesis design example 1 (digest §7.4, Tables 8.3/8.4): lpp-b, l_tot = 15 in, b = 5 in,
+// h = 0.04865 in, E = 30000 ksi, S_y = 167 ksi (the strength the example requires at SF 1.2),
+// stroke 4 in (the text's value; the tables' 7.5 in is an erratum, digest §13.12).
+MechanismDesign thesis_example_lpp() {
+  const cfm::CfmSubclass& row = cfm::find_thesis_subclass("lpp-b");
+  MechanismDesign d;
+  d.name = "1A-lpp";
+  d.config = "lpp";
+  d.note =
+      "thesis design example 1 (Weight 2001 §8.4, Table 8.4): lpp-b, l_tot = 15 in, b = 5 in, "
+      "h = 0.04865 in, E = 30000 ksi, Sy = 167 ksi, stroke 4 in; target F = 25 lbf";
+  const double l_tot = 15.0 * kInch;
+  // l_tot = r2/gamma + r3 (thesis Table 5.1 lambda for lpp).
+  d.r2 = l_tot / (1.0 / kGamma + row.R);
+  d.r3 = row.R * d.r2;
+  d.E = 30.0e6 * kPsi;
+  d.yield_strength = 167.0e3 * kPsi;
+  d.stroke = 4.0 * kInch;
+  d.joints[0] = JointDesign{PivotType::kLong, 0.0, 0.04865 * kInch, 5.0 * kInch};
+  d.finalise();
+  return d;
+}
+
+}  // namespace
+
+const cfm::CfmConfiguration& MechanismDesign::configuration() const {
+  return cfm::find_cfm_configuration(config);
+}
+
+double associated_link_length(const MechanismDesign& design, int pivot) {
+  const auto& cfg = design.configuration();
+  if (pivot == 1) return design.r2;
+  if (pivot == 3) return design.r3;
+  if (design.joints[1].type == PivotType::kLong) {
+    return cfg.middle_long_on_r2 ? design.r2 : design.r3;
+  }
+  return 0.5 * (design.r2 + design.r3);
+}
+
+double MechanismDesign::toggle_stroke() const {
+  return cfm::toggle_stroke_percent(R()) / 100.0 * (r2 + r3);
+}
+
+double MechanismDesign::spring_constant(int pivot) const {
+  const JointDesign& j = joints[pivot - 1];
+  const double EI = E * j.second_moment();
+  switch (j.type) {
+    case PivotType::kPin:
+      return 0.0;
+    case PivotType::kSmall:
+      return EI / j.length;  // Howell eq. 5.14
+    case PivotType::kLong:
+      return kGamma * kKtheta * EI / j.length;  // Howell eq. 5.72
+  }
+  return 0.0;
+}
+
+void MechanismDesign::finalise() {
+  const auto& cfg = cfm::find_cfm_configuration(config);  // throws for an unknown name
+  require_positive(r2, "r2 (PRBM crank length, m)");
+  require_positive(r3, "r3 (PRBM coupler length, m)");
+  require_positive(E, "E (Young's modulus, Pa)");
+  require_positive(yield_strength, "yield_strength (Pa)");
+  require_positive(stroke, "stroke (slider travel, m)");
+  for (int p = 1; p <= 3; ++p) {
+    JointDesign& j = joints[p - 1];
+    if (j.type != cfg.pivots[p - 1]) {
+      throw InvalidInput(fmt::format("{}: configuration '{}' needs a{} there",
+                                     pivot_label(p),
+                                     config,
+                                     cfg.pivots[p - 1] == PivotType::kPin     ? " pin (p)"
+                                     : cfg.pivots[p - 1] == PivotType::kSmall ? "n s pivot"
+                                                                              : "n l segment"));
+    }
+    if (j.type == PivotType::kPin) continue;
+    require_positive(j.thickness, fmt::format("{} thickness (m)", pivot_label(p)));
+    require_positive(j.width, fmt::format("{} width (m)", pivot_label(p)));
+    const double link = associated_link_length(*this, p);
+    if (j.type == PivotType::kLong) {
+      j.length = link / kGamma;  // thesis Table 8.1: l = r/gamma
+    } else {
+      if (j.length == 0.0) j.length = kMu * link;
+      require_positive(j.length, fmt::format("{} flexure length (m)", pivot_label(p)));
+      if (j.length > 0.5 * link) {
+        throw InvalidInput(
+            fmt::format("{} flexure length must be in (0, {:.6g}] m (half its link, so that the "
+                        "small-length pivot model applies); got {:.6g}",
+                        pivot_label(p),
+                        0.5 * link,
+                        j.length));
+      }
+    }
+  }
+  const double limit = toggle_stroke();
+  if (stroke > limit) {
+    throw InvalidInput(fmt::format(
+        "stroke {:.6g} m is past the toggle position: the limit for R = r3/r2 = {:.6g} is "
+        "{:.6g} m ({:.4g} % of r2 + r3)",
+        stroke,
+        R(),
+        limit,
+        cfm::toggle_stroke_percent(R())));
+  }
+}
+
+const std::vector<MechanismDesign>& builtin_mechanisms() {
+  static const std::vector<MechanismDesign> designs = [] {
+    std::vector<MechanismDesign> list;
+    for (const auto& cfg : cfm::cfm_configurations()) {
+      list.push_back(cfg.name == "lpp" ? thesis_example_lpp() : subclass_design(cfg.name));
+    }
+    return list;
+  }();
+  return designs;
+}
+
+MechanismDesign find_builtin_mechanism(const std::string& name) {
+  std::string key = name;
+  std::transform(key.begin(), key.end(), key.begin(), [](unsigned char c) {
+    return static_cast<char>(std::tolower(c));
+  });
+  std::string names;
+  for (const auto& d : builtin_mechanisms()) {
+    std::string lower = d.name;
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) {
+      return static_cast<char>(std::tolower(c));
+    });
+    if (key == lower || key == d.config) return d;
+    names += (names.empty() ? "" : ", ") + d.name;
+  }
+  throw InvalidInput(
+      fmt::format("unknown mechanism '{}' (built-in: {}; or a .toml file)", name, names));
+}
+
+}  // namespace flexure::mechanism

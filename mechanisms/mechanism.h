@@ -1,0 +1,71 @@
+#pragma once
+// Dimensional description of half of a symmetric constant-force slider mechanism as Weight (2001)
+// models it (thesis digest §1.1, §2.2, Table 8.1): ground pivot 1, crank r2, middle pivot 2,
+// coupler r3, slider pivot 3 on the x axis through the ground pivot. Each pivot is a pin (p), a
+// small-length flexural pivot (s) or a long fixed-pinned flexible segment (l).
+//
+// The PRBM link lengths r2, r3 are the primary geometry (the thesis designs in r_tot = r2 + r3);
+// the physical segments follow Table 8.1: an s flexure of length f is centred on its PRB pivot
+// (f = 0.1 r_i by default, r_ave for the middle pivot); an l segment is r/gamma long (gamma =
+// 0.85), replaces link 2 (at the ground, or plp) or link 3 (slp), and its characteristic pivot is
+// 0.15 l from its clamp. Units: SI (m, Pa, N) throughout.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "mechanisms/cfm/cfm_configuration.h"
+
+namespace flexure::mechanism {
+
+using cfm::PivotType;
+
+// One pivot of the half-mechanism.
+struct JointDesign {
+  PivotType type = PivotType::kPin;
+  double length = 0.0;     // flexible length, m (s: flexure length; l: r/gamma, derived)
+  double thickness = 0.0;  // in-plane thickness h, m (> 0 for s and l)
+  double width = 0.0;      // out-of-plane width b, m (> 0 for s and l)
+
+  double second_moment() const { return width * thickness * thickness * thickness / 12.0; }
+  double area() const { return width * thickness; }
+};
+
+struct MechanismDesign {
+  std::string name;                   // "1A-lpp", or the TOML file name
+  std::string config;                 // spp, lpp, psp, plp, ssp, slp, sps, lps, sss
+  std::string note;                   // where the numbers come from
+  double r2 = 0.0;                    // PRBM crank length, m (pivot 1 to pivot 2)
+  double r3 = 0.0;                    // PRBM coupler length, m (pivot 2 to pivot 3)
+  std::array<JointDesign, 3> joints;  // pivot 1 (ground), 2 (middle), 3 (slider)
+  double E = 0.0;                     // Young's modulus, Pa
+  double yield_strength = 0.0;        // Pa
+  double stroke = 0.0;                // slider travel Delta x at the end of the stroke, m
+
+  const cfm::CfmConfiguration& configuration() const;
+  double R() const { return r3 / r2; }
+  // Largest allowed stroke (the toggle position of the PRBM slider-crank), m.
+  double toggle_stroke() const;
+  // Torsional spring constant of the PRB pivot i (1..3), N m/rad; 0 for a pin.
+  //   s: K = EI/l (Howell eq. 5.14);  l: K = gamma K_theta EI/l (eq. 5.72), gamma = 0.85,
+  //   K_theta = 2.65 (the thesis's constants, digest §2.2).
+  double spring_constant(int pivot) const;
+  // Fills the derived flexible lengths (s: 0.1 r_i if unset; l: r_i/gamma) and checks every value.
+  // Throws InvalidInput naming the quantity and the allowed range: unknown configuration, r2, r3,
+  // E, yield strength, stroke <= 0 or non-finite, a flexible pivot without positive thickness and
+  // width, an s flexure longer than its link, a stroke past the toggle position (the message names
+  // the limit in m and in % of r2 + r3).
+  void finalise();
+};
+
+// The link a flexible pivot's default length is based on (Table 8.1): r2 at the ground, r3 at the
+// slider, r_ave in the middle (s) or r2/r3 for a middle long segment (plp/slp).
+double associated_link_length(const MechanismDesign& design, int pivot);
+
+// Built-in designs, one per configuration, named by class and configuration ("1A-lpp", ...; the
+// documented choices are in docs/mechanisms.md). "1A-lpp" is the thesis design example 1
+// (digest §7.4, Table 8.4).
+const std::vector<MechanismDesign>& builtin_mechanisms();
+// Accepts "1A-lpp" or "lpp" (case-insensitive); throws InvalidInput listing the names.
+MechanismDesign find_builtin_mechanism(const std::string& name);
+
+}  // namespace flexure::mechanism

@@ -1,0 +1,122 @@
+#include "mechanisms/mechanism_analysis.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "elements/fixed_pinned_segment.h"
+
+namespace flexure::mechanism {
+namespace {
+
+constexpr double kGamma = 0.85;  // fixed-pinned characteristic radius factor (thesis §2.2)
+
+// Checks the long segments of the PRBM at one state against Howell Table 5.1; returns a reason
+// when the state is outside the range, empty otherwise.
+std::string validity_violation(const MechanismDesign& d, const PrbmState& s) {
+  const auto& cfg = d.configuration();
+  for (int p = 1; p <= 3; ++p) {
+    if (d.joints[p - 1].type != PivotType::kLong) continue;
+    // Beam axis u at the clamp and PRB angle Theta of the segment (relative rotation of its
+    // pseudo-rigid link), and the force on its pinned end.
+    double ux = 1.0, uy = 0.0, Theta = s.theta2;
+    double Fx = s.pin_force_x, Fy = s.pin_force_y;  // on the crank's tip (lpp, lps)
+    if (p == 2 && !cfg.middle_long_on_r2) {         // slp: clamped to link 2, pin at the slider
+      ux = std::cos(s.theta2), uy = std::sin(s.theta2), Theta = s.theta3 - s.theta2;
+    } else if (p == 2) {  // plp: clamped into link 3, pinned at the ground; seen from the clamp
+      ux = -std::cos(s.theta3), uy = -std::sin(s.theta3), Theta = s.theta2 - s.theta3;
+      Fx = -Fx, Fy = -Fy;  // the ground pin's force on the beam
+    }
+    // Normal v on the side the segment deflects to.
+    const double sign = Theta >= 0.0 ? 1.0 : -1.0;
+    const double vx = -uy * sign, vy = ux * sign;
+    const double Pt = Fx * vx + Fy * vy, Pa = Fx * ux + Fy * uy;
+    if (Pt <= 0.0) {
+      return fmt::format(
+          "l segment at pivot {}: the pin force points to the far side of the beam axis (load "
+          "angle phi > 180 deg, outside Howell Table 5.1)",
+          p);
+    }
+    const double n = -Pa / Pt;  // Howell eq. 5.37 sense: compressive axial force for n > 0
+    FixedPinnedConstants c;
+    try {
+      c = FixedPinnedConstants::from_table(n);
+    } catch (const std::exception&) {
+      return fmt::format(
+          "l segment at pivot {}: load ratio n = {:.3g} outside Howell Table 5.1", p, n);
+    }
+    if (std::abs(Theta) > c.theta_max_K) {
+      return fmt::format(
+          "l segment at pivot {}: Theta = {:.1f} deg > Theta_max(K_theta) = {:.1f} deg at "
+          "n = {:.3g} (Howell Table 5.1)",
+          p,
+          std::abs(Theta) * 180.0 / M_PI,
+          c.theta_max_K * 180.0 / M_PI,
+          n);
+    }
+  }
+  (void)kGamma;
+  return "";
+}
+
+}  // namespace
+
+MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const AnalysisOptions& options) {
+  MechanismAnalysis a;
+  a.design = design;
+  a.design.finalise();
+  const MechanismDesign& d = a.design;
+  a.prbm = prbm_stroke(d, options.points);
+  for (double dx : a.prbm.displacement) {
+    const std::string why = validity_violation(d, prbm_state(d, dx));
+    if (!why.empty()) {
+      a.prbm_validity_limit = dx;
+      a.prbm_validity_reason = why;
+      break;
+    }
+  }
+  a.max_stress = a.prbm.max_stress;
+  a.has_exact = exact_support(d) != ExactSupport::kPrbmOnly;
+  if (!a.has_exact) {
+    a.exact_note = exact_support_reason(d);
+  } else if (options.exact) {
+    a.exact = exact_stroke(d, a.prbm.displacement);
+    a.exact_note = a.exact.message;
+    if (a.exact.converged) {
+      double fmin = INFINITY, fmax = -INFINITY, sum = 0.0;
+      for (std::size_t k = 0; k < a.exact.points.size(); ++k) {
+        const ExactPoint& p = a.exact.points[k];
+        a.force_exact.push_back(p.force);
+        fmin = std::min(fmin, p.force);
+        fmax = std::max(fmax, p.force);
+        sum += p.force;
+        const double err = std::abs(a.prbm.force[k] - p.force) / std::abs(p.force);
+        if (err > a.max_force_error) {
+          a.max_force_error = err;
+          a.max_force_error_at = p.displacement;
+        }
+        if (options.exact_stress) {
+          const ExactSegmentState st = exact_segment_state(d, p, options.shape_points);
+          for (int i = 0; i < 3; ++i) {
+            a.max_stress_exact[i] = std::max(a.max_stress_exact[i], st.max_stress[i]);
+          }
+        }
+      }
+      a.percent_constant_force_exact = 100.0 * fmin / fmax;
+      a.mean_force_exact = sum / static_cast<double>(a.force_exact.size());
+      for (int i = 0; i < 3; ++i)
+        a.max_stress[i] = std::max(a.max_stress[i], a.max_stress_exact[i]);
+    }
+  }
+  for (int i = 0; i < 3; ++i) {
+    a.max_stress_all = std::max(a.max_stress_all, a.max_stress[i]);
+    if (d.joints[i].type != PivotType::kPin && a.max_stress[i] >= d.yield_strength) {
+      a.yielding_pivots.push_back(i + 1);
+    }
+  }
+  a.safety_factor = d.yield_strength / a.max_stress_all;
+  return a;
+}
+
+}  // namespace flexure::mechanism

@@ -1,0 +1,55 @@
+#pragma once
+// One stroke of a MechanismDesign computed both ways -- PRBM (mechanism_prbm.h) and exact
+// (mechanism_exact.h) -- with the comparison the issue asks for: force error of the PRBM relative
+// to the exact model, percent constant force both ways, largest stress and safety factor, and the
+// first slider position where the PRBM leaves its validity range.
+//
+// Validity range of the PRBM (docs/mechanisms.md): a long (fixed-pinned) segment is modelled with
+// gamma = 0.85, K_theta = 2.65; Howell Table 5.1 gives for its load ratio n the largest PRB angle
+// Theta_max(K_theta) up to which the force stays within 0.5 % of the exact one. The limit is the
+// first stroke point where Theta of an l segment exceeds Theta_max(K_theta) at its current n (or n
+// lies outside Table 5.1, or the pin force opposes the deflection). s pivots have no such table
+// (they are assumed valid; their error shows in the comparison with the exact model).
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mechanisms/mechanism.h"
+#include "mechanisms/mechanism_exact.h"
+#include "mechanisms/mechanism_prbm.h"
+
+namespace flexure::mechanism {
+
+struct AnalysisOptions {
+  int points = 50;           // stroke points (Delta x = k stroke/points, k = 1..points)
+  bool exact = true;         // solve the exact model where one exists
+  bool exact_stress = true;  // re-solve each exact point for its shape and stresses
+  int shape_points = 801;    // shape samples for the exact stresses
+};
+
+struct MechanismAnalysis {
+  MechanismDesign design;
+  PrbmStrokeResult prbm;
+  bool has_exact = false;  // the configuration has an exact model (exact_support)
+  std::string exact_note;  // why not, or the solver's message
+  ExactStrokeResult exact;
+  std::vector<double> force_exact;           // N, one per stroke point (when has_exact)
+  std::array<double, 3> max_stress_exact{};  // Pa, per pivot
+  double percent_constant_force_exact = 0.0;
+  double mean_force_exact = 0.0;
+  double max_force_error = 0.0;     // max |F_prbm - F_exact|/|F_exact| over the stroke
+  double max_force_error_at = 0.0;  // Delta x of that maximum, m
+  // First Delta x where the PRBM leaves its validity range (see above); empty if it never does.
+  std::optional<double> prbm_validity_limit;
+  std::string prbm_validity_reason;
+  // Governing stress: the larger of the PRBM and (if computed) exact values, per pivot.
+  std::array<double, 3> max_stress{};
+  double max_stress_all = 0.0;
+  double safety_factor = 0.0;        // yield_strength/max_stress_all
+  std::vector<int> yielding_pivots;  // pivots whose max stress reaches the yield strength
+};
+
+MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const AnalysisOptions& options);
+
+}  // namespace flexure::mechanism

@@ -1,0 +1,592 @@
+#include "mechanisms/mechanism_exact.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "mechanisms/mechanism_prbm.h"
+#include "solver/common/errors.h"
+
+namespace flexure::mechanism {
+namespace {
+
+constexpr double kGamma = 0.85;  // fixed-pinned characteristic radius factor (thesis §2.2)
+
+bool is_pin(const MechanismDesign& d, int pivot) {
+  return d.joints[pivot - 1].type == PivotType::kPin;
+}
+
+void add_flexible(PhysicalChain& pc, const MechanismDesign& d, int pivot, double length) {
+  FlexibleSegment f;
+  f.length = length;
+  f.EI = d.E * d.joints[pivot - 1].second_moment();
+  pc.chain.segments.emplace_back(f);
+  pc.flexible_pivot.push_back(pivot);
+}
+
+void add_rigid(PhysicalChain& pc, double length) {
+  if (length <= 0.0) return;  // a flexible segment replaces the whole link (Table 8.1: r' = 0)
+  pc.chain.segments.emplace_back(RigidSegment{length, 0.0});
+  pc.flexible_pivot.push_back(0);
+}
+
+}  // namespace
+
+ExactSupport exact_support(const MechanismDesign& design) {
+  if (is_pin(design, 1)) {
+    return is_pin(design, 3) ? ExactSupport::kPinnedEnds : ExactSupport::kPrbmOnly;
+  }
+  if (is_pin(design, 2)) {
+    return is_pin(design, 3) ? ExactSupport::kTwoForceCoupler : ExactSupport::kPinnedMiddle;
+  }
+  return ExactSupport::kDirectChain;
+}
+
+std::string exact_support_reason(const MechanismDesign& design) {
+  if (exact_support(design) == ExactSupport::kPrbmOnly) {
+    return "pin at the ground with a flexure at the slider: no chain root (PRBM only)";
+  }
+  return "";
+}
+
+PhysicalChain physical_chain(const MechanismDesign& d) {
+  if (exact_support(d) == ExactSupport::kPrbmOnly) {
+    throw InvalidInput(fmt::format(
+        "configuration '{}' has no exact model: {}", d.config, exact_support_reason(d)));
+  }
+  const auto& cfg = d.configuration();
+  const auto& j = d.joints;
+  PhysicalChain pc;
+  // Table 8.1 segment lengths; an s flexure is centred on its PRB pivot.
+  const double f1 = j[0].length, f2 = j[1].length, f3 = j[2].length;
+  if (exact_support(d) == ExactSupport::kPinnedEnds) {
+    // psp, plp: from the ground pin, a root kink (the crank angle, set per point), the crank
+    // (rigid for psp, the l segment for plp), the middle flexure's rest, the coupler.
+    pc.chain.segments.emplace_back(RigidSegment{0.0, 0.0});
+    pc.flexible_pivot.push_back(0);
+    if (j[1].type == PivotType::kSmall) {
+      add_rigid(pc, d.r2 - 0.5 * f2);
+      add_flexible(pc, d, 2, f2);
+      add_rigid(pc, d.r3 - 0.5 * f2);
+    } else {  // plp: link 2 is the l segment, clamped into link 3 (Table 8.1: r3' = r3 - 0.15 f2)
+      add_flexible(pc, d, 2, f2);
+      add_rigid(pc, d.r3 - (1.0 - kGamma) * f2);
+    }
+    pc.slider_x0 = pc.chain.total_length();
+    return pc;
+  }
+  add_flexible(pc, d, 1, f1);
+  double r2_rigid = d.r2;
+  if (j[0].type == PivotType::kLong) {
+    r2_rigid = 0.0;
+  } else {
+    r2_rigid -= 0.5 * f1;
+    if (j[1].type == PivotType::kSmall) r2_rigid -= 0.5 * f2;
+    if (j[1].type == PivotType::kLong && !cfg.middle_long_on_r2) r2_rigid -= (1.0 - kGamma) * f2;
+  }
+  add_rigid(pc, r2_rigid);
+  if (exact_support(d) == ExactSupport::kTwoForceCoupler) {
+    pc.slider_x0 = pc.chain.total_length() + d.r3;
+    return pc;
+  }
+  if (exact_support(d) == ExactSupport::kPinnedMiddle) {
+    // Coupler chain from the slider clamp back to pivot 2: slider flexure, then the rigid rest.
+    PhysicalChain coupler;
+    add_flexible(coupler, d, 3, f3);
+    add_rigid(coupler, d.r3 - 0.5 * f3);
+    pc.coupler_chain = coupler.chain;
+    pc.coupler_flexible_pivot = coupler.flexible_pivot;
+    pc.slider_x0 = pc.chain.total_length() + coupler.chain.total_length();
+    return pc;
+  }
+  double r3_rigid = d.r3;
+  if (j[1].type == PivotType::kSmall) {
+    add_flexible(pc, d, 2, f2);
+    r3_rigid -= 0.5 * f2;
+  } else {  // slp: link 3 is the long segment, pinned at the slider
+    add_flexible(pc, d, 2, f2);
+    r3_rigid = 0.0;
+  }
+  if (j[2].type == PivotType::kSmall) r3_rigid -= 0.5 * f3;
+  add_rigid(pc, r3_rigid);
+  if (j[2].type == PivotType::kSmall) add_flexible(pc, d, 3, f3);
+  pc.slider_x0 = pc.chain.total_length();
+  return pc;
+}
+
+ExactMechanismSolver::ExactMechanismSolver(MechanismDesign design)
+    : ExactMechanismSolver(std::move(design), Options{}) {}
+
+ExactMechanismSolver::ExactMechanismSolver(MechanismDesign design, Options options)
+    : design_(std::move(design)), options_(options), support_(exact_support(design_)) {
+  physical_ = physical_chain(design_);
+  length_scale_ = physical_.slider_x0;
+  EI_scale_ = 0.0;
+  for (const auto* c : {&physical_.chain, &physical_.coupler_chain}) {
+    for (const Segment& seg : c->segments) {
+      if (const auto* f = std::get_if<FlexibleSegment>(&seg)) {
+        EI_scale_ = std::max(EI_scale_, f->EI);
+      }
+    }
+  }
+  force_scale_ = EI_scale_ / (length_scale_ * length_scale_);
+  moment_scale_ = EI_scale_ / length_scale_;
+  scaled_ = physical_.chain;
+  scaled_coupler_ = physical_.coupler_chain;
+  for (auto* c : {&scaled_, &scaled_coupler_}) {
+    for (Segment& seg : c->segments) {
+      if (auto* f = std::get_if<FlexibleSegment>(&seg)) {
+        f->length /= length_scale_;
+        f->EI /= EI_scale_;
+      } else {
+        std::get<RigidSegment>(seg).length /= length_scale_;
+      }
+    }
+  }
+}
+
+SegmentChain ExactMechanismSolver::chain_at(double displacement, double phi) const {
+  SegmentChain chain = scaled_;
+  const double xs = (physical_.slider_x0 - displacement) / length_scale_;
+  if (support_ == ExactSupport::kTwoForceCoupler) {
+    chain.end = EndCondition::kPinned;
+    chain.prescribed.x = xs - design_.r3 / length_scale_ * std::cos(phi);
+    chain.prescribed.y = design_.r3 / length_scale_ * std::sin(phi);
+  } else if (is_pin(design_, 3)) {
+    chain.end = EndCondition::kPinned;
+    chain.prescribed.x = xs;
+    chain.prescribed.y = 0.0;
+  } else {
+    chain.end = EndCondition::kFixed;
+    chain.prescribed.x = xs;
+    chain.prescribed.y = 0.0;
+    chain.prescribed.theta = 0.0;
+  }
+  return chain;
+}
+
+ExactPoint ExactMechanismSolver::solve(double displacement, const ExactPoint* previous) const {
+  require_finite(displacement, "slider displacement");
+  if (displacement <= 0.0 || displacement > design_.toggle_stroke()) {
+    throw InvalidInput(fmt::format(
+        "slider displacement must be in (0, {:.6g}] m (the toggle position); got {:.6g}",
+        design_.toggle_stroke(),
+        displacement));
+  }
+  switch (support_) {
+    case ExactSupport::kTwoForceCoupler:
+      return solve_two_force(displacement, previous);
+    case ExactSupport::kPinnedMiddle:
+      return solve_pinned_middle(displacement, previous);
+    case ExactSupport::kPinnedEnds:
+      return solve_pinned_ends(displacement, previous);
+    default:
+      return solve_direct(displacement, previous);
+  }
+}
+
+namespace {
+
+// Root unknowns (m0, Nx, Ny) from the PRBM: N = the PRBM pin force (the chain carries one force,
+// no node loads), m0 = m_tip + cross(tip, N) (statics of the whole chain about the clamp).
+std::vector<double> prbm_guess(const PrbmState& s, double tip_x, double tip_y, double m_tip) {
+  return {m_tip + tip_x * s.pin_force_y - tip_y * s.pin_force_x, s.pin_force_x, s.pin_force_y};
+}
+
+}  // namespace
+
+ExactPoint ExactMechanismSolver::solve_direct(double displacement,
+                                              const ExactPoint* previous) const {
+  ExactPoint p;
+  p.displacement = displacement;
+  p.chain = chain_at(displacement, 0.0);
+  const ShootingSolver solver(options_.shooting);
+  ShootingResult r;
+  std::string history;
+  if (previous != nullptr && previous->converged) {
+    r = solver.solve_from(p.chain, previous->unknowns);
+    p.iterations += r.iterations;
+    if (!r.converged) history = "from the previous point: " + r.message + "; ";
+  }
+  if (!r.converged) {
+    const PrbmState s = prbm_state(design_, displacement);
+    const double m_tip =
+        is_pin(design_, 3) ? 0.0 : design_.spring_constant(3) * (-s.theta3);  // slider spring
+    std::vector<double> g = prbm_guess(s, *p.chain.prescribed.x * length_scale_, 0.0, m_tip);
+    g[0] /= moment_scale_, g[1] /= force_scale_, g[2] /= force_scale_;
+    r = solver.solve_from(p.chain, g);
+    p.iterations += r.iterations;
+    if (!r.converged) history += "from the PRBM guess: " + r.message + "; ";
+  }
+  if (!r.converged) {
+    r = solver.solve(p.chain);
+    p.iterations += r.iterations;
+  }
+  p.converged = r.converged;
+  p.message = r.converged ? r.method : history + "continuation: " + r.message;
+  p.unknowns = r.unknowns;
+  p.length_scale = length_scale_;
+  p.EI_scale = EI_scale_;
+  p.Nx = r.tip_load.Fx * force_scale_;
+  p.Ny = r.tip_load.Fy * force_scale_;
+  p.m0 = -r.reaction.M * moment_scale_;
+  p.force = -p.Nx;
+  p.residual = r.residual_norm;
+  return p;
+}
+
+ExactPoint ExactMechanismSolver::solve_two_force(double displacement,
+                                                 const ExactPoint* previous) const {
+  // Force control: the crank is a cantilever carrying the dead coupler force T = Q (-cos phi,
+  // sin phi) (compression Q > 0) at its free end; Newton on (Q, phi) makes its tip land on
+  // pivot 2 = slider - r3 (cos phi, -sin phi). Prescribing the tip instead (pinned end, secant on
+  // phi) is ill-conditioned: near full extension a tiny change of phi changes T by orders of
+  // magnitude.
+  ExactPoint p;
+  p.displacement = displacement;
+  const ShootingSolver solver(options_.shooting);
+  // Nondimensional: lengths / length_scale_, forces / force_scale_, moments / moment_scale_.
+  const double xs = (physical_.slider_x0 - displacement) / length_scale_;
+  const double r3 = design_.r3 / length_scale_;
+  double Q = 0.0, phi = 0.0, m0 = 0.0;
+  if (previous != nullptr && previous->converged) {
+    Q = std::hypot(previous->Nx, previous->Ny) / force_scale_;
+    phi = previous->phi;
+    m0 = previous->m0 / moment_scale_;
+  } else {
+    const PrbmState s = prbm_state(design_, displacement);
+    Q = std::hypot(s.pin_force_x, s.pin_force_y) / force_scale_;
+    phi = -s.theta3;
+    const double tx = xs - r3 * std::cos(phi), ty = r3 * std::sin(phi);
+    m0 = (tx * s.pin_force_y - ty * s.pin_force_x) / force_scale_;
+  }
+  auto make_chain = [&](double q, double f) {
+    SegmentChain c = scaled_;
+    c.end = EndCondition::kFree;
+    c.tip_load.Fx = -q * std::cos(f);
+    c.tip_load.Fy = q * std::sin(f);
+    return c;
+  };
+  struct Eval {
+    bool ok = false;
+    Eigen::Vector2d r = Eigen::Vector2d::Zero();
+    ShootingResult sr;
+  };
+  auto evaluate = [&](double q, double f) {
+    Eval e;
+    e.sr = solver.solve_from(make_chain(q, f), {m0});
+    p.iterations += e.sr.iterations;
+    if (!e.sr.converged) return e;
+    e.ok = true;
+    e.r << e.sr.tip.x - (xs - r3 * std::cos(f)), e.sr.tip.y - r3 * std::sin(f);
+    return e;
+  };
+  const double scale = 1.0;  // the slider position, nondimensional
+  Eval e = evaluate(Q, phi);
+  // Jacobian d(mismatch)/d(Q, phi): from the previous stroke point if there is one, refreshed by
+  // finite differences when a step does not halve the mismatch, Broyden-updated after each step
+  // (one cantilever solve per step in the usual case instead of three).
+  Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
+  bool have_J = false, fresh_J = false;
+  if (options_.reuse_jacobian && previous != nullptr && previous->converged &&
+      previous->jacobian[0] != 0.0) {
+    J << previous->jacobian[0], previous->jacobian[1], previous->jacobian[2], previous->jacobian[3];
+    have_J = true;
+  }
+  int it = 0;
+  for (; e.ok && e.r.norm() > options_.position_tolerance * scale &&
+         it < options_.max_newton_iterations;
+       ++it) {
+    m0 = -e.sr.reaction.M;
+    if (!have_J) {
+      const double dQ = 1e-7 * std::max(Q, 1e-12), dphi = 1e-7;
+      const Eval eq = evaluate(Q + dQ, phi), ef = evaluate(Q, phi + dphi);
+      if (!eq.ok || !ef.ok) {
+        e = eq.ok ? ef : eq;
+        break;
+      }
+      J.col(0) = (eq.r - e.r) / dQ;
+      J.col(1) = (ef.r - e.r) / dphi;
+      have_J = fresh_J = true;
+    }
+    const Eigen::Vector2d step = J.fullPivLu().solve(-e.r);
+    Eval trial = evaluate(Q + step(0), phi + step(1));
+    if (!fresh_J && !(trial.ok && trial.r.norm() < 0.5 * e.r.norm())) {
+      have_J = false;  // stale Jacobian: refresh it and retry from the same point
+      continue;
+    }
+    // Damped step with a fresh Jacobian: halve until the mismatch decreases.
+    double t = 1.0;
+    // (At the noise floor a failed full step already means convergence: no halving.)
+    const bool at_floor = e.r.norm() <= options_.noise_floor * scale;
+    for (int k = 0; k < 12 && !at_floor && !(trial.ok && trial.r.norm() < e.r.norm()); ++k) {
+      t *= 0.5;
+      trial = evaluate(Q + t * step(0), phi + t * step(1));
+    }
+    if (!trial.ok || trial.r.norm() >= e.r.norm()) {
+      // No decrease: at the integrator's noise floor this is convergence, otherwise a failure.
+      if (e.r.norm() > options_.noise_floor * scale) {
+        p.message =
+            fmt::format("no decrease of the pivot 2 mismatch {:.3g} m", e.r.norm() * length_scale_);
+        e.ok = false;
+      }
+      break;
+    }
+    const Eigen::Vector2d dx = t * step;
+    J += ((trial.r - e.r) - J * dx) * dx.transpose() / dx.squaredNorm();  // Broyden
+    fresh_J = false;
+    Q += dx(0);
+    phi += dx(1);
+    e = trial;
+  }
+  p.jacobian = {J(0, 0), J(0, 1), J(1, 0), J(1, 1)};
+  p.phi = phi;
+  if (!e.ok) {
+    p.message = fmt::format(
+        "force-controlled Newton on the coupler force stopped after {} steps at Q = {:.6g} N, "
+        "phi = {:.6g} rad: {} {}",
+        it,
+        Q * force_scale_,
+        phi,
+        p.message,
+        e.sr.message);
+    return p;
+  }
+  p.chain = make_chain(Q, phi);
+  p.unknowns = e.sr.unknowns;
+  p.length_scale = length_scale_;
+  p.EI_scale = EI_scale_;
+  p.Nx = p.chain.tip_load.Fx * force_scale_;
+  p.Ny = p.chain.tip_load.Fy * force_scale_;
+  p.m0 = -e.sr.reaction.M * moment_scale_;
+  p.force = -p.Nx;
+  p.residual = e.r.norm() / scale;
+  p.converged = e.r.norm() <= std::max(options_.position_tolerance, options_.noise_floor) * scale;
+  p.message = p.converged ? fmt::format("force-controlled Newton on (Q, phi), {} steps", it)
+                          : fmt::format(
+                                "force-controlled Newton on (Q, phi) stopped after {} steps with "
+                                "|pivot 2 mismatch|/length = {:.3g}",
+                                it,
+                                p.residual);
+  return p;
+}
+
+ExactStrokeResult exact_stroke(const MechanismDesign& design,
+                               const std::vector<double>& displacements) {
+  return exact_stroke(design, displacements, ExactMechanismSolver::Options{});
+}
+
+ExactStrokeResult exact_stroke(const MechanismDesign& design,
+                               const std::vector<double>& displacements,
+                               const ExactMechanismSolver::Options& options) {
+  const ExactMechanismSolver solver(design, options);
+  ExactStrokeResult result;
+  result.points.reserve(displacements.size());
+  const ExactPoint* previous = nullptr;
+  ExactPoint predicted;
+  for (double dx : displacements) {
+    const std::size_t k = result.points.size();
+    if (k >= 2) {
+      // Linear predictor from the last two points (secant in Delta x): halves the Newton work.
+      const ExactPoint& a = result.points[k - 2];
+      const ExactPoint& b = result.points[k - 1];
+      const double t = (dx - b.displacement) / (b.displacement - a.displacement);
+      auto extrapolate = [t](double va, double vb) { return vb + t * (vb - va); };
+      predicted = b;
+      predicted.phi = extrapolate(a.phi, b.phi);
+      predicted.Nx = extrapolate(a.Nx, b.Nx);
+      predicted.Ny = extrapolate(a.Ny, b.Ny);
+      predicted.m0 = extrapolate(a.m0, b.m0);
+      if (a.unknowns.size() == b.unknowns.size()) {
+        for (std::size_t i = 0; i < b.unknowns.size(); ++i) {
+          predicted.unknowns[i] = extrapolate(a.unknowns[i], b.unknowns[i]);
+        }
+      }
+      previous = &predicted;
+    }
+    ExactPoint point = solver.solve(dx, previous);
+    if (!point.converged && k >= 1) {
+      // Retry in substeps from the last converged point (large rotations per stroke step can
+      // throw Newton onto another branch).
+      const ExactPoint last = result.points[k - 1];
+      for (int m : {4, 16}) {
+        ExactPoint current = last;
+        bool ok = true;
+        int iterations = 0;
+        for (int i = 1; i <= m && ok; ++i) {
+          const double x = last.displacement + (dx - last.displacement) * i / m;
+          ExactPoint q = solver.solve(x, &current);
+          iterations += q.iterations;
+          ok = q.converged;
+          if (ok) current = std::move(q);
+        }
+        if (ok) {
+          point = std::move(current);
+          point.iterations += iterations;
+          point.message += fmt::format(" ({} substeps from the previous point)", m);
+          break;
+        }
+      }
+    }
+    result.points.push_back(std::move(point));
+    const ExactPoint& p = result.points.back();
+    result.iterations += p.iterations;
+    if (!p.converged) {
+      result.message =
+          fmt::format("exact model stopped at Delta x = {:.6g} m ({} of {} points): {}",
+                      dx,
+                      result.points.size(),
+                      displacements.size(),
+                      p.message);
+      return result;
+    }
+    previous = &result.points.back();
+  }
+  result.converged = true;
+  result.message = fmt::format("{} points converged", displacements.size());
+  return result;
+}
+
+namespace {
+
+// Adds the stresses and strain energy of the flexible segments of one nondimensional chain, solved
+// from `unknowns`, whose internal force (tip load) is (Nx, Ny) N and root moment m0 N m in the
+// chain's own frame; `pivots[j]` = pivot of segment j (0 rigid).
+void accumulate_chain(const MechanismDesign& design,
+                      const SegmentChain& chain,
+                      const std::vector<double>& unknowns,
+                      const std::vector<int>& pivots,
+                      double m0,
+                      double Nx,
+                      double Ny,
+                      double L,
+                      double EI_scale,
+                      int shape_points,
+                      ExactSegmentState& st) {
+  ShootingSolver::Options o;
+  o.backend = ElasticaIntegrator::Backend::kDormandPrince;
+  o.shape_points = shape_points;
+  const ShootingResult r = ShootingSolver(o).solve_from(chain, unknowns);
+  if (!r.converged || r.shape.size() < 2) {
+    throw NoConvergence("re-solving the exact point for its shape failed: " + r.message);
+  }
+  auto moment = [&](double x, double y) { return m0 + (Nx * y - Ny * x) * L; };
+  // Linear interpolation of (x, y) at arc length s between shape samples.
+  auto moment_at = [&](double s) {
+    auto it = std::lower_bound(
+        r.shape.begin(), r.shape.end(), s, [](const ShapePoint& q, double v) { return q.s < v; });
+    if (it == r.shape.begin()) return moment(it->x, it->y);
+    if (it == r.shape.end()) return moment(r.shape.back().x, r.shape.back().y);
+    const ShapePoint& b = *it;
+    const ShapePoint& a = *(it - 1);
+    const double t = (s - a.s) / (b.s - a.s);
+    return moment(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y));
+  };
+  const double N = std::hypot(Nx, Ny);
+  double s0 = 0.0;
+  for (std::size_t j = 0; j < chain.segments.size(); ++j) {
+    const auto& seg = chain.segments[j];
+    const double len = std::holds_alternative<FlexibleSegment>(seg)
+                           ? std::get<FlexibleSegment>(seg).length
+                           : std::get<RigidSegment>(seg).length;
+    if (const auto* f = std::get_if<FlexibleSegment>(&seg)) {
+      std::vector<std::pair<double, double>> samples;  // (s, m)
+      samples.emplace_back(s0, moment_at(s0));
+      for (const ShapePoint& q : r.shape) {
+        if (q.s > s0 && q.s < s0 + len) samples.emplace_back(q.s, moment(q.x, q.y));
+      }
+      samples.emplace_back(s0 + len, moment_at(s0 + len));
+      double U = 0.0, m_max = 0.0;
+      for (std::size_t k = 0; k < samples.size(); ++k) {
+        m_max = std::max(m_max, std::abs(samples[k].second));
+        if (k > 0) {
+          const double h = samples[k].first - samples[k - 1].first;
+          U += 0.5 * h *
+               (samples[k].second * samples[k].second +
+                samples[k - 1].second * samples[k - 1].second);
+        }
+      }
+      st.strain_energy += U * L / (2.0 * f->EI * EI_scale);
+      const int pivot = j < pivots.size() ? pivots[j] : 0;
+      if (pivot > 0) {
+        const JointDesign& jd = design.joints[pivot - 1];
+        const double sigma = m_max * 0.5 * jd.thickness / jd.second_moment() + N / jd.area();
+        st.max_stress[pivot - 1] = std::max(st.max_stress[pivot - 1], sigma);
+      }
+    }
+    s0 += len;
+  }
+}
+
+}  // namespace
+
+ExactSegmentState exact_segment_state(const MechanismDesign& design,
+                                      const ExactPoint& point,
+                                      int shape_points) {
+  if (!point.converged) throw InvalidInput("exact_segment_state needs a converged point");
+  const PhysicalChain pc = physical_chain(design);
+  ExactSegmentState st;
+  accumulate_chain(design,
+                   point.chain,
+                   point.unknowns,
+                   pc.flexible_pivot,
+                   point.m0,
+                   point.Nx,
+                   point.Ny,
+                   point.length_scale,
+                   point.EI_scale,
+                   shape_points,
+                   st);
+  if (!point.coupler_chain.segments.empty()) {
+    // The coupler chain's frame is the root frame turned by pi about the slider: its tip load
+    // (the crank's push on the coupler, -N, turned by pi) is +N in that frame.
+    accumulate_chain(design,
+                     point.coupler_chain,
+                     point.coupler_unknowns,
+                     pc.coupler_flexible_pivot,
+                     point.coupler_m0,
+                     point.Nx,
+                     point.Ny,
+                     point.length_scale,
+                     point.EI_scale,
+                     shape_points,
+                     st);
+  }
+  return st;
+}
+
+ChainCheck chain_algorithm_check(const ExactPoint& point, int elements) {
+  // The chain algorithm cannot start from the straight chain with a prescribed slider end (the
+  // straight compressed state is a bifurcation point), so both cases are compared as a free chain
+  // under the dead tip loads the shooting solution found: the chain algorithm must put the tip
+  // where the shooting solver did (on the slider, or on pivot 2).
+  SegmentChain free_chain = point.chain;
+  ShootingSolver::Options so;
+  so.backend = ElasticaIntegrator::Backend::kDormandPrince;
+  const ShootingResult s = ShootingSolver(so).solve_from(point.chain, point.unknowns);
+  ChainCheck c;
+  if (!s.converged) {
+    c.message = "re-solving the shooting point failed: " + s.message;
+    return c;
+  }
+  if (point.chain.end != EndCondition::kFree) {
+    free_chain.end = EndCondition::kFree;
+    free_chain.prescribed = TipPrescription{};
+    free_chain.tip_load.Fx = s.tip_load.Fx;
+    free_chain.tip_load.Fy = s.tip_load.Fy;
+    free_chain.tip_load.M = s.tip_load.M;
+  }
+  ChainAlgorithmSolver::Options o;
+  o.elements = elements;
+  o.record_load_path = false;
+  const ChainResult r = solve_chain(free_chain, o);
+  c.converged = r.converged;
+  c.message = r.message;
+  if (!r.converged) return c;
+  c.force = point.force;
+  c.tip_error = std::hypot(r.tip.x - s.tip.x, r.tip.y - s.tip.y) * point.length_scale;
+  return c;
+}
+
+}  // namespace flexure::mechanism

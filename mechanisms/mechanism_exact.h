@@ -1,0 +1,166 @@
+#pragma once
+// Exact (elastica) model of the half constant-force mechanism: the physical segments of thesis
+// Table 8.1 as a SegmentChain clamped at the ground, solved with the shooting solver at each slider
+// position, each point starting from the previous one (Newton from the neighbouring solution).
+//
+// Which configurations have an exact model (docs/mechanisms.md "Exact model"):
+//  * kDirectChain (ssp, slp, sss): every intermediate joint is a flexure, so the half-mechanism is
+//    one serial chain from the ground clamp to the slider; the slider end is `pinned` (x = slider
+//    position, y = 0, M = 0) for a pin at the slider and `fixed` (theta = 0 as well) for a flexure
+//    clamped into the slider. The input force is the x reaction at the slider.
+//  * kTwoForceCoupler (spp, lpp): a rigid coupler between two pins carries only a force along
+//    itself. The chain is the crank alone, pivot 2 lies on the circle of radius r3 about the
+//    slider at coupler angle phi. Solved force-controlled: the crank is a cantilever under the
+//    dead coupler force Q along the coupler, and Newton on (Q, phi) puts its tip on pivot 2 (see
+//    solve_two_force; prescribing the tip instead is ill-conditioned near full extension).
+//  * kPinnedMiddle (sps, lps): a pin at pivot 2 between the crank (clamped at the ground) and the
+//    coupler (clamped into the slider by its flexure). Two cantilevers -- the crank from the ground
+//    clamp, the coupler from the slider clamp (its own frame turned by pi) -- each carry the pin
+//    force P as a dead tip load with zero tip moment; Newton on P makes their tips meet.
+//  * kPinnedEnds (psp, plp): pins at the ground and at the slider, so the half mechanism is a
+//    pinned-pinned two-force member loaded along the slider axis. The chain starts with a root
+//    kink alpha (the unknown crank angle) and carries the dead tip force (-F, 0); Newton on
+//    (F, alpha) puts the tip on the slider joint (x_s, 0), which also makes the root moment
+//    F y_tip vanish (the ground pin).
+//  * kPrbmOnly: none of the nine configurations (kept for designs the model cannot represent).
+//    Modelling a pin as a very compliant flexure would make the shooting problem ill-conditioned
+//    (theta' = m/EI with EI -> 0) and add a spurious spring, so it is not done.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mechanisms/mechanism.h"
+#include "solver/chain/chain_algorithm_solver.h"
+#include "solver/chain_model/segment_chain.h"
+#include "solver/shooting/shooting_solver.h"
+
+namespace flexure::mechanism {
+
+enum class ExactSupport { kDirectChain, kTwoForceCoupler, kPinnedMiddle, kPinnedEnds, kPrbmOnly };
+ExactSupport exact_support(const MechanismDesign& design);
+// Why a configuration is PRBM-only (empty when an exact model exists).
+std::string exact_support_reason(const MechanismDesign& design);
+
+// The physical chain (dimensional): from the ground clamp to the slider (kDirectChain) or to
+// pivot 2 (kTwoForceCoupler, kPinnedMiddle, which adds coupler_chain); from the ground pin, with a
+// zero-length root kink for the crank angle, to the slider (kPinnedEnds). `flexible_pivot[j]` =
+// pivot (1..3) of segment j, 0 for a rigid link. Throws InvalidInput for kPrbmOnly.
+struct PhysicalChain {
+  SegmentChain chain;
+  std::vector<int> flexible_pivot;
+  double slider_x0 = 0.0;  // undeflected slider position (x of the slider joint), m
+  // kPinnedMiddle: the coupler from the slider clamp to pivot 2, in a frame turned by pi about the
+  // undeflected slider (root at the slider, +x towards the ground).
+  SegmentChain coupler_chain;
+  std::vector<int> coupler_flexible_pivot;
+};
+PhysicalChain physical_chain(const MechanismDesign& design);
+
+struct ExactPoint {
+  double displacement = 0.0;  // Delta x, m
+  double force = 0.0;         // slider input force, N (= -x reaction of the slider on the chain)
+  double Nx = 0.0, Ny = 0.0;  // internal force of the chain (force on the chain's tip), N
+  double m0 = 0.0;            // bending moment at the ground clamp, N m
+  double phi = 0.0;  // coupler angle above the axis (two-force, middle pin); crank angle alpha
+                     // at the ground pin (kPinnedEnds), rad
+  // The solved chain, NONDIMENSIONAL (lengths / length_scale, EI / EI_scale; the shooting solver's
+  // Newton tolerances are absolute, so the chain is solved in units where lengths and loads are
+  // O(1)): kDirectChain with its slider end condition; kTwoForceCoupler the crank as a free
+  // cantilever under the dead coupler force.
+  SegmentChain chain;
+  // Two-force case: d(mismatch)/d(Q, phi), row-major, to start the next point's Newton iteration.
+  std::array<double, 4> jacobian{};
+  double length_scale = 1.0;     // m (the undeflected slider position)
+  double EI_scale = 1.0;         // N m^2 (the largest flexural rigidity)
+  std::vector<double> unknowns;  // shooting unknowns, to start the next point
+  // kPinnedMiddle: the coupler cantilever (nondimensional, its own frame), its unknowns and its
+  // root moment at the slider clamp (N m, own frame).
+  SegmentChain coupler_chain;
+  std::vector<double> coupler_unknowns;
+  double coupler_m0 = 0.0;
+  bool converged = false;
+  std::string message;
+  int iterations = 0;     // shooting Newton iterations, all solves of this point
+  double residual = 0.0;  // shooting residual; two-force case |pivot 2 mismatch|/slider_x0
+};
+
+class ExactMechanismSolver {
+ public:
+  struct Options {
+    ShootingSolver::Options shooting = [] {
+      ShootingSolver::Options o;
+      o.backend = ElasticaIntegrator::Backend::kDormandPrince;  // ~15x faster at equal accuracy
+      o.rtol = 1e-12;
+      o.atol = 1e-14;
+      return o;
+    }();                                // inner shooting solves
+    double position_tolerance = 1e-10;  // middle pin: |pivot 2 mismatch| / slider_x0
+    // Middle pin: a Newton step that no longer decreases the mismatch ends the iteration as
+    // converged when the mismatch is below this (integrator rtol 1e-12 times the FD Jacobian).
+    double noise_floor = 1e-9;
+    int max_newton_iterations = 30;  // middle pin: Newton steps on (Q, phi) or P per point
+    bool reuse_jacobian = false;     // two-force case: start from the previous point's Jacobian
+  };
+
+  explicit ExactMechanismSolver(MechanismDesign design);
+  ExactMechanismSolver(MechanismDesign design, Options options);
+
+  // Solves at `displacement`, starting from `previous` if given (else from the PRBM state).
+  ExactPoint solve(double displacement, const ExactPoint* previous = nullptr) const;
+
+  const MechanismDesign& design() const { return design_; }
+  ExactSupport support() const { return support_; }
+
+ private:
+  ExactPoint solve_direct(double displacement, const ExactPoint* previous) const;
+  ExactPoint solve_two_force(double displacement, const ExactPoint* previous) const;
+  ExactPoint solve_pinned_middle(double displacement, const ExactPoint* previous) const;
+  ExactPoint solve_pinned_ends(double displacement, const ExactPoint* previous) const;
+  SegmentChain chain_at(double displacement, double phi) const;
+
+  MechanismDesign design_;
+  Options options_;
+  ExactSupport support_;
+  PhysicalChain physical_;       // dimensional
+  SegmentChain scaled_;          // physical_.chain / (length_scale, EI_scale)
+  SegmentChain scaled_coupler_;  // physical_.coupler_chain, scaled the same way
+  double length_scale_ = 1.0, EI_scale_ = 1.0, force_scale_ = 1.0, moment_scale_ = 1.0;
+};
+
+struct ExactStrokeResult {
+  std::vector<ExactPoint> points;
+  bool converged = false;  // every point converged
+  std::string message;
+  int iterations = 0;
+};
+ExactStrokeResult exact_stroke(const MechanismDesign& design,
+                               const std::vector<double>& displacements);
+ExactStrokeResult exact_stroke(const MechanismDesign& design,
+                               const std::vector<double>& displacements,
+                               const ExactMechanismSolver::Options& options);
+
+// Bending moment, strain energy and stress of a solved point, from its shape at `shape_points`
+// equally spaced arc lengths: m(s) = m0 + Nx y(s) - Ny x(s) (statics of the distal part, no node
+// loads). Strain energy by the trapezoidal rule on each flexible segment (end values interpolated).
+struct ExactSegmentState {
+  std::array<double, 3> max_stress{};  // per pivot, Pa: max |m| h/(2I) + |N|/A
+  double strain_energy = 0.0;          // J, integral of m^2/(2 EI) over the flexible segments
+};
+ExactSegmentState exact_segment_state(const MechanismDesign& design,
+                                      const ExactPoint& point,
+                                      int shape_points = 801);
+
+// Second opinion: Howell's chain algorithm (N elements) on the same chain as a free chain under the
+// dead tip loads of the shooting solution (the slider reactions, or the coupler force); reports
+// how far its tip lands from the shooting solution's tip (m). (Prescribing the slider end instead
+// fails: the chain algorithm's load increments start at the straight chain, a bifurcation point.)
+struct ChainCheck {
+  bool converged = false;
+  std::string message;
+  double force = 0.0;      // slider force of the shooting solution, N
+  double tip_error = 0.0;  // |tip_chain - tip_shooting|, m
+};
+ChainCheck chain_algorithm_check(const ExactPoint& point, int elements);
+
+}  // namespace flexure::mechanism
