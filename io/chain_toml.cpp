@@ -7,32 +7,11 @@
 #include <set>
 #include <sstream>
 
+#include "io/toml_support.h"
 #include "solver/common/errors.h"
 
 namespace flexure::io {
 namespace {
-
-int line_of(const toml::node& node) { return static_cast<int>(node.source().begin.line); }
-
-[[noreturn]] void fail(const std::string& source, int line, const std::string& what) {
-  throw InvalidInput(fmt::format("{}:{}: {}", source, line, what));
-}
-
-// Rejects keys of `table` outside `allowed`, naming the key and its line.
-void check_keys(const toml::table& table,
-                const std::set<std::string>& allowed,
-                const std::string& where,
-                const std::string& source) {
-  for (const auto& [key, value] : table) {
-    if (allowed.count(std::string(key.str())) == 0) {
-      std::string list;
-      for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
-      fail(source,
-           line_of(value),
-           fmt::format("unknown key '{}' in {} (allowed: {})", key.str(), where, list));
-    }
-  }
-}
 
 // A number (integer or float) at `key`; nullopt if absent.
 std::optional<double> number(const toml::table& table,
@@ -43,11 +22,11 @@ std::optional<double> number(const toml::table& table,
   if (node == nullptr) return std::nullopt;
   if (auto v = node->value<double>()) {
     if (!std::isfinite(*v)) {
-      fail(source, line_of(*node), fmt::format("{}.{} must be a finite number", where, key));
+      toml_fail(source, line_of(*node), fmt::format("{}.{} must be a finite number", where, key));
     }
     return *v;
   }
-  fail(source, line_of(*node), fmt::format("{}.{} must be a number", where, key));
+  toml_fail(source, line_of(*node), fmt::format("{}.{} must be a number", where, key));
 }
 
 double required_number(const toml::table& table,
@@ -56,7 +35,8 @@ double required_number(const toml::table& table,
                        const std::string& source,
                        int table_line) {
   const std::optional<double> v = number(table, key, where, source);
-  if (!v) fail(source, table_line, fmt::format("{} is missing the required key '{}'", where, key));
+  if (!v)
+    toml_fail(source, table_line, fmt::format("{} is missing the required key '{}'", where, key));
   return *v;
 }
 
@@ -64,7 +44,7 @@ const toml::table& as_table(const toml::node& node,
                             const std::string& where,
                             const std::string& source) {
   const toml::table* t = node.as_table();
-  if (t == nullptr) fail(source, line_of(node), fmt::format("{} must be a table", where));
+  if (t == nullptr) toml_fail(source, line_of(node), fmt::format("{} must be a table", where));
   return *t;
 }
 
@@ -72,37 +52,38 @@ Segment read_segment(const toml::table& t, int index, const std::string& source)
   const std::string where = fmt::format("segment {}", index + 1);
   const toml::node* type_node = t.get("type");
   if (type_node == nullptr || !type_node->is_string()) {
-    fail(
+    toml_fail(
         source, line_of(t), fmt::format("{} needs type = \"flexible\" or type = \"rigid\"", where));
   }
   const std::string type = **type_node->as_string();
   if (type == "flexible") {
-    check_keys(t, {"type", "length", "EI", "EI_profile", "kappa0"}, where, source);
+    check_toml_keys(t, {"type", "length", "EI", "EI_profile", "kappa0"}, where, source);
     FlexibleSegment s;
     s.length = required_number(t, "length", where, source, line_of(t));
     s.EI = number(t, "EI", where, source).value_or(1.0);
     s.kappa0 = number(t, "kappa0", where, source).value_or(0.0);
     if (const toml::node* profile = t.get("EI_profile")) {
       const toml::array* a = profile->as_array();
-      if (a == nullptr) fail(source, line_of(*profile), where + ".EI_profile must be an array");
+      if (a == nullptr)
+        toml_fail(source, line_of(*profile), where + ".EI_profile must be an array");
       for (const toml::node& v : *a) {
         const std::optional<double> x = v.value<double>();
-        if (!x) fail(source, line_of(v), where + ".EI_profile must contain numbers");
+        if (!x) toml_fail(source, line_of(v), where + ".EI_profile must contain numbers");
         s.EI_profile.push_back(*x);
       }
     }
     return s;
   }
   if (type == "rigid") {
-    check_keys(t, {"type", "length", "angle_offset"}, where, source);
+    check_toml_keys(t, {"type", "length", "angle_offset"}, where, source);
     RigidSegment s;
     s.length = required_number(t, "length", where, source, line_of(t));
     s.angle_offset = number(t, "angle_offset", where, source).value_or(0.0);
     return s;
   }
-  fail(source,
-       line_of(*type_node),
-       fmt::format("{}: type '{}' is unknown (allowed: flexible, rigid)", where, type));
+  toml_fail(source,
+            line_of(*type_node),
+            fmt::format("{}: type '{}' is unknown (allowed: flexible, rigid)", where, type));
 }
 
 }  // namespace
@@ -115,22 +96,23 @@ SegmentChain parse_chain_toml(const std::string& text, const std::string& source
     throw InvalidInput(fmt::format(
         "{}:{}: TOML syntax error: {}", source, e.source().begin.line, e.description()));
   }
-  check_keys(root, {"boundary", "segment", "tip_load", "tip", "node_load"}, "the file", source);
+  check_toml_keys(
+      root, {"boundary", "segment", "tip_load", "tip", "node_load"}, "the file", source);
   SegmentChain chain;
   if (const toml::node* b = root.get("boundary")) {
-    if (!b->is_string()) fail(source, line_of(*b), "boundary must be a string");
+    if (!b->is_string()) toml_fail(source, line_of(*b), "boundary must be a string");
     try {
       chain.end = end_condition_from_string(**b->as_string());
     } catch (const InvalidInput& e) {
-      fail(source, line_of(*b), e.what());
+      toml_fail(source, line_of(*b), e.what());
     }
   }
   const toml::node* segments = root.get("segment");
   if (segments == nullptr) {
-    fail(source, 1, "no [[segment]] tables: a chain needs at least one segment");
+    toml_fail(source, 1, "no [[segment]] tables: a chain needs at least one segment");
   }
   const toml::array* list = segments->as_array();
-  if (list == nullptr) fail(source, line_of(*segments), "segment must be an array of tables");
+  if (list == nullptr) toml_fail(source, line_of(*segments), "segment must be an array of tables");
   int index = 0;
   for (const toml::node& node : *list) {
     chain.segments.push_back(
@@ -139,7 +121,7 @@ SegmentChain parse_chain_toml(const std::string& text, const std::string& source
   }
   if (const toml::node* node = root.get("tip_load")) {
     const toml::table& t = as_table(*node, "tip_load", source);
-    check_keys(t, {"Fx", "Fy", "M", "follower"}, "tip_load", source);
+    check_toml_keys(t, {"Fx", "Fy", "M", "follower"}, "tip_load", source);
     chain.tip_load.Fx = number(t, "Fx", "tip_load", source).value_or(0.0);
     chain.tip_load.Fy = number(t, "Fy", "tip_load", source).value_or(0.0);
     chain.tip_load.M = number(t, "M", "tip_load", source).value_or(0.0);
@@ -147,23 +129,23 @@ SegmentChain parse_chain_toml(const std::string& text, const std::string& source
   }
   if (const toml::node* node = root.get("tip")) {
     const toml::table& t = as_table(*node, "tip", source);
-    check_keys(t, {"x", "y", "theta"}, "tip", source);
+    check_toml_keys(t, {"x", "y", "theta"}, "tip", source);
     chain.prescribed.x = number(t, "x", "tip", source);
     chain.prescribed.y = number(t, "y", "tip", source);
     chain.prescribed.theta = number(t, "theta", "tip", source);
   }
   if (const toml::node* node = root.get("node_load")) {
     const toml::array* loads = node->as_array();
-    if (loads == nullptr) fail(source, line_of(*node), "node_load must be an array of tables");
+    if (loads == nullptr) toml_fail(source, line_of(*node), "node_load must be an array of tables");
     int i = 0;
     for (const toml::node& n : *loads) {
       const std::string where = fmt::format("node_load {}", ++i);
       const toml::table& t = as_table(n, where, source);
-      check_keys(t, {"node", "Fx", "Fy", "M"}, where, source);
+      check_toml_keys(t, {"node", "Fx", "Fy", "M"}, where, source);
       NodeLoad load;
       const double node_index = required_number(t, "node", where, source, line_of(t));
       if (node_index != std::floor(node_index)) {
-        fail(source, line_of(t), where + ".node must be an integer joint index");
+        toml_fail(source, line_of(t), where + ".node must be an integer joint index");
       }
       load.node = static_cast<int>(node_index);
       load.Fx = number(t, "Fx", where, source).value_or(0.0);

@@ -7,31 +7,15 @@
 #include <set>
 #include <sstream>
 
+#include "io/toml_support.h"
 #include "solver/common/errors.h"
 
 namespace flexure::mechanism {
 namespace {
 
-int line_of(const toml::node& node) { return static_cast<int>(node.source().begin.line); }
-
-[[noreturn]] void fail(const std::string& source, int line, const std::string& what) {
-  throw InvalidInput(fmt::format("{}:{}: {}", source, line, what));
-}
-
-void check_keys(const toml::table& table,
-                const std::set<std::string>& allowed,
-                const std::string& where,
-                const std::string& source) {
-  for (const auto& [key, value] : table) {
-    if (allowed.count(std::string(key.str())) == 0) {
-      std::string list;
-      for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
-      fail(source,
-           line_of(value),
-           fmt::format("unknown key '{}' in {} (allowed: {})", key.str(), where, list));
-    }
-  }
-}
+using io::check_toml_keys;
+using io::line_of;
+using io::toml_fail;
 
 // A positive finite number at `key` (required unless `fallback` is given).
 double positive(const toml::table& t,
@@ -43,14 +27,14 @@ double positive(const toml::table& t,
   const toml::node* node = t.get(key);
   if (node == nullptr) {
     if (fallback) return *fallback;
-    fail(source, table_line, fmt::format("{} is missing the required key '{}'", where, key));
+    toml_fail(source, table_line, fmt::format("{} is missing the required key '{}'", where, key));
   }
   const std::optional<double> v = node->value<double>();
-  if (!v) fail(source, line_of(*node), fmt::format("{}.{} must be a number", where, key));
+  if (!v) toml_fail(source, line_of(*node), fmt::format("{}.{} must be a number", where, key));
   if (!std::isfinite(*v) || *v <= 0.0) {
-    fail(source,
-         line_of(*node),
-         fmt::format("{}.{} must be finite and > 0 (got {})", where, key, *v));
+    toml_fail(source,
+              line_of(*node),
+              fmt::format("{}.{} must be finite and > 0 (got {})", where, key, *v));
   }
   return *v;
 }
@@ -67,7 +51,7 @@ MechanismDesign parse_mechanism_toml(const std::string& text, const std::string&
     throw InvalidInput(fmt::format(
         "{}:{}: TOML syntax error: {}", source, e.source().begin.line, e.description()));
   }
-  check_keys(
+  check_toml_keys(
       root,
       {"name", "config", "note", "r2", "r3", "stroke", "material", "ground", "middle", "slider"},
       "the file",
@@ -77,30 +61,30 @@ MechanismDesign parse_mechanism_toml(const std::string& text, const std::string&
   d.note = root["note"].value_or(std::string());
   const toml::node* config = root.get("config");
   if (config == nullptr || !config->is_string()) {
-    fail(source,
-         1,
-         "the file needs config = \"lpp\" (one of spp, lpp, psp, plp, ssp, slp, sps, "
-         "lps, sss)");
+    toml_fail(source,
+              1,
+              "the file needs config = \"lpp\" (one of spp, lpp, psp, plp, ssp, slp, sps, "
+              "lps, sss)");
   }
   d.config = **config->as_string();
   const cfm::CfmConfiguration* cfg = nullptr;
   try {
     cfg = &cfm::find_cfm_configuration(d.config);
   } catch (const InvalidInput& e) {
-    fail(source, line_of(*config), fmt::format("config: {}", e.what()));
+    toml_fail(source, line_of(*config), fmt::format("config: {}", e.what()));
   }
   d.r2 = positive(root, "r2", "the file", source, 1);
   d.r3 = positive(root, "r3", "the file", source, 1);
   d.stroke = positive(root, "stroke", "the file", source, 1);
   const toml::node* mat = root.get("material");
   if (mat == nullptr || !mat->is_table()) {
-    fail(source,
-         mat ? line_of(*mat) : 1,
-         "the file needs a [material] table with E and "
-         "yield_strength");
+    toml_fail(source,
+              mat ? line_of(*mat) : 1,
+              "the file needs a [material] table with E and "
+              "yield_strength");
   }
   const toml::table& m = *mat->as_table();
-  check_keys(m, {"E", "yield_strength", "name"}, "[material]", source);
+  check_toml_keys(m, {"E", "yield_strength", "name"}, "[material]", source);
   d.E = positive(m, "E", "material", source, line_of(m));
   d.yield_strength = positive(m, "yield_strength", "material", source, line_of(m));
   for (int p = 1; p <= 3; ++p) {
@@ -110,30 +94,31 @@ MechanismDesign parse_mechanism_toml(const std::string& text, const std::string&
     j.type = cfg->pivots[p - 1];
     if (j.type == PivotType::kPin) {
       if (node != nullptr) {
-        fail(source,
-             line_of(*node),
-             fmt::format("[{}]: pivot {} of configuration '{}' is a pin and takes no table",
-                         name,
-                         p,
-                         d.config));
+        toml_fail(source,
+                  line_of(*node),
+                  fmt::format("[{}]: pivot {} of configuration '{}' is a pin and takes no table",
+                              name,
+                              p,
+                              d.config));
       }
       continue;
     }
     if (node == nullptr || !node->is_table()) {
-      fail(source,
-           node ? line_of(*node) : 1,
-           fmt::format("configuration '{}' needs a [{}] table (thickness, width{})",
-                       d.config,
-                       name,
-                       j.type == PivotType::kSmall ? ", optional length" : ""));
+      toml_fail(source,
+                node ? line_of(*node) : 1,
+                fmt::format("configuration '{}' needs a [{}] table (thickness, width{})",
+                            d.config,
+                            name,
+                            j.type == PivotType::kSmall ? ", optional length" : ""));
     }
     const toml::table& t = *node->as_table();
     if (j.type == PivotType::kSmall) {
-      check_keys(t, {"thickness", "width", "length"}, "[" + name + "]", source);
+      check_toml_keys(t, {"thickness", "width", "length"}, "[" + name + "]", source);
       j.length = positive(t, "length", name, source, line_of(t), 0.0);
     } else {
       // An l segment is r/gamma long by definition (thesis Table 8.1): its length is derived.
-      check_keys(t, {"thickness", "width"}, "[" + name + "] (l segment, length = r/0.85)", source);
+      check_toml_keys(
+          t, {"thickness", "width"}, "[" + name + "] (l segment, length = r/0.85)", source);
     }
     j.thickness = positive(t, "thickness", name, source, line_of(t));
     j.width = positive(t, "width", name, source, line_of(t));
