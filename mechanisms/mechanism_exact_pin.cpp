@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 
+#include "mechanisms/broyden_newton_2d.h"
 #include "mechanisms/mechanism_exact.h"
 #include "mechanisms/mechanism_prbm.h"
 
@@ -77,53 +78,32 @@ ExactPoint ExactMechanismSolver::solve_pinned_middle(double displacement,
   // Jacobian d(mismatch)/dP: the previous point's (Broyden-updated) one when there is one --
   // nondimensional, so it carries over -- refreshed by finite differences when a step fails.
   Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
-  bool have_J = false, fresh_J = false;
+  bool have_J = false;
   if (previous != nullptr && previous->converged && previous->jacobian[0] != 0.0) {
     J << previous->jacobian[0], previous->jacobian[1], previous->jacobian[2], previous->jacobian[3];
     have_J = true;
   }
-  int it = 0;
-  for (; e.ok && e.r.norm() > options_.position_tolerance && it < options_.max_newton_iterations;
-       ++it) {
-    m0c = -e.crank.reaction.M;
-    m0k = -e.coupler.reaction.M;
-    if (!have_J) {
-      const double h = 1e-7 * std::max(P.norm(), 1e-12);
-      const Eval ex = evaluate(P + Eigen::Vector2d(h, 0.0));
-      const Eval ey = evaluate(P + Eigen::Vector2d(0.0, h));
-      if (!ex.ok || !ey.ok) {
-        e = ex.ok ? ey : ex;
-        break;
-      }
-      J.col(0) = (ex.r - e.r) / h;
-      J.col(1) = (ey.r - e.r) / h;
-      have_J = fresh_J = true;
-    }
-    const Eigen::Vector2d step = J.fullPivLu().solve(-e.r);
-    Eval trial = evaluate(P + step);
-    if (!fresh_J && !(trial.ok && trial.r.norm() < 0.5 * e.r.norm())) {
-      have_J = false;  // stale Jacobian: refresh it and retry from the same point
-      continue;
-    }
-    const bool at_floor = e.r.norm() <= options_.noise_floor;
-    double t = 1.0;
-    for (int k = 0; k < 12 && !at_floor && !(trial.ok && trial.r.norm() < e.r.norm()); ++k) {
-      t *= 0.5;
-      trial = evaluate(P + t * step);
-    }
-    if (!trial.ok || trial.r.norm() >= e.r.norm()) {
-      if (e.r.norm() > options_.noise_floor) {
-        p.message =
-            fmt::format("no decrease of the pivot 2 mismatch {:.3g} m", e.r.norm() * length_scale_);
-        e.ok = false;
-      }
-      break;
-    }
-    const Eigen::Vector2d dx = t * step;
-    J += ((trial.r - e.r) - J * dx) * dx.transpose() / dx.squaredNorm();  // Broyden
-    fresh_J = false;
-    P += dx;
-    e = trial;
+  const BroydenNewtonOutcome outcome = broyden_newton_2d<Eval>(
+      evaluate,
+      P,
+      e,
+      J,
+      have_J,
+      [](const Eigen::Vector2d& x) {
+        const double h = 1e-7 * std::max(x.norm(), 1e-12);
+        return Eigen::Vector2d(h, h);
+      },
+      [&](const Eval& current) {
+        m0c = -current.crank.reaction.M;
+        m0k = -current.coupler.reaction.M;
+      },
+      BroydenNewtonOptions{
+          options_.position_tolerance, options_.noise_floor, options_.max_newton_iterations});
+  const int it = outcome.iterations;
+  if (outcome.stalled) {
+    p.message =
+        fmt::format("no decrease of the pivot 2 mismatch {:.3g} m", e.r.norm() * length_scale_);
+    e.ok = false;
   }
   p.jacobian = {J(0, 0), J(0, 1), J(1, 0), J(1, 1)};
   if (!e.ok) {
@@ -211,48 +191,23 @@ ExactPoint ExactMechanismSolver::solve_pinned_ends(double displacement,
   Eval e = evaluate(u);
   fallback = false;
   Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
-  bool have_J = false, fresh_J = false;
-  int it = 0;
-  for (; e.ok && e.r.norm() > options_.position_tolerance && it < options_.max_newton_iterations;
-       ++it) {
-    m0 = -e.sr.reaction.M;
-    if (!have_J) {
-      const double hF = 1e-7 * std::max(std::abs(u(0)), 1e-12), ha = 1e-7;
-      const Eval eF = evaluate(u + Eigen::Vector2d(hF, 0.0));
-      const Eval ea = evaluate(u + Eigen::Vector2d(0.0, ha));
-      if (!eF.ok || !ea.ok) {
-        e = eF.ok ? ea : eF;
-        break;
-      }
-      J.col(0) = (eF.r - e.r) / hF;
-      J.col(1) = (ea.r - e.r) / ha;
-      have_J = fresh_J = true;
-    }
-    const Eigen::Vector2d step = J.fullPivLu().solve(-e.r);
-    Eval trial = evaluate(u + step);
-    if (!fresh_J && !(trial.ok && trial.r.norm() < 0.5 * e.r.norm())) {
-      have_J = false;  // stale Jacobian: refresh it and retry from the same point
-      continue;
-    }
-    const bool at_floor = e.r.norm() <= options_.noise_floor;
-    double t = 1.0;
-    for (int k = 0; k < 12 && !at_floor && !(trial.ok && trial.r.norm() < e.r.norm()); ++k) {
-      t *= 0.5;
-      trial = evaluate(u + t * step);
-    }
-    if (!trial.ok || trial.r.norm() >= e.r.norm()) {
-      if (e.r.norm() > options_.noise_floor) {
-        p.message =
-            fmt::format("no decrease of the slider mismatch {:.3g} m", e.r.norm() * length_scale_);
-        e.ok = false;
-      }
-      break;
-    }
-    const Eigen::Vector2d dx = t * step;
-    J += ((trial.r - e.r) - J * dx) * dx.transpose() / dx.squaredNorm();  // Broyden
-    fresh_J = false;
-    u += dx;
-    e = trial;
+  const BroydenNewtonOutcome outcome = broyden_newton_2d<Eval>(
+      evaluate,
+      u,
+      e,
+      J,
+      false,
+      [](const Eigen::Vector2d& x) {
+        return Eigen::Vector2d(1e-7 * std::max(std::abs(x(0)), 1e-12), 1e-7);
+      },
+      [&](const Eval& current) { m0 = -current.sr.reaction.M; },
+      BroydenNewtonOptions{
+          options_.position_tolerance, options_.noise_floor, options_.max_newton_iterations});
+  const int it = outcome.iterations;
+  if (outcome.stalled) {
+    p.message =
+        fmt::format("no decrease of the slider mismatch {:.3g} m", e.r.norm() * length_scale_);
+    e.ok = false;
   }
   p.phi = u(1);
   if (!e.ok) {
