@@ -81,10 +81,11 @@ void register_bench_command(CLI::App& app) {
   bench->add_option("--problems",
                     args->options.problems,
                     "Comma-separated problems: cantilever_force, tip_moment, force_and_moment, "
-                    "fixed_guided, post_buckled_column (default all)");
+                    "fixed_guided, post_buckled_column, cfm_stroke (default all)");
   bench->add_option("--methods",
                     args->options.methods,
-                    "Comma-separated methods or families: elliptic, shooting, chain, prbm, or "
+                    "Comma-separated methods or families: elliptic, shooting, chain, prbm, exact "
+                    "(mechanism model, cfm_stroke only), or "
                     "names such as shooting_cvodes_rtol1e-09, chain_N050_inc05 (default all)");
   bench->add_flag("--resume",
                   args->options.resume,

@@ -6,6 +6,10 @@
 //    (fixed-guided beam), so two different solvers (and two integrators) must agree.
 //  * The chain algorithm at N = 50 is within the accuracy its third-order convergence implies, and
 //    the PRBM inside its validity limits within the few-percent accuracy Howell reports.
+//  * cfm_stroke (mechanism 1A-lpp): its groups carry displacement, force and error_force; the
+//    exact group reproduces the reference (the exact model itself) exactly, and the PRBM slider
+//    force is within the accuracy Weight (2001) reports for design example 1 of the exact force,
+//    independently of this bench (the PRBM and the shooting-based exact model share no code path).
 //  * --stop-after leaves a checkpoint (complete = 0) and no results file; --resume reuses the
 //    finished groups bit for bit and removes the checkpoint; bad names exit 2.
 #include <gtest/gtest.h>
@@ -31,6 +35,9 @@ constexpr double kChainN50RelativeTolerance = 1e-3;
 // PRBM inside Theta_max: Howell's position criterion is 0.5 % of the deflection along the path
 // (eq. 5.47), but with the load given the K_theta relation adds a few percent (Table 5.1 fits).
 constexpr double kPrbmRelativeTolerance = 0.1;
+// PRBM slider force of the constant-force mechanism vs its exact model: a few percent over the
+// stroke for the thesis design (docs/mechanisms.md); 0.2 flags a wrong force model or units.
+constexpr double kCfmPrbmForceTolerance = 0.2;
 
 const std::vector<std::string> kProblems = {
     "cantilever_force", "tip_moment", "force_and_moment", "fixed_guided", "post_buckled_column"};
@@ -97,6 +104,7 @@ TEST_F(BenchQuickTest, FileFollowsTheSchema) {
   EXPECT_EQ(read_int_attribute(file, "/", "complete"), 1);
   EXPECT_EQ(group_members(file, "/"),
             std::vector<std::string>({"cantilever_force",
+                                      "cfm_stroke",
                                       "fixed_guided",
                                       "force_and_moment",
                                       "post_buckled_column",
@@ -158,6 +166,52 @@ TEST_F(BenchQuickTest, ExactMethodsAgreeWithAnIndependentReference) {
     }
   }
   EXPECT_GE(checked, 40);
+  H5Fclose(file);
+}
+
+TEST_F(BenchQuickTest, CfmStrokeComparesPrbmWithTheExactMechanismModel) {
+  ASSERT_EQ(result_->exit_code, 0) << result_->err;
+  const hid_t file = open_read_only(*dir_ / "q.h5");
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(read_string_attribute(file, "/cfm_stroke", "mechanism"), "1A-lpp");
+  ASSERT_EQ(group_members(file, "/cfm_stroke"),
+            std::vector<std::string>({"exact", "prbm", "reference"}));
+  const std::vector<double> reference_force = read_doubles(file, "/cfm_stroke/reference/force");
+  ASSERT_GE(reference_force.size(), 2u);
+  for (const std::string method : {"exact", "prbm", "reference"}) {
+    const std::string g = "/cfm_stroke/" + method;
+    const std::vector<double> dx = read_doubles(file, (g + "/displacement").c_str());
+    const std::vector<double> force = read_doubles(file, (g + "/force").c_str());
+    const std::vector<double> error = read_doubles(file, (g + "/error_force").c_str());
+    const std::vector<double> error_relative = read_doubles(file, (g + "/error_relative").c_str());
+    const std::vector<double> seconds = read_doubles(file, (g + "/seconds").c_str());
+    const std::vector<int> status = read_ints(file, (g + "/status").c_str());
+    ASSERT_EQ(dx.size(), reference_force.size()) << g;
+    ASSERT_EQ(force.size(), dx.size()) << g;
+    ASSERT_EQ(error.size(), dx.size()) << g;
+    ASSERT_EQ(seconds.size(), dx.size()) << g;
+    ASSERT_EQ(status.size(), dx.size()) << g;
+    EXPECT_EQ(read_strings(file, (g + "/message").c_str()).size(), dx.size()) << g;
+    for (std::size_t i = 0; i < dx.size(); ++i) {
+      // The stroke runs outward from the straight position.
+      EXPECT_GT(dx[i], i == 0 ? 0.0 : dx[i - 1]) << g;
+      ASSERT_EQ(status[i], 0) << g << " point " << i;
+      EXPECT_TRUE(std::isfinite(force[i]) && force[i] > 0.0) << g << " point " << i;
+      EXPECT_TRUE(std::isfinite(seconds[i]) && seconds[i] > 0.0) << g;
+      if (method == "reference") continue;
+      ASSERT_TRUE(std::isfinite(error[i])) << g << " point " << i;
+      EXPECT_EQ(error_relative[i], error[i]) << g;
+      // The error is the one of the stored forces.
+      EXPECT_NEAR(error[i], std::fabs(force[i] - reference_force[i]) / reference_force[i], 1e-12)
+          << g;
+      if (method == "exact") {
+        // Same model, same continuation: bit-identical to the reference.
+        EXPECT_EQ(error[i], 0.0) << g << " point " << i;
+      } else {
+        EXPECT_LT(error[i], kCfmPrbmForceTolerance) << g << " point " << i;
+      }
+    }
+  }
   H5Fclose(file);
 }
 

@@ -139,9 +139,15 @@ void write_run(io::Hdf5Group& problem_group, const MethodRun& run) {
   g.set_attribute("tolerance", run.tolerance);
   g.set_attribute("elements", static_cast<std::int64_t>(run.elements));
   g.set_attribute("increments", static_cast<std::int64_t>(run.increments));
-  g.set_attribute("units",
-                  "nondimensional: lengths / l, forces * l^2/EI, moments * l/EI, angles rad, "
-                  "seconds s");
+  if (run.displacement.empty()) {
+    g.set_attribute("units",
+                    "nondimensional: lengths / l, forces * l^2/EI, moments * l/EI, angles rad, "
+                    "seconds s");
+  } else {
+    g.set_attribute("units",
+                    "SI: displacement m, force N, error_force relative, seconds s (beam datasets "
+                    "NaN)");
+  }
   g.write_dataset("load_ratio_n", std::span<const double>(run.load_ratio_n));
   g.write_dataset("alpha2", std::span<const double>(run.alpha2));
   g.write_dataset("mu", std::span<const double>(run.mu));
@@ -158,6 +164,11 @@ void write_run(io::Hdf5Group& problem_group, const MethodRun& run) {
   g.write_dataset("inside_validity", std::span<const int>(run.inside_validity));
   if (!run.reference_source.empty()) {
     g.write_dataset("reference_source", std::span<const int>(run.reference_source));
+  }
+  if (!run.displacement.empty()) {
+    g.write_dataset("displacement", std::span<const double>(run.displacement));
+    g.write_dataset("force", std::span<const double>(run.force));
+    g.write_dataset("error_force", std::span<const double>(run.error_force));
   }
   g.write_dataset("message", run.message);
 }
@@ -197,6 +208,11 @@ MethodRun read_run(hid_t group,
   if (H5Lexists(group, "reference_source", H5P_DEFAULT) > 0) {
     r.reference_source = i("reference_source");
   }
+  if (H5Lexists(group, "displacement", H5P_DEFAULT) > 0) {
+    r.displacement = d("displacement");
+    r.force = d("force");
+    r.error_force = d("error_force");
+  }
   r.message = read_strings(group, "message", where);
   return r;
 }
@@ -219,10 +235,11 @@ void write_bench_file(const std::string& path,
   root.set_attribute("complete", static_cast<std::int64_t>(info.complete ? 1 : 0));
   root.set_attribute("units",
                      "nondimensional (l = 1, EI = 1): a/l, b/l; alpha2 = P l^2/EI; mu = M l/EI; "
-                     "angles in rad; time in s");
+                     "angles in rad; time in s; cfm_stroke: SI (displacement m, force N)");
   root.set_attribute("reference",
                      "elliptic solver (tolerance 1e-14) where it applies and converges, else "
-                     "shooting on CVODES at rtol 1e-12, atol 1e-14; per load in "
+                     "shooting on CVODES at rtol 1e-12, atol 1e-14; cfm_stroke: the exact "
+                     "mechanism model (ExactMechanismSolver, shooting rtol 1e-12); per load in "
                      "<problem>/reference/reference_source");
   root.set_attribute("timing", "seconds = median wall time of `repeats` solves, one thread");
   for (const BenchProblem& p : problems) {
@@ -231,7 +248,8 @@ void write_bench_file(const std::string& path,
     if (!any) continue;
     io::Hdf5Group pg = root.create_group(p.name);
     pg.set_attribute("description", p.description);
-    pg.set_attribute("boundary", to_string(p.boundary));
+    pg.set_attribute("boundary", p.is_mechanism() ? "mechanism" : to_string(p.boundary));
+    if (p.is_mechanism()) pg.set_attribute("mechanism", p.mechanism);
     pg.set_attribute("load_points", static_cast<std::int64_t>(p.points.size()));
     for (const MethodRun& r : runs) {
       if (r.problem == p.name) write_run(pg, r);

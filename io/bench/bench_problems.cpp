@@ -8,6 +8,8 @@
 #include <set>
 #include <sstream>
 
+#include "mechanisms/mechanism.h"
+#include "mechanisms/mechanism_prbm.h"
 #include "solver/common/errors.h"
 
 namespace flexure::bench {
@@ -43,6 +45,8 @@ const char* to_string(MethodFamily family) {
       return "chain";
     case MethodFamily::kPrbm:
       return "prbm";
+    case MethodFamily::kMechanismExact:
+      return "exact";
   }
   return "unknown";
 }
@@ -54,7 +58,8 @@ std::vector<BenchProblem> standard_problems(bool quick) {
     BenchProblem p{"cantilever_force",
                    "Cantilever, tip force Fx = -n alpha2, Fy = alpha2 (Howell eq. 2.83)",
                    EndCondition::kFree,
-                   {}};
+                   {},
+                   ""};
     const std::vector<double> alpha2s =
         quick ? std::vector<double>{1.0, 5.0, 20.0}
               : std::vector<double>{0.5, 1, 2, 3, 4, 5, 7.5, 10, 12.5, 15, 17.5, 20};
@@ -69,7 +74,8 @@ std::vector<BenchProblem> standard_problems(bool quick) {
                    "Cantilever, pure tip moment mu = M l/EI up to 2 pi (circular arc, Howell eq. "
                    "2.59)",
                    EndCondition::kFree,
-                   {}};
+                   {},
+                   ""};
     for (double mu : linspace(
              2.0 * std::numbers::pi / (quick ? 3 : 12), 2.0 * std::numbers::pi, quick ? 3 : 12)) {
       p.points.push_back({0.0, 0.0, mu});
@@ -81,7 +87,8 @@ std::vector<BenchProblem> standard_problems(bool quick) {
                    "Cantilever, transverse tip force alpha2 with a tip moment mu = -alpha2/4 "
                    "(n = 0): the moment opposes the force, the shape has an inflection point",
                    EndCondition::kFree,
-                   {}};
+                   {},
+                   ""};
     for (double a : quick ? linspace(2.0, 10.0, 2) : linspace(1.0, 12.0, 12)) {
       p.points.push_back({0.0, a, -0.25 * a});
     }
@@ -92,7 +99,8 @@ std::vector<BenchProblem> standard_problems(bool quick) {
                    "Fixed-guided beam: tip held at theta = 0, transverse force alpha2 (Howell "
                    "§5.3)",
                    EndCondition::kGuided,
-                   {}};
+                   {},
+                   ""};
     for (double a : quick ? linspace(5.0, 20.0, 2) : linspace(2.0, 40.0, 12)) {
       p.points.push_back({0.0, a, 0.0});
     }
@@ -105,9 +113,27 @@ std::vector<BenchProblem> standard_problems(bool quick) {
                    "Cantilever column, axial compression P = 50 alpha2 from 0.4 to 8 Euler "
                    "loads (pi^2/4) with a lateral force alpha2 = P/50",
                    EndCondition::kFree,
-                   {}};
+                   {},
+                   ""};
     for (double P : quick ? linspace(2.0, 15.0, 2) : linspace(1.0, 20.0, 12)) {
       p.points.push_back({50.0, P / 50.0, 0.0});
+    }
+    problems.push_back(p);
+  }
+  {
+    // Thesis design example 1 (Weight 2001, Table 8.4): the slider travels its whole stroke.
+    BenchProblem p{"cfm_stroke",
+                   "Constant-force mechanism 1A-lpp (thesis design example 1), slider input "
+                   "force over the stroke Delta x = k stroke/K, k = 1..K",
+                   EndCondition::kFree,
+                   {},
+                   "1A-lpp"};
+    const mechanism::MechanismDesign design = mechanism::find_builtin_mechanism(p.mechanism);
+    for (double dx :
+         mechanism::stroke_displacements(design, quick ? kCfmQuickPoints : kCfmPoints)) {
+      LoadPoint load;
+      load.displacement = dx;
+      p.points.push_back(load);
     }
     problems.push_back(p);
   }
@@ -145,11 +171,19 @@ std::vector<BenchMethod> standard_methods(bool quick) {
     }
   }
   methods.push_back({"prbm", MethodFamily::kPrbm});
+  methods.push_back({"exact", MethodFamily::kMechanismExact});
   return methods;
 }
 
 bool method_applies(const BenchMethod& method, const BenchProblem& problem) {
+  // The mechanism assembler has a PRBM and an exact (shooting) model of a whole mechanism; the
+  // beam solvers take one beam and are not run on it.
+  if (problem.is_mechanism()) {
+    return method.family == MethodFamily::kPrbm || method.family == MethodFamily::kMechanismExact;
+  }
   switch (method.family) {
+    case MethodFamily::kMechanismExact:
+      return false;
     case MethodFamily::kElliptic:
       return problem.elliptic_applies();
     case MethodFamily::kPrbm:
@@ -192,7 +226,7 @@ std::vector<BenchMethod> select_methods(const std::vector<BenchMethod>& all,
       return m.name == w || w == to_string(m.family);
     });
     if (!known) {
-      std::vector<std::string> names{"elliptic", "shooting", "chain", "prbm"};
+      std::vector<std::string> names{"elliptic", "shooting", "chain", "prbm", "exact"};
       for (const auto& m : all) {
         if (m.family == MethodFamily::kShooting || m.family == MethodFamily::kChain) {
           names.push_back(m.name);

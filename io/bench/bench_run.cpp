@@ -21,6 +21,8 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Below this tip displacement (per l) the relative error is not meaningful; it is taken relative
 // to this floor instead (the unloaded beam would otherwise divide by zero).
 constexpr double kDisplacementFloor = 1e-9;
+// The same for the slider force of a mechanism problem, N.
+constexpr double kForceFloor = 1e-12;
 
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
@@ -34,15 +36,11 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 // Times solves of one load: the first result is kept, repeats give the median. Slow solves are
 // repeated less so that the full run stays within minutes.
-PointSolution timed_solve(const BenchMethod& method,
-                          const BenchProblem& problem,
-                          const LoadPoint& load,
-                          bool quick,
-                          double& seconds,
-                          int& repeats) {
+template <typename Solve>
+PointSolution timed_solve(Solve&& solve, bool quick, double& seconds, int& repeats) {
   std::vector<double> times;
   auto t0 = std::chrono::steady_clock::now();
-  const PointSolution first = solve_point(method, problem, load);
+  const PointSolution first = solve();
   times.push_back(seconds_since(t0));
   int target = quick ? 3 : 7;
   if (times[0] > 0.5) {
@@ -52,7 +50,7 @@ PointSolution timed_solve(const BenchMethod& method,
   }
   while (static_cast<int>(times.size()) < target) {
     t0 = std::chrono::steady_clock::now();
-    (void)solve_point(method, problem, load);
+    (void)solve();
     times.push_back(seconds_since(t0));
   }
   seconds = median(times);
@@ -60,15 +58,34 @@ PointSolution timed_solve(const BenchMethod& method,
   return first;
 }
 
-void push_point(
-    MethodRun& run, const LoadPoint& load, const PointSolution& s, double seconds, int repeats) {
-  run.load_ratio_n.push_back(load.load_ratio_n);
-  run.alpha2.push_back(load.alpha2);
-  run.mu.push_back(load.mu);
+PointSolution timed_solve(const BenchMethod& method,
+                          const BenchProblem& problem,
+                          const LoadPoint& load,
+                          bool quick,
+                          double& seconds,
+                          int& repeats) {
+  return timed_solve([&] { return solve_point(method, problem, load); }, quick, seconds, repeats);
+}
+
+void push_point(MethodRun& run,
+                const BenchProblem& problem,
+                const LoadPoint& load,
+                const PointSolution& s,
+                double seconds,
+                int repeats) {
+  const bool beam = !problem.is_mechanism();
+  run.load_ratio_n.push_back(beam ? load.load_ratio_n : kNaN);
+  run.alpha2.push_back(beam ? load.alpha2 : kNaN);
+  run.mu.push_back(beam ? load.mu : kNaN);
   const bool ok = s.status == kStatusConverged;
-  run.a_over_l.push_back(ok ? s.tip.a_over_l : kNaN);
-  run.b_over_l.push_back(ok ? s.tip.b_over_l : kNaN);
-  run.theta0.push_back(ok ? s.tip.theta0 : kNaN);
+  run.a_over_l.push_back(ok && beam ? s.tip.a_over_l : kNaN);
+  run.b_over_l.push_back(ok && beam ? s.tip.b_over_l : kNaN);
+  run.theta0.push_back(ok && beam ? s.tip.theta0 : kNaN);
+  if (!beam) {
+    run.displacement.push_back(load.displacement);
+    run.force.push_back(ok ? s.force : kNaN);
+    run.error_force.push_back(kNaN);
+  }
   run.seconds.push_back(seconds);
   run.repeats.push_back(repeats);
   run.status.push_back(s.status);
@@ -87,6 +104,15 @@ void fill_errors(MethodRun& run, const MethodRun& reference) {
       run.status[i] = kStatusNoReference;
       continue;
     }
+    if (!run.force.empty()) {
+      // Mechanism: relative slider-force error (the stroke never reaches F = 0 for a
+      // constant-force design; the floor only guards the division).
+      const double e = std::fabs(run.force[i] - reference.force[i]) /
+                       std::max(std::fabs(reference.force[i]), kForceFloor);
+      run.error_force[i] = e;
+      run.error_relative[i] = e;
+      continue;
+    }
     const double da = run.a_over_l[i] - reference.a_over_l[i];
     const double db = run.b_over_l[i] - reference.b_over_l[i];
     const double e = std::hypot(da, db);
@@ -101,6 +127,13 @@ void fill_errors(MethodRun& run, const MethodRun& reference) {
 
 bool same_points(const MethodRun& run, const BenchProblem& problem) {
   if (run.size() != problem.points.size()) return false;
+  if (problem.is_mechanism()) {
+    if (run.displacement.size() != problem.points.size()) return false;
+    for (std::size_t i = 0; i < run.size(); ++i) {
+      if (run.displacement[i] != problem.points[i].displacement) return false;
+    }
+    return true;
+  }
   for (std::size_t i = 0; i < run.size(); ++i) {
     const LoadPoint& p = problem.points[i];
     if (run.load_ratio_n[i] != p.load_ratio_n || run.alpha2[i] != p.alpha2 || run.mu[i] != p.mu) {
@@ -132,10 +165,46 @@ std::string summarize(const MethodRun& run) {
 
 std::string checkpoint_path(const std::string& out) { return out + ".partial"; }
 
+namespace {
+
+// A mechanism problem: the stroke is traced point by point (the exact model continues from the
+// previous point); each point is timed as the median of repeated solves of that point. The
+// reference is the exact model itself.
+MethodRun run_mechanism_method(const BenchProblem& problem,
+                               const BenchMethod* method,
+                               const MethodRun* reference,
+                               bool quick) {
+  MethodRun run;
+  run.problem = problem.name;
+  const MethodFamily family = method ? method->family : MethodFamily::kMechanismExact;
+  run.method = method ? method->name : "reference";
+  run.family = method ? to_string(family) : "reference";
+  // ExactMechanismSolver::Options: inner shooting rtol 1e-12; the PRBM is closed form.
+  run.tolerance = family == MethodFamily::kMechanismExact ? 1e-12 : 0.0;
+  if (family == MethodFamily::kMechanismExact) run.backend = "dormand-prince";
+  CfmStrokeSolver solver(problem.mechanism);
+  for (const LoadPoint& load : problem.points) {
+    double seconds = 0.0;
+    int repeats = 0;
+    const PointSolution s = timed_solve([&] { return solver.solve(family, load.displacement); },
+                                        method ? quick : true,
+                                        seconds,
+                                        repeats);
+    solver.accept_last();
+    push_point(run, problem, load, s, seconds, repeats);
+    if (method == nullptr) run.reference_source.push_back(2);
+  }
+  if (reference) fill_errors(run, *reference);
+  return run;
+}
+
+}  // namespace
+
 MethodRun run_method(const BenchProblem& problem,
                      const BenchMethod* method,
                      const MethodRun* reference,
                      bool quick) {
+  if (problem.is_mechanism()) return run_mechanism_method(problem, method, reference, quick);
   MethodRun run;
   run.problem = problem.name;
   if (method == nullptr) {
@@ -158,7 +227,7 @@ MethodRun run_method(const BenchProblem& problem,
         s = timed_solve(shooting, problem, load, true, seconds, repeats);
         source = 1;
       }
-      push_point(run, load, s, seconds, repeats);
+      push_point(run, problem, load, s, seconds, repeats);
       run.reference_source.push_back(source);
     }
     return run;
@@ -180,7 +249,7 @@ MethodRun run_method(const BenchProblem& problem,
     double seconds = 0.0;
     int repeats = 0;
     const PointSolution s = timed_solve(*method, problem, load, quick, seconds, repeats);
-    push_point(run, load, s, seconds, repeats);
+    push_point(run, problem, load, s, seconds, repeats);
   }
   if (reference) fill_errors(run, *reference);
   return run;

@@ -1,12 +1,16 @@
 #include "io/bench/bench_solve.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <exception>
 
 #include "elements/end_moment_segment.h"
 #include "elements/fixed_guided_segment.h"
 #include "elements/fixed_pinned_segment.h"
+#include "mechanisms/mechanism_prbm.h"
 #include "solver/chain/chain_algorithm_solver.h"
+#include "solver/common/errors.h"
 #include "solver/elliptic/elliptic_solver.h"
 #include "solver/shooting/shooting_solver.h"
 
@@ -48,6 +52,47 @@ PointSolution solve_prbm(const BenchProblem& problem, const LoadPoint& load) {
 }
 
 }  // namespace
+
+CfmStrokeSolver::CfmStrokeSolver(const std::string& mechanism)
+    : exact_(mechanism::find_builtin_mechanism(mechanism)) {}
+
+PointSolution CfmStrokeSolver::solve(MethodFamily family, double displacement) {
+  PointSolution out;
+  try {
+    if (family == MethodFamily::kPrbm) {
+      const mechanism::PrbmState state = mechanism::prbm_state(exact_.design(), displacement);
+      require_finite(state.force, "PRBM slider force");
+      out.status = kStatusConverged;
+      out.force = state.force;
+      out.iterations = 0;  // closed form (thesis eq. 2.14)
+      return out;
+    }
+    if (family != MethodFamily::kMechanismExact) {
+      throw InvalidInput(fmt::format(
+          "method family '{}' has no mechanism model (use prbm or exact)", to_string(family)));
+    }
+    mechanism::ExactPoint p = exact_.solve(displacement, previous_ ? &previous_.value() : nullptr);
+    out.status = p.converged ? kStatusConverged : kStatusNotConverged;
+    out.force = p.force;
+    out.iterations = p.iterations;
+    if (!p.converged) {
+      out.message = p.message;
+      last_.reset();
+    } else {
+      last_ = std::move(p);
+    }
+  } catch (const std::exception& e) {
+    out = PointSolution{};
+    out.status = kStatusError;
+    out.message = e.what();
+    last_.reset();
+  }
+  return out;
+}
+
+void CfmStrokeSolver::accept_last() {
+  if (last_) previous_ = last_;
+}
 
 BenchMethod reference_shooting_method() {
   BenchMethod m;
@@ -101,6 +146,8 @@ PointSolution solve_point(const BenchMethod& method,
       case MethodFamily::kPrbm:
         out = solve_prbm(problem, load);
         break;
+      case MethodFamily::kMechanismExact:
+        throw InvalidInput("the exact mechanism model solves mechanism problems only");
     }
   } catch (const std::exception& e) {
     out = PointSolution{};

@@ -15,6 +15,7 @@ struct LoadPoint {
   double load_ratio_n = 0.0;
   double alpha2 = 0.0;
   double mu = 0.0;
+  double displacement = 0.0;  // cfm_stroke only: slider displacement Delta x, m
 };
 
 struct BenchProblem {
@@ -22,11 +23,17 @@ struct BenchProblem {
   std::string description;                      // one sentence, stored as an attribute
   EndCondition boundary = EndCondition::kFree;  // kFree (cantilever) or kGuided (fixed-guided)
   std::vector<LoadPoint> points;
+  // Non-empty: a constant-force mechanism stroke of this built-in design (mechanisms/mechanism.h);
+  // its points are slider displacements, not beam loads, and only prbm and exact apply.
+  std::string mechanism;
+  bool is_mechanism() const { return !mechanism.empty(); }
   // The elliptic solver solves Howell's free cantilever with dead loads only.
-  bool elliptic_applies() const { return boundary == EndCondition::kFree; }
+  bool elliptic_applies() const { return boundary == EndCondition::kFree && !is_mechanism(); }
 };
 
-enum class MethodFamily { kElliptic, kShooting, kChain, kPrbm };
+// kMechanismExact: the exact (shooting-based) mechanism model, ExactMechanismSolver; mechanism
+// problems only.
+enum class MethodFamily { kElliptic, kShooting, kChain, kPrbm, kMechanismExact };
 const char* to_string(MethodFamily family);
 
 struct BenchMethod {
@@ -63,8 +70,14 @@ struct MethodRun {
   std::vector<int> status;                         // kStatus*
   std::vector<int> iterations;                     // the solver's own iteration count
   std::vector<int> inside_validity;   // PRBM: 1 inside Theta_max, 0 outside; -1 other methods
-  std::vector<int> reference_source;  // reference group only: 0 elliptic, 1 shooting rtol 1e-12
-  std::vector<std::string> message;   // empty when converged, else why not
+  std::vector<int> reference_source;  // reference group only: 0 elliptic, 1 shooting rtol 1e-12,
+                                      // 2 exact mechanism model (cfm_stroke)
+  // cfm_stroke only (empty otherwise); there error_relative = error_force and the beam datasets
+  // (inputs, a_over_l, b_over_l, theta0, error_position, error_theta0) are NaN.
+  std::vector<double> displacement;  // slider displacement Delta x, m
+  std::vector<double> force;         // slider input force, N (NaN when status != 0 and != 3)
+  std::vector<double> error_force;   // |force - reference force| / |reference force|
+  std::vector<std::string> message;  // empty when converged, else why not
 
   std::size_t size() const { return alpha2.size(); }
   std::string key() const { return problem + "/" + method; }
