@@ -7,12 +7,16 @@
 //                                             Table 10.1 row), printed values beside the computed
 //   flexure cfm --list [--json]               the built-in sub-classes and table rows
 //   flexure cfm --table [--markdown|--json]   every printed row recomputed (exit 1 if one fails)
+//   ... --exact [--exact-points N]            also the exact (elastica) model of the same
+//                                             mechanism (mechanisms/cfm/cfm_exact.h); with
+//                                             --table: PRBM vs exact for the sub-class rows
 //
 // A stroke past the toggle position is clamped as in the thesis (stroke_percent reports the
 // effective stroke) with a warning on stderr.
 #include <fmt/format.h>
 
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -24,6 +28,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "mechanisms/cfm/cfm_comparison.h"
+#include "mechanisms/cfm/cfm_exact.h"
 #include "mechanisms/cfm/cfm_model.h"
 #include "mechanisms/cfm/cfm_subclasses.h"
 #include "solver/common/errors.h"
@@ -58,13 +63,82 @@ struct CfmArgs {
   bool table = false;
   bool markdown = false;
   bool json = false;
+  bool exact = false;
+  int exact_points = 50;
+  int exact_max_iterations = 0;
+  std::string exact_rows = "a";
   CLI::Option* config_option = nullptr;
   CLI::Option* R_option = nullptr;
   CLI::Option* K1_option = nullptr;
   CLI::Option* K2_option = nullptr;
   CLI::Option* d_option = nullptr;
   CLI::Option* points_option = nullptr;
+  CLI::Option* exact_points_option = nullptr;
+  CLI::Option* exact_max_iterations_option = nullptr;
+  CLI::Option* exact_rows_option = nullptr;
 };
+
+cfm::CfmExactOptions make_exact_options(const CfmArgs& args) {
+  cfm::CfmExactOptions options;
+  require_in_range(
+      args.exact_points, "--exact-points (stroke points of the exact model)", 2, 100000);
+  options.points = args.exact_points;
+  if (*args.exact_max_iterations_option) {
+    // Diagnostic: caps every Newton iteration count of the exact solve (shooting Newton, the
+    // middle-pin Newton, continuation steps), e.g. to see where a hard point stops.
+    require_in_range(args.exact_max_iterations, "--exact-max-iterations", 1, 1000);
+    options.solver.shooting.newton.max_iterations = args.exact_max_iterations;
+    options.solver.shooting.continuation.max_steps = args.exact_max_iterations;
+    options.solver.max_newton_iterations = args.exact_max_iterations;
+  }
+  return options;
+}
+
+cfm::CfmExactResult solve_exact_or_throw(const CfmResult& r, const CfmArgs& args) {
+  cfm::CfmExactResult e = cfm::solve_cfm_exact(r, make_exact_options(args));
+  if (!e.converged) throw NoConvergence("cfm --exact: exact model: " + e.message);
+  return e;
+}
+
+void add_exact_json(Json& j, const cfm::CfmExactResult& e, bool curve) {
+  j["Phi_exact"] = e.Phi_exact;
+  j["percent_constant_force_exact"] = e.percent_constant_force_exact;
+  j["max_force_error"] = e.max_force_error;
+  j["max_force_error_at_stroke_percent"] = e.max_force_error_at_percent;
+  j["exact_points"] = e.stroke_percent.size();
+  // The PRBM on the exact model's grid (equally spaced points), for a like-for-like comparison.
+  j["Phi_prbm_exact_grid"] = e.Phi_prbm_mean;
+  j["percent_constant_force_prbm_exact_grid"] = e.percent_constant_force_prbm;
+  j["exact_iterations"] = e.iterations;
+  j["exact_residual"] = e.residual;
+  j["exact_message"] = e.message;
+  if (curve) {
+    j["exact_curve"] = {{"stroke_percent", e.stroke_percent},
+                        {"Phi_prbm", e.Phi_prbm},
+                        {"Phi_exact", e.Phi_exact_curve}};
+  }
+}
+
+void print_exact_report(const cfm::CfmExactResult& e, bool curve) {
+  fmt::print("  exact model ({} equally spaced points, r2 + r3 = 1, E = 1):\n",
+             e.stroke_percent.size());
+  fmt::print("    Phi exact         = {:.6f}   (PRBM on the same points {:.6f})\n",
+             e.Phi_exact,
+             e.Phi_prbm_mean);
+  fmt::print("    percent constant  = {:.4f} %   (PRBM on the same points {:.4f} %)\n",
+             e.percent_constant_force_exact,
+             e.percent_constant_force_prbm);
+  fmt::print("    max force error   = {:.4f} % of the exact force, at d = {:.3f} %\n",
+             100.0 * e.max_force_error,
+             e.max_force_error_at_percent);
+  if (!curve) return;
+  for (std::size_t k = 0; k < e.stroke_percent.size(); ++k) {
+    fmt::print("    {:10.5f} %  Phi PRBM = {:.8f}  Phi exact = {:.8f}\n",
+               e.stroke_percent[k],
+               e.Phi_prbm[k],
+               e.Phi_exact_curve[k]);
+  }
+}
 
 CfmOptions make_options(const CfmArgs& args, StrokeSampling default_sampling) {
   CfmOptions options;
@@ -223,10 +297,15 @@ void run_config(const CfmArgs& args) {
   const CfmOptions options = make_options(args, StrokeSampling::kThesisCode);
   const CfmResult r = evaluate_or_throw(CfmModel(options), p);
   warn_if_clamped(r);
+  std::optional<cfm::CfmExactResult> e;
+  if (args.exact) e = solve_exact_or_throw(r, args);
   if (args.json) {
-    print_json(result_json(r, options));
+    Json j = result_json(r, options);
+    if (e) add_exact_json(j, *e, args.curve);
+    print_json(j);
   } else {
     print_report(r, options);
+    if (e) print_exact_report(*e, args.curve);
   }
 }
 
@@ -251,8 +330,11 @@ void run_subclass(const CfmArgs& args) {
     const CfmOptions options = make_options(args, StrokeSampling::kUniform);
     const CfmResult r = evaluate_or_throw(CfmModel(options), cfm::parameters_of(*row));
     warn_if_clamped(r);
+    std::optional<cfm::CfmExactResult> e;
+    if (args.exact) e = solve_exact_or_throw(r, args);
     if (args.json) {
       Json j = result_json(r, options);
+      if (e) add_exact_json(j, *e, args.curve);
       j["subclass"] = row->name;
       j["printed"] = {{"Xi", row->Xi},
                       {"Phi", row->Phi},
@@ -267,6 +349,7 @@ void run_subclass(const CfmArgs& args) {
                  row->Xi,
                  row->Phi,
                  row->reproducible ? "" : "  (not reproducible from the printed inputs, see docs)");
+      if (e) print_exact_report(*e, args.curve);
     }
     return;
   }
@@ -274,8 +357,11 @@ void run_subclass(const CfmArgs& args) {
   const CfmOptions options = make_options(args, StrokeSampling::kThesisCode);
   const CfmResult r = evaluate_or_throw(CfmModel(options), cfm::parameters_of(row));
   warn_if_clamped(r);
+  std::optional<cfm::CfmExactResult> e;
+  if (args.exact) e = solve_exact_or_throw(r, args);
   if (args.json) {
     Json j = result_json(r, options);
+    if (e) add_exact_json(j, *e, args.curve);
     j["subclass"] = row.name;
     j["printed"] = printed_subclass_json(row);
     for (const cfm::CfmThicknessRatios& ratios : cfm::thesis_thickness_ratios()) {
@@ -299,6 +385,7 @@ void run_subclass(const CfmArgs& args) {
       row.Psi,
       row.primary_pivot,
       row.d_N_max);
+  if (e) print_exact_report(*e, args.curve);
 }
 
 void run_list(const CfmArgs& args) {
@@ -566,6 +653,78 @@ void run_table(const CfmArgs& args) {
   if (!all_ok) set_exit_code(kExitCheckFailed);
 }
 
+// --table --exact: the thesis sub-classes (the nine "a" rows, or all 68) solved with the exact
+// model. The thesis optimised the PRBM only, so Phi and Xi' differ; docs/validation.md lists them.
+void run_exact_table(const CfmArgs& args) {
+  if (args.exact_rows != "a" && args.exact_rows != "all") {
+    throw InvalidInput(
+        fmt::format("--exact-rows = '{}' is unknown; allowed: a, all", args.exact_rows));
+  }
+  bool all_converged = true;
+  Json rows = Json::array();
+  if (args.markdown) {
+    fmt::print(
+        "| Sub-class | d (eff.) | Phi printed | Phi PRBM | Phi exact | Xi' printed | Xi' PRBM | "
+        "Xi' exact | max force error (at d) |\n|---|---|---|---|---|---|---|---|---|\n");
+  } else if (!args.json) {
+    fmt::print(
+        "Thesis sub-classes, PRBM and exact model on {} equally spaced points (Phi, Xi' in %)\n",
+        args.exact_points);
+  }
+  for (const CfmSubclass& row : cfm::thesis_subclasses()) {
+    const std::string name = row.name;
+    // Sub-class "a" of each configuration: "lpp-a", "slp-aIo" (not "lpp-a99", "slp-a90I").
+    const std::size_t dash = name.find('-');
+    const bool is_a = name.size() > dash + 1 && name[dash + 1] == 'a' &&
+                      (name.size() == dash + 2 || !std::isdigit(name[dash + 2]));
+    if (args.exact_rows == "a" && !is_a) continue;
+    const CfmResult r = evaluate_or_throw(CfmModel(), cfm::parameters_of(row));
+    const cfm::CfmExactResult e = cfm::solve_cfm_exact(r, make_exact_options(args));
+    all_converged = all_converged && e.converged;
+    const std::string stroke = r.stroke_clamped ? fmt::format("{:.2f}", r.stroke_percent)
+                                                : fmt::format("{:g}", r.stroke_percent);
+    if (args.json) {
+      Json j{{"name", row.name},
+             {"stroke_percent", r.stroke_percent},
+             {"Phi_printed", row.Phi},
+             {"percent_constant_force_printed", row.percent_constant_force},
+             {"Phi", r.Phi},
+             {"percent_constant_force", r.percent_constant_force},
+             {"converged", e.converged}};
+      if (e.converged) {
+        add_exact_json(j, e, false);
+      } else {
+        j["exact_message"] = e.message;
+      }
+      rows.push_back(j);
+      continue;
+    }
+    const std::string phi_exact = e.converged ? fmt::format("{:.4f}", e.Phi_exact) : "–";
+    const std::string xi_exact =
+        e.converged ? fmt::format("{:.1f}", e.percent_constant_force_exact) : "–";
+    const std::string error =
+        e.converged
+            ? fmt::format(
+                  "{:.2f} % ({:.1f})", 100.0 * e.max_force_error, e.max_force_error_at_percent)
+            : "not converged (" + e.message.substr(0, e.message.find("): ") + 1) + ")";
+    fmt::print(fmt::runtime(args.markdown
+                                ? "| {} | {} | {:.4f} | {:.4f} | {} | {:.1f} | {:.1f} | {} | {} |\n"
+                                : "  {:<11} d {:<6} Phi {:.4f} / {:.4f} / {:<8} Xi' {:.1f} / "
+                                  "{:.1f} / {:<6} error {}\n"),
+               row.name,
+               stroke,
+               row.Phi,
+               e.Phi_prbm_mean,
+               phi_exact,
+               row.percent_constant_force,
+               e.percent_constant_force_prbm,
+               xi_exact,
+               error);
+  }
+  if (args.json) print_json(Json{{"points", args.exact_points}, {"subclasses", rows}});
+  if (!all_converged) set_exit_code(kExitNoConvergence);
+}
+
 void run_cfm(const CfmArgs& args) {
   const int modes = (args.list ? 1 : 0) + (args.table ? 1 : 0) + (!args.subclass.empty() ? 1 : 0) +
                     (*args.config_option ? 1 : 0);
@@ -574,7 +733,13 @@ void run_cfm(const CfmArgs& args) {
         "give exactly one of --config CFG (with --R and --d), --subclass NAME, --list, --table");
   }
   if (args.markdown && !args.table) throw InvalidInput("--markdown goes with --table");
+  if (args.list && args.exact) throw InvalidInput("--exact does not go with --list");
   if (args.list) return run_list(args);
+  if (!args.exact &&
+      (*args.exact_points_option || *args.exact_max_iterations_option || *args.exact_rows_option)) {
+    throw InvalidInput("--exact-points, --exact-max-iterations and --exact-rows go with --exact");
+  }
+  if (args.table && args.exact) return run_exact_table(args);
   if (args.table) return run_table(args);
   if (!args.subclass.empty()) return run_subclass(args);
   run_config(args);
@@ -602,6 +767,19 @@ void register_cfm_command(CLI::App& app) {
   cfm->add_flag("--table", args->table, "Recompute every printed row beside the printed values");
   cfm->add_flag("--markdown", args->markdown, "With --table: Markdown tables (docs/cfm.md)");
   cfm->add_flag("--json", args->json, "Print one JSON object");
+  cfm->add_flag("--exact",
+                args->exact,
+                "Also solve the same mechanism with the exact (elastica) model (docs/cfm.md)");
+  args->exact_points_option =
+      cfm->add_option("--exact-points", args->exact_points, "Stroke points of the exact model")
+          ->default_str("50");
+  args->exact_max_iterations_option = cfm->add_option(
+      "--exact-max-iterations",
+      args->exact_max_iterations,
+      "Diagnostic cap on every Newton iteration count of the exact solve (1..1000)");
+  args->exact_rows_option =
+      cfm->add_option("--exact-rows", args->exact_rows, "With --table --exact: a (default) or all")
+          ->default_str("a");
   cfm->callback([args] { run_cfm(*args); });
 }
 

@@ -38,6 +38,41 @@ constexpr double kPsi = 6894.757293;  // Pa
 // at equal width so that k2/k1 = K1 and k3/k1 = K2; then all thicknesses scaled down together
 // (ratios kept) where needed for a PRBM safety factor of 1.5; stroke = the sub-class stroke (16 %
 // of r_tot, clamped at the toggle position as the thesis does).
+MechanismDesign subclass_design(const std::string& config);
+
+}  // namespace
+
+void size_flexures_for_spring_ratios(
+    MechanismDesign& d, double width, double reference_thickness, double K1, double K2) {
+  const cfm::CfmConfiguration& cfg = cfm::find_cfm_configuration(d.config);
+  for (int i = 0; i < 3; ++i) {
+    d.joints[i].type = cfg.pivots[i];
+    if (cfg.pivots[i] != PivotType::kPin) {
+      d.joints[i].width = width;
+      d.joints[i].thickness = reference_thickness;
+    }
+  }
+  d.finalise();  // fills the PRBM-rule lengths (s: 0.1 r, l: r/gamma)
+  const int ref = cfg.is_class_1B() ? 2 : 1;
+  const double k_ref = d.spring_constant(ref);
+  const double K[3] = {1.0, cfg.is_class_1B() ? 1.0 : K1, K2};
+  for (int p = 1; p <= 3; ++p) {
+    if (p == ref || !cfg.has_spring(p)) continue;
+    if (!std::isfinite(K[p - 1]) || K[p - 1] <= 0.0) {
+      throw InvalidInput(fmt::format(
+          "K{} must be finite and > 0 for configuration '{}' (pivot {} is a flexure; got {})",
+          p - 1,
+          cfg.name,
+          p,
+          K[p - 1]));
+    }
+    d.joints[p - 1].thickness *= std::cbrt(K[p - 1] / (d.spring_constant(p) / k_ref));
+  }
+  d.finalise();
+}
+
+namespace {
+
 MechanismDesign subclass_design(const std::string& config) {
   const cfm::CfmSubclass& row = cfm::find_thesis_subclass(config + "-a");
   const cfm::CfmConfiguration& cfg = cfm::find_cfm_configuration(config);
@@ -59,25 +94,10 @@ MechanismDesign subclass_design(const std::string& config) {
   const double stroke_percent =
       std::min(row.stroke_percent, 0.999 * cfm::toggle_stroke_percent(row.R));
   d.stroke = stroke_percent / 100.0 * r_tot;
-  const double b = 0.01, h_ref = 0.4e-3;
-  for (int i = 0; i < 3; ++i) {
-    d.joints[i].type = cfg.pivots[i];
-    if (cfg.pivots[i] != PivotType::kPin) {
-      d.joints[i].width = b;
-      d.joints[i].thickness = h_ref;
-    }
-  }
-  d.finalise();
-  // Spring ratios: k_i/k_ref = K (thesis eqs. 2.11-2.12) at equal width -> h_i^3 scales with K.
+  constexpr double kWidth = 0.01;
+  constexpr double kReferenceThickness = 0.4e-3;
+  size_flexures_for_spring_ratios(d, kWidth, kReferenceThickness, row.K1, row.K2);
   const int ref = cfg.is_class_1B() ? 2 : 1;
-  const double k_ref = d.spring_constant(ref);
-  const double K[3] = {1.0, cfg.is_class_1B() ? 1.0 : row.K1, row.K2};
-  for (int p = 1; p <= 3; ++p) {
-    if (p == ref || !cfg.has_spring(p)) continue;
-    const double ratio = K[p - 1] / (d.spring_constant(p) / k_ref);
-    d.joints[p - 1].thickness *= std::cbrt(ratio);
-  }
-  d.finalise();
   // Thin all flexures together (ratios kept) until the PRBM safety factor is 1.5: the bending
   // stress at a given rotation grows like h (sigma = E h psi/(2 l)), so a few fixed-point steps.
   for (int it = 0; it < 6; ++it) {
@@ -88,7 +108,7 @@ MechanismDesign subclass_design(const std::string& config) {
     for (auto& j : d.joints) j.thickness *= scale;
     d.finalise();
   }
-  if (d.joints[ref - 1].thickness < h_ref) {
+  if (d.joints[ref - 1].thickness < kReferenceThickness) {
     d.note += fmt::format(" thinned to {:.4g} mm for a PRBM safety factor of 1.5",
                           d.joints[ref - 1].thickness * 1e3);
   }

@@ -61,6 +61,15 @@ struct MechanismDesign {
 // slider, r_ave in the middle (s) or r2/r3 for a middle long segment (plp/slp).
 double associated_link_length(const MechanismDesign& design, int pivot);
 
+// Gives every flexure of `design` (its config, r2, r3 and E set) width `width` and sizes the
+// thicknesses so that the spring ratios are k2/k_ref = K1 and k3/k_ref = K2 (thesis eqs.
+// 2.11-2.12; class 1B: k2 is the reference, eq. 2.19), the reference flexure being
+// `reference_thickness` thick. At equal width k scales with h^3 (k = EI/l, Howell eq. 5.14;
+// gamma K_theta EI/l, eq. 5.72). Lengths follow the PRBM rules (finalise()). Throws InvalidInput
+// for a ratio that is not finite and > 0 where the configuration has that spring.
+void size_flexures_for_spring_ratios(
+    MechanismDesign& design, double width, double reference_thickness, double K1, double K2);
+
 // Built-in designs, one per configuration, named by class and configuration ("1A-lpp", ...; the
 // documented choices are in docs/mechanisms.md). "1A-lpp" is the thesis design example 1
 // (digest §7.4, Table 8.4).
