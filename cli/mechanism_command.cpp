@@ -12,6 +12,7 @@
 #include "io/hdf5_file.h"
 #include "mechanisms/mechanism.h"
 #include "mechanisms/mechanism_analysis.h"
+#include "mechanisms/mechanism_method.h"
 #include "mechanisms/mechanism_toml.h"
 #include "solver/common/errors.h"
 
@@ -194,6 +195,8 @@ void register_mechanism_command(CLI::App& app) {
     std::string out;
     bool json = false;
     bool no_exact = false;
+    std::string method = "auto";
+    double tol = 1e-6;
   };
   auto args = std::make_shared<AnalyzeArgs>();
   CLI::App* analyze = mech.add_subcommand(
@@ -203,7 +206,16 @@ void register_mechanism_command(CLI::App& app) {
   analyze->add_option("--points", args->points, "Stroke points (2..100000)");
   analyze->add_option("--out", args->out, "Write the curves to this HDF5 file (atomic)");
   analyze->add_flag("--json", args->json, "Print one JSON object");
-  analyze->add_flag("--prbm-only", args->no_exact, "Skip the exact model");
+  analyze->add_flag("--prbm-only", args->no_exact, "Skip the exact model (= --method prbm)");
+  analyze
+      ->add_option("--method",
+                   args->method,
+                   "auto (PRBM alone when its measured force error x1.5 is within --tol), prbm, "
+                   "exact (PRBM and exact)")
+      ->default_str("auto")
+      ->check(CLI::IsMember({"auto", "prbm", "exact"}));
+  analyze->add_option("--tol", args->tol, "Relative force error allowed by --method auto")
+      ->default_str("1e-6");
   analyze->callback([args] {
     require_in_range(args->points, "--points", 2, 100000);
     const MechanismDesign d = resolve(args->what);
@@ -215,9 +227,11 @@ void register_mechanism_command(CLI::App& app) {
         throw InvalidInput(fmt::format("--out: {}", e.what()));
       }
     }
+    const MechanismMethodChoice choice =
+        choose_mechanism_method(d, args->no_exact ? "prbm" : args->method, args->tol);
     AnalysisOptions o;
     o.points = args->points;
-    o.exact = !args->no_exact;
+    o.exact = choice.exact;
     const MechanismAnalysis a = analyze_mechanism(d, o);
     if (a.has_exact && o.exact && !a.exact.converged) {
       throw NoConvergence(fmt::format("{}: {}", d.name, a.exact.message));
@@ -233,10 +247,14 @@ void register_mechanism_command(CLI::App& app) {
     }
     if (file) write_hdf5(args->out, a, *file);
     if (args->json) {
-      print_json(analysis_json(a));
+      Json j = analysis_json(a);
+      j["method"] = choice.method;
+      j["method_reason"] = choice.reason;
+      print_json(j);
       return;
     }
     std::cout << fmt::format("{} ({}): {}\n", d.name, d.config, d.note);
+    std::cout << fmt::format("  method: {} ({})\n", choice.method, choice.reason);
     std::cout << fmt::format("  percent constant force: PRBM {:.2f} %{}\n",
                              a.prbm.percent_constant_force,
                              a.has_exact && o.exact

@@ -1,0 +1,30 @@
+#pragma once
+// `flexure mechanism analyze --method auto --tol T`: model no more than the design needs. The PRBM
+// stroke costs microseconds, the exact stroke tens of milliseconds; auto uses the PRBM alone when
+// its measured force error for this configuration, with a safety margin, is within the tolerance.
+#include <string>
+
+#include "mechanisms/mechanism.h"
+
+namespace flexure::mechanism {
+
+// Worst PRBM force error (relative to the exact model) measured over the full stroke of the
+// built-in design of `config` (`flexure mechanism validate --points 50`, docs/validation.md).
+// tests/mechanism_method_test.cpp recomputes these so that the table cannot go stale.
+double measured_prbm_force_error(const std::string& config);
+
+// Margin applied to the measured error: other dimensions of the same configuration move the error.
+inline constexpr double kPrbmErrorMargin = 1.5;
+
+struct MechanismMethodChoice {
+  bool exact = true;   // run the exact model (the PRBM always runs: it is the cheap part)
+  std::string method;  // "prbm" or "exact"
+  std::string reason;  // why, with the numbers
+};
+
+// `method` is "auto", "prbm" or "exact"; `tolerance` the relative force error allowed.
+MechanismMethodChoice choose_mechanism_method(const MechanismDesign& design,
+                                              const std::string& method,
+                                              double tolerance);
+
+}  // namespace flexure::mechanism
