@@ -38,7 +38,7 @@ constexpr double kPsi = 6894.757293;  // Pa
 // at equal width so that k2/k1 = K1 and k3/k1 = K2; then all thicknesses scaled down together
 // (ratios kept) where needed for a PRBM safety factor of 1.5; stroke = the sub-class stroke (16 %
 // of r_tot, clamped at the toggle position as the thesis does).
-MechanismDesign subclass_design(const std::string& config);
+MechanismDesign subclass_design(const cfm::CfmSubclass& row, const std::string& name);
 
 }  // namespace
 
@@ -73,12 +73,14 @@ void size_flexures_for_spring_ratios(
 
 namespace {
 
-MechanismDesign subclass_design(const std::string& config) {
-  const cfm::CfmSubclass& row = cfm::find_thesis_subclass(config + "-a");
+// A concrete design of one thesis sub-class (Tables 7.2-7.12): its R, K1, K2 and stroke, with
+// r2 + r3 = 100 mm in polypropylene, thinned to a PRBM safety factor of 1.5.
+MechanismDesign subclass_design(const cfm::CfmSubclass& row, const std::string& name) {
+  const std::string config = row.config;
   const cfm::CfmConfiguration& cfg = cfm::find_cfm_configuration(config);
   MechanismDesign d;
   d.config = config;
-  d.name = cfg.class_name + "-" + config;
+  d.name = name;
   d.note = fmt::format(
       "sub-class {} (R = {}, K1 = {}, K2 = {}), r2 + r3 = 100 mm, polypropylene, b = 10 mm, "
       "reference flexure h = 0.4 mm",
@@ -224,7 +226,9 @@ const std::vector<MechanismDesign>& builtin_mechanisms() {
   static const std::vector<MechanismDesign> designs = [] {
     std::vector<MechanismDesign> list;
     for (const auto& cfg : cfm::cfm_configurations()) {
-      list.push_back(cfg.name == "lpp" ? thesis_example_lpp() : subclass_design(cfg.name));
+      list.push_back(cfg.name == "lpp" ? thesis_example_lpp()
+                                       : subclass_design(cfm::find_thesis_subclass(cfg.name + "-a"),
+                                                         cfg.class_name + "-" + cfg.name));
     }
     return list;
   }();
@@ -245,8 +249,20 @@ MechanismDesign find_builtin_mechanism(const std::string& name) {
     if (key == lower || key == d.config) return d;
     names += (names.empty() ? "" : ", ") + d.name;
   }
+  // Every sub-class of the thesis tables by its name (lpp-b, lps-a95I, ...), sized like the
+  // built-in designs.
+  for (const cfm::CfmSubclass& row : cfm::thesis_subclasses()) {
+    std::string lower = row.name;
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) {
+      return static_cast<char>(std::tolower(c));
+    });
+    if (key == lower) return subclass_design(row, row.name);
+  }
   throw InvalidInput(
-      fmt::format("unknown mechanism '{}' (built-in: {}; or a .toml file)", name, names));
+      fmt::format("unknown mechanism '{}' (built-in: {}; any thesis sub-class name such as lpp-b "
+                  "(flexure cfm --list); or a .toml file)",
+                  name,
+                  names));
 }
 
 }  // namespace flexure::mechanism
