@@ -3,13 +3,18 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cstdint>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "io/hdf5_file.h"
+#include "mechanisms/howell_designs.h"
+#include "mechanisms/inversion.h"
 #include "mechanisms/mechanism.h"
 #include "mechanisms/mechanism_analysis.h"
 #include "mechanisms/mechanism_method.h"
@@ -32,34 +37,69 @@ MechanismDesign resolve(const std::string& what) {
 
 Json or_null(bool present, double value) { return present ? Json(value) : Json(nullptr); }
 
+// Per-pivot values in the DESCRIBED pivot order (inversions: pivot 1 at the fixed slider block).
 Json pivot_array(const MechanismDesign& d, const std::array<double, 3>& v, bool present = true) {
+  const DescribedDesign m = described_form(d);
+  const std::array<double, 3> w = to_described(d, v);
   Json a = Json::array();
   for (int i = 0; i < 3; ++i) {
-    a.push_back(present && d.joints[i].type != PivotType::kPin ? Json(v[i]) : Json(nullptr));
+    a.push_back(present && m.joints[i].type != PivotType::kPin ? Json(w[i]) : Json(nullptr));
   }
   return a;
 }
 
+std::vector<int> described_pivots(const MechanismDesign& d, const std::vector<int>& pivots) {
+  std::vector<int> out;
+  for (int p : pivots) out.push_back(described_pivot(d, p));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Every built-in design: the thesis designs, Howell's designs, then the inversions of those with
+// a type-asymmetric configuration.
+std::vector<MechanismDesign> listed_designs(const std::string& set) {
+  std::vector<MechanismDesign> out;
+  if (set == "thesis" || set == "all") {
+    out.insert(out.end(), builtin_mechanisms().begin(), builtin_mechanisms().end());
+  }
+  if (set == "howell" || set == "all") {
+    out.insert(out.end(), howell_mechanisms().begin(), howell_mechanisms().end());
+  }
+  if (set == "inversions" || set == "all") {
+    for (const auto* list : {&builtin_mechanisms(), &howell_mechanisms()}) {
+      for (const auto& d : *list) {
+        if (config_has_inversion(d.config)) out.push_back(invert(d));
+      }
+    }
+  }
+  return out;
+}
+
 Json design_json(const MechanismDesign& d) {
+  const DescribedDesign m = described_form(d);
   Json joints = Json::array();
-  for (const auto& j : d.joints) {
+  for (const auto& j : m.joints) {
     joints.push_back(j.type == PivotType::kPin ? Json{{"type", "p"}}
                                                : Json{{"type", pivot_letter(j.type)},
                                                       {"length", j.length},
                                                       {"thickness", j.thickness},
                                                       {"width", j.width}});
   }
-  return Json{{"name", d.name},
-              {"config", d.config},
-              {"class", d.configuration().class_name},
-              {"r2", d.r2},
-              {"r3", d.r3},
-              {"E", d.E},
-              {"yield_strength", d.yield_strength},
-              {"stroke", d.stroke},
-              {"toggle_stroke", d.toggle_stroke()},
-              {"joints", joints},
-              {"note", d.note}};
+  Json out{{"name", d.name},
+           {"config", m.config},
+           {"class", d.configuration().class_name},
+           {"r2", m.r2},
+           {"r3", m.r3},
+           {"E", d.E},
+           {"yield_strength", d.yield_strength},
+           {"stroke", d.stroke},
+           {"toggle_stroke", d.toggle_stroke()},
+           {"joints", joints},
+           {"note", d.note},
+           {"inverted", d.inverted},
+           {"fixed_body", m.fixed_body}};
+  if (d.inverted) out["inversion_of_config"] = d.config;
+  return out;
 }
 
 Json analysis_json(const MechanismAnalysis& a) {
@@ -85,14 +125,15 @@ Json analysis_json(const MechanismAnalysis& a) {
   j["max_stress_prbm"] = pivot_array(a.design, a.prbm.max_stress);
   j["max_stress_exact"] = pivot_array(a.design, a.max_stress_exact, exact);
   j["safety_factor"] = a.safety_factor;
-  j["yielding_pivots"] = a.yielding_pivots;
+  j["yielding_pivots"] = described_pivots(a.design, a.yielding_pivots);
   return j;
 }
 
 void write_hdf5(const std::string& path, const MechanismAnalysis& a, io::AtomicHdf5File& file) {
   auto& root = file.root();
   root.set_attribute("mechanism", a.design.name);
-  root.set_attribute("config", a.design.config);
+  root.set_attribute("config", described_form(a.design).config);
+  root.set_attribute("inverted", std::int64_t{a.design.inverted ? 1 : 0});
   root.set_attribute("units", "SI: m, N, Pa");
   root.set_attribute("percent_constant_force_prbm", a.prbm.percent_constant_force);
   root.set_attribute("safety_factor", a.safety_factor);
@@ -103,9 +144,10 @@ void write_hdf5(const std::string& path, const MechanismAnalysis& a, io::AtomicH
     root.set_attribute("percent_constant_force_exact", a.percent_constant_force_exact);
     root.set_attribute("max_force_error", a.max_force_error);
   }
+  if (a.prbm_validity_limit) root.set_attribute("prbm_validity_limit", *a.prbm_validity_limit);
   for (int p = 0; p < 3; ++p) {
     if (!a.prbm.stress[p].empty()) {
-      root.write_dataset(fmt::format("stress_prbm_pivot{}", p + 1),
+      root.write_dataset(fmt::format("stress_prbm_pivot{}", described_pivot(a.design, p + 1)),
                          std::span<const double>(a.prbm.stress[p]));
     }
   }
@@ -115,13 +157,17 @@ void write_hdf5(const std::string& path, const MechanismAnalysis& a, io::AtomicH
 
 std::string percent(double v) { return fmt::format("{:.2f}", 100.0 * v); }
 
-void print_validation(int points, std::optional<double> toggle_fraction, bool markdown, bool json) {
+void print_validation(int points,
+                      std::optional<double> toggle_fraction,
+                      bool markdown,
+                      bool json,
+                      const std::string& set) {
   Json rows = Json::array();
   std::string table =
       "| Mechanism | Exact model | Xi' PRBM % | Xi' exact % | Xi' error (points) | max force "
       "error % | at Delta x / stroke % | PRBM validity limit (Delta x / stroke %) | SF |\n"
       "|---|---|---|---|---|---|---|---|---|\n";
-  for (MechanismDesign d : builtin_mechanisms()) {
+  for (MechanismDesign d : listed_designs(set)) {
     if (toggle_fraction) d.stroke = *toggle_fraction * d.toggle_stroke();
     AnalysisOptions o;
     o.points = points;
@@ -171,16 +217,17 @@ void register_mechanism_command(CLI::App& app) {
   list->add_flag("--json", *list_json, "Print one JSON object");
   list->callback([list_json] {
     Json all = Json::array();
-    for (const auto& d : builtin_mechanisms()) {
+    for (const auto& d : listed_designs("all")) {
       if (*list_json) {
         Json j = design_json(d);
         j["exact_model"] = exact_support(d) != ExactSupport::kPrbmOnly;
         all.push_back(j);
       } else {
+        const DescribedDesign m = described_form(d);
         std::cout << fmt::format("{:8} r2 = {:.4g} m, r3 = {:.4g} m, stroke {:.4g} m{}  -- {}\n",
                                  d.name,
-                                 d.r2,
-                                 d.r3,
+                                 m.r2,
+                                 m.r3,
                                  d.stroke,
                                  exact_support(d) == ExactSupport::kPrbmOnly ? " (PRBM only)" : "",
                                  d.note);
@@ -201,7 +248,11 @@ void register_mechanism_command(CLI::App& app) {
   auto args = std::make_shared<AnalyzeArgs>();
   CLI::App* analyze = mech.add_subcommand(
       "analyze", "Force-deflection over the stroke, PRBM and exact, with stresses");
-  analyze->add_option("mechanism", args->what, "Built-in name (1A-lpp, 3A-sss, ...) or FILE.toml")
+  analyze
+      ->add_option("mechanism",
+                   args->what,
+                   "Built-in name (1A-lpp, 3A-sss, howell-1A-spp-b, ...), a thesis sub-class "
+                   "(lpp-b), an inversion (1A-lpp' or 1A-lpp-inv) or FILE.toml")
       ->required();
   analyze->add_option("--points", args->points, "Stroke points (2..100000)");
   analyze->add_option("--out", args->out, "Write the curves to this HDF5 file (atomic)");
@@ -240,7 +291,7 @@ void register_mechanism_command(CLI::App& app) {
       std::cerr << fmt::format(
           "flexure: warning: pivot {} of {} yields: max stress {:.4g} Pa >= yield strength "
           "{:.4g} Pa\n",
-          p,
+          described_pivot(d, p),
           d.name,
           a.max_stress[p - 1],
           d.yield_strength);
@@ -253,7 +304,7 @@ void register_mechanism_command(CLI::App& app) {
       print_json(j);
       return;
     }
-    std::cout << fmt::format("{} ({}): {}\n", d.name, d.config, d.note);
+    std::cout << fmt::format("{} ({}): {}\n", d.name, described_form(d).config, d.note);
     std::cout << fmt::format("  method: {} ({})\n", choice.method, choice.reason);
     std::cout << fmt::format("  percent constant force: PRBM {:.2f} %{}\n",
                              a.prbm.percent_constant_force,
@@ -280,6 +331,7 @@ void register_mechanism_command(CLI::App& app) {
     int points = 50;
     bool markdown = false;
     bool json = false;
+    std::string designs = "thesis";
   };
   auto vargs = std::make_shared<ValidateArgs>();
   CLI::App* validate = mech.add_subcommand(
@@ -290,12 +342,20 @@ void register_mechanism_command(CLI::App& app) {
                        "Stroke of every design = this fraction of its toggle stroke, in (0, 1]");
   validate->add_flag("--markdown", vargs->markdown, "Print the Markdown table");
   validate->add_flag("--json", vargs->json, "Print one JSON object");
+  validate
+      ->add_option(
+          "--designs",
+          vargs->designs,
+          "thesis (the nine designs), howell (Howell's Table 10.1 designs), inversions, all")
+      ->default_str("thesis")
+      ->check(CLI::IsMember({"thesis", "howell", "inversions", "all"}));
   validate->callback([vargs] {
     require_in_range(vargs->points, "--points", 2, 100000);
     if (vargs->toggle_fraction) {
       require_in_range(*vargs->toggle_fraction, "--toggle-fraction", 1e-6, 1.0);
     }
-    print_validation(vargs->points, vargs->toggle_fraction, vargs->markdown, vargs->json);
+    print_validation(
+        vargs->points, vargs->toggle_fraction, vargs->markdown, vargs->json, vargs->designs);
   });
 }
 

@@ -8,6 +8,8 @@
 
 #include "mechanisms/cfm/cfm_subclasses.h"
 #include "mechanisms/cfm/slider_crank.h"
+#include "mechanisms/howell_designs.h"
+#include "mechanisms/inversion.h"
 #include "mechanisms/mechanism_prbm.h"
 #include "solver/common/errors.h"
 
@@ -235,11 +237,29 @@ const std::vector<MechanismDesign>& builtin_mechanisms() {
   return designs;
 }
 
-MechanismDesign find_builtin_mechanism(const std::string& name) {
-  std::string key = name;
-  std::transform(key.begin(), key.end(), key.begin(), [](unsigned char c) {
+namespace {
+std::string lower_case(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) {
     return static_cast<char>(std::tolower(c));
   });
+  return s;
+}
+}  // namespace
+
+MechanismDesign find_builtin_mechanism(const std::string& name) {
+  const std::string key = lower_case(name);
+  // Inversions (inversion.h): NAME' or NAME-inv of any design below, or the mirrored
+  // configuration string of a built-in design ("ppl", "1A-ppl" = "1A-lpp'").
+  if (const auto base = inversion_base_name(name)) return invert(find_builtin_mechanism(*base));
+  for (const auto& d : builtin_mechanisms()) {
+    const auto& cfg = d.configuration();
+    const std::string mirrored = mirrored_config(d.config);
+    if (config_has_inversion(d.config) &&
+        (key == mirrored || key == lower_case(cfg.class_name) + "-" + mirrored)) {
+      return invert(d);
+    }
+  }
+  if (auto howell = find_howell_mechanism(name)) return *howell;
   std::string names;
   for (const auto& d : builtin_mechanisms()) {
     std::string lower = d.name;
@@ -258,9 +278,11 @@ MechanismDesign find_builtin_mechanism(const std::string& name) {
     });
     if (key == lower) return subclass_design(row, row.name);
   }
+  for (const auto& d : howell_mechanisms()) names += ", " + d.name;
   throw InvalidInput(
       fmt::format("unknown mechanism '{}' (built-in: {}; any thesis sub-class name such as lpp-b "
-                  "(flexure cfm --list); or a .toml file)",
+                  "(flexure cfm --list); an inversion NAME' or NAME-inv of a spp, lpp, plp, ssp, "
+                  "slp or lps design such as 1A-lpp'; or a .toml file)",
                   name,
                   names));
 }

@@ -40,6 +40,11 @@ struct MechanismDesign {
   double E = 0.0;                     // Young's modulus, Pa
   double yield_strength = 0.0;        // Pa
   double stroke = 0.0;                // slider travel Delta x at the end of the stroke, m
+  // An inversion (thesis §3.2.4, digest §2.1): the slider block is fixed and the ground block
+  // slides. The fields above still describe the ORIGINAL orientation (the frame every model
+  // computes in; the relative motion is the same); mechanisms/inversion.h gives the mirrored
+  // description (pivot string reversed, r2 <-> r3, pivots renumbered 1 <-> 3) used for output.
+  bool inverted = false;
 
   const cfm::CfmConfiguration& configuration() const;
   double R() const { return r3 / r2; }

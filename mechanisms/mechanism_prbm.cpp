@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "mechanisms/cfm/slider_crank.h"
+#include "mechanisms/inversion.h"
 #include "solver/common/errors.h"
 
 namespace flexure::mechanism {
@@ -42,6 +43,10 @@ PrbmState prbm_state(const MechanismDesign& design, double displacement) {
   const double k_ref = is_1B ? k2 : k1;
   const double K1 = is_1B ? 1.0 : k2 / k1, K2 = k3 / k_ref;
   s.force = k_ref / design.r2 * cfm::force_function_phi(R, K1, K2, is_1B, pose);
+  // An inversion (slider block fixed) has the same relative motion; its force comes from the
+  // general virtual-work formula on the mirrored mechanism (inversion.h), a second code path that
+  // the tests compare with the line above.
+  if (design.inverted) s.force = inverted_prbm_force(design, displacement);
 
   // Statics of the PRB links: crank moments about pivot 1, coupler moments about pivot 3, with P
   // the force of the coupler on the crank (springs resist their rotations psi_i).
