@@ -1,0 +1,141 @@
+#!/usr/bin/python3
+"""Plot one stroke of `flexure mechanism analyze NAME --out FILE.h5` (schema: docs/hdf5-schema.md,
+"flexure mechanism analyze"): slider force of the PRBM and of the exact model against the slider
+displacement, the PRBM force error relative to the exact model in a second panel, the PRBM
+validity limit as a vertical line where the file has one, optionally the PRBM stress of every
+flexure (--stress). The title names the design and its percent constant force.
+
+    flexure mechanism analyze 1A-lpp --method exact --out lpp.h5
+    /usr/bin/python3 scripts/plot_mechanism.py lpp.h5 --out docs/figures/mechanism_1A-lpp.png
+
+Runs under Debian's /usr/bin/python3 with the apt packages python3-matplotlib and python3-h5py
+(scripts/install-deps.sh). Exits 1 with a message when they are missing or the file is not a
+mechanism stroke; the image is written whole or not at all (temporary file + rename).
+"""
+import argparse
+import os
+import sys
+import tempfile
+
+
+def fail(message):
+    print(f"plot_mechanism.py: error: {message}", file=sys.stderr)
+    sys.exit(1)
+
+
+try:
+    import h5py
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+except ImportError as e:  # pragma: no cover - depends on the machine
+    fail(f"{e.name or e} is not importable by {sys.executable}; install the Debian packages "
+         "python3-matplotlib and python3-h5py (apt-get install python3-matplotlib python3-h5py) "
+         "and run the script with /usr/bin/python3")
+
+
+def text(value):
+    return value.decode() if isinstance(value, bytes) else str(value)
+
+
+def read_stroke(path):
+    try:
+        f = h5py.File(path, "r")
+    except OSError as e:
+        fail(f"cannot read {path} as HDF5: {e}")
+    with f:
+        for key in ("displacement", "force_prbm"):
+            if key not in f:
+                fail(f"{path} has no dataset '{key}': not written by `flexure mechanism analyze "
+                     "--out`")
+        data = {
+            "displacement": f["displacement"][()],
+            "force_prbm": f["force_prbm"][()],
+            "force_exact": f["force_exact"][()] if "force_exact" in f else None,
+            "mechanism": text(f.attrs.get("mechanism", os.path.basename(path))),
+            "config": text(f.attrs.get("config", "")),
+            "pcf_prbm": f.attrs.get("percent_constant_force_prbm"),
+            "pcf_exact": f.attrs.get("percent_constant_force_exact"),
+            "validity": f.attrs.get("prbm_validity_limit"),
+            "stress": {},
+        }
+        for pivot in (1, 2, 3):
+            name = f"stress_prbm_pivot{pivot}"
+            if name in f:
+                data["stress"][pivot] = f[name][()]
+    return data
+
+
+def save_atomically(fig, out):
+    directory = os.path.dirname(os.path.abspath(out))
+    extension = os.path.splitext(out)[1].lstrip(".").lower() or "png"
+    fd, tmp = tempfile.mkstemp(prefix=".plot_mechanism-", suffix="." + extension, dir=directory)
+    os.close(fd)
+    umask = os.umask(0)
+    os.umask(umask)
+    os.chmod(tmp, 0o666 & ~umask)  # mkstemp creates 0600; give the image the usual mode
+    try:
+        fig.savefig(tmp, dpi=120, format=extension)
+        os.replace(tmp, out)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("file", help="HDF5 file written by `flexure mechanism analyze --out`")
+    parser.add_argument("--out", default="mechanism.png", help="output image (png, pdf, svg)")
+    parser.add_argument("--stress", action="store_true",
+                        help="add a panel with the PRBM stress of every flexure")
+    args = parser.parse_args(argv)
+    d = read_stroke(args.file)
+
+    dx_mm = d["displacement"] * 1e3
+    exact = d["force_exact"]
+    panels = 1 + (exact is not None) + (args.stress and bool(d["stress"]))
+    fig, axes = plt.subplots(panels, 1, figsize=(7, 2.2 + 2.3 * panels), sharex=True,
+                             squeeze=False)
+    axes = axes[:, 0]
+    ax = axes[0]
+    ax.plot(dx_mm, d["force_prbm"], "o-", ms=3, label="PRBM")
+    if exact is not None:
+        ax.plot(dx_mm, exact, "s-", ms=3, label="exact (elastica)")
+    ax.set_ylabel("slider force F (N)")
+    ax.grid(True, alpha=0.3)
+    row = 1
+    if exact is not None:
+        err = 100.0 * (d["force_prbm"] - exact) / exact
+        axes[row].plot(dx_mm, err, "o-", ms=3, color="C2")
+        axes[row].axhline(0.0, color="0.5", lw=0.8)
+        axes[row].set_ylabel("PRBM force error (%)")
+        axes[row].grid(True, alpha=0.3)
+        row += 1
+    if args.stress and d["stress"]:
+        for pivot, sigma in sorted(d["stress"].items()):
+            axes[row].plot(dx_mm, sigma / 1e6, label=f"pivot {pivot}")
+        axes[row].set_ylabel("PRBM stress (MPa)")
+        axes[row].legend(fontsize=8)
+        axes[row].grid(True, alpha=0.3)
+    if d["validity"] is not None:
+        for a in axes:
+            a.axvline(float(d["validity"]) * 1e3, color="C3", ls="--", lw=1)
+        axes[0].plot([], [], color="C3", ls="--", label="PRBM validity limit (Table 5.1)")
+    axes[0].legend(fontsize=8)
+    axes[-1].set_xlabel("slider displacement Delta x (mm)")
+
+    pcf = f"PRBM {float(d['pcf_prbm']):.2f} %" if d["pcf_prbm"] is not None else ""
+    if d["pcf_exact"] is not None:
+        pcf += f", exact {float(d['pcf_exact']):.2f} %"
+    config = f" ({d['config']})" if d["config"] else ""
+    fig.suptitle(f"{d['mechanism']}{config}: percent constant force {pcf}", fontsize=10)
+    fig.tight_layout()
+    save_atomically(fig, args.out)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
