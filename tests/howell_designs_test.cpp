@@ -57,7 +57,7 @@ TEST(HowellDesigns, Example1SpringAndForce) {
 TEST(HowellDesigns, Example1PivotRotationAndStressAtTwentyThreePointSevenFiveMillimetres) {
   // §10.1.6: theta_o = theta2 = 0.535 rad, sigma = theta_o E h/(2 l) = 66.4 MPa (eq. 10.24). The
   // book evaluated in inches (h = 0.030 in = 0.762 mm against the SI 0.76 mm used here: 0.26 %)
-  // and neglects the axial part |P|/A that the library adds (~0.1 MPa here): 0.5 % allowed.
+  // and neglects the axial part |P|/A that the library adds (0.12 MPa here): 0.5 % allowed.
   const MechanismDesign d = find_builtin_mechanism("howell-ex1");
   const PrbmState s = prbm_state(d, 23.75 * kMm);
   EXPECT_NEAR(s.theta2, 0.535, 0.0005);
