@@ -79,7 +79,10 @@ void size_flexures_for_spring_ratios(
 // documented choices are in docs/mechanisms.md). "1A-lpp" is the thesis design example 1
 // (digest §7.4, Table 8.4).
 const std::vector<MechanismDesign>& builtin_mechanisms();
-// Accepts "1A-lpp" or "lpp" (case-insensitive); throws InvalidInput listing the names.
+// Accepts "1A-lpp" or "lpp" (case-insensitive), any thesis sub-class ("lpp-b"), Howell's designs
+// (howell_designs.h: "howell-1A-spp-b", "howell-ex1", ...) and the inversion of any of them with a
+// type-asymmetric configuration ("1A-lpp'", "1A-lpp-inv", "ppl"; inversion.h); throws
+// InvalidInput listing the names.
 MechanismDesign find_builtin_mechanism(const std::string& name);
 
 }  // namespace flexure::mechanism
