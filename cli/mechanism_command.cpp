@@ -14,6 +14,7 @@
 #include "mechanisms/mechanism_analysis.h"
 #include "mechanisms/mechanism_method.h"
 #include "mechanisms/mechanism_toml.h"
+#include "mechanisms/modified_designs.h"
 #include "solver/common/errors.h"
 
 namespace flexure::cli {
@@ -42,24 +43,37 @@ Json pivot_array(const MechanismDesign& d, const std::array<double, 3>& v, bool 
 
 Json design_json(const MechanismDesign& d) {
   Json joints = Json::array();
-  for (const auto& j : d.joints) {
-    joints.push_back(j.type == PivotType::kPin ? Json{{"type", "p"}}
-                                               : Json{{"type", pivot_letter(j.type)},
-                                                      {"length", j.length},
-                                                      {"thickness", j.thickness},
-                                                      {"width", j.width}});
+  for (int p = 1; p <= 3; ++p) {
+    const JointDesign& j = d.joints[p - 1];
+    Json jj = j.type == PivotType::kPin ? Json{{"type", "p"}}
+                                        : Json{{"type", pivot_letter(j.type)},
+                                               {"length", j.length},
+                                               {"thickness", j.thickness},
+                                               {"width", j.width}};
+    if (j.type != PivotType::kPin) {
+      jj["segment"] = j.segment == SegmentKind::kFixedFixed ? "fixed-fixed"
+                      : j.type == PivotType::kLong          ? "fixed-pinned"
+                                                            : "small-length";
+      jj["spring_constant"] = d.spring_constant(p);
+      if (j.segment == SegmentKind::kFixedFixed)
+        jj["paper_letter"] = std::string(1, j.paper_letter);
+    }
+    joints.push_back(jj);
   }
-  return Json{{"name", d.name},
-              {"config", d.config},
-              {"class", d.configuration().class_name},
-              {"r2", d.r2},
-              {"r3", d.r3},
-              {"E", d.E},
-              {"yield_strength", d.yield_strength},
-              {"stroke", d.stroke},
-              {"toggle_stroke", d.toggle_stroke()},
-              {"joints", joints},
-              {"note", d.note}};
+  return Json{
+      {"name", d.name},
+      {"paper_config", d.paper_config.empty() ? Json(nullptr) : Json(d.paper_config)},
+      {"spring_rule", has_fixed_fixed(d) ? Json(spring_rule_name(d.spring_rule)) : Json(nullptr)},
+      {"config", d.config},
+      {"class", d.configuration().class_name},
+      {"r2", d.r2},
+      {"r3", d.r3},
+      {"E", d.E},
+      {"yield_strength", d.yield_strength},
+      {"stroke", d.stroke},
+      {"toggle_stroke", d.toggle_stroke()},
+      {"joints", joints},
+      {"note", d.note}};
 }
 
 Json analysis_json(const MechanismAnalysis& a) {
@@ -67,6 +81,8 @@ Json analysis_json(const MechanismAnalysis& a) {
   Json j;
   j["design"] = design_json(a.design);
   j["units"] = "SI: m, N, Pa";
+  j["spring_rule"] =
+      has_fixed_fixed(a.design) ? Json(spring_rule_name(a.design.spring_rule)) : Json(nullptr);
   j["displacement"] = a.prbm.displacement;
   j["force_prbm"] = a.prbm.force;
   j["force_exact"] = exact ? Json(a.force_exact) : Json(nullptr);
@@ -93,6 +109,10 @@ void write_hdf5(const std::string& path, const MechanismAnalysis& a, io::AtomicH
   auto& root = file.root();
   root.set_attribute("mechanism", a.design.name);
   root.set_attribute("config", a.design.config);
+  if (has_fixed_fixed(a.design)) {
+    root.set_attribute("spring_rule", spring_rule_name(a.design.spring_rule));
+    if (!a.design.paper_config.empty()) root.set_attribute("paper_config", a.design.paper_config);
+  }
   root.set_attribute("units", "SI: m, N, Pa");
   root.set_attribute("percent_constant_force_prbm", a.prbm.percent_constant_force);
   root.set_attribute("safety_factor", a.safety_factor);
@@ -115,7 +135,11 @@ void write_hdf5(const std::string& path, const MechanismAnalysis& a, io::AtomicH
 
 std::string percent(double v) { return fmt::format("{:.2f}", 100.0 * v); }
 
-void print_validation(int points, std::optional<double> toggle_fraction, bool markdown, bool json) {
+void print_validation(int points,
+                      std::optional<double> toggle_fraction,
+                      std::optional<SpringRule> rule,
+                      bool markdown,
+                      bool json) {
   Json rows = Json::array();
   std::string table =
       "| Mechanism | Exact model | Xi' PRBM % | Xi' exact % | Xi' error (points) | max force "
@@ -123,6 +147,7 @@ void print_validation(int points, std::optional<double> toggle_fraction, bool ma
       "|---|---|---|---|---|---|---|---|---|\n";
   for (MechanismDesign d : builtin_mechanisms()) {
     if (toggle_fraction) d.stroke = *toggle_fraction * d.toggle_stroke();
+    if (rule && has_fixed_fixed(d)) apply_spring_rule(d, *rule);
     AnalysisOptions o;
     o.points = points;
     o.exact_stress = false;
@@ -197,6 +222,7 @@ void register_mechanism_command(CLI::App& app) {
     bool no_exact = false;
     std::string method = "auto";
     double tol = 1e-6;
+    std::string spring_rule;
   };
   auto args = std::make_shared<AnalyzeArgs>();
   CLI::App* analyze = mech.add_subcommand(
@@ -216,9 +242,14 @@ void register_mechanism_command(CLI::App& app) {
       ->check(CLI::IsMember({"auto", "prbm", "exact"}));
   analyze->add_option("--tol", args->tol, "Relative force error allowed by --method auto")
       ->default_str("1e-6");
+  analyze->add_option("--spring-rule",
+                      args->spring_rule,
+                      "Spring constant of fixed-fixed segments (modified designs): pure-bending "
+                      "(k = EI/L, default), table2, table5 (paper 004 Tables 2/5)");
   analyze->callback([args] {
     require_in_range(args->points, "--points", 2, 100000);
-    const MechanismDesign d = resolve(args->what);
+    MechanismDesign d = resolve(args->what);
+    if (!args->spring_rule.empty()) apply_spring_rule(d, parse_spring_rule(args->spring_rule));
     std::optional<io::AtomicHdf5File> file;
     if (!args->out.empty()) {
       try {
@@ -280,6 +311,7 @@ void register_mechanism_command(CLI::App& app) {
     int points = 50;
     bool markdown = false;
     bool json = false;
+    std::string spring_rule;
   };
   auto vargs = std::make_shared<ValidateArgs>();
   CLI::App* validate = mech.add_subcommand(
@@ -289,13 +321,19 @@ void register_mechanism_command(CLI::App& app) {
                        vargs->toggle_fraction,
                        "Stroke of every design = this fraction of its toggle stroke, in (0, 1]");
   validate->add_flag("--markdown", vargs->markdown, "Print the Markdown table");
+  validate->add_option(
+      "--spring-rule",
+      vargs->spring_rule,
+      "Spring rule of the modified designs: pure-bending (default), table2, table5");
   validate->add_flag("--json", vargs->json, "Print one JSON object");
   validate->callback([vargs] {
     require_in_range(vargs->points, "--points", 2, 100000);
     if (vargs->toggle_fraction) {
       require_in_range(*vargs->toggle_fraction, "--toggle-fraction", 1e-6, 1.0);
     }
-    print_validation(vargs->points, vargs->toggle_fraction, vargs->markdown, vargs->json);
+    std::optional<SpringRule> rule;
+    if (!vargs->spring_rule.empty()) rule = parse_spring_rule(vargs->spring_rule);
+    print_validation(vargs->points, vargs->toggle_fraction, rule, vargs->markdown, vargs->json);
   });
 }
 
