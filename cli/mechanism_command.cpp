@@ -15,6 +15,7 @@
 #include "mechanisms/mechanism_method.h"
 #include "mechanisms/mechanism_toml.h"
 #include "mechanisms/modified_designs.h"
+#include "mechanisms/modified_springs.h"
 #include "solver/common/errors.h"
 
 namespace flexure::cli {
@@ -153,9 +154,10 @@ void print_validation(int points,
     o.exact_stress = false;
     const MechanismAnalysis a = analyze_mechanism(d, o);
     const bool exact = a.has_exact && a.exact.converged;
-    const std::string limit = a.prbm_validity_limit
-                                  ? fmt::format("{:.0f}", 100.0 * *a.prbm_validity_limit / d.stroke)
-                                  : std::string("never (s pivots only, or within Table 5.1)");
+    const std::string limit =
+        a.prbm_validity_limit ? fmt::format("{:.0f}", 100.0 * *a.prbm_validity_limit / d.stroke)
+        : has_fixed_fixed(d)  ? std::string("none (fixed-fixed segments: no Theta_max table)")
+                              : std::string("never (s pivots only, or within Table 5.1)");
     table += fmt::format(
         "| {} | {} | {:.2f} | {} | {} | {} | {} | {} | {:.2f} |\n",
         d.name,
@@ -179,6 +181,59 @@ void print_validation(int points,
     print_json(Json{{"points", points}, {"mechanisms", rows}});
   } else if (markdown) {
     std::cout << table;
+  } else {
+    std::cout << table;
+  }
+}
+
+// `validate --spring-rules`: the spring rules of the fixed-fixed segments against the exact model
+// (docs/validation.md "Modified configurations").
+void print_spring_rules(int points, bool json) {
+  auto ratio = [](const std::optional<double>& v) {
+    return v ? fmt::format("{:.3f}", *v) : std::string("-");
+  };
+  auto ratios = [&](const std::array<std::optional<double>, 3>& r) {
+    return fmt::format("{} / {} / {}", ratio(r[0]), ratio(r[1]), ratio(r[2]));
+  };
+  std::string table =
+      "| Mechanism | max force error %: pure-bending | table2 | table5 | mean F_prbm/F_exact: "
+      "pure-bending | table2 | table5 | fitted c (k = c EI/L) | error % with c | k_eq/(EI/L) "
+      "pivots 1/2/3, first point | last point |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  Json rows = Json::array();
+  for (const MechanismDesign& d : modified_designs()) {
+    const SpringRuleComparison c = compare_spring_rules(d, points);
+    if (!c.converged) throw NoConvergence(fmt::format("{}: {}", d.name, c.message));
+    table += fmt::format(
+        "| {} | {:.2f} | {:.2f} | {:.2f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | "
+        "{:.2f} | {} | {} |\n",
+        d.name,
+        100.0 * c.max_force_error[0],
+        100.0 * c.max_force_error[1],
+        100.0 * c.max_force_error[2],
+        c.mean_force_ratio[0],
+        c.mean_force_ratio[1],
+        c.mean_force_ratio[2],
+        c.fitted_factor,
+        100.0 * c.fitted_max_error,
+        ratios(c.k_ratio_start),
+        ratios(c.k_ratio_end));
+    auto opt = [](const std::array<std::optional<double>, 3>& r) {
+      Json a = Json::array();
+      for (const auto& v : r) a.push_back(v ? Json(*v) : Json(nullptr));
+      return a;
+    };
+    rows.push_back(Json{{"name", d.name},
+                        {"rules", {"pure-bending", "table2", "table5"}},
+                        {"max_force_error", c.max_force_error},
+                        {"mean_force_ratio", c.mean_force_ratio},
+                        {"fitted_factor", c.fitted_factor},
+                        {"fitted_max_error", c.fitted_max_error},
+                        {"k_equivalent_ratio_first", opt(c.k_ratio_start)},
+                        {"k_equivalent_ratio_last", opt(c.k_ratio_end)}});
+  }
+  if (json) {
+    print_json(Json{{"points", points}, {"spring_rules", rows}});
   } else {
     std::cout << table;
   }
@@ -312,6 +367,7 @@ void register_mechanism_command(CLI::App& app) {
     bool markdown = false;
     bool json = false;
     std::string spring_rule;
+    bool spring_rules = false;
   };
   auto vargs = std::make_shared<ValidateArgs>();
   CLI::App* validate = mech.add_subcommand(
@@ -321,6 +377,9 @@ void register_mechanism_command(CLI::App& app) {
                        vargs->toggle_fraction,
                        "Stroke of every design = this fraction of its toggle stroke, in (0, 1]");
   validate->add_flag("--markdown", vargs->markdown, "Print the Markdown table");
+  validate->add_flag("--spring-rules",
+                     vargs->spring_rules,
+                     "Instead: the spring rules of the modified designs against the exact model");
   validate->add_option(
       "--spring-rule",
       vargs->spring_rule,
@@ -330,6 +389,10 @@ void register_mechanism_command(CLI::App& app) {
     require_in_range(vargs->points, "--points", 2, 100000);
     if (vargs->toggle_fraction) {
       require_in_range(*vargs->toggle_fraction, "--toggle-fraction", 1e-6, 1.0);
+    }
+    if (vargs->spring_rules) {
+      print_spring_rules(vargs->points, vargs->json);
+      return;
     }
     std::optional<SpringRule> rule;
     if (!vargs->spring_rule.empty()) rule = parse_spring_rule(vargs->spring_rule);

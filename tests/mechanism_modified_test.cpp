@@ -12,6 +12,10 @@
 //  * energy balance of the exact model, integral F dDelta_x (Simpson) = change of strain energy;
 //  * the dynamics module's quasi-static force (mechanisms/dynamics, omega -> 0) against the PRBM
 //    force of the same design and spring constants (two code paths);
+//  * the spring rules against the exact model (`validate --spring-rules`): k = EI/L has the
+//  smallest
+//    force error for every design, and each strip's energy-equivalent spring 2U/dtheta^2 is
+//    >= EI/L (Cauchy-Schwarz: <m^2> >= <m>^2, equality for a pure moment);
 //  * TOML description of a modified design (docs/examples/mechanism_lplm.toml) against the
 //    built-in one, and its errors; the CLI keys of `mechanism analyze 2B-lplm --json`.
 #include <gtest/gtest.h>
@@ -391,6 +395,25 @@ TEST(MechanismModifiedCli, AnalyzeJsonSpringRuleAndHdf5) {
       test::run_flexure("mechanism analyze 3A-lllm --points 8 --out lllm.h5", dir.path());
   ASSERT_EQ(h.exit_code, 0) << h.err;
   EXPECT_TRUE(std::filesystem::exists(dir / "lllm.h5"));
+}
+
+TEST(MechanismModifiedCli, TheExactModelPicksThePureBendingRule) {
+  using nlohmann::json;
+  const test::CommandResult r =
+      test::run_flexure("mechanism validate --spring-rules --json --points 20");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json rows = json::parse(r.out)["spring_rules"];
+  ASSERT_EQ(rows.size(), 11u);
+  for (const json& row : rows) {
+    const auto e = row["max_force_error"].get<std::vector<double>>();
+    EXPECT_LT(e[0], e[1]) << row["name"];  // pure bending beats Table 2
+    EXPECT_LT(e[0], e[2]) << row["name"];  // and Table 5
+    for (const char* key : {"k_equivalent_ratio_first", "k_equivalent_ratio_last"}) {
+      for (const json& k : row[key]) {
+        if (!k.is_null()) EXPECT_GE(k.get<double>(), 1.0 - 1e-6) << row["name"] << " " << key;
+      }
+    }
+  }
 }
 
 }  // namespace
