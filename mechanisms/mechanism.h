@@ -8,7 +8,8 @@
 // the physical segments follow Table 8.1: an s flexure of length f is centred on its PRB pivot
 // (f = 0.1 r_i by default, r_ave for the middle pivot); an l segment is r/gamma long (gamma =
 // 0.85), replaces link 2 (at the ground, or plp) or link 3 (slp), and its characteristic pivot is
-// 0.15 l from its clamp. Units: SI (m, Pa, N) throughout.
+// 0.15 l from its clamp. The modified configurations of paper 004 add fixed-fixed segments
+// (SegmentKind below; modified_designs.h). Units: SI (m, Pa, N) throughout.
 #include <array>
 #include <string>
 #include <vector>

@@ -31,7 +31,15 @@ double measured_prbm_force_error(const std::string& config) {
 }
 
 double measured_prbm_force_error(const MechanismDesign& design) {
-  if (design.paper_config.empty()) return measured_prbm_force_error(design.config);
+  if (design.paper_config.empty()) {
+    // Fixed-fixed s segments under a paper rule are not the thesis's s pivots: nothing measured.
+    if (has_fixed_fixed(design) && design.spring_rule != SpringRule::kPureBending) {
+      throw InvalidInput(fmt::format("no measured PRBM error for '{}' with spring rule {}",
+                                     design.name,
+                                     spring_rule_name(design.spring_rule)));
+    }
+    return measured_prbm_force_error(design.config);
+  }
   // flexure mechanism validate --points 50 --spring-rule RULE (docs/validation.md "Modified
   // configurations"), max PRBM force error of each built-in modified design per spring rule.
   static const std::map<std::string, double> kModified = {

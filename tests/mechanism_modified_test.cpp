@@ -10,8 +10,9 @@
 //    clamped strip + rigid crank + pinned coupler (beam-column equation), and that limit against
 //    the PRBM with k = EI/L (the small-deflection limit, first order in L/r2);
 //  * energy balance of the exact model, integral F dDelta_x (Simpson) = change of strain energy;
-//  * the dynamics module's quasi-static force (mechanisms/dynamics, omega -> 0) against the PRBM
-//    force of the same design and spring constants (two code paths);
+//  * the dynamics module's quasi-static force (mechanisms/dynamics: static_force, and the inverse
+//    dynamics of a sinusoidal stroke at omega = 0) against the PRBM force of the same design and
+//    spring constants (two code paths);
 //  * the spring rules against the exact model (`validate --spring-rules`): k = EI/L has the
 //  smallest
 //    force error for every design, and each strip's energy-equivalent spring 2U/dtheta^2 is
@@ -24,6 +25,7 @@
 #include <nlohmann/json.hpp>
 
 #include "mechanisms/dynamics/cfsm_designs.h"
+#include "mechanisms/dynamics/inverse_dynamics.h"
 #include "mechanisms/dynamics/slider_crank_dynamics.h"
 #include "mechanisms/mechanism.h"
 #include "mechanisms/mechanism_analysis.h"
@@ -248,6 +250,12 @@ TEST(MechanismModified, DynamicsQuasiStaticForceIsThePrbmForce) {
         const double F_dyn = model.static_force(model.theta2_at(dx));
         const double F_prbm = prbm_state(d, dx).force;
         EXPECT_NEAR(F_dyn / F_prbm, 1.0, kClosedForm) << d.name << " at " << f;
+      }
+      // The inverse-dynamics force of a sinusoidal stroke at omega = 0 (inertia terms vanish).
+      const dynamics::InverseDynamics inverse(model, {16, 0.0});
+      for (const dynamics::ForceSample& q :
+           inverse.history({0.01 * d.stroke, 0.99 * d.stroke, 0.0})) {
+        EXPECT_NEAR(q.force / prbm_state(d, q.delta_x).force, 1.0, kClosedForm) << d.name;
       }
     }
   }
