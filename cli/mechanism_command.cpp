@@ -339,7 +339,11 @@ void register_mechanism_command(CLI::App& app) {
       print_json(j);
       return;
     }
-    std::cout << fmt::format("{} ({}): {}\n", d.name, d.config, d.note);
+    std::cout << fmt::format(
+        "{} ({}): {}\n",
+        d.name,
+        d.paper_config.empty() ? d.config : d.paper_config + ", solved as " + d.config,
+        d.note);
     std::cout << fmt::format("  method: {} ({})\n", choice.method, choice.reason);
     std::cout << fmt::format("  percent constant force: PRBM {:.2f} %{}\n",
                              a.prbm.percent_constant_force,
