@@ -19,6 +19,8 @@
 #include "mechanisms/mechanism_analysis.h"
 #include "mechanisms/mechanism_method.h"
 #include "mechanisms/mechanism_toml.h"
+#include "mechanisms/modified_designs.h"
+#include "mechanisms/modified_springs.h"
 #include "solver/common/errors.h"
 
 namespace flexure::cli {
@@ -59,8 +61,12 @@ std::vector<int> described_pivots(const MechanismDesign& d, const std::vector<in
 // a type-asymmetric configuration.
 std::vector<MechanismDesign> listed_designs(const std::string& set) {
   std::vector<MechanismDesign> out;
-  if (set == "thesis" || set == "all") {
-    out.insert(out.end(), builtin_mechanisms().begin(), builtin_mechanisms().end());
+  for (const MechanismDesign& d : builtin_mechanisms()) {
+    const bool modified = !d.paper_config.empty();
+    if (set == "all" || set == "builtin" || (set == "thesis" && !modified) ||
+        (set == "modified" && modified)) {
+      out.push_back(d);
+    }
   }
   if (set == "howell" || set == "all") {
     out.insert(out.end(), howell_mechanisms().begin(), howell_mechanisms().end());
@@ -68,7 +74,8 @@ std::vector<MechanismDesign> listed_designs(const std::string& set) {
   if (set == "inversions" || set == "all") {
     for (const auto* list : {&builtin_mechanisms(), &howell_mechanisms()}) {
       for (const auto& d : *list) {
-        if (config_has_inversion(d.config)) out.push_back(invert(d));
+        // The paper's modified designs are not inverted: paper 004 describes none.
+        if (config_has_inversion(d.config) && d.paper_config.empty()) out.push_back(invert(d));
       }
     }
   }
@@ -78,14 +85,30 @@ std::vector<MechanismDesign> listed_designs(const std::string& set) {
 Json design_json(const MechanismDesign& d) {
   const DescribedDesign m = described_form(d);
   Json joints = Json::array();
-  for (const auto& j : m.joints) {
-    joints.push_back(j.type == PivotType::kPin ? Json{{"type", "p"}}
-                                               : Json{{"type", pivot_letter(j.type)},
-                                                      {"length", j.length},
-                                                      {"thickness", j.thickness},
-                                                      {"width", j.width}});
+  for (int p = 1; p <= 3; ++p) {
+    // Output in the described (mirrored for an inversion) numbering.
+    const int stored = described_pivot(d, p);
+    const JointDesign& j = m.joints[p - 1];
+    Json jj = j.type == PivotType::kPin ? Json{{"type", "p"}}
+                                        : Json{{"type", pivot_letter(j.type)},
+                                               {"length", j.length},
+                                               {"thickness", j.thickness},
+                                               {"width", j.width}};
+    if (j.type != PivotType::kPin) {
+      jj["segment"] = j.segment == SegmentKind::kFixedFixed ? "fixed-fixed"
+                      : j.type == PivotType::kLong          ? "fixed-pinned"
+                                                            : "small-length";
+      jj["spring_constant"] = d.spring_constant(stored);
+      if (j.segment == SegmentKind::kFixedFixed) {
+        jj["paper_letter"] = std::string(1, j.paper_letter);
+      }
+    }
+    joints.push_back(jj);
   }
   Json out{{"name", d.name},
+           {"paper_config", d.paper_config.empty() ? Json(nullptr) : Json(d.paper_config)},
+           {"spring_rule",
+            has_fixed_fixed(d) ? Json(spring_rule_name(d.spring_rule)) : Json(nullptr)},
            {"config", m.config},
            {"class", d.configuration().class_name},
            {"r2", m.r2},
@@ -107,6 +130,8 @@ Json analysis_json(const MechanismAnalysis& a) {
   Json j;
   j["design"] = design_json(a.design);
   j["units"] = "SI: m, N, Pa";
+  j["spring_rule"] =
+      has_fixed_fixed(a.design) ? Json(spring_rule_name(a.design.spring_rule)) : Json(nullptr);
   j["displacement"] = a.prbm.displacement;
   j["force_prbm"] = a.prbm.force;
   j["force_exact"] = exact ? Json(a.force_exact) : Json(nullptr);
@@ -134,6 +159,10 @@ void write_hdf5(const std::string& path, const MechanismAnalysis& a, io::AtomicH
   root.set_attribute("mechanism", a.design.name);
   root.set_attribute("config", described_form(a.design).config);
   root.set_attribute("inverted", std::int64_t{a.design.inverted ? 1 : 0});
+  if (has_fixed_fixed(a.design)) {
+    root.set_attribute("spring_rule", spring_rule_name(a.design.spring_rule));
+    if (!a.design.paper_config.empty()) root.set_attribute("paper_config", a.design.paper_config);
+  }
   root.set_attribute("units", "SI: m, N, Pa");
   root.set_attribute("percent_constant_force_prbm", a.prbm.percent_constant_force);
   root.set_attribute("safety_factor", a.safety_factor);
@@ -159,6 +188,7 @@ std::string percent(double v) { return fmt::format("{:.2f}", 100.0 * v); }
 
 void print_validation(int points,
                       std::optional<double> toggle_fraction,
+                      std::optional<SpringRule> rule,
                       bool markdown,
                       bool json,
                       const std::string& set) {
@@ -169,14 +199,16 @@ void print_validation(int points,
       "|---|---|---|---|---|---|---|---|---|\n";
   for (MechanismDesign d : listed_designs(set)) {
     if (toggle_fraction) d.stroke = *toggle_fraction * d.toggle_stroke();
+    if (rule && has_fixed_fixed(d)) apply_spring_rule(d, *rule);
     AnalysisOptions o;
     o.points = points;
     o.exact_stress = false;
     const MechanismAnalysis a = analyze_mechanism(d, o);
     const bool exact = a.has_exact && a.exact.converged;
-    const std::string limit = a.prbm_validity_limit
-                                  ? fmt::format("{:.0f}", 100.0 * *a.prbm_validity_limit / d.stroke)
-                                  : std::string("never (s pivots only, or within Table 5.1)");
+    const std::string limit =
+        a.prbm_validity_limit ? fmt::format("{:.0f}", 100.0 * *a.prbm_validity_limit / d.stroke)
+        : has_fixed_fixed(d)  ? std::string("none (fixed-fixed segments: no Theta_max table)")
+                              : std::string("never (s pivots only, or within Table 5.1)");
     table += fmt::format(
         "| {} | {} | {:.2f} | {} | {} | {} | {} | {} | {:.2f} |\n",
         d.name,
@@ -200,6 +232,59 @@ void print_validation(int points,
     print_json(Json{{"points", points}, {"mechanisms", rows}});
   } else if (markdown) {
     std::cout << table;
+  } else {
+    std::cout << table;
+  }
+}
+
+// `validate --spring-rules`: the spring rules of the fixed-fixed segments against the exact model
+// (docs/validation.md "Modified configurations").
+void print_spring_rules(int points, bool json) {
+  auto ratio = [](const std::optional<double>& v) {
+    return v ? fmt::format("{:.3f}", *v) : std::string("-");
+  };
+  auto ratios = [&](const std::array<std::optional<double>, 3>& r) {
+    return fmt::format("{} / {} / {}", ratio(r[0]), ratio(r[1]), ratio(r[2]));
+  };
+  std::string table =
+      "| Mechanism | max force error %: pure-bending | table2 | table5 | mean F_prbm/F_exact: "
+      "pure-bending | table2 | table5 | fitted c (k = c EI/L) | error % with c | k_eq/(EI/L) "
+      "pivots 1/2/3, first point | last point |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  Json rows = Json::array();
+  for (const MechanismDesign& d : modified_designs()) {
+    const SpringRuleComparison c = compare_spring_rules(d, points);
+    if (!c.converged) throw NoConvergence(fmt::format("{}: {}", d.name, c.message));
+    table += fmt::format(
+        "| {} | {:.2f} | {:.2f} | {:.2f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | "
+        "{:.2f} | {} | {} |\n",
+        d.name,
+        100.0 * c.max_force_error[0],
+        100.0 * c.max_force_error[1],
+        100.0 * c.max_force_error[2],
+        c.mean_force_ratio[0],
+        c.mean_force_ratio[1],
+        c.mean_force_ratio[2],
+        c.fitted_factor,
+        100.0 * c.fitted_max_error,
+        ratios(c.k_ratio_start),
+        ratios(c.k_ratio_end));
+    auto opt = [](const std::array<std::optional<double>, 3>& r) {
+      Json a = Json::array();
+      for (const auto& v : r) a.push_back(v ? Json(*v) : Json(nullptr));
+      return a;
+    };
+    rows.push_back(Json{{"name", d.name},
+                        {"rules", {"pure-bending", "table2", "table5"}},
+                        {"max_force_error", c.max_force_error},
+                        {"mean_force_ratio", c.mean_force_ratio},
+                        {"fitted_factor", c.fitted_factor},
+                        {"fitted_max_error", c.fitted_max_error},
+                        {"k_equivalent_ratio_first", opt(c.k_ratio_start)},
+                        {"k_equivalent_ratio_last", opt(c.k_ratio_end)}});
+  }
+  if (json) {
+    print_json(Json{{"points", points}, {"spring_rules", rows}});
   } else {
     std::cout << table;
   }
@@ -244,6 +329,7 @@ void register_mechanism_command(CLI::App& app) {
     bool no_exact = false;
     std::string method = "auto";
     double tol = 1e-6;
+    std::string spring_rule;
   };
   auto args = std::make_shared<AnalyzeArgs>();
   CLI::App* analyze = mech.add_subcommand(
@@ -267,9 +353,14 @@ void register_mechanism_command(CLI::App& app) {
       ->check(CLI::IsMember({"auto", "prbm", "exact"}));
   analyze->add_option("--tol", args->tol, "Relative force error allowed by --method auto")
       ->default_str("1e-6");
+  analyze->add_option("--spring-rule",
+                      args->spring_rule,
+                      "Spring constant of fixed-fixed segments (modified designs): pure-bending "
+                      "(k = EI/L, default), table2, table5 (paper 004 Tables 2/5)");
   analyze->callback([args] {
     require_in_range(args->points, "--points", 2, 100000);
-    const MechanismDesign d = resolve(args->what);
+    MechanismDesign d = resolve(args->what);
+    if (!args->spring_rule.empty()) apply_spring_rule(d, parse_spring_rule(args->spring_rule));
     std::optional<io::AtomicHdf5File> file;
     if (!args->out.empty()) {
       try {
@@ -304,7 +395,12 @@ void register_mechanism_command(CLI::App& app) {
       print_json(j);
       return;
     }
-    std::cout << fmt::format("{} ({}): {}\n", d.name, described_form(d).config, d.note);
+    std::cout << fmt::format("{} ({}): {}\n",
+                             d.name,
+                             d.paper_config.empty()
+                                 ? described_form(d).config
+                                 : d.paper_config + ", solved as " + d.config,
+                             d.note);
     std::cout << fmt::format("  method: {} ({})\n", choice.method, choice.reason);
     std::cout << fmt::format("  percent constant force: PRBM {:.2f} %{}\n",
                              a.prbm.percent_constant_force,
@@ -331,7 +427,9 @@ void register_mechanism_command(CLI::App& app) {
     int points = 50;
     bool markdown = false;
     bool json = false;
-    std::string designs = "thesis";
+    std::string designs = "builtin";
+    std::string spring_rule;
+    bool spring_rules = false;
   };
   auto vargs = std::make_shared<ValidateArgs>();
   CLI::App* validate = mech.add_subcommand(
@@ -341,21 +439,35 @@ void register_mechanism_command(CLI::App& app) {
                        vargs->toggle_fraction,
                        "Stroke of every design = this fraction of its toggle stroke, in (0, 1]");
   validate->add_flag("--markdown", vargs->markdown, "Print the Markdown table");
+  validate->add_flag("--spring-rules",
+                     vargs->spring_rules,
+                     "Instead: the spring rules of the modified designs against the exact model");
+  validate->add_option(
+      "--spring-rule",
+      vargs->spring_rule,
+      "Spring rule of the modified designs: pure-bending (default), table2, table5");
   validate->add_flag("--json", vargs->json, "Print one JSON object");
   validate
       ->add_option(
           "--designs",
           vargs->designs,
-          "thesis (the nine designs), howell (Howell's Table 10.1 designs), inversions, all")
-      ->default_str("thesis")
-      ->check(CLI::IsMember({"thesis", "howell", "inversions", "all"}));
+          "builtin (thesis + modified), thesis (the nine designs), modified (paper 004), howell "
+          "(Howell's Table 10.1 designs), inversions, all")
+      ->default_str("builtin")
+      ->check(CLI::IsMember({"builtin", "thesis", "modified", "howell", "inversions", "all"}));
   validate->callback([vargs] {
     require_in_range(vargs->points, "--points", 2, 100000);
     if (vargs->toggle_fraction) {
       require_in_range(*vargs->toggle_fraction, "--toggle-fraction", 1e-6, 1.0);
     }
+    if (vargs->spring_rules) {
+      print_spring_rules(vargs->points, vargs->json);
+      return;
+    }
+    std::optional<SpringRule> rule;
+    if (!vargs->spring_rule.empty()) rule = parse_spring_rule(vargs->spring_rule);
     print_validation(
-        vargs->points, vargs->toggle_fraction, vargs->markdown, vargs->json, vargs->designs);
+        vargs->points, vargs->toggle_fraction, rule, vargs->markdown, vargs->json, vargs->designs);
   });
 }
 

@@ -11,6 +11,7 @@
 #include "mechanisms/howell_designs.h"
 #include "mechanisms/inversion.h"
 #include "mechanisms/mechanism_prbm.h"
+#include "mechanisms/modified_designs.h"
 #include "solver/common/errors.h"
 
 namespace flexure::mechanism {
@@ -169,6 +170,9 @@ double MechanismDesign::spring_constant(int pivot) const {
     case PivotType::kPin:
       return 0.0;
     case PivotType::kSmall:
+      if (j.segment == SegmentKind::kFixedFixed) {
+        return spring_rule_factor(spring_rule, j) * EI / j.length;  // paper 004 Tables 2/5
+      }
       return EI / j.length;  // Howell eq. 5.14
     case PivotType::kLong:
       return kGamma * kKtheta * EI / j.length;  // Howell eq. 5.72
@@ -199,6 +203,9 @@ void MechanismDesign::finalise() {
     const double link = associated_link_length(*this, p);
     if (j.type == PivotType::kLong) {
       j.length = link / kGamma;  // thesis Table 8.1: l = r/gamma
+    } else if (j.segment == SegmentKind::kFixedFixed) {
+      // No default: the modified configurations give every segment's length (paper Table 3/5).
+      require_positive(j.length, fmt::format("{} fixed-fixed segment length (m)", pivot_label(p)));
     } else {
       if (j.length == 0.0) j.length = kMu * link;
       require_positive(j.length, fmt::format("{} flexure length (m)", pivot_label(p)));
@@ -212,6 +219,7 @@ void MechanismDesign::finalise() {
       }
     }
   }
+  check_fixed_fixed_lengths(*this);
   const double limit = toggle_stroke();
   if (stroke > limit) {
     throw InvalidInput(fmt::format(
@@ -232,6 +240,8 @@ const std::vector<MechanismDesign>& builtin_mechanisms() {
                                        : subclass_design(cfm::find_thesis_subclass(cfg.name + "-a"),
                                                          cfg.class_name + "-" + cfg.name));
     }
+    // The eleven modified configurations of paper 004 (modified_designs.h).
+    for (const auto& d : modified_designs()) list.push_back(d);
     return list;
   }();
   return designs;
@@ -266,7 +276,9 @@ MechanismDesign find_builtin_mechanism(const std::string& name) {
     std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) {
       return static_cast<char>(std::tolower(c));
     });
-    if (key == lower || key == d.config) return d;
+    if (key == lower || (d.paper_config.empty() && key == d.config)) return d;
+    // A modified design also by its pivot string alone ("lplm"), unique among the eleven.
+    if (!d.paper_config.empty() && key == d.paper_config) return d;
     names += (names.empty() ? "" : ", ") + d.name;
   }
   // Every sub-class of the thesis tables by its name (lpp-b, lps-a95I, ...), sized like the

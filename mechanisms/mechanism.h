@@ -8,7 +8,8 @@
 // the physical segments follow Table 8.1: an s flexure of length f is centred on its PRB pivot
 // (f = 0.1 r_i by default, r_ave for the middle pivot); an l segment is r/gamma long (gamma =
 // 0.85), replaces link 2 (at the ground, or plp) or link 3 (slp), and its characteristic pivot is
-// 0.15 l from its clamp. Units: SI (m, Pa, N) throughout.
+// 0.15 l from its clamp. The modified configurations of paper 004 add fixed-fixed segments
+// (SegmentKind below; modified_designs.h). Units: SI (m, Pa, N) throughout.
 #include <array>
 #include <string>
 #include <vector>
@@ -19,12 +20,29 @@ namespace flexure::mechanism {
 
 using cfm::PivotType;
 
+// How a flexible pivot is built. kThesis: thesis Table 8.1 (s: centred flexure, default length
+// 0.1 r; l: fixed-pinned segment r/gamma long). kFixedFixed: a flexible segment of the modified
+// configurations (paper 004, Ugwuoke & Abolarin): a strip of explicit length clamped at both ends
+// into rigid bodies and centred on its PRB pivot -- physically a centred flexure, so its joint
+// type is PivotType::kSmall whatever the paper's letter (docs/mechanisms.md "Modified
+// configurations").
+enum class SegmentKind { kThesis, kFixedFixed };
+
+// Spring constant of a fixed-fixed segment (docs/mechanisms.md): kPureBending k = EI/L (a strip
+// between two rigid bodies under an end moment, Howell eq. 5.14); kTable2 the paper's Table 2
+// (l: n gamma K_theta EI/L with its printed n = 0.3 or 0.6; s: EI/L); kTable5 the constants the
+// paper's Table 5 actually uses, twice Table 2 (docs/dynamics.md §2).
+enum class SpringRule { kPureBending, kTable2, kTable5 };
+
 // One pivot of the half-mechanism.
 struct JointDesign {
   PivotType type = PivotType::kPin;
   double length = 0.0;     // flexible length, m (s: flexure length; l: r/gamma, derived)
   double thickness = 0.0;  // in-plane thickness h, m (> 0 for s and l)
   double width = 0.0;      // out-of-plane width b, m (> 0 for s and l)
+  SegmentKind segment = SegmentKind::kThesis;
+  char paper_letter = 0;       // kFixedFixed: the paper's letter, 'l' or 's' (Table 2/5 factor)
+  double table2_factor = 0.3;  // kFixedFixed 'l': n of Table 2's n gamma K_theta EI/L
 
   double second_moment() const { return width * thickness * thickness * thickness / 12.0; }
   double area() const { return width * thickness; }
@@ -45,6 +63,10 @@ struct MechanismDesign {
   // computes in; the relative motion is the same); mechanisms/inversion.h gives the mirrored
   // description (pivot string reversed, r2 <-> r3, pivots renumbered 1 <-> 3) used for output.
   bool inverted = false;
+  // Modified configurations (paper 004): the paper's pivot string with its trailing m ("lplm");
+  // `config` is then the thesis pattern of the same topology with every segment an s ("sps").
+  std::string paper_config;
+  SpringRule spring_rule = SpringRule::kPureBending;  // fixed-fixed segments only
 
   const cfm::CfmConfiguration& configuration() const;
   double R() const { return r3 / r2; }
@@ -52,13 +74,15 @@ struct MechanismDesign {
   double toggle_stroke() const;
   // Torsional spring constant of the PRB pivot i (1..3), N m/rad; 0 for a pin.
   //   s: K = EI/l (Howell eq. 5.14);  l: K = gamma K_theta EI/l (eq. 5.72), gamma = 0.85,
-  //   K_theta = 2.65 (the thesis's constants, digest §2.2).
+  //   K_theta = 2.65 (the thesis's constants, digest §2.2); a fixed-fixed segment by
+  //   `spring_rule` (spring_rule_factor in modified_designs.h).
   double spring_constant(int pivot) const;
   // Fills the derived flexible lengths (s: 0.1 r_i if unset; l: r_i/gamma) and checks every value.
   // Throws InvalidInput naming the quantity and the allowed range: unknown configuration, r2, r3,
   // E, yield strength, stroke <= 0 or non-finite, a flexible pivot without positive thickness and
   // width, an s flexure longer than its link, a stroke past the toggle position (the message names
-  // the limit in m and in % of r2 + r3).
+  // the limit in m and in % of r2 + r3). A fixed-fixed segment needs an explicit length, and the
+  // rigid rest of each link (r minus half of each fixed-fixed segment on it) must stay > 0.
   void finalise();
 };
 

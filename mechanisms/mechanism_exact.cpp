@@ -120,6 +120,8 @@ ExactMechanismSolver::ExactMechanismSolver(MechanismDesign design)
 
 ExactMechanismSolver::ExactMechanismSolver(MechanismDesign design, Options options)
     : design_(std::move(design)), options_(options), support_(exact_support(design_)) {
+  // The exact model has no spring rule; its PRBM start guesses are closest with k = EI/L.
+  design_.spring_rule = SpringRule::kPureBending;
   physical_ = physical_chain(design_);
   length_scale_ = physical_.slider_x0;
   EI_scale_ = 0.0;
@@ -406,6 +408,11 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
       previous = &predicted;
     }
     ExactPoint point = solver.solve(dx, previous);
+    if (!point.converged && k == 0) {
+      // No neighbour to start from and the PRBM start failed (mechanism_exact_start.cpp).
+      ExactPoint started = exact_first_point(design, displacements, options);
+      if (started.converged) point = std::move(started);
+    }
     if (!point.converged && k >= 1) {
       // Retry in substeps from the last converged point (large rotations per stroke step can
       // throw Newton onto another branch).

@@ -140,6 +140,18 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
                                const std::vector<double>& displacements,
                                const ExactMechanismSolver::Options& options);
 
+// First point of a stroke when the PRBM start fails (mechanism_exact_start.cpp): near the straight
+// position the PRBM force of a mechanism with long or very unequal flexures can lie below the exact
+// buckling load (the shooting then finds the straight cantilever) or far enough off for Newton to
+// diverge. Tries (1) the last stroke point from the PRBM start, walked back to the first in
+// substeps; (2) a homotopy in the flexure thicknesses from all equal to the largest (a well
+// conditioned chain) to the real ones at the first displacement. Length and EI scales stay those of
+// the design, so the unknowns carry over. Returns the point at displacements[0] (converged = false
+// with a message if both fail).
+ExactPoint exact_first_point(const MechanismDesign& design,
+                             const std::vector<double>& displacements,
+                             const ExactMechanismSolver::Options& options);
+
 // Bending moment, strain energy and stress of a solved point, from its shape at `shape_points`
 // equally spaced arc lengths: m(s) = m0 + Nx y(s) - Ny x(s) (statics of the distal part, no node
 // loads). Strain energy by the trapezoidal rule on each flexible segment (end values interpolated).

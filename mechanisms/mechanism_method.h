@@ -12,6 +12,10 @@ namespace flexure::mechanism {
 // built-in design of `config` (`flexure mechanism validate --points 50`, docs/validation.md).
 // tests/mechanism_method_test.cpp recomputes these so that the table cannot go stale.
 double measured_prbm_force_error(const std::string& config);
+// The same for a design: its configuration's value, or for a modified configuration of paper 004
+// (paper_config set) the value of the built-in design of that configuration under the design's
+// spring rule. Throws InvalidInput if none was measured.
+double measured_prbm_force_error(const MechanismDesign& design);
 
 // Margin applied to the measured error: other dimensions of the same configuration move the error.
 inline constexpr double kPrbmErrorMargin = 1.5;

@@ -70,7 +70,12 @@ PrbmState prbm_state(const MechanismDesign& design, double displacement) {
     double M = 0.0;
     if (j.type == PivotType::kSmall) {
       const double psi = p == 1 ? pose.psi1() : p == 2 ? pose.psi2() : pose.psi3();
-      M = design.spring_constant(p) * std::abs(psi);
+      // A fixed-fixed strip turned by psi between its two rigid bodies is bent to the curvature
+      // psi/L whatever spring rule the force uses: M = (EI/L) psi (pure bending).
+      const double K = j.segment == SegmentKind::kFixedFixed
+                           ? design.E * j.second_moment() / j.length
+                           : design.spring_constant(p);
+      M = K * std::abs(psi);
     } else {
       const double back = (1.0 - kGamma) * j.length;  // clamp behind the characteristic pivot
       double cx, cy, ex, ey;                          // clamp, pinned end

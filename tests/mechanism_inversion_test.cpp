@@ -52,8 +52,8 @@ TEST(MechanismInversion, PrbmForceEqualsTheOriginalsForEveryInvertedBuiltinDesig
   for (const auto* list : {&builtin_mechanisms(), &howell_mechanisms()}) {
     for (const MechanismDesign& d : *list) {
       if (!config_has_inversion(d.config)) continue;
-      expect_same_force(d);
-      ++count;
+      expect_same_force(d);  // the paper's modified designs too (lppm, llpm, slpm)
+      if (d.paper_config.empty()) ++count;
     }
   }
   EXPECT_EQ(count, 6 + 5);  // thesis spp, lpp, plp, ssp, slp, lps; Howell spp x2, lpp, ssp x2

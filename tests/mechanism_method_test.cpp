@@ -23,7 +23,7 @@ TEST(MechanismMethod, MeasuredErrorTableMatchesTheExactModel) {
     o.exact = true;
     const MechanismAnalysis a = analyze_mechanism(d, o);
     ASSERT_TRUE(a.has_exact && a.exact.converged) << d.name;
-    EXPECT_NEAR(a.max_force_error, measured_prbm_force_error(d.config), 5.1e-5) << d.name;
+    EXPECT_NEAR(a.max_force_error, measured_prbm_force_error(d), 5.1e-5) << d.name;
   }
 }
 
