@@ -105,22 +105,22 @@ Json design_json(const MechanismDesign& d) {
     }
     joints.push_back(jj);
   }
-  Json out{{"name", d.name},
-           {"paper_config", d.paper_config.empty() ? Json(nullptr) : Json(d.paper_config)},
-           {"spring_rule",
-            has_fixed_fixed(d) ? Json(spring_rule_name(d.spring_rule)) : Json(nullptr)},
-           {"config", m.config},
-           {"class", d.configuration().class_name},
-           {"r2", m.r2},
-           {"r3", m.r3},
-           {"E", d.E},
-           {"yield_strength", d.yield_strength},
-           {"stroke", d.stroke},
-           {"toggle_stroke", d.toggle_stroke()},
-           {"joints", joints},
-           {"note", d.note},
-           {"inverted", d.inverted},
-           {"fixed_body", m.fixed_body}};
+  Json out{
+      {"name", d.name},
+      {"paper_config", d.paper_config.empty() ? Json(nullptr) : Json(d.paper_config)},
+      {"spring_rule", has_fixed_fixed(d) ? Json(spring_rule_name(d.spring_rule)) : Json(nullptr)},
+      {"config", m.config},
+      {"class", d.configuration().class_name},
+      {"r2", m.r2},
+      {"r3", m.r3},
+      {"E", d.E},
+      {"yield_strength", d.yield_strength},
+      {"stroke", d.stroke},
+      {"toggle_stroke", d.toggle_stroke()},
+      {"joints", joints},
+      {"note", d.note},
+      {"inverted", d.inverted},
+      {"fixed_body", m.fixed_body}};
   if (d.inverted) out["inversion_of_config"] = d.config;
   return out;
 }
@@ -397,9 +397,8 @@ void register_mechanism_command(CLI::App& app) {
     }
     std::cout << fmt::format("{} ({}): {}\n",
                              d.name,
-                             d.paper_config.empty()
-                                 ? described_form(d).config
-                                 : d.paper_config + ", solved as " + d.config,
+                             d.paper_config.empty() ? described_form(d).config
+                                                    : d.paper_config + ", solved as " + d.config,
                              d.note);
     std::cout << fmt::format("  method: {} ({})\n", choice.method, choice.reason);
     std::cout << fmt::format("  percent constant force: PRBM {:.2f} %{}\n",
