@@ -41,6 +41,10 @@ BENCHMARK_CAPTURE(BM_ExactStroke50, slp, "2A-slp")->Unit(benchmark::kMillisecond
 BENCHMARK_CAPTURE(BM_ExactStroke50, sps, "2B-sps")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_ExactStroke50, lps, "2B-lps")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_ExactStroke50, sss, "3A-sss")->Unit(benchmark::kMillisecond);
+// Thesis rows whose cranks carry about their own buckling load (docs/mechanisms.md "Pinned
+// middle"); the nested pin-force Newton could not solve them.
+BENCHMARK_CAPTURE(BM_ExactStroke50, lps_a90, "lps-a90")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactStroke50, sps_b86IO, "sps-b86IO")->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -398,6 +398,7 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
       predicted.Nx = extrapolate(a.Nx, b.Nx);
       predicted.Ny = extrapolate(a.Ny, b.Ny);
       predicted.m0 = extrapolate(a.m0, b.m0);
+      predicted.coupler_m0 = extrapolate(a.coupler_m0, b.coupler_m0);
       if (a.unknowns.size() == b.unknowns.size()) {
         for (std::size_t i = 0; i < b.unknowns.size(); ++i) {
           predicted.unknowns[i] = extrapolate(a.unknowns[i], b.unknowns[i]);

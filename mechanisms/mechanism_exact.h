@@ -16,7 +16,12 @@
 //  * kPinnedMiddle (sps, lps): a pin at pivot 2 between the crank (clamped at the ground) and the
 //    coupler (clamped into the slider by its flexure). Two cantilevers -- the crank from the ground
 //    clamp, the coupler from the slider clamp (its own frame turned by pi) -- each carry the pin
-//    force P as a dead tip load with zero tip moment; Newton on P makes their tips meet.
+//    force P as a dead tip load with zero tip moment. One Newton iteration on P, both root
+//    moments (and any multiple-shooting cut states) makes both tip moments vanish and the tips
+//    meet (solve_pinned_middle; the Jacobian comes from the integrator's sensitivities). Newton on
+//    P alone around two separate cantilever solves fails where a cantilever carries about its
+//    own buckling load, which is where these constant-force mechanisms work (docs/mechanisms.md
+//    "Pinned middle").
 //  * kPinnedEnds (psp, plp): pins at the ground and at the slider, so the half mechanism is a
 //    pinned-pinned two-force member loaded along the slider axis. The chain starts with a root
 //    kink alpha (the unknown crank angle) and carries the dead tip force (-F, 0); Newton on
@@ -79,6 +84,10 @@ struct ExactPoint {
   SegmentChain coupler_chain;
   std::vector<double> coupler_unknowns;
   double coupler_m0 = 0.0;
+  // kPinnedMiddle: determinant of the tangent matrix (Jacobian of the closure and pin-moment
+  // residuals in the pin force, root moments and cut states) at the solution, nondimensional. A
+  // change of sign between stroke points means a singular point was passed (fold or bifurcation).
+  double stiffness_determinant = 0.0;
   bool converged = false;
   std::string message;
   int iterations = 0;     // shooting Newton iterations, all solves of this point
@@ -99,7 +108,8 @@ class ExactMechanismSolver {
     // Middle pin: a Newton step that no longer decreases the mismatch ends the iteration as
     // converged when the mismatch is below this (integrator rtol 1e-12 times the FD Jacobian).
     double noise_floor = 1e-9;
-    int max_newton_iterations = 30;  // middle pin: Newton steps on (Q, phi) or P per point
+    int max_newton_iterations = 30;  // Newton steps per point on (Q, phi), (F, alpha) or, for the
+                                     // middle pin, (P, root moments)
     bool reuse_jacobian = false;     // two-force case: start from the previous point's Jacobian
   };
 
