@@ -161,16 +161,30 @@ ExactSegmentState exact_segment_state(const MechanismDesign& design,
                                       const ExactPoint& point,
                                       int shape_points = 801);
 
-// Second opinion: Howell's chain algorithm (N elements) on the same chain as a free chain under the
-// dead tip loads of the shooting solution (the slider reactions, or the coupler force); reports
-// how far its tip lands from the shooting solution's tip (m). (Prescribing the slider end instead
-// fails: the chain algorithm's load increments start at the straight chain, a bifurcation point.)
+// Second opinion: Howell's chain algorithm (N elements over the flexible segments of a chain) on
+// the solved exact point, for every topology (mechanism_exact_chain_check.cpp). Each flexible
+// segment of each chain (crank chain, serial chain to the slider, coupler chain of a middle pin) is
+// cut into parts short enough that their equilibrium under dead loads is unique; each part is
+// clamped at its solved root pose and loaded at its tip by the solved internal force and moment;
+// the parts' tips, composed root to tip with the rigid links, give the chain's tip, compared with
+// the shooting tip. (The whole chain under its dead end loads is not a usable check: the chain
+// algorithm's proportional loading from the straight chain finds another equilibrium of the
+// post-buckled, neutrally stable constant-force mechanism; a prescribed slider end starts it at a
+// bifurcation.)
 struct ChainCheck {
   bool converged = false;
   std::string message;
-  double force = 0.0;      // slider force of the shooting solution, N
-  double tip_error = 0.0;  // |tip_chain - tip_shooting|, m
+  double force = 0.0;        // slider force of the shooting solution, N
+  double tip_error = 0.0;    // largest |tip_chain - tip_shooting| over the chains, m
+  double angle_error = 0.0;  // largest |theta_chain - theta_shooting| at a chain tip, rad
+  // How far the chain-algorithm tips miss the joint the mechanism closes on, m: the slider joint
+  // (serial chain, pinned ends), each other (crank and coupler at the middle pin), the line of
+  // the coupler force through the slider joint (two-force coupler). Includes the shooting
+  // solution's own closure residual.
+  double closure_error = 0.0;
+  int pieces = 0;  // flexible parts solved by the chain algorithm
 };
-ChainCheck chain_algorithm_check(const ExactPoint& point, int elements);
+ChainCheck chain_algorithm_check(const ExactPoint& point, int elements);  // corrected variant
+ChainCheck chain_algorithm_check(const ExactPoint& point, int elements, ChainVariant variant);
 
 }  // namespace flexure::mechanism
