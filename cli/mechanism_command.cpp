@@ -163,6 +163,8 @@ void print_validation(int points, std::optional<double> toggle_fraction, bool ma
     if (check) {
       r["chain_check_converged"] = check->converged;
       r["chain_check_tip_error"] = check->converged ? Json(check->tip_error) : Json(nullptr);
+      r["chain_check_closure_error"] =
+          check->converged ? Json(check->closure_error) : Json(nullptr);
       r["chain_check_elements"] = kChainCheckElements;
       r["chain_check_at"] = a.exact.points.back().displacement;
     }
