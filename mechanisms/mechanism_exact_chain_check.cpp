@@ -214,6 +214,13 @@ ChainCheck check_chain(const SegmentChain& chain,
   return c;
 }
 
+// The pinned-ends chain (psp, plp) starts with a zero-length rigid kink, the crank angle at the
+// ground pin (mechanism_exact.h); the two-force crank starts with its flexure.
+bool starts_with_root_kink(const SegmentChain& chain) {
+  const auto* kink = std::get_if<RigidSegment>(&chain.segments.front());
+  return kink != nullptr && kink->length == 0.0;
+}
+
 }  // namespace
 
 ChainCheck chain_algorithm_check(const ExactPoint& point, int elements) {
@@ -255,7 +262,7 @@ ChainCheck chain_algorithm_check(const ExactPoint& point, int elements, ChainVar
   if (tips.size() == 2) {
     // Middle pin: crank tip and coupler tip (its frame turned by pi about the slider) meet.
     closure = std::hypot(t.x + tips[1].x - xs, t.y + tips[1].y);
-  } else if (point.chain.end == EndCondition::kFree && point.chain.tip_load.Fy != 0.0) {
+  } else if (point.chain.end == EndCondition::kFree && !starts_with_root_kink(point.chain)) {
     // Two-force coupler: pivot 2 lies on the line of the coupler force through the slider joint.
     closure = std::abs((t.x - xs) * N.y() - t.y * N.x()) / N.norm();
   } else {
