@@ -86,7 +86,8 @@ struct ExactPoint {
   double coupler_m0 = 0.0;
   // kPinnedMiddle: determinant of the tangent matrix (Jacobian of the closure and pin-moment
   // residuals in the pin force, root moments and cut states) at the solution, nondimensional. A
-  // change of sign between stroke points means a singular point was passed (fold or bifurcation).
+  // change of sign between stroke points (with the same multiple-shooting cuts) means a singular
+  // point was passed (fold or bifurcation).
   double stiffness_determinant = 0.0;
   bool converged = false;
   std::string message;
