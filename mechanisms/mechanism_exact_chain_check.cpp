@@ -7,8 +7,9 @@
 // stable by design (F nearly constant), the lps/sps cranks are post-buckled columns loaded from
 // the far side (unstable under dead load), and a rigid link on a short flexure under a compressive
 // force is a buckling problem of its own; prescribing the whole slider end instead starts the path
-// at a bifurcation (the straight chain compressed along its axis). Measured on the 9 built-in
-// designs: the whole chains under their dead end loads land 0.4-7 r2 away from the solution.
+// at a bifurcation (the straight chain compressed along its axis). Measured on the built-in
+// designs other than the two-force ones (spp, lpp, where the crank alone is a stable cantilever):
+// the whole chains under their solved dead end loads land 1.2-7.2 r2 away from the solution.
 //
 // So every flexible segment of every chain of the exact model (the crank chain, the serial chain
 // to the slider, the coupler chain of a middle pin) is cut into parts short enough that their
