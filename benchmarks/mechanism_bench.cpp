@@ -41,6 +41,26 @@ BENCHMARK_CAPTURE(BM_ExactStroke50, slp, "2A-slp")->Unit(benchmark::kMillisecond
 BENCHMARK_CAPTURE(BM_ExactStroke50, sps, "2B-sps")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_ExactStroke50, lps, "2B-lps")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_ExactStroke50, sss, "3A-sss")->Unit(benchmark::kMillisecond);
+// Thesis rows whose cranks carry about their own buckling load (docs/mechanisms.md "Pinned
+// middle"); the nested pin-force Newton could not solve them.
+BENCHMARK_CAPTURE(BM_ExactStroke50, lps_a90, "lps-a90")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactStroke50, sps_b86IO, "sps-b86IO")->Unit(benchmark::kMillisecond);
+
+// Chain-algorithm second opinion on the last stroke point (corrected variant, N = 100, as in
+// `flexure mechanism validate`; docs/mechanisms.md "Chain algorithm check").
+void BM_ChainCheck100(benchmark::State& state, const char* name) {
+  flexure::disable_gsl_abort();
+  const MechanismDesign d = find_builtin_mechanism(name);
+  const ExactPoint p = ExactMechanismSolver(d).solve(d.stroke);
+  if (!p.converged) state.SkipWithError(p.message.c_str());
+  for (auto _ : state) {
+    ChainCheck c = chain_algorithm_check(p, 100);
+    benchmark::DoNotOptimize(c.tip_error);
+  }
+}
+BENCHMARK_CAPTURE(BM_ChainCheck100, lpp, "1A-lpp")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ChainCheck100, lps, "2B-lps")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ChainCheck100, sss, "3A-sss")->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

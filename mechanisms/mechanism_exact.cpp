@@ -400,6 +400,7 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
       predicted.Nx = extrapolate(a.Nx, b.Nx);
       predicted.Ny = extrapolate(a.Ny, b.Ny);
       predicted.m0 = extrapolate(a.m0, b.m0);
+      predicted.coupler_m0 = extrapolate(a.coupler_m0, b.coupler_m0);
       if (a.unknowns.size() == b.unknowns.size()) {
         for (std::size_t i = 0; i < b.unknowns.size(); ++i) {
           predicted.unknowns[i] = extrapolate(a.unknowns[i], b.unknowns[i]);
@@ -561,39 +562,6 @@ ExactSegmentState exact_segment_state(const MechanismDesign& design,
                      st);
   }
   return st;
-}
-
-ChainCheck chain_algorithm_check(const ExactPoint& point, int elements) {
-  // The chain algorithm cannot start from the straight chain with a prescribed slider end (the
-  // straight compressed state is a bifurcation point), so both cases are compared as a free chain
-  // under the dead tip loads the shooting solution found: the chain algorithm must put the tip
-  // where the shooting solver did (on the slider, or on pivot 2).
-  SegmentChain free_chain = point.chain;
-  ShootingSolver::Options so;
-  so.backend = ElasticaIntegrator::Backend::kDormandPrince;
-  const ShootingResult s = ShootingSolver(so).solve_from(point.chain, point.unknowns);
-  ChainCheck c;
-  if (!s.converged) {
-    c.message = "re-solving the shooting point failed: " + s.message;
-    return c;
-  }
-  if (point.chain.end != EndCondition::kFree) {
-    free_chain.end = EndCondition::kFree;
-    free_chain.prescribed = TipPrescription{};
-    free_chain.tip_load.Fx = s.tip_load.Fx;
-    free_chain.tip_load.Fy = s.tip_load.Fy;
-    free_chain.tip_load.M = s.tip_load.M;
-  }
-  ChainAlgorithmSolver::Options o;
-  o.elements = elements;
-  o.record_load_path = false;
-  const ChainResult r = solve_chain(free_chain, o);
-  c.converged = r.converged;
-  c.message = r.message;
-  if (!r.converged) return c;
-  c.force = point.force;
-  c.tip_error = std::hypot(r.tip.x - s.tip.x, r.tip.y - s.tip.y) * point.length_scale;
-  return c;
 }
 
 }  // namespace flexure::mechanism

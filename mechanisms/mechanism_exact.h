@@ -16,7 +16,12 @@
 //  * kPinnedMiddle (sps, lps): a pin at pivot 2 between the crank (clamped at the ground) and the
 //    coupler (clamped into the slider by its flexure). Two cantilevers -- the crank from the ground
 //    clamp, the coupler from the slider clamp (its own frame turned by pi) -- each carry the pin
-//    force P as a dead tip load with zero tip moment; Newton on P makes their tips meet.
+//    force P as a dead tip load with zero tip moment. One Newton iteration on P, both root
+//    moments (and any multiple-shooting cut states) makes both tip moments vanish and the tips
+//    meet (solve_pinned_middle; the Jacobian comes from the integrator's sensitivities). Newton on
+//    P alone around two separate cantilever solves fails where a cantilever carries about its
+//    own buckling load, which is where these constant-force mechanisms work (docs/mechanisms.md
+//    "Pinned middle").
 //  * kPinnedEnds (psp, plp): pins at the ground and at the slider, so the half mechanism is a
 //    pinned-pinned two-force member loaded along the slider axis. The chain starts with a root
 //    kink alpha (the unknown crank angle) and carries the dead tip force (-F, 0); Newton on
@@ -79,6 +84,11 @@ struct ExactPoint {
   SegmentChain coupler_chain;
   std::vector<double> coupler_unknowns;
   double coupler_m0 = 0.0;
+  // kPinnedMiddle: determinant of the tangent matrix (Jacobian of the closure and pin-moment
+  // residuals in the pin force, root moments and cut states) at the solution, nondimensional. A
+  // change of sign between stroke points (with the same multiple-shooting cuts) means a singular
+  // point was passed (fold or bifurcation).
+  double stiffness_determinant = 0.0;
   bool converged = false;
   std::string message;
   int iterations = 0;     // shooting Newton iterations, all solves of this point
@@ -99,7 +109,8 @@ class ExactMechanismSolver {
     // Middle pin: a Newton step that no longer decreases the mismatch ends the iteration as
     // converged when the mismatch is below this (integrator rtol 1e-12 times the FD Jacobian).
     double noise_floor = 1e-9;
-    int max_newton_iterations = 30;  // middle pin: Newton steps on (Q, phi) or P per point
+    int max_newton_iterations = 30;  // Newton steps per point on (Q, phi), (F, alpha) or, for the
+                                     // middle pin, (P, root moments)
     bool reuse_jacobian = false;     // two-force case: start from the previous point's Jacobian
   };
 
@@ -163,16 +174,30 @@ ExactSegmentState exact_segment_state(const MechanismDesign& design,
                                       const ExactPoint& point,
                                       int shape_points = 801);
 
-// Second opinion: Howell's chain algorithm (N elements) on the same chain as a free chain under the
-// dead tip loads of the shooting solution (the slider reactions, or the coupler force); reports
-// how far its tip lands from the shooting solution's tip (m). (Prescribing the slider end instead
-// fails: the chain algorithm's load increments start at the straight chain, a bifurcation point.)
+// Second opinion: Howell's chain algorithm (N elements over the flexible segments of a chain) on
+// the solved exact point, for every topology (mechanism_exact_chain_check.cpp). Each flexible
+// segment of each chain (crank chain, serial chain to the slider, coupler chain of a middle pin) is
+// cut into parts short enough that their equilibrium under dead loads is unique; each part is
+// clamped at its solved root pose and loaded at its tip by the solved internal force and moment;
+// the parts' tips, composed root to tip with the rigid links, give the chain's tip, compared with
+// the shooting tip. (The whole chain under its dead end loads is not a usable check: the chain
+// algorithm's proportional loading from the straight chain finds another equilibrium of the
+// post-buckled, neutrally stable constant-force mechanism; a prescribed slider end starts it at a
+// bifurcation.)
 struct ChainCheck {
   bool converged = false;
   std::string message;
-  double force = 0.0;      // slider force of the shooting solution, N
-  double tip_error = 0.0;  // |tip_chain - tip_shooting|, m
+  double force = 0.0;        // slider force of the shooting solution, N
+  double tip_error = 0.0;    // largest |tip_chain - tip_shooting| over the chains, m
+  double angle_error = 0.0;  // largest |theta_chain - theta_shooting| at a chain tip, rad
+  // How far the chain-algorithm tips miss the joint the mechanism closes on, m: the slider joint
+  // (serial chain, pinned ends), each other (crank and coupler at the middle pin), the line of
+  // the coupler force through the slider joint (two-force coupler). Includes the shooting
+  // solution's own closure residual.
+  double closure_error = 0.0;
+  int pieces = 0;  // flexible parts solved by the chain algorithm
 };
-ChainCheck chain_algorithm_check(const ExactPoint& point, int elements);
+ChainCheck chain_algorithm_check(const ExactPoint& point, int elements);  // corrected variant
+ChainCheck chain_algorithm_check(const ExactPoint& point, int elements, ChainVariant variant);
 
 }  // namespace flexure::mechanism

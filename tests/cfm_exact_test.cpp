@@ -6,7 +6,8 @@
 // equal Phi_exact (and the percent constant force and max force error must agree), and its mean
 // PRBM force scaled the same way must equal the nondimensional model's Phi on the same equally
 // spaced points (two independent PRBM implementations: closed-form nondimensional eq. 2.14 vs the
-// dimensional virtual-work model). The documented JSON keys exist; a capped, unconverged exact
+// dimensional virtual-work model), also for two middle-pin rows the earlier solver could not
+// solve. The documented JSON keys exist; all 68 thesis rows converge; a capped, unconverged exact
 // solve exits 3; --exact-points without --exact exits 2.
 #include <gtest/gtest.h>
 
@@ -123,6 +124,23 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"lps", 0.7591, 0.0, 1.0029, "--K2 1.0029"},       // lps-aIo
                       Case{"psp", 1.0, 0.0, 0.0, ""}),                       // psp-a (1B)
     [](const auto& info) { return std::string(info.param.config); });
+
+// Two of the nine middle-pin thesis rows the earlier nested pin-force Newton could not solve
+// (docs/mechanisms.md "Pinned middle"): lps-a90 (R = 2.096, K2 = 2.0313) and sps-b86IO (R = 1,
+// K2 = 1), d = 16 % here.
+INSTANTIATE_TEST_SUITE_P(FormerlyUnconverged,
+                         CfmExact,
+                         ::testing::Values(Case{"lps", 2.0960, 0.0, 2.0313, "--K2 2.0313"},
+                                           Case{"sps", 1.0, 0.0, 1.0, "--K2 1"}),
+                         [](const auto& info) { return std::string(info.param.config); });
+
+// Every thesis sub-class has a converged exact model (exit 0; a row that does not converge makes
+// the table exit 3).
+TEST(CfmExactCli, EveryThesisRowConverges) {
+  const CommandResult r = run_flexure("cfm --table --exact --exact-rows all --markdown");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.find("not converged"), std::string::npos);
+}
 
 TEST(CfmExactCli, UnconvergedExactSolveExits3) {
   const CommandResult r =
