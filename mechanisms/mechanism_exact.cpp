@@ -479,17 +479,18 @@ void accumulate_chain(const MechanismDesign& design,
   if (!r.converged || r.shape.size() < 2) {
     throw NoConvergence("re-solving the exact point for its shape failed: " + r.message);
   }
-  auto moment = [&](double x, double y) { return m0 + (Nx * y - Ny * x) * L; };
-  // Linear interpolation of (x, y) at arc length s between shape samples.
-  auto moment_at = [&](double s) {
+  auto moment = [&](const ShapePoint& q) { return m0 + (Nx * q.y - Ny * q.x) * L; };
+  // Shape linearly interpolated at arc length s between the samples (segment ends).
+  auto shape_at = [&](double s) {
     auto it = std::lower_bound(
         r.shape.begin(), r.shape.end(), s, [](const ShapePoint& q, double v) { return q.s < v; });
-    if (it == r.shape.begin()) return moment(it->x, it->y);
-    if (it == r.shape.end()) return moment(r.shape.back().x, r.shape.back().y);
+    if (it == r.shape.begin()) return *it;
+    if (it == r.shape.end()) return r.shape.back();
     const ShapePoint& b = *it;
     const ShapePoint& a = *(it - 1);
     const double t = (s - a.s) / (b.s - a.s);
-    return moment(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y));
+    return ShapePoint{
+        s, a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.theta + t * (b.theta - a.theta)};
   };
   const double N = std::hypot(Nx, Ny);
   double s0 = 0.0;
@@ -499,12 +500,13 @@ void accumulate_chain(const MechanismDesign& design,
                            ? std::get<FlexibleSegment>(seg).length
                            : std::get<RigidSegment>(seg).length;
     if (const auto* f = std::get_if<FlexibleSegment>(&seg)) {
+      const ShapePoint start = shape_at(s0), end = shape_at(s0 + len);
       std::vector<std::pair<double, double>> samples;  // (s, m)
-      samples.emplace_back(s0, moment_at(s0));
+      samples.emplace_back(s0, moment(start));
       for (const ShapePoint& q : r.shape) {
-        if (q.s > s0 && q.s < s0 + len) samples.emplace_back(q.s, moment(q.x, q.y));
+        if (q.s > s0 && q.s < s0 + len) samples.emplace_back(q.s, moment(q));
       }
-      samples.emplace_back(s0 + len, moment_at(s0 + len));
+      samples.emplace_back(s0 + len, moment(end));
       double U = 0.0, m_max = 0.0;
       for (std::size_t k = 0; k < samples.size(); ++k) {
         m_max = std::max(m_max, std::abs(samples[k].second));
@@ -515,12 +517,16 @@ void accumulate_chain(const MechanismDesign& design,
                 samples[k - 1].second * samples[k - 1].second);
         }
       }
-      st.strain_energy += U * L / (2.0 * f->EI * EI_scale);
+      U *= L / (2.0 * f->EI * EI_scale);
+      st.strain_energy += U;
       const int pivot = j < pivots.size() ? pivots[j] : 0;
       if (pivot > 0) {
         const JointDesign& jd = design.joints[pivot - 1];
         const double sigma = m_max * 0.5 * jd.thickness / jd.second_moment() + N / jd.area();
         st.max_stress[pivot - 1] = std::max(st.max_stress[pivot - 1], sigma);
+        st.pivot_strain_energy[pivot - 1] += U;
+        st.pivot_rotation[pivot - 1] += end.theta - start.theta;
+        st.has_pivot[pivot - 1] = true;
       }
     }
     s0 += len;

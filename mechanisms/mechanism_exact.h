@@ -169,6 +169,11 @@ ExactPoint exact_first_point(const MechanismDesign& design,
 struct ExactSegmentState {
   std::array<double, 3> max_stress{};  // per pivot, Pa: max |m| h/(2I) + |N|/A
   double strain_energy = 0.0;          // J, integral of m^2/(2 EI) over the flexible segments
+  std::array<double, 3> pivot_strain_energy{};  // J, the same per pivot
+  // End-to-end rotation theta(end) - theta(start) of each pivot's flexible segment(s), rad; with
+  // pivot_strain_energy it gives the energy-equivalent spring 2U/rotation^2 (modified_springs.h).
+  std::array<double, 3> pivot_rotation{};
+  std::array<bool, 3> has_pivot{};  // a flexible segment of this pivot was found
 };
 ExactSegmentState exact_segment_state(const MechanismDesign& design,
                                       const ExactPoint& point,

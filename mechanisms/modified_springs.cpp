@@ -10,97 +10,18 @@
 #include "solver/common/errors.h"
 
 namespace flexure::mechanism {
-namespace {
-
-// Strain energy and end-to-end rotation of every flexible segment of one solved nondimensional
-// chain (the statics of exact_segment_state: m(s) = m0 + (Nx y - Ny x) L, no node loads).
-void add_chain(const MechanismDesign& design,
-               const SegmentChain& chain,
-               const std::vector<double>& unknowns,
-               const std::vector<int>& pivots,
-               double m0,
-               double Nx,
-               double Ny,
-               double L,
-               double EI_scale,
-               int shape_points,
-               std::array<std::optional<double>, 3>& ratio) {
-  ShootingSolver::Options o;
-  o.backend = ElasticaIntegrator::Backend::kDormandPrince;
-  o.shape_points = shape_points;
-  const ShootingResult r = ShootingSolver(o).solve_from(chain, unknowns);
-  if (!r.converged || r.shape.size() < 2) {
-    throw NoConvergence("re-solving the exact point for its shape failed: " + r.message);
-  }
-  auto at = [&](double s) {  // shape point interpolated at arc length s
-    auto it = std::lower_bound(
-        r.shape.begin(), r.shape.end(), s, [](const ShapePoint& q, double v) { return q.s < v; });
-    if (it == r.shape.begin()) return *it;
-    if (it == r.shape.end()) return r.shape.back();
-    const ShapePoint &b = *it, &a = *(it - 1);
-    const double t = (s - a.s) / (b.s - a.s);
-    return ShapePoint{
-        s, a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.theta + t * (b.theta - a.theta)};
-  };
-  auto moment = [&](const ShapePoint& q) { return m0 + (Nx * q.y - Ny * q.x) * L; };
-  double s0 = 0.0;
-  for (std::size_t j = 0; j < chain.segments.size(); ++j) {
-    const auto& seg = chain.segments[j];
-    const auto* f = std::get_if<FlexibleSegment>(&seg);
-    const double len = f != nullptr ? f->length : std::get<RigidSegment>(seg).length;
-    const int pivot = j < pivots.size() ? pivots[j] : 0;
-    if (f != nullptr && pivot > 0) {
-      std::vector<ShapePoint> q{at(s0)};
-      for (const ShapePoint& p : r.shape) {
-        if (p.s > s0 && p.s < s0 + len) q.push_back(p);
-      }
-      q.push_back(at(s0 + len));
-      double U = 0.0;  // integral m^2 ds (trapezoidal), N^2 m^2 x (nondimensional length)
-      for (std::size_t k = 1; k < q.size(); ++k) {
-        const double ma = moment(q[k - 1]), mb = moment(q[k]);
-        U += 0.5 * (q[k].s - q[k - 1].s) * (ma * ma + mb * mb);
-      }
-      const double EI = f->EI * EI_scale, length = len * L;
-      U *= L / (2.0 * EI);
-      const double dtheta = q.back().theta - q.front().theta;
-      ratio[pivot - 1] = 2.0 * U / (dtheta * dtheta) / (EI / length);
-    }
-    s0 += len;
-  }
-  (void)design;
-}
-
-}  // namespace
-
 std::array<std::optional<double>, 3> equivalent_spring_ratios(const MechanismDesign& design,
                                                               const ExactPoint& point,
                                                               int shape_points) {
   if (!point.converged) throw InvalidInput("equivalent_spring_ratios needs a converged point");
-  const PhysicalChain pc = physical_chain(design);
+  const ExactSegmentState st = exact_segment_state(design, point, shape_points);
   std::array<std::optional<double>, 3> ratio;
-  add_chain(design,
-            point.chain,
-            point.unknowns,
-            pc.flexible_pivot,
-            point.m0,
-            point.Nx,
-            point.Ny,
-            point.length_scale,
-            point.EI_scale,
-            shape_points,
-            ratio);
-  if (!point.coupler_chain.segments.empty()) {
-    add_chain(design,
-              point.coupler_chain,
-              point.coupler_unknowns,
-              pc.coupler_flexible_pivot,
-              point.coupler_m0,
-              point.Nx,
-              point.Ny,
-              point.length_scale,
-              point.EI_scale,
-              shape_points,
-              ratio);
+  for (int p = 0; p < 3; ++p) {
+    if (!st.has_pivot[p]) continue;
+    const JointDesign& j = design.joints[p];
+    const double EI_over_L = design.E * j.second_moment() / j.length;
+    ratio[p] =
+        2.0 * st.pivot_strain_energy[p] / (st.pivot_rotation[p] * st.pivot_rotation[p]) / EI_over_L;
   }
   return ratio;
 }
