@@ -15,15 +15,6 @@ namespace {
 
 constexpr double kGamma = 0.85;  // fixed-pinned characteristic radius factor (thesis §2.2)
 
-ElasticaIntegrator::Options pinned_middle_integrator_options(const ShootingSolver::Options& o) {
-  ElasticaIntegrator::Options io;
-  io.rtol = o.rtol;
-  io.atol = o.atol;
-  io.adams = o.adams;
-  io.backend = o.backend;
-  return io;
-}
-
 // Multiple-shooting parts for a chain under a pin force of magnitude `force` (the rule of
 // shooting_problem.h, which cannot apply it itself: a pinned end's force is an unknown, not a
 // given load): no flexible part longer than budget * sqrt(EI/|P|).
@@ -253,7 +244,7 @@ ExactPoint ExactMechanismSolver::solve_pinned_middle(double displacement,
     c.tip_load.Fy = load.y();
     return c;
   };
-  ElasticaIntegrator integrator(pinned_middle_integrator_options(options_.shooting));
+  ElasticaIntegrator integrator(options_.shooting.integrator_options());
   const PinnedMiddleSystem system(
       scaled_, scaled_coupler_, xs, pivot2, P.norm(), options_.shooting.multiple_shooting);
   Eigen::VectorXd u;

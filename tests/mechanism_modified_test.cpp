@@ -36,6 +36,7 @@
 #include "solver/common/errors.h"
 #include "solver/common/gsl_guard.h"
 #include "tests/cli_test_support.h"
+#include "tests/mechanism_test_support.h"
 
 namespace flexure::mechanism {
 namespace {
@@ -204,18 +205,7 @@ TEST(MechanismModified, ExactSmallStrokeIsTheBucklingLoadAndThePrbmItsShortStrip
   }
 }
 
-double simpson_work(const MechanismDesign& d, double a, double b, int intervals) {
-  std::vector<double> x(intervals + 1);
-  for (int k = 0; k <= intervals; ++k) x[k] = a + (b - a) * k / intervals;
-  const ExactStrokeResult r = exact_stroke(d, x);
-  EXPECT_TRUE(r.converged) << r.message;
-  double sum = 0.0;
-  for (int k = 0; k <= intervals; ++k) {
-    const double w = (k == 0 || k == intervals) ? 1.0 : (k % 2 == 1 ? 4.0 : 2.0);
-    sum += w * r.points[k].force;
-  }
-  return sum * (b - a) / (3.0 * intervals);
-}
+using testing::simpson_work;
 
 TEST(MechanismModified, ExactEnergyBalance) {
   disable_gsl_abort();

@@ -13,15 +13,6 @@ namespace flexure {
 
 namespace {
 
-ElasticaIntegrator::Options integrator_options(const ShootingSolver::Options& o) {
-  ElasticaIntegrator::Options io;
-  io.rtol = o.rtol;
-  io.atol = o.atol;
-  io.adams = o.adams;
-  io.backend = o.backend;
-  return io;
-}
-
 void check_options(const ShootingSolver::Options& o) {
   if (!(o.rtol > 0.0 && o.rtol < 1e-2)) {
     throw InvalidInput(fmt::format("shooting rtol must be in (0, 1e-2) (got {})", o.rtol));
@@ -164,7 +155,7 @@ ShootingResult ShootingSolver::solve(const SegmentChain& chain) const {
         reachable);
     return result;
   }
-  ElasticaIntegrator integrator(integrator_options(options_));
+  ElasticaIntegrator integrator(options_.integrator_options());
   ShootingResult result;
 
   const bool direct =
@@ -315,7 +306,7 @@ ShootingResult ShootingSolver::solve_from(const SegmentChain& chain,
                     guess.size()));
   }
   for (double g : guess) require_finite(g, "shooting guess");
-  ElasticaIntegrator integrator(integrator_options(options_));
+  ElasticaIntegrator integrator(options_.integrator_options());
   Eigen::VectorXd z = Eigen::Map<const Eigen::VectorXd>(guess.data(), count);
   if (count != problem.size()) {
     Eigen::VectorXd full;
@@ -352,7 +343,7 @@ LoadPath ShootingSolver::load_path(const SegmentChain& chain) const {
         reachable);
     return path;
   }
-  ElasticaIntegrator integrator(integrator_options(options_));
+  ElasticaIntegrator integrator(options_.integrator_options());
   ContinuationOptions copt = options_.continuation;
   copt.record_path = true;
   LoadPath path = continue_load_path(problem, integrator, copt, options_.newton);

@@ -84,6 +84,16 @@ class ShootingSolver {
     MultipleShootingOptions multiple_shooting;  // how finely large loads are cut (see
                                                 // shooting_problem.h)
     int shape_points = 0;  // > 1: return the shape at this many equally spaced s
+
+    // The integrator settings these options imply (tolerances, method, backend).
+    ElasticaIntegrator::Options integrator_options() const {
+      ElasticaIntegrator::Options io;
+      io.rtol = rtol;
+      io.atol = atol;
+      io.adams = adams;
+      io.backend = backend;
+      return io;
+    }
   };
 
   ShootingSolver() = default;
