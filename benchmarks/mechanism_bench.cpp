@@ -45,6 +45,13 @@ BENCHMARK_CAPTURE(BM_ExactStroke50, sss, "3A-sss")->Unit(benchmark::kMillisecond
 // middle"); the nested pin-force Newton could not solve them.
 BENCHMARK_CAPTURE(BM_ExactStroke50, lps_a90, "lps-a90")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_ExactStroke50, sps_b86IO, "sps-b86IO")->Unit(benchmark::kMillisecond);
+// The modified configurations of paper 004 (fixed-fixed strips, docs/mechanisms.md), one per
+// exact-model topology: two-force coupler, pins at both ends, middle pin, serial chain.
+BENCHMARK_CAPTURE(BM_ExactStroke50, lppm, "1A-lppm")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactStroke50, plpm, "1B-plpm")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactStroke50, lplm, "2B-lplm")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactStroke50, lllm, "3A-lllm")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_PrbmStroke50, lllm, "3A-lllm");
 
 // Chain-algorithm second opinion on the last stroke point (corrected variant, N = 100, as in
 // `flexure mechanism validate`; docs/mechanisms.md "Chain algorithm check").
