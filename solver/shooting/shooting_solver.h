@@ -60,7 +60,8 @@ enum class ShootingStrategy { kAuto, kContinuation, kDirect };
 // and dead loads only; below 1 the equilibrium is unique for any end moment. Returns +infinity when
 // the bound does not apply (prescribed tip coordinates, follower force). Uniform single segment:
 // 4 |F| L^2 / (pi^2 EI) (Green's operator of theta'' with theta(0) = theta'(L) = 0 has norm
-// 4 L^2 / pi^2); general chain: max|N| * L_flexible * L_total / (2 EI_min).
+// 4 L^2 / pi^2); general chain: max|N| * integral over the flexible arc of (L_total - s)/EI(s) ds
+// (a short flexure at the root of a long rigid link counts with its lever L_total, not L/2).
 double unique_equilibrium_bound(const SegmentChain& chain);
 
 // Largest load factor at which the prescribed tip position (pinned, slider, fixed) is still within
