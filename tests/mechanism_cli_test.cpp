@@ -56,7 +56,16 @@ TEST(MechanismCli, BadInputExitsTwo) {
                                      "thickness = 1e-3\nwidth = -0.01\n";
   const CommandResult neg = run_flexure("mechanism analyze neg.toml", dir.path());
   EXPECT_EQ(neg.exit_code, 2);
-  EXPECT_NE(neg.err.find("neg.toml:10"), std::string::npos) << neg.err;
+  EXPECT_NE(neg.err.find("neg.toml:10: ground.width must be finite and > 0"), std::string::npos)
+      << neg.err;
+  std::ofstream(dir / "nan.toml") << "config = \"lpp\"\nr2 = nan\n";
+  const CommandResult nan = run_flexure("mechanism analyze nan.toml", dir.path());
+  EXPECT_EQ(nan.exit_code, 2);
+  EXPECT_NE(nan.err.find("nan.toml:2: r2 must be finite and > 0"), std::string::npos) << nan.err;
+  std::filesystem::create_directory(dir / "folder.toml");
+  const CommandResult folder = run_flexure("mechanism analyze folder.toml", dir.path());
+  EXPECT_EQ(folder.exit_code, 2);
+  EXPECT_NE(folder.err.find("it is a directory"), std::string::npos) << folder.err;
   std::ofstream(dir / "far.toml") << "config = \"lpp\"\nr2 = 0.05\nr3 = 0.04\nstroke = 0.08\n"
                                      "[material]\nE = 1e9\nyield_strength = 3e7\n[ground]\n"
                                      "thickness = 1e-3\nwidth = 0.01\n";
