@@ -732,6 +732,14 @@ void run_cfm(const CfmArgs& args) {
     throw InvalidInput(
         "give exactly one of --config CFG (with --R and --d), --subclass NAME, --list, --table");
   }
+  // A sub-class, --list and --table fix R, K1, K2 and d themselves; a value given beside them
+  // would be silently ignored.
+  if (!*args.config_option &&
+      (*args.R_option || *args.K1_option || *args.K2_option || *args.d_option)) {
+    throw InvalidInput(
+        "--R, --K1, --K2 and --d go with --config (a --subclass, --list or --table row has its "
+        "own)");
+  }
   if (args.markdown && !args.table) throw InvalidInput("--markdown goes with --table");
   if (args.list && args.exact) throw InvalidInput("--exact does not go with --list");
   if (args.list) return run_list(args);
