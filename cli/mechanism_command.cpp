@@ -149,7 +149,8 @@ Json analysis_json(const MechanismAnalysis& a) {
   j["max_stress"] = a.max_stress_all;
   j["max_stress_per_pivot"] = pivot_array(a.design, a.max_stress);
   j["max_stress_prbm"] = pivot_array(a.design, a.prbm.max_stress);
-  j["max_stress_exact"] = pivot_array(a.design, a.max_stress_exact, exact);
+  // null (not 0) where the exact stresses were not computed (validate skips them).
+  j["max_stress_exact"] = pivot_array(a.design, a.max_stress_exact, exact && a.has_exact_stress);
   j["safety_factor"] = a.safety_factor;
   j["yielding_pivots"] = described_pivots(a.design, a.yielding_pivots);
   return j;

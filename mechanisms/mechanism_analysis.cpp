@@ -103,6 +103,7 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
           }
         }
       }
+      a.has_exact_stress = options.exact_stress;
       a.percent_constant_force_exact = 100.0 * fmin / fmax;
       a.mean_force_exact = sum / static_cast<double>(a.force_exact.size());
       for (int i = 0; i < 3; ++i)

@@ -110,5 +110,19 @@ TEST(MechanismCli, Hdf5OutputAndList) {
   EXPECT_EQ(count_lines(table.out), 2 + 9 + 11);  // header, rule, nine + eleven mechanisms
 }
 
+// `validate` skips the exact stresses; its JSON said 0 Pa for them (an unstressed flexure), which a
+// reader cannot tell from a computed value. `analyze` computes them (non-zero: the 1A-spp flexure
+// bends through the whole stroke).
+TEST(MechanismCli, ExactStressesNotComputedAreNull) {
+  const CommandResult v = run_flexure("mechanism validate --json --points 6");
+  ASSERT_EQ(v.exit_code, 0) << v.err;
+  const json first = json::parse(v.out)["mechanisms"][0];
+  ASSERT_EQ(first["design"]["name"], "1A-spp");
+  EXPECT_TRUE(first["max_stress_exact"][0].is_null()) << first["max_stress_exact"];
+  const CommandResult a = run_flexure("mechanism analyze 1A-spp --points 6 --json");
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  EXPECT_GT(json::parse(a.out)["max_stress_exact"][0].get<double>(), 0.0);
+}
+
 }  // namespace
 }  // namespace flexure::test
