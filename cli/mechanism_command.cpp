@@ -384,6 +384,9 @@ void register_mechanism_command(CLI::App& app) {
                       "(k = EI/L, default), table2, table5 (paper 004 Tables 2/5)");
   analyze->callback([args] {
     require_in_range(args->points, "--points", 2, 100000);
+    if (args->no_exact && args->method == "exact") {
+      throw InvalidInput("--prbm-only (= --method prbm) contradicts --method exact; give one");
+    }
     MechanismDesign d = resolve(args->what);
     if (!args->spring_rule.empty()) apply_spring_rule(d, parse_spring_rule(args->spring_rule));
     std::optional<io::AtomicHdf5File> file;

@@ -50,6 +50,10 @@ TEST(MechanismCli, PrbmOnlyFlagSkipsTheExactCurve) {
 TEST(MechanismCli, BadInputExitsTwo) {
   EXPECT_EQ(run_flexure("mechanism analyze 9Z-abc").exit_code, 2);
   EXPECT_EQ(run_flexure("mechanism analyze 1A-lpp --points 1").exit_code, 2);
+  // Contradictory method flags were resolved silently in favour of --prbm-only.
+  const CommandResult both = run_flexure("mechanism analyze 1A-lpp --prbm-only --method exact");
+  EXPECT_EQ(both.exit_code, 2);
+  EXPECT_NE(both.err.find("contradicts --method exact"), std::string::npos) << both.err;
   ScratchDir dir;
   std::ofstream(dir / "neg.toml") << "config = \"lpp\"\nr2 = 0.05\nr3 = 0.04\nstroke = 0.01\n"
                                      "[material]\nE = 1e9\nyield_strength = 3e7\n[ground]\n"
