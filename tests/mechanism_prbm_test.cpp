@@ -36,7 +36,7 @@ TEST(MechanismPrbm, VirtualWorkForceEqualsLinkStatics) {
 
 TEST(MechanismPrbm, SubclassDesignsReproduceTheNondimensionalModel) {
   for (const MechanismDesign& d : builtin_mechanisms()) {
-    if (d.name == "1A-lpp") continue;  // the thesis example, checked below
+    if (d.name == "1A-lpp") continue;       // the thesis example, checked below
     if (!d.paper_config.empty()) continue;  // paper 004 designs: mechanism_modified_test.cpp
     const auto& cfg = d.configuration();
     const cfm::CfmSubclass& row = cfm::find_thesis_subclass(d.config + "-a");
@@ -64,6 +64,20 @@ TEST(MechanismPrbm, ThesisDesignExampleDeliversTwentyFivePounds) {
   const PrbmStrokeResult r = prbm_stroke(d, 50);
   const double lbf = 4.4482216152605;
   EXPECT_NEAR(r.mean_force / lbf, 25.0, 0.25);
+}
+
+// A stroke of exactly the toggle position is allowed; its last point must not round past it
+// ((stroke*K)/K was one ulp above the stroke for 1B-plpm, and the exact model refused it).
+TEST(MechanismPrbm, LastStrokePointIsTheStrokeItself) {
+  for (const MechanismDesign& original : builtin_mechanisms()) {
+    MechanismDesign d = original;
+    d.stroke = d.toggle_stroke();
+    for (int points : {7, 49, 50, 51}) {
+      const std::vector<double> dx = stroke_displacements(d, points);
+      EXPECT_EQ(dx.back(), d.stroke) << d.name << " " << points;
+      EXPECT_LE(dx.back(), d.toggle_stroke()) << d.name << " " << points;
+    }
+  }
 }
 
 TEST(MechanismPrbm, BadInputIsRefused) {
