@@ -211,7 +211,16 @@ void print_validation(int points,
     AnalysisOptions o;
     o.points = points;
     o.exact_stress = false;
-    const MechanismAnalysis a = analyze_mechanism(d, o);
+    // Name the design in an error: the table runs many of them.
+    const MechanismAnalysis a = [&] {
+      try {
+        return analyze_mechanism(d, o);
+      } catch (const InvalidInput& e) {
+        throw InvalidInput(fmt::format("{}: {}", d.name, e.what()));
+      } catch (const NoConvergence& e) {
+        throw NoConvergence(fmt::format("{}: {}", d.name, e.what()));
+      }
+    }();
     const bool exact = a.has_exact && a.exact.converged;
     // Second opinion on the last stroke point: Howell's chain algorithm (corrected variant,
     // kChainCheckElements elements per chain) on the exact model's solution.
@@ -365,7 +374,7 @@ void register_mechanism_command(CLI::App& app) {
                    "Built-in name (1A-lpp, 3A-sss, howell-1A-spp-b, ...), a thesis sub-class "
                    "(lpp-b), an inversion (1A-lpp' or 1A-lpp-inv) or FILE.toml")
       ->required();
-  analyze->add_option("--points", args->points, "Stroke points (2..100000)");
+  analyze->add_option("--points", args->points, "Stroke points (2..100000)")->default_str("50");
   analyze->add_option("--out", args->out, "Write the curves to this HDF5 file (atomic)");
   analyze->add_flag("--json", args->json, "Print one JSON object");
   analyze->add_flag("--prbm-only", args->no_exact, "Skip the exact model (= --method prbm)");
@@ -461,10 +470,10 @@ void register_mechanism_command(CLI::App& app) {
   auto vargs = std::make_shared<ValidateArgs>();
   CLI::App* validate = mech.add_subcommand(
       "validate", "PRBM vs exact model for every built-in mechanism (docs/validation.md table)");
-  validate->add_option("--points", vargs->points, "Stroke points (2..100000)");
+  validate->add_option("--points", vargs->points, "Stroke points (2..100000)")->default_str("50");
   validate->add_option("--toggle-fraction",
                        vargs->toggle_fraction,
-                       "Stroke of every design = this fraction of its toggle stroke, in (0, 1]");
+                       "Stroke of every design = this fraction of its toggle stroke, in (0, 1)");
   validate->add_flag("--markdown", vargs->markdown, "Print the Markdown table");
   validate->add_flag("--spring-rules",
                      vargs->spring_rules,
@@ -485,7 +494,15 @@ void register_mechanism_command(CLI::App& app) {
   validate->callback([vargs] {
     require_in_range(vargs->points, "--points", 2, 100000);
     if (vargs->toggle_fraction) {
-      require_in_range(*vargs->toggle_fraction, "--toggle-fraction", 1e-6, 1.0);
+      // Below 1: at the toggle itself every built-in set has R = 1 designs (1B-psp, the modified
+      // ones), folded flat there with a PRBM force of 0/0 (MechanismDesign::finalise refuses it).
+      const double f = *vargs->toggle_fraction;
+      if (!(f >= 1e-6 && f < 1.0)) {
+        throw InvalidInput(fmt::format(
+            "--toggle-fraction = {} is outside the allowed range [1e-06, 1) (at 1 the designs with "
+            "R = 1 fold flat, where the PRBM force is 0/0)",
+            f));
+      }
     }
     if (vargs->spring_rules) {
       print_spring_rules(vargs->points, vargs->json);

@@ -50,6 +50,11 @@ TEST(MechanismCli, PrbmOnlyFlagSkipsTheExactCurve) {
 TEST(MechanismCli, BadInputExitsTwo) {
   EXPECT_EQ(run_flexure("mechanism analyze 9Z-abc").exit_code, 2);
   EXPECT_EQ(run_flexure("mechanism analyze 1A-lpp --points 1").exit_code, 2);
+  // At the toggle position the R = 1 designs fold flat: refused up front (it ran for a minute
+  // and failed with a NaN shooting guess).
+  const CommandResult toggle = run_flexure("mechanism validate --toggle-fraction 1");
+  EXPECT_EQ(toggle.exit_code, 2);
+  EXPECT_NE(toggle.err.find("[1e-06, 1)"), std::string::npos) << toggle.err;
   // Contradictory method flags were resolved silently in favour of --prbm-only.
   const CommandResult both = run_flexure("mechanism analyze 1A-lpp --prbm-only --method exact");
   EXPECT_EQ(both.exit_code, 2);

@@ -96,6 +96,19 @@ TEST(MechanismPrbm, BadInputIsRefused) {
   } catch (const InvalidInput& e) {
     EXPECT_NE(std::string(e.what()).find("toggle"), std::string::npos) << e.what();
   }
+  // R = 1 (1B-psp): the toggle is r2 + r3 itself, folded flat with a PRBM force of 0/0. It was
+  // accepted and gave a force curve one point short and a percent constant force of 0.
+  d = find_builtin_mechanism("1B-psp");
+  ASSERT_EQ(d.R(), 1.0);
+  d.stroke = d.r2 + d.r3;
+  try {
+    d.finalise();
+    FAIL() << "a stroke folding an R = 1 design flat was accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("0/0"), std::string::npos) << e.what();
+  }
+  d.stroke = 0.999 * (d.r2 + d.r3);
+  EXPECT_NO_THROW(d.finalise());
 }
 
 TEST(MechanismToml, ExampleFileLoads) {
