@@ -442,7 +442,8 @@ void register_mechanism_command(CLI::App& app) {
                              a.prbm.percent_constant_force,
                              a.has_exact && o.exact
                                  ? fmt::format(", exact {:.2f} %", a.percent_constant_force_exact)
-                                 : std::string(" (") + a.exact_note + ")");
+                             : a.exact_note.empty() ? std::string(" (exact model not run)")
+                                                    : std::string(" (") + a.exact_note + ")");
     std::cout << fmt::format(
         "  mean force: PRBM {:.5g} N{}\n",
         a.prbm.mean_force,
@@ -471,26 +472,34 @@ void register_mechanism_command(CLI::App& app) {
   CLI::App* validate = mech.add_subcommand(
       "validate", "PRBM vs exact model for every built-in mechanism (docs/validation.md table)");
   validate->add_option("--points", vargs->points, "Stroke points (2..100000)")->default_str("50");
-  validate->add_option("--toggle-fraction",
-                       vargs->toggle_fraction,
-                       "Stroke of every design = this fraction of its toggle stroke, in (0, 1)");
-  validate->add_flag("--markdown", vargs->markdown, "Print the Markdown table");
-  validate->add_flag("--spring-rules",
-                     vargs->spring_rules,
-                     "Instead: the spring rules of the modified designs against the exact model");
-  validate->add_option(
+  CLI::Option* toggle_opt = validate->add_option(
+      "--toggle-fraction",
+      vargs->toggle_fraction,
+      "Stroke of every design = this fraction of its toggle stroke, in (0, 1)");
+  CLI::Option* markdown_opt =
+      validate->add_flag("--markdown", vargs->markdown, "Print the Markdown table");
+  CLI::Option* spring_rules_opt = validate->add_flag(
+      "--spring-rules",
+      vargs->spring_rules,
+      "Instead: the spring rules of the modified designs against the exact model");
+  CLI::Option* spring_rule_opt = validate->add_option(
       "--spring-rule",
       vargs->spring_rule,
       "Spring rule of the modified designs: pure-bending (default), table2, table5");
-  validate->add_flag("--json", vargs->json, "Print one JSON object");
-  validate
-      ->add_option(
-          "--designs",
-          vargs->designs,
-          "builtin (thesis + modified), thesis (the nine designs), modified (paper 004), howell "
-          "(Howell's Table 10.1 designs), inversions, all")
-      ->default_str("builtin")
-      ->check(CLI::IsMember({"builtin", "thesis", "modified", "howell", "inversions", "all"}));
+  CLI::Option* json_opt = validate->add_flag("--json", vargs->json, "Print one JSON object");
+  CLI::Option* designs_opt =
+      validate
+          ->add_option("--designs",
+                       vargs->designs,
+                       "builtin (thesis + modified), thesis (the nine designs), modified (paper "
+                       "004), howell "
+                       "(Howell's Table 10.1 designs), inversions, all")
+          ->default_str("builtin")
+          ->check(CLI::IsMember({"builtin", "thesis", "modified", "howell", "inversions", "all"}));
+  // Combinations that were silently ignored: one output format; --spring-rules has its own
+  // designs (the modified ones), stroke and rules.
+  markdown_opt->excludes(json_opt);
+  spring_rules_opt->excludes(toggle_opt)->excludes(spring_rule_opt)->excludes(designs_opt);
   validate->callback([vargs] {
     require_in_range(vargs->points, "--points", 2, 100000);
     if (vargs->toggle_fraction) {

@@ -55,6 +55,9 @@ TEST(MechanismCli, BadInputExitsTwo) {
   const CommandResult toggle = run_flexure("mechanism validate --toggle-fraction 1");
   EXPECT_EQ(toggle.exit_code, 2);
   EXPECT_NE(toggle.err.find("[1e-06, 1)"), std::string::npos) << toggle.err;
+  // Options that were silently ignored beside others.
+  EXPECT_EQ(run_flexure("mechanism validate --markdown --json --points 4").exit_code, 2);
+  EXPECT_EQ(run_flexure("mechanism validate --spring-rules --designs thesis").exit_code, 2);
   // Contradictory method flags were resolved silently in favour of --prbm-only.
   const CommandResult both = run_flexure("mechanism analyze 1A-lpp --prbm-only --method exact");
   EXPECT_EQ(both.exit_code, 2);
