@@ -158,7 +158,8 @@ CfmOptions make_options(const CfmArgs& args, StrokeSampling default_sampling) {
         "own ~1000 points)");
   }
   if (options.sampling == StrokeSampling::kUniform) {
-    require_in_range(args.points, "--points (stroke points, uniform sampling)", 1, 10'000'000);
+    // At least 2: over one point min F = max F, a meaningless 100 % constant force.
+    require_in_range(args.points, "--points (stroke points, uniform sampling)", 2, 10'000'000);
     options.points = args.points;
   }
   options.keep_curve = args.curve;
