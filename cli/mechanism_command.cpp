@@ -491,9 +491,8 @@ void register_mechanism_command(CLI::App& app) {
       validate
           ->add_option("--designs",
                        vargs->designs,
-                       "builtin (thesis + modified), thesis (the nine designs), modified (paper "
-                       "004), howell "
-                       "(Howell's Table 10.1 designs), inversions, all")
+                       "builtin (thesis + modified), thesis (the nine designs), modified "
+                       "(paper 004), howell (Howell's Table 10.1 designs), inversions, all")
           ->default_str("builtin")
           ->check(CLI::IsMember({"builtin", "thesis", "modified", "howell", "inversions", "all"}));
   // Combinations that were silently ignored: one output format; --spring-rules has its own
