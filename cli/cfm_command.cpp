@@ -158,7 +158,8 @@ CfmOptions make_options(const CfmArgs& args, StrokeSampling default_sampling) {
         "own ~1000 points)");
   }
   if (options.sampling == StrokeSampling::kUniform) {
-    require_in_range(args.points, "--points (stroke points, uniform sampling)", 1, 10'000'000);
+    // At least 2: over one point min F = max F, a meaningless 100 % constant force.
+    require_in_range(args.points, "--points (stroke points, uniform sampling)", 2, 10'000'000);
     options.points = args.points;
   }
   options.keep_curve = args.curve;
@@ -731,6 +732,14 @@ void run_cfm(const CfmArgs& args) {
   if (modes != 1) {
     throw InvalidInput(
         "give exactly one of --config CFG (with --R and --d), --subclass NAME, --list, --table");
+  }
+  // A sub-class, --list and --table fix R, K1, K2 and d themselves; a value given beside them
+  // would be silently ignored.
+  if (!*args.config_option &&
+      (*args.R_option || *args.K1_option || *args.K2_option || *args.d_option)) {
+    throw InvalidInput(
+        "--R, --K1, --K2 and --d go with --config (a --subclass, --list or --table row has its "
+        "own)");
   }
   if (args.markdown && !args.table) throw InvalidInput("--markdown goes with --table");
   if (args.list && args.exact) throw InvalidInput("--exact does not go with --list");

@@ -149,7 +149,8 @@ Json analysis_json(const MechanismAnalysis& a) {
   j["max_stress"] = a.max_stress_all;
   j["max_stress_per_pivot"] = pivot_array(a.design, a.max_stress);
   j["max_stress_prbm"] = pivot_array(a.design, a.prbm.max_stress);
-  j["max_stress_exact"] = pivot_array(a.design, a.max_stress_exact, exact);
+  // null (not 0) where the exact stresses were not computed (validate skips them).
+  j["max_stress_exact"] = pivot_array(a.design, a.max_stress_exact, exact && a.has_exact_stress);
   j["safety_factor"] = a.safety_factor;
   j["yielding_pivots"] = described_pivots(a.design, a.yielding_pivots);
   return j;
@@ -210,7 +211,16 @@ void print_validation(int points,
     AnalysisOptions o;
     o.points = points;
     o.exact_stress = false;
-    const MechanismAnalysis a = analyze_mechanism(d, o);
+    // Name the design in an error: the table runs many of them.
+    const MechanismAnalysis a = [&] {
+      try {
+        return analyze_mechanism(d, o);
+      } catch (const InvalidInput& e) {
+        throw InvalidInput(fmt::format("{}: {}", d.name, e.what()));
+      } catch (const NoConvergence& e) {
+        throw NoConvergence(fmt::format("{}: {}", d.name, e.what()));
+      }
+    }();
     const bool exact = a.has_exact && a.exact.converged;
     // Second opinion on the last stroke point: Howell's chain algorithm (corrected variant,
     // kChainCheckElements elements per chain) on the exact model's solution.
@@ -364,7 +374,7 @@ void register_mechanism_command(CLI::App& app) {
                    "Built-in name (1A-lpp, 3A-sss, howell-1A-spp-b, ...), a thesis sub-class "
                    "(lpp-b), an inversion (1A-lpp' or 1A-lpp-inv) or FILE.toml")
       ->required();
-  analyze->add_option("--points", args->points, "Stroke points (2..100000)");
+  analyze->add_option("--points", args->points, "Stroke points (2..100000)")->default_str("50");
   analyze->add_option("--out", args->out, "Write the curves to this HDF5 file (atomic)");
   analyze->add_flag("--json", args->json, "Print one JSON object");
   analyze->add_flag("--prbm-only", args->no_exact, "Skip the exact model (= --method prbm)");
@@ -383,6 +393,9 @@ void register_mechanism_command(CLI::App& app) {
                       "(k = EI/L, default), table2, table5 (paper 004 Tables 2/5)");
   analyze->callback([args] {
     require_in_range(args->points, "--points", 2, 100000);
+    if (args->no_exact && args->method == "exact") {
+      throw InvalidInput("--prbm-only (= --method prbm) contradicts --method exact; give one");
+    }
     MechanismDesign d = resolve(args->what);
     if (!args->spring_rule.empty()) apply_spring_rule(d, parse_spring_rule(args->spring_rule));
     std::optional<io::AtomicHdf5File> file;
@@ -429,7 +442,8 @@ void register_mechanism_command(CLI::App& app) {
                              a.prbm.percent_constant_force,
                              a.has_exact && o.exact
                                  ? fmt::format(", exact {:.2f} %", a.percent_constant_force_exact)
-                                 : std::string(" (") + a.exact_note + ")");
+                             : a.exact_note.empty() ? std::string(" (exact model not run)")
+                                                    : std::string(" (") + a.exact_note + ")");
     std::cout << fmt::format(
         "  mean force: PRBM {:.5g} N{}\n",
         a.prbm.mean_force,
@@ -457,31 +471,46 @@ void register_mechanism_command(CLI::App& app) {
   auto vargs = std::make_shared<ValidateArgs>();
   CLI::App* validate = mech.add_subcommand(
       "validate", "PRBM vs exact model for every built-in mechanism (docs/validation.md table)");
-  validate->add_option("--points", vargs->points, "Stroke points (2..100000)");
-  validate->add_option("--toggle-fraction",
-                       vargs->toggle_fraction,
-                       "Stroke of every design = this fraction of its toggle stroke, in (0, 1]");
-  validate->add_flag("--markdown", vargs->markdown, "Print the Markdown table");
-  validate->add_flag("--spring-rules",
-                     vargs->spring_rules,
-                     "Instead: the spring rules of the modified designs against the exact model");
-  validate->add_option(
+  validate->add_option("--points", vargs->points, "Stroke points (2..100000)")->default_str("50");
+  CLI::Option* toggle_opt = validate->add_option(
+      "--toggle-fraction",
+      vargs->toggle_fraction,
+      "Stroke of every design = this fraction of its toggle stroke, in (0, 1)");
+  CLI::Option* markdown_opt =
+      validate->add_flag("--markdown", vargs->markdown, "Print the Markdown table");
+  CLI::Option* spring_rules_opt = validate->add_flag(
+      "--spring-rules",
+      vargs->spring_rules,
+      "Instead: the spring rules of the modified designs against the exact model");
+  CLI::Option* spring_rule_opt = validate->add_option(
       "--spring-rule",
       vargs->spring_rule,
       "Spring rule of the modified designs: pure-bending (default), table2, table5");
-  validate->add_flag("--json", vargs->json, "Print one JSON object");
-  validate
-      ->add_option(
-          "--designs",
-          vargs->designs,
-          "builtin (thesis + modified), thesis (the nine designs), modified (paper 004), howell "
-          "(Howell's Table 10.1 designs), inversions, all")
-      ->default_str("builtin")
-      ->check(CLI::IsMember({"builtin", "thesis", "modified", "howell", "inversions", "all"}));
+  CLI::Option* json_opt = validate->add_flag("--json", vargs->json, "Print one JSON object");
+  CLI::Option* designs_opt =
+      validate
+          ->add_option("--designs",
+                       vargs->designs,
+                       "builtin (thesis + modified), thesis (the nine designs), modified "
+                       "(paper 004), howell (Howell's Table 10.1 designs), inversions, all")
+          ->default_str("builtin")
+          ->check(CLI::IsMember({"builtin", "thesis", "modified", "howell", "inversions", "all"}));
+  // Combinations that were silently ignored: one output format; --spring-rules has its own
+  // designs (the modified ones), stroke and rules.
+  markdown_opt->excludes(json_opt);
+  spring_rules_opt->excludes(toggle_opt)->excludes(spring_rule_opt)->excludes(designs_opt);
   validate->callback([vargs] {
     require_in_range(vargs->points, "--points", 2, 100000);
     if (vargs->toggle_fraction) {
-      require_in_range(*vargs->toggle_fraction, "--toggle-fraction", 1e-6, 1.0);
+      // Below 1: at the toggle itself every built-in set has R = 1 designs (1B-psp, the modified
+      // ones), folded flat there with a PRBM force of 0/0 (MechanismDesign::finalise refuses it).
+      const double f = *vargs->toggle_fraction;
+      if (!(f >= 1e-6 && f < 1.0)) {
+        throw InvalidInput(fmt::format(
+            "--toggle-fraction = {} is outside the allowed range [1e-06, 1) (at 1 the designs with "
+            "R = 1 fold flat, where the PRBM force is 0/0)",
+            f));
+      }
     }
     if (vargs->spring_rules) {
       print_spring_rules(vargs->points, vargs->json);

@@ -230,6 +230,15 @@ void MechanismDesign::finalise() {
         limit,
         cfm::toggle_stroke_percent(R())));
   }
+  // R = 1: the toggle is the full r2 + r3, where crank and coupler fold onto the ground pivot and
+  // the PRBM force is 0/0 (as `flexure cfm` refuses d = 100 % for R = 1, cfm_model.cpp).
+  if (R() == 1.0 && stroke >= limit) {
+    throw InvalidInput(fmt::format(
+        "stroke {:.6g} m with r2 = r3 (R = 1) folds crank and coupler onto the ground pivot at the "
+        "toggle position {:.6g} m = r2 + r3, where the PRBM force is 0/0; use a stroke below it",
+        stroke,
+        limit));
+  }
 }
 
 const std::vector<MechanismDesign>& builtin_mechanisms() {

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "elements/fixed_pinned_segment.h"
+#include "solver/common/errors.h"
 
 namespace flexure::mechanism {
 namespace {
@@ -68,6 +69,9 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
   a.design.finalise();
   const MechanismDesign& d = a.design;
   a.prbm = prbm_stroke(d, options.points);
+  // A non-finite PRBM force (a singular pose that finalise() did not catch) must not pass on as a
+  // truncated curve with a percent constant force of 0.
+  if (!a.prbm.converged) throw NoConvergence(fmt::format("{}: {}", d.name, a.prbm.message));
   for (double dx : a.prbm.displacement) {
     const std::string why = validity_violation(d, prbm_state(d, dx));
     if (!why.empty()) {
@@ -103,6 +107,7 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
           }
         }
       }
+      a.has_exact_stress = options.exact_stress;
       a.percent_constant_force_exact = 100.0 * fmin / fmax;
       a.mean_force_exact = sum / static_cast<double>(a.force_exact.size());
       for (int i = 0; i < 3; ++i)

@@ -36,6 +36,9 @@ struct MechanismAnalysis {
   ExactStrokeResult exact;
   std::vector<double> force_exact;           // N, one per stroke point (when has_exact)
   std::array<double, 3> max_stress_exact{};  // Pa, per pivot
+  // max_stress_exact was computed (options.exact_stress and a converged exact stroke); else the
+  // zeros above mean "not computed", not "unstressed".
+  bool has_exact_stress = false;
   double percent_constant_force_exact = 0.0;
   double mean_force_exact = 0.0;
   double max_force_error = 0.0;     // max |F_prbm - F_exact|/|F_exact| over the stroke

@@ -23,7 +23,10 @@ std::vector<double> stroke_displacements(const MechanismDesign& design, int poin
     throw InvalidInput(fmt::format("points must be in [2, 100000] (got {})", points));
   }
   std::vector<double> dx(points);
-  for (int k = 1; k <= points; ++k) dx[k - 1] = design.stroke * k / points;
+  // The last point is the stroke itself: (stroke*K)/K can round one ulp above it, which at a
+  // stroke equal to the toggle position (validate --toggle-fraction 1) is past the toggle.
+  for (int k = 1; k < points; ++k) dx[k - 1] = design.stroke * k / points;
+  dx[points - 1] = design.stroke;
   return dx;
 }
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -30,12 +31,12 @@ double positive(const toml::table& t,
     if (fallback) return *fallback;
     toml_fail(source, table_line, fmt::format("{} is missing the required key '{}'", where, key));
   }
+  // Top-level keys are named bare ("r2"), table keys dotted ("ground.thickness").
+  const std::string name = where == "the file" ? key : where + "." + key;
   const std::optional<double> v = node->value<double>();
-  if (!v) toml_fail(source, line_of(*node), fmt::format("{}.{} must be a number", where, key));
+  if (!v) toml_fail(source, line_of(*node), fmt::format("{} must be a number", name));
   if (!std::isfinite(*v) || *v <= 0.0) {
-    toml_fail(source,
-              line_of(*node),
-              fmt::format("{}.{} must be finite and > 0 (got {})", where, key, *v));
+    toml_fail(source, line_of(*node), fmt::format("{} must be finite and > 0 (got {})", name, *v));
   }
   return *v;
 }
@@ -240,10 +241,17 @@ MechanismDesign parse_mechanism_toml(const std::string& text, const std::string&
 }
 
 MechanismDesign load_mechanism_toml(const std::string& path) {
+  // A directory opens as an empty stream on Linux and would be reported as a file without
+  // `config`; say what is wrong instead.
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw InvalidInput(fmt::format("cannot read mechanism file '{}': it is a directory", path));
+  }
   std::ifstream in(path);
   if (!in) throw InvalidInput(fmt::format("cannot read mechanism file '{}'", path));
   std::stringstream buffer;
   buffer << in.rdbuf();
+  if (in.bad()) throw InvalidInput(fmt::format("cannot read mechanism file '{}'", path));
   return parse_mechanism_toml(buffer.str(), path);
 }
 

@@ -133,7 +133,12 @@ def main(argv):
     config = f" ({d['config']})" if d["config"] else ""
     fig.suptitle(f"{d['mechanism']}{config}: percent constant force {pcf}", fontsize=10)
     fig.tight_layout()
-    save_atomically(fig, args.out)
+    try:
+        save_atomically(fig, args.out)
+    except OSError as e:
+        # e.g. the directory of --out does not exist: a message, not a traceback (exit 1 as above)
+        print(f"plot_mechanism.py: error: cannot write {args.out}: {e.strerror or e}", file=sys.stderr)
+        return 1
     return 0
 
 

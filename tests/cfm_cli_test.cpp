@@ -102,6 +102,11 @@ TEST(CfmCli, BadInputExitsTwoNamingTheInput) {
       {"cfm --config lpp --R 0.8", "--d"},
       {"cfm --subclass nope-a", "nope-a"},
       {"cfm --list --table", "exactly one of"},
+      // The sub-class fixes R (0.8853); a --R beside it was silently ignored.
+      {"cfm --subclass lpp-b --R 2", "go with --config"},
+      {"cfm --list --d 40", "go with --config"},
+      // One point gave Xi = 1, a 100 % constant force, whatever the mechanism.
+      {"cfm --config lpp --R 0.3 --d 20 --sampling uniform --points 1", "[2, 10000000]"},
   };
   for (const auto& [args, expected] : cases) {
     const CommandResult r = run_flexure(args);

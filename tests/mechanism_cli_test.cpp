@@ -50,13 +50,34 @@ TEST(MechanismCli, PrbmOnlyFlagSkipsTheExactCurve) {
 TEST(MechanismCli, BadInputExitsTwo) {
   EXPECT_EQ(run_flexure("mechanism analyze 9Z-abc").exit_code, 2);
   EXPECT_EQ(run_flexure("mechanism analyze 1A-lpp --points 1").exit_code, 2);
+  // At the toggle position the R = 1 designs fold flat: refused up front (it ran for a minute
+  // and failed with a NaN shooting guess).
+  const CommandResult toggle = run_flexure("mechanism validate --toggle-fraction 1");
+  EXPECT_EQ(toggle.exit_code, 2);
+  EXPECT_NE(toggle.err.find("[1e-06, 1)"), std::string::npos) << toggle.err;
+  // Options that were silently ignored beside others.
+  EXPECT_EQ(run_flexure("mechanism validate --markdown --json --points 4").exit_code, 2);
+  EXPECT_EQ(run_flexure("mechanism validate --spring-rules --designs thesis").exit_code, 2);
+  // Contradictory method flags were resolved silently in favour of --prbm-only.
+  const CommandResult both = run_flexure("mechanism analyze 1A-lpp --prbm-only --method exact");
+  EXPECT_EQ(both.exit_code, 2);
+  EXPECT_NE(both.err.find("contradicts --method exact"), std::string::npos) << both.err;
   ScratchDir dir;
   std::ofstream(dir / "neg.toml") << "config = \"lpp\"\nr2 = 0.05\nr3 = 0.04\nstroke = 0.01\n"
                                      "[material]\nE = 1e9\nyield_strength = 3e7\n[ground]\n"
                                      "thickness = 1e-3\nwidth = -0.01\n";
   const CommandResult neg = run_flexure("mechanism analyze neg.toml", dir.path());
   EXPECT_EQ(neg.exit_code, 2);
-  EXPECT_NE(neg.err.find("neg.toml:10"), std::string::npos) << neg.err;
+  EXPECT_NE(neg.err.find("neg.toml:10: ground.width must be finite and > 0"), std::string::npos)
+      << neg.err;
+  std::ofstream(dir / "nan.toml") << "config = \"lpp\"\nr2 = nan\n";
+  const CommandResult nan = run_flexure("mechanism analyze nan.toml", dir.path());
+  EXPECT_EQ(nan.exit_code, 2);
+  EXPECT_NE(nan.err.find("nan.toml:2: r2 must be finite and > 0"), std::string::npos) << nan.err;
+  std::filesystem::create_directory(dir / "folder.toml");
+  const CommandResult folder = run_flexure("mechanism analyze folder.toml", dir.path());
+  EXPECT_EQ(folder.exit_code, 2);
+  EXPECT_NE(folder.err.find("it is a directory"), std::string::npos) << folder.err;
   std::ofstream(dir / "far.toml") << "config = \"lpp\"\nr2 = 0.05\nr3 = 0.04\nstroke = 0.08\n"
                                      "[material]\nE = 1e9\nyield_strength = 3e7\n[ground]\n"
                                      "thickness = 1e-3\nwidth = 0.01\n";
@@ -99,6 +120,20 @@ TEST(MechanismCli, Hdf5OutputAndList) {
   const CommandResult table = run_flexure("mechanism validate --markdown --points 10");
   EXPECT_EQ(table.exit_code, 0) << table.err;
   EXPECT_EQ(count_lines(table.out), 2 + 9 + 11);  // header, rule, nine + eleven mechanisms
+}
+
+// `validate` skips the exact stresses; its JSON said 0 Pa for them (an unstressed flexure), which a
+// reader cannot tell from a computed value. `analyze` computes them (non-zero: the 1A-spp flexure
+// bends through the whole stroke).
+TEST(MechanismCli, ExactStressesNotComputedAreNull) {
+  const CommandResult v = run_flexure("mechanism validate --json --points 6");
+  ASSERT_EQ(v.exit_code, 0) << v.err;
+  const json first = json::parse(v.out)["mechanisms"][0];
+  ASSERT_EQ(first["design"]["name"], "1A-spp");
+  EXPECT_TRUE(first["max_stress_exact"][0].is_null()) << first["max_stress_exact"];
+  const CommandResult a = run_flexure("mechanism analyze 1A-spp --points 6 --json");
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  EXPECT_GT(json::parse(a.out)["max_stress_exact"][0].get<double>(), 0.0);
 }
 
 }  // namespace

@@ -36,7 +36,7 @@ TEST(MechanismPrbm, VirtualWorkForceEqualsLinkStatics) {
 
 TEST(MechanismPrbm, SubclassDesignsReproduceTheNondimensionalModel) {
   for (const MechanismDesign& d : builtin_mechanisms()) {
-    if (d.name == "1A-lpp") continue;  // the thesis example, checked below
+    if (d.name == "1A-lpp") continue;       // the thesis example, checked below
     if (!d.paper_config.empty()) continue;  // paper 004 designs: mechanism_modified_test.cpp
     const auto& cfg = d.configuration();
     const cfm::CfmSubclass& row = cfm::find_thesis_subclass(d.config + "-a");
@@ -66,6 +66,20 @@ TEST(MechanismPrbm, ThesisDesignExampleDeliversTwentyFivePounds) {
   EXPECT_NEAR(r.mean_force / lbf, 25.0, 0.25);
 }
 
+// A stroke of exactly the toggle position is allowed; its last point must not round past it
+// ((stroke*K)/K was one ulp above the stroke for 1B-plpm, and the exact model refused it).
+TEST(MechanismPrbm, LastStrokePointIsTheStrokeItself) {
+  for (const MechanismDesign& original : builtin_mechanisms()) {
+    MechanismDesign d = original;
+    d.stroke = d.toggle_stroke();
+    for (int points : {7, 49, 50, 51}) {
+      const std::vector<double> dx = stroke_displacements(d, points);
+      EXPECT_EQ(dx.back(), d.stroke) << d.name << " " << points;
+      EXPECT_LE(dx.back(), d.toggle_stroke()) << d.name << " " << points;
+    }
+  }
+}
+
 TEST(MechanismPrbm, BadInputIsRefused) {
   EXPECT_THROW(find_builtin_mechanism("4Z-xyz"), InvalidInput);
   MechanismDesign d = find_builtin_mechanism("3A-sss");
@@ -82,6 +96,19 @@ TEST(MechanismPrbm, BadInputIsRefused) {
   } catch (const InvalidInput& e) {
     EXPECT_NE(std::string(e.what()).find("toggle"), std::string::npos) << e.what();
   }
+  // R = 1 (1B-psp): the toggle is r2 + r3 itself, folded flat with a PRBM force of 0/0. It was
+  // accepted and gave a force curve one point short and a percent constant force of 0.
+  d = find_builtin_mechanism("1B-psp");
+  ASSERT_EQ(d.R(), 1.0);
+  d.stroke = d.r2 + d.r3;
+  try {
+    d.finalise();
+    FAIL() << "a stroke folding an R = 1 design flat was accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("0/0"), std::string::npos) << e.what();
+  }
+  d.stroke = 0.999 * (d.r2 + d.r3);
+  EXPECT_NO_THROW(d.finalise());
 }
 
 TEST(MechanismToml, ExampleFileLoads) {

@@ -1,6 +1,7 @@
 // What is checked against what: scripts/plot_mechanism.py on a small `flexure mechanism analyze
 // --out` file -- it exits 0 and leaves exactly one PNG (checked by its 8-byte signature, no
-// temporary file left behind); on a file that is not a mechanism stroke it exits 1 with a message.
+// temporary file left behind); on a file that is not a mechanism stroke, or an --out in a directory
+// that does not exist, it exits 1 with a message (no Python traceback).
 // Skipped (GTEST_SKIP) when /usr/bin/python3 cannot import matplotlib and h5py (the Debian packages
 // python3-matplotlib, python3-h5py).
 #include <gtest/gtest.h>
@@ -51,6 +52,17 @@ TEST(PlotMechanism, RefusesAFileWithoutAStroke) {
   EXPECT_EQ(run_script("bad.h5 --out bad.png", dir), 1);
   EXPECT_NE(read_text(dir / "err.txt").find("cannot read"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir / "bad.png"));
+}
+
+TEST(PlotMechanism, RefusesAnOutputInAMissingDirectory) {
+  if (!python_has_plot_modules()) GTEST_SKIP() << "/usr/bin/python3 lacks matplotlib or h5py";
+  ScratchDir dir;
+  const CommandResult r = run_flexure("mechanism analyze 1A-spp --points 4 --out s.h5", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(run_script("s.h5 --out missing/s.png", dir), 1);
+  const std::string err = read_text(dir / "err.txt");
+  EXPECT_NE(err.find("cannot write missing/s.png"), std::string::npos) << err;
+  EXPECT_EQ(err.find("Traceback"), std::string::npos) << err;
 }
 
 }  // namespace
