@@ -570,4 +570,15 @@ ExactSegmentState exact_segment_state(const MechanismDesign& design,
   return st;
 }
 
+double exact_strain_energy(const MechanismDesign& design,
+                           const ExactPoint& point,
+                           int shape_points) {
+  if (shape_points < 3) {
+    throw InvalidInput(fmt::format("shape_points must be >= 3 (got {})", shape_points));
+  }
+  const double coarse = exact_segment_state(design, point, shape_points).strain_energy;
+  const double fine = exact_segment_state(design, point, 2 * shape_points - 1).strain_energy;
+  return (4.0 * fine - coarse) / 3.0;
+}
+
 }  // namespace flexure::mechanism

@@ -36,14 +36,12 @@ namespace {
 
 // Shooting (rtol 1e-12) against the elliptic solution (1e-14): both far below 1e-8 of the length.
 constexpr double kEllipticTolerance = 1e-8;
-// Energy balance, relative to the energy change. The strain energy is a trapezoidal rule on 8001
-// shape samples, O(h^2) with h = L/8000: ~1e-9 for the one long segment of lpp (measured 7e-9
-// overall), ~1e-6 for the 3 mm s flexures of sss, which get only ~60 samples each (measured
-// 6e-7). Simpson on the stroke (32 intervals) is O(dx^4); its Richardson estimate |W32 - W16|/15
-// is checked to be below a tenth of the tolerance. 1e-8 is reached where the quadrature allows it
-// (lpp); the serial chain's limit is the shape sampling, not the solver.
-constexpr double kEnergyToleranceLong = 2e-8;
-constexpr double kEnergyToleranceShort = 2e-6;
+// Energy balance, relative to the energy change: the 1e-8. The strain energy is the
+// Richardson-extrapolated trapezoidal rule of exact_strain_energy (measured 2e-11-6e-10 here; the
+// plain trapezoid on 8001 samples left 6e-7 on the 3 mm s flexures of sss, which get ~60 samples
+// each). Simpson on the stroke (32 intervals) is O(dx^4); its Richardson estimate |W32 - W16|/15
+// is checked to be below a tenth of the tolerance.
+constexpr double kEnergyTolerance = 1e-8;
 
 TEST(MechanismExact, LppCrankIsTheEllipticFixedPinnedBeam) {
   disable_gsl_abort();
@@ -79,19 +77,18 @@ void check_energy(const std::string& name, double tolerance) {
   const ExactMechanismSolver solver(d);
   const ExactPoint pa = solver.solve(a), pb = solver.solve(b);
   ASSERT_TRUE(pa.converged && pb.converged);
-  const double dU = exact_segment_state(d, pb, 8001).strain_energy -
-                    exact_segment_state(d, pa, 8001).strain_energy;
+  const double dU = exact_strain_energy(d, pb) - exact_strain_energy(d, pa);
   // Simpson's own error estimate must be far below the tolerance, otherwise the test is moot.
   EXPECT_LT(std::abs(W - W_half) / (15.0 * std::abs(W)), 0.1 * tolerance) << name;
   EXPECT_NEAR(W / dU, 1.0, tolerance) << name << ": work " << W << " J, energy change " << dU;
 }
 
-TEST(MechanismExact, EnergyBalanceTwoForceCoupler) { check_energy("1A-lpp", kEnergyToleranceLong); }
-TEST(MechanismExact, EnergyBalanceSerialChain) { check_energy("3A-sss", kEnergyToleranceShort); }
+TEST(MechanismExact, EnergyBalanceTwoForceCoupler) { check_energy("1A-lpp", kEnergyTolerance); }
+TEST(MechanismExact, EnergyBalanceSerialChain) { check_energy("3A-sss", kEnergyTolerance); }
 // Two cantilevers meeting at the middle pin: the energy of both must balance the slider's work.
-TEST(MechanismExact, EnergyBalancePinnedMiddle) { check_energy("2B-lps", kEnergyToleranceShort); }
+TEST(MechanismExact, EnergyBalancePinnedMiddle) { check_energy("2B-lps", kEnergyTolerance); }
 // Pins at both ends (root kink alpha as an unknown): plp's long segment.
-TEST(MechanismExact, EnergyBalancePinnedEnds) { check_energy("1B-plp", kEnergyToleranceLong); }
+TEST(MechanismExact, EnergyBalancePinnedEnds) { check_energy("1B-plp", kEnergyTolerance); }
 
 // Howell's chain algorithm as a second opinion on every topology (mechanism_exact.h,
 // chain_algorithm_check): its tip error, and how far its tips miss the joint the mechanism closes
@@ -196,8 +193,8 @@ TEST(MechanismExact, PinnedMiddleThesisRowsSolveWithoutPassingASingularPoint) {
 }
 
 TEST(MechanismExact, EnergyBalancePinnedMiddleNearCrankBuckling) {
-  check_energy("lps-a90", kEnergyToleranceShort);
-  check_energy("sps-b86IO", kEnergyToleranceShort);
+  check_energy("lps-a90", kEnergyTolerance);
+  check_energy("sps-b86IO", kEnergyTolerance);
 }
 
 // Why the nested solve failed (docs/mechanisms.md "Pinned middle"): at the first stroke point

@@ -66,11 +66,11 @@ constexpr double kClosedForm = 1e-10;
 // position; a Richardson extrapolation of two points at 1e-3 and 2e-3 of the stroke leaves an
 // O(Delta x^2) ~ 1e-6 relative error; shooting runs at rtol 1e-12.
 constexpr double kBucklingTolerance = 1e-5;
-// Energy balance (Simpson on 32 stroke intervals, strain energy by the trapezoidal rule on
-// kShapePoints shape samples along the chain): the trapezoidal rule is O(h^2); with 8001 samples
-// plpm and lllm measured 6e-8 and 1.1e-7, 16x less with 4x the samples (quadrature, not solver).
-constexpr int kShapePoints = 32001;
-constexpr double kEnergyTolerance = 2e-8;
+// Energy balance, the 1e-8 (Simpson on 32 stroke intervals; strain energy by
+// exact_strain_energy, the Richardson-extrapolated trapezoidal rule on kShapePoints shape
+// samples: the plain trapezoid at 8001 samples left 6e-8 and 1.1e-7 on plpm and lllm).
+constexpr int kShapePoints = 8001;
+constexpr double kEnergyTolerance = 1e-8;
 
 struct Table6Row {
   const char* name;
@@ -218,8 +218,8 @@ TEST(MechanismModified, ExactEnergyBalance) {
     const ExactMechanismSolver solver(d);
     const ExactStrokeResult ends = exact_stroke(d, {a, b});
     ASSERT_TRUE(ends.converged) << ends.message;
-    const double dU = exact_segment_state(d, ends.points[1], kShapePoints).strain_energy -
-                      exact_segment_state(d, ends.points[0], kShapePoints).strain_energy;
+    const double dU = exact_strain_energy(d, ends.points[1], kShapePoints) -
+                      exact_strain_energy(d, ends.points[0], kShapePoints);
     EXPECT_LT(std::abs(W - W_half) / (15.0 * std::abs(W)), 0.1 * kEnergyTolerance) << name;
     EXPECT_NEAR(W / dU, 1.0, kEnergyTolerance) << name << ": work " << W << " J, dU " << dU;
   }
