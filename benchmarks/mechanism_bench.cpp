@@ -51,6 +51,9 @@ BENCHMARK_CAPTURE(BM_ExactStroke50, lppm, "1A-lppm")->Unit(benchmark::kMilliseco
 BENCHMARK_CAPTURE(BM_ExactStroke50, plpm, "1B-plpm")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_ExactStroke50, lplm, "2B-lplm")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_ExactStroke50, lllm, "3A-lllm")->Unit(benchmark::kMillisecond);
+// The two whose first point needs the thickness homotopy of mechanism_exact_start.cpp.
+BENCHMARK_CAPTURE(BM_ExactStroke50, lssm, "3A-lssm")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactStroke50, lslm, "3A-lslm")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_PrbmStroke50, lllm, "3A-lllm");
 
 // Chain-algorithm second opinion on the last stroke point (corrected variant, N = 100, as in
