@@ -12,6 +12,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/slow_progress.h"
 #include "io/hdf5_file.h"
 #include "mechanisms/howell_designs.h"
 #include "mechanisms/inversion.h"
@@ -411,6 +412,7 @@ void register_mechanism_command(CLI::App& app) {
     AnalysisOptions o;
     o.points = args->points;
     o.exact = choice.exact;
+    o.progress = slow_progress(d.name + ": exact model, stroke points and stresses");
     const MechanismAnalysis a = analyze_mechanism(d, o);
     if (a.has_exact && o.exact && !a.exact.converged) {
       throw NoConvergence(fmt::format("{}: {}", d.name, a.exact.message));

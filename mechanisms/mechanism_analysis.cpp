@@ -85,7 +85,14 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
   if (!a.has_exact) {
     a.exact_note = exact_support_reason(d);
   } else if (options.exact) {
-    a.exact = exact_stroke(d, a.prbm.displacement);
+    const std::size_t n = a.prbm.displacement.size();
+    const std::size_t total = options.exact_stress ? 2 * n : n;
+    StrokeProgress stroke_progress;
+    if (options.progress) {
+      stroke_progress = [&](std::size_t done, std::size_t) { options.progress(done, total); };
+    }
+    a.exact =
+        exact_stroke(d, a.prbm.displacement, ExactMechanismSolver::Options{}, stroke_progress);
     a.exact_note = a.exact.message;
     if (a.exact.converged) {
       double fmin = INFINITY, fmax = -INFINITY, sum = 0.0;
@@ -102,6 +109,7 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
         }
         if (options.exact_stress) {
           const ExactSegmentState st = exact_segment_state(d, p, options.shape_points);
+          if (options.progress) options.progress(n + k + 1, total);
           for (int i = 0; i < 3; ++i) {
             a.max_stress_exact[i] = std::max(a.max_stress_exact[i], st.max_stress[i]);
           }

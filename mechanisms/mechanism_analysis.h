@@ -26,6 +26,9 @@ struct AnalysisOptions {
   bool exact = true;         // solve the exact model where one exists
   bool exact_stress = true;  // re-solve each exact point for its shape and stresses
   int shape_points = 801;    // shape samples for the exact stresses
+  // Called after each exact stroke point and each exact stress evaluation: (done, total) over
+  // both passes (total = 2 points with stresses, else points). Empty: no calls.
+  StrokeProgress progress;
 };
 
 struct MechanismAnalysis {

@@ -381,7 +381,8 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
 
 ExactStrokeResult exact_stroke(const MechanismDesign& design,
                                const std::vector<double>& displacements,
-                               const ExactMechanismSolver::Options& options) {
+                               const ExactMechanismSolver::Options& options,
+                               const StrokeProgress& progress) {
   const ExactMechanismSolver solver(design, options);
   ExactStrokeResult result;
   result.points.reserve(displacements.size());
@@ -450,6 +451,7 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
       return result;
     }
     previous = &result.points.back();
+    if (progress) progress(result.points.size(), displacements.size());
   }
   result.converged = true;
   result.message = fmt::format("{} points converged", displacements.size());

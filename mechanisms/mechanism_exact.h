@@ -31,6 +31,7 @@
 //    Modelling a pin as a very compliant flexure would make the shooting problem ill-conditioned
 //    (theta' = m/EI with EI -> 0) and add a spurious spring, so it is not done.
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -147,9 +148,13 @@ struct ExactStrokeResult {
 };
 ExactStrokeResult exact_stroke(const MechanismDesign& design,
                                const std::vector<double>& displacements);
+// `progress(done, total)`, if set, is called after every stroke point (for a progress display on
+// long strokes, e.g. near a fold where substeps multiply the work).
+using StrokeProgress = std::function<void(std::size_t done, std::size_t total)>;
 ExactStrokeResult exact_stroke(const MechanismDesign& design,
                                const std::vector<double>& displacements,
-                               const ExactMechanismSolver::Options& options);
+                               const ExactMechanismSolver::Options& options,
+                               const StrokeProgress& progress = nullptr);
 
 // First point of a stroke when the PRBM start fails (mechanism_exact_start.cpp): near the straight
 // position the PRBM force of a mechanism with long or very unequal flexures can lie below the exact
