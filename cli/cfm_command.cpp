@@ -25,6 +25,7 @@
 #include <utility>
 #include <vector>
 
+#include "cli/cfm_cli_support.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "mechanisms/cfm/cfm_comparison.h"
@@ -44,79 +45,10 @@ using cfm::CfmResult;
 using cfm::CfmSubclass;
 using cfm::StrokeSampling;
 
-// Class 1B: the mean of a force rising steeply from Delta x = 0 depends on sampling details at
-// ~1e-3 (book digest §6.1: with and without the Delta x -> 0 point the Table 10.1 row is
-// bracketed), so 1B class rows get this extra allowance in --table.
-constexpr double kClass1BSamplingAllowance = 2e-3;
-
-struct CfmArgs {
-  std::string config;
-  double R = 0.0;
-  double K1 = 0.0;
-  double K2 = 0.0;
-  double d = 0.0;
-  std::string subclass;
-  std::string sampling = "auto";
-  int points = 50;
-  bool curve = false;
-  bool list = false;
-  bool table = false;
-  bool markdown = false;
-  bool json = false;
-  bool exact = false;
-  int exact_points = 50;
-  int exact_max_iterations = 0;
-  std::string exact_rows = "a";
-  CLI::Option* config_option = nullptr;
-  CLI::Option* R_option = nullptr;
-  CLI::Option* K1_option = nullptr;
-  CLI::Option* K2_option = nullptr;
-  CLI::Option* d_option = nullptr;
-  CLI::Option* points_option = nullptr;
-  CLI::Option* exact_points_option = nullptr;
-  CLI::Option* exact_max_iterations_option = nullptr;
-  CLI::Option* exact_rows_option = nullptr;
-};
-
-cfm::CfmExactOptions make_exact_options(const CfmArgs& args) {
-  cfm::CfmExactOptions options;
-  require_in_range(
-      args.exact_points, "--exact-points (stroke points of the exact model)", 2, 100000);
-  options.points = args.exact_points;
-  if (*args.exact_max_iterations_option) {
-    // Diagnostic: caps every Newton iteration count of the exact solve (shooting Newton, the
-    // middle-pin Newton, continuation steps), e.g. to see where a hard point stops.
-    require_in_range(args.exact_max_iterations, "--exact-max-iterations", 1, 1000);
-    options.solver.shooting.newton.max_iterations = args.exact_max_iterations;
-    options.solver.shooting.continuation.max_steps = args.exact_max_iterations;
-    options.solver.max_newton_iterations = args.exact_max_iterations;
-  }
-  return options;
-}
-
 cfm::CfmExactResult solve_exact_or_throw(const CfmResult& r, const CfmArgs& args) {
   cfm::CfmExactResult e = cfm::solve_cfm_exact(r, make_exact_options(args));
   if (!e.converged) throw NoConvergence("cfm --exact: exact model: " + e.message);
   return e;
-}
-
-void add_exact_json(Json& j, const cfm::CfmExactResult& e, bool curve) {
-  j["Phi_exact"] = e.Phi_exact;
-  j["percent_constant_force_exact"] = e.percent_constant_force_exact;
-  j["max_force_error"] = e.max_force_error;
-  j["max_force_error_at_stroke_percent"] = e.max_force_error_at_percent;
-  j["exact_points"] = e.stroke_percent.size();
-  // The PRBM on the exact model's grid (equally spaced points), for a like-for-like comparison.
-  j["Phi_prbm_exact_grid"] = e.Phi_prbm_mean;
-  j["percent_constant_force_prbm_exact_grid"] = e.percent_constant_force_prbm;
-  j["exact_iterations"] = e.iterations;
-  j["exact_residual"] = e.residual;
-  j["exact_message"] = e.message;
-  if (curve) {
-    j["exact_curve"] = {{"stroke_percent", e.stroke_percent},
-                        {"Phi_prbm", e.Phi_prbm},
-                        {"Phi_exact", e.Phi_exact_curve}};
-  }
 }
 
 void print_exact_report(const cfm::CfmExactResult& e, bool curve) {
@@ -239,15 +171,6 @@ void warn_if_clamped(const CfmResult& r) {
              r.requested_stroke_percent,
              r.R,
              r.stroke_percent);
-}
-
-CfmResult evaluate_or_throw(const CfmModel& model, const CfmParameters& p) {
-  CfmResult r = model.evaluate(p);
-  if (!r.converged) throw NoConvergence("cfm model: " + r.message);
-  for (double v : {r.Phi, r.Xi, r.percent_constant_force, r.beta, r.lambda}) {
-    require_finite_result(v, "cfm result");
-  }
-  return r;
 }
 
 void print_report(const CfmResult& r, const CfmOptions& options) {
@@ -445,287 +368,6 @@ void run_list(const CfmArgs& args) {
   }
 }
 
-std::string cell(const cfm::PrintedComparison& c, int decimals) {
-  return fmt::format(
-      "{:.{}f} / {:.{}f}{}", c.computed, decimals + 1, c.printed, decimals, c.within() ? "" : " ✗");
-}
-
-Json comparison_json(const cfm::PrintedComparison& c) {
-  return Json{{"computed", c.computed},
-              {"printed", c.printed},
-              {"tolerance", c.tolerance},
-              {"within", c.within()}};
-}
-
-// Largest |computed - printed|/tolerance of one quantity over the sub-class rows.
-struct WorstRatio {
-  const char* quantity = "";
-  double ratio = 0.0;
-  std::string row;
-  void update(const cfm::PrintedComparison& c, const std::string& name) {
-    const double r = std::abs(c.deviation()) / c.tolerance;
-    if (r > ratio) {
-      ratio = r;
-      row = name;
-    }
-  }
-};
-
-void run_table(const CfmArgs& args) {
-  bool all_ok = true;
-  std::array<WorstRatio, 6> worst;
-  for (std::size_t i = 0; i < worst.size(); ++i) {
-    worst[i].quantity = std::array{"Phi", "Xi'", "beta", "lambda", "Psi", "d_N max"}[i];
-  }
-  Json subclass_rows = Json::array();
-  Json class_rows = Json::array();
-  if (args.markdown) {
-    fmt::print(
-        "| Sub-class | d (eff.) | Phi computed / printed | Xi' | beta | lambda | Psi | "
-        "d_N max | p | within |\n|---|---|---|---|---|---|---|---|---|---|\n");
-  } else if (!args.json) {
-    fmt::print("Thesis sub-classes: computed / printed (✗ = outside rounding tolerance)\n");
-  }
-  for (const CfmSubclass& row : cfm::thesis_subclasses()) {
-    const cfm::SubclassComparison c = cfm::compare_with_thesis(row);
-    all_ok = all_ok && c.all_within();
-    worst[0].update(c.Phi, row.name);
-    worst[1].update(c.percent_constant_force, row.name);
-    worst[2].update(c.beta, row.name);
-    worst[3].update(c.lambda, row.name);
-    worst[4].update(c.Psi, row.name);
-    worst[5].update(c.d_N_max, row.name);
-    const std::string pivot =
-        fmt::format("{}/{}{}",
-                    c.result.primary_pivot,
-                    row.primary_pivot,
-                    c.primary_pivot_tie ? " (tie)" : (c.primary_pivot_matches ? "" : " ✗"));
-    if (args.json) {
-      subclass_rows.push_back(
-          {{"name", row.name},
-           {"stroke_percent", c.result.stroke_percent},
-           {"Phi", comparison_json(c.Phi)},
-           {"percent_constant_force", comparison_json(c.percent_constant_force)},
-           {"beta", comparison_json(c.beta)},
-           {"lambda", comparison_json(c.lambda)},
-           {"Psi", comparison_json(c.Psi)},
-           {"d_N_max", comparison_json(c.d_N_max)},
-           {"primary_pivot", c.result.primary_pivot},
-           {"primary_pivot_printed", row.primary_pivot},
-           {"primary_pivot_tie", c.primary_pivot_tie},
-           {"within", c.all_within()}});
-      continue;
-    }
-    const std::string stroke =
-        c.result.stroke_clamped
-            ? fmt::format("{:g} → {:.2f}", row.stroke_percent, c.result.stroke_percent)
-            : fmt::format("{:g}", row.stroke_percent);
-    if (args.markdown) {
-      fmt::print("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
-                 row.name,
-                 stroke,
-                 cell(c.Phi, 4),
-                 cell(c.percent_constant_force, 1),
-                 cell(c.beta, 3),
-                 cell(c.lambda, 3),
-                 cell(c.Psi, 3),
-                 cell(c.d_N_max, 2),
-                 pivot,
-                 c.all_within() ? "yes" : "**no**");
-    } else {
-      fmt::print(
-          "  {:<11} d {:<12} Phi {:<20} Xi' {:<14} beta {:<22} lambda {:<14} Psi {:<14} "
-          "dN {:<16} p {}\n",
-          row.name,
-          stroke,
-          cell(c.Phi, 4),
-          cell(c.percent_constant_force, 1),
-          cell(c.beta, 3),
-          cell(c.lambda, 3),
-          cell(c.Psi, 3),
-          cell(c.d_N_max, 2),
-          pivot);
-    }
-  }
-  if (!args.json) {
-    fmt::print("{}Largest |computed - printed| / tolerance over the 68 rows:",
-               args.markdown ? "\n" : "");
-    for (const WorstRatio& w : worst) {
-      fmt::print(
-          " {} {:.2f} ({}){}", w.quantity, w.ratio, w.row, &w == &worst.back() ? ".\n" : ";");
-    }
-  }
-
-  // Thickness and width ratios (Tables 7.7, 7.10, 7.13).
-  Json ratio_rows = Json::array();
-  std::vector<std::string> ratio_lines;
-  for (const cfm::CfmThicknessRatios& row : cfm::thesis_thickness_ratios()) {
-    const cfm::RatioComparison c = cfm::compare_with_thesis_ratios(row);
-    all_ok = all_ok && c.all_within();
-    auto cells = [&](const std::array<std::optional<cfm::PrintedComparison>, 3>& field) {
-      std::string text;
-      Json values = Json::array();
-      for (const std::optional<cfm::PrintedComparison>& v : field) {
-        text += text.empty() ? "" : ", ";
-        text += v ? cell(*v, row.decimals) : "–";
-        values.push_back(v ? comparison_json(*v) : Json(nullptr));
-      }
-      return std::pair{text, values};
-    };
-    const auto [C_text, C_json] = cells(c.C);
-    const auto [De_text, De_json] = cells(c.D_equal);
-    const auto [Dm_text, Dm_json] = cells(c.D_min);
-    if (args.json) {
-      ratio_rows.push_back({{"name", row.name},
-                            {"C", C_json},
-                            {"D_equal", De_json},
-                            {"D_min", Dm_json},
-                            {"within", c.all_within()}});
-    } else {
-      ratio_lines.push_back(
-          fmt::format(fmt::runtime(args.markdown ? "| {} | {} | {} | {} | {} |"
-                                                 : "  {:<11} C {}  D_equal {}  D_min {}  {}"),
-                      row.name,
-                      C_text,
-                      De_text,
-                      Dm_text,
-                      c.all_within() ? "yes" : "**no**"));
-    }
-  }
-  if (!args.json) {
-    fmt::print("{}",
-               args.markdown ? "\n| Sub-class | C1, C2, C3 | D_equal 1, 2, 3 | D_min 1, 2, 3 | "
-                               "within |\n|---|---|---|---|---|\n"
-                             : "Thickness and width ratios (Tables 7.7, 7.10, 7.13): computed / "
-                               "printed\n");
-    for (const std::string& line : ratio_lines) fmt::print("{}\n", line);
-  }
-  if (args.markdown) {
-    fmt::print(
-        "\n| Row | class as | d (eff.) | Xi computed / printed | Phi computed / printed | "
-        "within |\n|---|---|---|---|---|---|\n");
-  } else if (!args.json) {
-    fmt::print("Class rows (50 equally spaced points): computed / printed\n");
-  }
-  for (const auto* table : {&cfm::thesis_table_2_1(), &cfm::howell_table_10_1()}) {
-    for (const CfmClassRow& row : *table) {
-      const double extra = std::string(row.class_name) == "1B" ? kClass1BSamplingAllowance : 0.0;
-      const cfm::ClassRowComparison c = cfm::compare_with_class_row(row, extra);
-      const bool within = c.Xi.within() && c.Phi.within();
-      if (row.reproducible) all_ok = all_ok && within;
-      const std::string verdict = within             ? "yes"
-                                  : row.reproducible ? "**no**"
-                                                     : "no (printed K2 inconsistent, see text)";
-      if (args.json) {
-        class_rows.push_back({{"name", row.name},
-                              {"stroke_percent", c.result.stroke_percent},
-                              {"Xi", comparison_json(c.Xi)},
-                              {"Phi", comparison_json(c.Phi)},
-                              {"reproducible", row.reproducible},
-                              {"within", within}});
-        continue;
-      }
-      const std::string stroke =
-          c.result.stroke_clamped
-              ? fmt::format("{:g} → {:.2f}", row.stroke_percent, c.result.stroke_percent)
-              : fmt::format("{:g}", row.stroke_percent);
-      if (args.markdown) {
-        fmt::print("| {} | {} | {} | {} | {} | {} |\n",
-                   row.name,
-                   row.config,
-                   stroke,
-                   cell(c.Xi, 4),
-                   cell(c.Phi, 4),
-                   verdict);
-      } else {
-        fmt::print("  {:<16} d {:<12} Xi {:<22} Phi {:<22} {}\n",
-                   row.name,
-                   stroke,
-                   cell(c.Xi, 4),
-                   cell(c.Phi, 4),
-                   verdict);
-      }
-    }
-  }
-  if (args.json) {
-    print_json(
-        Json{{"subclasses", subclass_rows}, {"class_rows", class_rows}, {"all_within", all_ok}});
-  }
-  if (!all_ok) set_exit_code(kExitCheckFailed);
-}
-
-// --table --exact: the thesis sub-classes (the nine "a" rows, or all 68) solved with the exact
-// model. The thesis optimised the PRBM only, so Phi and Xi' differ; docs/validation.md lists them.
-void run_exact_table(const CfmArgs& args) {
-  if (args.exact_rows != "a" && args.exact_rows != "all") {
-    throw InvalidInput(
-        fmt::format("--exact-rows = '{}' is unknown; allowed: a, all", args.exact_rows));
-  }
-  bool all_converged = true;
-  Json rows = Json::array();
-  if (args.markdown) {
-    fmt::print(
-        "| Sub-class | d (eff.) | Phi printed | Phi PRBM | Phi exact | Xi' printed | Xi' PRBM | "
-        "Xi' exact | max force error (at d) |\n|---|---|---|---|---|---|---|---|---|\n");
-  } else if (!args.json) {
-    fmt::print(
-        "Thesis sub-classes, PRBM and exact model on {} equally spaced points (Phi, Xi' in %)\n",
-        args.exact_points);
-  }
-  for (const CfmSubclass& row : cfm::thesis_subclasses()) {
-    const std::string name = row.name;
-    // Sub-class "a" of each configuration: "lpp-a", "slp-aIo" (not "lpp-a99", "slp-a90I").
-    const std::size_t dash = name.find('-');
-    const bool is_a = name.size() > dash + 1 && name[dash + 1] == 'a' &&
-                      (name.size() == dash + 2 || !std::isdigit(name[dash + 2]));
-    if (args.exact_rows == "a" && !is_a) continue;
-    const CfmResult r = evaluate_or_throw(CfmModel(), cfm::parameters_of(row));
-    const cfm::CfmExactResult e = cfm::solve_cfm_exact(r, make_exact_options(args));
-    all_converged = all_converged && e.converged;
-    const std::string stroke = r.stroke_clamped ? fmt::format("{:.2f}", r.stroke_percent)
-                                                : fmt::format("{:g}", r.stroke_percent);
-    if (args.json) {
-      Json j{{"name", row.name},
-             {"stroke_percent", r.stroke_percent},
-             {"Phi_printed", row.Phi},
-             {"percent_constant_force_printed", row.percent_constant_force},
-             {"Phi", r.Phi},
-             {"percent_constant_force", r.percent_constant_force},
-             {"converged", e.converged}};
-      if (e.converged) {
-        add_exact_json(j, e, false);
-      } else {
-        j["exact_message"] = e.message;
-      }
-      rows.push_back(j);
-      continue;
-    }
-    const std::string phi_exact = e.converged ? fmt::format("{:.4f}", e.Phi_exact) : "–";
-    const std::string xi_exact =
-        e.converged ? fmt::format("{:.1f}", e.percent_constant_force_exact) : "–";
-    const std::string error =
-        e.converged
-            ? fmt::format(
-                  "{:.2f} % ({:.1f})", 100.0 * e.max_force_error, e.max_force_error_at_percent)
-            : "not converged (" + e.message.substr(0, e.message.find("): ") + 1) + ")";
-    fmt::print(fmt::runtime(args.markdown
-                                ? "| {} | {} | {:.4f} | {:.4f} | {} | {:.1f} | {:.1f} | {} | {} |\n"
-                                : "  {:<11} d {:<6} Phi {:.4f} / {:.4f} / {:<8} Xi' {:.1f} / "
-                                  "{:.1f} / {:<6} error {}\n"),
-               row.name,
-               stroke,
-               row.Phi,
-               e.Phi_prbm_mean,
-               phi_exact,
-               row.percent_constant_force,
-               e.percent_constant_force_prbm,
-               xi_exact,
-               error);
-  }
-  if (args.json) print_json(Json{{"points", args.exact_points}, {"subclasses", rows}});
-  if (!all_converged) set_exit_code(kExitNoConvergence);
-}
-
 void run_cfm(const CfmArgs& args) {
   const int modes = (args.list ? 1 : 0) + (args.table ? 1 : 0) + (!args.subclass.empty() ? 1 : 0) +
                     (*args.config_option ? 1 : 0);
@@ -755,6 +397,50 @@ void run_cfm(const CfmArgs& args) {
 }
 
 }  // namespace
+
+cfm::CfmExactOptions make_exact_options(const CfmArgs& args) {
+  cfm::CfmExactOptions options;
+  require_in_range(
+      args.exact_points, "--exact-points (stroke points of the exact model)", 2, 100000);
+  options.points = args.exact_points;
+  if (*args.exact_max_iterations_option) {
+    // Diagnostic: caps every Newton iteration count of the exact solve (shooting Newton, the
+    // middle-pin Newton, continuation steps), e.g. to see where a hard point stops.
+    require_in_range(args.exact_max_iterations, "--exact-max-iterations", 1, 1000);
+    options.solver.shooting.newton.max_iterations = args.exact_max_iterations;
+    options.solver.shooting.continuation.max_steps = args.exact_max_iterations;
+    options.solver.max_newton_iterations = args.exact_max_iterations;
+  }
+  return options;
+}
+
+void add_exact_json(Json& j, const cfm::CfmExactResult& e, bool curve) {
+  j["Phi_exact"] = e.Phi_exact;
+  j["percent_constant_force_exact"] = e.percent_constant_force_exact;
+  j["max_force_error"] = e.max_force_error;
+  j["max_force_error_at_stroke_percent"] = e.max_force_error_at_percent;
+  j["exact_points"] = e.stroke_percent.size();
+  // The PRBM on the exact model's grid (equally spaced points), for a like-for-like comparison.
+  j["Phi_prbm_exact_grid"] = e.Phi_prbm_mean;
+  j["percent_constant_force_prbm_exact_grid"] = e.percent_constant_force_prbm;
+  j["exact_iterations"] = e.iterations;
+  j["exact_residual"] = e.residual;
+  j["exact_message"] = e.message;
+  if (curve) {
+    j["exact_curve"] = {{"stroke_percent", e.stroke_percent},
+                        {"Phi_prbm", e.Phi_prbm},
+                        {"Phi_exact", e.Phi_exact_curve}};
+  }
+}
+
+CfmResult evaluate_or_throw(const CfmModel& model, const CfmParameters& p) {
+  CfmResult r = model.evaluate(p);
+  if (!r.converged) throw NoConvergence("cfm model: " + r.message);
+  for (double v : {r.Phi, r.Xi, r.percent_constant_force, r.beta, r.lambda}) {
+    require_finite_result(v, "cfm result");
+  }
+  return r;
+}
 
 void register_cfm_command(CLI::App& app) {
   auto args = std::make_shared<CfmArgs>();
