@@ -26,6 +26,12 @@ using cfm::CfmSubclass;
 // bracketed), so 1B class rows get this extra allowance in --table.
 constexpr double kClass1BSamplingAllowance = 2e-3;
 
+// The printed stroke, and the effective one where the toggle clamp shortened it.
+std::string stroke_cell(double printed_percent, const CfmResult& r) {
+  return r.stroke_clamped ? fmt::format("{:g} → {:.2f}", printed_percent, r.stroke_percent)
+                          : fmt::format("{:g}", printed_percent);
+}
+
 std::string cell(const cfm::PrintedComparison& c, int decimals) {
   return fmt::format(
       "{:.{}f} / {:.{}f}{}", c.computed, decimals + 1, c.printed, decimals, c.within() ? "" : " ✗");
@@ -99,10 +105,7 @@ void run_table(const CfmArgs& args) {
            {"within", c.all_within()}});
       continue;
     }
-    const std::string stroke =
-        c.result.stroke_clamped
-            ? fmt::format("{:g} → {:.2f}", row.stroke_percent, c.result.stroke_percent)
-            : fmt::format("{:g}", row.stroke_percent);
+    const std::string stroke = stroke_cell(row.stroke_percent, c.result);
     if (args.markdown) {
       fmt::print("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
                  row.name,
@@ -208,10 +211,7 @@ void run_table(const CfmArgs& args) {
                               {"within", within}});
         continue;
       }
-      const std::string stroke =
-          c.result.stroke_clamped
-              ? fmt::format("{:g} → {:.2f}", row.stroke_percent, c.result.stroke_percent)
-              : fmt::format("{:g}", row.stroke_percent);
+      const std::string stroke = stroke_cell(row.stroke_percent, c.result);
       if (args.markdown) {
         fmt::print("| {} | {} | {} | {} | {} | {} |\n",
                    row.name,

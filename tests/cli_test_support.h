@@ -75,6 +75,20 @@ inline CommandResult run_flexure(const std::string& args, const std::filesystem:
   return result;
 }
 
+// The keys issue 5 names for `flexure mechanism analyze --json` (a contract: users' scripts read
+// them).
+inline const std::vector<std::string>& mechanism_analyze_contract_keys() {
+  static const std::vector<std::string> keys = {"displacement",
+                                                "force_prbm",
+                                                "force_exact",
+                                                "percent_constant_force_prbm",
+                                                "percent_constant_force_exact",
+                                                "max_force_error",
+                                                "max_stress",
+                                                "safety_factor"};
+  return keys;
+}
+
 inline int count_lines(const std::string& text) {
   int lines = 0;
   for (char c : text) lines += c == '\n';
