@@ -12,6 +12,8 @@
 #include <mutex>
 #include <utility>
 
+#include "io/temp_file_cleanup.h"
+
 namespace flexure::io {
 namespace {
 
@@ -232,8 +234,12 @@ AtomicHdf5File::AtomicHdf5File(std::string path)
   // STRONG: closing the file closes every group or dataset still open, so commit() really has
   // the complete file on disk before the rename.
   check_status(H5Pset_fclose_degree(access.get(), H5F_CLOSE_STRONG), path_, "setting close degree");
+  // Registered before it exists: a signal in between finds nothing to unlink, which is harmless.
+  cleanup_slot_ = register_temp_file(temp_path_);
   file_ = H5Fcreate(temp_path_.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, access.get());
   if (file_ < 0) {
+    unregister_temp_file(cleanup_slot_);
+    cleanup_slot_ = -1;
     throw Hdf5Error(
         fmt::format("cannot write HDF5 file '{}': creating '{}' failed", path_, temp_path_));
   }
@@ -255,6 +261,8 @@ void AtomicHdf5File::discard() noexcept {
   if (file_ >= 0) H5Fclose(file_);
   file_ = H5I_INVALID_HID;
   if (!temp_path_.empty()) std::remove(temp_path_.c_str());
+  unregister_temp_file(cleanup_slot_);
+  cleanup_slot_ = -1;
 }
 
 void AtomicHdf5File::commit() {
@@ -272,6 +280,9 @@ void AtomicHdf5File::commit() {
     discard();
     throw Hdf5Error(fmt::format("cannot rename '{}' to '{}': {}", temp_path_, path_, reason));
   }
+  // After the rename: a signal before it still removes the temporary.
+  unregister_temp_file(cleanup_slot_);
+  cleanup_slot_ = -1;
   committed_ = true;
 }
 

@@ -101,6 +101,7 @@ class AtomicHdf5File {
   hid_t file_ = H5I_INVALID_HID;
   Hdf5Group root_;
   bool committed_ = false;
+  int cleanup_slot_ = -1;  // temp_file_cleanup.h: removed if a signal stops the process
 };
 
 }  // namespace flexure::io

@@ -1,0 +1,18 @@
+#pragma once
+// Removes registered temporary files when the process is stopped by SIGINT, SIGTERM or SIGHUP, so
+// that an interrupted `--out` run leaves neither a partial target (AtomicHdf5File renames only
+// complete files) nor a hidden temporary next to it. The handler only calls unlink() on paths
+// stored in fixed buffers (async-signal-safe), then re-raises the signal with its default action,
+// so the exit status still says which signal stopped the process.
+#include <string>
+
+namespace flexure::io {
+
+// Registers `path` for removal on those signals (installs the handlers on first use). Returns a
+// slot to pass to unregister_temp_file, or -1 when the registry is full or the path too long (the
+// file is then only removed by the normal destructor path).
+int register_temp_file(const std::string& path);
+// Forgets the slot (after the file was renamed or removed); -1 is ignored.
+void unregister_temp_file(int slot);
+
+}  // namespace flexure::io
