@@ -118,6 +118,14 @@ Json kappa_json(const CfmResult& r) {
   return k;
 }
 
+// At the toggle position of a class 1A mechanism the slider force is zero (the crank spring's
+// moment has no lever along the slider): Phi_min is then rounding noise and Xi = Phi_max/Phi_min
+// meaningless.
+bool force_vanishes(const CfmResult& r) {
+  constexpr double kRoundingRelative = 1e-9;
+  return r.Phi_min <= kRoundingRelative * std::abs(r.Phi_max);
+}
+
 Json result_json(const CfmResult& r, const CfmOptions& options) {
   Json j;
   j["config"] = r.config;
@@ -135,6 +143,7 @@ Json result_json(const CfmResult& r, const CfmOptions& options) {
   j["lambda"] = r.lambda;
   j["beta"] = r.beta;
   j["Phi_min"] = r.Phi_min;
+  j["force_vanishes"] = force_vanishes(r);
   j["Phi_max"] = r.Phi_max;
   j["kappa"] = kappa_json(r);
   j["primary_pivot"] = r.primary_pivot;
@@ -164,6 +173,14 @@ Json result_json(const CfmResult& r, const CfmOptions& options) {
 }
 
 void warn_if_clamped(const CfmResult& r) {
+  if (force_vanishes(r)) {
+    fmt::print(stderr,
+               "flexure: warning: the force vanishes within the stroke (Phi_min = {:.3g} against "
+               "Phi_max = {:.3g}, zero to rounding): Xi is unbounded, the printed value is "
+               "rounding noise\n",
+               r.Phi_min,
+               r.Phi_max);
+  }
   if (!r.stroke_clamped) return;
   fmt::print(stderr,
              "flexure: warning: stroke d = {:g} % is past the toggle position of R = {:g}; "

@@ -67,6 +67,23 @@ TEST(CfmCli, StrokePastToggleIsClampedWithAWarning) {
   EXPECT_NEAR(j["percent_constant_force"].get<double>(), 99.4, 0.05);
 }
 
+// A single crank spring (class 1A) clamped at the toggle: there the coupler stands perpendicular
+// to the slider (R = 0.3 < 1), the slider moves at a finite rate while the crank angle does not
+// change to first order, so the virtual-work force k1 theta2 dtheta2/dDelta x is zero. Xi is then
+// unbounded; the output must flag it instead of printing rounding noise as a ratio. The ssp row
+// above keeps a positive force at its toggle (K1 > 0) and is not flagged.
+TEST(CfmCli, VanishingForceAtTheToggleIsFlagged) {
+  const CommandResult r = run_flexure("cfm --config lpp --R 0.3 --d 60 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json j = parse(r);
+  EXPECT_TRUE(j["force_vanishes"].get<bool>());
+  EXPECT_LT(j["percent_constant_force"].get<double>(), 1e-9);
+  EXPECT_NE(r.err.find("force vanishes"), std::string::npos) << r.err;
+  const CommandResult ssp = run_flexure("cfm --config ssp --R 0.4323 --K1 0.2237 --d 40 --json");
+  ASSERT_EQ(ssp.exit_code, 0) << ssp.err;
+  EXPECT_FALSE(parse(ssp)["force_vanishes"].get<bool>());
+}
+
 TEST(CfmCli, SubclassJsonIncludesPrintedValues) {
   const CommandResult r = run_flexure("cfm --subclass lpp-b --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
