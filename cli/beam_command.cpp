@@ -178,6 +178,9 @@ Json to_json(const BeamProblem& problem, const BeamSolution& solution) {
   out["branch"] = solution.branch;
   out["inflection_points"] = solution.inflection_points;
   out["root_moment"] = solution.root_moment;
+  out["limit_points"] = solution.limit_points;
+  out["first_limit_load_factor"] =
+      solution.limit_points > 0 ? Json(solution.first_limit_load_factor) : Json(nullptr);
   out["family"] = solution.family;
   out["message"] = solution.message;
   out["boundary"] = to_string(problem.boundary);

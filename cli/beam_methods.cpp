@@ -53,6 +53,8 @@ BeamSolution solve_elliptic(const BeamProblem& problem) {
   // The clamp holds the tip loads: -F, and the moment -M(0) (statics of the whole beam).
   solution.reactions = {-result.load.Fx, -result.load.Fy, -result.root_moment};
   solution.load_factor = result.converged ? 1.0 : 0.0;
+  solution.limit_points = result.limit_points;
+  solution.first_limit_load_factor = result.first_limit_load_factor;
   if (result.converged && problem.shape_points > 0) {
     solution.shape = solver.shape(result, problem.shape_points);
   }
@@ -159,10 +161,15 @@ BeamSolution solve_numerical_forward(const std::string& method,
                                 "steps)",
                                 r.continuation_steps)
                           : "unique equilibrium (direct Newton; contraction bound below 1)";
-    if (r.message.find("limit point") != std::string::npos &&
-        r.message.find(" 0 limit points") == std::string::npos) {
-      solution.branch +=
-          "; the path passed limit points: under load control the beam would snap at the first";
+    solution.limit_points = r.limit_points;
+    solution.first_limit_load_factor = r.first_limit_load_factor;
+    if (r.limit_points > 0) {
+      solution.branch += fmt::format(
+          "; the path passed {} limit point{}: under load control the beam would snap at the "
+          "first, at load factor {:.6g}",
+          r.limit_points,
+          r.limit_points == 1 ? "" : "s",
+          r.first_limit_load_factor);
     }
     solution.inflection_points = count_curvature_sign_changes(r.shape);
     if (shape_points > 0 && r.converged) solution.shape = resample(r.shape, shape_points);

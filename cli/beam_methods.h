@@ -74,6 +74,10 @@ struct BeamSolution {
   int elements = 0;          // chain algorithm only (0 otherwise)
   int increments = 0;        // chain algorithm only: increments taken
   double load_factor = 1.0;  // load factor reached (1 when converged)
+  // Folds of the load factor on the path from the unloaded beam (snap-through under load
+  // control at the first); elliptic and shooting only.
+  int limit_points = 0;
+  double first_limit_load_factor = 0.0;
 };
 
 // Adds `--method` (default "auto", restricted to kBeamMethodNames) to a subcommand.

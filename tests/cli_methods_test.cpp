@@ -122,9 +122,13 @@ TEST(CliMethods, TomlErrorsNameTheKeyAndLine) {
 }
 
 TEST(CliMethods, PathFollowsLimitPointsTheEllipticSolverReports) {
-  // alpha2 = 10, mu = -2 pi: the elliptic solver stops at the fold near lambda = 0.5958 (exit 3);
-  // arc-length continuation passes it and the path file records every point.
-  EXPECT_EQ(run_flexure("beam --alpha2 10 --mu -6.283185307179586").exit_code, 3);
+  // alpha2 = 10, mu = -2 pi: the path folds near lambda = 0.5958. The elliptic solver follows it
+  // through the fold and reports it; `flexure path` (shooting continuation) records every point
+  // and ends where the elliptic solver does.
+  const Json elliptic = run_json("beam --method elliptic --alpha2 10 --mu -6.283185307179586");
+  EXPECT_TRUE(elliptic["converged"].get<bool>());
+  EXPECT_GE(elliptic["limit_points"].get<int>(), 1);
+  EXPECT_NEAR(elliptic["first_limit_load_factor"].get<double>(), 0.5958, 1e-3);
   test::ScratchDir dir;
   const std::string out = (dir / "path.h5").string();
   const Json summary = run_json("path --alpha2 10 --mu -6.283185307179586 --out " + out);
@@ -139,6 +143,7 @@ TEST(CliMethods, PathFollowsLimitPointsTheEllipticSolverReports) {
   EXPECT_EQ(lambda.front(), 0.0);
   EXPECT_NEAR(lambda.back(), 1.0, 1e-12);
   EXPECT_NEAR(x.front(), 1.0, 1e-12);  // the unloaded tip
+  EXPECT_NEAR(x.back(), elliptic["a_over_l"].get<double>(), 1e-9);
   EXPECT_EQ(status.size(), lambda.size());
   // The load factor rises, turns back at a limit point, and rises again.
   bool decreased = false;

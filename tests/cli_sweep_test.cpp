@@ -115,12 +115,13 @@ TEST(CliSweep, ExistingOutputIsReplacedWhole) {
 }
 
 TEST(CliSweep, PointsWithoutSolutionAreFlaggedAndTheExitCodeIsThree) {
-  // Same load family as CliBeam.NoConvergedSolutionIsExitThree: beyond a limit point on the
-  // proportional path the elliptic solver has no solution, so the far end of the range fails.
+  // Same load family as CliBeam.NoConvergedSolutionIsExitThree: the chain algorithm cannot follow
+  // the path through its limit points, so the far end of the range fails.
   ScratchDir dir;
   const auto out = dir / "partial.h5";
   const CommandResult r =
-      run_flexure("sweep beam --n 1 --mu 30 --alpha2 0:-50:6 --out '" + out.string() + "' --json");
+      run_flexure("sweep beam --method chain --n 1 --mu 30 --alpha2 0:-50:6 --out '" +
+                  out.string() + "' --json");
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("first is alpha2 = "), std::string::npos) << r.err;

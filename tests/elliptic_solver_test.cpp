@@ -19,6 +19,7 @@
 
 #include "solver/common/errors.h"
 #include "solver/elliptic/elastica_closed_form.h"
+#include "solver/shooting/shooting_solver.h"
 #include "tests/elastica_reference.h"
 
 namespace flexure {
@@ -319,19 +320,30 @@ int count_equilibria(const EndLoad& load) {
   return roots;
 }
 
-TEST(EllipticSolver, ReportsLimitPointInsteadOfJumpingBranch) {
+TEST(EllipticSolver, PassesTheLimitPointAndSaysWhereTheBeamSnaps) {
   // alpha2 = 10, n = 0 with mu = -2 pi: along proportional loading two equilibria merge at
-  // lambda ~ 0.5958 (a fold, the beam snaps). Just before it three roots exist, just after only
-  // one, far away (t ~ -6.56). The solver must report the limit point, not return that root.
+  // lambda ~ 0.5958 (a fold: under load control the beam snaps there). Just before it three roots
+  // exist, just after only one (counted independently by sampling the residual). The solver
+  // follows the equilibrium path through the fold, as the shooting solver's arclength
+  // continuation does, returns the equilibrium where the path reaches full load, and reports the
+  // fold and its load factor.
   const EllipticSolver solver;
   const EndLoad full = EndLoad::howell(0.0, 10.0, -2.0 * kPi);
   const EllipticResult r = solver.solve(full);
-  EXPECT_FALSE(r.converged);
-  EXPECT_NE(r.message.find("limit point"), std::string::npos) << r.message;
-  EXPECT_NE(r.message.find("0.5957"), std::string::npos) << r.message;
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_GE(r.limit_points, 1);
+  EXPECT_NE(r.branch.find("limit point"), std::string::npos) << r.branch;
   EXPECT_EQ(count_equilibria(full.scaled(0.5950)), 3);
   EXPECT_EQ(count_equilibria(full.scaled(0.5965)), 1);
-  EXPECT_TRUE(solver.solve(full.scaled(0.5950)).converged);
+  EXPECT_GT(r.first_limit_load_factor, 0.5950);
+  EXPECT_LT(r.first_limit_load_factor, 0.5965);
+  // Independent method: shooting's pseudo-arclength continuation (CVODES), same equilibrium.
+  const ShootingResult s = ShootingSolver().solve(full);
+  ASSERT_TRUE(s.converged) << s.message;
+  EXPECT_GE(s.limit_points, 1);
+  EXPECT_NEAR(r.tip.a_over_l, s.tip.x, 1e-9);
+  EXPECT_NEAR(r.tip.b_over_l, s.tip.y, 1e-9);
+  EXPECT_NEAR(r.tip.theta0, s.tip.theta, 1e-9);
 }
 
 TEST(EllipticSolver, TensionNearTheSeparatrixKeepsPrecision) {

@@ -41,18 +41,65 @@ PendulumProblem make_pendulum_problem(double force, double psi, double mu) {
   return p;
 }
 
-BackwardIntegration integrate_from_tip(const PendulumProblem& problem, double tip_from_force) {
+double TipState::t() const { return 2.0 * kPi * winding + tau; }
+
+TipState tip_state_from_angle(const PendulumProblem& problem, double tip_from_force) {
+  const double winding = std::nearbyint(tip_from_force / (2.0 * kPi));
+  return tip_state_from_reduced_angle(
+      problem, static_cast<int>(winding), tip_from_force - 2.0 * kPi * winding);
+}
+
+TipState tip_state_from_reduced_angle(const PendulumProblem& problem, int winding, double tau) {
   const double F = problem.force;
   const double mu = problem.mu;
-  const double t = tip_from_force;
-  const double chi_tip = t + kPi;
-  // sin(chi1/2) = cos(t/2), cos(chi1/2) = -sin(t/2).
-  const double half_sin = std::cos(0.5 * t);
-  const double half_cos = -std::sin(0.5 * t);
+  const double parity = winding % 2 == 0 ? 1.0 : -1.0;
+  TipState tip;
+  tip.winding = winding;
+  tip.tau = tau;
+  // sin(chi1/2) = cos(t/2) = (-1)^winding cos(tau/2), cos(chi1/2) = -sin(t/2).
+  tip.half_sin = parity * std::cos(0.5 * tau);
+  tip.half_cos = -parity * std::sin(0.5 * tau);
   // (H + F)/2 = mu^2/4 + F sin^2(chi1/2) and (F - H)/2 = F cos^2(chi1/2) - mu^2/4: the sign of the
   // second decides the family (elastica-general.md, "Pendulum form").
-  const double h_plus = 0.25 * mu * mu + F * half_sin * half_sin;
-  const double h_minus = F * half_cos * half_cos - 0.25 * mu * mu;
+  tip.h_plus = 0.25 * mu * mu + F * tip.half_sin * tip.half_sin;
+  tip.h_minus = F * tip.half_cos * tip.half_cos - 0.25 * mu * mu;
+  return tip;
+}
+
+bool tip_state_near_separatrix(
+    const PendulumProblem& problem, double w, int side, int winding, TipState& tip) {
+  const double F = problem.force;
+  const double quarter_mu2 = 0.25 * problem.mu * problem.mu;
+  // sin^2(tau/2) = (h_minus + mu^2/4)/F.
+  const double a = w + quarter_mu2 / F;
+  const double b = (F - w * F - quarter_mu2) / F;  // cos^2(tau/2), formed without 1 - a
+  if (!(a >= 0.0 && b >= 0.0)) return false;
+  const double parity = winding % 2 == 0 ? 1.0 : -1.0;
+  tip.winding = winding;
+  tip.tau = side * 2.0 * std::asin(std::min(1.0, std::sqrt(a)));
+  tip.half_sin = parity * std::sqrt(b);
+  tip.half_cos = -parity * side * std::sqrt(a);
+  tip.h_minus = w * F;
+  tip.h_plus = F - tip.h_minus;
+  return true;
+}
+
+BackwardIntegration integrate_from_tip(const PendulumProblem& problem, double tip_from_force) {
+  return integrate_from_tip(problem, tip_state_from_angle(problem, tip_from_force));
+}
+
+BackwardIntegration integrate_from_tip(const PendulumProblem& problem, const TipState& tip) {
+  const double F = problem.force;
+  const double mu = problem.mu;
+  const double chi_tip = tip.t() + kPi;
+  // chi_tip = 2 pi winding + pi + tau lies between 2 pi winding and 2 pi (winding + 1): the
+  // nearest multiple of 2 pi (family A's centre of oscillation) and the nearest multiple of pi in
+  // chi_tip/2 (family B's half-turns) follow from the sign of tau, never from rounding.
+  const int upper = tip.winding + (tip.tau > 0.0 ? 1 : 0);
+  const double half_sin = tip.half_sin;
+  const double half_cos = tip.half_cos;
+  const double h_plus = tip.h_plus;
+  const double h_minus = tip.h_minus;
 
   BackwardIntegration out;
   ElasticaParameters& e = out.parameters;
@@ -68,7 +115,7 @@ BackwardIntegration integrate_from_tip(const PendulumProblem& problem, double ti
     const Parameter k{e.modulus2, e.complement2};
     const double kk = std::sqrt(e.modulus2);
     const double sqrtF = std::sqrt(F);
-    e.winding = static_cast<int>(std::nearbyint(chi_tip / (2.0 * kPi)));
+    e.winding = upper;
     // Tip amplitude: sin(phi1) = sin(chi1/2 - pi w)/k, cos(phi1) = mu/(2 k sqrt(F)); reduced to
     // |phi_r| <= pi/2 by whole half-turns so that its cosine is never formed by subtraction.
     const double sin_phi = (e.winding % 2 == 0 ? half_sin : -half_sin) / kk;
@@ -90,7 +137,7 @@ BackwardIntegration integrate_from_tip(const PendulumProblem& problem, double ti
     const double sigma = mu > 0.0 ? 1.0 : -1.0;
     // Amplitude chi1/2 = j pi + phi_r: sin(phi_r) = (-1)^j cos(t/2), cos(phi_r) = (-1)^(j+1)
     // sin(t/2).
-    const int turns = static_cast<int>(std::nearbyint(0.5 * chi_tip / kPi));
+    const int turns = upper;
     const double parity = turns % 2 == 0 ? 1.0 : -1.0;
     e.u_tip = incomplete_F(turns, parity * half_sin, parity * half_cos, m);
     e.u_root = e.u_tip - sigma * q;
@@ -101,6 +148,10 @@ BackwardIntegration integrate_from_tip(const PendulumProblem& problem, double ti
 
 double tip_angle_residual(const PendulumProblem& problem, double tip_from_force) {
   return integrate_from_tip(problem, tip_from_force).chi_root - problem.chi0;
+}
+
+double tip_angle_residual(const PendulumProblem& problem, const TipState& tip) {
+  return integrate_from_tip(problem, tip).chi_root - problem.chi0;
 }
 
 ShapeEvaluator::ShapeEvaluator(const ElasticaParameters& parameters)

@@ -28,15 +28,41 @@ struct PendulumProblem {
 };
 PendulumProblem make_pendulum_problem(double force, double psi, double mu);
 
+// The tip state (chi1 = t + pi, chi1' = mu) in the quantities the closed form needs. The tip
+// angle is kept as t = 2 pi winding + tau with |tau| <= pi, so that a tip aligned with the force
+// (tau -> 0, tension) keeps tau's relative precision, and the energy offsets are supplied
+// directly, because near the separatrix h_minus is exponentially small and cannot be formed from
+// t by subtraction (tip_chart.h supplies it from the separatrix chart).
+struct TipState {
+  int winding = 0;        // t = 2 pi winding + tau
+  double tau = 0.0;       // in [-pi, pi]
+  double half_sin = 1.0;  // sin(chi1/2) = cos(t/2)
+  double half_cos = 0.0;  // cos(chi1/2) = -sin(t/2)
+  double h_minus = 0.0;   // (F - H)/2 = F cos^2(chi1/2) - mu^2/4: > 0 inflectional, < 0 not
+  double h_plus = 0.0;    // (F + H)/2 = F sin^2(chi1/2) + mu^2/4 = F - h_minus
+  double t() const;       // theta0 - psi
+};
+TipState tip_state_from_angle(const PendulumProblem& problem, double tip_from_force);
+// The same from tau and the winding, without forming t.
+TipState tip_state_from_reduced_angle(const PendulumProblem& problem, int winding, double tau);
+
+// Tip state from the energy offset w = h_minus / F on one side of a separatrix crossing:
+// tau = side * 2 asin(sqrt(w + mu^2/(4F))), side = +-1. Returns false where w is outside the
+// side's range (no real tau).
+bool tip_state_near_separatrix(
+    const PendulumProblem& problem, double w, int side, int winding, TipState& state);
+
 // Trajectory through the tip state (chi_tip, mu), integrated back to the clamp.
 struct BackwardIntegration {
   ElasticaParameters parameters;
   double chi_root = 0.0;  // pendulum angle reached at s = 0
 };
+BackwardIntegration integrate_from_tip(const PendulumProblem& problem, const TipState& tip);
 BackwardIntegration integrate_from_tip(const PendulumProblem& problem, double tip_from_force);
 
 // Tip-angle residual: chi(0) - chi0 for the trajectory through the tip angle t = theta0 - psi.
 double tip_angle_residual(const PendulumProblem& problem, double tip_from_force);
+double tip_angle_residual(const PendulumProblem& problem, const TipState& tip);
 
 // Position and angle at arc length s in [0, 1] in the normalised (unmirrored) frame. The evaluator
 // computes the clamp's amplitude and integrals once for many points.

@@ -120,13 +120,24 @@ EllipticResult EllipticSolver::solve(const EndLoad& load) const {
     r.iterations = c.iterations;
     r.continuation_steps = c.steps;
     r.residual = std::fabs(c.residual);
+    r.limit_points = c.limit_points;
+    r.first_limit_load_factor = c.first_limit_load_factor;
     if (c.converged) {
       const elliptic::PendulumProblem problem = elliptic::make_pendulum_problem(force, psi, mu);
-      p = elliptic::integrate_from_tip(problem, c.tip_from_force).parameters;
+      p = elliptic::integrate_from_tip(problem, c.tip).parameters;
       p.mirrored = load.Fy < 0.0;
       fill_from_parameters(r);
       r.converged = true;
-      r.branch = fmt::format("proportional loading (continuation in {} load steps)", c.steps);
+      r.branch =
+          fmt::format("proportional loading (pseudo-arclength continuation, {} steps)", c.steps);
+      if (c.limit_points > 0) {
+        r.branch += fmt::format(
+            "; the path passed {} limit point{}: under load control the beam would snap at the "
+            "first, at load factor {:.6g}",
+            c.limit_points,
+            c.limit_points == 1 ? "" : "s",
+            c.first_limit_load_factor);
+      }
     } else {
       r.message = c.message;
     }

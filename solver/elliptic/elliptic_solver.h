@@ -22,6 +22,10 @@ struct EllipticResult {
   std::string message;  // why it stopped; names the offending quantity when it failed
   int iterations = 0;   // root-finder iterations, summed over continuation steps
   int continuation_steps = 0;
+  // Limit points (folds of the load factor) passed on the path from the unloaded beam; under load
+  // control the beam would snap at the first, at first_limit_load_factor.
+  int limit_points = 0;
+  double first_limit_load_factor = 0.0;
 
   EndLoad load;  // the load solved for (inverse problems fill in alpha2 here)
   TipPose tip;

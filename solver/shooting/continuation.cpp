@@ -23,11 +23,20 @@ const char* to_string(PathStatus status) {
 
 namespace {
 
-// Unit tangent of the solution curve in scaled variables: [J S, g_lambda] t = 0, oriented along
-// `previous` (Keller's pseudo-arclength; the bordered system is regular at limit points).
-Eigen::VectorXd tangent_at(const ShootingEvaluation& eval,
-                           const Eigen::VectorXd& scale,
-                           const Eigen::VectorXd& previous) {
+// Unit tangent of the solution curve in scaled variables: [J S, g_lambda] t = 0 (Keller's
+// pseudo-arclength; the bordered system is regular at limit points). Its sign is fixed by the
+// orientation of the path, the sign of det [J S, g_lambda; t^T], which is constant along one
+// smooth branch and does not depend on the step: orienting t by the previous tangent instead would
+// silently accept a corrector that landed on another branch (or on the same curve travelled
+// backwards), which is how a continuation jumps branches near an imperfect bifurcation.
+struct Tangent {
+  Eigen::VectorXd t;
+  int orientation = 0;  // sign of det [J S, g_lambda; t^T] before fixing the sign
+};
+Tangent tangent_at(const ShootingEvaluation& eval,
+                   const Eigen::VectorXd& scale,
+                   const Eigen::VectorXd& previous,
+                   int orientation) {
   const int nz = static_cast<int>(scale.size());
   Eigen::MatrixXd A(nz + 1, nz + 1);
   A.topLeftCorner(nz, nz) = eval.jacobian * scale.asDiagonal();
@@ -35,10 +44,16 @@ Eigen::VectorXd tangent_at(const ShootingEvaluation& eval,
   A.bottomRows(1) = previous.transpose();
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(nz + 1);
   rhs[nz] = 1.0;
-  Eigen::VectorXd t = robust_solve(A, rhs);
-  t.normalize();
-  if (t.dot(previous) < 0.0) t = -t;
-  return t;
+  Tangent out;
+  out.t = robust_solve(A, rhs);
+  out.t.normalize();
+  A.bottomRows(1) = out.t.transpose();
+  const double det = A.partialPivLu().determinant();
+  out.orientation = det > 0.0 ? 1 : (det < 0.0 ? -1 : 0);
+  if (orientation != 0 && out.orientation != 0 && out.orientation != orientation) {
+    out.t = -out.t;
+  }
+  return out;
 }
 
 PathPoint make_point(const ShootingProblem& problem,
@@ -102,7 +117,10 @@ LoadPath continue_load_path(const ShootingProblem& problem,
   Eigen::VectorXd scale = z_rate.cwiseAbs().cwiseMax(1.0);
   Eigen::VectorXd along_lambda = Eigen::VectorXd::Zero(nz + 1);
   along_lambda[nz] = 1.0;
-  Eigen::VectorXd t = tangent_at(eval, scale, along_lambda);
+  const Tangent start_tangent = tangent_at(eval, scale, along_lambda, 0);
+  Eigen::VectorXd t = start_tangent.t;
+  // The path keeps this orientation (see tangent_at); lambda increases at the start.
+  int orientation = start_tangent.orientation;
   if (options.record_path) {
     path.points.push_back(make_point(problem, eval, z, lambda, 0.0, 0, PathStatus::kStart));
   }
@@ -116,6 +134,9 @@ LoadPath continue_load_path(const ShootingProblem& problem,
 
   double ds = options.initial_step;
   int attempts = 0;
+  double arclength = 0.0;    // scaled arclength of the current point
+  double quiet_until = 0.0;  // no samples recorded before this arclength (bifurcations)
+  std::vector<double> arclength_of(path.points.size(), 0.0);  // of each recorded point
   const long integrator_start = integrator.steps_taken();
   bool out_of_budget = false;
   while (attempts < options.max_steps) {
@@ -136,7 +157,13 @@ LoadPath continue_load_path(const ShootingProblem& problem,
       NewtonOutcome nw = newton_solve(problem, integrator, newton, z_end, lambda_end, nullptr);
       path.newton_iterations += nw.iterations;
       const double moved = (scaled(z_end, 1.0) - start).norm();
-      if (nw.converged && moved <= options.max_predictor_distance * std::max(h, options.min_step)) {
+      // The landing point must lie on this branch, reached with lambda still increasing (the
+      // fixed-lambda corrector does not compute dg/dlambda, so evaluate once more).
+      ShootingEvaluation at_end;
+      const bool same_branch =
+          nw.converged && problem.evaluate(z_end, 1.0, true, true, integrator, at_end) &&
+          tangent_at(at_end, scale, t, orientation).t.dot(t) >= std::cos(options.max_turn);
+      if (same_branch && moved <= options.max_predictor_distance * std::max(h, options.min_step)) {
         z = z_end;
         lambda = 1.0;
         ++path.steps;
@@ -183,10 +210,41 @@ LoadPath continue_load_path(const ShootingProblem& problem,
       if (ds < options.min_step) break;
       continue;
     }
-    const Eigen::VectorXd t_new = tangent_at(nw.last, scale, t);
+    Eigen::VectorXd t_new = tangent_at(nw.last, scale, t, orientation).t;
+    if (t_new.dot(t) < std::cos(options.max_turn)) {
+      // The orientation flipped: either the corrector landed on another branch (then a shorter
+      // step lands on this one again) or the path crossed a bifurcation point, where
+      // det [J S, g_lambda; t^T] changes sign on the branch itself (a symmetric arch). Only a flip
+      // that persists at a very short step, with the tangent taken by continuity, is a crossing.
+      const bool crossing =
+          ds <= options.bifurcation_step && -t_new.dot(t) >= std::cos(options.max_turn);
+      if (!crossing) {
+        ++path.rejected_steps;
+        ds *= 0.5;
+        if (ds < options.min_step) break;
+        continue;
+      }
+      // Crossed: the branch continues with the opposite orientation. Samples within
+      // bifurcation_vicinity of the crossing are ill-conditioned (the Jacobian is nearly singular
+      // there, so their error is the Newton residual divided by a small singular value): the
+      // ones recorded on the way in are dropped and none are recorded on the way out.
+      orientation = -orientation;
+      ++path.bifurcation_points;
+      t_new = -t_new;
+      while (path.points.size() > 1 &&
+             arclength - arclength_of.back() < options.bifurcation_vicinity) {
+        path.points.pop_back();
+        arclength_of.pop_back();
+      }
+      quiet_until = arclength + ds + options.bifurcation_vicinity;
+    }
+    arclength += ds;
     PathStatus status = PathStatus::kAccepted;
     if (t_new[nz] * t[nz] < 0.0) {
       status = PathStatus::kLimitPoint;
+      if (path.limit_points == 0) {
+        path.first_limit_load_factor = std::max(path.lambda_reached, lambda_new);
+      }
       ++path.limit_points;
     }
     z = z_new;
@@ -199,8 +257,9 @@ LoadPath continue_load_path(const ShootingProblem& problem,
     path.tip = ChainPose{nw.last.tip.x, nw.last.tip.y, nw.last.tip.theta};
     path.tip_state = nw.last.tip;
     path.lambda_reached = std::max(path.lambda_reached, lambda);
-    if (options.record_path) {
+    if (options.record_path && arclength >= quiet_until) {
       path.points.push_back(make_point(problem, nw.last, z, lambda, ds, nw.iterations, status));
+      arclength_of.push_back(arclength);
     }
     if (lambda < -1e-12 && t[nz] < 0.0) {
       path.message = fmt::format(

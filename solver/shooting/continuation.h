@@ -27,7 +27,13 @@ struct ContinuationOptions {
   long max_integrator_steps = 500000;   // CVODES steps over the whole path (time budget)
   double max_predictor_distance = 0.5;  // reject a correction farther than this * step from the
                                         // predictor (guards against jumping to another branch)
-  bool record_path = true;              // store every accepted point
+  double max_turn = 0.6;  // reject a step whose tangent turned by more than this (rad); the
+                          // tangent's sign comes from the path's orientation (continuation.cpp),
+                          // so a corrector that lands on another branch shows up as a large turn
+  double bifurcation_step = 1e-3;      // an orientation flip that persists at steps this short is a
+                                       // bifurcation point crossed on the branch (continuation.cpp)
+  double bifurcation_vicinity = 0.01;  // no path samples recorded this close to a crossing
+  bool record_path = true;             // store every accepted point
 };
 
 enum class PathStatus { kStart, kAccepted, kLimitPoint, kEnd };
@@ -52,6 +58,8 @@ struct LoadPath {
   int rejected_steps = 0;       // halved steps
   int newton_iterations = 0;    // summed over all corrections
   int limit_points = 0;         // turning points of lambda passed
+  double first_limit_load_factor = 0.0;  // largest lambda before the first turning point
+  int bifurcation_points = 0;  // simple bifurcation points crossed (the path stays on its branch)
   std::vector<PathPoint> points;
   Eigen::VectorXd z;           // unknowns at the last accepted point
   double lambda = 0.0;         // load factor at the last accepted point

@@ -202,6 +202,8 @@ ShootingResult ShootingSolver::solve(const SegmentChain& chain) const {
   result.method = "continuation";
   result.iterations += path.newton_iterations;
   result.continuation_steps = path.steps;
+  result.limit_points = path.limit_points;
+  result.first_limit_load_factor = path.first_limit_load_factor;
   result.residual_norm = path.residual_norm;
   result.converged = path.completed;
   result.message = path.message;

@@ -36,7 +36,9 @@ struct ShootingResult {
   std::string method;          // "direct Newton" or "continuation"
   int iterations = 0;          // Newton iterations, summed over continuation steps
   int continuation_steps = 0;  // accepted continuation steps (0 for a direct solve)
-  int shooting_intervals = 1;  // 1 = single shooting; more = multiple shooting cuts + 1
+  int limit_points = 0;        // folds of the load factor passed on the path (snap-through)
+  double first_limit_load_factor = 0.0;  // load factor at the first of them
+  int shooting_intervals = 1;            // 1 = single shooting; more = multiple shooting cuts + 1
   double residual_norm = 0.0;  // max |g_i| of the far-end conditions at the returned point
   double load_factor = 0.0;    // load factor reached (1 when converged)
 
