@@ -179,6 +179,8 @@ Json to_json(const BeamProblem& problem, const BeamSolution& solution) {
   out["inflection_points"] = solution.inflection_points;
   out["root_moment"] = solution.root_moment;
   out["limit_points"] = solution.limit_points;
+  out["target_residual"] =
+      std::isfinite(solution.target_residual) ? Json(solution.target_residual) : Json(nullptr);
   out["first_limit_load_factor"] =
       solution.limit_points > 0 ? Json(solution.first_limit_load_factor) : Json(nullptr);
   out["family"] = solution.family;

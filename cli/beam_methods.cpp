@@ -11,12 +11,21 @@
 #include "io/bench/method_selector.h"
 #include "solver/chain/chain_algorithm_solver.h"
 #include "solver/common/errors.h"
-#include "solver/common/load_search.h"
 #include "solver/elliptic/elliptic_solver.h"
+#include "solver/inverse/tip_target.h"
 #include "solver/shooting/shooting_solver.h"
 
 namespace flexure::cli {
 namespace {
+
+// Inverse problems of the numerical methods reach their target within this (times
+// max(1, |target|)): their forward solves converge to about 1e-10 (Newton residual, chain passes).
+constexpr double kNumericalInverseTolerance = 1e-8;
+
+// Tip quantity used by the inverse problems.
+double given_quantity(const BeamProblem& problem, const TipPose& tip) {
+  return problem.given == BeamProblem::Given::kTheta0 ? tip.theta0 : tip.b_over_l;
+}
 
 BeamSolution solve_elliptic(const BeamProblem& problem) {
   if (!problem.is_plain_cantilever()) {
@@ -55,6 +64,9 @@ BeamSolution solve_elliptic(const BeamProblem& problem) {
   solution.load_factor = result.converged ? 1.0 : 0.0;
   solution.limit_points = result.limit_points;
   solution.first_limit_load_factor = result.first_limit_load_factor;
+  if (problem.given != BeamProblem::Given::kAlpha2) {
+    solution.target_residual = std::fabs(given_quantity(problem, result.tip) - problem.value);
+  }
   if (result.converged && problem.shape_points > 0) {
     solution.shape = solver.shape(result, problem.shape_points);
   }
@@ -126,11 +138,6 @@ std::vector<ShapePoint> resample(const std::vector<ShapePoint>& nodes, int count
         {s, a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.theta + t * (b.theta - a.theta)});
   }
   return out;
-}
-
-// Tip quantity used by the inverse problems.
-double given_quantity(const BeamProblem& problem, const TipPose& tip) {
-  return problem.given == BeamProblem::Given::kTheta0 ? tip.theta0 : tip.b_over_l;
 }
 
 BeamSolution solve_numerical_forward(const std::string& method,
@@ -214,28 +221,42 @@ BeamSolution solve_numerical(const std::string& method, const BeamProblem& probl
         "--alpha2 and prescribe the tip with --tip-x/--tip-y/--tip-angle",
         to_string(problem.boundary)));
   }
-  int solves = 0;
-  auto quantity = [&](double alpha2) -> std::optional<double> {
-    ++solves;
+  TipTarget target;
+  target.quantity = problem.given == BeamProblem::Given::kTheta0 ? TipTarget::Quantity::kTheta0
+                                                                 : TipTarget::Quantity::kBOverL;
+  target.value = problem.value;
+  target.load_ratio_n = problem.load_ratio_n;
+  target.mu = problem.mu;
+  auto forward = [&](double alpha2) -> std::optional<TipPose> {
     const BeamSolution s = solve_numerical_forward(method, problem, alpha2, 0);
     if (!s.converged) return std::nullopt;
-    return given_quantity(problem, s.tip);
+    return s.tip;
   };
-  const double at_zero =
-      given_quantity(problem, solve_numerical_forward(method, problem, 0.0, 0).tip);
-  LoadSearchOptions options;
-  options.relative_tolerance = 1e-11;
-  const LoadSearchResult found = find_load_for_target(quantity, problem.value, at_zero, options);
-  if (!found.found) {
-    throw InvalidInput(
-        fmt::format("{} = {:.6g}: {}",
-                    problem.given == BeamProblem::Given::kTheta0 ? "--theta0" : "--b-over-l",
-                    problem.value,
-                    found.message));
+  const TipTargetSolution found = solve_tip_target(target, forward, kNumericalInverseTolerance);
+  if (!found.converged) {
+    // What was reached is in the message; no further (possibly slow) solve at that load.
+    BeamSolution missed;
+    missed.method = method;
+    missed.alpha2 = found.alpha2;
+    missed.iterations = found.forward_solves;
+    missed.target_residual = found.residual;
+    missed.message = found.message;
+    return missed;
   }
   BeamSolution solution =
       solve_numerical_forward(method, problem, found.alpha2, problem.shape_points);
-  solution.iterations += solves;
+  solution.iterations += found.forward_solves;
+  solution.target_residual = std::fabs(given_quantity(problem, solution.tip) - problem.value);
+  if (!found.converged || !(solution.target_residual <= found.tolerance)) {
+    // Never a load that misses its target with exit code 0: report what was reached.
+    solution.converged = false;
+    solution.message = fmt::format("{} (reached {} = {:.9g} at alpha2 = {:.9g}, target {:.9g})",
+                                   found.message,
+                                   target.name(),
+                                   given_quantity(problem, solution.tip),
+                                   found.alpha2,
+                                   problem.value);
+  }
   return solution;
 }
 
@@ -345,10 +366,19 @@ double beam_method_tolerance(const std::string& method) {
 }
 
 BeamSolution solve_beam(const std::string& method, const BeamProblem& problem) {
-  const MethodResolution used = resolve_beam_method_with_reason(method, problem);
+  MethodResolution used = resolve_beam_method_with_reason(method, problem);
   BeamSolution solution;
   if (used.method == "elliptic") {
-    solution = solve_elliptic(problem);
+    try {
+      solution = solve_elliptic(problem);
+    } catch (const OutsideMethodDomain& e) {
+      if (method != "auto") throw;
+      // auto: the load (or the target's load) lies beyond the elliptic solver's range; the
+      // shooting solver has no such limit.
+      used = {"shooting",
+              fmt::format("{}; the elliptic solver cannot answer ({})", used.reason, e.what())};
+      solution = solve_numerical("shooting", problem);
+    }
   } else if (used.method == "shooting" || used.method == "chain") {
     solution = solve_numerical(used.method, problem);
   } else if (used.method == "prbm") {

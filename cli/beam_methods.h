@@ -6,6 +6,7 @@
 // else in the CLI needs to change; `auto` picks the method used when none is named.
 #include <CLI/CLI.hpp>
 #include <array>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -74,6 +75,9 @@ struct BeamSolution {
   int elements = 0;          // chain algorithm only (0 otherwise)
   int increments = 0;        // chain algorithm only: increments taken
   double load_factor = 1.0;  // load factor reached (1 when converged)
+  // Inverse problems (--theta0, --b-over-l): |tip quantity - target| at the returned load; NaN for
+  // a forward problem. A converged inverse always has it within the method's stated tolerance.
+  double target_residual = std::numeric_limits<double>::quiet_NaN();
   // Folds of the load factor on the path from the unloaded beam (snap-through under load
   // control at the first); elliptic and shooting only.
   int limit_points = 0;

@@ -16,6 +16,14 @@ class InvalidInput : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+// Input that is valid but outside one method's domain (e.g. a load beyond the elliptic solver's
+// range): another method may solve it, so `--method auto` can fall back. Still exit code 2 when
+// the user named the method.
+class OutsideMethodDomain : public InvalidInput {
+ public:
+  using InvalidInput::InvalidInput;
+};
+
 class NoConvergence : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;

@@ -131,17 +131,22 @@ BackwardIntegration integrate_from_tip(const PendulumProblem& problem, const Tip
     // Family B: chi = 2 am(v), chi' = 2 sigma q dn(v), v = sigma q s + v0, q^2 = (H + F)/2.
     e.family = ElasticaFamily::kNonInflectional;
     e.modulus2 = F / h_plus;
-    e.complement2 = -h_minus / h_plus;
+    // fabs, not negation: on the separatrix itself h_minus = +0 and -0/h_plus is -0, which
+    // Carlson's R_F rejects as a second zero argument (the limit m = 1 is regular here).
+    e.complement2 = std::fabs(h_minus) / h_plus;
     const Parameter m{e.modulus2, e.complement2};
     const double q = std::sqrt(h_plus);
     const double sigma = mu > 0.0 ? 1.0 : -1.0;
     // Amplitude chi1/2 = j pi + phi_r: sin(phi_r) = (-1)^j cos(t/2), cos(phi_r) = (-1)^(j+1)
-    // sin(t/2).
+    // sin(t/2). The whole half-turns j are kept out of the elliptic argument (am(v + 2jK) =
+    // am(v) + j pi): chi = 2 pi j + 2 am(v). K is never needed, which keeps the separatrix itself
+    // (m = 1, K infinite) regular and spares the subtraction of large multiples of K.
     const int turns = upper;
     const double parity = turns % 2 == 0 ? 1.0 : -1.0;
-    e.u_tip = incomplete_F(turns, parity * half_sin, parity * half_cos, m);
+    e.winding = turns;
+    e.u_tip = incomplete_F(0, parity * half_sin, parity * half_cos, m);
     e.u_root = e.u_tip - sigma * q;
-    out.chi_root = 2.0 * jacobi_amplitude(e.u_root, m);
+    out.chi_root = 2.0 * kPi * turns + 2.0 * jacobi_amplitude(e.u_root, m);
   }
   return out;
 }
@@ -206,7 +211,7 @@ ShapePoint ShapeEvaluator::at(double s) const {
     sin2_integral = (d - d_root_) / span_;
     sin_integral = 2.0 * std::sin(phi - phi0) * std::sin(phi + phi0) /
                    (span_ * (delta_amplitude(phi, k_) + delta_root_));
-    chi = 2.0 * phi;
+    chi = 2.0 * kPi * p_.winding + 2.0 * phi;
   }
   // Tangent in the force frame: t.eF = -cos chi, t.ePerp = -sin chi; rotate back by psi.
   const double cos_integral = s - 2.0 * sin2_integral;

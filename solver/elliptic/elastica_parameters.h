@@ -25,7 +25,8 @@ struct ElasticaParameters {
   double complement2 = 1.0;  // 1 - modulus2, kept separately for accuracy near the separatrix
   double u_root = 0.0;       // elliptic argument at the clamp (u in family A, v in family B)
   double u_tip = 0.0;        // elliptic argument at the tip
-  int winding = 0;           // family A: chi oscillates about 2 pi winding
+  int winding = 0;           // family A: chi oscillates about 2 pi winding; family B: chi =
+                             // 2 pi winding + 2 am(v), whole half-turns kept out of v
 };
 
 }  // namespace flexure

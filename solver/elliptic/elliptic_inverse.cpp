@@ -17,8 +17,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = 180.0 / kPi;
-// Largest |alpha2| searched when the inverse problem has an end moment (no closed form in theta0).
-constexpr double kMaxAlpha2Search = 1e4;
 
 // Force angle of Howell's load (P, nP) for P > 0 (eq. 2.87 corrected: phi = atan2(1, -n)).
 double force_angle(double load_ratio_n) { return std::atan2(1.0, -load_ratio_n); }
@@ -51,31 +49,89 @@ EllipticResult result_from_tip_angle(double load_ratio_n, double theta0) {
   return r;
 }
 
-// Finds the smallest |alpha2| with quantity(solve(alpha2)) = value (solver/common/load_search.h).
+double target_tolerance(double target) {
+  return EllipticSolver::kInverseTolerance * std::max(1.0, std::fabs(target));
+}
+
+// Checks an explicit or bracketed mu = 0 inverse against its target: converged only if it hits.
+EllipticResult verified(EllipticResult r, double reached, double target, const char* what) {
+  r.residual = std::fabs(reached - target);
+  if (r.converged && !(r.residual <= target_tolerance(target))) {
+    r.converged = false;
+    r.message =
+        fmt::format("the inverse solve reached {} = {:.12g} instead of {:.12g} (miss {:.2e})",
+                    what,
+                    reached,
+                    target,
+                    r.residual);
+  }
+  return r;
+}
+
+// The smallest |alpha2| with quantity(solve(alpha2)) = value (solver/common/load_search.h), both
+// signs of alpha2, every root verified.
 EllipticResult search_alpha2(const EllipticSolver& solver,
                              double load_ratio_n,
                              double mu,
                              const std::function<double(const EllipticResult&)>& quantity,
-                             double value) {
-  auto solve_at = [&](double alpha2) {
-    return solver.solve(EndLoad::howell(load_ratio_n, alpha2, mu));
-  };
+                             double value,
+                             const char* what) {
+  bool beyond_range = false;
   auto q = [&](double alpha2) -> std::optional<double> {
-    const EllipticResult r = solve_at(alpha2);
-    if (!r.converged) return std::nullopt;
-    return quantity(r);
+    try {
+      const EllipticResult r = solver.solve(EndLoad::howell(load_ratio_n, alpha2, mu));
+      if (!r.converged) return std::nullopt;
+      return quantity(r);
+    } catch (const OutsideMethodDomain&) {
+      beyond_range = true;
+      return std::nullopt;
+    }
   };
   LoadSearchOptions options;
-  options.max_alpha2 = kMaxAlpha2Search;
-  const LoadSearchResult found = find_load_for_target(q, value, quantity(solve_at(0.0)), options);
-  if (!found.found) {
-    EllipticResult failed;
-    failed.message = found.message;
-    return failed;
+  // Every |alpha2| the force range admits for this load ratio.
+  options.max_alpha2 = EllipticSolver::kMaxForce / eta_of(load_ratio_n);
+  options.target_tolerance = target_tolerance(value);
+  const double at_zero = quantity(solver.solve(EndLoad::howell(load_ratio_n, 0.0, mu)));
+  const LoadSearchResult found = find_load_for_target(q, value, at_zero, options);
+  if (found.found()) {
+    EllipticResult r = solver.solve(EndLoad::howell(load_ratio_n, found.alpha2, mu));
+    r.iterations += found.solves;
+    r.residual = found.residual;
+    return r;
   }
-  EllipticResult r = solve_at(found.alpha2);
-  r.iterations += found.solves;
-  return r;
+  if (found.status == LoadSearchStatus::kUnreachable && (beyond_range || found.scanned_to_max)) {
+    throw OutsideMethodDomain(fmt::format(
+        "{} = {:.6g} is not reached by any |alpha2| <= {:.6g} with load ratio n = {:.6g} and end "
+        "moment mu = {:.6g}, where the elliptic solver's range ends (|F| l^2/EI <= {:.0e}; the "
+        "closest was {} = {:.9g} at alpha2 = {:.9g}); the shooting method (--method shooting) "
+        "can search larger loads",
+        what,
+        value,
+        found.reached_alpha2_max,
+        load_ratio_n,
+        mu,
+        EllipticSolver::kMaxForce,
+        what,
+        found.reached,
+        found.alpha2));
+  }
+  if (found.status == LoadSearchStatus::kUnreachable) {
+    throw InvalidInput(
+        fmt::format("{} = {:.6g} cannot be reached with load ratio n = {:.6g} and "
+                    "end moment mu = {:.6g}: {}",
+                    what,
+                    value,
+                    load_ratio_n,
+                    mu,
+                    found.message));
+  }
+  // Brackets but no root: report what was reached (exit code 3 in the CLI), never a wrong load.
+  EllipticResult missed = solver.solve(EndLoad::howell(load_ratio_n, found.alpha2, mu));
+  missed.converged = false;
+  missed.iterations += found.solves;
+  missed.residual = found.residual;
+  missed.message = fmt::format("{} = {:.6g} not reached: {}", what, value, found.message);
+  return missed;
 }
 
 }  // namespace
@@ -103,19 +159,13 @@ EllipticResult EllipticSolver::solve_for_tip_angle(double load_ratio_n,
           lower * kDeg,
           upper * kDeg));
     }
-    return result_from_tip_angle(load_ratio_n, theta0);
+    EllipticResult r = result_from_tip_angle(load_ratio_n, theta0);
+    const double reached = r.tip.theta0;
+    return verified(std::move(r), reached, theta0, "theta0");
   }
-  // With an end moment the tip angle at alpha2 = 0 is mu; search the side that moves it to theta0.
+  // With an end moment the tip angle at alpha2 = 0 is mu; the search moves it to theta0.
   auto tip_angle = [](const EllipticResult& r) { return r.tip.theta0; };
-  EllipticResult r = search_alpha2(*this, load_ratio_n, mu, tip_angle, theta0);
-  if (r.converged) return r;
-  throw InvalidInput(fmt::format(
-      "tip angle theta0 = {:.6g} rad is not reached by any |alpha2| <= {:.0e} with load ratio "
-      "n = {:.6g} and end moment mu = {:.6g}",
-      theta0,
-      kMaxAlpha2Search,
-      load_ratio_n,
-      mu));
+  return search_alpha2(*this, load_ratio_n, mu, tip_angle, theta0, "tip angle theta0");
 }
 
 EllipticResult EllipticSolver::solve_for_deflection(double load_ratio_n,
@@ -155,7 +205,7 @@ EllipticResult EllipticSolver::solve_for_deflection(double load_ratio_n,
         if (root.converged) {
           EllipticResult r = result_from_tip_angle(load_ratio_n, sign * root.x);
           r.iterations = i + root.iterations;
-          return r;
+          return verified(r, r.tip.b_over_l, b_over_l, "b/l");
         }
         break;
       }
@@ -169,15 +219,7 @@ EllipticResult EllipticSolver::solve_for_deflection(double load_ratio_n,
         load_ratio_n,
         std::fabs(best)));
   }
-  EllipticResult r = search_alpha2(*this, load_ratio_n, mu, deflection, b_over_l);
-  if (r.converged) return r;
-  throw InvalidInput(fmt::format(
-      "tip deflection b/l = {:.6g} is not reached by any |alpha2| <= {:.0e} with load ratio "
-      "n = {:.6g} and end moment mu = {:.6g}",
-      b_over_l,
-      kMaxAlpha2Search,
-      load_ratio_n,
-      mu));
+  return search_alpha2(*this, load_ratio_n, mu, deflection, b_over_l, "tip deflection b/l");
 }
 
 }  // namespace flexure

@@ -14,10 +14,10 @@ namespace flexure {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-// Loads beyond this (in units of EI/l^2) put the separatrix closer than double precision can
+// Loads beyond kMaxForce (in units of EI/l^2) put the separatrix closer than double precision can
 // resolve (k' ~ e^{-sqrt F}); no physical cantilever is loaded that far.
-constexpr double kMaxForce = 1e4;
-constexpr double kMaxMoment = 1e4;
+constexpr double kMaxForce = EllipticSolver::kMaxForce;
+constexpr double kMaxMoment = EllipticSolver::kMaxMoment;
 // Below this force the closed form would divide by numbers near underflow; linear theory is
 // exact to round-off there.
 constexpr double kNegligibleForce = 1e-200;
@@ -27,14 +27,16 @@ void validate_load(const EndLoad& load) {
   require_finite(load.Fy, "vertical force Fy l^2/EI (alpha2)");
   require_finite(load.mu, "end moment mu = M l/EI");
   if (std::hypot(load.Fx, load.Fy) > kMaxForce) {
-    throw InvalidInput(fmt::format(
-        "end force |F| l^2/EI = {:.6g} is outside the elliptic solver's range (at most {:.0e})",
+    throw OutsideMethodDomain(fmt::format(
+        "end force |F| l^2/EI = {:.6g} is outside the elliptic solver's range (at most {:.0e}); "
+        "the shooting method (--method shooting) reaches further",
         std::hypot(load.Fx, load.Fy),
         kMaxForce));
   }
   if (std::fabs(load.mu) > kMaxMoment) {
-    throw InvalidInput(fmt::format(
-        "end moment |mu| = {:.6g} is outside the elliptic solver's range (at most {:.0e})",
+    throw OutsideMethodDomain(fmt::format(
+        "end moment |mu| = {:.6g} is outside the elliptic solver's range (at most {:.0e}); the "
+        "shooting method (--method shooting) reaches further",
         std::fabs(load.mu),
         kMaxMoment));
   }

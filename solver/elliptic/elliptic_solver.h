@@ -38,6 +38,14 @@ struct EllipticResult {
 
 class EllipticSolver {
  public:
+  // Domain: |F| l^2/EI and |mu| up to these (docs/theory-elliptic.md, "Precision"); beyond, the
+  // solver throws OutsideMethodDomain.
+  static constexpr double kMaxForce = 1e4;
+  static constexpr double kMaxMoment = 1e4;
+  // Inverse problems return a load whose tip quantity is within this of the target (times
+  // max(1, |target|)), or fail.
+  static constexpr double kInverseTolerance = 1e-10;
+
   struct Options {
     double tolerance = 1e-14;  // relative tolerance on the unknown of each scalar solve
     int max_iterations = 200;  // per scalar solve
@@ -51,8 +59,12 @@ class EllipticSolver {
   EllipticResult solve(const EndLoad& load) const;
 
   // Inverse problems in Howell's parameters (load ratio n fixed, mu fixed): find alpha2 such that
-  // the tip angle is theta0, or such that the tip deflection is b/l. Throws InvalidInput when the
-  // target is outside what the load ratio can reach (e.g. theta0 >= the force angle for mu = 0).
+  // the tip angle is theta0, or such that the tip deflection is b/l; the load of smallest |alpha2|
+  // that does. The returned tip reaches the target within kInverseTolerance max(1, |target|)
+  // (`residual` holds the miss). Throws InvalidInput when the target is outside what the load
+  // ratio can reach (e.g. theta0 >= the force angle for mu = 0), OutsideMethodDomain when it may
+  // lie beyond the solver's force range, and returns converged = false with what was reached when
+  // the tip quantity jumps across the target (a fold between neighbouring loads).
   EllipticResult solve_for_tip_angle(double load_ratio_n, double theta0, double mu = 0.0) const;
   EllipticResult solve_for_deflection(double load_ratio_n, double b_over_l, double mu = 0.0) const;
 

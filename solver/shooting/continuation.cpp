@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "solver/shooting/shooting_solver.h"
+
 namespace flexure {
 
 const char* to_string(PathStatus status) {
@@ -132,7 +134,14 @@ LoadPath continue_load_path(const ShootingProblem& problem,
     return u;
   };
 
+  // Under a large load the linear-theory tangent is a poor predictor beyond a load factor of about
+  // 1/sqrt(F) (the boundary layer of the elastica has width 1/sqrt(F)); a first step of that size
+  // lets the step control grow from there instead of burning the budget on failed correctors.
   double ds = options.initial_step;
+  const double contraction = unique_equilibrium_bound(problem.chain());
+  if (std::isfinite(contraction) && contraction > 1.0) {
+    ds = std::min(ds, 1.5 / std::sqrt(contraction));
+  }
   int attempts = 0;
   double arclength = 0.0;    // scaled arclength of the current point
   double quiet_until = 0.0;  // no samples recorded before this arclength (bifurcations)

@@ -312,10 +312,16 @@ bool ElasticaIntegrator::integrate(
           return false;
         }
         realtype t = s_a;
+        // CVODES refuses an output time within rounding of the current one (CV_TOO_CLOSE, e.g. a
+        // shape point that coincides with a multiple-shooting cut); the state there is the
+        // current state to that rounding.
+        auto beyond = [](double s_out, double s_now) {
+          return s_out - s_now > 1e-13 * std::max(1.0, std::fabs(s_now));
+        };
         // Shape points strictly inside the sub-piece: CVODES interpolates at the method's order.
         while (want_shape && next_shape < shape_s->size() && (*shape_s)[next_shape] < s_b) {
           const double s_out = (*shape_s)[next_shape];
-          if (s_out > t) {
+          if (beyond(s_out, t)) {
             flag = CVode(d.cvode, s_out, d.y, &t, CV_NORMAL);
             if (flag < 0) {
               error = flag_message("CVode", flag) + fmt::format(" at s = {}", t);
@@ -326,7 +332,7 @@ bool ElasticaIntegrator::integrate(
           shape->push_back(ShapePoint{s_out, yo[kX], yo[kY], yo[kTheta]});
           ++next_shape;
         }
-        if (t < s_b) {
+        if (beyond(s_b, t)) {
           flag = CVode(d.cvode, s_b, d.y, &t, CV_NORMAL);
           if (flag < 0) {
             error = flag_message("CVode", flag) + fmt::format(" at s = {}", t);

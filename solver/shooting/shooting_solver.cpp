@@ -110,6 +110,7 @@ ShootingResult ShootingSolver::finish(const ShootingProblem& problem,
                                       ShootingResult result,
                                       const TipState* known_tip) const {
   result.load_factor = lambda;
+  result.integrator_steps = integrator.steps_taken();
   result.unknown_names = problem.unknown_names();
   result.unknowns.assign(z.data(), z.data() + z.size());
   result.shooting_intervals = problem.interval_count();

@@ -39,6 +39,7 @@ struct ShootingResult {
   int limit_points = 0;        // folds of the load factor passed on the path (snap-through)
   double first_limit_load_factor = 0.0;  // load factor at the first of them
   int shooting_intervals = 1;            // 1 = single shooting; more = multiple shooting cuts + 1
+  long integrator_steps = 0;             // integrator steps taken in all integrations of this solve
   double residual_norm = 0.0;  // max |g_i| of the far-end conditions at the returned point
   double load_factor = 0.0;    // load factor reached (1 when converged)
 
