@@ -192,6 +192,7 @@ ChainCheck check_chain(const SegmentChain& chain,
     // Elements shared in proportion to length, as the chain algorithm does over a whole chain.
     o.elements = std::max(
         1, static_cast<int>(std::lround(options.elements * parts[k].length / flexible_length)));
+    o.refine_elements = false;  // a convergence study in N: each N is measured as it is
     const ChainResult r = solve_chain(part, o);
     ++c.pieces;
     if (!r.converged) {

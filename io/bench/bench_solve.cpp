@@ -136,6 +136,9 @@ PointSolution solve_point(const BenchMethod& method,
         options.elements = method.elements;
         options.increments = method.increments;
         options.record_load_path = false;
+        // The study measures this N: a load it cannot represent is a failure of that N, not a
+        // reason to solve with another.
+        options.refine_elements = false;
         const ChainResult r = solve_chain(make_chain(problem, load), options);
         out.status = r.converged ? kStatusConverged : kStatusNotConverged;
         out.tip = r.tip_pose;

@@ -9,6 +9,7 @@
 #include "solver/chain/chain_discretisation.h"
 #include "solver/chain/chain_fixed_point.h"
 #include "solver/chain/chain_pass.h"
+#include "solver/chain_model/equilibrium_stability.h"
 #include "solver/common/errors.h"
 
 namespace flexure {
@@ -306,13 +307,99 @@ void fill_state(const Problem& p,
   }
 }
 
+// Whether the discretisation represents the converged shape (docs/theory-chain.md,
+// "Self-checks"): no flexible element may turn by more than max_element_rotation beyond its
+// stress-free curvature, and no element's chord may exceed its arc length by more than
+// max_element_rotation^2 / 8 of it (an inextensible beam; a single element under alpha2 = 5 put
+// the tip 1.8 lengths from the clamp). Returns the reason when not, empty otherwise.
+std::string representation_problem(const SegmentChain& chain,
+                                   const ChainResult& r,
+                                   double max_element_rotation) {
+  std::vector<double> ends;
+  double s = 0.0;
+  for (const Segment& segment : chain.segments) {
+    s += std::visit([](const auto& seg) { return seg.length; }, segment);
+    ends.push_back(s);
+  }
+  double worst_turn = 0.0, worst_stretch = 0.0;
+  for (std::size_t i = 0; i + 1 < r.nodes.size(); ++i) {
+    const ShapePoint& a = r.nodes[i];
+    const ShapePoint& b = r.nodes[i + 1];
+    const double h = b.s - a.s;
+    if (!(h > 0.0)) continue;
+    const std::size_t k = static_cast<std::size_t>(std::min<std::ptrdiff_t>(
+        std::upper_bound(ends.begin(), ends.end(), 0.5 * (a.s + b.s)) - ends.begin(),
+        static_cast<std::ptrdiff_t>(ends.size()) - 1));
+    const auto* flexible = std::get_if<FlexibleSegment>(&chain.segments[k]);
+    if (flexible == nullptr) continue;
+    worst_turn = std::max(worst_turn, std::fabs(b.theta - a.theta - flexible->kappa0 * h));
+    worst_stretch = std::max(worst_stretch, std::hypot(b.x - a.x, b.y - a.y) / h - 1.0);
+  }
+  // Howell's variant does not keep element lengths (no foreshortening): its chords exceed the arc
+  // length by O(rotation^2); only a stretch beyond what max_element_rotation allows is a failure.
+  if (worst_stretch > 0.125 * max_element_rotation * max_element_rotation) {
+    return fmt::format(
+        "an element's chord exceeds its arc length by {:.3g} of it: the elements are too long "
+        "for this load",
+        worst_stretch);
+  }
+  if (worst_turn > max_element_rotation) {
+    return fmt::format("an element turns by {:.3g} rad > max_element_rotation {:.3g}",
+                       worst_turn,
+                       max_element_rotation);
+  }
+  return {};
+}
+
 }  // namespace
 
 ChainResult ChainAlgorithmSolver::solve(const SegmentChain& chain) const {
   validate(options_);
   chain.validate();
-  const Problem p = make_problem(chain, options_.elements);
-  const Options& o = options_;
+  Options o = options_;
+  for (;;) {
+    ChainResult r = solve_once(chain, o);
+    if (!r.converged) return r;
+    const std::string problem = representation_problem(chain, r, o.max_element_rotation);
+    if (!problem.empty()) {
+      if (o.refine_elements && 2 * o.elements <= o.max_elements) {
+        o.elements *= 2;  // refine and solve again
+        continue;
+      }
+      r.converged = false;
+      r.message =
+          fmt::format("the chain with {} elements cannot represent this load: {}{}",
+                      o.elements,
+                      problem,
+                      o.refine_elements ? fmt::format(" even at max_elements = {}", o.max_elements)
+                                        : " (refinement is off)");
+      return r;
+    }
+    if (o.elements != options_.elements) {
+      r.message += fmt::format(
+          " (refined from {} to {} elements: {} elements could not "
+          "represent this load)",
+          options_.elements,
+          o.elements,
+          options_.elements);
+    }
+    // The chain algorithm's passes follow no limit point, so its answer must be a stable state of
+    // the load path; an unstable one means its increments left the path (equilibrium_stability.h).
+    const StabilityVerdict stability = equilibrium_stability(chain, r.nodes);
+    if (stability.kind == StabilityVerdict::Kind::kUnstable) {
+      r.converged = false;
+      r.message = fmt::format(
+          "the load increments converged to an {}; the load path from zero passes a limit point "
+          "or a near-bifurcation that the chain algorithm cannot follow (the shooting method "
+          "can)",
+          stability.message);
+    }
+    return r;
+  }
+}
+
+ChainResult ChainAlgorithmSolver::solve_once(const SegmentChain& chain, const Options& o) const {
+  const Problem p = make_problem(chain, o.elements);
   const bool corrected = o.variant == ChainVariant::kCorrected;
 
   Evaluation how;

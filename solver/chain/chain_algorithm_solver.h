@@ -81,9 +81,9 @@ class ChainAlgorithmSolver {
     // Adaptive steps: a failed step is halved down to this, then the solve stops.
     double min_load_step = 1e-5;
     // Adaptive steps: a step that turns any node by more than this (rad) counts as failed, because
-    // a large jump may land on another equilibrium branch (a looped shape at alpha2 >= 300 turns
-    // the tip by about 2 pi).
-    double max_angle_step = 1.5;
+    // a large jump may land on another equilibrium branch (near buckling, 1.5 rad let the passes
+    // settle on the mirror image: n = 13.48, alpha2 = 2.42 gave theta0 = -3.19 for 3.04).
+    double max_angle_step = 0.25;
     double shooting_tolerance = 1e-10;  // |tip coordinate - prescribed| (scaled as residual)
     int max_newton_iterations = 30;     // per increment
     // Converge the passes at a fixed load with Anderson acceleration and the implicit own
@@ -93,6 +93,13 @@ class ChainAlgorithmSolver {
     bool accelerate = true;
     int anderson_depth = 5;        // history length of the Anderson acceleration
     bool record_load_path = true;  // fill ChainResult::load_path
+    // Self-checks of the converged shape (docs/theory-chain.md, "Self-checks"): no flexible
+    // element may turn by more than this (rad) beyond its stress-free curvature, and no chord may
+    // exceed its element's length. A failed check doubles the elements (up to max_elements) when
+    // refine_elements is set, and is reported as not converged otherwise.
+    double max_element_rotation = 0.2;
+    bool refine_elements = true;
+    int max_elements = 6400;
   };
 
   ChainAlgorithmSolver() = default;
@@ -106,6 +113,7 @@ class ChainAlgorithmSolver {
   const Options& options() const { return options_; }
 
  private:
+  ChainResult solve_once(const SegmentChain& chain, const Options& options) const;
   Options options_;
 };
 
