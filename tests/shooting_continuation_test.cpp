@@ -13,7 +13,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "solver/chain/chain_algorithm_solver.h"
 #include "solver/chain_model/segment_chain.h"
+#include "solver/common/errors.h"
 #include "solver/shooting/shooting_solver.h"
 
 namespace flexure {
@@ -99,15 +101,39 @@ TEST(ShootingContinuation, PinnedStraightBeamPathRunsInTwoStages) {
   EXPECT_NEAR(r.reaction.Fy, path.points.back().reaction.Fy, kPathTolerance);
 }
 
-TEST(ShootingContinuation, UnreachableTargetReportsGeometricLoadFactor) {
+TEST(ShootingContinuation, UnreachableTargetIsBadInputWithTheGeometricLoadFactor) {
   SegmentChain chain;
   chain.segments.push_back(FlexibleSegment{1.0, 1.0, {}, 0.0});
   chain.end = EndCondition::kSlider;
   chain.prescribed.y = 1.25;  // farther than the length: reachable up to y = 1, lambda = 0.8
-  const ShootingResult r = ShootingSolver().solve(chain);
-  EXPECT_FALSE(r.converged);
-  EXPECT_NEAR(r.load_factor, 0.8, 1e-12);
-  EXPECT_NE(r.message.find("reachable"), std::string::npos) << r.message;
+  EXPECT_NEAR(reachable_load_factor(chain), 0.8, 1e-12);
+  try {
+    (void)ShootingSolver().solve(chain);
+    ADD_FAILURE() << "an unreachable target must be refused before solving";
+  } catch (const InvalidInput& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("cannot reach"), std::string::npos) << message;
+    EXPECT_NE(message.find("0.8"), std::string::npos) << message;
+  }
+}
+
+TEST(ShootingContinuation, TargetOnTheReachCircleOffTheAxisIsBadInput) {
+  // (0.6, 0.8) is exactly one length from the clamp but 53 deg off its tangent: only the straight
+  // beam reaches that distance, along +x, so the point is unreachable (it ran 730 iterations).
+  SegmentChain chain = uniform_cantilever(EndLoad{});
+  chain.end = EndCondition::kPinned;
+  chain.prescribed.x = 0.6;
+  chain.prescribed.y = 0.8;
+  EXPECT_THROW((void)ShootingSolver().solve(chain), InvalidInput);
+  EXPECT_THROW((void)ChainAlgorithmSolver().solve(chain), InvalidInput);
+  // The straight beam's own tip, on the same circle, is reachable (no load at all).
+  chain.prescribed.x = 1.0;
+  chain.prescribed.y = 0.0;
+  EXPECT_DOUBLE_EQ(reachable_load_factor(chain), 1.0);
+  // Just inside the circle is reachable.
+  chain.prescribed.x = 0.6 * (1.0 - 1e-6);
+  chain.prescribed.y = 0.8 * (1.0 - 1e-6);
+  EXPECT_DOUBLE_EQ(reachable_load_factor(chain), 1.0);
 }
 
 TEST(ShootingContinuation, AsymptoticTargetStopsAndReportsProgress) {

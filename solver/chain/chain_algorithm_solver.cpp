@@ -10,6 +10,7 @@
 #include "solver/chain/chain_fixed_point.h"
 #include "solver/chain/chain_pass.h"
 #include "solver/chain_model/equilibrium_stability.h"
+#include "solver/chain_model/tip_reach.h"
 #include "solver/common/errors.h"
 
 namespace flexure {
@@ -356,6 +357,7 @@ std::string representation_problem(const SegmentChain& chain,
 ChainResult ChainAlgorithmSolver::solve(const SegmentChain& chain) const {
   validate(options_);
   chain.validate();
+  require_reachable_tip(chain);
   Options o = options_;
   for (;;) {
     ChainResult r = solve_once(chain, o);
@@ -376,12 +378,9 @@ ChainResult ChainAlgorithmSolver::solve(const SegmentChain& chain) const {
       return r;
     }
     if (o.elements != options_.elements) {
-      r.message += fmt::format(
-          " (refined from {} to {} elements: {} elements could not "
-          "represent this load)",
-          options_.elements,
-          o.elements,
-          options_.elements);
+      r.message += fmt::format(" (refined from {} to {} elements, which represent this load)",
+                               options_.elements,
+                               o.elements);
     }
     // The chain algorithm's passes follow no limit point, so its answer must be a stable state of
     // the load path; an unstable one means its increments left the path (equilibrium_stability.h).

@@ -126,7 +126,8 @@ struct SegmentChain {
 
   // Throws InvalidInput naming the segment/node index and the field: empty chain, non-finite
   // value, length <= 0 (flexible) or < 0 (rigid), EI <= 0, a bad EI_profile, a node index outside
-  // [1, n-1], a nonzero given load conjugate to a prescribed coordinate.
+  // [1, n-1], a nonzero given load conjugate to a prescribed coordinate. (The solvers' entry
+  // points also refuse a prescribed tip the chain cannot reach: tip_reach.h.)
   void validate() const;
 
   // Stress-free pose at every node 0..n (kappa0 arcs and rigid links, no loads).

@@ -80,29 +80,6 @@ double unique_equilibrium_bound(const SegmentChain& chain) {
   return max_force * integral;
 }
 
-double reachable_load_factor(const SegmentChain& chain) {
-  const PrescribedMask mask = prescribed_mask(chain.end);
-  if (!mask.x && !mask.y) return 1.0;
-  const double L = chain.total_length();
-  const ChainPose p0 = chain.unloaded_tip();
-  const ChainPose p1 = chain.prescribed_tip();
-  // Largest lambda with the prescribed tip coordinates inside the disk of radius L (the slider's
-  // free x is taken as 0, the most favourable value).
-  const double ax = mask.x ? p0.x : 0.0, bx = mask.x ? p1.x - p0.x : 0.0;
-  const double ay = mask.y ? p0.y : 0.0, by = mask.y ? p1.y - p0.y : 0.0;
-  auto outside = [&](double lam) {
-    return std::hypot(ax + lam * bx, ay + lam * by) > L * (1.0 + 1e-12);
-  };
-  if (!outside(1.0)) return 1.0;
-  // The start is inside (it is a configuration of the chain); bisect the crossing.
-  double lo = 0.0, hi = 1.0;
-  for (int i = 0; i < 60; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (outside(mid) ? hi : lo) = mid;
-  }
-  return lo;
-}
-
 ShootingResult ShootingSolver::finish(const ShootingProblem& problem,
                                       ElasticaIntegrator& integrator,
                                       const Eigen::VectorXd& z,
@@ -147,21 +124,8 @@ ShootingResult ShootingSolver::finish(const ShootingProblem& problem,
 ShootingResult ShootingSolver::solve(const SegmentChain& chain) const {
   check_options(options_);
   const ShootingProblem problem(chain, options_.multiple_shooting);
-  const double reachable = reachable_load_factor(chain);
-  if (reachable < 1.0) {
-    // An inextensible chain cannot reach the target: report without spending the step budget.
-    ShootingResult result;
-    result.method = "reachability check";
-    result.load_factor = reachable;
-    result.tip = chain.unloaded_tip();
-    result.unknown_names = problem.unknown_names();
-    result.message = fmt::format(
-        "not converged: the prescribed tip position lies farther from the root than the chain "
-        "length {:.6g}; the prescribed path leaves the reachable disk at load factor {:.9g}",
-        chain.total_length(),
-        reachable);
-    return result;
-  }
+  // An unreachable target is bad input, refused before any work (tip_reach.h).
+  require_reachable_tip(chain);
   ElasticaIntegrator integrator(options_.integrator_options());
   ShootingResult result;
 
@@ -342,16 +306,7 @@ ShootingResult ShootingSolver::solve_from(const SegmentChain& chain,
 LoadPath ShootingSolver::load_path(const SegmentChain& chain) const {
   check_options(options_);
   const ShootingProblem problem(chain, options_.multiple_shooting);
-  const double reachable = reachable_load_factor(chain);
-  if (reachable < 1.0) {
-    LoadPath path;
-    path.message = fmt::format(
-        "the prescribed tip position lies farther from the root than the chain length {:.6g}; the "
-        "prescribed path leaves the reachable disk at load factor {:.9g}",
-        chain.total_length(),
-        reachable);
-    return path;
-  }
+  require_reachable_tip(chain);
   ElasticaIntegrator integrator(options_.integrator_options());
   ContinuationOptions copt = options_.continuation;
   copt.record_path = true;

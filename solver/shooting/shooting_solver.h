@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "solver/chain_model/segment_chain.h"
+#include "solver/chain_model/tip_reach.h"
 #include "solver/common/end_load.h"
 #include "solver/shooting/continuation.h"
 #include "solver/shooting/elastica_integrator.h"
@@ -66,11 +67,6 @@ enum class ShootingStrategy { kAuto, kContinuation, kDirect };
 // 4 L^2 / pi^2); general chain: max|N| * integral over the flexible arc of (L_total - s)/EI(s) ds
 // (a short flexure at the root of a long rigid link counts with its lever L_total, not L/2).
 double unique_equilibrium_bound(const SegmentChain& chain);
-
-// Largest load factor at which the prescribed tip position (pinned, slider, fixed) is still within
-// the chain's total length of the root; 1 when the full target is reachable. Beyond it no
-// inextensible equilibrium exists (the reactions grow without bound as it is approached).
-double reachable_load_factor(const SegmentChain& chain);
 
 class ShootingSolver {
  public:
