@@ -56,6 +56,40 @@ bool verified_root(Miss& miss,
   return true;
 }
 
+// Between three grid points whose misses share a sign and whose middle one is the smallest, the
+// quantity may touch or cross the target near an extremum that the grid steps over (b/l of a
+// compressed beam peaks and falls as the tip curls over). Golden-section search for the point
+// closest to the target; a sign change there gives a bracket [a, x] with the extremum's side.
+bool bracket_at_extremum(Miss& miss, double a, double fa, double b, double& x, double& fx) {
+  const double sign = fa > 0.0 ? 1.0 : -1.0;
+  constexpr double kGolden = 0.6180339887498949;
+  double lo = a, hi = b;
+  double x1 = hi - kGolden * (hi - lo), x2 = lo + kGolden * (hi - lo);
+  double f1 = miss(x1), f2 = miss(x2);
+  for (int it = 0; it < 60 && std::isfinite(f1) && std::isfinite(f2); ++it) {
+    if (sign * f1 <= 0.0 || sign * f2 <= 0.0) {
+      x = sign * f1 <= 0.0 ? x1 : x2;
+      fx = sign * f1 <= 0.0 ? f1 : f2;
+      return true;
+    }
+    if (std::fabs(hi - lo) <= 1e-13 * std::max(std::fabs(lo), std::fabs(hi))) break;
+    if (sign * f1 < sign * f2) {
+      hi = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = hi - kGolden * (hi - lo);
+      f1 = miss(x1);
+    } else {
+      lo = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = lo + kGolden * (hi - lo);
+      f2 = miss(x2);
+    }
+  }
+  return false;
+}
+
 void mark_found(LoadSearchResult& out, double alpha2, double target, double miss) {
   out.status = LoadSearchStatus::kFound;
   out.alpha2 = alpha2;
@@ -83,6 +117,8 @@ LoadSearchResult find_load_for_target(
     double last_x = 0.0;
     double last_f = 0.0;
     bool alive = true;
+    double before_x = std::numeric_limits<double>::quiet_NaN();  // the grid point before last
+    double before_f = std::numeric_limits<double>::quiet_NaN();
   };
   Side sides[2] = {{1.0, 0.0, at_zero - target}, {-1.0, 0.0, at_zero - target}};
   bool missed_bracket = false;
@@ -100,6 +136,27 @@ LoadSearchResult find_load_for_target(
         continue;
       }
       out.reached_alpha2_max = std::max(out.reached_alpha2_max, mag);
+      // A local approach to the target between grid points: look for a hidden crossing.
+      double hidden_x = 0.0, hidden_f = 0.0;
+      if (std::isfinite(side.before_f) && (f > 0.0) == (side.last_f > 0.0) &&
+          (side.last_f > 0.0) == (side.before_f > 0.0) &&
+          std::fabs(side.last_f) < std::fabs(side.before_f) &&
+          std::fabs(side.last_f) < std::fabs(f) &&
+          bracket_at_extremum(miss, side.before_x, side.before_f, x, hidden_x, hidden_f)) {
+        double root = hidden_x, miss_at_root = hidden_f;
+        if ((hidden_f == 0.0 || verified_root(miss,
+                                              std::min(side.before_x, hidden_x),
+                                              std::max(side.before_x, hidden_x),
+                                              side.before_x < hidden_x ? side.before_f : hidden_f,
+                                              side.before_x < hidden_x ? hidden_f : side.before_f,
+                                              options,
+                                              root,
+                                              miss_at_root)) &&
+            !(std::fabs(root) >= std::fabs(best))) {
+          best = root;
+          best_miss = miss_at_root;
+        }
+      }
       if (mag * options.growth > options.max_alpha2 * (1.0 + 1e-12)) out.scanned_to_max = true;
       if ((f > 0.0) != (side.last_f > 0.0) || f == 0.0) {
         double root = x, miss_at_root = 0.0;
@@ -113,6 +170,8 @@ LoadSearchResult find_load_for_target(
             out.jump_value_to = f + target;
           }
           missed_bracket = true;
+          side.before_x = side.last_x;
+          side.before_f = side.last_f;
           side.last_x = x;
           side.last_f = f;
           continue;
@@ -122,6 +181,8 @@ LoadSearchResult find_load_for_target(
           best_miss = miss_at_root;
         }
       }
+      side.before_x = side.last_x;
+      side.before_f = side.last_f;
       side.last_x = x;
       side.last_f = f;
     }

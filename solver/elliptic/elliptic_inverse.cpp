@@ -181,44 +181,9 @@ EllipticResult EllipticSolver::solve_for_deflection(double load_ratio_n,
         b_over_l));
   }
   auto deflection = [](const EllipticResult& r) { return r.tip.b_over_l; };
-  if (mu == 0.0) {
-    if (b_over_l == 0.0) return solve(EndLoad::howell(load_ratio_n, 0.0, 0.0));
-    // b/l is explicit in theta0 on this branch; the sign of b picks the sign of alpha2. Scan theta0
-    // up to the force angle for the first crossing (the smallest load), then refine with Brent.
-    const double sign = b_over_l > 0.0 ? 1.0 : -1.0;
-    const double limit = sign > 0.0 ? force_angle(load_ratio_n) : force_angle(-load_ratio_n);
-    auto f = [&](double t) {
-      return deflection(result_from_tip_angle(load_ratio_n, sign * t)) - b_over_l;
-    };
-    constexpr int kScan = 256;
-    double a = 0.0;
-    double fa = -b_over_l;
-    double best = 0.0;
-    for (int i = 1; i < kScan; ++i) {
-      const double t = limit * i / kScan;
-      const double ft = f(t);
-      best = sign > 0.0 ? std::max(best, ft + b_over_l) : std::min(best, ft + b_over_l);
-      if ((fa > 0.0) != (ft > 0.0) || ft == 0.0) {
-        ScalarRootOptions opts;
-        opts.x_tolerance = 1e-15;
-        const ScalarRootResult root = brent_root(f, a, t, fa, ft, opts);
-        if (root.converged) {
-          EllipticResult r = result_from_tip_angle(load_ratio_n, sign * root.x);
-          r.iterations = i + root.iterations;
-          return verified(r, r.tip.b_over_l, b_over_l, "b/l");
-        }
-        break;
-      }
-      a = t;
-      fa = ft;
-    }
-    throw InvalidInput(fmt::format(
-        "tip deflection b/l = {:.6g} cannot be reached with load ratio n = {:.6g} and no end "
-        "moment: the largest |b/l| on the proportional-loading branch is about {:.6g}",
-        b_over_l,
-        load_ratio_n,
-        std::fabs(best)));
-  }
+  // b/l is not monotonic in the load (for compressive n the tip curls past the top), and under
+  // tension it creeps toward its limit over loads from about 10 to infinity: the verified search
+  // over alpha2 (both signs, smallest |alpha2| first) covers both, with or without a moment.
   return search_alpha2(*this, load_ratio_n, mu, deflection, b_over_l, "tip deflection b/l");
 }
 
