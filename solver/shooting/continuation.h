@@ -24,7 +24,8 @@ struct ContinuationOptions {
   int easy_iterations = 3;    // corrections in at most this many Newton iterations are easy
   int max_steps = 500;        // accepted + rejected steps before giving up (never a hang);
                               // paths in the test grids need at most about 70
-  long max_integrator_steps = 500000;   // CVODES steps over the whole path (time budget)
+  long max_integrator_steps = 500000;   // CVODES steps over the whole path (time budget), times
+                                        // max(1, shooting intervals / 16)
   double max_predictor_distance = 0.5;  // reject a correction farther than this * step from the
                                         // predictor (guards against jumping to another branch)
   double max_turn = 0.6;  // reject a step whose tangent turned by more than this (rad); the
