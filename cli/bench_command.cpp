@@ -10,6 +10,7 @@
 #include "cli/commands.h"
 #include "io/bench/bench_run.h"
 #include "io/hdf5_file.h"
+#include "io/output_path.h"
 #include "solver/common/errors.h"
 
 namespace flexure::cli {
@@ -22,7 +23,10 @@ struct BenchArgs {
 
 void run_bench(BenchArgs& args) {
   bench::BenchOptions options = args.options;
-  // Fail fast (exit 2) on an unwritable path, before minutes of solving.
+  // Fail fast (exit 2) on an unwritable path, before minutes of solving; the checkpoint is
+  // written next to it after every finished group.
+  io::check_output_path(options.out);
+  io::check_output_path(bench::checkpoint_path(options.out), "--out (its checkpoint)");
   try {
     io::AtomicHdf5File probe(options.out);
   } catch (const io::Hdf5Error& e) {

@@ -23,6 +23,7 @@
 #include "cli/commands.h"
 #include "flexure/version.h"
 #include "io/hdf5_file.h"
+#include "io/output_path.h"
 #include "mechanisms/dynamics/cfsm_designs.h"
 #include "mechanisms/dynamics/forward_dynamics.h"
 #include "mechanisms/dynamics/inverse_dynamics.h"
@@ -82,6 +83,7 @@ void run_dynamics(const DynamicsArgs& args) {
   if (args.mechanism.empty()) throw InvalidInput("--mechanism is required (see --list)");
   if (args.omega.empty()) throw InvalidInput("--omega START:STOP:COUNT is required");
   if (args.out.empty()) throw InvalidInput("--out FILE.h5 is required");
+  io::check_output_path(args.out);
   const CfsmDesign& d = dynamics::find_cfsm_design(args.mechanism);
   const Range range = parse_range(args.omega, "--omega (rad/s)", 1'000'000);
   require_in_range(range.start, "--omega START (rad/s)", 0.0, 1e6);

@@ -14,6 +14,7 @@
 #include "cli/commands.h"
 #include "cli/slow_progress.h"
 #include "io/hdf5_file.h"
+#include "io/output_path.h"
 #include "mechanisms/howell_designs.h"
 #include "mechanisms/inversion.h"
 #include "mechanisms/mechanism.h"
@@ -397,6 +398,7 @@ void register_mechanism_command(CLI::App& app) {
     if (args->no_exact && args->method == "exact") {
       throw InvalidInput("--prbm-only (= --method prbm) contradicts --method exact; give one");
     }
+    if (!args->out.empty()) io::check_output_path(args->out);
     MechanismDesign d = resolve(args->what);
     if (!args->spring_rule.empty()) apply_spring_rule(d, parse_spring_rule(args->spring_rule));
     std::optional<io::AtomicHdf5File> file;

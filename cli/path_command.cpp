@@ -13,6 +13,7 @@
 #include "flexure/version.h"
 #include "io/chain_toml.h"
 #include "io/hdf5_file.h"
+#include "io/output_path.h"
 #include "solver/chain/chain_algorithm_solver.h"
 #include "solver/common/errors.h"
 #include "solver/shooting/shooting_solver.h"
@@ -122,7 +123,8 @@ void run_path(const PathArgs& args) {
   require_in_range(args.elements, "--elements (chain algorithm elements N)", 1, 1'000'000);
   require_in_range(args.increments, "--increments (load increments)", 1, 1'000'000);
   const SegmentChain chain = problem.to_chain(args.alpha2);
-  // Open the output first: an unwritable path fails before any solving (exit 2).
+  // Check and open the output first: an unwritable path fails before any solving (exit 2).
+  io::check_output_path(args.out);
   std::unique_ptr<io::AtomicHdf5File> output;
   try {
     output = std::make_unique<io::AtomicHdf5File>(args.out);

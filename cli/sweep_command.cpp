@@ -11,6 +11,7 @@
 #include "cli/commands.h"
 #include "io/beam_sweep.h"
 #include "io/hdf5_file.h"
+#include "io/output_path.h"
 #include "solver/common/errors.h"
 
 namespace flexure::cli {
@@ -55,7 +56,8 @@ void run_sweep_beam(const SweepBeamArgs& args) {
   const double tolerance = beam_method_tolerance(args.method);
   const std::string method = resolve_beam_method(args.method);
 
-  // Open the output first: an unwritable path is reported before minutes of solving.
+  // Check and open the output first: an unwritable path is reported before minutes of solving.
+  io::check_output_path(args.out);
   std::unique_ptr<io::AtomicHdf5File> file;
   try {
     file = std::make_unique<io::AtomicHdf5File>(args.out);

@@ -12,6 +12,7 @@
 #include "cli/validation_problems.h"
 #include "io/beam_sweep.h"
 #include "io/hdf5_file.h"
+#include "io/output_path.h"
 #include "solver/common/errors.h"
 
 namespace flexure::cli {
@@ -199,6 +200,7 @@ Json to_json(const std::vector<Check>& checks, const std::string& out, bool all_
 }
 
 void run_validate(const ValidateArgs& args) {
+  io::check_output_path(args.out);
   std::unique_ptr<io::AtomicHdf5File> file;
   try {
     file = std::make_unique<io::AtomicHdf5File>(args.out);

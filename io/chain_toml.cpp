@@ -3,9 +3,10 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
-#include <fstream>
+#include <cmath>
+#include <cstdint>
+#include <optional>
 #include <set>
-#include <sstream>
 
 #include "io/toml_support.h"
 #include "solver/common/errors.h"
@@ -20,7 +21,7 @@ std::optional<double> number(const toml::table& table,
                              const std::string& source) {
   const toml::node* node = table.get(key);
   if (node == nullptr) return std::nullopt;
-  if (auto v = node->value<double>()) {
+  if (const std::optional<double> v = toml_number(*node)) {
     if (!std::isfinite(*v)) {
       toml_fail(source, line_of(*node), fmt::format("{}.{} must be a finite number", where, key));
     }
@@ -67,7 +68,7 @@ Segment read_segment(const toml::table& t, int index, const std::string& source)
       if (a == nullptr)
         toml_fail(source, line_of(*profile), where + ".EI_profile must be an array");
       for (const toml::node& v : *a) {
-        const std::optional<double> x = v.value<double>();
+        const std::optional<double> x = toml_number(v);
         if (!x) toml_fail(source, line_of(v), where + ".EI_profile must contain numbers");
         s.EI_profile.push_back(*x);
       }
@@ -86,9 +87,44 @@ Segment read_segment(const toml::table& t, int index, const std::string& source)
             fmt::format("{}: type '{}' is unknown (allowed: flexible, rigid)", where, type));
 }
 
+// node_load.node: an intermediate joint, 1 .. `joints` (= segments - 1), written as an integer or
+// an integral float (2.0). Range-checked while still a double or an int64: casting 1e300 to int is
+// undefined behaviour (it came out as -2147483648 in the message).
+int joint_index(const toml::table& t,
+                const std::string& where,
+                const std::string& source,
+                int joints) {
+  const double value = required_number(t, "node", where, source, line_of(t));
+  const toml::node& node = *t.get("node");
+  // The value as written: an int64 exactly, a float in its shortest round-trip form.
+  const std::string given =
+      node.is_integer() ? fmt::format("{}", *node.value<std::int64_t>()) : fmt::format("{}", value);
+  if (value != std::floor(value)) {
+    toml_fail(source,
+              line_of(node),
+              fmt::format("{}.node must be an integer joint index (got {})", where, given));
+  }
+  if (!(value >= 1.0 && value <= joints)) {
+    toml_fail(source,
+              line_of(node),
+              joints < 1 ? fmt::format("{}.node: a chain of one segment has no intermediate joint "
+                                       "(got {}); put tip loads in [tip_load]",
+                                       where,
+                                       given)
+                         : fmt::format("{}.node must be an intermediate joint in [1, {}] (joint k "
+                                       "is the far end of segment k; got {}); put tip loads in "
+                                       "[tip_load]",
+                                       where,
+                                       joints,
+                                       given));
+  }
+  return static_cast<int>(value);
+}
+
 }  // namespace
 
 SegmentChain parse_chain_toml(const std::string& text, const std::string& source) {
+  check_toml_limits(text, source);
   toml::table root;
   try {
     root = toml::parse(text, source);
@@ -143,11 +179,7 @@ SegmentChain parse_chain_toml(const std::string& text, const std::string& source
       const toml::table& t = as_table(n, where, source);
       check_toml_keys(t, {"node", "Fx", "Fy", "M"}, where, source);
       NodeLoad load;
-      const double node_index = required_number(t, "node", where, source, line_of(t));
-      if (node_index != std::floor(node_index)) {
-        toml_fail(source, line_of(t), where + ".node must be an integer joint index");
-      }
-      load.node = static_cast<int>(node_index);
+      load.node = joint_index(t, where, source, chain.segment_count() - 1);
       load.Fx = number(t, "Fx", where, source).value_or(0.0);
       load.Fy = number(t, "Fy", where, source).value_or(0.0);
       load.M = number(t, "M", where, source).value_or(0.0);
@@ -163,11 +195,7 @@ SegmentChain parse_chain_toml(const std::string& text, const std::string& source
 }
 
 SegmentChain read_chain_toml(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InvalidInput(fmt::format("--chain: cannot open '{}' for reading", path));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return parse_chain_toml(buffer.str(), path);
+  return parse_chain_toml(read_toml_file(path, "--chain file"), path);
 }
 
 }  // namespace flexure::io

@@ -1,7 +1,6 @@
 #include "io/hdf5_file.h"
 
 #include <fmt/format.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -12,6 +11,7 @@
 #include <mutex>
 #include <utility>
 
+#include "io/output_path.h"
 #include "io/temp_file_cleanup.h"
 
 namespace flexure::io {
@@ -52,25 +52,6 @@ hid_t make_string_type(const std::string& where) {
     throw Hdf5Error(fmt::format("HDF5: setting up a UTF-8 string type failed for {}", where));
   }
   return type;
-}
-
-// Explains why a file cannot be created at `path` in words a user can act on, or "" if the
-// directory looks writable (HDF5's own messages do not say why).
-std::string why_not_writable(const std::filesystem::path& path) {
-  const std::filesystem::path dir = path.parent_path().empty() ? "." : path.parent_path();
-  struct stat info {};
-  if (::stat(dir.c_str(), &info) != 0) {
-    return fmt::format("directory '{}' does not exist ({})", dir.string(), std::strerror(errno));
-  }
-  if (!S_ISDIR(info.st_mode)) return fmt::format("'{}' is not a directory", dir.string());
-  if (::access(dir.c_str(), W_OK | X_OK) != 0) {
-    return fmt::format("directory '{}' is not writable ({})", dir.string(), std::strerror(errno));
-  }
-  if (path.filename().empty()) return "the path names a directory, not a file";
-  if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode)) {
-    return "the path is an existing directory";
-  }
-  return {};
 }
 
 }  // namespace
@@ -213,21 +194,20 @@ AtomicHdf5File::AtomicHdf5File(std::string path)
     : path_(std::move(path)), root_(H5I_INVALID_HID, path_, "/") {
   disable_hdf5_error_printing();
   if (path_.empty()) throw Hdf5Error("cannot write an HDF5 file to an empty path");
-  const std::string problem = why_not_writable(path_);
+  const std::string problem = output_path_problem(path_);
   if (!problem.empty()) {
     throw Hdf5Error(fmt::format("cannot write HDF5 file '{}': {}", path_, problem));
   }
 
   // Same directory as the target so that rename() is atomic (same file system). The name is
-  // unique per process and call; H5F_ACC_EXCL refuses to clobber anything.
+  // unique per process and call; H5F_ACC_EXCL refuses to clobber anything. It is cut to fit the
+  // file-name limit, so that any target name the file system allows can be written.
   static std::atomic<unsigned> counter{0};
   const std::filesystem::path target(path_);
-  const std::filesystem::path temp =
-      target.parent_path() / fmt::format(".{}.{}-{}.tmp",
-                                         target.filename().string(),
-                                         static_cast<long>(::getpid()),
-                                         counter.fetch_add(1));
-  temp_path_ = temp.string();
+  const std::string directory =
+      target.parent_path().empty() ? std::string(".") : target.parent_path().string();
+  temp_path_ = temporary_path_for(
+      path_, static_cast<long>(::getpid()), counter.fetch_add(1), file_name_limit(directory));
 
   ScopedId access(check_id(H5Pcreate(H5P_FILE_ACCESS), path_, "creating file-access properties"),
                   H5Pclose);
@@ -236,12 +216,19 @@ AtomicHdf5File::AtomicHdf5File(std::string path)
   check_status(H5Pset_fclose_degree(access.get(), H5F_CLOSE_STRONG), path_, "setting close degree");
   // Registered before it exists: a signal in between finds nothing to unlink, which is harmless.
   cleanup_slot_ = register_temp_file(temp_path_);
+  errno = 0;
   file_ = H5Fcreate(temp_path_.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, access.get());
   if (file_ < 0) {
+    // HDF5 does not say why; the errno of the failed open() is usually still there.
+    const std::string reason = errno != 0 ? std::strerror(errno) : "HDF5 gave no reason";
     unregister_temp_file(cleanup_slot_);
     cleanup_slot_ = -1;
     throw Hdf5Error(
-        fmt::format("cannot write HDF5 file '{}': creating '{}' failed", path_, temp_path_));
+        fmt::format("cannot write HDF5 file '{}': creating the temporary file '{}' "
+                    "next to it failed ({})",
+                    path_,
+                    temp_path_,
+                    reason));
   }
   hid_t root = H5Gopen2(file_, "/", H5P_DEFAULT);
   if (root < 0) {

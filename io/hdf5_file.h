@@ -75,8 +75,10 @@ class Hdf5Group {
 // An HDF5 file written under a temporary name and renamed to `path` on commit().
 class AtomicHdf5File {
  public:
-  // Creates the temporary file next to `path`. Throws Hdf5Error naming `path` if its directory
-  // does not exist or is not writable, before any work is done.
+  // Creates the temporary file next to `path`. Throws Hdf5Error naming `path` and the reason if
+  // it cannot be written and renamed into place (io/output_path.h: missing or read-only
+  // directory, a name over the file-name limit, a directory or device in its place, a file of
+  // another user in a sticky directory), before any work is done.
   explicit AtomicHdf5File(std::string path);
   AtomicHdf5File(const AtomicHdf5File&) = delete;
   AtomicHdf5File& operator=(const AtomicHdf5File&) = delete;

@@ -3,10 +3,7 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
-#include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include "io/toml_support.h"
 #include "mechanisms/modified_designs.h"
@@ -33,7 +30,7 @@ double positive(const toml::table& t,
   }
   // Top-level keys are named bare ("r2"), table keys dotted ("ground.thickness").
   const std::string name = where == "the file" ? key : where + "." + key;
-  const std::optional<double> v = node->value<double>();
+  const std::optional<double> v = io::toml_number(*node);
   if (!v) toml_fail(source, line_of(*node), fmt::format("{} must be a number", name));
   if (!std::isfinite(*v) || *v <= 0.0) {
     toml_fail(source, line_of(*node), fmt::format("{} must be finite and > 0 (got {})", name, *v));
@@ -46,6 +43,7 @@ const char* kJointTables[3] = {"ground", "middle", "slider"};
 }  // namespace
 
 MechanismDesign parse_mechanism_toml(const std::string& text, const std::string& source) {
+  io::check_toml_limits(text, source);
   toml::table root;
   try {
     root = toml::parse(text, source);
@@ -241,18 +239,7 @@ MechanismDesign parse_mechanism_toml(const std::string& text, const std::string&
 }
 
 MechanismDesign load_mechanism_toml(const std::string& path) {
-  // A directory opens as an empty stream on Linux and would be reported as a file without
-  // `config`; say what is wrong instead.
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    throw InvalidInput(fmt::format("cannot read mechanism file '{}': it is a directory", path));
-  }
-  std::ifstream in(path);
-  if (!in) throw InvalidInput(fmt::format("cannot read mechanism file '{}'", path));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw InvalidInput(fmt::format("cannot read mechanism file '{}'", path));
-  return parse_mechanism_toml(buffer.str(), path);
+  return parse_mechanism_toml(io::read_toml_file(path, "mechanism file"), path);
 }
 
 }  // namespace flexure::mechanism

@@ -1,7 +1,9 @@
 // What is checked against what: the segment-chain description (solver/chain_model) -- validation
-// messages name the segment index and field; the stress-free geometry of kappa0 arcs and rigid
-// links against circle geometry by hand; proportional loading (at_load_factor) against its
-// definition; end-condition names and masks against the table.
+// messages name the segment (counted from 1, as in the TOML files) and field; a zero total length
+// and a prescribed tip on a chain of rigid links are refused, a zero-length kink is not; the
+// stress-free geometry of kappa0 arcs and rigid links against circle geometry by hand; proportional
+// loading (at_load_factor) against its definition; end-condition names and masks against the
+// issue's table.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -31,20 +33,20 @@ TEST(SegmentChain, ValidationNamesSegmentAndField) {
   EXPECT_NE(validation_message(chain).find("at least one segment"), std::string::npos);
 
   chain.segments = {FlexibleSegment{1.0, 1.0, {}, 0.0}, FlexibleSegment{-0.5, 1.0, {}, 0.0}};
-  EXPECT_NE(validation_message(chain).find("segment 1 (flexible): length"), std::string::npos);
+  EXPECT_NE(validation_message(chain).find("segment 2 (flexible): length"), std::string::npos);
 
   chain.segments = {FlexibleSegment{1.0, 0.0, {}, 0.0}};
-  EXPECT_NE(validation_message(chain).find("segment 0 (flexible): EI"), std::string::npos);
+  EXPECT_NE(validation_message(chain).find("segment 1 (flexible): EI"), std::string::npos);
 
   chain.segments = {RigidSegment{1.0, 0.0},
                     FlexibleSegment{1.0, std::numeric_limits<double>::quiet_NaN(), {}, 0.0}};
-  EXPECT_NE(validation_message(chain).find("segment 1: EI"), std::string::npos);
+  EXPECT_NE(validation_message(chain).find("segment 2: EI"), std::string::npos);
 
   chain.segments = {FlexibleSegment{1.0, 1.0, {1.0, -2.0}, 0.0}};
   EXPECT_NE(validation_message(chain).find("EI_profile[1]"), std::string::npos);
 
   chain.segments = {RigidSegment{-1.0, 0.0}};
-  EXPECT_NE(validation_message(chain).find("segment 0 (rigid): length"), std::string::npos);
+  EXPECT_NE(validation_message(chain).find("segment 1 (rigid): length"), std::string::npos);
 
   chain.segments = {FlexibleSegment{}, FlexibleSegment{}};
   chain.node_loads = {NodeLoad{2, 1.0, 0.0, 0.0}};
@@ -57,6 +59,51 @@ TEST(SegmentChain, ValidationNamesSegmentAndField) {
   chain.tip_load.Fx = 2.0;
   EXPECT_NE(validation_message(chain).find("tip load Fx must be 0 for a pinned end"),
             std::string::npos);
+}
+
+TEST(SegmentChain, ZeroLengthKinksAreValidButAChainOfKinksOnlyIsNot) {
+  SegmentChain chain;
+  // Kinks only: nothing has length, a/l = x/0 would be NaN.
+  chain.segments = {RigidSegment{0.0, 0.3}};
+  EXPECT_NE(validation_message(chain).find("total length is 0"), std::string::npos)
+      << validation_message(chain);
+  chain.segments = {RigidSegment{0.0, 0.3}, RigidSegment{0.0, -0.1}};
+  EXPECT_NE(validation_message(chain).find("total length is 0"), std::string::npos);
+  // Kinks at the root, in the middle and at the tip of a flexible chain: valid with every end.
+  chain.segments = {RigidSegment{0.0, 0.3},
+                    FlexibleSegment{0.5, 1.0, {}, 0.0},
+                    RigidSegment{0.0, -0.2},
+                    FlexibleSegment{0.5, 1.0, {}, 0.0},
+                    RigidSegment{0.0, 0.1}};
+  for (EndCondition end : {EndCondition::kFree,
+                           EndCondition::kGuided,
+                           EndCondition::kPinned,
+                           EndCondition::kSlider,
+                           EndCondition::kFixed}) {
+    chain.end = end;
+    EXPECT_EQ(validation_message(chain), "") << to_string(end);
+  }
+  // A rigid body alone: free is a rigid cantilever; a prescribed tip cannot move or is
+  // statically indeterminate.
+  chain.segments = {RigidSegment{1.0, 0.0}, RigidSegment{0.0, 0.5}};
+  chain.end = EndCondition::kFree;
+  EXPECT_EQ(validation_message(chain), "");
+  for (EndCondition end : {EndCondition::kGuided,
+                           EndCondition::kPinned,
+                           EndCondition::kSlider,
+                           EndCondition::kFixed}) {
+    chain.end = end;
+    EXPECT_NE(validation_message(chain).find(std::string("a ") + to_string(end) +
+                                             " end needs a flexible segment"),
+              std::string::npos)
+        << validation_message(chain);
+  }
+  // Node loads are counted from 1 as well.
+  chain.segments = {FlexibleSegment{}, FlexibleSegment{}};
+  chain.end = EndCondition::kFree;
+  chain.node_loads = {NodeLoad{1, 1.0, 0.0, 0.0}, NodeLoad{3, 1.0, 0.0, 0.0}};
+  EXPECT_NE(validation_message(chain).find("node load 2: node must be"), std::string::npos)
+      << validation_message(chain);
 }
 
 TEST(SegmentChain, UnloadedGeometryOfArcsAndLinks) {

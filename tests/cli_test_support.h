@@ -55,8 +55,11 @@ class ScratchDir {
   std::filesystem::path path_;
 };
 
-// Runs `FLEXURE_BINARY args` (args are passed through the shell unchanged) in `cwd`.
-inline CommandResult run_flexure(const std::string& args, const std::filesystem::path& cwd = {}) {
+// Runs `FLEXURE_BINARY args` (args are passed through the shell unchanged) in `cwd`. `prefix` is
+// put before the binary, e.g. "setpriv --reuid=65534 " to run it as another user.
+inline CommandResult run_flexure(const std::string& args,
+                                 const std::filesystem::path& cwd = {},
+                                 const std::string& prefix = {}) {
   static int serial = 0;
   const auto base = std::filesystem::temp_directory_path() /
                     ("flexure-cli-" + std::to_string(::getpid()) + "-" + std::to_string(serial++));
@@ -64,7 +67,7 @@ inline CommandResult run_flexure(const std::string& args, const std::filesystem:
   const std::string err = base.string() + ".err";
   std::string command;
   if (!cwd.empty()) command = "cd '" + cwd.string() + "' && ";
-  command += std::string("'") + FLEXURE_BINARY + "' " + args + " >'" + out + "' 2>'" + err + "'";
+  command += prefix + "'" + FLEXURE_BINARY + "' " + args + " >'" + out + "' 2>'" + err + "'";
   const int status = std::system(command.c_str());
   CommandResult result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -89,12 +89,16 @@ double SegmentChain::total_length() const {
 
 void SegmentChain::validate() const {
   if (segments.empty()) throw InvalidInput("segment chain: at least one segment is required");
+  // Messages count segments and node loads from 1, root to tip, as the TOML files list them
+  // (docs/chain-toml.md); node indices are joints (node k is the far end of the k-th segment).
+  bool has_flexible = false;
   for (std::size_t i = 0; i < segments.size(); ++i) {
-    const std::string where = fmt::format("segment {}", i);
+    const std::string where = fmt::format("segment {}", i + 1);
     if (const auto* f = std::get_if<FlexibleSegment>(&segments[i])) {
       require_finite_field(f->length, where, "length");
       require_finite_field(f->EI, where, "EI");
       require_finite_field(f->kappa0, where, "kappa0");
+      has_flexible = true;
       if (f->length <= 0.0) {
         throw InvalidInput(
             fmt::format("{} (flexible): length must be > 0 (got {})", where, f->length));
@@ -118,20 +122,39 @@ void SegmentChain::validate() const {
       require_finite_field(r.length, where, "length");
       require_finite_field(r.angle_offset, where, "angle_offset");
       if (r.length < 0.0) {
-        throw InvalidInput(
-            fmt::format("{} (rigid): length must be >= 0 (got {})", where, r.length));
+        throw InvalidInput(fmt::format(
+            "{} (rigid): length must be >= 0 (got {}; 0 is a pure kink)", where, r.length));
       }
     }
+  }
+  // A rigid link of length 0 is a pure kink (an angle change at a point) and is kept: the pose
+  // of every node is still well defined. But results are per unit total length (a/l, b/l) and the
+  // solvers scale by it, so a chain of kinks only (total length 0) has no meaningful answer: it
+  // gave a/l = 0/0 = NaN (shooting) or an error of its own (chain algorithm).
+  if (!(total_length() > 0.0)) {
+    throw InvalidInput(fmt::format(
+        "segment chain: total length is {} (every segment is a rigid link of length 0, a pure "
+        "kink); a chain needs a segment of length > 0",
+        total_length()));
+  }
+  // Without a flexible segment the chain is one rigid body clamped at the root: its tip cannot
+  // move, so a prescribed tip coordinate is either unreachable or holds a reaction that statics
+  // cannot determine (the clamp and the tip share it in any proportion).
+  if (!has_flexible && end != EndCondition::kFree) {
+    throw InvalidInput(fmt::format(
+        "segment chain: a {} end needs a flexible segment; a chain of rigid links only cannot "
+        "move its tip and leaves the tip reaction undetermined (use a free end)",
+        to_string(end)));
   }
   const int n = segment_count();
   for (std::size_t i = 0; i < node_loads.size(); ++i) {
     const NodeLoad& load = node_loads[i];
-    const std::string where = fmt::format("node load {} (node {})", i, load.node);
+    const std::string where = fmt::format("node load {} (node {})", i + 1, load.node);
     if (load.node < 1 || load.node > n - 1) {
       throw InvalidInput(fmt::format(
           "node load {}: node must be an intermediate joint in [1, {}] (got {}); put tip loads in "
           "tip_load",
-          i,
+          i + 1,
           n - 1,
           load.node));
     }

@@ -124,10 +124,12 @@ struct SegmentChain {
   int segment_count() const { return static_cast<int>(segments.size()); }
   double total_length() const;
 
-  // Throws InvalidInput naming the segment/node index and the field: empty chain, non-finite
-  // value, length <= 0 (flexible) or < 0 (rigid), EI <= 0, a bad EI_profile, a node index outside
-  // [1, n-1], a nonzero given load conjugate to a prescribed coordinate. (The solvers' entry
-  // points also refuse a prescribed tip the chain cannot reach: tip_reach.h.)
+  // Throws InvalidInput naming the segment/node load (counted from 1, root to tip) and the
+  // field: empty chain, non-finite value, length <= 0 (flexible) or < 0 (rigid; 0 is a pure kink),
+  // total length 0 (kinks only), a prescribed tip on a chain without a flexible segment, EI <= 0,
+  // a bad EI_profile, a node index outside [1, n-1], a nonzero given load conjugate to a
+  // prescribed coordinate. Every solver calls it before solving; the solvers' entry points also
+  // refuse a prescribed tip the chain cannot reach (tip_reach.h).
   void validate() const;
 
   // Stress-free pose at every node 0..n (kappa0 arcs and rigid links, no loads).

@@ -1,0 +1,164 @@
+#include "io/output_path.h"
+
+#include <fmt/format.h>
+#include <pwd.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <climits>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "solver/common/errors.h"
+
+namespace flexure::io {
+namespace {
+
+// The most a temporary name adds to the target's file name: "." + "." + a pid (up to 10 digits)
+// + "-" + a serial (up to 10 digits) + ".tmp".
+constexpr std::size_t kTemporaryOverhead = 1 + 1 + 10 + 1 + 10 + 4;
+
+std::filesystem::path directory_of(const std::filesystem::path& path) {
+  return path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
+}
+
+// Whether this process may replace entries of a sticky directory it does not own: CAP_FOWNER in
+// the effective capability set (root normally has it). Read from /proc; without it, euid 0.
+bool has_cap_fowner() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("CapEff:", 0) == 0) {
+      unsigned long long mask = 0;
+      std::istringstream(line.substr(7)) >> std::hex >> mask;
+      constexpr int kCapFowner = 3;  // linux/capability.h
+      return (mask >> kCapFowner) & 1ULL;
+    }
+  }
+  return ::geteuid() == 0;
+}
+
+std::string user_name(uid_t uid) {
+  std::vector<char> buffer(16384);
+  struct passwd entry {};
+  struct passwd* found = nullptr;
+  if (::getpwuid_r(uid, &entry, buffer.data(), buffer.size(), &found) == 0 && found != nullptr) {
+    return fmt::format("'{}' (uid {})", found->pw_name, uid);
+  }
+  return fmt::format("uid {}", uid);
+}
+
+const char* kind_of(mode_t mode) {
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+}  // namespace
+
+long file_name_limit(const std::string& directory) {
+  errno = 0;
+  const long limit = ::pathconf(directory.c_str(), _PC_NAME_MAX);
+  return limit > 0 ? limit : NAME_MAX;
+}
+
+std::string temporary_path_for(const std::string& target,
+                               long pid,
+                               unsigned serial,
+                               long name_max) {
+  const std::filesystem::path path(target);
+  const std::string suffix = fmt::format(".{}-{}.tmp", pid, serial);
+  std::string name = path.filename().string();
+  const std::size_t room =
+      static_cast<std::size_t>(std::max(0L, name_max - 1 - static_cast<long>(suffix.size())));
+  if (name.size() > room) {
+    std::size_t cut = room;
+    // Do not split a multi-byte UTF-8 character: back up over continuation bytes (10xxxxxx).
+    while (cut > 0 && (static_cast<unsigned char>(name[cut]) & 0xC0) == 0x80) --cut;
+    name.resize(cut);
+  }
+  return (path.parent_path() / ("." + name + suffix)).string();
+}
+
+std::string output_path_problem(const std::string& path_text) {
+  if (path_text.empty()) return "an output file name is required";
+  const std::filesystem::path path(path_text);
+  const std::string name = path.filename().string();
+  if (name.empty() || name == "." || name == "..") {
+    return "the path names a directory, not a file";
+  }
+  const std::filesystem::path dir = directory_of(path);
+
+  const long name_max = file_name_limit(dir.string());
+  if (static_cast<long>(name.size()) > name_max) {
+    return fmt::format(
+        "the file name is {} bytes long; this file system allows at most {} bytes (NAME_MAX)",
+        name.size(),
+        name_max);
+  }
+  // The temporary's path, not only the target's, must fit PATH_MAX (the limit of any path handed
+  // to the kernel, terminating NUL included).
+  const std::size_t longest_temporary =
+      path_text.size() - name.size() +
+      std::min<std::size_t>(static_cast<std::size_t>(name_max), name.size() + kTemporaryOverhead);
+  if (longest_temporary >= PATH_MAX) {
+    return fmt::format(
+        "the path is {} bytes long; with the temporary file name it would exceed the limit of {} "
+        "bytes (PATH_MAX)",
+        path_text.size(),
+        PATH_MAX - 1);
+  }
+
+  struct stat dir_info {};
+  if (::stat(dir.c_str(), &dir_info) != 0) {
+    return fmt::format("directory '{}' does not exist ({})", dir.string(), std::strerror(errno));
+  }
+  if (!S_ISDIR(dir_info.st_mode)) return fmt::format("'{}' is not a directory", dir.string());
+  if (::access(dir.c_str(), W_OK | X_OK) != 0) {
+    return fmt::format("directory '{}' is not writable ({})", dir.string(), std::strerror(errno));
+  }
+
+  // What the target is now. rename() replaces a file, but also a FIFO or a device node (as root,
+  // --out /dev/null would replace /dev/null), and cannot replace a directory.
+  struct stat target {};
+  if (::stat(path.c_str(), &target) == 0) {
+    if (S_ISDIR(target.st_mode)) return "the path is an existing directory";
+    if (!S_ISREG(target.st_mode)) {
+      return fmt::format(
+          "the path exists and is {}; flexure only replaces regular files (it writes a new file "
+          "and renames it over the target)",
+          kind_of(target.st_mode));
+    }
+  }
+  // In a sticky directory (such as /tmp) only the owner of an entry, the owner of the directory or
+  // a process with CAP_FOWNER may replace it: rename() would fail with EPERM after all the work.
+  struct stat entry {};
+  if ((dir_info.st_mode & S_ISVTX) != 0 && ::lstat(path.c_str(), &entry) == 0) {
+    const uid_t me = ::geteuid();
+    if (entry.st_uid != me && dir_info.st_uid != me && !has_cap_fowner()) {
+      return fmt::format(
+          "the existing file belongs to user {} in the sticky directory '{}' (owned by user {}): "
+          "only its owner can replace it; choose another name or remove the file first",
+          user_name(entry.st_uid),
+          dir.string(),
+          user_name(dir_info.st_uid));
+    }
+  }
+  return {};
+}
+
+void check_output_path(const std::string& path, const std::string& option) {
+  const std::string problem = output_path_problem(path);
+  if (!problem.empty()) {
+    throw InvalidInput(
+        fmt::format("{} '{}': cannot write the file there: {}", option, path, problem));
+  }
+}
+
+}  // namespace flexure::io

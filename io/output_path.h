@@ -1,0 +1,32 @@
+#pragma once
+// Checks that an output file can be written where the user asked, before any work is done.
+//
+// flexure writes every output file whole or not at all (io/hdf5_file.h): a temporary file is
+// created next to the target and renamed over it when complete. Everything that can make the
+// creation or the rename fail is checked here, so that a command taking --out fails in milliseconds
+// (exit 2) instead of after a sweep of many minutes: the name's length, the directory, what the
+// target is now (a directory, a device or FIFO, which rename() would replace), and the
+// sticky-directory rule that only the owner of a file (or of the directory) may replace it.
+#include <string>
+
+namespace flexure::io {
+
+// Why a file cannot be written and renamed to `path`, in words a user can act on, or "" if it
+// can (as far as can be known without writing). Used by AtomicHdf5File as well.
+std::string output_path_problem(const std::string& path);
+
+// Throws InvalidInput "OPTION PATH: reason" (exit 2) if output_path_problem(path) is not empty.
+// Every command that takes --out calls it before solving.
+void check_output_path(const std::string& path, const std::string& option = "--out");
+
+// The temporary file AtomicHdf5File writes for `target`: ".NAME.PID-SERIAL.tmp" in the target's
+// directory, where NAME is the target's file name cut (at a UTF-8 character boundary) so that the
+// whole fits the file system's file-name limit `name_max` (NAME_MAX, 255 bytes on Linux): any
+// target name that fits the limit itself can be written.
+std::string temporary_path_for(const std::string& target, long pid, unsigned serial, long name_max);
+
+// The file-name limit of the file system holding `directory` (pathconf _PC_NAME_MAX), or NAME_MAX
+// when it cannot be asked.
+long file_name_limit(const std::string& directory);
+
+}  // namespace flexure::io
