@@ -4,9 +4,11 @@
 // equals the error recomputed from the printed force arrays.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 
 #include "tests/cli_test_support.h"
 
@@ -14,6 +16,13 @@ namespace flexure::test {
 namespace {
 
 using nlohmann::json;
+
+std::string fmt_stroke(double stroke) {
+  std::ostringstream out;
+  out.precision(17);
+  out << "\nstroke = " << stroke;
+  return out.str();
+}
 
 TEST(MechanismCli, AnalyzeBuiltinJson) {
   const CommandResult r = run_flexure("mechanism analyze 1A-lpp --points 20 --json");
@@ -113,6 +122,88 @@ TEST(MechanismCli, Hdf5OutputAndList) {
   const CommandResult table = run_flexure("mechanism validate --markdown --points 10");
   EXPECT_EQ(table.exit_code, 0) << table.err;
   EXPECT_EQ(count_lines(table.out), 2 + 9 + 11);  // header, rule, nine + eleven mechanisms
+}
+
+// The example lpp driven to 0.99999 of its toggle stroke (issue 11): at the toggle the class 1A
+// PRBM force is zero (the crank spring's moment has no lever along the slider), and the exact
+// force, whose own zero lies a little earlier, turns negative. The exact percent constant force
+// was printed as 100 min/max = -5.45 % with exit 0 and no warning. Expected: the sign change is
+// flagged (read off the printed force array, independently of the flag), the exact percentage is
+// 0 with a warning, and the PRBM percentage, whose force stays positive, is still 100 min/max of
+// its printed array.
+TEST(MechanismCli, ForceChangingSignHasNoPercentConstantForce) {
+  const std::string text =
+      read_text(std::string(FLEXURE_SOURCE_DIR) + "/docs/examples/mechanism_lpp.toml");
+  auto value_of = [&](const std::string& key) {
+    std::smatch m;
+    const std::regex re("\\n" + key + " = ([0-9.e+-]+)");
+    EXPECT_TRUE(std::regex_search(text, m, re)) << key;
+    return std::stod(m[1]);
+  };
+  const double r2 = value_of("r2"), r3 = value_of("r3"), R = r3 / r2;
+  // Toggle position of the slider-crank (thesis digest §0.3): crank and coupler in line.
+  const double toggle = (1.0 - std::sqrt(std::abs(1.0 - R) / (1.0 + R))) * (r2 + r3);
+  ScratchDir dir;
+  std::ofstream(dir / "toggle.toml") << std::regex_replace(
+      text, std::regex("\\nstroke = [0-9.e+-]+"), fmt_stroke(0.99999 * toggle));
+  const CommandResult r = run_flexure("mechanism analyze toggle.toml --json", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  const std::vector<double> fe = j["force_exact"], fp = j["force_prbm"];
+  ASSERT_LT(*std::min_element(fe.begin(), fe.end()), 0.0);
+  ASSERT_GT(*std::max_element(fe.begin(), fe.end()), 0.0);
+  EXPECT_EQ(j["percent_constant_force_exact"].get<double>(), 0.0);
+  EXPECT_TRUE(j["force_changes_sign_exact"].get<bool>());
+  EXPECT_TRUE(j["force_vanishes_exact"].get<bool>());
+  EXPECT_TRUE(j["force_vanishes"].get<bool>());
+  EXPECT_TRUE(j["force_changes_sign"].get<bool>());
+  EXPECT_NE(r.err.find("exact force changes sign"), std::string::npos) << r.err;
+  // The PRBM force is small but positive at the last point: a genuine (tiny) ratio, not flagged.
+  const double pmin = *std::min_element(fp.begin(), fp.end());
+  const double pmax = *std::max_element(fp.begin(), fp.end());
+  ASSERT_GT(pmin, 0.0);
+  EXPECT_FALSE(j["force_vanishes_prbm"].get<bool>());
+  EXPECT_FALSE(j["force_changes_sign_prbm"].get<bool>());
+  EXPECT_NEAR(j["percent_constant_force_prbm"].get<double>(), 100.0 * pmin / pmax, 1e-12);
+  EXPECT_EQ(r.err.find("PRBM force"), std::string::npos) << r.err;
+  // The text report says why the exact value is 0.
+  const CommandResult text_run = run_flexure("mechanism analyze toggle.toml", dir.path());
+  ASSERT_EQ(text_run.exit_code, 0) << text_run.err;
+  EXPECT_NE(text_run.out.find("exact 0.00 % (force changes sign)"), std::string::npos)
+      << text_run.out;
+  // The example at its own stroke: nothing flagged, 100 min/max of the printed exact force.
+  const CommandResult ok = run_flexure("mechanism analyze " + std::string(FLEXURE_SOURCE_DIR) +
+                                       "/docs/examples/mechanism_lpp.toml --json");
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  const json k = json::parse(ok.out);
+  const std::vector<double> fk = k["force_exact"];
+  EXPECT_FALSE(k["force_vanishes"].get<bool>());
+  EXPECT_FALSE(k["force_changes_sign_exact"].get<bool>());
+  EXPECT_NEAR(
+      k["percent_constant_force_exact"].get<double>(),
+      100.0 * *std::min_element(fk.begin(), fk.end()) / *std::max_element(fk.begin(), fk.end()),
+      1e-12);
+}
+
+// `validate` marks the cells it reports as 0 for that reason and leaves out their difference.
+TEST(MechanismCli, ValidateMarksAForceChangingSign) {
+  const CommandResult r = run_flexure(
+      "mechanism validate --designs thesis --toggle-fraction 0.99999 --points 10 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  bool found = false;
+  const json j = json::parse(r.out);
+  for (const json& row : j["mechanisms"]) {
+    if (row["design"]["name"] != "1A-lpp") continue;
+    found = true;
+    EXPECT_TRUE(row["force_changes_sign_exact"].get<bool>());
+    EXPECT_EQ(row["percent_constant_force_exact"].get<double>(), 0.0);
+  }
+  EXPECT_TRUE(found);
+  EXPECT_NE(r.err.find("1A-lpp: the exact force changes sign"), std::string::npos) << r.err;
+  const CommandResult md = run_flexure(
+      "mechanism validate --designs thesis --toggle-fraction 0.99999 --points 10 --markdown");
+  ASSERT_EQ(md.exit_code, 0) << md.err;
+  EXPECT_NE(md.out.find("| 0.00 (force changes sign) | - |"), std::string::npos) << md.out;
 }
 
 // `validate` skips the exact stresses; its JSON said 0 Pa for them (an unstressed flexure), which a

@@ -16,6 +16,7 @@
 #include "mechanisms/cfm/cfm_comparison.h"
 #include "mechanisms/cfm/cfm_model.h"
 #include "mechanisms/cfm/cfm_subclasses.h"
+#include "mechanisms/constant_force.h"
 #include "mechanisms/mechanism.h"
 #include "mechanisms/mechanism_toml.h"
 #include "solver/common/errors.h"
@@ -109,6 +110,36 @@ TEST(MechanismPrbm, BadInputIsRefused) {
   }
   d.stroke = 0.999 * (d.r2 + d.r3);
   EXPECT_NO_THROW(d.finalise());
+}
+
+// Percent constant force (thesis eq. 5.22, 100 min/max) on hand-made curves: a force of one sign
+// gives the ratio of its extreme magnitudes; a force that reaches zero or changes sign is flagged
+// and reported as 0 (it was -5.45 % for a force changing sign, issue 11).
+TEST(ConstantForce, PercentOnlyForAForceOfOneSign) {
+  ConstantForceMeasure m = constant_force_measure({2.0, 1.0, 4.0});
+  EXPECT_EQ(m.percent, 25.0);
+  EXPECT_FALSE(m.vanishes);
+  EXPECT_FALSE(m.changes_sign);
+  m = constant_force_measure({-2.0, -4.0});  // pulling throughout: as constant as its mirror
+  EXPECT_EQ(m.percent, 50.0);
+  EXPECT_FALSE(m.vanishes);
+  m = constant_force_measure({0.43, 0.2, -0.0234});
+  EXPECT_EQ(m.percent, 0.0);
+  EXPECT_TRUE(m.vanishes);
+  EXPECT_TRUE(m.changes_sign);
+  EXPECT_EQ(m.min_force, -0.0234);
+  EXPECT_EQ(m.max_force, 0.43);
+  m = constant_force_measure({1.0, 0.5, 1e-12});  // zero to rounding (cfm's force_vanishes)
+  EXPECT_EQ(m.percent, 0.0);
+  EXPECT_TRUE(m.vanishes);
+  EXPECT_FALSE(m.changes_sign);
+  m = constant_force_measure({1.0, 1e-8});  // small but real: 1e-6 %
+  EXPECT_FALSE(m.vanishes);
+  EXPECT_NEAR(m.percent, 1e-6, 1e-20);
+  m = constant_force_measure({0.0, 0.0});
+  EXPECT_TRUE(m.vanishes);
+  EXPECT_EQ(m.percent, 0.0);
+  EXPECT_THROW(constant_force_measure({}), InvalidInput);
 }
 
 TEST(MechanismToml, ExampleFileLoads) {
