@@ -47,8 +47,10 @@ char pivot(const Case& c, int p) { return c.config[p - 1]; }
 double link(double r2, double r3, int p) { return p == 1 ? r2 : p == 3 ? r3 : 0.5 * (r2 + r3); }
 
 // The equivalent design sized here, independently of mechanisms/cfm/cfm_exact.cpp: unit widths,
-// the reference flexure 0.02 thick (a different choice than the CLI's: forces depend on EI
-// ratios only), the others so that k_i/k_ref = K. Returns r2/k_ref.
+// the reference flexure 0.002 thick (a different choice than the CLI's: forces depend on EI
+// ratios only; 0.02 made the sss ground flexure 0.73 times as thick as long, which the mechanism
+// model now refuses as outside slender-beam theory, docs/mechanisms.md "Geometry limits"), the
+// others so that k_i/k_ref = K. Returns r2/k_ref.
 double write_design(const Case& c, const std::string& path) {
   const double r2 = 1.0 / (c.R + 1.0), r3 = c.R / (c.R + 1.0);
   auto length = [&](int p) {
@@ -57,7 +59,7 @@ double write_design(const Case& c, const std::string& path) {
   // k per unit I (E = 1).
   auto k_per_I = [&](int p) { return (pivot(c, p) == 'l' ? kGamma * kKtheta : 1.0) / length(p); };
   const int ref = pivot(c, 1) == 'p' ? 2 : 1;
-  const double h_ref = 0.02, I_ref = h_ref * h_ref * h_ref / 12.0;
+  const double h_ref = 0.002, I_ref = h_ref * h_ref * h_ref / 12.0;
   const double k_ref = k_per_I(ref) * I_ref;
   std::ofstream out(path);
   out.precision(17);

@@ -2,9 +2,11 @@
 // keys and array lengths the issue specifies, exit codes for bad input (2), the toggle refusal,
 // the yield warning, the HDF5 file (read back with the plain HDF5 C API), and that the JSON error
 // equals the error recomputed from the printed force arrays.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -16,6 +18,11 @@ namespace flexure::test {
 namespace {
 
 using nlohmann::json;
+
+// "NAME = VALUE" as the refusal messages print a ratio ({:.4g}).
+std::string fmt_ratio(const std::string& name, double value) {
+  return name + " = " + fmt::format("{:.4g}", value);
+}
 
 std::string fmt_stroke(double stroke) {
   std::ostringstream out;
@@ -183,6 +190,49 @@ TEST(MechanismCli, ForceChangingSignHasNoPercentConstantForce) {
       k["percent_constant_force_exact"].get<double>(),
       100.0 * *std::min_element(fk.begin(), fk.end()) / *std::max_element(fk.begin(), fk.end()),
       1e-12);
+}
+
+// Issue 11: the example designs with an absurd ground flexure -- 1 m thick (24 mm and 2.73 mm
+// long), or 1e-9 m thick or wide -- ran 50-230 s of CPU without an answer. They are outside
+// slender-beam theory (docs/mechanisms.md "Geometry limits") and must be refused at once (exit 2),
+// naming the segment and the ratio, whose value is recomputed here from the file's numbers.
+TEST(MechanismCli, AbsurdFlexureGeometryIsRefusedAtOnce) {
+  struct Case {
+    std::string example, from, to, expect;
+  };
+  const std::string lplm = "mechanism_lplm.toml", sss = "mechanism_sss.toml";
+  // Lengths: lplm's ground strip 24 mm; sss's ground flexure 2.73 mm. Thicknesses 0.5181 mm, 0.1
+  // mm.
+  const std::vector<Case> cases = {
+      {lplm,
+       "thickness = 0.5181e-3",
+       "thickness = 1.0",
+       fmt_ratio("thickness/length", 1.0 / 0.024)},
+      {lplm, "width = 25.4e-3", "width = 1e-9", fmt_ratio("width/thickness", 1e-9 / 0.5181e-3)},
+      {lplm, "thickness = 0.5181e-3", "thickness = 1e-9", "load parameter |P| L^2/(EI) = "},
+      {sss, "thickness = 0.1e-3", "thickness = 1.0", fmt_ratio("thickness/length", 1.0 / 2.73e-3)},
+      {sss, "width = 5e-3", "width = 1e-9", fmt_ratio("width/thickness", 1e-9 / 0.1e-3)},
+      {sss, "thickness = 0.1e-3", "thickness = 1e-9", "load parameter |P| L^2/(EI) = "}};
+  ScratchDir dir;
+  for (const Case& c : cases) {
+    std::string text = read_text(std::string(FLEXURE_SOURCE_DIR) + "/docs/examples/" + c.example);
+    const std::size_t at = text.find(c.from);  // the first occurrence is in [ground]
+    ASSERT_NE(at, std::string::npos) << c.example << ": " << c.from;
+    ASSERT_LT(
+        at,
+        text.find("[middle]") == std::string::npos ? text.find("[slider]") : text.find("[middle]"));
+    text.replace(at, c.from.size(), c.to);
+    std::ofstream(dir / "absurd.toml") << text;
+    const auto start = std::chrono::steady_clock::now();
+    const CommandResult r = run_flexure("mechanism analyze absurd.toml --json", dir.path());
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(r.exit_code, 2) << c.example << " " << c.to << ": " << r.err;
+    EXPECT_LT(seconds, 5.0) << c.example << " " << c.to;
+    EXPECT_NE(r.err.find("ground pivot 1 segment [ground]: " + c.expect), std::string::npos)
+        << c.example << " " << c.to << ": " << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+  }
 }
 
 // `validate` marks the cells it reports as 0 for that reason and leaves out their difference.
