@@ -11,6 +11,7 @@
 // solve exits 3; --exact-points without --exact exits 2.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -149,6 +150,34 @@ TEST(CfmExactCli, UnconvergedExactSolveExits3) {
       run_flexure("cfm --subclass sss-a --exact --exact-max-iterations 1 --json");
   EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
   EXPECT_NE(r.err.find("exact model"), std::string::npos) << r.err;
+}
+
+// lpp-b's R clamped at its toggle (class 1A: the PRBM force is zero there): the exact force turns
+// negative before the end, and its percent constant force was printed as 100 min/max = -5.33 %.
+// The sign change is read off the printed curve; the percentage must be 0, flagged and warned.
+TEST(CfmExactCli, ExactForceChangingSignHasNoPercentConstantForce) {
+  const CommandResult r =
+      run_flexure("cfm --config lpp --R 0.8853 --d 75.4 --exact --exact-points 20 --curve --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json j = Json::parse(r.out);
+  const std::vector<double> phi = j["exact_curve"]["Phi_exact"];
+  ASSERT_LT(*std::min_element(phi.begin(), phi.end()), 0.0);
+  ASSERT_GT(*std::max_element(phi.begin(), phi.end()), 0.0);
+  EXPECT_EQ(j["percent_constant_force_exact"].get<double>(), 0.0);
+  EXPECT_TRUE(j["force_changes_sign_exact"].get<bool>());
+  EXPECT_TRUE(j["force_vanishes_exact"].get<bool>());
+  EXPECT_NE(r.err.find("exact force changes sign"), std::string::npos) << r.err;
+  // At 16 % the same mechanism is a constant-force one: 100 min/max of its printed curve.
+  const CommandResult ok =
+      run_flexure("cfm --config lpp --R 0.8853 --d 16 --exact --exact-points 20 --curve --json");
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  const Json k = Json::parse(ok.out);
+  const std::vector<double> fine = k["exact_curve"]["Phi_exact"];
+  EXPECT_FALSE(k["force_vanishes_exact"].get<bool>());
+  EXPECT_NEAR(k["percent_constant_force_exact"].get<double>(),
+              100.0 * *std::min_element(fine.begin(), fine.end()) /
+                  *std::max_element(fine.begin(), fine.end()),
+              1e-12);
 }
 
 TEST(CfmExactCli, ExactOptionsNeedExact) {
