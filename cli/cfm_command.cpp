@@ -15,6 +15,7 @@
 // effective stroke) with a warning on stderr.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
@@ -48,6 +49,17 @@ using cfm::StrokeSampling;
 cfm::CfmExactResult solve_exact_or_throw(const CfmResult& r, const CfmArgs& args) {
   cfm::CfmExactResult e = cfm::solve_cfm_exact(r, make_exact_options(args));
   if (!e.converged) throw NoConvergence("cfm --exact: exact model: " + e.message);
+  if (e.force_vanishes_exact) {
+    // Its min/max would be meaningless (negative when it changes sign): reported as 0
+    // (docs/mechanisms.md "Percent constant force").
+    const auto [lo, hi] = std::minmax_element(e.Phi_exact_curve.begin(), e.Phi_exact_curve.end());
+    fmt::print(stderr,
+               "flexure: warning: the exact force {} within the stroke (Phi_exact from {:.3g} to "
+               "{:.3g}): percent_constant_force_exact is reported as 0\n",
+               e.force_changes_sign_exact ? "changes sign" : "vanishes",
+               *lo,
+               *hi);
+  }
   return e;
 }
 
@@ -434,6 +446,8 @@ cfm::CfmExactOptions make_exact_options(const CfmArgs& args) {
 void add_exact_json(Json& j, const cfm::CfmExactResult& e, bool curve) {
   j["Phi_exact"] = e.Phi_exact;
   j["percent_constant_force_exact"] = e.percent_constant_force_exact;
+  j["force_vanishes_exact"] = e.force_vanishes_exact;
+  j["force_changes_sign_exact"] = e.force_changes_sign_exact;
   j["max_force_error"] = e.max_force_error;
   j["max_force_error_at_stroke_percent"] = e.max_force_error_at_percent;
   j["exact_points"] = e.stroke_percent.size();

@@ -15,6 +15,7 @@
 #include "cli/slow_progress.h"
 #include "io/hdf5_file.h"
 #include "io/output_path.h"
+#include "mechanisms/constant_force.h"
 #include "mechanisms/howell_designs.h"
 #include "mechanisms/inversion.h"
 #include "mechanisms/mechanism.h"
@@ -142,6 +143,15 @@ Json analysis_json(const MechanismAnalysis& a) {
   j["exact_note"] = a.exact_note;
   j["percent_constant_force_prbm"] = a.prbm.percent_constant_force;
   j["percent_constant_force_exact"] = or_null(exact, a.percent_constant_force_exact);
+  // A force that is zero or changes sign within the stroke: the percentages above are then 0
+  // (constant_force.h; docs/mechanisms.md "Percent constant force"). force_vanishes is the name
+  // `flexure cfm` uses; it and force_changes_sign cover both models.
+  j["force_vanishes"] = a.prbm.force_vanishes || (exact && a.force_vanishes_exact);
+  j["force_changes_sign"] = a.prbm.force_changes_sign || (exact && a.force_changes_sign_exact);
+  j["force_vanishes_prbm"] = a.prbm.force_vanishes;
+  j["force_changes_sign_prbm"] = a.prbm.force_changes_sign;
+  j["force_vanishes_exact"] = exact ? Json(a.force_vanishes_exact) : Json(nullptr);
+  j["force_changes_sign_exact"] = exact ? Json(a.force_changes_sign_exact) : Json(nullptr);
   j["mean_force_prbm"] = a.prbm.mean_force;
   j["mean_force_exact"] = or_null(exact, a.mean_force_exact);
   j["max_force_error"] = or_null(exact, a.max_force_error);
@@ -158,6 +168,32 @@ Json analysis_json(const MechanismAnalysis& a) {
   return j;
 }
 
+// Why a percent constant force was reported as 0, or empty (constant_force.h).
+std::string force_sign_note(bool vanishes, bool changes_sign) {
+  return changes_sign ? "force changes sign" : vanishes ? "force vanishes" : "";
+}
+
+// One stderr warning per model whose force is zero or changes sign within the stroke: Weight's
+// min/max ratio (thesis eq. 5.22) describes a force of one sign, so the percentage is reported as
+// 0 instead of a negative or noise-sized ratio (docs/mechanisms.md "Percent constant force").
+void warn_if_force_vanishes(const MechanismAnalysis& a, bool exact) {
+  auto warn = [&](const char* model, const std::vector<double>& force) {
+    const ConstantForceMeasure m = constant_force_measure(force);
+    if (!m.vanishes) return;
+    std::cerr << fmt::format(
+        "flexure: warning: {}: the {} force {} within the stroke (min {:.4g} N, max {:.4g} N): "
+        "not a constant-force mechanism over this stroke; its percent constant force is "
+        "reported as 0\n",
+        a.design.name,
+        model,
+        m.changes_sign ? "changes sign" : "vanishes",
+        m.min_force,
+        m.max_force);
+  };
+  warn("PRBM", a.prbm.force);
+  if (exact) warn("exact", a.force_exact);
+}
+
 void write_hdf5(const std::string& path, const MechanismAnalysis& a, io::AtomicHdf5File& file) {
   auto& root = file.root();
   root.set_attribute("mechanism", a.design.name);
@@ -169,12 +205,17 @@ void write_hdf5(const std::string& path, const MechanismAnalysis& a, io::AtomicH
   }
   root.set_attribute("units", "SI: m, N, Pa");
   root.set_attribute("percent_constant_force_prbm", a.prbm.percent_constant_force);
+  root.set_attribute("force_vanishes_prbm", std::int64_t{a.prbm.force_vanishes ? 1 : 0});
+  root.set_attribute("force_changes_sign_prbm", std::int64_t{a.prbm.force_changes_sign ? 1 : 0});
   root.set_attribute("safety_factor", a.safety_factor);
   root.write_dataset("displacement", std::span<const double>(a.prbm.displacement));
   root.write_dataset("force_prbm", std::span<const double>(a.prbm.force));
   if (a.has_exact && a.exact.converged) {
     root.write_dataset("force_exact", std::span<const double>(a.force_exact));
     root.set_attribute("percent_constant_force_exact", a.percent_constant_force_exact);
+    root.set_attribute("force_vanishes_exact", std::int64_t{a.force_vanishes_exact ? 1 : 0});
+    root.set_attribute("force_changes_sign_exact",
+                       std::int64_t{a.force_changes_sign_exact ? 1 : 0});
     root.set_attribute("max_force_error", a.max_force_error);
   }
   if (a.prbm_validity_limit) root.set_attribute("prbm_validity_limit", *a.prbm_validity_limit);
@@ -234,13 +275,22 @@ void print_validation(int points,
         a.prbm_validity_limit ? fmt::format("{:.0f}", 100.0 * *a.prbm_validity_limit / d.stroke)
         : has_fixed_fixed(d)  ? std::string("none (fixed-fixed segments: no Theta_max table)")
                               : std::string("never (s pivots only, or within Table 5.1)");
+    // A percentage of a force that vanishes is 0 by definition (constant_force.h): say so in the
+    // cell, and leave out the difference, which would compare a definition with a ratio.
+    const std::string prbm_note = force_sign_note(a.prbm.force_vanishes, a.prbm.force_changes_sign);
+    const std::string exact_note =
+        exact ? force_sign_note(a.force_vanishes_exact, a.force_changes_sign_exact) : "";
+    auto pcf_cell = [](double v, const std::string& note) {
+      return note.empty() ? fmt::format("{:.2f}", v) : fmt::format("{:.2f} ({})", v, note);
+    };
+    warn_if_force_vanishes(a, exact);
     table += fmt::format(
-        "| {} | {} | {:.2f} | {} | {} | {} | {} | {} | {:.2f} | {} |\n",
+        "| {} | {} | {} | {} | {} | {} | {} | {} | {:.2f} | {} |\n",
         d.name,
         a.has_exact ? (exact ? "yes" : "did not converge") : "PRBM only",
-        a.prbm.percent_constant_force,
-        exact ? fmt::format("{:.2f}", a.percent_constant_force_exact) : "-",
-        exact
+        pcf_cell(a.prbm.percent_constant_force, prbm_note),
+        exact ? pcf_cell(a.percent_constant_force_exact, exact_note) : "-",
+        exact && prbm_note.empty() && exact_note.empty()
             ? fmt::format("{:+.2f}", a.prbm.percent_constant_force - a.percent_constant_force_exact)
             : "-",
         exact ? percent(a.max_force_error) : "-",
@@ -428,6 +478,7 @@ void register_mechanism_command(CLI::App& app) {
           a.max_stress[p - 1],
           d.yield_strength);
     }
+    warn_if_force_vanishes(a, a.has_exact && o.exact);
     if (file) write_hdf5(args->out, a, *file);
     if (args->json) {
       Json j = analysis_json(a);
@@ -442,10 +493,17 @@ void register_mechanism_command(CLI::App& app) {
                                                     : d.paper_config + ", solved as " + d.config,
                              d.note);
     std::cout << fmt::format("  method: {} ({})\n", choice.method, choice.reason);
-    std::cout << fmt::format("  percent constant force: PRBM {:.2f} %{}\n",
+    auto note = [](bool vanishes, bool changes_sign) {
+      const std::string n = force_sign_note(vanishes, changes_sign);
+      return n.empty() ? n : " (" + n + ")";
+    };
+    std::cout << fmt::format("  percent constant force: PRBM {:.2f} %{}{}\n",
                              a.prbm.percent_constant_force,
-                             a.has_exact && o.exact
-                                 ? fmt::format(", exact {:.2f} %", a.percent_constant_force_exact)
+                             note(a.prbm.force_vanishes, a.prbm.force_changes_sign),
+                             a.has_exact && o.exact ? fmt::format(", exact {:.2f} %{}",
+                                                                  a.percent_constant_force_exact,
+                                                                  note(a.force_vanishes_exact,
+                                                                       a.force_changes_sign_exact))
                              : a.exact_note.empty() ? std::string(" (exact model not run)")
                                                     : std::string(" (") + a.exact_note + ")");
     std::cout << fmt::format(

@@ -31,6 +31,107 @@ const char* pivot_label(int pivot) {
   return pivot == 1 ? "ground pivot 1" : pivot == 2 ? "middle pivot 2" : "slider pivot 3";
 }
 
+// The TOML table of a pivot, for messages (mechanism_toml.cpp).
+const char* pivot_table(int pivot) {
+  return pivot == 1 ? "[ground]" : pivot == 2 ? "[middle]" : "[slider]";
+}
+
+// Section shape of one flexible segment against SlenderBeamLimits (lengths already derived).
+void check_section(const JointDesign& j, int p) {
+  using L = SlenderBeamLimits;
+  const double h_over_l = j.thickness / j.length;
+  if (h_over_l > L::kMaxThicknessOverLength) {
+    throw InvalidInput(fmt::format(
+        "{} segment {}: thickness/length = {:.4g} (thickness {:.6g} m, length {:.6g} m) is outside "
+        "slender-beam (Euler-Bernoulli) theory, on which the PRBM and the exact model rest; "
+        "allowed <= {:g} (docs/mechanisms.md \"Geometry limits\")",
+        pivot_label(p),
+        pivot_table(p),
+        h_over_l,
+        j.thickness,
+        j.length,
+        L::kMaxThicknessOverLength));
+  }
+  const double b_over_h = j.width / j.thickness;
+  if (b_over_h < L::kMinWidthOverThickness) {
+    throw InvalidInput(fmt::format(
+        "{} segment {}: width/thickness = {:.4g} (width {:.6g} m, thickness {:.6g} m): a strip "
+        "narrower than it is thick bends out of the mechanism's plane, which the planar model "
+        "does not describe; allowed >= {:g} (docs/mechanisms.md \"Geometry limits\")",
+        pivot_label(p),
+        pivot_table(p),
+        b_over_h,
+        j.width,
+        j.thickness,
+        L::kMinWidthOverThickness));
+  }
+}
+
+// Loads of every flexible segment against SlenderBeamLimits, from the PRBM pin force over the
+// stroke (the force every flexible segment of the half mechanism carries; an estimate good to
+// the PRBM's few per cent, ample for limits with a 200-fold margin over the built-in designs).
+void check_loads(const MechanismDesign& d) {
+  using L = SlenderBeamLimits;
+  constexpr int kSamples = 64;
+  double P = 0.0;
+  for (double dx : stroke_displacements(d, kSamples)) {
+    const PrbmState s = prbm_state(d, dx);
+    const double p = std::hypot(s.pin_force_x, s.pin_force_y);
+    // A non-finite force (a singular pose) is reported by the PRBM stroke itself (exit 3).
+    if (std::isfinite(p)) P = std::max(P, p);
+  }
+  for (int p = 1; p <= 3; ++p) {
+    const JointDesign& j = d.joints[p - 1];
+    if (j.type == PivotType::kPin) continue;
+    const double EI = d.E * j.second_moment();
+    // Each value was finite and > 0, but their product can leave double precision (a 1e-200 m
+    // strip has h^3 = 0): the springs would be 0 or inf and the PRBM force 0/0.
+    const double k = d.spring_constant(p);
+    if (!(std::isfinite(EI) && EI > 0.0 && std::isfinite(k) && k > 0.0)) {
+      throw InvalidInput(fmt::format(
+          "{} segment {}: flexural rigidity E b h^3/12 = {:.4g} N m^2 and spring constant {:.4g} "
+          "N m/rad must be finite and > 0 (E = {:.4g} Pa, b = {:.4g} m, h = {:.4g} m: outside "
+          "the range of double precision)",
+          pivot_label(p),
+          pivot_table(p),
+          EI,
+          k,
+          d.E,
+          j.width,
+          j.thickness));
+    }
+    const double alpha2 = P * j.length * j.length / EI;
+    if (alpha2 > L::kMaxLoadParameter) {
+      throw InvalidInput(fmt::format(
+          "{} segment {}: load parameter |P| L^2/(EI) = {:.4g} (largest PRBM pin force "
+          "{:.4g} N, L = {:.6g} m, EI = {:.4g} N m^2) exceeds {:g}: the segment is far too "
+          "slender for the load the other segments put on it, which then sets its stiffness "
+          "instead of bending (outside the PRBM and the exact flexure model; docs/mechanisms.md "
+          "\"Geometry limits\")",
+          pivot_label(p),
+          pivot_table(p),
+          alpha2,
+          P,
+          j.length,
+          EI,
+          L::kMaxLoadParameter));
+    }
+    const double strain = P / (d.E * j.area());
+    if (strain > L::kMaxAxialStrain) {
+      throw InvalidInput(fmt::format(
+          "{} segment {}: axial strain |P|/(EA) = {:.4g} (largest PRBM pin force {:.4g} N, "
+          "A = {:.4g} m^2) exceeds {:g}: outside the inextensible elastica and any elastic "
+          "material (docs/mechanisms.md \"Geometry limits\")",
+          pivot_label(p),
+          pivot_table(p),
+          strain,
+          P,
+          j.area(),
+          L::kMaxAxialStrain));
+    }
+  }
+}
+
 constexpr double kInch = 0.0254;      // m
 constexpr double kPsi = 6894.757293;  // Pa
 
@@ -218,6 +319,7 @@ void MechanismDesign::finalise() {
                         j.length));
       }
     }
+    check_section(j, p);
   }
   check_fixed_fixed_lengths(*this);
   const double limit = toggle_stroke();
@@ -239,6 +341,7 @@ void MechanismDesign::finalise() {
         stroke,
         limit));
   }
+  check_loads(*this);
 }
 
 const std::vector<MechanismDesign>& builtin_mechanisms() {

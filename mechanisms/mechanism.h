@@ -83,7 +83,39 @@ struct MechanismDesign {
   // width, an s flexure longer than its link, a stroke past the toggle position (the message names
   // the limit in m and in % of r2 + r3). A fixed-fixed segment needs an explicit length, and the
   // rigid rest of each link (r minus half of each fixed-fixed segment on it) must stay > 0.
+  // Geometry outside the slender-beam model (SlenderBeamLimits below) is refused, naming the
+  // segment and the ratio.
   void finalise();
+};
+
+// Limits of the slender-beam (Euler-Bernoulli, inextensible elastica) model that the PRBM and the
+// exact model both rest on, checked by MechanismDesign::finalise for every flexible segment
+// (docs/mechanisms.md "Geometry limits"; the built-in designs reach at most h/L = 0.349
+// (howell-3A-sss-a), b/h = 4, |P| L^2/EI = 44 (3A-lslm), |P|/(EA) = 8.4e-4):
+struct SlenderBeamLimits {
+  // h/L: beyond it the segment is a block, not a beam -- shear adds about (E/(4 kappa G))(h/L)^2
+  // = 0.8 (h/L)^2 to the bending deflection under a transverse load (Timoshenko, nu = 0.3:
+  // 20 % at 0.5) and the clamp end zones (about h each, Saint-Venant) take the whole length.
+  // Not 0.1: Howell's small-length pivots (book §10.1.4, thesis designs) run at 0.15-0.35, where
+  // they carry mostly moment and shear does not enter.
+  static constexpr double kMaxThicknessOverLength = 0.5;
+  // b/h: the model bends each strip in the mechanism's plane; with b < h the out-of-plane
+  // stiffness E h b^3/12 is the smaller one and the strip would bend or buckle out of the plane.
+  static constexpr double kMinWidthOverThickness = 1.0;
+  // |P| L^2/(EI) with P the largest PRBM pin force over the stroke (every flexible segment of the
+  // half mechanism carries it): 23 times the most loaded built-in design. Beyond it the axial
+  // load, not bending, sets the segment's stiffness (the geometric stiffness of a strip under P
+  // is ~ sqrt(|P| EI) ~ sqrt(alpha^2) EI/L, over 30 EI/L here), so the PRBM springs EI/l and
+  // gamma K_theta EI/l are off by more than an order of magnitude; a compressed strip is hundreds
+  // of times past its buckling load, a tensioned one a string with bending boundary layers of
+  // sqrt(EI/|P|) < 3 % of its length. The exact solvers would still run (EllipticSolver accepts
+  // |F| l^2/EI <= 1e4) but their cost grows as sqrt(alpha^2) per integration: a 50-point stroke
+  // of the sss example with a 3 um ground strip (alpha^2 = 9300) took 29 s, the 1e-9 m strip of
+  // issue 11 (alpha^2 = 2.5e14) never ended.
+  static constexpr double kMaxLoadParameter = 1e3;
+  // |P|/(EA): the elastica is inextensible; at this axial strain every segment's length is 5 %
+  // off, and no engineering material stays elastic (polypropylene yields near 2.5 %).
+  static constexpr double kMaxAxialStrain = 0.05;
 };
 
 // The link a flexible pivot's default length is based on (Table 8.1): r2 at the ground, r3 at the

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "elements/fixed_pinned_segment.h"
+#include "mechanisms/constant_force.h"
 #include "solver/common/errors.h"
 
 namespace flexure::mechanism {
@@ -95,14 +96,14 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
         exact_stroke(d, a.prbm.displacement, ExactMechanismSolver::Options{}, stroke_progress);
     a.exact_note = a.exact.message;
     if (a.exact.converged) {
-      double fmin = INFINITY, fmax = -INFINITY, sum = 0.0;
+      double sum = 0.0;
       for (std::size_t k = 0; k < a.exact.points.size(); ++k) {
         const ExactPoint& p = a.exact.points[k];
         a.force_exact.push_back(p.force);
-        fmin = std::min(fmin, p.force);
-        fmax = std::max(fmax, p.force);
         sum += p.force;
-        const double err = std::abs(a.prbm.force[k] - p.force) / std::abs(p.force);
+        // Relative to a zero exact force the error is undefined (inf would reach the JSON).
+        const double err =
+            p.force != 0.0 ? std::abs(a.prbm.force[k] - p.force) / std::abs(p.force) : 0.0;
         if (err > a.max_force_error) {
           a.max_force_error = err;
           a.max_force_error_at = p.displacement;
@@ -116,7 +117,10 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
         }
       }
       a.has_exact_stress = options.exact_stress;
-      a.percent_constant_force_exact = 100.0 * fmin / fmax;
+      const ConstantForceMeasure cf = constant_force_measure(a.force_exact);
+      a.percent_constant_force_exact = cf.percent;
+      a.force_vanishes_exact = cf.vanishes;
+      a.force_changes_sign_exact = cf.changes_sign;
       a.mean_force_exact = sum / static_cast<double>(a.force_exact.size());
       for (int i = 0; i < 3; ++i)
         a.max_stress[i] = std::max(a.max_stress[i], a.max_stress_exact[i]);

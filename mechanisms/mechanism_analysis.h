@@ -42,9 +42,14 @@ struct MechanismAnalysis {
   // max_stress_exact was computed (options.exact_stress and a converged exact stroke); else the
   // zeros above mean "not computed", not "unstressed".
   bool has_exact_stress = false;
+  // Eq. 5.22 of the exact force; 0 when it vanishes or changes sign (constant_force.h).
   double percent_constant_force_exact = 0.0;
+  bool force_vanishes_exact = false;
+  bool force_changes_sign_exact = false;
   double mean_force_exact = 0.0;
-  double max_force_error = 0.0;     // max |F_prbm - F_exact|/|F_exact| over the stroke
+  // max |F_prbm - F_exact|/|F_exact| over the stroke points where F_exact != 0 (next to a zero of
+  // the exact force the relative error is unbounded; force_vanishes_exact flags that case).
+  double max_force_error = 0.0;
   double max_force_error_at = 0.0;  // Delta x of that maximum, m
   // First Delta x where the PRBM leaves its validity range (see above); empty if it never does.
   std::optional<double> prbm_validity_limit;

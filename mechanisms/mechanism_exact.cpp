@@ -141,11 +141,38 @@ ExactMechanismSolver::ExactMechanismSolver(MechanismDesign design, Options optio
       if (auto* f = std::get_if<FlexibleSegment>(&seg)) {
         f->length /= length_scale_;
         f->EI /= EI_scale_;
+        max_force_ =
+            std::min(max_force_, options_.max_load_parameter * f->EI / (f->length * f->length));
       } else {
         std::get<RigidSegment>(seg).length /= length_scale_;
       }
     }
   }
+}
+
+bool ExactMechanismSolver::out_of_time() const {
+  return options_.deadline != std::chrono::steady_clock::time_point::max() &&
+         std::chrono::steady_clock::now() > options_.deadline;
+}
+
+std::string ExactMechanismSolver::budget_message() const {
+  return fmt::format(
+      "work budget exhausted (the exact model gives up after {:g} s + {:g} s per stroke point of "
+      "wall-clock time; docs/mechanisms.md \"Work budget\")",
+      options_.time_budget,
+      options_.time_budget_per_point);
+}
+
+std::chrono::steady_clock::time_point exact_deadline(const ExactMechanismSolver::Options& options,
+                                                     std::size_t points) {
+  if (options.deadline != std::chrono::steady_clock::time_point::max()) return options.deadline;
+  const double seconds =
+      options.time_budget + options.time_budget_per_point * static_cast<double>(points);
+  // Beyond a year the budget is no limit (and the duration arithmetic would overflow).
+  if (!(seconds < 3.2e7)) return std::chrono::steady_clock::time_point::max();
+  return std::chrono::steady_clock::now() +
+         std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+             std::chrono::duration<double>(std::max(seconds, 0.0)));
 }
 
 SegmentChain ExactMechanismSolver::chain_at(double displacement, double phi) const {
@@ -175,6 +202,12 @@ ExactPoint ExactMechanismSolver::solve(double displacement, const ExactPoint* pr
         "slider displacement must be in (0, {:.6g}] m (the toggle position); got {:.6g}",
         design_.toggle_stroke(),
         displacement));
+  }
+  if (out_of_time()) {
+    ExactPoint p;
+    p.displacement = displacement;
+    p.message = budget_message();
+    return p;
   }
   switch (support_) {
     case ExactSupport::kTwoForceCoupler:
@@ -211,7 +244,8 @@ ExactPoint ExactMechanismSolver::solve_direct(double displacement,
     p.iterations += r.iterations;
     if (!r.converged) history = "from the previous point: " + r.message + "; ";
   }
-  if (!r.converged) {
+  if (!r.converged && out_of_time()) history += budget_message() + "; ";
+  if (!r.converged && !out_of_time()) {
     const PrbmState s = prbm_state(design_, displacement);
     const double m_tip =
         is_pin(design_, 3) ? 0.0 : design_.spring_constant(3) * (-s.theta3);  // slider spring
@@ -221,9 +255,13 @@ ExactPoint ExactMechanismSolver::solve_direct(double displacement,
     p.iterations += r.iterations;
     if (!r.converged) history += "from the PRBM guess: " + r.message + "; ";
   }
-  if (!r.converged) {
+  // (The shooting solver's own iterations are not bounded by the budget: it is checked between
+  // the three attempts. docs/mechanisms.md "Work budget".)
+  if (!r.converged && !out_of_time()) {
     r = solver.solve(p.chain);
     p.iterations += r.iterations;
+  } else if (!r.converged) {
+    r.message = budget_message();
   }
   p.converged = r.converged;
   p.message = r.converged ? r.method : history + "continuation: " + r.message;
@@ -277,6 +315,14 @@ ExactPoint ExactMechanismSolver::solve_two_force(double displacement,
   };
   auto evaluate = [&](double q, double f) {
     Eval e;
+    // Not integrated: a trial load beyond the solvers' domain (the damping then shortens the
+    // step), or the work budget is spent.
+    if (std::abs(q) > max_force_ || out_of_time()) {
+      e.sr.message = out_of_time() ? budget_message()
+                                   : fmt::format("trial coupler force beyond |F| L^2/EI = {:g}",
+                                                 options_.max_load_parameter);
+      return e;
+    }
     e.sr = solver.solve_from(make_chain(q, f), {m0});
     p.iterations += e.sr.iterations;
     if (!e.sr.converged) return e;
@@ -381,8 +427,11 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
 
 ExactStrokeResult exact_stroke(const MechanismDesign& design,
                                const std::vector<double>& displacements,
-                               const ExactMechanismSolver::Options& options,
+                               const ExactMechanismSolver::Options& options_in,
                                const StrokeProgress& progress) {
+  // The work budget runs from here (docs/mechanisms.md "Work budget").
+  ExactMechanismSolver::Options options = options_in;
+  options.deadline = exact_deadline(options_in, displacements.size());
   const ExactMechanismSolver solver(design, options);
   ExactStrokeResult result;
   result.points.reserve(displacements.size());
@@ -413,7 +462,11 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
     if (!point.converged && k == 0) {
       // No neighbour to start from and the PRBM start failed (mechanism_exact_start.cpp).
       ExactPoint started = exact_first_point(design, displacements, options);
-      if (started.converged) point = std::move(started);
+      if (started.converged) {
+        point = std::move(started);
+      } else {
+        point.message += "; start strategies: " + started.message;
+      }
     }
     if (!point.converged && k >= 1) {
       // Retry in substeps from the last converged point (large rotations per stroke step can
@@ -442,11 +495,13 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
     const ExactPoint& p = result.points.back();
     result.iterations += p.iterations;
     if (!p.converged) {
+      // Say first when the work budget ended it: the attempts' messages follow.
       result.message =
-          fmt::format("exact model stopped at Delta x = {:.6g} m ({} of {} points): {}",
+          fmt::format("exact model stopped at Delta x = {:.6g} m ({} of {} points): {}{}",
                       dx,
                       result.points.size(),
                       displacements.size(),
+                      solver.out_of_time() ? solver.budget_message() + "; last attempts: " : "",
                       p.message);
       return result;
     }

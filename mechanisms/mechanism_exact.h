@@ -31,6 +31,8 @@
 //    Modelling a pin as a very compliant flexure would make the shooting problem ill-conditioned
 //    (theta' = m/EI with EI -> 0) and add a spurious spring, so it is not done.
 #include <array>
+#include <chrono>
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <string>
@@ -113,6 +115,26 @@ class ExactMechanismSolver {
     int max_newton_iterations = 30;  // Newton steps per point on (Q, phi), (F, alpha) or, for the
                                      // middle pin, (P, root moments)
     bool reuse_jacobian = false;     // two-force case: start from the previous point's Jacobian
+    // Work budget of a stroke (docs/mechanisms.md "Work budget"): exact_stroke gives up, each
+    // remaining solve returning converged = false with a message naming the budget, once
+    // time_budget + time_budget_per_point * (stroke points) seconds of wall-clock time have
+    // passed: 20 s for the default 50 points. The slowest built-in strokes are the first points
+    // of 3A-lslm and 3A-lssm at a few coarse points, where the start strategies run (3A-lslm
+    // --points 3: 5.3 s on 2 shared cores; at 50 points 6 ms per point), so the budget leaves
+    // about 3 times that; near a fold or with very unequal flexures the start strategies and
+    // substeps could otherwise run for minutes (issue 11). Wall-clock, so a machine many times
+    // slower could give up on a design that converges here. A large value lifts it.
+    double time_budget = 15.0;           // s
+    double time_budget_per_point = 0.1;  // s
+    // Set by exact_stroke from the budget above (solve() called directly has none): a solve that
+    // starts, or a Newton evaluation that would start, after it returns unconverged.
+    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+    // Newton trial points that load a flexible segment beyond |F| L^2/EI = this are not
+    // integrated (counted as failed evaluations, so the step is damped): the designs are limited
+    // to 1e3 (SlenderBeamLimits), and 1e4 is EllipticSolver's domain. A Newton step of the
+    // pinned-ends model of 1B-plp near its toggle tried F L^2/EI = 2e8, one shooting solve
+    // there took 21 s.
+    double max_load_parameter = 1e4;
   };
 
   explicit ExactMechanismSolver(MechanismDesign design);
@@ -123,6 +145,13 @@ class ExactMechanismSolver {
 
   const MechanismDesign& design() const { return design_; }
   ExactSupport support() const { return support_; }
+  // Past the deadline of options_ (the work budget)?
+  bool out_of_time() const;
+  // The message of a solve stopped by the work budget.
+  std::string budget_message() const;
+  // Largest nondimensional force magnitude within options_.max_load_parameter on every flexible
+  // segment of the scaled chains (infinite when there is none).
+  double max_force() const { return max_force_; }
 
  private:
   ExactPoint solve_direct(double displacement, const ExactPoint* previous) const;
@@ -138,7 +167,12 @@ class ExactMechanismSolver {
   SegmentChain scaled_;          // physical_.chain / (length_scale, EI_scale)
   SegmentChain scaled_coupler_;  // physical_.coupler_chain, scaled the same way
   double length_scale_ = 1.0, EI_scale_ = 1.0, force_scale_ = 1.0, moment_scale_ = 1.0;
+  double max_force_ = INFINITY;  // see max_force()
 };
+
+// options.deadline if set, else now + time_budget + time_budget_per_point * points.
+std::chrono::steady_clock::time_point exact_deadline(const ExactMechanismSolver::Options& options,
+                                                     std::size_t points);
 
 struct ExactStrokeResult {
   std::vector<ExactPoint> points;

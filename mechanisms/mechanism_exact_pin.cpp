@@ -43,15 +43,18 @@ MultipleShootingOptions parts_for_force(const SegmentChain& chain,
 // continuity, m_tip coupler, coupler continuity, closure x, closure y].
 class PinnedMiddleSystem {
  public:
+  // `solver` supplies the work budget and the largest pin force worth integrating.
   PinnedMiddleSystem(const SegmentChain& crank,
                      const SegmentChain& coupler,
                      double xs,
                      const Eigen::Vector2d& pivot2,
                      double force,
-                     const MultipleShootingOptions& ms)
+                     const MultipleShootingOptions& ms,
+                     const ExactMechanismSolver& solver)
       : crank_(pinned(crank, pivot2.x(), pivot2.y()), parts_for_force(crank, force, ms)),
         coupler_(pinned(coupler, xs - pivot2.x(), -pivot2.y()),
-                 parts_for_force(coupler, force, ms)) {}
+                 parts_for_force(coupler, force, ms)),
+        solver_(solver) {}
 
   int size() const { return crank_.size() + coupler_.size() - 2; }
   int crank_offset() const { return 2; }
@@ -86,6 +89,16 @@ class PinnedMiddleSystem {
   };
   Evaluation evaluate(const Eigen::VectorXd& u, ElasticaIntegrator& integrator) const {
     Evaluation e;
+    // Not integrated (a failed evaluation, so Newton damps its step): a trial pin force beyond
+    // the solvers' domain, or the work budget is spent (ExactMechanismSolver::Options).
+    if (solver_.out_of_time()) {
+      e.error = solver_.budget_message();
+      return e;
+    }
+    if (u.head<2>().norm() > solver_.max_force()) {
+      e.error = "trial pin force beyond the solvers' domain of |F| L^2/EI";
+      return e;
+    }
     ShootingEvaluation ec, ek;
     if (!crank_.evaluate(
             part(u, crank_offset(), crank_.size()), 1.0, true, false, integrator, ec) ||
@@ -140,6 +153,7 @@ class PinnedMiddleSystem {
   }
 
   ShootingProblem crank_, coupler_;
+  const ExactMechanismSolver& solver_;
 };
 
 struct PinnedMiddleNewton {
@@ -246,7 +260,7 @@ ExactPoint ExactMechanismSolver::solve_pinned_middle(double displacement,
   };
   ElasticaIntegrator integrator(options_.shooting.integrator_options());
   const PinnedMiddleSystem system(
-      scaled_, scaled_coupler_, xs, pivot2, P.norm(), options_.shooting.multiple_shooting);
+      scaled_, scaled_coupler_, xs, pivot2, P.norm(), options_.shooting.multiple_shooting, *this);
   Eigen::VectorXd u;
   std::string error;
   if (!system.initial_unknowns(P, m0c, m0k, integrator, u, error)) {
@@ -348,9 +362,18 @@ ExactPoint ExactMechanismSolver::solve_pinned_ends(double displacement,
   };
   auto evaluate = [&](const Eigen::Vector2d& v) {
     Eval e;
+    // Not integrated (a failed evaluation, so the step is damped): a trial slider force beyond
+    // the solvers' domain -- near the toggle of 1B-plp a step tried F L^2/EI = 2e8, where one
+    // shooting solve took 21 s -- or the work budget is spent (ExactMechanismSolver::Options).
+    if (std::abs(v(0)) > max_force() || out_of_time()) {
+      e.sr.message = out_of_time() ? budget_message()
+                                   : fmt::format("trial slider force beyond |F| L^2/EI = {:g}",
+                                                 options_.max_load_parameter);
+      return e;
+    }
     // Continuation from zero load only for the very first evaluation of a stroke (see above).
     e.sr = solver.solve_from(make_chain(v), {m0});
-    if (!e.sr.converged && fallback) e.sr = solver.solve(make_chain(v));
+    if (!e.sr.converged && fallback && !out_of_time()) e.sr = solver.solve(make_chain(v));
     p.iterations += e.sr.iterations;
     if (!e.sr.converged) return e;
     e.ok = true;

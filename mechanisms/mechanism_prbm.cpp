@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "mechanisms/cfm/slider_crank.h"
+#include "mechanisms/constant_force.h"
 #include "mechanisms/inversion.h"
 #include "solver/common/errors.h"
 
@@ -103,7 +104,7 @@ PrbmStrokeResult prbm_stroke(const MechanismDesign& design, int points) {
   for (int p = 0; p < 3; ++p) {
     if (design.joints[p].type != PivotType::kPin) r.stress[p].reserve(points);
   }
-  double fmin = INFINITY, fmax = -INFINITY, sum = 0.0;
+  double sum = 0.0;
   for (double dx : r.displacement) {
     const PrbmState s = prbm_state(design, dx);
     if (!std::isfinite(s.force)) {
@@ -113,8 +114,6 @@ PrbmStrokeResult prbm_stroke(const MechanismDesign& design, int points) {
     }
     r.force.push_back(s.force);
     r.residual = std::max(r.residual, std::abs(-s.pin_force_x - s.force) / std::abs(s.force));
-    fmin = std::min(fmin, s.force);
-    fmax = std::max(fmax, s.force);
     sum += s.force;
     for (int p = 0; p < 3; ++p) {
       if (design.joints[p].type == PivotType::kPin) continue;
@@ -131,7 +130,10 @@ PrbmStrokeResult prbm_stroke(const MechanismDesign& design, int points) {
   }
   r.safety_factor = design.yield_strength / r.max_stress_all;
   r.mean_force = sum / points;
-  r.percent_constant_force = 100.0 * fmin / fmax;
+  const ConstantForceMeasure cf = constant_force_measure(r.force);
+  r.percent_constant_force = cf.percent;
+  r.force_vanishes = cf.vanishes;
+  r.force_changes_sign = cf.changes_sign;
   r.message = "closed form";
   return r;
 }

@@ -42,8 +42,11 @@ struct PrbmStrokeResult {
   int critical_pivot = 0;                     // pivot of max_stress_all (1..3)
   double safety_factor = 0.0;                 // yield_strength/max_stress_all
   double mean_force = 0.0;                    // N
-  double percent_constant_force = 0.0;        // 100 min F/max F (thesis eq. 5.22)
-  bool converged = true;                      // closed form: all values finite
+  double percent_constant_force = 0.0;        // 100 min F/max F (thesis eq. 5.22); 0 when
+                                              // the force vanishes (constant_force.h)
+  bool force_vanishes = false;      // the force is zero within the stroke (or changes sign)
+  bool force_changes_sign = false;  // the force takes both signs over the stroke
+  bool converged = true;            // closed form: all values finite
   std::string message;
   int iterations = 0;     // stroke points
   double residual = 0.0;  // largest |F_statics - F_virtual_work|/|F| (two routes to the force)

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <optional>
 #include <set>
 
 #include "io/toml_support.h"
@@ -66,8 +67,16 @@ MechanismDesign parse_mechanism_toml(const std::string& text, const std::string&
                   "the file",
                   source);
   MechanismDesign d;
-  d.name = root["name"].value_or(std::string(source));
-  d.note = root["note"].value_or(std::string());
+  // Optional strings; another type was silently replaced by the default.
+  auto optional_string =
+      [&](const toml::table& t, const std::string& key, const std::string& name) {
+        const toml::node* node = t.get(key);
+        if (node == nullptr) return std::optional<std::string>();
+        if (!node->is_string()) toml_fail(source, line_of(*node), name + " must be a string");
+        return std::optional<std::string>(**node->as_string());
+      };
+  d.name = optional_string(root, "name", "name").value_or(source);
+  d.note = optional_string(root, "note", "note").value_or("");
   const toml::node* config = root.get("config");
   if (config == nullptr || !config->is_string()) {
     toml_fail(source,
@@ -110,6 +119,7 @@ MechanismDesign parse_mechanism_toml(const std::string& text, const std::string&
   }
   const toml::table& m = *mat->as_table();
   check_toml_keys(m, {"E", "yield_strength", "name"}, "[material]", source);
+  optional_string(m, "name", "material.name");  // documentation only, but a string
   d.E = positive(m, "E", "material", source, line_of(m));
   d.yield_strength = positive(m, "yield_strength", "material", source, line_of(m));
   std::string pattern;

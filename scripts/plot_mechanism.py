@@ -57,6 +57,12 @@ def read_stroke(path):
             "config": text(f.attrs.get("config", "")),
             "pcf_prbm": f.attrs.get("percent_constant_force_prbm"),
             "pcf_exact": f.attrs.get("percent_constant_force_exact"),
+            # 1 where that force is zero or changes sign: its percentage is then 0 by
+            # definition (docs/mechanisms.md "Percent constant force"); absent in older files.
+            "sign_prbm": f.attrs.get("force_changes_sign_prbm"),
+            "vanish_prbm": f.attrs.get("force_vanishes_prbm"),
+            "sign_exact": f.attrs.get("force_changes_sign_exact"),
+            "vanish_exact": f.attrs.get("force_vanishes_exact"),
             "validity": f.attrs.get("prbm_validity_limit"),
             "stress": {},
         }
@@ -127,9 +133,16 @@ def main(argv):
     axes[0].legend(fontsize=8)
     axes[-1].set_xlabel("slider displacement Delta x (mm)")
 
-    pcf = f"PRBM {float(d['pcf_prbm']):.2f} %" if d["pcf_prbm"] is not None else ""
+    def note(model):
+        if d[f"sign_{model}"] is not None and int(d[f"sign_{model}"]):
+            return " (force changes sign)"
+        if d[f"vanish_{model}"] is not None and int(d[f"vanish_{model}"]):
+            return " (force vanishes)"
+        return ""
+
+    pcf = f"PRBM {float(d['pcf_prbm']):.2f} %{note('prbm')}" if d["pcf_prbm"] is not None else ""
     if d["pcf_exact"] is not None:
-        pcf += f", exact {float(d['pcf_exact']):.2f} %"
+        pcf += f", exact {float(d['pcf_exact']):.2f} %{note('exact')}"
     config = f" ({d['config']})" if d["config"] else ""
     fig.suptitle(f"{d['mechanism']}{config}: percent constant force {pcf}", fontsize=10)
     fig.tight_layout()

@@ -11,6 +11,7 @@
 // solve exits 3; --exact-points without --exact exits 2.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -47,8 +48,10 @@ char pivot(const Case& c, int p) { return c.config[p - 1]; }
 double link(double r2, double r3, int p) { return p == 1 ? r2 : p == 3 ? r3 : 0.5 * (r2 + r3); }
 
 // The equivalent design sized here, independently of mechanisms/cfm/cfm_exact.cpp: unit widths,
-// the reference flexure 0.02 thick (a different choice than the CLI's: forces depend on EI
-// ratios only), the others so that k_i/k_ref = K. Returns r2/k_ref.
+// the reference flexure 0.002 thick (a different choice than the CLI's: forces depend on EI
+// ratios only; 0.02 made the sss ground flexure 0.73 times as thick as long, which the mechanism
+// model now refuses as outside slender-beam theory, docs/mechanisms.md "Geometry limits"), the
+// others so that k_i/k_ref = K. Returns r2/k_ref.
 double write_design(const Case& c, const std::string& path) {
   const double r2 = 1.0 / (c.R + 1.0), r3 = c.R / (c.R + 1.0);
   auto length = [&](int p) {
@@ -57,7 +60,7 @@ double write_design(const Case& c, const std::string& path) {
   // k per unit I (E = 1).
   auto k_per_I = [&](int p) { return (pivot(c, p) == 'l' ? kGamma * kKtheta : 1.0) / length(p); };
   const int ref = pivot(c, 1) == 'p' ? 2 : 1;
-  const double h_ref = 0.02, I_ref = h_ref * h_ref * h_ref / 12.0;
+  const double h_ref = 0.002, I_ref = h_ref * h_ref * h_ref / 12.0;
   const double k_ref = k_per_I(ref) * I_ref;
   std::ofstream out(path);
   out.precision(17);
@@ -147,6 +150,34 @@ TEST(CfmExactCli, UnconvergedExactSolveExits3) {
       run_flexure("cfm --subclass sss-a --exact --exact-max-iterations 1 --json");
   EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
   EXPECT_NE(r.err.find("exact model"), std::string::npos) << r.err;
+}
+
+// lpp-b's R clamped at its toggle (class 1A: the PRBM force is zero there): the exact force turns
+// negative before the end, and its percent constant force was printed as 100 min/max = -5.33 %.
+// The sign change is read off the printed curve; the percentage must be 0, flagged and warned.
+TEST(CfmExactCli, ExactForceChangingSignHasNoPercentConstantForce) {
+  const CommandResult r =
+      run_flexure("cfm --config lpp --R 0.8853 --d 75.4 --exact --exact-points 20 --curve --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json j = Json::parse(r.out);
+  const std::vector<double> phi = j["exact_curve"]["Phi_exact"];
+  ASSERT_LT(*std::min_element(phi.begin(), phi.end()), 0.0);
+  ASSERT_GT(*std::max_element(phi.begin(), phi.end()), 0.0);
+  EXPECT_EQ(j["percent_constant_force_exact"].get<double>(), 0.0);
+  EXPECT_TRUE(j["force_changes_sign_exact"].get<bool>());
+  EXPECT_TRUE(j["force_vanishes_exact"].get<bool>());
+  EXPECT_NE(r.err.find("exact force changes sign"), std::string::npos) << r.err;
+  // At 16 % the same mechanism is a constant-force one: 100 min/max of its printed curve.
+  const CommandResult ok =
+      run_flexure("cfm --config lpp --R 0.8853 --d 16 --exact --exact-points 20 --curve --json");
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  const Json k = Json::parse(ok.out);
+  const std::vector<double> fine = k["exact_curve"]["Phi_exact"];
+  EXPECT_FALSE(k["force_vanishes_exact"].get<bool>());
+  EXPECT_NEAR(k["percent_constant_force_exact"].get<double>(),
+              100.0 * *std::min_element(fine.begin(), fine.end()) /
+                  *std::max_element(fine.begin(), fine.end()),
+              1e-12);
 }
 
 TEST(CfmExactCli, ExactOptionsNeedExact) {

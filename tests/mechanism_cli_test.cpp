@@ -2,11 +2,15 @@
 // keys and array lengths the issue specifies, exit codes for bad input (2), the toggle refusal,
 // the yield warning, the HDF5 file (read back with the plain HDF5 C API), and that the JSON error
 // equals the error recomputed from the printed force arrays.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 
 #include "tests/cli_test_support.h"
 
@@ -14,6 +18,18 @@ namespace flexure::test {
 namespace {
 
 using nlohmann::json;
+
+// "NAME = VALUE" as the refusal messages print a ratio ({:.4g}).
+std::string fmt_ratio(const std::string& name, double value) {
+  return name + " = " + fmt::format("{:.4g}", value);
+}
+
+std::string fmt_stroke(double stroke) {
+  std::ostringstream out;
+  out.precision(17);
+  out << "\nstroke = " << stroke;
+  return out.str();
+}
 
 TEST(MechanismCli, AnalyzeBuiltinJson) {
   const CommandResult r = run_flexure("mechanism analyze 1A-lpp --points 20 --json");
@@ -113,6 +129,131 @@ TEST(MechanismCli, Hdf5OutputAndList) {
   const CommandResult table = run_flexure("mechanism validate --markdown --points 10");
   EXPECT_EQ(table.exit_code, 0) << table.err;
   EXPECT_EQ(count_lines(table.out), 2 + 9 + 11);  // header, rule, nine + eleven mechanisms
+}
+
+// The example lpp driven to 0.99999 of its toggle stroke (issue 11): at the toggle the class 1A
+// PRBM force is zero (the crank spring's moment has no lever along the slider), and the exact
+// force, whose own zero lies a little earlier, turns negative. The exact percent constant force
+// was printed as 100 min/max = -5.45 % with exit 0 and no warning. Expected: the sign change is
+// flagged (read off the printed force array, independently of the flag), the exact percentage is
+// 0 with a warning, and the PRBM percentage, whose force stays positive, is still 100 min/max of
+// its printed array.
+TEST(MechanismCli, ForceChangingSignHasNoPercentConstantForce) {
+  const std::string text =
+      read_text(std::string(FLEXURE_SOURCE_DIR) + "/docs/examples/mechanism_lpp.toml");
+  auto value_of = [&](const std::string& key) {
+    std::smatch m;
+    const std::regex re("\\n" + key + " = ([0-9.e+-]+)");
+    EXPECT_TRUE(std::regex_search(text, m, re)) << key;
+    return std::stod(m[1]);
+  };
+  const double r2 = value_of("r2"), r3 = value_of("r3"), R = r3 / r2;
+  // Toggle position of the slider-crank (thesis digest §0.3): crank and coupler in line.
+  const double toggle = (1.0 - std::sqrt(std::abs(1.0 - R) / (1.0 + R))) * (r2 + r3);
+  ScratchDir dir;
+  std::ofstream(dir / "toggle.toml") << std::regex_replace(
+      text, std::regex("\\nstroke = [0-9.e+-]+"), fmt_stroke(0.99999 * toggle));
+  const CommandResult r = run_flexure("mechanism analyze toggle.toml --json", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  const std::vector<double> fe = j["force_exact"], fp = j["force_prbm"];
+  ASSERT_LT(*std::min_element(fe.begin(), fe.end()), 0.0);
+  ASSERT_GT(*std::max_element(fe.begin(), fe.end()), 0.0);
+  EXPECT_EQ(j["percent_constant_force_exact"].get<double>(), 0.0);
+  EXPECT_TRUE(j["force_changes_sign_exact"].get<bool>());
+  EXPECT_TRUE(j["force_vanishes_exact"].get<bool>());
+  EXPECT_TRUE(j["force_vanishes"].get<bool>());
+  EXPECT_TRUE(j["force_changes_sign"].get<bool>());
+  EXPECT_NE(r.err.find("exact force changes sign"), std::string::npos) << r.err;
+  // The PRBM force is small but positive at the last point: a genuine (tiny) ratio, not flagged.
+  const double pmin = *std::min_element(fp.begin(), fp.end());
+  const double pmax = *std::max_element(fp.begin(), fp.end());
+  ASSERT_GT(pmin, 0.0);
+  EXPECT_FALSE(j["force_vanishes_prbm"].get<bool>());
+  EXPECT_FALSE(j["force_changes_sign_prbm"].get<bool>());
+  EXPECT_NEAR(j["percent_constant_force_prbm"].get<double>(), 100.0 * pmin / pmax, 1e-12);
+  EXPECT_EQ(r.err.find("PRBM force"), std::string::npos) << r.err;
+  // The text report says why the exact value is 0.
+  const CommandResult text_run = run_flexure("mechanism analyze toggle.toml", dir.path());
+  ASSERT_EQ(text_run.exit_code, 0) << text_run.err;
+  EXPECT_NE(text_run.out.find("exact 0.00 % (force changes sign)"), std::string::npos)
+      << text_run.out;
+  // The example at its own stroke: nothing flagged, 100 min/max of the printed exact force.
+  const CommandResult ok = run_flexure("mechanism analyze " + std::string(FLEXURE_SOURCE_DIR) +
+                                       "/docs/examples/mechanism_lpp.toml --json");
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  const json k = json::parse(ok.out);
+  const std::vector<double> fk = k["force_exact"];
+  EXPECT_FALSE(k["force_vanishes"].get<bool>());
+  EXPECT_FALSE(k["force_changes_sign_exact"].get<bool>());
+  EXPECT_NEAR(
+      k["percent_constant_force_exact"].get<double>(),
+      100.0 * *std::min_element(fk.begin(), fk.end()) / *std::max_element(fk.begin(), fk.end()),
+      1e-12);
+}
+
+// Issue 11: the example designs with an absurd ground flexure -- 1 m thick (24 mm and 2.73 mm
+// long), or 1e-9 m thick or wide -- ran 50-230 s of CPU without an answer. They are outside
+// slender-beam theory (docs/mechanisms.md "Geometry limits") and must be refused at once (exit 2),
+// naming the segment and the ratio, whose value is recomputed here from the file's numbers.
+TEST(MechanismCli, AbsurdFlexureGeometryIsRefusedAtOnce) {
+  struct Case {
+    std::string example, from, to, expect;
+  };
+  const std::string lplm = "mechanism_lplm.toml", sss = "mechanism_sss.toml";
+  // Lengths: lplm's ground strip 24 mm; sss's ground flexure 2.73 mm. Thicknesses 0.5181 mm, 0.1
+  // mm.
+  const std::vector<Case> cases = {
+      {lplm,
+       "thickness = 0.5181e-3",
+       "thickness = 1.0",
+       fmt_ratio("thickness/length", 1.0 / 0.024)},
+      {lplm, "width = 25.4e-3", "width = 1e-9", fmt_ratio("width/thickness", 1e-9 / 0.5181e-3)},
+      {lplm, "thickness = 0.5181e-3", "thickness = 1e-9", "load parameter |P| L^2/(EI) = "},
+      {sss, "thickness = 0.1e-3", "thickness = 1.0", fmt_ratio("thickness/length", 1.0 / 2.73e-3)},
+      {sss, "width = 5e-3", "width = 1e-9", fmt_ratio("width/thickness", 1e-9 / 0.1e-3)},
+      {sss, "thickness = 0.1e-3", "thickness = 1e-9", "load parameter |P| L^2/(EI) = "}};
+  ScratchDir dir;
+  for (const Case& c : cases) {
+    std::string text = read_text(std::string(FLEXURE_SOURCE_DIR) + "/docs/examples/" + c.example);
+    const std::size_t at = text.find(c.from);  // the first occurrence is in [ground]
+    ASSERT_NE(at, std::string::npos) << c.example << ": " << c.from;
+    ASSERT_LT(
+        at,
+        text.find("[middle]") == std::string::npos ? text.find("[slider]") : text.find("[middle]"));
+    text.replace(at, c.from.size(), c.to);
+    std::ofstream(dir / "absurd.toml") << text;
+    const auto start = std::chrono::steady_clock::now();
+    const CommandResult r = run_flexure("mechanism analyze absurd.toml --json", dir.path());
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(r.exit_code, 2) << c.example << " " << c.to << ": " << r.err;
+    EXPECT_LT(seconds, 5.0) << c.example << " " << c.to;
+    EXPECT_NE(r.err.find("ground pivot 1 segment [ground]: " + c.expect), std::string::npos)
+        << c.example << " " << c.to << ": " << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+  }
+}
+
+// `validate` marks the cells it reports as 0 for that reason and leaves out their difference.
+TEST(MechanismCli, ValidateMarksAForceChangingSign) {
+  const CommandResult r = run_flexure(
+      "mechanism validate --designs thesis --toggle-fraction 0.99999 --points 10 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  bool found = false;
+  const json j = json::parse(r.out);
+  for (const json& row : j["mechanisms"]) {
+    if (row["design"]["name"] != "1A-lpp") continue;
+    found = true;
+    EXPECT_TRUE(row["force_changes_sign_exact"].get<bool>());
+    EXPECT_EQ(row["percent_constant_force_exact"].get<double>(), 0.0);
+  }
+  EXPECT_TRUE(found);
+  EXPECT_NE(r.err.find("1A-lpp: the exact force changes sign"), std::string::npos) << r.err;
+  const CommandResult md = run_flexure(
+      "mechanism validate --designs thesis --toggle-fraction 0.99999 --points 10 --markdown");
+  ASSERT_EQ(md.exit_code, 0) << md.err;
+  EXPECT_NE(md.out.find("| 0.00 (force changes sign) | - |"), std::string::npos) << md.out;
 }
 
 // `validate` skips the exact stresses; its JSON said 0 Pa for them (an unstressed flexure), which a

@@ -21,6 +21,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 
 #include "mechanisms/mechanism.h"
@@ -279,6 +280,45 @@ TEST(MechanismExact, ReportedErrorIsTheArrayError) {
   // must merely be a sane number (docs/validation.md reports it).
   EXPECT_GT(a.max_force_error, 0.0);
   EXPECT_LT(a.max_force_error, 0.5);
+}
+
+// Work budget (ExactMechanismSolver::Options, docs/mechanisms.md "Work budget"): a stroke whose
+// budget is spent ends unconverged, at once, saying so -- the same stroke that converges with the
+// default budget, so the budget is what stopped it.
+TEST(MechanismExact, SpentWorkBudgetEndsTheStrokeUnconverged) {
+  const MechanismDesign d = find_builtin_mechanism("3A-sss");
+  const std::vector<double> dx = stroke_displacements(d, 20);
+  ASSERT_TRUE(exact_stroke(d, dx).converged);
+  ExactMechanismSolver::Options o;
+  o.time_budget = 0.0;
+  o.time_budget_per_point = 0.0;
+  const auto start = std::chrono::steady_clock::now();
+  const ExactStrokeResult r = exact_stroke(d, dx, o);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_FALSE(r.converged);
+  EXPECT_NE(r.message.find("work budget exhausted"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("Delta x = "), std::string::npos) << r.message;
+  EXPECT_LT(seconds, 1.0);
+}
+
+// 1B-plp driven to 0.999 of its toggle stroke took 54 s: the (F, alpha) Newton of the pinned-ends
+// model stepped to F L^2/EI = 2e8, where every damped trial was a shooting solve of up to 21 s.
+// Trial points beyond the solvers' domain (max_load_parameter) are now not integrated, so the
+// stroke converges within its default budget; the energy balance W = Delta U over the last tenth
+// of the stroke (Simpson on the exact force, strain energy from the shapes; measured 3e-11)
+// confirms it is the solution, to the 1e-8 as for the built-in stroke above.
+TEST(MechanismExact, PinnedEndsNearTheToggleStayInTheSolverDomain) {
+  MechanismDesign d = find_builtin_mechanism("1B-plp");
+  d.stroke = 0.999 * d.toggle_stroke();
+  const ExactStrokeResult r = exact_stroke(d, stroke_displacements(d, 50));
+  ASSERT_TRUE(r.converged) << r.message;
+  const double a = r.points[44].displacement, b = d.stroke;  // 45/50 of the stroke, the end
+  // 128 intervals: the force falls steeply near the toggle (32 left a Simpson error of 3e-8).
+  const double W = simpson_work(d, a, b, 128), W_half = simpson_work(d, a, b, 64);
+  EXPECT_LT(std::abs(W - W_half) / (15.0 * std::abs(W)), 0.1 * kEnergyTolerance);
+  const double dU = exact_strain_energy(d, r.points.back()) - exact_strain_energy(d, r.points[44]);
+  EXPECT_NEAR(W / dU, 1.0, kEnergyTolerance) << "work " << W << " J, energy change " << dU;
 }
 
 TEST(MechanismExact, EveryConfigurationHasAnExactModel) {

@@ -16,6 +16,8 @@
 #include "mechanisms/cfm/cfm_comparison.h"
 #include "mechanisms/cfm/cfm_model.h"
 #include "mechanisms/cfm/cfm_subclasses.h"
+#include "mechanisms/constant_force.h"
+#include "mechanisms/howell_designs.h"
 #include "mechanisms/mechanism.h"
 #include "mechanisms/mechanism_toml.h"
 #include "solver/common/errors.h"
@@ -111,6 +113,111 @@ TEST(MechanismPrbm, BadInputIsRefused) {
   EXPECT_NO_THROW(d.finalise());
 }
 
+// Slender-beam limits (SlenderBeamLimits, docs/mechanisms.md "Geometry limits") at their
+// boundaries, on the sss example: each rule accepts the limit itself and refuses just past it,
+// naming the segment and the ratio. The ratios are recomputed here from the design's numbers.
+std::string refusal(MechanismDesign d) {
+  try {
+    d.finalise();
+  } catch (const InvalidInput& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(MechanismPrbm, GeometryOutsideSlenderBeamTheoryIsRefused) {
+  const MechanismDesign sss =
+      load_mechanism_toml(std::string(FLEXURE_SOURCE_DIR) + "/docs/examples/mechanism_sss.toml");
+  // thickness/length <= 0.5 (ground flexure 2.73 mm long).
+  MechanismDesign d = sss;
+  d.joints[0].thickness = 0.5 * d.joints[0].length;
+  EXPECT_EQ(refusal(d), "");
+  d.joints[0].thickness *= 1.01;
+  std::string why = refusal(d);
+  EXPECT_NE(why.find("ground pivot 1 segment [ground]: thickness/length = 0.505"),
+            std::string::npos)
+      << why;
+  // width >= thickness (slider flexure 0.3177 mm thick).
+  d = sss;
+  d.joints[2].width = d.joints[2].thickness;
+  EXPECT_EQ(refusal(d), "");
+  d.joints[2].width *= 0.99;
+  why = refusal(d);
+  EXPECT_NE(why.find("slider pivot 3 segment [slider]: width/thickness = 0.99"), std::string::npos)
+      << why;
+  // |P| L^2/EI <= 1e3: a thin ground strip carries the pin force the stiff middle and slider
+  // flexures set, P nearly independent of its own thickness (k1 << k2, k3), so alpha^2 ~ 1/h^3.
+  // Find the printed alpha^2 at h = 5 um, check it against P L^2/(E b h^3/12) from the printed P,
+  // and that 0.95 and 1.05 times the predicted limiting thickness fall on either side.
+  d = sss;
+  d.joints[0].thickness = 5e-6;
+  why = refusal(d);
+  const auto number_after = [&](const std::string& key) {
+    const std::size_t at = why.find(key);
+    EXPECT_NE(at, std::string::npos) << key << " in " << why;
+    return at == std::string::npos ? 0.0 : std::stod(why.substr(at + key.size()));
+  };
+  const double alpha2 = number_after("load parameter |P| L^2/(EI) = ");
+  const double P = number_after("largest PRBM pin force ");
+  const double EI = d.E * d.joints[0].width * std::pow(5e-6, 3) / 12.0;
+  EXPECT_NEAR(alpha2, P * std::pow(d.joints[0].length, 2) / EI, 1e-3 * alpha2);
+  EXPECT_NE(why.find("ground pivot 1 segment [ground]"), std::string::npos) << why;
+  const double h_limit = 5e-6 * std::cbrt(alpha2 / SlenderBeamLimits::kMaxLoadParameter);
+  d.joints[0].thickness = 1.05 * h_limit;
+  EXPECT_EQ(refusal(d), "");
+  d.joints[0].thickness = 0.95 * h_limit;
+  EXPECT_NE(refusal(d).find("load parameter"), std::string::npos);
+  // |P|/(EA) <= 0.05: a 10 um, 0.3 mm ground flexure against a 2 mm thick slider flexure
+  // (alpha^2 within its limit, h/L = 0.033; only the axial strain is out of range).
+  d = sss;
+  d.joints[0].thickness = 10e-6;
+  d.joints[0].length = 0.3e-3;
+  d.joints[2].thickness = 2e-3;
+  d.joints[2].length = 4e-3;
+  why = refusal(d);
+  const double strain = number_after("axial strain |P|/(EA) = ");
+  EXPECT_NEAR(strain,
+              number_after("largest PRBM pin force ") / (d.E * d.joints[0].width * 10e-6),
+              1e-3 * strain);
+  EXPECT_GT(strain, SlenderBeamLimits::kMaxAxialStrain);
+  // Every built-in design, Howell design and thesis sub-class lies inside all four limits.
+  for (const MechanismDesign& b : builtin_mechanisms()) EXPECT_EQ(refusal(b), "") << b.name;
+  for (const MechanismDesign& b : howell_mechanisms()) EXPECT_EQ(refusal(b), "") << b.name;
+  for (const cfm::CfmSubclass& row : cfm::thesis_subclasses()) {
+    EXPECT_NO_THROW(find_builtin_mechanism(row.name)) << row.name;
+  }
+}
+
+// Percent constant force (thesis eq. 5.22, 100 min/max) on hand-made curves: a force of one sign
+// gives the ratio of its extreme magnitudes; a force that reaches zero or changes sign is flagged
+// and reported as 0 (it was -5.45 % for a force changing sign, issue 11).
+TEST(ConstantForce, PercentOnlyForAForceOfOneSign) {
+  ConstantForceMeasure m = constant_force_measure({2.0, 1.0, 4.0});
+  EXPECT_EQ(m.percent, 25.0);
+  EXPECT_FALSE(m.vanishes);
+  EXPECT_FALSE(m.changes_sign);
+  m = constant_force_measure({-2.0, -4.0});  // pulling throughout: as constant as its mirror
+  EXPECT_EQ(m.percent, 50.0);
+  EXPECT_FALSE(m.vanishes);
+  m = constant_force_measure({0.43, 0.2, -0.0234});
+  EXPECT_EQ(m.percent, 0.0);
+  EXPECT_TRUE(m.vanishes);
+  EXPECT_TRUE(m.changes_sign);
+  EXPECT_EQ(m.min_force, -0.0234);
+  EXPECT_EQ(m.max_force, 0.43);
+  m = constant_force_measure({1.0, 0.5, 1e-12});  // zero to rounding (cfm's force_vanishes)
+  EXPECT_EQ(m.percent, 0.0);
+  EXPECT_TRUE(m.vanishes);
+  EXPECT_FALSE(m.changes_sign);
+  m = constant_force_measure({1.0, 1e-8});  // small but real: 1e-6 %
+  EXPECT_FALSE(m.vanishes);
+  EXPECT_NEAR(m.percent, 1e-6, 1e-20);
+  m = constant_force_measure({0.0, 0.0});
+  EXPECT_TRUE(m.vanishes);
+  EXPECT_EQ(m.percent, 0.0);
+  EXPECT_THROW(constant_force_measure({}), InvalidInput);
+}
+
 TEST(MechanismToml, ExampleFileLoads) {
   const MechanismDesign d =
       load_mechanism_toml(std::string(FLEXURE_SOURCE_DIR) + "/docs/examples/mechanism_sss.toml");
@@ -145,6 +252,17 @@ TEST(MechanismToml, ErrorsNameKeyAndLine) {
   std::string far = head;
   far.replace(far.find("stroke = 0.01"), 13, "stroke = 0.08");
   expect_error(far + "[ground]\nthickness = 1e-3\nwidth = 0.01\n", "toggle");
+  // Optional strings of another type were silently replaced by their defaults.
+  const std::string ground = "[ground]\nthickness = 1e-3\nwidth = 0.01\n";
+  expect_error("name = 5\n" + head + ground, "t.toml:1: name must be a string");
+  expect_error("note = true\n" + head + ground, "t.toml:1: note must be a string");
+  std::string material = head;
+  material.replace(material.find("E = 1e9"), 7, "E = 1e9\nname = 7");
+  expect_error(material + ground, "t.toml:7: material.name must be a string");
+  // Each value finite and > 0, but h^3 underflows: E b h^3/12 = 0, the PRBM force would be 0/0
+  // (it exited 3, "PRBM force not finite", for what is an input error).
+  expect_error(head + "[ground]\nthickness = 1e-200\nwidth = 0.01\n",
+               "ground pivot 1 segment [ground]: flexural rigidity E b h^3/12 = 0");
 }
 
 }  // namespace

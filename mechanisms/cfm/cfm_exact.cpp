@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mechanisms/constant_force.h"
 #include "mechanisms/mechanism_prbm.h"
 #include "solver/common/errors.h"
 
@@ -55,17 +56,15 @@ CfmExactResult solve_cfm_exact(const CfmResult& prbm, const CfmExactOptions& opt
   const double r_tot = d.r2 + d.r3;
 
   const mechanism::PrbmStrokeResult p = mechanism::prbm_stroke(d, options.points);
-  double pmin = INFINITY, pmax = -INFINITY, psum = 0.0;
+  double psum = 0.0;
   for (std::size_t k = 0; k < p.force.size(); ++k) {
     r.stroke_percent.push_back(100.0 * p.displacement[k] / r_tot);
     const double Phi = p.force[k] * to_Phi;
     r.Phi_prbm.push_back(Phi);
-    pmin = std::min(pmin, Phi);
-    pmax = std::max(pmax, Phi);
     psum += Phi;
   }
   r.Phi_prbm_mean = psum / static_cast<double>(p.force.size());
-  r.percent_constant_force_prbm = 100.0 * pmin / pmax;
+  r.percent_constant_force_prbm = mechanism::constant_force_measure(r.Phi_prbm).percent;
 
   const mechanism::ExactStrokeResult e = mechanism::exact_stroke(d, p.displacement, options.solver);
   r.converged = e.converged;
@@ -77,13 +76,11 @@ CfmExactResult solve_cfm_exact(const CfmResult& prbm, const CfmExactOptions& opt
     if (r.message.empty()) r.message = "exact model did not converge over the whole stroke";
     return r;
   }
-  double emin = INFINITY, emax = -INFINITY, esum = 0.0;
+  double esum = 0.0;
   for (std::size_t k = 0; k < e.points.size(); ++k) {
     const double F = e.points[k].force;
     const double Phi = F * to_Phi;
     r.Phi_exact_curve.push_back(Phi);
-    emin = std::min(emin, Phi);
-    emax = std::max(emax, Phi);
     esum += Phi;
     const double err = std::abs(p.force[k] - F) / std::abs(F);
     if (err > r.max_force_error) {
@@ -92,7 +89,10 @@ CfmExactResult solve_cfm_exact(const CfmResult& prbm, const CfmExactOptions& opt
     }
   }
   r.Phi_exact = esum / static_cast<double>(e.points.size());
-  r.percent_constant_force_exact = 100.0 * emin / emax;
+  const mechanism::ConstantForceMeasure m = mechanism::constant_force_measure(r.Phi_exact_curve);
+  r.percent_constant_force_exact = m.percent;
+  r.force_vanishes_exact = m.vanishes;
+  r.force_changes_sign_exact = m.changes_sign;
   if (!std::isfinite(r.Phi_exact) || !std::isfinite(r.max_force_error)) {
     r.converged = false;
     r.message = "exact model returned a non-finite force";

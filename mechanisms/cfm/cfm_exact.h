@@ -37,12 +37,17 @@ struct CfmExactResult {
   std::vector<double> Phi_prbm;         // PRBM F r2/k_ref per point (dimensional PRBM, rescaled)
   std::vector<double> Phi_exact_curve;  // exact F r2/k_ref per point
   double Phi_prbm_mean = 0.0;           // mean of Phi_prbm (equals CfmModel with kUniform)
-  double percent_constant_force_prbm = 0.0;   // 100 min/max of Phi_prbm
-  double Phi_exact = 0.0;                     // mean of Phi_exact_curve
-  double percent_constant_force_exact = 0.0;  // 100 min/max of Phi_exact_curve
-  double max_force_error = 0.0;               // max over the stroke of |F_prbm - F_exact|/|F_exact|
-  double max_force_error_at_percent = 0.0;    // stroke (% of r2 + r3) of that maximum
-  bool converged = false;                     // every exact point converged
+  // 100 min/max of Phi_prbm and of Phi_exact_curve; 0 where that force vanishes or changes sign
+  // within the stroke (mechanisms/constant_force.h; the exact force of a class 1A mechanism
+  // clamped at the toggle turns negative before it: -5.33 % for lpp, R = 0.8853).
+  double percent_constant_force_prbm = 0.0;
+  double Phi_exact = 0.0;  // mean of Phi_exact_curve
+  double percent_constant_force_exact = 0.0;
+  bool force_vanishes_exact = false;        // Phi_exact_curve is zero within the stroke
+  bool force_changes_sign_exact = false;    // Phi_exact_curve takes both signs
+  double max_force_error = 0.0;             // max over the stroke of |F_prbm - F_exact|/|F_exact|
+  double max_force_error_at_percent = 0.0;  // stroke (% of r2 + r3) of that maximum
+  bool converged = false;                   // every exact point converged
   std::string message;
   int iterations = 0;     // shooting Newton iterations over the stroke
   double residual = 0.0;  // largest exact-point residual
