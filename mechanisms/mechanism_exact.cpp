@@ -151,28 +151,25 @@ ExactMechanismSolver::ExactMechanismSolver(MechanismDesign design, Options optio
 }
 
 bool ExactMechanismSolver::out_of_time() const {
-  return options_.deadline != std::chrono::steady_clock::time_point::max() &&
-         std::chrono::steady_clock::now() > options_.deadline;
+  return options_.work_spent != nullptr && options_.work_limit > 0.0 &&
+         static_cast<double>(*options_.work_spent) > options_.work_limit;
+}
+
+void ExactMechanismSolver::charge(long steps) const {
+  if (options_.work_spent != nullptr) *options_.work_spent += steps;
 }
 
 std::string ExactMechanismSolver::budget_message() const {
   return fmt::format(
-      "work budget exhausted (the exact model gives up after {:g} s + {:g} s per stroke point of "
-      "wall-clock time; docs/mechanisms.md \"Work budget\")",
-      options_.time_budget,
-      options_.time_budget_per_point);
+      "work budget exhausted (the exact model gives up after {:.3g} integrator steps: {:.3g} + "
+      "{:.3g} per stroke point; docs/mechanisms.md \"Work budget\")",
+      options_.work_limit,
+      options_.work_budget,
+      options_.work_budget_per_point);
 }
 
-std::chrono::steady_clock::time_point exact_deadline(const ExactMechanismSolver::Options& options,
-                                                     std::size_t points) {
-  if (options.deadline != std::chrono::steady_clock::time_point::max()) return options.deadline;
-  const double seconds =
-      options.time_budget + options.time_budget_per_point * static_cast<double>(points);
-  // Beyond a year the budget is no limit (and the duration arithmetic would overflow).
-  if (!(seconds < 3.2e7)) return std::chrono::steady_clock::time_point::max();
-  return std::chrono::steady_clock::now() +
-         std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-             std::chrono::duration<double>(std::max(seconds, 0.0)));
+double exact_work_limit(const ExactMechanismSolver::Options& options, std::size_t points) {
+  return options.work_budget + options.work_budget_per_point * static_cast<double>(points);
 }
 
 SegmentChain ExactMechanismSolver::chain_at(double displacement, double phi) const {
@@ -241,6 +238,7 @@ ExactPoint ExactMechanismSolver::solve_direct(double displacement,
   std::string history;
   if (previous != nullptr && previous->converged) {
     r = solver.solve_from(p.chain, previous->unknowns);
+    charge(r.integrator_steps);
     p.iterations += r.iterations;
     if (!r.converged) history = "from the previous point: " + r.message + "; ";
   }
@@ -252,6 +250,7 @@ ExactPoint ExactMechanismSolver::solve_direct(double displacement,
     std::vector<double> g = prbm_guess(s, *p.chain.prescribed.x * length_scale_, 0.0, m_tip);
     g[0] /= moment_scale_, g[1] /= force_scale_, g[2] /= force_scale_;
     r = solver.solve_from(p.chain, g);
+    charge(r.integrator_steps);
     p.iterations += r.iterations;
     if (!r.converged) history += "from the PRBM guess: " + r.message + "; ";
   }
@@ -259,6 +258,7 @@ ExactPoint ExactMechanismSolver::solve_direct(double displacement,
   // the three attempts. docs/mechanisms.md "Work budget".)
   if (!r.converged && !out_of_time()) {
     r = solver.solve(p.chain);
+    charge(r.integrator_steps);
     p.iterations += r.iterations;
   } else if (!r.converged) {
     r.message = budget_message();
@@ -324,6 +324,7 @@ ExactPoint ExactMechanismSolver::solve_two_force(double displacement,
       return e;
     }
     e.sr = solver.solve_from(make_chain(q, f), {m0});
+    charge(e.sr.integrator_steps);
     p.iterations += e.sr.iterations;
     if (!e.sr.converged) return e;
     e.ok = true;
@@ -431,7 +432,8 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
                                const StrokeProgress& progress) {
   // The work budget runs from here (docs/mechanisms.md "Work budget").
   ExactMechanismSolver::Options options = options_in;
-  options.deadline = exact_deadline(options_in, displacements.size());
+  options.work_spent = std::make_shared<long>(0);
+  options.work_limit = exact_work_limit(options_in, displacements.size());
   const ExactMechanismSolver solver(design, options);
   ExactStrokeResult result;
   result.points.reserve(displacements.size());
@@ -503,6 +505,7 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
                       displacements.size(),
                       solver.out_of_time() ? solver.budget_message() + "; last attempts: " : "",
                       p.message);
+      result.integrator_steps = *options.work_spent;
       return result;
     }
     previous = &result.points.back();
@@ -510,6 +513,7 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
   }
   result.converged = true;
   result.message = fmt::format("{} points converged", displacements.size());
+  result.integrator_steps = *options.work_spent;
   return result;
 }
 

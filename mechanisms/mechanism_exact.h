@@ -31,9 +31,9 @@
 //    Modelling a pin as a very compliant flexure would make the shooting problem ill-conditioned
 //    (theta' = m/EI with EI -> 0) and add a spurious spring, so it is not done.
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -115,20 +115,22 @@ class ExactMechanismSolver {
     int max_newton_iterations = 30;  // Newton steps per point on (Q, phi), (F, alpha) or, for the
                                      // middle pin, (P, root moments)
     bool reuse_jacobian = false;     // two-force case: start from the previous point's Jacobian
-    // Work budget of a stroke (docs/mechanisms.md "Work budget"): exact_stroke gives up, each
-    // remaining solve returning converged = false with a message naming the budget, once
-    // time_budget + time_budget_per_point * (stroke points) seconds of wall-clock time have
-    // passed: 20 s for the default 50 points. The slowest built-in strokes are the first points
-    // of 3A-lslm and 3A-lssm at a few coarse points, where the start strategies run (3A-lslm
-    // --points 3: 5.3 s on 2 shared cores; at 50 points 6 ms per point), so the budget leaves
-    // about 3 times that; near a fold or with very unequal flexures the start strategies and
-    // substeps could otherwise run for minutes (issue 11). Wall-clock, so a machine many times
-    // slower could give up on a design that converges here. A large value lifts it.
-    double time_budget = 15.0;           // s
-    double time_budget_per_point = 0.1;  // s
-    // Set by exact_stroke from the budget above (solve() called directly has none): a solve that
-    // starts, or a Newton evaluation that would start, after it returns unconverged.
-    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+    // Work budget of a stroke (docs/mechanisms.md "Work budget"), counted in integrator steps so
+    // that the same design gives up at the same point on any machine, under a sanitizer or on a
+    // loaded one: exact_stroke gives up, each remaining solve returning converged = false with a
+    // message naming the budget, once work_budget + work_budget_per_point * (stroke points)
+    // integrator steps have been spent by all its solves (the shooting solver's own steps are
+    // counted when it returns, the middle-pin Newton's at every evaluation). The slowest built-in
+    // strokes take 1.1e7 steps (3A-lslm at 3 points, where the start strategies run; about 6 s
+    // here at 2e6 steps/s) and at most 1.0e6 at the default 50 points (3A-lssm), so the budget
+    // leaves a factor of about 3.6; near a fold or with very unequal flexures the start strategies
+    // and substeps could otherwise run for minutes (issue 11). A large value lifts it.
+    double work_budget = 4e7;            // integrator steps
+    double work_budget_per_point = 2e5;  // integrator steps per stroke point
+    // Set by exact_stroke (solve() called directly has none): the steps spent so far by every
+    // solver of the stroke, shared between them, and the limit.
+    std::shared_ptr<long> work_spent;
+    double work_limit = 0.0;  // 0: no limit
     // Newton trial points that load a flexible segment beyond |F| L^2/EI = this are not
     // integrated (counted as failed evaluations, so the step is damped): the designs are limited
     // to 1e3 (SlenderBeamLimits), and 1e4 is EllipticSolver's domain. A Newton step of the
@@ -145,8 +147,10 @@ class ExactMechanismSolver {
 
   const MechanismDesign& design() const { return design_; }
   ExactSupport support() const { return support_; }
-  // Past the deadline of options_ (the work budget)?
+  // Past the work budget of options_?
   bool out_of_time() const;
+  // Adds integrator steps to the stroke's work (no-op without a budget).
+  void charge(long steps) const;
   // The message of a solve stopped by the work budget.
   std::string budget_message() const;
   // Largest nondimensional force magnitude within options_.max_load_parameter on every flexible
@@ -170,13 +174,13 @@ class ExactMechanismSolver {
   double max_force_ = INFINITY;  // see max_force()
 };
 
-// options.deadline if set, else now + time_budget + time_budget_per_point * points.
-std::chrono::steady_clock::time_point exact_deadline(const ExactMechanismSolver::Options& options,
-                                                     std::size_t points);
+// work_budget + work_budget_per_point * points.
+double exact_work_limit(const ExactMechanismSolver::Options& options, std::size_t points);
 
 struct ExactStrokeResult {
   std::vector<ExactPoint> points;
-  bool converged = false;  // every point converged
+  bool converged = false;     // every point converged
+  long integrator_steps = 0;  // work spent by all solves of the stroke (see Options::work_budget)
   std::string message;
   int iterations = 0;
 };

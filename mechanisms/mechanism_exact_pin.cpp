@@ -25,7 +25,11 @@ MultipleShootingOptions parts_for_force(const SegmentChain& chain,
   for (const Segment& seg : chain.segments) {
     if (const auto* f = std::get_if<FlexibleSegment>(&seg)) {
       const double growth = f->length * std::sqrt(std::abs(force) / f->EI);
-      parts = std::max(parts, static_cast<int>(std::ceil(growth / o.amplification_budget)));
+      // Clamp as a double before the int conversion (a NaN or huge trial force must not overflow).
+      const double wanted = std::ceil(growth / o.amplification_budget);
+      const double upper = std::max(1, o.max_parts_per_segment);
+      parts = std::max(parts,
+                       static_cast<int>(std::isfinite(wanted) ? std::min(wanted, upper) : upper));
     }
   }
   o.min_parts_per_segment =
@@ -100,6 +104,13 @@ class PinnedMiddleSystem {
       return e;
     }
     ShootingEvaluation ec, ek;
+    const long steps_before = integrator.steps_taken();
+    struct Charge {
+      const ExactMechanismSolver& solver;
+      const ElasticaIntegrator& integrator;
+      long before;
+      ~Charge() { solver.charge(integrator.steps_taken() - before); }
+    } charge_on_return{solver_, integrator, steps_before};
     if (!crank_.evaluate(
             part(u, crank_offset(), crank_.size()), 1.0, true, false, integrator, ec) ||
         !coupler_.evaluate(
@@ -373,7 +384,11 @@ ExactPoint ExactMechanismSolver::solve_pinned_ends(double displacement,
     }
     // Continuation from zero load only for the very first evaluation of a stroke (see above).
     e.sr = solver.solve_from(make_chain(v), {m0});
-    if (!e.sr.converged && fallback && !out_of_time()) e.sr = solver.solve(make_chain(v));
+    charge(e.sr.integrator_steps);
+    if (!e.sr.converged && fallback && !out_of_time()) {
+      e.sr = solver.solve(make_chain(v));
+      charge(e.sr.integrator_steps);
+    }
     p.iterations += e.sr.iterations;
     if (!e.sr.converged) return e;
     e.ok = true;

@@ -68,10 +68,13 @@ ShootingProblem::ShootingProblem(const SegmentChain& chain,
   for (int j = 0; j < n; ++j) {
     if (const auto* flex = std::get_if<FlexibleSegment>(&chain_.segments[j])) {
       const double growth = flex->length * std::sqrt(force_scale / min_EI(*flex));
-      int parts = static_cast<int>(std::ceil(growth / options.amplification_budget));
-      parts = std::clamp(parts,
-                         std::max(1, options.min_parts_per_segment),
-                         std::max(1, options.max_parts_per_segment));
+      // Clamp as a double first: an extreme load (or a NaN that validation missed) must not
+      // overflow the int conversion.
+      const double lower = std::max(1, options.min_parts_per_segment);
+      const double upper = std::max(1, options.max_parts_per_segment);
+      const double wanted = std::ceil(growth / options.amplification_budget);
+      const int parts =
+          static_cast<int>(std::isfinite(wanted) ? std::clamp(wanted, lower, upper) : upper);
       for (int p = 0; p < parts; ++p) {
         IntegrationPiece piece;
         piece.segment = j;
