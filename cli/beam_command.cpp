@@ -9,8 +9,8 @@
 #include "cli/beam_methods.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "io/chain_toml.h"
-#include "solver/common/errors.h"
+#include "flexure/io/chain_toml.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {
 namespace {

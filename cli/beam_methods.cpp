@@ -7,13 +7,13 @@
 #include <cstdlib>
 #include <limits>
 
-#include "elements/fixed_pinned_segment.h"
-#include "io/bench/method_selector.h"
-#include "solver/chain/chain_algorithm_solver.h"
-#include "solver/common/errors.h"
-#include "solver/elliptic/elliptic_solver.h"
-#include "solver/inverse/tip_target.h"
-#include "solver/shooting/shooting_solver.h"
+#include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/benchmarks/studies/method_selector.h"
+#include "flexure/solver/chain/chain_algorithm_solver.h"
+#include "flexure/solver/common/errors.h"
+#include "flexure/solver/elliptic/elliptic_solver.h"
+#include "flexure/solver/inverse/tip_target.h"
+#include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure::cli {
 namespace {

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "solver/chain_model/segment_chain.h"
-#include "solver/common/end_load.h"
+#include "flexure/solver/chain_model/segment_chain.h"
+#include "flexure/solver/common/end_load.h"
 
 namespace flexure::cli {
 
@@ -38,7 +38,7 @@ struct BeamProblem {
   std::string chain_variant = "corrected";  // chain algorithm: howell | corrected
   std::optional<SegmentChain> chain;        // from --chain FILE.toml (overrides the loads above)
   // Issue 6: `--method auto` picks the cheapest method whose relative error is within this
-  // (io/bench/method_selector.h).
+  // (benchmarks/studies/method_selector.h).
   double tolerance = 1e-6;
 
   // The segment chain this problem describes (the TOML chain, or Howell's uniform cantilever with
@@ -94,7 +94,7 @@ std::string other_methods_hint(const std::string& failed_method);
 
 // The method `auto` resolves to for this problem: the cheapest whose error is within
 // problem.tolerance (PRBM inside its validity limits and measured accuracy, else elliptic for
-// Howell's free cantilever, else shooting), with the reason (io/bench/method_selector.h).
+// Howell's free cantilever, else shooting), with the reason (benchmarks/studies/method_selector.h).
 struct MethodResolution {
   std::string method;
   std::string reason;

@@ -8,10 +8,10 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "io/bench/bench_run.h"
-#include "io/hdf5_file.h"
-#include "io/output_path.h"
-#include "solver/common/errors.h"
+#include "flexure/benchmarks/studies/bench_run.h"
+#include "flexure/io/hdf5_file.h"
+#include "flexure/io/output_path.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {
 namespace {

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "cli/cli_common.h"
-#include "mechanisms/cfm/cfm_exact.h"
-#include "mechanisms/cfm/cfm_model.h"
+#include "flexure/mechanisms/cfm/cfm_exact.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 
 namespace flexure::cli {
 

@@ -29,11 +29,11 @@
 #include "cli/cfm_cli_support.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "mechanisms/cfm/cfm_comparison.h"
-#include "mechanisms/cfm/cfm_exact.h"
-#include "mechanisms/cfm/cfm_model.h"
-#include "mechanisms/cfm/cfm_subclasses.h"
-#include "solver/common/errors.h"
+#include "flexure/mechanisms/cfm/cfm_comparison.h"
+#include "flexure/mechanisms/cfm/cfm_exact.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
+#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {
 namespace {

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "cli/cfm_cli_support.h"
-#include "mechanisms/cfm/cfm_comparison.h"
-#include "mechanisms/cfm/cfm_subclasses.h"
-#include "solver/common/errors.h"
+#include "flexure/mechanisms/cfm/cfm_comparison.h"
+#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {
 namespace {

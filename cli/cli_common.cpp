@@ -8,7 +8,7 @@
 #include <exception>
 #include <iostream>
 
-#include "solver/common/errors.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {
 namespace {

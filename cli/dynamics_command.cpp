@@ -22,12 +22,12 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "flexure/version.h"
-#include "io/hdf5_file.h"
-#include "io/output_path.h"
-#include "mechanisms/dynamics/cfsm_designs.h"
-#include "mechanisms/dynamics/forward_dynamics.h"
-#include "mechanisms/dynamics/inverse_dynamics.h"
-#include "solver/common/errors.h"
+#include "flexure/io/hdf5_file.h"
+#include "flexure/io/output_path.h"
+#include "flexure/mechanisms/dynamics/cfsm_designs.h"
+#include "flexure/mechanisms/dynamics/forward_dynamics.h"
+#include "flexure/mechanisms/dynamics/inverse_dynamics.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {
 namespace {

@@ -26,8 +26,8 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "flexure/version.h"
-#include "io/hdf5_file.h"
-#include "solver/common/gsl_guard.h"
+#include "flexure/io/hdf5_file.h"
+#include "flexure/solver/common/gsl_guard.h"
 
 int main(int argc, char** argv) {
   flexure::disable_gsl_abort();

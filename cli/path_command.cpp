@@ -11,12 +11,12 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "flexure/version.h"
-#include "io/chain_toml.h"
-#include "io/hdf5_file.h"
-#include "io/output_path.h"
-#include "solver/chain/chain_algorithm_solver.h"
-#include "solver/common/errors.h"
-#include "solver/shooting/shooting_solver.h"
+#include "flexure/io/chain_toml.h"
+#include "flexure/io/hdf5_file.h"
+#include "flexure/io/output_path.h"
+#include "flexure/solver/chain/chain_algorithm_solver.h"
+#include "flexure/solver/common/errors.h"
+#include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure::cli {
 namespace {

@@ -20,14 +20,14 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "elements/end_moment_segment.h"
-#include "elements/fixed_pinned_segment.h"
-#include "elements/initially_curved_cantilever.h"
-#include "elements/prbm_curve_fits.h"
-#include "elements/prbm_derivation.h"
-#include "elements/prbm_tables.h"
-#include "solver/common/errors.h"
-#include "solver/elliptic/elliptic_solver.h"
+#include "flexure/elements/end_moment_segment.h"
+#include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/elements/initially_curved_cantilever.h"
+#include "flexure/elements/prbm_curve_fits.h"
+#include "flexure/elements/prbm_derivation.h"
+#include "flexure/elements/prbm_tables.h"
+#include "flexure/solver/common/errors.h"
+#include "flexure/solver/elliptic/elliptic_solver.h"
 
 namespace flexure::cli {
 namespace {

@@ -10,10 +10,10 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/validation_problems.h"
-#include "io/beam_sweep.h"
-#include "io/hdf5_file.h"
-#include "io/output_path.h"
-#include "solver/common/errors.h"
+#include "flexure/io/beam_sweep.h"
+#include "flexure/io/hdf5_file.h"
+#include "flexure/io/output_path.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {
 namespace {

@@ -169,7 +169,7 @@ std::vector<ValidationMethod> validation_methods() {
                      0.0,
                      "exact"});
   // CVODES at rtol 1e-12: agrees with the elliptic solution to 1e-9 over a 175-case grid
-  // (tests/shooting_elliptic_grid_test.cpp).
+  // (tests/solver/shooting_elliptic_grid_test.cpp).
   methods.push_back({"shooting",
                      [](const ReferenceProblem&) { return true; },
                      [](const BeamProblem& problem) { return solve_beam("shooting", problem); },

@@ -1,13 +1,13 @@
-#include "elements/curved_pinned_pinned_segment.h"
+#include "flexure/elements/curved_pinned_pinned_segment.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <utility>
 
-#include "elements/prbm_curve_fits.h"
-#include "elements/prbm_tables.h"
-#include "solver/common/errors.h"
+#include "flexure/elements/prbm_curve_fits.h"
+#include "flexure/elements/prbm_tables.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure {
 

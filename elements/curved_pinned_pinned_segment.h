@@ -7,7 +7,7 @@
 // the constants say which one they come from.
 #include <string>
 
-#include "elements/prbm_element.h"
+#include "flexure/elements/prbm_element.h"
 
 namespace flexure {
 

@@ -4,8 +4,8 @@
 // 2.59, 2.64), so the constants can be re-derived in closed form (derive_end_moment()).
 #include <string>
 
-#include "elements/prbm_element.h"
-#include "elements/prbm_tables.h"
+#include "flexure/elements/prbm_element.h"
+#include "flexure/elements/prbm_tables.h"
 
 namespace flexure {
 

@@ -1,11 +1,11 @@
-#include "elements/fixed_fixed_segment.h"
+#include "flexure/elements/fixed_fixed_segment.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <utility>
 
-#include "solver/common/errors.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure {
 

@@ -8,8 +8,8 @@
 // Theta limit.
 #include <string>
 
-#include "elements/fixed_pinned_segment.h"
-#include "elements/prbm_element.h"
+#include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/elements/prbm_element.h"
 
 namespace flexure {
 

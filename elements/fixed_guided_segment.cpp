@@ -1,4 +1,4 @@
-#include "elements/fixed_guided_segment.h"
+#include "flexure/elements/fixed_guided_segment.h"
 
 #include <cmath>
 #include <utility>

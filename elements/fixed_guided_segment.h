@@ -5,8 +5,8 @@
 // gamma*l, each with K = 2 gamma K_theta EI/l (eq. 5.105); theta0 = 0 (eq. 5.100).
 #include <string>
 
-#include "elements/fixed_pinned_segment.h"
-#include "elements/prbm_element.h"
+#include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/elements/prbm_element.h"
 
 namespace flexure {
 

@@ -1,4 +1,4 @@
-#include "elements/fixed_pinned_segment.h"
+#include "flexure/elements/fixed_pinned_segment.h"
 
 #include <fmt/format.h>
 
@@ -6,9 +6,9 @@
 #include <numbers>
 #include <utility>
 
-#include "elements/prbm_curve_fits.h"
-#include "elements/prbm_tables.h"
-#include "solver/common/errors.h"
+#include "flexure/elements/prbm_curve_fits.h"
+#include "flexure/elements/prbm_tables.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure {
 namespace {

@@ -7,7 +7,7 @@
 // derivation against the exact solution (prbm_derivation.h, FixedPinnedConstants::from_derivation).
 #include <string>
 
-#include "elements/prbm_element.h"
+#include "flexure/elements/prbm_element.h"
 
 namespace flexure {
 

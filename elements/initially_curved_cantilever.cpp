@@ -1,4 +1,4 @@
-#include "elements/initially_curved_cantilever.h"
+#include "flexure/elements/initially_curved_cantilever.h"
 
 #include <fmt/format.h>
 
@@ -6,9 +6,9 @@
 #include <numbers>
 #include <utility>
 
-#include "elements/prbm_derivation.h"
-#include "elements/prbm_tables.h"
-#include "solver/common/errors.h"
+#include "flexure/elements/prbm_derivation.h"
+#include "flexure/elements/prbm_tables.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure {
 

@@ -10,7 +10,7 @@
 // flagged as such.
 #include <string>
 
-#include "elements/prbm_element.h"
+#include "flexure/elements/prbm_element.h"
 
 namespace flexure {
 

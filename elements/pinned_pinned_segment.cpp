@@ -1,11 +1,11 @@
-#include "elements/pinned_pinned_segment.h"
+#include "flexure/elements/pinned_pinned_segment.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "solver/common/errors.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure {
 

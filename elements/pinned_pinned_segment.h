@@ -6,7 +6,7 @@
 #include <numbers>
 #include <string>
 
-#include "elements/prbm_element.h"
+#include "flexure/elements/prbm_element.h"
 
 namespace flexure {
 

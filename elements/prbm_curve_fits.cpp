@@ -1,11 +1,11 @@
-#include "elements/prbm_curve_fits.h"
+#include "flexure/elements/prbm_curve_fits.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <string>
 
-#include "solver/common/errors.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure {
 namespace {

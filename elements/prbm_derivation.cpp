@@ -1,4 +1,4 @@
-#include "elements/prbm_derivation.h"
+#include "flexure/elements/prbm_derivation.h"
 
 #include <fmt/format.h>
 
@@ -7,9 +7,9 @@
 #include <limits>
 #include <numbers>
 
-#include "elements/prbm_tables.h"
-#include "solver/common/errors.h"
-#include "solver/elliptic/elliptic_solver.h"
+#include "flexure/elements/prbm_tables.h"
+#include "flexure/solver/common/errors.h"
+#include "flexure/solver/elliptic/elliptic_solver.h"
 
 namespace flexure {
 namespace {

@@ -1,4 +1,4 @@
-#include "elements/prbm_element.h"
+#include "flexure/elements/prbm_element.h"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "solver/common/errors.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure {
 

@@ -15,7 +15,7 @@
 #include <cmath>
 #include <string>
 
-#include "solver/common/end_load.h"
+#include "flexure/solver/common/end_load.h"
 
 namespace flexure {
 

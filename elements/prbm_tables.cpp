@@ -1,10 +1,10 @@
-#include "elements/prbm_tables.h"
+#include "flexure/elements/prbm_tables.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 
-#include "solver/common/errors.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure {
 

@@ -1,11 +1,11 @@
-#include "elements/small_length_flexural_pivot.h"
+#include "flexure/elements/small_length_flexural_pivot.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "solver/common/errors.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure {
 

@@ -7,7 +7,7 @@
 // Nondimensional in the flexure length l: the rigid segment is rigid_length_ratio = L/l long.
 #include <string>
 
-#include "elements/prbm_element.h"
+#include "flexure/elements/prbm_element.h"
 
 namespace flexure {
 

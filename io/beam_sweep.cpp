@@ -1,4 +1,4 @@
-#include "io/beam_sweep.h"
+#include "flexure/io/beam_sweep.h"
 
 #include <fmt/format.h>
 
@@ -12,7 +12,7 @@
 #include <thread>
 
 #include "flexure/version.h"
-#include "solver/common/errors.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::io {
 namespace {

@@ -1,7 +1,7 @@
 #pragma once
 // A load sweep of the end-loaded cantilever and its HDF5 layout (`flexure sweep beam`).
 //
-// It lives in the library, not in cli/, so that benchmarks/sweep_bench.cpp measures exactly what
+// It lives in the library, not in cli/, so that benchmarks/perf/sweep_bench.cpp measures exactly what
 // the tool does: solve every point (optionally on a few threads), then write each column with a
 // single HDF5 call.
 //
@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "io/hdf5_file.h"
-#include "solver/common/end_load.h"
+#include "flexure/io/hdf5_file.h"
+#include "flexure/solver/common/end_load.h"
 
 namespace flexure::io {
 

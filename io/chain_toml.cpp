@@ -1,4 +1,4 @@
-#include "io/chain_toml.h"
+#include "flexure/io/chain_toml.h"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -8,8 +8,8 @@
 #include <optional>
 #include <set>
 
-#include "io/toml_support.h"
-#include "solver/common/errors.h"
+#include "flexure/io/toml_support.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::io {
 namespace {

@@ -5,7 +5,7 @@
 // InvalidInput errors that name the file, the key and its line.
 #include <string>
 
-#include "solver/chain_model/segment_chain.h"
+#include "flexure/solver/chain_model/segment_chain.h"
 
 namespace flexure::io {
 

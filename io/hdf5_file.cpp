@@ -1,4 +1,4 @@
-#include "io/hdf5_file.h"
+#include "flexure/io/hdf5_file.h"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -11,8 +11,8 @@
 #include <mutex>
 #include <utility>
 
-#include "io/output_path.h"
-#include "io/temp_file_cleanup.h"
+#include "flexure/io/output_path.h"
+#include "flexure/io/temp_file_cleanup.h"
 
 namespace flexure::io {
 namespace {

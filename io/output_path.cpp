@@ -1,4 +1,4 @@
-#include "io/output_path.h"
+#include "flexure/io/output_path.h"
 
 #include <fmt/format.h>
 #include <pwd.h>
@@ -13,7 +13,7 @@
 #include <sstream>
 #include <vector>
 
-#include "solver/common/errors.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::io {
 namespace {

@@ -1,4 +1,4 @@
-#include "io/temp_file_cleanup.h"
+#include "flexure/io/temp_file_cleanup.h"
 
 #include <unistd.h>
 

@@ -1,4 +1,4 @@
-#include "io/toml_support.h"
+#include "flexure/io/toml_support.h"
 
 #include <fmt/format.h>
 
@@ -9,7 +9,7 @@
 #include <fstream>
 #include <vector>
 
-#include "solver/common/errors.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::io {
 

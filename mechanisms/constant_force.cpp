@@ -1,9 +1,9 @@
-#include "mechanisms/constant_force.h"
+#include "flexure/mechanisms/constant_force.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "solver/common/errors.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {
 

@@ -1,4 +1,4 @@
-#include "mechanisms/howell_designs.h"
+#include "flexure/mechanisms/howell_designs.h"
 
 #include <fmt/format.h>
 
@@ -6,9 +6,9 @@
 #include <cctype>
 #include <cmath>
 
-#include "mechanisms/cfm/cfm_subclasses.h"
-#include "mechanisms/cfm/slider_crank.h"
-#include "solver/common/errors.h"
+#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/slider_crank.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {
 namespace {

@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#include "mechanisms/mechanism.h"
+#include "flexure/mechanisms/mechanism.h"
 
 namespace flexure::mechanism {
 

@@ -1,12 +1,12 @@
-#include "mechanisms/inversion.h"
+#include "flexure/mechanisms/inversion.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cctype>
 
-#include "mechanisms/prbm_virtual_work.h"
-#include "solver/common/errors.h"
+#include "flexure/mechanisms/prbm_virtual_work.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {
 

@@ -18,7 +18,7 @@
 #include <optional>
 #include <string>
 
-#include "mechanisms/mechanism.h"
+#include "flexure/mechanisms/mechanism.h"
 
 namespace flexure::mechanism {
 

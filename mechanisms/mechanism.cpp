@@ -1,4 +1,4 @@
-#include "mechanisms/mechanism.h"
+#include "flexure/mechanisms/mechanism.h"
 
 #include <fmt/format.h>
 
@@ -6,13 +6,13 @@
 #include <cctype>
 #include <cmath>
 
-#include "mechanisms/cfm/cfm_subclasses.h"
-#include "mechanisms/cfm/slider_crank.h"
-#include "mechanisms/howell_designs.h"
-#include "mechanisms/inversion.h"
-#include "mechanisms/mechanism_prbm.h"
-#include "mechanisms/modified_designs.h"
-#include "solver/common/errors.h"
+#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/slider_crank.h"
+#include "flexure/mechanisms/howell_designs.h"
+#include "flexure/mechanisms/inversion.h"
+#include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/modified_designs.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {
 namespace {

@@ -1,13 +1,13 @@
-#include "mechanisms/mechanism_analysis.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "elements/fixed_pinned_segment.h"
-#include "mechanisms/constant_force.h"
-#include "solver/common/errors.h"
+#include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/mechanisms/constant_force.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {
 namespace {

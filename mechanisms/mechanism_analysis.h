@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "mechanisms/mechanism.h"
-#include "mechanisms/mechanism_exact.h"
-#include "mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/mechanism.h"
+#include "flexure/mechanisms/mechanism_exact.h"
+#include "flexure/mechanisms/mechanism_prbm.h"
 
 namespace flexure::mechanism {
 

@@ -1,12 +1,12 @@
-#include "mechanisms/mechanism_exact.h"
+#include "flexure/mechanisms/mechanism_exact.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "mechanisms/mechanism_prbm.h"
-#include "solver/common/errors.h"
+#include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {
 namespace {

@@ -38,10 +38,10 @@
 #include <string>
 #include <vector>
 
-#include "mechanisms/mechanism.h"
-#include "solver/chain/chain_algorithm_solver.h"
-#include "solver/chain_model/segment_chain.h"
-#include "solver/shooting/shooting_solver.h"
+#include "flexure/mechanisms/mechanism.h"
+#include "flexure/solver/chain/chain_algorithm_solver.h"
+#include "flexure/solver/chain_model/segment_chain.h"
+#include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure::mechanism {
 

@@ -26,8 +26,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "mechanisms/mechanism_exact.h"
-#include "solver/shooting/shooting_problem.h"
+#include "flexure/mechanisms/mechanism_exact.h"
+#include "flexure/solver/shooting/shooting_problem.h"
 
 namespace flexure::mechanism {
 namespace {

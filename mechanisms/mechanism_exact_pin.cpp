@@ -5,10 +5,10 @@
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "mechanisms/broyden_newton_2d.h"
-#include "mechanisms/mechanism_exact.h"
-#include "mechanisms/mechanism_prbm.h"
-#include "solver/shooting/shooting_problem.h"
+#include "flexure/mechanisms/broyden_newton_2d.h"
+#include "flexure/mechanisms/mechanism_exact.h"
+#include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/solver/shooting/shooting_problem.h"
 
 namespace flexure::mechanism {
 namespace {

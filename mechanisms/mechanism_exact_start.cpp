@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "mechanisms/mechanism_exact.h"
+#include "flexure/mechanisms/mechanism_exact.h"
 
 namespace flexure::mechanism {
 namespace {

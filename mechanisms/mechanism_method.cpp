@@ -1,12 +1,12 @@
-#include "mechanisms/mechanism_method.h"
+#include "flexure/mechanisms/mechanism_method.h"
 
 #include <fmt/format.h>
 
 #include <map>
 
-#include "mechanisms/mechanism_exact.h"
-#include "mechanisms/modified_designs.h"
-#include "solver/common/errors.h"
+#include "flexure/mechanisms/mechanism_exact.h"
+#include "flexure/mechanisms/modified_designs.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {
 

@@ -4,13 +4,13 @@
 // its measured force error for this configuration, with a safety margin, is within the tolerance.
 #include <string>
 
-#include "mechanisms/mechanism.h"
+#include "flexure/mechanisms/mechanism.h"
 
 namespace flexure::mechanism {
 
 // Worst PRBM force error (relative to the exact model) measured over the full stroke of the
 // built-in design of `config` (`flexure mechanism validate --points 50`, docs/validation.md).
-// tests/mechanism_method_test.cpp recomputes these so that the table cannot go stale.
+// tests/mechanisms/mechanism_method_test.cpp recomputes these so that the table cannot go stale.
 double measured_prbm_force_error(const std::string& config);
 // The same for a design: its configuration's value, or for a modified configuration of paper 004
 // (paper_config set) the value of the built-in design of that configuration under the design's

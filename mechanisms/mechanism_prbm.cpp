@@ -1,14 +1,14 @@
-#include "mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/mechanism_prbm.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "mechanisms/cfm/slider_crank.h"
-#include "mechanisms/constant_force.h"
-#include "mechanisms/inversion.h"
-#include "solver/common/errors.h"
+#include "flexure/mechanisms/cfm/slider_crank.h"
+#include "flexure/mechanisms/constant_force.h"
+#include "flexure/mechanisms/inversion.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {
 namespace {

@@ -1,4 +1,4 @@
-#include "mechanisms/modified_designs.h"
+#include "flexure/mechanisms/modified_designs.h"
 
 #include <fmt/format.h>
 
@@ -7,8 +7,8 @@
 #include <cctype>
 #include <cmath>
 
-#include "mechanisms/dynamics/cfsm_designs.h"
-#include "solver/common/errors.h"
+#include "flexure/mechanisms/dynamics/cfsm_designs.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {
 namespace {

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "mechanisms/mechanism.h"
+#include "flexure/mechanisms/mechanism.h"
 
 namespace flexure::mechanism {
 

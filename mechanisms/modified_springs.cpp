@@ -1,13 +1,13 @@
-#include "mechanisms/modified_springs.h"
+#include "flexure/mechanisms/modified_springs.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "mechanisms/mechanism_prbm.h"
-#include "mechanisms/modified_designs.h"
-#include "solver/common/errors.h"
+#include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/modified_designs.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {
 std::array<std::optional<double>, 3> equivalent_spring_ratios(const MechanismDesign& design,

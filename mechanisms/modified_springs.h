@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "mechanisms/mechanism.h"
-#include "mechanisms/mechanism_exact.h"
+#include "flexure/mechanisms/mechanism.h"
+#include "flexure/mechanisms/mechanism_exact.h"
 
 namespace flexure::mechanism {
 

@@ -1,10 +1,10 @@
-#include "mechanisms/prbm_virtual_work.h"
+#include "flexure/mechanisms/prbm_virtual_work.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
 
-#include "solver/common/errors.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {
 

@@ -17,7 +17,7 @@ Figures written to --out:
   bench_prbm_map.png   PRBM relative error over (n, alpha2) with the validity limit
                        Theta = Theta_max (Howell Table 5.1) drawn as a line.
 --table prints a Markdown table per problem (docs/benchmarks.md); --print-prbm-map prints the
-rows of the accuracy map used by `--method auto` (io/bench/method_selector.cpp).
+rows of the accuracy map used by `--method auto` (benchmarks/studies/method_selector.cpp).
 """
 import argparse
 import math

@@ -1,4 +1,4 @@
-#include "mechanisms/cfm/cfm_comparison.h"
+#include "flexure/mechanisms/cfm/cfm_comparison.h"
 
 #include <algorithm>
 #include <cmath>

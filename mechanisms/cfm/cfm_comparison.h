@@ -12,8 +12,8 @@
 #include <optional>
 #include <string>
 
-#include "mechanisms/cfm/cfm_model.h"
-#include "mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
+#include "flexure/mechanisms/cfm/cfm_subclasses.h"
 
 namespace flexure::cfm {
 

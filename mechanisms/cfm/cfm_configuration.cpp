@@ -1,8 +1,8 @@
-#include "mechanisms/cfm/cfm_configuration.h"
+#include "flexure/mechanisms/cfm/cfm_configuration.h"
 
 #include <fmt/format.h>
 
-#include "solver/common/errors.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::cfm {
 

@@ -1,13 +1,13 @@
-#include "mechanisms/cfm/cfm_exact.h"
+#include "flexure/mechanisms/cfm/cfm_exact.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "mechanisms/constant_force.h"
-#include "mechanisms/mechanism_prbm.h"
-#include "solver/common/errors.h"
+#include "flexure/mechanisms/constant_force.h"
+#include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::cfm {
 namespace {

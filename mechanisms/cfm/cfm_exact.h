@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "mechanisms/cfm/cfm_model.h"
-#include "mechanisms/mechanism.h"
-#include "mechanisms/mechanism_exact.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
+#include "flexure/mechanisms/mechanism.h"
+#include "flexure/mechanisms/mechanism_exact.h"
 
 namespace flexure::cfm {
 

@@ -1,4 +1,4 @@
-#include "mechanisms/cfm/cfm_model.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 
 #include <fmt/format.h>
 
@@ -6,8 +6,8 @@
 #include <cmath>
 #include <limits>
 
-#include "mechanisms/cfm/slider_crank.h"
-#include "solver/common/errors.h"
+#include "flexure/mechanisms/cfm/slider_crank.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::cfm {
 namespace {

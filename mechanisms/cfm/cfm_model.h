@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "mechanisms/cfm/cfm_configuration.h"
+#include "flexure/mechanisms/cfm/cfm_configuration.h"
 
 namespace flexure::cfm {
 

@@ -1,12 +1,12 @@
-#include "mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/cfm_subclasses.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cctype>
 
-#include "mechanisms/cfm/cfm_configuration.h"
-#include "solver/common/errors.h"
+#include "flexure/mechanisms/cfm/cfm_configuration.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::cfm {
 namespace {

@@ -1,4 +1,4 @@
-#include "mechanisms/cfm/slider_crank.h"
+#include "flexure/mechanisms/cfm/slider_crank.h"
 
 #include <algorithm>
 #include <cmath>

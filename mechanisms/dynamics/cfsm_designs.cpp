@@ -1,8 +1,8 @@
-#include "mechanisms/dynamics/cfsm_designs.h"
+#include "flexure/mechanisms/dynamics/cfsm_designs.h"
 
 #include <fmt/format.h>
 
-#include "solver/common/errors.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::dynamics {
 namespace {

@@ -1,4 +1,4 @@
-#include "mechanisms/dynamics/forward_dynamics.h"
+#include "flexure/mechanisms/dynamics/forward_dynamics.h"
 
 #include <cvodes/cvodes.h>
 #include <fmt/format.h>
@@ -13,7 +13,7 @@
 #include <limits>
 #include <memory>
 
-#include "solver/common/errors.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::dynamics {
 namespace {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "mechanisms/dynamics/slider_crank_dynamics.h"
+#include "flexure/mechanisms/dynamics/slider_crank_dynamics.h"
 
 namespace flexure::dynamics {
 

@@ -9,7 +9,7 @@
 // force 100 min F/max F (paper, PCF expression after Table 10) over one period.
 #include <vector>
 
-#include "mechanisms/dynamics/slider_crank_dynamics.h"
+#include "flexure/mechanisms/dynamics/slider_crank_dynamics.h"
 
 namespace flexure::dynamics {
 

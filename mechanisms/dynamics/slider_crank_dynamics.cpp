@@ -1,11 +1,11 @@
-#include "mechanisms/dynamics/slider_crank_dynamics.h"
+#include "flexure/mechanisms/dynamics/slider_crank_dynamics.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
 
-#include "mechanisms/cfm/slider_crank.h"
-#include "solver/common/errors.h"
+#include "flexure/mechanisms/cfm/slider_crank.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::dynamics {
 namespace {

@@ -1,4 +1,4 @@
-#include "solver/chain/chain_algorithm_solver.h"
+#include "flexure/solver/chain/chain_algorithm_solver.h"
 
 #include <fmt/format.h>
 
@@ -6,12 +6,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "solver/chain/chain_discretisation.h"
-#include "solver/chain/chain_fixed_point.h"
-#include "solver/chain/chain_pass.h"
-#include "solver/chain_model/equilibrium_stability.h"
-#include "solver/chain_model/tip_reach.h"
-#include "solver/common/errors.h"
+#include "flexure/solver/chain/chain_discretisation.h"
+#include "flexure/solver/chain/chain_fixed_point.h"
+#include "flexure/solver/chain/chain_pass.h"
+#include "flexure/solver/chain_model/equilibrium_stability.h"
+#include "flexure/solver/chain_model/tip_reach.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure {
 

@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "solver/chain_model/segment_chain.h"
-#include "solver/common/end_load.h"
+#include "flexure/solver/chain_model/segment_chain.h"
+#include "flexure/solver/common/end_load.h"
 
 namespace flexure {
 

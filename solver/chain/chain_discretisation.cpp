@@ -1,4 +1,4 @@
-#include "solver/chain/chain_discretisation.h"
+#include "flexure/solver/chain/chain_discretisation.h"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numeric>
 
-#include "solver/common/errors.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure {
 

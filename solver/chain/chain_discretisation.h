@@ -4,7 +4,7 @@
 // element count in proportion to their length; a rigid segment is one element that never deflects.
 #include <vector>
 
-#include "solver/chain_model/segment_chain.h"
+#include "flexure/solver/chain_model/segment_chain.h"
 
 namespace flexure {
 

@@ -1,4 +1,4 @@
-#include "solver/chain/chain_fixed_point.h"
+#include "flexure/solver/chain/chain_fixed_point.h"
 
 #include <Eigen/Dense>
 #include <algorithm>

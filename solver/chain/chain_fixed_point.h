@@ -7,7 +7,7 @@
 // converge linearly with a rate that approaches 1 as the load grows (about 0.6 per pass at
 // alpha2 = 10 and 0.95 at alpha2 = 50 for N = 100, see docs/theory-chain.md); the fixed point is
 // unchanged by the acceleration.
-#include "solver/chain/chain_pass.h"
+#include "flexure/solver/chain/chain_pass.h"
 
 namespace flexure {
 

@@ -1,9 +1,9 @@
-#include "solver/chain/chain_pass.h"
+#include "flexure/solver/chain/chain_pass.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "solver/chain/element_flexibility.h"
+#include "flexure/solver/chain/element_flexibility.h"
 
 namespace flexure {
 

@@ -15,7 +15,7 @@
 // element, so suffix sums of p x f and p . f give every moment in constant time.
 #include <vector>
 
-#include "solver/chain/chain_discretisation.h"
+#include "flexure/solver/chain/chain_discretisation.h"
 
 namespace flexure {
 

@@ -1,4 +1,4 @@
-#include "solver/chain/element_flexibility.h"
+#include "flexure/solver/chain/element_flexibility.h"
 
 namespace flexure {
 

@@ -1,4 +1,4 @@
-#include "solver/chain_model/equilibrium_stability.h"
+#include "flexure/solver/chain_model/equilibrium_stability.h"
 
 #include <fmt/format.h>
 

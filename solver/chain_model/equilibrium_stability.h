@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "solver/chain_model/segment_chain.h"
+#include "flexure/solver/chain_model/segment_chain.h"
 
 namespace flexure {
 

@@ -1,11 +1,11 @@
-#include "solver/chain_model/segment_chain.h"
+#include "flexure/solver/chain_model/segment_chain.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "solver/common/errors.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure {
 

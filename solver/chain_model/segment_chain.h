@@ -52,7 +52,7 @@
 #include <variant>
 #include <vector>
 
-#include "solver/common/end_load.h"
+#include "flexure/solver/common/end_load.h"
 
 namespace flexure {
 

@@ -1,11 +1,11 @@
-#include "solver/chain_model/tip_reach.h"
+#include "flexure/solver/chain_model/tip_reach.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <variant>
 
-#include "solver/common/errors.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure {
 namespace {

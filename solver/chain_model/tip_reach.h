@@ -9,7 +9,7 @@
 // prescribed path of the tip leaves the reachable set.
 #include <string>
 
-#include "solver/chain_model/segment_chain.h"
+#include "flexure/solver/chain_model/segment_chain.h"
 
 namespace flexure {
 

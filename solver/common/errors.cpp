@@ -1,4 +1,4 @@
-#include "solver/common/errors.h"
+#include "flexure/solver/common/errors.h"
 
 #include <fmt/format.h>
 

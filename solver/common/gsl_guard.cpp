@@ -1,4 +1,4 @@
-#include "solver/common/gsl_guard.h"
+#include "flexure/solver/common/gsl_guard.h"
 
 #include <gsl/gsl_errno.h>
 

@@ -1,11 +1,11 @@
-#include "solver/common/load_search.h"
+#include "flexure/solver/common/load_search.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <limits>
 
-#include "solver/common/scalar_root.h"
+#include "flexure/solver/common/scalar_root.h"
 
 namespace flexure {
 namespace {

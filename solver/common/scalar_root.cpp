@@ -1,4 +1,4 @@
-#include "solver/common/scalar_root.h"
+#include "flexure/solver/common/scalar_root.h"
 
 #include <cmath>
 #include <limits>

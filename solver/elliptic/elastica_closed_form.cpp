@@ -1,9 +1,9 @@
-#include "solver/elliptic/elastica_closed_form.h"
+#include "flexure/solver/elliptic/elastica_closed_form.h"
 
 #include <cmath>
 #include <numbers>
 
-#include "solver/elliptic/elliptic_functions.h"
+#include "flexure/solver/elliptic/elliptic_functions.h"
 
 namespace flexure {
 

@@ -1,7 +1,7 @@
 #pragma once
 // The parameter set that describes one closed-form elastica; separated from the solver header so
 // that the closed-form layer does not depend on the solver.
-#include "solver/common/end_load.h"
+#include "flexure/solver/common/end_load.h"
 
 namespace flexure {
 

@@ -1,4 +1,4 @@
-#include "solver/elliptic/elliptic_functions.h"
+#include "flexure/solver/elliptic/elliptic_functions.h"
 
 #include <fmt/format.h>
 #include <gsl/gsl_errno.h>
@@ -7,9 +7,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "solver/common/errors.h"
-#include "solver/common/gsl_guard.h"
-#include "solver/common/scalar_root.h"
+#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/gsl_guard.h"
+#include "flexure/solver/common/scalar_root.h"
 
 namespace flexure::elliptic {
 namespace {

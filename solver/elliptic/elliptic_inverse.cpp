@@ -6,11 +6,11 @@
 #include <numbers>
 #include <optional>
 
-#include "solver/common/errors.h"
-#include "solver/common/load_search.h"
-#include "solver/common/scalar_root.h"
-#include "solver/elliptic/elliptic_solver.h"
-#include "solver/elliptic/howell_branch.h"
+#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/load_search.h"
+#include "flexure/solver/common/scalar_root.h"
+#include "flexure/solver/elliptic/elliptic_solver.h"
+#include "flexure/solver/elliptic/howell_branch.h"
 
 namespace flexure {
 namespace {

@@ -1,14 +1,14 @@
-#include "solver/elliptic/elliptic_solver.h"
+#include "flexure/solver/elliptic/elliptic_solver.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "solver/common/errors.h"
-#include "solver/elliptic/elastica_closed_form.h"
-#include "solver/elliptic/howell_branch.h"
-#include "solver/elliptic/load_continuation.h"
+#include "flexure/solver/common/errors.h"
+#include "flexure/solver/elliptic/elastica_closed_form.h"
+#include "flexure/solver/elliptic/howell_branch.h"
+#include "flexure/solver/elliptic/load_continuation.h"
 
 namespace flexure {
 namespace {

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "solver/common/end_load.h"
-#include "solver/elliptic/elastica_parameters.h"
+#include "flexure/solver/common/end_load.h"
+#include "flexure/solver/elliptic/elastica_parameters.h"
 
 namespace flexure {
 

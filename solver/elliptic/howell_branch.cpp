@@ -1,10 +1,10 @@
-#include "solver/elliptic/howell_branch.h"
+#include "flexure/solver/elliptic/howell_branch.h"
 
 #include <cmath>
 #include <limits>
 
-#include "solver/common/scalar_root.h"
-#include "solver/elliptic/elliptic_functions.h"
+#include "flexure/solver/common/scalar_root.h"
+#include "flexure/solver/elliptic/elliptic_functions.h"
 
 namespace flexure::elliptic {
 namespace {

@@ -11,7 +11,7 @@
 // (DLMF 19.11.4 with phi + psi = K), in terms of p = k'^2 and q = k^2 - sin^2(chi0/2), each formed
 // without cancellation, so that the solution keeps full precision both at small loads (q -> 0) and
 // near the separatrix (p -> 0, large loads, tension).
-#include "solver/elliptic/elastica_closed_form.h"
+#include "flexure/solver/elliptic/elastica_closed_form.h"
 
 namespace flexure::elliptic {
 

@@ -1,10 +1,10 @@
-#include "solver/elliptic/load_continuation.h"
+#include "flexure/solver/elliptic/load_continuation.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
 
-#include "solver/elliptic/tip_chart.h"
+#include "flexure/solver/elliptic/tip_chart.h"
 
 namespace flexure::elliptic {
 namespace {

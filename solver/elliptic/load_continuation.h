@@ -20,7 +20,7 @@
 //    and says where, rather than guessing.
 #include <string>
 
-#include "solver/elliptic/elastica_closed_form.h"
+#include "flexure/solver/elliptic/elastica_closed_form.h"
 
 namespace flexure::elliptic {
 

@@ -1,4 +1,4 @@
-#include "solver/elliptic/tip_chart.h"
+#include "flexure/solver/elliptic/tip_chart.h"
 
 #include <algorithm>
 #include <cmath>

@@ -19,7 +19,7 @@
 // separatrix crossing has the other coordinate about |mu| (it sits |mu|/sqrt(F) from the saddle),
 // hence w ~ epsilon d/(1 + d), d = |mu|/sqrt(F), with epsilon = e^(-sqrt F)/2; a tip aligned with
 // the force and a negligible moment has tau ~ epsilon.
-#include "solver/elliptic/elastica_closed_form.h"
+#include "flexure/solver/elliptic/elastica_closed_form.h"
 
 namespace flexure::elliptic {
 

@@ -1,13 +1,13 @@
-#include "solver/inverse/tip_target.h"
+#include "flexure/solver/inverse/tip_target.h"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <vector>
 
-#include "solver/common/errors.h"
-#include "solver/common/load_search.h"
-#include "solver/elliptic/elliptic_solver.h"
+#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/load_search.h"
+#include "flexure/solver/elliptic/elliptic_solver.h"
 
 namespace flexure {
 namespace {

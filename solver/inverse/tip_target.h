@@ -13,7 +13,7 @@
 #include <optional>
 #include <string>
 
-#include "solver/common/end_load.h"
+#include "flexure/solver/common/end_load.h"
 
 namespace flexure {
 

@@ -1,11 +1,11 @@
-#include "solver/shooting/continuation.h"
+#include "flexure/solver/shooting/continuation.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "solver/shooting/shooting_solver.h"
+#include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {
 

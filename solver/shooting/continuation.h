@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "solver/shooting/newton.h"
-#include "solver/shooting/shooting_problem.h"
+#include "flexure/solver/shooting/newton.h"
+#include "flexure/solver/shooting/shooting_problem.h"
 
 namespace flexure {
 

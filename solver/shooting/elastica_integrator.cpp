@@ -1,4 +1,4 @@
-#include "solver/shooting/elastica_integrator.h"
+#include "flexure/solver/shooting/elastica_integrator.h"
 
 #include <cvodes/cvodes.h>
 #include <fmt/format.h>

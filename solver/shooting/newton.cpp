@@ -1,4 +1,4 @@
-#include "solver/shooting/newton.h"
+#include "flexure/solver/shooting/newton.h"
 
 #include <fmt/format.h>
 

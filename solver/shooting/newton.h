@@ -8,7 +8,7 @@
 #include <Eigen/Dense>
 #include <string>
 
-#include "solver/shooting/shooting_problem.h"
+#include "flexure/solver/shooting/shooting_problem.h"
 
 namespace flexure {
 

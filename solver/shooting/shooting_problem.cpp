@@ -1,4 +1,4 @@
-#include "solver/shooting/shooting_problem.h"
+#include "flexure/solver/shooting/shooting_problem.h"
 
 #include <fmt/format.h>
 

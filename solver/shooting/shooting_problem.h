@@ -27,8 +27,8 @@
 #include <string>
 #include <vector>
 
-#include "solver/chain_model/segment_chain.h"
-#include "solver/shooting/elastica_integrator.h"
+#include "flexure/solver/chain_model/segment_chain.h"
+#include "flexure/solver/shooting/elastica_integrator.h"
 
 namespace flexure {
 

@@ -1,4 +1,4 @@
-#include "solver/shooting/shooting_solver.h"
+#include "flexure/solver/shooting/shooting_solver.h"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,7 @@
 #include <limits>
 #include <numbers>
 
-#include "solver/common/errors.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure {
 

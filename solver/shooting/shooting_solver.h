@@ -21,13 +21,13 @@
 #include <string>
 #include <vector>
 
-#include "solver/chain_model/segment_chain.h"
-#include "solver/chain_model/tip_reach.h"
-#include "solver/common/end_load.h"
-#include "solver/shooting/continuation.h"
-#include "solver/shooting/elastica_integrator.h"
-#include "solver/shooting/newton.h"
-#include "solver/shooting/shooting_problem.h"
+#include "flexure/solver/chain_model/segment_chain.h"
+#include "flexure/solver/chain_model/tip_reach.h"
+#include "flexure/solver/common/end_load.h"
+#include "flexure/solver/shooting/continuation.h"
+#include "flexure/solver/shooting/elastica_integrator.h"
+#include "flexure/solver/shooting/newton.h"
+#include "flexure/solver/shooting/shooting_problem.h"
 
 namespace flexure {
 

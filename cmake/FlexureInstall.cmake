@@ -1,0 +1,48 @@
+# `cmake --install build --prefix P` installs the layer libraries, the public headers (those the
+# umbrella <flexure/flexure.h> reaches; internal headers stay out) and a CMake package, so that an
+# outside project can do
+#   find_package(flexure REQUIRED)
+#   target_link_libraries(app PRIVATE flexure::flexure)
+include(CMakePackageConfigHelpers)
+
+flexure_header_closure(FLEXURE_PUBLIC_HEADERS include/flexure/flexure.h)
+list(REMOVE_ITEM FLEXURE_PUBLIC_HEADERS include/flexure/flexure.h)
+foreach(header ${FLEXURE_PUBLIC_HEADERS})
+  get_filename_component(dir ${header} DIRECTORY)
+  install(FILES ${PROJECT_SOURCE_DIR}/${header}
+          DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/flexure/${dir})
+endforeach()
+install(FILES ${PROJECT_SOURCE_DIR}/include/flexure/flexure.h
+              ${PROJECT_BINARY_DIR}/include/flexure/version.h
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/flexure)
+# For tests/consumer: the list of installed public headers.
+string(REPLACE ";" "\n" FLEXURE_PUBLIC_HEADER_LINES "${FLEXURE_PUBLIC_HEADERS}")
+file(WRITE ${PROJECT_BINARY_DIR}/public_headers.txt "${FLEXURE_PUBLIC_HEADER_LINES}\n")
+
+get_property(FLEXURE_LAYER_TARGETS GLOBAL PROPERTY FLEXURE_LAYER_TARGETS)
+install(TARGETS ${FLEXURE_LAYER_TARGETS} flexure_library
+        EXPORT flexureTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(TARGETS flexure RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(EXPORT flexureTargets
+        NAMESPACE flexure::
+        DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/flexure)
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/flexureConfig.cmake.in
+                              ${PROJECT_BINARY_DIR}/flexureConfig.cmake
+                              INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/flexure)
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/flexureConfigVersion.cmake
+                                 COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/flexureConfig.cmake
+              ${PROJECT_BINARY_DIR}/flexureConfigVersion.cmake
+        DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/flexure)
+
+# The layering check runs with every build: an upward include fails the build
+# (cmake/check_layers.cmake); ctest runs it too.
+add_custom_target(layer_check ALL
+  COMMAND ${CMAKE_COMMAND} -DSOURCE_DIR=${PROJECT_SOURCE_DIR}
+          -DPUBLIC_HEADERS_FILE=${PROJECT_BINARY_DIR}/public_headers.txt
+          -P ${PROJECT_SOURCE_DIR}/cmake/check_layers.cmake
+  COMMENT "Checking that no layer includes a layer above it"
+  VERBATIM)
+add_dependencies(flexure layer_check)

@@ -1,0 +1,63 @@
+# Helpers for the layered library targets (docs/architecture.md).
+#
+# Every library layer is a static library `flexure_<layer>` with an explicit source list (no globs)
+# that links only the layers below it. Sources include each other as "flexure/<folder>/<file>.h";
+# in the build tree that prefix resolves through ${FLEXURE_BUILD_INCLUDE_DIR}/flexure, whose
+# entries are symbolic links to the source folders, and after `cmake --install` through
+# <prefix>/include/flexure, which holds the public headers only.
+
+set(FLEXURE_BUILD_INCLUDE_DIR ${PROJECT_BINARY_DIR}/include)
+file(MAKE_DIRECTORY ${FLEXURE_BUILD_INCLUDE_DIR}/flexure)
+foreach(folder solver elements mechanisms io benchmarks)
+  if(NOT EXISTS ${FLEXURE_BUILD_INCLUDE_DIR}/flexure/${folder})
+    file(CREATE_LINK ${PROJECT_SOURCE_DIR}/${folder} ${FLEXURE_BUILD_INCLUDE_DIR}/flexure/${folder}
+         SYMBOLIC)
+  endif()
+endforeach()
+if(NOT EXISTS ${FLEXURE_BUILD_INCLUDE_DIR}/flexure/flexure.h)
+  file(CREATE_LINK ${PROJECT_SOURCE_DIR}/include/flexure/flexure.h
+       ${FLEXURE_BUILD_INCLUDE_DIR}/flexure/flexure.h SYMBOLIC)
+endif()
+
+set(FLEXURE_WARNINGS -Wall -Wextra -Wpedantic)
+
+# flexure_add_layer(<layer> SOURCES <files...> [PUBLIC_LINK <targets...>] [PRIVATE_LINK <targets...>])
+# Defines flexure_<layer>, exported as flexure::<layer>.
+function(flexure_add_layer layer)
+  cmake_parse_arguments(ARG "" "" "SOURCES;PUBLIC_LINK;PRIVATE_LINK" ${ARGN})
+  set(target flexure_${layer})
+  add_library(${target} STATIC ${ARG_SOURCES})
+  add_library(flexure::${layer} ALIAS ${target})
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${layer} POSITION_INDEPENDENT_CODE ON)
+  target_include_directories(${target} PUBLIC
+    $<BUILD_INTERFACE:${FLEXURE_BUILD_INCLUDE_DIR}>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  target_compile_features(${target} PUBLIC cxx_std_20)
+  target_link_libraries(${target} PUBLIC ${ARG_PUBLIC_LINK} PRIVATE ${ARG_PRIVATE_LINK})
+  target_compile_options(${target} PRIVATE ${FLEXURE_WARNINGS})
+  set_property(GLOBAL APPEND PROPERTY FLEXURE_LAYER_TARGETS ${target})
+endfunction()
+
+# flexure_header_closure(<out-var> <headers...>): the headers (relative to the source root) and
+# every "flexure/..." header they include, recursively.
+function(flexure_header_closure out)
+  set(pending ${ARGN})
+  set(seen "")
+  while(pending)
+    list(POP_FRONT pending header)
+    if(header IN_LIST seen)
+      continue()
+    endif()
+    list(APPEND seen ${header})
+    set(path ${PROJECT_SOURCE_DIR}/${header})
+    file(STRINGS ${path} lines REGEX "^#include \"flexure/")
+    foreach(line ${lines})
+      string(REGEX REPLACE "^#include \"flexure/([^\"]+)\".*" "\\1" included "${line}")
+      if(included STREQUAL "version.h" OR included STREQUAL "flexure.h")
+        continue()
+      endif()
+      list(APPEND pending ${included})
+    endforeach()
+  endwhile()
+  set(${out} ${seen} PARENT_SCOPE)
+endfunction()

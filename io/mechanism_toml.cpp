@@ -1,0 +1,255 @@
+#include "flexure/io/mechanism_toml.h"
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include <optional>
+#include <set>
+
+#include "flexure/io/toml_support.h"
+#include "flexure/mechanisms/modified_designs.h"
+#include "flexure/solver/common/errors.h"
+
+namespace flexure::mechanism {
+namespace {
+
+using io::check_toml_keys;
+using io::line_of;
+using io::toml_fail;
+
+// A positive finite number at `key` (required unless `fallback` is given).
+double positive(const toml::table& t,
+                const std::string& key,
+                const std::string& where,
+                const std::string& source,
+                int table_line,
+                std::optional<double> fallback = {}) {
+  const toml::node* node = t.get(key);
+  if (node == nullptr) {
+    if (fallback) return *fallback;
+    toml_fail(source, table_line, fmt::format("{} is missing the required key '{}'", where, key));
+  }
+  // Top-level keys are named bare ("r2"), table keys dotted ("ground.thickness").
+  const std::string name = where == "the file" ? key : where + "." + key;
+  const std::optional<double> v = io::toml_number(*node);
+  if (!v) toml_fail(source, line_of(*node), fmt::format("{} must be a number", name));
+  if (!std::isfinite(*v) || *v <= 0.0) {
+    toml_fail(source, line_of(*node), fmt::format("{} must be finite and > 0 (got {})", name, *v));
+  }
+  return *v;
+}
+
+const char* kJointTables[3] = {"ground", "middle", "slider"};
+
+}  // namespace
+
+MechanismDesign parse_mechanism_toml(const std::string& text, const std::string& source) {
+  io::check_toml_limits(text, source);
+  toml::table root;
+  try {
+    root = toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    throw InvalidInput(fmt::format(
+        "{}:{}: TOML syntax error: {}", source, e.source().begin.line, e.description()));
+  }
+  check_toml_keys(root,
+                  {"name",
+                   "config",
+                   "note",
+                   "r2",
+                   "r3",
+                   "stroke",
+                   "spring_rule",
+                   "material",
+                   "ground",
+                   "middle",
+                   "slider"},
+                  "the file",
+                  source);
+  MechanismDesign d;
+  // Optional strings; another type was silently replaced by the default.
+  auto optional_string =
+      [&](const toml::table& t, const std::string& key, const std::string& name) {
+        const toml::node* node = t.get(key);
+        if (node == nullptr) return std::optional<std::string>();
+        if (!node->is_string()) toml_fail(source, line_of(*node), name + " must be a string");
+        return std::optional<std::string>(**node->as_string());
+      };
+  d.name = optional_string(root, "name", "name").value_or(source);
+  d.note = optional_string(root, "note", "note").value_or("");
+  const toml::node* config = root.get("config");
+  if (config == nullptr || !config->is_string()) {
+    toml_fail(source,
+              1,
+              "the file needs config = \"lpp\" (one of spp, lpp, psp, plp, ssp, slp, sps, "
+              "lps, sss, or a modified configuration of paper 004 such as lplm)");
+  }
+  // The pivot letters as written: a thesis configuration ("lps") or a modified one ("lplm":
+  // every flexible segment fixed-fixed by default). The thesis pattern the solvers use is known
+  // once each joint's segment kind is read (a fixed-fixed segment is a centred flexure, "s").
+  const std::string written = **config->as_string();
+  const ModifiedConfiguration* modified = nullptr;
+  std::string letters = written;
+  if (written.size() == 4 && written.back() == 'm') {
+    try {
+      modified = &find_modified_configuration(written);
+    } catch (const InvalidInput& e) {
+      toml_fail(source, line_of(*config), fmt::format("config: {}", e.what()));
+    }
+    letters = written.substr(0, 3);
+  } else if (written.size() != 3 || written.find_first_not_of("psl") != std::string::npos) {
+    try {
+      cfm::find_cfm_configuration(written);  // throws, listing the nine
+    } catch (const InvalidInput& e) {
+      toml_fail(source,
+                line_of(*config),
+                fmt::format("config: {} (or a modified configuration of paper 004 such as lplm)",
+                            e.what()));
+    }
+  }
+  d.r2 = positive(root, "r2", "the file", source, 1);
+  d.r3 = positive(root, "r3", "the file", source, 1);
+  d.stroke = positive(root, "stroke", "the file", source, 1);
+  const toml::node* mat = root.get("material");
+  if (mat == nullptr || !mat->is_table()) {
+    toml_fail(source,
+              mat ? line_of(*mat) : 1,
+              "the file needs a [material] table with E and "
+              "yield_strength");
+  }
+  const toml::table& m = *mat->as_table();
+  check_toml_keys(m, {"E", "yield_strength", "name"}, "[material]", source);
+  optional_string(m, "name", "material.name");  // documentation only, but a string
+  d.E = positive(m, "E", "material", source, line_of(m));
+  d.yield_strength = positive(m, "yield_strength", "material", source, line_of(m));
+  std::string pattern;
+  for (int p = 1; p <= 3; ++p) {
+    const std::string name = kJointTables[p - 1];
+    const toml::node* node = root.get(name);
+    JointDesign& j = d.joints[p - 1];
+    const char letter = letters[p - 1];
+    if (letter == 'p') {
+      j.type = PivotType::kPin;
+      pattern += 'p';
+      if (node != nullptr) {
+        toml_fail(source,
+                  line_of(*node),
+                  fmt::format("[{}]: pivot {} of configuration '{}' is a pin and takes no table",
+                              name,
+                              p,
+                              written));
+      }
+      continue;
+    }
+    if (node == nullptr || !node->is_table()) {
+      toml_fail(source,
+                node ? line_of(*node) : 1,
+                fmt::format("configuration '{}' needs a [{}] table (thickness, width{})",
+                            written,
+                            name,
+                            modified != nullptr ? ", length"
+                            : letter == 's'     ? ", optional length"
+                                                : ""));
+    }
+    const toml::table& t = *node->as_table();
+    // Segment kind: the thesis's element for the letter unless "fixed-fixed" (the default of a
+    // modified configuration).
+    bool fixed_fixed = modified != nullptr;
+    if (const toml::node* seg = t.get("segment")) {
+      const std::optional<std::string> v = seg->value<std::string>();
+      const std::string allowed =
+          letter == 'l' ? "fixed-fixed, fixed-pinned" : "fixed-fixed, small-length";
+      if (!v || (*v != "fixed-fixed" && *v != (letter == 'l' ? "fixed-pinned" : "small-length"))) {
+        toml_fail(source,
+                  line_of(*seg),
+                  fmt::format("{}.segment must be one of {} for an {} pivot (got {})",
+                              name,
+                              allowed,
+                              letter,
+                              v ? "'" + *v + "'" : std::string("a non-string")));
+      }
+      if (modified != nullptr && *v != "fixed-fixed") {
+        toml_fail(source,
+                  line_of(*seg),
+                  fmt::format("{}.segment: every flexible segment of the modified configuration "
+                              "'{}' is fixed-fixed",
+                              name,
+                              written));
+      }
+      fixed_fixed = *v == "fixed-fixed";
+    }
+    if (fixed_fixed) {
+      j.type = PivotType::kSmall;
+      j.segment = SegmentKind::kFixedFixed;
+      j.paper_letter = letter;
+      j.table2_factor = modified != nullptr ? modified->table2_factor[p - 1] : 0.3;
+      check_toml_keys(
+          t,
+          letter == 'l'
+              ? std::set<std::string>{"thickness", "width", "length", "segment", "table2_factor"}
+              : std::set<std::string>{"thickness", "width", "length", "segment"},
+          "[" + name + "] (fixed-fixed segment)",
+          source);
+      j.length = positive(t, "length", name + " (fixed-fixed segment)", source, line_of(t));
+      if (letter == 'l') {
+        j.table2_factor = positive(t, "table2_factor", name, source, line_of(t), j.table2_factor);
+      }
+    } else if (letter == 's') {
+      j.type = PivotType::kSmall;
+      check_toml_keys(t, {"thickness", "width", "length", "segment"}, "[" + name + "]", source);
+      j.length = positive(t, "length", name, source, line_of(t), 0.0);
+    } else {
+      // An l segment is r/gamma long by definition (thesis Table 8.1): its length is derived.
+      j.type = PivotType::kLong;
+      check_toml_keys(t,
+                      {"thickness", "width", "segment"},
+                      "[" + name + "] (l segment, length = r/0.85)",
+                      source);
+    }
+    pattern += j.type == PivotType::kSmall ? 's' : 'l';
+    j.thickness = positive(t, "thickness", name, source, line_of(t));
+    j.width = positive(t, "width", name, source, line_of(t));
+  }
+  d.config = pattern;
+  try {
+    cfm::find_cfm_configuration(d.config);
+  } catch (const InvalidInput&) {
+    toml_fail(
+        source,
+        line_of(*config),
+        fmt::format("config '{}' with these segments is the pattern '{}', not one of the nine "
+                    "(spp, lpp, psp, plp, ssp, slp, sps, lps, sss): give its l segments "
+                    "segment = \"fixed-fixed\" (or write the modified name '{}m')",
+                    written,
+                    pattern,
+                    written));
+  }
+  if (modified != nullptr || pattern != written) d.paper_config = letters + "m";
+  if (const toml::node* rule = root.get("spring_rule")) {
+    const std::optional<std::string> v = rule->value<std::string>();
+    try {
+      if (!v) throw InvalidInput("spring_rule must be a string (pure-bending, table2, table5)");
+      d.spring_rule = parse_spring_rule(*v);
+      if (!has_fixed_fixed(d)) {
+        throw InvalidInput(
+            "spring_rule applies to fixed-fixed segments only; this design has none");
+      }
+    } catch (const InvalidInput& e) {
+      toml_fail(source, line_of(*rule), e.what());
+    }
+  } else {
+    d.spring_rule = kDefaultSpringRule;
+  }
+  try {
+    d.finalise();
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(fmt::format("{}: {}", source, e.what()));
+  }
+  return d;
+}
+
+MechanismDesign load_mechanism_toml(const std::string& path) {
+  return parse_mechanism_toml(io::read_toml_file(path, "mechanism file"), path);
+}
+
+}  // namespace flexure::mechanism

@@ -1,0 +1,138 @@
+// What is checked against what: the built `flexure cfm` (FLEXURE_BINARY) prints the documented
+// JSON keys; its numbers for lpp-b (R = 0.8853, d = 40) match the values printed in thesis
+// Table 7.2 (Phi 0.4773, Xi' 97.6, beta 3.248, lambda 1.094) within printed rounding plus the
+// 4-decimal rounding of R; a stroke past the toggle is clamped to the digest's 37.04 % with a
+// warning on stderr; --subclass carries the printed values; --list names all 68 sub-classes;
+// --table finds every reproducible row within tolerance (exit 0); bad input exits 2.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+
+#include "tests/support/cli_test_support.h"
+
+namespace flexure::test {
+namespace {
+
+using Json = nlohmann::json;
+
+// lpp-b printed values (thesis Table 7.2) and their tolerances: half a unit of the printed digit
+// plus the effect of R's rounding (dPhi/dR ~ 0.5, dbeta/dR ~ 6.9 at R = 0.8853).
+constexpr double kPhiTolerance = 0.5e-4 + 0.5e-4;
+constexpr double kXiPrimeTolerance = 0.05 + 0.01;
+constexpr double kBetaTolerance = 0.5e-3 + 0.4e-3;
+constexpr double kLambdaTolerance = 0.5e-3;
+
+Json parse(const CommandResult& r) { return Json::parse(r.out); }
+
+TEST(CfmCli, ConfigJsonHasTheDocumentedKeysAndTheThesisValues) {
+  const CommandResult r = run_flexure("cfm --config lpp --R 0.8853 --d 40 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(count_lines(r.out), 1);
+  const Json j = parse(r);
+  for (const char* key : {"Phi",
+                          "Xi",
+                          "percent_constant_force",
+                          "stroke_percent",
+                          "lambda",
+                          "beta",
+                          "K1",
+                          "K2",
+                          "R",
+                          "config"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_EQ(j["config"], "lpp");
+  EXPECT_NEAR(j["Phi"].get<double>(), 0.4773, kPhiTolerance);
+  EXPECT_NEAR(j["percent_constant_force"].get<double>(), 97.6, kXiPrimeTolerance);
+  EXPECT_NEAR(j["beta"].get<double>(), 3.248, kBetaTolerance);
+  EXPECT_NEAR(j["lambda"].get<double>(), 1.094, kLambdaTolerance);
+  EXPECT_NEAR(j["Xi"].get<double>(), 100.0 / j["percent_constant_force"].get<double>(), 1e-12);
+  EXPECT_EQ(j["stroke_percent"].get<double>(), 40.0);
+  EXPECT_EQ(j["K1"].get<double>(), 0.0);
+  EXPECT_TRUE(r.err.empty()) << r.err;
+}
+
+TEST(CfmCli, StrokePastToggleIsClampedWithAWarning) {
+  const CommandResult r = run_flexure("cfm --config ssp --R 0.4323 --K1 0.2237 --d 40 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json j = parse(r);
+  EXPECT_NEAR(j["stroke_percent"].get<double>(), 37.04, 0.005);  // thesis digest §0.3
+  EXPECT_TRUE(j["stroke_clamped"].get<bool>());
+  EXPECT_NE(r.err.find("warning"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("toggle"), std::string::npos) << r.err;
+  // Thesis Table 7.6 ssp-bIo: Phi 1.0467, Xi' 99.4 (reproduced only with the clamp).
+  EXPECT_NEAR(j["Phi"].get<double>(), 1.0467, 1e-4);
+  EXPECT_NEAR(j["percent_constant_force"].get<double>(), 99.4, 0.05);
+}
+
+// A single crank spring (class 1A) clamped at the toggle: there the coupler stands perpendicular
+// to the slider (R = 0.3 < 1), the slider moves at a finite rate while the crank angle does not
+// change to first order, so the virtual-work force k1 theta2 dtheta2/dDelta x is zero. Xi is then
+// unbounded; the output must flag it instead of printing rounding noise as a ratio. The ssp row
+// above keeps a positive force at its toggle (K1 > 0) and is not flagged.
+TEST(CfmCli, VanishingForceAtTheToggleIsFlagged) {
+  const CommandResult r = run_flexure("cfm --config lpp --R 0.3 --d 60 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json j = parse(r);
+  EXPECT_TRUE(j["force_vanishes"].get<bool>());
+  EXPECT_LT(j["percent_constant_force"].get<double>(), 1e-9);
+  EXPECT_NE(r.err.find("force vanishes"), std::string::npos) << r.err;
+  const CommandResult ssp = run_flexure("cfm --config ssp --R 0.4323 --K1 0.2237 --d 40 --json");
+  ASSERT_EQ(ssp.exit_code, 0) << ssp.err;
+  EXPECT_FALSE(parse(ssp)["force_vanishes"].get<bool>());
+}
+
+TEST(CfmCli, SubclassJsonIncludesPrintedValues) {
+  const CommandResult r = run_flexure("cfm --subclass lpp-b --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json j = parse(r);
+  EXPECT_EQ(j["subclass"], "lpp-b");
+  ASSERT_TRUE(j.contains("printed"));
+  EXPECT_EQ(j["printed"]["Phi"].get<double>(), 0.4773);
+  EXPECT_NEAR(j["Phi"].get<double>(), 0.4773, kPhiTolerance);
+}
+
+TEST(CfmCli, ListNamesAllSubclasses) {
+  const CommandResult r = run_flexure("cfm --list --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json j = parse(r);
+  EXPECT_EQ(j["subclasses"].size(), 68u);
+  const CommandResult text = run_flexure("cfm --list");
+  EXPECT_NE(text.out.find("sss-b88IO"), std::string::npos);
+}
+
+TEST(CfmCli, TableReproducesEveryReproducibleRow) {
+  const CommandResult r = run_flexure("cfm --table --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(parse(r)["all_within"].get<bool>());
+}
+
+TEST(CfmCli, BadInputExitsTwoNamingTheInput) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"cfm --config xyz --R 0.8 --d 16", "configuration 'xyz' is unknown"},
+      {"cfm --config lpp --R -1 --d 16", "R (r3/r2)"},
+      {"cfm --config lpp --R 0.8 --d 0", "(0, 100]"},
+      {"cfm --config lpp --R 0.8 --d 120", "(0, 100]"},
+      {"cfm --config ssp --R 0.4 --d 16", "K1 (k2/k1) is required"},
+      {"cfm --config lpp --R 0.8", "--d"},
+      {"cfm --subclass nope-a", "nope-a"},
+      {"cfm --list --table", "exactly one of"},
+      // The sub-class fixes R (0.8853); a --R beside it was silently ignored.
+      {"cfm --subclass lpp-b --R 2", "go with --config"},
+      {"cfm --list --d 40", "go with --config"},
+      // One point gave Xi = 1, a 100 % constant force, whatever the mechanism.
+      {"cfm --config lpp --R 0.3 --d 20 --sampling uniform --points 1", "[2, 10000000]"},
+  };
+  for (const auto& [args, expected] : cases) {
+    const CommandResult r = run_flexure(args);
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+    EXPECT_TRUE(r.out.empty()) << args;
+    EXPECT_EQ(count_lines(r.err), 1) << args << ": " << r.err;
+    EXPECT_NE(r.err.find(expected), std::string::npos) << args << ": " << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace flexure::test

@@ -1,0 +1,166 @@
+// What is checked against what (issue 3 command line: `beam --method shooting|chain`, boundaries,
+// `--chain FILE.toml`, `path`):
+// - shooting and chain tips for Howell's worked example against the digest's exact values
+//   (book-digest.md §1.5: a/l = 0.7383564, b/l = 0.6103718 at alpha2 = 3.0870030);
+// - `--boundary guided --alpha2 8` against the antisymmetry relation: two elliptic cantilevers of
+//   length l/2 with the same end load (EllipticSolver, alpha2_half = 8/4);
+// - root reactions against statics (the clamp holds -F and -M(0));
+// - the TOML example chains: shooting and chain algorithm agree; unknown keys name key and line;
+// - `path` writes the documented datasets and passes the limit points the elliptic solver reports;
+// - invalid combinations exit 2.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "flexure/solver/elliptic/elliptic_solver.h"
+#include "tests/support/cli_test_support.h"
+
+namespace flexure {
+namespace {
+
+using test::run_flexure;
+using Json = nlohmann::json;
+
+Json run_json(const std::string& args) {
+  const test::CommandResult r = run_flexure(args + " --json");
+  EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
+  return Json::parse(r.out);
+}
+
+TEST(CliMethods, ShootingAndChainReproduceHowellsWorkedExample) {
+  constexpr double kHalfUnit = 5e-8;  // the reference is printed to 7 decimals
+  const Json shooting = run_json("beam --alpha2 3.0870030 --method shooting");
+  EXPECT_EQ(shooting["method"], "shooting");
+  EXPECT_NEAR(shooting["a_over_l"].get<double>(), 0.7383564, kHalfUnit);
+  EXPECT_NEAR(shooting["b_over_l"].get<double>(), 0.6103718, kHalfUnit);
+  EXPECT_NEAR(shooting["theta0"].get<double>(), 1.0, 1e-7);
+  // Chain algorithm, N = 100, corrected variant: third-order error ~1e-6 (docs/theory-chain.md).
+  const Json chain = run_json("beam --alpha2 3.0870030 --method chain --elements 100");
+  EXPECT_EQ(chain["elements"], 100);
+  EXPECT_GE(chain["increments"].get<int>(), 1);
+  EXPECT_NEAR(chain["a_over_l"].get<double>(), 0.7383564, 1e-5);
+  EXPECT_NEAR(chain["b_over_l"].get<double>(), 0.6103718, 1e-5);
+  // Statics: the clamp holds the tip force and the root moment.
+  EXPECT_NEAR(shooting["reactions"]["Fy"].get<double>(), -3.0870030, 1e-12);
+  EXPECT_NEAR(shooting["reactions"]["M"].get<double>(),
+              -3.0870030 * shooting["a_over_l"].get<double>(),
+              1e-8);
+}
+
+TEST(CliMethods, GuidedBeamMatchesTwoHalfCantilevers) {
+  // A guided beam of length l under transverse load P is antisymmetric about its midpoint: two
+  // cantilevers of length l/2 with end load P, i.e. alpha2_half = P (l/2)^2/EI = 8/4 = 2.
+  const EllipticSolver elliptic;
+  const EllipticResult half = elliptic.solve(EndLoad::howell(0.0, 2.0));
+  for (const char* method : {"shooting", "chain --elements 200"}) {
+    const Json guided =
+        run_json(std::string("beam --boundary guided --alpha2 8 --method ") + method);
+    const double tol = std::string(method) == "shooting" ? 1e-9 : 1e-6;
+    EXPECT_NEAR(guided["a_over_l"].get<double>(), half.tip.a_over_l, tol) << method;
+    EXPECT_NEAR(guided["b_over_l"].get<double>(), half.tip.b_over_l, tol) << method;
+    EXPECT_NEAR(guided["theta0"].get<double>(), 0.0, 1e-9) << method;
+    EXPECT_EQ(guided["boundary"], "guided");
+    // Root moment = P l/2 * (a_half) ... = alpha2 * a/2 by antisymmetry (Howell eq. 5.102).
+    EXPECT_NEAR(-guided["reactions"]["M"].get<double>(), 8.0 * half.tip.a_over_l / 2.0, 10 * tol);
+  }
+}
+
+TEST(CliMethods, AutoPicksEllipticForTheFreeCantileverAndShootingOtherwise) {
+  EXPECT_EQ(run_json("beam --alpha2 2")["method"], "elliptic");
+  EXPECT_EQ(run_json("beam --alpha2 2 --boundary guided")["method"], "shooting");
+}
+
+TEST(CliMethods, InverseProblemsWithShooting) {
+  // theta0 = 1 rad, n = 0 -> alpha2 = 3.0870030 (digest §1.5).
+  const Json r = run_json("beam --theta0 1 --method shooting");
+  EXPECT_NEAR(r["alpha2"].get<double>(), 3.0870030, 5e-7);
+}
+
+TEST(CliMethods, TomlChainsAgreeBetweenShootingAndChain) {
+  for (const char* file : {"two_flexures_rigid_link.toml", "curved_tapered_cantilever.toml"}) {
+    const std::string path = std::string(FLEXURE_SOURCE_DIR) + "/docs/examples/" + file;
+    const Json shooting = run_json("beam --chain " + path + " --method shooting");
+    const Json chain = run_json("beam --chain " + path + " --method chain --elements 200");
+    EXPECT_NEAR(shooting["a_over_l"].get<double>(), chain["a_over_l"].get<double>(), 1e-6) << file;
+    EXPECT_NEAR(shooting["b_over_l"].get<double>(), chain["b_over_l"].get<double>(), 1e-6) << file;
+    EXPECT_NEAR(shooting["theta0"].get<double>(), chain["theta0"].get<double>(), 1e-6) << file;
+  }
+  // The guided example equals the command-line guided beam.
+  const Json file_guided = run_json(std::string("beam --method shooting --chain ") +
+                                    FLEXURE_SOURCE_DIR + "/docs/examples/fixed_guided_beam.toml");
+  const Json flag_guided = run_json("beam --method shooting --boundary guided --alpha2 8");
+  EXPECT_NEAR(file_guided["b_over_l"].get<double>(), flag_guided["b_over_l"].get<double>(), 1e-12);
+}
+
+TEST(CliMethods, TomlErrorsNameTheKeyAndLine) {
+  test::ScratchDir dir;
+  {
+    std::ofstream f(dir / "typo.toml");
+    f << "boundary = \"free\"\n[[segment]]\ntype = \"flexible\"\nlenght = 1.0\n";
+  }
+  test::CommandResult r = run_flexure("beam --chain " + (dir / "typo.toml").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("typo.toml:4"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("lenght"), std::string::npos) << r.err;
+  {
+    std::ofstream f(dir / "missing.toml");
+    f << "[[segment]]\ntype = \"rigid\"\n";
+  }
+  r = run_flexure("beam --chain " + (dir / "missing.toml").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("'length'"), std::string::npos) << r.err;
+  {
+    std::ofstream f(dir / "negative.toml");
+    f << "[[segment]]\ntype = \"flexible\"\nlength = -1\n";
+  }
+  r = run_flexure("beam --chain " + (dir / "negative.toml").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("length"), std::string::npos) << r.err;
+  r = run_flexure("beam --chain " + (dir / "absent.toml").string());
+  EXPECT_EQ(r.exit_code, 2);
+}
+
+TEST(CliMethods, PathFollowsLimitPointsTheEllipticSolverReports) {
+  // alpha2 = 10, mu = -2 pi: the path folds near lambda = 0.5958. The elliptic solver follows it
+  // through the fold and reports it; `flexure path` (shooting continuation) records every point
+  // and ends where the elliptic solver does.
+  const Json elliptic = run_json("beam --method elliptic --alpha2 10 --mu -6.283185307179586");
+  EXPECT_TRUE(elliptic["converged"].get<bool>());
+  EXPECT_GE(elliptic["limit_points"].get<int>(), 1);
+  EXPECT_NEAR(elliptic["first_limit_load_factor"].get<double>(), 0.5958, 1e-3);
+  test::ScratchDir dir;
+  const std::string out = (dir / "path.h5").string();
+  const Json summary = run_json("path --alpha2 10 --mu -6.283185307179586 --out " + out);
+  EXPECT_TRUE(summary["completed"].get<bool>());
+  EXPECT_GE(summary["limit_points"].get<int>(), 1);
+  const hid_t file = test::open_read_only(out);
+  const std::vector<double> lambda = test::read_doubles(file, "load_factor");
+  const std::vector<int> status = test::read_ints(file, "status");
+  const std::vector<double> x = test::read_doubles(file, "tip_x");
+  H5Fclose(file);
+  ASSERT_GE(lambda.size(), 3u);
+  EXPECT_EQ(lambda.front(), 0.0);
+  EXPECT_NEAR(lambda.back(), 1.0, 1e-12);
+  EXPECT_NEAR(x.front(), 1.0, 1e-12);  // the unloaded tip
+  EXPECT_NEAR(x.back(), elliptic["a_over_l"].get<double>(), 1e-9);
+  EXPECT_EQ(status.size(), lambda.size());
+  // The load factor rises, turns back at a limit point, and rises again.
+  bool decreased = false;
+  for (std::size_t i = 1; i < lambda.size(); ++i) decreased |= lambda[i] < lambda[i - 1];
+  EXPECT_TRUE(decreased);
+}
+
+TEST(CliMethods, InvalidCombinationsExitTwo) {
+  EXPECT_EQ(run_flexure("beam --alpha2 1 --method elliptic --boundary guided").exit_code, 2);
+  EXPECT_EQ(run_flexure("beam --alpha2 1 --tip-x 0.9").exit_code,
+            2);  // free end: nothing prescribed
+  EXPECT_EQ(run_flexure("beam --alpha2 1 --boundary slider --method shooting").exit_code, 2);
+  EXPECT_EQ(run_flexure("beam --alpha2 1 --method chain --elements 0").exit_code, 2);
+  EXPECT_EQ(run_flexure("beam --alpha2 1 --boundary sideways").exit_code, 2);
+  EXPECT_EQ(run_flexure("beam").exit_code, 2);
+  EXPECT_EQ(run_flexure("path --alpha2 1 --out /nonexistent/dir/p.h5").exit_code, 2);
+}
+
+}  // namespace
+}  // namespace flexure

@@ -1,0 +1,166 @@
+// What is checked against what: io::AtomicHdf5File / Hdf5Group write datasets, groups and
+// attributes that are read back with the plain HDF5 C API and compared bit for bit with the
+// values written; the atomic-write contract (temporary next to the target, renamed on commit,
+// removed when not committed or after a failed write) is checked by listing the directory; an
+// unwritable target fails before anything is written, naming the path.
+#include "flexure/io/hdf5_file.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+#include "tests/support/cli_test_support.h"
+
+namespace flexure::io {
+namespace {
+
+using test::ScratchDir;
+
+TEST(AtomicHdf5File, WritesDatasetsGroupsAndAttributesThatReadBackExactly) {
+  ScratchDir dir;
+  const auto path = dir / "data.h5";
+  const std::vector<double> doubles = {0.0, -1.5, 3.0870030, 1e-300, std::nan("")};
+  const std::vector<int> ints = {0, 1, -7, 2147483647};
+  const std::vector<std::string> strings = {"elliptic", "", "theta0 = 1 rad (57.3\xC2\xB0)"};
+  {
+    AtomicHdf5File file(path.string());
+    file.root().write_dataset("x", std::span<const double>(doubles));
+    file.root().write_dataset("status", std::span<const int>(ints));
+    file.root().write_dataset("names", strings);
+    file.root().write_dataset("empty", std::span<const double>());
+    file.root().set_attribute("method", "elliptic");
+    file.root().set_attribute("n", 2.5);
+    file.root().set_attribute("count", std::int64_t{1000000});
+    Hdf5Group group = file.root().create_group("problem");
+    group.set_attribute("source", std::string("Howell eq. 2.90"));
+    group.set_attribute("mu", -0.25);
+    group.write_dataset("b_over_l", std::span<const double>(doubles).first(2));
+    Hdf5Group nested = group.create_group("inner");
+    nested.write_dataset("status", std::span<const int>(ints).first(1));
+    file.commit();
+    EXPECT_TRUE(file.committed());
+  }
+  hid_t file = test::open_read_only(path);
+  ASSERT_GE(file, 0) << "committed file is not readable";
+  const std::vector<double> x = test::read_doubles(file, "x");
+  ASSERT_EQ(x.size(), doubles.size());
+  for (std::size_t i = 0; i + 1 < x.size(); ++i) EXPECT_EQ(x[i], doubles[i]) << i;
+  EXPECT_TRUE(std::isnan(x.back())) << "NaN must survive the round trip (it means no solution)";
+  EXPECT_EQ(test::read_ints(file, "status"), ints);
+  EXPECT_EQ(test::read_strings(file, "names"), strings);
+  EXPECT_TRUE(test::read_doubles(file, "empty").empty());
+  EXPECT_EQ(test::read_string_attribute(file, "/", "method"), "elliptic");
+  EXPECT_EQ(test::read_double_attribute(file, "/", "n"), 2.5);
+  EXPECT_EQ(test::read_int_attribute(file, "/", "count"), 1000000);
+  EXPECT_EQ(test::read_string_attribute(file, "/problem", "source"), "Howell eq. 2.90");
+  EXPECT_EQ(test::read_double_attribute(file, "/problem", "mu"), -0.25);
+  EXPECT_EQ(test::read_doubles(file, "/problem/b_over_l"),
+            (std::vector<double>{doubles[0], doubles[1]}));
+  EXPECT_EQ(test::read_ints(file, "/problem/inner/status"), std::vector<int>{0});
+  H5Fclose(file);
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"data.h5"}) << "temporary left behind";
+}
+
+TEST(AtomicHdf5File, WritesUnderATemporaryNameInTheSameDirectoryUntilCommit) {
+  ScratchDir dir;
+  const auto path = dir / "out.h5";
+  AtomicHdf5File file(path.string());
+  EXPECT_EQ(std::filesystem::path(file.temp_path()).parent_path(), path.parent_path())
+      << "rename() is only atomic within one file system";
+  EXPECT_TRUE(std::filesystem::exists(file.temp_path()));
+  EXPECT_FALSE(std::filesystem::exists(path)) << "the target must not appear before commit";
+  file.root().write_dataset("x", std::span<const double>(std::vector<double>{1.0}));
+  file.commit();
+  EXPECT_TRUE(std::filesystem::exists(path));
+  EXPECT_FALSE(std::filesystem::exists(file.temp_path()));
+}
+
+TEST(AtomicHdf5File, DestroyedWithoutCommitLeavesNoFileBehind) {
+  ScratchDir dir;
+  {
+    AtomicHdf5File file((dir / "never.h5").string());
+    file.root().write_dataset("x", std::span<const double>(std::vector<double>{1.0, 2.0}));
+  }
+  EXPECT_TRUE(dir.entries().empty());
+}
+
+TEST(AtomicHdf5File, FailedWriteThrowsNamingTheObjectAndLeavesNoFile) {
+  ScratchDir dir;
+  const auto path = dir / "broken.h5";
+  try {
+    AtomicHdf5File file(path.string());
+    file.root().write_dataset("x", std::span<const double>(std::vector<double>{1.0}));
+    // A second dataset with the same name is refused by HDF5.
+    file.root().write_dataset("x", std::span<const double>(std::vector<double>{2.0}));
+    FAIL() << "duplicate dataset was accepted";
+  } catch (const Hdf5Error& e) {
+    EXPECT_NE(std::string(e.what()).find("'/x'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(dir.entries().empty()) << "a failed write must leave nothing behind";
+}
+
+TEST(AtomicHdf5File, DuplicateAttributeAndGroupAreErrors) {
+  ScratchDir dir;
+  AtomicHdf5File file((dir / "dup.h5").string());
+  file.root().set_attribute("n", 1.0);
+  EXPECT_THROW(file.root().set_attribute("n", 2.0), Hdf5Error);
+  Hdf5Group group = file.root().create_group("g");
+  EXPECT_THROW(file.root().create_group("g"), Hdf5Error);
+  EXPECT_THROW(file.root().create_group("a/b"), Hdf5Error);
+}
+
+TEST(AtomicHdf5File, CommitReplacesAnExistingFileWhole) {
+  ScratchDir dir;
+  const auto path = dir / "old.h5";
+  std::ofstream(path) << "not an HDF5 file";
+  {
+    AtomicHdf5File file(path.string());
+    file.root().write_dataset("x", std::span<const double>(std::vector<double>{4.0}));
+    file.commit();
+  }
+  hid_t file = test::open_read_only(path);
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(test::read_doubles(file, "x"), std::vector<double>{4.0});
+  H5Fclose(file);
+}
+
+TEST(AtomicHdf5File, MissingDirectoryIsAClearErrorBeforeWriting) {
+  try {
+    AtomicHdf5File file("/nonexistent/dir/x.h5");
+    FAIL() << "no error for a missing directory";
+  } catch (const Hdf5Error& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("/nonexistent/dir/x.h5"), std::string::npos) << message;
+    EXPECT_NE(message.find("does not exist"), std::string::npos) << message;
+  }
+}
+
+TEST(AtomicHdf5File, ParentThatIsAFileOrATargetThatIsADirectoryIsAnError) {
+  ScratchDir dir;
+  std::ofstream(dir / "plain") << "x";
+  EXPECT_THROW(AtomicHdf5File((dir / "plain" / "x.h5").string()), Hdf5Error);
+  std::filesystem::create_directory(dir / "sub");
+  EXPECT_THROW(AtomicHdf5File((dir / "sub").string()), Hdf5Error);
+}
+
+TEST(AtomicHdf5File, ReadOnlyDirectoryIsAClearError) {
+  if (::geteuid() == 0) GTEST_SKIP() << "root can write into read-only directories";
+  ScratchDir dir;
+  std::filesystem::create_directory(dir / "ro");
+  std::filesystem::permissions(
+      dir / "ro", std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
+  try {
+    AtomicHdf5File file((dir / "ro" / "x.h5").string());
+    FAIL() << "no error for a read-only directory";
+  } catch (const Hdf5Error& e) {
+    EXPECT_NE(std::string(e.what()).find("not writable"), std::string::npos) << e.what();
+  }
+  std::filesystem::permissions(dir / "ro", std::filesystem::perms::owner_all);
+}
+
+}  // namespace
+}  // namespace flexure::io

@@ -1,0 +1,61 @@
+// What is checked against what: the per-configuration PRBM error table behind
+// `flexure mechanism analyze --method auto` against freshly computed PRBM-vs-exact strokes of the
+// built-in designs (the exact model is the independent reference); the choice of auto at loose and
+// tight tolerances; the CLI keys `method` and `method_reason`.
+#include "flexure/mechanisms/mechanism_method.h"
+#include "flexure/solver/common/errors.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "flexure/mechanisms/mechanism_analysis.h"
+#include "tests/support/cli_test_support.h"
+
+namespace flexure::mechanism {
+namespace {
+
+TEST(MechanismMethod, MeasuredErrorTableMatchesTheExactModel) {
+  // The table was measured at 50 points and rounded to 1e-4; a 50-point stroke reproduces it.
+  for (const MechanismDesign& d : builtin_mechanisms()) {
+    AnalysisOptions o;
+    o.points = 50;
+    o.exact = true;
+    const MechanismAnalysis a = analyze_mechanism(d, o);
+    ASSERT_TRUE(a.has_exact && a.exact.converged) << d.name;
+    EXPECT_NEAR(a.max_force_error, measured_prbm_force_error(d), 5.1e-5) << d.name;
+  }
+}
+
+TEST(MechanismMethod, AutoUsesThePrbmOnlyWhenItsErrorFitsTheTolerance) {
+  const MechanismDesign spp = find_builtin_mechanism("1A-spp");  // measured 0.70 %
+  EXPECT_EQ(choose_mechanism_method(spp, "auto", 0.02).method, "prbm");
+  EXPECT_EQ(choose_mechanism_method(spp, "auto", 0.005).method, "exact");
+  EXPECT_EQ(choose_mechanism_method(spp, "auto", 1e-6).method, "exact");
+  const MechanismDesign plp = find_builtin_mechanism("1B-plp");  // measured 13.8 %
+  EXPECT_EQ(choose_mechanism_method(plp, "auto", 0.1).method, "exact");
+  EXPECT_EQ(choose_mechanism_method(plp, "prbm", 1e-6).method, "prbm");
+  EXPECT_THROW(choose_mechanism_method(plp, "auto", 0.0), InvalidInput);
+}
+
+TEST(MechanismMethod, CliReportsTheChoice) {
+  using nlohmann::json;
+  const test::CommandResult loose =
+      test::run_flexure("mechanism analyze 1A-spp --points 10 --tol 0.02 --json");
+  ASSERT_EQ(loose.exit_code, 0) << loose.err;
+  const json l = json::parse(loose.out);
+  EXPECT_EQ(l["method"], "prbm");
+  EXPECT_TRUE(l["force_exact"].is_null());
+  EXPECT_NE(l["method_reason"].get<std::string>().find("0.007"), std::string::npos);
+  const test::CommandResult tight =
+      test::run_flexure("mechanism analyze 1A-spp --points 10 --json");
+  ASSERT_EQ(tight.exit_code, 0) << tight.err;
+  const json t = json::parse(tight.out);
+  EXPECT_EQ(t["method"], "exact");
+  EXPECT_EQ(t["force_exact"].size(), 10u);
+  EXPECT_EQ(test::run_flexure("mechanism analyze 1A-spp --method newton").exit_code, 2);
+  EXPECT_EQ(test::run_flexure("mechanism analyze 1A-spp --tol -1").exit_code, 2);
+}
+
+}  // namespace
+}  // namespace flexure::mechanism
