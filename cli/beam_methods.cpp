@@ -7,8 +7,8 @@
 #include <cstdlib>
 #include <limits>
 
-#include "flexure/elements/fixed_pinned_segment.h"
 #include "flexure/benchmarks/studies/method_selector.h"
+#include "flexure/elements/fixed_pinned_segment.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
@@ -162,12 +162,24 @@ BeamSolution solve_numerical_forward(const std::string& method,
     solution.root_moment = -r.reaction.M;
     solution.load_factor = r.load_factor;
     solution.tolerance = options.rtol;
-    solution.branch = r.method == "continuation"
-                          ? fmt::format(
-                                "proportional loading (pseudo-arclength continuation, {} "
-                                "steps)",
-                                r.continuation_steps)
-                          : "unique equilibrium (direct Newton; contraction bound below 1)";
+    switch (r.path) {
+      case ShootingPath::kContinuation:
+        solution.branch = fmt::format(
+            "proportional loading (pseudo-arclength continuation, {} steps)", r.continuation_steps);
+        break;
+      case ShootingPath::kTwoStageContinuation:
+        solution.branch = fmt::format(
+            "proportional loading (two-stage pseudo-arclength continuation, {} steps in the "
+            "first stage)",
+            r.continuation_steps);
+        break;
+      case ShootingPath::kDirectNewton:
+        solution.branch = "unique equilibrium (direct Newton; contraction bound below 1)";
+        break;
+      case ShootingPath::kNewtonFromGuess:
+        solution.branch = "Newton from a given guess";
+        break;
+    }
     solution.limit_points = r.limit_points;
     solution.first_limit_load_factor = r.first_limit_load_factor;
     if (r.limit_points > 0) {

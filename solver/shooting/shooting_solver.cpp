@@ -144,6 +144,7 @@ ShootingResult ShootingSolver::solve(const SegmentChain& chain) const {
       if (nw.converged) {
         result.converged = true;
         result.method = "direct Newton";
+        result.path = ShootingPath::kDirectNewton;
         result.residual_norm = nw.residual_norm;
         result.message = nw.message;
         return finish(problem, integrator, z, 1.0, result, &nw.last.tip);
@@ -153,6 +154,7 @@ ShootingResult ShootingSolver::solve(const SegmentChain& chain) const {
 
   if (options_.strategy == ShootingStrategy::kDirect) {
     result.method = "direct Newton";
+    result.path = ShootingPath::kDirectNewton;
     result.converged = false;
     result.message = "direct Newton from the linear guess did not converge";
     return finish(problem, integrator, problem.unloaded_unknowns(), 0.0, result);
@@ -165,6 +167,7 @@ ShootingResult ShootingSolver::solve(const SegmentChain& chain) const {
     return solve_in_two_stages(chain, integrator, result);
   }
   result.method = "continuation";
+  result.path = ShootingPath::kContinuation;
   result.iterations += path.newton_iterations;
   result.continuation_steps = path.steps;
   result.limit_points = path.limit_points;
@@ -234,6 +237,7 @@ ShootingResult ShootingSolver::solve_in_two_stages(const SegmentChain& chain,
   const TwoStageRun run = run_two_stages(chain, integrator, false);
   const char* released = run.release_x ? "x" : "y";
   result.method = "two-stage continuation";
+  result.path = ShootingPath::kTwoStageContinuation;
   result.iterations += run.s1.newton_iterations;
   result.continuation_steps = run.s1.steps;
   if (!run.s1.completed) {
@@ -288,6 +292,7 @@ ShootingResult ShootingSolver::solve_from(const SegmentChain& chain,
       ShootingResult failed;
       failed.message = "integration from the guess failed: " + error;
       failed.method = "Newton from guess";
+      failed.path = ShootingPath::kNewtonFromGuess;
       return failed;
     }
     z = full;
@@ -296,6 +301,7 @@ ShootingResult ShootingSolver::solve_from(const SegmentChain& chain,
   NewtonOutcome nw = newton_solve(problem, integrator, options_.newton, z, lambda, nullptr);
   ShootingResult result;
   result.method = "Newton from guess";
+  result.path = ShootingPath::kNewtonFromGuess;
   result.iterations = nw.iterations;
   result.residual_norm = nw.residual_norm;
   result.converged = nw.converged;

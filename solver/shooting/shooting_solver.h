@@ -31,10 +31,19 @@
 
 namespace flexure {
 
+// How solve() reached its answer (the `method` text says the same for people).
+enum class ShootingPath {
+  kDirectNewton,          // Newton at full load from the linear guess (unique equilibrium)
+  kContinuation,          // pseudo-arclength continuation from the unloaded chain
+  kTwoStageContinuation,  // a straight chain with both tip coordinates prescribed
+  kNewtonFromGuess,       // solve_from(): Newton from a caller's guess
+};
+
 struct ShootingResult {
   bool converged = false;
-  std::string message;         // how it converged, or where and why it stopped
-  std::string method;          // "direct Newton" or "continuation"
+  std::string message;  // how it converged, or where and why it stopped
+  ShootingPath path = ShootingPath::kDirectNewton;
+  std::string method;          // the path in words: "direct Newton", "continuation", ...
   int iterations = 0;          // Newton iterations, summed over continuation steps
   int continuation_steps = 0;  // accepted continuation steps (0 for a direct solve)
   int limit_points = 0;        // folds of the load factor passed on the path (snap-through)

@@ -162,5 +162,20 @@ TEST(CliMethods, InvalidCombinationsExitTwo) {
   EXPECT_EQ(run_flexure("path --alpha2 1 --out /nonexistent/dir/p.h5").exit_code, 2);
 }
 
+TEST(CliMethods, ShootingBranchSaysWhichPathWasTaken) {
+  // A straight beam with both tip coordinates prescribed starts at a bifurcation, so the shooting
+  // solver continues in two stages (docs/theory-shooting.md); `branch` used to say "direct Newton"
+  // because the tool compared the solver's method text.
+  const auto two_stage =
+      run_json("beam --method shooting --boundary pinned --mu 1 --alpha2 0 --tip-x 0.95");
+  ASSERT_EQ(two_stage["converged"], true) << two_stage.dump();
+  EXPECT_NE(two_stage["branch"].get<std::string>().find("two-stage"), std::string::npos)
+      << two_stage.dump();
+  // A small load on a free cantilever is provably unique: direct Newton.
+  const auto direct = run_json("beam --method shooting --alpha2 0.5");
+  EXPECT_NE(direct["branch"].get<std::string>().find("direct Newton"), std::string::npos)
+      << direct.dump();
+}
+
 }  // namespace
 }  // namespace flexure

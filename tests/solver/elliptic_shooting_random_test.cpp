@@ -71,7 +71,12 @@ TEST_P(EllipticShootingRandom, TipsAgreeOnEveryLoad) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Shards, EllipticShootingRandom, ::testing::Range(0, kShards));
+INSTANTIATE_TEST_SUITE_P(Shards,
+                         EllipticShootingRandom,
+                         ::testing::Range(0, kShards),
+                         [](const ::testing::TestParamInfo<int>& info) {
+                           return "shard" + std::to_string(info.param);
+                         });
 
 struct IssueCase {
   double n, alpha2, mu;

@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/gsl_guard.h"
@@ -61,10 +62,12 @@ TEST_P(ShootingEulerColumn, PostBuckledLoadMatchesEllipticClosedForm) {
   EXPECT_NEAR(-r.reaction.M, 2.0 * k * K, kColumnTolerance * P);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    EndSlopesInDegrees,
-    ShootingEulerColumn,
-    ::testing::Values(1.0, 10.0, 30.0, 60.0, 90.0, 120.0, 150.0, 160.0, 170.0));
+INSTANTIATE_TEST_SUITE_P(EndSlopesInDegrees,
+                         ShootingEulerColumn,
+                         ::testing::Values(1.0, 10.0, 30.0, 60.0, 90.0, 120.0, 150.0, 160.0, 170.0),
+                         [](const ::testing::TestParamInfo<double>& info) {
+                           return "slope" + std::to_string(static_cast<int>(info.param)) + "deg";
+                         });
 
 TEST(ShootingEulerColumn, CriticalLoadIsTheSmallSlopeLimit) {
   // alpha -> 0: P -> pi^2/4 (Euler load of the half length), so the guide moment at the Euler load

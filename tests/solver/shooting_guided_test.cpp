@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
@@ -65,7 +66,20 @@ INSTANTIATE_TEST_SUITE_P(TransverseAndAxialLoads,
                                            GuidedCase{0.0, 60.0},
                                            GuidedCase{-1.0, 10.0},
                                            GuidedCase{0.5, 8.0},
-                                           GuidedCase{1.0, 4.0}));
+                                           GuidedCase{1.0, 4.0}),
+                         [](const ::testing::TestParamInfo<GuidedCase>& info) {
+                           // e.g. "n_minus1_P10", "n0p5_P8": gtest names allow [A-Za-z0-9_].
+                           auto label = [](double v) {
+                             std::string text = std::to_string(v);
+                             text.erase(text.find_last_not_of('0') + 1);
+                             if (text.back() == '.') text.pop_back();
+                             for (char& c : text) {
+                               if (c == '.') c = 'p';
+                             }
+                             return text[0] == '-' ? "minus" + text.substr(1) : text;
+                           };
+                           return "n" + label(info.param.load_ratio_n) + "_P" + label(info.param.P);
+                         });
 
 }  // namespace
 }  // namespace flexure
