@@ -35,6 +35,11 @@ function(flexure_add_layer layer)
   target_compile_features(${target} PUBLIC cxx_std_20)
   target_link_libraries(${target} PUBLIC ${ARG_PUBLIC_LINK} PRIVATE ${ARG_PRIVATE_LINK})
   target_compile_options(${target} PRIVATE ${FLEXURE_WARNINGS})
+  if(FLEXURE_SANITIZE)
+    # A sanitized library needs the sanitizer runtimes wherever it is linked, also in projects
+    # that use the installed package (the examples run by ctest).
+    target_link_options(${target} INTERFACE ${FLEXURE_SANITIZER_FLAGS})
+  endif()
   set_property(GLOBAL APPEND PROPERTY FLEXURE_LAYER_TARGETS ${target})
 endfunction()
 
