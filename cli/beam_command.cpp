@@ -29,7 +29,7 @@ struct BeamArgs {
   CLI::Option* theta0_option = nullptr;
   CLI::Option* b_over_l_option = nullptr;
   CLI::Option* shape_option = nullptr;
-  // Issue 3: end conditions and the numerical methods.
+  // End conditions and the numerical methods (docs/cli.md).
   std::string boundary = "free";
   double tip_x = 0.0;
   double tip_y = 0.0;

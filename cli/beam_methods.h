@@ -29,7 +29,7 @@ struct BeamProblem {
   double load_ratio_n = 0.0;  // n > 0 compressive
   double mu = 0.0;            // end moment M l/EI
   int shape_points = 0;       // 0: no shape; otherwise >= 2 points from s = 0 to s = 1
-  // Issue 3: the far end and the numerical methods (shooting, chain).
+  // The far end and the numerical methods (shooting, chain).
   EndCondition boundary = EndCondition::kFree;
   TipPrescription prescribed;  // unset = the stress-free tip value (e.g. guided: theta = 0)
   double follower = 0.0;       // follower tip force F l^2/EI along the tip normal
@@ -37,7 +37,7 @@ struct BeamProblem {
   int increments = 10;         // chain algorithm: load increments
   std::string chain_variant = "corrected";  // chain algorithm: howell | corrected
   std::optional<SegmentChain> chain;        // from --chain FILE.toml (overrides the loads above)
-  // Issue 6: `--method auto` picks the cheapest method whose relative error is within this
+  // `--method auto` picks the cheapest method whose relative error is within this
   // (benchmarks/studies/method_selector.h).
   double tolerance = 1e-6;
 

@@ -9,11 +9,11 @@
 namespace flexure::cli {
 namespace {
 
-// The digest's values carry 8 significant digits (n = 0 table, Howell example alpha2): half a
-// unit in the last digit is at most 5e-8 relative for values >= 0.1, so 1e-7 can only fail on a
-// real error.
+// The tabulated values (Howell §2.9.2 worked example, n = 0 table) carry 8 significant digits (n =
+// 0 table, Howell example alpha2): half a unit in the last digit is at most 5e-8 relative for
+// values >= 0.1, so 1e-7 can only fail on a real error.
 constexpr double kEightDigits = 1e-7;
-// Digest sec. 8 item 2 gives 7 decimals; for b/l = 0.3767408 half a unit is 1.3e-7 relative.
+// The theta0 = 0.6 rad rows give 7 decimals; for b/l = 0.3767408 half a unit is 1.3e-7 relative.
 constexpr double kSevenDecimals = 2e-7;
 // Closed forms (end moment) need only the solver's own accuracy (tolerance 1e-14) plus rounding.
 constexpr double kClosedForm = 1e-10;
@@ -45,17 +45,17 @@ BeamProblem forward_alpha2(double n, double alpha2, double mu = 0.0) {
 
 std::vector<ReferenceProblem> reference_problems() {
   std::vector<ReferenceProblem> problems;
-  const std::string digest = "book-digest.md sec. 1.5";
+  const std::string howell = "Howell eqs. 2.90-2.98 by quadrature";
 
-  // Howell sec. 2.9.2 worked example (L1302), digest [calc] values.
+  // Howell §2.9.2 worked example, values recomputed to 8 digits.
   problems.push_back({"howell-example theta0=1 inverse",
-                      digest + " worked example",
+                      howell + ", §2.9.2 worked example",
                       inverse_theta0(0.0, 1.0),
                       {{"alpha", 1.7569869, kEightDigits},
                        {"a_over_l", 0.7383564, kEightDigits},
                        {"b_over_l", 0.6103718, kEightDigits}}});
   problems.push_back({"howell-example alpha2=3.0870030 forward",
-                      digest + " worked example",
+                      howell + ", §2.9.2 worked example",
                       forward_alpha2(0.0, 3.0870030),
                       {{"theta0", 1.0, kEightDigits},
                        {"a_over_l", 0.7383564, kEightDigits},
@@ -65,13 +65,13 @@ std::vector<ReferenceProblem> reference_problems() {
   by_deflection.given = BeamProblem::Given::kBOverL;
   by_deflection.value = 0.6103718;
   problems.push_back({"howell-example b/l=0.6103718 inverse",
-                      digest + " worked example",
+                      howell + ", §2.9.2 worked example",
                       by_deflection,
                       {{"theta0", 1.0, kFromSevenDigitDeflection},
                        {"alpha", 1.7569869, kFromSevenDigitDeflection},
                        {"a_over_l", 0.7383564, kFromSevenDigitDeflection}}});
 
-  // n = 0 oracle table (digest sec. 1.5): theta0, alpha2, a/l, b/l.
+  // n = 0 table (docs/validation.md): theta0, alpha2, a/l, b/l.
   struct Row {
     double theta0, alpha2, a_over_l, b_over_l;
   };
@@ -83,20 +83,20 @@ std::vector<ReferenceProblem> reference_problems() {
                             {1.40, 8.8064153, 0.47307789, 0.79655336}};
   for (const Row& row : kTable) {
     problems.push_back({fmt::format("n=0 table theta0={:.2f} inverse", row.theta0),
-                        digest + " n = 0 table",
+                        howell + ", n = 0 table",
                         inverse_theta0(0.0, row.theta0),
                         {{"alpha2", row.alpha2, kEightDigits},
                          {"a_over_l", row.a_over_l, kEightDigits},
                          {"b_over_l", row.b_over_l, kEightDigits}}});
     problems.push_back({fmt::format("n=0 table alpha2={} forward", row.alpha2),
-                        digest + " n = 0 table",
+                        howell + ", n = 0 table",
                         forward_alpha2(0.0, row.alpha2),
                         {{"theta0", row.theta0, kEightDigits},
                          {"a_over_l", row.a_over_l, kEightDigits},
                          {"b_over_l", row.b_over_l, kEightDigits}}});
   }
 
-  // theta0 = 0.6 rad with horizontal load components (digest sec. 8, item 2).
+  // theta0 = 0.6 rad with horizontal load components (Howell eqs. 2.90-2.98, n != 0).
   struct LoadRatioRow {
     double n, alpha, a_over_l, b_over_l;
   };
@@ -105,7 +105,7 @@ std::vector<ReferenceProblem> reference_problems() {
                                           {2.5, 0.7647424, 0.9086205, 0.3767408}};
   for (const LoadRatioRow& row : kLoadRatios) {
     problems.push_back({fmt::format("n={:g} theta0=0.6 inverse", row.n),
-                        "book-digest.md sec. 8 item 2",
+                        "Howell eqs. 2.90-2.98 by quadrature, theta0 = 0.6 rad rows",
                         inverse_theta0(row.n, 0.6),
                         {{"alpha", row.alpha, kSevenDecimals},
                          {"a_over_l", row.a_over_l, kSevenDecimals},
@@ -126,7 +126,7 @@ std::vector<ReferenceProblem> reference_problems() {
                          {"b_over_l", (1.0 - std::cos(mu)) / mu, kClosedForm, 1.0}}});
   }
 
-  // Proportional-loading path under strong compression with an opposing end moment (issue 11):
+  // Proportional-loading path under strong compression with an opposing end moment:
   // the elliptic solver once returned another equilibrium here (theta0 -2.57561, -2.27684,
   // -2.43979, -2.52651). The reference tip angles come from an independent continuation (SciPy
   // DOP853 at rtol 1e-12, 4000 proportional load steps from zero with Newton and fold detection;
@@ -151,11 +151,12 @@ std::vector<ReferenceProblem> reference_problems() {
     problems.push_back(std::move(problem));
   }
 
-  // Small-load limit: linear cantilever b = P l^3/(3 EI), theta0 = P l^2/(2 EI) (digest 7.2).
+  // Small-load limit: linear cantilever b = P l^3/(3 EI), theta0 = P l^2/(2 EI) (linear beam
+  // theory).
   constexpr double kSmallAlpha2 = 1e-4;
   problems.push_back(
       {"small-load alpha2=1e-4 forward",
-       "linear beam theory (book-digest.md sec. 7.2)",
+       "linear beam theory",
        forward_alpha2(0.0, kSmallAlpha2),
        {{"b_over_l", kSmallAlpha2 / 3.0, kSmallLoad}, {"theta0", kSmallAlpha2 / 2.0, kSmallLoad}}});
   return problems;

@@ -2,8 +2,9 @@
 // Reference problems for `flexure validate` and the registry of methods checked against them.
 //
 // Every reference value is independent of flexure: closed forms (Howell eqs. 2.53, 2.59, 2.64,
-// linear beam theory) or values from the book digest (/work/shared/reference/book-digest.md,
-// sec. 1.5 and sec. 8), which were computed from Howell's eqs. 2.90-2.98 and checked by quadrature.
+// linear beam theory), Howell's worked example (§2.9.2), or tip values computed from Howell's
+// eqs. 2.90-2.98 and checked by quadrature (the n = 0 table and the theta0 = 0.6 rad rows of
+// docs/validation.md), or an independent continuation (docs/theory-elliptic.md).
 //
 // To add a method (shooting, chain, PRBM): append a ValidationMethod in validation_methods() with
 // a solve function and an `applies` filter for the problems it can handle. To add a problem:

@@ -2,8 +2,8 @@
 //
 // Description:
 //  1. BM_PrbmStroke50: one 50-point PRBM stroke (Howell §10.1 sampling) of a 3A-sss mechanism,
-//     all three springs active, with mean Phi, Xi', beta, lambda, Psi and d_N. Issue 5 target:
-//     under 50 us.
+//     all three springs active, with mean Phi, Xi', beta, lambda, Psi and d_N. Target
+//     (docs/performance.md): under 50 us.
 //  2. BM_PrbmStroke50Curve: the same with the curve kept (one allocation of 50 points).
 //  3. BM_ThesisStroke: the thesis code's ~1000-point sampling (what the tables use).
 //  4. BM_AllSubclasses: the 68 thesis sub-classes, thesis sampling.

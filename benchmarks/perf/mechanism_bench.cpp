@@ -1,5 +1,5 @@
-// Speed of one 50-point stroke of a constant-force mechanism (issue 5 targets: PRBM < 50 us,
-// exact < 50 ms). Results: docs/mechanisms.md "Speed".
+// Speed of one 50-point stroke of a constant-force mechanism (targets, docs/performance.md: PRBM <
+// 50 us, exact < 50 ms). Results: docs/mechanisms.md "Speed".
 #include <benchmark/benchmark.h>
 
 #include "flexure/mechanisms/mechanism.h"

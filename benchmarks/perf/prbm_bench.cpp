@@ -3,8 +3,8 @@
 // Description:
 //  1. BM_DeriveTable51: derive gamma, Theta_max(gamma), c_theta, K_theta for all 17 rows of
 //  Howell's
-//     Table 5.1 from the exact elliptic solver (0.1 deg tip-angle sampling). Issue 4 requires < 1
-//     s.
+//     Table 5.1 from the exact elliptic solver (0.1 deg tip-angle sampling). The target
+//     (docs/prbm.md) is < 1 s.
 //  2. BM_DeriveFixedPinnedRow: one row, n = 0 and n = 10 (the longest path, phi = 174.3 deg).
 //  3. BM_DeriveEndMoment: the end-moment constants from the closed-form circular path.
 //  4. BM_ExactTip: one exact tip from EllipticSolver::solve_for_tip_angle (the unit of work).

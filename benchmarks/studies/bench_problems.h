@@ -1,5 +1,5 @@
 #pragma once
-// The standard benchmark problem set of issue 6 and the methods run on it (docs/benchmarks.md).
+// The standard benchmark problem set and the methods run on it (docs/benchmarks.md).
 #include <string>
 #include <vector>
 

@@ -1,6 +1,6 @@
 #pragma once
 // `--method auto`: the cheapest model whose error for this load is within the tolerance
-// ("model no more than a scene needs", issue 6).
+// ("model no more than a scene needs": the cheapest model that meets the tolerance).
 //
 // Order of preference (cheapest model first): the PRBM fixed-pinned segment (one pivot, one
 // spring), the exact elliptic solution, the shooting solver. The PRBM is taken only when

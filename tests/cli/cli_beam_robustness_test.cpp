@@ -1,7 +1,7 @@
-// What is checked against what: the command-line side of issue 11's reproducers, run as a
-// process. Values are compared with another method's answer (elliptic against shooting or
-// chain), with the target of an inverse problem, or with the documented exit code and a message
-// that names what went wrong:
+// What is checked against what: the command-line side of the robustness reproducers (wrong
+// branches, inverse misses, ranges; docs/theory-elliptic.md), run as a process. Values are compared
+// with another method's answer (elliptic against shooting or chain), with the target of an inverse
+// problem, or with the documented exit code and a message that names what went wrong:
 //  * inverse problems: a converged answer reaches its target (target_residual within 1e-10 /
 //    1e-8); a miss is exit 3 naming what was reached, an unreachable target exit 2;
 //  * a load beyond the elliptic solver's range: `--method elliptic` says which method reaches

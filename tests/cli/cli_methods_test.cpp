@@ -1,4 +1,4 @@
-// What is checked against what (issue 3 command line: `beam --method shooting|chain`, boundaries,
+// What is checked against what (command line: `beam --method shooting|chain`, boundaries,
 // `--chain FILE.toml`, `path`):
 // - shooting and chain tips for Howell's worked example against the digest's exact values
 //   (book-digest.md §1.5: a/l = 0.7383564, b/l = 0.6103718 at alpha2 = 3.0870030);

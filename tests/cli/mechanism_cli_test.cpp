@@ -131,7 +131,7 @@ TEST(MechanismCli, Hdf5OutputAndList) {
   EXPECT_EQ(count_lines(table.out), 2 + 9 + 11);  // header, rule, nine + eleven mechanisms
 }
 
-// The example lpp driven to 0.99999 of its toggle stroke (issue 11): at the toggle the class 1A
+// The example lpp driven to 0.99999 of its toggle stroke: at the toggle the class 1A
 // PRBM force is zero (the crank spring's moment has no lever along the slider), and the exact
 // force, whose own zero lies a little earlier, turns negative. The exact percent constant force
 // was printed as 100 min/max = -5.45 % with exit 0 and no warning. Expected: the sign change is
@@ -192,7 +192,7 @@ TEST(MechanismCli, ForceChangingSignHasNoPercentConstantForce) {
       1e-12);
 }
 
-// Issue 11: the example designs with an absurd ground flexure -- 1 m thick (24 mm and 2.73 mm
+// The example designs with an absurd ground flexure -- 1 m thick (24 mm and 2.73 mm
 // long), or 1e-9 m thick or wide -- ran 50-230 s of CPU without an answer. They are outside
 // slender-beam theory (docs/mechanisms.md "Geometry limits") and must be refused at once (exit 2),
 // naming the segment and the ratio, whose value is recomputed here from the file's numbers.

@@ -44,7 +44,7 @@ constexpr double kSlopeWeightingTolerance = 0.006;
 // Table 5.2 prints gamma and K_theta to 2 decimals and rho to 3: half a unit of the last digit.
 constexpr double kGammaRowTolerance = 0.005;
 constexpr double kRhoRowTolerance = 0.005;  // rho follows gamma (eq. 5.116), so gamma's rounding
-// K_theta: the book's rounding plus the Table 5.1 method tolerance of issue 4 (0.01).
+// K_theta: the book's rounding plus the Table 5.1 method tolerance of docs/prbm.md (0.01).
 constexpr double kKThetaRowTolerance = 0.015;
 
 PrbmDerivationOptions fast_options() {

@@ -27,7 +27,7 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-// Acceptance tolerances of issue 4 for Table 5.1, rows n >= -1.
+// Acceptance tolerances for Table 5.1 (docs/prbm.md), rows n >= -1.
 constexpr double kGammaTolerance = 0.001;
 constexpr double kCThetaTolerance = 0.01;
 constexpr double kKThetaTolerance = 0.01;

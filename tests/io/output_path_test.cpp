@@ -1,4 +1,4 @@
-// What is checked against what (issue 11, item 4: output files):
+// What is checked against what (output files, docs/cli.md):
 // - the temporary name AtomicHdf5File writes fits the file-name limit for any target name that
 //   fits it itself (a 251-byte target name failed: its temporary name was over 255 bytes), in the
 //   target's directory, cut at a UTF-8 character boundary; such a target is written and renamed;

@@ -1,4 +1,4 @@
-// What is checked against what (issue 11, items 1 and 2): the TOML pre-check
+// What is checked against what (docs/chain-toml.md, limits): the TOML pre-check
 // (io::check_toml_limits) refuses, before toml++ recurses, nesting deeper than kMaxTomlNesting and
 // text longer than kMaxTomlBytes, naming the source, the line (counted here by hand from the text
 // the test builds) and the limit; the depth it counts is the depth of the TOML tree (a text built
@@ -146,7 +146,7 @@ void write(const std::filesystem::path& path, const std::string& text) {
 TEST(TomlLimitsCli, DeeplyNestedHeaderExitsTwoForChainsAndMechanisms) {
   ScratchDir dir;
   const auto file = dir / "deep.toml";
-  write(file, "# 50 000 levels (issue 11)\n[" + dotted(50000) + "]\n");
+  write(file, "# 50 000 levels\n[" + dotted(50000) + "]\n");
   for (const std::string command : {"beam --chain ",
                                     "mechanism analyze ",
                                     "path --alpha2 1 "

@@ -22,8 +22,8 @@
 namespace flexure::dynamics {
 namespace {
 
-constexpr double kEnergyTolerance = 1e-8;     // issue 7
-constexpr double kFrequencyTolerance = 1e-6;  // issue 7
+constexpr double kEnergyTolerance = 1e-8;     // docs/dynamics.md
+constexpr double kFrequencyTolerance = 1e-6;  // docs/dynamics.md
 // Amplitude of the "small" oscillation: the amplitude-dependent frequency shift is O(eps^2)
 // ~ 1e-8 relative, well below kFrequencyTolerance.
 constexpr double kSmallAmplitude = 1e-4;

@@ -1,4 +1,4 @@
-// What is checked against what (issue 11, item 5: rigid segments of length 0):
+// What is checked against what (rigid segments of length 0):
 // - a zero-length rigid link is a pure kink (docs/chain-toml.md): a chain of two flexible halves
 //   with kinks at the root, between the halves and at the tip, under a pure end moment M, is two
 //   circular arcs of curvature M/EI joined at the kinks; the tip pose and a/l, b/l from

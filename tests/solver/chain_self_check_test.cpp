@@ -6,7 +6,7 @@
 //    must have the parity its root's slope says, and the exact answers of random loads whose path
 //    passes no limit point must be stable;
 //  * the chain algorithm's self-checks, against the elliptic solver: the defaults follow the
-//    proportional path where they used to settle on the mirror image (issue 11), too few elements
+//    proportional path where they used to settle on the mirror image, too few elements
 //    are refined (one element put the tip 1.8 lengths from the clamp), an unstable fixed point of
 //    the passes is refused, and a seeded random grid (n in [-5, 15], alpha2 in [0, 20], |mu| <=
 //    2 pi) either agrees with the exact tip within the discretisation error measured at N = 100

@@ -9,8 +9,9 @@
 // on these loads, same tolerance); the CVODES reference is compared on a fixed grid in
 // shooting_elliptic_grid_test.cpp.
 //
-// Plus the loads of issue 11 by name, with the tip angle of an independent continuation (scipy
-// DOP853, 4000 proportional load steps) quoted in the issue, and the equilibrium being stable.
+// Plus the loads once returned on a wrong branch, with the tip angle of an independent continuation
+// (scipy DOP853, 4000 proportional load steps) quoted in the issue, and the equilibrium being
+// stable.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -80,7 +81,7 @@ INSTANTIATE_TEST_SUITE_P(Shards,
 
 struct IssueCase {
   double n, alpha2, mu;
-  double theta0;  // independent continuation (issue 11 table), 5 decimals
+  double theta0;  // independent continuation (docs/theory-elliptic.md), 5 decimals
 };
 
 TEST(EllipticShootingRandom, IssueElevenLoadsFollowTheProportionalPath) {

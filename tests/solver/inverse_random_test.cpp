@@ -6,7 +6,7 @@
 // that is not hit must be refused (InvalidInput) or reported as not converged, never returned.
 // Half the targets come from forward solves at random loads, so they are reachable; for mu = 0
 // the proportional-loading branch is unique (Howell eq. 2.90) and every method must find them.
-// Plus the reproducers of issue 11 by name.
+// Plus the reproducers of inverse misses by name.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -140,7 +140,7 @@ INSTANTIATE_TEST_SUITE_P(Methods,
                            return std::string(info.param);
                          });
 
-// Issue 11 reproducers.
+// Reproducers of inverse problems that once missed their target.
 
 TEST(InverseRandom, EllipticMissAcrossAFoldIsNotConverged) {
   // Returned theta0 = -0.0613 with exit 0 for the target 1.0054; the tip angle jumps across the

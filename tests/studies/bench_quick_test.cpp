@@ -1,4 +1,5 @@
-// What is checked against what: `flexure bench --quick` (the ctest smoke test of issue 6).
+// What is checked against what: `flexure bench --quick` (the ctest smoke test of the benchmark
+// runner).
 //  * The HDF5 file, read back with the plain HDF5 C API, follows docs/hdf5-schema.md: root
 //    attributes, one group per problem and method, every dataset with one entry per load.
 //  * The exact methods agree with an INDEPENDENT exact method: every shooting group is compared

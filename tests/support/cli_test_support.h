@@ -78,8 +78,8 @@ inline CommandResult run_flexure(const std::string& args,
   return result;
 }
 
-// The keys issue 5 names for `flexure mechanism analyze --json` (a contract: users' scripts read
-// them).
+// The keys docs/cli.md names for `flexure mechanism analyze --json` (a contract: users' scripts
+// read them).
 inline const std::vector<std::string>& mechanism_analyze_contract_keys() {
   static const std::vector<std::string> keys = {"displacement",
                                                 "force_prbm",
