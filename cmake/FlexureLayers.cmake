@@ -21,12 +21,37 @@ endif()
 
 set(FLEXURE_WARNINGS -Wall -Wextra -Wpedantic)
 
-# flexure_add_layer(<layer> SOURCES <files...> [PUBLIC_LINK <targets...>] [PRIVATE_LINK <targets...>])
-# Defines flexure_<layer>, exported as flexure::<layer>.
+set(FLEXURE_EMBED_DATA_SCRIPT ${CMAKE_CURRENT_LIST_DIR}/embed_data.cmake)
+
+# flexure_embed_data(<target> <files...>): compiles each data file (path relative to the repository
+# root, e.g. data/weight_table_2_1.csv) into <target> as `flexure::EmbeddedFile
+# flexure::data::<file name without extension>()`, through a source file generated in the build
+# tree by cmake/embed_data.cmake. A change to the data file regenerates and rebuilds it.
+function(flexure_embed_data target)
+  foreach(file ${ARGN})
+    get_filename_component(name ${file} NAME_WE)
+    set(input ${PROJECT_SOURCE_DIR}/${file})
+    set(output ${CMAKE_CURRENT_BINARY_DIR}/embedded_data/${name}.cpp)
+    add_custom_command(
+      OUTPUT ${output}
+      COMMAND ${CMAKE_COMMAND} -DINPUT=${input} -DOUTPUT=${output} -DNAME=${name} -DPATH=${file}
+              -P ${FLEXURE_EMBED_DATA_SCRIPT}
+      DEPENDS ${input} ${FLEXURE_EMBED_DATA_SCRIPT}
+      COMMENT "Embedding ${file}"
+      VERBATIM)
+    target_sources(${target} PRIVATE ${output})
+  endforeach()
+endfunction()
+
+# flexure_add_layer(<layer> SOURCES <files...> [DATA <data files...>] [PUBLIC_LINK <targets...>]
+#                   [PRIVATE_LINK <targets...>])
+# Defines flexure_<layer>, exported as flexure::<layer>. DATA files are embedded with
+# flexure_embed_data.
 function(flexure_add_layer layer)
-  cmake_parse_arguments(ARG "" "" "SOURCES;PUBLIC_LINK;PRIVATE_LINK" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "SOURCES;DATA;PUBLIC_LINK;PRIVATE_LINK" ${ARGN})
   set(target flexure_${layer})
   add_library(${target} STATIC ${ARG_SOURCES})
+  flexure_embed_data(${target} ${ARG_DATA})
   add_library(flexure::${layer} ALIAS ${target})
   set_target_properties(${target} PROPERTIES EXPORT_NAME ${layer} POSITION_INDEPENDENT_CODE ON)
   target_include_directories(${target} PUBLIC

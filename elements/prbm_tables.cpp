@@ -4,31 +4,28 @@
 
 #include <algorithm>
 
+#include "flexure/elements/data_files.h"
+#include "flexure/solver/common/csv_table.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure {
 
 const std::vector<FixedPinnedTableRow>& table_5_1() {
-  // Howell Table 5.1 (= Table E.1), book digest section 3.2, copied as printed.
-  static const std::vector<FixedPinnedTableRow> rows = {
-      {0.0, 90.0, 0.8517, 64.3, 1.2385, 2.67617, 58.5},
-      {0.5, 116.6, 0.8430, 81.8, 1.2430, 2.63744, 64.1},
-      {1.0, 135.0, 0.8360, 94.8, 1.2467, 2.61259, 67.5},
-      {1.5, 146.3, 0.8311, 103.8, 1.2492, 2.59289, 65.8},
-      {2.0, 153.4, 0.8276, 108.9, 1.2511, 2.59707, 69.0},
-      {3.0, 161.6, 0.8232, 115.4, 1.2534, 2.56737, 64.6},
-      {4.0, 166.0, 0.8207, 119.1, 1.2548, 2.56506, 66.4},
-      {5.0, 168.7, 0.8192, 121.4, 1.2557, 2.56251, 67.5},
-      {7.5, 172.4, 0.8168, 124.5, 1.2570, 2.55984, 69.0},
-      {10.0, 174.3, 0.8156, 126.1, 1.2578, 2.56597, 69.7},
-      {-0.5, 63.4, 0.8612, 47.7, 1.2348, 2.69320, 44.4},
-      {-1.0, 45.0, 0.8707, 36.3, 1.2323, 2.72816, 31.5},
-      {-1.5, 33.7, 0.8796, 28.7, 1.2322, 2.78081, 23.6},
-      {-2.0, 26.6, 0.8813, 23.2, 1.2293, 2.80162, 18.6},
-      {-3.0, 18.4, 0.8669, 16.0, 1.2119, 2.68893, 12.9},
-      {-4.0, 14.0, 0.8522, 11.9, 1.1971, 2.58991, 9.8},
-      {-5.0, 11.3, 0.8391, 9.7, 1.1788, 2.49874, 7.9},
-  };
+  // Howell Table 5.1 (= Table E.1), data/howell_table_5_1.csv, as printed.
+  static const std::vector<FixedPinnedTableRow> rows = [] {
+    const CsvTable t = CsvTable::parse(data::howell_table_5_1());
+    std::vector<FixedPinnedTableRow> list;
+    for (std::size_t i = 0; i < t.row_count(); ++i) {
+      list.push_back({t.number(i, "n"),
+                      t.number(i, "phi"),
+                      t.number(i, "gamma"),
+                      t.number(i, "Theta_max_gamma"),
+                      t.number(i, "c_theta"),
+                      t.number(i, "K_theta"),
+                      t.number(i, "Theta_max_K_theta")});
+    }
+    return list;
+  }();
   return rows;
 }
 
@@ -66,29 +63,37 @@ FixedPinnedTableRow table_5_1_interpolated(double load_ratio_n) {
 }
 
 const std::vector<CurvedCantileverTableRow>& table_5_2() {
-  // Howell Table 5.2 (= Table E.2), book digest section 3.5.
-  static const std::vector<CurvedCantileverTableRow> rows = {
-      {0.00, 0.85, 0.850, 2.65},
-      {0.10, 0.84, 0.840, 2.64},
-      {0.25, 0.83, 0.829, 2.56},
-      {0.50, 0.81, 0.807, 2.52},
-      {1.00, 0.81, 0.797, 2.60},
-      {1.50, 0.80, 0.775, 2.80},
-      {2.00, 0.79, 0.749, 2.99},
-  };
+  // Howell Table 5.2 (= Table E.2), data/howell_table_5_2.csv.
+  static const std::vector<CurvedCantileverTableRow> rows = [] {
+    const CsvTable t = CsvTable::parse(data::howell_table_5_2());
+    std::vector<CurvedCantileverTableRow> list;
+    for (std::size_t i = 0; i < t.row_count(); ++i) {
+      list.push_back({t.number(i, "kappa0"),
+                      t.number(i, "gamma"),
+                      t.number(i, "rho"),
+                      t.number(i, "K_theta")});
+    }
+    return list;
+  }();
   return rows;
 }
 
 const std::vector<CurvedPinnedPinnedTableRow>& table_5_3() {
-  // Howell Table 5.3 (= Table E.3), book digest section 3.6. Known not to agree fully with its
+  // Howell Table 5.3 (= Table E.3), data/howell_table_5_3.csv. Known not to agree fully with its
   // own equations 5.137-5.139 (gamma up to 0.008 off, rho up to 0.012 off).
-  static const std::vector<CurvedPinnedPinnedTableRow> rows = {
-      {0.50, 0.793, 0.791, 1.677, 2.59, 0.99},
-      {0.75, 0.787, 0.783, 1.456, 2.62, 0.86},
-      {1.00, 0.783, 0.775, 1.327, 2.68, 0.79},
-      {1.25, 0.779, 0.768, 1.203, 2.75, 0.71},
-      {1.50, 0.775, 0.760, 1.070, 2.83, 0.63},
-  };
+  static const std::vector<CurvedPinnedPinnedTableRow> rows = [] {
+    const CsvTable t = CsvTable::parse(data::howell_table_5_3());
+    std::vector<CurvedPinnedPinnedTableRow> list;
+    for (std::size_t i = 0; i < t.row_count(); ++i) {
+      list.push_back({t.number(i, "kappa0"),
+                      t.number(i, "gamma"),
+                      t.number(i, "rho"),
+                      t.number(i, "Delta_Theta_max_gamma"),
+                      t.number(i, "K_theta"),
+                      t.number(i, "Delta_Theta_max_K_theta")});
+    }
+    return list;
+  }();
   return rows;
 }
 

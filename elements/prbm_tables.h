@@ -1,6 +1,7 @@
 #pragma once
-// The published PRB constants, copied exactly as printed (book digest section 3; Howell Tables 5.1,
-// 5.2, 5.3 = App. E Tables E.1, E.2, E.3, and eqs. 5.107-5.110). Angles in degrees as printed.
+// The published PRB constants, copied exactly as printed (Howell, Compliant Mechanisms, Tables 5.1,
+// 5.2, 5.3 = App. E Tables E.1, E.2, E.3: data/howell_table_5_{1,2,3}.csv, compiled into the
+// library and read at the first call; eqs. 5.107-5.110 below). Angles in degrees as printed.
 // These are data to compare against, not the constants the elements must use: the elements accept
 // constants from these tables, from the curve fits (prbm_curve_fits.h) or from the derivation
 // (prbm_derivation.h).

@@ -7,7 +7,9 @@
 #include <cctype>
 #include <cmath>
 
+#include "flexure/mechanisms/data_files.h"
 #include "flexure/mechanisms/dynamics/cfsm_designs.h"
+#include "flexure/solver/common/csv_table.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {
@@ -29,35 +31,39 @@ std::string lower(std::string s) {
   return s;
 }
 
-// Tables 2-4 as printed (Table 2's n for l segments; 1 = EI/L for s; Table 4 R and Lambda).
+// data/paper_tables_2_4.csv: Table 2's n for l segments (1 = EI/L for s, "-" for a pin, stored
+// as 0), Table 4's R and Lambda, as printed.
 std::vector<ModifiedConfiguration> make_configurations() {
-  auto row =
-      [](std::string name, std::string cls, std::array<double, 3> t2, double R, double Lambda) {
-        ModifiedConfiguration c;
-        c.name = name;
-        c.class_name = cls;
-        for (int i = 0; i < 3; ++i) {
-          c.letters[i] = name[i];
-          c.length_factor[i] = name[i] == 'l' ? kL : name[i] == 's' ? kS : 0.0;
-          c.table2_factor[i] = t2[i];
-        }
-        c.R = R;
-        c.Lambda = Lambda;
-        return c;
-      };
-  return {
-      row("lppm", "1A", {0.3, 0, 0}, 1.0, 1.0882),
-      row("plpm", "1B", {0, 0.3, 0}, 0.9, 1.0),
-      row("llpm", "2A", {0.6, 0.3, 0}, 1.1, 1.0677),
-      row("slpm", "2A", {1, 0.3, 0}, 1.1, 1.0238),
-      row("lplm", "2B", {0.3, 0, 0.3}, 1.0, 1.1765),
-      row("lpsm", "2B", {0.3, 0, 1}, 1.1, 1.1102),
-      row("lssm", "3A", {0.3, 1, 1}, 1.0, 1.1071),
-      row("slsm", "3A", {1, 0.3, 1}, 1.0, 1.04),
-      row("llsm", "3A", {0.6, 0.3, 1}, 1.0, 1.0941),
-      row("lslm", "3A", {0.3, 1, 0.3}, 1.0, 1.1694),
-      row("lllm", "3A", {0.6, 0.6, 0.6}, 1.0, 1.15),
-  };
+  const CsvTable t = CsvTable::parse(data::paper_tables_2_4());
+  std::vector<ModifiedConfiguration> list;
+  for (std::size_t i = 0; i < t.row_count(); ++i) {
+    // "2B-lplm" -> class 2B, name lplm.
+    const std::string& full = t.text(i, "configuration");
+    const std::size_t dash = full.find('-');
+    const std::string name = dash == std::string::npos ? "" : full.substr(dash + 1);
+    if (name.size() != 4 || name.back() != 'm' || name.find_first_not_of("pls") != 3) {
+      throw t.cell_error(
+          i, "configuration", fmt::format("'{}' is not <class>-<pivots p|l|s>m", full));
+    }
+    ModifiedConfiguration c;
+    c.name = name;
+    c.class_name = full.substr(0, dash);
+    for (int p = 0; p < 3; ++p) {
+      const std::string column = fmt::format("n{}", p + 1);
+      c.letters[p] = name[p];
+      c.length_factor[p] = name[p] == 'l' ? kL : name[p] == 's' ? kS : 0.0;
+      c.table2_factor[p] = t.number_or(i, column, 0.0);
+      if ((name[p] == 'p') != (c.table2_factor[p] == 0.0) ||
+          (name[p] == 's' && c.table2_factor[p] != 1.0)) {
+        throw t.cell_error(
+            i, column, fmt::format("pivot {} of {} needs - (p), 1 (s) or n > 0 (l)", p + 1, full));
+      }
+    }
+    c.R = t.number(i, "R");
+    c.Lambda = t.number(i, "Lambda");
+    list.push_back(c);
+  }
+  return list;
 }
 
 // Table 5's k = factor EI/L for pivot p of configuration c (twice Table 2, docs/dynamics.md §2).

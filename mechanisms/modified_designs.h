@@ -1,7 +1,8 @@
 #pragma once
-// The eleven "modified" constant-force slider mechanisms of Ugwuoke & Abolarin (paper 004, seed
-// 004_*.txt, Tables 1-6) as dimensional MechanismDesigns for `flexure mechanism analyze`
-// (docs/mechanisms.md "Modified configurations").
+// The eleven "modified" constant-force slider mechanisms of Ugwuoke & Abolarin (JETIR 2023, Tables
+// 1-6) as dimensional MechanismDesigns for `flexure mechanism analyze` (docs/mechanisms.md
+// "Modified configurations"). Tables 2 and 4 are data/paper_tables_2_4.csv, Tables 5 and 6 come
+// with dynamics/cfsm_designs.h.
 //
 // Geometry, as Tables 1, 3, 5 and 6 imply: every flexible segment (l or s) is a strip of length
 // L_i clamped at both ends into rigid bodies and centred on its PRB pivot (a fixed-fixed segment;

@@ -17,7 +17,8 @@ Figures written to --out:
   bench_prbm_map.png   PRBM relative error over (n, alpha2) with the validity limit
                        Theta = Theta_max (Howell Table 5.1) drawn as a line.
 --table prints a Markdown table per problem (docs/benchmarks.md); --print-prbm-map prints the
-rows of the accuracy map used by `--method auto` (benchmarks/studies/method_selector.cpp).
+rows of the accuracy map used by `--method auto`, in the format of data/method_auto_error_map.csv
+(the header row and one row per load; the file's comment block stays as it is).
 """
 import argparse
 import math
@@ -249,14 +250,15 @@ def print_table(f):
 def print_prbm_map(f):
     g = f["cantilever_force"]["prbm"]
     ns, als, err, _, _ = load_plane(g)
-    print("alpha2:", ", ".join(f"{a:g}" for a in als))
 
     def up(x):  # round UP to two significant digits: the map never understates the error
         p = 10 ** (math.floor(math.log10(x)) - 1)
         return math.ceil(x / p) * p
 
+    print("n,alpha2,error")
     for i, n in enumerate(ns):
-        print("    {" + ", ".join(f"{up(x):.2g}" for x in err[i]) + f"}},  // n = {n:g}")
+        for j, a in enumerate(als):
+            print(f"{n:g},{a:g},{up(err[i, j]):.2g}")
 
 
 def main():

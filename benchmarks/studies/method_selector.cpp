@@ -3,54 +3,69 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <vector>
 
+#include "flexure/benchmarks/studies/data_files.h"
 #include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/solver/common/csv_table.h"
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::bench {
 namespace {
 
-// The accuracy map: relative tip-position error (|tip - exact tip| / |exact tip displacement|) of
-// the fixed-pinned PRBM with Table 5.1 constants, measured by `flexure bench` (group
-// cantilever_force/prbm, git commit 8de2adb3d613, docs/benchmarks.md), rounded UP to two
-// significant digits. Rows: n; columns: alpha2. Regenerate with scripts/plot_benchmarks.py
+// The accuracy map, data/method_auto_error_map.csv: relative tip-position error (|tip - exact
+// tip| / |exact tip displacement|) of the fixed-pinned PRBM with Table 5.1 constants, measured by
+// `flexure bench` (group cantilever_force/prbm, docs/benchmarks.md), rounded UP to two
+// significant digits, on a grid of loads (n, alpha2). Regenerate with scripts/plot_benchmarks.py
 // --print-prbm-map FILE.h5 after a change to the PRBM constants.
-constexpr std::array<double, 5> kMapN = {-2.0, -1.0, 0.0, 1.0, 3.0};
-constexpr std::array<double, 12> kMapAlpha2 = {0.5, 1, 2, 3, 4, 5, 7.5, 10, 12.5, 15, 17.5, 20};
-constexpr double kMapError[5][12] = {
-    {0.027,
-     0.011,
-     0.005,
-     0.0078,
-     0.0078,
-     0.0067,
-     0.0043,
-     0.0077,
-     0.013,
-     0.018,
-     0.022,
-     0.025},  // n = -2
-    {0.028,
-     0.016,
-     0.0051,
-     0.0058,
-     0.0071,
-     0.0073,
-     0.0065,
-     0.0078,
-     0.011,
-     0.015,
-     0.019,
-     0.022},  // n = -1
-    {0.042, 0.033, 0.015, 0.0045, 0.0065, 0.0099, 0.015, 0.018, 0.021, 0.024, 0.027, 0.031},  // n =
-                                                                                              // 0
-    {0.045, 0.033, 0.013, 0.033, 0.042, 0.045, 0.048, 0.05, 0.052, 0.055, 0.058, 0.061},   // n = 1
-    {0.051, 0.036, 0.074, 0.077, 0.077, 0.077, 0.079, 0.084, 0.088, 0.092, 0.096, 0.099},  // n = 3
+struct ErrorMap {
+  std::vector<double> n;       // ascending
+  std::vector<double> alpha2;  // ascending
+  std::vector<double> error;   // error[i * alpha2.size() + j] at (n[i], alpha2[j])
 };
+
+// The file lists the grid row by row, n and alpha2 ascending, alpha2 varying fastest.
+ErrorMap read_error_map() {
+  const CsvTable t = CsvTable::parse(data::method_auto_error_map());
+  ErrorMap map;
+  for (std::size_t i = 0; i < t.row_count(); ++i) {
+    const double n = t.number(i, "n");
+    if (map.n.empty() || n != map.n.back()) map.n.push_back(n);
+    if (map.n.size() == 1) map.alpha2.push_back(t.number(i, "alpha2"));
+  }
+  const auto ascending = [](const std::vector<double>& v) {
+    return std::adjacent_find(v.begin(), v.end(), std::greater_equal<double>()) == v.end();
+  };
+  if (map.n.empty() || t.row_count() != map.n.size() * map.alpha2.size() || !ascending(map.n) ||
+      !ascending(map.alpha2)) {
+    throw InvalidInput(fmt::format(
+        "{}: the rows must form a full grid of loads, n and alpha2 ascending, alpha2 fastest",
+        t.source()));
+  }
+  for (std::size_t i = 0; i < t.row_count(); ++i) {
+    const std::size_t row_n = i / map.alpha2.size();
+    const std::size_t row_a = i % map.alpha2.size();
+    if (t.number(i, "n") != map.n[row_n]) {
+      throw t.cell_error(i, "n", fmt::format("expected {} (grid order)", map.n[row_n]));
+    }
+    if (t.number(i, "alpha2") != map.alpha2[row_a]) {
+      throw t.cell_error(i, "alpha2", fmt::format("expected {} (grid order)", map.alpha2[row_a]));
+    }
+    const double error = t.number(i, "error");
+    if (!(error >= 0.0)) throw t.cell_error(i, "error", "a relative error must be >= 0");
+    map.error.push_back(error);
+  }
+  return map;
+}
+
+const ErrorMap& error_map() {
+  static const ErrorMap map = read_error_map();
+  return map;
+}
 
 // Between the measured loads the error is not monotone in n (Table 5.1 is interpolated linearly in
 // n): up to 1.27 times the largest neighbour on a 0.25 x 0.25 grid of (n, alpha2)
@@ -58,8 +73,7 @@ constexpr double kMapError[5][12] = {
 constexpr double kBetweenLoadsMargin = 1.5;
 
 // Index range [lo, hi] of the measured values bracketing x (lo == hi on a measured value).
-template <std::size_t N>
-bool bracket(const std::array<double, N>& grid, double x, std::size_t& lo, std::size_t& hi) {
+bool bracket(const std::vector<double>& grid, double x, std::size_t& lo, std::size_t& hi) {
   if (x < grid.front() || x > grid.back()) return false;
   hi = static_cast<std::size_t>(std::lower_bound(grid.begin(), grid.end(), x) - grid.begin());
   lo = grid[hi] == x ? hi : hi - 1;
@@ -74,16 +88,18 @@ constexpr double kEllipticError = 1e-13;
 }  // namespace
 
 double prbm_measured_error(double load_ratio_n, double alpha2) {
+  const ErrorMap& map = error_map();
   std::size_t n_lo = 0, n_hi = 0, a_lo = 0, a_hi = 0;
-  if (!bracket(kMapN, load_ratio_n, n_lo, n_hi)) return std::numeric_limits<double>::quiet_NaN();
+  if (!bracket(map.n, load_ratio_n, n_lo, n_hi)) return std::numeric_limits<double>::quiet_NaN();
   // Below alpha2 = 0.5 the relative error keeps growing toward the PRBM's small-angle stiffness
   // error (3.9 % at alpha2 = 0.25, n = 0): not measured, so not used.
-  if (!bracket(kMapAlpha2, alpha2, a_lo, a_hi)) return std::numeric_limits<double>::quiet_NaN();
+  if (!bracket(map.alpha2, alpha2, a_lo, a_hi)) return std::numeric_limits<double>::quiet_NaN();
+  const auto at = [&](std::size_t i, std::size_t j) {
+    return map.error[i * map.alpha2.size() + j];
+  };
   // Conservative: the largest error at the measured loads around (n, alpha2), with a margin.
-  return kBetweenLoadsMargin * std::max({kMapError[n_lo][a_lo],
-                                         kMapError[n_lo][a_hi],
-                                         kMapError[n_hi][a_lo],
-                                         kMapError[n_hi][a_hi]});
+  return kBetweenLoadsMargin *
+         std::max({at(n_lo, a_lo), at(n_lo, a_hi), at(n_hi, a_lo), at(n_hi, a_hi)});
 }
 
 AutoMethodChoice choose_beam_method(const AutoMethodRequest& r) {
@@ -120,9 +136,14 @@ AutoMethodChoice choose_beam_method(const AutoMethodRequest& r) {
           std::fabs(eq.Theta) * kDeg,
           theta_max * kDeg);
     } else if (!std::isfinite(measured)) {
-      why_not_prbm =
-          "no measured PRBM accuracy at this load (map covers -2 <= n <= 3, 0.5 <= alpha2 <= "
-          "20)";
+      const ErrorMap& map = error_map();
+      why_not_prbm = fmt::format(
+          "no measured PRBM accuracy at this load (map covers {:g} <= n <= {:g}, {:g} <= alpha2 "
+          "<= {:g})",
+          map.n.front(),
+          map.n.back(),
+          map.alpha2.front(),
+          map.alpha2.back());
     } else if (measured > r.tolerance) {
       why_not_prbm = fmt::format(
           "the PRBM is inside its validity limits but its measured error {:.2g} exceeds --tol "

@@ -33,9 +33,9 @@ struct AutoMethodChoice {
 AutoMethodChoice choose_beam_method(const AutoMethodRequest& request);
 
 // The PRBM's relative tip-position error measured by `flexure bench` for the fixed-pinned segment
-// at (n, alpha2): 1.5 times the largest value at the measured loads around it. NaN outside the
-// measured
-// range (-2 <= n <= 3, 0.5 <= alpha2 <= 20).
+// at (n, alpha2): 1.5 times the largest value at the measured loads around it
+// (data/method_auto_error_map.csv, compiled into the library). NaN outside the measured range
+// (-2 <= n <= 3, 0.5 <= alpha2 <= 20).
 double prbm_measured_error(double load_ratio_n, double alpha2);
 
 }  // namespace flexure::bench

@@ -1,11 +1,14 @@
 #pragma once
 // Printed results of the sources, kept as data to compare against (never as model input beyond
 // the design variables config, R, K1, K2 and d):
-//  * the 68 sub-classes of Weight (2001) Tables 7.2, 7.4, 7.6, 7.9, 7.12 (= App. D Tables D.1/D.2;
-//    thesis digest §6.1, sub-class names with the OCR corrected there);
-//  * the ten class-level rows of thesis Table 2.1 (thesis digest §1.6);
-//  * the ten rows of Howell's Table 10.1 (book digest §6.1).
-// Numbers are copied as printed, including known errata; the traps are flagged per row.
+//  * the 68 sub-classes of Weight (2001) Tables 7.2, 7.4, 7.6, 7.9, 7.12 (= App. D Tables D.1/D.2),
+//    data/weight_thesis_subclasses.csv, and their thickness and width ratios of Tables 7.7, 7.10,
+//    7.13, data/weight_thesis_thickness_ratios.csv;
+//  * the ten class-level rows of thesis Table 2.1, data/weight_table_2_1.csv;
+//  * the ten rows of Howell's Table 10.1, data/howell_table_10_1.csv.
+// Numbers are copied as printed, including known errata; the traps are flagged per row. The files
+// are compiled into the library (cmake/embed_data.cmake) and read at the first call; a malformed
+// file throws InvalidInput naming the file, row and column.
 #include <array>
 #include <optional>
 #include <string>
@@ -45,7 +48,7 @@ struct CfmSubclass {
   double M;  // power-law fit alpha_p = M d^n (nonlinear LSQ, Ch. 7)
   double n;
   double d_N_max;  // normal displacement at the end of the stroke, % r_tot
-  // The row reproduces only with the stroke clamped at the toggle position (thesis digest §0.3):
+  // The row reproduces only with the stroke clamped at the toggle position:
   // R = 0.4323 -> 37.04 %, R = 0.3000 -> 26.62 %.
   bool toggle_clamped;
 };
@@ -58,7 +61,7 @@ const std::vector<CfmSubclass>& thesis_subclasses();
 // InvalidInput naming the candidates when the name is unknown or ambiguous.
 const CfmSubclass& find_thesis_subclass(const std::string& name);
 
-// One row of thesis Tables 7.7, 7.10, 7.13 (= App. D; thesis digest §6.2): thickness and width
+// One row of thesis Tables 7.7, 7.10, 7.13 (= App. D): thickness and width
 // ratios of the flexures of the multi-flexure sub-classes (2A, 2B, 3A). Index 0..2 = pivot 1..3;
 // empty where the pivot is a pin.
 struct CfmThicknessRatios {
@@ -85,8 +88,8 @@ struct CfmClassRow {
   std::optional<double> K2;
   double Xi;   // max F/min F as printed
   double Phi;  // mean Phi as printed
-  // Howell's 2B rows print K2 = 0.1208 with Xi and Phi that belong to K2 ~ 1 (thesis digest §0.5,
-  // book digest §6.1): not reproducible from the printed inputs.
+  // Howell's 2B rows print K2 = 0.1208 with Xi and Phi that belong to K2 ~ 1 (docs/errata.md):
+  // not reproducible from the printed inputs.
   bool reproducible;
 };
 

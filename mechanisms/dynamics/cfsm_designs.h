@@ -1,7 +1,8 @@
 #pragma once
-// The modified constant-force slider mechanisms of Ugwuoke & Abolarin (JETIR 2023, seed 004),
-// with the dimensions, masses and spring constants of their Table 5 and the nominal force and
-// non-dimensional force of Table 6 (docs/dynamics.md).
+// The modified constant-force slider mechanisms of Ugwuoke & Abolarin (JETIR 2023), with the
+// dimensions, masses and spring constants of their Table 5 (data/paper_table_5.csv) and the nominal
+// force and non-dimensional force of Table 6 (data/paper_table_6.csv); docs/dynamics.md. The files
+// are compiled into the library and read at the first call.
 //
 // Only nine of the eleven configurations of Tables 1-4 have a column in Table 5 (2A-slpm and
 // 2B-lpsm have none); the "3A-lllRig" column has no counterpart elsewhere and is left out. The

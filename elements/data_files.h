@@ -1,0 +1,12 @@
+#pragma once
+// The data tables of the elements layer, compiled in from data/ (cmake/embed_data.cmake; the text
+// of each file, unchanged). Parsed with CsvTable where they are used.
+#include "flexure/solver/common/embedded_file.h"
+
+namespace flexure::data {
+
+EmbeddedFile howell_table_5_1();  // Howell 2001, Table 5.1: fixed-pinned segment
+EmbeddedFile howell_table_5_2();  // Howell 2001, Table 5.2: initially curved cantilever
+EmbeddedFile howell_table_5_3();  // Howell 2001, Table 5.3: initially curved pinned-pinned
+
+}  // namespace flexure::data
