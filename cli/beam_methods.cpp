@@ -94,8 +94,7 @@ BeamSolution solve_prbm(const BeamProblem& problem) {
   solution.tip = eq.tip;
   solution.family = "prbm";
   solution.tolerance = 1e-13;  // virtual-work residual of PrbmElement::solve
-  const bool inside =
-      std::fabs(eq.Theta) <= std::min(limits.theta_max_position, limits.theta_max_force);
+  const bool inside = limits.contains(eq.Theta);
   solution.branch =
       fmt::format("PRBM fixed-pinned segment ({}), Theta = {:.4f} rad, {} the validity limits",
                   element.constants().source,

@@ -44,6 +44,24 @@ FixedPinnedConstants FixedPinnedConstants::from_curve_fits(double n) {
   return c;
 }
 
+FixedPinnedConstants FixedPinnedConstants::howell_average() {
+  FixedPinnedConstants c = from_table(0.0);
+  c.gamma = 0.85;    // Howell §5.2, eq. 5.51
+  c.K_theta = 2.65;  // Howell §5.2, eq. 5.64
+  c.source = fmt::format(
+      "Howell's averages gamma = {:g}, K_theta = {:g} (§5.2, eqs. 5.51 and 5.64; c_theta and "
+      "limits "
+      "Table 5.1, n = 0)",
+      c.gamma,
+      c.K_theta);
+  return c;
+}
+
+const FixedPinnedSegment& howell_average_fixed_pinned() {
+  static const FixedPinnedSegment segment(FixedPinnedConstants::howell_average());
+  return segment;
+}
+
 void FixedPinnedConstants::validate() const {
   require_finite(load_ratio_n, "load ratio n");
   const auto check = [](double value, double lo, double hi, const char* what) {

@@ -26,6 +26,13 @@ struct FixedPinnedConstants {
   // from Table 5.1 (the book gives no fit for them); Theta_max(K_theta) = 0.7 phi (eq. 5.63) for
   // n < 0, Table 5.1 interpolated for n >= 0 (the rule overestimates it there).
   static FixedPinnedConstants from_curve_fits(double load_ratio_n);
+  // Howell's average constants for a segment whose load ratio is not known in advance (§5.2:
+  // gamma = 0.85 and K_theta = 2.65, the averages of eqs. 5.51 and 5.64 over -0.5 <= n <= 1;
+  // docs/prbm.md "Recommended values"). They are the constants of every long (l) segment of
+  // Weight's constant-force mechanisms (Weight 2001 §2.2, App. A.3) and of the modified mechanisms
+  // (Ugwuoke & Abolarin eq. 1). c_theta and the two Theta_max are Table 5.1's at n = 0
+  // (load_ratio_n = 0); a check at the segment's actual n uses from_table(n).
+  static FixedPinnedConstants howell_average();
   // Throws InvalidInput naming the constant unless all are finite and in their physical range.
   void validate() const;
 };
@@ -52,5 +59,10 @@ class FixedPinnedSegment : public PrbmElement {
  private:
   FixedPinnedConstants constants_;
 };
+
+// The fixed-pinned segment with FixedPinnedConstants::howell_average(), built once: the PRBM of a
+// long (l) segment in mechanisms/ (link gamma l, pivot (1 - gamma) l from the clamp, spring
+// K = gamma K_theta EI/l, eq. 5.72).
+const FixedPinnedSegment& howell_average_fixed_pinned();
 
 }  // namespace flexure

@@ -12,6 +12,7 @@
 // store `spring_moment(Theta)` per unit dTheta; equilibrium is their equality. For a fixed-pinned
 // segment this is gamma * F_t = gamma * K_theta * Theta, i.e. (alpha^2)_t = K_theta * Theta
 // (eq. 5.59).
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -43,11 +44,21 @@ struct PrbGeometry {
   int spring_count = 1;  // torsional springs of constant stiffness_coefficient() each
 };
 
-// Range of the PRB angle over which the published (or derived) constants are trusted.
+// Range of the PRB angle over which the published (or derived) constants are trusted. The one
+// place where a PRB angle is checked against it (the tool, the studies and the mechanisms call
+// contains or contains_force).
 struct ValidityLimits {
   double theta_max_position = 0.0;  // rad: tip-position error/deflection <= 0.5 % (eq. 5.47)
   double theta_max_force = 0.0;     // rad: Theta_max(K_theta), force relation (eq. 5.63)
   std::string source;  // where the numbers come from (table, eq., "no published limit")
+
+  // Largest |Theta| at which both the tip position and the force relation are trusted.
+  double theta_max() const { return std::min(theta_max_position, theta_max_force); }
+  // Whether the model is trusted at PRB angle Theta (rad): |Theta| <= theta_max(). NaN is not.
+  bool contains(double Theta) const { return std::fabs(Theta) <= theta_max(); }
+  // Whether the force-deflection relation alone is trusted at Theta: |Theta| <= theta_max_force
+  // (eq. 5.63). A mechanism's force needs only this: its positions are those of its rigid links.
+  bool contains_force(double Theta) const { return std::fabs(Theta) <= theta_max_force; }
 };
 
 // Normal stress at the most stressed section of the segment (the clamp unless noted by the

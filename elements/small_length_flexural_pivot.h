@@ -16,10 +16,13 @@ class SmallLengthFlexuralPivot : public PrbmElement {
   // rigid_length_ratio = L/l >= 0 (the model assumes L >= 10 l; not enforced, see limits()).
   explicit SmallLengthFlexuralPivot(double rigid_length_ratio);
 
+  // K l/EI of the pivot: K = EI/l (eq. 5.14).
+  static constexpr double kStiffnessCoefficient = 1.0;
+
   std::string name() const override { return "small-length flexural pivot"; }
   PrbGeometry geometry() const override;
-  double stiffness_coefficient() const override { return 1.0; }  // K = EI/l, eq. 5.14
-  TipPose tip(double Theta) const override;                      // eqs. 5.6-5.10
+  double stiffness_coefficient() const override { return kStiffnessCoefficient; }
+  TipPose tip(double Theta) const override;  // eqs. 5.6-5.10
   // Force on the arm L + l/2 (eq. 5.19) plus the tip moment.
   double generalized_load(double Theta, const EndLoad& load) const override;
   double spring_moment(double Theta) const override { return Theta; }  // eq. 5.11

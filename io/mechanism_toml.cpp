@@ -6,6 +6,7 @@
 #include <optional>
 #include <set>
 
+#include "flexure/elements/fixed_pinned_segment.h"
 #include "flexure/io/toml_support.h"
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/solver/common/errors.h"
@@ -203,7 +204,9 @@ MechanismDesign parse_mechanism_toml(const std::string& text, const std::string&
       j.type = PivotType::kLong;
       check_toml_keys(t,
                       {"thickness", "width", "segment"},
-                      "[" + name + "] (l segment, length = r/0.85)",
+                      fmt::format("[{}] (l segment, length = r/{:g})",
+                                  name,
+                                  howell_average_fixed_pinned().constants().gamma),
                       source);
     }
     pattern += j.type == PivotType::kSmall ? 's' : 'l';

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "flexure/elements/fixed_pinned_segment.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/solver/common/errors.h"
@@ -23,7 +24,6 @@ constexpr double kYield = 4500.0 * 6894.757293;  // Pa
 // Example 2: L = 203.2 mm (8 in), h = 0.125 in (the printed 3.18 mm; I = 33.86 mm^4).
 constexpr double kLongLength = 203.2e-3;
 constexpr double kLongThickness = 0.125 * 0.0254;
-constexpr double kGamma = 0.85;  // the library's fixed-pinned gamma (thesis §2.2)
 // Example 1: r2 = 78.74 mm and R = 0.8853, so r2 + r3 = 148.45 mm: the size of the other rows.
 constexpr double kExample1R2 = 78.74e-3;
 
@@ -71,14 +71,17 @@ MechanismDesign table_design(const std::string& name,
 
 MechanismDesign example_2_lpp() {
   const cfm::CfmClassRow* row = cfm::find_class_row("howell10.1-1A-b");
+  // The library's l segment: Howell's average gamma (§5.2), not the book's 0.83 of this example.
+  const double gamma = howell_average_fixed_pinned().constants().gamma;
   MechanismDesign d;
   d.name = "howell-1A-lpp-b";
   d.config = "lpp";
-  d.note =
+  d.note = fmt::format(
       "Howell §10.1.4 example 2 (class 1A, fixed-pinned segment, Delta x/(r2+r3) = 0.40): L = "
       "203.2 mm, w = 12.7 mm, h = 3.175 mm (0.125 in, I = 33.86 mm^4), polypropylene E = 1655 "
-      "MPa; r2 = 0.85 L (the book: 0.83 L = 168.7 mm), target F = 1.68 N";
-  d.r2 = kGamma * kLongLength;  // finalise() sets the segment length r2/gamma = L
+      "MPa; r2 = {:g} L (the book: 0.83 L = 168.7 mm), target F = 1.68 N",
+      gamma);
+  d.r2 = gamma * kLongLength;  // finalise() sets the segment length r2/gamma = L
   d.r3 = row->R * d.r2;
   d.E = kE;
   d.yield_strength = kYield;

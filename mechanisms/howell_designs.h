@@ -7,8 +7,9 @@
 //                    polypropylene E = 1655 MPa, l = 5.08, w = 12.70, h = 0.76 mm (k1 = 151
 //                    N mm/rad, F = 0.92 N)                                      alias howell-ex1
 //   howell-1A-lpp-b  example 2: fixed-pinned segment L = 203.2 mm, w = 12.7, h = 3.175 mm
-//                    (I = 33.86 mm^4); r2 = gamma L with the library's gamma = 0.85, K_theta =
-//                    2.65 (the book's numbers imply gamma = 0.83, K_theta ~ 2.6; see docs)
+//                    (I = 33.86 mm^4); r2 = gamma L with the library's l segment, Howell's
+//                    averages (§5.2, howell_average_fixed_pinned()); the book's numbers for this
+//                    example imply gamma = 0.83, K_theta ~ 2.6 (docs/mechanisms.md)
 //                                                                               alias howell-ex2
 //   howell-3A-sss-a  example 3: R = 2.6633, K1 = 1, K2 = 12.6704, r2 = 40.2 mm, h1 = h2 = 0.76,
 //                    h3 = h1 K2^(1/3) (F = 13 N)                                alias howell-ex3

@@ -6,6 +6,8 @@
 #include <cctype>
 #include <cmath>
 
+#include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/elements/small_length_flexural_pivot.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/mechanisms/howell_designs.h"
@@ -17,9 +19,10 @@
 namespace flexure::mechanism {
 namespace {
 
-constexpr double kGamma = 0.85;   // fixed-pinned characteristic radius factor (thesis §2.2)
-constexpr double kKtheta = 2.65;  // fixed-pinned stiffness coefficient (thesis §2.2)
-constexpr double kMu = 0.1;       // s flexure length / associated link (thesis Table 8.1)
+constexpr double kMu = 0.1;  // s flexure length / associated link (thesis Table 8.1)
+
+// Characteristic radius factor of every l segment (Howell §5.2 average, Weight 2001 §2.2).
+double long_segment_gamma() { return howell_average_fixed_pinned().constants().gamma; }
 
 void require_positive(double value, const std::string& what) {
   if (!std::isfinite(value) || value <= 0.0) {
@@ -83,7 +86,8 @@ void check_loads(const MechanismDesign& d) {
   for (int p = 1; p <= 3; ++p) {
     const JointDesign& j = d.joints[p - 1];
     if (j.type == PivotType::kPin) continue;
-    const double EI = d.E * j.second_moment();
+    const RectangularSection section = j.section(d.E);
+    const double EI = section.flexural_rigidity();
     // Each value was finite and > 0, but their product can leave double precision (a 1e-200 m
     // strip has h^3 = 0): the springs would be 0 or inf and the PRBM force 0/0.
     const double k = d.spring_constant(p);
@@ -116,7 +120,7 @@ void check_loads(const MechanismDesign& d) {
           EI,
           L::kMaxLoadParameter));
     }
-    const double strain = P / (d.E * j.area());
+    const double strain = P / (d.E * section.area());
     if (strain > L::kMaxAxialStrain) {
       throw InvalidInput(fmt::format(
           "{} segment {}: axial strain |P|/(EA) = {:.4g} (largest PRBM pin force {:.4g} N, "
@@ -126,7 +130,7 @@ void check_loads(const MechanismDesign& d) {
           pivot_table(p),
           strain,
           P,
-          j.area(),
+          section.area(),
           L::kMaxAxialStrain));
     }
   }
@@ -234,7 +238,7 @@ MechanismDesign thesis_example_lpp() {
       "h = 0.04865 in, E = 30000 ksi, Sy = 167 ksi, stroke 4 in; target F = 25 lbf";
   const double l_tot = 15.0 * kInch;
   // l_tot = r2/gamma + r3 (thesis Table 5.1 lambda for lpp).
-  d.r2 = l_tot / (1.0 / kGamma + row.R);
+  d.r2 = l_tot / (1.0 / long_segment_gamma() + row.R);
   d.r3 = row.R * d.r2;
   d.E = 30.0e6 * kPsi;
   d.yield_strength = 167.0e3 * kPsi;
@@ -266,7 +270,7 @@ double MechanismDesign::toggle_stroke() const {
 
 double MechanismDesign::spring_constant(int pivot) const {
   const JointDesign& j = joints[pivot - 1];
-  const double EI = E * j.second_moment();
+  const double EI = j.section(E).flexural_rigidity();
   switch (j.type) {
     case PivotType::kPin:
       return 0.0;
@@ -274,9 +278,11 @@ double MechanismDesign::spring_constant(int pivot) const {
       if (j.segment == SegmentKind::kFixedFixed) {
         return spring_rule_factor(spring_rule, j) * EI / j.length;  // paper 004 Tables 2/5
       }
-      return EI / j.length;  // Howell eq. 5.14
+      // Howell eq. 5.14. Not PrbmElement::spring_constant, which refuses EI = 0: check_loads
+      // reports a product that left double precision with its own message.
+      return SmallLengthFlexuralPivot::kStiffnessCoefficient * EI / j.length;
     case PivotType::kLong:
-      return kGamma * kKtheta * EI / j.length;  // Howell eq. 5.72
+      return howell_average_fixed_pinned().stiffness_coefficient() * EI / j.length;  // eq. 5.72
   }
   return 0.0;
 }
@@ -303,7 +309,7 @@ void MechanismDesign::finalise() {
     require_positive(j.width, fmt::format("{} width (m)", pivot_label(p)));
     const double link = associated_link_length(*this, p);
     if (j.type == PivotType::kLong) {
-      j.length = link / kGamma;  // thesis Table 8.1: l = r/gamma
+      j.length = link / long_segment_gamma();  // thesis Table 8.1: l = r/gamma
     } else if (j.segment == SegmentKind::kFixedFixed) {
       // No default: the modified configurations give every segment's length (paper Table 3/5).
       require_positive(j.length, fmt::format("{} fixed-fixed segment length (m)", pivot_label(p)));

@@ -6,14 +6,16 @@
 //
 // The PRBM link lengths r2, r3 are the primary geometry (the thesis designs in r_tot = r2 + r3);
 // the physical segments follow Table 8.1: an s flexure of length f is centred on its PRB pivot
-// (f = 0.1 r_i by default, r_ave for the middle pivot); an l segment is r/gamma long (gamma =
-// 0.85), replaces link 2 (at the ground, or plp) or link 3 (slp), and its characteristic pivot is
-// 0.15 l from its clamp. The modified configurations of paper 004 add fixed-fixed segments
-// (SegmentKind below; modified_designs.h). Units: SI (m, Pa, N) throughout.
+// (f = 0.1 r_i by default, r_ave for the middle pivot); an l segment is r/gamma long, replaces
+// link 2 (at the ground, or plp) or link 3 (slp), and its characteristic pivot is (1 - gamma) l
+// from its clamp, with Howell's average gamma (howell_average_fixed_pinned(),
+// elements/fixed_pinned_segment.h). The modified configurations of paper 004 add fixed-fixed
+// segments (SegmentKind below; modified_designs.h). Units: SI (m, Pa, N) throughout.
 #include <array>
 #include <string>
 #include <vector>
 
+#include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
 
 namespace flexure::mechanism {
@@ -44,8 +46,9 @@ struct JointDesign {
   char paper_letter = 0;       // kFixedFixed: the paper's letter, 'l' or 's' (Table 2/5 factor)
   double table2_factor = 0.3;  // kFixedFixed 'l': n of Table 2's n gamma K_theta EI/L
 
-  double second_moment() const { return width * thickness * thickness * thickness / 12.0; }
-  double area() const { return width * thickness; }
+  // The rectangular cross-section (elements/prbm_element.h) in a material of Young's modulus E:
+  // second moment b h^3/12, area b h, flexural rigidity E b h^3/12.
+  RectangularSection section(double E) const { return {width, thickness, E}; }
 };
 
 struct MechanismDesign {
@@ -72,9 +75,10 @@ struct MechanismDesign {
   double R() const { return r3 / r2; }
   // Largest allowed stroke (the toggle position of the PRBM slider-crank), m.
   double toggle_stroke() const;
-  // Torsional spring constant of the PRB pivot i (1..3), N m/rad; 0 for a pin.
-  //   s: K = EI/l (Howell eq. 5.14);  l: K = gamma K_theta EI/l (eq. 5.72), gamma = 0.85,
-  //   K_theta = 2.65 (the thesis's constants, digest §2.2); a fixed-fixed segment by
+  // Torsional spring constant of the PRB pivot i (1..3), N m/rad; 0 for a pin. The elements'
+  // stiffness coefficients times EI/l:
+  //   s: K = EI/l (SmallLengthFlexuralPivot, Howell eq. 5.14);  l: K = gamma K_theta EI/l
+  //   (howell_average_fixed_pinned(), eq. 5.72; Weight 2001 §2.2); a fixed-fixed segment by
   //   `spring_rule` (spring_rule_factor in modified_designs.h).
   double spring_constant(int pivot) const;
   // Fills the derived flexible lengths (s: 0.1 r_i if unset; l: r_i/gamma) and checks every value.

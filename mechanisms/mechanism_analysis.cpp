@@ -12,8 +12,6 @@
 namespace flexure::mechanism {
 namespace {
 
-constexpr double kGamma = 0.85;  // fixed-pinned characteristic radius factor (thesis §2.2)
-
 // Checks the long segments of the PRBM at one state against Howell Table 5.1; returns a reason
 // when the state is outside the range, empty otherwise.
 std::string validity_violation(const MechanismDesign& d, const PrbmState& s) {
@@ -41,24 +39,23 @@ std::string validity_violation(const MechanismDesign& d, const PrbmState& s) {
           p);
     }
     const double n = -Pa / Pt;  // Howell eq. 5.37 sense: compressive axial force for n > 0
-    FixedPinnedConstants c;
+    ValidityLimits limits;
     try {
-      c = FixedPinnedConstants::from_table(n);
+      limits = FixedPinnedSegment(FixedPinnedConstants::from_table(n)).limits();
     } catch (const std::exception&) {
       return fmt::format(
           "l segment at pivot {}: load ratio n = {:.3g} outside Howell Table 5.1", p, n);
     }
-    if (std::abs(Theta) > c.theta_max_K) {
+    if (!limits.contains_force(Theta)) {
       return fmt::format(
           "l segment at pivot {}: Theta = {:.1f} deg > Theta_max(K_theta) = {:.1f} deg at "
           "n = {:.3g} (Howell Table 5.1)",
           p,
           std::abs(Theta) * 180.0 / M_PI,
-          c.theta_max_K * 180.0 / M_PI,
+          limits.theta_max_force * 180.0 / M_PI,
           n);
     }
   }
-  (void)kGamma;
   return "";
 }
 

@@ -5,10 +5,11 @@
 // first slider position where the PRBM leaves its validity range.
 //
 // Validity range of the PRBM (docs/mechanisms.md): a long (fixed-pinned) segment is modelled with
-// gamma = 0.85, K_theta = 2.65; Howell Table 5.1 gives for its load ratio n the largest PRB angle
-// Theta_max(K_theta) up to which the force stays within 0.5 % of the exact one. The limit is the
-// first stroke point where Theta of an l segment exceeds Theta_max(K_theta) at its current n (or n
-// lies outside Table 5.1, or the pin force opposes the deflection). s pivots have no such table
+// Howell's average constants (§5.2, howell_average_fixed_pinned()); Howell Table 5.1 gives for its
+// load ratio n the largest PRB angle Theta_max(K_theta) up to which the force stays within 0.5 %
+// of the exact one. The limit is the first stroke point where Theta of an l segment exceeds
+// Theta_max(K_theta) at its current n (ValidityLimits::contains_force of the Table 5.1 element; or
+// n lies outside Table 5.1, or the pin force opposes the deflection). s pivots have no such table
 // (they are assumed valid; their error shows in the comparison with the exact model).
 #include <array>
 #include <optional>

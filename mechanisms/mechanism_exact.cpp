@@ -5,13 +5,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flexure/elements/fixed_pinned_segment.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {
 namespace {
 
-constexpr double kGamma = 0.85;  // fixed-pinned characteristic radius factor (thesis §2.2)
+// Distance of an l segment's characteristic pivot from its clamp, / l: 1 - gamma (Howell §5.2).
+double long_segment_pivot() { return howell_average_fixed_pinned().geometry().pivot_x; }
 
 bool is_pin(const MechanismDesign& d, int pivot) {
   return d.joints[pivot - 1].type == PivotType::kPin;
@@ -20,7 +22,7 @@ bool is_pin(const MechanismDesign& d, int pivot) {
 void add_flexible(PhysicalChain& pc, const MechanismDesign& d, int pivot, double length) {
   FlexibleSegment f;
   f.length = length;
-  f.EI = d.E * d.joints[pivot - 1].second_moment();
+  f.EI = d.joints[pivot - 1].section(d.E).flexural_rigidity();
   pc.chain.segments.emplace_back(f);
   pc.flexible_pivot.push_back(pivot);
 }
@@ -71,7 +73,7 @@ PhysicalChain physical_chain(const MechanismDesign& d) {
       add_rigid(pc, d.r3 - 0.5 * f2);
     } else {  // plp: link 2 is the l segment, clamped into link 3 (Table 8.1: r3' = r3 - 0.15 f2)
       add_flexible(pc, d, 2, f2);
-      add_rigid(pc, d.r3 - (1.0 - kGamma) * f2);
+      add_rigid(pc, d.r3 - long_segment_pivot() * f2);
     }
     pc.slider_x0 = pc.chain.total_length();
     return pc;
@@ -83,7 +85,9 @@ PhysicalChain physical_chain(const MechanismDesign& d) {
   } else {
     r2_rigid -= 0.5 * f1;
     if (j[1].type == PivotType::kSmall) r2_rigid -= 0.5 * f2;
-    if (j[1].type == PivotType::kLong && !cfg.middle_long_on_r2) r2_rigid -= (1.0 - kGamma) * f2;
+    if (j[1].type == PivotType::kLong && !cfg.middle_long_on_r2) {
+      r2_rigid -= long_segment_pivot() * f2;
+    }
   }
   add_rigid(pc, r2_rigid);
   if (exact_support(d) == ExactSupport::kTwoForceCoupler) {
@@ -583,7 +587,9 @@ void accumulate_chain(const MechanismDesign& design,
       const int pivot = j < pivots.size() ? pivots[j] : 0;
       if (pivot > 0) {
         const JointDesign& jd = design.joints[pivot - 1];
-        const double sigma = m_max * 0.5 * jd.thickness / jd.second_moment() + N / jd.area();
+        const RectangularSection section = jd.section(design.E);
+        const double sigma =
+            m_max * 0.5 * jd.thickness / section.second_moment() + N / section.area();
         st.max_stress[pivot - 1] = std::max(st.max_stress[pivot - 1], sigma);
         st.pivot_strain_energy[pivot - 1] += U;
         st.pivot_rotation[pivot - 1] += end.theta - start.theta;

@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 
+#include "flexure/elements/fixed_pinned_segment.h"
 #include "flexure/mechanisms/broyden_newton_2d.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
@@ -12,8 +13,6 @@
 
 namespace flexure::mechanism {
 namespace {
-
-constexpr double kGamma = 0.85;  // fixed-pinned characteristic radius factor (thesis §2.2)
 
 // Multiple-shooting parts for a chain under a pin force of magnitude `force` (the rule of
 // shooting_problem.h, which cannot apply it itself: a pinned end's force is an unknown, not a
@@ -254,8 +253,9 @@ ExactPoint ExactMechanismSolver::solve_pinned_middle(double displacement,
     P << s.pin_force_x / force_scale_, s.pin_force_y / force_scale_;
     // PRB pivot 1: the centre of an s flexure, 0.15 l from the clamp of an l segment.
     const JointDesign& j1 = design_.joints[0];
-    const double pivot1 =
-        j1.type == PivotType::kLong ? (1.0 - kGamma) * j1.length : 0.5 * j1.length;
+    const double pivot1 = j1.type == PivotType::kLong
+                              ? howell_average_fixed_pinned().geometry().pivot_x * j1.length
+                              : 0.5 * j1.length;
     const double ax = (pivot1 + design_.r2 * std::cos(s.theta2)) / length_scale_;
     const double ay = design_.r2 * std::sin(s.theta2) / length_scale_;
     m0c = ax * P.y() - ay * P.x();

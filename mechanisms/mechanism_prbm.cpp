@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flexure/elements/fixed_pinned_segment.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/mechanisms/constant_force.h"
 #include "flexure/mechanisms/inversion.h"
@@ -12,8 +13,6 @@
 
 namespace flexure::mechanism {
 namespace {
-
-constexpr double kGamma = 0.85;  // fixed-pinned characteristic radius factor (thesis §2.2)
 
 double cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
 
@@ -70,19 +69,21 @@ PrbmState prbm_state(const MechanismDesign& design, double displacement) {
   for (int p = 1; p <= 3; ++p) {
     const JointDesign& j = design.joints[p - 1];
     if (j.type == PivotType::kPin) continue;
-    const double I = j.second_moment(), half_h = 0.5 * j.thickness;
+    const RectangularSection section = j.section(design.E);
+    const double I = section.second_moment(), half_h = 0.5 * j.thickness;
     double M = 0.0;
     if (j.type == PivotType::kSmall) {
       const double psi = p == 1 ? pose.psi1() : p == 2 ? pose.psi2() : pose.psi3();
       // A fixed-fixed strip turned by psi between its two rigid bodies is bent to the curvature
       // psi/L whatever spring rule the force uses: M = (EI/L) psi (pure bending).
       const double K = j.segment == SegmentKind::kFixedFixed
-                           ? design.E * j.second_moment() / j.length
+                           ? section.flexural_rigidity() / j.length
                            : design.spring_constant(p);
       M = K * std::abs(psi);
     } else {
-      const double back = (1.0 - kGamma) * j.length;  // clamp behind the characteristic pivot
-      double cx, cy, ex, ey;                          // clamp, pinned end
+      // Clamp behind the characteristic pivot: (1 - gamma) l (Howell §5.2).
+      const double back = howell_average_fixed_pinned().geometry().pivot_x * j.length;
+      double cx, cy, ex, ey;  // clamp, pinned end
       if (p == 1) {
         cx = -back, cy = 0.0, ex = p2x, ey = p2y;
       } else if (cfg.middle_long_on_r2) {  // plp: beam pinned at ground, clamped into link 3
@@ -92,7 +93,7 @@ PrbmState prbm_state(const MechanismDesign& design, double displacement) {
       }
       M = std::abs(cross(ex - cx, ey - cy, s.pin_force_x, s.pin_force_y));
     }
-    s.stress[p - 1] = M * half_h / I + P / j.area();
+    s.stress[p - 1] = M * half_h / I + P / section.area();
   }
   return s;
 }

@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "flexure/elements/fixed_pinned_segment.h"
 #include "flexure/mechanisms/data_files.h"
 #include "flexure/mechanisms/dynamics/cfsm_designs.h"
 #include "flexure/solver/common/csv_table.h"
@@ -15,8 +16,9 @@
 namespace flexure::mechanism {
 namespace {
 
-constexpr double kGamma = 0.85;   // paper eq. 1: gamma for long segments
-constexpr double kKtheta = 2.65;  // paper eq. 1: K_theta for long segments
+// Paper eq. 1: gamma and K_theta of long segments, Howell's averages (§5.2).
+double long_gamma() { return howell_average_fixed_pinned().constants().gamma; }
+double long_K_theta() { return howell_average_fixed_pinned().constants().K_theta; }
 constexpr double kL = 3.0 / 7.0;  // Table 3 factor of an l segment (times its rigid remainder)
 constexpr double kS = 0.1;        // Table 3 factor of an s segment
 constexpr double kTotalLength = 0.160;   // m: L_tot = Lambda r_tot = 160 mm (Tables 4-6)
@@ -69,7 +71,7 @@ std::vector<ModifiedConfiguration> make_configurations() {
 // Table 5's k = factor EI/L for pivot p of configuration c (twice Table 2, docs/dynamics.md §2).
 double table5_factor(const ModifiedConfiguration& c, int p) {
   const char letter = c.letters[p - 1];
-  return 2.0 * (letter == 'l' ? c.table2_factor[p - 1] * kGamma * kKtheta : 1.0);
+  return 2.0 * (letter == 'l' ? c.table2_factor[p - 1] * long_gamma() * long_K_theta() : 1.0);
 }
 
 // The rigid remainders of Table 3: link 2 loses half of each flexible segment at pivots 1 and 2,
@@ -111,7 +113,8 @@ MechanismDesign constructed_design(const ModifiedConfiguration& c, SpringRule ru
     Lambda = (R + 1.05) / (R + 1.0);  // Table 4
     sibling = "2A-llpm";
   } else {
-    Lambda = (1.05 * R * kGamma + 1.0) / (kGamma * (R + 1.0));  // Table 4 (2B-lpsm)
+    const double gamma = long_gamma();
+    Lambda = (1.05 * R * gamma + 1.0) / (gamma * (R + 1.0));  // Table 4 (2B-lpsm)
     sibling = "2B-lplm";
   }
   const double r_tot = kTotalLength / Lambda;
@@ -183,7 +186,8 @@ double spring_rule_factor(SpringRule rule, const JointDesign& j) {
   if (j.segment != SegmentKind::kFixedFixed) {
     throw InvalidInput("a spring rule applies to fixed-fixed segments only");
   }
-  const double table2 = j.paper_letter == 'l' ? j.table2_factor * kGamma * kKtheta : 1.0;
+  const double table2 =
+      j.paper_letter == 'l' ? j.table2_factor * long_gamma() * long_K_theta() : 1.0;
   switch (rule) {
     case SpringRule::kPureBending:
       return 1.0;  // end-moment strip between two rigid bodies: k = EI/L (Howell eq. 5.14)

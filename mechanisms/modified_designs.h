@@ -42,7 +42,8 @@ const ModifiedConfiguration& find_modified_configuration(const std::string& name
 std::array<double, 3> table3_lengths(const ModifiedConfiguration& c, double r2, double r3);
 
 // k = factor EI/L of a fixed-fixed segment under `rule` (mechanism.h SpringRule): pure bending 1;
-// Table 2: l n gamma K_theta (gamma = 0.85, K_theta = 2.65, n = joint.table2_factor), s 1;
+// Table 2: l n gamma K_theta (paper eq. 1: Howell's averages, howell_average_fixed_pinned(); n =
+// joint.table2_factor), s 1;
 // Table 5: twice Table 2. Throws InvalidInput for a joint that is not fixed-fixed.
 double spring_rule_factor(SpringRule rule, const JointDesign& joint);
 // "pure-bending", "table2", "table5"; throws InvalidInput naming the allowed values.

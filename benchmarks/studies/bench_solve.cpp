@@ -46,8 +46,7 @@ PointSolution solve_prbm(const BenchProblem& problem, const LoadPoint& load) {
   out.iterations = eq.iterations;
   out.message = eq.converged ? "" : eq.message;
   // Howell eq. 5.47 (position) and eq. 5.63 (force): the constants are trusted below both.
-  out.inside_validity =
-      std::fabs(eq.Theta) <= std::min(limits.theta_max_position, limits.theta_max_force) ? 1 : 0;
+  out.inside_validity = limits.contains(eq.Theta) ? 1 : 0;
   return out;
 }
 

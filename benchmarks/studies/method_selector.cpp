@@ -124,12 +124,12 @@ AutoMethodChoice choose_beam_method(const AutoMethodRequest& r) {
     const FixedPinnedSegment element(FixedPinnedConstants::from_table(r.load_ratio_n));
     const PrbEquilibrium eq = element.solve(EndLoad::howell(r.load_ratio_n, r.alpha2, 0.0));
     const ValidityLimits limits = element.limits();
-    const double theta_max = std::min(limits.theta_max_position, limits.theta_max_force);
+    const double theta_max = limits.theta_max();
     const double measured = prbm_measured_error(r.load_ratio_n, r.alpha2);
     constexpr double kDeg = 180.0 / 3.14159265358979323846;
     if (!eq.converged) {
       why_not_prbm = "the PRBM has no equilibrium at this load";
-    } else if (std::fabs(eq.Theta) > theta_max) {
+    } else if (!limits.contains(eq.Theta)) {
       why_not_prbm = fmt::format(
           "the PRB angle {:.1f} deg exceeds the validity limit Theta_max = {:.1f} deg (Howell "
           "eqs. 5.47, 5.63)",

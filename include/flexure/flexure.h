@@ -3,7 +3,7 @@
 //
 //   #include <flexure/flexure.h>
 //   const flexure::EllipticResult r =
-//   flexure::EllipticSolver().solve(flexure::EndLoad::howell(0, 3.087, 0));
+//       flexure::EllipticSolver().solve(flexure::EndLoad::howell(0, 3.087, 0));
 //   // r.tip.a_over_l, r.tip.b_over_l, r.tip.theta0
 //
 // Link `flexure::flexure` after `find_package(flexure REQUIRED)`.
@@ -19,6 +19,7 @@
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/inverse/tip_target.h"
+#include "flexure/solver/ode/ode_integrator.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 // Pseudo-rigid-body model elements and their derivation.

@@ -2,16 +2,20 @@
 
 #include <fmt/format.h>
 
+#include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/elements/small_length_flexural_pivot.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::cfm {
 
 SegmentConstants segment_constants(PivotType type) {
   switch (type) {
-    case PivotType::kSmall:
-      return {1.0, 1.0, 0.1};  // App. A.2: K = EI/l, l = 0.1 r (thesis eq. 4.5)
-    case PivotType::kLong:
-      return {0.85, 2.65, 1.0 / 0.85};  // App. A.3: gamma_ave, K_theta, l = r/gamma (eq. 4.4)
+    case PivotType::kSmall:  // App. A.2: K = EI/l, l = 0.1 r (thesis eq. 4.5)
+      return {1.0, SmallLengthFlexuralPivot::kStiffnessCoefficient, 0.1};
+    case PivotType::kLong: {  // App. A.3: gamma_ave, K_theta, l = r/gamma (eq. 4.4)
+      const FixedPinnedConstants& c = howell_average_fixed_pinned().constants();
+      return {c.gamma, c.K_theta, 1.0 / c.gamma};
+    }
     case PivotType::kPin:
       break;
   }

@@ -15,11 +15,13 @@ namespace flexure::cfm {
 
 enum class PivotType { kPin, kSmall, kLong };
 
-// PRBM constants of one pivot type (thesis digest §2.2, App. A.2/A.3; code `gamma`, `Ktheta`,
-// `roedata`).
+// PRBM constants of one pivot type (Weight 2001 §2.2, App. A.2/A.3; code `gamma`, `Ktheta`,
+// `roedata`), taken from the elements: s the small-length flexural pivot (gamma 1, K = EI/l,
+// Howell eq. 5.14), l the fixed-pinned segment with Howell's averages (§5.2,
+// howell_average_fixed_pinned()).
 struct SegmentConstants {
-  double gamma = 0.0;    // characteristic radius factor (s: 1, l: 0.85)
-  double K_theta = 0.0;  // stiffness coefficient (s: 1, l: 2.65)
+  double gamma = 0.0;    // characteristic radius factor (s: 1)
+  double K_theta = 0.0;  // stiffness coefficient (s: 1)
   double rho = 1.0;      // flexible length / associated rigid length (s: mu = 0.1, l: 1/gamma)
 };
 // Constants of each pivot type; a pin has gamma = K_theta = 0 (no spring, no stress).

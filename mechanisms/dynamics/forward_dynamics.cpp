@@ -1,19 +1,14 @@
 #include "flexure/mechanisms/dynamics/forward_dynamics.h"
 
-#include <cvodes/cvodes.h>
 #include <fmt/format.h>
-#include <nvector/nvector_serial.h>
-#include <sundials/sundials_context.h>
-#include <sunlinsol/sunlinsol_dense.h>
-#include <sunmatrix/sunmatrix_dense.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
-#include <memory>
+#include <span>
 
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/ode/ode_integrator.h"
 
 namespace flexure::dynamics {
 namespace {
@@ -25,55 +20,20 @@ struct RhsData {
   double crossing_level = 0.0;
 };
 
-// y = (theta2 - crossing_level, theta2'): the offset keeps the root function y0 at full relative
+// y = (theta2 - crossing_level, theta2'): the offset keeps the event function y0 at full relative
 // precision near the crossing (with theta2 itself, theta2 - level is exactly 0 over a short
 // interval after a root and CVODES stops with CV_ILL_INPUT, "root found at and very near t").
-// Returns 1 (recoverable) past the toggle position so CVODES cuts the step.
-int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
-  const auto& d = *static_cast<RhsData*>(user);
-  const double th = NV_Ith_S(y, 0) + d.crossing_level, w = NV_Ith_S(y, 1);
+// Returns 1 (recoverable) past the toggle position so the integrator cuts the step.
+int rhs(const RhsData& d, double t, std::span<const double> y, std::span<double> ydot) {
+  const double th = y[0] + d.crossing_level, w = y[1];
   ConfigurationTerms c;
   if (!d.model->try_terms(th, c)) return 1;
   const double F = (d.force != nullptr && *d.force) ? (*d.force)(t, th, w) : 0.0;
   if (!std::isfinite(F)) return -1;
   const double Q = -F * c.dr1 + d.model->friction_moment(c, std::tanh(w / d.sign_velocity));
-  NV_Ith_S(ydot, 0) = w;
-  NV_Ith_S(ydot, 1) = (Q - 0.5 * c.dM * w * w - c.dV) / c.M;
+  ydot[0] = w;
+  ydot[1] = (Q - 0.5 * c.dM * w * w - c.dV) / c.M;
   return 0;
-}
-
-int root(sunrealtype, N_Vector y, sunrealtype* gout, void*) {
-  gout[0] = NV_Ith_S(y, 0);
-  return 0;
-}
-
-std::string flag_text(const char* function, int flag) {
-  char* name = CVodeGetReturnFlagName(flag);
-  std::string text = fmt::format("CVODES {} returned {} ({})", function, flag, name);
-  free(name);  // allocated with malloc by CVODES
-  return text;
-}
-
-void silent_error_handler(int, const char*, const char*, char*, void*) {}
-
-// Owns the SUNDIALS objects of one integration.
-struct Cvode {
-  SUNContext context = nullptr;
-  N_Vector y = nullptr;
-  void* mem = nullptr;
-  SUNMatrix A = nullptr;
-  SUNLinearSolver LS = nullptr;
-  ~Cvode() {
-    if (mem != nullptr) CVodeFree(&mem);
-    if (LS != nullptr) SUNLinSolFree(LS);
-    if (A != nullptr) SUNMatDestroy(A);
-    if (y != nullptr) N_VDestroy(y);
-    if (context != nullptr) SUNContext_Free(&context);
-  }
-};
-
-void check(int flag, const char* function) {
-  if (flag < 0) throw std::runtime_error(flag_text(function, flag));
 }
 
 }  // namespace
@@ -177,38 +137,32 @@ ForwardResult ForwardDynamics::integrate(double theta2_0,
   data.sign_velocity = options_.friction_sign_velocity;
   data.crossing_level = options_.crossing_level;
 
-  Cvode cv;
-  if (SUNContext_Create(nullptr, &cv.context) != 0) {
-    throw std::runtime_error("SUNContext_Create failed");
-  }
-  cv.y = N_VNew_Serial(2, cv.context);
-  if (cv.y == nullptr) throw std::runtime_error("N_VNew_Serial failed");
-  NV_Ith_S(cv.y, 0) = theta2_0 - data.crossing_level;
-  NV_Ith_S(cv.y, 1) = theta2_dot_0;
-  cv.mem = CVodeCreate(options_.adams ? CV_ADAMS : CV_BDF, cv.context);
-  if (cv.mem == nullptr) throw std::runtime_error("CVodeCreate failed");
-  check(CVodeInit(cv.mem, rhs, 0.0, cv.y), "CVodeInit");
-  check(CVodeSStolerances(cv.mem, options_.rtol, options_.atol), "CVodeSStolerances");
-  check(CVodeSetUserData(cv.mem, &data), "CVodeSetUserData");
-  check(CVodeSetMaxNumSteps(cv.mem, options_.max_steps), "CVodeSetMaxNumSteps");
-  check(CVodeSetErrHandlerFn(cv.mem, silent_error_handler, nullptr), "CVodeSetErrHandlerFn");
-  cv.A = SUNDenseMatrix(2, 2, cv.context);
-  if (cv.A == nullptr) throw std::runtime_error("SUNDenseMatrix failed");
-  cv.LS = SUNLinSol_Dense(cv.y, cv.A, cv.context);
-  if (cv.LS == nullptr) throw std::runtime_error("SUNLinSol_Dense failed");
-  check(CVodeSetLinearSolver(cv.mem, cv.LS, cv.A), "CVodeSetLinearSolver");
-  if (options_.record_crossings) {
-    check(CVodeRootInit(cv.mem, 1, root), "CVodeRootInit");
-    int direction = 1;  // upward crossings only
-    check(CVodeSetRootDirection(cv.mem, &direction), "CVodeSetRootDirection");
-  }
+  OdeIntegrator::Options ode_options;
+  ode_options.rtol = options_.rtol;
+  ode_options.atol = options_.atol;
+  ode_options.max_steps = options_.max_steps;
+  ode_options.method = options_.adams ? OdeIntegrator::Method::kAdams : OdeIntegrator::Method::kBdf;
+  const OdeIntegrator integrator(ode_options);
+  OdeIntegrator::Event upward_crossing;
+  upward_crossing.g = [](double, std::span<const double> y) { return y[0]; };
+  upward_crossing.direction = OdeIntegrator::Direction::kUpward;
+  const double y0[2] = {theta2_0 - data.crossing_level, theta2_dot_0};
+  const OdeIntegrator::Solution solution = integrator.integrate(
+      [&data](double t, std::span<const double> y, std::span<double> ydot) {
+        return rhs(data, t, y, ydot);
+      },
+      0.0,
+      y0,
+      output_times,
+      options_.record_crossings ? &upward_crossing : nullptr);
 
   ForwardResult result;
+  result.upward_crossings = solution.event_times;
   const double E0 = model_.energy(theta2_0, theta2_dot_0);
   const bool conservative = !force;
-  auto record = [&](double t) {
-    const double th = NV_Ith_S(cv.y, 0) + data.crossing_level, w = NV_Ith_S(cv.y, 1);
-    result.t.push_back(t);
+  for (std::size_t i = 0; i < solution.t.size(); ++i) {
+    const double th = solution.y[i][0] + data.crossing_level, w = solution.y[i][1];
+    result.t.push_back(solution.t[i]);
     result.theta2.push_back(th);
     result.theta2_dot.push_back(w);
     result.delta_x.push_back(model_.delta_x_at(th));
@@ -217,33 +171,16 @@ ForwardResult ForwardDynamics::integrate(double theta2_0,
     if (conservative && E0 != 0.0) {
       result.residual = std::max(result.residual, std::abs(E - E0) / std::abs(E0));
     }
-  };
-  for (double t_out : output_times) {
-    double t_reached = 0.0;
-    while (true) {
-      const int flag = CVode(cv.mem, t_out, cv.y, &t_reached, CV_NORMAL);
-      if (flag == CV_ROOT_RETURN) {
-        result.upward_crossings.push_back(t_reached);
-        continue;
-      }
-      if (flag < 0) {
-        long steps = 0;
-        CVodeGetNumSteps(cv.mem, &steps);
-        result.iterations = steps;
-        result.message = fmt::format("{} at t = {} s (target {} s, {} outputs done)",
-                                     flag_text("CVode", flag),
-                                     t_reached,
-                                     t_out,
-                                     result.t.size());
-        return result;
-      }
-      break;
-    }
-    record(t_reached);
   }
-  long steps = 0;
-  check(CVodeGetNumSteps(cv.mem, &steps), "CVodeGetNumSteps");
-  result.iterations = steps;
+  result.iterations = solution.steps;
+  if (!solution.status.ok) {
+    result.message = fmt::format("{} at t = {} s (target {} s, {} outputs done)",
+                                 solution.status.message,
+                                 solution.status.t_reached,
+                                 solution.status.t_target,
+                                 result.t.size());
+    return result;
+  }
   result.converged = true;
   result.message = "integrated to the last output time";
   return result;

@@ -1,5 +1,6 @@
 #pragma once
-// Forward dynamics of the slider mechanism with SUNDIALS CVODES: the equation of motion
+// Forward dynamics of the slider mechanism with the beam layer's ODE integrator
+// (solver/ode/ode_integrator.h, SUNDIALS CVODES): the equation of motion
 //   M(theta2) theta2'' = -1/2 M'(theta2) theta2'^2 - V'(theta2) - F r1'(theta2) + Q_CF
 // (docs/dynamics.md eq. D7) as a first-order system in (theta2, theta2'), driven by an input force
 // F(t, theta2, theta2') of the whole mechanism (a prescribed force, a driving spring, or zero for a
@@ -30,8 +31,8 @@ struct ForwardOptions {
   long max_steps = 1000000;              // steps allowed between two output times
   bool adams = true;                     // Adams-Moulton (non-stiff) or BDF
   double friction_sign_velocity = 1e-3;  // tanh smoothing of sign(theta2'), rad/s (> 0)
-  // When true, times where theta2 crosses `crossing_level` upward are recorded (CVODES
-  // root finding), e.g. for periods of free oscillations.
+  // When true, times where theta2 crosses `crossing_level` upward are recorded (an event of the
+  // ODE integrator, CVODES root finding), e.g. for periods of free oscillations.
   bool record_crossings = false;
   double crossing_level = 0.0;  // rad
 };

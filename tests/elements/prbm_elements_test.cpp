@@ -2,7 +2,8 @@
 //  * small-length flexural pivot: Howell's two worked examples (§5.1, L3090-3151) at their printed
 //    precision, with the [calc] values of the book digest for the iterative one;
 //  * fixed-pinned PRBM side of the worked example (§5.2, L3411-3491), n = 0 and n = 1, at printed
-//    precision (the exact elliptic side is in prbm_examples_test.cpp);
+//    precision (the exact elliptic side is in prbm_examples_test.cpp); Howell's average constants
+//    (§5.2) that the mechanisms use; the validity-limit checks of ValidityLimits;
 //  * curve fits eqs. 5.48 and 5.60-5.62 against the digest's recomputed values, including their
 //    published discontinuities;
 //  * Table 5.2 rho and Theta_i from eqs. 5.115-5.118 against the digest's [calc] values and the
@@ -138,6 +139,36 @@ TEST(FixedPinnedSegment, ConstantsFromTableAreTheRowsAndInterpolateBetween) {
   EXPECT_NEAR(row.theta_max_gamma, 47.7 * kPi / 180.0, 1e-15);
   const FixedPinnedConstants mid = FixedPinnedConstants::from_table(0.25);
   EXPECT_NEAR(mid.gamma, 0.5 * (0.8517 + 0.8430), 1e-15);
+}
+
+TEST(FixedPinnedSegment, HowellAveragesAreTheConstantsOfSection52) {
+  // Howell §5.2: gamma = 0.85 and K_theta = 2.65 (eqs. 5.51, 5.64); the rest is Table 5.1, n = 0.
+  const FixedPinnedConstants c = FixedPinnedConstants::howell_average();
+  EXPECT_EQ(c.gamma, 0.85);
+  EXPECT_EQ(c.K_theta, 2.65);
+  EXPECT_EQ(c.load_ratio_n, 0.0);
+  EXPECT_EQ(c.c_theta, 1.2385);
+  EXPECT_NEAR(c.theta_max_K, 58.5 * kPi / 180.0, 1e-15);
+  const FixedPinnedSegment& segment = howell_average_fixed_pinned();
+  EXPECT_EQ(&segment, &howell_average_fixed_pinned());      // built once
+  EXPECT_EQ(segment.stiffness_coefficient(), 0.85 * 2.65);  // K = gamma K_theta EI/l, eq. 5.72
+  EXPECT_EQ(segment.geometry().pivot_x, 1.0 - 0.85);
+  EXPECT_EQ(SmallLengthFlexuralPivot(10.0).stiffness_coefficient(),
+            SmallLengthFlexuralPivot::kStiffnessCoefficient);
+}
+
+TEST(ValidityLimits, ContainsChecksBothLimitsAndContainsForceOnlyTheForceLimit) {
+  const ValidityLimits limits{1.0, 0.5, "test"};
+  EXPECT_EQ(limits.theta_max(), 0.5);
+  EXPECT_TRUE(limits.contains(0.5));
+  EXPECT_TRUE(limits.contains(-0.5));
+  EXPECT_FALSE(limits.contains(0.6));
+  EXPECT_FALSE(limits.contains(std::nan("")));
+  const ValidityLimits force_first{0.4, 0.5, "test"};
+  EXPECT_FALSE(force_first.contains(0.45));  // past the position limit
+  EXPECT_TRUE(force_first.contains_force(0.45));
+  EXPECT_TRUE(force_first.contains_force(-0.5));
+  EXPECT_FALSE(force_first.contains_force(-0.51));
 }
 
 // --- Curve fits (eqs. 5.48, 5.60-5.62) against the digest's recomputed values ------------------

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "flexure/io/mechanism_toml.h"
 #include "flexure/mechanisms/dynamics/cfsm_designs.h"
 #include "flexure/mechanisms/dynamics/inverse_dynamics.h"
 #include "flexure/mechanisms/dynamics/slider_crank_dynamics.h"
@@ -31,7 +32,6 @@
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
-#include "flexure/io/mechanism_toml.h"
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/gsl_guard.h"
@@ -187,7 +187,7 @@ TEST(MechanismModified, ExactSmallStrokeIsTheBucklingLoadAndThePrbmItsShortStrip
     s.joints[0].length *= shrink;
     s.joints[0].thickness *= std::cbrt(shrink);
     s.finalise();
-    const double EI = s.E * s.joints[0].second_moment(), L = s.joints[0].length;
+    const double EI = s.joints[0].section(s.E).flexural_rigidity(), L = s.joints[0].length;
     const double F_cr = buckling_load(EI, L, s.r2, s.r3);
     const ExactMechanismSolver solver(s);
     const ExactPoint p1 = solver.solve(1e-3 * s.stroke);
