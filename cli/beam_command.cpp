@@ -174,7 +174,7 @@ Json to_json(const BeamProblem& problem, const BeamSolution& solution) {
   out["b_over_l"] = solution.tip.b_over_l;
   out["theta0"] = solution.tip.theta0;
   out["iterations"] = solution.iterations;
-  out["converged"] = solution.converged;
+  out["converged"] = solution.converged();
   out["branch"] = solution.branch;
   out["inflection_points"] = solution.inflection_points;
   out["root_moment"] = solution.root_moment;
@@ -206,7 +206,7 @@ Json to_json(const BeamProblem& problem, const BeamSolution& solution) {
 void run_beam(const BeamArgs& args) {
   const BeamProblem problem = make_problem(args);
   const BeamSolution solution = solve_beam(args.method, problem);
-  if (!solution.converged) {
+  if (!solution.converged()) {
     throw NoConvergence(
         fmt::format("method '{}' found no converged solution after {} iterations: {}. {}",
                     solution.method,

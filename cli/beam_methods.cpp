@@ -48,7 +48,7 @@ BeamSolution solve_elliptic(const BeamProblem& problem) {
   }
   BeamSolution solution;
   solution.method = "elliptic";
-  solution.converged = result.converged;
+  solution.set_converged(result.converged());
   solution.message = result.message;
   solution.iterations = result.iterations;
   // Howell's alpha2 is the transverse component P l^2/EI = Fy (eq. 2.83, EndLoad::howell).
@@ -61,13 +61,13 @@ BeamSolution solve_elliptic(const BeamProblem& problem) {
   solution.tolerance = solver.options().tolerance;
   // The clamp holds the tip loads: -F, and the moment -M(0) (statics of the whole beam).
   solution.reactions = {-result.load.Fx, -result.load.Fy, -result.root_moment};
-  solution.load_factor = result.converged ? 1.0 : 0.0;
+  solution.load_factor = result.converged() ? 1.0 : 0.0;
   solution.limit_points = result.limit_points;
   solution.first_limit_load_factor = result.first_limit_load_factor;
   if (problem.given != BeamProblem::Given::kAlpha2) {
     solution.target_residual = std::fabs(given_quantity(problem, result.tip) - problem.value);
   }
-  if (result.converged && problem.shape_points > 0) {
+  if (result.converged() && problem.shape_points > 0) {
     solution.shape = solver.shape(result, problem.shape_points);
   }
   return solution;
@@ -87,7 +87,7 @@ BeamSolution solve_prbm(const BeamProblem& problem) {
   const ValidityLimits limits = element.limits();
   BeamSolution solution;
   solution.method = "prbm";
-  solution.converged = eq.converged;
+  solution.set_converged(eq.converged());
   solution.message = eq.message;
   solution.iterations = eq.iterations;
   solution.alpha2 = problem.value;
@@ -103,7 +103,7 @@ BeamSolution solve_prbm(const BeamProblem& problem) {
   // Moment at the clamp of the beam under the tip load (Howell eq. 5.21), mu = 0.
   solution.root_moment = eq.tip.a_over_l * load.Fy - eq.tip.b_over_l * load.Fx;
   solution.reactions = {-load.Fx, -load.Fy, -solution.root_moment};
-  solution.load_factor = eq.converged ? 1.0 : 0.0;
+  solution.load_factor = eq.converged() ? 1.0 : 0.0;
   return solution;
 }
 
@@ -153,7 +153,7 @@ BeamSolution solve_numerical_forward(const std::string& method,
     ShootingSolver::Options options;
     options.shape_points = std::max(shape_points, 401);
     const ShootingResult r = solve_shooting(chain, options);
-    solution.converged = r.converged;
+    solution.set_converged(r.converged());
     solution.message = r.message;
     solution.iterations = r.iterations;
     solution.tip = r.tip_pose(length);
@@ -190,14 +190,14 @@ BeamSolution solve_numerical_forward(const std::string& method,
           r.first_limit_load_factor);
     }
     solution.inflection_points = count_curvature_sign_changes(r.shape);
-    if (shape_points > 0 && r.converged) solution.shape = resample(r.shape, shape_points);
+    if (shape_points > 0 && r.converged()) solution.shape = resample(r.shape, shape_points);
   } else {
     ChainAlgorithmSolver::Options options;
     options.elements = problem.elements;
     options.increments = problem.increments;
     options.variant = chain_variant_from_string(problem.chain_variant);
     const ChainResult r = solve_chain(chain, options);
-    solution.converged = r.converged;
+    solution.set_converged(r.converged());
     solution.message = r.message;
     solution.iterations = r.iterations;
     solution.tip = r.tip_pose;
@@ -211,7 +211,7 @@ BeamSolution solve_numerical_forward(const std::string& method,
                                   r.increments,
                                   to_string(options.variant));
     solution.inflection_points = count_curvature_sign_changes(r.nodes);
-    if (shape_points > 0 && r.converged) solution.shape = resample(r.nodes, shape_points);
+    if (shape_points > 0 && r.converged()) solution.shape = resample(r.nodes, shape_points);
   }
   // Howell's a/l, b/l are per unit length of the chain; the shape is reported the same way.
   for (ShapePoint& p : solution.shape) {
@@ -240,11 +240,11 @@ BeamSolution solve_numerical(const std::string& method, const BeamProblem& probl
   target.mu = problem.mu;
   auto forward = [&](double alpha2) -> std::optional<TipPose> {
     const BeamSolution s = solve_numerical_forward(method, problem, alpha2, 0);
-    if (!s.converged) return std::nullopt;
+    if (!s.converged()) return std::nullopt;
     return s.tip;
   };
   const TipTargetSolution found = solve_tip_target(target, forward, kNumericalInverseTolerance);
-  if (!found.converged) {
+  if (!found.converged()) {
     // What was reached is in the message; no further (possibly slow) solve at that load.
     BeamSolution missed;
     missed.method = method;
@@ -258,9 +258,9 @@ BeamSolution solve_numerical(const std::string& method, const BeamProblem& probl
       solve_numerical_forward(method, problem, found.alpha2, problem.shape_points);
   solution.iterations += found.forward_solves;
   solution.target_residual = std::fabs(given_quantity(problem, solution.tip) - problem.value);
-  if (!found.converged || !(solution.target_residual <= found.tolerance)) {
+  if (!found.converged() || !(solution.target_residual <= found.tolerance)) {
     // Never a load that misses its target with exit code 0: report what was reached.
-    solution.converged = false;
+    solution.set_converged(false);
     solution.message = fmt::format("{} (reached {} = {:.9g} at alpha2 = {:.9g}, target {:.9g})",
                                    found.message,
                                    target.name(),

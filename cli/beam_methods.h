@@ -13,6 +13,7 @@
 
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 
@@ -57,12 +58,9 @@ struct Reactions {
 };
 
 // A method-independent summary of one solve, with the keys `flexure beam --json` prints.
-struct BeamSolution {
+struct BeamSolution : SolveStatus {
   std::string method;         // the method actually used (what "auto" resolved to)
   std::string method_reason;  // why that method: the --method given, or auto's reasoning
-  bool converged = false;
-  std::string message;
-  int iterations = 0;
   double alpha2 = 0.0;
   TipPose tip;
   std::string branch;

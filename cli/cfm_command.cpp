@@ -48,7 +48,7 @@ using cfm::StrokeSampling;
 
 cfm::CfmExactResult solve_exact_or_throw(const CfmResult& r, const CfmArgs& args) {
   cfm::CfmExactResult e = cfm::solve_cfm_exact(r, make_exact_options(args));
-  if (!e.converged) throw NoConvergence("cfm --exact: exact model: " + e.message);
+  if (!e.converged()) throw NoConvergence("cfm --exact: exact model: " + e.message);
   if (e.force_vanishes_exact) {
     // Its min/max would be meaningless (negative when it changes sign): reported as 0
     // (docs/mechanisms.md "Percent constant force").
@@ -167,7 +167,7 @@ Json result_json(const CfmResult& r, const CfmOptions& options) {
   j["d_N_max"] = r.d_N_max;
   j["sampling"] = sampling_name(options);
   j["points"] = r.iterations;
-  j["converged"] = r.converged;
+  j["converged"] = r.converged();
   j["message"] = r.message;
   j["residual"] = r.residual;
   if (options.keep_curve) {
@@ -466,7 +466,7 @@ void add_exact_json(Json& j, const cfm::CfmExactResult& e, bool curve) {
 
 CfmResult evaluate_or_throw(const CfmModel& model, const CfmParameters& p) {
   CfmResult r = model.evaluate(p);
-  if (!r.converged) throw NoConvergence("cfm model: " + r.message);
+  if (!r.converged()) throw NoConvergence("cfm model: " + r.message);
   for (double v : {r.Phi, r.Xi, r.percent_constant_force, r.beta, r.lambda}) {
     require_finite_result(v, "cfm result");
   }

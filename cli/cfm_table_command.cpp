@@ -264,7 +264,7 @@ void run_exact_table(const CfmArgs& args) {
     if (args.exact_rows == "a" && !is_a) continue;
     const CfmResult r = evaluate_or_throw(CfmModel(), cfm::parameters_of(row));
     const cfm::CfmExactResult e = cfm::solve_cfm_exact(r, make_exact_options(args));
-    all_converged = all_converged && e.converged;
+    all_converged = all_converged && e.converged();
     const std::string stroke = r.stroke_clamped ? fmt::format("{:.2f}", r.stroke_percent)
                                                 : fmt::format("{:g}", r.stroke_percent);
     if (args.json) {
@@ -274,8 +274,8 @@ void run_exact_table(const CfmArgs& args) {
              {"percent_constant_force_printed", row.percent_constant_force},
              {"Phi", r.Phi},
              {"percent_constant_force", r.percent_constant_force},
-             {"converged", e.converged}};
-      if (e.converged) {
+             {"converged", e.converged()}};
+      if (e.converged()) {
         add_exact_json(j, e, false);
       } else {
         j["exact_message"] = e.message;
@@ -283,11 +283,11 @@ void run_exact_table(const CfmArgs& args) {
       rows.push_back(j);
       continue;
     }
-    const std::string phi_exact = e.converged ? fmt::format("{:.4f}", e.Phi_exact) : "–";
+    const std::string phi_exact = e.converged() ? fmt::format("{:.4f}", e.Phi_exact) : "–";
     const std::string xi_exact =
-        e.converged ? fmt::format("{:.1f}", e.percent_constant_force_exact) : "–";
+        e.converged() ? fmt::format("{:.1f}", e.percent_constant_force_exact) : "–";
     const std::string error =
-        e.converged
+        e.converged()
             ? fmt::format(
                   "{:.2f} % ({:.1f})", 100.0 * e.max_force_error, e.max_force_error_at_percent)
             : "not converged (" + e.message.substr(0, e.message.find("): ") + 1) + ")";

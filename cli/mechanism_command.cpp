@@ -14,6 +14,7 @@
 #include "cli/commands.h"
 #include "cli/slow_progress.h"
 #include "flexure/io/hdf5_file.h"
+#include "flexure/io/mechanism_toml.h"
 #include "flexure/io/output_path.h"
 #include "flexure/mechanisms/constant_force.h"
 #include "flexure/mechanisms/howell_designs.h"
@@ -22,7 +23,6 @@
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/mechanism_method.h"
-#include "flexure/io/mechanism_toml.h"
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/mechanisms/modified_springs.h"
 #include "flexure/solver/common/errors.h"
@@ -130,7 +130,7 @@ Json design_json(const MechanismDesign& d) {
 }
 
 Json analysis_json(const MechanismAnalysis& a) {
-  const bool exact = a.has_exact && a.exact.converged;
+  const bool exact = a.has_exact && a.exact.converged();
   Json j;
   j["design"] = design_json(a.design);
   j["units"] = "SI: m, N, Pa";
@@ -210,7 +210,7 @@ void write_hdf5(const std::string& path, const MechanismAnalysis& a, io::AtomicH
   root.set_attribute("safety_factor", a.safety_factor);
   root.write_dataset("displacement", std::span<const double>(a.prbm.displacement));
   root.write_dataset("force_prbm", std::span<const double>(a.prbm.force));
-  if (a.has_exact && a.exact.converged) {
+  if (a.has_exact && a.exact.converged()) {
     root.write_dataset("force_exact", std::span<const double>(a.force_exact));
     root.set_attribute("percent_constant_force_exact", a.percent_constant_force_exact);
     root.set_attribute("force_vanishes_exact", std::int64_t{a.force_vanishes_exact ? 1 : 0});
@@ -264,7 +264,7 @@ void print_validation(int points,
         throw NoConvergence(fmt::format("{}: {}", d.name, e.what()));
       }
     }();
-    const bool exact = a.has_exact && a.exact.converged;
+    const bool exact = a.has_exact && a.exact.converged();
     // Second opinion on the last stroke point: Howell's chain algorithm (corrected variant,
     // kChainCheckElements elements per chain) on the exact model's solution.
     std::optional<ChainCheck> check;
@@ -297,15 +297,15 @@ void print_validation(int points,
         exact ? fmt::format("{:.0f}", 100.0 * a.max_force_error_at / d.stroke) : "-",
         limit,
         a.safety_factor,
-        check ? (check->converged ? fmt::format("{:.1e}", check->tip_error / d.r2)
-                                  : std::string("did not converge"))
+        check ? (check->converged() ? fmt::format("{:.1e}", check->tip_error / d.r2)
+                                    : std::string("did not converge"))
               : std::string("-"));
     Json r = analysis_json(a);
     if (check) {
-      r["chain_check_converged"] = check->converged;
-      r["chain_check_tip_error"] = check->converged ? Json(check->tip_error) : Json(nullptr);
+      r["chain_check_converged"] = check->converged();
+      r["chain_check_tip_error"] = check->converged() ? Json(check->tip_error) : Json(nullptr);
       r["chain_check_closure_error"] =
-          check->converged ? Json(check->closure_error) : Json(nullptr);
+          check->converged() ? Json(check->closure_error) : Json(nullptr);
       r["chain_check_elements"] = kChainCheckElements;
       r["chain_check_at"] = a.exact.points.back().displacement;
     }
@@ -340,7 +340,7 @@ void print_spring_rules(int points, bool json) {
   Json rows = Json::array();
   for (const MechanismDesign& d : modified_designs()) {
     const SpringRuleComparison c = compare_spring_rules(d, points);
-    if (!c.converged) throw NoConvergence(fmt::format("{}: {}", d.name, c.message));
+    if (!c.converged()) throw NoConvergence(fmt::format("{}: {}", d.name, c.message));
     table += fmt::format(
         "| {} | {:.2f} | {:.2f} | {:.2f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | "
         "{:.2f} | {} | {} |\n",
@@ -466,7 +466,7 @@ void register_mechanism_command(CLI::App& app) {
     o.exact = choice.exact;
     o.progress = slow_progress(d.name + ": exact model, stroke points and stresses");
     const MechanismAnalysis a = analyze_mechanism(d, o);
-    if (a.has_exact && o.exact && !a.exact.converged) {
+    if (a.has_exact && o.exact && !a.exact.converged()) {
       throw NoConvergence(fmt::format("{}: {}", d.name, a.exact.message));
     }
     for (int p : a.yielding_pivots) {

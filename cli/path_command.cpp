@@ -10,13 +10,13 @@
 #include "cli/beam_methods.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "flexure/version.h"
 #include "flexure/io/chain_toml.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/output_path.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/shooting/shooting_solver.h"
+#include "flexure/version.h"
 
 namespace flexure::cli {
 namespace {
@@ -63,7 +63,7 @@ PathTable shooting_path(const SegmentChain& chain) {
     t.reaction_M.push_back(p.reaction.M);
     t.status.push_back(static_cast<int>(p.status));
   }
-  t.completed = path.completed;
+  t.completed = path.converged();
   t.lambda_reached = path.lambda_reached;
   t.limit_points = path.limit_points;
   t.message = path.message;
@@ -97,7 +97,7 @@ PathTable chain_path(const SegmentChain& chain, const PathArgs& args) {
   t.reaction_Fx.back() = r.root_reaction.Fx;
   t.reaction_Fy.back() = r.root_reaction.Fy;
   t.reaction_M.back() = r.root_reaction.M;
-  t.completed = r.converged;
+  t.completed = r.converged();
   t.lambda_reached = r.load_factor;
   t.message = r.message;
   return t;

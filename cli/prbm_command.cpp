@@ -63,7 +63,7 @@ PrbmDerivationOptions derivation_options(const PrbmArgs& args) {
 }
 
 void require_converged(const PrbmDerivation& d) {
-  if (!d.converged) throw NoConvergence("PRB derivation did not converge: " + d.message);
+  if (!d.converged()) throw NoConvergence("PRB derivation did not converge: " + d.message);
 }
 
 Json derivation_json(const PrbmDerivation& d) {
@@ -88,7 +88,7 @@ Json derivation_json(const PrbmDerivation& d) {
   j["theta_max_at_path_end"] = d.theta_max_at_path_end;
   j["samples"] = d.samples;
   j["exact_evaluations"] = d.iterations;
-  j["converged"] = d.converged;
+  j["converged"] = d.converged();
   j["message"] = d.message;
   return j;
 }
@@ -229,18 +229,18 @@ void table_initially_curved(const PrbmArgs& args) {
   for (const CurvedCantileverTableRow& row : table_5_2()) {
     const CurvedCantileverAverage a =
         derive_initially_curved_average(row.kappa0, args.n_min, args.n_max, args.n_steps, options);
-    if (!a.converged) throw NoConvergence("Table 5.2 derivation failed: " + a.message);
+    if (!a.converged()) throw NoConvergence("Table 5.2 derivation failed: " + a.message);
     if (args.json) {
       Json per_n = Json::array();
       for (std::size_t i = 0; i < a.per_n.size(); ++i) {
         const PrbmDerivation& d = a.per_n[i];
         Json j = derivation_json(d);
-        j["used_in_average"] = d.converged && !d.theta_max_at_path_end;
+        j["used_in_average"] = d.converged() && !d.theta_max_at_path_end;
         const PrbmDerivation& k = a.per_n_at_average_gamma[i];
         j["at_average_gamma"] = {{"K_theta", k.K_theta},
                                  {"theta_max_K_deg", k.theta_max_K / kDeg},
                                  {"theta_max_gamma_deg", k.theta_max_gamma / kDeg},
-                                 {"used_in_average", k.converged && !k.theta_max_at_path_end}};
+                                 {"used_in_average", k.converged() && !k.theta_max_at_path_end}};
         per_n.push_back(j);
       }
       rows.push_back({{"kappa0", row.kappa0},
@@ -408,9 +408,9 @@ ComparedModel fixed_pinned_model(const PrbmArgs& args) {
   model.at = [element, n](double alpha2) {
     require_in_range(alpha2, "--alpha2 (P l^2/EI)", 1e-9, 1e4);
     const EllipticResult exact = EllipticSolver().solve(EndLoad::howell(n, alpha2));
-    if (!exact.converged) throw NoConvergence("exact elliptic solve failed: " + exact.message);
+    if (!exact.converged()) throw NoConvergence("exact elliptic solve failed: " + exact.message);
     const PrbEquilibrium eq = element->solve(EndLoad::howell(n, alpha2));
-    if (!eq.converged) throw NoConvergence("PRBM equilibrium failed: " + eq.message);
+    if (!eq.converged()) throw NoConvergence("PRBM equilibrium failed: " + eq.message);
     Comparison c;
     c.load = alpha2;
     c.exact = exact.tip;
@@ -434,7 +434,7 @@ ComparedModel end_moment_model() {
     c.load = mu;
     c.exact = {std::sin(mu) / mu, (1.0 - std::cos(mu)) / mu, mu};  // circle, eqs. 2.59, 2.64
     const PrbEquilibrium eq = element->solve(EndLoad{0.0, 0.0, mu});
-    if (!eq.converged) throw NoConvergence("PRBM equilibrium failed: " + eq.message);
+    if (!eq.converged()) throw NoConvergence("PRBM equilibrium failed: " + eq.message);
     c.prbm = eq.tip;
     c.Theta = eq.Theta;
     const double gamma = element->constants().gamma;

@@ -77,9 +77,9 @@ void run_sweep_beam(const SweepBeamArgs& args) {
     at.value = load;
     BeamSolution solution = solve_beam(method, at);
     io::BeamSweepPoint point;
-    point.converged = solution.converged;
+    point.set_converged(solution.converged());
     point.tip = solution.tip;
-    if (!solution.converged) point.message = std::move(solution.message);
+    if (!solution.converged()) point.message = std::move(solution.message);
     return point;
   };
   io::BeamSweepOptions options;

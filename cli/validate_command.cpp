@@ -62,7 +62,7 @@ TimedSolve timed_solve(const ValidationMethod& method, const BeamProblem& proble
       elapsed = std::chrono::duration<double>(Clock::now() - start).count();
     }
     timed.seconds_per_solve = elapsed / repeats;
-    timed.solved = timed.solution.converged;
+    timed.solved = timed.solution.converged();
     if (!timed.solved) timed.error = "not converged: " + timed.solution.message;
   } catch (const std::exception& e) {
     // A reference problem the method rejects or cannot solve is a failed check, not a crash.

@@ -98,9 +98,9 @@ FixedFixedEquilibrium FixedFixedSegment::solve_free_end(const EndLoad& load) con
   result.Theta = x;
   result.theta0 = y;
   result.residual = std::max(std::abs(q1), std::abs(q2));
-  result.converged = std::isfinite(result.residual) && result.residual <= kTolerance;
+  result.set_converged(std::isfinite(result.residual) && result.residual <= kTolerance);
   result.tip = tip(x, y);
-  result.message = result.converged
+  result.message = result.converged()
                        ? fmt::format("generalised forces {:.2e} <= {:.0e} after {} Newton steps",
                                      result.residual,
                                      kTolerance,

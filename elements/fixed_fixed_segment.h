@@ -10,16 +10,14 @@
 
 #include "flexure/elements/fixed_pinned_segment.h"
 #include "flexure/elements/prbm_element.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 
-struct FixedFixedEquilibrium {
-  bool converged = false;
-  std::string message;
-  int iterations = 0;
-  double residual = 0.0;  // max |generalized force| at the returned point
-  double Theta = 0.0;     // middle-link angle, rad
-  double theta0 = 0.0;    // end-link angle, rad
+struct FixedFixedEquilibrium : SolveStatus {
+  // residual: max |generalized force| at the returned point
+  double Theta = 0.0;   // middle-link angle, rad
+  double theta0 = 0.0;  // end-link angle, rad
   TipPose tip;
 };
 

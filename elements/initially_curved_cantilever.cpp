@@ -38,7 +38,7 @@ CurvedCantileverConstants CurvedCantileverConstants::from_derivation(double kapp
                                                                      double n_min,
                                                                      double n_max) {
   const CurvedCantileverAverage a = derive_initially_curved_average(kappa0, n_min, n_max);
-  if (!a.converged) {
+  if (!a.converged()) {
     throw NoConvergence("curved-cantilever constants could not be derived: " + a.message);
   }
   CurvedCantileverConstants c;

@@ -297,9 +297,9 @@ PrbmDerivation derive_from_path(
   d.K_theta = k_fit.slope;
   d.samples_K_theta_fit = k_fit.count;
 
-  d.converged = c_fit.count >= 2 && k_fit.count >= 2 && std::isfinite(d.c_theta) &&
-                std::isfinite(d.K_theta) && d.theta_max_gamma > 0.0;
-  if (!d.converged) {
+  d.set_converged(c_fit.count >= 2 && k_fit.count >= 2 && std::isfinite(d.c_theta) &&
+                  std::isfinite(d.K_theta) && d.theta_max_gamma > 0.0);
+  if (!d.converged()) {
     d.message = fmt::format(
         "too few samples inside the fitted ranges ({} for c_theta, {} for K_theta); use a smaller "
         "theta0 step",
@@ -337,7 +337,7 @@ PrbmDerivation derive_fixed_pinned(double n, const PrbmDerivationOptions& option
   std::string failure;
   const auto exact = [&](double theta0) {
     const EllipticResult r = solver.solve_for_tip_angle(n, theta0);
-    if (!r.converged) throw NoConvergence(r.message);
+    if (!r.converged()) throw NoConvergence(r.message);
     return PathSample{theta0, r.tip.a_over_l, r.tip.b_over_l, r.load.Fy, true, theta0};
   };
 
@@ -377,7 +377,7 @@ PrbmDerivation derive_fixed_pinned(double n, const PrbmDerivationOptions& option
   try {
     d = derive_from_path(samples, exact, tangential, theta_max_K, options);
   } catch (const NoConvergence& e) {
-    d.converged = false;
+    d.set_converged(false);
     d.message = fmt::format("refining Theta_max failed: {}", e.what());
   }
   d.segment = "fixed-pinned";
@@ -431,7 +431,7 @@ PathSample curved_tip(const EllipticSolver& solver, CurvedPath& path, double alp
   // M, Howell eq. 2.103).
   const EllipticResult r = solver.solve(EndLoad::howell(path.n, alpha2, path.kappa0));
   ++path.solves;
-  if (!r.converged) throw NoConvergence(r.message);
+  if (!r.converged()) throw NoConvergence(r.message);
   return PathSample{r.tip.theta0, r.tip.a_over_l, r.tip.b_over_l, alpha2, true, alpha2};
 }
 
@@ -557,10 +557,11 @@ PrbmDerivation derive_on_curved_path(CurvedPath& path,
     try {
       d = derive_from_path(path.samples, exact, tangential, theta_max_K, o, path.unloaded);
     } catch (const NoConvergence& e) {
-      d.converged = false;
+      d.set_converged(false);
       d.message = fmt::format("refining Theta_max failed: {}", e.what());
     }
-    if (!options.curved_K_range_from_gamma && d.gamma > 0.0 && (d.converged || fixed_gamma > 0.0)) {
+    if (!options.curved_K_range_from_gamma && d.gamma > 0.0 &&
+        (d.converged() || fixed_gamma > 0.0)) {
       // The straight beam's range scaled to the angle the link can turn before it lines up with
       // the force, phi - Theta_i (for kappa0 = 0 the straight rule itself; for n < 0 it is
       // 0.7 (phi - Theta_i), eq. 5.63 measured from Theta_i). Unscaled, the range would pass
@@ -572,8 +573,8 @@ PrbmDerivation derive_on_curved_path(CurvedPath& path,
           });
       d.K_theta = k_fit.slope;
       d.samples_K_theta_fit = k_fit.count;
-      d.converged = k_fit.count >= 2 && std::isfinite(d.K_theta);
-      if (!d.converged) {
+      d.set_converged(k_fit.count >= 2 && std::isfinite(d.K_theta));
+      if (!d.converged()) {
         d.message = "too few samples in the K_theta range; use a smaller step";
       } else if (fixed_gamma > 0.0) {
         d.message = fmt::format(
@@ -645,7 +646,7 @@ CurvedCantileverAverage derive_initially_curved_average(double kappa0,
     // Trapezoid weights: (int f dn)/(int dn), Howell eqs. 5.51 and 5.64.
     const double w = (j == 0 || j == n_intervals) ? 0.5 : 1.0;
     weights.push_back(w);
-    if (d.converged && !d.theta_max_at_path_end) {
+    if (d.converged() && !d.theta_max_at_path_end) {
       w_sum += w;
       gamma += w * d.gamma;
       K_theta += w * d.K_theta;
@@ -678,7 +679,7 @@ CurvedCantileverAverage derive_initially_curved_average(double kappa0,
   std::string K_left_out;
   for (std::size_t j = 0; j < paths.size(); ++j) {
     PrbmDerivation d = derive_on_curved_path(paths[j], options, avg.gamma);
-    if (d.converged && !d.theta_max_at_path_end) {
+    if (d.converged() && !d.theta_max_at_path_end) {
       w_K += weights[j];
       K_common += weights[j] * d.K_theta;
       ++avg.used_K;
@@ -694,7 +695,7 @@ CurvedCantileverAverage derive_initially_curved_average(double kappa0,
     return avg;
   }
   avg.K_theta = K_common / w_K;
-  avg.converged = true;
+  avg.set_converged(true);
   avg.message =
       fmt::format("gamma averaged over {} of {} load ratios in [{:g}, {:g}], K_theta over {}",
                   avg.used,

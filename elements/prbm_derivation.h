@@ -32,6 +32,8 @@
 #include <string>
 #include <vector>
 
+#include "flexure/solver/common/status.h"
+
 namespace flexure {
 
 // One exact tip on the load path: tip angle, tip position and the load that produces it.
@@ -89,11 +91,10 @@ struct PrbmDerivationOptions {
   void validate() const;
 };
 
-struct PrbmDerivation {
-  bool converged = false;
-  std::string message;    // what limited the result, or why it failed
-  int iterations = 0;     // exact tip evaluations (samples + root-finding refinements)
-  double residual = 0.0;  // |error/delta - error_limit| at the refined Theta_max(gamma)
+struct PrbmDerivation : SolveStatus {
+  // message: what limited the result, or why it failed
+  // iterations: exact tip evaluations (samples + root-finding refinements)
+  // residual: |error/delta - error_limit| at the refined Theta_max(gamma)
 
   std::string segment;  // "fixed-pinned", "end-moment" or "initially-curved"
   double load_ratio_n = 0.0;
@@ -142,11 +143,9 @@ PrbmDerivation derive_initially_curved(double kappa0,
 // ("a constant value of gamma for various values of n", §5.5.1) -- averaged. Load ratios whose
 // derivation fails (the force does not open the link, or the path ends first) are left out and
 // named in `message`; the average is then over the remaining ones.
-struct CurvedCantileverAverage {
-  bool converged = false;
-  std::string message;
-  int iterations = 0;     // elliptic solves over all load ratios
-  double residual = 0.0;  // largest per-n residual of pass 1
+struct CurvedCantileverAverage : SolveStatus {
+  // iterations: elliptic solves over all load ratios
+  // residual: largest per-n residual of pass 1
   double kappa0 = 0.0;
   double n_min = -0.5;
   double n_max = 1.0;

@@ -65,8 +65,8 @@ PrbEquilibrium PrbmElement::solve(const EndLoad& load) const {
   const double r0 = residual(start);
   result.Theta = start;
   result.residual = std::abs(r0);
-  result.converged = std::abs(r0) <= kTolerance;
-  if (!result.converged) {
+  result.set_converged(std::abs(r0) <= kTolerance);
+  if (!result.converged()) {
     const double direction = r0 < 0.0 ? 1.0 : -1.0;
     double lo = start, r_lo = r0, hi = start, r_hi = r0;
     bool bracketed = false;
@@ -104,7 +104,7 @@ PrbEquilibrium PrbmElement::solve(const EndLoad& load) const {
       }
       result.Theta = x;
       result.residual = std::abs(r);
-      result.converged = std::isfinite(r) && result.residual <= kTolerance;
+      result.set_converged(std::isfinite(r) && result.residual <= kTolerance);
     } else {
       result.Theta = hi;
       result.residual = std::abs(r_hi);
@@ -112,7 +112,7 @@ PrbEquilibrium PrbmElement::solve(const EndLoad& load) const {
   }
   result.tip = tip(result.Theta);
   result.message =
-      result.converged
+      result.converged()
           ? fmt::format("virtual-work residual {:.2e} <= {:.0e} after {} evaluations",
                         result.residual,
                         kTolerance,

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "flexure/solver/common/end_load.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 
@@ -72,13 +73,10 @@ struct SectionStress {
 };
 
 // Equilibrium of the PRB model under a given tip load (nondimensional).
-struct PrbEquilibrium {
-  bool converged = false;
-  std::string message;
-  int iterations = 0;
-  double residual = 0.0;  // |spring_moment - generalized_load| at the returned Theta
-  double Theta = 0.0;     // PRB angle, rad
-  TipPose tip;            // PRB tip at Theta
+struct PrbEquilibrium : SolveStatus {
+  // residual: |spring_moment - generalized_load| at the returned Theta
+  double Theta = 0.0;  // PRB angle, rad
+  TipPose tip;         // PRB tip at Theta
 };
 
 // Virtual work per unit dTheta of a tip force on a rigid link of length r at angle Theta:

@@ -10,7 +10,7 @@ int main() {
   // Forward: the load in Howell's parameters (n = 0: no horizontal component; mu: no end moment).
   const flexure::EllipticResult forward =
       solver.solve(flexure::EndLoad::howell(0.0, 3.087003, 0.0));
-  if (!forward.converged) {
+  if (!forward.converged()) {
     std::fprintf(stderr, "not converged: %s\n", forward.message.c_str());
     return 3;
   }

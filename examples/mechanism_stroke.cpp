@@ -26,6 +26,6 @@ int main() {
   std::printf("percent constant force: PRBM %.2f %%, exact %.2f %%\n",
               a.prbm.percent_constant_force,
               a.percent_constant_force_exact);
-  std::printf("exact model: %s\n", a.exact.converged ? "converged" : a.exact.message.c_str());
-  return a.exact.converged ? 0 : 3;
+  std::printf("exact model: %s\n", a.exact.converged() ? "converged" : a.exact.message.c_str());
+  return a.exact.converged() ? 0 : 3;
 }

@@ -22,7 +22,7 @@ int main() {
   for (int k = 1; k <= 12; ++k) {
     const double alpha2 = 0.75 * k;
     const flexure::EllipticResult r = exact.solve(flexure::EndLoad::howell(0.0, alpha2));
-    if (!r.converged) return 3;
+    if (!r.converged()) return 3;
     // The exact tip relative to the PRB pivot at x = (1 - gamma) l.
     const double dx = r.tip.a_over_l - (1.0 - gamma), dy = r.tip.b_over_l;
     const double Theta = std::atan2(dy, dx);

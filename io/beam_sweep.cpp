@@ -11,8 +11,8 @@
 #include <mutex>
 #include <thread>
 
-#include "flexure/version.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/version.h"
 
 namespace flexure::io {
 namespace {
@@ -54,12 +54,12 @@ BeamSweepTable run_beam_sweep(const std::vector<double>& alpha2,
           try {
             point = solve(alpha2[i]);
           } catch (const NoConvergence& e) {
-            point.converged = false;
+            point.set_converged(false);
             point.message = e.what();
           } catch (const InvalidInput& e) {
             throw InvalidInput(fmt::format("at alpha2 = {}: {}", alpha2[i], e.what()));
           }
-          if (point.converged && finite_pose(point.tip)) {
+          if (point.converged() && finite_pose(point.tip)) {
             table.a_over_l[i] = point.tip.a_over_l;
             table.b_over_l[i] = point.tip.b_over_l;
             table.theta0[i] = point.tip.theta0;
@@ -108,7 +108,7 @@ BeamSweepTable run_beam_sweep(const std::vector<double>& alpha2,
     try {
       BeamSweepPoint point = solve(alpha2[table.first_failure]);
       table.first_failure_message =
-          point.converged ? "the solution contains a non-finite value" : point.message;
+          point.converged() ? "the solution contains a non-finite value" : point.message;
     } catch (const NoConvergence& e) {
       table.first_failure_message = e.what();
     }

@@ -1,9 +1,9 @@
 #pragma once
 // A load sweep of the end-loaded cantilever and its HDF5 layout (`flexure sweep beam`).
 //
-// It lives in the library, not in cli/, so that benchmarks/perf/sweep_bench.cpp measures exactly what
-// the tool does: solve every point (optionally on a few threads), then write each column with a
-// single HDF5 call.
+// It lives in the library, not in cli/, so that benchmarks/perf/sweep_bench.cpp measures exactly
+// what the tool does: solve every point (optionally on a few threads), then write each column with
+// a single HDF5 call.
 //
 // File layout (all datasets 1-D, one entry per load, in the order of the requested range):
 //   /alpha2    float64  P l^2/EI (Howell eq. 2.83)
@@ -20,6 +20,7 @@
 
 #include "flexure/io/hdf5_file.h"
 #include "flexure/solver/common/end_load.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::io {
 
@@ -28,10 +29,9 @@ inline constexpr int kSweepConverged = 0;
 inline constexpr int kSweepNotConverged = 1;
 
 // Result of one point as reported by the method.
-struct BeamSweepPoint {
-  bool converged = false;
+struct BeamSweepPoint : SolveStatus {
   TipPose tip;
-  std::string message;  // why it failed (only needed when !converged)
+  // message: why it failed (only needed when !converged)
 };
 
 // Solves one load alpha2; must be safe to call from several threads at once. May throw

@@ -69,7 +69,7 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
   a.prbm = prbm_stroke(d, options.points);
   // A non-finite PRBM force (a singular pose that finalise() did not catch) must not pass on as a
   // truncated curve with a percent constant force of 0.
-  if (!a.prbm.converged) throw NoConvergence(fmt::format("{}: {}", d.name, a.prbm.message));
+  if (!a.prbm.converged()) throw NoConvergence(fmt::format("{}: {}", d.name, a.prbm.message));
   for (double dx : a.prbm.displacement) {
     const std::string why = validity_violation(d, prbm_state(d, dx));
     if (!why.empty()) {
@@ -92,7 +92,7 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
     a.exact =
         exact_stroke(d, a.prbm.displacement, ExactMechanismSolver::Options{}, stroke_progress);
     a.exact_note = a.exact.message;
-    if (a.exact.converged) {
+    if (a.exact.converged()) {
       double sum = 0.0;
       for (std::size_t k = 0; k < a.exact.points.size(); ++k) {
         const ExactPoint& p = a.exact.points[k];

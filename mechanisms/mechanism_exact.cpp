@@ -240,14 +240,14 @@ ExactPoint ExactMechanismSolver::solve_direct(double displacement,
   const ShootingSolver solver(options_.shooting);
   ShootingResult r;
   std::string history;
-  if (previous != nullptr && previous->converged) {
+  if (previous != nullptr && previous->converged()) {
     r = solver.solve_from(p.chain, previous->unknowns);
     charge(r.integrator_steps);
     p.iterations += r.iterations;
-    if (!r.converged) history = "from the previous point: " + r.message + "; ";
+    if (!r.converged()) history = "from the previous point: " + r.message + "; ";
   }
-  if (!r.converged && out_of_time()) history += budget_message() + "; ";
-  if (!r.converged && !out_of_time()) {
+  if (!r.converged() && out_of_time()) history += budget_message() + "; ";
+  if (!r.converged() && !out_of_time()) {
     const PrbmState s = prbm_state(design_, displacement);
     const double m_tip =
         is_pin(design_, 3) ? 0.0 : design_.spring_constant(3) * (-s.theta3);  // slider spring
@@ -256,19 +256,19 @@ ExactPoint ExactMechanismSolver::solve_direct(double displacement,
     r = solver.solve_from(p.chain, g);
     charge(r.integrator_steps);
     p.iterations += r.iterations;
-    if (!r.converged) history += "from the PRBM guess: " + r.message + "; ";
+    if (!r.converged()) history += "from the PRBM guess: " + r.message + "; ";
   }
   // (The shooting solver's own iterations are not bounded by the budget: it is checked between
   // the three attempts. docs/mechanisms.md "Work budget".)
-  if (!r.converged && !out_of_time()) {
+  if (!r.converged() && !out_of_time()) {
     r = solver.solve(p.chain);
     charge(r.integrator_steps);
     p.iterations += r.iterations;
-  } else if (!r.converged) {
+  } else if (!r.converged()) {
     r.message = budget_message();
   }
-  p.converged = r.converged;
-  p.message = r.converged ? r.method : history + "continuation: " + r.message;
+  p.set_converged(r.converged());
+  p.message = r.converged() ? r.method : history + "continuation: " + r.message;
   p.unknowns = r.unknowns;
   p.length_scale = length_scale_;
   p.EI_scale = EI_scale_;
@@ -276,7 +276,7 @@ ExactPoint ExactMechanismSolver::solve_direct(double displacement,
   p.Ny = r.tip_load.Fy * force_scale_;
   p.m0 = -r.reaction.M * moment_scale_;
   p.force = -p.Nx;
-  p.residual = r.residual_norm;
+  p.residual = r.residual;
   return p;
 }
 
@@ -294,7 +294,7 @@ ExactPoint ExactMechanismSolver::solve_two_force(double displacement,
   const double xs = (physical_.slider_x0 - displacement) / length_scale_;
   const double r3 = design_.r3 / length_scale_;
   double Q = 0.0, phi = 0.0, m0 = 0.0;
-  if (previous != nullptr && previous->converged) {
+  if (previous != nullptr && previous->converged()) {
     Q = std::hypot(previous->Nx, previous->Ny) / force_scale_;
     phi = previous->phi;
     m0 = previous->m0 / moment_scale_;
@@ -330,7 +330,7 @@ ExactPoint ExactMechanismSolver::solve_two_force(double displacement,
     e.sr = solver.solve_from(make_chain(q, f), {m0});
     charge(e.sr.integrator_steps);
     p.iterations += e.sr.iterations;
-    if (!e.sr.converged) return e;
+    if (!e.sr.converged()) return e;
     e.ok = true;
     e.r << e.sr.tip.x - (xs - r3 * std::cos(f)), e.sr.tip.y - r3 * std::sin(f);
     return e;
@@ -342,7 +342,7 @@ ExactPoint ExactMechanismSolver::solve_two_force(double displacement,
   // (one cantilever solve per step in the usual case instead of three).
   Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
   bool have_J = false, fresh_J = false;
-  if (options_.reuse_jacobian && previous != nullptr && previous->converged &&
+  if (options_.reuse_jacobian && previous != nullptr && previous->converged() &&
       previous->jacobian[0] != 0.0) {
     J << previous->jacobian[0], previous->jacobian[1], previous->jacobian[2], previous->jacobian[3];
     have_J = true;
@@ -415,13 +415,14 @@ ExactPoint ExactMechanismSolver::solve_two_force(double displacement,
   p.m0 = -e.sr.reaction.M * moment_scale_;
   p.force = -p.Nx;
   p.residual = e.r.norm() / scale;
-  p.converged = e.r.norm() <= std::max(options_.position_tolerance, options_.noise_floor) * scale;
-  p.message = p.converged ? fmt::format("force-controlled Newton on (Q, phi), {} steps", it)
-                          : fmt::format(
-                                "force-controlled Newton on (Q, phi) stopped after {} steps with "
-                                "|pivot 2 mismatch|/length = {:.3g}",
-                                it,
-                                p.residual);
+  p.set_converged(e.r.norm() <=
+                  std::max(options_.position_tolerance, options_.noise_floor) * scale);
+  p.message = p.converged() ? fmt::format("force-controlled Newton on (Q, phi), {} steps", it)
+                            : fmt::format(
+                                  "force-controlled Newton on (Q, phi) stopped after {} steps with "
+                                  "|pivot 2 mismatch|/length = {:.3g}",
+                                  it,
+                                  p.residual);
   return p;
 }
 
@@ -465,16 +466,16 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
       previous = &predicted;
     }
     ExactPoint point = solver.solve(dx, previous);
-    if (!point.converged && k == 0) {
+    if (!point.converged() && k == 0) {
       // No neighbour to start from and the PRBM start failed (mechanism_exact_start.cpp).
       ExactPoint started = exact_first_point(design, displacements, options);
-      if (started.converged) {
+      if (started.converged()) {
         point = std::move(started);
       } else {
         point.message += "; start strategies: " + started.message;
       }
     }
-    if (!point.converged && k >= 1) {
+    if (!point.converged() && k >= 1) {
       // Retry in substeps from the last converged point (large rotations per stroke step can
       // throw Newton onto another branch).
       const ExactPoint last = result.points[k - 1];
@@ -486,7 +487,7 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
           const double x = last.displacement + (dx - last.displacement) * i / m;
           ExactPoint q = solver.solve(x, &current);
           iterations += q.iterations;
-          ok = q.converged;
+          ok = q.converged();
           if (ok) current = std::move(q);
         }
         if (ok) {
@@ -500,7 +501,7 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
     result.points.push_back(std::move(point));
     const ExactPoint& p = result.points.back();
     result.iterations += p.iterations;
-    if (!p.converged) {
+    if (!p.converged()) {
       // Say first when the work budget ended it: the attempts' messages follow.
       result.message =
           fmt::format("exact model stopped at Delta x = {:.6g} m ({} of {} points): {}{}",
@@ -515,7 +516,7 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
     previous = &result.points.back();
     if (progress) progress(result.points.size(), displacements.size());
   }
-  result.converged = true;
+  result.set_converged(true);
   result.message = fmt::format("{} points converged", displacements.size());
   result.integrator_steps = *options.work_spent;
   return result;
@@ -541,7 +542,7 @@ void accumulate_chain(const MechanismDesign& design,
   o.backend = ElasticaIntegrator::Backend::kDormandPrince;
   o.shape_points = shape_points;
   const ShootingResult r = ShootingSolver(o).solve_from(chain, unknowns);
-  if (!r.converged || r.shape.size() < 2) {
+  if (!r.converged() || r.shape.size() < 2) {
     throw NoConvergence("re-solving the exact point for its shape failed: " + r.message);
   }
   auto moment = [&](const ShapePoint& q) { return m0 + (Nx * q.y - Ny * q.x) * L; };
@@ -605,7 +606,7 @@ void accumulate_chain(const MechanismDesign& design,
 ExactSegmentState exact_segment_state(const MechanismDesign& design,
                                       const ExactPoint& point,
                                       int shape_points) {
-  if (!point.converged) throw InvalidInput("exact_segment_state needs a converged point");
+  if (!point.converged()) throw InvalidInput("exact_segment_state needs a converged point");
   const PhysicalChain pc = physical_chain(design);
   ExactSegmentState st;
   accumulate_chain(design,

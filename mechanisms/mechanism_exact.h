@@ -41,6 +41,7 @@
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/chain_model/segment_chain.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure::mechanism {
@@ -65,7 +66,7 @@ struct PhysicalChain {
 };
 PhysicalChain physical_chain(const MechanismDesign& design);
 
-struct ExactPoint {
+struct ExactPoint : SolveStatus {
   double displacement = 0.0;  // Delta x, m
   double force = 0.0;         // slider input force, N (= -x reaction of the slider on the chain)
   double Nx = 0.0, Ny = 0.0;  // internal force of the chain (force on the chain's tip), N
@@ -92,10 +93,8 @@ struct ExactPoint {
   // change of sign between stroke points (with the same multiple-shooting cuts) means a singular
   // point was passed (fold or bifurcation).
   double stiffness_determinant = 0.0;
-  bool converged = false;
-  std::string message;
-  int iterations = 0;     // shooting Newton iterations, all solves of this point
-  double residual = 0.0;  // shooting residual; two-force case |pivot 2 mismatch|/slider_x0
+  // iterations: shooting Newton iterations, all solves of this point
+  // residual: shooting residual; two-force case |pivot 2 mismatch|/slider_x0
 };
 
 class ExactMechanismSolver {
@@ -177,12 +176,10 @@ class ExactMechanismSolver {
 // work_budget + work_budget_per_point * points.
 double exact_work_limit(const ExactMechanismSolver::Options& options, std::size_t points);
 
-struct ExactStrokeResult {
+struct ExactStrokeResult : SolveStatus {
   std::vector<ExactPoint> points;
-  bool converged = false;     // every point converged
+  // converged(): every point converged
   long integrator_steps = 0;  // work spent by all solves of the stroke (see Options::work_budget)
-  std::string message;
-  int iterations = 0;
 };
 ExactStrokeResult exact_stroke(const MechanismDesign& design,
                                const std::vector<double>& displacements);
@@ -242,9 +239,7 @@ double exact_strain_energy(const MechanismDesign& design,
 // algorithm's proportional loading from the straight chain finds another equilibrium of the
 // post-buckled, neutrally stable constant-force mechanism; a prescribed slider end starts it at a
 // bifurcation.)
-struct ChainCheck {
-  bool converged = false;
-  std::string message;
+struct ChainCheck : SolveStatus {
   double force = 0.0;        // slider force of the shooting solution, N
   double tip_error = 0.0;    // largest |tip_chain - tip_shooting| over the chains, m
   double angle_error = 0.0;  // largest |theta_chain - theta_shooting| at a chain tip, rad

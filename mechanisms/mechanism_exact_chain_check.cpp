@@ -70,7 +70,7 @@ ShootingSolver::Options check_shooting_options() {
 SolvedChain solve_again(const SegmentChain& chain, const std::vector<double>& unknowns) {
   SolvedChain out;
   const ShootingResult s = ShootingSolver(check_shooting_options()).solve_from(chain, unknowns);
-  if (!s.converged) {
+  if (!s.converged()) {
     out.message = "re-solving the shooting point failed: " + s.message;
     return out;
   }
@@ -195,7 +195,7 @@ ChainCheck check_chain(const SegmentChain& chain,
     o.refine_elements = false;  // a convergence study in N: each N is measured as it is
     const ChainResult r = solve_chain(part, o);
     ++c.pieces;
-    if (!r.converged) {
+    if (!r.converged()) {
       c.message = fmt::format(
           "segment {}, part at s = {:.6g}: {}", parts[k].segment, parts[k].s0, r.message);
       return c;
@@ -209,7 +209,7 @@ ChainCheck check_chain(const SegmentChain& chain,
   N = solved.N;
   c.tip_error = std::hypot(position.x() - exact.x, position.y() - exact.y);
   c.angle_error = std::abs(theta - exact.theta);
-  c.converged = true;
+  c.set_converged(true);
   return c;
 }
 
@@ -244,7 +244,7 @@ ChainCheck chain_algorithm_check(const ExactPoint& point, int elements, ChainVar
     ChainPose tip;
     const ChainCheck one = check_chain(*chain, *unknowns, o, tip, N);
     c.pieces += one.pieces;
-    if (!one.converged) {
+    if (!one.converged()) {
       c.message =
           (chains.size() > 1 && chain != chains.front().first ? "coupler: " : "") + one.message;
       return c;
@@ -269,7 +269,7 @@ ChainCheck chain_algorithm_check(const ExactPoint& point, int elements, ChainVar
     closure = std::hypot(t.x - xs, t.y);
   }
   c.closure_error = closure * point.length_scale;
-  c.converged = true;
+  c.set_converged(true);
   c.message = fmt::format(
       "chain algorithm ({}) converged on all {} flexible parts", to_string(variant), c.pieces);
   return c;

@@ -243,7 +243,7 @@ ExactPoint ExactMechanismSolver::solve_pinned_middle(double displacement,
   Eigen::Vector2d P;
   double m0c = 0.0, m0k = 0.0;  // root moments, crank and coupler
   Eigen::Vector2d pivot2;       // guess of pivot 2 (crank frame): where the cantilevers are pinned
-  if (previous != nullptr && previous->converged) {
+  if (previous != nullptr && previous->converged()) {
     P << previous->Nx / force_scale_, previous->Ny / force_scale_;
     m0c = previous->m0 / moment_scale_;
     m0k = previous->coupler_m0 / moment_scale_;
@@ -302,12 +302,12 @@ ExactPoint ExactMechanismSolver::solve_pinned_middle(double displacement,
       // (`p`, unconverged, as `previous` means: start from the PRBM, do not march again.)
       constexpr int kSteps = 8;
       ExactPoint q = solve_pinned_middle(displacement / kSteps, &p);
-      for (int k = 2; k <= kSteps && q.converged; ++k) {
+      for (int k = 2; k <= kSteps && q.converged(); ++k) {
         ExactPoint next = solve_pinned_middle(displacement * k / kSteps, &q);
         next.iterations += q.iterations;
         q = std::move(next);
       }
-      if (q.converged) {
+      if (q.converged()) {
         q.message +=
             fmt::format(" ({} steps from Delta x = {:.6g} m)", kSteps, displacement / kSteps);
         return q;
@@ -330,7 +330,7 @@ ExactPoint ExactMechanismSolver::solve_pinned_middle(double displacement,
   // Coupler angle above the axis, from pivot 2 to the slider joint.
   p.phi = std::atan2(n.crank_tip.y(), xs - n.crank_tip.x());
   p.stiffness_determinant = n.jacobian_determinant;
-  p.converged = true;
+  p.set_converged(true);
   p.message = fmt::format("Newton on the pin force and root moments, {} steps", n.iterations);
   return p;
 }
@@ -350,7 +350,7 @@ ExactPoint ExactMechanismSolver::solve_pinned_ends(double displacement,
   const double xs = (physical_.slider_x0 - displacement) / length_scale_;
   Eigen::Vector2d u;  // (F, alpha)
   double m0 = 0.0;
-  if (previous != nullptr && previous->converged) {
+  if (previous != nullptr && previous->converged()) {
     u << previous->force / force_scale_, previous->phi;
     m0 = previous->m0 / moment_scale_;
   } else {
@@ -385,12 +385,12 @@ ExactPoint ExactMechanismSolver::solve_pinned_ends(double displacement,
     // Continuation from zero load only for the very first evaluation of a stroke (see above).
     e.sr = solver.solve_from(make_chain(v), {m0});
     charge(e.sr.integrator_steps);
-    if (!e.sr.converged && fallback && !out_of_time()) {
+    if (!e.sr.converged() && fallback && !out_of_time()) {
       e.sr = solver.solve(make_chain(v));
       charge(e.sr.integrator_steps);
     }
     p.iterations += e.sr.iterations;
-    if (!e.sr.converged) return e;
+    if (!e.sr.converged()) return e;
     e.ok = true;
     e.r << e.sr.tip.x - xs, e.sr.tip.y;
     return e;
@@ -436,13 +436,13 @@ ExactPoint ExactMechanismSolver::solve_pinned_ends(double displacement,
   p.m0 = -e.sr.reaction.M * moment_scale_;
   p.force = u(0) * force_scale_;
   p.residual = e.r.norm();
-  p.converged = e.r.norm() <= std::max(options_.position_tolerance, options_.noise_floor);
-  p.message = p.converged ? fmt::format("Newton on (F, alpha), {} steps", it)
-                          : fmt::format(
-                                "Newton on (F, alpha) stopped after {} steps with "
-                                "|slider mismatch|/length = {:.3g}",
-                                it,
-                                p.residual);
+  p.set_converged(e.r.norm() <= std::max(options_.position_tolerance, options_.noise_floor));
+  p.message = p.converged() ? fmt::format("Newton on (F, alpha), {} steps", it)
+                            : fmt::format(
+                                  "Newton on (F, alpha) stopped after {} steps with "
+                                  "|slider mismatch|/length = {:.3g}",
+                                  it,
+                                  p.residual);
   return p;
 }
 

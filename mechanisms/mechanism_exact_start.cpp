@@ -15,7 +15,7 @@ ExactPoint walk(const ExactMechanismSolver& solver, ExactPoint from, double to, 
   const double x0 = from.displacement;
   for (int i = 1; i <= steps; ++i) {
     ExactPoint q = solver.solve(x0 + (to - x0) * i / steps, &from);
-    if (!q.converged) return q;
+    if (!q.converged()) return q;
     from = std::move(q);
   }
   return from;
@@ -48,10 +48,10 @@ ExactPoint exact_first_point(const MechanismDesign& design,
   // crank, so the start lands on the deflected branch; then back to the first point.
   if (last > first) {
     ExactPoint end = solver.solve(last);
-    if (end.converged) {
+    if (end.converged()) {
       for (int steps : {8, 32}) {
         ExactPoint p = walk(solver, end, first, steps);
-        if (p.converged) {
+        if (p.converged()) {
           p.message += fmt::format(" (started at Delta x = {:.6g} m, {} steps back)", last, steps);
           return p;
         }
@@ -63,7 +63,7 @@ ExactPoint exact_first_point(const MechanismDesign& design,
   }
   // (2) Thickness homotopy at the first displacement, halving the step on failure.
   ExactPoint current = ExactMechanismSolver(thickness_homotopy(design, 0.0), options).solve(first);
-  if (!current.converged) {
+  if (!current.converged()) {
     current.message = history + "equal thicknesses: " + current.message;
     return current;
   }
@@ -72,7 +72,7 @@ ExactPoint exact_first_point(const MechanismDesign& design,
     const double next = std::min(1.0, t + dt);
     ExactPoint q =
         ExactMechanismSolver(thickness_homotopy(design, next), options).solve(first, &current);
-    if (q.converged) {
+    if (q.converged()) {
       current = std::move(q);
       t = next;
       dt = std::min(0.5, 2.0 * dt);
@@ -84,7 +84,7 @@ ExactPoint exact_first_point(const MechanismDesign& design,
   }
   // Re-solve with the design's own solver so that the point carries its chain and scales.
   ExactPoint p = solver.solve(first, &current);
-  if (p.converged) p.message += " (thickness homotopy from equal flexures)";
+  if (p.converged()) p.message += " (thickness homotopy from equal flexures)";
   return p;
 }
 

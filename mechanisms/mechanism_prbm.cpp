@@ -100,6 +100,7 @@ PrbmState prbm_state(const MechanismDesign& design, double displacement) {
 
 PrbmStrokeResult prbm_stroke(const MechanismDesign& design, int points) {
   PrbmStrokeResult r;
+  r.set_converged(true);  // closed form: converged unless a value is not finite (below)
   r.displacement = stroke_displacements(design, points);
   r.force.reserve(points);
   for (int p = 0; p < 3; ++p) {
@@ -109,7 +110,7 @@ PrbmStrokeResult prbm_stroke(const MechanismDesign& design, int points) {
   for (double dx : r.displacement) {
     const PrbmState s = prbm_state(design, dx);
     if (!std::isfinite(s.force)) {
-      r.converged = false;
+      r.set_converged(false);
       r.message = fmt::format("PRBM force not finite at Delta x = {:.6g} m", dx);
       return r;
     }

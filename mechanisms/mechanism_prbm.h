@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "flexure/mechanisms/mechanism.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 
@@ -33,7 +34,7 @@ struct PrbmState {
 // PRBM state at one slider displacement 0 < Delta x <= toggle stroke (design finalised).
 PrbmState prbm_state(const MechanismDesign& design, double displacement);
 
-struct PrbmStrokeResult {
+struct PrbmStrokeResult : SolveStatus {
   std::vector<double> displacement;           // m
   std::vector<double> force;                  // N
   std::array<std::vector<double>, 3> stress;  // Pa, per pivot (empty for a pin)
@@ -46,10 +47,9 @@ struct PrbmStrokeResult {
                                               // the force vanishes (constant_force.h)
   bool force_vanishes = false;      // the force is zero within the stroke (or changes sign)
   bool force_changes_sign = false;  // the force takes both signs over the stroke
-  bool converged = true;            // closed form: all values finite
-  std::string message;
-  int iterations = 0;     // stroke points
-  double residual = 0.0;  // largest |F_statics - F_virtual_work|/|F| (two routes to the force)
+  // converged(): closed form: all values finite
+  // iterations: stroke points
+  // residual: largest |F_statics - F_virtual_work|/|F| (two routes to the force)
 };
 
 PrbmStrokeResult prbm_stroke(const MechanismDesign& design, int points);

@@ -13,7 +13,7 @@ namespace flexure::mechanism {
 std::array<std::optional<double>, 3> equivalent_spring_ratios(const MechanismDesign& design,
                                                               const ExactPoint& point,
                                                               int shape_points) {
-  if (!point.converged) throw InvalidInput("equivalent_spring_ratios needs a converged point");
+  if (!point.converged()) throw InvalidInput("equivalent_spring_ratios needs a converged point");
   const ExactSegmentState st = exact_segment_state(design, point, shape_points);
   std::array<std::optional<double>, 3> ratio;
   for (int p = 0; p < 3; ++p) {
@@ -33,7 +33,7 @@ SpringRuleComparison compare_spring_rules(const MechanismDesign& design, int poi
   d.finalise();
   const std::vector<double> dx = stroke_displacements(d, points);
   const ExactStrokeResult exact = exact_stroke(d, dx);
-  if (!exact.converged) {
+  if (!exact.converged()) {
     c.message = exact.message;
     return c;
   }
@@ -66,7 +66,7 @@ SpringRuleComparison compare_spring_rules(const MechanismDesign& design, int poi
   }
   c.k_ratio_start = equivalent_spring_ratios(design, exact.points.front());
   c.k_ratio_end = equivalent_spring_ratios(design, exact.points.back());
-  c.converged = true;
+  c.set_converged(true);
   c.message = exact.message;
   return c;
 }

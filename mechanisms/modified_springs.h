@@ -14,6 +14,7 @@
 
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_exact.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 
@@ -22,7 +23,7 @@ std::array<std::optional<double>, 3> equivalent_spring_ratios(const MechanismDes
                                                               const ExactPoint& point,
                                                               int shape_points = 4001);
 
-struct SpringRuleComparison {
+struct SpringRuleComparison : SolveStatus {
   std::string name;
   // Indexed by rule: pure-bending, table2, table5.
   std::array<double, 3> max_force_error{};   // max |F_prbm - F_exact|/|F_exact| over the stroke
@@ -31,8 +32,6 @@ struct SpringRuleComparison {
   double fitted_max_error = 0.0;             // max |c F_prbm(EI/L) - F_exact|/|F_exact|
   // k_eq/(EI/L) per pivot at the first and last stroke point.
   std::array<std::optional<double>, 3> k_ratio_start, k_ratio_end;
-  bool converged = false;
-  std::string message;
 };
 
 // `design` must have fixed-fixed segments; `points` stroke points as in analyze_mechanism.

@@ -26,7 +26,7 @@ void BM_ChainCantilever(benchmark::State& state, ChainVariant variant, bool acce
   int passes = 0;
   for (auto _ : state) {
     const flexure::ChainResult r = solver.solve(load);
-    if (!r.converged) state.SkipWithError(r.message.c_str());
+    if (!r.converged()) state.SkipWithError(r.message.c_str());
     passes = r.iterations;
     benchmark::DoNotOptimize(r.tip.theta);
   }

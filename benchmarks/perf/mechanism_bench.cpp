@@ -28,7 +28,7 @@ void BM_ExactStroke50(benchmark::State& state, const char* name) {
   const std::vector<double> dx = stroke_displacements(d, 50);
   for (auto _ : state) {
     ExactStrokeResult r = exact_stroke(d, dx);
-    if (!r.converged) state.SkipWithError(r.message.c_str());
+    if (!r.converged()) state.SkipWithError(r.message.c_str());
     benchmark::DoNotOptimize(r.points.back().force);
   }
 }
@@ -62,7 +62,7 @@ void BM_ChainCheck100(benchmark::State& state, const char* name) {
   flexure::disable_gsl_abort();
   const MechanismDesign d = find_builtin_mechanism(name);
   const ExactPoint p = ExactMechanismSolver(d).solve(d.stroke);
-  if (!p.converged) state.SkipWithError(p.message.c_str());
+  if (!p.converged()) state.SkipWithError(p.message.c_str());
   for (auto _ : state) {
     ChainCheck c = chain_algorithm_check(p, 100);
     benchmark::DoNotOptimize(c.tip_error);

@@ -33,7 +33,7 @@ void run(benchmark::State& state, const SegmentChain& chain, ShootingSolver::Opt
   int iterations = 0;
   for (auto _ : state) {
     const ShootingResult r = solver.solve(chain);
-    if (!r.converged) state.SkipWithError(r.message.c_str());
+    if (!r.converged()) state.SkipWithError(r.message.c_str());
     iterations = r.iterations;
     benchmark::DoNotOptimize(r.tip.x);
   }

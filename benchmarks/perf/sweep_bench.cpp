@@ -29,7 +29,10 @@ std::vector<double> loads(long count) {
 io::BeamSweepPoint solve_elliptic(double alpha2) {
   static const EllipticSolver solver;
   const EllipticResult result = solver.solve(EndLoad::howell(0.0, alpha2, 0.0));
-  return io::BeamSweepPoint{result.converged, result.tip, {}};
+  io::BeamSweepPoint point;
+  point.set_converged(result.converged());
+  point.tip = result.tip;
+  return point;
 }
 
 // A scratch directory for the output files, removed at exit.
@@ -97,7 +100,10 @@ BENCHMARK(BM_SweepSolveOnly)
 void BM_SweepWriteOnly(benchmark::State& state) {
   const std::vector<double> alpha2 = loads(state.range(0));
   const io::BeamSweepTable table = io::run_beam_sweep(alpha2, [](double a) {
-    return io::BeamSweepPoint{true, TipPose{1.0, a / 3, a / 2}, {}};
+    io::BeamSweepPoint point;
+    point.set_converged(true);
+    point.tip = TipPose{1.0, a / 3, a / 2};
+    return point;
   });
   for (auto _ : state) write_file(table);
   state.SetBytesProcessed(state.iterations() * state.range(0) * (4 * 8 + 4));

@@ -41,10 +41,10 @@ PointSolution solve_prbm(const BenchProblem& problem, const LoadPoint& load) {
     eq = element.solve(end_load);
     limits = element.limits();
   }
-  out.status = eq.converged ? kStatusConverged : kStatusNotConverged;
+  out.status = eq.converged() ? kStatusConverged : kStatusNotConverged;
   out.tip = eq.tip;
   out.iterations = eq.iterations;
-  out.message = eq.converged ? "" : eq.message;
+  out.message = eq.converged() ? "" : eq.message;
   // Howell eq. 5.47 (position) and eq. 5.63 (force): the constants are trusted below both.
   out.inside_validity = limits.contains(eq.Theta) ? 1 : 0;
   return out;
@@ -71,10 +71,10 @@ PointSolution CfmStrokeSolver::solve(MethodFamily family, double displacement) {
           "method family '{}' has no mechanism model (use prbm or exact)", to_string(family)));
     }
     mechanism::ExactPoint p = exact_.solve(displacement, previous_ ? &previous_.value() : nullptr);
-    out.status = p.converged ? kStatusConverged : kStatusNotConverged;
+    out.status = p.converged() ? kStatusConverged : kStatusNotConverged;
     out.force = p.force;
     out.iterations = p.iterations;
-    if (!p.converged) {
+    if (!p.converged()) {
       out.message = p.message;
       last_.reset();
     } else {
@@ -111,10 +111,10 @@ PointSolution solve_point(const BenchMethod& method,
       case MethodFamily::kElliptic: {
         const EllipticResult r =
             EllipticSolver().solve(EndLoad::howell(load.load_ratio_n, load.alpha2, load.mu));
-        out.status = r.converged ? kStatusConverged : kStatusNotConverged;
+        out.status = r.converged() ? kStatusConverged : kStatusNotConverged;
         out.tip = r.tip;
         out.iterations = r.iterations;
-        if (!r.converged) out.message = r.message;
+        if (!r.converged()) out.message = r.message;
         break;
       }
       case MethodFamily::kShooting: {
@@ -124,10 +124,10 @@ PointSolution solve_point(const BenchMethod& method,
         // atol two decades below rtol, as the reference (1e-12, 1e-14).
         options.atol = method.rtol * 1e-2;
         const ShootingResult r = solve_shooting(make_chain(problem, load), options);
-        out.status = r.converged ? kStatusConverged : kStatusNotConverged;
+        out.status = r.converged() ? kStatusConverged : kStatusNotConverged;
         out.tip = r.tip_pose(1.0);
         out.iterations = r.iterations;
-        if (!r.converged) out.message = r.message;
+        if (!r.converged()) out.message = r.message;
         break;
       }
       case MethodFamily::kChain: {
@@ -139,10 +139,10 @@ PointSolution solve_point(const BenchMethod& method,
         // reason to solve with another.
         options.refine_elements = false;
         const ChainResult r = solve_chain(make_chain(problem, load), options);
-        out.status = r.converged ? kStatusConverged : kStatusNotConverged;
+        out.status = r.converged() ? kStatusConverged : kStatusNotConverged;
         out.tip = r.tip_pose;
         out.iterations = r.iterations;
-        if (!r.converged) out.message = r.message;
+        if (!r.converged()) out.message = r.message;
         break;
       }
       case MethodFamily::kPrbm:

@@ -127,7 +127,7 @@ AutoMethodChoice choose_beam_method(const AutoMethodRequest& r) {
     const double theta_max = limits.theta_max();
     const double measured = prbm_measured_error(r.load_ratio_n, r.alpha2);
     constexpr double kDeg = 180.0 / 3.14159265358979323846;
-    if (!eq.converged) {
+    if (!eq.converged()) {
       why_not_prbm = "the PRBM has no equilibrium at this load";
     } else if (!limits.contains(eq.Theta)) {
       why_not_prbm = fmt::format(

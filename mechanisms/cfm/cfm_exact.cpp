@@ -67,12 +67,12 @@ CfmExactResult solve_cfm_exact(const CfmResult& prbm, const CfmExactOptions& opt
   r.percent_constant_force_prbm = mechanism::constant_force_measure(r.Phi_prbm).percent;
 
   const mechanism::ExactStrokeResult e = mechanism::exact_stroke(d, p.displacement, options.solver);
-  r.converged = e.converged;
+  r.set_converged(e.converged());
   r.message = e.message;
   r.iterations = e.iterations;
   for (const mechanism::ExactPoint& q : e.points) r.residual = std::max(r.residual, q.residual);
-  if (!e.converged || e.points.size() != p.force.size()) {
-    r.converged = false;
+  if (!e.converged() || e.points.size() != p.force.size()) {
+    r.set_converged(false);
     if (r.message.empty()) r.message = "exact model did not converge over the whole stroke";
     return r;
   }
@@ -94,7 +94,7 @@ CfmExactResult solve_cfm_exact(const CfmResult& prbm, const CfmExactOptions& opt
   r.force_vanishes_exact = m.vanishes;
   r.force_changes_sign_exact = m.changes_sign;
   if (!std::isfinite(r.Phi_exact) || !std::isfinite(r.max_force_error)) {
-    r.converged = false;
+    r.set_converged(false);
     r.message = "exact model returned a non-finite force";
   }
   return r;

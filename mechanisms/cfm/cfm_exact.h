@@ -17,6 +17,7 @@
 #include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_exact.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cfm {
 
@@ -30,7 +31,7 @@ struct CfmExactOptions {
   mechanism::ExactMechanismSolver::Options solver;  // the exact model's solver settings
 };
 
-struct CfmExactResult {
+struct CfmExactResult : SolveStatus {
   mechanism::MechanismDesign design;    // the equivalent design (r2 + r3 = 1, E = 1)
   double reference_stiffness = 0.0;     // k1 (class 1B: k2) of the design, to scale F to Phi
   std::vector<double> stroke_percent;   // 100 Delta x/(r2 + r3) of every point
@@ -47,10 +48,9 @@ struct CfmExactResult {
   bool force_changes_sign_exact = false;    // Phi_exact_curve takes both signs
   double max_force_error = 0.0;             // max over the stroke of |F_prbm - F_exact|/|F_exact|
   double max_force_error_at_percent = 0.0;  // stroke (% of r2 + r3) of that maximum
-  bool converged = false;                   // every exact point converged
-  std::string message;
-  int iterations = 0;     // shooting Newton iterations over the stroke
-  double residual = 0.0;  // largest exact-point residual
+  // converged(): every exact point converged
+  // iterations: shooting Newton iterations over the stroke
+  // residual: largest exact-point residual
 };
 
 // Solves the mechanism of `prbm` (its config, R, K1, K2 as used and effective stroke) with the

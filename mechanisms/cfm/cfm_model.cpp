@@ -159,7 +159,7 @@ CfmResult CfmModel::evaluate(const CfmParameters& p) const {
     pose = slider_crank_pose(p.R, u);
     const double phi = force_function_phi(p.R, r.K1, r.K2, reference_k2, pose);
     if (!std::isfinite(phi)) {
-      r.converged = false;
+      r.set_converged(false);
       r.iterations = static_cast<int>(k + 1);
       r.message = fmt::format(
           "Phi is not finite at stroke {:.6g} % (theta2 = {:.6g}, theta3 = "
@@ -223,7 +223,7 @@ CfmResult CfmModel::evaluate(const CfmParameters& p) const {
   }
   r.d_N_max = 100.0 * std::sin(pose.theta2) / (1.0 + p.R);  // eq. 5.45: Delta y = r2 sin theta2
 
-  r.converged = true;
+  r.set_converged(true);
   r.message = r.stroke_clamped
                   ? fmt::format("stroke clamped from {:g} % to the toggle position {:.4f} %",
                                 p.stroke_percent,

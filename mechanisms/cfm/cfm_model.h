@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cfm {
 
@@ -53,7 +54,7 @@ struct CfmCurvePoint {
   double Phi = 0.0;             // F r2/k1 (class 1B: F r2/k2)
 };
 
-struct CfmResult {
+struct CfmResult : SolveStatus {
   std::string config;      // configuration name
   std::string class_name;  // 1A ... 3A
   double R = 0.0;
@@ -90,10 +91,9 @@ struct CfmResult {
                          // (eq. 5.45)
   std::vector<CfmCurvePoint> curve;  // only with CfmOptions::keep_curve
 
-  bool converged = false;  // closed form: true whenever every sampled Phi is finite
-  std::string message;
-  int iterations = 0;     // stroke points evaluated
-  double residual = 0.0;  // largest loop-closure residual of eq. 2.3 over the stroke, / r2
+  // converged(): closed form: true whenever every sampled Phi is finite
+  // iterations: stroke points evaluated
+  // residual: largest loop-closure residual of eq. 2.3 over the stroke, / r2
 };
 
 // Length parameter lambda = l_tot/r_tot (thesis Table 5.1): a long segment replacing link i is

@@ -181,7 +181,7 @@ ForwardResult ForwardDynamics::integrate(double theta2_0,
                                  result.t.size());
     return result;
   }
-  result.converged = true;
+  result.set_converged(true);
   result.message = "integrated to the last output time";
   return result;
 }

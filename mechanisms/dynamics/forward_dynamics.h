@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "flexure/mechanisms/dynamics/slider_crank_dynamics.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::dynamics {
 
@@ -37,17 +38,15 @@ struct ForwardOptions {
   double crossing_level = 0.0;  // rad
 };
 
-struct ForwardResult {
+struct ForwardResult : SolveStatus {
   std::vector<double> t;                 // output times, s
   std::vector<double> theta2;            // rad
   std::vector<double> theta2_dot;        // rad/s
   std::vector<double> delta_x;           // slider displacement, m
   std::vector<double> energy;            // kinetic + spring energy, J
   std::vector<double> upward_crossings;  // times of upward crossings of crossing_level, s
-  bool converged = false;
-  std::string message;
-  long iterations = 0;    // CVODES steps
-  double residual = 0.0;  // largest |energy - energy(0)|/energy(0) when the force is zero
+  // iterations: CVODES steps
+  // residual: largest |energy - energy(0)|/energy(0) when the force is zero
 };
 
 // Linearised small-oscillation frequency about the equilibrium under a constant force F0 (whole

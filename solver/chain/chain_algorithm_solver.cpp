@@ -93,7 +93,7 @@ Trial evaluate(const Problem& p,
     const FixedPointReport r = converge_chain(p.d, loads, t.geometry, how.fixed_point);
     t.passes = r.passes;
     t.change = r.change;
-    if (!r.converged) {
+    if (!r.converged()) {
       t.failure =
           r.failed_element >= 0
               ? fmt::format("element {} buckled (eq. 7.30 has no inverse)", r.failed_element)
@@ -361,14 +361,14 @@ ChainResult ChainAlgorithmSolver::solve(const SegmentChain& chain) const {
   Options o = options_;
   for (;;) {
     ChainResult r = solve_once(chain, o);
-    if (!r.converged) return r;
+    if (!r.converged()) return r;
     const std::string problem = representation_problem(chain, r, o.max_element_rotation);
     if (!problem.empty()) {
       if (o.refine_elements && 2 * o.elements <= o.max_elements) {
         o.elements *= 2;  // refine and solve again
         continue;
       }
-      r.converged = false;
+      r.set_converged(false);
       r.message =
           fmt::format("the chain with {} elements cannot represent this load: {}{}",
                       o.elements,
@@ -386,7 +386,7 @@ ChainResult ChainAlgorithmSolver::solve(const SegmentChain& chain) const {
     // the load path; an unstable one means its increments left the path (equilibrium_stability.h).
     const StabilityVerdict stability = equilibrium_stability(chain, r.nodes);
     if (stability.kind == StabilityVerdict::Kind::kUnstable) {
-      r.converged = false;
+      r.set_converged(false);
       r.message = fmt::format(
           "the load increments converged to an {}; the load path from zero passes a limit point "
           "or a near-bifurcation that the chain algorithm cannot follow (the shooting method "
@@ -421,7 +421,7 @@ ChainResult ChainAlgorithmSolver::solve_once(const SegmentChain& chain, const Op
   auto stop = [&](const std::string& why) {
     fill_state(p, geometry, lambda, z, r);
     r.load_factor = lambda;
-    r.converged = false;
+    r.set_converged(false);
     r.message = fmt::format("{} variant stopped at load factor {:.6g} after {} increments: {}",
                             to_string(o.variant),
                             lambda,
@@ -462,7 +462,7 @@ ChainResult ChainAlgorithmSolver::solve_once(const SegmentChain& chain, const Op
     }
     fill_state(p, geometry, 1.0, z, r);
     r.load_factor = 1.0;
-    r.converged = true;
+    r.set_converged(true);
     r.message = o.iterate_at_full_load
                     ? fmt::format("converged: {} increments, {} passes, last change {:.3g}",
                                   r.increments,
@@ -552,7 +552,7 @@ ChainResult ChainAlgorithmSolver::solve_once(const SegmentChain& chain, const Op
   }
   fill_state(p, geometry, 1.0, z, r);
   r.load_factor = 1.0;
-  r.converged = true;
+  r.set_converged(true);
   r.message = fmt::format("converged: {} increments ({} retried), {} passes, last change {:.3g}",
                           r.increments,
                           r.failed_increments,

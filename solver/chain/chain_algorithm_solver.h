@@ -21,6 +21,7 @@
 
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 
@@ -46,15 +47,14 @@ struct ChainLoadPathPoint {
   int iterations = 0;  // chain passes spent on this increment (including shooting evaluations)
 };
 
-struct ChainResult {
-  bool converged = false;
-  std::string message;  // what stopped the solve and how far it got
-  int iterations = 0;   // chain passes in total (all increments, retries and shooting evaluations)
-  int increments = 0;   // load increments that succeeded
+struct ChainResult : SolveStatus {
+  // message: what stopped the solve and how far it got
+  // iterations: chain passes in total (all increments, retries and shooting evaluations)
+  int increments = 0;         // load increments that succeeded
   int failed_increments = 0;  // increments that failed and were retried with a smaller step
   int newton_iterations = 0;  // shooting-method Newton steps (eqs. 7.38-7.40), summed
   double load_factor = 0.0;   // load factor reached (1 when converged)
-  double residual = 0.0;      // geometry change of the last pass (positions / total length, rad)
+  // residual: geometry change of the last pass (positions / total length, rad)
   double boundary_residual = 0.0;  // max |tip coordinate - prescribed value| (scaled as above)
   int elements = 0;                // flexible elements used (the requested N)
 

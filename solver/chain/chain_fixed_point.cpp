@@ -52,7 +52,7 @@ FixedPointReport plain_passes(const ChainDiscretisation& d,
     std::swap(geometry, next);
     if (!std::isfinite(report.change)) return report;
     if (report.change < options.tolerance) {
-      report.converged = true;
+      report.set_converged(true);
       return report;
     }
   }
@@ -103,7 +103,7 @@ FixedPointReport converge_chain(const ChainDiscretisation& d,
     if (!std::isfinite(report.change)) return report;
     if (report.change < options.tolerance) {
       geometry = image;
-      report.converged = true;
+      report.set_converged(true);
       return report;
     }
     // Restart the history when the residual grows a lot: the extrapolation has lost its way.

@@ -8,6 +8,7 @@
 // alpha2 = 10 and 0.95 at alpha2 = 50 for N = 100, see docs/theory-chain.md); the fixed point is
 // unchanged by the acceleration.
 #include "flexure/solver/chain/chain_pass.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 
@@ -19,8 +20,7 @@ struct FixedPointOptions {
   ChainPassOptions pass;
 };
 
-struct FixedPointReport {
-  bool converged = false;
+struct FixedPointReport : SolveStatus {
   int passes = 0;
   double change = 0.0;      // scaled change of the last pass
   int failed_element = -1;  // an element buckled (eq. 7.30 singular) on a plain pass

@@ -50,7 +50,7 @@ bool verified_root(Miss& miss,
   ScalarRootOptions opts;
   opts.x_tolerance = options.relative_tolerance * std::max(std::fabs(a), std::fabs(b));
   const ScalarRootResult r = brent_root(miss, a, b, fa, fb, opts);
-  if (!r.converged || !(std::fabs(r.f) <= options.target_tolerance)) return false;
+  if (!r.converged() || !(std::fabs(r.f) <= options.target_tolerance)) return false;
   root = r.x;
   miss_at_root = r.f;
   return true;

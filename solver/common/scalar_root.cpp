@@ -5,6 +5,20 @@
 #include <utility>
 
 namespace flexure {
+namespace {
+
+ScalarRootResult finish(bool converged, double x, double f, int iterations) {
+  ScalarRootResult r;
+  r.set_converged(converged);
+  r.x = x;
+  r.f = f;
+  r.iterations = iterations;
+  r.residual = std::fabs(f);
+  if (!converged) r.message = "no root within the iteration limit, or a non-finite function value";
+  return r;
+}
+
+}  // namespace
 
 // Brent, "Algorithms for Minimization without Derivatives" (1973), ch. 4 (zeroin).
 ScalarRootResult brent_root(const std::function<double(double)>& f,
@@ -14,11 +28,13 @@ ScalarRootResult brent_root(const std::function<double(double)>& f,
                             double fb,
                             const ScalarRootOptions& options) {
   ScalarRootResult result;
-  if (fa == 0.0) return {true, a, 0.0, 0};
-  if (fb == 0.0) return {true, b, 0.0, 0};
+  if (fa == 0.0) return finish(true, a, 0.0, 0);
+  if (fb == 0.0) return finish(true, b, 0.0, 0);
   if (!(std::isfinite(fa) && std::isfinite(fb)) || (fa > 0.0) == (fb > 0.0)) {
     result.x = b;
     result.f = fb;
+    result.residual = std::fabs(fb);
+    result.message = "the values at the ends do not bracket a root";
     return result;
   }
   constexpr double eps = std::numeric_limits<double>::epsilon();
@@ -39,7 +55,7 @@ ScalarRootResult brent_root(const std::function<double(double)>& f,
     }
     const double tol = 2.0 * eps * std::fabs(b) + 0.5 * options.x_tolerance;
     const double m = 0.5 * (c - b);
-    if (std::fabs(m) <= tol || fb == 0.0) return {true, b, fb, iter - 1};
+    if (std::fabs(m) <= tol || fb == 0.0) return finish(true, b, fb, iter - 1);
     if (std::fabs(e) >= tol && std::fabs(fa) > std::fabs(fb)) {
       double p, q, r;
       const double s = fb / fa;
@@ -71,9 +87,9 @@ ScalarRootResult brent_root(const std::function<double(double)>& f,
     fa = fb;
     b += (std::fabs(d) > tol) ? d : (m > 0.0 ? tol : -tol);
     fb = f(b);
-    if (!std::isfinite(fb)) return {false, b, fb, iter};
+    if (!std::isfinite(fb)) return finish(false, b, fb, iter);
   }
-  return {false, b, fb, options.max_iterations};
+  return finish(false, b, fb, options.max_iterations);
 }
 
 }  // namespace flexure

@@ -4,6 +4,8 @@
 // bracket or loop forever.
 #include <functional>
 
+#include "flexure/solver/common/status.h"
+
 namespace flexure {
 
 struct ScalarRootOptions {
@@ -11,15 +13,14 @@ struct ScalarRootOptions {
   int max_iterations = 200;
 };
 
-struct ScalarRootResult {
-  bool converged = false;
+struct ScalarRootResult : SolveStatus {
   double x = 0.0;
   double f = 0.0;
-  int iterations = 0;  // function evaluations made inside the bracket
+  // iterations: function evaluations made inside the bracket
 };
 
 // Finds a root of f in [a, b] given f(a) = fa and f(b) = fb of opposite sign (or one of them zero).
-// Returns converged = false if the values do not bracket a root or the iteration limit is hit.
+// Returns converged() false if the values do not bracket a root or the iteration limit is hit.
 ScalarRootResult brent_root(const std::function<double(double)>& f,
                             double a,
                             double b,

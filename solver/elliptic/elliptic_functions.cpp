@@ -47,7 +47,7 @@ double refine_amplitude(double phi, double u, Parameter k) {
   ScalarRootOptions options;
   options.x_tolerance = 0.0;  // Brent's own 2 eps |x| term: the best double
   const ScalarRootResult root = brent_root(miss, lo, hi, f_lo, f_hi, options);
-  return root.converged ? root.x : phi;
+  return root.converged() ? root.x : phi;
 }
 
 }  // namespace

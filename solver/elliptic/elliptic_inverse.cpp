@@ -43,8 +43,8 @@ EllipticResult result_from_tip_angle(double load_ratio_n, double theta0) {
     r.tip.theta0 = -r.tip.theta0;
     r.root_moment = -r.root_moment;
   }
-  r.converged = h.converged;
-  r.message = h.converged ? "converged" : "tip angle inverse failed";
+  r.set_converged(h.converged());
+  r.message = h.converged() ? "converged" : "tip angle inverse failed";
   r.branch = "proportional loading (unique for mu = 0: 0 < theta0 < force angle)";
   return r;
 }
@@ -56,8 +56,8 @@ double target_tolerance(double target) {
 // Checks an explicit or bracketed mu = 0 inverse against its target: converged only if it hits.
 EllipticResult verified(EllipticResult r, double reached, double target, const char* what) {
   r.residual = std::fabs(reached - target);
-  if (r.converged && !(r.residual <= target_tolerance(target))) {
-    r.converged = false;
+  if (r.converged() && !(r.residual <= target_tolerance(target))) {
+    r.set_converged(false);
     r.message =
         fmt::format("the inverse solve reached {} = {:.12g} instead of {:.12g} (miss {:.2e})",
                     what,
@@ -80,7 +80,7 @@ EllipticResult search_alpha2(const EllipticSolver& solver,
   auto q = [&](double alpha2) -> std::optional<double> {
     try {
       const EllipticResult r = solver.solve(EndLoad::howell(load_ratio_n, alpha2, mu));
-      if (!r.converged) return std::nullopt;
+      if (!r.converged()) return std::nullopt;
       return quantity(r);
     } catch (const OutsideMethodDomain&) {
       beyond_range = true;
@@ -127,7 +127,7 @@ EllipticResult search_alpha2(const EllipticSolver& solver,
   }
   // Brackets but no root: report what was reached (exit code 3 in the CLI), never a wrong load.
   EllipticResult missed = solver.solve(EndLoad::howell(load_ratio_n, found.alpha2, mu));
-  missed.converged = false;
+  missed.set_converged(false);
   missed.iterations += found.solves;
   missed.residual = found.residual;
   missed.message = fmt::format("{} = {:.6g} not reached: {}", what, value, found.message);

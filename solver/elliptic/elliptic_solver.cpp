@@ -75,7 +75,7 @@ EllipticResult EllipticSolver::solve(const EndLoad& load) const {
     // Pure end moment: a circular arc (Howell eqs. 2.53-2.64).
     p.family = mu == 0.0 ? ElasticaFamily::kStraight : ElasticaFamily::kCircularArc;
     fill_from_parameters(r);
-    r.converged = true;
+    r.set_converged(true);
     r.branch = "unique (pure end moment: circular arc)";
   } else if (mu == 0.0 && (Fy == 0.0 || force < kNegligibleForce)) {
     p.family = ElasticaFamily::kStraight;
@@ -93,20 +93,20 @@ EllipticResult EllipticSolver::solve(const EndLoad& load) const {
       r.root_moment = Fy;
       r.branch = "linear theory (negligible load)";
     }
-    r.converged = true;
+    r.set_converged(true);
   } else if (mu == 0.0) {
     const double psi = std::atan2(Fy, load.Fx);
     const elliptic::HowellBranchSolution h =
         elliptic::solve_howell_branch(force, psi, options_.tolerance);
     r.iterations = h.iterations;
     r.residual = std::fabs(h.residual);
-    if (h.converged) {
+    if (h.converged()) {
       p = h.parameters;
       p.mirrored = load.Fy < 0.0;
       r.tip = h.tip;
       r.root_moment = h.root_moment;
       r.inflection_points = 0;
-      r.converged = true;
+      r.set_converged(true);
       r.branch = "proportional loading (unique for mu = 0: 0 < theta0 < force angle)";
     } else {
       r.message = fmt::format(
@@ -125,12 +125,12 @@ EllipticResult EllipticSolver::solve(const EndLoad& load) const {
     r.residual = std::fabs(c.residual);
     r.limit_points = c.limit_points;
     r.first_limit_load_factor = c.first_limit_load_factor;
-    if (c.converged) {
+    if (c.converged()) {
       const elliptic::PendulumProblem problem = elliptic::make_pendulum_problem(force, psi, mu);
       p = elliptic::integrate_from_tip(problem, c.tip).parameters;
       p.mirrored = load.Fy < 0.0;
       fill_from_parameters(r);
-      r.converged = true;
+      r.set_converged(true);
       r.branch =
           fmt::format("proportional loading (pseudo-arclength continuation, {} steps)", c.steps);
       if (c.limit_points > 0) {
@@ -145,11 +145,11 @@ EllipticResult EllipticSolver::solve(const EndLoad& load) const {
       r.message = c.message;
     }
   }
-  if (r.converged) {
+  if (r.converged()) {
     unmirror(r);
     if (!(std::isfinite(r.tip.a_over_l) && std::isfinite(r.tip.b_over_l) &&
           std::isfinite(r.tip.theta0))) {
-      r.converged = false;
+      r.set_converged(false);
       r.message = "elliptic solution evaluated to a non-finite tip (internal error)";
     } else {
       r.message = "converged";
@@ -169,7 +169,7 @@ std::vector<ShapePoint> EllipticSolver::shape(const EllipticResult& result, int 
 
 std::vector<ShapePoint> EllipticSolver::shape_at(const EllipticResult& result,
                                                  const std::vector<double>& s) const {
-  if (!result.converged) throw InvalidInput("cannot evaluate the shape of an unconverged result");
+  if (!result.converged()) throw InvalidInput("cannot evaluate the shape of an unconverged result");
   std::vector<ShapePoint> points;
   points.reserve(s.size());
   const elliptic::ShapeEvaluator evaluator(result.parameters);

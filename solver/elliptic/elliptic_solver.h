@@ -13,14 +13,14 @@
 #include <vector>
 
 #include "flexure/solver/common/end_load.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elastica_parameters.h"
 
 namespace flexure {
 
-struct EllipticResult {
-  bool converged = false;
-  std::string message;  // why it stopped; names the offending quantity when it failed
-  int iterations = 0;   // root-finder iterations, summed over continuation steps
+struct EllipticResult : SolveStatus {
+  // message: why it stopped; names the offending quantity when it failed
+  // iterations: root-finder iterations, summed over continuation steps
   int continuation_steps = 0;
   // Limit points (folds of the load factor) passed on the path from the unloaded beam; under load
   // control the beam would snap at the first, at first_limit_load_factor.
@@ -31,8 +31,8 @@ struct EllipticResult {
   TipPose tip;
   double root_moment = 0.0;  // curvature at the clamp, M(0) l/EI
   int inflection_points = 0;
-  double residual = 0.0;  // |tip condition| at the returned solution
-  std::string branch;     // "proportional loading" or a note on how the branch was chosen
+  // residual: |tip condition| at the returned solution
+  std::string branch;  // "proportional loading" or a note on how the branch was chosen
   ElasticaParameters parameters;
 };
 

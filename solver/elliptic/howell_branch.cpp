@@ -179,14 +179,14 @@ HowellBranchSolution solve_howell_branch(double force, double psi, double x_tole
     }
   }
   ScalarRootResult root;
-  root.converged = converged && std::isfinite(r1);
+  root.set_converged(converged && std::isfinite(r1));
   root.x = zeta;
   root.f = r1;
 
   HowellBranchSolution out;
-  if (root.converged) {
+  if (root.converged()) {
     out = tip_from_split(split_from_zeta(root.x, c0_sq), sqrtF, pr);
-    out.converged = true;
+    out.set_converged(true);
   }
   out.residual = root.f;
   out.iterations = evaluations;
@@ -204,7 +204,7 @@ HowellBranchSolution howell_branch_from_tip_angle(double psi, double theta0) {
   const double sqrtF = branch_length(split, pr.s0 * pr.s0);
   pr.force = sqrtF * sqrtF;
   HowellBranchSolution out = tip_from_split(split, sqrtF, pr);
-  out.converged = std::isfinite(sqrtF) && sqrtF > 0.0;
+  out.set_converged(std::isfinite(sqrtF) && sqrtF > 0.0);
   out.tip.theta0 = theta0;  // exact by construction
   out.parameters.chi_tip = pr.chi0 + theta0;
   return out;

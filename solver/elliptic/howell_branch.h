@@ -11,14 +11,13 @@
 // (DLMF 19.11.4 with phi + psi = K), in terms of p = k'^2 and q = k^2 - sin^2(chi0/2), each formed
 // without cancellation, so that the solution keeps full precision both at small loads (q -> 0) and
 // near the separatrix (p -> 0, large loads, tension).
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elastica_closed_form.h"
 
 namespace flexure::elliptic {
 
-struct HowellBranchSolution {
-  bool converged = false;
-  int iterations = 0;
-  double residual = 0.0;  // ln(K - F(beta)) - ln(sqrt(F)) at the solution
+struct HowellBranchSolution : SolveStatus {
+  // residual: ln(K - F(beta)) - ln(sqrt(F)) at the solution
   ElasticaParameters parameters;
   TipPose tip;  // normalised frame (force angle psi in (0, pi))
   double root_moment = 0.0;

@@ -245,7 +245,7 @@ ContinuationSolution solve_by_continuation(double force,
     out.load_factor_reached = std::max(out.load_factor_reached, y.lambda);
     if (crosses) {
       polish(g, y, options.x_tolerance);
-      out.converged = true;
+      out.set_converged(true);
       break;
     }
     const bool easy = c.iterations <= 3;
@@ -280,7 +280,7 @@ ContinuationSolution solve_by_continuation(double force,
   }
   out.residual = std::fabs(y.g);
   out.residual_slope = y.g_t;
-  if (out.converged) {
+  if (out.converged()) {
     out.message = "converged";
   } else {
     out.message =

@@ -20,6 +20,7 @@
 //    and says where, rather than guessing.
 #include <string>
 
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elastica_closed_form.h"
 
 namespace flexure::elliptic {
@@ -38,18 +39,16 @@ struct ContinuationOptions {
   long max_evaluations = 200000;  // residual evaluations (about 0.3 s) plus 100 per expected step
 };
 
-struct ContinuationSolution {
-  bool converged = false;
-  std::string message;
-  int iterations = 0;  // residual evaluations
-  int steps = 0;       // accepted arclength steps
+struct ContinuationSolution : SolveStatus {
+  // iterations: residual evaluations
+  int steps = 0;  // accepted arclength steps
   int rejected_steps = 0;
   int limit_points = 0;                  // folds of lambda passed on the way to lambda = 1
   double first_limit_load_factor = 0.0;  // load factor at the first fold (0 if none)
   double load_factor_reached = 0.0;      // largest load factor on the path
   double tip_from_force = 0.0;           // t = theta0 - psi at the solution
-  TipState tip;                 // the solution's tip state, with full-precision energy offsets
-  double residual = 0.0;        // |g| at the solution
+  TipState tip;  // the solution's tip state, with full-precision energy offsets
+  // residual: |g| at the solution
   double residual_slope = 0.0;  // d g / d x at the solution, in the final chart
 };
 

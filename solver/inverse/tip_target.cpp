@@ -28,7 +28,7 @@ ExactOutcome exact_load(const TipTarget& target, double& alpha2, std::string& no
             : elliptic.solve_for_deflection(target.load_ratio_n, target.value, target.mu);
     note = r.message;
     alpha2 = r.load.Fy;
-    return r.converged ? ExactOutcome::kFound : ExactOutcome::kJumps;
+    return r.converged() ? ExactOutcome::kFound : ExactOutcome::kJumps;
   } catch (const OutsideMethodDomain& e) {
     note = e.what();
     return ExactOutcome::kBeyondRange;
@@ -48,7 +48,7 @@ std::vector<double> loads_past_the_range(const TipTarget& target) {
           elliptic.solve(EndLoad::howell(target.load_ratio_n, sign * end, target.mu));
       const EllipticResult near =
           elliptic.solve(EndLoad::howell(target.load_ratio_n, sign * end / 1.5, target.mu));
-      if (!far.converged || !near.converged) continue;
+      if (!far.converged() || !near.converged()) continue;
       const double slope = (target.of(far.tip) - target.of(near.tip)) / std::log(1.5);
       const double log_steps = (target.value - target.of(far.tip)) / slope;
       if (std::isfinite(log_steps) && log_steps > 0.0 && log_steps < std::log(10.0)) {
@@ -125,7 +125,7 @@ TipTargetSolution solve_tip_target(
             : fmt::format("{}; the method did not reach it near the extrapolated load either",
                           note);
   }
-  out.converged = found.found();
+  out.set_converged(found.found());
   out.alpha2 = found.alpha2;
   out.reached = found.reached;
   out.residual = found.residual;

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "flexure/solver/common/end_load.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 
@@ -32,14 +33,14 @@ struct TipTarget {
   }
 };
 
-struct TipTargetSolution {
-  bool converged = false;  // alpha2 reaches the target within `tolerance`
-  double alpha2 = 0.0;     // the load found (or, when not converged, the closest reached)
-  double reached = 0.0;    // the quantity at alpha2
-  double residual = 0.0;   // |reached - target|
+struct TipTargetSolution : SolveStatus {
+  // converged(): alpha2 reaches the target within `tolerance`
+  double alpha2 = 0.0;   // the load found (or, when not converged, the closest reached)
+  double reached = 0.0;  // the quantity at alpha2
+  // residual: |reached - target|
   double tolerance = 0.0;  // the target tolerance used
   int forward_solves = 0;  // solves of the method (the exact guess not counted)
-  std::string message;     // how the load was found, or why not
+  // message: how the load was found, or why not
 };
 
 // `forward(alpha2)` solves the method at that load and returns the tip, or nullopt where it does

@@ -175,7 +175,7 @@ LoadPath continue_load_path(const ShootingProblem& problem,
       // fixed-lambda corrector does not compute dg/dlambda, so evaluate once more).
       ShootingEvaluation at_end;
       const bool same_branch =
-          nw.converged && problem.evaluate(z_end, 1.0, true, true, integrator, at_end) &&
+          nw.converged() && problem.evaluate(z_end, 1.0, true, true, integrator, at_end) &&
           tangent_at(at_end, scale, t, orientation).t.dot(t) >= std::cos(options.max_turn);
       if (same_branch && moved <= options.max_predictor_distance * std::max(h, options.min_step)) {
         z = z_end;
@@ -184,10 +184,10 @@ LoadPath continue_load_path(const ShootingProblem& problem,
         path.z = z;
         path.lambda = 1.0;
         path.lambda_reached = 1.0;
-        path.residual_norm = nw.residual_norm;
+        path.residual = nw.residual;
         path.tip = ChainPose{nw.last.tip.x, nw.last.tip.y, nw.last.tip.theta};
         path.tip_state = nw.last.tip;
-        path.completed = true;
+        path.set_converged(true);
         if (options.record_path) {
           path.points.push_back(
               make_point(problem, nw.last, z, 1.0, h, nw.iterations, PathStatus::kEnd));
@@ -211,7 +211,7 @@ LoadPath continue_load_path(const ShootingProblem& problem,
     NewtonOutcome nw = newton_solve(problem, integrator, newton, z_new, lambda_new, &c);
     path.newton_iterations += nw.iterations;
     const double moved = (scaled(z_new, lambda_new) - pred).norm();
-    if (!nw.converged || moved > options.max_predictor_distance * ds) {
+    if (!nw.converged() || moved > options.max_predictor_distance * ds) {
       ++path.rejected_steps;
       ds *= 0.5;
       if (ds < options.min_step) break;
@@ -267,7 +267,7 @@ LoadPath continue_load_path(const ShootingProblem& problem,
     ++path.steps;
     path.z = z;
     path.lambda = lambda;
-    path.residual_norm = nw.residual_norm;
+    path.residual = nw.residual;
     path.tip = ChainPose{nw.last.tip.x, nw.last.tip.y, nw.last.tip.theta};
     path.tip_state = nw.last.tip;
     path.lambda_reached = std::max(path.lambda_reached, lambda);

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/newton.h"
 #include "flexure/solver/shooting/shooting_problem.h"
 
@@ -50,23 +51,23 @@ struct PathPoint {
   int stage = 1;  // 2 only in the second stage of a two-stage path (shooting_solver.h)
 };
 
-struct LoadPath {
-  bool completed = false;       // reached lambda = 1
+struct LoadPath : SolveStatus {
+  // converged(): reached lambda = 1
   bool singular_start = false;  // dg/dz singular at lambda = 0: the path starts at a bifurcation
-  std::string message;          // where and why it stopped
-  double lambda_reached = 0.0;  // largest lambda on the path
-  int steps = 0;                // accepted steps
-  int rejected_steps = 0;       // halved steps
-  int newton_iterations = 0;    // summed over all corrections
-  int limit_points = 0;         // turning points of lambda passed
+  // message: where and why it stopped
+  double lambda_reached = 0.0;           // largest lambda on the path
+  int steps = 0;                         // accepted steps
+  int rejected_steps = 0;                // halved steps
+  int newton_iterations = 0;             // summed over all corrections
+  int limit_points = 0;                  // turning points of lambda passed
   double first_limit_load_factor = 0.0;  // largest lambda before the first turning point
   int bifurcation_points = 0;  // simple bifurcation points crossed (the path stays on its branch)
   std::vector<PathPoint> points;
-  Eigen::VectorXd z;           // unknowns at the last accepted point
-  double lambda = 0.0;         // load factor at the last accepted point
-  double residual_norm = 0.0;  // at the last accepted point
-  ChainPose tip;               // tip pose at the last accepted point
-  TipState tip_state;          // tip state (with the bending moment) at the last accepted point
+  Eigen::VectorXd z;    // unknowns at the last accepted point
+  double lambda = 0.0;  // load factor at the last accepted point
+  // residual: at the last accepted point
+  ChainPose tip;       // tip pose at the last accepted point
+  TipState tip_state;  // tip state (with the bending moment) at the last accepted point
 };
 
 // Follows the path from lambda = 0 to lambda = 1 (or until it stops), starting from `start`

@@ -68,9 +68,9 @@ NewtonOutcome newton_solve(const ShootingProblem& problem,
   }
   double norm = sys.g.lpNorm<Eigen::Infinity>();
   for (int it = 0; it < options.max_iterations; ++it) {
-    out.residual_norm = norm;
+    out.residual = norm;
     if (norm <= options.residual_tolerance) {
-      out.converged = true;
+      out.set_converged(true);
       out.message = fmt::format(
           "converged: max residual {:.3e} after {} Newton iterations", norm, out.iterations);
       return out;
@@ -110,13 +110,13 @@ NewtonOutcome newton_solve(const ShootingProblem& problem,
       // At the integration noise floor no step reduces the residual any more.
       if (step_norm <= options.step_tolerance * (1.0 + z.lpNorm<Eigen::Infinity>()) &&
           norm <= 1e3 * options.residual_tolerance) {
-        out.converged = true;
-        out.residual_norm = norm;
+        out.set_converged(true);
+        out.residual = norm;
         out.message =
             fmt::format("converged at the integration noise floor: max residual {:.3e}", norm);
         return out;
       }
-      out.residual_norm = norm;
+      out.residual = norm;
       out.message =
           fmt::format("line search failed after {} Newton iterations at max residual {:.3e}",
                       out.iterations,
@@ -124,9 +124,9 @@ NewtonOutcome newton_solve(const ShootingProblem& problem,
       return out;
     }
   }
-  out.residual_norm = norm;
+  out.residual = norm;
   if (norm <= options.residual_tolerance) {
-    out.converged = true;
+    out.set_converged(true);
     out.message = fmt::format("converged: max residual {:.3e}", norm);
   } else {
     out.message = fmt::format("no convergence in {} Newton iterations (max residual {:.3e})",

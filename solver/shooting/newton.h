@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 #include <string>
 
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_problem.h"
 
 namespace flexure {
@@ -20,12 +21,9 @@ struct NewtonOptions {
   int max_backtracks = 10;            // step halvings in the line search before giving up
 };
 
-struct NewtonOutcome {
-  bool converged = false;
+struct NewtonOutcome : SolveStatus {
   bool damped = false;  // a step shorter than the full Newton step was taken
-  int iterations = 0;
-  double residual_norm = 0.0;  // max |g_i| at the returned point
-  std::string message;
+  // residual: max |g_i| at the returned point
   ShootingEvaluation last;  // evaluation at the returned point (with Jacobian)
 };
 

@@ -112,7 +112,7 @@ ShootingResult ShootingSolver::finish(const ShootingProblem& problem,
   }
   if (!problem.integrate_solution(
           z, lambda, integrator, tip, error, s_ptr, s_ptr ? &result.shape : nullptr)) {
-    result.converged = false;
+    result.set_converged(false);
     result.message += "; final integration failed: " + error;
     return result;
   }
@@ -141,11 +141,11 @@ ShootingResult ShootingSolver::solve(const SegmentChain& chain) const {
       double lambda = 1.0;
       NewtonOutcome nw = newton_solve(problem, integrator, options_.newton, z, lambda, nullptr);
       result.iterations += nw.iterations;
-      if (nw.converged) {
-        result.converged = true;
+      if (nw.converged()) {
+        result.set_converged(true);
         result.method = "direct Newton";
         result.path = ShootingPath::kDirectNewton;
-        result.residual_norm = nw.residual_norm;
+        result.residual = nw.residual;
         result.message = nw.message;
         return finish(problem, integrator, z, 1.0, result, &nw.last.tip);
       }
@@ -155,7 +155,7 @@ ShootingResult ShootingSolver::solve(const SegmentChain& chain) const {
   if (options_.strategy == ShootingStrategy::kDirect) {
     result.method = "direct Newton";
     result.path = ShootingPath::kDirectNewton;
-    result.converged = false;
+    result.set_converged(false);
     result.message = "direct Newton from the linear guess did not converge";
     return finish(problem, integrator, problem.unloaded_unknowns(), 0.0, result);
   }
@@ -172,10 +172,10 @@ ShootingResult ShootingSolver::solve(const SegmentChain& chain) const {
   result.continuation_steps = path.steps;
   result.limit_points = path.limit_points;
   result.first_limit_load_factor = path.first_limit_load_factor;
-  result.residual_norm = path.residual_norm;
-  result.converged = path.completed;
+  result.residual = path.residual;
+  result.set_converged(path.converged());
   result.message = path.message;
-  if (!path.completed) {
+  if (!path.converged()) {
     // Report the furthest equilibrium that was reached.
     result.message = fmt::format("not converged: {}", path.message);
   }
@@ -201,7 +201,7 @@ ShootingSolver::TwoStageRun ShootingSolver::run_two_stages(const SegmentChain& c
   ContinuationOptions copt = options_.continuation;
   copt.record_path = record_path;
   run.s1 = continue_load_path(*run.p1, integrator, copt, options_.newton);
-  if (!run.s1.completed) return run;
+  if (!run.s1.converged()) return run;
 
   ChainPose start = chain.prescribed_tip();
   (run.release_x ? start.x : start.y) = run.release_x ? run.s1.tip_state.x : run.s1.tip_state.y;
@@ -240,18 +240,18 @@ ShootingResult ShootingSolver::solve_in_two_stages(const SegmentChain& chain,
   result.path = ShootingPath::kTwoStageContinuation;
   result.iterations += run.s1.newton_iterations;
   result.continuation_steps = run.s1.steps;
-  if (!run.s1.completed) {
-    result.converged = false;
+  if (!run.s1.converged()) {
+    result.set_converged(false);
     result.message =
         fmt::format("not converged: stage 1 (loads, {} released) {}", released, run.s1.message);
     return finish(*run.p1, integrator, run.s1.z, run.s1.lambda, result, &run.s1.tip_state);
   }
   result.iterations += run.s2.newton_iterations;
   result.continuation_steps += run.s2.steps;
-  result.residual_norm = run.s2.residual_norm;
-  result.converged = run.s2.completed;
+  result.residual = run.s2.residual;
+  result.set_converged(run.s2.converged());
   result.message =
-      run.s2.completed
+      run.s2.converged()
           ? fmt::format("stage 1 (loads, {} released): {}; stage 2 ({} to target): {}",
                         released,
                         run.s1.message,
@@ -266,7 +266,7 @@ ShootingResult ShootingSolver::solve_in_two_stages(const SegmentChain& chain,
   // Load factor 1 only when the full problem is solved; the stage-2 fraction is in the message.
   ShootingResult out =
       finish(*run.p2, integrator, run.s2.z, run.s2.lambda, result, &run.s2.tip_state);
-  out.load_factor = run.s2.completed ? 1.0 : 0.0;
+  out.load_factor = run.s2.converged() ? 1.0 : 0.0;
   return out;
 }
 
@@ -303,10 +303,10 @@ ShootingResult ShootingSolver::solve_from(const SegmentChain& chain,
   result.method = "Newton from guess";
   result.path = ShootingPath::kNewtonFromGuess;
   result.iterations = nw.iterations;
-  result.residual_norm = nw.residual_norm;
-  result.converged = nw.converged;
+  result.residual = nw.residual;
+  result.set_converged(nw.converged());
   result.message = nw.message;
-  return finish(problem, integrator, z, nw.converged ? 1.0 : 0.0, result);
+  return finish(problem, integrator, z, nw.converged() ? 1.0 : 0.0, result);
 }
 
 LoadPath ShootingSolver::load_path(const SegmentChain& chain) const {
@@ -323,7 +323,7 @@ LoadPath ShootingSolver::load_path(const SegmentChain& chain) const {
   TwoStageRun run = run_two_stages(chain, integrator, true);
   LoadPath joined = std::move(run.s1);
   const char* released = run.release_x ? "x" : "y";
-  if (!joined.completed) {
+  if (!joined.converged()) {
     joined.message = fmt::format("stage 1 (loads, {} released) {}", released, joined.message);
     return joined;
   }
@@ -332,15 +332,15 @@ LoadPath ShootingSolver::load_path(const SegmentChain& chain) const {
     p.stage = 2;
     joined.points.push_back(p);
   }
-  joined.completed = run.s2.completed;
+  joined.set_converged(run.s2.converged());
   joined.steps += run.s2.steps;
   joined.rejected_steps += run.s2.rejected_steps;
   joined.newton_iterations += run.s2.newton_iterations;
   joined.limit_points += run.s2.limit_points;
   joined.z = run.s2.z;
-  joined.lambda = run.s2.completed ? 1.0 : 0.0;
+  joined.lambda = run.s2.converged() ? 1.0 : 0.0;
   joined.lambda_reached = joined.lambda;
-  joined.residual_norm = run.s2.residual_norm;
+  joined.residual = run.s2.residual;
   joined.tip = run.s2.tip;
   joined.tip_state = run.s2.tip_state;
   joined.message = fmt::format(

@@ -24,6 +24,7 @@
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/chain_model/tip_reach.h"
 #include "flexure/solver/common/end_load.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/continuation.h"
 #include "flexure/solver/shooting/elastica_integrator.h"
 #include "flexure/solver/shooting/newton.h"
@@ -39,19 +40,18 @@ enum class ShootingPath {
   kNewtonFromGuess,       // solve_from(): Newton from a caller's guess
 };
 
-struct ShootingResult {
-  bool converged = false;
-  std::string message;  // how it converged, or where and why it stopped
+struct ShootingResult : SolveStatus {
+  // message: how it converged, or where and why it stopped
   ShootingPath path = ShootingPath::kDirectNewton;
-  std::string method;          // the path in words: "direct Newton", "continuation", ...
-  int iterations = 0;          // Newton iterations, summed over continuation steps
+  std::string method;  // the path in words: "direct Newton", "continuation", ...
+  // iterations: Newton iterations, summed over continuation steps
   int continuation_steps = 0;  // accepted continuation steps (0 for a direct solve)
   int limit_points = 0;        // folds of the load factor passed on the path (snap-through)
   double first_limit_load_factor = 0.0;  // load factor at the first of them
   int shooting_intervals = 1;            // 1 = single shooting; more = multiple shooting cuts + 1
   long integrator_steps = 0;             // integrator steps taken in all integrations of this solve
-  double residual_norm = 0.0;  // max |g_i| of the far-end conditions at the returned point
-  double load_factor = 0.0;    // load factor reached (1 when converged)
+  // residual: max |g_i| of the far-end conditions at the returned point
+  double load_factor = 0.0;  // load factor reached (1 when converged)
 
   ChainPose tip;          // tip x, y, theta (root frame)
   RootReaction reaction;  // loads the clamp applies to the chain: -N(0), -m(0)

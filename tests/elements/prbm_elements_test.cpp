@@ -68,7 +68,7 @@ TEST(SmallLengthFlexuralPivot, BookIterativeExampleSolvesEquation535) {
   const SmallLengthFlexuralPivot pivot(kSlfpL / kSlfpl);
   const double alpha2 = 0.1 * kSlfpl * kSlfpl / kSlfpBookEI;  // F = 0.1 lb, vertical, K = 0.68
   const PrbEquilibrium eq = pivot.solve(EndLoad{0.0, alpha2, 0.0});
-  ASSERT_TRUE(eq.converged) << eq.message;
+  ASSERT_TRUE(eq.converged()) << eq.message;
   EXPECT_NEAR(eq.Theta, 0.626, printed(0.0005));                // eq. 5.36
   EXPECT_NEAR(eq.tip.a_over_l * kSlfpl, 4.5, printed(0.05));    // eq. 5.37
   EXPECT_NEAR(eq.tip.b_over_l * kSlfpl, 3.08, printed(0.005));  // eq. 5.38
@@ -294,7 +294,7 @@ TEST(FixedGuidedSegment, MatchesTheExactAntisymmetricSolutionWithinThePrbmAccura
   // 0): alpha2_half = 2.046504 gives b = 0.5 (book example) and a = 0.8345901.
   const FixedGuidedSegment seg;
   const PrbEquilibrium eq = seg.solve(EndLoad{0.0, 4.0 * 2.046504, 0.0});
-  ASSERT_TRUE(eq.converged) << eq.message;
+  ASSERT_TRUE(eq.converged()) << eq.message;
   constexpr double kPrbmPosition = 0.01;  // a few percent of the deflection, as for fixed-pinned
   EXPECT_NEAR(eq.tip.b_over_l, 0.5, kPrbmPosition);
   EXPECT_NEAR(eq.tip.a_over_l, 0.8345901, kPrbmPosition);
@@ -304,7 +304,7 @@ TEST(EndMomentSegment, SpringConstantEqualsCThetaAndMomentIsKTheta) {
   const EndMomentSegment seg;
   EXPECT_NEAR(seg.stiffness_coefficient(), 1.5164, 1e-4);  // eqs. 5.111-5.112
   const PrbEquilibrium eq = seg.solve(EndLoad{0.0, 0.0, 1.2});
-  ASSERT_TRUE(eq.converged) << eq.message;
+  ASSERT_TRUE(eq.converged()) << eq.message;
   EXPECT_NEAR(eq.Theta, 1.2 / seg.stiffness_coefficient(), 1e-12);
   EXPECT_NEAR(eq.tip.theta0, 1.5164 * eq.Theta, 1e-12);
   EXPECT_NEAR(seg.limits().theta_max_position * 180.0 / kPi, 124.4 / 1.5164, 1e-9);
@@ -316,7 +316,7 @@ TEST(FixedFixedSegment, FreeEndUnderPureMomentMatchesItsClosedForm) {
   const double K = seg.stiffness_coefficient();
   const double mu = 0.8;
   const FixedFixedEquilibrium eq = seg.solve_free_end(EndLoad{0.0, 0.0, mu});
-  ASSERT_TRUE(eq.converged) << eq.message;
+  ASSERT_TRUE(eq.converged()) << eq.message;
   // Q_Theta = -K(2 Theta - theta0) = 0 and Q_theta0 = mu - K(theta0 - Theta) = 0.
   EXPECT_NEAR(eq.Theta, mu / K, 1e-12);
   EXPECT_NEAR(eq.theta0, 2.0 * mu / K, 1e-12);
@@ -326,7 +326,7 @@ TEST(FixedFixedSegment, FreeEndUnderPureMomentMatchesItsClosedForm) {
   // At the equilibrium of the guided model the clamp moment (with the reaction couple) is P a/2.
   const EndLoad load{0.0, 1.5, 0.0};
   const PrbEquilibrium eq_guided = guided.solve(load);
-  ASSERT_TRUE(eq_guided.converged) << eq_guided.message;
+  ASSERT_TRUE(eq_guided.converged()) << eq_guided.message;
   EXPECT_NEAR(
       seg.max_moment(eq_guided.Theta, load), guided.max_moment(eq_guided.Theta, load), 1e-10);
 }
@@ -338,7 +338,7 @@ TEST(PinnedPinnedSegment, StraightSegmentIsATwoForceMember) {
   EXPECT_THROW(seg.load_factor_at(0.0, EndLoad{-1.0, 0.0, 0.0}), InvalidInput);
   // No spring: under a side load the free link turns until it lies along the force.
   const PrbEquilibrium eq = seg.solve(EndLoad{0.0, 0.1, 0.0});
-  ASSERT_TRUE(eq.converged) << eq.message;
+  ASSERT_TRUE(eq.converged()) << eq.message;
   EXPECT_NEAR(eq.Theta, kPi / 2.0, 1e-12);
   const SectionStress s = seg.max_stress(0.0, EndLoad{-2.0, 0.0, 0.0}, {1.0, 0.1, 1.0}, 1.0);
   EXPECT_EQ(s.bending_moment, 0.0);

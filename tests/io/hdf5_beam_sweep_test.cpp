@@ -9,9 +9,9 @@
 #include <atomic>
 #include <cmath>
 
-#include "flexure/version.h"
 #include "flexure/io/beam_sweep.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/version.h"
 #include "tests/support/cli_test_support.h"
 
 namespace flexure::io {
@@ -25,7 +25,7 @@ BeamSweepPoint linear_point(double alpha2) {
     point.message = "fake divergence";
     return point;
   }
-  point.converged = true;
+  point.set_converged(true);
   point.tip = TipPose{1.0, alpha2 / 3.0, alpha2 / 2.0};
   return point;
 }

@@ -42,7 +42,7 @@ CfmModel fifty_points() {
 void expect_row(const CfmClassRow& row, double tolerance) {
   const CfmParameters p = parameters_of(row);
   const CfmResult r = fifty_points().evaluate(p);
-  ASSERT_TRUE(r.converged) << row.name;
+  ASSERT_TRUE(r.converged()) << row.name;
   const auto xi = [](const CfmResult& x) { return x.Xi; };
   const auto phi = [](const CfmResult& x) { return x.Phi; };
   EXPECT_NEAR(

@@ -174,7 +174,7 @@ TEST(CfmModel, UniformSamplingUsesTheRequestedPointsAndReportsLoopClosure) {
   EXPECT_NEAR(r.curve.front().stroke_percent, 0.8, 1e-12);
   EXPECT_NEAR(r.curve.back().stroke_percent, 40.0, 1e-12);
   EXPECT_LT(r.residual, 1e-13);
-  EXPECT_TRUE(r.converged);
+  EXPECT_TRUE(r.converged());
 }
 
 TEST(CfmModel, RefusesBadInput) {

@@ -58,7 +58,7 @@ TEST(CfmThesisTables, EveryRowReproducesPhiXiBetaLambdaWithinPrintedRounding) {
   const CfmModel model;  // the thesis code's stroke sampling
   for (const CfmSubclass& row : thesis_subclasses()) {
     const CfmResult r = model.evaluate(parameters_of(row));
-    ASSERT_TRUE(r.converged) << row.name << ": " << r.message;
+    ASSERT_TRUE(r.converged()) << row.name << ": " << r.message;
     expect_printed(
         row, r, "Phi", row.Phi, kPrintedDecimalsPhi, [](const CfmResult& x) { return x.Phi; });
     expect_printed(

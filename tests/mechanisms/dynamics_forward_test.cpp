@@ -51,7 +51,7 @@ TEST(DynamicsForward, FreeMotionConservesEnergyOver100Periods) {
   options.atol = 1e-15;
   const ForwardDynamics forward(model, options);
   const ForwardResult r = forward.integrate(0.6, 0.0, times(100 * period, 400), nullptr);
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.converged()) << r.message;
   EXPECT_LT(r.residual, kEnergyTolerance);
   // The release is large: the motion must really swing through the straight position.
   EXPECT_LT(*std::min_element(r.theta2.begin(), r.theta2.end()), -0.5);
@@ -70,7 +70,7 @@ TEST(DynamicsForward, InverseDynamicsForceReproducesPrescribedMotion) {
   const double period = 2.0 * std::numbers::pi / motion.omega;
   const ForwardResult r =
       forward.integrate(model.theta2_at(motion.preload), 0.0, times(2 * period, 50), force);
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.converged()) << r.message;
   for (std::size_t i = 0; i < r.t.size(); ++i) {
     const double expected =
         motion.preload + 0.5 * motion.stroke * (1.0 - std::cos(motion.omega * r.t[i]));
@@ -93,7 +93,7 @@ double measured_omega(const SliderCrankDynamics& model,
   const InputForce force = [F0](double, double, double) { return F0; };
   const ForwardResult r = forward.integrate(
       theta_eq - kSmallAmplitude, 0.0, {10.5 * period_guess}, F0 == 0.0 ? nullptr : force);
-  EXPECT_TRUE(r.converged) << r.message;
+  EXPECT_TRUE(r.converged()) << r.message;
   EXPECT_GE(r.upward_crossings.size(), 10u);
   if (r.upward_crossings.size() < 2) return 0.0;
   const double periods = static_cast<double>(r.upward_crossings.size() - 1);
@@ -137,7 +137,7 @@ TEST(DynamicsForward, DrivingSpringHoldsStaticEquilibrium) {
       theta_star, 0.0, times(0.5, 20), driving_spring(model, k_drive, [x_actuator](double) {
         return x_actuator;
       }));
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.converged()) << r.message;
   for (double theta : r.theta2) EXPECT_NEAR(theta, theta_star, kRestTolerance);
 }
 
@@ -151,7 +151,7 @@ TEST(DynamicsForward, CoulombFrictionDissipatesEnergy) {
   const double period = 2.0 * std::numbers::pi / linearise(model, 0.0).omega_n;
   const ForwardDynamics forward(model);
   const ForwardResult r = forward.integrate(0.6, 0.0, times(5 * period, 200), nullptr);
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.converged()) << r.message;
   const double E0 = model.energy(0.6, 0.0);
   double previous = E0;
   for (double E : r.energy) {

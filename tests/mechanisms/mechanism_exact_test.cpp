@@ -51,14 +51,14 @@ TEST(MechanismExact, LppCrankIsTheEllipticFixedPinnedBeam) {
   ExactPoint previous;
   for (double fraction : {0.25, 1.0}) {
     const ExactPoint p = solver.solve(fraction * d.stroke, fraction > 0.5 ? &previous : nullptr);
-    ASSERT_TRUE(p.converged) << p.message;
+    ASSERT_TRUE(p.converged()) << p.message;
     previous = p;
     const double l = d.joints[0].length;
     const double EI = d.joints[0].section(d.E).flexural_rigidity();
     // Coupler force applied directly to the fixed-pinned beam, Howell's nondimensional load.
     EndLoad load{p.Nx * l * l / EI, p.Ny * l * l / EI, 0.0};
     const EllipticResult e = EllipticSolver().solve(load);
-    ASSERT_TRUE(e.converged) << e.message;
+    ASSERT_TRUE(e.converged()) << e.message;
     // Crank tip = pivot 2 = slider - r3 (cos phi, -sin phi).
     const double xs = physical_chain(d).slider_x0 - fraction * d.stroke;
     const double a = (xs - d.r3 * std::cos(p.phi)) / l, b = d.r3 * std::sin(p.phi) / l;
@@ -77,7 +77,7 @@ void check_energy(const std::string& name, double tolerance) {
   const double W_half = simpson_work(d, a, b, 16);
   const ExactMechanismSolver solver(d);
   const ExactPoint pa = solver.solve(a), pb = solver.solve(b);
-  ASSERT_TRUE(pa.converged && pb.converged);
+  ASSERT_TRUE(pa.converged() && pb.converged());
   const double dU = exact_strain_energy(d, pb) - exact_strain_energy(d, pa);
   // Simpson's own error estimate must be far below the tolerance, otherwise the test is moot.
   EXPECT_LT(std::abs(W - W_half) / (15.0 * std::abs(W)), 0.1 * tolerance) << name;
@@ -119,12 +119,12 @@ TEST(MechanismExact, ChainAlgorithmConvergesToTheShootingSolutionForEveryTopolog
                                  "sps-b86IO"}) {
     const MechanismDesign d = find_builtin_mechanism(name);
     const ExactPoint p = ExactMechanismSolver(d).solve(d.stroke);
-    ASSERT_TRUE(p.converged) << name << ": " << p.message;
+    ASSERT_TRUE(p.converged()) << name << ": " << p.message;
     for (const ChainVariant v : {ChainVariant::kHowell, ChainVariant::kCorrected}) {
       std::vector<ChainCheck> c;
       for (int N : {50, 100, 200}) {
         c.push_back(chain_algorithm_check(p, N, v));
-        ASSERT_TRUE(c.back().converged) << name << " N = " << N << ": " << c.back().message;
+        ASSERT_TRUE(c.back().converged()) << name << " N = " << N << ": " << c.back().message;
       }
       const double order = v == ChainVariant::kHowell ? kHowellOrder : kCorrectedOrder;
       const double tolerance =
@@ -151,7 +151,7 @@ TEST(MechanismExact, ChainCheckClosureDetectsAWrongForce) {
   for (const std::string name : {"lps-a90", "1B-plp"}) {
     const MechanismDesign d = find_builtin_mechanism(name);
     const ExactPoint p = ExactMechanismSolver(d).solve(d.stroke);
-    ASSERT_TRUE(p.converged) << name << ": " << p.message;
+    ASSERT_TRUE(p.converged()) << name << ": " << p.message;
     ExactPoint wrong = p;
     for (SegmentChain* c : {&wrong.chain, &wrong.coupler_chain}) {
       c->tip_load.Fx *= kWrongForceFactor;
@@ -159,7 +159,7 @@ TEST(MechanismExact, ChainCheckClosureDetectsAWrongForce) {
     }
     const ChainCheck good = chain_algorithm_check(p, 200, ChainVariant::kHowell);
     const ChainCheck bad = chain_algorithm_check(wrong, 200, ChainVariant::kHowell);
-    ASSERT_TRUE(good.converged && bad.converged) << name << good.message << bad.message;
+    ASSERT_TRUE(good.converged() && bad.converged()) << name << good.message << bad.message;
     EXPECT_GT(bad.closure_error, kDetectionRatio * good.closure_error) << name;
     EXPECT_LT(bad.tip_error, kDetectionRatio * good.tip_error) << name;
   }
@@ -184,7 +184,7 @@ TEST(MechanismExact, PinnedMiddleThesisRowsSolveWithoutPassingASingularPoint) {
   for (const std::string& name : kFormerlyFailingPinnedMiddle) {
     const MechanismDesign d = find_builtin_mechanism(name);
     const ExactStrokeResult r = exact_stroke(d, stroke_displacements(d, 50));
-    ASSERT_TRUE(r.converged) << name << ": " << r.message;
+    ASSERT_TRUE(r.converged()) << name << ": " << r.message;
     const double sign = std::copysign(1.0, r.points.front().stiffness_determinant);
     for (const ExactPoint& p : r.points) {
       EXPECT_GT(sign * p.stiffness_determinant, 0.0) << name << " at " << p.displacement;
@@ -208,7 +208,7 @@ TEST(MechanismExact, Lps90CrankStartsJustAboveItsEulerLoad) {
   disable_gsl_abort();
   const MechanismDesign d = find_builtin_mechanism("lps-a90");
   const ExactPoint p = ExactMechanismSolver(d).solve(d.stroke / 50.0);
-  ASSERT_TRUE(p.converged) << p.message;
+  ASSERT_TRUE(p.converged()) << p.message;
   const double l = d.joints[0].length;
   const double EI = d.joints[0].section(d.E).flexural_rigidity();
   const double euler = M_PI * M_PI * EI / (4.0 * l * l);
@@ -228,7 +228,7 @@ TEST(MechanismExact, EqualLinksAndSpringsGiveAMirrorSymmetricSolution) {
   ASSERT_DOUBLE_EQ(d.r2, d.r3);
   ASSERT_NEAR(d.spring_constant(1), d.spring_constant(3), 1e-12 * d.spring_constant(1));
   const ExactStrokeResult r = exact_stroke(d, stroke_displacements(d, 10));
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.converged()) << r.message;
   for (const ExactPoint& p : r.points) {
     EXPECT_LT(std::abs(p.Ny), kSymmetryTolerance * std::abs(p.Nx)) << p.displacement;
     EXPECT_NEAR(p.m0, -p.coupler_m0, kSymmetryTolerance * std::abs(p.m0)) << p.displacement;
@@ -256,7 +256,7 @@ TEST(MechanismExact, SmallLengthPivotsConvergeToThePrbm) {
     const MechanismDesign d = find_builtin_mechanism(name);
     const MechanismAnalysis full = analyze_mechanism(d, o);
     const MechanismAnalysis tenth = analyze_mechanism(shorter_flexures(d, 0.1), o);
-    ASSERT_TRUE(full.exact.converged && tenth.exact.converged) << name;
+    ASSERT_TRUE(full.exact.converged() && tenth.exact.converged()) << name;
     // PRBM force identical by construction (same spring constants and PRB geometry).
     EXPECT_NEAR(full.prbm.mean_force / tenth.prbm.mean_force, 1.0, 1e-12);
     // The model error is first order in l/L: a tenth of the flexure length leaves < 30 % of it.
@@ -270,7 +270,7 @@ TEST(MechanismExact, ReportedErrorIsTheArrayError) {
   o.points = 20;
   o.exact_stress = false;
   const MechanismAnalysis a = analyze_mechanism(find_builtin_mechanism("1A-lpp"), o);
-  ASSERT_TRUE(a.exact.converged);
+  ASSERT_TRUE(a.exact.converged());
   double worst = 0.0;
   for (std::size_t k = 0; k < a.force_exact.size(); ++k) {
     worst = std::max(worst, std::abs(a.prbm.force[k] - a.force_exact[k]) / a.force_exact[k]);
@@ -288,13 +288,13 @@ TEST(MechanismExact, ReportedErrorIsTheArrayError) {
 TEST(MechanismExact, SpentWorkBudgetEndsTheStrokeUnconverged) {
   const MechanismDesign d = find_builtin_mechanism("3A-sss");
   const std::vector<double> dx = stroke_displacements(d, 20);
-  ASSERT_TRUE(exact_stroke(d, dx).converged);
+  ASSERT_TRUE(exact_stroke(d, dx).converged());
   const ExactStrokeResult full = exact_stroke(d, dx);
   ExactMechanismSolver::Options o;
   o.work_budget = 1.0;  // spent by the first solve
   o.work_budget_per_point = 0.0;
   const ExactStrokeResult r = exact_stroke(d, dx, o);
-  EXPECT_FALSE(r.converged);
+  EXPECT_FALSE(r.converged());
   EXPECT_NE(r.message.find("work budget exhausted"), std::string::npos) << r.message;
   EXPECT_NE(r.message.find("Delta x = "), std::string::npos) << r.message;
   // Stopped after its first solve: a small fraction of the work of the whole stroke.
@@ -312,7 +312,7 @@ TEST(MechanismExact, PinnedEndsNearTheToggleStayInTheSolverDomain) {
   MechanismDesign d = find_builtin_mechanism("1B-plp");
   d.stroke = 0.999 * d.toggle_stroke();
   const ExactStrokeResult r = exact_stroke(d, stroke_displacements(d, 50));
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.converged()) << r.message;
   const double a = r.points[44].displacement, b = d.stroke;  // 45/50 of the stroke, the end
   // 128 intervals: the force falls steeply near the toggle (32 left a Simpson error of 3e-8).
   const double W = simpson_work(d, a, b, 128), W_half = simpson_work(d, a, b, 64);

@@ -40,7 +40,7 @@ void expect_same_force(const MechanismDesign& original) {
   const MechanismDesign inverse = invert(original);
   const PrbmStrokeResult a = prbm_stroke(original, 50);
   const PrbmStrokeResult b = prbm_stroke(inverse, 50);
-  ASSERT_TRUE(a.converged && b.converged) << original.name;
+  ASSERT_TRUE(a.converged() && b.converged()) << original.name;
   for (std::size_t k = 0; k < a.force.size(); ++k) {
     EXPECT_NEAR(b.force[k], a.force[k], kSymmetry * std::abs(a.force[k]))
         << inverse.name << " point " << k;
@@ -126,7 +126,7 @@ TEST(MechanismInversion, ExactModelIsTheOriginalsByConstruction) {
   o.exact_stress = false;
   const MechanismAnalysis a = analyze_mechanism(find_builtin_mechanism("1A-spp"), o);
   const MechanismAnalysis b = analyze_mechanism(find_builtin_mechanism("1A-spp'"), o);
-  ASSERT_TRUE(a.exact.converged && b.exact.converged);
+  ASSERT_TRUE(a.exact.converged() && b.exact.converged());
   for (std::size_t k = 0; k < a.force_exact.size(); ++k) {
     EXPECT_EQ(b.force_exact[k], a.force_exact[k]);
   }

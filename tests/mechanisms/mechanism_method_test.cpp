@@ -3,13 +3,13 @@
 // built-in designs (the exact model is the independent reference); the choice of auto at loose and
 // tight tolerances; the CLI keys `method` and `method_reason`.
 #include "flexure/mechanisms/mechanism_method.h"
-#include "flexure/solver/common/errors.h"
 
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
 #include "flexure/mechanisms/mechanism_analysis.h"
+#include "flexure/solver/common/errors.h"
 #include "tests/support/cli_test_support.h"
 
 namespace flexure::mechanism {
@@ -22,7 +22,7 @@ TEST(MechanismMethod, MeasuredErrorTableMatchesTheExactModel) {
     o.points = 50;
     o.exact = true;
     const MechanismAnalysis a = analyze_mechanism(d, o);
-    ASSERT_TRUE(a.has_exact && a.exact.converged) << d.name;
+    ASSERT_TRUE(a.has_exact && a.exact.converged()) << d.name;
     EXPECT_NEAR(a.max_force_error, measured_prbm_force_error(d), 5.1e-5) << d.name;
   }
 }

@@ -192,7 +192,7 @@ TEST(MechanismModified, ExactSmallStrokeIsTheBucklingLoadAndThePrbmItsShortStrip
     const ExactMechanismSolver solver(s);
     const ExactPoint p1 = solver.solve(1e-3 * s.stroke);
     const ExactPoint p2 = solver.solve(2e-3 * s.stroke, &p1);
-    ASSERT_TRUE(p1.converged && p2.converged) << p1.message << p2.message;
+    ASSERT_TRUE(p1.converged() && p2.converged()) << p1.message << p2.message;
     const double F0 = 2.0 * p1.force - p2.force;  // linear extrapolation to Delta x = 0
     EXPECT_NEAR(F0 / F_cr, 1.0, kBucklingTolerance) << "shrink " << shrink;
     // PRBM at the straight position: F = k/(r2 (1 + 1/R)) with k = EI/L. The strip's finite
@@ -217,7 +217,7 @@ TEST(MechanismModified, ExactEnergyBalance) {
     const double W_half = simpson_work(d, a, b, 16);
     const ExactMechanismSolver solver(d);
     const ExactStrokeResult ends = exact_stroke(d, {a, b});
-    ASSERT_TRUE(ends.converged) << ends.message;
+    ASSERT_TRUE(ends.converged()) << ends.message;
     const double dU = exact_strain_energy(d, ends.points[1], kShapePoints) -
                       exact_strain_energy(d, ends.points[0], kShapePoints);
     EXPECT_LT(std::abs(W - W_half) / (15.0 * std::abs(W)), 0.1 * kEnergyTolerance) << name;
@@ -290,7 +290,7 @@ TEST(MechanismModified, AnalysisReportsYieldingSegments) {
   AnalysisOptions o;
   o.points = 10;
   const MechanismAnalysis a = analyze_mechanism(find_builtin_mechanism("2B-lplm"), o);
-  ASSERT_TRUE(a.exact.converged) << a.exact.message;
+  ASSERT_TRUE(a.exact.converged()) << a.exact.message;
   // 24 mm strips 0.518 mm thick turned by 53 deg: E h psi/(2 L) ~ 2.07 GPa > 200 ksi.
   const double psi = std::acos(0.6);  // R = 1, Delta x = 40 % of r2 + r3: cos theta2 = 0.6
   EXPECT_NEAR(a.prbm.max_stress[0] / (207e9 * 0.5181e-3 * psi / (2.0 * 0.024)), 1.0, 0.02);

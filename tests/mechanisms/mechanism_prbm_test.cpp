@@ -13,13 +13,13 @@
 #include <cmath>
 #include <string>
 
+#include "flexure/io/mechanism_toml.h"
 #include "flexure/mechanisms/cfm/cfm_comparison.h"
 #include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/constant_force.h"
 #include "flexure/mechanisms/howell_designs.h"
 #include "flexure/mechanisms/mechanism.h"
-#include "flexure/io/mechanism_toml.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {
@@ -31,7 +31,7 @@ constexpr double kClosedForm = 1e-10;
 TEST(MechanismPrbm, VirtualWorkForceEqualsLinkStatics) {
   for (const MechanismDesign& d : builtin_mechanisms()) {
     const PrbmStrokeResult r = prbm_stroke(d, 50);
-    ASSERT_TRUE(r.converged) << d.name;
+    ASSERT_TRUE(r.converged()) << d.name;
     EXPECT_LT(r.residual, kClosedForm) << d.name;  // |F_statics - F_virtual_work|/|F|
   }
 }

@@ -44,13 +44,13 @@ ChainResult chain_solve(const SegmentChain& chain, ChainVariant variant, int N =
 
 ShootingResult reference(const SegmentChain& chain) {
   const ShootingResult r = ShootingSolver().solve(chain);
-  EXPECT_TRUE(r.converged) << r.message;
+  EXPECT_TRUE(r.converged()) << r.message;
   return r;
 }
 
 // Compares tip pose and root reactions; forces scaled by `load_scale` (the largest load).
 void expect_agree(const ChainResult& c, const ShootingResult& s, double tol, double load_scale) {
-  ASSERT_TRUE(c.converged) << c.message;
+  ASSERT_TRUE(c.converged()) << c.message;
   EXPECT_NEAR(c.tip.x, s.tip.x, tol);
   EXPECT_NEAR(c.tip.y, s.tip.y, tol);
   EXPECT_NEAR(c.tip.theta, s.tip.theta, tol);
@@ -71,7 +71,7 @@ TEST_P(ChainBoundary, GuidedBeamIsTwoAntisymmetricHalfCantilevers) {
   SegmentChain chain = uniform_cantilever(EndLoad{0.0, P, 0.0});
   chain.end = EndCondition::kGuided;
   const ChainResult r = chain_solve(chain, GetParam());
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.converged()) << r.message;
   // Each half has N/2 elements: twice the per-half error of an N-element cantilever.
   const double tol = 2.0 * tolerance(GetParam());
   EXPECT_NEAR(r.tip.x, 0.73835640, tol);
@@ -133,7 +133,7 @@ TEST_P(ChainBoundary, PrescribedEndsReproduceTheFreeEquilibrium) {
       chain.tip_load.M = 0.0;
     }
     const ChainResult c = chain_solve(chain, GetParam());
-    ASSERT_TRUE(c.converged) << c.message;
+    ASSERT_TRUE(c.converged()) << c.message;
     const double tol = tolerance(GetParam());
     EXPECT_NEAR(c.tip.x, exact.tip.x, tol);
     EXPECT_NEAR(c.tip.y, exact.tip.y, tol);
@@ -164,7 +164,7 @@ TEST_P(ChainBoundary, ReportsWhereAStraightPinnedBeamPathCannotStart) {
   o.max_newton_iterations = 10;
   o.min_load_step = 1e-3;
   const ChainResult c = solve_chain(chain, o);
-  EXPECT_FALSE(c.converged);
+  EXPECT_FALSE(c.converged());
   EXPECT_LT(c.load_factor, 0.01);
   EXPECT_NE(c.message.find("stopped at load factor"), std::string::npos) << c.message;
 }

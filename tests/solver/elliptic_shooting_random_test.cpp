@@ -48,9 +48,9 @@ ShootingSolver fast_shooting() {
 void expect_agreement(double n, double alpha2, double mu, const ShootingSolver& shooting) {
   const EndLoad load = EndLoad::howell(n, alpha2, mu);
   const EllipticResult e = EllipticSolver().solve(load);
-  ASSERT_TRUE(e.converged) << describe(n, alpha2, mu) << ": elliptic: " << e.message;
+  ASSERT_TRUE(e.converged()) << describe(n, alpha2, mu) << ": elliptic: " << e.message;
   const ShootingResult s = shooting.solve(load);
-  ASSERT_TRUE(s.converged) << describe(n, alpha2, mu) << ": shooting: " << s.message;
+  ASSERT_TRUE(s.converged()) << describe(n, alpha2, mu) << ": shooting: " << s.message;
   EXPECT_NEAR(e.tip.a_over_l, s.tip.x, kTipTolerance) << describe(n, alpha2, mu);
   EXPECT_NEAR(e.tip.b_over_l, s.tip.y, kTipTolerance) << describe(n, alpha2, mu);
   EXPECT_NEAR(e.tip.theta0, s.tip.theta, kTipTolerance) << describe(n, alpha2, mu);
@@ -96,7 +96,7 @@ TEST(EllipticShootingRandom, IssueElevenLoadsFollowTheProportionalPath) {
   for (const IssueCase& c : cases) {
     const EndLoad load = EndLoad::howell(c.n, c.alpha2, c.mu);
     const EllipticResult e = EllipticSolver().solve(load);
-    ASSERT_TRUE(e.converged) << e.message;
+    ASSERT_TRUE(e.converged()) << e.message;
     EXPECT_NEAR(e.tip.theta0, c.theta0, 5e-6) << describe(c.n, c.alpha2, c.mu);
     EXPECT_EQ(e.limit_points, 0) << describe(c.n, c.alpha2, c.mu);
     expect_agreement(c.n, c.alpha2, c.mu, shooting);

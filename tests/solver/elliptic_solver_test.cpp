@@ -4,8 +4,9 @@
 // - Closed form of the end-moment beam (Howell eqs. 2.53, 2.59, 2.64), including mu = 2 pi.
 // - Small-load linear theory: b/l -> alpha2/3 with error O(alpha2^3), 1 - a/l -> alpha2^2/15.
 // - An independent RK4 integration of the elastica IVP started with the solver's root moment
-//   (tests/support/elastica_reference.h): tip position, tip angle and tip moment, for end moments with and
-//   against the force, inflection points, tip angles past 180 deg, tension and compression.
+//   (tests/support/elastica_reference.h): tip position, tip angle and tip moment, for end moments
+//   with and against the force, inflection points, tip angles past 180 deg, tension and
+//   compression.
 // - Statics: root moment = mu + a Fy - b Fx.
 // - Mirror symmetry, forward/inverse agreement, the proportional-loading branch when several
 //   equilibria exist, and bad input.
@@ -42,7 +43,7 @@ TEST(EllipticSolver, ReproducesHowellWorkedExampleFromTipAngle) {
   // b/l = 0.6103718 (digest §1.5, [calc]).
   const EllipticSolver solver;
   const EllipticResult r = solver.solve_for_tip_angle(0.0, 1.0);
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.converged()) << r.message;
   expect_rel(std::sqrt(r.load.Fy), 1.7569869, kOracleRelTol, "alpha");
   expect_rel(r.tip.a_over_l, 0.7383564, kOracleRelTol, "a/l");
   expect_rel(r.tip.b_over_l, 0.6103718, kOracleRelTol, "b/l");
@@ -69,7 +70,7 @@ TEST(EllipticSolver, ReproducesExactOracleTableForVerticalLoad) {
     expect_rel(inv.tip.a_over_l, row.a, kOracleRelTol, "a/l (inverse)");
     expect_rel(inv.tip.b_over_l, row.b, kOracleRelTol, "b/l (inverse)");
     const EllipticResult fwd = solver.solve(EndLoad::howell(0.0, row.alpha2));
-    ASSERT_TRUE(fwd.converged);
+    ASSERT_TRUE(fwd.converged());
     EXPECT_NEAR(fwd.tip.theta0, row.theta0, 1e-7) << "theta0 (forward) at " << row.theta0;
     expect_rel(fwd.tip.a_over_l, row.a, kOracleRelTol, "a/l (forward)");
     expect_rel(fwd.tip.b_over_l, row.b, kOracleRelTol, "b/l (forward)");
@@ -101,7 +102,7 @@ TEST(EllipticSolver, PureEndMomentIsACircularArcUpToAFullCircle) {
   const EllipticSolver solver;
   for (double mu : {1e-6, 0.5, 1.0, kPi, 2.0 * kPi, 3.0 * kPi, -2.0}) {
     const EllipticResult r = solver.solve(EndLoad{0.0, 0.0, mu});
-    ASSERT_TRUE(r.converged);
+    ASSERT_TRUE(r.converged());
     EXPECT_NEAR(r.tip.theta0, mu, 1e-15);
     EXPECT_NEAR(r.tip.a_over_l, std::sin(mu) / mu, 1e-15);
     EXPECT_NEAR(r.tip.b_over_l, 2.0 * std::pow(std::sin(0.5 * mu), 2) / mu, 1e-15);
@@ -162,7 +163,7 @@ TEST(EllipticSolver, AgreesWithIndependentIvpIntegration) {
   const EllipticSolver solver;
   for (const IvpCase& c : ivp_cases()) {
     const EllipticResult r = solver.solve(EndLoad{c.Fx, c.Fy, c.mu});
-    ASSERT_TRUE(r.converged) << r.message << " for " << c.Fx << ", " << c.Fy << ", " << c.mu;
+    ASSERT_TRUE(r.converged()) << r.message << " for " << c.Fx << ", " << c.Fy << ", " << c.mu;
     const testing::ElasticaState ivp =
         testing::integrate_elastica_accurate(c.Fx, c.Fy, r.root_moment);
     SCOPED_TRACE(::testing::Message() << "Fx=" << c.Fx << " Fy=" << c.Fy << " mu=" << c.mu);
@@ -211,7 +212,7 @@ TEST(EllipticSolver, ReachesTipAnglesPastHalfATurn) {
   // mu = 2 pi with a compressive force and a small transverse one: tip angle beyond 180 deg.
   const EllipticSolver solver;
   const EllipticResult r = solver.solve(EndLoad{-3.0, 1.0, 2.0 * kPi});
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.converged()) << r.message;
   EXPECT_GT(r.tip.theta0, kPi);
   const testing::ElasticaState ivp = testing::integrate_elastica_accurate(-3.0, 1.0, r.root_moment);
   EXPECT_NEAR(ivp.theta, r.tip.theta0, kIvpTol);
@@ -241,9 +242,9 @@ TEST(EllipticSolver, ForwardAndInverseAgree) {
     for (double fraction : {0.05, 0.3, 0.6, 0.9, 0.99}) {
       const double theta0 = fraction * psi;
       const EllipticResult inv = solver.solve_for_tip_angle(n, theta0);
-      ASSERT_TRUE(inv.converged);
+      ASSERT_TRUE(inv.converged());
       const EllipticResult fwd = solver.solve(EndLoad::howell(n, inv.load.Fy));
-      ASSERT_TRUE(fwd.converged);
+      ASSERT_TRUE(fwd.converged());
       SCOPED_TRACE(::testing::Message() << "n=" << n << " theta0=" << theta0);
       EXPECT_NEAR(fwd.tip.theta0, theta0, kSelfConsistency * std::max(1.0, theta0));
       EXPECT_NEAR(fwd.tip.a_over_l, inv.tip.a_over_l, kSelfConsistency);
@@ -269,7 +270,7 @@ TEST(EllipticSolver, ClosedFormPathsAgreeNearMomentFreeLoads) {
     for (double alpha2 : {0.5, 5.0, 20.0}) {
       const EllipticResult howell = solver.solve(EndLoad::howell(n, alpha2, 0.0));
       const EllipticResult general = solver.solve(EndLoad::howell(n, alpha2, 1e-13));
-      ASSERT_TRUE(general.converged) << general.message;
+      ASSERT_TRUE(general.converged()) << general.message;
       SCOPED_TRACE(::testing::Message() << "n=" << n << " alpha2=" << alpha2);
       EXPECT_NEAR(howell.tip.a_over_l, general.tip.a_over_l, 1e-10);
       EXPECT_NEAR(howell.tip.b_over_l, general.tip.b_over_l, 1e-10);
@@ -330,7 +331,7 @@ TEST(EllipticSolver, PassesTheLimitPointAndSaysWhereTheBeamSnaps) {
   const EllipticSolver solver;
   const EndLoad full = EndLoad::howell(0.0, 10.0, -2.0 * kPi);
   const EllipticResult r = solver.solve(full);
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.converged()) << r.message;
   EXPECT_GE(r.limit_points, 1);
   EXPECT_NE(r.branch.find("limit point"), std::string::npos) << r.branch;
   EXPECT_EQ(count_equilibria(full.scaled(0.5950)), 3);
@@ -339,7 +340,7 @@ TEST(EllipticSolver, PassesTheLimitPointAndSaysWhereTheBeamSnaps) {
   EXPECT_LT(r.first_limit_load_factor, 0.5965);
   // Independent method: shooting's pseudo-arclength continuation (CVODES), same equilibrium.
   const ShootingResult s = ShootingSolver().solve(full);
-  ASSERT_TRUE(s.converged) << s.message;
+  ASSERT_TRUE(s.converged()) << s.message;
   EXPECT_GE(s.limit_points, 1);
   EXPECT_NEAR(r.tip.a_over_l, s.tip.x, 1e-9);
   EXPECT_NEAR(r.tip.b_over_l, s.tip.y, 1e-9);
@@ -364,7 +365,7 @@ TEST(EllipticSolver, TensionNearTheSeparatrixKeepsPrecision) {
   for (double alpha2 : {50.0, 100.0}) {
     const EllipticResult howell = solver.solve(EndLoad::howell(-5.0, alpha2));
     const EllipticResult general = solver.solve(EndLoad::howell(-5.0, alpha2, 1e-25));
-    ASSERT_TRUE(general.converged) << general.message;
+    ASSERT_TRUE(general.converged()) << general.message;
     EXPECT_NEAR(howell.tip.a_over_l, general.tip.a_over_l, 1e-11);
     EXPECT_NEAR(howell.tip.b_over_l, general.tip.b_over_l, 1e-11);
   }
@@ -401,7 +402,7 @@ TEST(EllipticSolver, RejectsBadInput) {
   EXPECT_THROW(solver.solve(EndLoad{0.0, 1e5, 0.0}), InvalidInput);  // k'^2 would underflow
   // The largest accepted force still solves (1 - k ~ e^{-2 sqrt F}, about 1e-87 here).
   const EllipticResult edge = solver.solve(EndLoad{0.0, 1e4, 0.0});
-  EXPECT_TRUE(edge.converged) << edge.message;
+  EXPECT_TRUE(edge.converged()) << edge.message;
   EXPECT_NEAR(edge.root_moment, 1e4 * edge.tip.a_over_l, 1e-8 * 1e4);  // statics
   // theta0 must lie below the force angle: pi/2 for n = 0, atan2(1, -1) = 45 deg for n = -1.
   EXPECT_THROW(solver.solve_for_tip_angle(0.0, 2.0), InvalidInput);

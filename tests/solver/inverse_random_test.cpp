@@ -46,7 +46,7 @@ RandomTarget draw(std::mt19937_64& rng) {
     const double alpha2 = -30.0 + 60.0 * unit(rng);
     const EllipticResult e = EllipticSolver().solve(EndLoad::howell(t.load_ratio_n, alpha2, t.mu));
     t.value = t.of(e.tip);
-    r.reachable = e.converged;
+    r.reachable = e.converged();
   } else {
     t.value = t.quantity == TipTarget::Quantity::kTheta0 ? -3.0 + 6.0 * unit(rng)
                                                          : -0.95 + 1.9 * unit(rng);
@@ -73,13 +73,13 @@ TEST(InverseRandom, EllipticInversesHitTheirTargetOrSaySo) {
       const EllipticResult inv = t.quantity == TipTarget::Quantity::kTheta0
                                      ? solver.solve_for_tip_angle(t.load_ratio_n, t.value, t.mu)
                                      : solver.solve_for_deflection(t.load_ratio_n, t.value, t.mu);
-      if (!inv.converged) {
+      if (!inv.converged()) {
         EXPECT_FALSE(r.reachable && t.mu == 0.0) << r.text << ": " << inv.message;
         continue;
       }
       // Independent check: the forward problem at the returned load.
       const EllipticResult fwd = solver.solve(EndLoad::howell(t.load_ratio_n, inv.load.Fy, t.mu));
-      ASSERT_TRUE(fwd.converged) << r.text;
+      ASSERT_TRUE(fwd.converged()) << r.text;
       EXPECT_LE(std::fabs(t.of(fwd.tip) - t.value), tolerance_for(t, kEllipticTolerance)) << r.text;
       ++hits;
     } catch (const InvalidInput& e) {
@@ -97,11 +97,11 @@ std::function<std::optional<TipPose>(double)> forward(const std::string& method,
     const EndLoad load = EndLoad::howell(t.load_ratio_n, alpha2, t.mu);
     if (method == "shooting") {
       const ShootingResult s = ShootingSolver().solve(load);
-      if (!s.converged) return std::nullopt;
+      if (!s.converged()) return std::nullopt;
       return s.tip_pose();
     }
     const ChainResult c = ChainAlgorithmSolver().solve(load);
-    if (!c.converged) return std::nullopt;
+    if (!c.converged()) return std::nullopt;
     return c.tip_pose;
   };
 }
@@ -117,7 +117,7 @@ TEST_P(NumericalInverseRandom, InversesHitTheirTargetOrSaySo) {
     const TipTarget& t = r.target;
     try {
       const TipTargetSolution s = solve_tip_target(t, forward(method, t), kNumericalTolerance);
-      if (!s.converged) {
+      if (!s.converged()) {
         EXPECT_FALSE(r.reachable && t.mu == 0.0) << method << ": " << r.text << ": " << s.message;
         continue;
       }
@@ -147,7 +147,7 @@ TEST(InverseRandom, EllipticMissAcrossAFoldIsNotConverged) {
   // target between alpha2 = 2.2 and 3.3 (the path passes a fold there).
   const EllipticResult r = EllipticSolver().solve_for_tip_angle(
       14.174796494879462, 1.0053858735474077, -1.527731579147511);
-  EXPECT_FALSE(r.converged);
+  EXPECT_FALSE(r.converged());
   EXPECT_NE(r.message.find("jumps across the target"), std::string::npos) << r.message;
 }
 
@@ -156,7 +156,7 @@ TEST(InverseRandom, EllipticDeflectionWithMomentHitsItsTarget) {
   const double target = -0.22557370440269842;
   const EllipticResult r =
       EllipticSolver().solve_for_deflection(11.275437491316922, target, -1.3666828561222135);
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.converged()) << r.message;
   EXPECT_NEAR(r.tip.b_over_l, target, 1e-10);
 }
 
@@ -166,7 +166,7 @@ TEST(InverseRandom, NegativeLoadsAreSearchedToo) {
   const double target = 0.08023515231426202;
   const EllipticResult r =
       EllipticSolver().solve_for_tip_angle(-7.634957593378378, target, 0.15463846392469804);
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.converged()) << r.message;
   EXPECT_NEAR(r.load.Fy, -0.21263, 5e-6);
   EXPECT_NEAR(r.tip.theta0, target, 1e-10);
 }
@@ -180,7 +180,7 @@ TEST(InverseRandom, ShootingMissIsReportedNotReturned) {
     return forward("shooting", t)(alpha2);
   };
   const TipTargetSolution s = solve_tip_target(t, counting, kNumericalTolerance);
-  EXPECT_FALSE(s.converged);
+  EXPECT_FALSE(s.converged());
   EXPECT_EQ(solves, 0) << "the exact solution reports the jump; no shooting solve is needed";
 }
 

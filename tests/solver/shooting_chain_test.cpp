@@ -35,7 +35,7 @@ SegmentChain unit_beam(EndCondition end) {
 // cases below are chosen there. Agreement to 1e-9 cannot happen by accident.
 void expect_tip_from_end_load(const ShootingResult& r, const EndLoad& load) {
   const EllipticResult e = EllipticSolver().solve(load);
-  ASSERT_TRUE(e.converged) << "elliptic: " << e.message;
+  ASSERT_TRUE(e.converged()) << "elliptic: " << e.message;
   EXPECT_NEAR(e.tip.a_over_l, r.tip.x, kCrossMethodTolerance);
   EXPECT_NEAR(e.tip.b_over_l, r.tip.y, kCrossMethodTolerance);
   EXPECT_NEAR(e.tip.theta0, r.tip.theta, kCrossMethodTolerance);
@@ -50,7 +50,7 @@ TEST(ShootingEndConditions, PinnedEndReactionsReproduceTheTip) {
   chain.prescribed.y = 0.2;
   chain.tip_load.M = 0.1;
   const ShootingResult r = ShootingSolver().solve(chain);
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.converged()) << r.message;
   EXPECT_NEAR(r.tip.x, 0.976, kClosedFormTolerance);
   EXPECT_NEAR(r.tip.y, 0.2, kClosedFormTolerance);
   EXPECT_NEAR(r.tip_load.M, 0.1, kClosedFormTolerance);
@@ -63,7 +63,7 @@ TEST(ShootingEndConditions, SliderEndReactionReproducesTheTip) {
   chain.tip_load.Fx = -1.0;
   chain.tip_load.M = 0.5;
   const ShootingResult r = ShootingSolver().solve(chain);
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.converged()) << r.message;
   EXPECT_NEAR(r.tip.y, 0.4, kClosedFormTolerance);
   EXPECT_NEAR(r.tip_load.Fx, -1.0, kClosedFormTolerance);
   expect_tip_from_end_load(r, EndLoad{-1.0, r.tip_load.Fy, 0.5});
@@ -75,7 +75,7 @@ TEST(ShootingEndConditions, FixedEndReactionsReproduceTheTip) {
   chain.prescribed.y = 0.2;
   chain.prescribed.theta = 0.35;
   const ShootingResult r = ShootingSolver().solve(chain);
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.converged()) << r.message;
   EXPECT_NEAR(r.tip.theta, 0.35, kClosedFormTolerance);
   expect_tip_from_end_load(r, EndLoad{r.tip_load.Fx, r.tip_load.Fy, r.tip_load.M});
 }
@@ -85,7 +85,7 @@ TEST(ShootingLoads, FollowerForceEqualsDeadForceInItsFinalDirection) {
     SegmentChain chain = unit_beam(EndCondition::kFree);
     chain.tip_load.follower = P;
     const ShootingResult r = ShootingSolver().solve(chain);
-    ASSERT_TRUE(r.converged) << "P = " << P << ": " << r.message;
+    ASSERT_TRUE(r.converged()) << "P = " << P << ": " << r.message;
     // The follower acts along the deflected tip normal (-sin theta, cos theta).
     EXPECT_NEAR(r.tip_load.Fx, -P * std::sin(r.tip.theta), kClosedFormTolerance);
     EXPECT_NEAR(r.tip_load.Fy, P * std::cos(r.tip.theta), kClosedFormTolerance);
@@ -104,7 +104,7 @@ TEST(ShootingLoads, NodeLoadAndRigidLinkMatchLinearTheoryForSmallLoads) {
   two.segments = {FlexibleSegment{0.5, 1.0, {}, 0.0}, FlexibleSegment{0.5, 1.0, {}, 0.0}};
   two.node_loads = {NodeLoad{1, 0.0, F, 0.0}};
   const ShootingResult a = ShootingSolver().solve(two);
-  ASSERT_TRUE(a.converged) << a.message;
+  ASSERT_TRUE(a.converged()) << a.message;
   EXPECT_NEAR(a.tip.y, F * 0.25 * 2.5 / 6.0, kLinearTolerance);
   EXPECT_NEAR(a.tip.theta, F * 0.25 / 2.0, kLinearTolerance);  // F a^2 / (2 EI)
 
@@ -115,7 +115,7 @@ TEST(ShootingLoads, NodeLoadAndRigidLinkMatchLinearTheoryForSmallLoads) {
   link.segments = {FlexibleSegment{0.5, 2.0, {}, 0.0}, RigidSegment{0.5, 0.0}};
   link.tip_load.Fy = F;
   const ShootingResult b = ShootingSolver().solve(link);
-  ASSERT_TRUE(b.converged) << b.message;
+  ASSERT_TRUE(b.converged()) << b.message;
   const double theta_half = F * (0.5 - 0.125) / 2.0;
   EXPECT_NEAR(b.tip.theta, theta_half, kLinearTolerance);
   EXPECT_NEAR(b.tip.y, F * (0.125 - 1.0 / 48.0) / 2.0 + 0.5 * theta_half, kLinearTolerance);
@@ -129,7 +129,7 @@ TEST(ShootingLoads, TaperedBeamUnderEndMoment) {
   chain.segments.push_back(FlexibleSegment{1.0, 1.0, {1.0, 1.25, 1.5, 1.75, 2.0}, 0.0});
   chain.tip_load.M = M;
   const ShootingResult r = ShootingSolver().solve(chain);
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.converged()) << r.message;
   const double u = std::log(2.0);  // s = e^u - 1
   EXPECT_NEAR(r.tip.theta, M * u, kClosedFormTolerance);
   // x = int_0^ln2 e^u cos(M u) du, y = int_0^ln2 e^u sin(M u) du.

@@ -29,7 +29,7 @@ TEST(ShootingClosedForm, PureEndMomentIsACircularArc) {
                     -2.0 * std::numbers::pi,
                     3.0 * std::numbers::pi}) {
     const ShootingResult r = solver.solve(EndLoad{0.0, 0.0, mu});
-    ASSERT_TRUE(r.converged) << "mu = " << mu << ": " << r.message;
+    ASSERT_TRUE(r.converged()) << "mu = " << mu << ": " << r.message;
     EXPECT_NEAR(r.tip.x, std::sin(mu) / mu, kClosedFormTolerance) << "mu = " << mu;
     EXPECT_NEAR(r.tip.y, (1.0 - std::cos(mu)) / mu, kClosedFormTolerance) << "mu = " << mu;
     EXPECT_NEAR(r.tip.theta, mu, kClosedFormTolerance) << "mu = " << mu;
@@ -45,7 +45,7 @@ TEST(ShootingClosedForm, SmallLoadApproachesLinearTheoryAtThirdOrder) {
   double previous_error = 0.0;
   for (double alpha2 : {0.2, 0.1, 0.05}) {
     const ShootingResult r = solver.solve(EndLoad::howell(0.0, alpha2));
-    ASSERT_TRUE(r.converged) << r.message;
+    ASSERT_TRUE(r.converged()) << r.message;
     const double error = std::abs(r.tip.y - alpha2 / 3.0);
     EXPECT_LE(error, alpha2 * alpha2) << "alpha2 = " << alpha2;
     if (previous_error > 0.0) {
@@ -76,7 +76,7 @@ TEST(ShootingClosedForm, MatchesHowellTableForVerticalEndLoad) {
   const ShootingSolver solver;
   for (const HowellRow& row : rows) {
     const ShootingResult r = solver.solve(EndLoad::howell(0.0, row.alpha2));
-    ASSERT_TRUE(r.converged) << r.message;
+    ASSERT_TRUE(r.converged()) << r.message;
     // alpha2 carries 8 digits; d(a, b, theta)/d(alpha2) is below 1 on this range, so the table
     // rounding propagates at the same level.
     EXPECT_NEAR(r.tip.x, row.a_over_l, kTableTolerance) << "theta0 = " << row.theta0;
@@ -89,7 +89,7 @@ TEST(ShootingClosedForm, HowellWorkedExampleRootReaction) {
   // Howell eq. 2.100: theta0 = 1 rad at alpha2 = 3.0870030; the clamp carries -P and the moment
   // -P a (eq. 2.67 at x = 0, n = 0).
   const ShootingResult r = ShootingSolver().solve(EndLoad::howell(0.0, 3.0870030));
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.converged()) << r.message;
   EXPECT_NEAR(r.tip.theta, 1.0, 2 * kTableTolerance);
   EXPECT_NEAR(r.reaction.Fx, 0.0, kClosedFormTolerance);
   EXPECT_NEAR(r.reaction.Fy, -3.0870030, kClosedFormTolerance);
@@ -104,7 +104,7 @@ TEST(ShootingClosedForm, CurvedBeamWithEndMomentStaysCircular) {
   chain.segments.push_back(FlexibleSegment{L, EI, {}, kappa0});
   chain.tip_load.M = M;
   const ShootingResult r = ShootingSolver().solve(chain);
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.converged()) << r.message;
   const double kappa = kappa0 + M / EI;
   EXPECT_NEAR(r.tip.theta, kappa * L, kClosedFormTolerance);
   EXPECT_NEAR(r.tip.x, std::sin(kappa * L) / kappa, kClosedFormTolerance);
@@ -115,7 +115,7 @@ TEST(ShootingClosedForm, ShapeEndsAtTheTip) {
   ShootingSolver::Options options;
   options.shape_points = 21;
   const ShootingResult r = ShootingSolver(options).solve(EndLoad{0.0, 0.0, 2.0});
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.converged()) << r.message;
   ASSERT_EQ(r.shape.size(), 21u);
   for (const ShapePoint& p : r.shape) {
     // Circle of curvature 2 through the origin.

@@ -53,7 +53,7 @@ TEST_P(ShootingEulerColumn, PostBuckledLoadMatchesEllipticClosedForm) {
   half.tip_load.Fx = -P;
 
   const ShootingResult r = ShootingSolver().solve(half);
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.converged()) << r.message;
   // The end is a pin: no moment is needed to hold the slope alpha at this load.
   EXPECT_NEAR(r.tip_load.M, 0.0, kColumnTolerance * P) << "alpha = " << GetParam() << " deg";
   EXPECT_NEAR(r.tip.x, 2.0 * E / K - 1.0, kColumnTolerance);
@@ -80,7 +80,7 @@ TEST(ShootingEulerColumn, CriticalLoadIsTheSmallSlopeLimit) {
   for (double alpha : {0.02, 0.01}) {
     half.prescribed.theta = alpha;
     const ShootingResult r = ShootingSolver().solve(half);
-    ASSERT_TRUE(r.converged) << r.message;
+    ASSERT_TRUE(r.converged()) << r.message;
     const double moment = std::abs(r.tip_load.M);
     if (previous > 0.0) EXPECT_NEAR(previous / moment, 8.0, 0.1);  // cubic in alpha
     previous = moment;

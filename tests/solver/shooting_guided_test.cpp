@@ -40,11 +40,11 @@ TEST_P(ShootingGuidedBeam, EqualsTwoHalfCantilevers) {
   const GuidedCase c = GetParam();
   const double Fx = -c.load_ratio_n * c.P, Fy = c.P;
   const ShootingResult guided = ShootingSolver().solve(guided_beam(Fx, Fy));
-  ASSERT_TRUE(guided.converged) << guided.message;
+  ASSERT_TRUE(guided.converged()) << guided.message;
 
   // Half cantilever, length 1/2, EI 1: nondimensional load F (1/2)^2.
   const EllipticResult half = EllipticSolver().solve(EndLoad{0.25 * Fx, 0.25 * Fy, 0.0});
-  ASSERT_TRUE(half.converged) << "elliptic solver: " << half.message;
+  ASSERT_TRUE(half.converged()) << "elliptic solver: " << half.message;
   const double half_x = 0.5 * half.tip.a_over_l, half_y = 0.5 * half.tip.b_over_l;
 
   EXPECT_NEAR(guided.tip.y, 2.0 * half_y, kAntisymmetryTolerance);

@@ -36,7 +36,7 @@ TEST(ShootingUniqueness, TwoEquilibriaPastBucklingMeanTheBoundIsAtLeastOne) {
   const double theta_guess = 1.50;
   const ShootingResult buckled =
       ShootingSolver(o).solve_from(chain, {N * 1.0 * std::sin(theta_guess)});
-  ASSERT_TRUE(buckled.converged) << buckled.message;
+  ASSERT_TRUE(buckled.converged()) << buckled.message;
   EXPECT_GT(std::abs(buckled.tip.y), 0.3) << "a buckled equilibrium, far from the straight one";
   // The straight chain (m0 = 0) is the other equilibrium; two equilibria -> no contraction.
   EXPECT_GE(unique_equilibrium_bound(chain), 1.0);
@@ -52,7 +52,7 @@ TEST(ShootingUniqueness, BelowTheBoundDirectNewtonAndContinuationAgree) {
   continuation.strategy = ShootingStrategy::kContinuation;
   const ShootingResult a = ShootingSolver(direct).solve(chain);
   const ShootingResult b = ShootingSolver(continuation).solve(chain);
-  ASSERT_TRUE(a.converged && b.converged) << a.message << " / " << b.message;
+  ASSERT_TRUE(a.converged() && b.converged()) << a.message << " / " << b.message;
   constexpr double kSameEquilibrium = 1e-9;  // both at rtol 1e-12 Newton tolerances
   EXPECT_NEAR(a.tip.x, b.tip.x, kSameEquilibrium);
   EXPECT_NEAR(a.tip.y, b.tip.y, kSameEquilibrium);

@@ -10,8 +10,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "flexure/elements/fixed_pinned_segment.h"
 #include "flexure/benchmarks/studies/method_selector.h"
+#include "flexure/elements/fixed_pinned_segment.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 
@@ -25,7 +25,7 @@ double prbm_error_against_elliptic(double n, double alpha2) {
   const FixedPinnedSegment element(FixedPinnedConstants::from_table(n));
   const PrbEquilibrium prbm = element.solve(EndLoad::howell(n, alpha2));
   const EllipticResult exact = EllipticSolver().solve(EndLoad::howell(n, alpha2));
-  EXPECT_TRUE(prbm.converged && exact.converged);
+  EXPECT_TRUE(prbm.converged() && exact.converged());
   const double deflection = std::hypot(exact.tip.a_over_l - 1.0, exact.tip.b_over_l);
   return std::hypot(prbm.tip.a_over_l - exact.tip.a_over_l,
                     prbm.tip.b_over_l - exact.tip.b_over_l) /

@@ -16,8 +16,8 @@ inline double simpson_work(const MechanismDesign& d, double a, double b, int int
   std::vector<double> x(intervals + 1);
   for (int k = 0; k <= intervals; ++k) x[k] = a + (b - a) * k / intervals;
   const ExactStrokeResult r = exact_stroke(d, x);
-  EXPECT_TRUE(r.converged) << r.message;
-  if (!r.converged) return 0.0;
+  EXPECT_TRUE(r.converged()) << r.message;
+  if (!r.converged()) return 0.0;
   double sum = 0.0;
   for (int k = 0; k <= intervals; ++k) {
     const double w = (k == 0 || k == intervals) ? 1.0 : (k % 2 == 1 ? 4.0 : 2.0);
