@@ -22,7 +22,7 @@ using cfm::CfmResult;
 using cfm::CfmSubclass;
 
 // Class 1B: the mean of a force rising steeply from Delta x = 0 depends on sampling details at
-// ~1e-3 (book digest §6.1: with and without the Delta x -> 0 point the Table 10.1 row is
+// ~1e-3 (docs/cfm.md §3 item 4: with and without the Delta x -> 0 point the Table 10.1 row is
 // bracketed), so 1B class rows get this extra allowance in --table.
 constexpr double kClass1BSamplingAllowance = 2e-3;
 

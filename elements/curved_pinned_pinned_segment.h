@@ -3,8 +3,8 @@
 // kappa0 between two pins, loaded only along the line of the pins (eqs. 5.129-5.134). Modelled by
 // two symmetric half-models: pivots gamma*l/2 from each pin, link rho*l/2 at angle Theta, a spring
 // K = 2 rho K_theta EI/l at each (eqs. 5.135-5.147). Theta grows as the pins approach.
-// Table 5.3 and eqs. 5.137-5.139 disagree (gamma by up to 0.008, rho by up to 0.012; digest 3.6):
-// the constants say which one they come from.
+// Table 5.3 and eqs. 5.137-5.139 disagree (gamma by up to 0.008, rho by up to 0.012;
+// docs/prbm.md "Errata followed"): the constants say which one they come from.
 #include <string>
 
 #include "flexure/elements/prbm_element.h"

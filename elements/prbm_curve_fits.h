@@ -1,5 +1,5 @@
 #pragma once
-// Howell's published curve fits of the PRB constants (book digest section 3). They deviate from the
+// Howell's published curve fits of the PRB constants (eqs. 5.48, 5.60-5.62). They deviate from the
 // tables they were fitted to by up to ~0.002 in gamma and ~0.02 in K_theta, and are discontinuous
 // at the branch boundaries (gamma at n = 0.5, K_theta at n = -1); tests check them against their
 // printed coefficients, not against the tables.

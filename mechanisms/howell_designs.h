@@ -1,6 +1,6 @@
 #pragma once
 // Howell's constant-force slider mechanisms (Compliant Mechanisms, §10.1, Table 10.1 and the
-// worked examples of §10.1.4; book digest §6.1) as named dimensional designs for
+// worked examples of §10.1.4) as named dimensional designs for
 // `flexure mechanism analyze` (docs/mechanisms.md "Howell's designs"):
 //
 //   howell-1A-spp-b  example 1: s pivot at the ground, Delta x/(r2+r3) = 0.40, r2 = 78.74 mm,

@@ -11,8 +11,8 @@
 namespace flexure::mechanism {
 
 bool config_has_inversion(const std::string& config) {
-  // plp reads the same reversed but its beam replaces link 2; the mirror has it on link 3 (thesis
-  // digest §2.2: "plp' (= pl3p)").
+  // plp reads the same reversed but its beam replaces link 2; the mirror has it on link 3 (the
+  // thesis writes that form "pl3p", §7.4).
   return config == "spp" || config == "lpp" || config == "plp" || config == "ssp" ||
          config == "slp" || config == "lps";
 }

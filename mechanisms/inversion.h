@@ -1,5 +1,5 @@
 #pragma once
-// Inversions of the constant-force slider mechanisms (Weight 2001 §3.2.4, thesis digest §2.1-2.2;
+// Inversions of the constant-force slider mechanisms (Weight 2001 §3.2.4 and Fig. 3.2;
 // Howell §10.1.2, Fig. 10.2 right-hand column): the slider block is fixed and the "ground" block
 // slides. Every parameter value is the same and the relative motion of the two blocks is the same,
 // so force, stresses and the exact solution are those of the original; what changes is which body

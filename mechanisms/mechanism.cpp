@@ -225,9 +225,9 @@ MechanismDesign subclass_design(const cfm::CfmSubclass& row, const std::string& 
   return d;
 }
 
-// Thesis design example 1 (digest §7.4, Tables 8.3/8.4): lpp-b, l_tot = 15 in, b = 5 in,
+// Thesis design example 1 (§8.5.1, Tables 8.3/8.4): lpp-b, l_tot = 15 in, b = 5 in,
 // h = 0.04865 in, E = 30000 ksi, S_y = 167 ksi (the strength the example requires at SF 1.2),
-// stroke 4 in (the text's value; the tables' 7.5 in is an erratum, digest §13.12).
+// stroke 4 in (the text's value; the 7.5 in of Tables 8.3/8.4 is an erratum of the thesis).
 MechanismDesign thesis_example_lpp() {
   const cfm::CfmSubclass& row = cfm::find_thesis_subclass("lpp-b");
   MechanismDesign d;

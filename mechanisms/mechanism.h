@@ -1,6 +1,6 @@
 #pragma once
 // Dimensional description of half of a symmetric constant-force slider mechanism as Weight (2001)
-// models it (thesis digest §1.1, §2.2, Table 8.1): ground pivot 1, crank r2, middle pivot 2,
+// models it (thesis §2.1.1, §3.2, Table 8.1): ground pivot 1, crank r2, middle pivot 2,
 // coupler r3, slider pivot 3 on the x axis through the ground pivot. Each pivot is a pin (p), a
 // small-length flexural pivot (s) or a long fixed-pinned flexible segment (l).
 //
@@ -61,7 +61,7 @@ struct MechanismDesign {
   double E = 0.0;                     // Young's modulus, Pa
   double yield_strength = 0.0;        // Pa
   double stroke = 0.0;                // slider travel Delta x at the end of the stroke, m
-  // An inversion (thesis §3.2.4, digest §2.1): the slider block is fixed and the ground block
+  // An inversion (thesis §3.2.4, Fig. 3.2): the slider block is fixed and the ground block
   // slides. The fields above still describe the ORIGINAL orientation (the frame every model
   // computes in; the relative motion is the same); mechanisms/inversion.h gives the mirrored
   // description (pivot string reversed, r2 <-> r3, pivots renumbered 1 <-> 3) used for output.
@@ -137,7 +137,7 @@ void size_flexures_for_spring_ratios(
 
 // Built-in designs, one per configuration, named by class and configuration ("1A-lpp", ...; the
 // documented choices are in docs/mechanisms.md). "1A-lpp" is the thesis design example 1
-// (digest §7.4, Table 8.4).
+// (thesis §8.5.1, Table 8.4).
 const std::vector<MechanismDesign>& builtin_mechanisms();
 // Accepts "1A-lpp" or "lpp" (case-insensitive), any thesis sub-class ("lpp-b"), Howell's designs
 // (howell_designs.h: "howell-1A-spp-b", "howell-ex1", ...) and the inversion of any of them with a

@@ -66,7 +66,7 @@ struct ClassRowComparison {
   PrintedComparison Phi;
 };
 // `extra_tolerance` is added to both tolerances (class 1B: the mean of a force that rises
-// steeply from Delta x = 0 depends on sampling details at ~1e-3, book digest §6.1).
+// steeply from Delta x = 0 depends on sampling details at ~1e-3, docs/cfm.md §3 item 4).
 ClassRowComparison compare_with_class_row(const CfmClassRow& row, double extra_tolerance = 0.0);
 
 }  // namespace flexure::cfm

@@ -1,5 +1,6 @@
 #pragma once
-// The nine constant-force slider configurations of Weight (2001), thesis digest §2.2: a
+// The nine constant-force slider configurations of Weight (2001), thesis §3.2 and Tables 4.4, 5.1,
+// 8.1 (docs/cfm.md §1.2): a
 // slider-crank (ground pivot 1, crank r2, middle pivot 2, coupler r3, slider pivot 3) whose three
 // pivots are each a pin (p), a small-length flexural pivot (s) or a long fixed-pinned flexible
 // segment (l). The configuration string lists the pivots in the order ground, middle, slider.
@@ -32,7 +33,7 @@ struct CfmConfiguration {
   std::string class_name;             // PRBM class: "1A", "1B", "2A", "2B", "3A" (thesis §3.2.1)
   std::array<PivotType, 3> pivots{};  // pivot 1 (ground), 2 (middle), 3 (slider)
   // A long segment at pivot 2 replaces link 2 (r2, as in the tabulated plp rows, "pl2p") or
-  // link 3 (r3, as in slp); thesis code `pivotparam(2,2)`, digest §2.2 notes.
+  // link 3 (r3, as in slp); thesis code `pivotparam(2,2)` (App. B.1.3).
   bool middle_long_on_r2 = false;
 
   bool has_spring(int pivot) const { return pivots[pivot - 1] != PivotType::kPin; }  // 1..3

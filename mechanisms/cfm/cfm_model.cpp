@@ -13,7 +13,8 @@ namespace flexure::cfm {
 namespace {
 
 // Psi normalisers (thesis eq. 5.20): raw Psi of lpp-a at 16 % is the code's `fgoal`; the 40 %
-// value is not printed and was back-computed from lpp-b's printed 1.002 (thesis digest §5.2).
+// value is not printed and was back-computed from lpp-b's printed 1.002 (thesis Table 7.2;
+// docs/cfm.md §1.4).
 constexpr double kPsiNormaliser16 = 0.4518;
 constexpr double kPsiNormaliser40 = 0.1032;
 constexpr int kMaxUniformPoints = 10'000'000;
@@ -196,7 +197,7 @@ CfmResult CfmModel::evaluate(const CfmParameters& p) const {
 
   // Stress parameters at the end of the stroke (eq. 4.16: alpha = kappa * rotation) and the
   // primary pivot: highest stress with equal widths, alpha_i h_i with h_i ~ (K_{i-1}/kappa_i)^(1/3)
-  // (thesis code `stress(i,:)`, digest §1.9).
+  // (thesis code `stress(i,:)`, App. B.1.3).
   const std::array<double, 3> rotation = {pose.psi1(), pose.psi2(), pose.psi3()};
   const std::array<double, 3> K_prev = {1.0, r.K1, r.K2};  // K_0 = 1, K_1, K_2 (eq. 4.52)
   std::array<double, 3> stress{};

@@ -6,7 +6,8 @@
 //
 // Inputs are the thesis's design variables: configuration, R = r3/r2, K1 = k2/k1, K2 = k3/k1 and
 // the stroke d in % of r2 + r3. Strokes past the toggle position are clamped as the thesis code
-// does (thesis digest §0.3); the result says so (stroke_clamped) and reports the effective stroke.
+// does (App. B.1.3 `rimin`; docs/cfm.md §1.3); the result says so (stroke_clamped) and reports
+// the effective stroke.
 #include <array>
 #include <optional>
 #include <string>
@@ -62,7 +63,7 @@ struct CfmResult : SolveStatus {
   double K2 = 0.0;
   double requested_stroke_percent = 0.0;  // d as given
   double stroke_percent = 0.0;            // effective stroke after the toggle clamp
-  double toggle_stroke_percent = 0.0;     // d_lim of the clamp (thesis digest §0.3)
+  double toggle_stroke_percent = 0.0;     // d_lim of the clamp (docs/cfm.md §1.3)
   bool stroke_clamped = false;            // requested stroke was past the toggle position
   double Phi = 0.0;      // mean of Phi over the sampled stroke (thesis `average_phi`)
   double Phi_min = 0.0;  // smallest sampled Phi
@@ -76,7 +77,8 @@ struct CfmResult : SolveStatus {
   std::array<double, 3> alpha_end{};  // stress parameter alpha_i (eq. 4.16) at the end of stroke
   double Psi_raw = 0.0;               // stiffness parameter (eq. 5.19) before normalisation
   // Psi_raw divided by the thesis's normaliser for the same design stroke: 0.4518 (code `fgoal`,
-  // lpp-a) at d = 16 %, 0.1032 (back-computed, thesis digest §5.2) at d = 40 %; empty otherwise.
+  // lpp-a) at d = 16 %, 0.1032 (back-computed from lpp-b's printed Psi = 1.002, Table 7.2) at
+  // d = 40 %; empty otherwise.
   std::optional<double> Psi;
   // Thickness and width ratios of the non-primary flexures (thesis eqs. 5.31-5.36, Tables 7.7,
   // 7.10, 7.13); empty for a pin, 1 for the primary pivot:

@@ -3,9 +3,10 @@
 // (Weight 2001 eqs. 2.1-2.3 and 2.14; Howell eqs. 10.1-10.4 and 10.14), nondimensional with the
 // crank r2 = 1, coupler r3 = R and slider displacement u = Delta x/(r2 + r3).
 //
-// Angle convention (thesis digest §0.2, book digest §6.1): the printed equations write the spring
-// rotations as (2 pi + theta2 - theta3) and (2 pi - theta3), which is right only with theta3
-// measured in (3 pi/2, 2 pi]. Here theta3 is the principal value theta3p = asin(-sin(theta2)/R)
+// Angle convention (docs/cfm.md §3 item 1): the printed equations (thesis eqs. 2.9, 2.14, 2.19;
+// Howell eqs. 10.4, 10.14) write the spring rotations as (2 pi + theta2 - theta3) and
+// (2 pi - theta3), which is right only with theta3 measured in (3 pi/2, 2 pi] (as the thesis code
+// of App. B.1.3 does). Here theta3 is the principal value theta3p = asin(-sin(theta2)/R)
 // <= 0 and the spring rotations are psi1 = theta2, psi2 = theta2 - theta3p, psi3 = -theta3p; all
 // three are zero in the straight (undeflected) position. sin(theta2 - theta3) and cos(theta3)
 // do not change under the 2 pi shift.
@@ -31,7 +32,7 @@ SliderCrankPose slider_crank_pose(double R, double u);
 double loop_closure_residual(double R, const SliderCrankPose& pose);
 
 // Largest stroke, in % of r2 + r3, for which the asin branch of eq. 2.2 is the mechanism's
-// configuration (thesis digest §0.3, thesis code App. B.1.3 `rimin`):
+// configuration (thesis code App. B.1.3 `rimin`; docs/cfm.md §1.3):
 //  R < 1: until the coupler is perpendicular to the slider axis, 100 (1 - sqrt((1-R)/(1+R)));
 //  R > 1: until the crank is perpendicular (theta2 = 90 deg), 100 (1 - sqrt((R-1)/(R+1)));
 //  R = 1: 100 (the mechanism folds flat onto the ground pivot).

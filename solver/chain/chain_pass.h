@@ -7,9 +7,10 @@
 // eqs. 7.14-7.15 (with the bracket erratum of 7.15 corrected). Internal loads follow from statics
 // (eqs. 7.10-7.12), element deflections from the flexibility of eq. 7.30, and the element tip is
 // placed with the transverse deflection perpendicular to the clamp tangent psi_i (eqs. 7.17-7.18;
-// the digest notes that eq. 7.6 for element 1 uses theta_1 + delta_theta_1 instead, which differs
-// by O(L^3) per element; this code uses psi_i for every element). Rigid-body motion of the elements
-// (eqs. 7.19-7.22) is implicit: node positions are accumulated directly in the root frame.
+// eq. 7.6 for element 1 uses theta_1 + delta_theta_1 instead, which differs by O(L^3) per
+// element (erratum 7.6 vs 7.17, docs/theory-chain.md); this code uses psi_i for every element).
+// Rigid-body motion of the elements (eqs. 7.19-7.22) is implicit: node positions are accumulated
+// directly in the root frame.
 //
 // Cost: O(E) per pass. The moment arms of all downstream loads are rotated by one angle per
 // element, so suffix sums of p x f and p . f give every moment in constant time.

@@ -4,9 +4,10 @@
 //
 // Howell eq. 7.30 inverts the 2x2 transverse/rotation block of the reduced stiffness matrix
 // (eq. 7.29): the linear Euler-Bernoulli stiffness plus the consistent geometric stiffness of the
-// axial force (eq. 7.28). P_ax is positive in TENSION (tension stiffens the element); the digest's
-// erratum for eq. 7.34 notes the opposite sign in the simplified alternative, which is not used
-// here. The axial flexibility L/AE of eq. 7.30 is omitted: the element is inextensible.
+// axial force (eq. 7.28). P_ax is positive in TENSION (tension stiffens the element); the
+// simplified alternative of eqs. 7.33-7.36 needs the opposite sign (erratum 7.34,
+// docs/theory-chain.md) and is not used here. The axial flexibility L/AE of eq. 7.30 is omitted:
+// the element is inextensible.
 namespace flexure {
 
 // Symmetric 2x2 flexibility [f22 f23; f23 f33] mapping (P_tr, M) to (delta_tr, delta_theta).
@@ -17,7 +18,7 @@ struct ElementFlexibility {
   bool valid = false;  // false when the element is at or past its (discrete) buckling load
 };
 
-// Howell eqs. 7.30-7.32 in the factored form of the digest:
+// Howell eqs. 7.30-7.32, factored (docs/theory-chain.md):
 //   f22 = 8L^3 (30EI + L^2 P) / (3D),  f23 = 2L^2 (60EI + L^2 P) / D,  f33 = 24L (10EI + L^2 P) /
 //   D, D = 240 EI^2 + 104 EI L^2 P + 3 L^4 P^2.
 // D vanishes at L^2 P/EI = -2.4857 (the consistent-geometric-stiffness estimate of the cantilever

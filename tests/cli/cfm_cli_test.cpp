@@ -1,7 +1,7 @@
 // What is checked against what: the built `flexure cfm` (FLEXURE_BINARY) prints the documented
 // JSON keys; its numbers for lpp-b (R = 0.8853, d = 40) match the values printed in thesis
 // Table 7.2 (Phi 0.4773, Xi' 97.6, beta 3.248, lambda 1.094) within printed rounding plus the
-// 4-decimal rounding of R; a stroke past the toggle is clamped to the digest's 37.04 % with a
+// 4-decimal rounding of R; a stroke past the toggle is clamped to 37.04 % (docs/cfm.md) with a
 // warning on stderr; --subclass carries the printed values; --list names all 68 sub-classes;
 // --table finds every reproducible row within tolerance (exit 0); bad input exits 2.
 #include <gtest/gtest.h>
@@ -58,7 +58,7 @@ TEST(CfmCli, StrokePastToggleIsClampedWithAWarning) {
   const CommandResult r = run_flexure("cfm --config ssp --R 0.4323 --K1 0.2237 --d 40 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Json j = parse(r);
-  EXPECT_NEAR(j["stroke_percent"].get<double>(), 37.04, 0.005);  // thesis digest §0.3
+  EXPECT_NEAR(j["stroke_percent"].get<double>(), 37.04, 0.005);  // docs/cfm.md §1.3
   EXPECT_TRUE(j["stroke_clamped"].get<bool>());
   EXPECT_NE(r.err.find("warning"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("toggle"), std::string::npos) << r.err;

@@ -1,8 +1,9 @@
 // What is checked against what: `flexure beam` run as a process. JSON values are compared with
-// independent references: the book digest (sec. 1.5 worked example and n = 0 table, sec. 8 item 2
-// for n = 1, -1, 2.5), Howell's closed form for a pure end moment (eqs. 2.53, 2.59, 2.64) and
-// geometry (the shape starts at the clamp and ends at the tip). Bad input must give exit code 2
-// with one line on stderr naming the input, and nothing on stdout.
+// independent references: Howell eqs. 2.90-2.98 evaluated to 7-8 digits (§2.9.2 worked example,
+// n = 0 table, and n = 1, -1, 2.5 at theta0 = 0.6 rad), Howell's closed form for a pure end
+// moment (eqs. 2.53, 2.59, 2.64) and geometry (the shape starts at the clamp and ends at the
+// tip). Bad input must give exit code 2 with one line on stderr naming the input, and nothing on
+// stdout.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,9 +18,9 @@ namespace {
 
 using nlohmann::json;
 
-// The digest's values carry 8 significant digits: 1e-7 relative only fails on a real error.
+// The reference values carry 8 significant digits: 1e-7 relative only fails on a real error.
 constexpr double kEightDigits = 1e-7;
-// Digest sec. 8 item 2 has 7 decimals: half a unit is up to 1.3e-7 of b/l = 0.3767408.
+// The theta0 = 0.6 rad rows have 7 decimals: half a unit is up to 1.3e-7 of b/l = 0.3767408.
 constexpr double kSevenDecimals = 2e-7;
 // Closed forms: the solver's tolerance is 1e-14; allow rounding in trigonometric functions.
 constexpr double kClosedForm = 1e-10;
@@ -162,7 +163,7 @@ TEST(CliBeam, MissingConflictingAndNonNumericArgumentsAreExitTwo) {
 }
 
 TEST(CliBeam, UnreachableTipAngleIsExitTwo) {
-  // n = 0, mu = 0: the tip angle stays below the force angle pi/2 (digest sec. 1.5).
+  // n = 0, mu = 0: the tip angle stays below the force angle pi/2 (Howell eq. 2.90, theta0 < phi1).
   expect_invalid("beam --n 0 --theta0 2.0", "theta0");
   expect_invalid("beam --n 0 --theta0 2.0 --json", "theta0");
 }

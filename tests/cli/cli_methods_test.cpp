@@ -1,7 +1,7 @@
 // What is checked against what (command line: `beam --method shooting|chain`, boundaries,
 // `--chain FILE.toml`, `path`):
-// - shooting and chain tips for Howell's worked example against the digest's exact values
-//   (book-digest.md §1.5: a/l = 0.7383564, b/l = 0.6103718 at alpha2 = 3.0870030);
+// - shooting and chain tips for Howell's worked example (§2.9.2) against its exact values
+//   (eqs. 2.90-2.98 recomputed: a/l = 0.7383564, b/l = 0.6103718 at alpha2 = 3.0870030);
 // - `--boundary guided --alpha2 8` against the antisymmetry relation: two elliptic cantilevers of
 //   length l/2 with the same end load (EllipticSolver, alpha2_half = 8/4);
 // - root reactions against statics (the clamp holds -F and -M(0));
@@ -72,7 +72,7 @@ TEST(CliMethods, AutoPicksEllipticForTheFreeCantileverAndShootingOtherwise) {
 }
 
 TEST(CliMethods, InverseProblemsWithShooting) {
-  // theta0 = 1 rad, n = 0 -> alpha2 = 3.0870030 (digest §1.5).
+  // theta0 = 1 rad, n = 0 -> alpha2 = 3.0870030 (Howell §2.9.2 example, recomputed).
   const Json r = run_json("beam --theta0 1 --method shooting");
   EXPECT_NEAR(r["alpha2"].get<double>(), 3.0870030, 5e-7);
 }

@@ -1,8 +1,9 @@
 // What is checked against what: `flexure sweep beam` run as a process. The endpoints of the
-// range are rows of the digest's n = 0 table (sec. 1.5), so the stored a/l, b/l, theta0 are
-// compared with that table; spacing and order of alpha2 with START:STOP:COUNT arithmetic; the
-// attributes with the command line and flexure/version.h. The file must be complete and alone in
-// its directory (no temporary left), and bad input must fail with exit 2 before any file appears.
+// range are rows of the exact n = 0 table (Howell eqs. 2.90-2.98, computed to 8 digits), so the
+// stored a/l, b/l, theta0 are compared with that table; spacing and order of alpha2 with
+// START:STOP:COUNT arithmetic; the attributes with the command line and flexure/version.h. The
+// file must be complete and alone in its directory (no temporary left), and bad input must fail
+// with exit 2 before any file appears.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,7 +18,7 @@ namespace {
 
 using nlohmann::json;
 
-// The digest's n = 0 table has 8 significant digits.
+// The n = 0 table has 8 significant digits.
 constexpr double kEightDigits = 1e-7;
 
 void expect_relative(double computed, double reference, double tolerance, const char* what) {

@@ -1,6 +1,6 @@
 // What is checked against what: `flexure validate` run as a process. Its JSON must report every
-// check passed, and independently of its own reference list the Howell worked example (digest
-// sec. 1.5: alpha = 1.7569869, a/l = 0.7383564, b/l = 0.6103718) must appear among the computed
+// check passed, and independently of its own reference list the Howell worked example (§2.9.2,
+// recomputed: alpha = 1.7569869, a/l = 0.7383564, b/l = 0.6103718) must appear among the computed
 // values; the results file must hold one row per JSON check. The default output is
 // validation.h5 in the working directory, and an unwritable --out is exit 2.
 #include <gtest/gtest.h>
@@ -17,7 +17,7 @@ namespace {
 
 using nlohmann::json;
 
-constexpr double kEightDigits = 1e-7;  // the digest's 8 significant digits
+constexpr double kEightDigits = 1e-7;  // the reference values' 8 significant digits
 
 TEST(CliValidate, AllChecksPassAndTheHowellExampleIsAmongThem) {
   ScratchDir dir;

@@ -148,7 +148,7 @@ TEST(MechanismCli, ForceChangingSignHasNoPercentConstantForce) {
     return std::stod(m[1]);
   };
   const double r2 = value_of("r2"), r3 = value_of("r3"), R = r3 / r2;
-  // Toggle position of the slider-crank (thesis digest §0.3): crank and coupler in line.
+  // Toggle position of the slider-crank (docs/cfm.md §1.3): crank and coupler in line.
   const double toggle = (1.0 - std::sqrt(std::abs(1.0 - R) / (1.0 + R))) * (r2 + r3);
   ScratchDir dir;
   std::ofstream(dir / "toggle.toml") << std::regex_replace(

@@ -3,10 +3,10 @@
 //    agree with Table 5.1 (n = 1) within the acceptance tolerances;
 //  * `table` prints every Table 5.1 row (17 data lines) and the end-moment table; Table 5.2 is
 //    re-derived with the book's value beside it (kappa0 = 0.1 row: gamma 0.84 to 2 decimals);
-//  * `compare --json` reports the exact tip of the digest's oracle (n = 0, alpha2 = 2.046504 gives
-//    b/l = 0.5) and a path error below 0.5 % inside the validity range;
+//  * `compare --json` reports the exact tip of Howell's §5.2 example (n = 0, alpha2 = 2.046504
+//    gives b/l = 0.5) and a path error below 0.5 % inside the validity range;
 //  * `compare --range` gives one row per load and flags the point beyond Theta_max(gamma), with the
-//    exact Theta of the digest's n = 0 oracle;
+//    exact Theta of the n = 0 solution (eqs. 2.90-2.98 and 5.42);
 //  * `derive --segment initially-curved --kappa0 0` gives Table 5.1's n = 0 row;
 //  * invalid input exits with code 2 and one line on stderr.
 #include <gtest/gtest.h>
@@ -71,15 +71,16 @@ TEST(PrbmCli, CompareReportsExactTipAndValidity) {
   const auto r = run_flexure("prbm compare --segment fixed-pinned --n 0 --alpha2 2.046504 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  EXPECT_NEAR(j["exact"]["b_over_l"].get<double>(), 0.5, 1e-6);  // digest [calc] oracle
+  EXPECT_NEAR(j["exact"]["b_over_l"].get<double>(), 0.5, 1e-6);  // exact, eqs. 2.90-2.98
   EXPECT_LT(j["path_error_rel"].get<double>(), 0.005);
   EXPECT_TRUE(j["inside_position_range"].get<bool>());
   EXPECT_TRUE(j["inside_force_range"].get<bool>());
 }
 
 TEST(PrbmCli, CompareRangeGivesOneRowPerLoadAndFlagsTheValidityLimit) {
-  // Digest section 1.5, n = 0: alpha2 = 3.0870030 and 8.8064153 give Theta = 0.802320 and
-  // 1.183640 rad for gamma = 0.8517; the second is beyond Theta_max(gamma) = 64.3 deg.
+  // Exact n = 0 solution (eqs. 2.90-2.98, 5.42): alpha2 = 3.0870030 and 8.8064153 give
+  // Theta = 0.802320 and 1.183640 rad for gamma = 0.8517; the second is beyond
+  // Theta_max(gamma) = 64.3 deg.
   const auto r =
       run_flexure("prbm compare --segment fixed-pinned --n 0 --range 3.0870030:8.8064153:2 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;

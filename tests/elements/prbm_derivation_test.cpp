@@ -1,7 +1,7 @@
 // What is checked against what:
-//  * the error function (eqs. 5.42, 5.44-5.47) against the digest's independently computed n = 0
-//    oracle (exact tips and Theta for gamma = 0.8517; path errors at 40, 70, 77, 80 deg computed
-//    from the elliptic solver's tips);
+//  * the error function (eqs. 5.42, 5.44-5.47) against independently computed n = 0 values
+//    (exact tips of eqs. 2.90-2.98 and Theta for gamma = 0.8517; path errors at 40, 70, 77, 80 deg
+//    computed from the elliptic solver's tips);
 //  * the end-moment derivation (closed-form circular path) against Howell's gamma = 0.7346 (4
 //  digits)
 //    and theta0_max = 124.4 deg (eqs. 5.107-5.108);
@@ -9,7 +9,7 @@
 //    acceptance tolerances for the rows n >= -1 (gamma 0.001, c_theta 0.01, K_theta 0.01,
 //    Theta_max(gamma) 1 deg); for the tension rows n <= -1.5 the derived Theta_max must be at least
 //    the table's (the table's gamma is not the optimum of its own criterion), and at n = -5 the
-//    derived gamma differs from the table by about 0.05 (digest 3.2);
+//    derived gamma differs from the table by about 0.05 (docs/prbm.md, "The tension rows");
 //  * the derived gamma is a maximiser: Theta_max at gamma +- 0.002 is not larger.
 #include "flexure/elements/prbm_derivation.h"
 
@@ -34,7 +34,7 @@ constexpr double kKThetaTolerance = 0.01;
 constexpr double kThetaMaxToleranceDeg = 1.0;
 
 TEST(PrbErrorFunction, MatchesDigestOracleForVerticalLoad) {
-  // Digest section 1.5, n = 0 exact tips (8 digits) and Theta for gamma = 0.8517 (6 digits).
+  // n = 0 exact tips (eqs. 2.90-2.98, 8 digits) and Theta (eq. 5.42) for gamma = 0.8517 (6 digits).
   struct Row {
     double theta0, a, b, Theta;
   };
@@ -45,8 +45,9 @@ TEST(PrbErrorFunction, MatchesDigestOracleForVerticalLoad) {
   for (const Row& r : rows) {
     EXPECT_NEAR(prb_angle({r.theta0, r.a, r.b, 0.0}, 0.8517), r.Theta, 5e-6) << r.theta0;  // 6 s.f.
   }
-  // Digest path-error table (n = 0, gamma = 0.8517, 2-3 digits): the error crosses 0.5 % at
-  // theta0 = 77 deg, Theta = 64.27 deg, after a hump of 0.48 % at 40 deg.
+  // Path error (eq. 5.47, n = 0, gamma = 0.8517, computed to 2-3 digits): the error crosses 0.5 %
+  // at theta0 = 77 deg, Theta = 64.27 deg (Howell §5.2.2: 77 deg; Table 5.1: 64.3 deg), after a
+  // hump of 0.48 % at 40 deg.
   const EllipticSolver solver;
   const auto error_at = [&](double theta0_deg) {
     const EllipticResult r = solver.solve_for_tip_angle(0.0, theta0_deg * kDeg);
@@ -97,7 +98,7 @@ TEST(FixedPinnedDerivation, TensionRowsReachAtLeastTheTablesThetaMax) {
         << "n = " << row.load_ratio_n;
   }
   const PrbmDerivation d5 = derive_fixed_pinned(-5.0);
-  EXPECT_NEAR(d5.gamma - table_5_1_row(-5.0)->gamma, 0.05, 0.01);  // digest 3.2: "about 0.05"
+  EXPECT_NEAR(d5.gamma - table_5_1_row(-5.0)->gamma, 0.05, 0.01);  // docs/prbm.md: +0.052
 }
 
 TEST(FixedPinnedDerivation, DerivedGammaIsALocalMaximiserOfThetaMax) {

@@ -1,13 +1,12 @@
 // What is checked against what (no exact solver needed here):
 //  * small-length flexural pivot: Howell's two worked examples (§5.1, L3090-3151) at their printed
-//    precision, with the [calc] values of the book digest for the iterative one;
+//    precision, with values recomputed to 6 digits for the iterative one;
 //  * fixed-pinned PRBM side of the worked example (§5.2, L3411-3491), n = 0 and n = 1, at printed
 //    precision (the exact elliptic side is in prbm_examples_test.cpp); Howell's average constants
 //    (§5.2) that the mechanisms use; the validity-limit checks of ValidityLimits;
-//  * curve fits eqs. 5.48 and 5.60-5.62 against the digest's recomputed values, including their
-//    published discontinuities;
-//  * Table 5.2 rho and Theta_i from eqs. 5.115-5.118 against the digest's [calc] values and the
-//  book;
+//  * curve fits eqs. 5.48 and 5.60-5.62 against values recomputed from their printed
+//    coefficients, including their published discontinuities;
+//  * Table 5.2 rho and Theta_i from eqs. 5.115-5.118 against recomputed values and the book;
 //    Table 5.3 against eqs. 5.137-5.142 (their known disagreement is asserted, not hidden);
 //  * fixed-guided stiffness against linear beam theory (App. D.11: F = 12 EI delta/l^3);
 //  * end-moment K = gamma K_theta = c_theta (eq. 5.112); fixed-fixed free-end model against its own
@@ -72,7 +71,7 @@ TEST(SmallLengthFlexuralPivot, BookIterativeExampleSolvesEquation535) {
   EXPECT_NEAR(eq.Theta, 0.626, printed(0.0005));                // eq. 5.36
   EXPECT_NEAR(eq.tip.a_over_l * kSlfpl, 4.5, printed(0.05));    // eq. 5.37
   EXPECT_NEAR(eq.tip.b_over_l * kSlfpl, 3.08, printed(0.005));  // eq. 5.38
-  // Digest [calc]: Theta = 0.625765, a = 4.50520, b = 3.07502 (6 digits).
+  // Eq. 5.35 solved to 6 digits: Theta = 0.625765, a = 4.50520, b = 3.07502.
   constexpr double kCalc = 2e-6;
   EXPECT_NEAR(eq.Theta, 0.625765, kCalc);
   EXPECT_NEAR(eq.tip.a_over_l * kSlfpl, 4.50520, 1e-5);
@@ -171,9 +170,9 @@ TEST(ValidityLimits, ContainsChecksBothLimitsAndContainsForceOnlyTheForceLimit) 
   EXPECT_FALSE(force_first.contains_force(-0.51));
 }
 
-// --- Curve fits (eqs. 5.48, 5.60-5.62) against the digest's recomputed values ------------------
+// --- Curve fits (eqs. 5.48, 5.60-5.62) against values recomputed from their coefficients -------
 TEST(CurveFits, MatchDigestValuesAndPublishedDiscontinuities) {
-  constexpr double kFourDigits = 5e-5;  // digest prints gamma to 4 decimals
+  constexpr double kFourDigits = 5e-5;  // recomputed gamma is given to 4 decimals
   constexpr double kFiveDigits = 5e-6;  // and K_theta to 5
   EXPECT_NEAR(gamma_curve_fit(0.0), 0.8521, kFourDigits);
   EXPECT_NEAR(gamma_curve_fit(-1.0), 0.8704, kFourDigits);
@@ -186,12 +185,12 @@ TEST(CurveFits, MatchDigestValuesAndPublishedDiscontinuities) {
   EXPECT_NEAR(K_theta_curve_fit(-1.0), 2.71610, kFiveDigits);          // eq. 5.61 at -1
   EXPECT_NEAR(K_theta_curve_fit(-1.0 + 1e-12), 2.72000, kFiveDigits);  // eq. 5.62 just above
   EXPECT_NEAR(K_theta_curve_fit(-2.5), 2.74069, kFiveDigits);
-  // The digest calls the fit continuous at -2.5; eq. 5.61's printed coefficients give 2.742846
-  // there (hand evaluation), a 0.0022 jump.
+  // The fit looks continuous at -2.5, but eq. 5.61's printed coefficients give 2.742846 there
+  // (hand evaluation), a 0.0022 jump.
   EXPECT_NEAR(K_theta_curve_fit(-2.5 + 1e-12), 2.742846, kFiveDigits);
   EXPECT_NEAR(K_theta_curve_fit(-5.0), 2.49689, kFiveDigits);
   EXPECT_NEAR(K_theta_curve_fit(10.0), 2.57658, kFiveDigits);
-  // Eq. 5.63 reproduces Table 5.1's Theta_max(K_theta) for n < 0 (digest 3.2).
+  // Eq. 5.63 reproduces Table 5.1's Theta_max(K_theta) for n < 0 (docs/prbm.md).
   for (const auto& row : table_5_1()) {
     if (row.load_ratio_n < 0.0) {
       EXPECT_NEAR(theta_max_K_rule(row.load_ratio_n) * 180.0 / kPi, row.theta_max_K_deg, 0.05)
@@ -204,7 +203,7 @@ TEST(CurveFits, MatchDigestValuesAndPublishedDiscontinuities) {
 
 // --- Initially curved cantilever, Table 5.2 ------------------------------------------------------
 TEST(InitiallyCurvedCantilever, RhoAndThetaIFromEquationsMatchTable52) {
-  // Digest [calc] with the tabulated gamma: rho and Theta_i to 4 decimals.
+  // Eqs. 5.115-5.118 with the tabulated gamma, recomputed: rho and Theta_i to 4 decimals.
   const double rho_calc[] = {0.8500, 0.8398, 0.8290, 0.8069, 0.7973, 0.7746, 0.7491};
   const double theta_i_calc[] = {0.0, 0.0595, 0.1506, 0.3083, 0.6145, 0.9269, 1.2381};
   const auto& rows = table_5_2();
@@ -224,8 +223,8 @@ TEST(InitiallyCurvedCantilever, RhoAndThetaIFromEquationsMatchTable52) {
 
 // --- Initially curved pinned-pinned, Table 5.3 (inconsistent with its equations) ---------------
 TEST(CurvedPinnedPinnedSegment, EquationsAndTable53AgreeOnlyWithinTheirKnownMismatch) {
-  const double gamma_eq[] = {0.7918, 0.7864, 0.7798, 0.7732, 0.7666};  // digest [calc] 5.138-5.139
-  const double K_eq[] = {2.588, 2.624, 2.677, 2.747, 2.834};           // digest [calc] 5.142
+  const double gamma_eq[] = {0.7918, 0.7864, 0.7798, 0.7732, 0.7666};  // eqs. 5.138-5.139
+  const double K_eq[] = {2.588, 2.624, 2.677, 2.747, 2.834};           // eq. 5.142
   const double rho_eq[] = {0.7924, 0.7859, 0.7812, 0.7765, 0.7718};    // 5.137 with table gamma
   const auto& rows = table_5_3();
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -234,7 +233,7 @@ TEST(CurvedPinnedPinnedSegment, EquationsAndTable53AgreeOnlyWithinTheirKnownMism
     EXPECT_NEAR(pinned_pinned_K_theta_curve_fit(k), K_eq[i], 5e-4);
     const CurvedPinnedPinnedSegment seg(CurvedPinnedPinnedConstants::from_table(k));
     EXPECT_NEAR(seg.rho(), rho_eq[i], 5e-5) << "kappa0 = " << k;
-    // Digest: table and equations differ by up to 0.012 in rho; the oracle tolerance is 0.015.
+    // Table and equations differ by up to 0.012 in rho (docs/prbm.md); the tolerance is 0.015.
     EXPECT_NEAR(seg.rho(), rows[i].rho, 0.015) << "kappa0 = " << k;
     // F b = K (Theta - Theta_i) (eqs. 5.144-5.146) from the virtual-work form.
     const double Theta = seg.initial_angle() + 0.2;
@@ -255,7 +254,7 @@ TEST(FixedGuidedSegment, SmallDeflectionStiffnessIsNearLinearTheory) {
   const double Theta = 1e-4;
   const double F = seg.load_factor_at(Theta, EndLoad{0.0, 1.0, 0.0});
   const double stiffness = F / seg.tip(Theta).b_over_l;
-  // Virtual work of two springs K = 2 gamma K_theta: F = 4 K_theta/gamma * delta (digest 3.3).
+  // Virtual work of two springs K = 2 gamma K_theta: F = 4 K_theta/gamma * delta (eq. 5.105).
   EXPECT_NEAR(stiffness, 4.0 * 2.67617 / 0.8517, 1e-6);
   // Linear theory (App. D.11) gives 12; the PRBM is 4.7 % stiffer at the origin.
   constexpr double kPrbmLinearMismatch = 0.05;
@@ -275,7 +274,7 @@ TEST(FixedGuidedSegment, BookEndEffectorSpringConstant) {
   const RectangularSection section{7e-3, 0.8e-3, 2.9e9};
   EXPECT_NEAR(section.second_moment(), 2.99e-13, printed(0.005e-13));
   EXPECT_NEAR(seg.spring_constant(section.flexural_rigidity(), 22e-3), 0.18, printed(0.005));
-  // Digest [calc] 0.1776 uses the book's rounded I = 2.99e-13 m^4.
+  // Recomputed with the book's rounded I = 2.99e-13 m^4: 0.1776.
   EXPECT_NEAR(seg.spring_constant(2.9e9 * 2.99e-13, 22e-3), 0.1776, 5e-5);
 }
 
@@ -290,8 +289,8 @@ TEST(SmallLengthFlexuralPivot, BookBistableSwitchSpringConstant) {
 
 TEST(FixedGuidedSegment, MatchesTheExactAntisymmetricSolutionWithinThePrbmAccuracy) {
   // A fixed-guided beam is two antisymmetric fixed-pinned halves of length l/2, so its exact tip
-  // for alpha2 = F l^2/EI equals (in units of l) a half's tip for alpha2/4. Digest section 1.5 (n =
-  // 0): alpha2_half = 2.046504 gives b = 0.5 (book example) and a = 0.8345901.
+  // for alpha2 = F l^2/EI equals (in units of l) a half's tip for alpha2/4. Exact n = 0 solution
+  // (eqs. 2.90-2.98): alpha2_half = 2.046504 gives b = 0.5 (book example) and a = 0.8345901.
   const FixedGuidedSegment seg;
   const PrbEquilibrium eq = seg.solve(EndLoad{0.0, 4.0 * 2.046504, 0.0});
   ASSERT_TRUE(eq.converged()) << eq.message;

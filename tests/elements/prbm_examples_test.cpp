@@ -1,7 +1,7 @@
 // What is checked against what: Howell's fixed-pinned worked example (§5.2, L3411-3491; steel,
 // l = 20 in, 1.25 x 1/32 in, b = 10 in) with the exact elliptic answer beside the PRBM answer.
-//  * the elliptic solver's inverse problem (b/l = 0.5) against the digest's independently computed
-//    [calc] values (theta0, alpha2, P, a to 6 digits) and the book's "elliptic: F = 0.49 lb,
+//  * the elliptic solver's inverse problem (b/l = 0.5) against independently computed values of
+//    eqs. 2.90-2.98 (theta0, alpha2, P, a to 6 digits) and the book's "elliptic: F = 0.49 lb,
 //    a = 16.7 in, theta0 = 0.79 rad" at printed precision;
 //  * the PRBM with the example's constants against the exact answer within the PRBM's accuracy
 //    (load within 3 %, a within 0.5 % of l, theta0 within 0.03 rad);
@@ -39,7 +39,8 @@ TEST(FixedPinnedExample, VerticalLoadExactAndPrbm) {
   ASSERT_TRUE(exact.converged()) << exact.message;
   const double EI = kSection.flexural_rigidity();
   const double P_exact = exact.load.Fy * EI / (kLength * kLength);
-  // Digest [calc]: theta0 = 0.793392, alpha2 = 2.046504, P = 0.48792 lb, a = 16.6918 in.
+  // Computed from eqs. 2.90-2.98: theta0 = 0.793392, alpha2 = 2.046504, P = 0.48792 lb,
+  // a = 16.6918 in.
   EXPECT_NEAR(exact.tip.theta0, 0.793392, 1e-6);
   EXPECT_NEAR(exact.load.Fy, 2.046504, 1e-6);
   EXPECT_NEAR(P_exact, 0.48792, 1e-5);
@@ -62,8 +63,8 @@ TEST(FixedPinnedExample, AngledLoadExactAndPrbm) {
   ASSERT_TRUE(exact.converged()) << exact.message;
   const double EI = kSection.flexural_rigidity();
   const double P_exact = exact.load.Fy * EI / (kLength * kLength);
-  // Digest [calc]: theta0 = 0.814155, alpha2 = 1.173451, P = 0.27977 lb, F = 0.39566 lb, a
-  // = 16.636.
+  // Computed from eqs. 2.90-2.98: theta0 = 0.814155, alpha2 = 1.173451, P = 0.27977 lb,
+  // F = 0.39566 lb, a = 16.636.
   EXPECT_NEAR(exact.tip.theta0, 0.814155, 1e-6);
   EXPECT_NEAR(exact.load.Fy, 1.173451, 1e-6);
   EXPECT_NEAR(P_exact, 0.27977, 1e-5);

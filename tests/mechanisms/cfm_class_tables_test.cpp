@@ -1,7 +1,7 @@
-// What is checked against what: the class-level rows of Howell's Table 10.1 (book digest §6.1)
-// and of thesis Table 2.1 (thesis digest §1.6), recomputed with 50 equally spaced stroke points
-// and the spring rotations of the principal-angle convention (the printed "2 pi" dropped), against
-// the printed Xi = max F/min F and mean Phi.
+// What is checked against what: the class-level rows of Howell's Table 10.1 (§10.1.3) and of
+// thesis Table 2.1 (§2.4), recomputed with 50 equally spaced stroke points and the spring
+// rotations of the principal-angle convention (the printed "2 pi" dropped), against the printed
+// Xi = max F/min F and mean Phi.
 //  * Howell 1A, 2A, 3A: within 1e-4 (the lead's acceptance figure) plus the change caused by
 //    rounding the printed R, K1, K2 to 4 decimals (2A-a: dPhi/dK1 = 3.75, so K1's rounding alone
 //    is worth 1.9e-4; the computed Phi is 1.5e-4 off).
@@ -29,7 +29,7 @@ constexpr double kClass1BTolerance = 2e-3;   // sampling sensitivity of class 1B
 constexpr double kPrintedHalfUnit = 0.5e-4;  // Table 2.1 prints 4 decimals
 constexpr double kRepresentation = 1e-12;
 // Howell 2B printed Xi/Phi vs the K2 ~ 1 model: "approximately" (no single K2 gives 4 digits,
-// thesis digest §1.6); 50 points give 8e-4/5e-4 (a) and 9e-4/5e-4 (b).
+// docs/cfm.md §3 item 3); 50 points give 8e-4/5e-4 (a) and 9e-4/5e-4 (b).
 constexpr double kBook2BNearOne = 1.5e-3;
 
 CfmModel fifty_points() {
@@ -94,7 +94,7 @@ TEST(CfmThesisTable2_1, Class2AbRowReproducesOnlyAtTheToggleClampedStroke) {
   ASSERT_NE(row, nullptr);
   const CfmResult r = fifty_points().evaluate(parameters_of(*row));
   EXPECT_TRUE(r.stroke_clamped);
-  EXPECT_NEAR(r.stroke_percent, 37.04, 0.005);  // thesis digest §0.3
+  EXPECT_NEAR(r.stroke_percent, 37.04, 0.005);  // docs/cfm.md §1.3
 }
 
 }  // namespace

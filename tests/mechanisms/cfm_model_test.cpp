@@ -4,8 +4,8 @@
 //    the derivative of the spring energy (virtual work, central differences) for every
 //    configuration;
 //  * the mirror identity of Howell §10.1 (r2 <-> r3, k1 <-> k3): Phi(1/R, ..)= Phi(R, ..) R/K2;
-//  * the Delta x -> 0 limit of class 1A, Phi -> R/(1+R) (book digest §6.1);
-//  * the toggle clamp: 37.04 % (R = 0.4323) and 26.62 % (R = 0.3000) from the thesis digest §0.3,
+//  * the Delta x -> 0 limit of class 1A, Phi -> R/(1+R) (limit of Howell eq. 10.14);
+//  * the toggle clamp: 37.04 % (R = 0.4323) and 26.62 % (R = 0.3000) (docs/cfm.md §1.3),
 //    and at the clamp the coupler (R < 1) or the crank (R > 1) is perpendicular to the slider axis;
 //  * lambda against the Table 5.1 closed forms; kinematics against the law of cosines;
 //  * bad input is refused with InvalidInput.
@@ -26,7 +26,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kRoundoff = 1e-12;         // closed-form identities, a few ulps of O(1) terms
 constexpr double kFiniteDifference = 1e-7;  // central difference, h = 1e-5 in u: O(h^2)
-constexpr double kToggleRounding = 0.005;   // digest prints the toggle strokes to 2 decimals
+constexpr double kToggleRounding = 0.005;   // toggle strokes given to 2 decimals
 constexpr double kTable51Rounding = 1e-12;  // closed forms evaluated two ways
 
 // Printed thesis eq. 2.14 / 2.19 taken literally, theta3 in (3 pi/2, 2 pi] (thesis code:

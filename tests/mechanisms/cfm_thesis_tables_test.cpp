@@ -1,12 +1,13 @@
 // What is checked against what: the nondimensional PRBM constant-force model (mechanisms/cfm/)
 // against the values PRINTED in Weight (2001) Tables 7.2/7.4/7.6/7.9/7.12 (all 68 sub-classes,
-// thesis digest §6.1): mean Phi, Xi' = 100 min F/max F, beta, lambda, normalised Psi, kappa_i,
-// d_N max and the primary pivot, plus the C/D ratios of Tables 7.7/7.10/7.13 (digest §6.2),
+// = App. D Tables D.1/D.2): mean Phi, Xi' = 100 min F/max F, beta, lambda, normalised Psi,
+// kappa_i, d_N max and the primary pivot, plus the C/D ratios of Tables 7.7/7.10/7.13,
 // computed from the printed design variables (config, R, K1, K2, d) only. Tolerance per value: half
 // a unit of its printed last digit, plus the change of the computed value when each printed design
 // variable (4 decimals) moves by half a unit of its last digit (the optimiser's inputs were
 // themselves rounded for printing; e.g. plp-a90 has dPhi/dR ~ -6, so R's rounding alone moves Phi
-// by 3e-4). The three rows marked † in the thesis digest must be exactly the rows whose stroke is
+// by 3e-4). The three rows that reproduce only with the toggle clamp (`toggle_clamped` in
+// data/weight_thesis_subclasses.csv; docs/cfm.md §1.3) must be exactly the rows whose stroke is
 // clamped at the toggle position.
 #include <gtest/gtest.h>
 
@@ -79,7 +80,7 @@ TEST(CfmThesisTables, EveryRowReproducesPsiKappaAndNormalDisplacement) {
     const CfmResult r = model.evaluate(parameters_of(row));
     ASSERT_TRUE(r.Psi.has_value()) << row.name;
     // Psi normalisers: 0.4518 at 16 % is the thesis code's `fgoal`; 0.1032 at 40 % was
-    // back-computed in the digest from lpp-b's printed 1.002, so lpp-b itself is not independent.
+    // back-computed from lpp-b's printed 1.002 (docs/cfm.md §1.4), so lpp-b is not independent.
     expect_printed(row, r, "Psi", row.Psi, kPrintedDecimalsPsi, [](const CfmResult& x) {
       return x.Psi.value_or(0.0);
     });
@@ -116,7 +117,7 @@ TEST(CfmThesisTables, PrimaryPivotAgreesExceptTheExactMirrorTie) {
 }
 
 TEST(CfmThesisTables, ThicknessAndWidthRatiosOfTables7_7_7_10_7_13) {
-  // C_i = min over the stroke of alpha_p/alpha_i, D_equal, D_min (thesis digest §6.2, 45 rows).
+  // C_i = min over the stroke of alpha_p/alpha_i, D_equal, D_min (thesis eqs. 5.31-5.36, 45 rows).
   const CfmModel model;
   EXPECT_EQ(thesis_thickness_ratios().size(), 45u);
   for (const CfmThicknessRatios& printed : thesis_thickness_ratios()) {

@@ -1,5 +1,5 @@
 // What is checked against what: the named Howell designs (mechanisms/howell_designs.h) against the
-// numbers printed in Howell's Compliant Mechanisms §10.1 (book digest §6.1):
+// numbers printed in Howell's Compliant Mechanisms §10.1 (Table 10.1, §10.1.4-10.1.6):
 //  * worked examples of §10.1.4: k1 = 151 N mm/rad and F = 0.92 N (example 1); I = 33.86 mm^4,
 //    h = 3.18 mm and F = 1.68 N (example 2, the force rescaled from the library's K_theta = 2.65
 //    to the book's 2.6, see docs/mechanisms.md); h3 = 0.070 in, k1 = 151 N mm/rad, F = 13 N

@@ -1,7 +1,8 @@
 // What is checked against what: the chain algorithm with the shooting method of Howell §7.2.1 for
 // tip conditions other than a free end, and on chains that are more than one uniform segment:
 //   * a fixed-guided beam against the antisymmetry relation (two cantilevers of length l/2 joined
-//     at the inflection point) and the exact elliptic oracle of the book digest (theta0 = 1 rad);
+//     at the inflection point) and the exact elliptic solution (Howell eqs. 2.90-2.98,
+//     theta0 = 1 rad);
 //   * a two-segment chain with a rigid link between flexible pieces (free and guided end), and a
 //     follower force, a node load, stress-free curvature and an EI profile, against the
 //     independent SUNDIALS shooting solver (solver/shooting/, CVODES at rtol 1e-12, which
@@ -64,7 +65,7 @@ class ChainBoundary : public ::testing::TestWithParam<ChainVariant> {};
 TEST_P(ChainBoundary, GuidedBeamIsTwoAntisymmetricHalfCantilevers) {
   // Guided end (theta = 0) with transverse force P: the moment vanishes at mid-length and each
   // half is a cantilever of length l/2 with end force P, i.e. alpha2 = P (l/2)^2 / EI. Choose
-  // P = 4 * 3.0870030 so that each half has the digest's theta0 = 1 rad solution
+  // P = 4 * 3.0870030 so that each half has the exact theta0 = 1 rad solution (Howell §2.9.2)
   // (a/l = 0.73835640, b/l = 0.61037180). Then x_tip = a/l, y_tip = b/l, and the guided end's
   // reaction moment is -P x_tip / 2 (m(1) = -m(0)).
   const double P = 4.0 * 3.0870030;

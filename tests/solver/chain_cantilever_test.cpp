@@ -2,8 +2,8 @@
 // with an end load, against
 //   * linear beam theory at a small load (b = F/3, theta0 = F/2) and the exact circular arc of an
 //     end moment (Howell eqs. 2.53, 2.59, 2.64);
-//   * the exact elliptic-integral oracle table of the book digest (n = 0: theta0 = 1 rad at
-//     alpha2 = 3.0870030, theta0 = 1.40 rad at alpha2 = 8.8064153; [calc] values, 8 digits);
+//   * the exact elliptic-integral solution (Howell eqs. 2.90-2.98, n = 0: theta0 = 1 rad at
+//     alpha2 = 3.0870030, theta0 = 1.40 rad at alpha2 = 8.8064153; computed values, 8 digits);
 //   * EllipticSolver at alpha2 = 10, n = 0 (the 1e-4 requirement at N = 100);
 //   * the observed convergence order in N (Howell: 2, corrected: 3, docs/theory-chain.md) and in
 //     the number of load increments without iteration at full load (1), measured as N or the
@@ -28,7 +28,7 @@ using Options = ChainAlgorithmSolver::Options;
 struct Oracle {
   double alpha2, theta0, a, b;
 };
-// Book digest §1.5, exact n = 0 table [calc].
+// Exact n = 0 solution, Howell eqs. 2.90-2.98 (computed with mpmath, 8 digits).
 constexpr Oracle kTheta1 = {3.0870030, 1.00, 0.73835640, 0.61037180};
 constexpr Oracle kTheta14 = {8.8064153, 1.40, 0.47307789, 0.79655336};
 
@@ -96,7 +96,7 @@ TEST_P(BothVariants, MatchesEllipticSolverAtAlpha2Of10) {
 }
 
 TEST_P(BothVariants, MatchesTheOracleForHorizontalLoadComponents) {
-  // Book digest §8 item 2 [calc], theta0 = 0.6 rad: n = 1 and 2.5 compress the beam (the axial
+  // Howell eqs. 2.90-2.98 (computed), theta0 = 0.6 rad: n = 1 and 2.5 compress the beam (the axial
   // force enters the element flexibility, eq. 7.30), n = -1 pulls it.
   struct NOracle {
     double n, alpha, a, b;
@@ -118,7 +118,7 @@ INSTANTIATE_TEST_SUITE_P(Chain,
                          ::testing::Values(ChainVariant::kHowell, ChainVariant::kCorrected),
                          [](const auto& info) { return std::string(to_string(info.param)); });
 
-// Observed order log2(e_N / e_2N) for N = 25, 50, 100 at theta0 = 1 rad (the digest oracle is good
+// Observed order log2(e_N / e_2N) for N = 25, 50, 100 at theta0 = 1 rad (the exact values are good
 // to 5e-9, below the smallest error used here).
 std::vector<double> observed_orders_in_N(ChainVariant variant, const Oracle& ref) {
   std::vector<double> errors;

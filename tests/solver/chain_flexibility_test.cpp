@@ -1,5 +1,5 @@
 // What is checked against what: the chain-algorithm element flexibility (Howell eq. 7.30, factored
-// form of the digest) against (a) the numerical inverse of the reduced stiffness block of
+// form of docs/theory-chain.md) against (a) the numerical inverse of the reduced stiffness block of
 // eq. 7.29, (b) the linear cantilever compliances L^3/3EI, L^2/2EI, L/EI at zero axial load, and
 // (c) the exact cantilever Euler load pi^2 EI/(4 L^2), which the consistent geometric stiffness
 // approximates from above (D = 0 at L^2 P/EI = -2.4857).

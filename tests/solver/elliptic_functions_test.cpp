@@ -1,8 +1,7 @@
 // What is checked against what:
-// - F, E, K at Howell's worked example against the digest's oracle values (book-digest.md §8 item
-// 3:
-//   F(0.8284956, k = 0.9595496) = 0.9309487, K = 2.6879356, E = 1.0872990, E(gamma, k) =
-//   0.7450131).
+// - F, E, K at Howell's worked example (§2.9.2, eqs. 2.90-2.92; the book prints 3 digits) against
+//   values recomputed to 8 digits: F(0.8284956, k = 0.9595496) = 0.9309487, K = 2.6879356,
+//   E = 1.0872990, E(gamma, k) = 0.7450131.
 // - Legendre's relation E K' + E' K - K K' = pi/2 (DLMF 19.7.1), an identity independent of the
 //   implementation, across the modulus range including k' = 1e-8.
 // - The AGM Jacobi amplitude against GSL's gsl_sf_elljac_e (a different algorithm) where GSL is
@@ -24,9 +23,9 @@ constexpr double kPi = std::numbers::pi;
 Parameter modulus(double k) { return {k * k, (1.0 - k) * (1.0 + k)}; }
 TEST(EllipticFunctions, ReproduceTheDigestOracleValues) {
   // Howell's worked example, theta0 = 1 rad, n = 0 (eqs. 2.84-2.92): lambda = sin 1, eta = 1,
-  // modulus t = sqrt((1 + lambda)/2), amplitude gamma = asin(sqrt(1/(1 + lambda))). The digest's
-  // §8 item 3 rounds these inputs to 7 decimals, which moves K by 4e-7 (dK/dk ~ 12 here), so the
-  // exact inputs are used with the digest's [calc] values of §1.5: F(t) = 2.6879356,
+  // modulus t = sqrt((1 + lambda)/2), amplitude gamma = asin(sqrt(1/(1 + lambda))). Rounding these
+  // inputs to 7 decimals would move K by 4e-7 (dK/dk ~ 12 here), so the exact inputs are used with
+  // values recomputed to 8 digits (the book prints 2.69, 0.931, 1.09, 0.745): F(t) = 2.6879356,
   // F(gamma, t) = 0.93094866, E(t) = 1.0872990, E(gamma, t) = 0.74501313.
   const double lambda = std::sin(1.0);
   const double t = std::sqrt(0.5 * (1.0 + lambda));

@@ -1,6 +1,7 @@
 // What is checked against what:
-// - Howell's worked example and the digest's exact oracle tables (book-digest.md §1.5, §8; values
-//   recomputed there with mpmath) -> forward and inverse elliptic solves, to the printed digits.
+// - Howell's worked example (§2.9.2) and exact tables of Howell eqs. 2.90-2.98 (n = 0, and
+//   n = 1, -1, 2.5 at theta0 = 0.6 rad; values computed with mpmath) -> forward and inverse
+//   elliptic solves, to the tabulated digits.
 // - Closed form of the end-moment beam (Howell eqs. 2.53, 2.59, 2.64), including mu = 2 pi.
 // - Small-load linear theory: b/l -> alpha2/3 with error O(alpha2^3), 1 - a/l -> alpha2^2/15.
 // - An independent RK4 integration of the elastica IVP started with the solver's root moment
@@ -27,7 +28,7 @@ namespace flexure {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-// The digest's oracle values carry 8 significant digits: half a unit in the last place.
+// The reference values carry 8 significant digits: half a unit in the last place.
 constexpr double kOracleRelTol = 6e-8;
 // Agreement of the closed form with itself (forward vs inverse, statics): round-off level.
 constexpr double kSelfConsistency = 1e-12;
@@ -40,7 +41,7 @@ void expect_rel(double computed, double reference, double tol, const char* what)
 
 TEST(EllipticSolver, ReproducesHowellWorkedExampleFromTipAngle) {
   // Howell §2.9.2 example: theta0 = 1 rad, n = 0 -> alpha = 1.7569869, a/l = 0.7383564,
-  // b/l = 0.6103718 (digest §1.5, [calc]).
+  // b/l = 0.6103718 (eqs. 2.90-2.98 recomputed; the book prints alpha = 1.76, a = 74, b = 61 mm).
   const EllipticSolver solver;
   const EllipticResult r = solver.solve_for_tip_angle(0.0, 1.0);
   ASSERT_TRUE(r.converged()) << r.message;
@@ -53,7 +54,7 @@ TEST(EllipticSolver, ReproducesHowellWorkedExampleFromTipAngle) {
 }
 
 TEST(EllipticSolver, ReproducesExactOracleTableForVerticalLoad) {
-  // Digest §1.5 "Extra oracle table, n = 0 [calc]".
+  // Exact n = 0 table: Howell eqs. 2.90-2.98 evaluated with mpmath.
   struct Row {
     double theta0, alpha2, a, b;
   };
@@ -78,7 +79,8 @@ TEST(EllipticSolver, ReproducesExactOracleTableForVerticalLoad) {
 }
 
 TEST(EllipticSolver, ReproducesOracleForForceAtAnAngle) {
-  // Digest §8 item 2: theta0 = 0.6 rad for n = 1, -1, 2.5 (Howell's corrected phi1 = atan2(1,-n)).
+  // Howell eqs. 2.90-2.98 at theta0 = 0.6 rad, n = 1, -1, 2.5, with phi1 = atan2(1, -n)
+  // (docs/errata.md, eq. 2.87).
   // Printed to 7 decimals: half a unit in the last place is 5e-8.
   struct Row {
     double n, alpha, a, b;

@@ -1,7 +1,7 @@
 // What is checked against what: the shooting solver (CVODES + sensitivity Newton) on a uniform
 // cantilever against closed forms -- the pure end moment circle (Howell eqs. 2.59, 2.64), the
 // small-load linear limit b = alpha^2/3 (Howell eq. 2.13 nondimensional) and its convergence rate,
-// and Howell's elliptic-integral table for n = 0 (book digest section 1.5, values recomputed with
+// and the exact n = 0 table of Howell's elliptic integrals (eqs. 2.90-2.98, values computed with
 // mpmath to 8 digits). Also a stress-free curved beam (kappa0) against its circular arc.
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@ namespace {
 
 // CVODES runs at rtol 1e-12; the tip residual is driven below 1e-10; closed forms are exact.
 constexpr double kClosedFormTolerance = 1e-10;
-// The digest's table is printed to 8 significant digits: half a unit in the last place.
+// The n = 0 table has 8 significant digits: half a unit in the last place.
 constexpr double kTableTolerance = 6e-8;
 
 TEST(ShootingClosedForm, PureEndMomentIsACircularArc) {
@@ -64,7 +64,7 @@ struct HowellRow {
 };
 
 TEST(ShootingClosedForm, MatchesHowellTableForVerticalEndLoad) {
-  // Book digest section 1.5, "Extra oracle table, n = 0" (elliptic integrals, eqs. 2.90-2.98).
+  // Exact n = 0 table: Howell eqs. 2.90-2.98 evaluated with mpmath at theta0 = 0.25 ... 1.40 rad.
   const HowellRow rows[] = {
       {0.25, 0.51169274, 0.98336262, 0.16572770},
       {0.50, 1.0996750, 0.93377750, 0.32590739},
