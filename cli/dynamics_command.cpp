@@ -1,5 +1,5 @@
 // `flexure dynamics`: frequency sweep of the inverse dynamics of a modified constant-force slider
-// mechanism (Ugwuoke & Abolarin, seed 004; docs/dynamics.md).
+// mechanism (Ugwuoke & Abolarin, the dynamics paper; docs/dynamics.md).
 //
 //   flexure dynamics --mechanism NAME --omega START:STOP:COUNT --out FILE.h5
 //                    [--stroke-percent 40] [--preload-percent 1] [--samples 1024]

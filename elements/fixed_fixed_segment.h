@@ -1,6 +1,6 @@
 #pragma once
-// Fixed-fixed segment under a combined tip force and moment, Howell §5.7 simplified model (L3861,
-// App. E.8): the fixed-guided layout (pivots (1-gamma)l/2 from each end, middle link gamma*l, a
+// Fixed-fixed segment under a combined tip force and moment, Howell §5.7 simplified model
+// (App. E.8): the fixed-guided layout (pivots (1-gamma)l/2 from each end, middle link gamma*l, a
 // spring K = 2 gamma K_theta EI/l at each pivot) but with the end angle theta0 free. It has two
 // degrees of freedom (Theta, theta0); as a PrbmElement the end angle is prescribed (theta0 =
 // end_angle), which makes it the fixed-guided model for end_angle = 0. solve_free_end() solves both

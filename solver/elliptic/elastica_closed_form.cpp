@@ -60,7 +60,7 @@ TipState tip_state_from_reduced_angle(const PendulumProblem& problem, int windin
   tip.half_sin = parity * std::cos(0.5 * tau);
   tip.half_cos = -parity * std::sin(0.5 * tau);
   // (H + F)/2 = mu^2/4 + F sin^2(chi1/2) and (F - H)/2 = F cos^2(chi1/2) - mu^2/4: the sign of the
-  // second decides the family (elastica-general.md, "Pendulum form").
+  // second decides the family (docs/theory-elliptic.md).
   tip.h_plus = 0.25 * mu * mu + F * tip.half_sin * tip.half_sin;
   tip.h_minus = F * tip.half_cos * tip.half_cos - 0.25 * mu * mu;
   return tip;
@@ -202,7 +202,7 @@ ShapePoint ShapeEvaluator::at(double s) const {
   double sin_integral = 0.0;   // J(s) = int_0^s sin(chi) ds
   if (p_.family == ElasticaFamily::kInflectional) {
     const double kk = std::sqrt(p_.modulus2);
-    // int k^2 sn^2 du = u - E(u); int 2k sn dn du = -2k cn(u)  (elastica-general.md, family A)
+    // int k^2 sn^2 du = u - E(u); int 2k sn dn du = -2k cn(u)  (docs/theory-elliptic.md, family A)
     sin2_integral = p_.modulus2 * (d - d_root_) / span_;
     sin_integral = 4.0 * kk * std::sin(0.5 * (phi + phi0)) * std::sin(0.5 * (phi - phi0)) / span_;
     chi = 2.0 * kPi * p_.winding + 2.0 * std::atan2(kk * std::sin(phi), delta_amplitude(phi, k_));

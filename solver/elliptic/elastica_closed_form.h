@@ -1,5 +1,5 @@
 #pragma once
-// Closed-form evaluation of the planar elastica as a pendulum (elastica-general.md).
+// Closed-form evaluation of the planar elastica as a pendulum (docs/theory-elliptic.md).
 //
 // Normalised problem: force F >= 0 at angle psi in [0, pi] (the caller mirrors problems with
 // Fy < 0), end moment mu. With chi = theta - psi + pi the equilibrium equation theta'' =

@@ -4,7 +4,7 @@
 // Every function takes the parameter m = k^2 together with its complement mc = 1 - m, computed by
 // the caller from quantities that keep full relative precision. Near the separatrix of the elastica
 // (m -> 1) the complement is 1e-8 or smaller; forming it as 1 - m would lose half the digits
-// (elastica-general.md, "Limits that need their own code path"). The integrals use Carlson's
+// (docs/theory-elliptic.md). The integrals use Carlson's
 // symmetric forms from GSL (gsl_sf_ellint_RF / RD), which accept the complement directly:
 //   F(phi|m) = sin(phi) RF(cos^2 phi, 1 - m sin^2 phi, 1)                      (DLMF 19.25.5)
 //   F(phi|m) - E(phi|m) = (m/3) sin^3(phi) RD(cos^2 phi, 1 - m sin^2 phi, 1)   (DLMF 19.25.9)

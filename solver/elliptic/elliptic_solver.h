@@ -2,7 +2,7 @@
 // Exact large-deflection solution of an initially straight cantilever by elliptic integrals.
 //
 // Theory: docs/theory-elliptic.md. The elastica theta'' = F sin(theta - psi) (force F at angle psi,
-// end moment mu) is a pendulum in chi = theta - psi + pi (elastica-general.md). Two families:
+// end moment mu) is a pendulum in chi = theta - psi + pi (docs/theory-elliptic.md). Two families:
 // inflectional (|H| < F, modulus k, Jacobi sn/cn) and non-inflectional (H > F, parameter m).
 // Howell's eqs. 2.89-2.98 are the special case mu = 0, theta0 below the force angle.
 //

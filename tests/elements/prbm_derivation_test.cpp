@@ -33,7 +33,7 @@ constexpr double kCThetaTolerance = 0.01;
 constexpr double kKThetaTolerance = 0.01;
 constexpr double kThetaMaxToleranceDeg = 1.0;
 
-TEST(PrbErrorFunction, MatchesDigestOracleForVerticalLoad) {
+TEST(PrbErrorFunction, MatchesIndependentValuesForVerticalLoad) {
   // n = 0 exact tips (eqs. 2.90-2.98, 8 digits) and Theta (eq. 5.42) for gamma = 0.8517 (6 digits).
   struct Row {
     double theta0, a, b, Theta;

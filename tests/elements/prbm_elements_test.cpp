@@ -1,7 +1,7 @@
 // What is checked against what (no exact solver needed here):
-//  * small-length flexural pivot: Howell's two worked examples (§5.1, L3090-3151) at their printed
+//  * small-length flexural pivot: Howell's two worked examples (§5.1) at their printed
 //    precision, with values recomputed to 6 digits for the iterative one;
-//  * fixed-pinned PRBM side of the worked example (§5.2, L3411-3491), n = 0 and n = 1, at printed
+//  * fixed-pinned PRBM side of the worked example (§5.2), n = 0 and n = 1, at printed
 //    precision (the exact elliptic side is in prbm_examples_test.cpp); Howell's average constants
 //    (§5.2) that the mechanisms use; the validity-limit checks of ValidityLimits;
 //  * curve fits eqs. 5.48 and 5.60-5.62 against values recomputed from their printed
@@ -171,7 +171,7 @@ TEST(ValidityLimits, ContainsChecksBothLimitsAndContainsForceOnlyTheForceLimit) 
 }
 
 // --- Curve fits (eqs. 5.48, 5.60-5.62) against values recomputed from their coefficients -------
-TEST(CurveFits, MatchDigestValuesAndPublishedDiscontinuities) {
+TEST(CurveFits, MatchRecomputedValuesAndPublishedDiscontinuities) {
   constexpr double kFourDigits = 5e-5;  // recomputed gamma is given to 4 decimals
   constexpr double kFiveDigits = 5e-6;  // and K_theta to 5
   EXPECT_NEAR(gamma_curve_fit(0.0), 0.8521, kFourDigits);
@@ -265,7 +265,7 @@ TEST(FixedGuidedSegment, SmallDeflectionStiffnessIsNearLinearTheory) {
 }
 
 TEST(FixedGuidedSegment, BookEndEffectorSpringConstant) {
-  // §5.10 linear-motion end effector (L4307): Delrin E = 2.9 GPa, l = 22 mm, b = 7 mm, h = 0.8 mm,
+  // §5.10 linear-motion end effector: Delrin E = 2.9 GPa, l = 22 mm, b = 7 mm, h = 0.8 mm,
   // gamma = 0.85, K_theta = 2.65: I = 2.99e-13 m^4, K = 2 gamma K_theta EI/l = 0.18 N m/rad.
   FixedPinnedConstants c = FixedPinnedConstants::from_table(0.0);
   c.gamma = 0.85;
@@ -279,7 +279,7 @@ TEST(FixedGuidedSegment, BookEndEffectorSpringConstant) {
 }
 
 TEST(SmallLengthFlexuralPivot, BookBistableSwitchSpringConstant) {
-  // §5.10 bistable switch (L4294): polypropylene E = 200,000 psi, l = 0.13 in, 0.25 x 0.08 in:
+  // §5.10 bistable switch: polypropylene E = 200,000 psi, l = 0.13 in, 0.25 x 0.08 in:
   // I = 1.07e-5 in^4, K = EI/l = 16.4 in lb/rad.
   const SmallLengthFlexuralPivot pivot(10.0);
   const RectangularSection section{0.25, 0.08, 2.0e5};

@@ -1,4 +1,4 @@
-// What is checked against what: Howell's fixed-pinned worked example (§5.2, L3411-3491; steel,
+// What is checked against what: Howell's fixed-pinned worked example (§5.2; steel,
 // l = 20 in, 1.25 x 1/32 in, b = 10 in) with the exact elliptic answer beside the PRBM answer.
 //  * the elliptic solver's inverse problem (b/l = 0.5) against independently computed values of
 //    eqs. 2.90-2.98 (theta0, alpha2, P, a to 6 digits) and the book's "elliptic: F = 0.49 lb,

@@ -124,7 +124,7 @@ TEST(CfmSliderCrank, KinematicsSatisfyLawOfCosinesAndLoopClosure) {
   }
 }
 
-TEST(CfmToggle, ClampValuesOfTheThesisDigest) {
+TEST(CfmToggle, ClampValuesOfTheThesis) {
   EXPECT_NEAR(toggle_stroke_percent(0.4323), 37.04, kToggleRounding);  // original 2A-b
   EXPECT_NEAR(toggle_stroke_percent(0.3000), 26.62, kToggleRounding);  // ssp-b94I
   EXPECT_EQ(toggle_stroke_percent(1.0), 100.0);

@@ -21,7 +21,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 Parameter modulus(double k) { return {k * k, (1.0 - k) * (1.0 + k)}; }
-TEST(EllipticFunctions, ReproduceTheDigestOracleValues) {
+TEST(EllipticFunctions, ReproduceIndependentlyComputedValues) {
   // Howell's worked example, theta0 = 1 rad, n = 0 (eqs. 2.84-2.92): lambda = sin 1, eta = 1,
   // modulus t = sqrt((1 + lambda)/2), amplitude gamma = asin(sqrt(1/(1 + lambda))). Rounding these
   // inputs to 7 decimals would move K by 4e-7 (dK/dk ~ 12 here), so the exact inputs are used with

@@ -283,7 +283,7 @@ TEST(EllipticSolver, ClosedFormPathsAgreeNearMomentFreeLoads) {
 
 TEST(EllipticSolver, ReturnsProportionalLoadingBranchAmongSeveralEquilibria) {
   // n = 1, alpha2 = 5 (compression past buckling): the tip-angle residual has several roots
-  // (elastica-general.md). The solver must return the root reached by loading from zero, found
+  // (docs/theory-elliptic.md). The solver must return the root reached by loading from zero, found
   // here independently by stepping the load up in small increments with the general path.
   const EllipticSolver solver;
   const EndLoad load = EndLoad::howell(1.0, 5.0);
