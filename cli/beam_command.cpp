@@ -80,7 +80,7 @@ BeamProblem make_problem(const BeamArgs& args) {
   require_in_range(args.increments, "--increments (load increments)", 1, 1'000'000);
   problem.elements = args.elements;
   problem.increments = args.increments;
-  problem.chain_variant = args.chain_variant;
+  problem.chain_variant = chain_variant_from_string(args.chain_variant);
   const bool any_given = *args.alpha2_option || *args.theta0_option || *args.b_over_l_option;
   if (*args.chain_option) {
     if (any_given || args.load_ratio_n != 0.0 || args.mu != 0.0 || args.follower != 0.0 ||
@@ -123,7 +123,7 @@ BeamProblem make_problem(const BeamArgs& args) {
 void print_report(const BeamProblem& problem, const BeamSolution& solution) {
   const double degrees = 180.0 / std::numbers::pi;
   fmt::print("Cantilever with end load, method {} (n = {:g}, mu = {:g}, {} end)\n",
-             solution.method,
+             to_string(solution.method),
              problem.load_ratio_n,
              problem.mu,
              to_string(problem.boundary));
@@ -157,7 +157,7 @@ void print_report(const BeamProblem& problem, const BeamSolution& solution) {
 
 Json to_json(const BeamProblem& problem, const BeamSolution& solution) {
   Json out;
-  out["method"] = solution.method;
+  out["method"] = to_string(solution.method);
   out["method_reason"] = solution.method_reason;
   if (problem.chain) {
     // Howell's parameters of the chain's tip load: alpha2 = Fy, n = -Fx/Fy, mu = M.
@@ -189,7 +189,7 @@ Json to_json(const BeamProblem& problem, const BeamSolution& solution) {
   out["reactions"] = Json{{"Fx", solution.reactions.Fx + 0.0},
                           {"Fy", solution.reactions.Fy + 0.0},
                           {"M", solution.reactions.M + 0.0}};
-  if (solution.method == "chain") {
+  if (solution.method == BeamMethod::kChain) {
     out["elements"] = solution.elements;
     out["increments"] = solution.increments;
   }
@@ -205,11 +205,11 @@ Json to_json(const BeamProblem& problem, const BeamSolution& solution) {
 
 void run_beam(const BeamArgs& args) {
   const BeamProblem problem = make_problem(args);
-  const BeamSolution solution = solve_beam(args.method, problem);
+  const BeamSolution solution = solve_beam(beam_method_from_string(args.method), problem);
   if (!solution.converged()) {
     throw NoConvergence(
         fmt::format("method '{}' found no converged solution after {} iterations: {}. {}",
-                    solution.method,
+                    to_string(solution.method),
                     solution.iterations,
                     solution.message.empty() ? "no message" : solution.message,
                     other_methods_hint(solution.method)));
@@ -220,7 +220,7 @@ void run_beam(const BeamArgs& args) {
   require_finite_result(solution.tip.theta0, "theta0");
   if (problem.shape_points > 0 && static_cast<int>(solution.shape.size()) != problem.shape_points) {
     throw NoConvergence(fmt::format("method '{}' returned {} shape points instead of {}",
-                                    solution.method,
+                                    to_string(solution.method),
                                     solution.shape.size(),
                                     problem.shape_points));
   }

@@ -53,8 +53,8 @@ void run_sweep_beam(const SweepBeamArgs& args) {
   require_in_range(args.threads, "--threads", 1, 64);
   const Range range = parse_range(args.alpha2_range, "--alpha2", kMaxSweepCount);
   // Fails (exit 2) for a method not in this build, before any file is touched.
-  const double tolerance = beam_method_tolerance(args.method);
-  const std::string method = resolve_beam_method(args.method);
+  const BeamMethod method = resolve_beam_method(beam_method_from_string(args.method));
+  const double tolerance = beam_method_tolerance(method);
 
   // Check and open the output first: an unwritable path is reported before minutes of solving.
   io::check_output_path(args.out);
@@ -90,7 +90,9 @@ void run_sweep_beam(const SweepBeamArgs& args) {
   const io::BeamSweepTable table = io::run_beam_sweep(alpha2, solve_point, options);
 
   io::write_beam_sweep(
-      file->root(), table, io::BeamSweepMetadata{method, args.load_ratio_n, args.mu, tolerance});
+      file->root(),
+      table,
+      io::BeamSweepMetadata{to_string(method), args.load_ratio_n, args.mu, tolerance});
   file->commit();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
@@ -107,7 +109,7 @@ void run_sweep_beam(const SweepBeamArgs& args) {
                range.count,
                range.start,
                range.stop,
-               method,
+               to_string(method),
                args.load_ratio_n,
                args.mu,
                args.out);

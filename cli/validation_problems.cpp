@@ -164,25 +164,28 @@ std::vector<ReferenceProblem> reference_problems() {
 
 std::vector<ValidationMethod> validation_methods() {
   std::vector<ValidationMethod> methods;
-  methods.push_back({"elliptic",
-                     [](const ReferenceProblem&) { return true; },
-                     [](const BeamProblem& problem) { return solve_beam("elliptic", problem); },
-                     0.0,
-                     "exact"});
+  methods.push_back(
+      {"elliptic",
+       [](const ReferenceProblem&) { return true; },
+       [](const BeamProblem& problem) { return solve_beam(BeamMethod::kElliptic, problem); },
+       0.0,
+       "exact"});
   // CVODES at rtol 1e-12: agrees with the elliptic solution to 1e-9 over a 175-case grid
   // (tests/solver/shooting_elliptic_grid_test.cpp).
-  methods.push_back({"shooting",
-                     [](const ReferenceProblem&) { return true; },
-                     [](const BeamProblem& problem) { return solve_beam("shooting", problem); },
-                     1e-8,
-                     "shooting vs elliptic grid test, 1e-9"});
+  methods.push_back(
+      {"shooting",
+       [](const ReferenceProblem&) { return true; },
+       [](const BeamProblem& problem) { return solve_beam(BeamMethod::kShooting, problem); },
+       1e-8,
+       "shooting vs elliptic grid test, 1e-9"});
   // Chain algorithm, corrected variant, N = 100: third-order discretisation error, 8.5e-7 at
   // alpha2 = 10 (docs/theory-chain.md); 1e-5 relative covers every reference load here.
-  methods.push_back({"chain",
-                     [](const ReferenceProblem& p) { return !p.exact_methods_only; },
-                     [](const BeamProblem& problem) { return solve_beam("chain", problem); },
-                     1e-5,
-                     "docs/theory-chain.md convergence table, N = 100"});
+  methods.push_back(
+      {"chain",
+       [](const ReferenceProblem& p) { return !p.exact_methods_only; },
+       [](const BeamProblem& problem) { return solve_beam(BeamMethod::kChain, problem); },
+       1e-5,
+       "docs/theory-chain.md convergence table, N = 100"});
   return methods;
 }
 

@@ -5,9 +5,7 @@
 #include <algorithm>
 #include <exception>
 
-#include "flexure/elements/end_moment_segment.h"
-#include "flexure/elements/fixed_guided_segment.h"
-#include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/elements/prbm_cantilever.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/common/errors.h"
@@ -23,30 +21,18 @@ SegmentChain make_chain(const BenchProblem& problem, const LoadPoint& load) {
   return chain;
 }
 
+// The cantilever's PRBM element for the end and the load (elements/prbm_cantilever.h), as
+// `flexure beam --method prbm` and `--method auto` use it.
 PointSolution solve_prbm(const BenchProblem& problem, const LoadPoint& load) {
+  const PrbmCantileverSolution eq =
+      solve_prbm_cantilever(problem.boundary, load.load_ratio_n, load.alpha2, load.mu);
   PointSolution out;
-  const EndLoad end_load = EndLoad::howell(load.load_ratio_n, load.alpha2, load.mu);
-  PrbEquilibrium eq;
-  ValidityLimits limits;
-  if (problem.boundary == EndCondition::kGuided) {
-    const FixedGuidedSegment element;
-    eq = element.solve(end_load);
-    limits = element.limits();
-  } else if (load.alpha2 == 0.0) {
-    const EndMomentSegment element;
-    eq = element.solve(end_load);
-    limits = element.limits();
-  } else {
-    const FixedPinnedSegment element(FixedPinnedConstants::from_table(load.load_ratio_n));
-    eq = element.solve(end_load);
-    limits = element.limits();
-  }
   out.status = eq.converged() ? kStatusConverged : kStatusNotConverged;
   out.tip = eq.tip;
   out.iterations = eq.iterations;
   out.message = eq.converged() ? "" : eq.message;
   // Howell eq. 5.47 (position) and eq. 5.63 (force): the constants are trusted below both.
-  out.inside_validity = limits.contains(eq.Theta) ? 1 : 0;
+  out.inside_validity = eq.inside_validity ? 1 : 0;
   return out;
 }
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "flexure/benchmarks/studies/data_files.h"
-#include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/elements/prbm_cantilever.h"
 #include "flexure/solver/common/csv_table.h"
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/common/errors.h"
@@ -105,10 +105,10 @@ double prbm_measured_error(double load_ratio_n, double alpha2) {
 AutoMethodChoice choose_beam_method(const AutoMethodRequest& r) {
   if (!std::isfinite(r.tolerance) || r.tolerance <= 0.0) {
     throw InvalidInput(
-        fmt::format("--tol must be a finite relative error > 0 (got {})", r.tolerance));
+        fmt::format("the tolerance must be a finite relative error > 0 (got {})", r.tolerance));
   }
   if (!r.plain_cantilever) {
-    return {"shooting",
+    return {BeamMethod::kShooting,
             fmt::format("not a free uniform cantilever with dead loads: the shooting solver "
                         "(rtol 1e-12, measured error < {:.0e}) is the only exact method here",
                         kShootingMeasuredError)};
@@ -121,15 +121,14 @@ AutoMethodChoice choose_beam_method(const AutoMethodRequest& r) {
   } else if (r.load_ratio_n < -5.0 || r.load_ratio_n > 10.0) {
     why_not_prbm = fmt::format("n = {:g} is outside Table 5.1 (-5 <= n <= 10)", r.load_ratio_n);
   } else {
-    const FixedPinnedSegment element(FixedPinnedConstants::from_table(r.load_ratio_n));
-    const PrbEquilibrium eq = element.solve(EndLoad::howell(r.load_ratio_n, r.alpha2, 0.0));
-    const ValidityLimits limits = element.limits();
-    const double theta_max = limits.theta_max();
+    const PrbmCantileverSolution eq =
+        solve_prbm_cantilever(EndCondition::kFree, r.load_ratio_n, r.alpha2, 0.0);
+    const double theta_max = eq.limits.theta_max();
     const double measured = prbm_measured_error(r.load_ratio_n, r.alpha2);
     constexpr double kDeg = 180.0 / 3.14159265358979323846;
     if (!eq.converged()) {
       why_not_prbm = "the PRBM has no equilibrium at this load";
-    } else if (!limits.contains(eq.Theta)) {
+    } else if (!eq.inside_validity) {
       why_not_prbm = fmt::format(
           "the PRB angle {:.1f} deg exceeds the validity limit Theta_max = {:.1f} deg (Howell "
           "eqs. 5.47, 5.63)",
@@ -146,23 +145,23 @@ AutoMethodChoice choose_beam_method(const AutoMethodRequest& r) {
           map.alpha2.back());
     } else if (measured > r.tolerance) {
       why_not_prbm = fmt::format(
-          "the PRBM is inside its validity limits but its measured error {:.2g} exceeds --tol "
-          "{:.2g}",
+          "the PRBM is inside its validity limits but its measured error {:.2g} exceeds the "
+          "tolerance {:.2g}",
           measured,
           r.tolerance);
     } else {
-      return {"prbm",
-              fmt::format("PRBM fixed-pinned segment ({}): Theta = {:.1f} deg is inside "
-                          "Theta_max = {:.1f} deg and its measured error {:.2g} is within --tol "
-                          "{:.2g}",
-                          element.constants().source,
+      return {BeamMethod::kPrbm,
+              fmt::format("PRBM {} ({}): Theta = {:.1f} deg is inside Theta_max = {:.1f} deg and "
+                          "its measured error {:.2g} is within the tolerance {:.2g}",
+                          eq.element,
+                          eq.constants_source,
                           std::fabs(eq.Theta) * kDeg,
                           theta_max * kDeg,
                           measured,
                           r.tolerance)};
     }
   }
-  return {"elliptic",
+  return {BeamMethod::kElliptic,
           fmt::format("{}; the exact elliptic solution (error ~{:.0e}) is the next cheapest",
                       why_not_prbm,
                       kEllipticError)};

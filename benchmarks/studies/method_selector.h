@@ -1,5 +1,5 @@
 #pragma once
-// `--method auto`: the cheapest model whose error for this load is within the tolerance
+// Method `auto`: the cheapest model whose error for this load is within the tolerance
 // ("model no more than a scene needs": the cheapest model that meets the tolerance).
 //
 // Order of preference (cheapest model first): the PRBM fixed-pinned segment (one pivot, one
@@ -14,6 +14,8 @@
 // shooting solver (rtol 1e-12; measured error below 1e-9) every other chain and end condition.
 #include <string>
 
+#include "flexure/benchmarks/studies/beam_method.h"
+
 namespace flexure::bench {
 
 struct AutoMethodRequest {
@@ -25,8 +27,8 @@ struct AutoMethodRequest {
 };
 
 struct AutoMethodChoice {
-  std::string method;  // "prbm", "elliptic" or "shooting"
-  std::string reason;  // one sentence: why this method and not a cheaper one
+  BeamMethod method = BeamMethod::kElliptic;  // kPrbm, kElliptic or kShooting
+  std::string reason;                         // one sentence: why this method and not a cheaper one
 };
 
 // Throws InvalidInput unless the tolerance is finite and > 0.

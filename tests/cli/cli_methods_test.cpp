@@ -66,6 +66,22 @@ TEST(CliMethods, GuidedBeamMatchesTwoHalfCantilevers) {
   }
 }
 
+TEST(CliMethods, PrbmSolvesTheGuidedBeamAsBenchDoes) {
+  // One PRBM dispatch for beam, bench and auto (elements/prbm_cantilever.h): the fixed-guided
+  // segment of Howell §5.3 is two fixed-pinned halves, so its tip under alpha2 = 8 is the
+  // fixed-pinned PRBM's tip under alpha2 = 2.
+  const Json guided = run_json("beam --boundary guided --alpha2 8 --method prbm");
+  const Json half = run_json("beam --alpha2 2 --method prbm");
+  EXPECT_EQ(guided["method"], "prbm");
+  EXPECT_NE(guided["branch"].get<std::string>().find("fixed-guided"), std::string::npos);
+  EXPECT_NEAR(guided["a_over_l"].get<double>(), half["a_over_l"].get<double>(), 1e-10);
+  EXPECT_NEAR(guided["b_over_l"].get<double>(), half["b_over_l"].get<double>(), 1e-10);
+  EXPECT_EQ(guided["theta0"].get<double>(), 0.0);
+  // Ends no PRBM element models are refused with exit 2.
+  EXPECT_EQ(run_flexure("beam --boundary pinned --alpha2 0 --tip-x 0.9 --method prbm").exit_code,
+            2);
+}
+
 TEST(CliMethods, AutoPicksEllipticForTheFreeCantileverAndShootingOtherwise) {
   EXPECT_EQ(run_json("beam --alpha2 2")["method"], "elliptic");
   EXPECT_EQ(run_json("beam --alpha2 2 --boundary guided")["method"], "shooting");

@@ -36,11 +36,11 @@ TEST(AutoMethod, PicksPrbmInsideItsValidityRangeForALooseTolerance) {
   // n = 0, alpha2 = 3: Theta = 45 deg < min(Theta_max(gamma), Theta_max(K_theta)) = 58.5 deg
   // (Table 5.1, n = 0).
   const AutoMethodChoice choice = choose_beam_method({0.0, 3.0, 0.0, true, kLooseTolerance});
-  EXPECT_EQ(choice.method, "prbm") << choice.reason;
+  EXPECT_EQ(choice.method, BeamMethod::kPrbm) << choice.reason;
   EXPECT_NE(choice.reason.find("Theta_max"), std::string::npos) << choice.reason;
   EXPECT_LE(prbm_error_against_elliptic(0.0, 3.0), kLooseTolerance);
   // n = -1 (tension), alpha2 = 2.
-  EXPECT_EQ(choose_beam_method({-1.0, 2.0, 0.0, true, kLooseTolerance}).method, "prbm");
+  EXPECT_EQ(choose_beam_method({-1.0, 2.0, 0.0, true, kLooseTolerance}).method, BeamMethod::kPrbm);
   EXPECT_LE(prbm_error_against_elliptic(-1.0, 2.0), kLooseTolerance);
 }
 
@@ -68,18 +68,18 @@ TEST(AutoMethod, MapNeverUnderstatesTheMeasuredPrbmError) {
 TEST(AutoMethod, PicksAnExactMethodOtherwise) {
   // The default tolerance: no PRBM is that accurate.
   AutoMethodChoice c = choose_beam_method({0.0, 3.0, 0.0, true, 1e-6});
-  EXPECT_EQ(c.method, "elliptic");
-  EXPECT_NE(c.reason.find("exceeds --tol"), std::string::npos) << c.reason;
+  EXPECT_EQ(c.method, BeamMethod::kElliptic);
+  EXPECT_NE(c.reason.find("exceeds the tolerance"), std::string::npos) << c.reason;
   // Outside the validity limits: alpha2 = 15 at n = 0 turns the PRB link to 76 deg > 58.5 deg.
   c = choose_beam_method({0.0, 15.0, 0.0, true, 0.5});
-  EXPECT_EQ(c.method, "elliptic");
+  EXPECT_EQ(c.method, BeamMethod::kElliptic);
   EXPECT_NE(c.reason.find("validity limit"), std::string::npos) << c.reason;
   // A tip moment: the fixed-pinned element has none.
-  EXPECT_EQ(choose_beam_method({0.0, 1.0, 0.5, true, 0.5}).method, "elliptic");
+  EXPECT_EQ(choose_beam_method({0.0, 1.0, 0.5, true, 0.5}).method, BeamMethod::kElliptic);
   // Not a free cantilever (guided end, follower force, chain file): shooting.
-  EXPECT_EQ(choose_beam_method({0.0, 1.0, 0.0, false, 0.5}).method, "shooting");
+  EXPECT_EQ(choose_beam_method({0.0, 1.0, 0.0, false, 0.5}).method, BeamMethod::kShooting);
   // An inverse problem (alpha2 not given).
-  EXPECT_EQ(choose_beam_method({0.0, std::nan(""), 0.0, true, 0.5}).method, "elliptic");
+  EXPECT_EQ(choose_beam_method({0.0, std::nan(""), 0.0, true, 0.5}).method, BeamMethod::kElliptic);
 }
 
 TEST(AutoMethod, RejectsANonPositiveTolerance) {

@@ -37,7 +37,7 @@ TEST(MethodAutoErrorMap, ReasonNamesTheMeasuredRange) {
   request.alpha2 = 0.6;
   request.tolerance = 1.0;
   const AutoMethodChoice choice = choose_beam_method(request);
-  EXPECT_EQ(choice.method, "elliptic");
+  EXPECT_EQ(choice.method, BeamMethod::kElliptic);
   EXPECT_NE(choice.reason.find(
                 "no measured PRBM accuracy at this load (map covers -2 <= n <= 3, 0.5 <= alpha2 "
                 "<= 20)"),

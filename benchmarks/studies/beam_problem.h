@@ -1,0 +1,104 @@
+#pragma once
+// A beam problem solved by any method: the cantilever of Howell ch. 2 with an end load (or any
+// segment chain and end condition), forward (the load is given) or inverse (the tip angle theta0
+// or the deflection b/l is given and the load alpha2 is found), with the method named or chosen by
+// `auto`. This is what `flexure beam`, `flexure sweep beam` and `flexure validate` call.
+//
+// To add a method: a value of BeamMethod (beam_method.h), a branch in solve_beam()
+// (beam_problem.cpp) that fills a BeamSolution from that solver's result, and, if `auto` should
+// consider it, a rule in method_selector.cpp (docs/architecture.md, "Adding a beam method").
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "flexure/benchmarks/studies/beam_method.h"
+#include "flexure/solver/chain/chain_algorithm_solver.h"
+#include "flexure/solver/chain_model/segment_chain.h"
+#include "flexure/solver/common/end_load.h"
+#include "flexure/solver/common/status.h"
+
+namespace flexure {
+
+// What the user fixed: the load alpha2, the tip angle theta0 or the tip deflection b/l, with
+// Howell's load ratio n and end moment mu held fixed (Howell eqs. 2.67, 2.83).
+struct BeamProblem {
+  enum class Given { kAlpha2, kTheta0, kBOverL };
+  Given given = Given::kAlpha2;
+  double value = 0.0;         // alpha2, theta0 [rad] or b/l, as selected by `given`
+  double load_ratio_n = 0.0;  // n > 0 compressive
+  double mu = 0.0;            // end moment M l/EI
+  int shape_points = 0;       // 0: no shape; otherwise >= 2 points from s = 0 to s = 1
+  // The far end and the numerical methods (shooting, chain).
+  EndCondition boundary = EndCondition::kFree;
+  TipPrescription prescribed;  // unset = the stress-free tip value (e.g. guided: theta = 0)
+  double follower = 0.0;       // follower tip force F l^2/EI along the tip normal
+  int elements = 100;          // chain algorithm: N elements
+  int increments = 10;         // chain algorithm: load increments
+  ChainVariant chain_variant = ChainVariant::kCorrected;  // chain algorithm
+  std::optional<SegmentChain> chain;  // a chain of segments (overrides the loads above)
+  // `auto` picks the cheapest method whose relative error is within this (method_selector.h).
+  double tolerance = 1e-6;
+
+  // The segment chain this problem describes (the given chain, or Howell's uniform cantilever with
+  // Fx = -n alpha2, Fy = alpha2, M = mu, the follower force and the end condition). Throws
+  // InvalidInput when a prescribed tip coordinate has a load on it.
+  SegmentChain to_chain(double alpha2) const;
+  bool is_plain_cantilever() const {
+    return !chain && boundary == EndCondition::kFree && follower == 0.0;
+  }
+};
+
+// Loads the clamp exerts on the beam (root frame), Fx, Fy, M (nondimensional).
+struct Reactions {
+  double Fx = 0.0;
+  double Fy = 0.0;
+  double M = 0.0;
+};
+
+// A method-independent summary of one solve (the keys of `flexure beam --json`).
+struct BeamSolution : SolveStatus {
+  BeamMethod method = BeamMethod::kElliptic;  // the method actually used (what auto resolved to)
+  std::string method_reason;                  // why that method: requested, or auto's reasoning
+  double alpha2 = 0.0;
+  TipPose tip;
+  std::string branch;  // the equilibrium returned, in words (for people; code reads the counts)
+  int inflection_points = 0;
+  double root_moment = 0.0;
+  std::string family;
+  double tolerance = 0.0;  // the method's convergence tolerance (recorded in output files)
+  std::vector<ShapePoint> shape;
+  Reactions reactions;       // at the root
+  int elements = 0;          // chain algorithm only (0 otherwise)
+  int increments = 0;        // chain algorithm only: increments taken
+  double load_factor = 1.0;  // load factor reached (1 when converged)
+  // Inverse problems: |tip quantity - target| at the returned load; NaN for a forward problem. A
+  // converged inverse always has it within the method's stated tolerance.
+  double target_residual = std::numeric_limits<double>::quiet_NaN();
+  // Folds of the load factor on the path from the unloaded beam (snap-through under load
+  // control at the first); elliptic and shooting only.
+  int limit_points = 0;
+  double first_limit_load_factor = 0.0;
+  // PRBM only: the PRB angle (rad) and whether it is inside the element's validity limits.
+  double prbm_Theta = 0.0;
+  bool prbm_inside_validity = false;
+};
+
+// The method `auto` resolves to for this problem: the cheapest whose error is within
+// problem.tolerance (PRBM inside its validity limits and measured accuracy, else elliptic for
+// Howell's free cantilever, else shooting), with the reason (method_selector.h). A named method
+// resolves to itself.
+struct MethodResolution {
+  BeamMethod method = BeamMethod::kElliptic;
+  std::string reason;
+};
+MethodResolution resolve_beam_method(BeamMethod method, const BeamProblem& problem);
+// Without a problem (sweeps over alpha2): auto = elliptic.
+BeamMethod resolve_beam_method(BeamMethod method);
+
+// Solves `problem` with `method`. Throws InvalidInput for bad input or a problem the method does
+// not solve (OutsideMethodDomain for a load beyond its range); a failed solve returns converged()
+// false and a message. With kAuto, a load beyond the elliptic solver's range goes to shooting.
+BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem);
+
+}  // namespace flexure

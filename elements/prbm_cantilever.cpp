@@ -1,0 +1,64 @@
+#include "flexure/elements/prbm_cantilever.h"
+
+#include <fmt/format.h>
+
+#include "flexure/elements/end_moment_segment.h"
+#include "flexure/elements/fixed_guided_segment.h"
+#include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/solver/common/errors.h"
+
+namespace flexure {
+
+std::unique_ptr<PrbmElement> prbm_cantilever_element(EndCondition end,
+                                                     double load_ratio_n,
+                                                     double alpha2,
+                                                     double mu) {
+  const bool force = alpha2 != 0.0;
+  switch (end) {
+    case EndCondition::kGuided:
+      if (mu != 0.0) {
+        throw InvalidInput(fmt::format(
+            "a guided end takes the tip moment as a reaction, so the end moment mu must be 0 (got "
+            "{:g})",
+            mu));
+      }
+      return std::make_unique<FixedGuidedSegment>(FixedPinnedConstants::from_table(load_ratio_n));
+    case EndCondition::kFree:
+      if (!force) return std::make_unique<EndMomentSegment>();
+      return std::make_unique<FixedPinnedSegment>(FixedPinnedConstants::from_table(load_ratio_n));
+    default:
+      throw InvalidInput(fmt::format(
+          "no pseudo-rigid-body element models a cantilever with a {} end (Howell ch. 5 has free "
+          "and guided ends); the exact methods solve it",
+          to_string(end)));
+  }
+}
+
+PrbmCantileverSolution solve_prbm_cantilever(EndCondition end,
+                                             double load_ratio_n,
+                                             double alpha2,
+                                             double mu) {
+  const std::unique_ptr<PrbmElement> element =
+      prbm_cantilever_element(end, load_ratio_n, alpha2, mu);
+  const EndLoad load = EndLoad::howell(load_ratio_n, alpha2, mu);
+  const PrbEquilibrium eq = element->solve(load);
+  PrbmCantileverSolution out;
+  out.termination = eq.termination;
+  out.message = eq.message;
+  out.iterations = eq.iterations;
+  out.residual = eq.residual;
+  out.element = element->name();
+  out.limits = element->limits();
+  out.constants_source = out.limits.source;
+  if (const auto* pinned = dynamic_cast<const FixedPinnedSegment*>(element.get())) {
+    out.constants_source = pinned->constants().source;
+  }
+  out.Theta = eq.Theta;
+  out.tip = eq.tip;
+  out.root_moment = element->max_moment(eq.Theta, load);
+  out.inside_validity = out.limits.contains(eq.Theta);
+  out.inflection_points = end == EndCondition::kGuided && eq.Theta != 0.0 ? 1 : 0;
+  return out;
+}
+
+}  // namespace flexure
