@@ -6,6 +6,9 @@
 include(CMakePackageConfigHelpers)
 
 flexure_header_closure(FLEXURE_PUBLIC_HEADERS include/flexure/flexure.h)
+# A header added to the public closure re-runs the configure step, so the install rules follow.
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${FLEXURE_PUBLIC_HEADERS}
+                                                              include/flexure/flexure.h)
 list(REMOVE_ITEM FLEXURE_PUBLIC_HEADERS include/flexure/flexure.h)
 foreach(header ${FLEXURE_PUBLIC_HEADERS})
   get_filename_component(dir ${header} DIRECTORY)

@@ -11,6 +11,7 @@
 // Core: end loads and tip poses, errors.
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/version.h"
 
 // Beam solvers.
@@ -30,6 +31,7 @@
 #include "flexure/elements/fixed_pinned_segment.h"
 #include "flexure/elements/initially_curved_cantilever.h"
 #include "flexure/elements/pinned_pinned_segment.h"
+#include "flexure/elements/prbm_cantilever.h"
 #include "flexure/elements/prbm_derivation.h"
 #include "flexure/elements/prbm_element.h"
 #include "flexure/elements/prbm_tables.h"
@@ -57,5 +59,10 @@
 #include "flexure/io/chain_toml.h"
 #include "flexure/io/mechanism_toml.h"
 
-// Studies: method selection for `--method auto`.
+// Studies: beam problems by any method, method selection for `--method auto`, the reference
+// problems of `flexure validate`.
+#include "flexure/benchmarks/studies/beam_method.h"
+#include "flexure/benchmarks/studies/beam_problem.h"
 #include "flexure/benchmarks/studies/method_selector.h"
+#include "flexure/benchmarks/studies/validation_checks.h"
+#include "flexure/benchmarks/studies/validation_problems.h"

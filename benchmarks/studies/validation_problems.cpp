@@ -1,4 +1,4 @@
-#include "cli/validation_problems.h"
+#include "flexure/benchmarks/studies/validation_problems.h"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 
-namespace flexure::cli {
+namespace flexure {
 namespace {
 
 // The tabulated values (Howell §2.9.2 worked example, n = 0 table) carry 8 significant digits (n =
@@ -198,4 +198,4 @@ double quantity_value(const BeamSolution& solution, const std::string& quantity)
   throw std::logic_error("unknown validation quantity " + quantity);
 }
 
-}  // namespace flexure::cli
+}  // namespace flexure

@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/beam_methods.h"
+#include "flexure/benchmarks/studies/beam_problem.h"
 
-namespace flexure::cli {
+namespace flexure {
 
 // One number to compare. rel_error = |computed - reference| / max(|reference|, scale_floor).
 struct ReferenceValue {
@@ -54,4 +54,4 @@ std::vector<ValidationMethod> validation_methods();
 // The value of `quantity` in a solution (alpha = sqrt(alpha2), Howell eq. 2.83).
 double quantity_value(const BeamSolution& solution, const std::string& quantity);
 
-}  // namespace flexure::cli
+}  // namespace flexure
