@@ -61,7 +61,19 @@ std::string validity_violation(const MechanismDesign& d, const PrbmState& s) {
 
 }  // namespace
 
+void AnalysisOptions::validate() const {
+  if (points < 2 || points > 100000) {
+    throw InvalidInput(
+        fmt::format("AnalysisOptions::points must be in [2, 100000] (got {})", points));
+  }
+  if (exact_stress && shape_points < 2) {
+    throw InvalidInput(
+        fmt::format("AnalysisOptions::shape_points must be >= 2 (got {})", shape_points));
+  }
+}
+
 MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const AnalysisOptions& options) {
+  options.validate();
   MechanismAnalysis a;
   a.design = design;
   a.design.finalise();

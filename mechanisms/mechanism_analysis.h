@@ -30,6 +30,9 @@ struct AnalysisOptions {
   // Called after each exact stroke point and each exact stress evaluation: (done, total) over
   // both passes (total = 2 points with stresses, else points). Empty: no calls.
   StrokeProgress progress;
+
+  // Throws InvalidInput naming the first field outside its range.
+  void validate() const;
 };
 
 struct MechanismAnalysis {

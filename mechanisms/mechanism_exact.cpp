@@ -122,8 +122,35 @@ PhysicalChain physical_chain(const MechanismDesign& d) {
 ExactMechanismSolver::ExactMechanismSolver(MechanismDesign design)
     : ExactMechanismSolver(std::move(design), Options{}) {}
 
+void ExactMechanismSolver::Options::validate() const {
+  shooting.validate();
+  const auto positive = [](double value, const char* name) {
+    if (!(value > 0.0) || !std::isfinite(value)) {
+      throw InvalidInput(
+          fmt::format("ExactMechanismSolver::Options::{} must be > 0 (got {})", name, value));
+    }
+  };
+  positive(position_tolerance, "position_tolerance");
+  positive(max_load_parameter, "max_load_parameter");
+  positive(work_budget, "work_budget");
+  if (!(noise_floor >= 0.0) || !(work_budget_per_point >= 0.0) || !(work_limit >= 0.0)) {
+    throw InvalidInput(fmt::format(
+        "ExactMechanismSolver::Options: noise_floor ({}), work_budget_per_point ({}) and "
+        "work_limit ({}) must be >= 0",
+        noise_floor,
+        work_budget_per_point,
+        work_limit));
+  }
+  if (max_newton_iterations < 1) {
+    throw InvalidInput(
+        fmt::format("ExactMechanismSolver::Options::max_newton_iterations must be >= 1 (got {})",
+                    max_newton_iterations));
+  }
+}
+
 ExactMechanismSolver::ExactMechanismSolver(MechanismDesign design, Options options)
     : design_(std::move(design)), options_(options), support_(exact_support(design_)) {
+  options_.validate();
   // The exact model has no spring rule; its PRBM start guesses are closest with k = EI/L.
   design_.spring_rule = SpringRule::kPureBending;
   physical_ = physical_chain(design_);

@@ -136,6 +136,9 @@ class ExactMechanismSolver {
     // pinned-ends model of 1B-plp near its toggle tried F L^2/EI = 2e8, one shooting solve
     // there took 21 s.
     double max_load_parameter = 1e4;
+
+    // Throws InvalidInput naming the first field outside its range.
+    void validate() const;
   };
 
   explicit ExactMechanismSolver(MechanismDesign design);

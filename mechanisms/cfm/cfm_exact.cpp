@@ -45,7 +45,16 @@ mechanism::MechanismDesign cfm_equivalent_design(
   return d;
 }
 
+void CfmExactOptions::validate() const {
+  if (points < 2 || points > 100000) {
+    throw InvalidInput(
+        fmt::format("CfmExactOptions::points must be in [2, 100000] (got {})", points));
+  }
+  solver.validate();
+}
+
 CfmExactResult solve_cfm_exact(const CfmResult& prbm, const CfmExactOptions& options) {
+  options.validate();
   CfmExactResult r;
   r.design = cfm_equivalent_design(prbm.config, prbm.R, prbm.K1, prbm.K2, prbm.stroke_percent);
   const mechanism::MechanismDesign& d = r.design;

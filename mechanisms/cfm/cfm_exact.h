@@ -29,6 +29,9 @@ mechanism::MechanismDesign cfm_equivalent_design(
 struct CfmExactOptions {
   int points = 50;  // equally spaced stroke points Delta x = k d (r2 + r3)/points, k = 1..points
   mechanism::ExactMechanismSolver::Options solver;  // the exact model's solver settings
+
+  // Throws InvalidInput naming the first field outside its range.
+  void validate() const;
 };
 
 struct CfmExactResult : SolveStatus {

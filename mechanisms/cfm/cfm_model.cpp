@@ -76,13 +76,14 @@ std::array<double, 3> pivot_kappa(const CfmConfiguration& c, double R) {
   return kappa;
 }
 
-CfmModel::CfmModel(CfmOptions options) : options_(options) {
-  if (options_.sampling == StrokeSampling::kUniform &&
-      (options_.points < 1 || options_.points > kMaxUniformPoints)) {
-    throw InvalidInput(fmt::format(
-        "CfmOptions::points = {} must be between 1 and {}", options_.points, kMaxUniformPoints));
+void CfmOptions::validate() const {
+  if (sampling == StrokeSampling::kUniform && (points < 1 || points > kMaxUniformPoints)) {
+    throw InvalidInput(
+        fmt::format("CfmOptions::points = {} must be between 1 and {}", points, kMaxUniformPoints));
   }
 }
+
+CfmModel::CfmModel(CfmOptions options) : options_(options) { options_.validate(); }
 
 CfmResult CfmModel::evaluate(const CfmParameters& p) const {
   const CfmConfiguration& c = find_cfm_configuration(p.config);

@@ -45,6 +45,9 @@ struct CfmOptions {
   StrokeSampling sampling = StrokeSampling::kThesisCode;  // see StrokeSampling
   int points = 50;          // number of points for kUniform (>= 1); ignored by kThesisCode
   bool keep_curve = false;  // fill CfmResult::curve (costs one allocation)
+
+  // Throws InvalidInput naming the first field outside its range.
+  void validate() const;
 };
 
 // One stroke point.

@@ -102,15 +102,22 @@ Linearisation linearise(const SliderCrankDynamics& model,
   return lin;
 }
 
-ForwardDynamics::ForwardDynamics(SliderCrankDynamics model, ForwardOptions options)
-    : model_(std::move(model)), options_(options) {
-  if (!(options_.rtol > 0.0) || !(options_.atol > 0.0)) {
+void ForwardOptions::validate() const {
+  if (!(rtol > 0.0) || !(atol > 0.0)) {
     throw InvalidInput("ForwardOptions: rtol and atol must be > 0");
   }
-  if (!(options_.friction_sign_velocity > 0.0)) {
+  if (!(friction_sign_velocity > 0.0)) {
     throw InvalidInput("ForwardOptions: friction_sign_velocity must be > 0");
   }
-  if (options_.max_steps < 1) throw InvalidInput("ForwardOptions: max_steps must be >= 1");
+  if (max_steps < 1) throw InvalidInput("ForwardOptions: max_steps must be >= 1");
+  if (!std::isfinite(crossing_level)) {
+    throw InvalidInput("ForwardOptions: crossing_level must be a finite angle (rad)");
+  }
+}
+
+ForwardDynamics::ForwardDynamics(SliderCrankDynamics model, ForwardOptions options)
+    : model_(std::move(model)), options_(options) {
+  options_.validate();
 }
 
 ForwardResult ForwardDynamics::integrate(double theta2_0,

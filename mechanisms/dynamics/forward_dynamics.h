@@ -36,6 +36,9 @@ struct ForwardOptions {
   // ODE integrator, CVODES root finding), e.g. for periods of free oscillations.
   bool record_crossings = false;
   double crossing_level = 0.0;  // rad
+
+  // Throws InvalidInput naming the first field outside its range.
+  void validate() const;
 };
 
 struct ForwardResult : SolveStatus {

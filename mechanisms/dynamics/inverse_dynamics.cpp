@@ -10,16 +10,20 @@
 
 namespace flexure::dynamics {
 
-InverseDynamics::InverseDynamics(SliderCrankDynamics model, InverseDynamicsOptions options)
-    : model_(std::move(model)), options_(options) {
-  if (options_.samples_per_period < 8 || options_.samples_per_period % 2 != 0) {
+void InverseDynamicsOptions::validate() const {
+  if (samples_per_period < 8 || samples_per_period % 2 != 0) {
     throw InvalidInput(
-        fmt::format("samples_per_period = {} must be even and >= 8", options_.samples_per_period));
+        fmt::format("samples_per_period = {} must be even and >= 8", samples_per_period));
   }
-  require_finite(options_.friction_sign_velocity, "friction_sign_velocity");
-  if (options_.friction_sign_velocity < 0.0) {
+  require_finite(friction_sign_velocity, "friction_sign_velocity");
+  if (friction_sign_velocity < 0.0) {
     throw InvalidInput("friction_sign_velocity must be >= 0");
   }
+}
+
+InverseDynamics::InverseDynamics(SliderCrankDynamics model, InverseDynamicsOptions options)
+    : model_(std::move(model)), options_(options) {
+  options_.validate();
 }
 
 void InverseDynamics::check(const SinusoidalMotion& m) const {

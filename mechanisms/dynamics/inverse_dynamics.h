@@ -44,6 +44,9 @@ struct InverseDynamicsOptions {
                                         // both ends of the stroke are sampled)
   double friction_sign_velocity = 0.0;  // > 0: sign(theta2') smoothed as tanh(theta2'/v), rad/s;
                                         // 0: exact sign (the force jumps at the stroke ends)
+
+  // Throws InvalidInput naming the first field outside its range.
+  void validate() const;
 };
 
 class InverseDynamics {

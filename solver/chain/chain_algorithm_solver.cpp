@@ -233,7 +233,10 @@ Problem make_problem(const SegmentChain& chain, int elements) {
   return p;
 }
 
-void validate(const ChainAlgorithmSolver::Options& o) {
+}  // namespace
+
+void ChainAlgorithmSolver::Options::validate() const {
+  const Options& o = *this;
   if (o.elements < 1) {
     throw InvalidInput(fmt::format("elements must be >= 1 (got {})", o.elements));
   }
@@ -269,6 +272,8 @@ void validate(const ChainAlgorithmSolver::Options& o) {
         fmt::format("chain anderson_depth must be in [0, 50] (got {})", o.anderson_depth));
   }
 }
+
+namespace {
 
 ChainPose tip_of(const Problem& p, const ChainGeometry& g) {
   const int E = p.d.element_count();
@@ -355,7 +360,7 @@ std::string representation_problem(const SegmentChain& chain,
 }  // namespace
 
 ChainResult ChainAlgorithmSolver::solve(const SegmentChain& chain) const {
-  validate(options_);
+  options_.validate();
   chain.validate();
   require_reachable_tip(chain);
   Options o = options_;

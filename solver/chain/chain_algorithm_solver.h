@@ -70,6 +70,9 @@ struct ChainResult : SolveStatus {
 class ChainAlgorithmSolver {
  public:
   struct Options {
+    // Throws InvalidInput naming the first field outside its range.
+    void validate() const;
+
     int elements = 100;   // N, elements over the flexible segments (rigid links add one each)
     int increments = 10;  // load increments n_inc (eq. 7.27); adaptive steps: largest step 1/n_inc
     ChainVariant variant = ChainVariant::kCorrected;  // see the header comment

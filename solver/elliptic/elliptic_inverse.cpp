@@ -45,6 +45,7 @@ EllipticResult result_from_tip_angle(double load_ratio_n, double theta0) {
   }
   r.set_converged(h.converged());
   r.message = h.converged() ? "converged" : "tip angle inverse failed";
+  r.branch_kind = EllipticBranch::kProportionalUnique;
   r.branch = "proportional loading (unique for mu = 0: 0 < theta0 < force angle)";
   return r;
 }

@@ -76,6 +76,7 @@ EllipticResult EllipticSolver::solve(const EndLoad& load) const {
     p.family = mu == 0.0 ? ElasticaFamily::kStraight : ElasticaFamily::kCircularArc;
     fill_from_parameters(r);
     r.set_converged(true);
+    r.branch_kind = EllipticBranch::kPureMoment;
     r.branch = "unique (pure end moment: circular arc)";
   } else if (mu == 0.0 && (Fy == 0.0 || force < kNegligibleForce)) {
     p.family = ElasticaFamily::kStraight;
@@ -83,6 +84,7 @@ EllipticResult EllipticSolver::solve(const EndLoad& load) const {
     p.psi = std::atan2(Fy, load.Fx);
     if (Fy == 0.0) {
       fill_from_parameters(r);
+      r.branch_kind = EllipticBranch::kStraight;
       r.branch = load.Fx < -kPi * kPi / 4.0
                      ? "straight (proportional loading along the axis; above the Euler load "
                        "pi^2/4 the straight shape is unstable and buckled equilibria exist)"
@@ -91,6 +93,7 @@ EllipticResult EllipticSolver::solve(const EndLoad& load) const {
       // Linear theory, exact to round-off at this load: theta0 = Fy/2, b = Fy/3.
       r.tip = {1.0, Fy / 3.0, Fy / 2.0};
       r.root_moment = Fy;
+      r.branch_kind = EllipticBranch::kLinearTheory;
       r.branch = "linear theory (negligible load)";
     }
     r.set_converged(true);
@@ -107,6 +110,7 @@ EllipticResult EllipticSolver::solve(const EndLoad& load) const {
       r.root_moment = h.root_moment;
       r.inflection_points = 0;
       r.set_converged(true);
+      r.branch_kind = EllipticBranch::kProportionalUnique;
       r.branch = "proportional loading (unique for mu = 0: 0 < theta0 < force angle)";
     } else {
       r.message = fmt::format(
@@ -131,6 +135,7 @@ EllipticResult EllipticSolver::solve(const EndLoad& load) const {
       p.mirrored = load.Fy < 0.0;
       fill_from_parameters(r);
       r.set_converged(true);
+      r.branch_kind = EllipticBranch::kProportionalContinued;
       r.branch =
           fmt::format("proportional loading (pseudo-arclength continuation, {} steps)", c.steps);
       if (c.limit_points > 0) {
@@ -158,6 +163,24 @@ EllipticResult EllipticSolver::solve(const EndLoad& load) const {
   return r;
 }
 
+void EllipticSolver::Options::validate() const {
+  if (!(tolerance > 0.0 && tolerance < 1e-2)) {
+    throw InvalidInput(
+        fmt::format("EllipticSolver::Options::tolerance must be in (0, 1e-2) (got {})", tolerance));
+  }
+  if (max_iterations < 1) {
+    throw InvalidInput(fmt::format("EllipticSolver::Options::max_iterations must be >= 1 (got {})",
+                                   max_iterations));
+  }
+  if (max_continuation_steps < 1) {
+    throw InvalidInput(
+        fmt::format("EllipticSolver::Options::max_continuation_steps must be >= 1 (got {})",
+                    max_continuation_steps));
+  }
+}
+
+EllipticSolver::EllipticSolver(Options options) : options_(options) { options_.validate(); }
+
 std::vector<ShapePoint> EllipticSolver::shape(const EllipticResult& result, int count) const {
   if (count < 2) {
     throw InvalidInput(fmt::format("shape point count must be at least 2 (got {})", count));
@@ -178,7 +201,7 @@ std::vector<ShapePoint> EllipticSolver::shape_at(const EllipticResult& result,
       throw InvalidInput(fmt::format("arc length s = {} is outside [0, 1]", si));
     }
     ShapePoint p;
-    if (result.branch.rfind("linear theory", 0) == 0) {
+    if (result.branch_kind == EllipticBranch::kLinearTheory) {
       // theta = Fy (s - s^2/2), y = Fy (s^2/2 - s^3/6) for a negligible load.
       const double Fy = result.load.Fy;
       p = {si, si, Fy * (0.5 * si * si - si * si * si / 6.0), Fy * (si - 0.5 * si * si)};

@@ -18,6 +18,16 @@
 
 namespace flexure {
 
+// Which equilibrium the solver returned and how it was found (the `branch` text says it in words).
+enum class EllipticBranch {
+  kPureMoment,          // pure end moment: the unique circular arc (Howell eqs. 2.53-2.64)
+  kStraight,            // axial load only: the straight shape (proportional loading)
+  kLinearTheory,        // negligible load: linear theory, exact to round-off
+  kProportionalUnique,  // mu = 0: the unique proportional-loading solution (Howell eqs. 2.90-2.98)
+  kProportionalContinued,  // mu != 0: proportional loading followed by pseudo-arclength
+                           // continuation
+};
+
 struct EllipticResult : SolveStatus {
   // message: why it stopped; names the offending quantity when it failed
   // iterations: root-finder iterations, summed over continuation steps
@@ -32,7 +42,8 @@ struct EllipticResult : SolveStatus {
   double root_moment = 0.0;  // curvature at the clamp, M(0) l/EI
   int inflection_points = 0;
   // residual: |tip condition| at the returned solution
-  std::string branch;  // "proportional loading" or a note on how the branch was chosen
+  EllipticBranch branch_kind = EllipticBranch::kProportionalUnique;  // code branches on this
+  std::string branch;  // the same in words, for people ("proportional loading ...")
   ElasticaParameters parameters;
 };
 
@@ -50,10 +61,14 @@ class EllipticSolver {
     double tolerance = 1e-14;  // relative tolerance on the unknown of each scalar solve
     int max_iterations = 200;  // per scalar solve
     int max_continuation_steps = 4000;
+
+    // Throws InvalidInput naming the first field outside its range.
+    void validate() const;
   };
 
   EllipticSolver() = default;
-  explicit EllipticSolver(Options options) : options_(options) {}
+  // Throws InvalidInput (Options::validate) for bad options.
+  explicit EllipticSolver(Options options);
 
   // Forward problem: tip pose for a given end load. Throws InvalidInput for non-finite loads.
   EllipticResult solve(const EndLoad& load) const;

@@ -13,6 +13,8 @@
 #include <stdexcept>
 #include <variant>
 
+#include "flexure/solver/common/errors.h"
+
 namespace flexure {
 
 namespace {
@@ -142,8 +144,23 @@ void check_setup(int flag, const char* function) {
 }
 }  // namespace
 
+void ElasticaIntegrator::Options::validate() const {
+  if (!(rtol > 0.0 && rtol < 1e-2)) {
+    throw InvalidInput(
+        fmt::format("ElasticaIntegrator::Options::rtol must be in (0, 1e-2) (got {})", rtol));
+  }
+  if (!(atol > 0.0 && std::isfinite(atol))) {
+    throw InvalidInput(fmt::format("ElasticaIntegrator::Options::atol must be > 0 (got {})", atol));
+  }
+  if (max_steps < 1) {
+    throw InvalidInput(
+        fmt::format("ElasticaIntegrator::Options::max_steps must be >= 1 (got {})", max_steps));
+  }
+}
+
 ElasticaIntegrator::ElasticaIntegrator(Options options)
     : options_(options), impl_(std::make_unique<Impl>()) {
+  options_.validate();
   Impl& d = *impl_;
   if (SUNContext_Create(nullptr, &d.context) != 0) {
     throw std::runtime_error("SUNContext_Create failed");

@@ -73,6 +73,9 @@ class ElasticaIntegrator {
     bool sensitivity_error_control = true;  // include sensitivities in the local error test
     bool fixed_point = true;  // Adams only: fixed-point corrector (no Jacobian, no dense
                               // solve; the elastica is not stiff); false = Newton + dense
+
+    // Throws InvalidInput naming the first field outside its range.
+    void validate() const;
   };
 
   explicit ElasticaIntegrator(Options options);

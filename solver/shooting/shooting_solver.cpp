@@ -11,9 +11,8 @@
 
 namespace flexure {
 
-namespace {
-
-void check_options(const ShootingSolver::Options& o) {
+void ShootingSolver::Options::validate() const {
+  const Options& o = *this;
   if (!(o.rtol > 0.0 && o.rtol < 1e-2)) {
     throw InvalidInput(fmt::format("shooting rtol must be in (0, 1e-2) (got {})", o.rtol));
   }
@@ -27,9 +26,10 @@ void check_options(const ShootingSolver::Options& o) {
       !(o.continuation.initial_step >= o.continuation.min_step)) {
     throw InvalidInput("continuation steps must satisfy 0 < min_step <= initial_step");
   }
+  if (shape_points < 0) {
+    throw InvalidInput(fmt::format("shape_points must be >= 0 (got {})", shape_points));
+  }
 }
-
-}  // namespace
 
 double unique_equilibrium_bound(const SegmentChain& chain) {
   chain.validate();
@@ -122,7 +122,7 @@ ShootingResult ShootingSolver::finish(const ShootingProblem& problem,
 }
 
 ShootingResult ShootingSolver::solve(const SegmentChain& chain) const {
-  check_options(options_);
+  options_.validate();
   const ShootingProblem problem(chain, options_.multiple_shooting);
   // An unreachable target is bad input, refused before any work (tip_reach.h).
   require_reachable_tip(chain);
@@ -272,7 +272,7 @@ ShootingResult ShootingSolver::solve_in_two_stages(const SegmentChain& chain,
 
 ShootingResult ShootingSolver::solve_from(const SegmentChain& chain,
                                           const std::vector<double>& guess) const {
-  check_options(options_);
+  options_.validate();
   const ShootingProblem problem(chain, options_.multiple_shooting);
   const int count = static_cast<int>(guess.size());
   if (count != problem.size() && count != problem.root_unknown_count()) {
@@ -310,7 +310,7 @@ ShootingResult ShootingSolver::solve_from(const SegmentChain& chain,
 }
 
 LoadPath ShootingSolver::load_path(const SegmentChain& chain) const {
-  check_options(options_);
+  options_.validate();
   const ShootingProblem problem(chain, options_.multiple_shooting);
   require_reachable_tip(chain);
   ElasticaIntegrator integrator(options_.integrator_options());

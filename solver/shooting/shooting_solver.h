@@ -94,6 +94,9 @@ class ShootingSolver {
                                                 // shooting_problem.h)
     int shape_points = 0;  // > 1: return the shape at this many equally spaced s
 
+    // Throws InvalidInput naming the first field outside its range (checked by every solve).
+    void validate() const;
+
     // The integrator settings these options imply (tolerances, method, backend).
     ElasticaIntegrator::Options integrator_options() const {
       ElasticaIntegrator::Options io;
