@@ -185,6 +185,7 @@ Json to_json(const BeamProblem& problem, const BeamSolution& solution) {
       solution.limit_points > 0 ? Json(solution.first_limit_load_factor) : Json(nullptr);
   out["family"] = solution.family;
   out["message"] = solution.message;
+  out["termination"] = termination_name(solution.termination);
   out["boundary"] = to_string(problem.boundary);
   out["reactions"] = Json{{"Fx", solution.reactions.Fx + 0.0},
                           {"Fy", solution.reactions.Fy + 0.0},

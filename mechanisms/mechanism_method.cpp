@@ -68,16 +68,15 @@ MechanismMethodChoice choose_mechanism_method(const MechanismDesign& design,
                                               const std::string& method,
                                               double tolerance) {
   if (!(tolerance > 0.0) || !std::isfinite(tolerance)) {
-    throw InvalidInput(fmt::format("--tol must be finite and > 0 (got {})", tolerance));
+    throw InvalidInput(fmt::format("the tolerance must be finite and > 0 (got {})", tolerance));
   }
   MechanismMethodChoice c;
   if (method == "prbm") {
-    c = {false, "prbm", "requested with --method prbm"};
+    c = {false, "prbm", "requested: prbm"};
   } else if (method == "exact") {
-    c = {true, "exact", "requested with --method exact"};
+    c = {true, "exact", "requested: exact"};
   } else if (method != "auto") {
-    throw InvalidInput(
-        fmt::format("--method '{}' is unknown (allowed: auto, prbm, exact)", method));
+    throw InvalidInput(fmt::format("method '{}' is unknown (allowed: auto, prbm, exact)", method));
   } else {
     // A fixed-fixed pattern outside the paper's eleven has no measured error: exact.
     double measured = INFINITY;

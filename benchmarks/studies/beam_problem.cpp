@@ -251,6 +251,7 @@ BeamSolution solve_numerical(BeamMethod method, const BeamProblem& problem) {
     // What was reached is in the message; no further (possibly slow) solve at that load.
     BeamSolution missed;
     missed.method = method;
+    missed.termination = found.termination;
     missed.alpha2 = found.alpha2;
     missed.iterations = found.forward_solves;
     missed.target_residual = found.residual;

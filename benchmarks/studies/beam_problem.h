@@ -49,13 +49,6 @@ struct BeamProblem {
   }
 };
 
-// Loads the clamp exerts on the beam (root frame), Fx, Fy, M (nondimensional).
-struct Reactions {
-  double Fx = 0.0;
-  double Fy = 0.0;
-  double M = 0.0;
-};
-
 // A method-independent summary of one solve (the keys of `flexure beam --json`).
 struct BeamSolution : SolveStatus {
   BeamMethod method = BeamMethod::kElliptic;  // the method actually used (what auto resolved to)
@@ -68,7 +61,7 @@ struct BeamSolution : SolveStatus {
   std::string family;
   double tolerance = 0.0;  // the method's convergence tolerance (recorded in output files)
   std::vector<ShapePoint> shape;
-  Reactions reactions;       // at the root
+  Reaction reactions;        // at the root
   int elements = 0;          // chain algorithm only (0 otherwise)
   int increments = 0;        // chain algorithm only: increments taken
   double load_factor = 1.0;  // load factor reached (1 when converged)

@@ -289,7 +289,7 @@ void fill_state(const Problem& p,
   const int E = p.d.element_count();
   r.tip = tip_of(p, g);
   r.tip_pose = TipPose{r.tip.x / p.length, r.tip.y / p.length, r.tip.theta};
-  r.tip_reaction = ChainReaction{z[0], z[1], z[2]};
+  r.tip_reaction = Reaction{z[0], z[1], z[2]};
   const ChainNodeLoads loads = loads_at(p, lambda, z);
   double Fx = 0.0, Fy = 0.0, M = 0.0;
   for (int j = 1; j <= E; ++j) {
@@ -302,7 +302,7 @@ void fill_state(const Problem& p,
   Fx += qx;
   Fy += qy;
   M += g.x[E] * qy - g.y[E] * qx;
-  r.root_reaction = ChainReaction{-Fx, -Fy, -M};
+  r.root_reaction = Reaction{-Fx, -Fy, -M};
   r.root_moment = M;
   r.nodes.clear();
   r.nodes.reserve(E + 1);

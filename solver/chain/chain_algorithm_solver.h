@@ -33,13 +33,6 @@ const char* to_string(ChainVariant variant);
 // Accepts "howell" and "corrected"; throws InvalidInput naming the allowed values otherwise.
 ChainVariant chain_variant_from_string(const std::string& name);
 
-// Loads in the root frame: (Fx, Fy) and a counter-clockwise moment M.
-struct ChainReaction {
-  double Fx = 0.0;
-  double Fy = 0.0;
-  double M = 0.0;
-};
-
 // One point of the load path: the state after a successful load increment.
 struct ChainLoadPathPoint {
   double load_factor = 0.0;  // lambda in (0, 1]
@@ -60,8 +53,8 @@ struct ChainResult : SolveStatus {
 
   ChainPose tip;                  // tip position and tangent angle
   TipPose tip_pose;               // the same as Howell's a/l, b/l, theta0 (l = total length)
-  ChainReaction tip_reaction;     // shooting unknowns: load the tip support exerts (zero if free)
-  ChainReaction root_reaction;    // load the clamp exerts on the chain (moment about the origin)
+  Reaction tip_reaction;          // shooting unknowns: load the tip support exerts (zero if free)
+  Reaction root_reaction;         // load the clamp exerts on the chain (moment about the origin)
   double root_moment = 0.0;       // bending moment at the clamp, m(0) = -root_reaction.M
   std::vector<ShapePoint> nodes;  // every element node, s = arc length from the root
   std::vector<ChainLoadPathPoint> load_path;

@@ -26,6 +26,14 @@ struct TipPose {
   double theta0 = 0.0;
 };
 
+// A force (Fx, Fy) and a counter-clockwise moment M in the root frame: what a support or the
+// clamp exerts on a beam or chain (nondimensional where the problem is).
+struct Reaction {
+  double Fx = 0.0;
+  double Fy = 0.0;
+  double M = 0.0;
+};
+
 // One point of the deflected shape at arc length s (0 <= s <= 1).
 struct ShapePoint {
   double s = 0.0;

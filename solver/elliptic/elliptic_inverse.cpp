@@ -104,8 +104,8 @@ EllipticResult search_alpha2(const EllipticSolver& solver,
     throw OutsideMethodDomain(fmt::format(
         "{} = {:.6g} is not reached by any |alpha2| <= {:.6g} with load ratio n = {:.6g} and end "
         "moment mu = {:.6g}, where the elliptic solver's range ends (|F| l^2/EI <= {:.0e}; the "
-        "closest was {} = {:.9g} at alpha2 = {:.9g}); the shooting method (--method shooting) "
-        "can search larger loads",
+        "closest was {} = {:.9g} at alpha2 = {:.9g}); the shooting method can search larger "
+        "loads",
         what,
         value,
         found.reached_alpha2_max,
@@ -128,7 +128,8 @@ EllipticResult search_alpha2(const EllipticSolver& solver,
   }
   // Brackets but no root: report what was reached (exit code 3 in the CLI), never a wrong load.
   EllipticResult missed = solver.solve(EndLoad::howell(load_ratio_n, found.alpha2, mu));
-  missed.set_converged(false);
+  // The quantity jumps across the target between two loads: a fold (limit point) of the path.
+  missed.termination = Termination::kLimitPoint;
   missed.iterations += found.solves;
   missed.residual = found.residual;
   missed.message = fmt::format("{} = {:.6g} not reached: {}", what, value, found.message);

@@ -29,15 +29,14 @@ void validate_load(const EndLoad& load) {
   if (std::hypot(load.Fx, load.Fy) > kMaxForce) {
     throw OutsideMethodDomain(fmt::format(
         "end force |F| l^2/EI = {:.6g} is outside the elliptic solver's range (at most {:.0e}); "
-        "the shooting method (--method shooting) has no fixed range (it takes seconds at such "
-        "loads)",
+        "the shooting method has no fixed range (it takes seconds at such loads)",
         std::hypot(load.Fx, load.Fy),
         kMaxForce));
   }
   if (std::fabs(load.mu) > kMaxMoment) {
     throw OutsideMethodDomain(fmt::format(
         "end moment |mu| = {:.6g} is outside the elliptic solver's range (at most {:.0e}); the "
-        "shooting method (--method shooting) has no fixed range",
+        "shooting method has no fixed range",
         std::fabs(load.mu),
         kMaxMoment));
   }

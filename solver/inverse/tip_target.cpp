@@ -90,6 +90,7 @@ TipTargetSolution solve_tip_target(
     // The exact tip quantity jumps across the target at a fold of the load path: the method's
     // model of the same beam does too, and a scan of its own would only spend its budget.
     out.message = fmt::format("{} (exact elliptic solution)", note);
+    out.termination = Termination::kLimitPoint;
     out.alpha2 = guess;
     return out;
   }
@@ -126,6 +127,8 @@ TipTargetSolution solve_tip_target(
                           note);
   }
   out.set_converged(found.found());
+  // Brackets without a root: the quantity jumps across the target at a fold of the load path.
+  if (found.status == LoadSearchStatus::kMissed) out.termination = Termination::kLimitPoint;
   out.alpha2 = found.alpha2;
   out.reached = found.reached;
   out.residual = found.residual;

@@ -42,11 +42,11 @@ enum class PathStatus { kStart, kAccepted, kLimitPoint, kEnd };
 const char* to_string(PathStatus status);
 
 struct PathPoint {
-  double lambda = 0.0;    // load factor
-  ChainPose tip;          // tip x, y, theta
-  RootReaction reaction;  // loads the clamp applies to the chain
-  double step = 0.0;      // arclength step that reached this point
-  int iterations = 0;     // Newton iterations of the corrector
+  double lambda = 0.0;  // load factor
+  ChainPose tip;        // tip x, y, theta
+  Reaction reaction;    // loads the clamp applies to the chain
+  double step = 0.0;    // arclength step that reached this point
+  int iterations = 0;   // Newton iterations of the corrector
   PathStatus status = PathStatus::kAccepted;
   int stage = 1;  // 2 only in the second stage of a two-stage path (shooting_solver.h)
 };

@@ -124,9 +124,9 @@ ChainForces ShootingProblem::forces(const Eigen::VectorXd& z, double lambda) con
   return f;
 }
 
-RootReaction ShootingProblem::reaction(const Eigen::VectorXd& z, double lambda) const {
+Reaction ShootingProblem::reaction(const Eigen::VectorXd& z, double lambda) const {
   const ChainForces f = forces(z, lambda);
-  return RootReaction{-f.N[0].x(), -f.N[0].y(), -f.m0};
+  return Reaction{-f.N[0].x(), -f.N[0].y(), -f.m0};
 }
 
 Eigen::VectorXd ShootingProblem::unloaded_unknowns() const {

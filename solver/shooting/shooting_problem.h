@@ -32,13 +32,6 @@
 
 namespace flexure {
 
-// Loads the clamp applies to the chain at the root (root frame, moment counter-clockwise).
-struct RootReaction {
-  double Fx = 0.0;
-  double Fy = 0.0;
-  double M = 0.0;
-};
-
 struct ShootingEvaluation {
   bool ok = false;
   std::string error;  // CVODES failure, when !ok
@@ -81,7 +74,7 @@ class ShootingProblem {
 
   // Internal loads for unknowns z at load factor lambda.
   ChainForces forces(const Eigen::VectorXd& z, double lambda) const;
-  RootReaction reaction(const Eigen::VectorXd& z, double lambda) const;
+  Reaction reaction(const Eigen::VectorXd& z, double lambda) const;
 
   bool evaluate(const Eigen::VectorXd& z,
                 double lambda,

@@ -96,7 +96,7 @@ ShootingResult ShootingSolver::finish(const ShootingProblem& problem,
   const Eigen::Vector2d N_tip = forces.N.back();
   if (known_tip != nullptr && options_.shape_points <= 1) {
     result.tip = ChainPose{known_tip->x, known_tip->y, known_tip->theta};
-    result.tip_load = RootReaction{N_tip.x(), N_tip.y(), known_tip->m};
+    result.tip_load = Reaction{N_tip.x(), N_tip.y(), known_tip->m};
     return result;
   }
   TipState tip;
@@ -117,7 +117,7 @@ ShootingResult ShootingSolver::finish(const ShootingProblem& problem,
     return result;
   }
   result.tip = ChainPose{tip.x, tip.y, tip.theta};
-  result.tip_load = RootReaction{N_tip.x(), N_tip.y(), tip.m};
+  result.tip_load = Reaction{N_tip.x(), N_tip.y(), tip.m};
   return result;
 }
 

@@ -53,10 +53,10 @@ struct ShootingResult : SolveStatus {
   // residual: max |g_i| of the far-end conditions at the returned point
   double load_factor = 0.0;  // load factor reached (1 when converged)
 
-  ChainPose tip;          // tip x, y, theta (root frame)
-  RootReaction reaction;  // loads the clamp applies to the chain: -N(0), -m(0)
-  RootReaction tip_load;  // total load on the tip, given + reaction: N(tip), m(tip); for a
-                          // prescribed coordinate this is the support's reaction
+  ChainPose tip;      // tip x, y, theta (root frame)
+  Reaction reaction;  // loads the clamp applies to the chain: -N(0), -m(0)
+  Reaction tip_load;  // total load on the tip, given + reaction: N(tip), m(tip); for a
+                      // prescribed coordinate this is the support's reaction
   std::vector<std::string> unknown_names;
   std::vector<double> unknowns;   // m(0), shot force components, then the states at the cuts
   std::vector<ShapePoint> shape;  // on request (Options::shape_points), s from 0 to total length

@@ -73,6 +73,7 @@ TEST(CliMethods, PrbmSolvesTheGuidedBeamAsBenchDoes) {
   const Json guided = run_json("beam --boundary guided --alpha2 8 --method prbm");
   const Json half = run_json("beam --alpha2 2 --method prbm");
   EXPECT_EQ(guided["method"], "prbm");
+  EXPECT_EQ(guided["termination"], "converged");
   EXPECT_NE(guided["branch"].get<std::string>().find("fixed-guided"), std::string::npos);
   EXPECT_NEAR(guided["a_over_l"].get<double>(), half["a_over_l"].get<double>(), 1e-10);
   EXPECT_NEAR(guided["b_over_l"].get<double>(), half["b_over_l"].get<double>(), 1e-10);

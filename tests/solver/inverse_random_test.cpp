@@ -148,6 +148,7 @@ TEST(InverseRandom, EllipticMissAcrossAFoldIsNotConverged) {
   const EllipticResult r = EllipticSolver().solve_for_tip_angle(
       14.174796494879462, 1.0053858735474077, -1.527731579147511);
   EXPECT_FALSE(r.converged());
+  EXPECT_EQ(r.termination, Termination::kLimitPoint);
   EXPECT_NE(r.message.find("jumps across the target"), std::string::npos) << r.message;
 }
 
@@ -181,6 +182,7 @@ TEST(InverseRandom, ShootingMissIsReportedNotReturned) {
   };
   const TipTargetSolution s = solve_tip_target(t, counting, kNumericalTolerance);
   EXPECT_FALSE(s.converged());
+  EXPECT_EQ(s.termination, Termination::kLimitPoint);
   EXPECT_EQ(solves, 0) << "the exact solution reports the jump; no shooting solve is needed";
 }
 
