@@ -636,31 +636,28 @@ ExactSegmentState exact_segment_state(const MechanismDesign& design,
   if (!point.converged()) throw InvalidInput("exact_segment_state needs a converged point");
   const PhysicalChain pc = physical_chain(design);
   ExactSegmentState st;
-  accumulate_chain(design,
-                   point.chain,
-                   point.unknowns,
-                   pc.flexible_pivot,
-                   point.m0,
-                   point.Nx,
-                   point.Ny,
-                   point.length_scale,
-                   point.EI_scale,
-                   shape_points,
-                   st);
-  if (!point.coupler_chain.segments.empty()) {
-    // The coupler chain's frame is the root frame turned by pi about the slider: its tip load
-    // (the crank's push on the coupler, -N, turned by pi) is +N in that frame.
+  const auto accumulate = [&](const SegmentChain& chain,
+                              const std::vector<double>& unknowns,
+                              const std::vector<int>& pivots,
+                              double m0) {
     accumulate_chain(design,
-                     point.coupler_chain,
-                     point.coupler_unknowns,
-                     pc.coupler_flexible_pivot,
-                     point.coupler_m0,
+                     chain,
+                     unknowns,
+                     pivots,
+                     m0,
                      point.Nx,
                      point.Ny,
                      point.length_scale,
                      point.EI_scale,
                      shape_points,
                      st);
+  };
+  accumulate(point.chain, point.unknowns, pc.flexible_pivot, point.m0);
+  if (!point.coupler_chain.segments.empty()) {
+    // The coupler chain's frame is the root frame turned by pi about the slider: its tip load
+    // (the crank's push on the coupler, -N, turned by pi) is +N in that frame.
+    accumulate(
+        point.coupler_chain, point.coupler_unknowns, pc.coupler_flexible_pivot, point.coupler_m0);
   }
   return st;
 }

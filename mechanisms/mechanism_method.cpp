@@ -85,31 +85,19 @@ MechanismMethodChoice choose_mechanism_method(const MechanismDesign& design,
     } catch (const InvalidInput&) {
     }
     const double expected = kPrbmErrorMargin * measured;
-    if (expected <= tolerance) {
-      c = {false,
-           "prbm",
-           fmt::format("auto: PRBM force error measured {:.3g} for {} designs, x{} margin = {:.3g} "
-                       "<= tol {:.3g}",
-                       measured,
-                       design.paper_config.empty() ? design.config
-                                                   : design.paper_config + " (" +
-                                                         spring_rule_name(design.spring_rule) + ")",
-                       kPrbmErrorMargin,
-                       expected,
-                       tolerance)};
-    } else {
-      c = {true,
-           "exact",
-           fmt::format("auto: PRBM force error measured {:.3g} for {} designs, x{} margin = {:.3g} "
-                       "> tol {:.3g}",
-                       measured,
-                       design.paper_config.empty() ? design.config
-                                                   : design.paper_config + " (" +
-                                                         spring_rule_name(design.spring_rule) + ")",
-                       kPrbmErrorMargin,
-                       expected,
-                       tolerance)};
-    }
+    const bool prbm_suffices = expected <= tolerance;
+    c = {!prbm_suffices,
+         prbm_suffices ? "prbm" : "exact",
+         fmt::format("auto: PRBM force error measured {:.3g} for {} designs, x{} margin = {:.3g} "
+                     "{} tol {:.3g}",
+                     measured,
+                     design.paper_config.empty()
+                         ? design.config
+                         : design.paper_config + " (" + spring_rule_name(design.spring_rule) + ")",
+                     kPrbmErrorMargin,
+                     expected,
+                     prbm_suffices ? "<=" : ">",
+                     tolerance)};
   }
   if (c.exact && exact_support(design) == ExactSupport::kPrbmOnly) {
     c = {false, "prbm", c.reason + "; but this design has no exact model, so the PRBM is used"};

@@ -184,14 +184,7 @@ BeamSolution solve_numerical_forward(BeamMethod method,
     }
     solution.limit_points = r.limit_points;
     solution.first_limit_load_factor = r.first_limit_load_factor;
-    if (r.limit_points > 0) {
-      solution.branch += fmt::format(
-          "; the path passed {} limit point{}: under load control the beam would snap at the "
-          "first, at load factor {:.6g}",
-          r.limit_points,
-          r.limit_points == 1 ? "" : "s",
-          r.first_limit_load_factor);
-    }
+    solution.branch += limit_points_note(r.limit_points, r.first_limit_load_factor);
     solution.inflection_points = count_curvature_sign_changes(r.shape);
     if (shape_points > 0 && r.converged()) solution.shape = resample(r.shape, shape_points);
   } else {
@@ -285,26 +278,23 @@ SegmentChain BeamProblem::to_chain(double alpha2) const {
   c.prescribed = prescribed;
   // A prescribed coordinate takes the place of its conjugate load (segment_chain.h).
   const PrescribedMask mask = prescribed_mask(boundary);
-  if (mask.x && c.tip_load.Fx != 0.0) {
+  const auto refuse_load = [&](bool prescribed,
+                               double load,
+                               const char* coordinate,
+                               const char* load_name,
+                               const char* reaction) {
+    if (!prescribed || load == 0.0) return;
     throw InvalidInput(fmt::format(
-        "a {} end prescribes the tip x, so the horizontal load n alpha2 must be 0 (got {:g})",
+        "a {} end prescribes the tip {}, so the {} must be 0 (got {:g}); the {} is an output",
         to_string(boundary),
-        c.tip_load.Fx));
-  }
-  if (mask.y && c.tip_load.Fy != 0.0) {
-    throw InvalidInput(fmt::format(
-        "a {} end prescribes the tip y, so the transverse load alpha2 must be 0 (got {:g}); the "
-        "vertical reaction is an output",
-        to_string(boundary),
-        c.tip_load.Fy));
-  }
-  if (mask.theta && c.tip_load.M != 0.0) {
-    throw InvalidInput(fmt::format(
-        "a {} end prescribes the tip angle, so the end moment mu must be 0 (got {:g}); the end "
-        "moment is an output",
-        to_string(boundary),
-        c.tip_load.M));
-  }
+        coordinate,
+        load_name,
+        load,
+        reaction));
+  };
+  refuse_load(mask.x, c.tip_load.Fx, "x", "horizontal load n alpha2", "horizontal reaction");
+  refuse_load(mask.y, c.tip_load.Fy, "y", "transverse load alpha2", "vertical reaction");
+  refuse_load(mask.theta, c.tip_load.M, "angle", "end moment mu", "end moment");
   c.validate();
   return c;
 }

@@ -38,6 +38,19 @@ hid_t check(hid_t id, const std::string& what) {
   return id;
 }
 
+// A dataset opened for reading, with its number of elements.
+struct OpenDataset {
+  OpenDataset(hid_t group, const std::string& name, const std::string& where)
+      : set(check(H5Dopen2(group, name.c_str(), H5P_DEFAULT),
+                  where + ": missing dataset '" + name + "'"),
+            H5Dclose),
+        space(check(H5Dget_space(set.get()), where + "/" + name + ": no dataspace"), H5Sclose),
+        count(H5Sget_simple_extent_npoints(space.get())) {}
+  Handle set;
+  Handle space;
+  hssize_t count;
+};
+
 std::vector<std::string> child_names(hid_t group, const std::string& where) {
   std::vector<std::string> names;
   auto collect = [](hid_t, const char* name, const H5L_info_t*, void* data) -> herr_t {
@@ -63,12 +76,9 @@ std::vector<T> read_numeric(hid_t group,
                             const std::string& name,
                             hid_t mem_type,
                             const std::string& where) {
-  const Handle set(
-      check(H5Dopen2(group, name.c_str(), H5P_DEFAULT), where + ": missing dataset '" + name + "'"),
-      H5Dclose);
-  const Handle space(check(H5Dget_space(set.get()), where + "/" + name + ": no dataspace"),
-                     H5Sclose);
-  const hssize_t count = H5Sget_simple_extent_npoints(space.get());
+  const OpenDataset data(group, name, where);
+  const Handle& set = data.set;
+  const hssize_t count = data.count;
   if (count < 0) throw Hdf5Error(where + "/" + name + ": bad dataspace");
   std::vector<T> values(static_cast<std::size_t>(count));
   if (count > 0 && H5Dread(set.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0) {
@@ -80,12 +90,9 @@ std::vector<T> read_numeric(hid_t group,
 std::vector<std::string> read_strings(hid_t group,
                                       const std::string& name,
                                       const std::string& where) {
-  const Handle set(
-      check(H5Dopen2(group, name.c_str(), H5P_DEFAULT), where + ": missing dataset '" + name + "'"),
-      H5Dclose);
-  const Handle space(check(H5Dget_space(set.get()), where + "/" + name + ": no dataspace"),
-                     H5Sclose);
-  const hssize_t count = H5Sget_simple_extent_npoints(space.get());
+  const OpenDataset data(group, name, where);
+  const Handle& set = data.set;
+  const hssize_t count = data.count;
   const Handle type(check(H5Tcopy(H5T_C_S1), "string type"), H5Tclose);
   H5Tset_size(type.get(), H5T_VARIABLE);
   H5Tset_cset(type.get(), H5T_CSET_UTF8);

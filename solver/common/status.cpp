@@ -1,19 +1,26 @@
 #include "flexure/solver/common/status.h"
 
+#include <fmt/format.h>
+
+#include <array>
+
 namespace flexure {
 
 std::string_view termination_name(Termination termination) {
-  switch (termination) {
-    case Termination::kConverged:
-      return "converged";
-    case Termination::kNoConvergence:
-      return "no_convergence";
-    case Termination::kLimitPoint:
-      return "limit_point";
-    case Termination::kInvalidInput:
-      return "invalid_input";
-  }
-  return "no_convergence";
+  // In the order of the enum.
+  static constexpr std::array<std::string_view, 4> kNames = {
+      "converged", "no_convergence", "limit_point", "invalid_input"};
+  return kNames.at(static_cast<std::size_t>(termination));
+}
+
+std::string limit_points_note(int limit_points, double first_limit_load_factor) {
+  if (limit_points <= 0) return {};
+  return fmt::format(
+      "; the path passed {} limit point{}: under load control the beam would snap at the first, "
+      "at load factor {:.6g}",
+      limit_points,
+      limit_points == 1 ? "" : "s",
+      first_limit_load_factor);
 }
 
 }  // namespace flexure

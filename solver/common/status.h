@@ -21,6 +21,10 @@ enum class Termination {
 // values of the JSON key "termination").
 std::string_view termination_name(Termination termination);
 
+// "; the path passed N limit point(s): under load control the beam would snap at the first, at
+// load factor X", or "" without limit points: the note every continuation adds to its branch text.
+std::string limit_points_note(int limit_points, double first_limit_load_factor);
+
 struct SolveStatus {
   Termination termination = Termination::kNoConvergence;
   std::string message;    // what stopped the solve and how far it got; empty or a note on success

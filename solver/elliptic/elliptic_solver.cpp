@@ -137,14 +137,7 @@ EllipticResult EllipticSolver::solve(const EndLoad& load) const {
       r.branch_kind = EllipticBranch::kProportionalContinued;
       r.branch =
           fmt::format("proportional loading (pseudo-arclength continuation, {} steps)", c.steps);
-      if (c.limit_points > 0) {
-        r.branch += fmt::format(
-            "; the path passed {} limit point{}: under load control the beam would snap at the "
-            "first, at load factor {:.6g}",
-            c.limit_points,
-            c.limit_points == 1 ? "" : "s",
-            c.first_limit_load_factor);
-      }
+      r.branch += limit_points_note(c.limit_points, c.first_limit_load_factor);
     } else {
       r.message = c.message;
     }
