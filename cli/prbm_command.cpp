@@ -1,5 +1,6 @@
 // `flexure prbm`: pseudo-rigid-body constants derived from the exact solution, the book's tables
-// beside them, and PRBM-vs-exact comparisons (docs/prbm.md).
+// beside them, and PRBM-vs-exact comparisons (docs/prbm.md). The comparison itself is the library's
+// (benchmarks/studies/prbm_comparison.h); this file parses, calls and prints.
 //
 //   flexure prbm derive  --segment fixed-pinned --n N [--step DEG] [--theta-max-K DEG] [--json]
 //   flexure prbm derive  --segment end-moment [--json]
@@ -11,8 +12,6 @@
 //   flexure prbm compare ... --range START:STOP:COUNT   (a sweep of alpha2 or mu, one row per load)
 #include <fmt/format.h>
 
-#include <cmath>
-#include <functional>
 #include <iostream>
 #include <memory>
 #include <numbers>
@@ -20,14 +19,12 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "flexure/elements/end_moment_segment.h"
-#include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/benchmarks/studies/prbm_comparison.h"
 #include "flexure/elements/initially_curved_cantilever.h"
 #include "flexure/elements/prbm_curve_fits.h"
 #include "flexure/elements/prbm_derivation.h"
 #include "flexure/elements/prbm_tables.h"
 #include "flexure/solver/common/errors.h"
-#include "flexure/solver/elliptic/elliptic_solver.h"
 
 namespace flexure::cli {
 namespace {
@@ -345,108 +342,32 @@ void run_table(const PrbmArgs& args) {
       args.segment));
 }
 
-// PRBM and exact tips for one load, and the errors between them.
-struct Comparison {
-  double load = 0.0;  // the given alpha2 or mu
-  TipPose exact;
-  TipPose prbm;
-  double Theta = 0.0;               // PRB angle under the load
-  double Theta_exact = 0.0;         // PRB angle of the exact tip (eq. 5.42)
-  double position_error = 0.0;      // |PRBM tip - exact tip| / exact deflection, same load
-  double path_error = 0.0;          // eq. 5.47 at the exact tip: the 0.5 % criterion quantity
-  double load_prbm_at_exact = 0.0;  // load the PRBM needs to reach the exact tip's Theta
-  double force_error = 0.0;         // (load_prbm_at_exact - load) / load
-  bool inside_position = false;     // Theta <= Theta_max(gamma)
-  bool inside_force = false;        // Theta <= Theta_max(K_theta)
-};
-
-// The PRBM of one segment type and the exact solution it is compared with.
-struct ComparedModel {
-  std::string constants;  // where the PRB constants come from
-  ValidityLimits limits;
-  std::function<Comparison(double)> at;  // comparison at one load value
-};
-
-void finish(Comparison& c, double gamma, const ValidityLimits& limits) {
-  const double deflection = std::hypot(1.0 - c.exact.a_over_l, c.exact.b_over_l);
-  require_finite_result(deflection, "exact tip deflection");
-  const PathSample sample{c.exact.theta0, c.exact.a_over_l, c.exact.b_over_l, c.load};
-  c.Theta_exact = prb_angle(sample, gamma);
-  c.path_error = relative_position_error(sample, gamma);
-  c.position_error =
-      std::hypot(c.prbm.a_over_l - c.exact.a_over_l, c.prbm.b_over_l - c.exact.b_over_l) /
-      deflection;
-  c.force_error = (c.load_prbm_at_exact - c.load) / c.load;
-  c.inside_position = c.Theta <= limits.theta_max_position;
-  c.inside_force = c.Theta <= limits.theta_max_force;
-}
-
-ComparedModel fixed_pinned_model(const PrbmArgs& args) {
+// The fixed-pinned comparison's flags, checked here so that the messages name them (the library
+// checks the same quantities, benchmarks/studies/prbm_comparison.h).
+PrbmComparator fixed_pinned_comparator(const PrbmArgs& args) {
   require_in_range(args.load_ratio_n, "--n (load ratio)", -5.0, 10.0);
-  FixedPinnedConstants constants;
-  if (args.constants == "table") {
-    constants = FixedPinnedConstants::from_table(args.load_ratio_n);
-  } else if (args.constants == "fits") {
-    constants = FixedPinnedConstants::from_curve_fits(args.load_ratio_n);
-  } else if (args.constants == "derived") {
-    const PrbmDerivation d = derive_fixed_pinned(args.load_ratio_n, derivation_options(args));
-    require_converged(d);
-    constants = {args.load_ratio_n,
-                 d.gamma,
-                 d.c_theta,
-                 d.K_theta,
-                 d.theta_max_gamma,
-                 d.theta_max_K,
-                 "derived from the exact solution"};
-  } else {
-    throw InvalidInput(fmt::format(
-        "--constants = '{}' is not allowed; allowed: table, fits, derived", args.constants));
+  PrbmConstantsSource source = PrbmConstantsSource::kTable;
+  try {
+    source = prbm_constants_source_from_string(args.constants);
+  } catch (const InvalidInput&) {
+    throw InvalidInput(fmt::format("--constants = '{}' is not allowed; allowed: {}",
+                                   args.constants,
+                                   fmt::join(kPrbmConstantsSourceNames, ", ")));
   }
-  auto element = std::make_shared<FixedPinnedSegment>(constants);
-  const double n = args.load_ratio_n;
-  ComparedModel model{constants.source, element->limits(), {}};
-  model.at = [element, n](double alpha2) {
-    require_in_range(alpha2, "--alpha2 (P l^2/EI)", 1e-9, 1e4);
-    const EllipticResult exact = EllipticSolver().solve(EndLoad::howell(n, alpha2));
-    if (!exact.converged()) throw NoConvergence("exact elliptic solve failed: " + exact.message);
-    const PrbEquilibrium eq = element->solve(EndLoad::howell(n, alpha2));
-    if (!eq.converged()) throw NoConvergence("PRBM equilibrium failed: " + eq.message);
-    Comparison c;
-    c.load = alpha2;
-    c.exact = exact.tip;
-    c.prbm = eq.tip;
-    c.Theta = eq.Theta;
-    const double gamma = element->constants().gamma;
-    c.load_prbm_at_exact = element->alpha2_at(
-        prb_angle({exact.tip.theta0, exact.tip.a_over_l, exact.tip.b_over_l, alpha2}, gamma));
-    finish(c, gamma, element->limits());
-    return c;
-  };
-  return model;
+  return PrbmComparator::fixed_pinned(args.load_ratio_n, source, derivation_options(args));
 }
 
-ComparedModel end_moment_model() {
-  auto element = std::make_shared<EndMomentSegment>();
-  ComparedModel model{"eqs. 5.107-5.110", element->limits(), {}};
-  model.at = [element](double mu) {
-    require_in_range(mu, "--mu (M l/EI)", 1e-9, 6.0);
-    Comparison c;
-    c.load = mu;
-    c.exact = {std::sin(mu) / mu, (1.0 - std::cos(mu)) / mu, mu};  // circle, eqs. 2.59, 2.64
-    const PrbEquilibrium eq = element->solve(EndLoad{0.0, 0.0, mu});
-    if (!eq.converged()) throw NoConvergence("PRBM equilibrium failed: " + eq.message);
-    c.prbm = eq.tip;
-    c.Theta = eq.Theta;
-    const double gamma = element->constants().gamma;
-    c.load_prbm_at_exact = element->stiffness_coefficient() *
-                           prb_angle({mu, c.exact.a_over_l, c.exact.b_over_l, mu}, gamma);
-    finish(c, gamma, element->limits());
-    return c;
-  };
-  return model;
+// The comparison at one load value, its flag checked first.
+PrbmComparison compare_at(const PrbmComparator& comparator, double load) {
+  if (comparator.segment() == PrbmComparator::Segment::kFixedPinned) {
+    require_in_range(load, "--alpha2 (P l^2/EI)", 1e-9, 1e4);
+  } else {
+    require_in_range(load, "--mu (M l/EI)", 1e-9, 6.0);
+  }
+  return comparator.at(load);
 }
 
-Json comparison_json(const Comparison& c) {
+Json comparison_json(const PrbmComparison& c) {
   return {{"load", c.load},
           {"exact",
            {{"a_over_l", c.exact.a_over_l},
@@ -473,7 +394,7 @@ void run_compare(const PrbmArgs& args) {
     throw InvalidInput(fmt::format(
         "--segment = '{}' cannot be compared; allowed: fixed-pinned, end-moment", args.segment));
   }
-  const ComparedModel model = force ? fixed_pinned_model(args) : end_moment_model();
+  const PrbmComparator model = force ? fixed_pinned_comparator(args) : PrbmComparator::end_moment();
   const char* load_name = force ? "alpha2" : "mu";
   const bool ranged = !args.range.empty();
   const Range range = ranged ? parse_range(args.range, "--range", 10'000)
@@ -482,12 +403,12 @@ void run_compare(const PrbmArgs& args) {
   Json head;
   head["segment"] = args.segment;
   if (force) head["n"] = args.load_ratio_n;
-  head["constants"] = model.constants;
-  head["theta_max_position_deg"] = model.limits.theta_max_position / kDeg;
-  head["theta_max_force_deg"] = model.limits.theta_max_force / kDeg;
+  head["constants"] = model.constants_source();
+  head["theta_max_position_deg"] = model.limits().theta_max_position / kDeg;
+  head["theta_max_force_deg"] = model.limits().theta_max_force / kDeg;
 
   if (!ranged) {
-    const Comparison c = model.at(range.start);
+    const PrbmComparison c = compare_at(model, range.start);
     if (args.json) {
       Json j = head;
       j[load_name] = c.load;
@@ -498,7 +419,7 @@ void run_compare(const PrbmArgs& args) {
       print_json(j);
       return;
     }
-    fmt::print("{} ({}), {} = {}\n", args.segment, model.constants, load_name, c.load);
+    fmt::print("{} ({}), {} = {}\n", args.segment, model.constants_source(), load_name, c.load);
     fmt::print("  exact: a/l = {:.6f}  b/l = {:.6f}  theta0 = {:.6f} rad\n",
                c.exact.a_over_l,
                c.exact.b_over_l,
@@ -518,9 +439,9 @@ void run_compare(const PrbmArgs& args) {
                100.0 * c.force_error);
     fmt::print("  inside validity: position {} (Theta_max = {:.1f} deg), force {} ({:.1f} deg)\n",
                c.inside_position ? "yes" : "NO",
-               model.limits.theta_max_position / kDeg,
+               model.limits().theta_max_position / kDeg,
                c.inside_force ? "yes" : "NO",
-               model.limits.theta_max_force / kDeg);
+               model.limits().theta_max_force / kDeg);
     return;
   }
 
@@ -528,9 +449,9 @@ void run_compare(const PrbmArgs& args) {
   if (!args.json) {
     fmt::print("{} ({}); Theta_max = {:.1f} deg (position), {:.1f} deg (force)\n",
                args.segment,
-               model.constants,
-               model.limits.theta_max_position / kDeg,
-               model.limits.theta_max_force / kDeg);
+               model.constants_source(),
+               model.limits().theta_max_position / kDeg,
+               model.limits().theta_max_force / kDeg);
     fmt::print("{:>10} {:>9} {:>9} {:>10} {:>10} {:>10}  {}\n",
                load_name,
                "Theta",
@@ -541,7 +462,7 @@ void run_compare(const PrbmArgs& args) {
                "inside (pos, force)");
   }
   for (long i = 0; i < range.count; ++i) {
-    const Comparison c = model.at(range.at(i));
+    const PrbmComparison c = compare_at(model, range.at(i));
     if (args.json) {
       points.push_back(comparison_json(c));
       continue;

@@ -64,5 +64,6 @@
 #include "flexure/benchmarks/studies/beam_method.h"
 #include "flexure/benchmarks/studies/beam_problem.h"
 #include "flexure/benchmarks/studies/method_selector.h"
+#include "flexure/benchmarks/studies/prbm_comparison.h"
 #include "flexure/benchmarks/studies/validation_checks.h"
 #include "flexure/benchmarks/studies/validation_problems.h"
