@@ -15,8 +15,8 @@
 //     line on stderr.
 //  5. Output files are written with io::AtomicHdf5File (temp name + rename), opened BEFORE the
 //     solve so that an unwritable path fails fast with exit 2.
-//  6. Method choice for the beam goes through cli/beam_methods.h (solve_beam); a new solver is
-//     plugged in there, not in the commands.
+//  6. Beam problems are solved by the library's solve_beam (benchmarks/studies/beam_problem.h); a
+//     new method is plugged in there (docs/architecture.md), not in the commands.
 // Nested commands (`sweep beam`) use get_or_add_subcommand() so that several files can add
 // children to the same parent.
 #include <fmt/format.h>
