@@ -51,7 +51,6 @@
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/mechanisms/mechanism_method.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/mechanisms/modified_designs.h"
 
@@ -63,6 +62,7 @@
 // problems of `flexure validate`.
 #include "flexure/benchmarks/studies/beam_method.h"
 #include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/benchmarks/studies/mechanism_method.h"
 #include "flexure/benchmarks/studies/method_selector.h"
 #include "flexure/benchmarks/studies/prbm_comparison.h"
 #include "flexure/benchmarks/studies/validation_checks.h"

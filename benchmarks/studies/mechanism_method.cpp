@@ -1,4 +1,4 @@
-#include "flexure/mechanisms/mechanism_method.h"
+#include "flexure/benchmarks/studies/mechanism_method.h"
 
 #include <fmt/format.h>
 

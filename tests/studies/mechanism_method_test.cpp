@@ -2,7 +2,7 @@
 // `flexure mechanism analyze --method auto` against freshly computed PRBM-vs-exact strokes of the
 // built-in designs (the exact model is the independent reference); the choice of auto at loose and
 // tight tolerances; the CLI keys `method` and `method_reason`.
-#include "flexure/mechanisms/mechanism_method.h"
+#include "flexure/benchmarks/studies/mechanism_method.h"
 
 #include <gtest/gtest.h>
 
