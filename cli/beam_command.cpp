@@ -190,6 +190,13 @@ Json to_json(const BeamProblem& problem, const BeamSolution& solution) {
   out["reactions"] = Json{{"Fx", solution.reactions.Fx + 0.0},
                           {"Fy", solution.reactions.Fy + 0.0},
                           {"M", solution.reactions.M + 0.0}};
+  if (solution.method == BeamMethod::kPrbm) {
+    // PRBM validity as a result, not a phrase: the PRB angle, the limit and the verdict.
+    out["within_validity"] = solution.prbm_inside_validity;
+    out["Theta"] = solution.prbm_Theta;
+    out["theta_max"] = solution.prbm_theta_max;
+    out["validity_source"] = solution.prbm_limits_source;
+  }
   if (solution.method == BeamMethod::kChain) {
     out["elements"] = solution.elements;
     out["increments"] = solution.increments;
@@ -208,12 +215,27 @@ void run_beam(const BeamArgs& args) {
   const BeamProblem problem = make_problem(args);
   const BeamSolution solution = solve_beam(beam_method_from_string(args.method), problem);
   if (!solution.converged()) {
-    throw NoConvergence(
+    // What was reached, for the JSON error object (null where it is not a number).
+    Json reached;
+    reached["method"] = to_string(solution.method);
+    reached["method_reason"] = solution.method_reason;
+    reached["termination"] = termination_name(solution.termination);
+    reached["iterations"] = solution.iterations;
+    reached["load_factor"] = solution.load_factor;
+    reached["alpha2"] = solution.alpha2;
+    if (std::isfinite(solution.target_residual)) {
+      reached["target_residual"] = solution.target_residual;
+    }
+    for (auto& [key, value] : reached.items()) {
+      if (value.is_number_float() && !std::isfinite(value.get<double>())) value = nullptr;
+    }
+    throw NoConvergenceReport(
         fmt::format("method '{}' found no converged solution after {} iterations: {}. {}",
                     to_string(solution.method),
                     solution.iterations,
                     solution.message.empty() ? "no message" : solution.message,
-                    other_methods_hint(solution.method)));
+                    other_methods_hint(solution.method)),
+        std::move(reached));
   }
   require_finite_result(solution.alpha2, "alpha2");
   require_finite_result(solution.tip.a_over_l, "a/l");
@@ -224,6 +246,15 @@ void run_beam(const BeamArgs& args) {
                                     to_string(solution.method),
                                     solution.shape.size(),
                                     problem.shape_points));
+  }
+  if (solution.method == BeamMethod::kPrbm && !solution.prbm_inside_validity) {
+    std::cerr << fmt::format(
+        "flexure: warning: the PRB angle Theta = {:.1f} deg is outside the validity limit {:.1f} "
+        "deg ({}); the PRBM tip and force are not trusted here (--method elliptic or shooting "
+        "is exact)\n",
+        std::fabs(solution.prbm_Theta) * 180.0 / std::numbers::pi,
+        solution.prbm_theta_max * 180.0 / std::numbers::pi,
+        solution.prbm_limits_source);
   }
   if (args.json) {
     print_json(to_json(problem, solution));  // refuses NaN/Inf anywhere, e.g. in the shape

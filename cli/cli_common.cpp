@@ -14,6 +14,7 @@ namespace flexure::cli {
 namespace {
 
 int g_exit_code = kExitOk;
+bool g_json_printed = false;  // print_json ran: a failure after it prints no second object
 
 // Error messages must stay on one line even when they quote user input or library text.
 std::string one_line(std::string text) {
@@ -25,6 +26,24 @@ std::string one_line(std::string text) {
 }
 
 void report(const std::string& message) { std::cerr << "flexure: " << one_line(message) << '\n'; }
+
+bool wants_json(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--json") return true;
+  }
+  return false;
+}
+
+// The JSON error object of a failed command run with --json (one line on stdout).
+void report_json(const std::string& message, int code, const Json& reached = Json::object()) {
+  if (g_json_printed) return;
+  Json error;
+  error["error"] = one_line(message);
+  error["exit_code"] = code;
+  for (const auto& [key, value] : reached.items()) error[key] = value;
+  std::cout << error.dump() << '\n';
+  std::cout.flush();
+}
 
 // Depth-first search for the first non-finite number; returns its JSON pointer or "".
 std::string find_non_finite(const Json& node, const std::string& where) {
@@ -70,6 +89,13 @@ int exit_code() { return g_exit_code; }
 
 int run_app(CLI::App& app, int argc, char** argv) {
   g_exit_code = kExitOk;
+  g_json_printed = false;
+  const bool json = wants_json(argc, argv);
+  const auto fail = [&](const std::string& message, int code, const Json& reached) {
+    report(message);
+    if (json) report_json(message, code, reached);
+    return code;
+  };
   try {
     app.parse(argc, argv);
     return g_exit_code;
@@ -81,17 +107,17 @@ int run_app(CLI::App& app, int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     // CLI11 reports missing, conflicting, unknown and non-numeric arguments here.
-    report(fmt::format("{} (run 'flexure --help' for the allowed arguments)", e.what()));
-    return kExitInvalidInput;
+    return fail(fmt::format("{} (run 'flexure --help' for the allowed arguments)", e.what()),
+                kExitInvalidInput,
+                Json::object());
   } catch (const InvalidInput& e) {
-    report(e.what());
-    return kExitInvalidInput;
+    return fail(e.what(), kExitInvalidInput, Json::object());
+  } catch (const NoConvergenceReport& e) {
+    return fail(e.what(), kExitNoConvergence, e.reached());
   } catch (const NoConvergence& e) {
-    report(e.what());
-    return kExitNoConvergence;
+    return fail(e.what(), kExitNoConvergence, Json::object());
   } catch (const std::exception& e) {
-    report(fmt::format("error: {}", e.what()));
-    return kExitInternal;
+    return fail(fmt::format("error: {}", e.what()), kExitInternal, Json::object());
   }
 }
 
@@ -103,6 +129,7 @@ void print_json(const Json& object) {
   }
   std::cout << object.dump() << '\n';
   std::cout.flush();
+  g_json_printed = true;
 }
 
 void require_finite_result(double value, const std::string& what) {

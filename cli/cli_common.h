@@ -3,7 +3,9 @@
 // JSON output that refuses NaN/Inf, and START:STOP:COUNT ranges.
 //
 // The contract (kept by all later subcommands):
-//  * with --json a command prints exactly ONE JSON object on stdout (print_json);
+//  * with --json a command prints exactly ONE JSON object on stdout (print_json); when it fails,
+//    that object is {"error": message, "exit_code": 2|3|4, ...what was reached} (run_app), so
+//    that scripts never parse stderr;
 //  * errors go to stderr as ONE line naming the offending input and the allowed range;
 //  * exit 0 success, 1 a check failed (validate), 2 invalid input (InvalidInput, CLI11 parse
 //    errors), 3 no converged solution (NoConvergence, or a NaN/Inf about to be printed),
@@ -17,6 +19,9 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
+
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {
 
@@ -42,9 +47,23 @@ CLI::App& get_or_add_subcommand(CLI::App& parent,
 void set_exit_code(int code);
 int exit_code();
 
+// NoConvergence that carries what was reached (load factor, method tried, ...): run_app adds these
+// keys to the JSON error object printed with --json.
+class NoConvergenceReport : public NoConvergence {
+ public:
+  NoConvergenceReport(const std::string& message, Json reached)
+      : NoConvergence(message), reached_(std::move(reached)) {}
+  const Json& reached() const { return reached_; }
+
+ private:
+  Json reached_;
+};
+
 // Parses argv with `app` and runs the selected subcommand's callback. Maps CLI11 parse errors and
 // InvalidInput to 2, NoConvergence to 3, anything else to 4, each as one line on stderr prefixed
-// "flexure: ". --help and --version print to stdout and return 0.
+// "flexure: ". --help and --version print to stdout and return 0. When argv holds --json and the
+// command has not printed its JSON object yet, a failure also prints the JSON error object on
+// stdout: {"error": the message, "exit_code": the code, ...NoConvergenceReport::reached()}.
 int run_app(CLI::App& app, int argc, char** argv);
 
 // Prints `object` as one line of JSON on stdout. Throws NoConvergence naming the key if any

@@ -46,7 +46,7 @@ BeamSolution solve_elliptic(const BeamProblem& problem) {
   }
   BeamSolution solution;
   solution.method = BeamMethod::kElliptic;
-  solution.set_converged(result.converged());
+  solution.termination = result.termination;
   solution.message = result.message;
   solution.iterations = result.iterations;
   // Howell's alpha2 is the transverse component P l^2/EI = Fy (eq. 2.83, EndLoad::howell).
@@ -100,6 +100,8 @@ BeamSolution solve_prbm(const BeamProblem& problem) {
                                 prbm.Theta,
                                 prbm.inside_validity ? "inside" : "OUTSIDE");
   solution.prbm_Theta = prbm.Theta;
+  solution.prbm_theta_max = prbm.limits.theta_max();
+  solution.prbm_limits_source = prbm.limits.source;
   solution.prbm_inside_validity = prbm.inside_validity;
   solution.root_moment = prbm.root_moment;
   solution.inflection_points = prbm.inflection_points;
@@ -156,7 +158,7 @@ BeamSolution solve_numerical_forward(BeamMethod method,
     ShootingSolver::Options options;
     options.shape_points = std::max(shape_points, 401);
     const ShootingResult r = solve_shooting(chain, options);
-    solution.set_converged(r.converged());
+    solution.termination = r.termination;
     solution.message = r.message;
     solution.iterations = r.iterations;
     solution.tip = r.tip_pose(length);
@@ -193,7 +195,7 @@ BeamSolution solve_numerical_forward(BeamMethod method,
     options.increments = problem.increments;
     options.variant = problem.chain_variant;
     const ChainResult r = solve_chain(chain, options);
-    solution.set_converged(r.converged());
+    solution.termination = r.termination;
     solution.message = r.message;
     solution.iterations = r.iterations;
     solution.tip = r.tip_pose;
@@ -342,6 +344,20 @@ BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem) {
       break;
     case BeamMethod::kAuto:
       throw InvalidInput("auto did not resolve to a method");  // resolve_beam_method never does
+  }
+  if (method == BeamMethod::kAuto && !solution.converged() &&
+      used.method != BeamMethod::kShooting) {
+    // auto falls back instead of giving up: the shooting method applies to every problem.
+    BeamSolution fallback = solve_numerical(BeamMethod::kShooting, problem);
+    used = {
+        BeamMethod::kShooting,
+        fmt::format("{}; the {} method did not converge ({}), so the shooting method was tried: "
+                    "{}",
+                    used.reason,
+                    to_string(used.method),
+                    solution.message,
+                    fallback.converged() ? "it answered" : "it did not converge either")};
+    solution = std::move(fallback);
   }
   solution.method_reason = used.reason;
   return solution;

@@ -72,8 +72,12 @@ struct BeamSolution : SolveStatus {
   // control at the first); elliptic and shooting only.
   int limit_points = 0;
   double first_limit_load_factor = 0.0;
-  // PRBM only: the PRB angle (rad) and whether it is inside the element's validity limits.
+  // PRBM only: the PRB angle (rad), the validity limit it is checked against (rad, the smaller of
+  // Theta_max(gamma) and Theta_max(K_theta), Howell eqs. 5.47 and 5.63), where that limit comes
+  // from, and whether |Theta| is within it.
   double prbm_Theta = 0.0;
+  double prbm_theta_max = 0.0;
+  std::string prbm_limits_source;
   bool prbm_inside_validity = false;
 };
 
@@ -91,7 +95,9 @@ BeamMethod resolve_beam_method(BeamMethod method);
 
 // Solves `problem` with `method`. Throws InvalidInput for bad input or a problem the method does
 // not solve (OutsideMethodDomain for a load beyond its range); a failed solve returns converged()
-// false and a message. With kAuto, a load beyond the elliptic solver's range goes to shooting.
+// false and a message. With kAuto, a load beyond the elliptic solver's range, or a solve of the
+// chosen method that does not converge, goes to the shooting method (it follows the load path past
+// limit points); method_reason then says which method answered and why.
 BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem);
 
 }  // namespace flexure

@@ -6,10 +6,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -90,6 +92,15 @@ inline const std::vector<std::string>& mechanism_analyze_contract_keys() {
                                                 "max_stress",
                                                 "safety_factor"};
   return keys;
+}
+
+// After a failure stdout holds no result: it is empty, or (with --json) exactly one line, the JSON
+// error object {"error": ..., "exit_code": the process's exit code, ...}.
+inline bool no_result_on_stdout(const CommandResult& r) {
+  if (r.out.empty()) return true;
+  if (std::count(r.out.begin(), r.out.end(), '\n') != 1) return false;
+  const nlohmann::json j = nlohmann::json::parse(r.out, nullptr, false);
+  return j.is_object() && j.contains("error") && j.value("exit_code", -1) == r.exit_code;
 }
 
 inline int count_lines(const std::string& text) {
