@@ -292,7 +292,7 @@ void register_beam_command(CLI::App& app) {
                    "Far end: free (loads given), guided (tip angle prescribed), pinned (tip x, y "
                    "prescribed), slider (tip y prescribed), fixed (all prescribed)")
       ->default_str("free")
-      ->check(CLI::IsMember({"free", "guided", "pinned", "slider", "fixed"}));
+      ->transform(CLI::IsMember({"free", "guided", "pinned", "slider", "fixed"}, CLI::ignore_case));
   args->tip_x_option = beam->add_option(
       "--tip-x", args->tip_x, "Prescribed tip x/l (pinned, fixed; default: unloaded tip)");
   args->tip_y_option = beam->add_option(
@@ -307,7 +307,7 @@ void register_beam_command(CLI::App& app) {
       ->default_str("10");
   beam->add_option("--chain-variant", args->chain_variant, "Chain algorithm: howell | corrected")
       ->default_str("corrected")
-      ->check(CLI::IsMember({"howell", "corrected"}));
+      ->transform(CLI::IsMember({"howell", "corrected"}, CLI::ignore_case));
   args->chain_option = beam->add_option(
       "--chain", args->chain_file, "Segment chain from a TOML file (docs/chain-toml.md)");
   args->shape_option = beam->add_option(

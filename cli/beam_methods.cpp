@@ -13,8 +13,9 @@ void add_method_option(CLI::App& command, std::string& method) {
                   "Solution method: auto (the cheapest within --tol: PRBM, elliptic or shooting), "
                   "elliptic, shooting, chain, prbm")
       ->default_str("auto")
-      ->check(CLI::IsMember(
-          std::vector<std::string>(kBeamMethodNames.begin(), kBeamMethodNames.end())));
+      ->transform(
+          CLI::IsMember(std::vector<std::string>(kBeamMethodNames.begin(), kBeamMethodNames.end()),
+                        CLI::ignore_case));
 }
 
 std::string other_methods_hint(BeamMethod failed_method) {

@@ -25,9 +25,9 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "flexure/version.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/solver/common/gsl_guard.h"
+#include "flexure/version.h"
 
 int main(int argc, char** argv) {
   flexure::disable_gsl_abort();
@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
   flexure::cli::register_mechanism_command(app);
   flexure::cli::register_dynamics_command(app);
   flexure::cli::register_bench_command(app);
+  flexure::cli::register_help_command(app);
 
   return flexure::cli::run_app(app, argc, argv);
 }

@@ -13,6 +13,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/slow_progress.h"
+#include "flexure/benchmarks/studies/mechanism_method.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/mechanism_toml.h"
 #include "flexure/io/output_path.h"
@@ -22,7 +23,6 @@
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/benchmarks/studies/mechanism_method.h"
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/mechanisms/modified_springs.h"
 #include "flexure/solver/common/errors.h"
@@ -436,7 +436,7 @@ void register_mechanism_command(CLI::App& app) {
                    "auto (PRBM alone when its measured force error x1.5 is within --tol), prbm, "
                    "exact (PRBM and exact)")
       ->default_str("auto")
-      ->check(CLI::IsMember({"auto", "prbm", "exact"}));
+      ->transform(CLI::IsMember({"auto", "prbm", "exact"}, CLI::ignore_case));
   analyze->add_option("--tol", args->tol, "Relative force error allowed by --method auto")
       ->default_str("1e-6");
   analyze->add_option("--spring-rule",
@@ -556,7 +556,8 @@ void register_mechanism_command(CLI::App& app) {
                        "builtin (thesis + modified), thesis (the nine designs), modified "
                        "(paper 004), howell (Howell's Table 10.1 designs), inversions, all")
           ->default_str("builtin")
-          ->check(CLI::IsMember({"builtin", "thesis", "modified", "howell", "inversions", "all"}));
+          ->transform(CLI::IsMember(
+              {"builtin", "thesis", "modified", "howell", "inversions", "all"}, CLI::ignore_case));
   // Combinations that were silently ignored: one output format; --spring-rules has its own
   // designs (the modified ones), stroke and rules.
   markdown_opt->excludes(json_opt);

@@ -195,13 +195,13 @@ void register_path_command(CLI::App& app) {
   path->add_option("--follower", args->follower, "Follower tip force F l^2/EI")->default_str("0");
   path->add_option("--boundary", args->boundary, "free | guided | pinned | slider | fixed")
       ->default_str("free")
-      ->check(CLI::IsMember({"free", "guided", "pinned", "slider", "fixed"}));
+      ->transform(CLI::IsMember({"free", "guided", "pinned", "slider", "fixed"}, CLI::ignore_case));
   args->tip_x_option = path->add_option("--tip-x", args->tip_x, "Prescribed tip x/l");
   args->tip_y_option = path->add_option("--tip-y", args->tip_y, "Prescribed tip y/l");
   args->tip_angle_option = path->add_option("--tip-angle", args->tip_angle, "Prescribed tip angle");
   path->add_option("--method", args->method, "shooting (arc-length continuation) | chain")
       ->default_str("shooting")
-      ->check(CLI::IsMember({"shooting", "chain"}));
+      ->transform(CLI::IsMember({"shooting", "chain"}, CLI::ignore_case));
   path->add_option("--elements", args->elements, "Chain algorithm: elements N")->default_str("100");
   path->add_option("--increments", args->increments, "Chain algorithm: load increments")
       ->default_str("10");

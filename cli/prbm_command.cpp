@@ -25,6 +25,7 @@
 #include "flexure/elements/prbm_derivation.h"
 #include "flexure/elements/prbm_tables.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/names.h"
 
 namespace flexure::cli {
 namespace {
@@ -495,6 +496,7 @@ void register_prbm_command(CLI::App& app) {
   CLI::App* derive = prbm.add_subcommand("derive", "Derive gamma, c_theta, K_theta, Theta_max");
   derive
       ->add_option("--segment", derive_args->segment, "fixed-pinned, end-moment, initially-curved")
+      ->transform([](std::string name) { return to_lower(name); })
       ->default_str("fixed-pinned");
   derive->add_option("--kappa0", derive_args->kappa0, "l/R_i (initially-curved, 0..3)")
       ->default_str("0");
@@ -518,6 +520,7 @@ void register_prbm_command(CLI::App& app) {
   auto table_args = std::make_shared<PrbmArgs>();
   CLI::App* table = prbm.add_subcommand("table", "Book table recomputed beside the book values");
   table->add_option("--segment", table_args->segment, "fixed-pinned, initially-curved, end-moment")
+      ->transform([](std::string name) { return to_lower(name); })
       ->default_str("fixed-pinned");
   table->add_option("--step", table_args->step_deg, "theta0 sampling step, deg")
       ->default_str("0.1");
@@ -536,6 +539,7 @@ void register_prbm_command(CLI::App& app) {
   CLI::App* compare =
       prbm.add_subcommand("compare", "PRBM tip and load against the exact solution");
   compare->add_option("--segment", compare_args->segment, "fixed-pinned or end-moment")
+      ->transform([](std::string name) { return to_lower(name); })
       ->default_str("fixed-pinned");
   compare->add_option("--n", compare_args->load_ratio_n, "Load ratio n (-5..10)")->default_str("0");
   compare->add_option("--alpha2", compare_args->alpha2, "alpha2 = P l^2/EI (fixed-pinned)")

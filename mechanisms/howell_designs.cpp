@@ -10,6 +10,7 @@
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/names.h"
 
 namespace flexure::mechanism {
 namespace {
@@ -26,13 +27,6 @@ constexpr double kLongLength = 203.2e-3;
 constexpr double kLongThickness = 0.125 * 0.0254;
 // Example 1: r2 = 78.74 mm and R = 0.8853, so r2 + r3 = 148.45 mm: the size of the other rows.
 constexpr double kExample1R2 = 78.74e-3;
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) {
-    return static_cast<char>(std::tolower(c));
-  });
-  return s;
-}
 
 // Stroke: the row's Delta x/(r2 + r3), held just inside the toggle position where the row's
 // stroke passes it (2A 0.40: R = 0.4323 toggles at 37.04 %; the thesis clamps the same way).
@@ -161,12 +155,12 @@ const std::vector<MechanismDesign>& howell_mechanisms() {
 }
 
 std::optional<MechanismDesign> find_howell_mechanism(const std::string& name) {
-  const std::string key = lower(name);
+  const std::string key = to_lower(name);
   static const char* const kExamples[3][2] = {{"howell-ex1", "howell-1a-spp-b"},
                                               {"howell-ex2", "howell-1a-lpp-b"},
                                               {"howell-ex3", "howell-3a-sss-a"}};
   for (const MechanismDesign& d : howell_mechanisms()) {
-    const std::string full = lower(d.name);                      // howell-1a-spp-b
+    const std::string full = to_lower(d.name);                   // howell-1a-spp-b
     const std::string short_name = "howell-" + full.substr(10);  // howell-spp-b
     bool match = key == full || key == short_name;
     for (const auto& e : kExamples) match = match || (key == e[0] && full == e[1]);

@@ -7,6 +7,7 @@
 
 #include "flexure/mechanisms/prbm_virtual_work.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/names.h"
 
 namespace flexure::mechanism {
 
@@ -57,10 +58,7 @@ MechanismDesign invert(const MechanismDesign& design) {
 
 std::optional<std::string> inversion_base_name(const std::string& name) {
   if (name.size() > 1 && name.back() == '\'') return name.substr(0, name.size() - 1);
-  std::string lower = name;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) {
-    return static_cast<char>(std::tolower(c));
-  });
+  const std::string lower = to_lower(name);
   const std::string suffix = "-inv";
   if (lower.size() > suffix.size() &&
       lower.compare(lower.size() - suffix.size(), suffix.size(), suffix) == 0) {

@@ -15,6 +15,7 @@
 #include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/names.h"
 
 namespace flexure::mechanism {
 namespace {
@@ -365,17 +366,8 @@ const std::vector<MechanismDesign>& builtin_mechanisms() {
   return designs;
 }
 
-namespace {
-std::string lower_case(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) {
-    return static_cast<char>(std::tolower(c));
-  });
-  return s;
-}
-}  // namespace
-
 MechanismDesign find_builtin_mechanism(const std::string& name) {
-  const std::string key = lower_case(name);
+  const std::string key = to_lower(name);
   // Inversions (inversion.h): NAME' or NAME-inv of any design below, or the mirrored
   // configuration string of a built-in design ("ppl", "1A-ppl" = "1A-lpp'").
   if (const auto base = inversion_base_name(name)) return invert(find_builtin_mechanism(*base));
@@ -383,18 +375,14 @@ MechanismDesign find_builtin_mechanism(const std::string& name) {
     const auto& cfg = d.configuration();
     const std::string mirrored = mirrored_config(d.config);
     if (config_has_inversion(d.config) &&
-        (key == mirrored || key == lower_case(cfg.class_name) + "-" + mirrored)) {
+        (key == mirrored || key == to_lower(cfg.class_name) + "-" + mirrored)) {
       return invert(d);
     }
   }
   if (auto howell = find_howell_mechanism(name)) return *howell;
   std::string names;
   for (const auto& d : builtin_mechanisms()) {
-    std::string lower = d.name;
-    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) {
-      return static_cast<char>(std::tolower(c));
-    });
-    if (key == lower || (d.paper_config.empty() && key == d.config)) return d;
+    if (key == to_lower(d.name) || (d.paper_config.empty() && key == d.config)) return d;
     // A modified design also by its pivot string alone ("lplm"), unique among the eleven.
     if (!d.paper_config.empty() && key == d.paper_config) return d;
     names += (names.empty() ? "" : ", ") + d.name;
@@ -402,11 +390,7 @@ MechanismDesign find_builtin_mechanism(const std::string& name) {
   // Every sub-class of the thesis tables by its name (lpp-b, lps-a95I, ...), sized like the
   // built-in designs.
   for (const cfm::CfmSubclass& row : cfm::thesis_subclasses()) {
-    std::string lower = row.name;
-    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) {
-      return static_cast<char>(std::tolower(c));
-    });
-    if (key == lower) return subclass_design(row, row.name);
+    if (key == to_lower(row.name)) return subclass_design(row, row.name);
   }
   for (const auto& d : howell_mechanisms()) names += ", " + d.name;
   throw InvalidInput(

@@ -12,6 +12,7 @@
 #include "flexure/mechanisms/dynamics/cfsm_designs.h"
 #include "flexure/solver/common/csv_table.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/names.h"
 
 namespace flexure::mechanism {
 namespace {
@@ -25,13 +26,6 @@ constexpr double kTotalLength = 0.160;   // m: L_tot = Lambda r_tot = 160 mm (Ta
 constexpr double kWidth = 25.4e-3;       // m, Table 5 b
 constexpr double kE = 207e9;             // Pa, Table 5 E
 constexpr double kStrokeFraction = 0.4;  // Table 6: 40 % slider displacement of r2 + r3
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) {
-    return static_cast<char>(std::tolower(c));
-  });
-  return s;
-}
 
 // data/paper_tables_2_4.csv: Table 2's n for l segments (1 = EI/L for s, "-" for a pin, stored
 // as 0), Table 4's R and Lambda, as printed.
@@ -158,10 +152,10 @@ const std::vector<ModifiedConfiguration>& modified_configurations() {
 }
 
 const ModifiedConfiguration& find_modified_configuration(const std::string& name) {
-  const std::string key = lower(name);
+  const std::string key = to_lower(name);
   std::string names;
   for (const auto& c : modified_configurations()) {
-    if (key == c.name || key == lower(c.class_name) + "-" + c.name) return c;
+    if (key == c.name || key == to_lower(c.class_name) + "-" + c.name) return c;
     names += (names.empty() ? "" : ", ") + c.class_name + "-" + c.name;
   }
   throw InvalidInput(fmt::format("unknown modified configuration '{}' (allowed: {})", name, names));
@@ -200,7 +194,7 @@ double spring_rule_factor(SpringRule rule, const JointDesign& j) {
 }
 
 SpringRule parse_spring_rule(const std::string& text) {
-  const std::string t = lower(text);
+  const std::string t = to_lower(text);
   if (t == "pure-bending") return SpringRule::kPureBending;
   if (t == "table2") return SpringRule::kTable2;
   if (t == "table5") return SpringRule::kTable5;

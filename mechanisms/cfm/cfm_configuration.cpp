@@ -5,6 +5,7 @@
 #include "flexure/elements/fixed_pinned_segment.h"
 #include "flexure/elements/small_length_flexural_pivot.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/names.h"
 
 namespace flexure::cfm {
 
@@ -40,7 +41,7 @@ const std::vector<CfmConfiguration>& cfm_configurations() {
 
 const CfmConfiguration& find_cfm_configuration(const std::string& name) {
   for (const CfmConfiguration& c : cfm_configurations()) {
-    if (c.name == name) return c;
+    if (same_name(c.name, name)) return c;
   }
   throw InvalidInput(fmt::format(
       "configuration '{}' is unknown; allowed: spp, lpp, psp, plp, ssp, slp, sps, lps, sss", name));

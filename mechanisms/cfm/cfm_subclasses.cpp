@@ -10,14 +10,10 @@
 #include "flexure/mechanisms/data_files.h"
 #include "flexure/solver/common/csv_table.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/names.h"
 
 namespace flexure::cfm {
 namespace {
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char ch) { return std::tolower(ch); });
-  return s;
-}
 
 // "slp-bIO" -> "slp-b": drops the orientation flags I, O, o at the end.
 std::string without_orientation(const std::string& name) {
@@ -169,9 +165,9 @@ const CfmSubclass& find_thesis_subclass(const std::string& name) {
   if (key.size() > 3 && key[2] == '-' && std::isdigit(static_cast<unsigned char>(key[0]))) {
     const std::string class_name = key.substr(0, 2);
     key = key.substr(3);
-    const std::string config = lower(key.substr(0, key.find('-')));
+    const std::string config = to_lower(key.substr(0, key.find('-')));
     const CfmConfiguration& c = find_cfm_configuration(config);
-    if (lower(c.class_name) != lower(class_name)) {
+    if (to_lower(c.class_name) != to_lower(class_name)) {
       throw InvalidInput(fmt::format("sub-class '{}': configuration {} is class {}, not {}",
                                      name,
                                      c.name,
@@ -185,8 +181,8 @@ const CfmSubclass& find_thesis_subclass(const std::string& name) {
   }
   std::vector<const CfmSubclass*> matches;
   for (const CfmSubclass& row : rows) {
-    if (lower(key) == lower(row.name) ||
-        lower(without_orientation(key)) == lower(without_orientation(row.name))) {
+    if (to_lower(key) == to_lower(row.name) ||
+        to_lower(without_orientation(key)) == to_lower(without_orientation(row.name))) {
       matches.push_back(&row);
     }
   }

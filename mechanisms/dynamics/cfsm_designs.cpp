@@ -5,6 +5,7 @@
 #include "flexure/mechanisms/data_files.h"
 #include "flexure/solver/common/csv_table.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/names.h"
 
 namespace flexure::dynamics {
 namespace {
@@ -71,7 +72,7 @@ const std::vector<CfsmDesign>& cfsm_designs() {
 const CfsmDesign& find_cfsm_design(const std::string& name) {
   std::string names;
   for (const CfsmDesign& d : cfsm_designs()) {
-    if (d.name == name) return d;
+    if (same_name(d.name, name)) return d;
     names += (names.empty() ? "" : ", ") + d.name;
   }
   throw InvalidInput(fmt::format("mechanism '{}' is unknown; allowed: {}", name, names));

@@ -182,7 +182,9 @@ TEST(CfmModel, RefusesBadInput) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const std::optional<double> none;
   EXPECT_THROW(model.evaluate({"lpx", 0.8, none, none, 16}), InvalidInput);  // unknown config
-  EXPECT_THROW(model.evaluate({"LPP", 0.8, none, none, 16}), InvalidInput);  // names are lower case
+  // Names match in any case: "LPP" is lpp.
+  EXPECT_EQ(model.evaluate({"LPP", 0.8, none, none, 16}).Phi,
+            model.evaluate({"lpp", 0.8, none, none, 16}).Phi);
   EXPECT_THROW(model.evaluate({"lpp", 0.0, none, none, 16}), InvalidInput);  // R <= 0
   EXPECT_THROW(model.evaluate({"lpp", -1.0, none, none, 16}), InvalidInput);
   EXPECT_THROW(model.evaluate({"lpp", nan, none, none, 16}), InvalidInput);
