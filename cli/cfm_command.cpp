@@ -147,7 +147,8 @@ Json result_json(const CfmResult& r, const CfmOptions& options) {
   j["K2"] = r.K2;
   j["d"] = r.requested_stroke_percent;
   j["Phi"] = r.Phi;
-  j["Xi"] = r.Xi;
+  // Xi = Phi_max/Phi_min is unbounded when the force vanishes: null, not rounding noise.
+  j["Xi"] = force_vanishes(r) ? Json(nullptr) : Json(r.Xi);
   j["percent_constant_force"] = r.percent_constant_force;
   j["stroke_percent"] = r.stroke_percent;
   j["toggle_stroke_percent"] = r.toggle_stroke_percent;
@@ -188,8 +189,7 @@ void warn_if_clamped(const CfmResult& r) {
   if (force_vanishes(r)) {
     fmt::print(stderr,
                "flexure: warning: the force vanishes within the stroke (Phi_min = {:.3g} against "
-               "Phi_max = {:.3g}, zero to rounding): Xi is unbounded, the printed value is "
-               "rounding noise\n",
+               "Phi_max = {:.3g}, zero to rounding): Xi is unbounded and not printed\n",
                r.Phi_min,
                r.Phi_max);
   }
@@ -218,7 +218,11 @@ void print_report(const CfmResult& r, const CfmOptions& options) {
              r.Phi,
              r.class_name == "1B" ? "Phi'" : "Phi",
              r.class_name == "1B" ? "k2" : "k1");
-  fmt::print("  Xi = max/min      = {:.6f}\n", r.Xi);
+  if (force_vanishes(r)) {
+    fmt::print("  Xi = max/min      = unbounded (the force vanishes)\n");
+  } else {
+    fmt::print("  Xi = max/min      = {:.6f}\n", r.Xi);
+  }
   fmt::print("  percent constant  = {:.4f} %\n", r.percent_constant_force);
   fmt::print("  lambda            = {:.5f}\n", r.lambda);
   fmt::print("  beta              = {:.5f}\n", r.beta);

@@ -2,11 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <vector>
 
 #include "flexure/solver/common/errors.h"
 
@@ -26,6 +28,71 @@ std::string one_line(std::string text) {
 }
 
 void report(const std::string& message) { std::cerr << "flexure: " << one_line(message) << '\n'; }
+
+// Levenshtein distance between two short names.
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1] ? 1 : 0)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// For a parse error: the command the arguments were meant for, the nearest flag to each unknown
+// one ("did you mean --alpha2?"), and where its help is.
+std::string parse_error_hint(CLI::App& app, int argc, char** argv) {
+  CLI::App* target = &app;
+  std::string command = app.get_name();
+  std::vector<std::string> flags;
+  for (int i = 1; i < argc; ++i) {
+    const std::string token = argv[i];
+    if (token.rfind("--", 0) == 0) {
+      flags.push_back(token.substr(
+          2, token.find('=') == std::string::npos ? std::string::npos : token.find('=') - 2));
+      continue;
+    }
+    for (CLI::App* child : target->get_subcommands([](CLI::App*) { return true; })) {
+      if (child->get_name() == token) {
+        target = child;
+        command += " " + token;
+        break;
+      }
+    }
+  }
+  std::vector<std::string> known;
+  const auto add_names = [&known](const CLI::App& from) {
+    for (const CLI::Option* option : from.get_options()) {
+      for (const std::string& name : option->get_lnames()) known.push_back(name);
+    }
+  };
+  add_names(*target);
+  // Options in option groups (e.g. beam's exactly-one-of --alpha2, --theta0, --b-over-l).
+  for (CLI::App* child : target->get_subcommands([](CLI::App*) { return true; })) {
+    if (dynamic_cast<CLI::Option_group*>(child) != nullptr) add_names(*child);
+  }
+  std::string hint;
+  for (const std::string& flag : flags) {
+    if (flag.empty() || std::find(known.begin(), known.end(), flag) != known.end()) continue;
+    const std::string* nearest = nullptr;
+    std::size_t best = std::max<std::size_t>(2, flag.size() / 3) + 1;
+    for (const std::string& name : known) {
+      const std::size_t d = edit_distance(flag, name);
+      if (d < best || (d == best && nearest == nullptr && name.rfind(flag, 0) == 0)) {
+        best = d;
+        nearest = &name;
+      }
+    }
+    if (nearest != nullptr) hint += fmt::format("did you mean --{} for --{}? ", *nearest, flag);
+  }
+  return fmt::format("{}run '{} --help' for the allowed arguments", hint, command);
+}
 
 bool wants_json(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
@@ -107,7 +174,7 @@ int run_app(CLI::App& app, int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     // CLI11 reports missing, conflicting, unknown and non-numeric arguments here.
-    return fail(fmt::format("{} (run 'flexure --help' for the allowed arguments)", e.what()),
+    return fail(fmt::format("{} ({})", e.what(), parse_error_hint(app, argc, argv)),
                 kExitInvalidInput,
                 Json::object());
   } catch (const InvalidInput& e) {

@@ -77,11 +77,15 @@ TEST(CfmCli, VanishingForceAtTheToggleIsFlagged) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Json j = parse(r);
   EXPECT_TRUE(j["force_vanishes"].get<bool>());
+  EXPECT_TRUE(j["Xi"].is_null()) << "an unbounded Xi is null, not " << j["Xi"];
   EXPECT_LT(j["percent_constant_force"].get<double>(), 1e-9);
+  const CommandResult text = run_flexure("cfm --config lpp --R 0.3 --d 60");
+  EXPECT_NE(text.out.find("unbounded"), std::string::npos) << text.out;
   EXPECT_NE(r.err.find("force vanishes"), std::string::npos) << r.err;
   const CommandResult ssp = run_flexure("cfm --config ssp --R 0.4323 --K1 0.2237 --d 40 --json");
   ASSERT_EQ(ssp.exit_code, 0) << ssp.err;
   EXPECT_FALSE(parse(ssp)["force_vanishes"].get<bool>());
+  EXPECT_TRUE(parse(ssp)["Xi"].is_number());
 }
 
 TEST(CfmCli, SubclassJsonIncludesPrintedValues) {

@@ -29,6 +29,20 @@ TEST(CliHelp, HelpCommandPrintsTheCommandsHelp) {
   EXPECT_NE(unknown.err.find("beam"), std::string::npos) << unknown.err;
 }
 
+TEST(CliHelp, ParseErrorsSuggestTheNearestFlagAndNameTheCommandsHelp) {
+  const test::CommandResult alpha = run_flexure("beam --alpha 2");
+  EXPECT_EQ(alpha.exit_code, 2);
+  EXPECT_NE(alpha.err.find("did you mean --alpha2"), std::string::npos) << alpha.err;
+  EXPECT_NE(alpha.err.find("'flexure beam --help'"), std::string::npos) << alpha.err;
+  const test::CommandResult points = run_flexure("mechanism analyze 1A-lpp --point 5");
+  EXPECT_EQ(points.exit_code, 2);
+  EXPECT_NE(points.err.find("did you mean --points"), std::string::npos) << points.err;
+  EXPECT_NE(points.err.find("'flexure mechanism analyze --help'"), std::string::npos);
+  // Nothing near: no guess, only the help.
+  const test::CommandResult far = run_flexure("beam --alpha2 1 --zzzzzzzz 3");
+  EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;
+}
+
 // The JSON of `args` with exit 0, without the keys that echo the request.
 Json result(const std::string& args) {
   const test::CommandResult r = run_flexure(args + " --json");
