@@ -79,6 +79,7 @@ void run_sweep_beam(const SweepBeamArgs& args) {
     io::BeamSweepPoint point;
     point.set_converged(solution.converged());
     point.tip = solution.tip;
+    if (solution.method == BeamMethod::kPrbm) point.within_validity = solution.prbm_inside_validity;
     if (!solution.converged()) point.message = std::move(solution.message);
     return point;
   };

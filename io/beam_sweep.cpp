@@ -35,6 +35,7 @@ BeamSweepTable run_beam_sweep(const std::vector<double>& alpha2,
   table.b_over_l.assign(total, kNaN);
   table.theta0.assign(total, kNaN);
   table.status.assign(total, kSweepNotConverged);
+  table.within_validity.assign(total, -1);
 
   const long chunk = std::max(1L, options.chunk);
   std::atomic<long> next{0};
@@ -64,6 +65,7 @@ BeamSweepTable run_beam_sweep(const std::vector<double>& alpha2,
             table.b_over_l[i] = point.tip.b_over_l;
             table.theta0[i] = point.tip.theta0;
             table.status[i] = kSweepConverged;
+            table.within_validity[i] = point.within_validity;
           }
         }
         done.fetch_add(end - begin);
@@ -130,6 +132,7 @@ void write_beam_sweep(Hdf5Group& group,
   group.write_dataset("b_over_l", std::span<const double>(table.b_over_l));
   group.write_dataset("theta0", std::span<const double>(table.theta0));
   group.write_dataset("status", std::span<const int>(table.status));
+  group.write_dataset("within_validity", std::span<const int>(table.within_validity));
   group.set_attribute("method", metadata.method);
   group.set_attribute("n", metadata.load_ratio_n);
   group.set_attribute("mu", metadata.mu);

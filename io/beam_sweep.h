@@ -31,6 +31,9 @@ inline constexpr int kSweepNotConverged = 1;
 // Result of one point as reported by the method.
 struct BeamSweepPoint : SolveStatus {
   TipPose tip;
+  // PRBM: 1 when the PRB angle is within the element's validity limit, 0 outside; -1 for a method
+  // without validity limits (the exact methods).
+  int within_validity = -1;
   // message: why it failed (only needed when !converged)
 };
 
@@ -51,6 +54,7 @@ struct BeamSweepTable {
   std::vector<double> b_over_l;
   std::vector<double> theta0;
   std::vector<int> status;
+  std::vector<int> within_validity;  // per point as BeamSweepPoint::within_validity (-1 if failed)
   long converged_count = 0;
   long first_failure = -1;            // index of the first point with status != 0, or -1
   std::string first_failure_message;  // the method's message for that point

@@ -74,6 +74,28 @@ TEST(CliSweep, EndpointsMatchTheNZeroTableAndTheFileIsComplete) {
   H5Fclose(file);
 }
 
+TEST(CliSweep, PrbmSweepsStateTheirValidityPerPoint) {
+  // Table 5.1, n = 0: Theta_max = min(64.3, 58.5) deg. The PRBM equilibrium K_theta Theta =
+  // alpha2 cos Theta (Howell eq. 5.35, transverse force; K_theta = 2.676) reaches 58.5 deg at
+  // alpha2 = 5.23: alpha2 = 2 (35.1 deg) and 5 (57.5 deg) are within it, 8 (67.0 deg) is not.
+  ScratchDir dir;
+  const auto out = dir / "prbm.h5";
+  ASSERT_EQ(
+      run_flexure("sweep beam --method prbm --alpha2 2:8:3 --out '" + out.string() + "'").exit_code,
+      0);
+  hid_t file = open_read_only(out);
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(read_ints(file, "within_validity"), (std::vector<int>{1, 1, 0}));
+  H5Fclose(file);
+  // Exact methods have no validity limit: -1.
+  const auto exact = dir / "exact.h5";
+  ASSERT_EQ(run_flexure("sweep beam --alpha2 2:8:3 --out '" + exact.string() + "'").exit_code, 0);
+  file = open_read_only(exact);
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(read_ints(file, "within_validity"), (std::vector<int>{-1, -1, -1}));
+  H5Fclose(file);
+}
+
 TEST(CliSweep, DescendingRangeAndSingleLoad) {
   ScratchDir dir;
   const auto out = dir / "down.h5";
