@@ -1,7 +1,7 @@
 // `flexure dynamics`: frequency sweep of the inverse dynamics of a modified constant-force slider
 // mechanism (Ugwuoke & Abolarin, the dynamics paper; docs/dynamics.md).
 //
-//   flexure dynamics --mechanism NAME --omega START:STOP:COUNT --out FILE.h5
+//   flexure dynamics --mechanism NAME --omega START:STOP:COUNT [--out FILE.h5]
 //                    [--stroke-percent 40] [--preload-percent 1] [--samples 1024]
 //                    [--friction C1,C2,C3] [--axial-alpha RAD]
 //                    [--zero-slider-mass | --zero-inertia] [--history W1,W2,...] [--json]
@@ -21,13 +21,13 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "flexure/version.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/output_path.h"
 #include "flexure/mechanisms/dynamics/cfsm_designs.h"
 #include "flexure/mechanisms/dynamics/forward_dynamics.h"
 #include "flexure/mechanisms/dynamics/inverse_dynamics.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/version.h"
 
 namespace flexure::cli {
 namespace {
@@ -82,8 +82,8 @@ void run_dynamics(const DynamicsArgs& args) {
   }
   if (args.mechanism.empty()) throw InvalidInput("--mechanism is required (see --list)");
   if (args.omega.empty()) throw InvalidInput("--omega START:STOP:COUNT is required");
-  if (args.out.empty()) throw InvalidInput("--out FILE.h5 is required");
-  io::check_output_path(args.out);
+  // Without --out nothing is written: the results are printed (all of them with --json).
+  if (!args.out.empty()) io::check_output_path(args.out);
   const CfsmDesign& d = dynamics::find_cfsm_design(args.mechanism);
   const Range range = parse_range(args.omega, "--omega (rad/s)", 1'000'000);
   require_in_range(range.start, "--omega START (rad/s)", 0.0, 1e6);
@@ -119,7 +119,7 @@ void run_dynamics(const DynamicsArgs& args) {
   // Open the output first: an unwritable path fails before any work (exit 2).
   std::unique_ptr<io::AtomicHdf5File> output;
   try {
-    output = std::make_unique<io::AtomicHdf5File>(args.out);
+    if (!args.out.empty()) output = std::make_unique<io::AtomicHdf5File>(args.out);
   } catch (const io::Hdf5Error& e) {
     throw InvalidInput(fmt::format("--out {}: {}", args.out, e.what()));
   }
@@ -145,56 +145,79 @@ void run_dynamics(const DynamicsArgs& args) {
   const bool has_inertia = model.terms(0.0).M > 0.0;
   const double omega_n = has_inertia ? dynamics::linearise(model, 0.0).omega_n : 0.0;
 
-  io::Hdf5Group& root = output->root();
-  root.write_dataset("omega", omegas);
-  root.write_dataset("mean_force", mean);
-  root.write_dataset("median_force", median);
-  root.write_dataset("min_force", min);
-  root.write_dataset("max_force", max);
-  root.write_dataset("peak_to_peak_force", p2p);
-  root.write_dataset("percent_constant_force", pcf);
-  root.set_attribute("mechanism", d.name);
-  root.set_attribute("stroke_m", motion.stroke);
-  root.set_attribute("preload_m", motion.preload);
-  root.set_attribute("samples_per_period", static_cast<std::int64_t>(args.samples));
-  root.set_attribute("zero_slider_mass", static_cast<std::int64_t>(args.zero_slider_mass));
-  root.set_attribute("zero_inertia", static_cast<std::int64_t>(args.zero_inertia));
-  root.set_attribute("friction_C1", p.coulomb[0]);
-  root.set_attribute("friction_C2", p.coulomb[1]);
-  root.set_attribute("friction_C3", p.coulomb[2]);
-  root.set_attribute("axial_alpha", p.axial_alpha);
-  root.set_attribute("static_nominal_force", F_nom);
-  root.set_attribute("paper_nominal_force", d.F_nom_paper);
-  root.set_attribute("natural_frequency", omega_n);
-  root.set_attribute("units", "omega rad/s, force N (whole symmetric mechanism), length m, t s");
-  root.set_attribute("tool", "flexure");
-  root.set_attribute("version", kVersion);
-  root.set_attribute("git_commit", kGitCommit);
-  io::Hdf5Group histories = root.create_group("history");
-  for (std::size_t i = 0; i < args.history.size(); ++i) {
-    motion.omega = args.history[i];
-    const std::vector<ForceSample> h = inverse.history(motion);
-    std::vector<double> t, x, theta2, force, static_force;
-    for (const ForceSample& s : h) {
-      t.push_back(s.t);
-      x.push_back(s.delta_x);
-      theta2.push_back(s.theta2);
-      force.push_back(s.force);
-      static_force.push_back(s.static_force);
+  // The requested time histories (one period each).
+  struct History {
+    double omega = 0.0;
+    std::vector<double> t, delta_x, theta2, force, static_force;
+  };
+  std::vector<History> histories;
+  for (double w : args.history) {
+    motion.omega = w;
+    History h{w, {}, {}, {}, {}, {}};
+    for (const ForceSample& sample : inverse.history(motion)) {
+      h.t.push_back(sample.t);
+      h.delta_x.push_back(sample.delta_x);
+      h.theta2.push_back(sample.theta2);
+      h.force.push_back(sample.force);
+      h.static_force.push_back(sample.static_force);
     }
-    io::Hdf5Group g = histories.create_group(fmt::format("{}", i));
-    g.set_attribute("omega", args.history[i]);
-    g.write_dataset("t", t);
-    g.write_dataset("delta_x", x);
-    g.write_dataset("theta2", theta2);
-    g.write_dataset("force", force);
-    g.write_dataset("static_force", static_force);
+    histories.push_back(std::move(h));
   }
-  output->commit();
+
+  if (output) {
+    io::Hdf5Group& root = output->root();
+    root.write_dataset("omega", omegas);
+    root.write_dataset("mean_force", mean);
+    root.write_dataset("median_force", median);
+    root.write_dataset("min_force", min);
+    root.write_dataset("max_force", max);
+    root.write_dataset("peak_to_peak_force", p2p);
+    root.write_dataset("percent_constant_force", pcf);
+    root.set_attribute("mechanism", d.name);
+    root.set_attribute("stroke_m", motion.stroke);
+    root.set_attribute("preload_m", motion.preload);
+    root.set_attribute("samples_per_period", static_cast<std::int64_t>(args.samples));
+    root.set_attribute("zero_slider_mass", static_cast<std::int64_t>(args.zero_slider_mass));
+    root.set_attribute("zero_inertia", static_cast<std::int64_t>(args.zero_inertia));
+    root.set_attribute("friction_C1", p.coulomb[0]);
+    root.set_attribute("friction_C2", p.coulomb[1]);
+    root.set_attribute("friction_C3", p.coulomb[2]);
+    root.set_attribute("axial_alpha", p.axial_alpha);
+    root.set_attribute("static_nominal_force", F_nom);
+    root.set_attribute("paper_nominal_force", d.F_nom_paper);
+    root.set_attribute("natural_frequency", omega_n);
+    root.set_attribute("units", "omega rad/s, force N (whole symmetric mechanism), length m, t s");
+    root.set_attribute("tool", "flexure");
+    root.set_attribute("version", kVersion);
+    root.set_attribute("git_commit", kGitCommit);
+    io::Hdf5Group history_group = root.create_group("history");
+    for (std::size_t i = 0; i < histories.size(); ++i) {
+      const History& h = histories[i];
+      io::Hdf5Group g = history_group.create_group(fmt::format("{}", i));
+      g.set_attribute("omega", h.omega);
+      g.write_dataset("t", h.t);
+      g.write_dataset("delta_x", h.delta_x);
+      g.write_dataset("theta2", h.theta2);
+      g.write_dataset("force", h.force);
+      g.write_dataset("static_force", h.static_force);
+    }
+    output->commit();
+  }
 
   if (args.json) {
+    Json history = Json::array();
+    for (const History& h : histories) {
+      history.push_back(Json{{"omega", h.omega},
+                             {"t", h.t},
+                             {"delta_x", h.delta_x},
+                             {"theta2", h.theta2},
+                             {"force", h.force},
+                             {"static_force", h.static_force}});
+    }
     print_json(Json{{"mechanism", d.name},
-                    {"out", args.out},
+                    {"out", args.out.empty() ? Json(nullptr) : Json(args.out)},
+                    {"force_of", "whole symmetric mechanism"},
+                    {"history", history},
                     {"static_nominal_force", F_nom},
                     {"paper_nominal_force", d.F_nom_paper},
                     {"natural_frequency", omega_n},
@@ -227,7 +250,7 @@ void run_dynamics(const DynamicsArgs& args) {
                  s.peak_to_peak,
                  s.percent_constant_force);
     }
-    fmt::print("written to {}\n", args.out);
+    if (output) fmt::print("written to {}\n", args.out);
   }
 }
 
@@ -239,7 +262,8 @@ void register_dynamics_command(CLI::App& app) {
       "dynamics", "Frequency sweep of a constant-force slider mechanism's input force (HDF5)");
   cmd->add_option("--mechanism", args->mechanism, "Design of the paper's Table 5, e.g. 2B-lplm");
   cmd->add_option("--omega", args->omega, "Drive frequencies START:STOP:COUNT, rad/s");
-  cmd->add_option("--out", args->out, "Output HDF5 file (written atomically)");
+  cmd->add_option(
+      "--out", args->out, "Output HDF5 file (written atomically); without it nothing is written");
   cmd->add_option(
          "--stroke-percent", args->stroke_percent, "Peak-to-peak slider travel, % of r2 + r3")
       ->default_str("40");

@@ -83,6 +83,30 @@ TEST(DynamicsCli, ZeroInertiaRemovesFrequencyDependence) {
   }
 }
 
+TEST(DynamicsCli, JsonWorksWithoutOutAndWritesNothing) {
+  ScratchDir dir;
+  const std::string args = "dynamics --mechanism 2B-lplm --omega 0:40:3 --history 20 --json";
+  const auto without = run_flexure(args, dir.path());
+  ASSERT_EQ(without.exit_code, 0) << without.err;
+  EXPECT_TRUE(dir.entries().empty()) << "a file was written without --out";
+  const auto with = run_flexure(args + " --out d.h5", dir.path());
+  ASSERT_EQ(with.exit_code, 0) << with.err;
+  const nlohmann::json a = nlohmann::json::parse(without.out);
+  const nlohmann::json b = nlohmann::json::parse(with.out);
+  EXPECT_TRUE(a["out"].is_null());
+  EXPECT_EQ(a["force_of"], "whole symmetric mechanism");
+  for (const char* key : {"mean_force", "peak_to_peak_force", "percent_constant_force"}) {
+    EXPECT_EQ(a[key], b[key]) << key;
+  }
+  // The history printed is the one stored in the file.
+  ASSERT_EQ(a["history"].size(), 1u);
+  hid_t file = test::open_read_only(dir / "d.h5");
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(a["history"][0]["force"].get<std::vector<double>>(),
+            test::read_doubles(file, "history/0/force"));
+  H5Fclose(file);
+}
+
 TEST(DynamicsCli, BadInputExitsWithTwo) {
   ScratchDir dir;
   const std::string out = (dir / "x.h5").string();
