@@ -2,10 +2,11 @@
 """Charts from a `flexure bench` results file (schema: docs/hdf5-schema.md).
 
 Usage (Debian's matplotlib and h5py):
-  /usr/bin/python3 scripts/plot_benchmarks.py FILE.h5 [--out docs/figures] [--table]
+  /usr/bin/python3 scripts/plot_benchmarks.py FILE.h5 [--out DIR] [--table]
   /usr/bin/python3 scripts/plot_benchmarks.py FILE.h5 --print-prbm-map
 
-Figures written to --out:
+Figures written to --out (default: a folder bench_figures beside FILE.h5; the committed figures
+in docs/figures are replaced only when that folder is named), each path printed:
   bench_pareto.png     accuracy against time per problem, one point per method and resolution
                        (worst relative error over the converged loads against the median time per
                        solve); the Pareto front (no other method both faster and more accurate)
@@ -264,7 +265,8 @@ def print_prbm_map(f):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("file")
-    ap.add_argument("--out", default="docs/figures")
+    ap.add_argument("--out", default=None,
+                    help="folder for the figures (default: bench_figures beside FILE)")
     ap.add_argument("--table", action="store_true")
     ap.add_argument("--print-prbm-map", action="store_true")
     args = ap.parse_args()
@@ -272,11 +274,18 @@ def main():
         if args.print_prbm_map:
             print_prbm_map(f)
             return 0
-        os.makedirs(args.out, exist_ok=True)
-        plot_pareto(f, args.out)
-        plot_stability(f, args.out)
-        plot_prbm_map(f, args.out)
-        plot_column(f, args.out)
+        out = args.out or os.path.join(os.path.dirname(os.path.abspath(args.file)),
+                                       "bench_figures")
+        os.makedirs(out, exist_ok=True)
+        plot_pareto(f, out)
+        plot_stability(f, out)
+        plot_prbm_map(f, out)
+        plot_column(f, out)
+        for name in ("bench_pareto.png", "bench_stability.png", "bench_prbm_map.png",
+                     "bench_column.png"):
+            path = os.path.join(out, name)
+            if os.path.exists(path):
+                print(f"wrote {path}")
         if args.table:
             print_table(f)
     return 0
