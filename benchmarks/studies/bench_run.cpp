@@ -8,11 +8,11 @@
 #include <filesystem>
 #include <limits>
 
-#include "flexure/version.h"
 #include "flexure/benchmarks/studies/bench_hdf5.h"
 #include "flexure/benchmarks/studies/bench_problems.h"
 #include "flexure/benchmarks/studies/bench_solve.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/version.h"
 
 namespace flexure::bench {
 namespace {
@@ -288,6 +288,13 @@ BenchSummary run_benchmark(const BenchOptions& options) {
       say(fmt::format(
           "--resume: neither {} nor {} exists; starting afresh", checkpoint, options.out));
     }
+  }
+  if (!options.resume && std::filesystem::exists(checkpoint)) {
+    // Never delete the finished groups of an interrupted run without being told to.
+    throw InvalidInput(fmt::format(
+        "{} holds the finished groups of an interrupted run: continue it with --resume, or delete "
+        "the file to start afresh",
+        checkpoint));
   }
   auto reuse = [&](const BenchProblem& p, const std::string& method) -> const MethodRun* {
     for (const MethodRun& r : previous) {

@@ -11,8 +11,9 @@
 //    exact group reproduces the reference (the exact model itself) exactly, and the PRBM slider
 //    force is within the accuracy Weight (2001) reports for design example 1 of the exact force,
 //    independently of this bench (the PRBM and the shooting-based exact model share no code path).
-//  * --stop-after leaves a checkpoint (complete = 0) and no results file; --resume reuses the
-//    finished groups bit for bit and removes the checkpoint; bad names exit 2.
+//  * --stop-after leaves a checkpoint (complete = 0) and no results file; a rerun without --resume
+//    is refused and keeps it; --resume reuses the finished groups bit for bit and removes the
+//    checkpoint; bad names exit 2.
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
@@ -231,6 +232,12 @@ TEST(BenchResumeTest, InterruptedRunResumesFromItsCheckpoint) {
   EXPECT_TRUE(group_members(file, "/tip_moment") ==
               std::vector<std::string>({"elliptic", "reference"}));
   H5Fclose(file);
+
+  // Without --resume the checkpoint is kept and the run refused (exit 2), saying how to go on.
+  const CommandResult again = run_flexure("bench " + select, dir.path());
+  EXPECT_EQ(again.exit_code, 2);
+  EXPECT_NE(again.err.find("--resume"), std::string::npos) << again.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "r.h5.partial"));
 
   const CommandResult resumed = run_flexure("bench " + select + " --resume --json", dir.path());
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
