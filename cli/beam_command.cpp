@@ -122,21 +122,51 @@ BeamProblem make_problem(const BeamArgs& args) {
 
 void print_report(const BeamProblem& problem, const BeamSolution& solution) {
   const double degrees = 180.0 / std::numbers::pi;
-  fmt::print("Cantilever with end load, method {} (n = {:g}, mu = {:g}, {} end)\n",
-             to_string(solution.method),
-             problem.load_ratio_n,
-             problem.mu,
-             to_string(problem.boundary));
-  fmt::print("  alpha2 = P l^2/EI = {:.10g}\n", solution.alpha2);
+  const bool howell = std::isfinite(solution.alpha2);  // false: a chain without a single alpha2
+  if (problem.chain) {
+    const Reaction& tip = solution.chain_tip_load;
+    fmt::print(
+        "Segment chain ({} segments), method {}, {} end; tip load Fx = {:g}, Fy = {:g}, M = "
+        "{:g} (the file's units)\n",
+        problem.chain->segment_count(),
+        to_string(solution.method),
+        to_string(problem.chain->end),
+        tip.Fx,
+        tip.Fy,
+        tip.M);
+  } else {
+    fmt::print("Cantilever with end load, method {} (n = {:g}, mu = {:g}, {} end)\n",
+               to_string(solution.method),
+               problem.load_ratio_n,
+               problem.mu,
+               to_string(problem.boundary));
+  }
+  if (howell) {
+    fmt::print("  alpha2 = P l^2/EI = {:.10g}\n", solution.alpha2);
+  } else {
+    fmt::print("  alpha2: none (the chain is not one uniform straight beam)\n");
+  }
   fmt::print("  a/l    = {:.10g}\n", solution.tip.a_over_l);
   fmt::print("  b/l    = {:.10g}\n", solution.tip.b_over_l);
   fmt::print(
       "  theta0 = {:.10g} rad ({:.6g} deg)\n", solution.tip.theta0, solution.tip.theta0 * degrees);
-  fmt::print("  root moment M(0) l/EI = {:.10g}\n", solution.root_moment);
-  fmt::print("  reactions at the clamp: Fx = {:.10g}, Fy = {:.10g}, M = {:.10g}\n",
-             solution.reactions.Fx,
-             solution.reactions.Fy,
-             solution.reactions.M);
+  if (howell) {
+    fmt::print("  root moment M(0) l/EI = {:.10g}\n", solution.root_moment);
+    fmt::print(
+        "  reactions at the clamp (nondimensional): Fx = {:.10g}, Fy = {:.10g}, M = {:.10g}\n",
+        solution.reactions.Fx,
+        solution.reactions.Fy,
+        solution.reactions.M);
+  }
+  if (problem.chain) {
+    fmt::print(
+        "  root moment M(0) = {:.10g}; reactions at the clamp: Fx = {:.10g}, Fy = {:.10g}, "
+        "M = {:.10g} (the file's units)\n",
+        solution.chain_root_moment,
+        solution.chain_reactions.Fx,
+        solution.chain_reactions.Fy,
+        solution.chain_reactions.M);
+  }
   fmt::print("  {} elastica, {} inflection point(s), branch: {}\n",
              solution.family,
              solution.inflection_points,
@@ -155,21 +185,24 @@ void print_report(const BeamProblem& problem, const BeamSolution& solution) {
   }
 }
 
+// NaN (a quantity the problem does not have) as null.
+Json number_or_null(double value) {
+  return std::isfinite(value) ? Json(value + 0.0) : Json(nullptr);
+}
+
+Json reaction_json(const Reaction& r) {
+  return Json{
+      {"Fx", number_or_null(r.Fx)}, {"Fy", number_or_null(r.Fy)}, {"M", number_or_null(r.M)}};
+}
+
 Json to_json(const BeamProblem& problem, const BeamSolution& solution) {
   Json out;
   out["method"] = to_string(solution.method);
   out["method_reason"] = solution.method_reason;
-  if (problem.chain) {
-    // Howell's parameters of the chain's tip load: alpha2 = Fy, n = -Fx/Fy, mu = M.
-    const TipLoad& tip = problem.chain->tip_load;
-    out["n"] = tip.Fy != 0.0 ? -tip.Fx / tip.Fy + 0.0 : 0.0;  // + 0.0: no "-0.0" in the output
-    out["alpha2"] = tip.Fy;
-    out["mu"] = tip.M;
-  } else {
-    out["n"] = problem.load_ratio_n;
-    out["alpha2"] = solution.alpha2;
-    out["mu"] = problem.mu;
-  }
+  // Howell's parameters; null for a chain that has none (not one uniform straight beam).
+  out["n"] = number_or_null(solution.load_ratio_n);
+  out["alpha2"] = number_or_null(solution.alpha2);
+  out["mu"] = number_or_null(solution.mu);
   out["a_over_l"] = solution.tip.a_over_l;
   out["b_over_l"] = solution.tip.b_over_l;
   out["theta0"] = solution.tip.theta0;
@@ -177,7 +210,7 @@ Json to_json(const BeamProblem& problem, const BeamSolution& solution) {
   out["converged"] = solution.converged();
   out["branch"] = solution.branch;
   out["inflection_points"] = solution.inflection_points;
-  out["root_moment"] = solution.root_moment;
+  out["root_moment"] = number_or_null(solution.root_moment);
   out["limit_points"] = solution.limit_points;
   out["target_residual"] =
       std::isfinite(solution.target_residual) ? Json(solution.target_residual) : Json(nullptr);
@@ -187,9 +220,13 @@ Json to_json(const BeamProblem& problem, const BeamSolution& solution) {
   out["message"] = solution.message;
   out["termination"] = termination_name(solution.termination);
   out["boundary"] = to_string(problem.boundary);
-  out["reactions"] = Json{{"Fx", solution.reactions.Fx + 0.0},
-                          {"Fy", solution.reactions.Fy + 0.0},
-                          {"M", solution.reactions.M + 0.0}};
+  out["reactions"] = reaction_json(solution.reactions);
+  if (problem.chain) {
+    // The chain's loads in the file's own units, whether or not it has Howell's parameters.
+    out["tip_load_chain_units"] = reaction_json(solution.chain_tip_load);
+    out["root_moment_chain_units"] = solution.chain_root_moment;
+    out["reactions_chain_units"] = reaction_json(solution.chain_reactions);
+  }
   if (solution.method == BeamMethod::kPrbm) {
     // PRBM validity as a result, not a phrase: the PRB angle, the limit and the verdict.
     out["within_validity"] = solution.prbm_inside_validity;
@@ -237,7 +274,7 @@ void run_beam(const BeamArgs& args) {
                     other_methods_hint(solution.method)),
         std::move(reached));
   }
-  require_finite_result(solution.alpha2, "alpha2");
+  if (!problem.chain) require_finite_result(solution.alpha2, "alpha2");
   require_finite_result(solution.tip.a_over_l, "a/l");
   require_finite_result(solution.tip.b_over_l, "b/l");
   require_finite_result(solution.tip.theta0, "theta0");

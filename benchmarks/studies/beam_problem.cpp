@@ -144,6 +144,44 @@ std::vector<ShapePoint> resample(const std::vector<ShapePoint>& nodes, int count
   return out;
 }
 
+// The constant EI of a uniform straight chain of flexible segments, or nullopt.
+std::optional<double> uniform_EI(const SegmentChain& chain) {
+  std::optional<double> EI;
+  for (const Segment& segment : chain.segments) {
+    const auto* flexible = std::get_if<FlexibleSegment>(&segment);
+    if (flexible == nullptr || !flexible->EI_profile.empty() || flexible->kappa0 != 0.0) {
+      return std::nullopt;
+    }
+    if (EI && *EI != flexible->EI) return std::nullopt;
+    EI = flexible->EI;
+  }
+  return EI;
+}
+
+// A chain given as a whole: keeps its loads in its own units and states them in Howell's
+// parameters where the chain has them (BeamSolution::alpha2).
+void describe_chain_loads(const SegmentChain& chain, BeamSolution& s) {
+  const TipLoad& tip = chain.tip_load;
+  s.chain_tip_load = {tip.Fx, tip.Fy, tip.M};
+  s.chain_root_moment = s.root_moment;
+  s.chain_reactions = s.reactions;
+  const std::optional<double> EI = uniform_EI(chain);
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  if (!EI || tip.follower != 0.0) {
+    s.alpha2 = s.load_ratio_n = s.mu = s.root_moment = kNaN;
+    s.reactions = {kNaN, kNaN, kNaN};
+    return;
+  }
+  const double L = chain.total_length();
+  const double force_scale = L * L / *EI, moment_scale = L / *EI;
+  s.alpha2 = tip.Fy * force_scale;
+  s.load_ratio_n = tip.Fy != 0.0 ? -tip.Fx / tip.Fy + 0.0 : 0.0;  // + 0.0: no -0
+  s.mu = tip.M * moment_scale;
+  s.root_moment *= moment_scale;
+  s.reactions = {
+      s.reactions.Fx * force_scale, s.reactions.Fy * force_scale, s.reactions.M * moment_scale};
+}
+
 BeamSolution solve_numerical_forward(BeamMethod method,
                                      const BeamProblem& problem,
                                      double alpha2,
@@ -211,6 +249,7 @@ BeamSolution solve_numerical_forward(BeamMethod method,
     solution.inflection_points = count_curvature_sign_changes(r.nodes);
     if (shape_points > 0 && r.converged()) solution.shape = resample(r.nodes, shape_points);
   }
+  if (problem.chain) describe_chain_loads(chain, solution);
   // Howell's a/l, b/l are per unit length of the chain; the shape is reported the same way.
   for (ShapePoint& p : solution.shape) {
     p.s /= length;
@@ -360,6 +399,10 @@ BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem) {
     solution = std::move(fallback);
   }
   solution.method_reason = used.reason;
+  if (!problem.chain) {
+    solution.load_ratio_n = problem.load_ratio_n;
+    solution.mu = problem.mu;
+  }
   return solution;
 }
 

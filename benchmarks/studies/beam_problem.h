@@ -53,7 +53,14 @@ struct BeamProblem {
 struct BeamSolution : SolveStatus {
   BeamMethod method = BeamMethod::kElliptic;  // the method actually used (what auto resolved to)
   std::string method_reason;                  // why that method: requested, or auto's reasoning
+  // Howell's load parameters (eqs. 2.67, 2.83). For a chain given as a whole they exist only when
+  // it is uniform (flexible segments of one constant EI, straight, total length L): alpha2 = Fy
+  // L^2/EI, n = -Fx/Fy, mu = M L/EI; otherwise NaN (no single alpha2), and root_moment and
+  // reactions are NaN too: chain_root_moment and chain_reactions hold them in the chain's own
+  // units.
   double alpha2 = 0.0;
+  double load_ratio_n = 0.0;
+  double mu = 0.0;
   TipPose tip;
   std::string branch;  // the equilibrium returned, in words (for people; code reads the counts)
   int inflection_points = 0;
@@ -72,6 +79,10 @@ struct BeamSolution : SolveStatus {
   // control at the first); elliptic and shooting only.
   int limit_points = 0;
   double first_limit_load_factor = 0.0;
+  // Chains given as a whole: the tip load, root moment and clamp reactions in the chain's units.
+  Reaction chain_tip_load;
+  double chain_root_moment = 0.0;
+  Reaction chain_reactions;
   // PRBM only: the PRB angle (rad), the validity limit it is checked against (rad, the smaller of
   // Theta_max(gamma) and Theta_max(K_theta), Howell eqs. 5.47 and 5.63), where that limit comes
   // from, and whether |Theta| is within it.

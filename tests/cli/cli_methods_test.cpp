@@ -8,9 +8,11 @@
 // - the TOML example chains: shooting and chain algorithm agree; unknown keys name key and line;
 // - `path` writes the documented datasets and passes the limit points the elliptic solver reports;
 // - invalid combinations exit 2.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "flexure/solver/elliptic/elliptic_solver.h"
@@ -64,6 +66,40 @@ TEST(CliMethods, GuidedBeamMatchesTwoHalfCantilevers) {
     // Root moment = P l/2 * (a_half) ... = alpha2 * a/2 by antisymmetry (Howell eq. 5.102).
     EXPECT_NEAR(-guided["reactions"]["M"].get<double>(), 8.0 * half.tip.a_over_l / 2.0, 10 * tol);
   }
+}
+
+TEST(CliMethods, ChainKeysMeanWhatTheirNamesSay) {
+  test::ScratchDir dir;
+  // A strip in SI units: l = 0.05 m, EI = 0.02083 N m^2, Fx = -2.5 N, Fy = 4.33 N. Howell's
+  // parameters (eqs. 2.67, 2.83): alpha2 = Fy l^2/EI = 0.51968, n = -Fx/Fy = 0.57737.
+  std::ofstream(dir / "strip.toml") << "boundary = \"free\"\n[[segment]]\ntype = \"flexible\"\n"
+                                       "length = 0.05\nEI = 0.02083\n[tip_load]\nFx = -2.5\n"
+                                       "Fy = 4.33\n";
+  const Json strip = run_json("beam --chain '" + (dir / "strip.toml").string() + "'");
+  EXPECT_NEAR(strip["alpha2"].get<double>(), 4.33 * 0.05 * 0.05 / 0.02083, 1e-12);
+  EXPECT_NEAR(strip["n"].get<double>(), 2.5 / 4.33, 1e-12);
+  // The same beam nondimensionally: every Howell quantity agrees.
+  const Json howell = run_json(fmt::format("beam --method shooting --n {:.17g} --alpha2 {:.17g}",
+                                           2.5 / 4.33,
+                                           4.33 * 0.05 * 0.05 / 0.02083));
+  for (const char* key : {"a_over_l", "b_over_l", "theta0", "root_moment"}) {
+    EXPECT_NEAR(strip[key].get<double>(), howell[key].get<double>(), 1e-9) << key;
+  }
+  EXPECT_NEAR(strip["reactions"]["M"].get<double>(), howell["reactions"]["M"].get<double>(), 1e-9);
+  // In the file's units: M(0) = root_moment EI/l, N m.
+  EXPECT_NEAR(strip["root_moment_chain_units"].get<double>(),
+              howell["root_moment"].get<double>() * 0.02083 / 0.05,
+              1e-9);
+  EXPECT_EQ(strip["tip_load_chain_units"]["Fy"].get<double>(), 4.33);
+  // Two flexures and a rigid link have no single alpha2: null, never the raw force.
+  const Json two = run_json("beam --chain " + std::string(FLEXURE_SOURCE_DIR) +
+                            "/docs/examples/two_flexures_rigid_link.toml");
+  EXPECT_TRUE(two["alpha2"].is_null());
+  EXPECT_TRUE(two["root_moment"].is_null());
+  EXPECT_EQ(two["tip_load_chain_units"]["Fy"].get<double>(), 2.0);
+  const test::CommandResult text = run_flexure("beam --chain " + std::string(FLEXURE_SOURCE_DIR) +
+                                               "/docs/examples/two_flexures_rigid_link.toml");
+  EXPECT_EQ(text.out.find("alpha2 = P l^2/EI"), std::string::npos) << text.out;
 }
 
 TEST(CliMethods, PrbmSolvesTheGuidedBeamAsBenchDoes) {
