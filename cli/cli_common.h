@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "flexure/solver/common/errors.h"
 
@@ -42,6 +43,9 @@ using Json = nlohmann::ordered_json;
 CLI::App& get_or_add_subcommand(CLI::App& parent,
                                 const std::string& name,
                                 const std::string& description);
+
+// Ends `command`'s --help with these example command lines (each starting "flexure ").
+void set_examples(CLI::App& command, const std::vector<std::string>& examples);
 
 // Exit code a command wants when it finishes without throwing (default kExitOk).
 void set_exit_code(int code);
