@@ -311,10 +311,6 @@ void register_beam_command(CLI::App& app) {
   auto args = std::make_shared<BeamArgs>();
   CLI::App* beam = app.add_subcommand(
       "beam", "Initially straight cantilever with an end load (Howell sec. 2.9.2)");
-  set_examples(*beam,
-               {"flexure beam --alpha2 3.087 --json",
-                "flexure beam --theta0 1 --n 1 --method shooting",
-                "flexure beam --alpha2 8 --boundary guided --method prbm"});
   beam->add_option("--n", args->load_ratio_n, "Load ratio n: horizontal load nP, n > 0 compressive")
       ->default_str("0");
   beam->add_option("--mu", args->mu, "End moment mu = M l/EI (counter-clockwise positive)")

@@ -79,10 +79,6 @@ void register_bench_command(CLI::App& app) {
       "bench",
       "Benchmark every method on the standard problems: error against the reference and median "
       "time per solve, written to HDF5 (docs/benchmarks.md)");
-  set_examples(*bench,
-               {"flexure bench --quick --problems cantilever_force --out quick.h5",
-                "flexure bench --quick --problems tip_moment --methods elliptic,prbm --out t.h5 "
-                "--json"});
   bench->add_option("--out", args->options.out, "Results HDF5 file (written whole or not at all)")
       ->required();
   bench->add_flag("--quick", args->options.quick, "Small problem set (smoke test, < 1 minute)");

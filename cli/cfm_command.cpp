@@ -481,10 +481,6 @@ void register_cfm_command(CLI::App& app) {
   auto args = std::make_shared<CfmArgs>();
   CLI::App* cfm = app.add_subcommand(
       "cfm", "Constant-force slider mechanism, nondimensional PRBM (Weight 2001, Howell §10.1)");
-  set_examples(*cfm,
-               {"flexure cfm --config lpp --R 1 --d 40",
-                "flexure cfm --subclass lpp-b --json",
-                "flexure cfm --list"});
   args->config_option = cfm->add_option(
       "--config", args->config, "Configuration: spp, lpp, psp, plp, ssp, slp, sps, lps, sss");
   args->R_option = cfm->add_option("--R", args->R, "R = r3/r2 (> 0)");

@@ -151,12 +151,6 @@ CLI::App& get_or_add_subcommand(CLI::App& parent,
   return *parent.add_subcommand(name, description);
 }
 
-void set_examples(CLI::App& command, const std::vector<std::string>& examples) {
-  std::string text = "\nExamples:";
-  for (const std::string& example : examples) text += "\n  " + example;
-  command.footer(text);
-}
-
 void set_exit_code(int code) { g_exit_code = code; }
 int exit_code() { return g_exit_code; }
 

@@ -44,9 +44,6 @@ CLI::App& get_or_add_subcommand(CLI::App& parent,
                                 const std::string& name,
                                 const std::string& description);
 
-// Ends `command`'s --help with these example command lines (each starting "flexure ").
-void set_examples(CLI::App& command, const std::vector<std::string>& examples);
-
 // Exit code a command wants when it finishes without throwing (default kExitOk).
 void set_exit_code(int code);
 int exit_code();

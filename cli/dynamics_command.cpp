@@ -260,10 +260,6 @@ void register_dynamics_command(CLI::App& app) {
   auto args = std::make_shared<DynamicsArgs>();
   CLI::App* cmd = app.add_subcommand(
       "dynamics", "Frequency sweep of a constant-force slider mechanism's input force (HDF5)");
-  set_examples(*cmd,
-               {"flexure dynamics --list",
-                "flexure dynamics --mechanism 2B-lplm --omega 0:100:5 --json",
-                "flexure dynamics --mechanism 2B-lplm --omega 0:100:5 --out d.h5"});
   cmd->add_option("--mechanism", args->mechanism, "Design of the paper's Table 5, e.g. 2B-lplm");
   cmd->add_option("--omega", args->omega, "Drive frequencies START:STOP:COUNT, rad/s");
   cmd->add_option(

@@ -37,7 +37,6 @@ void register_help_command(CLI::App& app) {
   CLI::App* help =
       app.add_subcommand("help", "Help for flexure or one command: flexure help [COMMAND]");
   help->add_option("command", *path, "The command (and subcommand), e.g. 'mechanism analyze'");
-  set_examples(*help, {"flexure help beam", "flexure help mechanism analyze"});
   help->callback([&app, path] {
     CLI::App* target = &app;
     std::string usage_name = app.get_name();  // "flexure mechanism analyze", as --help prints it

@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
   flexure::cli::register_dynamics_command(app);
   flexure::cli::register_bench_command(app);
   flexure::cli::register_help_command(app);
+  flexure::cli::add_command_examples(app);
 
   return flexure::cli::run_app(app, argc, argv);
 }

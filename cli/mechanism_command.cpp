@@ -385,7 +385,6 @@ void register_mechanism_command(CLI::App& app) {
 
   auto list_json = std::make_shared<bool>(false);
   CLI::App* list = mech.add_subcommand("list", "List the built-in mechanism designs");
-  set_examples(*list, {"flexure mechanism list", "flexure mechanism list --json"});
   list->add_flag("--json", *list_json, "Print one JSON object");
   list->callback([list_json] {
     Json all = Json::array();
@@ -421,10 +420,6 @@ void register_mechanism_command(CLI::App& app) {
   auto args = std::make_shared<AnalyzeArgs>();
   CLI::App* analyze = mech.add_subcommand(
       "analyze", "Force-deflection over the stroke, PRBM and exact, with stresses");
-  set_examples(*analyze,
-               {"flexure mechanism analyze 1A-lpp --points 20",
-                "flexure mechanism analyze 1A-lpp --method prbm --json",
-                "flexure mechanism analyze 1A-spp --points 10 --out spp.h5"});
   analyze
       ->add_option("mechanism",
                    args->what,
@@ -538,9 +533,6 @@ void register_mechanism_command(CLI::App& app) {
   auto vargs = std::make_shared<ValidateArgs>();
   CLI::App* validate = mech.add_subcommand(
       "validate", "PRBM vs exact model for every built-in mechanism (docs/validation.md table)");
-  set_examples(*validate,
-               {"flexure mechanism validate --points 10",
-                "flexure mechanism validate --designs howell --points 10 --markdown"});
   validate->add_option("--points", vargs->points, "Stroke points (2..100000)")->default_str("50");
   CLI::Option* toggle_opt = validate->add_option(
       "--toggle-fraction",

@@ -188,9 +188,6 @@ void register_path_command(CLI::App& app) {
   auto args = std::make_shared<PathArgs>();
   CLI::App* path = app.add_subcommand(
       "path", "Load path of proportional loading from zero (continuation), written to HDF5");
-  set_examples(*path,
-               {"flexure path --alpha2 10 --mu -6.2832 --out path.h5",
-                "flexure path --alpha2 5 --n 2 --out p.h5 --json"});
   path->add_option("--n", args->load_ratio_n, "Load ratio n: horizontal load nP, n > 0 compressive")
       ->default_str("0");
   path->add_option("--alpha2", args->alpha2, "Full load alpha2 = P l^2/EI")->default_str("0");

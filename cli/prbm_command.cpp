@@ -494,9 +494,6 @@ void register_prbm_command(CLI::App& app) {
 
   auto derive_args = std::make_shared<PrbmArgs>();
   CLI::App* derive = prbm.add_subcommand("derive", "Derive gamma, c_theta, K_theta, Theta_max");
-  set_examples(*derive,
-               {"flexure prbm derive --segment fixed-pinned --n 0",
-                "flexure prbm derive --segment end-moment --json"});
   derive
       ->add_option("--segment", derive_args->segment, "fixed-pinned, end-moment, initially-curved")
       ->transform([](std::string name) { return to_lower(name); })
@@ -522,9 +519,6 @@ void register_prbm_command(CLI::App& app) {
 
   auto table_args = std::make_shared<PrbmArgs>();
   CLI::App* table = prbm.add_subcommand("table", "Book table recomputed beside the book values");
-  set_examples(*table,
-               {"flexure prbm table --segment end-moment",
-                "flexure prbm table --segment fixed-pinned --step 1"});
   table->add_option("--segment", table_args->segment, "fixed-pinned, initially-curved, end-moment")
       ->transform([](std::string name) { return to_lower(name); })
       ->default_str("fixed-pinned");
@@ -544,10 +538,6 @@ void register_prbm_command(CLI::App& app) {
   auto compare_args = std::make_shared<PrbmArgs>();
   CLI::App* compare =
       prbm.add_subcommand("compare", "PRBM tip and load against the exact solution");
-  set_examples(*compare,
-               {"flexure prbm compare --segment fixed-pinned --n 0 --alpha2 2",
-                "flexure prbm compare --segment end-moment --mu 1 --json",
-                "flexure prbm compare --alpha2 1 --range 0.5:5:10"});
   compare->add_option("--segment", compare_args->segment, "fixed-pinned or end-moment")
       ->transform([](std::string name) { return to_lower(name); })
       ->default_str("fixed-pinned");

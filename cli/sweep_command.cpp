@@ -139,9 +139,6 @@ void register_sweep_command(CLI::App& app) {
   auto args = std::make_shared<SweepBeamArgs>();
   CLI::App* beam = sweep.add_subcommand(
       "beam", "Cantilever with end load over alpha2 = START:STOP:COUNT (equally spaced)");
-  set_examples(*beam,
-               {"flexure sweep beam --alpha2 0:10:101 --out sweep.h5",
-                "flexure sweep beam --alpha2 0.5:8:16 --method prbm --out prbm.h5 --json"});
   beam->add_option("--n", args->load_ratio_n, "Load ratio n: horizontal load nP, n > 0 compressive")
       ->default_str("0");
   beam->add_option("--mu", args->mu, "End moment mu = M l/EI")->default_str("0");

@@ -147,7 +147,6 @@ void register_validate_command(CLI::App& app) {
   auto args = std::make_shared<ValidateArgs>();
   CLI::App* validate = app.add_subcommand(
       "validate", "Check every available method against built-in reference problems");
-  set_examples(*validate, {"flexure validate", "flexure validate --out checks.h5 --json"});
   validate->add_option("--out", args->out, "Results file (HDF5, written atomically)")
       ->default_str("validation.h5");
   validate->add_flag("--json", args->json, "Print one JSON object on stdout");

@@ -1,0 +1,76 @@
+// The examples that end every command's --help, in one table (each runs as printed:
+// tests/cli/cli_help_examples_test.cpp).
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cli/commands.h"
+
+namespace flexure::cli {
+namespace {
+
+struct CommandExamples {
+  std::vector<std::string> path;  // e.g. {"mechanism", "analyze"}
+  std::vector<std::string> examples;
+};
+
+const std::vector<CommandExamples>& command_examples() {
+  static const std::vector<CommandExamples> table = {
+      {{"beam"},
+       {"flexure beam --alpha2 3.087 --json",
+        "flexure beam --theta0 1 --n 1 --method shooting",
+        "flexure beam --alpha2 8 --boundary guided --method prbm"}},
+      {{"sweep", "beam"},
+       {"flexure sweep beam --alpha2 0:10:101 --out sweep.h5",
+        "flexure sweep beam --alpha2 0.5:8:16 --method prbm --out prbm.h5 --json"}},
+      {{"validate"}, {"flexure validate", "flexure validate --out checks.h5 --json"}},
+      {{"prbm", "derive"},
+       {"flexure prbm derive --segment fixed-pinned --n 0",
+        "flexure prbm derive --segment end-moment --json"}},
+      {{"prbm", "table"},
+       {"flexure prbm table --segment end-moment",
+        "flexure prbm table --segment fixed-pinned --step 1"}},
+      {{"prbm", "compare"},
+       {"flexure prbm compare --segment fixed-pinned --n 0 --alpha2 2",
+        "flexure prbm compare --segment end-moment --mu 1 --json",
+        "flexure prbm compare --alpha2 1 --range 0.5:5:10"}},
+      {{"cfm"},
+       {"flexure cfm --config lpp --R 1 --d 40",
+        "flexure cfm --subclass lpp-b --json",
+        "flexure cfm --list"}},
+      {{"path"},
+       {"flexure path --alpha2 10 --mu -6.2832 --out path.h5",
+        "flexure path --alpha2 5 --n 2 --out p.h5 --json"}},
+      {{"mechanism", "list"}, {"flexure mechanism list", "flexure mechanism list --json"}},
+      {{"mechanism", "analyze"},
+       {"flexure mechanism analyze 1A-lpp --points 20",
+        "flexure mechanism analyze 1A-lpp --method prbm --json",
+        "flexure mechanism analyze 1A-spp --points 10 --out spp.h5"}},
+      {{"mechanism", "validate"},
+       {"flexure mechanism validate --points 10",
+        "flexure mechanism validate --designs howell --points 10 --markdown"}},
+      {{"dynamics"},
+       {"flexure dynamics --list",
+        "flexure dynamics --mechanism 2B-lplm --omega 0:100:5 --json",
+        "flexure dynamics --mechanism 2B-lplm --omega 0:100:5 --out d.h5"}},
+      {{"bench"},
+       {"flexure bench --quick --problems cantilever_force --out quick.h5",
+        "flexure bench --quick --problems tip_moment --methods elliptic,prbm --out t.h5 --json"}},
+      {{"help"}, {"flexure help beam", "flexure help mechanism analyze"}},
+  };
+  return table;
+}
+
+}  // namespace
+
+void add_command_examples(CLI::App& app) {
+  for (const CommandExamples& entry : command_examples()) {
+    CLI::App* command = &app;
+    for (const std::string& name : entry.path) command = command->get_subcommand(name);
+    std::string footer = "\nExamples:";
+    for (const std::string& example : entry.examples) footer += "\n  " + example;
+    command->footer(footer);
+  }
+}
+
+}  // namespace flexure::cli
