@@ -26,6 +26,7 @@ struct BeamArgs {
   int shape_points = 0;
   bool json = false;
   CLI::Option* alpha2_option = nullptr;
+  CLI::Option* tol_option = nullptr;
   CLI::Option* theta0_option = nullptr;
   CLI::Option* b_over_l_option = nullptr;
   CLI::Option* shape_option = nullptr;
@@ -48,6 +49,7 @@ struct BeamArgs {
 constexpr int kMaxShapePoints = 1'000'000;
 
 BeamProblem make_problem(const BeamArgs& args) {
+  refuse_tol_with_named_method(args.tol_option, args.method);
   BeamProblem problem;
   require_finite_input(args.load_ratio_n, "--n (load ratio n)");
   require_finite_input(args.mu, "--mu (end moment M l/EI)");
@@ -323,7 +325,7 @@ void register_beam_command(CLI::App& app) {
       given->add_option("--b-over-l", args->b_over_l, "Tip deflection b/l (-1..1)");
   given->require_option(0, 1);
   add_method_option(*beam, args->method);
-  add_tolerance_option(*beam, args->tol);
+  args->tol_option = add_tolerance_option(*beam, args->tol);
   beam->add_option("--boundary",
                    args->boundary,
                    "Far end: free (loads given), guided (tip angle prescribed), pinned (tip x, y "

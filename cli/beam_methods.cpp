@@ -1,8 +1,13 @@
 #include "cli/beam_methods.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdlib>
 #include <vector>
+
+#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/names.h"
 
 namespace flexure::cli {
 
@@ -29,8 +34,8 @@ std::string other_methods_hint(BeamMethod failed_method) {
   return "Try smaller loads or --method chain with more --increments.";
 }
 
-void add_tolerance_option(CLI::App& command, double& tolerance) {
-  command
+CLI::Option* add_tolerance_option(CLI::App& command, double& tolerance) {
+  return command
       .add_option(
           "--tol", tolerance, "--method auto: relative tip error allowed (error / tip deflection)")
       ->default_str("1e-6")
@@ -44,6 +49,14 @@ void add_tolerance_option(CLI::App& command, double& tolerance) {
             return {};
           },
           "TOL > 0"));
+}
+
+void refuse_tol_with_named_method(const CLI::Option* tol_option, const std::string& method) {
+  if (tol_option == nullptr || tol_option->count() == 0 || same_name(method, "auto")) return;
+  throw InvalidInput(fmt::format(
+      "--tol is the error --method auto allows when it chooses a method; --method {} works to its "
+      "own tolerance, so --tol does not apply (drop it, or use --method auto)",
+      method));
 }
 
 }  // namespace flexure::cli

@@ -13,7 +13,11 @@ namespace flexure::cli {
 // Adds `--method` (default "auto", restricted to kBeamMethodNames) to a subcommand.
 void add_method_option(CLI::App& command, std::string& method);
 // Adds `--tol` (relative error allowed to `--method auto`, default 1e-6, > 0).
-void add_tolerance_option(CLI::App& command, double& tolerance);
+CLI::Option* add_tolerance_option(CLI::App& command, double& tolerance);
+
+// --tol means one thing: the error `--method auto` allows when it chooses a method. With a named
+// method it does not apply (each method works to its own tolerance): InvalidInput saying so.
+void refuse_tol_with_named_method(const CLI::Option* tol_option, const std::string& method);
 
 // A sentence for non-convergence messages: which other method may work.
 std::string other_methods_hint(BeamMethod failed_method);

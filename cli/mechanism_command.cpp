@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "cli/beam_methods.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/slow_progress.h"
@@ -415,6 +416,7 @@ void register_mechanism_command(CLI::App& app) {
     bool no_exact = false;
     std::string method = "auto";
     double tol = 1e-6;
+    CLI::Option* tol_option = nullptr;
     std::string spring_rule;
   };
   auto args = std::make_shared<AnalyzeArgs>();
@@ -437,8 +439,9 @@ void register_mechanism_command(CLI::App& app) {
                    "exact (PRBM and exact)")
       ->default_str("auto")
       ->transform(CLI::IsMember({"auto", "prbm", "exact"}, CLI::ignore_case));
-  analyze->add_option("--tol", args->tol, "Relative force error allowed by --method auto")
-      ->default_str("1e-6");
+  args->tol_option =
+      analyze->add_option("--tol", args->tol, "Relative force error allowed by --method auto")
+          ->default_str("1e-6");
   analyze->add_option("--spring-rule",
                       args->spring_rule,
                       "Spring constant of fixed-fixed segments (modified designs): pure-bending "
@@ -459,6 +462,7 @@ void register_mechanism_command(CLI::App& app) {
         throw InvalidInput(fmt::format("--out: {}", e.what()));
       }
     }
+    refuse_tol_with_named_method(args->tol_option, args->no_exact ? "prbm" : args->method);
     const MechanismMethodChoice choice =
         choose_mechanism_method(d, args->no_exact ? "prbm" : args->method, args->tol);
     AnalysisOptions o;

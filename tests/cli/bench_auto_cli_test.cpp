@@ -46,6 +46,11 @@ TEST(AutoMethodCli, DefaultToleranceAndOtherBoundariesPickExactMethods) {
   EXPECT_EQ(beam_json("--alpha2 3").value("method", ""), "elliptic");
   EXPECT_EQ(beam_json("--alpha2 3 --tol 1e-2 --boundary guided").value("method", ""), "shooting");
   EXPECT_EQ(run_flexure("beam --alpha2 3 --tol 0").exit_code, 2);
+  // --tol means one thing (the error auto allows); with a named method it is refused, saying why.
+  const CommandResult named = run_flexure("beam --alpha2 3 --method elliptic --tol 1e-3");
+  EXPECT_EQ(named.exit_code, 2);
+  EXPECT_NE(named.err.find("--method auto"), std::string::npos) << named.err;
+  EXPECT_EQ(run_flexure("mechanism analyze 1A-lpp --method exact --tol 0.1").exit_code, 2);
 }
 
 }  // namespace
