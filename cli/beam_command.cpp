@@ -11,6 +11,7 @@
 #include "cli/commands.h"
 #include "flexure/io/chain_toml.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/names.h"
 
 namespace flexure::cli {
 namespace {
@@ -39,6 +40,8 @@ struct BeamArgs {
   int elements = 100;
   int increments = 10;
   std::string chain_variant = "corrected";
+  std::string integrator = "cvodes";
+  CLI::Option* integrator_option = nullptr;
   std::string chain_file;
   CLI::Option* tip_x_option = nullptr;
   CLI::Option* tip_y_option = nullptr;
@@ -83,6 +86,15 @@ BeamProblem make_problem(const BeamArgs& args) {
   problem.elements = args.elements;
   problem.increments = args.increments;
   problem.chain_variant = chain_variant_from_string(args.chain_variant);
+  if (*args.integrator_option && !same_name(args.method, "shooting") &&
+      !same_name(args.method, "auto")) {
+    throw InvalidInput(fmt::format(
+        "--integrator chooses the shooting method's integrator; --method {} does not use one",
+        args.method));
+  }
+  problem.integrator = args.integrator == "dormand-prince"
+                           ? ElasticaIntegrator::Backend::kDormandPrince
+                           : ElasticaIntegrator::Backend::kCvodes;
   const bool any_given = *args.alpha2_option || *args.theta0_option || *args.b_over_l_option;
   if (*args.chain_option) {
     if (any_given || args.load_ratio_n != 0.0 || args.mu != 0.0 || args.follower != 0.0 ||
@@ -344,6 +356,14 @@ void register_beam_command(CLI::App& app) {
       ->default_str("100");
   beam->add_option("--increments", args->increments, "Chain algorithm: load increments")
       ->default_str("10");
+  args->integrator_option =
+      beam->add_option("--integrator",
+                       args->integrator,
+                       "Shooting method: cvodes (default, the reference: adaptive Adams with "
+                       "sensitivities, rtol 1e-12) or dormand-prince (explicit Runge-Kutta 5(4), "
+                       "about ten times faster at equal accuracy)")
+          ->default_str("cvodes")
+          ->transform(CLI::IsMember({"cvodes", "dormand-prince"}, CLI::ignore_case));
   beam->add_option("--chain-variant", args->chain_variant, "Chain algorithm: howell | corrected")
       ->default_str("corrected")
       ->transform(CLI::IsMember({"howell", "corrected"}, CLI::ignore_case));

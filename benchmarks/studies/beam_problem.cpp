@@ -195,6 +195,7 @@ BeamSolution solve_numerical_forward(BeamMethod method,
   if (method == BeamMethod::kShooting) {
     ShootingSolver::Options options;
     options.shape_points = std::max(shape_points, 401);
+    options.backend = problem.integrator;
     const ShootingResult r = solve_shooting(chain, options);
     solution.termination = r.termination;
     solution.message = r.message;

@@ -17,6 +17,7 @@
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/common/status.h"
+#include "flexure/solver/shooting/elastica_integrator.h"
 
 namespace flexure {
 
@@ -36,6 +37,10 @@ struct BeamProblem {
   int elements = 100;          // chain algorithm: N elements
   int increments = 10;         // chain algorithm: load increments
   ChainVariant chain_variant = ChainVariant::kCorrected;  // chain algorithm
+  // Shooting method: the integrator of the flexible segments. CVODES (Adams, with sensitivities)
+  // is the reference; Dormand-Prince 5(4) is about ten times cheaper per solve at equal accuracy
+  // for these small systems (docs/performance.md).
+  ElasticaIntegrator::Backend integrator = ElasticaIntegrator::Backend::kCvodes;
   std::optional<SegmentChain> chain;  // a chain of segments (overrides the loads above)
   // `auto` picks the cheapest method whose relative error is within this (method_selector.h).
   double tolerance = 1e-6;

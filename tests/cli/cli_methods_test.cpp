@@ -68,6 +68,19 @@ TEST(CliMethods, GuidedBeamMatchesTwoHalfCantilevers) {
   }
 }
 
+TEST(CliMethods, ShootingIntegratorIsSelectable) {
+  // Howell's worked example (7 decimals) by both integrators; they agree with each other to 1e-9.
+  const Json cvodes = run_json("beam --alpha2 3.0870030 --method shooting --integrator cvodes");
+  const Json rk = run_json("beam --alpha2 3.0870030 --method shooting --integrator dormand-prince");
+  for (const Json* j : {&cvodes, &rk}) {
+    EXPECT_NEAR((*j)["a_over_l"].get<double>(), 0.7383564, 5e-8);
+    EXPECT_NEAR((*j)["b_over_l"].get<double>(), 0.6103718, 5e-8);
+  }
+  EXPECT_NEAR(cvodes["b_over_l"].get<double>(), rk["b_over_l"].get<double>(), 1e-9);
+  EXPECT_NE(run_flexure("beam --help").out.find("--integrator"), std::string::npos);
+  EXPECT_EQ(run_flexure("beam --alpha2 3 --method elliptic --integrator cvodes").exit_code, 2);
+}
+
 TEST(CliMethods, ChainKeysMeanWhatTheirNamesSay) {
   test::ScratchDir dir;
   // A strip in SI units: l = 0.05 m, EI = 0.02083 N m^2, Fx = -2.5 N, Fy = 4.33 N. Howell's
