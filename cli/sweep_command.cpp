@@ -1,14 +1,14 @@
 // `flexure sweep beam`: the end-loaded cantilever over a range of alpha2, written to HDF5.
 #include <fmt/format.h>
-#include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <memory>
 
 #include "cli/beam_methods.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/slow_progress.h"
 #include "flexure/io/beam_sweep.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/output_path.h"
@@ -29,23 +29,6 @@ struct SweepBeamArgs {
 
 // 10^7 points keep the five columns under 400 MB in memory.
 constexpr long kMaxSweepCount = 10'000'000;
-// Below this many points a sweep takes well under a second: no progress bar.
-constexpr long kProgressBarMinCount = 20'000;
-
-void draw_progress(long done, long total) {
-  constexpr int kWidth = 40;
-  const int filled = total > 0 ? static_cast<int>(kWidth * done / total) : kWidth;
-  std::fprintf(stderr,
-               "\r[%s%s] %3ld%% %ld/%ld",
-               std::string(filled, '#').c_str(),
-               std::string(kWidth - filled, ' ').c_str(),
-               total > 0 ? 100 * done / total : 100L,
-               done,
-               total);
-  if (done >= total) std::fputc('\n', stderr);
-  std::fflush(stderr);
-}
-
 void run_sweep_beam(const SweepBeamArgs& args) {
   const auto started = std::chrono::steady_clock::now();
   require_finite_input(args.load_ratio_n, "--n (load ratio n)");
@@ -85,8 +68,15 @@ void run_sweep_beam(const SweepBeamArgs& args) {
   };
   io::BeamSweepOptions options;
   options.threads = args.threads;
-  if (::isatty(STDERR_FILENO) && range.count >= kProgressBarMinCount) {
-    options.progress = draw_progress;
+  // Chunks of about 1/64 of each thread's share, so that progress moves steadily on slow methods;
+  // at most 2048 loads, which amortises the hand-out on fast ones.
+  options.chunk = std::clamp(range.count / (64L * args.threads), 1L, 2048L);
+  // By elapsed time, not by count: silent for the first second, then "sweep beam: k/n (t s)" on a
+  // terminal (a shooting sweep of 2000 loads takes about 40 s).
+  if (auto progress = slow_progress("sweep beam")) {
+    options.progress = [progress](long done, long total) {
+      progress(static_cast<std::size_t>(done), static_cast<std::size_t>(total));
+    };
   }
   const io::BeamSweepTable table = io::run_beam_sweep(alpha2, solve_point, options);
 
