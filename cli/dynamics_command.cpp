@@ -21,6 +21,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/slow_progress.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/output_path.h"
 #include "flexure/mechanisms/dynamics/cfsm_designs.h"
@@ -127,7 +128,8 @@ void run_dynamics(const DynamicsArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<double> omegas(range.count);
   for (long i = 0; i < range.count; ++i) omegas[i] = range.at(i);
-  const std::vector<ForceStatistics> rows = inverse.sweep(motion, omegas);
+  const std::vector<ForceStatistics> rows =
+      inverse.sweep(motion, omegas, slow_progress("dynamics"));
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<double> mean, median, min, max, p2p, pcf;

@@ -111,13 +111,16 @@ ForceStatistics InverseDynamics::statistics(const SinusoidalMotion& m) const {
   return s;
 }
 
-std::vector<ForceStatistics> InverseDynamics::sweep(SinusoidalMotion motion,
-                                                    const std::vector<double>& omegas) const {
+std::vector<ForceStatistics> InverseDynamics::sweep(
+    SinusoidalMotion motion,
+    const std::vector<double>& omegas,
+    const std::function<void(std::size_t, std::size_t)>& progress) const {
   std::vector<ForceStatistics> rows;
   rows.reserve(omegas.size());
   for (double w : omegas) {
     motion.omega = w;
     rows.push_back(statistics(motion));
+    if (progress) progress(rows.size(), omegas.size());
   }
   return rows;
 }

@@ -7,6 +7,8 @@
 //   M theta2'' + 1/2 M' theta2'^2 + V' = -F r1' + Q_CF + Q_AF          (docs/dynamics.md eq. D7)
 // Frequency sweeps give per omega the mean, median, peak-to-peak force and the percent constant
 // force 100 min F/max F (paper, PCF expression after Table 10) over one period.
+#include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "flexure/mechanisms/dynamics/slider_crank_dynamics.h"
@@ -60,9 +62,12 @@ class InverseDynamics {
   // One period (t_k = k T/N, k = 0..N-1); with omega = 0 the stroke is swept quasi-statically.
   std::vector<ForceSample> history(const SinusoidalMotion& motion) const;
   ForceStatistics statistics(const SinusoidalMotion& motion) const;
-  // One statistics row per frequency.
-  std::vector<ForceStatistics> sweep(SinusoidalMotion motion,
-                                     const std::vector<double>& omegas) const;
+  // One statistics row per frequency. `progress(done, total)`, if set, is called after each row
+  // (for a progress display on long sweeps).
+  std::vector<ForceStatistics> sweep(
+      SinusoidalMotion motion,
+      const std::vector<double>& omegas,
+      const std::function<void(std::size_t done, std::size_t total)>& progress = {}) const;
 
   const SliderCrankDynamics& model() const { return model_; }
 

@@ -224,6 +224,23 @@ TEST(DynamicsInverse, LowestPeakToPeakFrequencyFollowsTable10WithOnePreload) {
   }
 }
 
+TEST(DynamicsInverse, SweepReportsProgressAfterEachRowAndMatchesSingleRows) {
+  const CfsmDesign& d = find_cfsm_design("2B-lplm");
+  const InverseDynamics inverse(model_of(d), {.samples_per_period = 64});
+  const std::vector<double> omegas = {0.0, 10.0, 20.0, 30.0};
+  std::vector<std::size_t> done;
+  const std::vector<ForceStatistics> rows =
+      inverse.sweep(motion_of(d, 0.0), omegas, [&](std::size_t k, std::size_t total) {
+        EXPECT_EQ(total, omegas.size());
+        done.push_back(k);
+      });
+  EXPECT_EQ(done, (std::vector<std::size_t>{1, 2, 3, 4}));
+  ASSERT_EQ(rows.size(), omegas.size());
+  SinusoidalMotion m = motion_of(d, 0.0);
+  m.omega = 20.0;
+  EXPECT_EQ(rows[2].peak_to_peak, inverse.statistics(m).peak_to_peak);
+}
+
 TEST(DynamicsInverse, RejectsBadMotion) {
   const CfsmDesign& d = find_cfsm_design("2B-lplm");
   const InverseDynamics inverse(model_of(d));
