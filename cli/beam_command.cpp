@@ -1,15 +1,21 @@
 // `flexure beam`: one cantilever with an end load, solved for a given alpha2, theta0 or b/l.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
 #include <numbers>
+#include <optional>
+#include <string_view>
+#include <utility>
 
 #include "cli/beam_methods.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "flexure/benchmarks/studies/physical_beam.h"
 #include "flexure/io/chain_toml.h"
+#include "flexure/io/quantity.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
 
@@ -20,7 +26,7 @@ struct BeamArgs {
   double load_ratio_n = 0.0;
   double mu = 0.0;
   double alpha2 = 0.0;
-  double theta0 = 0.0;
+  std::string theta0;  // an angle, radians or with a unit (30deg)
   double b_over_l = 0.0;
   std::string method = "auto";
   double tol = 1e-6;  // --method auto: relative error allowed
@@ -35,7 +41,7 @@ struct BeamArgs {
   std::string boundary = "free";
   double tip_x = 0.0;
   double tip_y = 0.0;
-  double tip_angle = 0.0;
+  std::string tip_angle;  // an angle, radians or with a unit
   double follower = 0.0;
   int elements = 100;
   int increments = 10;
@@ -47,13 +53,70 @@ struct BeamArgs {
   CLI::Option* tip_y_option = nullptr;
   CLI::Option* tip_angle_option = nullptr;
   CLI::Option* chain_option = nullptr;
+  // A physical cantilever (SI, or values with units: 50mm, 200GPa, 5N; io/quantity.h).
+  std::string length, E, I, width, thickness, Fx, Fy, M, yield_strength;
+  std::vector<CLI::Option*> physical_options;
 };
+
+// What `flexure beam` solves: Howell's nondimensional problem, and the physical beam or chain file
+// it came from, if any.
+struct BeamInput {
+  BeamProblem problem;
+  std::optional<PhysicalCantilever> physical;
+  std::optional<io::ChainFile> chain_file;
+  bool is_physical() const { return physical || (chain_file && chain_file->physical); }
+};
+
+void warn(const std::string& text) {
+  if (!text.empty()) std::cerr << "flexure: warning: " << text << "\n";
+}
+
+// An angle option: radians, or with a unit; a plain value above a full turn is probably degrees.
+double angle_option(const std::string& text, const char* what) {
+  const io::Quantity q = io::parse_quantity(text, io::Dimension::kAngle, what);
+  warn(io::angle_warning(q, what));
+  return q.si;
+}
+
+std::optional<double> quantity_option(const std::string& text,
+                                      io::Dimension dimension,
+                                      const char* what) {
+  if (text.empty()) return std::nullopt;
+  return io::parse_quantity(text, dimension, what).si;
+}
+
+// The physical cantilever of --length, --E, the section and the loads (docs/units.md).
+PhysicalCantilever physical_beam(const BeamArgs& args) {
+  using io::Dimension;
+  PhysicalCantilever beam;
+  if (args.length.empty() || args.E.empty()) {
+    throw InvalidInput(
+        "a physical beam needs --length and --E, a section (--I, or --width and --thickness) and "
+        "its tip loads (--Fx, --Fy, --M; default 0)");
+  }
+  beam.length = io::parse_quantity(args.length, Dimension::kLength, "--length").si;
+  const io::Quantity E = io::parse_quantity(args.E, Dimension::kStress, "--E");
+  beam.E = E.si;
+  beam.I = quantity_option(args.I, Dimension::kSecondMoment, "--I");
+  beam.width = quantity_option(args.width, Dimension::kLength, "--width");
+  beam.thickness = quantity_option(args.thickness, Dimension::kLength, "--thickness");
+  beam.Fx = quantity_option(args.Fx, Dimension::kForce, "--Fx").value_or(0.0);
+  beam.Fy = quantity_option(args.Fy, Dimension::kForce, "--Fy").value_or(0.0);
+  beam.M = quantity_option(args.M, Dimension::kMoment, "--M").value_or(0.0);
+  beam.yield_strength =
+      quantity_option(args.yield_strength, Dimension::kStress, "--yield-strength");
+  beam.validate();
+  warn(io::modulus_warning(E, "--E"));
+  if (beam.thickness) warn(io::thickness_warning(*beam.thickness, beam.length, "--thickness"));
+  return beam;
+}
 
 constexpr int kMaxShapePoints = 1'000'000;
 
-BeamProblem make_problem(const BeamArgs& args) {
+BeamInput make_input(const BeamArgs& args) {
   refuse_tol_with_named_method(args.tol_option, args.method);
-  BeamProblem problem;
+  BeamInput input;
+  BeamProblem& problem = input.problem;
   require_finite_input(args.load_ratio_n, "--n (load ratio n)");
   require_finite_input(args.mu, "--mu (end moment M l/EI)");
   problem.load_ratio_n = args.load_ratio_n;
@@ -77,8 +140,12 @@ BeamProblem make_problem(const BeamArgs& args) {
   };
   problem.prescribed.x = prescribe(args.tip_x_option, args.tip_x, mask.x, "--tip-x");
   problem.prescribed.y = prescribe(args.tip_y_option, args.tip_y, mask.y, "--tip-y");
-  problem.prescribed.theta =
-      prescribe(args.tip_angle_option, args.tip_angle, mask.theta, "--tip-angle");
+  if (*args.tip_angle_option) {
+    problem.prescribed.theta = prescribe(args.tip_angle_option,
+                                         angle_option(args.tip_angle, "--tip-angle"),
+                                         mask.theta,
+                                         "--tip-angle");
+  }
   require_finite_input(args.follower, "--follower (follower force F l^2/EI)");
   problem.follower = args.follower;
   require_in_range(args.elements, "--elements (chain algorithm elements N)", 1, 1'000'000);
@@ -95,59 +162,125 @@ BeamProblem make_problem(const BeamArgs& args) {
   problem.integrator = args.integrator == "dormand-prince"
                            ? ElasticaIntegrator::Backend::kDormandPrince
                            : ElasticaIntegrator::Backend::kCvodes;
+  if (*args.shape_option) {
+    require_in_range(args.shape_points, "--shape (number of shape points)", 2, kMaxShapePoints);
+    problem.shape_points = args.shape_points;
+  }
   const bool any_given = *args.alpha2_option || *args.theta0_option || *args.b_over_l_option;
+  const bool nondimensional_loads = any_given || args.load_ratio_n != 0.0 || args.mu != 0.0 ||
+                                    args.follower != 0.0 || args.boundary != "free";
+  const bool physical = std::any_of(args.physical_options.begin(),
+                                    args.physical_options.end(),
+                                    [](const CLI::Option* o) { return bool(*o); });
+  if (physical) {
+    if (nondimensional_loads || *args.chain_option) {
+      throw InvalidInput(
+          "a physical beam (--length, --E, the section, --Fx, --Fy, --M) is loaded in newtons; "
+          "do not combine it with the nondimensional --alpha2, --theta0, --b-over-l, --n, --mu, "
+          "--follower, --boundary or with --chain (a chain file can be in SI units itself: "
+          "docs/chain-toml.md)");
+    }
+    input.physical = physical_beam(args);
+    problem = input.physical->to_problem(problem);
+    return input;
+  }
   if (*args.chain_option) {
-    if (any_given || args.load_ratio_n != 0.0 || args.mu != 0.0 || args.follower != 0.0 ||
-        args.boundary != "free") {
+    if (nondimensional_loads) {
       throw InvalidInput(
           "--chain FILE.toml describes the whole problem (segments, loads, boundary); do not "
           "combine it with --alpha2, --theta0, --b-over-l, --n, --mu, --follower or --boundary");
     }
-    problem.chain = io::read_chain_toml(args.chain_file);
+    input.chain_file = io::read_chain_file(args.chain_file);
+    for (const std::string& w : input.chain_file->warnings) warn(w);
+    problem.chain = input.chain_file->chain;
     problem.boundary = problem.chain->end;
-    if (*args.shape_option) {
-      require_in_range(args.shape_points, "--shape (number of shape points)", 2, kMaxShapePoints);
-      problem.shape_points = args.shape_points;
-    }
-    return problem;
+    return input;
   }
   if (!any_given) {
-    throw InvalidInput("one of --alpha2, --theta0 or --b-over-l is required (or --chain FILE)");
+    throw InvalidInput(
+        "one of --alpha2, --theta0 or --b-over-l is required (or --chain FILE, or a physical "
+        "beam: --length, --E, the section and --Fx, --Fy, --M)");
   }
   if (*args.alpha2_option) {
     require_finite_input(args.alpha2, "--alpha2 (P l^2/EI)");
     problem.given = BeamProblem::Given::kAlpha2;
     problem.value = args.alpha2;
   } else if (*args.theta0_option) {
-    require_finite_input(args.theta0, "--theta0 (tip angle, rad)");
     problem.given = BeamProblem::Given::kTheta0;
-    problem.value = args.theta0;
+    problem.value = angle_option(args.theta0, "--theta0 (tip angle)");
   } else {
     require_in_range(args.b_over_l, "--b-over-l (tip deflection b/l)", -1.0, 1.0);
     problem.given = BeamProblem::Given::kBOverL;
     problem.value = args.b_over_l;
   }
-  if (*args.shape_option) {
-    require_in_range(args.shape_points, "--shape (number of shape points)", 2, kMaxShapePoints);
-    problem.shape_points = args.shape_points;
-  }
-  return problem;
+  return input;
 }
 
-void print_report(const BeamProblem& problem, const BeamSolution& solution) {
+// The physical results in words: tip, moments, stress and safety factor (docs/units.md).
+void print_physical(const PhysicalResults& r) {
+  fmt::print("  in SI units:\n");
+  fmt::print("    tip x = {:.10g} m, tip y = {:.10g} m, theta0 = {:.10g} rad ({:.6g} deg)\n",
+             r.tip_x,
+             r.tip_y,
+             r.theta0,
+             r.theta0 * 180.0 / std::numbers::pi);
+  fmt::print(
+      "    bending moment at the clamp = {:.10g} N m; largest |moment| = {:.10g} N m at s = "
+      "{:.6g} m{}\n",
+      r.root_moment,
+      r.max_moment,
+      r.max_moment_at,
+      std::string_view(r.max_from) == "ends" ? " (PRBM: the larger end moment)" : "");
+  if (r.max_stress) {
+    fmt::print("    largest bending stress M c/I = {:.6g} MPa at s = {:.6g} m\n",
+               *r.max_stress * 1e-6,
+               *r.max_stress_at);
+  } else {
+    fmt::print("    bending stress: not computed (the section's thickness is not given)\n");
+  }
+  if (r.yield_strength) {
+    if (r.safety_factor) {
+      fmt::print("    safety factor against yield (S_y = {:.6g} MPa): {:.4g}{}\n",
+                 *r.yield_strength * 1e-6,
+                 *r.safety_factor,
+                 *r.safety_factor < 1.0 ? "  -- YIELDS" : "");
+    } else {
+      fmt::print("    safety factor: none (no bending stress)\n");
+    }
+  }
+}
+
+void print_report(const BeamInput& input,
+                  const BeamProblem& problem,
+                  const BeamSolution& solution,
+                  const std::optional<PhysicalResults>& physical) {
   const double degrees = 180.0 / std::numbers::pi;
   const bool howell = std::isfinite(solution.alpha2);  // false: a chain without a single alpha2
-  if (problem.chain) {
+  if (input.physical) {
+    const PhysicalCantilever& b = *input.physical;
+    fmt::print(
+        "Cantilever in SI units, method {}: L = {:g} m, E = {:g} Pa, I = {:g} m^4 (EI = {:g} N "
+        "m^2); tip load Fx = {:g} N, Fy = {:g} N, M = {:g} N m\n",
+        to_string(solution.method),
+        b.length,
+        b.E,
+        b.second_moment(),
+        b.flexural_rigidity(),
+        b.Fx,
+        b.Fy,
+        b.M);
+  } else if (problem.chain) {
     const Reaction& tip = solution.chain_tip_load;
     fmt::print(
         "Segment chain ({} segments), method {}, {} end; tip load Fx = {:g}, Fy = {:g}, M = "
-        "{:g} (the file's units)\n",
+        "{:g} {}\n",
         problem.chain->segment_count(),
         to_string(solution.method),
         to_string(problem.chain->end),
         tip.Fx,
         tip.Fy,
-        tip.M);
+        tip.M,
+        input.is_physical() ? "(N, N m)" : "(the file's units)");
   } else {
     fmt::print("Cantilever with end load, method {} (n = {:g}, mu = {:g}, {} end)\n",
                to_string(solution.method),
@@ -157,6 +290,13 @@ void print_report(const BeamProblem& problem, const BeamSolution& solution) {
   }
   if (howell) {
     fmt::print("  alpha2 = P l^2/EI = {:.10g}\n", solution.alpha2);
+    if (input.physical) {
+      fmt::print("  n      = {}, mu = M l/EI = {:.10g}\n",
+                 std::isfinite(solution.load_ratio_n)
+                     ? fmt::format("{:.10g}", solution.load_ratio_n)
+                     : std::string("none (axial load only)"),
+                 solution.mu);
+    }
   } else {
     fmt::print("  alpha2: none (the chain is not one uniform straight beam)\n");
   }
@@ -172,21 +312,41 @@ void print_report(const BeamProblem& problem, const BeamSolution& solution) {
         solution.reactions.Fy,
         solution.reactions.M);
   }
-  if (problem.chain) {
+  if (input.chain_file) {
     fmt::print(
         "  root moment M(0) = {:.10g}; reactions at the clamp: Fx = {:.10g}, Fy = {:.10g}, "
-        "M = {:.10g} (the file's units)\n",
+        "M = {:.10g} {}\n",
         solution.chain_root_moment,
         solution.chain_reactions.Fx,
         solution.chain_reactions.Fy,
-        solution.chain_reactions.M);
+        solution.chain_reactions.M,
+        input.is_physical() ? "(N m; N, N, N m)" : "(the file's units)");
   }
+  if (physical) print_physical(*physical);
   fmt::print("  {} elastica, {} inflection point(s), branch: {}\n",
              solution.family,
              solution.inflection_points,
              solution.branch);
   fmt::print("  converged in {} iterations: {}\n", solution.iterations, solution.message);
-  if (!solution.shape.empty()) {
+  if (physical && !physical->shape.empty()) {
+    fmt::print("  shape ({} points, SI):\n  {:>12} {:>14} {:>14} {:>14} {:>14} {:>14}\n",
+               physical->shape.size(),
+               "s [m]",
+               "x [m]",
+               "y [m]",
+               "theta [rad]",
+               "M [N m]",
+               "stress [Pa]");
+    for (const PhysicalShapePoint& p : physical->shape) {
+      fmt::print("  {:12.6g} {:14.8g} {:14.8g} {:14.8f} {:14.8g} {:>14}\n",
+                 p.s,
+                 p.x,
+                 p.y,
+                 p.theta,
+                 p.moment,
+                 p.stress ? fmt::format("{:.8g}", *p.stress) : std::string("-"));
+    }
+  } else if (!solution.shape.empty()) {
     fmt::print("  shape ({} points):\n  {:>12} {:>14} {:>14} {:>14}\n",
                solution.shape.size(),
                "s",
@@ -209,7 +369,38 @@ Json reaction_json(const Reaction& r) {
       {"Fx", number_or_null(r.Fx)}, {"Fy", number_or_null(r.Fy)}, {"M", number_or_null(r.M)}};
 }
 
-Json to_json(const BeamProblem& problem, const BeamSolution& solution) {
+// The physical keys (docs/cli.md, "Physical beams"): SI units, named with their unit where the
+// nondimensional output already uses the bare name.
+void add_physical_json(Json& out, const BeamInput& input, const PhysicalResults& r) {
+  out["units"] = "SI";
+  out["length_m"] = r.length;
+  if (input.physical) {
+    const PhysicalCantilever& b = *input.physical;
+    out["E_Pa"] = b.E;
+    out["I_m4"] = b.second_moment();
+    out["EI_Nm2"] = b.flexural_rigidity();
+    out["Fx_N"] = b.Fx;
+    out["Fy_N"] = b.Fy;
+    out["M_Nm"] = b.M;
+  }
+  out["tip_x"] = r.tip_x;
+  out["tip_y"] = r.tip_y;
+  out["root_moment_Nm"] = r.root_moment;
+  out["max_moment_Nm"] = r.max_moment;
+  out["max_moment_at_m"] = r.max_moment_at;
+  out["max_moment_from"] = r.max_from;
+  out["max_stress"] = r.max_stress ? Json(*r.max_stress) : Json(nullptr);
+  out["max_stress_at_m"] = r.max_stress_at ? Json(*r.max_stress_at) : Json(nullptr);
+  if (r.yield_strength) {
+    out["yield_strength"] = *r.yield_strength;
+    out["safety_factor"] = r.safety_factor ? Json(*r.safety_factor) : Json(nullptr);
+  }
+}
+
+Json to_json(const BeamInput& input,
+             const BeamProblem& problem,
+             const BeamSolution& solution,
+             const std::optional<PhysicalResults>& physical) {
   Json out;
   out["method"] = to_string(solution.method);
   out["method_reason"] = solution.method_reason;
@@ -235,7 +426,7 @@ Json to_json(const BeamProblem& problem, const BeamSolution& solution) {
   out["termination"] = termination_name(solution.termination);
   out["boundary"] = to_string(problem.boundary);
   out["reactions"] = reaction_json(solution.reactions);
-  if (problem.chain) {
+  if (input.chain_file) {
     // The chain's loads in the file's own units, whether or not it has Howell's parameters.
     out["tip_load_chain_units"] = reaction_json(solution.chain_tip_load);
     out["root_moment_chain_units"] = solution.chain_root_moment;
@@ -257,14 +448,38 @@ Json to_json(const BeamProblem& problem, const BeamSolution& solution) {
     for (const ShapePoint& p : solution.shape) {
       shape.push_back(Json{{"s", p.s}, {"x", p.x}, {"y", p.y}, {"theta", p.theta}});
     }
+    if (physical) {
+      // The same points in SI: s, x, y in metres, the bending moment and stress.
+      for (std::size_t i = 0; i < physical->shape.size() && i < shape.size(); ++i) {
+        const PhysicalShapePoint& p = physical->shape[i];
+        shape[i]["s_m"] = p.s;
+        shape[i]["x_m"] = p.x;
+        shape[i]["y_m"] = p.y;
+        shape[i]["moment_Nm"] = p.moment;
+        shape[i]["stress_Pa"] = p.stress ? Json(*p.stress) : Json(nullptr);
+      }
+    }
     out["shape"] = std::move(shape);
   }
+  if (physical) add_physical_json(out, input, *physical);
   return out;
 }
 
 void run_beam(const BeamArgs& args) {
-  const BeamProblem problem = make_problem(args);
-  const BeamSolution solution = solve_beam(beam_method_from_string(args.method), problem);
+  const BeamInput input = make_input(args);
+  const BeamProblem& problem = input.problem;
+  const BeamMethod method = beam_method_from_string(args.method);
+  BeamSolution solution;
+  std::optional<PhysicalResults> physical;
+  if (input.is_physical()) {
+    PhysicalBeamSolution solved = input.physical
+                                      ? solve_physical_beam(method, *input.physical, problem)
+                                      : solve_physical_chain(method, problem, *input.chain_file);
+    solution = std::move(solved.solution);
+    if (solution.converged()) physical = std::move(solved.physical);
+  } else {
+    solution = solve_beam(method, problem);
+  }
   if (!solution.converged()) {
     // What was reached, for the JSON error object (null where it is not a number).
     Json reached;
@@ -289,6 +504,10 @@ void run_beam(const BeamArgs& args) {
         std::move(reached));
   }
   if (!problem.chain) require_finite_result(solution.alpha2, "alpha2");
+  if (physical) {
+    require_finite_result(physical->max_moment, "max_moment_Nm");
+    if (physical->max_stress) require_finite_result(*physical->max_stress, "max_stress");
+  }
   require_finite_result(solution.tip.a_over_l, "a/l");
   require_finite_result(solution.tip.b_over_l, "b/l");
   require_finite_result(solution.tip.theta0, "theta0");
@@ -308,14 +527,14 @@ void run_beam(const BeamArgs& args) {
         solution.prbm_limits_source);
   }
   if (args.json) {
-    print_json(to_json(problem, solution));  // refuses NaN/Inf anywhere, e.g. in the shape
+    print_json(to_json(input, problem, solution, physical));  // refuses NaN/Inf anywhere
   } else {
     for (const ShapePoint& p : solution.shape) {
       require_finite_result(p.x, "shape x");
       require_finite_result(p.y, "shape y");
       require_finite_result(p.theta, "shape theta");
     }
-    print_report(problem, solution);
+    print_report(input, problem, solution, physical);
   }
 }
 
@@ -332,7 +551,8 @@ void register_beam_command(CLI::App& app) {
   CLI::Option_group* given =
       beam->add_option_group("given", "Exactly one of --alpha2, --theta0, --b-over-l");
   args->alpha2_option = given->add_option("--alpha2", args->alpha2, "Load alpha2 = P l^2/EI");
-  args->theta0_option = given->add_option("--theta0", args->theta0, "Tip angle theta0 (rad)");
+  args->theta0_option =
+      given->add_option("--theta0", args->theta0, "Tip angle theta0 (rad, or with a unit: 30deg)");
   args->b_over_l_option =
       given->add_option("--b-over-l", args->b_over_l, "Tip deflection b/l (-1..1)");
   given->require_option(0, 1);
@@ -348,8 +568,10 @@ void register_beam_command(CLI::App& app) {
       "--tip-x", args->tip_x, "Prescribed tip x/l (pinned, fixed; default: unloaded tip)");
   args->tip_y_option = beam->add_option(
       "--tip-y", args->tip_y, "Prescribed tip y/l (pinned, slider, fixed; default 0)");
-  args->tip_angle_option = beam->add_option(
-      "--tip-angle", args->tip_angle, "Prescribed tip angle, rad (guided, fixed; default 0)");
+  args->tip_angle_option =
+      beam->add_option("--tip-angle",
+                       args->tip_angle,
+                       "Prescribed tip angle, rad or with a unit (guided, fixed; default 0)");
   beam->add_option("--follower", args->follower, "Follower tip force F l^2/EI, normal to the tip")
       ->default_str("0");
   beam->add_option("--elements", args->elements, "Chain algorithm: number of elements N")
@@ -371,6 +593,35 @@ void register_beam_command(CLI::App& app) {
       "--chain", args->chain_file, "Segment chain from a TOML file (docs/chain-toml.md)");
   args->shape_option = beam->add_option(
       "--shape", args->shape_points, "Also output the deflected shape at K points (K >= 2)");
+  // A physical cantilever (docs/units.md): SI numbers or values with units.
+  CLI::Option_group* physical = beam->add_option_group(
+      "physical beam", "A cantilever in physical units (SI, or with units: 50mm, 200GPa, 5N)");
+  const std::pair<const char*, std::string*> physical_flags[] = {
+      {"--length", &args->length},
+      {"--E", &args->E},
+      {"--I", &args->I},
+      {"--width", &args->width},
+      {"--thickness", &args->thickness},
+      {"--Fx", &args->Fx},
+      {"--Fy", &args->Fy},
+      {"--M", &args->M},
+      {"--yield-strength", &args->yield_strength},
+  };
+  const char* physical_help[] = {
+      "Beam length L (m, or 50mm, 2in)",
+      "Young's modulus E (Pa, or 200GPa, 30Msi)",
+      "Area moment of inertia I (m^4, or mm^4, in^4); or --width and --thickness",
+      "Section width b (m, or mm, in), out of the plane of bending",
+      "Section thickness h (m, or mm, in), in the plane of bending: I = b h^3/12, stress M h/2I",
+      "Tip force along the undeformed beam, from the clamp (N, or lbf)",
+      "Tip force perpendicular to the undeformed beam (N, or lbf)",
+      "Tip moment, counter-clockwise (N m, or N mm, lbf in)",
+      "Yield strength S_y for the safety factor (Pa, or MPa, ksi)",
+  };
+  for (std::size_t i = 0; i < std::size(physical_flags); ++i) {
+    args->physical_options.push_back(
+        physical->add_option(physical_flags[i].first, *physical_flags[i].second, physical_help[i]));
+  }
   beam->add_flag("--json", args->json, "Print one JSON object on stdout");
   beam->callback([args] { run_beam(*args); });
 }

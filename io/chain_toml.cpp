@@ -7,39 +7,89 @@
 #include <cstdint>
 #include <optional>
 #include <set>
+#include <utility>
 
+#include "flexure/io/quantity.h"
 #include "flexure/io/toml_support.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/names.h"
 
 namespace flexure::io {
 namespace {
 
-// A number (integer or float) at `key`; nullopt if absent.
-std::optional<double> number(const toml::table& table,
-                             const std::string& key,
-                             const std::string& where,
-                             const std::string& source) {
-  const toml::node* node = table.get(key);
-  if (node == nullptr) return std::nullopt;
-  if (const std::optional<double> v = toml_number(*node)) {
-    if (!std::isfinite(*v)) {
-      toml_fail(source, line_of(*node), fmt::format("{}.{} must be a finite number", where, key));
+// Reads values of one file, each a number or (in physical units) a string with a unit, and
+// remembers whether any unit was written (which makes the file physical).
+struct Reader {
+  std::string source;
+  bool any_unit = false;
+  std::vector<std::string> warnings;
+
+  // A number or a string with a unit of `dimension` at `key`; nullopt if absent.
+  std::optional<double> number(const toml::table& table,
+                               const std::string& key,
+                               const std::string& where,
+                               std::optional<Dimension> dimension = std::nullopt) {
+    const std::optional<Quantity> q = quantity(table, key, where, dimension);
+    if (!q) return std::nullopt;
+    return q->si;
+  }
+
+  std::optional<Quantity> quantity(const toml::table& table,
+                                   const std::string& key,
+                                   const std::string& where,
+                                   std::optional<Dimension> dimension) {
+    const toml::node* node = table.get(key);
+    if (node == nullptr) return std::nullopt;
+    if (const std::optional<double> v = toml_number(*node)) {
+      if (!std::isfinite(*v)) {
+        toml_fail(source, line_of(*node), fmt::format("{}.{} must be a finite number", where, key));
+      }
+      return Quantity{*v, ""};
     }
+    if (dimension && node->is_string()) {
+      try {
+        Quantity q = parse_quantity(**node->as_string(), *dimension, where + "." + key);
+        any_unit = any_unit || q.has_unit();
+        return q;
+      } catch (const InvalidInput& e) {
+        toml_fail(source, line_of(*node), e.what());
+      }
+    }
+    toml_fail(source,
+              line_of(*node),
+              dimension ? fmt::format("{}.{} must be a number or a string with a unit, e.g. "
+                                      "\"50 mm\" ({})",
+                                      where,
+                                      key,
+                                      fmt::join(unit_names(*dimension), ", "))
+                        : fmt::format("{}.{} must be a number", where, key));
+  }
+
+  double required(const toml::table& table,
+                  const std::string& key,
+                  const std::string& where,
+                  int table_line,
+                  std::optional<Dimension> dimension = std::nullopt) {
+    const std::optional<double> v = number(table, key, where, dimension);
+    if (!v)
+      toml_fail(source, table_line, fmt::format("{} is missing the required key '{}'", where, key));
     return *v;
   }
-  toml_fail(source, line_of(*node), fmt::format("{}.{} must be a number", where, key));
-}
 
-double required_number(const toml::table& table,
-                       const std::string& key,
-                       const std::string& where,
-                       const std::string& source,
-                       int table_line) {
-  const std::optional<double> v = number(table, key, where, source);
-  if (!v)
-    toml_fail(source, table_line, fmt::format("{} is missing the required key '{}'", where, key));
-  return *v;
-}
+  void warn(const std::string& text) {
+    if (!text.empty()) warnings.push_back(fmt::format("{}: {}", source, text));
+  }
+
+  // An angle: warn when a plain number (radians) exceeds a full turn (probably degrees).
+  std::optional<double> angle(const toml::table& table,
+                              const std::string& key,
+                              const std::string& where) {
+    const std::optional<Quantity> q = quantity(table, key, where, Dimension::kAngle);
+    if (!q) return std::nullopt;
+    warn(angle_warning(*q, where + "." + key));
+    return q->si;
+  }
+};
 
 const toml::table& as_table(const toml::node& node,
                             const std::string& where,
@@ -49,40 +99,90 @@ const toml::table& as_table(const toml::node& node,
   return *t;
 }
 
-Segment read_segment(const toml::table& t, int index, const std::string& source) {
+// A flexible segment's section: E with I, or E with width and thickness (b h^3 / 12). Only in
+// physical units; checked against the units once the whole file is read.
+struct SectionKeys {
+  std::optional<Quantity> E;
+  std::optional<double> I, width, thickness;
+  int line = 0;
+};
+
+Segment read_segment(const toml::table& t, int index, Reader& r, SectionKeys& section) {
   const std::string where = fmt::format("segment {}", index + 1);
   const toml::node* type_node = t.get("type");
   if (type_node == nullptr || !type_node->is_string()) {
-    toml_fail(
-        source, line_of(t), fmt::format("{} needs type = \"flexible\" or type = \"rigid\"", where));
+    toml_fail(r.source,
+              line_of(t),
+              fmt::format("{} needs type = \"flexible\" or type = \"rigid\"", where));
   }
   const std::string type = **type_node->as_string();
   if (type == "flexible") {
-    check_toml_keys(t, {"type", "length", "EI", "EI_profile", "kappa0"}, where, source);
+    check_toml_keys(
+        t,
+        {"type", "length", "EI", "EI_profile", "kappa0", "E", "I", "width", "thickness"},
+        where,
+        r.source);
     FlexibleSegment s;
-    s.length = required_number(t, "length", where, source, line_of(t));
-    s.EI = number(t, "EI", where, source).value_or(1.0);
-    s.kappa0 = number(t, "kappa0", where, source).value_or(0.0);
+    s.length = r.required(t, "length", where, line_of(t), Dimension::kLength);
+    s.kappa0 = r.number(t, "kappa0", where).value_or(0.0);
+    section.E = r.quantity(t, "E", where, Dimension::kStress);
+    section.I = r.number(t, "I", where, Dimension::kSecondMoment);
+    section.width = r.number(t, "width", where, Dimension::kLength);
+    section.thickness = r.number(t, "thickness", where, Dimension::kLength);
+    section.line = line_of(t);
+    const std::optional<double> EI = r.number(t, "EI", where, Dimension::kRigidity);
+    const bool has_section = section.E || section.I || section.width || section.thickness;
+    if (has_section) {
+      if (EI || t.get("EI_profile") != nullptr) {
+        toml_fail(r.source,
+                  line_of(t),
+                  where + " gives both EI and a section (E, I, width, thickness); give one");
+      }
+      if (!section.E) {
+        toml_fail(r.source, line_of(t), where + ": a section needs the modulus E");
+      }
+      if (section.I.has_value() == (section.width.has_value() || section.thickness.has_value()) ||
+          section.width.has_value() != section.thickness.has_value()) {
+        toml_fail(r.source,
+                  line_of(t),
+                  where +
+                      ": give E with either I or both width and thickness (rectangular "
+                      "section, I = width thickness^3 / 12)");
+      }
+      for (const auto& [name, value] : {std::pair{"E", section.E->si},
+                                        std::pair{"I", section.I.value_or(1.0)},
+                                        std::pair{"width", section.width.value_or(1.0)},
+                                        std::pair{"thickness", section.thickness.value_or(1.0)}}) {
+        if (!(value > 0.0)) {
+          toml_fail(r.source, line_of(t), fmt::format("{}.{} must be > 0", where, name));
+        }
+      }
+      const double I =
+          section.I ? *section.I : *section.width * std::pow(*section.thickness, 3) / 12.0;
+      s.EI = section.E->si * I;
+    } else {
+      s.EI = EI.value_or(1.0);
+    }
     if (const toml::node* profile = t.get("EI_profile")) {
       const toml::array* a = profile->as_array();
       if (a == nullptr)
-        toml_fail(source, line_of(*profile), where + ".EI_profile must be an array");
+        toml_fail(r.source, line_of(*profile), where + ".EI_profile must be an array");
       for (const toml::node& v : *a) {
         const std::optional<double> x = toml_number(v);
-        if (!x) toml_fail(source, line_of(v), where + ".EI_profile must contain numbers");
+        if (!x) toml_fail(r.source, line_of(v), where + ".EI_profile must contain numbers");
         s.EI_profile.push_back(*x);
       }
     }
     return s;
   }
   if (type == "rigid") {
-    check_toml_keys(t, {"type", "length", "angle_offset"}, where, source);
+    check_toml_keys(t, {"type", "length", "angle_offset"}, where, r.source);
     RigidSegment s;
-    s.length = required_number(t, "length", where, source, line_of(t));
-    s.angle_offset = number(t, "angle_offset", where, source).value_or(0.0);
+    s.length = r.required(t, "length", where, line_of(t), Dimension::kLength);
+    s.angle_offset = r.angle(t, "angle_offset", where).value_or(0.0);
     return s;
   }
-  toml_fail(source,
+  toml_fail(r.source,
             line_of(*type_node),
             fmt::format("{}: type '{}' is unknown (allowed: flexible, rigid)", where, type));
 }
@@ -90,11 +190,9 @@ Segment read_segment(const toml::table& t, int index, const std::string& source)
 // node_load.node: an intermediate joint, 1 .. `joints` (= segments - 1), written as an integer or
 // an integral float (2.0). Range-checked while still a double or an int64: casting 1e300 to int is
 // undefined behaviour (it came out as -2147483648 in the message).
-int joint_index(const toml::table& t,
-                const std::string& where,
-                const std::string& source,
-                int joints) {
-  const double value = required_number(t, "node", where, source, line_of(t));
+int joint_index(const toml::table& t, const std::string& where, Reader& r, int joints) {
+  const double value = r.required(t, "node", where, line_of(t));
+  const std::string& source = r.source;
   const toml::node& node = *t.get("node");
   // The value as written: an int64 exactly, a float in its shortest round-trip form.
   const std::string given =
@@ -123,7 +221,7 @@ int joint_index(const toml::table& t,
 
 }  // namespace
 
-SegmentChain parse_chain_toml(const std::string& text, const std::string& source) {
+ChainFile parse_chain_file(const std::string& text, const std::string& source) {
   check_toml_limits(text, source);
   toml::table root;
   try {
@@ -133,8 +231,24 @@ SegmentChain parse_chain_toml(const std::string& text, const std::string& source
         "{}:{}: TOML syntax error: {}", source, e.source().begin.line, e.description()));
   }
   check_toml_keys(
-      root, {"boundary", "segment", "tip_load", "tip", "node_load"}, "the file", source);
-  SegmentChain chain;
+      root,
+      {"boundary", "units", "yield_strength", "segment", "tip_load", "tip", "node_load"},
+      "the file",
+      source);
+  Reader r;
+  r.source = source;
+  ChainFile file;
+  SegmentChain& chain = file.chain;
+  bool units_si = false;
+  if (const toml::node* u = root.get("units")) {
+    if (!u->is_string() || !same_name(**u->as_string(), "SI")) {
+      toml_fail(source,
+                line_of(*u),
+                "units must be \"SI\" (metres, newtons, pascals, radians; values may also be "
+                "written with a unit, e.g. \"50 mm\")");
+    }
+    units_si = true;
+  }
   if (const toml::node* b = root.get("boundary")) {
     if (!b->is_string()) toml_fail(source, line_of(*b), "boundary must be a string");
     try {
@@ -149,26 +263,28 @@ SegmentChain parse_chain_toml(const std::string& text, const std::string& source
   }
   const toml::array* list = segments->as_array();
   if (list == nullptr) toml_fail(source, line_of(*segments), "segment must be an array of tables");
+  std::vector<SectionKeys> sections;
   int index = 0;
   for (const toml::node& node : *list) {
-    chain.segments.push_back(
-        read_segment(as_table(node, fmt::format("segment {}", index + 1), source), index, source));
+    sections.emplace_back();
+    chain.segments.push_back(read_segment(
+        as_table(node, fmt::format("segment {}", index + 1), source), index, r, sections.back()));
     ++index;
   }
   if (const toml::node* node = root.get("tip_load")) {
     const toml::table& t = as_table(*node, "tip_load", source);
     check_toml_keys(t, {"Fx", "Fy", "M", "follower"}, "tip_load", source);
-    chain.tip_load.Fx = number(t, "Fx", "tip_load", source).value_or(0.0);
-    chain.tip_load.Fy = number(t, "Fy", "tip_load", source).value_or(0.0);
-    chain.tip_load.M = number(t, "M", "tip_load", source).value_or(0.0);
-    chain.tip_load.follower = number(t, "follower", "tip_load", source).value_or(0.0);
+    chain.tip_load.Fx = r.number(t, "Fx", "tip_load", Dimension::kForce).value_or(0.0);
+    chain.tip_load.Fy = r.number(t, "Fy", "tip_load", Dimension::kForce).value_or(0.0);
+    chain.tip_load.M = r.number(t, "M", "tip_load", Dimension::kMoment).value_or(0.0);
+    chain.tip_load.follower = r.number(t, "follower", "tip_load", Dimension::kForce).value_or(0.0);
   }
   if (const toml::node* node = root.get("tip")) {
     const toml::table& t = as_table(*node, "tip", source);
     check_toml_keys(t, {"x", "y", "theta"}, "tip", source);
-    chain.prescribed.x = number(t, "x", "tip", source);
-    chain.prescribed.y = number(t, "y", "tip", source);
-    chain.prescribed.theta = number(t, "theta", "tip", source);
+    chain.prescribed.x = r.number(t, "x", "tip", Dimension::kLength);
+    chain.prescribed.y = r.number(t, "y", "tip", Dimension::kLength);
+    chain.prescribed.theta = r.angle(t, "theta", "tip");
   }
   if (const toml::node* node = root.get("node_load")) {
     const toml::array* loads = node->as_array();
@@ -179,23 +295,73 @@ SegmentChain parse_chain_toml(const std::string& text, const std::string& source
       const toml::table& t = as_table(n, where, source);
       check_toml_keys(t, {"node", "Fx", "Fy", "M"}, where, source);
       NodeLoad load;
-      load.node = joint_index(t, where, source, chain.segment_count() - 1);
-      load.Fx = number(t, "Fx", where, source).value_or(0.0);
-      load.Fy = number(t, "Fy", where, source).value_or(0.0);
-      load.M = number(t, "M", where, source).value_or(0.0);
+      load.node = joint_index(t, where, r, chain.segment_count() - 1);
+      load.Fx = r.number(t, "Fx", where, Dimension::kForce).value_or(0.0);
+      load.Fy = r.number(t, "Fy", where, Dimension::kForce).value_or(0.0);
+      load.M = r.number(t, "M", where, Dimension::kMoment).value_or(0.0);
       chain.node_loads.push_back(load);
     }
+  }
+  const std::optional<Quantity> yield =
+      r.quantity(root, "yield_strength", "the file", Dimension::kStress);
+  file.physical = units_si || r.any_unit;
+  // Sections and strengths are physical: in a file of "any consistent units" a stress would have
+  // no unit to be reported in.
+  for (std::size_t k = 0; k < sections.size(); ++k) {
+    const SectionKeys& keys = sections[k];
+    if (!keys.E) {
+      file.sections.emplace_back();
+      continue;
+    }
+    const std::string where = fmt::format("segment {}", k + 1);
+    if (!file.physical) {
+      toml_fail(source,
+                keys.line,
+                where +
+                    " gives a section (E, I, width, thickness), which needs physical units: "
+                    "add units = \"SI\" at the top of the file (or write values with units, "
+                    "e.g. E = \"200 GPa\")");
+    }
+    SegmentSection section;
+    section.E = keys.E->si;
+    section.I = keys.I ? *keys.I : *keys.width * std::pow(*keys.thickness, 3) / 12.0;
+    section.thickness = keys.thickness;
+    file.sections.push_back(section);
+    r.warn(modulus_warning(*keys.E, where + ".E"));
+    if (keys.thickness) {
+      r.warn(thickness_warning(
+          *keys.thickness, std::get<FlexibleSegment>(chain.segments[k]).length, where));
+    }
+  }
+  if (yield) {
+    if (!file.physical) {
+      toml_fail(source,
+                line_of(*root.get("yield_strength")),
+                "yield_strength needs physical units: add units = \"SI\" at the top of the file "
+                "(or write it with a unit, e.g. \"1.5 GPa\")");
+    }
+    if (!(yield->si > 0.0)) {
+      toml_fail(source, line_of(*root.get("yield_strength")), "yield_strength must be > 0");
+    }
+    file.yield_strength = yield->si;
   }
   try {
     chain.validate();
   } catch (const InvalidInput& e) {
     throw InvalidInput(fmt::format("{}: {}", source, e.what()));
   }
-  return chain;
+  file.warnings = std::move(r.warnings);
+  return file;
 }
 
-SegmentChain read_chain_toml(const std::string& path) {
-  return parse_chain_toml(read_toml_file(path, "--chain file"), path);
+ChainFile read_chain_file(const std::string& path) {
+  return parse_chain_file(read_toml_file(path, "--chain file"), path);
 }
+
+SegmentChain parse_chain_toml(const std::string& text, const std::string& source) {
+  return parse_chain_file(text, source).chain;
+}
+
+SegmentChain read_chain_toml(const std::string& path) { return read_chain_file(path).chain; }
 
 }  // namespace flexure::io

@@ -3,12 +3,40 @@
 // `flexure beam --chain FILE.toml` and `flexure path --chain FILE.toml`. Format:
 // docs/chain-toml.md; examples in docs/examples/. Unknown keys, missing values and wrong types are
 // InvalidInput errors that name the file, the key and its line.
+//
+// A file is in physical units (SI) when it says units = "SI" or writes any value with a unit
+// ("50 mm", "200 GPa", "4.33 N"; io/quantity.h). Only then may a flexible segment give its
+// section (E with I, or E with width and thickness) and the file a yield_strength, and only then
+// are results reported in metres, newtons and pascals.
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "flexure/solver/chain_model/segment_chain.h"
 
 namespace flexure::io {
 
+// The section of a flexible segment in SI units: EI = E I, and the bending stress M c / I with
+// c = thickness / 2 when the thickness is known.
+struct SegmentSection {
+  double E = 0.0;                   // Pa
+  double I = 0.0;                   // m^4
+  std::optional<double> thickness;  // m
+};
+
+struct ChainFile {
+  SegmentChain chain;
+  bool physical = false;  // SI units (units = "SI" or a value written with a unit)
+  // Per segment: the section of a flexible segment that gives one (nullopt: EI only, or rigid).
+  std::vector<std::optional<SegmentSection>> sections;
+  std::optional<double> yield_strength;  // Pa
+  std::vector<std::string> warnings;     // likely unit mistakes, for stderr (io/quantity.h)
+};
+
+ChainFile read_chain_file(const std::string& path);
+ChainFile parse_chain_file(const std::string& text, const std::string& source_name);
+
+// The chain alone.
 SegmentChain read_chain_toml(const std::string& path);
 // The same from TOML text; `source_name` is used in messages.
 SegmentChain parse_chain_toml(const std::string& text, const std::string& source_name);

@@ -175,7 +175,10 @@ void describe_chain_loads(const SegmentChain& chain, BeamSolution& s) {
   const double L = chain.total_length();
   const double force_scale = L * L / *EI, moment_scale = L / *EI;
   s.alpha2 = tip.Fy * force_scale;
-  s.load_ratio_n = tip.Fy != 0.0 ? -tip.Fx / tip.Fy + 0.0 : 0.0;  // + 0.0: no -0
+  // + 0.0: no -0. An axial load alone (Fy = 0, Fx != 0) has no Howell's n (eq. 2.67).
+  s.load_ratio_n = tip.Fy != 0.0   ? -tip.Fx / tip.Fy + 0.0
+                   : tip.Fx == 0.0 ? 0.0
+                                   : std::numeric_limits<double>::quiet_NaN();
   s.mu = tip.M * moment_scale;
   s.root_moment *= moment_scale;
   s.reactions = {

@@ -1,0 +1,92 @@
+#pragma once
+// Beams in physical units (SI): the cantilever a designer describes by its length, modulus,
+// section and tip loads, and segment chains read from a TOML file in SI units. The solvers stay
+// nondimensional (Howell's alpha2 = Fy L^2/EI, n = -Fx/Fy, mu = M L/EI, eqs. 2.67, 2.83); this
+// layer converts in and out, and adds what the nondimensional keys do not say: the tip position in
+// metres, the bending moment along the beam, the largest bending stress M c / I and the safety
+// factor against yield (docs/units.md).
+#include <optional>
+#include <vector>
+
+#include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/io/chain_toml.h"
+
+namespace flexure {
+
+// An initially straight cantilever of uniform section, clamped at the origin along +x, loaded at
+// its free end. Fx and Fy are in the beam's frame: +x along the undeformed beam from the clamp, +y
+// perpendicular; M counter-clockwise.
+struct PhysicalCantilever {
+  double length = 0.0;                   // L, m
+  double E = 0.0;                        // Young's modulus, Pa
+  std::optional<double> I;               // m^4 (or width and thickness)
+  std::optional<double> width;           // b, m
+  std::optional<double> thickness;       // h, m (in the plane of bending)
+  double Fx = 0.0;                       // N
+  double Fy = 0.0;                       // N
+  double M = 0.0;                        // N m
+  std::optional<double> yield_strength;  // Pa
+
+  // Throws InvalidInput naming the bad field: lengths, modulus and section > 0 and finite, I or
+  // (width and thickness) but not both, finite loads, a yield strength > 0 with a section to
+  // compute a stress in.
+  void validate() const;
+  // I, or b h^3 / 12 for the rectangle.
+  double second_moment() const;
+  double flexural_rigidity() const { return E * second_moment(); }
+  // Howell's nondimensional problem of this beam, forward (the load is given). A purely axial load
+  // (Fy = 0, Fx != 0) has no Howell's n; it is then a one-segment chain with the same
+  // nondimensional loads, which the shooting and chain methods solve. The method settings
+  // (tolerance, integrator, shape points, ...) are those of `settings`.
+  BeamProblem to_problem(BeamProblem settings = {}) const;
+};
+
+// One point of the deflected shape in SI units.
+struct PhysicalShapePoint {
+  double s = 0.0;       // arc length from the clamp, m
+  double x = 0.0;       // m
+  double y = 0.0;       // m
+  double theta = 0.0;   // rad
+  double moment = 0.0;  // bending moment, N m (counter-clockwise on the part nearer the clamp)
+  std::optional<double> stress;  // |M| c / I, Pa, where the section is known
+};
+
+struct PhysicalResults {
+  double length = 0.0;                  // total arc length, m
+  double tip_x = 0.0;                   // m
+  double tip_y = 0.0;                   // m
+  double theta0 = 0.0;                  // tip angle, rad
+  double root_moment = 0.0;             // bending moment at the clamp, N m
+  double max_moment = 0.0;              // largest |bending moment| along the beam, N m
+  double max_moment_at = 0.0;           // arc length where it acts, m
+  std::optional<double> max_stress;     // largest M c / I, Pa (needs every flexible section)
+  std::optional<double> max_stress_at;  // m
+  std::optional<double> safety_factor;  // yield strength / max_stress (null when unloaded)
+  std::optional<double> yield_strength;
+  // How the maximum was found: "shape" (sampled along the solved shape, refined by a parabola
+  // through the largest sample and its neighbours) or "ends" (the PRBM, which has no shape: the
+  // larger of the root and tip moments).
+  const char* max_from = "shape";
+  std::vector<PhysicalShapePoint> shape;  // the points the caller asked for
+};
+
+// Solves a physical cantilever with `method` (any beam method). `settings` gives the method's
+// settings (tolerance, integrator, chain elements) and in shape_points (0 or >= 2) the shape points
+// to report; its loads are replaced by the beam's. The moment maximum is searched on a denser
+// shape (>= 2001 points) of which the reported points are a subset. The BeamSolution carries the
+// nondimensional keys (its shape holds the requested points).
+struct PhysicalBeamSolution {
+  BeamSolution solution;
+  PhysicalResults physical;
+};
+PhysicalBeamSolution solve_physical_beam(BeamMethod method,
+                                         const PhysicalCantilever& beam,
+                                         BeamProblem settings);
+
+// The same for a chain read in physical units (io::ChainFile::physical): its sections give the
+// stresses, where every flexible segment has one. `problem.chain` must be `file.chain`.
+PhysicalBeamSolution solve_physical_chain(BeamMethod method,
+                                          BeamProblem problem,
+                                          const io::ChainFile& file);
+
+}  // namespace flexure
