@@ -7,6 +7,7 @@
 #include <set>
 
 #include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/io/quantity.h"
 #include "flexure/io/toml_support.h"
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/solver/common/errors.h"
@@ -18,12 +19,14 @@ using io::check_toml_keys;
 using io::line_of;
 using io::toml_fail;
 
-// A positive finite number at `key` (required unless `fallback` is given).
+// A positive finite number at `key` (required unless `fallback` is given); a quantity of
+// `dimension` may also be written with a unit, "50 mm" (io/quantity.h). Plain numbers are SI.
 double positive(const toml::table& t,
                 const std::string& key,
                 const std::string& where,
                 const std::string& source,
                 int table_line,
+                std::optional<io::Dimension> dimension,
                 std::optional<double> fallback = {}) {
   const toml::node* node = t.get(key);
   if (node == nullptr) {
@@ -32,8 +35,22 @@ double positive(const toml::table& t,
   }
   // Top-level keys are named bare ("r2"), table keys dotted ("ground.thickness").
   const std::string name = where == "the file" ? key : where + "." + key;
-  const std::optional<double> v = io::toml_number(*node);
-  if (!v) toml_fail(source, line_of(*node), fmt::format("{} must be a number", name));
+  std::optional<double> v = io::toml_number(*node);
+  if (!v && dimension && node->is_string()) {
+    try {
+      v = io::parse_quantity(**node->as_string(), *dimension, name).si;
+    } catch (const InvalidInput& e) {
+      toml_fail(source, line_of(*node), e.what());
+    }
+  }
+  if (!v) {
+    toml_fail(source,
+              line_of(*node),
+              dimension ? fmt::format("{} must be a number (SI) or a string with a unit, e.g. "
+                                      "\"50 mm\"",
+                                      name)
+                        : fmt::format("{} must be a number", name));
+  }
   if (!std::isfinite(*v) || *v <= 0.0) {
     toml_fail(source, line_of(*node), fmt::format("{} must be finite and > 0 (got {})", name, *v));
   }
@@ -108,9 +125,9 @@ MechanismDesign parse_mechanism_toml(const std::string& text, const std::string&
                             e.what()));
     }
   }
-  d.r2 = positive(root, "r2", "the file", source, 1);
-  d.r3 = positive(root, "r3", "the file", source, 1);
-  d.stroke = positive(root, "stroke", "the file", source, 1);
+  d.r2 = positive(root, "r2", "the file", source, 1, io::Dimension::kLength);
+  d.r3 = positive(root, "r3", "the file", source, 1, io::Dimension::kLength);
+  d.stroke = positive(root, "stroke", "the file", source, 1, io::Dimension::kLength);
   const toml::node* mat = root.get("material");
   if (mat == nullptr || !mat->is_table()) {
     toml_fail(source,
@@ -121,8 +138,9 @@ MechanismDesign parse_mechanism_toml(const std::string& text, const std::string&
   const toml::table& m = *mat->as_table();
   check_toml_keys(m, {"E", "yield_strength", "name"}, "[material]", source);
   optional_string(m, "name", "material.name");  // documentation only, but a string
-  d.E = positive(m, "E", "material", source, line_of(m));
-  d.yield_strength = positive(m, "yield_strength", "material", source, line_of(m));
+  d.E = positive(m, "E", "material", source, line_of(m), io::Dimension::kStress);
+  d.yield_strength =
+      positive(m, "yield_strength", "material", source, line_of(m), io::Dimension::kStress);
   std::string pattern;
   for (int p = 1; p <= 3; ++p) {
     const std::string name = kJointTables[p - 1];
@@ -191,14 +209,16 @@ MechanismDesign parse_mechanism_toml(const std::string& text, const std::string&
               : std::set<std::string>{"thickness", "width", "length", "segment"},
           "[" + name + "] (fixed-fixed segment)",
           source);
-      j.length = positive(t, "length", name + " (fixed-fixed segment)", source, line_of(t));
+      j.length = positive(
+          t, "length", name + " (fixed-fixed segment)", source, line_of(t), io::Dimension::kLength);
       if (letter == 'l') {
-        j.table2_factor = positive(t, "table2_factor", name, source, line_of(t), j.table2_factor);
+        j.table2_factor =
+            positive(t, "table2_factor", name, source, line_of(t), std::nullopt, j.table2_factor);
       }
     } else if (letter == 's') {
       j.type = PivotType::kSmall;
       check_toml_keys(t, {"thickness", "width", "length", "segment"}, "[" + name + "]", source);
-      j.length = positive(t, "length", name, source, line_of(t), 0.0);
+      j.length = positive(t, "length", name, source, line_of(t), io::Dimension::kLength, 0.0);
     } else {
       // An l segment is r/gamma long by definition (thesis Table 8.1): its length is derived.
       j.type = PivotType::kLong;
@@ -210,8 +230,8 @@ MechanismDesign parse_mechanism_toml(const std::string& text, const std::string&
                       source);
     }
     pattern += j.type == PivotType::kSmall ? 's' : 'l';
-    j.thickness = positive(t, "thickness", name, source, line_of(t));
-    j.width = positive(t, "width", name, source, line_of(t));
+    j.thickness = positive(t, "thickness", name, source, line_of(t), io::Dimension::kLength);
+    j.width = positive(t, "width", name, source, line_of(t), io::Dimension::kLength);
   }
   d.config = pattern;
   try {

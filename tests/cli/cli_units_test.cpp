@@ -188,5 +188,28 @@ TEST(CliUnits, ChainFileInPhysicalUnits) {
   EXPECT_NE(soft.err.find("segment 1.E = 200000 Pa"), std::string::npos) << soft.err;
 }
 
+TEST(CliUnits, MechanismFileWithUnitsIsTheSiFile) {
+  // docs/examples/mechanism_lpp.toml with every quantity written with a unit.
+  test::ScratchDir dir;
+  std::ofstream(dir / "lpp.toml") << "config = \"lpp\"\nr2 = \"50 mm\"\nr3 = \"44.3 mm\"\n"
+                                     "stroke = \"2 cm\"\n[material]\nE = \"1.4 GPa\"\n"
+                                     "yield_strength = \"34.5 MPa\"\n[ground]\n"
+                                     "thickness = \"1 mm\"\nwidth = \"10 mm\"\n";
+  const std::string si = std::string(FLEXURE_SOURCE_DIR) + "/docs/examples/mechanism_lpp.toml";
+  const Json a =
+      run_json("mechanism analyze '" + (dir / "lpp.toml").string() + "' --method prbm --points 11");
+  const Json b = run_json("mechanism analyze '" + si + "' --method prbm --points 11");
+  ASSERT_TRUE(a.contains("force_prbm"));
+  for (std::size_t i = 0; i < b["force_prbm"].size(); ++i) {
+    EXPECT_NEAR(a["force_prbm"][i].get<double>(), b["force_prbm"][i].get<double>(), 1e-12);
+  }
+  EXPECT_NEAR(a["max_stress"].get<double>(), b["max_stress"].get<double>(), 1e-3);
+  std::ofstream(dir / "bad.toml") << "config = \"lpp\"\nr2 = \"50 N\"\n";
+  const test::CommandResult r =
+      run_flexure("mechanism analyze '" + (dir / "bad.toml").string() + "'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("r2: '50 N' is a force"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace flexure
