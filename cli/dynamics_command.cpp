@@ -24,11 +24,11 @@
 #include "cli/slow_progress.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/output_path.h"
+#include "flexure/io/provenance.h"
 #include "flexure/mechanisms/dynamics/cfsm_designs.h"
 #include "flexure/mechanisms/dynamics/forward_dynamics.h"
 #include "flexure/mechanisms/dynamics/inverse_dynamics.h"
 #include "flexure/solver/common/errors.h"
-#include "flexure/version.h"
 
 namespace flexure::cli {
 namespace {
@@ -167,15 +167,29 @@ void run_dynamics(const DynamicsArgs& args) {
   }
 
   if (output) {
+    // Every force is of the whole symmetric mechanism (both halves), as in the JSON force_of.
     io::Hdf5Group& root = output->root();
-    root.write_dataset("omega", omegas);
-    root.write_dataset("mean_force", mean);
-    root.write_dataset("median_force", median);
-    root.write_dataset("min_force", min);
-    root.write_dataset("max_force", max);
-    root.write_dataset("peak_to_peak_force", p2p);
-    root.write_dataset("percent_constant_force", pcf);
+    root.write_dataset("omega", omegas, "rad/s", "drive frequency omega of the sinusoidal motion");
+    root.write_dataset(
+        "mean_force", mean, "N", "mean input force over one period (whole symmetric mechanism)");
+    root.write_dataset("median_force",
+                       median,
+                       "N",
+                       "median input force over one period (whole symmetric mechanism)");
+    root.write_dataset(
+        "min_force", min, "N", "smallest input force over one period (whole symmetric mechanism)");
+    root.write_dataset(
+        "max_force", max, "N", "largest input force over one period (whole symmetric mechanism)");
+    root.write_dataset("peak_to_peak_force",
+                       p2p,
+                       "N",
+                       "max_force - min_force over one period (whole symmetric mechanism)");
+    root.write_dataset("percent_constant_force",
+                       pcf,
+                       "%",
+                       "percent constant force 100 min_force / max_force over one period");
     root.set_attribute("mechanism", d.name);
+    root.set_attribute("force_of", "whole symmetric mechanism");
     root.set_attribute("stroke_m", motion.stroke);
     root.set_attribute("preload_m", motion.preload);
     root.set_attribute("samples_per_period", static_cast<std::int64_t>(args.samples));
@@ -188,20 +202,32 @@ void run_dynamics(const DynamicsArgs& args) {
     root.set_attribute("static_nominal_force", F_nom);
     root.set_attribute("paper_nominal_force", d.F_nom_paper);
     root.set_attribute("natural_frequency", omega_n);
-    root.set_attribute("units", "omega rad/s, force N (whole symmetric mechanism), length m, t s");
-    root.set_attribute("tool", "flexure");
-    root.set_attribute("version", kVersion);
-    root.set_attribute("git_commit", kGitCommit);
+    root.set_attribute("attribute_units",
+                       "stroke_m, preload_m: m; friction_C1, friction_C2, friction_C3: N m; "
+                       "axial_alpha: rad; static_nominal_force, paper_nominal_force: N (whole "
+                       "symmetric mechanism); natural_frequency: rad/s");
+    io::write_provenance(root, {});
     io::Hdf5Group history_group = root.create_group("history");
+    history_group.set_attribute("description",
+                                "one period of the motion at each --history frequency, groups 0, "
+                                "1, ... in the order given");
     for (std::size_t i = 0; i < histories.size(); ++i) {
       const History& h = histories[i];
       io::Hdf5Group g = history_group.create_group(fmt::format("{}", i));
       g.set_attribute("omega", h.omega);
-      g.write_dataset("t", h.t);
-      g.write_dataset("delta_x", h.delta_x);
-      g.write_dataset("theta2", h.theta2);
-      g.write_dataset("force", h.force);
-      g.write_dataset("static_force", h.static_force);
+      g.set_attribute("attribute_units", "omega: rad/s");
+      g.write_dataset("t", h.t, "s", "time within the period, from 0");
+      g.write_dataset("delta_x",
+                      h.delta_x,
+                      "m",
+                      "slider displacement Delta x(t) = preload + stroke (1 - cos omega t)/2");
+      g.write_dataset("theta2", h.theta2, "rad", "crank angle theta2 at Delta x(t)");
+      g.write_dataset(
+          "force", h.force, "N", "input force of the dynamic model (whole symmetric mechanism)");
+      g.write_dataset("static_force",
+                      h.static_force,
+                      "N",
+                      "static PRBM force at the same Delta x (whole symmetric mechanism)");
     }
     output->commit();
   }

@@ -14,7 +14,8 @@
 //     short readable report on stdout. Errors never go to stdout: run_app() prints them as one
 //     line on stderr.
 //  5. Output files are written with io::AtomicHdf5File (temp name + rename), opened BEFORE the
-//     solve so that an unwritable path fails fast with exit 2.
+//     solve so that an unwritable path fails fast with exit 2. Every dataset gets units and a
+//     description, and the root io::write_provenance (io/provenance.h; docs/hdf5-schema.md).
 //  6. Beam problems are solved by the library's solve_beam (benchmarks/studies/beam_problem.h); a
 //     new method is plugged in there (docs/architecture.md), not in the commands.
 // Nested commands (`sweep beam`) use get_or_add_subcommand() so that several files can add
@@ -26,12 +27,15 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "flexure/io/hdf5_file.h"
+#include "flexure/io/provenance.h"
 #include "flexure/solver/common/gsl_guard.h"
 #include "flexure/version.h"
 
 int main(int argc, char** argv) {
   flexure::disable_gsl_abort();
   flexure::io::disable_hdf5_error_printing();
+  // Every HDF5 file written by this run records the command line that made it.
+  flexure::io::record_command_line(argc, argv);
 
   CLI::App app{"flexure: exact large-deflection beams and compliant mechanisms", "flexure"};
   app.set_version_flag(

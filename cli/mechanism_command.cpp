@@ -18,6 +18,7 @@
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/mechanism_toml.h"
 #include "flexure/io/output_path.h"
+#include "flexure/io/provenance.h"
 #include "flexure/mechanisms/constant_force.h"
 #include "flexure/mechanisms/howell_designs.h"
 #include "flexure/mechanisms/inversion.h"
@@ -195,8 +196,67 @@ void warn_if_force_vanishes(const MechanismAnalysis& a, bool exact) {
   if (exact) warn("exact", a.force_exact);
 }
 
+// /design: everything MechanismDesign holds, in the described form (pivot 1 at the fixed body;
+// the JSON "design" object reads the same way), so that the file alone says what was analysed.
+void write_design_group(io::Hdf5Group& root, const MechanismDesign& d) {
+  const DescribedDesign m = described_form(d);
+  io::Hdf5Group g = root.create_group("design");
+  g.set_attribute(
+      "description",
+      "the analysed half mechanism, described from its fixed body (docs/mechanisms.md)");
+  g.set_attribute("name", d.name);
+  g.set_attribute("config", m.config);
+  g.set_attribute("class", d.configuration().class_name);
+  g.set_attribute("note", d.note);
+  g.set_attribute("inverted", std::int64_t{d.inverted ? 1 : 0});
+  g.set_attribute("fixed_body", m.fixed_body);
+  if (d.inverted) g.set_attribute("inversion_of_config", d.config);
+  if (!d.paper_config.empty()) g.set_attribute("paper_config", d.paper_config);
+  if (has_fixed_fixed(d)) g.set_attribute("spring_rule", spring_rule_name(d.spring_rule));
+  g.write_scalar("r2", m.r2, "m", "PRBM link at the fixed body (pivot 1 to pivot 2)");
+  g.write_scalar("r3", m.r3, "m", "PRBM link at the sliding body (pivot 2 to pivot 3)");
+  g.write_scalar("E", d.E, "Pa", "Young's modulus of the material");
+  g.write_scalar("yield_strength", d.yield_strength, "Pa", "yield strength of the material");
+  g.write_scalar("stroke", d.stroke, "m", "slider travel Delta x at the end of the stroke");
+  g.write_scalar(
+      "toggle_stroke", d.toggle_stroke(), "m", "largest stroke: the toggle position of the PRBM");
+  // Per pivot, in the described numbering 1..3 (index 0..2); 0 for a pin.
+  io::Hdf5Group joints = g.create_group("joints");
+  joints.set_attribute("description", "one entry per pivot 1..3 (pivot 1 at the fixed body)");
+  std::vector<std::string> type, segment, letter;
+  std::vector<double> length, thickness, width, spring;
+  for (int p = 1; p <= 3; ++p) {
+    const JointDesign& j = m.joints[p - 1];
+    const bool pin = j.type == PivotType::kPin;
+    type.push_back(pivot_letter(j.type));
+    segment.push_back(pin                                     ? "pin"
+                      : j.segment == SegmentKind::kFixedFixed ? "fixed-fixed"
+                      : j.type == PivotType::kLong            ? "fixed-pinned"
+                                                              : "small-length");
+    letter.push_back(j.segment == SegmentKind::kFixedFixed ? std::string(1, j.paper_letter) : "");
+    length.push_back(j.length);
+    thickness.push_back(j.thickness);
+    width.push_back(j.width);
+    spring.push_back(pin ? 0.0 : d.spring_constant(described_pivot(d, p)));
+  }
+  joints.write_dataset(
+      "type", type, "text", "p pin, s small-length flexural pivot, l long segment");
+  joints.write_dataset(
+      "segment", segment, "text", "pin, small-length, fixed-pinned or fixed-fixed (paper 004)");
+  joints.write_dataset("paper_letter",
+                       letter,
+                       "text",
+                       "fixed-fixed segments: the paper's letter l or s; else empty");
+  joints.write_dataset("length", length, "m", "flexible length; 0 for a pin");
+  joints.write_dataset("thickness", thickness, "m", "in-plane thickness h; 0 for a pin");
+  joints.write_dataset("width", width, "m", "out-of-plane width b; 0 for a pin");
+  joints.write_dataset(
+      "spring_constant", spring, "N m/rad", "PRBM torsional spring constant; 0 for a pin");
+}
+
 void write_hdf5(const std::string& path, const MechanismAnalysis& a, io::AtomicHdf5File& file) {
   auto& root = file.root();
+  const bool exact = a.has_exact && a.exact.converged();
   root.set_attribute("mechanism", a.design.name);
   root.set_attribute("config", described_form(a.design).config);
   root.set_attribute("inverted", std::int64_t{a.design.inverted ? 1 : 0});
@@ -204,28 +264,59 @@ void write_hdf5(const std::string& path, const MechanismAnalysis& a, io::AtomicH
     root.set_attribute("spring_rule", spring_rule_name(a.design.spring_rule));
     if (!a.design.paper_config.empty()) root.set_attribute("paper_config", a.design.paper_config);
   }
-  root.set_attribute("units", "SI: m, N, Pa");
   root.set_attribute("percent_constant_force_prbm", a.prbm.percent_constant_force);
   root.set_attribute("force_vanishes_prbm", std::int64_t{a.prbm.force_vanishes ? 1 : 0});
   root.set_attribute("force_changes_sign_prbm", std::int64_t{a.prbm.force_changes_sign ? 1 : 0});
+  root.set_attribute("max_stress", a.max_stress_all);
   root.set_attribute("safety_factor", a.safety_factor);
-  root.write_dataset("displacement", std::span<const double>(a.prbm.displacement));
-  root.write_dataset("force_prbm", std::span<const double>(a.prbm.force));
-  if (a.has_exact && a.exact.converged()) {
-    root.write_dataset("force_exact", std::span<const double>(a.force_exact));
+  std::string attribute_units = "percent_constant_force_prbm: %; max_stress: Pa; safety_factor: 1";
+  root.write_dataset("displacement",
+                     std::span<const double>(a.prbm.displacement),
+                     "m",
+                     "slider displacement Delta x = k stroke/K, k = 1..K");
+  root.write_dataset("force_prbm",
+                     std::span<const double>(a.prbm.force),
+                     "N",
+                     "PRBM slider input force of the half mechanism (positive pushes the slider "
+                     "inward)");
+  if (exact) {
+    root.write_dataset("force_exact",
+                       std::span<const double>(a.force_exact),
+                       "N",
+                       "exact-model (elastica) slider input force of the half mechanism");
     root.set_attribute("percent_constant_force_exact", a.percent_constant_force_exact);
     root.set_attribute("force_vanishes_exact", std::int64_t{a.force_vanishes_exact ? 1 : 0});
     root.set_attribute("force_changes_sign_exact",
                        std::int64_t{a.force_changes_sign_exact ? 1 : 0});
     root.set_attribute("max_force_error", a.max_force_error);
+    attribute_units += "; percent_constant_force_exact: %; max_force_error: 1";
   }
-  if (a.prbm_validity_limit) root.set_attribute("prbm_validity_limit", *a.prbm_validity_limit);
+  if (a.prbm_validity_limit) {
+    root.set_attribute("prbm_validity_limit", *a.prbm_validity_limit);
+    attribute_units += "; prbm_validity_limit: m";
+  }
+  root.set_attribute("attribute_units", attribute_units);
   for (int p = 0; p < 3; ++p) {
+    const int described = described_pivot(a.design, p + 1);
     if (!a.prbm.stress[p].empty()) {
-      root.write_dataset(fmt::format("stress_prbm_pivot{}", described_pivot(a.design, p + 1)),
-                         std::span<const double>(a.prbm.stress[p]));
+      root.write_dataset(fmt::format("stress_prbm_pivot{}", described),
+                         std::span<const double>(a.prbm.stress[p]),
+                         "Pa",
+                         fmt::format("PRBM largest stress of the flexure at pivot {}: bending by "
+                                     "the PRB spring moment plus axial (docs/mechanisms.md)",
+                                     described));
+    }
+    if (exact && a.has_exact_stress && !a.stress_exact[p].empty()) {
+      root.write_dataset(fmt::format("stress_exact_pivot{}", described),
+                         std::span<const double>(a.stress_exact[p]),
+                         "Pa",
+                         fmt::format("exact-model largest stress of the flexure at pivot {}: "
+                                     "max |M| h/(2I) + |N|/A along the segment",
+                                     described));
     }
   }
+  write_design_group(root, a.design);
+  io::write_provenance(root, {});
   file.commit();
   (void)path;
 }

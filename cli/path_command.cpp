@@ -13,10 +13,10 @@
 #include "flexure/io/chain_toml.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/output_path.h"
+#include "flexure/io/provenance.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/shooting/shooting_solver.h"
-#include "flexure/version.h"
 
 namespace flexure::cli {
 namespace {
@@ -103,6 +103,58 @@ PathTable chain_path(const SegmentChain& chain, const PathArgs& args) {
   return t;
 }
 
+// The codes of /status (PathTable::status).
+const std::vector<io::CodeMeaning>& path_code_meanings() {
+  static const std::vector<io::CodeMeaning> codes = {
+      {"status", 0, "start: the unloaded beam (load factor 0)"},
+      {"status", 1, "an accepted continuation step or load increment"},
+      {"status", 2, "a limit point (fold) of the load factor was passed at this step"},
+      {"status", 3, "end: the full load (load factor 1)"}};
+  return codes;
+}
+
+// The path file (docs/hdf5-schema.md "flexure path"). Without --chain the problem is Howell's
+// nondimensional beam (l = 1, EI = 1); a chain file is in whatever consistent units it was written
+// in (docs/chain-toml.md), so the units say that instead of guessing.
+void write_path_file(io::Hdf5Group& file,
+                     const PathTable& t,
+                     const PathArgs& args,
+                     const SegmentChain& chain) {
+  const bool from_file = args.chain_option != nullptr && *args.chain_option;
+  const std::string length = from_file ? "length unit of the chain file" : "1";
+  const std::string force = from_file ? "force unit of the chain file" : "1";
+  const std::string moment = from_file ? "force unit * length unit of the chain file" : "1";
+  const std::string scaled = from_file ? "" : " (nondimensional: l = 1, EI = 1)";
+  file.write_dataset("load_factor",
+                     t.load_factor,
+                     "1",
+                     "load factor lambda: 0 unloaded, 1 full load; may fall and rise at limit "
+                     "points");
+  file.write_dataset("tip_x", t.tip_x, length, "tip x along the clamp's axis" + scaled);
+  file.write_dataset("tip_y", t.tip_y, length, "tip y perpendicular to the clamp's axis" + scaled);
+  file.write_dataset("tip_theta", t.tip_theta, "rad", "tip angle");
+  file.write_dataset("reaction_Fx",
+                     t.reaction_Fx,
+                     force,
+                     "x force the clamp exerts" + scaled + "; chain: NaN except at the last point");
+  file.write_dataset("reaction_Fy",
+                     t.reaction_Fy,
+                     force,
+                     "y force the clamp exerts" + scaled + "; chain: NaN except at the last point");
+  file.write_dataset("reaction_M",
+                     t.reaction_M,
+                     moment,
+                     "moment the clamp exerts" + scaled + "; chain: NaN except at the last point");
+  file.write_dataset("status", t.status, "1", "kind of point (root status_meanings)");
+  file.set_attribute("method", args.method);
+  file.set_attribute("boundary", to_string(chain.end));
+  file.set_attribute("completed", static_cast<std::int64_t>(t.completed ? 1 : 0));
+  file.set_attribute("load_factor_reached", t.lambda_reached);
+  file.set_attribute("limit_points", static_cast<std::int64_t>(t.limit_points));
+  file.set_attribute("message", t.message);
+  io::write_provenance(file, path_code_meanings());
+}
+
 void run_path(const PathArgs& args) {
   BeamProblem problem;
   if (*args.chain_option) {
@@ -136,23 +188,7 @@ void run_path(const PathArgs& args) {
   const PathTable t = args.method == "chain" ? chain_path(chain, args) : shooting_path(chain);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  file.write_dataset("load_factor", t.load_factor);
-  file.write_dataset("tip_x", t.tip_x);
-  file.write_dataset("tip_y", t.tip_y);
-  file.write_dataset("tip_theta", t.tip_theta);
-  file.write_dataset("reaction_Fx", t.reaction_Fx);
-  file.write_dataset("reaction_Fy", t.reaction_Fy);
-  file.write_dataset("reaction_M", t.reaction_M);
-  file.write_dataset("status", t.status);
-  file.set_attribute("method", args.method);
-  file.set_attribute("boundary", to_string(chain.end));
-  file.set_attribute("completed", t.completed ? "true" : "false");
-  file.set_attribute("load_factor_reached", t.lambda_reached);
-  file.set_attribute("limit_points", static_cast<std::int64_t>(t.limit_points));
-  file.set_attribute("message", t.message);
-  file.set_attribute("tool", "flexure");
-  file.set_attribute("version", kVersion);
-  file.set_attribute("git_commit", kGitCommit);
+  write_path_file(file, t, args, chain);
   output->commit();
   if (args.json) {
     print_json(Json{{"out", args.out},

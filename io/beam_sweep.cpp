@@ -12,7 +12,6 @@
 #include <thread>
 
 #include "flexure/solver/common/errors.h"
-#include "flexure/version.h"
 
 namespace flexure::io {
 namespace {
@@ -118,30 +117,54 @@ BeamSweepTable run_beam_sweep(const std::vector<double>& alpha2,
   return table;
 }
 
-void write_provenance(Hdf5Group& group) {
-  group.set_attribute("tool", "flexure");
-  group.set_attribute("version", kVersion);
-  group.set_attribute("git_commit", kGitCommit);
+const std::vector<CodeMeaning>& beam_sweep_code_meanings() {
+  static const std::vector<CodeMeaning> codes = {
+      {"status", kSweepConverged, "converged"},
+      {"status",
+       kSweepNotConverged,
+       "no converged solution at this load (a_over_l, b_over_l, theta0 are NaN)"},
+      {"within_validity", -1, "no validity limit: an exact method, or no solution at this load"},
+      {"within_validity", 0, "PRBM: the PRB angle is outside the element's validity limit"},
+      {"within_validity", 1, "PRBM: the PRB angle is within the element's validity limit"}};
+  return codes;
 }
 
 void write_beam_sweep(Hdf5Group& group,
                       const BeamSweepTable& table,
                       const BeamSweepMetadata& metadata) {
-  group.write_dataset("alpha2", std::span<const double>(table.alpha2));
-  group.write_dataset("a_over_l", std::span<const double>(table.a_over_l));
-  group.write_dataset("b_over_l", std::span<const double>(table.b_over_l));
-  group.write_dataset("theta0", std::span<const double>(table.theta0));
-  group.write_dataset("status", std::span<const int>(table.status));
-  group.write_dataset("within_validity", std::span<const int>(table.within_validity));
+  group.write_dataset("alpha2",
+                      std::span<const double>(table.alpha2),
+                      "1",
+                      "load alpha2 = P l^2/EI (Howell eq. 2.83)");
+  group.write_dataset("a_over_l",
+                      std::span<const double>(table.a_over_l),
+                      "1",
+                      "tip coordinate along the undeformed beam a/l; NaN where status != 0");
+  group.write_dataset(
+      "b_over_l",
+      std::span<const double>(table.b_over_l),
+      "1",
+      "tip deflection perpendicular to the undeformed beam b/l; NaN where status != 0");
+  group.write_dataset("theta0",
+                      std::span<const double>(table.theta0),
+                      "rad",
+                      "tip angle theta0; NaN where status != 0");
+  group.write_dataset("status",
+                      std::span<const int>(table.status),
+                      "1",
+                      "0 converged, 1 no converged solution at this load (root status_meanings)");
+  group.write_dataset("within_validity",
+                      std::span<const int>(table.within_validity),
+                      "1",
+                      "PRBM: 1 PRB angle within the element's validity limit, 0 outside; -1 exact "
+                      "methods and failed points");
   group.set_attribute("method", metadata.method);
-  group.set_attribute("n", metadata.load_ratio_n);
+  group.set_attribute("load_ratio_n", metadata.load_ratio_n);
   group.set_attribute("mu", metadata.mu);
   group.set_attribute("tolerance", metadata.tolerance);
   group.set_attribute("count", static_cast<std::int64_t>(table.alpha2.size()));
   group.set_attribute("converged_count", static_cast<std::int64_t>(table.converged_count));
-  group.set_attribute("status_meaning",
-                      "0 converged; 1 no converged solution (a_over_l, b_over_l, theta0 are NaN)");
-  write_provenance(group);
+  write_provenance(group, beam_sweep_code_meanings());
 }
 
 }  // namespace flexure::io

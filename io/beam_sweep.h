@@ -5,20 +5,23 @@
 // what the tool does: solve every point (optionally on a few threads), then write each column with
 // a single HDF5 call.
 //
-// File layout (all datasets 1-D, one entry per load, in the order of the requested range):
-//   /alpha2    float64  P l^2/EI (Howell eq. 2.83)
-//   /a_over_l  float64  a/l, NaN where status != 0
-//   /b_over_l  float64  b/l, NaN where status != 0
-//   /theta0    float64  tip angle in rad, NaN where status != 0
-//   /status    int32    0 converged, 1 no converged solution at this load
-// Root attributes: method, n (load ratio), mu, tolerance, count, converged_count, tool
-// ("flexure"), version, git_commit.
+// File layout (all datasets 1-D, one entry per load, in the order of the requested range; each
+// with its `units` and `description`; docs/hdf5-schema.md "flexure sweep beam"):
+//   /alpha2           float64  P l^2/EI (Howell eq. 2.83)
+//   /a_over_l         float64  a/l, NaN where status != 0
+//   /b_over_l         float64  b/l, NaN where status != 0
+//   /theta0           float64  tip angle in rad, NaN where status != 0
+//   /status           int32    0 converged, 1 no converged solution at this load
+//   /within_validity  int32    PRBM validity per load (BeamSweepPoint::within_validity)
+// Root attributes: method, load_ratio_n, mu, tolerance, count, converged_count and the
+// provenance of io/provenance.h (status_meanings from beam_sweep_code_meanings()).
 // NaN in a stored float dataset always means "no solution" and is always flagged by status = 1.
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "flexure/io/hdf5_file.h"
+#include "flexure/io/provenance.h"
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/common/status.h"
 
@@ -74,12 +77,12 @@ struct BeamSweepMetadata {
   double tolerance = 0.0;
 };
 
-// Writes the layout above into `group` (usually the root of an AtomicHdf5File).
+// The meanings of the codes in /status and /within_validity.
+const std::vector<CodeMeaning>& beam_sweep_code_meanings();
+
+// Writes the layout above, with the provenance, into `group` (the root of an AtomicHdf5File).
 void write_beam_sweep(Hdf5Group& group,
                       const BeamSweepTable& table,
                       const BeamSweepMetadata& metadata);
-
-// Writes the tool name, version and git commit attributes (flexure/version.h) on `group`.
-void write_provenance(Hdf5Group& group);
 
 }  // namespace flexure::io

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "flexure/io/output_path.h"
+#include "flexure/io/provenance.h"
 #include "flexure/io/temp_file_cleanup.h"
 
 namespace flexure::io {
@@ -52,6 +53,22 @@ hid_t make_string_type(const std::string& where) {
     throw Hdf5Error(fmt::format("HDF5: setting up a UTF-8 string type failed for {}", where));
   }
   return type;
+}
+
+// Writes a scalar UTF-8 string attribute on any object (group or dataset).
+void write_string_attribute(hid_t object,
+                            const std::string& name,
+                            const std::string& value,
+                            const std::string& where) {
+  ScopedId type(make_string_type(where), H5Tclose);
+  ScopedId space(check_id(H5Screate(H5S_SCALAR), where, "creating the dataspace"), H5Sclose);
+  ScopedId attribute(
+      check_id(H5Acreate2(object, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+               where,
+               "creating the attribute"),
+      H5Aclose);
+  const char* pointer = value.c_str();
+  check_status(H5Awrite(attribute.get(), type.get(), &pointer), where, "writing the attribute");
 }
 
 }  // namespace
@@ -106,34 +123,64 @@ Hdf5Group Hdf5Group::create_group(const std::string& name) {
   return Hdf5Group(id, file_path_, path);
 }
 
+void Hdf5Group::write_described(const std::string& name,
+                                hid_t type,
+                                hid_t space,
+                                const void* data,
+                                const std::string& units,
+                                const std::string& description) {
+  const std::string where = fmt::format("dataset '{}' in {}", child_path(name), file_path_);
+  // Checked before anything is created: a file is self-describing or not written at all.
+  if (units.empty()) throw Hdf5Error(fmt::format("HDF5: no units given for {}", where));
+  if (description.empty() || description.find('\n') != std::string::npos) {
+    throw Hdf5Error(fmt::format("HDF5: the description of {} must be one non-empty line", where));
+  }
+  ScopedId dataset(
+      check_id(H5Dcreate2(id_, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+               where,
+               "creating the dataset"),
+      H5Dclose);
+  if (data != nullptr) {
+    check_status(H5Dwrite(dataset.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
+                 where,
+                 "writing the data");
+  }
+  write_string_attribute(dataset.get(), "units", units, where + " (attribute 'units')");
+  write_string_attribute(
+      dataset.get(), "description", description, where + " (attribute 'description')");
+}
+
 template <typename T>
-void Hdf5Group::write_numeric(const std::string& name, std::span<const T> values, hid_t type) {
+void Hdf5Group::write_numeric(const std::string& name,
+                              std::span<const T> values,
+                              hid_t type,
+                              const std::string& units,
+                              const std::string& description) {
   const std::string where = fmt::format("dataset '{}' in {}", child_path(name), file_path_);
   const hsize_t size = values.size();
   ScopedId space(check_id(H5Screate_simple(1, &size, nullptr), where, "creating the dataspace"),
                  H5Sclose);
-  ScopedId dataset(
-      check_id(
-          H5Dcreate2(id_, name.c_str(), type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-          where,
-          "creating the dataset"),
-      H5Dclose);
-  if (size > 0) {
-    check_status(H5Dwrite(dataset.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
-                 where,
-                 "writing the data");
-  }
+  write_described(name, type, space.get(), size > 0 ? values.data() : nullptr, units, description);
 }
 
-void Hdf5Group::write_dataset(const std::string& name, std::span<const double> values) {
-  write_numeric(name, values, H5T_NATIVE_DOUBLE);
+void Hdf5Group::write_dataset(const std::string& name,
+                              std::span<const double> values,
+                              const std::string& units,
+                              const std::string& description) {
+  write_numeric(name, values, H5T_NATIVE_DOUBLE, units, description);
 }
 
-void Hdf5Group::write_dataset(const std::string& name, std::span<const int> values) {
-  write_numeric(name, values, H5T_NATIVE_INT);
+void Hdf5Group::write_dataset(const std::string& name,
+                              std::span<const int> values,
+                              const std::string& units,
+                              const std::string& description) {
+  write_numeric(name, values, H5T_NATIVE_INT, units, description);
 }
 
-void Hdf5Group::write_dataset(const std::string& name, const std::vector<std::string>& values) {
+void Hdf5Group::write_dataset(const std::string& name,
+                              const std::vector<std::string>& values,
+                              const std::string& units,
+                              const std::string& description) {
   const std::string where = fmt::format("dataset '{}' in {}", child_path(name), file_path_);
   std::vector<const char*> pointers;
   pointers.reserve(values.size());
@@ -142,19 +189,17 @@ void Hdf5Group::write_dataset(const std::string& name, const std::vector<std::st
   const hsize_t size = values.size();
   ScopedId space(check_id(H5Screate_simple(1, &size, nullptr), where, "creating the dataspace"),
                  H5Sclose);
-  ScopedId dataset(
-      check_id(
-          H5Dcreate2(
-              id_, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-          where,
-          "creating the dataset"),
-      H5Dclose);
-  if (size > 0) {
-    check_status(
-        H5Dwrite(dataset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()),
-        where,
-        "writing the strings");
-  }
+  write_described(
+      name, type.get(), space.get(), size > 0 ? pointers.data() : nullptr, units, description);
+}
+
+void Hdf5Group::write_scalar(const std::string& name,
+                             double value,
+                             const std::string& units,
+                             const std::string& description) {
+  const std::string where = fmt::format("dataset '{}' in {}", child_path(name), file_path_);
+  ScopedId space(check_id(H5Screate(H5S_SCALAR), where, "creating the dataspace"), H5Sclose);
+  write_described(name, H5T_NATIVE_DOUBLE, space.get(), &value, units, description);
 }
 
 void Hdf5Group::set_scalar_attribute(const std::string& name, hid_t type, const void* value) {
@@ -169,10 +214,8 @@ void Hdf5Group::set_scalar_attribute(const std::string& name, hid_t type, const 
 }
 
 void Hdf5Group::set_attribute(const std::string& name, const std::string& value) {
-  const std::string where = fmt::format("attribute '{}' of {}", name, this->where());
-  ScopedId type(make_string_type(where), H5Tclose);
-  const char* pointer = value.c_str();
-  set_scalar_attribute(name, type.get(), &pointer);
+  write_string_attribute(
+      id_, name, value, fmt::format("attribute '{}' of {}", name, this->where()));
 }
 
 void Hdf5Group::set_attribute(const std::string& name, const char* value) {
@@ -254,6 +297,18 @@ void AtomicHdf5File::discard() noexcept {
 
 void AtomicHdf5File::commit() {
   if (committed_) throw Hdf5Error(fmt::format("HDF5 file '{}' was already committed", path_));
+  // A file that does not say where it came from is a bug in its writer, refused like a failed
+  // write (the temporary is removed; the target is left as it was).
+  for (const std::string& name : provenance_attribute_names()) {
+    if (root_.id_ < 0 || H5Aexists(root_.id_, name.c_str()) <= 0) {
+      discard();
+      throw Hdf5Error(
+          fmt::format("HDF5 file '{}' lacks the root attribute '{}': its writer did not call "
+                      "io::write_provenance (docs/hdf5-schema.md)",
+                      path_,
+                      name));
+    }
+  }
   if (root_.id_ >= 0) H5Gclose(root_.id_);
   root_.id_ = H5I_INVALID_HID;
   const herr_t closed = H5Fclose(file_);

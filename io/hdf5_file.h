@@ -11,6 +11,11 @@
 //
 // Convention for stored data: NaN in a floating-point dataset means "no solution at this point";
 // every file that may contain NaN also carries an integer `status` dataset that flags those points.
+//
+// Self-describing files (docs/hdf5-schema.md "Every file"): every dataset carries the string
+// attributes `units` ("1" dimensionless, "rad", "N", "m", "Pa", "s", ...; "text" for strings) and
+// a one-line `description`. There is no write_dataset without them, so a writer cannot forget
+// them. The root carries the provenance of io/provenance.h; commit() refuses a file without it.
 #include <hdf5.h>
 
 #include <cstdint>
@@ -43,11 +48,28 @@ class Hdf5Group {
   // Creates a child group; `name` must be a single path component not used yet.
   Hdf5Group create_group(const std::string& name);
 
-  // 1-D datasets written in one call (contiguous layout, native little-endian types).
-  void write_dataset(const std::string& name, std::span<const double> values);
-  void write_dataset(const std::string& name, std::span<const int> values);
-  // Variable-length UTF-8 strings (e.g. problem or method names in a results table).
-  void write_dataset(const std::string& name, const std::vector<std::string>& values);
+  // 1-D datasets written in one call (contiguous layout, native little-endian types), each with
+  // its `units` and `description` attributes. Throws Hdf5Error when either is empty or the
+  // description spans more than one line.
+  void write_dataset(const std::string& name,
+                     std::span<const double> values,
+                     const std::string& units,
+                     const std::string& description);
+  void write_dataset(const std::string& name,
+                     std::span<const int> values,
+                     const std::string& units,
+                     const std::string& description);
+  // Variable-length UTF-8 strings (e.g. problem or method names in a results table); units are
+  // normally "text".
+  void write_dataset(const std::string& name,
+                     const std::vector<std::string>& values,
+                     const std::string& units,
+                     const std::string& description);
+  // A scalar (0-d) dataset: one value with units, e.g. a design's Young's modulus.
+  void write_scalar(const std::string& name,
+                    double value,
+                    const std::string& units,
+                    const std::string& description);
 
   // Scalar attributes on this group (on the root group they are file attributes).
   void set_attribute(const std::string& name, const std::string& value);
@@ -63,7 +85,19 @@ class Hdf5Group {
   friend class AtomicHdf5File;
   Hdf5Group(hid_t id, std::string file_path, std::string group_path);
   template <typename T>
-  void write_numeric(const std::string& name, std::span<const T> values, hid_t type);
+  void write_numeric(const std::string& name,
+                     std::span<const T> values,
+                     hid_t type,
+                     const std::string& units,
+                     const std::string& description);
+  // Creates dataset `name` of `type` over `space`, writes `data` (may be null for an empty
+  // dataset) and its units and description.
+  void write_described(const std::string& name,
+                       hid_t type,
+                       hid_t space,
+                       const void* data,
+                       const std::string& units,
+                       const std::string& description);
   void set_scalar_attribute(const std::string& name, hid_t type, const void* value);
   std::string child_path(const std::string& name) const;
 
@@ -88,7 +122,9 @@ class AtomicHdf5File {
   Hdf5Group& root() { return root_; }
 
   // Closes the file (closing every group still open) and renames it over `path`. Throws
-  // Hdf5Error and removes the temporary if closing or renaming fails. Call at most once.
+  // Hdf5Error and removes the temporary if the root lacks an attribute of
+  // provenance_attribute_names() (io/provenance.h: write_provenance was not called), or if
+  // closing or renaming fails. Call at most once.
   void commit();
 
   const std::string& path() const { return path_; }

@@ -122,6 +122,7 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
           if (options.progress) options.progress(n + k + 1, total);
           for (int i = 0; i < 3; ++i) {
             a.max_stress_exact[i] = std::max(a.max_stress_exact[i], st.max_stress[i]);
+            if (d.joints[i].type != PivotType::kPin) a.stress_exact[i].push_back(st.max_stress[i]);
           }
         }
       }

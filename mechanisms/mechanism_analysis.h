@@ -43,6 +43,9 @@ struct MechanismAnalysis {
   ExactStrokeResult exact;
   std::vector<double> force_exact;           // N, one per stroke point (when has_exact)
   std::array<double, 3> max_stress_exact{};  // Pa, per pivot
+  // Pa, per pivot and stroke point (max |m| h/(2I) + |N|/A along the segment,
+  // exact_segment_state): empty for a pin or where has_exact_stress is false.
+  std::array<std::vector<double>, 3> stress_exact;
   // max_stress_exact was computed (options.exact_stress and a converged exact stroke); else the
   // zeros above mean "not computed", not "unstressed".
   bool has_exact_stress = false;

@@ -191,16 +191,25 @@ def main():
                 g.create_dataset("status", data=np.asarray(status_col, dtype="<i4"))
                 g.create_dataset("repeats", data=np.ones(size, dtype="<i4"))
                 g.create_dataset("iterations", data=np.zeros(size, dtype="<i4"))
-                g.create_dataset("inside_validity", data=np.full(size, -1, dtype="<i4"))
+                g.create_dataset("within_validity", data=np.full(size, -1, dtype="<i4"))
                 g.create_dataset("message", data=messages,
                                  dtype=h5py.string_dtype(encoding="utf-8"))
+                # Every dataset carries units and a description (docs/hdf5-schema.md): the same
+                # as the reference group's dataset of that name, except where ccx differs.
+                for k in g:
+                    for attr in ("units", "description"):
+                        if k in ref and attr in ref[k].attrs:
+                            g[k].attrs[attr] = ref[k].attrs[attr]
+                g["seconds"].attrs["description"] = "wall time of the ccx process for this load"
+                g["repeats"].attrs["description"] = "number of timed solves (1: one ccx run)"
+                g["iterations"].attrs["description"] = "not recorded for ccx (0)"
+                g["within_validity"].attrs["units"] = "1"
+                g["within_validity"].attrs["description"] = "-1: not a PRBM method"
                 g.attrs["family"] = "calculix"
                 g.attrs["backend"] = version
                 g.attrs["tolerance"] = 0.0  # ccx's default residual control (*STATIC)
                 g.attrs["elements"] = np.int64(elements)
                 g.attrs["increments"] = np.int64(0)
-                g.attrs["units"] = ("nondimensional: lengths / l, forces * l^2/EI, moments * l/EI, "
-                                    "angles rad, seconds s (wall time of the ccx process)")
         os.replace(tmp, args.file)
     finally:
         if os.path.exists(tmp):

@@ -17,7 +17,9 @@ in docs/figures are replaced only when that folder is named), each path printed:
                        method that lands on the mirror-image branch shows an error near 1).
   bench_prbm_map.png   PRBM relative error over (n, alpha2) with the validity limit
                        Theta = Theta_max (Howell Table 5.1) drawn as a line.
---table prints a Markdown table per problem (docs/benchmarks.md); --print-prbm-map prints the
+Every axis names its quantity and its unit in brackets, read from the datasets' `units` attributes
+([1]: dimensionless). --table prints a Markdown table per problem (docs/benchmarks.md);
+--print-prbm-map prints the
 rows of the accuracy map used by `--method auto`, in the format of data/method_auto_error_map.csv
 (the header row and one row per load; the file's comment block stays as it is).
 """
@@ -34,6 +36,26 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 CONVERGED = 0
+
+
+def unit(g, name, default="1"):
+    """The `units` attribute of dataset `name` in group `g` (`default` for files written before
+    flexure stored units)."""
+    if name not in g:
+        return default
+    value = g[name].attrs.get("units", default)
+    return value.decode() if isinstance(value, bytes) else str(value)
+
+
+def first_group(f, problem):
+    """Any method group of `problem` (all groups of a problem have the same datasets)."""
+    return next(iter(f[problem].values()))
+
+
+def validity(g):
+    """Per-load PRBM validity (1 within, 0 outside, -1 not a PRBM); before schema 2 the dataset
+    was called inside_validity."""
+    return g["within_validity"] if "within_validity" in g else g["inside_validity"]
 
 
 def groups(f):
@@ -100,10 +122,11 @@ def plot_pareto(f, out):
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_title(problem, fontsize=9)
-        ax.set_xlabel("median time per solve [s]", fontsize=8)
+        g = first_group(f, problem)
+        ax.set_xlabel(f"median time per solve [{unit(g, 'seconds', 's')}]", fontsize=8)
         # cfm_stroke measures the slider force of a mechanism, not a beam tip.
         quantity = "force" if problem == "cfm_stroke" else "tip"
-        ax.set_ylabel(f"worst relative {quantity} error", fontsize=8)
+        ax.set_ylabel(f"worst relative {quantity} error [{unit(g, 'error_relative')}]", fontsize=8)
         ax.tick_params(labelsize=7)
         ax.grid(True, which="major", alpha=0.3)
     for ax in axes.flat[len(problems):]:
@@ -136,7 +159,7 @@ def load_plane(g):
             err[i, j] = max(g["error_relative"][k], 1e-16)
         elif s in (1, 2):
             failed[i, j] = True
-        inside[i, j] = g["inside_validity"][k]
+        inside[i, j] = validity(g)[k]
     return ns, als, err, failed, inside
 
 
@@ -162,12 +185,14 @@ def plot_stability(f, out, problem="cantilever_force"):
         ax.set_xticklabels([f"{a:g}" for a in als], fontsize=6)
         ax.set_yticks(np.arange(len(ns)) + 0.5)
         ax.set_yticklabels([f"{n:g}" for n in ns], fontsize=7)
-        ax.set_xlabel("alpha2", fontsize=8)
-        ax.set_ylabel("n", fontsize=8)
+        g = f[problem][method]
+        ax.set_xlabel(f"alpha2 = P l^2/EI [{unit(g, 'alpha2')}]", fontsize=8)
+        ax.set_ylabel(f"load ratio n [{unit(g, 'load_ratio_n')}]", fontsize=8)
         ax.set_title(method, fontsize=9)
     for ax in axes.flat[len(wanted):]:
         ax.axis("off")
-    fig.colorbar(im, cax=fig.add_axes([0.88, 0.15, 0.02, 0.7]), label="log10 relative tip error")
+    fig.colorbar(im, cax=fig.add_axes([0.88, 0.15, 0.02, 0.7]),
+                 label="log10 of the relative tip error [1]")
     fig.suptitle(f"{problem}: error over the load plane (red x: failed)", fontsize=10)
     fig.savefig(os.path.join(out, "bench_stability.png"), dpi=80)
     plt.close(fig)
@@ -194,8 +219,9 @@ def plot_column(f, out, problem="post_buckled_column"):
     ax.text(math.pi ** 2 / 4, 1e-15, " Euler load", fontsize=7, color="gray")
     ax.set_yscale("log")
     ax.set_ylim(1e-16, 100)
-    ax.set_xlabel("axial compression P l^2/EI (n = 50)")
-    ax.set_ylabel("relative tip error")
+    g = first_group(f, problem)
+    ax.set_xlabel(f"axial compression n alpha2 = n P l^2/EI, n = 50 [{unit(g, 'alpha2')}]")
+    ax.set_ylabel(f"relative tip error [{unit(g, 'error_relative')}]")
     ax.set_title("post-buckled column: error ~1 = another equilibrium branch; x at top = failed",
                  fontsize=9)
     handles = [plt.Line2D([], [], color=c, marker=m, ls="") for c, m in
@@ -228,8 +254,9 @@ def plot_prbm_map(f, out, problem="cantilever_force"):
     ax.set_xticklabels([f"{a:g}" for a in als], fontsize=7)
     ax.set_yticks(np.arange(len(ns)) + 0.5)
     ax.set_yticklabels([f"{n:g}" for n in ns], fontsize=7)
-    ax.set_xlabel("alpha2 = P l^2/EI")
-    ax.set_ylabel("load ratio n")
+    g = f[problem]["prbm"]
+    ax.set_xlabel(f"alpha2 = P l^2/EI [{unit(g, 'alpha2')}]")
+    ax.set_ylabel(f"load ratio n [{unit(g, 'load_ratio_n')}]")
     fig.colorbar(im, ax=ax, label="relative tip error [%]")
     ax.set_title("PRBM fixed-pinned (Table 5.1): error [%]; cyan: Theta_max limit", fontsize=9)
     fig.tight_layout()

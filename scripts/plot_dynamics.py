@@ -6,9 +6,12 @@ the first file (as Figs. 11-13).
     /usr/bin/python3 scripts/plot_dynamics.py full.h5 no_slider.h5 no_inertia.h5 \
         --labels "Table 5" "slider mass 0" "all inertias 0" --out dynamics.png
 
-Run with Debian's python3 (matplotlib and h5py from apt).
+Axis units come from the datasets' `units` attributes. Writes only the --out image (default
+dynamics.png in the working directory) and prints its path. Run with Debian's python3
+(matplotlib and h5py from apt).
 """
 import argparse
+import os
 import sys
 
 import h5py
@@ -18,11 +21,20 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
+def unit(dataset, default):
+    """The `units` attribute of `dataset` (`default` for files written before flexure stored
+    units)."""
+    value = dataset.attrs.get("units", default)
+    return value.decode() if isinstance(value, bytes) else str(value)
+
+
 def read_sweep(path):
     with h5py.File(path, "r") as f:
         data = {key: f[key][()] for key in
                 ("omega", "mean_force", "median_force", "peak_to_peak_force",
                  "percent_constant_force")}
+        data["omega_unit"] = unit(f["omega"], "rad/s")
+        data["force_unit"] = unit(f["mean_force"], "N")
         data["mechanism"] = f.attrs["mechanism"]
         if isinstance(data["mechanism"], bytes):
             data["mechanism"] = data["mechanism"].decode()
@@ -50,13 +62,14 @@ def main(argv):
     has_history = bool(sweeps[0]["history"])
     fig, axes = plt.subplots(2 if has_history else 1, 3, figsize=(14, 8 if has_history else 4),
                              squeeze=False)
-    quantities = (("mean_force", "mean force (N)"), ("median_force", "median force (N)"),
-                  ("peak_to_peak_force", "peak-to-peak force (N)"))
+    force_unit = sweeps[0]["force_unit"]
+    quantities = (("mean_force", "mean force"), ("median_force", "median force"),
+                  ("peak_to_peak_force", "peak-to-peak force"))
     for ax, (key, ylabel) in zip(axes[0], quantities):
         for sweep, label in zip(sweeps, labels):
             ax.plot(sweep["omega"], sweep[key], label=label)
-        ax.set_xlabel("drive frequency omega (rad/s)")
-        ax.set_ylabel(ylabel)
+        ax.set_xlabel(f"drive frequency omega ({sweeps[0]['omega_unit']})")
+        ax.set_ylabel(f"{ylabel} ({force_unit})")
         ax.grid(True, alpha=0.3)
     axes[0][0].legend()
     axes[0][1].set_title(f"{sweeps[0]['mechanism']}: whole symmetric mechanism")
@@ -66,14 +79,14 @@ def main(argv):
             phase = t / period if period > 0 else t
             ax.plot(phase, force, label="dynamic model")
             ax.plot(phase, static_force, "--", label="static PRBM")
-            ax.set_title(f"omega = {omega:g} rad/s")
-            ax.set_xlabel("t / period")
-            ax.set_ylabel("force (N)")
+            ax.set_title(f"omega = {omega:g} {sweeps[0]['omega_unit']}")
+            ax.set_xlabel("phase t / period (1)")
+            ax.set_ylabel(f"force ({force_unit})")
             ax.grid(True, alpha=0.3)
         axes[1][0].legend()
     fig.tight_layout()
     fig.savefig(args.out, dpi=120)
-    print(f"written {args.out}")
+    print(f"wrote {os.path.abspath(args.out)}")
     return 0
 
 

@@ -2,11 +2,15 @@
 """Plot one stroke of `flexure mechanism analyze NAME --out FILE.h5` (schema: docs/hdf5-schema.md,
 "flexure mechanism analyze"): slider force of the PRBM and of the exact model against the slider
 displacement, the PRBM force error relative to the exact model in a second panel, the PRBM
-validity limit as a vertical line where the file has one, optionally the PRBM stress of every
-flexure (--stress). The title names the design and its percent constant force.
+validity limit as a vertical line where the file has one, and a stress panel: the PRBM and (where
+the exact model ran) the exact stress of every flexure with the material's yield strength as a
+horizontal line (--no-stress leaves the panel out). Axis units come from the datasets' `units`
+attributes. The title names the design and its percent constant force.
 
     flexure mechanism analyze 1A-lpp --method exact --out lpp.h5
-    /usr/bin/python3 scripts/plot_mechanism.py lpp.h5 --out docs/figures/mechanism_1A-lpp.png
+    /usr/bin/python3 scripts/plot_mechanism.py lpp.h5 --out lpp.png
+
+Writes only the --out image (default mechanism.png in the working directory) and prints its path.
 
 Runs under Debian's /usr/bin/python3 with the apt packages python3-matplotlib and python3-h5py
 (scripts/install-deps.sh). Exits 1 with a message when they are missing or the file is not a
@@ -39,6 +43,17 @@ def text(value):
     return value.decode() if isinstance(value, bytes) else str(value)
 
 
+# Units shown on the axes: lengths in mm and stresses in MPa read better than m and Pa.
+DISPLAY = {"m": (1e3, "mm"), "Pa": (1e-6, "MPa")}
+
+
+def display(f, name, default):
+    """(scale, unit shown) for dataset `name`, from its `units` attribute (`default` for files
+    written before flexure stored units)."""
+    units = text(f[name].attrs.get("units", default)) if name in f else default
+    return DISPLAY.get(units, (1.0, units))
+
+
 def read_stroke(path):
     try:
         f = h5py.File(path, "r")
@@ -64,12 +79,21 @@ def read_stroke(path):
             "sign_exact": f.attrs.get("force_changes_sign_exact"),
             "vanish_exact": f.attrs.get("force_vanishes_exact"),
             "validity": f.attrs.get("prbm_validity_limit"),
+            # Absent in files written before the design was stored.
+            "yield": (float(f["design/yield_strength"][()])
+                      if "design/yield_strength" in f else None),
+            "length": display(f, "displacement", "m"),
+            "force": display(f, "force_prbm", "N"),
+            "stress_unit": display(f, "stress_prbm_pivot1", "Pa"),
             "stress": {},
+            "stress_exact": {},
         }
         for pivot in (1, 2, 3):
-            name = f"stress_prbm_pivot{pivot}"
-            if name in f:
-                data["stress"][pivot] = f[name][()]
+            for model, key in (("prbm", "stress"), ("exact", "stress_exact")):
+                name = f"stress_{model}_pivot{pivot}"
+                if name in f:
+                    data[key][pivot] = f[name][()]
+                    data["stress_unit"] = display(f, name, "Pa")
     return data
 
 
@@ -96,42 +120,55 @@ def main(argv):
     parser.add_argument("file", help="HDF5 file written by `flexure mechanism analyze --out`")
     parser.add_argument("--out", default="mechanism.png", help="output image (png, pdf, svg)")
     parser.add_argument("--stress", action="store_true",
-                        help="add a panel with the PRBM stress of every flexure")
+                        help="draw the stress panel (the default; kept for older command lines)")
+    parser.add_argument("--no-stress", action="store_true", help="leave the stress panel out")
     args = parser.parse_args(argv)
     d = read_stroke(args.file)
 
-    dx_mm = d["displacement"] * 1e3
+    length_scale, length_unit = d["length"]
+    force_scale, force_unit = d["force"]
+    stress_scale, stress_unit = d["stress_unit"]
+    dx = d["displacement"] * length_scale
     exact = d["force_exact"]
-    panels = 1 + (exact is not None) + (args.stress and bool(d["stress"]))
+    stress_panel = not args.no_stress and bool(d["stress"] or d["stress_exact"])
+    panels = 1 + (exact is not None) + stress_panel
     fig, axes = plt.subplots(panels, 1, figsize=(7, 2.2 + 2.3 * panels), sharex=True,
                              squeeze=False)
     axes = axes[:, 0]
     ax = axes[0]
-    ax.plot(dx_mm, d["force_prbm"], "o-", ms=3, label="PRBM")
+    ax.plot(dx, d["force_prbm"] * force_scale, "o-", ms=3, label="PRBM")
     if exact is not None:
-        ax.plot(dx_mm, exact, "s-", ms=3, label="exact (elastica)")
-    ax.set_ylabel("slider force F (N)")
+        ax.plot(dx, exact * force_scale, "s-", ms=3, label="exact (elastica)")
+    ax.set_ylabel(f"slider force F ({force_unit})")
     ax.grid(True, alpha=0.3)
     row = 1
     if exact is not None:
         err = 100.0 * (d["force_prbm"] - exact) / exact
-        axes[row].plot(dx_mm, err, "o-", ms=3, color="C2")
+        axes[row].plot(dx, err, "o-", ms=3, color="C2")
         axes[row].axhline(0.0, color="0.5", lw=0.8)
         axes[row].set_ylabel("PRBM force error (%)")
         axes[row].grid(True, alpha=0.3)
         row += 1
-    if args.stress and d["stress"]:
+    if stress_panel:
+        sa = axes[row]
         for pivot, sigma in sorted(d["stress"].items()):
-            axes[row].plot(dx_mm, sigma / 1e6, label=f"pivot {pivot}")
-        axes[row].set_ylabel("PRBM stress (MPa)")
-        axes[row].legend(fontsize=8)
-        axes[row].grid(True, alpha=0.3)
+            sa.plot(dx, sigma * stress_scale, "--", color=f"C{pivot - 1}",
+                    label=f"pivot {pivot} PRBM")
+        for pivot, sigma in sorted(d["stress_exact"].items()):
+            sa.plot(dx, sigma * stress_scale, "-", color=f"C{pivot - 1}",
+                    label=f"pivot {pivot} exact")
+        if d["yield"] is not None:
+            sa.axhline(d["yield"] * stress_scale, color="k", ls=":", lw=1.2,
+                       label="yield strength")
+        sa.set_ylabel(f"largest stress ({stress_unit})")
+        sa.legend(fontsize=7, ncol=2)
+        sa.grid(True, alpha=0.3)
     if d["validity"] is not None:
         for a in axes:
-            a.axvline(float(d["validity"]) * 1e3, color="C3", ls="--", lw=1)
+            a.axvline(float(d["validity"]) * length_scale, color="C3", ls="--", lw=1)
         axes[0].plot([], [], color="C3", ls="--", label="PRBM validity limit (Table 5.1)")
     axes[0].legend(fontsize=8)
-    axes[-1].set_xlabel("slider displacement Delta x (mm)")
+    axes[-1].set_xlabel(f"slider displacement Delta x ({length_unit})")
 
     def note(model):
         if d[f"sign_{model}"] is not None and int(d[f"sign_{model}"]):
@@ -152,6 +189,7 @@ def main(argv):
         # e.g. the directory of --out does not exist: a message, not a traceback (exit 1 as above)
         print(f"plot_mechanism.py: error: cannot write {args.out}: {e.strerror or e}", file=sys.stderr)
         return 1
+    print(f"wrote {os.path.abspath(args.out)}")
     return 0
 
 

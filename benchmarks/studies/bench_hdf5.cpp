@@ -5,11 +5,10 @@
 #include <sys/utsname.h>
 #include <unistd.h>
 
-#include <chrono>
-#include <ctime>
 #include <thread>
 
 #include "flexure/io/hdf5_file.h"
+#include "flexure/io/provenance.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 
 namespace flexure::bench {
@@ -146,38 +145,65 @@ void write_run(io::Hdf5Group& problem_group, const MethodRun& run) {
   g.set_attribute("tolerance", run.tolerance);
   g.set_attribute("elements", static_cast<std::int64_t>(run.elements));
   g.set_attribute("increments", static_cast<std::int64_t>(run.increments));
-  if (run.displacement.empty()) {
-    g.set_attribute("units",
-                    "nondimensional: lengths / l, forces * l^2/EI, moments * l/EI, angles rad, "
-                    "seconds s");
-  } else {
-    g.set_attribute("units",
-                    "SI: displacement m, force N, error_force relative, seconds s (beam datasets "
-                    "NaN)");
-  }
-  g.write_dataset("load_ratio_n", std::span<const double>(run.load_ratio_n));
-  g.write_dataset("alpha2", std::span<const double>(run.alpha2));
-  g.write_dataset("mu", std::span<const double>(run.mu));
-  g.write_dataset("a_over_l", std::span<const double>(run.a_over_l));
-  g.write_dataset("b_over_l", std::span<const double>(run.b_over_l));
-  g.write_dataset("theta0", std::span<const double>(run.theta0));
-  g.write_dataset("error_position", std::span<const double>(run.error_position));
-  g.write_dataset("error_relative", std::span<const double>(run.error_relative));
-  g.write_dataset("error_theta0", std::span<const double>(run.error_theta0));
-  g.write_dataset("seconds", std::span<const double>(run.seconds));
-  g.write_dataset("repeats", std::span<const int>(run.repeats));
-  g.write_dataset("status", std::span<const int>(run.status));
-  g.write_dataset("iterations", std::span<const int>(run.iterations));
-  g.write_dataset("inside_validity", std::span<const int>(run.inside_validity));
+  // The beam problems are nondimensional (l = 1, EI = 1); cfm_stroke is a mechanism in SI units
+  // whose beam columns are present but NaN (docs/hdf5-schema.md).
+  const bool mechanism = !run.displacement.empty();
+  const std::string nan_here = mechanism ? " (NaN: a mechanism problem)" : "";
+  const auto d = [&](const char* name,
+                     const std::vector<double>& v,
+                     const char* units,
+                     const std::string& what) {
+    g.write_dataset(name, std::span<const double>(v), units, what);
+  };
+  const auto i =
+      [&](const char* name, const std::vector<int>& v, const char* units, const std::string& what) {
+        g.write_dataset(name, std::span<const int>(v), units, what);
+      };
+  d("load_ratio_n",
+    run.load_ratio_n,
+    "1",
+    "input: load ratio n, horizontal force -n P (compressive for n > 0)" + nan_here);
+  d("alpha2", run.alpha2, "1", "input: load alpha2 = P l^2/EI" + nan_here);
+  d("mu", run.mu, "1", "input: end moment mu = M l/EI" + nan_here);
+  d("a_over_l", run.a_over_l, "1", "output: tip x a/l; NaN unless status is 0 or 3" + nan_here);
+  d("b_over_l", run.b_over_l, "1", "output: tip y b/l; NaN unless status is 0 or 3" + nan_here);
+  d("theta0", run.theta0, "rad", "output: tip angle; NaN unless status is 0 or 3" + nan_here);
+  d("error_position",
+    run.error_position,
+    "1",
+    "|tip - reference tip| / l; NaN without both solutions" + nan_here);
+  d("error_relative",
+    run.error_relative,
+    "1",
+    mechanism ? std::string("equal to error_force (so that charts of every problem work)")
+              : std::string("error_position / |reference tip displacement from (1, 0)|"));
+  d("error_theta0",
+    run.error_theta0,
+    "rad",
+    "|theta0 - reference theta0|; NaN without both solutions" + nan_here);
+  d("seconds", run.seconds, "s", "median wall time of one solve over `repeats` solves, one thread");
+  i("repeats", run.repeats, "1", "number of timed solves");
+  i("status", run.status, "1", "outcome per load (root status_meanings)");
+  i("iterations", run.iterations, "1", "the solver's own iteration count");
+  i("within_validity",
+    run.inside_validity,
+    "1",
+    "PRBM: 1 within min(Theta_max(gamma), Theta_max(K_theta)), 0 outside; -1 other methods");
   if (!run.reference_source.empty()) {
-    g.write_dataset("reference_source", std::span<const int>(run.reference_source));
+    i("reference_source",
+      run.reference_source,
+      "1",
+      "which solver gave the reference at this load (root status_meanings)");
   }
-  if (!run.displacement.empty()) {
-    g.write_dataset("displacement", std::span<const double>(run.displacement));
-    g.write_dataset("force", std::span<const double>(run.force));
-    g.write_dataset("error_force", std::span<const double>(run.error_force));
+  if (mechanism) {
+    d("displacement", run.displacement, "m", "input: slider displacement Delta x");
+    d("force",
+      run.force,
+      "N",
+      "output: slider input force (positive pushes inward); NaN unless status is 0 or 3");
+    d("error_force", run.error_force, "1", "|force - reference force| / |reference force|");
   }
-  g.write_dataset("message", run.message);
+  g.write_dataset("message", run.message, "text", "empty when converged, else the solver's reason");
 }
 
 MethodRun read_run(hid_t group,
@@ -211,7 +237,9 @@ MethodRun read_run(hid_t group,
   r.repeats = i("repeats");
   r.status = i("status");
   r.iterations = i("iterations");
-  r.inside_validity = i("inside_validity");
+  // Files before schema 2 called it inside_validity (a checkpoint may be that old).
+  r.inside_validity = i(H5Lexists(group, "within_validity", H5P_DEFAULT) > 0 ? "within_validity"
+                                                                             : "inside_validity");
   if (H5Lexists(group, "reference_source", H5P_DEFAULT) > 0) {
     r.reference_source = i("reference_source");
   }
@@ -224,6 +252,22 @@ MethodRun read_run(hid_t group,
   return r;
 }
 
+// Every code of the datasets status, within_validity and reference_source (bench_types.h).
+const std::vector<io::CodeMeaning>& bench_code_meanings() {
+  static const std::vector<io::CodeMeaning> codes = {
+      {"status", kStatusConverged, "converged; the error against the reference is measured"},
+      {"status", kStatusNotConverged, "the solver returned \"not converged\""},
+      {"status", kStatusError, "the solver refused or threw (e.g. no PRBM constants for this n)"},
+      {"status", kStatusNoReference, "converged, but the reference failed at this load (no error)"},
+      {"within_validity", -1, "not a PRBM method (no validity limit)"},
+      {"within_validity", 0, "PRBM: the PRB angle is outside its validity limit"},
+      {"within_validity", 1, "PRBM: the PRB angle is within its validity limit"},
+      {"reference_source", 0, "the elliptic solver"},
+      {"reference_source", 1, "shooting on CVODES at rtol 1e-12, atol 1e-14"},
+      {"reference_source", 2, "the exact mechanism model (cfm_stroke)"}};
+  return codes;
+}
+
 }  // namespace
 
 void write_bench_file(const std::string& path,
@@ -232,23 +276,17 @@ void write_bench_file(const std::string& path,
                       const std::vector<MethodRun>& runs) {
   io::AtomicHdf5File file(path);
   io::Hdf5Group& root = file.root();
-  root.set_attribute("schema", "flexure-bench 1 (docs/hdf5-schema.md)");
-  root.set_attribute("tool", "flexure bench");
-  root.set_attribute("tool_version", info.tool_version);
-  root.set_attribute("git_commit", info.git_commit);
+  root.set_attribute("schema", "flexure-bench 2 (docs/hdf5-schema.md)");
   root.set_attribute("machine", info.machine);
-  root.set_attribute("date", info.date);
   root.set_attribute("quick", static_cast<std::int64_t>(info.quick ? 1 : 0));
   root.set_attribute("complete", static_cast<std::int64_t>(info.complete ? 1 : 0));
-  root.set_attribute("units",
-                     "nondimensional (l = 1, EI = 1): a/l, b/l; alpha2 = P l^2/EI; mu = M l/EI; "
-                     "angles in rad; time in s; cfm_stroke: SI (displacement m, force N)");
   root.set_attribute("reference",
                      "elliptic solver (tolerance 1e-14) where it applies and converges, else "
                      "shooting on CVODES at rtol 1e-12, atol 1e-14; cfm_stroke: the exact "
                      "mechanism model (ExactMechanismSolver, shooting rtol 1e-12); per load in "
                      "<problem>/reference/reference_source");
   root.set_attribute("timing", "seconds = median wall time of `repeats` solves, one thread");
+  io::write_provenance(root, bench_code_meanings());
   for (const BenchProblem& p : problems) {
     bool any = false;
     for (const MethodRun& r : runs) any = any || r.problem == p.name;
@@ -301,15 +339,6 @@ std::string describe_machine() {
   std::string os = "unknown OS";
   if (uname(&u) == 0) os = fmt::format("{} {} {}", u.sysname, u.release, u.machine);
   return fmt::format("{}; {}; {} hardware threads", host, os, std::thread::hardware_concurrency());
-}
-
-std::string utc_now_iso8601() {
-  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
 }
 
 }  // namespace flexure::bench

@@ -8,12 +8,10 @@
 
 namespace flexure::bench {
 
-// File-level attributes (root group).
+// File-level attributes (root group) besides the provenance every file has (io/provenance.h:
+// tool_version, git_commit, command_line, creation_time, status_meanings).
 struct BenchFileInfo {
-  std::string tool_version;
-  std::string git_commit;
   std::string machine;  // host name, OS, CPU architecture, hardware threads
-  std::string date;     // UTC, ISO 8601, when the file was written
   bool quick = false;
   bool complete = true;  // false for the checkpoint of an unfinished run
 };
@@ -30,8 +28,7 @@ std::vector<MethodRun> read_bench_runs(const std::string& path);
 // The root attribute `quick` (0/1) of a benchmark file.
 bool read_bench_quick_flag(const std::string& path);
 
-// Machine description and the current UTC time for BenchFileInfo.
+// Machine description for BenchFileInfo.
 std::string describe_machine();
-std::string utc_now_iso8601();
 
 }  // namespace flexure::bench

@@ -12,7 +12,6 @@
 #include "flexure/benchmarks/studies/bench_problems.h"
 #include "flexure/benchmarks/studies/bench_solve.h"
 #include "flexure/solver/common/errors.h"
-#include "flexure/version.h"
 
 namespace flexure::bench {
 namespace {
@@ -304,8 +303,6 @@ BenchSummary run_benchmark(const BenchOptions& options) {
   };
 
   BenchFileInfo info;
-  info.tool_version = kVersion;
-  info.git_commit = kGitCommit;
   info.machine = describe_machine();
   info.quick = options.quick;
 
@@ -333,7 +330,6 @@ BenchSummary run_benchmark(const BenchOptions& options) {
       return true;
     }
     ++summary.groups_computed;
-    info.date = utc_now_iso8601();
     info.complete = false;
     write_bench_file(checkpoint, info, problems, summary.runs);
     return options.stop_after_groups <= 0 || summary.groups_computed < options.stop_after_groups;
@@ -355,7 +351,6 @@ BenchSummary run_benchmark(const BenchOptions& options) {
       if (!finish_group(run_method(p, &m, &reference, options.quick), false)) return summary;
     }
   }
-  info.date = utc_now_iso8601();
   info.complete = true;
   write_bench_file(options.out, info, problems, summary.runs);
   std::error_code ignored;

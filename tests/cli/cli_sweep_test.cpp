@@ -66,10 +66,10 @@ TEST(CliSweep, EndpointsMatchTheNZeroTableAndTheFileIsComplete) {
   for (int i = 1; i < 5; ++i) EXPECT_GT(theta0[i], theta0[i - 1]) << "stiffer load, larger angle";
 
   EXPECT_EQ(read_string_attribute(file, "/", "method"), "elliptic");
-  EXPECT_EQ(read_double_attribute(file, "/", "n"), 0.0);
+  EXPECT_EQ(read_double_attribute(file, "/", "load_ratio_n"), 0.0);
   EXPECT_EQ(read_double_attribute(file, "/", "mu"), 0.0);
   EXPECT_GT(read_double_attribute(file, "/", "tolerance"), 0.0);
-  EXPECT_EQ(read_string_attribute(file, "/", "version"), kVersion);
+  EXPECT_EQ(read_string_attribute(file, "/", "tool_version"), kVersion);
   EXPECT_EQ(read_string_attribute(file, "/", "git_commit"), kGitCommit);
   H5Fclose(file);
 }
@@ -126,7 +126,7 @@ TEST(CliSweep, DescendingRangeAndSingleLoad) {
   const std::vector<double> alpha2 = read_doubles(file, "alpha2");
   ASSERT_EQ(alpha2.size(), 9u);
   for (int i = 0; i < 9; ++i) EXPECT_NEAR(alpha2[i], 2.0 - 0.5 * i, 1e-15) << i;
-  EXPECT_EQ(read_double_attribute(file, "/", "n"), 1.0);
+  EXPECT_EQ(read_double_attribute(file, "/", "load_ratio_n"), 1.0);
   EXPECT_EQ(read_double_attribute(file, "/", "mu"), 0.1);
   H5Fclose(file);
 

@@ -1,33 +1,27 @@
 // What is checked against what: scripts/plot_mechanism.py on a small `flexure mechanism analyze
-// --out` file -- it exits 0 and leaves exactly one PNG (checked by its 8-byte signature, no
-// temporary file left behind); on a file that is not a mechanism stroke, or an --out in a directory
-// that does not exist, it exits 1 with a message (no Python traceback).
+// --out` file -- it exits 0, leaves exactly one PNG (checked by its 8-byte signature, no
+// temporary file left behind) and prints its path; every axis label ends with a unit in
+// parentheses (mm and MPa: the file's m and Pa, scaled for reading), and the stress panel shows
+// the exact-model stresses and the yield limit (legend entries, read from an SVG of the same
+// plot, where matplotlib keeps each text as a comment); on a file that is not a mechanism stroke,
+// or an --out in a directory that does not exist, it exits 1 with a message (no Python
+// traceback).
 // Skipped (GTEST_SKIP) when /usr/bin/python3 cannot import matplotlib and h5py (the Debian packages
 // python3-matplotlib, python3-h5py).
 #include <gtest/gtest.h>
 
-#include <cstdlib>
+#include <algorithm>
 #include <fstream>
+#include <regex>
 #include <string>
 
-#include "tests/support/cli_test_support.h"
+#include "tests/support/plot_test_support.h"
 
 namespace flexure::test {
 namespace {
 
-const std::string kPython = "/usr/bin/python3";
-
-bool python_has_plot_modules() {
-  const std::string probe = kPython + " -c 'import matplotlib, h5py' >/dev/null 2>&1";
-  return std::system(probe.c_str()) == 0;
-}
-
-int run_script(const std::string& args, const ScratchDir& dir) {
-  const std::string command = "cd '" + dir.path().string() + "' && " + kPython + " '" +
-                              FLEXURE_SOURCE_DIR + "/scripts/plot_mechanism.py' " + args +
-                              " >out.txt 2>err.txt";
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+int run_script(const std::string& args, const ScratchDir& dir, bool print_labels = false) {
+  return run_plot_script("plot_mechanism.py", args, dir, print_labels);
 }
 
 TEST(PlotMechanism, WritesOnePngFromAnAnalyzeFile) {
@@ -41,8 +35,35 @@ TEST(PlotMechanism, WritesOnePngFromAnAnalyzeFile) {
   std::string signature(8, '\0');
   png.read(signature.data(), 8);
   EXPECT_EQ(signature, std::string("\x89PNG\r\n\x1a\n", 8));
+  EXPECT_EQ(read_text(dir / "out.txt"),
+            "wrote " + std::filesystem::canonical(dir / "s.png").string() + "\n");
   // s.h5, s.png, out.txt, err.txt: no temporary image left.
   EXPECT_EQ(dir.entries().size(), 4u);
+}
+
+TEST(PlotMechanism, LabelsEveryAxisWithUnitsAndDrawsExactStressesAndTheYieldLimit) {
+  if (!python_has_plot_modules()) GTEST_SKIP() << "/usr/bin/python3 lacks matplotlib or h5py";
+  ScratchDir dir;
+  const CommandResult r =
+      run_flexure("mechanism analyze 1A-spp --points 8 --method exact --out s.h5", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_EQ(run_script("s.h5 --out s.png", dir, true), 0) << read_text(dir / "err.txt");
+  const std::vector<std::string> labels = axis_labels(read_text(dir / "out.txt"));
+  // Force, force error and stress panels (shared x axis: one x label).
+  EXPECT_EQ(labels.size(), 4u);
+  for (const std::string& label : labels) {
+    EXPECT_TRUE(std::regex_search(label, std::regex(R"(\([^()]+\)$)"))) << label;
+  }
+  EXPECT_NE(std::find(labels.begin(), labels.end(), "slider displacement Delta x (mm)"),
+            labels.end());
+  EXPECT_NE(std::find(labels.begin(), labels.end(), "slider force F (N)"), labels.end());
+  EXPECT_NE(std::find(labels.begin(), labels.end(), "largest stress (MPa)"), labels.end());
+
+  ASSERT_EQ(run_script("s.h5 --out s.svg", dir), 0) << read_text(dir / "err.txt");
+  const std::string svg = read_text(dir / "s.svg");
+  EXPECT_NE(svg.find("<!-- yield strength -->"), std::string::npos);
+  EXPECT_NE(svg.find("<!-- pivot 1 exact -->"), std::string::npos);
+  EXPECT_NE(svg.find("<!-- pivot 1 PRBM -->"), std::string::npos);
 }
 
 TEST(PlotMechanism, RefusesAFileWithoutAStroke) {

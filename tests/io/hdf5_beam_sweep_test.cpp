@@ -148,12 +148,12 @@ TEST(BeamSweep, FileLayoutReadsBackWithTheCApi) {
     }
   }
   EXPECT_EQ(test::read_string_attribute(file, "/", "method"), "linear");
-  EXPECT_EQ(test::read_double_attribute(file, "/", "n"), 0.5);
+  EXPECT_EQ(test::read_double_attribute(file, "/", "load_ratio_n"), 0.5);
   EXPECT_EQ(test::read_double_attribute(file, "/", "mu"), -0.25);
   EXPECT_EQ(test::read_double_attribute(file, "/", "tolerance"), 1e-14);
   EXPECT_EQ(test::read_int_attribute(file, "/", "count"), 31);
   EXPECT_EQ(test::read_int_attribute(file, "/", "converged_count"), table.converged_count);
-  EXPECT_EQ(test::read_string_attribute(file, "/", "version"), kVersion);
+  EXPECT_EQ(test::read_string_attribute(file, "/", "tool_version"), kVersion);
   EXPECT_EQ(test::read_string_attribute(file, "/", "git_commit"), kGitCommit);
   H5Fclose(file);
 }

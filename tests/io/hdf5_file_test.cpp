@@ -2,16 +2,22 @@
 // attributes that are read back with the plain HDF5 C API and compared bit for bit with the
 // values written; the atomic-write contract (temporary next to the target, renamed on commit,
 // removed when not committed or after a failed write) is checked by listing the directory; an
-// unwritable target fails before anything is written, naming the path.
+// unwritable target fails before anything is written, naming the path. Every dataset carries the
+// units and description it was written with, a dataset without them is refused, and commit()
+// refuses a file without the provenance of io/provenance.h (checked against the literal strings
+// written and against flexure/version.h); shell_quote against hand-quoted strings.
 #include "flexure/io/hdf5_file.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <cmath>
+#include <ctime>
 #include <fstream>
 #include <limits>
 
+#include "flexure/io/provenance.h"
+#include "flexure/version.h"
 #include "tests/support/cli_test_support.h"
 
 namespace flexure::io {
@@ -27,19 +33,20 @@ TEST(AtomicHdf5File, WritesDatasetsGroupsAndAttributesThatReadBackExactly) {
   const std::vector<std::string> strings = {"elliptic", "", "theta0 = 1 rad (57.3\xC2\xB0)"};
   {
     AtomicHdf5File file(path.string());
-    file.root().write_dataset("x", std::span<const double>(doubles));
-    file.root().write_dataset("status", std::span<const int>(ints));
-    file.root().write_dataset("names", strings);
-    file.root().write_dataset("empty", std::span<const double>());
+    file.root().write_dataset("x", std::span<const double>(doubles), "1", "test data");
+    file.root().write_dataset("status", std::span<const int>(ints), "1", "test data");
+    file.root().write_dataset("names", strings, "text", "test strings");
+    file.root().write_dataset("empty", std::span<const double>(), "1", "test data");
     file.root().set_attribute("method", "elliptic");
     file.root().set_attribute("n", 2.5);
     file.root().set_attribute("count", std::int64_t{1000000});
     Hdf5Group group = file.root().create_group("problem");
     group.set_attribute("source", std::string("Howell eq. 2.90"));
     group.set_attribute("mu", -0.25);
-    group.write_dataset("b_over_l", std::span<const double>(doubles).first(2));
+    group.write_dataset("b_over_l", std::span<const double>(doubles).first(2), "1", "test data");
     Hdf5Group nested = group.create_group("inner");
-    nested.write_dataset("status", std::span<const int>(ints).first(1));
+    nested.write_dataset("status", std::span<const int>(ints).first(1), "1", "test data");
+    write_provenance(file.root(), {});
     file.commit();
     EXPECT_TRUE(file.committed());
   }
@@ -72,7 +79,9 @@ TEST(AtomicHdf5File, WritesUnderATemporaryNameInTheSameDirectoryUntilCommit) {
       << "rename() is only atomic within one file system";
   EXPECT_TRUE(std::filesystem::exists(file.temp_path()));
   EXPECT_FALSE(std::filesystem::exists(path)) << "the target must not appear before commit";
-  file.root().write_dataset("x", std::span<const double>(std::vector<double>{1.0}));
+  file.root().write_dataset(
+      "x", std::span<const double>(std::vector<double>{1.0}), "1", "test data");
+  write_provenance(file.root(), {});
   file.commit();
   EXPECT_TRUE(std::filesystem::exists(path));
   EXPECT_FALSE(std::filesystem::exists(file.temp_path()));
@@ -82,7 +91,8 @@ TEST(AtomicHdf5File, DestroyedWithoutCommitLeavesNoFileBehind) {
   ScratchDir dir;
   {
     AtomicHdf5File file((dir / "never.h5").string());
-    file.root().write_dataset("x", std::span<const double>(std::vector<double>{1.0, 2.0}));
+    file.root().write_dataset(
+        "x", std::span<const double>(std::vector<double>{1.0, 2.0}), "1", "test data");
   }
   EXPECT_TRUE(dir.entries().empty());
 }
@@ -92,9 +102,11 @@ TEST(AtomicHdf5File, FailedWriteThrowsNamingTheObjectAndLeavesNoFile) {
   const auto path = dir / "broken.h5";
   try {
     AtomicHdf5File file(path.string());
-    file.root().write_dataset("x", std::span<const double>(std::vector<double>{1.0}));
+    file.root().write_dataset(
+        "x", std::span<const double>(std::vector<double>{1.0}), "1", "test data");
     // A second dataset with the same name is refused by HDF5.
-    file.root().write_dataset("x", std::span<const double>(std::vector<double>{2.0}));
+    file.root().write_dataset(
+        "x", std::span<const double>(std::vector<double>{2.0}), "1", "test data");
     FAIL() << "duplicate dataset was accepted";
   } catch (const Hdf5Error& e) {
     EXPECT_NE(std::string(e.what()).find("'/x'"), std::string::npos) << e.what();
@@ -119,7 +131,9 @@ TEST(AtomicHdf5File, CommitReplacesAnExistingFileWhole) {
   std::ofstream(path) << "not an HDF5 file";
   {
     AtomicHdf5File file(path.string());
-    file.root().write_dataset("x", std::span<const double>(std::vector<double>{4.0}));
+    file.root().write_dataset(
+        "x", std::span<const double>(std::vector<double>{4.0}), "1", "test data");
+    write_provenance(file.root(), {});
     file.commit();
   }
   hid_t file = test::open_read_only(path);
@@ -160,6 +174,96 @@ TEST(AtomicHdf5File, ReadOnlyDirectoryIsAClearError) {
     EXPECT_NE(std::string(e.what()).find("not writable"), std::string::npos) << e.what();
   }
   std::filesystem::permissions(dir / "ro", std::filesystem::perms::owner_all);
+}
+
+TEST(AtomicHdf5File, EveryDatasetCarriesItsUnitsAndDescription) {
+  ScratchDir dir;
+  const auto path = dir / "described.h5";
+  {
+    AtomicHdf5File file(path.string());
+    file.root().write_dataset(
+        "theta0", std::span<const double>(std::vector<double>{1.0}), "rad", "tip angle");
+    file.root().write_scalar("E", 2.0e11, "Pa", "Young's modulus");
+    file.root().write_dataset("names", std::vector<std::string>{"a"}, "text", "names of the rows");
+    write_provenance(file.root(), {});
+    file.commit();
+  }
+  hid_t file = test::open_read_only(path);
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(test::read_string_attribute(file, "theta0", "units"), "rad");
+  EXPECT_EQ(test::read_string_attribute(file, "theta0", "description"), "tip angle");
+  EXPECT_EQ(test::read_string_attribute(file, "E", "units"), "Pa");
+  EXPECT_EQ(test::read_doubles(file, "E"), std::vector<double>{2.0e11}) << "a scalar dataset";
+  EXPECT_EQ(test::read_string_attribute(file, "names", "units"), "text");
+  H5Fclose(file);
+}
+
+TEST(AtomicHdf5File, ADatasetWithoutUnitsOrOneLineDescriptionIsRefused) {
+  ScratchDir dir;
+  {
+    AtomicHdf5File file((dir / "x.h5").string());
+    const std::vector<double> one{1.0};
+    EXPECT_THROW(file.root().write_dataset("a", std::span<const double>(one), "", "a value"),
+                 Hdf5Error);
+    EXPECT_THROW(file.root().write_dataset("b", std::span<const double>(one), "1", ""), Hdf5Error);
+    EXPECT_THROW(file.root().write_dataset("c", std::span<const double>(one), "1", "two\nlines"),
+                 Hdf5Error);
+    EXPECT_THROW(file.root().write_scalar("d", 1.0, "", "a value"), Hdf5Error);
+  }
+  EXPECT_TRUE(dir.entries().empty());
+}
+
+TEST(AtomicHdf5File, CommitRefusesAFileWithoutProvenanceAndLeavesTheTargetAlone) {
+  ScratchDir dir;
+  const auto path = dir / "old.h5";
+  std::ofstream(path) << "previous contents";
+  AtomicHdf5File file(path.string());
+  file.root().set_attribute("x", 1.0);
+  try {
+    file.commit();
+    FAIL() << "a file without provenance was committed";
+  } catch (const Hdf5Error& e) {
+    EXPECT_NE(std::string(e.what()).find("write_provenance"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"old.h5"}) << "temporary left behind";
+  EXPECT_EQ(test::read_text(path), "previous contents");
+}
+
+TEST(Provenance, RootAttributesSayWhatMadeTheFile) {
+  ScratchDir dir;
+  const auto path = dir / "p.h5";
+  const char* argv[] = {"flexure", "sweep", "beam", "--out", "my file.h5"};
+  record_command_line(5, argv);
+  {
+    AtomicHdf5File file(path.string());
+    write_provenance(file.root(),
+                     {{"status", 0, "converged"}, {"status", 1, "no solution"}, {"v", -1, "n/a"}});
+    file.commit();
+  }
+  hid_t file = test::open_read_only(path);
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(test::read_string_attribute(file, "/", "tool"), "flexure");
+  EXPECT_EQ(test::read_string_attribute(file, "/", "tool_version"), kVersion);
+  EXPECT_EQ(test::read_string_attribute(file, "/", "git_commit"), kGitCommit);
+  EXPECT_EQ(test::read_string_attribute(file, "/", "command_line"),
+            "flexure sweep beam --out 'my file.h5'");
+  EXPECT_EQ(test::read_string_attribute(file, "/", "status_meanings"),
+            "status 0: converged\nstatus 1: no solution\nv -1: n/a");
+  const std::string time = test::read_string_attribute(file, "/", "creation_time");
+  std::tm tm{};
+  EXPECT_NE(strptime(time.c_str(), "%Y-%m-%dT%H:%M:%SZ", &tm), nullptr) << time;
+  EXPECT_EQ(time.size(), 20u) << time;
+  H5Fclose(file);
+}
+
+TEST(Provenance, ShellQuoteLeavesPlainWordsAndQuotesTheRest) {
+  EXPECT_EQ(shell_quote("--alpha2"), "--alpha2");
+  EXPECT_EQ(shell_quote("0:10:2000"), "0:10:2000");
+  EXPECT_EQ(shell_quote("/tmp/a_b-c.h5"), "/tmp/a_b-c.h5");
+  EXPECT_EQ(shell_quote(""), "''");
+  EXPECT_EQ(shell_quote("a b"), "'a b'");
+  EXPECT_EQ(shell_quote("1A-lpp'"), R"('1A-lpp'\''')");
+  EXPECT_EQ(shell_quote("$HOME"), "'$HOME'");
 }
 
 }  // namespace

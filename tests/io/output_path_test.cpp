@@ -27,6 +27,7 @@
 #include <string>
 
 #include "flexure/io/hdf5_file.h"
+#include "flexure/io/provenance.h"
 #include "flexure/solver/common/errors.h"
 #include "tests/support/cli_test_support.h"
 
@@ -82,6 +83,7 @@ TEST(OutputPath, ATargetNameAtTheLimitIsWrittenAndNothingElseIsLeft) {
     EXPECT_LE(std::filesystem::path(file.temp_path()).filename().string().size(),
               static_cast<std::size_t>(limit));
     file.root().set_attribute("x", 1.0);
+    write_provenance(file.root(), {});
     file.commit();
   }
   EXPECT_EQ(dir.entries(), std::vector<std::string>{name});

@@ -54,7 +54,7 @@ const std::vector<std::string> kDoubleDatasets = {"load_ratio_n",
                                                   "error_theta0",
                                                   "seconds"};
 const std::vector<std::string> kIntDatasets = {
-    "status", "repeats", "iterations", "inside_validity"};
+    "status", "repeats", "iterations", "within_validity"};
 
 std::vector<std::string> group_members(hid_t file, const std::string& path) {
   std::vector<std::string> names;
@@ -97,7 +97,8 @@ TEST_F(BenchQuickTest, FileFollowsTheSchema) {
   ASSERT_EQ(result_->exit_code, 0) << result_->err;
   const hid_t file = open_read_only(*dir_ / "q.h5");
   ASSERT_GE(file, 0);
-  for (const char* attr : {"tool_version", "git_commit", "machine", "date", "units", "reference"}) {
+  for (const char* attr :
+       {"tool_version", "git_commit", "machine", "creation_time", "command_line", "reference"}) {
     const std::string value = read_string_attribute(file, "/", attr);
     EXPECT_NE(value, "<missing>") << attr;
     EXPECT_FALSE(value.empty()) << attr;
@@ -151,7 +152,7 @@ TEST_F(BenchQuickTest, ExactMethodsAgreeWithAnIndependentReference) {
       const std::string g = "/" + problem + "/" + method;
       const std::vector<int> status = read_ints(file, (g + "/status").c_str());
       const std::vector<double> error = read_doubles(file, (g + "/error_relative").c_str());
-      const std::vector<int> inside = read_ints(file, (g + "/inside_validity").c_str());
+      const std::vector<int> inside = read_ints(file, (g + "/within_validity").c_str());
       for (std::size_t i = 0; i < status.size(); ++i) {
         if (method.rfind("shooting_", 0) == 0) {
           // Shooting must converge on every problem of the set (it is the reference method).
