@@ -290,7 +290,7 @@ void run_dynamics(const DynamicsArgs& args) {
   } else {
     fmt::print(
         "{}: static nominal force {:.4f} N{}, natural frequency {:.4f} rad/s\n"
-        "  forces of the {}; springs per half {:.6g}, {:.6g}, {:.6g} N m ({})\n",
+        "  force of: {}; springs per half {:.6g}, {:.6g}, {:.6g} N m ({})\n",
         d.name,
         F_nom,
         d.F_nom_paper > 0.0 ? fmt::format(" (paper {:.4f} N)", F_nom_paper) : "",

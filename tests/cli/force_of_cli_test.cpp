@@ -129,7 +129,7 @@ TEST(ForceOfCli, TextAndHdf5SayWhatTheForceIsOf) {
       "dynamics --mechanism 2B-lplm --omega 0:0:1 --history 0 --force-of half --out d.h5",
       dir.path());
   ASSERT_EQ(dyn.exit_code, 0) << dyn.err;
-  EXPECT_NE(dyn.out.find("forces of the one half"), std::string::npos) << dyn.out;
+  EXPECT_NE(dyn.out.find("force of: one half;"), std::string::npos) << dyn.out;
   EXPECT_NE(dyn.out.find("table5-printed"), std::string::npos) << dyn.out;
   const test::CommandResult ana = run_flexure(
       "mechanism analyze 2B-lplm --method prbm --force-of whole --out a.h5", dir.path());
