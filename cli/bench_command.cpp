@@ -1,16 +1,19 @@
 // `flexure bench`: the standard benchmark (accuracy against time of every method on every
 // problem), written to HDF5 (docs/hdf5-schema.md, docs/benchmarks.md).
+#include <errno.h>  // program_invocation_name (GNU): the program as the user ran it
 #include <fmt/format.h>
 
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "flexure/benchmarks/studies/bench_run.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/output_path.h"
+#include "flexure/io/temp_file_cleanup.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {
@@ -20,6 +23,29 @@ struct BenchArgs {
   bench::BenchOptions options;
   bool json = false;
 };
+
+// `text` as one shell word: unchanged when it holds only safe characters, else in single quotes.
+std::string shell_word(const std::string& text) {
+  const bool safe = !text.empty() && text.find_first_not_of(
+                                         "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                         "0123456789_-+=./:,@%") == std::string::npos;
+  if (safe) return text;
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// The command that continues this run: the same program, output and selection with --resume
+// (--stop-after, a test device, is left out).
+std::string resume_command(const BenchArgs& args) {
+  const bench::BenchOptions& o = args.options;
+  std::string command = shell_word(program_invocation_name) + " bench --out " + shell_word(o.out);
+  if (o.quick) command += " --quick";
+  if (!o.problems.empty()) command += " --problems " + shell_word(o.problems);
+  if (!o.methods.empty()) command += " --methods " + shell_word(o.methods);
+  if (args.json) command += " --json";
+  return command + " --resume";
+}
 
 void run_bench(BenchArgs& args) {
   bench::BenchOptions options = args.options;
@@ -32,12 +58,26 @@ void run_bench(BenchArgs& args) {
   } catch (const io::Hdf5Error& e) {
     throw InvalidInput(fmt::format("--out {}: {}", options.out, e.what()));
   }
+  // Interrupted (Ctrl-C, SIGTERM, SIGHUP): the checkpoint of the finished groups stays; say how to
+  // continue. Before the first group has finished there is no checkpoint yet.
+  const std::string checkpoint = bench::checkpoint_path(options.out);
+  const std::string resume = resume_command(args);
+  io::set_interrupt_note(
+      fmt::format("\nflexure bench: interrupted; the finished groups are kept in {}. Resume "
+                  "with:\n  {}\n",
+                  checkpoint,
+                  resume),
+      checkpoint,
+      fmt::format("\nflexure bench: interrupted before the first group finished (no checkpoint). "
+                  "Run again with:\n  {}\n",
+                  resume));
   options.progress = [](const std::string& line) {
     std::fprintf(stderr, "%s\n", line.c_str());
     std::fflush(stderr);
   };
   const auto start = std::chrono::steady_clock::now();
   const bench::BenchSummary summary = bench::run_benchmark(options);
+  io::set_interrupt_note({});
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   int points = 0;
@@ -58,6 +98,7 @@ void run_bench(BenchArgs& args) {
     out["solves"] = points;
     out["failed_solves"] = failed;
     out["seconds"] = seconds;
+    out["resume_command"] = summary.complete ? Json(nullptr) : Json(resume);
     print_json(out);
   } else {
     fmt::print("{} {}: {} groups computed, {} reused; {} loads solved, {} failed; {:.1f} s\n",
@@ -68,6 +109,7 @@ void run_bench(BenchArgs& args) {
                points,
                failed,
                seconds);
+    if (!summary.complete) fmt::print("Resume with: {}\n", resume);
   }
 }
 

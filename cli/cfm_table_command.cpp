@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli/cfm_cli_support.h"
+#include "cli/slow_progress.h"
 #include "flexure/mechanisms/cfm/cfm_comparison.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/solver/common/errors.h"
@@ -255,6 +256,7 @@ void run_exact_table(const CfmArgs& args) {
         "Thesis sub-classes, PRBM and exact model on {} equally spaced points (Phi, Xi' in %)\n",
         args.exact_points);
   }
+  std::vector<const CfmSubclass*> selected;
   for (const CfmSubclass& row : cfm::thesis_subclasses()) {
     const std::string name = row.name;
     // Sub-class "a" of each configuration: "lpp-a", "slp-aIo" (not "lpp-a99", "slp-a90I").
@@ -262,8 +264,25 @@ void run_exact_table(const CfmArgs& args) {
     const bool is_a = name.size() > dash + 1 && name[dash + 1] == 'a' &&
                       (name.size() == dash + 2 || !std::isdigit(name[dash + 2]));
     if (args.exact_rows == "a" && !is_a) continue;
+    selected.push_back(&row);
+  }
+  // Progress by elapsed time on a terminal (slow_progress.h), counted in exact stroke points over
+  // all rows: a row's cost varies with its stroke (near a fold substeps multiply it).
+  cfm::CfmExactOptions options = make_exact_options(args);
+  const auto progress = slow_progress("cfm --table --exact: stroke points");
+  const std::size_t total = selected.size() * static_cast<std::size_t>(options.points);
+  std::size_t reported = 0;
+  for (std::size_t i = 0; i < selected.size(); ++i) {
+    const CfmSubclass& row = *selected[i];
+    if (progress) {
+      const std::size_t before = i * static_cast<std::size_t>(options.points);
+      options.progress = [&progress, &reported, before, total](std::size_t done, std::size_t) {
+        reported = before + done;
+        progress(reported, total);
+      };
+    }
     const CfmResult r = evaluate_or_throw(CfmModel(), cfm::parameters_of(row));
-    const cfm::CfmExactResult e = cfm::solve_cfm_exact(r, make_exact_options(args));
+    const cfm::CfmExactResult e = cfm::solve_cfm_exact(r, options);
     all_converged = all_converged && e.converged();
     const std::string stroke = r.stroke_clamped ? fmt::format("{:.2f}", r.stroke_percent)
                                                 : fmt::format("{:g}", r.stroke_percent);
@@ -305,6 +324,8 @@ void run_exact_table(const CfmArgs& args) {
                xi_exact,
                error);
   }
+  // A stroke that stopped early leaves the count short: end the progress line all the same.
+  if (progress && reported < total) progress(total, total);
   if (args.json) print_json(Json{{"points", args.exact_points}, {"subclasses", rows}});
   if (!all_converged) set_exit_code(kExitNoConvergence);
 }

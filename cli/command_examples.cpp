@@ -51,7 +51,8 @@ const std::vector<CommandExamples>& command_examples() {
         "flexure mechanism validate --designs howell --points 10 --markdown"}},
       {{"dynamics"},
        {"flexure dynamics --list",
-        "flexure dynamics --mechanism 2B-lplm --omega 0:100:5 --json",
+        "flexure dynamics --mechanism 2B-lplm --omega 0:0:1 --force-of half --spring-rule "
+        "pure-bending --json",
         "flexure dynamics --mechanism 2B-lplm --omega 0:100:5 --out d.h5"}},
       {{"bench"},
        {"flexure bench --quick --problems cantilever_force --out quick.h5",

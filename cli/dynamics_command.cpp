@@ -1,16 +1,18 @@
 // `flexure dynamics`: frequency sweep of the inverse dynamics of a modified constant-force slider
 // mechanism (Ugwuoke & Abolarin, the dynamics paper; docs/dynamics.md).
 //
-//   flexure dynamics --mechanism NAME --omega START:STOP:COUNT [--out FILE.h5]
+//   flexure dynamics --mechanism NAME|FILE.toml --omega START:STOP:COUNT [--out FILE.h5]
 //                    [--stroke-percent 40] [--preload-percent 1] [--samples 1024]
-//                    [--friction C1,C2,C3] [--axial-alpha RAD]
+//                    [--friction C1,C2,C3] [--axial-alpha RAD] [--spring-rule RULE]
+//                    [--force-of whole|half]
 //                    [--zero-slider-mass | --zero-inertia] [--history W1,W2,...] [--json]
 //   flexure dynamics --list [--json]
 //
-// Per frequency: mean, median, min, max and peak-to-peak input force of the whole symmetric
-// mechanism (N) over one period of Delta x(t) = preload + stroke (1 - cos omega t)/2, and the
-// percent constant force 100 min/max. The HDF5 file also holds the force history at the --history
-// frequencies (default: the paper's Figs. 11-13, 10.472, 31.416 and 62.832 rad/s).
+// Per frequency: mean, median, min, max and peak-to-peak input force (N; of the whole symmetric
+// mechanism unless --force-of half) over one period of Delta x(t) = preload + stroke (1 - cos
+// omega t)/2, and the percent constant force 100 min/max. The HDF5 file also holds the force
+// history at the --history frequencies (default: the paper's Figs. 11-13, 10.472, 31.416 and
+// 62.832 rad/s). The design comes from dynamics/dynamics_design.h.
 #include <fmt/format.h>
 
 #include <chrono>
@@ -23,29 +25,42 @@
 #include "cli/commands.h"
 #include "cli/slow_progress.h"
 #include "flexure/io/hdf5_file.h"
+#include "flexure/io/mechanism_toml.h"
 #include "flexure/io/output_path.h"
 #include "flexure/io/provenance.h"
 #include "flexure/mechanisms/dynamics/cfsm_designs.h"
+#include "flexure/mechanisms/dynamics/dynamics_design.h"
 #include "flexure/mechanisms/dynamics/forward_dynamics.h"
 #include "flexure/mechanisms/dynamics/inverse_dynamics.h"
+#include "flexure/mechanisms/force_of.h"
+#include "flexure/mechanisms/modified_designs.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {
 namespace {
 
 using dynamics::CfsmDesign;
+using dynamics::DynamicsDesign;
 using dynamics::DynamicsParameters;
 using dynamics::ForceSample;
 using dynamics::ForceStatistics;
 using dynamics::InverseDynamics;
 using dynamics::SinusoidalMotion;
 using dynamics::SliderCrankDynamics;
+using mechanism::ForceOf;
+
+// Samples of the static nominal force (inverse_dynamics.h static_nominal_force): the mean over
+// Delta x = k stroke/N, k = 1..N, as `mechanism analyze --points N` samples its stroke.
+constexpr int kStaticForcePoints = 1000;
 
 struct DynamicsArgs {
   std::string mechanism;
   std::string omega;
   std::string out;
   double stroke_percent = 40.0;
+  CLI::Option* stroke_option = nullptr;
+  std::string spring_rule;
+  std::string force_of = "whole";
   double preload_percent = 1.0;
   int samples = 1024;
   std::vector<double> friction;
@@ -76,6 +91,28 @@ void run_list(const DynamicsArgs& args) {
   }
 }
 
+// The design: a built-in name of the paper's Table 5 or a mechanism TOML file with a [dynamics]
+// table (dynamics_design.h says which springs and masses each gives).
+DynamicsDesign resolve_design(const DynamicsArgs& args) {
+  std::optional<mechanism::SpringRule> rule;
+  if (!args.spring_rule.empty()) rule = mechanism::parse_spring_rule(args.spring_rule);
+  const std::string& what = args.mechanism;
+  if (what.size() > 5 && what.substr(what.size() - 5) == ".toml") {
+    const mechanism::MechanismFile file = mechanism::load_mechanism_file(what);
+    const dynamics::MassesNeeded needed = args.zero_inertia ? dynamics::MassesNeeded::kNone
+                                          : args.zero_slider_mass
+                                              ? dynamics::MassesNeeded::kLinksOnly
+                                              : dynamics::MassesNeeded::kAll;
+    return dynamics::dynamics_design(file.design, file.dynamics, needed, rule);
+  }
+  try {
+    return dynamics::builtin_dynamics_design(what, rule);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(fmt::format(
+        "--mechanism: {}; or FILE.toml, a mechanism file with a [dynamics] table", e.what()));
+  }
+}
+
 void run_dynamics(const DynamicsArgs& args) {
   if (args.list) {
     run_list(args);
@@ -85,7 +122,6 @@ void run_dynamics(const DynamicsArgs& args) {
   if (args.omega.empty()) throw InvalidInput("--omega START:STOP:COUNT is required");
   // Without --out nothing is written: the results are printed (all of them with --json).
   if (!args.out.empty()) io::check_output_path(args.out);
-  const CfsmDesign& d = dynamics::find_cfsm_design(args.mechanism);
   const Range range = parse_range(args.omega, "--omega (rad/s)", 1'000'000);
   require_in_range(range.start, "--omega START (rad/s)", 0.0, 1e6);
   require_in_range(range.stop, "--omega STOP (rad/s)", 0.0, 1e6);
@@ -101,6 +137,11 @@ void run_dynamics(const DynamicsArgs& args) {
         fmt::format("--friction needs three values C1,C2,C3 (N m), got {}", args.friction.size()));
   }
   for (double w : args.history) require_in_range(w, "--history (rad/s)", 0.0, 1e6);
+  const ForceOf force_of = mechanism::parse_force_of(args.force_of);
+  const DynamicsDesign d = resolve_design(args);
+  // The model computes the whole mechanism (two halves, one slider); one half is exactly half of
+  // it with the slider's inertia shared equally (force_of.h).
+  const double to_reported = mechanism::force_of_factor(ForceOf::kWholeMechanism, force_of);
 
   DynamicsParameters p = dynamics::from_bar_links(d.r2, d.r3, d.m2, d.m3, d.m_slider, d.k);
   if (args.zero_slider_mass) p.m_slider = 0.0;
@@ -113,8 +154,11 @@ void run_dynamics(const DynamicsArgs& args) {
   const SliderCrankDynamics model(p);
   const InverseDynamics inverse(model, {.samples_per_period = args.samples});
   const double r_tot = model.r_tot();
-  SinusoidalMotion motion{
-      args.preload_percent / 100.0 * r_tot, args.stroke_percent / 100.0 * r_tot, 0.0};
+  // A design file's own stroke unless --stroke-percent is given (built-ins: 40 %, Table 6).
+  const double stroke = d.stroke && args.stroke_option->count() == 0
+                            ? *d.stroke
+                            : args.stroke_percent / 100.0 * r_tot;
+  SinusoidalMotion motion{args.preload_percent / 100.0 * r_tot, stroke, 0.0};
   model.theta2_at(motion.preload + motion.stroke);  // throws (exit 2) past the toggle position
 
   // Open the output first: an unwritable path fails before any work (exit 2).
@@ -128,22 +172,25 @@ void run_dynamics(const DynamicsArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<double> omegas(range.count);
   for (long i = 0; i < range.count; ++i) omegas[i] = range.at(i);
-  const std::vector<ForceStatistics> rows =
-      inverse.sweep(motion, omegas, slow_progress("dynamics"));
+  std::vector<ForceStatistics> rows = inverse.sweep(motion, omegas, slow_progress("dynamics"));
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<double> mean, median, min, max, p2p, pcf;
-  for (const ForceStatistics& s : rows) {
+  for (ForceStatistics& s : rows) {
+    require_finite_result(s.mean, fmt::format("mean force at omega = {}", s.omega));
+    require_finite_result(s.peak_to_peak, fmt::format("peak-to-peak force at omega = {}", s.omega));
+    for (double* f : {&s.mean, &s.median, &s.min, &s.max, &s.peak_to_peak}) *f *= to_reported;
     mean.push_back(s.mean);
     median.push_back(s.median);
     min.push_back(s.min);
     max.push_back(s.max);
     p2p.push_back(s.peak_to_peak);
     pcf.push_back(s.percent_constant_force);
-    require_finite_result(s.mean, fmt::format("mean force at omega = {}", s.omega));
-    require_finite_result(s.peak_to_peak, fmt::format("peak-to-peak force at omega = {}", s.omega));
   }
-  const double F_nom = dynamics::static_nominal_force(model, motion.stroke);
+  const double F_nom =
+      to_reported * dynamics::static_nominal_force(model, motion.stroke, kStaticForcePoints);
+  const double F_nom_paper = to_reported * d.F_nom_paper;
+  const std::string force_of_label = mechanism::force_of_label(force_of);
   const bool has_inertia = model.terms(0.0).M > 0.0;
   const double omega_n = has_inertia ? dynamics::linearise(model, 0.0).omega_n : 0.0;
 
@@ -160,36 +207,27 @@ void run_dynamics(const DynamicsArgs& args) {
       h.t.push_back(sample.t);
       h.delta_x.push_back(sample.delta_x);
       h.theta2.push_back(sample.theta2);
-      h.force.push_back(sample.force);
-      h.static_force.push_back(sample.static_force);
+      h.force.push_back(to_reported * sample.force);
+      h.static_force.push_back(to_reported * sample.static_force);
     }
     histories.push_back(std::move(h));
   }
 
   if (output) {
-    // Every force is of the whole symmetric mechanism (both halves), as in the JSON force_of.
+    // Every force is of what force_of says (--force-of), as in the JSON.
     io::Hdf5Group& root = output->root();
+    const auto of = [&](const char* what) { return fmt::format("{} ({})", what, force_of_label); };
     root.write_dataset("omega", omegas, "rad/s", "drive frequency omega of the sinusoidal motion");
-    root.write_dataset(
-        "mean_force", mean, "N", "mean input force over one period (whole symmetric mechanism)");
-    root.write_dataset("median_force",
-                       median,
-                       "N",
-                       "median input force over one period (whole symmetric mechanism)");
-    root.write_dataset(
-        "min_force", min, "N", "smallest input force over one period (whole symmetric mechanism)");
-    root.write_dataset(
-        "max_force", max, "N", "largest input force over one period (whole symmetric mechanism)");
-    root.write_dataset("peak_to_peak_force",
-                       p2p,
-                       "N",
-                       "max_force - min_force over one period (whole symmetric mechanism)");
+    root.write_dataset("mean_force", mean, "N", of("mean input force over one period"));
+    root.write_dataset("median_force", median, "N", of("median input force over one period"));
+    root.write_dataset("min_force", min, "N", of("smallest input force over one period"));
+    root.write_dataset("max_force", max, "N", of("largest input force over one period"));
+    root.write_dataset("peak_to_peak_force", p2p, "N", of("max_force - min_force over one period"));
     root.write_dataset("percent_constant_force",
                        pcf,
                        "%",
                        "percent constant force 100 min_force / max_force over one period");
     root.set_attribute("mechanism", d.name);
-    root.set_attribute("force_of", "whole symmetric mechanism");
     root.set_attribute("stroke_m", motion.stroke);
     root.set_attribute("preload_m", motion.preload);
     root.set_attribute("samples_per_period", static_cast<std::int64_t>(args.samples));
@@ -200,12 +238,15 @@ void run_dynamics(const DynamicsArgs& args) {
     root.set_attribute("friction_C3", p.coulomb[2]);
     root.set_attribute("axial_alpha", p.axial_alpha);
     root.set_attribute("static_nominal_force", F_nom);
-    root.set_attribute("paper_nominal_force", d.F_nom_paper);
+    if (d.F_nom_paper > 0.0) root.set_attribute("paper_nominal_force", F_nom_paper);
     root.set_attribute("natural_frequency", omega_n);
+    root.set_attribute("force_of", force_of_label);
+    root.set_attribute("spring_rule", d.spring_rule.value_or("none"));
     root.set_attribute("attribute_units",
-                       "stroke_m, preload_m: m; friction_C1, friction_C2, friction_C3: N m; "
-                       "axial_alpha: rad; static_nominal_force, paper_nominal_force: N (whole "
-                       "symmetric mechanism); natural_frequency: rad/s");
+                       fmt::format("stroke_m, preload_m: m; friction_C1, friction_C2, friction_C3: "
+                                   "N m; axial_alpha: rad; static_nominal_force, "
+                                   "paper_nominal_force: N ({}); natural_frequency: rad/s",
+                                   force_of_label));
     io::write_provenance(root, {});
     io::Hdf5Group history_group = root.create_group("history");
     history_group.set_attribute("description",
@@ -222,12 +263,9 @@ void run_dynamics(const DynamicsArgs& args) {
                       "m",
                       "slider displacement Delta x(t) = preload + stroke (1 - cos omega t)/2");
       g.write_dataset("theta2", h.theta2, "rad", "crank angle theta2 at Delta x(t)");
+      g.write_dataset("force", h.force, "N", of("input force of the dynamic model"));
       g.write_dataset(
-          "force", h.force, "N", "input force of the dynamic model (whole symmetric mechanism)");
-      g.write_dataset("static_force",
-                      h.static_force,
-                      "N",
-                      "static PRBM force at the same Delta x (whole symmetric mechanism)");
+          "static_force", h.static_force, "N", of("static PRBM force at the same Delta x"));
     }
     output->commit();
   }
@@ -242,28 +280,40 @@ void run_dynamics(const DynamicsArgs& args) {
                              {"force", h.force},
                              {"static_force", h.static_force}});
     }
-    print_json(Json{{"mechanism", d.name},
-                    {"out", args.out.empty() ? Json(nullptr) : Json(args.out)},
-                    {"force_of", "whole symmetric mechanism"},
-                    {"history", history},
-                    {"static_nominal_force", F_nom},
-                    {"paper_nominal_force", d.F_nom_paper},
-                    {"natural_frequency", omega_n},
-                    {"seconds", seconds},
-                    {"omega", omegas},
-                    {"mean_force", mean},
-                    {"median_force", median},
-                    {"peak_to_peak_force", p2p},
-                    {"percent_constant_force", pcf},
-                    {"min_force", min},
-                    {"max_force", max}});
+    print_json(
+        Json{{"mechanism", d.name},
+             {"out", args.out.empty() ? Json(nullptr) : Json(args.out)},
+             {"force_of", force_of_label},
+             {"spring_rule", d.spring_rule ? Json(*d.spring_rule) : Json(nullptr)},
+             {"spring_constants", d.k},
+             {"stroke", motion.stroke},
+             {"preload", motion.preload},
+             {"history", history},
+             {"static_nominal_force", F_nom},
+             {"static_nominal_force_points", kStaticForcePoints},
+             {"paper_nominal_force", d.F_nom_paper > 0.0 ? Json(F_nom_paper) : Json(nullptr)},
+             {"natural_frequency", omega_n},
+             {"seconds", seconds},
+             {"omega", omegas},
+             {"mean_force", mean},
+             {"median_force", median},
+             {"peak_to_peak_force", p2p},
+             {"percent_constant_force", pcf},
+             {"min_force", min},
+             {"max_force", max}});
   } else {
     fmt::print(
-        "{}: static nominal force {:.4f} N (paper {:.4f} N), natural frequency {:.4f} rad/s\n",
+        "{}: static nominal force {:.4f} N{}, natural frequency {:.4f} rad/s\n"
+        "  force of: {}; springs per half {:.6g}, {:.6g}, {:.6g} N m ({})\n",
         d.name,
         F_nom,
-        d.F_nom_paper,
-        omega_n);
+        d.F_nom_paper > 0.0 ? fmt::format(" (paper {:.4f} N)", F_nom_paper) : "",
+        omega_n,
+        force_of_label,
+        d.k[0],
+        d.k[1],
+        d.k[2],
+        d.spring_rule ? "spring rule " + *d.spring_rule : std::string("thesis springs"));
     fmt::print("{:>12} {:>12} {:>12} {:>12} {:>8}\n",
                "omega rad/s",
                "mean N",
@@ -288,13 +338,29 @@ void register_dynamics_command(CLI::App& app) {
   auto args = std::make_shared<DynamicsArgs>();
   CLI::App* cmd = app.add_subcommand(
       "dynamics", "Frequency sweep of a constant-force slider mechanism's input force (HDF5)");
-  cmd->add_option("--mechanism", args->mechanism, "Design of the paper's Table 5, e.g. 2B-lplm");
+  cmd->add_option("--mechanism",
+                  args->mechanism,
+                  "Design of the paper's Table 5 (e.g. 2B-lplm), or FILE.toml: a mechanism file "
+                  "with a [dynamics] table (masses)");
   cmd->add_option("--omega", args->omega, "Drive frequencies START:STOP:COUNT, rad/s");
   cmd->add_option(
       "--out", args->out, "Output HDF5 file (written atomically); without it nothing is written");
-  cmd->add_option(
-         "--stroke-percent", args->stroke_percent, "Peak-to-peak slider travel, % of r2 + r3")
-      ->default_str("40");
+  args->stroke_option =
+      cmd->add_option("--stroke-percent",
+                      args->stroke_percent,
+                      "Peak-to-peak slider travel, % of r2 + r3 (default: 40, or a FILE.toml's "
+                      "stroke)")
+          ->default_str("40");
+  cmd->add_option("--spring-rule",
+                  args->spring_rule,
+                  "Springs from the strips' b, h, L, E by the rule of mechanism analyze: "
+                  "pure-bending (k = EI/L), table2, table5 (default: the paper's printed Table 5 "
+                  "constants, table5-printed; a FILE.toml's own rule)");
+  cmd->add_option("--force-of",
+                  args->force_of,
+                  "Forces of the whole symmetric mechanism (two halves, one slider) or of one "
+                  "half (= whole/2), as mechanism analyze reports")
+      ->default_str("whole");
   cmd->add_option("--preload-percent",
                   args->preload_percent,
                   "Slider pre-displacement at full expansion, % of r2 + r3 (> 0)")

@@ -136,6 +136,8 @@ Json analysis_json(const MechanismAnalysis& a) {
   Json j;
   j["design"] = design_json(a.design);
   j["units"] = "SI: m, N, Pa";
+  // What force_prbm, force_exact and the mean forces are the force of (force_of.h).
+  j["force_of"] = force_of_label(a.force_of);
   j["spring_rule"] =
       has_fixed_fixed(a.design) ? Json(spring_rule_name(a.design.spring_rule)) : Json(nullptr);
   j["displacement"] = a.prbm.displacement;
@@ -183,14 +185,15 @@ void warn_if_force_vanishes(const MechanismAnalysis& a, bool exact) {
     const ConstantForceMeasure m = constant_force_measure(force);
     if (!m.vanishes) return;
     std::cerr << fmt::format(
-        "flexure: warning: {}: the {} force {} within the stroke (min {:.4g} N, max {:.4g} N): "
-        "not a constant-force mechanism over this stroke; its percent constant force is "
+        "flexure: warning: {}: the {} force {} within the stroke (min {:.4g} N, max {:.4g} N, "
+        "{}): not a constant-force mechanism over this stroke; its percent constant force is "
         "reported as 0\n",
         a.design.name,
         model,
         m.changes_sign ? "changes sign" : "vanishes",
         m.min_force,
-        m.max_force);
+        m.max_force,
+        force_of_label(a.force_of));
   };
   warn("PRBM", a.prbm.force);
   if (exact) warn("exact", a.force_exact);
@@ -264,6 +267,7 @@ void write_hdf5(const std::string& path, const MechanismAnalysis& a, io::AtomicH
     root.set_attribute("spring_rule", spring_rule_name(a.design.spring_rule));
     if (!a.design.paper_config.empty()) root.set_attribute("paper_config", a.design.paper_config);
   }
+  root.set_attribute("force_of", force_of_label(a.force_of));
   root.set_attribute("percent_constant_force_prbm", a.prbm.percent_constant_force);
   root.set_attribute("force_vanishes_prbm", std::int64_t{a.prbm.force_vanishes ? 1 : 0});
   root.set_attribute("force_changes_sign_prbm", std::int64_t{a.prbm.force_changes_sign ? 1 : 0});
@@ -277,13 +281,15 @@ void write_hdf5(const std::string& path, const MechanismAnalysis& a, io::AtomicH
   root.write_dataset("force_prbm",
                      std::span<const double>(a.prbm.force),
                      "N",
-                     "PRBM slider input force of the half mechanism (positive pushes the slider "
-                     "inward)");
+                     fmt::format("PRBM slider input force of {} (positive pushes the slider "
+                                 "inward)",
+                                 force_of_label(a.force_of)));
   if (exact) {
-    root.write_dataset("force_exact",
-                       std::span<const double>(a.force_exact),
-                       "N",
-                       "exact-model (elastica) slider input force of the half mechanism");
+    root.write_dataset(
+        "force_exact",
+        std::span<const double>(a.force_exact),
+        "N",
+        fmt::format("exact-model (elastica) slider input force of {}", force_of_label(a.force_of)));
     root.set_attribute("percent_constant_force_exact", a.percent_constant_force_exact);
     root.set_attribute("force_vanishes_exact", std::int64_t{a.force_vanishes_exact ? 1 : 0});
     root.set_attribute("force_changes_sign_exact",
@@ -509,6 +515,7 @@ void register_mechanism_command(CLI::App& app) {
     double tol = 1e-6;
     CLI::Option* tol_option = nullptr;
     std::string spring_rule;
+    std::string force_of = "half";
   };
   auto args = std::make_shared<AnalyzeArgs>();
   CLI::App* analyze = mech.add_subcommand(
@@ -537,6 +544,12 @@ void register_mechanism_command(CLI::App& app) {
                       args->spring_rule,
                       "Spring constant of fixed-fixed segments (modified designs): pure-bending "
                       "(k = EI/L, default), table2, table5 (paper 004 Tables 2/5)");
+  analyze
+      ->add_option("--force-of",
+                   args->force_of,
+                   "Forces of one half of the symmetric mechanism (the model's half) or of the "
+                   "whole mechanism (two halves on one slider, = 2 x half), as dynamics reports")
+      ->default_str("half");
   analyze->callback([args] {
     require_in_range(args->points, "--points", 2, 100000);
     if (args->no_exact && args->method == "exact") {
@@ -545,6 +558,7 @@ void register_mechanism_command(CLI::App& app) {
     if (!args->out.empty()) io::check_output_path(args->out);
     MechanismDesign d = resolve(args->what);
     if (!args->spring_rule.empty()) apply_spring_rule(d, parse_spring_rule(args->spring_rule));
+    const ForceOf force_of = parse_force_of(args->force_of);
     std::optional<io::AtomicHdf5File> file;
     if (!args->out.empty()) {
       try {
@@ -560,7 +574,8 @@ void register_mechanism_command(CLI::App& app) {
     o.points = args->points;
     o.exact = choice.exact;
     o.progress = slow_progress(d.name + ": exact model, stroke points and stresses");
-    const MechanismAnalysis a = analyze_mechanism(d, o);
+    MechanismAnalysis a = analyze_mechanism(d, o);
+    report_forces_of(a, force_of);
     if (a.has_exact && o.exact && !a.exact.converged()) {
       throw NoConvergence(fmt::format("{}: {}", d.name, a.exact.message));
     }
@@ -602,7 +617,9 @@ void register_mechanism_command(CLI::App& app) {
                              : a.exact_note.empty() ? std::string(" (exact model not run)")
                                                     : std::string(" (") + a.exact_note + ")");
     std::cout << fmt::format(
-        "  mean force: PRBM {:.5g} N{}\n",
+        "  mean force ({}{}): PRBM {:.5g} N{}\n",
+        force_of_label(a.force_of),
+        has_fixed_fixed(d) ? ", spring rule " + spring_rule_name(d.spring_rule) : "",
         a.prbm.mean_force,
         a.has_exact && o.exact ? fmt::format(", exact {:.5g} N", a.mean_force_exact) : "");
     if (a.has_exact && o.exact) {

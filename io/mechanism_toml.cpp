@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <array>
+#include <cmath>
 #include <optional>
 #include <set>
 
@@ -59,9 +61,58 @@ double positive(const toml::table& t,
 
 const char* kJointTables[3] = {"ground", "middle", "slider"};
 
+// A finite number >= 0 (masses and spring constants may be zero).
+double nonnegative(const toml::node& node, const std::string& name, const std::string& source) {
+  const std::optional<double> v = io::toml_number(node);
+  if (!v) toml_fail(source, line_of(node), fmt::format("{} must be a number", name));
+  if (!std::isfinite(*v) || *v < 0.0) {
+    toml_fail(source, line_of(node), fmt::format("{} must be finite and >= 0 (got {})", name, *v));
+  }
+  return *v;
+}
+
+// [dynamics]: m2, m3, m_slider (kg) and spring_constants = [k1, k2, k3] (N m per half), all
+// optional here; flexure dynamics says which it needs (dynamics_design.h).
+dynamics::DynamicsData parse_dynamics_table(const toml::table& root, const std::string& source) {
+  dynamics::DynamicsData data;
+  data.source = source;
+  const toml::node* node = root.get("dynamics");
+  if (node == nullptr) return data;
+  if (!node->is_table()) {
+    toml_fail(source, line_of(*node), "dynamics must be a table ([dynamics])");
+  }
+  const toml::table& t = *node->as_table();
+  data.line = line_of(t);
+  check_toml_keys(t, {"m2", "m3", "m_slider", "spring_constants"}, "[dynamics]", source);
+  if (const toml::node* n = t.get("m2")) data.m2 = nonnegative(*n, "dynamics.m2", source);
+  if (const toml::node* n = t.get("m3")) data.m3 = nonnegative(*n, "dynamics.m3", source);
+  if (const toml::node* n = t.get("m_slider")) {
+    data.m_slider = nonnegative(*n, "dynamics.m_slider", source);
+  }
+  if (const toml::node* n = t.get("spring_constants")) {
+    const toml::array* a = n->as_array();
+    if (a == nullptr || a->size() != 3) {
+      toml_fail(source,
+                line_of(*n),
+                "dynamics.spring_constants must be an array of three numbers [k1, k2, k3] (N m "
+                "per half, 0 at a pin)");
+    }
+    std::array<double, 3> k{};
+    for (std::size_t i = 0; i < 3; ++i) {
+      k[i] = nonnegative((*a)[i], fmt::format("dynamics.spring_constants[{}]", i), source);
+    }
+    data.spring_constants = k;
+  }
+  return data;
+}
+
 }  // namespace
 
 MechanismDesign parse_mechanism_toml(const std::string& text, const std::string& source) {
+  return parse_mechanism_file(text, source).design;
+}
+
+MechanismFile parse_mechanism_file(const std::string& text, const std::string& source) {
   io::check_toml_limits(text, source);
   toml::table root;
   try {
@@ -81,7 +132,8 @@ MechanismDesign parse_mechanism_toml(const std::string& text, const std::string&
                    "material",
                    "ground",
                    "middle",
-                   "slider"},
+                   "slider",
+                   "dynamics"},
                   "the file",
                   source);
   MechanismDesign d;
@@ -268,11 +320,15 @@ MechanismDesign parse_mechanism_toml(const std::string& text, const std::string&
   } catch (const InvalidInput& e) {
     throw InvalidInput(fmt::format("{}: {}", source, e.what()));
   }
-  return d;
+  return {d, parse_dynamics_table(root, source)};
 }
 
 MechanismDesign load_mechanism_toml(const std::string& path) {
-  return parse_mechanism_toml(io::read_toml_file(path, "mechanism file"), path);
+  return load_mechanism_file(path).design;
+}
+
+MechanismFile load_mechanism_file(const std::string& path) {
+  return parse_mechanism_file(io::read_toml_file(path, "mechanism file"), path);
 }
 
 }  // namespace flexure::mechanism

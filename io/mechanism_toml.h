@@ -1,13 +1,24 @@
 #pragma once
 // Reads a MechanismDesign from TOML (format: docs/mechanisms.md "TOML description"; examples in
 // docs/examples/mechanism_*.toml). Errors throw InvalidInput "SOURCE:LINE: message" naming the key.
+// The optional [dynamics] table (masses, spring constants) is what `flexure dynamics` needs beyond
+// the design (mechanisms/dynamics/dynamics_design.h); it is checked here and ignored by analyze.
 #include <string>
 
+#include "flexure/mechanisms/dynamics/dynamics_design.h"
 #include "flexure/mechanisms/mechanism.h"
 
 namespace flexure::mechanism {
 
 MechanismDesign parse_mechanism_toml(const std::string& text, const std::string& source);
 MechanismDesign load_mechanism_toml(const std::string& path);
+
+// The design and its [dynamics] table (all fields empty and line 0 when there is none).
+struct MechanismFile {
+  MechanismDesign design;
+  dynamics::DynamicsData dynamics;
+};
+MechanismFile parse_mechanism_file(const std::string& text, const std::string& source);
+MechanismFile load_mechanism_file(const std::string& path);
 
 }  // namespace flexure::mechanism

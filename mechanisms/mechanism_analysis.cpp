@@ -146,4 +146,13 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
   return a;
 }
 
+void report_forces_of(MechanismAnalysis& a, ForceOf of) {
+  const double factor = force_of_factor(a.force_of, of);
+  for (double& f : a.prbm.force) f *= factor;
+  for (double& f : a.force_exact) f *= factor;
+  a.prbm.mean_force *= factor;
+  a.mean_force_exact *= factor;
+  a.force_of = of;
+}
+
 }  // namespace flexure::mechanism

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "flexure/mechanisms/force_of.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
@@ -66,8 +67,17 @@ struct MechanismAnalysis {
   double max_stress_all = 0.0;
   double safety_factor = 0.0;        // yield_strength/max_stress_all
   std::vector<int> yielding_pivots;  // pivots whose max stress reaches the yield strength
+  // What the slider forces prbm.force, prbm.mean_force, force_exact and mean_force_exact are the
+  // force of: one half as analyze_mechanism computes them; report_forces_of() rescales them. The
+  // solver's own points (exact), pin forces and stresses always belong to one half.
+  ForceOf force_of = ForceOf::kOneHalf;
 };
 
 MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const AnalysisOptions& options);
+
+// Rescales the slider forces of `analysis` (see MechanismAnalysis::force_of) to the force of `of`:
+// F_whole = 2 F_half (force_of.h). Ratios (percent constant force, force errors), displacements
+// and stresses do not change.
+void report_forces_of(MechanismAnalysis& analysis, ForceOf of);
 
 }  // namespace flexure::mechanism

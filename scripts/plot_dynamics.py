@@ -38,6 +38,10 @@ def read_sweep(path):
         data["mechanism"] = f.attrs["mechanism"]
         if isinstance(data["mechanism"], bytes):
             data["mechanism"] = data["mechanism"].decode()
+        # `flexure dynamics --force-of half` writes "one half"; files before force_of: the whole.
+        data["force_of"] = f.attrs.get("force_of", "whole symmetric mechanism")
+        if isinstance(data["force_of"], bytes):
+            data["force_of"] = data["force_of"].decode()
         data["history"] = []
         if "history" in f:
             for name in sorted(f["history"], key=int):
@@ -72,7 +76,7 @@ def main(argv):
         ax.set_ylabel(f"{ylabel} ({force_unit})")
         ax.grid(True, alpha=0.3)
     axes[0][0].legend()
-    axes[0][1].set_title(f"{sweeps[0]['mechanism']}: whole symmetric mechanism")
+    axes[0][1].set_title(f"{sweeps[0]['mechanism']} (force of: {sweeps[0]['force_of']})")
     if has_history:
         for ax, (omega, t, force, static_force) in zip(axes[1], sweeps[0]["history"][:3]):
             period = t[-1] + t[1] if len(t) > 1 and t[1] > 0 else 1.0

@@ -75,7 +75,8 @@ CfmExactResult solve_cfm_exact(const CfmResult& prbm, const CfmExactOptions& opt
   r.Phi_prbm_mean = psum / static_cast<double>(p.force.size());
   r.percent_constant_force_prbm = mechanism::constant_force_measure(r.Phi_prbm).percent;
 
-  const mechanism::ExactStrokeResult e = mechanism::exact_stroke(d, p.displacement, options.solver);
+  const mechanism::ExactStrokeResult e =
+      mechanism::exact_stroke(d, p.displacement, options.solver, options.progress);
   r.set_converged(e.converged());
   r.message = e.message;
   r.iterations = e.iterations;

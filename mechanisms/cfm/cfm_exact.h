@@ -29,6 +29,9 @@ mechanism::MechanismDesign cfm_equivalent_design(
 struct CfmExactOptions {
   int points = 50;  // equally spaced stroke points Delta x = k d (r2 + r3)/points, k = 1..points
   mechanism::ExactMechanismSolver::Options solver;  // the exact model's solver settings
+  // Called after every exact stroke point, (done, points); empty: no calls (a progress display:
+  // `cfm --table --exact` runs 68 strokes).
+  mechanism::StrokeProgress progress;
 
   // Throws InvalidInput naming the first field outside its range.
   void validate() const;

@@ -3,7 +3,8 @@
 // Table 7.2 (Phi 0.4773, Xi' 97.6, beta 3.248, lambda 1.094) within printed rounding plus the
 // 4-decimal rounding of R; a stroke past the toggle is clamped to 37.04 % (docs/cfm.md) with a
 // warning on stderr; --subclass carries the printed values; --list names all 68 sub-classes;
-// --table finds every reproducible row within tolerance (exit 0); bad input exits 2.
+// --table finds every reproducible row within tolerance (exit 0); bad input exits 2; a long
+// --table --exact shows progress on a terminal only, counted to rows x points.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -111,6 +112,33 @@ TEST(CfmCli, TableReproducesEveryReproducibleRow) {
   const CommandResult r = run_flexure("cfm --table --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(parse(r)["all_within"].get<bool>());
+}
+
+TEST(CfmCli, LongExactTableShowsProgressOnATerminalOnly) {
+  // All 68 rows at 100 exact points take a few seconds (2.5 s here): on a terminal (a
+  // pseudo-terminal from util-linux `script`) a progress line appears after the first second and
+  // ends at rows x points; redirected, stderr stays empty and stdout is the same table.
+  if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "no `script`";
+  const std::size_t rows = parse(run_flexure("cfm --list --json"))["subclasses"].size();
+  ASSERT_EQ(rows, 68u);
+  const std::string args = "cfm --table --exact --exact-rows all --exact-points 100";
+  ScratchDir dir;
+  const std::string command = "cd '" + dir.path().string() + "' && script -qec \"'" +
+                              FLEXURE_BINARY + "' " + args + "\" /dev/null > tty.txt 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  const std::string tty = read_text(dir / "tty.txt");
+  const std::string label = "cfm --table --exact: stroke points: ";
+  const std::size_t first = tty.find(label);
+  ASSERT_NE(first, std::string::npos) << tty.substr(0, 2000);
+  // Shown by elapsed time: the first line comes after the quiet second.
+  const std::size_t open = tty.find('(', first);
+  EXPECT_GE(std::stod(tty.substr(open + 1)), 1.0) << tty.substr(first, 80);
+  EXPECT_NE(tty.find(label + std::to_string(rows * 100) + "/" + std::to_string(rows * 100) + " ("),
+            std::string::npos);
+  const CommandResult redirected = run_flexure(args);
+  ASSERT_EQ(redirected.exit_code, 0) << redirected.err;
+  EXPECT_TRUE(redirected.err.empty()) << redirected.err;
+  EXPECT_NE(redirected.out.find("sss-b88IO"), std::string::npos);
 }
 
 TEST(CfmCli, BadInputExitsTwoNamingTheInput) {

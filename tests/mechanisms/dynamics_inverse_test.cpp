@@ -9,7 +9,10 @@
 //    equals the Coulomb dissipation sum 2 halves C_i (range of psi_i) with friction;
 //  - the paper's qualitative claims for 2B-lplm: a band of frequencies where the peak-to-peak
 //    force is below its static value, no dip with all inertias zero, a wider band without slider
-//    mass; the frequency of lowest peak-to-peak force against Table 10 (one fitted preload).
+//    mass; the frequency of lowest peak-to-peak force against Table 10 (one fitted preload);
+//  - one half (halves = 1 with half the slider mass) against the whole mechanism: exactly half the
+//    force at every sample, with inertia, friction and the axial term (force_of.h, the factor
+//    `flexure dynamics --force-of half` applies).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -239,6 +242,30 @@ TEST(DynamicsInverse, SweepReportsProgressAfterEachRowAndMatchesSingleRows) {
   SinusoidalMotion m = motion_of(d, 0.0);
   m.omega = 20.0;
   EXPECT_EQ(rows[2].peak_to_peak, inverse.statistics(m).peak_to_peak);
+}
+
+TEST(DynamicsInverse, OneHalfWithHalfTheSliderCarriesHalfTheForce) {
+  // The per-half model built separately (docs/dynamics.md §1: halves = 1, m_S halved) against the
+  // whole mechanism's force / 2, at a frequency where inertia dominates the force (62.832 rad/s:
+  // peak-to-peak 162 N against 16 N statically), with friction and the axial term on. The two
+  // evaluate the same sums with one factor 2 moved, so they agree to rounding.
+  constexpr double kRounding = 1e-13;
+  for (const CfsmDesign& d : cfsm_designs()) {
+    DynamicsParameters whole = from_bar_links(d.r2, d.r3, d.m2, d.m3, d.m_slider, d.k);
+    whole.coulomb = {0.01, 0.02, 0.03};
+    whole.axial_alpha = 0.05;
+    DynamicsParameters half = whole;
+    half.halves = 1.0;
+    half.m_slider = 0.5 * d.m_slider;
+    const InverseDynamics w(SliderCrankDynamics(whole), {.samples_per_period = 64});
+    const InverseDynamics h(SliderCrankDynamics(half), {.samples_per_period = 64});
+    const std::vector<ForceSample> fw = w.history(motion_of(d, 62.832));
+    const std::vector<ForceSample> fh = h.history(motion_of(d, 62.832));
+    ASSERT_EQ(fw.size(), fh.size());
+    for (std::size_t i = 0; i < fw.size(); ++i) {
+      EXPECT_NEAR(fh[i].force, 0.5 * fw[i].force, kRounding * std::abs(fw[i].force)) << d.name;
+    }
+  }
 }
 
 TEST(DynamicsInverse, RejectsBadMotion) {

@@ -1,0 +1,125 @@
+#include "flexure/mechanisms/dynamics/dynamics_design.h"
+
+#include <fmt/format.h>
+
+#include "flexure/mechanisms/dynamics/cfsm_designs.h"
+#include "flexure/mechanisms/modified_designs.h"
+#include "flexure/solver/common/errors.h"
+
+namespace flexure::dynamics {
+namespace {
+
+using mechanism::MechanismDesign;
+using mechanism::PivotType;
+using mechanism::SpringRule;
+
+std::array<double, 3> spring_constants(const MechanismDesign& d) {
+  return {d.spring_constant(1), d.spring_constant(2), d.spring_constant(3)};
+}
+
+std::optional<std::string> rule_name(const MechanismDesign& d) {
+  if (!mechanism::has_fixed_fixed(d)) return std::nullopt;
+  return mechanism::spring_rule_name(d.spring_rule);
+}
+
+}  // namespace
+
+DynamicsDesign builtin_dynamics_design(const std::string& name, std::optional<SpringRule> rule) {
+  const CfsmDesign& t = find_cfsm_design(name);
+  DynamicsDesign d;
+  d.name = t.name;
+  d.r2 = t.r2;
+  d.r3 = t.r3;
+  d.m2 = t.m2;
+  d.m3 = t.m3;
+  d.m_slider = t.m_slider;
+  d.F_nom_paper = t.F_nom_paper;
+  if (rule) {
+    // The same strips as `mechanism analyze NAME` (its Table 5 column), springs by `rule`.
+    const MechanismDesign m =
+        mechanism::modified_design(mechanism::find_modified_configuration(t.name), *rule);
+    d.k = spring_constants(m);
+    d.spring_rule = mechanism::spring_rule_name(*rule);
+  } else {
+    d.k = t.k;
+    d.spring_rule = kTable5PrintedSprings;
+  }
+  return d;
+}
+
+DynamicsDesign dynamics_design(MechanismDesign design,
+                               const DynamicsData& data,
+                               MassesNeeded needed,
+                               std::optional<SpringRule> rule) {
+  const std::string where =
+      data.line > 0 ? fmt::format("{}:{}", data.source, data.line) : data.source;
+  if (design.inverted) {
+    throw InvalidInput(fmt::format(
+        "{}: an inversion (fixed slider block) has no dynamics model: the slider-crank of "
+        "docs/dynamics.md moves the slider",
+        design.name));
+  }
+  DynamicsDesign d;
+  d.name = design.name;
+  d.r2 = design.r2;
+  d.r3 = design.r3;
+  d.stroke = design.stroke;
+  // A missing mass is an error only where the run needs it (--zero-inertia needs none).
+  auto mass = [&](const std::optional<double>& m, const char* key, const char* what, bool used) {
+    if (m || !used) return m.value_or(0.0);
+    const std::string alternative =
+        std::string(key) == "m_slider" ? "--zero-slider-mass or --zero-inertia" : "--zero-inertia";
+    if (data.line > 0) {
+      throw InvalidInput(fmt::format(
+          "{}: [dynamics] lacks {} ({}, kg), which flexure dynamics needs; add it or run with {}",
+          where,
+          key,
+          what,
+          alternative));
+    }
+    throw InvalidInput(fmt::format(
+        "{}: flexure dynamics needs [dynamics] {} ({}, kg), and the file has no [dynamics] "
+        "table; add one with m2, m3 and m_slider (docs/mechanisms.md \"TOML\") or run with {}",
+        where,
+        key,
+        what,
+        alternative));
+  };
+  d.m2 = mass(data.m2, "m2", "mass of link 2 of one half", needed != MassesNeeded::kNone);
+  d.m3 = mass(data.m3, "m3", "mass of link 3 of one half", needed != MassesNeeded::kNone);
+  d.m_slider = mass(data.m_slider,
+                    "m_slider",
+                    "mass of the slider both halves share",
+                    needed == MassesNeeded::kAll);
+  if (data.spring_constants) {
+    if (rule) {
+      throw InvalidInput(fmt::format(
+          "{}: --spring-rule contradicts [dynamics] spring_constants, which replace the rule in "
+          "flexure dynamics; remove one",
+          where));
+    }
+    const std::array<double, 3>& k = *data.spring_constants;
+    for (int p = 1; p <= 3; ++p) {
+      const bool pin = design.joints[p - 1].type == PivotType::kPin;
+      if (pin != (k[p - 1] == 0.0)) {
+        throw InvalidInput(
+            fmt::format("{}: [dynamics] spring_constants[{}] = {} for pivot {}, {}: it must be {}",
+                        where,
+                        p - 1,
+                        k[p - 1],
+                        p,
+                        pin ? "a pin" : "a flexure",
+                        pin ? "0" : "> 0"));
+      }
+    }
+    d.k = k;
+    d.spring_rule = kGivenSprings;
+    return d;
+  }
+  if (rule) mechanism::apply_spring_rule(design, *rule);
+  d.k = spring_constants(design);
+  d.spring_rule = rule_name(design);
+  return d;
+}
+
+}  // namespace flexure::dynamics
