@@ -131,6 +131,8 @@ std::string find_non_finite(const Json& node, const std::string& where) {
   return {};
 }
 
+}  // namespace
+
 // Strict decimal parse of a whole token (no trailing characters); accepts "nan"/"inf" so that the
 // caller can reject them with a message naming the quantity.
 bool parse_double(const std::string& token, double& value) {
@@ -139,8 +141,6 @@ bool parse_double(const std::string& token, double& value) {
   value = std::strtod(token.c_str(), &end);
   return end == token.c_str() + token.size();
 }
-
-}  // namespace
 
 CLI::App& get_or_add_subcommand(CLI::App& parent,
                                 const std::string& name,

@@ -1,4 +1,5 @@
-// `flexure sweep beam`: the end-loaded cantilever over a range of alpha2, written to HDF5.
+// `flexure sweep beam`: the end-loaded cantilever over a range of one or two of alpha2, n, mu,
+// theta0, b/l (a grid), written to HDF5 (docs/cli.md, docs/hdf5-schema.md).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/slow_progress.h"
+#include "flexure/benchmarks/studies/beam_sweep_grid.h"
 #include "flexure/io/beam_sweep.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/output_path.h"
@@ -18,23 +20,116 @@ namespace flexure::cli {
 namespace {
 
 struct SweepBeamArgs {
-  double load_ratio_n = 0.0;
-  double mu = 0.0;
-  std::string alpha2_range;
+  // Each a number (fixed) or START:STOP:COUNT (an axis).
+  std::string load_ratio_n = "0";
+  std::string mu = "0";
+  std::string alpha2;
+  std::string theta0;
+  std::string b_over_l;
   std::string method = "auto";
   std::string out;
   int threads = 2;
   bool json = false;
 };
 
-// 10^7 points keep the five columns under 400 MB in memory.
+// 10^7 points keep the columns under 400 MB in memory.
 constexpr long kMaxSweepCount = 10'000'000;
+
+// One of the parameters: a fixed value, or an axis when the text has a ':'.
+void add_parameter(BeamSweepGrid& grid, SweepParameter p, const std::string& text) {
+  const std::string what = flag_name(p);
+  if (text.find(':') != std::string::npos) {
+    const Range r = parse_range(text, what, kMaxSweepCount);
+    grid.axes.push_back({p, r.start, r.stop, r.count});
+    return;
+  }
+  double value = 0.0;
+  if (!parse_double(text, value) || !std::isfinite(value)) {
+    throw InvalidInput(fmt::format(
+        "{} = '{}' is neither a finite number nor a range START:STOP:COUNT", what, text));
+  }
+  if (p == SweepParameter::kLoadRatioN) {
+    grid.base.load_ratio_n = value;
+  } else if (p == SweepParameter::kMu) {
+    grid.base.mu = value;
+  } else {
+    grid.base.value = value;
+  }
+}
+
+// The grid of the flags: the given quantity first, then n, then mu (the datasets' axis order).
+BeamSweepGrid make_grid(const SweepBeamArgs& args) {
+  BeamSweepGrid grid;
+  const std::pair<SweepParameter, const std::string*> given[] = {
+      {SweepParameter::kAlpha2, &args.alpha2},
+      {SweepParameter::kTheta0, &args.theta0},
+      {SweepParameter::kBOverL, &args.b_over_l}};
+  int given_count = 0;
+  for (const auto& [p, text] : given) {
+    if (text->empty()) continue;
+    ++given_count;
+    grid.base.given = p == SweepParameter::kAlpha2   ? BeamProblem::Given::kAlpha2
+                      : p == SweepParameter::kTheta0 ? BeamProblem::Given::kTheta0
+                                                     : BeamProblem::Given::kBOverL;
+    add_parameter(grid, p, *text);
+  }
+  if (given_count != 1) {
+    throw InvalidInput(
+        "give exactly one of --alpha2 (loads), --theta0 or --b-over-l (inverse: the load is "
+        "found), each a value or START:STOP:COUNT");
+  }
+  add_parameter(grid, SweepParameter::kLoadRatioN, args.load_ratio_n);
+  add_parameter(grid, SweepParameter::kMu, args.mu);
+  grid.validate(kMaxSweepCount);
+  return grid;
+}
+
+std::string describe_point(const BeamSweepGrid& grid, long index) {
+  std::string text;
+  const std::vector<double> c = grid.coordinates(index);
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    text += fmt::format("{}{} = {}", k ? ", " : "", dataset_name(grid.axes[k].parameter), c[k]);
+  }
+  return text;
+}
+
+std::vector<io::BeamSweepAxis> stored_axes(const BeamSweepGrid& grid) {
+  std::vector<io::BeamSweepAxis> axes;
+  for (const SweepAxis& axis : grid.axes) {
+    const char* what = axis.parameter == SweepParameter::kAlpha2       ? "load alpha2 = P l^2/EI"
+                       : axis.parameter == SweepParameter::kLoadRatioN ? "load ratio n (n > 0 "
+                                                                         "compressive)"
+                       : axis.parameter == SweepParameter::kMu         ? "end moment mu = M l/EI"
+                       : axis.parameter == SweepParameter::kTheta0
+                           ? "given tip angle theta0 (the load alpha2 is found)"
+                           : "given tip deflection b/l (the load alpha2 is found)";
+    axes.push_back({dataset_name(axis.parameter),
+                    axis.values(),
+                    units_of(axis.parameter),
+                    fmt::format("{}: axis {} of the datasets, {} equally spaced values",
+                                what,
+                                axes.size() + 1,
+                                axis.count)});
+  }
+  return axes;
+}
+
+const char* given_name(const BeamProblem& problem) {
+  switch (problem.given) {
+    case BeamProblem::Given::kTheta0:
+      return "theta0";
+    case BeamProblem::Given::kBOverL:
+      return "b_over_l";
+    default:
+      return "alpha2";
+  }
+}
+
 void run_sweep_beam(const SweepBeamArgs& args) {
   const auto started = std::chrono::steady_clock::now();
-  require_finite_input(args.load_ratio_n, "--n (load ratio n)");
-  require_finite_input(args.mu, "--mu (end moment M l/EI)");
   require_in_range(args.threads, "--threads", 1, 64);
-  const Range range = parse_range(args.alpha2_range, "--alpha2", kMaxSweepCount);
+  const BeamSweepGrid grid = make_grid(args);
+  const long count = grid.size();
   // Fails (exit 2) for a method not in this build, before any file is touched.
   const BeamMethod method = resolve_beam_method(beam_method_from_string(args.method));
   const double tolerance = beam_method_tolerance(method);
@@ -48,29 +143,22 @@ void run_sweep_beam(const SweepBeamArgs& args) {
     throw InvalidInput(fmt::format("--out: {}", e.what()));
   }
 
-  std::vector<double> alpha2(range.count);
-  for (long i = 0; i < range.count; ++i) alpha2[i] = range.at(i);
-
-  BeamProblem problem;
-  problem.given = BeamProblem::Given::kAlpha2;
-  problem.load_ratio_n = args.load_ratio_n;
-  problem.mu = args.mu;
-  const io::BeamPointSolver solve_point = [&](double load) {
-    BeamProblem at = problem;
-    at.value = load;
-    BeamSolution solution = solve_beam(method, at);
+  const io::BeamIndexSolver solve_point = [&](long index) {
+    BeamSolution solution = solve_beam(method, grid.at(index));
     io::BeamSweepPoint point;
     point.set_converged(solution.converged());
     point.tip = solution.tip;
+    point.alpha2 = solution.alpha2;
     if (solution.method == BeamMethod::kPrbm) point.within_validity = solution.prbm_inside_validity;
     if (!solution.converged()) point.message = std::move(solution.message);
     return point;
   };
   io::BeamSweepOptions options;
   options.threads = args.threads;
+  options.describe = [&](long index) { return describe_point(grid, index); };
   // Chunks of about 1/64 of each thread's share, so that progress moves steadily on slow methods;
-  // at most 2048 loads, which amortises the hand-out on fast ones.
-  options.chunk = std::clamp(range.count / (64L * args.threads), 1L, 2048L);
+  // at most 2048 points, which amortises the hand-out on fast ones.
+  options.chunk = std::clamp(count / (64L * args.threads), 1L, 2048L);
   // By elapsed time, not by count: silent for the first second, then "sweep beam: k/n (t s)" on a
   // terminal (a shooting sweep of 2000 loads takes about 40 s).
   if (auto progress = slow_progress("sweep beam")) {
@@ -78,42 +166,49 @@ void run_sweep_beam(const SweepBeamArgs& args) {
       progress(static_cast<std::size_t>(done), static_cast<std::size_t>(total));
     };
   }
-  const io::BeamSweepTable table = io::run_beam_sweep(alpha2, solve_point, options);
+  const io::BeamSweepTable table = io::run_beam_sweep(count, solve_point, options);
 
-  io::write_beam_sweep(
-      file->root(),
-      table,
-      io::BeamSweepMetadata{to_string(method), args.load_ratio_n, args.mu, tolerance});
+  io::BeamSweepMetadata metadata{
+      to_string(method), grid.base.load_ratio_n, grid.base.mu, tolerance};
+  metadata.axes = stored_axes(grid);
+  metadata.given = given_name(grid.base);
+  metadata.given_value = grid.base.value;
+  io::write_beam_sweep(file->root(), table, metadata);
   file->commit();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
+  std::string ranges;
+  for (const SweepAxis& axis : grid.axes) {
+    ranges += fmt::format("{}{} {} .. {} ({})",
+                          ranges.empty() ? "" : " x ",
+                          dataset_name(axis.parameter),
+                          axis.start,
+                          axis.stop,
+                          axis.count);
+  }
   if (args.json) {
     Json summary;
     summary["out"] = args.out;
-    summary["count"] = range.count;
+    summary["count"] = count;
     summary["converged_count"] = table.converged_count;
+    summary["axes"] = grid.axis_names();
+    summary["shape"] = grid.shape();
     summary["seconds"] = seconds;
     print_json(summary);
   } else {
-    fmt::print("Wrote {} loads (alpha2 {} .. {}, method {}, n = {:g}, mu = {:g}) to {}\n",
-               range.count,
-               range.start,
-               range.stop,
-               to_string(method),
-               args.load_ratio_n,
-               args.mu,
-               args.out);
-    fmt::print("  converged: {} of {}; {:.3f} s\n", table.converged_count, range.count, seconds);
+    fmt::print(
+        "Wrote {} points ({}; method {}) to {}\n", count, ranges, to_string(method), args.out);
+    fmt::print("  converged: {} of {}; {:.3f} s\n", table.converged_count, count, seconds);
   }
   if (table.first_failure >= 0) {
     throw NoConvergence(fmt::format(
-        "{} of {} loads have no converged solution (stored with status 1 and NaN in '{}'); the "
-        "first is alpha2 = {}: {}. {}",
-        range.count - table.converged_count,
-        range.count,
+        "{} of {} points have no converged solution (stored with status 1 and NaN in '{}'); the "
+        "first is {}: {}. {}",
+        count - table.converged_count,
+        count,
         args.out,
-        table.alpha2[table.first_failure],
+        describe_point(grid, table.first_failure),
         table.first_failure_message,
         other_methods_hint(method)));
   }
@@ -128,12 +223,25 @@ void register_sweep_command(CLI::App& app) {
 
   auto args = std::make_shared<SweepBeamArgs>();
   CLI::App* beam = sweep.add_subcommand(
-      "beam", "Cantilever with end load over alpha2 = START:STOP:COUNT (equally spaced)");
-  beam->add_option("--n", args->load_ratio_n, "Load ratio n: horizontal load nP, n > 0 compressive")
+      "beam",
+      "Cantilever with end load over one or two of alpha2, n, mu, theta0, b/l (START:STOP:COUNT; "
+      "two make a grid)");
+  beam->add_option("--alpha2", args->alpha2, "Load alpha2 = P l^2/EI: a value or START:STOP:COUNT");
+  beam->add_option(
+      "--theta0",
+      args->theta0,
+      "Inverse: tip angle theta0 (rad), a value or START:STOP:COUNT; the load is found");
+  beam->add_option(
+      "--b-over-l",
+      args->b_over_l,
+      "Inverse: tip deflection b/l (-1..1), a value or START:STOP:COUNT; the load is found");
+  beam->add_option("--n",
+                   args->load_ratio_n,
+                   "Load ratio n (horizontal load nP, n > 0 compressive): a value or "
+                   "START:STOP:COUNT")
       ->default_str("0");
-  beam->add_option("--mu", args->mu, "End moment mu = M l/EI")->default_str("0");
-  beam->add_option("--alpha2", args->alpha2_range, "Loads START:STOP:COUNT (COUNT >= 1)")
-      ->required();
+  beam->add_option("--mu", args->mu, "End moment mu = M l/EI: a value or START:STOP:COUNT")
+      ->default_str("0");
   add_method_option(*beam, args->method);
   beam->add_option("--out", args->out, "Output HDF5 file (written atomically)")->required();
   beam->add_option("--threads", args->threads, "Worker threads (1-64)")->default_str("2");

@@ -27,9 +27,30 @@ bool finite_pose(const TipPose& tip) {
 BeamSweepTable run_beam_sweep(const std::vector<double>& alpha2,
                               const BeamPointSolver& solve,
                               const BeamSweepOptions& options) {
-  const long total = static_cast<long>(alpha2.size());
+  BeamSweepOptions named = options;
+  if (!named.describe) {
+    named.describe = [&](long i) { return fmt::format("alpha2 = {}", alpha2[i]); };
+  }
+  BeamSweepTable table = run_beam_sweep(
+      static_cast<long>(alpha2.size()),
+      [&](long i) {
+        BeamSweepPoint point = solve(alpha2[i]);
+        point.alpha2 = alpha2[i];
+        return point;
+      },
+      named);
+  table.alpha2 = alpha2;  // the given loads, also where a solver threw
+  return table;
+}
+
+BeamSweepTable run_beam_sweep(long total,
+                              const BeamIndexSolver& solve,
+                              const BeamSweepOptions& options) {
+  const auto describe = [&](long i) {
+    return options.describe ? options.describe(i) : fmt::format("point {}", i);
+  };
   BeamSweepTable table;
-  table.alpha2 = alpha2;
+  table.alpha2.assign(total, kNaN);
   table.a_over_l.assign(total, kNaN);
   table.b_over_l.assign(total, kNaN);
   table.theta0.assign(total, kNaN);
@@ -52,14 +73,15 @@ BeamSweepTable run_beam_sweep(const std::vector<double>& alpha2,
         for (long i = begin; i < end; ++i) {
           BeamSweepPoint point;
           try {
-            point = solve(alpha2[i]);
+            point = solve(i);
           } catch (const NoConvergence& e) {
             point.set_converged(false);
             point.message = e.what();
           } catch (const InvalidInput& e) {
-            throw InvalidInput(fmt::format("at alpha2 = {}: {}", alpha2[i], e.what()));
+            throw InvalidInput(fmt::format("at {}: {}", describe(i), e.what()));
           }
-          if (point.converged() && finite_pose(point.tip)) {
+          table.alpha2[i] = point.alpha2;
+          if (point.converged() && finite_pose(point.tip) && std::isfinite(point.alpha2)) {
             table.a_over_l[i] = point.tip.a_over_l;
             table.b_over_l[i] = point.tip.b_over_l;
             table.theta0[i] = point.tip.theta0;
@@ -107,7 +129,7 @@ BeamSweepTable run_beam_sweep(const std::vector<double>& alpha2,
     // Re-solve the first failure once, serially, for its message (cheaper than storing one
     // message per point).
     try {
-      BeamSweepPoint point = solve(alpha2[table.first_failure]);
+      BeamSweepPoint point = solve(table.first_failure);
       table.first_failure_message =
           point.converged() ? "the solution contains a non-finite value" : point.message;
     } catch (const NoConvergence& e) {
@@ -132,35 +154,68 @@ const std::vector<CodeMeaning>& beam_sweep_code_meanings() {
 void write_beam_sweep(Hdf5Group& group,
                       const BeamSweepTable& table,
                       const BeamSweepMetadata& metadata) {
-  group.write_dataset("alpha2",
-                      std::span<const double>(table.alpha2),
-                      "1",
-                      "load alpha2 = P l^2/EI (Howell eq. 2.83)");
-  group.write_dataset("a_over_l",
-                      std::span<const double>(table.a_over_l),
-                      "1",
-                      "tip coordinate along the undeformed beam a/l; NaN where status != 0");
-  group.write_dataset(
-      "b_over_l",
-      std::span<const double>(table.b_over_l),
-      "1",
-      "tip deflection perpendicular to the undeformed beam b/l; NaN where status != 0");
-  group.write_dataset("theta0",
-                      std::span<const double>(table.theta0),
-                      "rad",
-                      "tip angle theta0; NaN where status != 0");
-  group.write_dataset("status",
-                      std::span<const int>(table.status),
-                      "1",
-                      "0 converged, 1 no converged solution at this load (root status_meanings)");
-  group.write_dataset("within_validity",
-                      std::span<const int>(table.within_validity),
-                      "1",
-                      "PRBM: 1 PRB angle within the element's validity limit, 0 outside; -1 exact "
-                      "methods and failed points");
+  // The datasets' shape: the axes' counts, or 1-D.
+  std::vector<hsize_t> dims;
+  for (const BeamSweepAxis& axis : metadata.axes) dims.push_back(axis.values.size());
+  if (dims.empty()) dims.push_back(table.alpha2.size());
+  const auto doubles = [&](const char* name,
+                           const std::vector<double>& values,
+                           const char* units,
+                           const std::string& description) {
+    group.write_dataset(name, std::span<const double>(values), dims, units, description);
+  };
+  const auto ints =
+      [&](const char* name, const std::vector<int>& values, const std::string& description) {
+        group.write_dataset(name, std::span<const int>(values), dims, "1", description);
+      };
+  const bool forward = metadata.given == "alpha2";
+  doubles("alpha2",
+          table.alpha2,
+          "1",
+          forward ? "load alpha2 = P l^2/EI (Howell eq. 2.83)"
+                  : "load alpha2 = P l^2/EI found for the given " + metadata.given +
+                        " (Howell eq. 2.83); NaN where none was found");
+  doubles("a_over_l",
+          table.a_over_l,
+          "1",
+          "tip coordinate along the undeformed beam a/l; NaN where status != 0");
+  doubles("b_over_l",
+          table.b_over_l,
+          "1",
+          "tip deflection perpendicular to the undeformed beam b/l; NaN where status != 0");
+  doubles("theta0", table.theta0, "rad", "tip angle theta0; NaN where status != 0");
+  ints("status",
+       table.status,
+       "0 converged, 1 no converged solution at this point (root status_meanings)");
+  ints("within_validity",
+       table.within_validity,
+       "PRBM: 1 PRB angle within the element's validity limit, 0 outside; -1 exact methods and "
+       "failed points");
+  std::string names;
+  bool n_axis = false, mu_axis = false, given_axis = false;
+  if (!metadata.axes.empty()) {
+    Hdf5Group axes = group.create_group("axes");
+    axes.set_attribute("description",
+                       "the swept parameters in the order of the datasets' dimensions (root "
+                       "attribute axes)");
+    for (const BeamSweepAxis& axis : metadata.axes) {
+      axes.write_dataset(
+          axis.name, std::span<const double>(axis.values), axis.units, axis.description);
+      names += (names.empty() ? "" : ",") + axis.name;
+      n_axis = n_axis || axis.name == "load_ratio_n";
+      mu_axis = mu_axis || axis.name == "mu";
+      given_axis = given_axis || axis.name == metadata.given;
+    }
+    group.set_attribute("axes", names);
+    group.set_attribute("given", metadata.given);
+    if (!given_axis) {
+      group.set_attribute("given_value", metadata.given_value);
+      if (metadata.given == "theta0") group.set_attribute("attribute_units", "given_value: rad");
+    }
+  }
   group.set_attribute("method", metadata.method);
-  group.set_attribute("load_ratio_n", metadata.load_ratio_n);
-  group.set_attribute("mu", metadata.mu);
+  if (!n_axis) group.set_attribute("load_ratio_n", metadata.load_ratio_n);
+  if (!mu_axis) group.set_attribute("mu", metadata.mu);
   group.set_attribute("tolerance", metadata.tolerance);
   group.set_attribute("count", static_cast<std::int64_t>(table.alpha2.size()));
   group.set_attribute("converged_count", static_cast<std::int64_t>(table.converged_count));

@@ -5,8 +5,9 @@
 // what the tool does: solve every point (optionally on a few threads), then write each column with
 // a single HDF5 call.
 //
-// File layout (all datasets 1-D, one entry per load, in the order of the requested range; each
-// with its `units` and `description`; docs/hdf5-schema.md "flexure sweep beam"):
+// File layout (one entry per point, in the order of the requested range; each dataset with its
+// `units` and `description`; docs/hdf5-schema.md "flexure sweep beam"). A sweep over two
+// parameters stores every dataset below shaped [count1, count2] and the axes in /axes:
 //   /alpha2           float64  P l^2/EI (Howell eq. 2.83)
 //   /a_over_l         float64  a/l, NaN where status != 0
 //   /b_over_l         float64  b/l, NaN where status != 0
@@ -17,6 +18,7 @@
 // provenance of io/provenance.h (status_meanings from beam_sweep_code_meanings()).
 // NaN in a stored float dataset always means "no solution" and is always flagged by status = 1.
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -37,18 +39,25 @@ struct BeamSweepPoint : SolveStatus {
   // PRBM: 1 when the PRB angle is within the element's validity limit, 0 outside; -1 for a method
   // without validity limits (the exact methods).
   int within_validity = -1;
+  // The load alpha2 at this point: the given one (forward), the one found (inverse: a tip angle
+  // or deflection given), NaN if none was found. Stored whether or not the point converged.
+  double alpha2 = std::numeric_limits<double>::quiet_NaN();
   // message: why it failed (only needed when !converged)
 };
 
 // Solves one load alpha2; must be safe to call from several threads at once. May throw
 // NoConvergence (stored as status 1) or InvalidInput (aborts the sweep).
 using BeamPointSolver = std::function<BeamSweepPoint(double alpha2)>;
+// Solves point `index` of a sweep (a grid, row-major); the same contract.
+using BeamIndexSolver = std::function<BeamSweepPoint(long index)>;
 
 struct BeamSweepOptions {
   int threads = 2;    // worker threads including the caller; 1 = serial
   long chunk = 2048;  // loads handed to a thread at a time (amortises synchronisation)
   // Called on the calling thread with the number of points done so far (may be null).
   std::function<void(long done, long total)> progress;
+  // Names point `index` in an error message, e.g. "alpha2 = 2.5, n = 1" (null: "point 17").
+  std::function<std::string(long index)> describe;
 };
 
 struct BeamSweepTable {
@@ -68,13 +77,33 @@ struct BeamSweepTable {
 BeamSweepTable run_beam_sweep(const std::vector<double>& alpha2,
                               const BeamPointSolver& solve,
                               const BeamSweepOptions& options = {});
+// The same over `count` points of any sweep; table.alpha2 holds each point's
+// BeamSweepPoint::alpha2.
+BeamSweepTable run_beam_sweep(long count,
+                              const BeamIndexSolver& solve,
+                              const BeamSweepOptions& options = {});
+
+// One axis of a sweep, stored as /axes/<name> (1-D).
+struct BeamSweepAxis {
+  std::string name;  // alpha2, load_ratio_n, mu, theta0 or b_over_l
+  std::vector<double> values;
+  std::string units;
+  std::string description;
+};
 
 // What produced the table, stored as attributes.
 struct BeamSweepMetadata {
   std::string method;
-  double load_ratio_n = 0.0;
-  double mu = 0.0;
+  double load_ratio_n = 0.0;  // stored when it is not an axis
+  double mu = 0.0;            // stored when it is not an axis
   double tolerance = 0.0;
+  // The axes in order: the datasets are shaped by their counts (one axis: 1-D; two: a grid,
+  // row-major). Empty: a 1-D sweep over the table's alpha2 (the layout above, no /axes group).
+  std::vector<BeamSweepAxis> axes;
+  // What each point was given: "alpha2" (forward), "theta0" or "b_over_l" (inverse), and its
+  // value when it is not an axis (root attribute given_value).
+  std::string given = "alpha2";
+  double given_value = 0.0;
 };
 
 // The meanings of the codes in /status and /within_validity.

@@ -153,12 +153,20 @@ void Hdf5Group::write_described(const std::string& name,
 template <typename T>
 void Hdf5Group::write_numeric(const std::string& name,
                               std::span<const T> values,
+                              const std::vector<hsize_t>& dims,
                               hid_t type,
                               const std::string& units,
                               const std::string& description) {
   const std::string where = fmt::format("dataset '{}' in {}", child_path(name), file_path_);
-  const hsize_t size = values.size();
-  ScopedId space(check_id(H5Screate_simple(1, &size, nullptr), where, "creating the dataspace"),
+  hsize_t size = 1;
+  for (hsize_t d : dims) size *= d;
+  if (dims.empty() || size != values.size()) {
+    throw Hdf5Error(
+        fmt::format("HDF5: {} has {} values, which do not fill its shape", where, values.size()));
+  }
+  ScopedId space(check_id(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
+                          where,
+                          "creating the dataspace"),
                  H5Sclose);
   write_described(name, type, space.get(), size > 0 ? values.data() : nullptr, units, description);
 }
@@ -167,14 +175,30 @@ void Hdf5Group::write_dataset(const std::string& name,
                               std::span<const double> values,
                               const std::string& units,
                               const std::string& description) {
-  write_numeric(name, values, H5T_NATIVE_DOUBLE, units, description);
+  write_numeric(name, values, {values.size()}, H5T_NATIVE_DOUBLE, units, description);
 }
 
 void Hdf5Group::write_dataset(const std::string& name,
                               std::span<const int> values,
                               const std::string& units,
                               const std::string& description) {
-  write_numeric(name, values, H5T_NATIVE_INT, units, description);
+  write_numeric(name, values, {values.size()}, H5T_NATIVE_INT, units, description);
+}
+
+void Hdf5Group::write_dataset(const std::string& name,
+                              std::span<const double> values,
+                              const std::vector<hsize_t>& dims,
+                              const std::string& units,
+                              const std::string& description) {
+  write_numeric(name, values, dims, H5T_NATIVE_DOUBLE, units, description);
+}
+
+void Hdf5Group::write_dataset(const std::string& name,
+                              std::span<const int> values,
+                              const std::vector<hsize_t>& dims,
+                              const std::string& units,
+                              const std::string& description) {
+  write_numeric(name, values, dims, H5T_NATIVE_INT, units, description);
 }
 
 void Hdf5Group::write_dataset(const std::string& name,

@@ -59,6 +59,18 @@ class Hdf5Group {
                      std::span<const int> values,
                      const std::string& units,
                      const std::string& description);
+  // The same shaped as an array of `dims` (row-major, the last index fastest), e.g. a sweep over a
+  // grid; the product of dims must equal values.size().
+  void write_dataset(const std::string& name,
+                     std::span<const double> values,
+                     const std::vector<hsize_t>& dims,
+                     const std::string& units,
+                     const std::string& description);
+  void write_dataset(const std::string& name,
+                     std::span<const int> values,
+                     const std::vector<hsize_t>& dims,
+                     const std::string& units,
+                     const std::string& description);
   // Variable-length UTF-8 strings (e.g. problem or method names in a results table); units are
   // normally "text".
   void write_dataset(const std::string& name,
@@ -87,6 +99,7 @@ class Hdf5Group {
   template <typename T>
   void write_numeric(const std::string& name,
                      std::span<const T> values,
+                     const std::vector<hsize_t>& dims,
                      hid_t type,
                      const std::string& units,
                      const std::string& description);
