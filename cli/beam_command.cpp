@@ -67,10 +67,6 @@ struct BeamInput {
   bool is_physical() const { return physical || (chain_file && chain_file->physical); }
 };
 
-void warn(const std::string& text) {
-  if (!text.empty()) std::cerr << "flexure: warning: " << text << "\n";
-}
-
 // An angle option: radians, or with a unit; a plain value above a full turn is probably degrees.
 double angle_option(const std::string& text, const char* what) {
   const io::Quantity q = io::parse_quantity(text, io::Dimension::kAngle, what);
@@ -191,7 +187,7 @@ BeamInput make_input(const BeamArgs& args) {
           "combine it with --alpha2, --theta0, --b-over-l, --n, --mu, --follower or --boundary");
     }
     input.chain_file = io::read_chain_file(args.chain_file);
-    for (const std::string& w : input.chain_file->warnings) warn(w);
+    warn(input.chain_file->warnings);
     problem.chain = input.chain_file->chain;
     problem.boundary = problem.chain->end;
     return input;

@@ -133,6 +133,14 @@ std::string find_non_finite(const Json& node, const std::string& where) {
 
 }  // namespace
 
+void warn(const std::string& text) {
+  if (!text.empty()) std::cerr << "flexure: warning: " << text << "\n";
+}
+
+void warn(const std::vector<std::string>& texts) {
+  for (const std::string& text : texts) warn(text);
+}
+
 // Strict decimal parse of a whole token (no trailing characters); accepts "nan"/"inf" so that the
 // caller can reject them with a message naming the quantity.
 bool parse_double(const std::string& token, double& value) {

@@ -82,6 +82,11 @@ void require_in_range(double value, const std::string& what, double lo, double h
 
 // A range "START:STOP:COUNT": COUNT >= 1 equally spaced values from START to STOP inclusive
 // (STOP may be below START; COUNT == 1 gives START only).
+// "flexure: warning: TEXT" on stderr; nothing for an empty text. Warnings never change the exit
+// code or stdout.
+void warn(const std::string& text);
+void warn(const std::vector<std::string>& texts);
+
 // Strict decimal parse of a whole token (no trailing characters); "nan" and "inf" parse, so that
 // the caller rejects them with a message naming the quantity.
 bool parse_double(const std::string& token, double& value);

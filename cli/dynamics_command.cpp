@@ -99,6 +99,7 @@ DynamicsDesign resolve_design(const DynamicsArgs& args) {
   const std::string& what = args.mechanism;
   if (what.size() > 5 && what.substr(what.size() - 5) == ".toml") {
     const mechanism::MechanismFile file = mechanism::load_mechanism_file(what);
+    warn(file.warnings);
     const dynamics::MassesNeeded needed = args.zero_inertia ? dynamics::MassesNeeded::kNone
                                           : args.zero_slider_mass
                                               ? dynamics::MassesNeeded::kLinksOnly

@@ -40,7 +40,10 @@ const char* pivot_letter(PivotType t) {
 
 MechanismDesign resolve(const std::string& what) {
   const bool is_file = what.size() > 5 && what.substr(what.size() - 5) == ".toml";
-  return is_file ? load_mechanism_toml(what) : find_builtin_mechanism(what);
+  if (!is_file) return find_builtin_mechanism(what);
+  MechanismFile file = load_mechanism_file(what);
+  warn(file.warnings);
+  return std::move(file.design);
 }
 
 Json or_null(bool present, double value) { return present ? Json(value) : Json(nullptr); }

@@ -14,6 +14,7 @@
 #include "flexure/io/beam_sweep.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/output_path.h"
+#include "flexure/io/quantity.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {
@@ -38,9 +39,14 @@ constexpr long kMaxSweepCount = 10'000'000;
 // One of the parameters: a fixed value, or an axis when the text has a ':'.
 void add_parameter(BeamSweepGrid& grid, SweepParameter p, const std::string& text) {
   const std::string what = flag_name(p);
+  // Angles are radians: a value beyond a full turn was probably meant in degrees.
+  const auto check_angle = [&](double value) {
+    if (p == SweepParameter::kTheta0) warn(io::angle_warning({value, ""}, what));
+  };
   if (text.find(':') != std::string::npos) {
     const Range r = parse_range(text, what, kMaxSweepCount);
     grid.axes.push_back({p, r.start, r.stop, r.count});
+    check_angle(std::fabs(r.start) > std::fabs(r.stop) ? r.start : r.stop);
     return;
   }
   double value = 0.0;
@@ -48,6 +54,7 @@ void add_parameter(BeamSweepGrid& grid, SweepParameter p, const std::string& tex
     throw InvalidInput(fmt::format(
         "{} = '{}' is neither a finite number nor a range START:STOP:COUNT", what, text));
   }
+  check_angle(value);
   if (p == SweepParameter::kLoadRatioN) {
     grid.base.load_ratio_n = value;
   } else if (p == SweepParameter::kMu) {

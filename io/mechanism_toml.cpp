@@ -320,7 +320,18 @@ MechanismFile parse_mechanism_file(const std::string& text, const std::string& s
   } catch (const InvalidInput& e) {
     throw InvalidInput(fmt::format("{}: {}", source, e.what()));
   }
-  return {d, parse_dynamics_table(root, source)};
+  MechanismFile file{d, parse_dynamics_table(root, source), {}};
+  const auto warn = [&](const std::string& text) {
+    if (!text.empty()) file.warnings.push_back(fmt::format("{}: {}", source, text));
+  };
+  warn(io::modulus_warning({d.E, ""}, "material.E"));
+  for (std::size_t k = 0; k < d.joints.size(); ++k) {
+    const JointDesign& j = d.joints[k];
+    if (j.thickness > 0.0 && j.length > 0.0) {
+      warn(io::thickness_warning(j.thickness, j.length, kJointTables[k]));
+    }
+  }
+  return file;
 }
 
 MechanismDesign load_mechanism_toml(const std::string& path) {

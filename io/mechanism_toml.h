@@ -4,6 +4,7 @@
 // The optional [dynamics] table (masses, spring constants) is what `flexure dynamics` needs beyond
 // the design (mechanisms/dynamics/dynamics_design.h); it is checked here and ignored by analyze.
 #include <string>
+#include <vector>
 
 #include "flexure/mechanisms/dynamics/dynamics_design.h"
 #include "flexure/mechanisms/mechanism.h"
@@ -17,6 +18,9 @@ MechanismDesign load_mechanism_toml(const std::string& path);
 struct MechanismFile {
   MechanismDesign design;
   dynamics::DynamicsData dynamics;
+  // Likely unit mistakes, for stderr (io/quantity.h): a modulus below 1e6 Pa (lengths are in
+  // metres), a flexure thicker than a tenth of its length.
+  std::vector<std::string> warnings;
 };
 MechanismFile parse_mechanism_file(const std::string& text, const std::string& source);
 MechanismFile load_mechanism_file(const std::string& path);

@@ -204,6 +204,20 @@ TEST(CliUnits, MechanismFileWithUnitsIsTheSiFile) {
     EXPECT_NEAR(a["force_prbm"][i].get<double>(), b["force_prbm"][i].get<double>(), 1e-12);
   }
   EXPECT_NEAR(a["max_stress"].get<double>(), b["max_stress"].get<double>(), 1e-3);
+  // A modulus in MPa without its unit, a flexure thicker than a tenth of its length: warned.
+  std::ofstream(dir / "soft.toml") << "config = \"sss\"\nr2 = 0.0273\nr3 = 0.0727\nstroke = "
+                                      "0.016\n[material]\nE = 207000\nyield_strength = 1.2e9\n"
+                                      "[ground]\nthickness = 0.5e-3\nwidth = 5e-3\nlength = "
+                                      "2.73e-3\n[middle]\nthickness = 0.1e-3\nwidth = 5e-3\n"
+                                      "[slider]\nthickness = 0.1e-3\nwidth = 5e-3\n";
+  const test::CommandResult soft = run_flexure(
+      "mechanism analyze '" + (dir / "soft.toml").string() + "' --method prbm --points 3");
+  EXPECT_NE(soft.err.find("material.E = 207000 Pa"), std::string::npos) << soft.err;
+  EXPECT_NE(soft.err.find("ground: the thickness 0.0005 m"), std::string::npos) << soft.err;
+  EXPECT_EQ(soft.err.find("middle: the thickness"), std::string::npos) << soft.err;
+  const test::CommandResult sweep =
+      run_flexure("sweep beam --theta0 0.1:45:3 --out '" + (dir / "s.h5").string() + "'");
+  EXPECT_NE(sweep.err.find("warning: --theta0 = 45 rad"), std::string::npos) << sweep.err;
   std::ofstream(dir / "bad.toml") << "config = \"lpp\"\nr2 = \"50 N\"\n";
   const test::CommandResult r =
       run_flexure("mechanism analyze '" + (dir / "bad.toml").string() + "'");
