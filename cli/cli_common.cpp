@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/evenly_spaced.h"
 
 namespace flexure::cli {
 namespace {
@@ -228,13 +229,7 @@ void require_in_range(double value, const std::string& what, double lo, double h
   }
 }
 
-double Range::at(long i) const {
-  if (count <= 1) return start;
-  if (i == count - 1) return stop;
-  // Interpolate from both ends so that rounding is symmetric and the ends are exact.
-  const double f = static_cast<double>(i) / static_cast<double>(count - 1);
-  return start * (1.0 - f) + stop * f;
-}
+double Range::at(long i) const { return evenly_spaced(start, stop, count, i); }
 
 Range parse_range(const std::string& text, const std::string& what, long max_count) {
   const auto fail = [&](const std::string& why) {

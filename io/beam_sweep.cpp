@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/evenly_spaced.h"
 
 namespace flexure::io {
 namespace {
@@ -151,56 +152,114 @@ const std::vector<CodeMeaning>& beam_sweep_code_meanings() {
   return codes;
 }
 
-void write_beam_sweep(Hdf5Group& group,
-                      const BeamSweepTable& table,
-                      const BeamSweepMetadata& metadata) {
-  // The datasets' shape: the axes' counts, or 1-D.
+namespace {
+
+constexpr long kAxisBlock = 65536;
+
+std::vector<hsize_t> sweep_dims(long count, const BeamSweepMetadata& metadata) {
   std::vector<hsize_t> dims;
-  for (const BeamSweepAxis& axis : metadata.axes) dims.push_back(axis.values.size());
-  if (dims.empty()) dims.push_back(table.alpha2.size());
-  const auto doubles = [&](const char* name,
-                           const std::vector<double>& values,
-                           const char* units,
-                           const std::string& description) {
-    group.write_dataset(name, std::span<const double>(values), dims, units, description);
-  };
-  const auto ints =
-      [&](const char* name, const std::vector<int>& values, const std::string& description) {
-        group.write_dataset(name, std::span<const int>(values), dims, "1", description);
-      };
-  const bool forward = metadata.given == "alpha2";
-  doubles("alpha2",
-          table.alpha2,
+  for (const BeamSweepAxis& axis : metadata.axes) dims.push_back(static_cast<hsize_t>(axis.count));
+  if (dims.empty()) dims.push_back(static_cast<hsize_t>(count));
+  return dims;
+}
+
+}  // namespace
+
+BeamSweepWriter::BeamSweepWriter(Hdf5Group& group,
+                                 long count,
+                                 const BeamSweepMetadata& metadata,
+                                 const Hdf5DatasetOptions& options)
+    : group_(group),
+      count_(count),
+      metadata_(metadata),
+      alpha2_(group.create_dataset("alpha2",
+                                   Hdf5Type::kFloat64,
+                                   sweep_dims(count, metadata),
+                                   "1",
+                                   metadata.given == "alpha2"
+                                       ? "load alpha2 = P l^2/EI (Howell eq. 2.83)"
+                                       : "load alpha2 = P l^2/EI found for the given " +
+                                             metadata.given +
+                                             " (Howell eq. 2.83); NaN where none was found",
+                                   options)),
+      a_over_l_(group.create_dataset(
+          "a_over_l",
+          Hdf5Type::kFloat64,
+          sweep_dims(count, metadata),
           "1",
-          forward ? "load alpha2 = P l^2/EI (Howell eq. 2.83)"
-                  : "load alpha2 = P l^2/EI found for the given " + metadata.given +
-                        " (Howell eq. 2.83); NaN where none was found");
-  doubles("a_over_l",
-          table.a_over_l,
+          "tip coordinate along the undeformed beam a/l; NaN where status != 0",
+          options)),
+      b_over_l_(group.create_dataset(
+          "b_over_l",
+          Hdf5Type::kFloat64,
+          sweep_dims(count, metadata),
           "1",
-          "tip coordinate along the undeformed beam a/l; NaN where status != 0");
-  doubles("b_over_l",
-          table.b_over_l,
+          "tip deflection perpendicular to the undeformed beam b/l; NaN where status != 0",
+          options)),
+      theta0_(group.create_dataset("theta0",
+                                   Hdf5Type::kFloat64,
+                                   sweep_dims(count, metadata),
+                                   "rad",
+                                   "tip angle theta0; NaN where status != 0",
+                                   options)),
+      status_(group.create_dataset(
+          "status",
+          Hdf5Type::kInt32,
+          sweep_dims(count, metadata),
           "1",
-          "tip deflection perpendicular to the undeformed beam b/l; NaN where status != 0");
-  doubles("theta0", table.theta0, "rad", "tip angle theta0; NaN where status != 0");
-  ints("status",
-       table.status,
-       "0 converged, 1 no converged solution at this point (root status_meanings)");
-  ints("within_validity",
-       table.within_validity,
-       "PRBM: 1 PRB angle within the element's validity limit, 0 outside; -1 exact methods and "
-       "failed points");
-  std::string names;
+          "0 converged, 1 no converged solution at this point (root status_meanings)",
+          options)),
+      within_validity_(group.create_dataset(
+          "within_validity",
+          Hdf5Type::kInt32,
+          sweep_dims(count, metadata),
+          "1",
+          "PRBM: 1 PRB angle within the element's validity limit, 0 outside; -1 exact methods "
+          "and failed points",
+          options)) {
+  hsize_t points = 1;
+  for (hsize_t d : sweep_dims(count, metadata)) points *= d;
+  if (points != static_cast<hsize_t>(count)) {
+    throw Hdf5Error(fmt::format(
+        "HDF5: a sweep of {} points does not fill its axes ({} points)", count, points));
+  }
+}
+
+void BeamSweepWriter::write(long begin, const BeamSweepTable& block) {
+  const auto at = static_cast<hsize_t>(begin);
+  alpha2_.write_range(at, std::span<const double>(block.alpha2));
+  a_over_l_.write_range(at, std::span<const double>(block.a_over_l));
+  b_over_l_.write_range(at, std::span<const double>(block.b_over_l));
+  theta0_.write_range(at, std::span<const double>(block.theta0));
+  status_.write_range(at, std::span<const int>(block.status));
+  within_validity_.write_range(at, std::span<const int>(block.within_validity));
+}
+
+void BeamSweepWriter::finish(long converged_count) {
+  Hdf5Group& group = group_;
+  const BeamSweepMetadata& metadata = metadata_;
   bool n_axis = false, mu_axis = false, given_axis = false;
   if (!metadata.axes.empty()) {
+    std::string names;
     Hdf5Group axes = group.create_group("axes");
     axes.set_attribute("description",
                        "the swept parameters in the order of the datasets' dimensions (root "
                        "attribute axes)");
     for (const BeamSweepAxis& axis : metadata.axes) {
-      axes.write_dataset(
-          axis.name, std::span<const double>(axis.values), axis.units, axis.description);
+      // Generated a block at a time: an axis may hold 10^7 values.
+      Hdf5Dataset values = axes.create_dataset(axis.name,
+                                               Hdf5Type::kFloat64,
+                                               {static_cast<hsize_t>(axis.count)},
+                                               axis.units,
+                                               axis.description);
+      std::vector<double> block;
+      for (long begin = 0; begin < axis.count; begin += kAxisBlock) {
+        block.clear();
+        for (long i = begin; i < std::min(axis.count, begin + kAxisBlock); ++i) {
+          block.push_back(evenly_spaced(axis.start, axis.stop, axis.count, i));
+        }
+        values.write_range(static_cast<hsize_t>(begin), std::span<const double>(block));
+      }
       names += (names.empty() ? "" : ",") + axis.name;
       n_axis = n_axis || axis.name == "load_ratio_n";
       mu_axis = mu_axis || axis.name == "mu";
@@ -217,9 +276,52 @@ void write_beam_sweep(Hdf5Group& group,
   if (!n_axis) group.set_attribute("load_ratio_n", metadata.load_ratio_n);
   if (!mu_axis) group.set_attribute("mu", metadata.mu);
   group.set_attribute("tolerance", metadata.tolerance);
-  group.set_attribute("count", static_cast<std::int64_t>(table.alpha2.size()));
-  group.set_attribute("converged_count", static_cast<std::int64_t>(table.converged_count));
+  group.set_attribute("count", static_cast<std::int64_t>(count_));
+  group.set_attribute("converged_count", static_cast<std::int64_t>(converged_count));
   write_provenance(group, beam_sweep_code_meanings());
+}
+
+void write_beam_sweep(Hdf5Group& group,
+                      const BeamSweepTable& table,
+                      const BeamSweepMetadata& metadata,
+                      const Hdf5DatasetOptions& options) {
+  BeamSweepWriter writer(group, static_cast<long>(table.alpha2.size()), metadata, options);
+  writer.write(0, table);
+  writer.finish(table.converged_count);
+}
+
+BeamSweepSummary stream_beam_sweep(long count,
+                                   const BeamIndexSolver& solve,
+                                   const BeamSweepOptions& options,
+                                   BeamSweepWriter& writer,
+                                   long block_points) {
+  BeamSweepSummary summary;
+  summary.count = count;
+  const long block = std::max(1L, block_points);
+  for (long begin = 0; begin < count; begin += block) {
+    const long n = std::min(block, count - begin);
+    BeamSweepOptions block_options = options;
+    if (options.progress) {
+      block_options.progress = [&, begin](long done, long) {
+        options.progress(begin + done, count);
+      };
+    }
+    if (options.describe) {
+      block_options.describe = [&, begin](long i) { return options.describe(begin + i); };
+    } else {
+      block_options.describe = [begin](long i) { return fmt::format("point {}", begin + i); };
+    }
+    const BeamSweepTable table = run_beam_sweep(
+        n, [&, begin](long i) { return solve(begin + i); }, block_options);
+    writer.write(begin, table);
+    summary.converged_count += table.converged_count;
+    if (summary.first_failure < 0 && table.first_failure >= 0) {
+      summary.first_failure = begin + table.first_failure;
+      summary.first_failure_message = table.first_failure_message;
+    }
+  }
+  writer.finish(summary.converged_count);
+  return summary;
 }
 
 }  // namespace flexure::io

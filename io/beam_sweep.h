@@ -83,10 +83,13 @@ BeamSweepTable run_beam_sweep(long count,
                               const BeamIndexSolver& solve,
                               const BeamSweepOptions& options = {});
 
-// One axis of a sweep, stored as /axes/<name> (1-D).
+// One axis of a sweep, stored as /axes/<name> (1-D): `count` equally spaced values from start to
+// stop (solver/common/evenly_spaced.h), generated while writing.
 struct BeamSweepAxis {
   std::string name;  // alpha2, load_ratio_n, mu, theta0 or b_over_l
-  std::vector<double> values;
+  double start = 0.0;
+  double stop = 0.0;
+  long count = 1;
   std::string units;
   std::string description;
 };
@@ -98,7 +101,8 @@ struct BeamSweepMetadata {
   double mu = 0.0;            // stored when it is not an axis
   double tolerance = 0.0;
   // The axes in order: the datasets are shaped by their counts (one axis: 1-D; two: a grid,
-  // row-major). Empty: a 1-D sweep over the table's alpha2 (the layout above, no /axes group).
+  // row-major). Empty: a 1-D sweep over the table's alpha2 (the layout above, no /axes group;
+  // /alpha2 is then the axis).
   std::vector<BeamSweepAxis> axes;
   // What each point was given: "alpha2" (forward), "theta0" or "b_over_l" (inverse), and its
   // value when it is not an axis (root attribute given_value).
@@ -109,9 +113,48 @@ struct BeamSweepMetadata {
 // The meanings of the codes in /status and /within_validity.
 const std::vector<CodeMeaning>& beam_sweep_code_meanings();
 
-// Writes the layout above, with the provenance, into `group` (the root of an AtomicHdf5File).
+// Writes the layout above into `group` (the root of an AtomicHdf5File) as the sweep is solved:
+// the datasets are created whole, filled block by block, and the attributes and provenance are
+// written by finish().
+class BeamSweepWriter {
+ public:
+  BeamSweepWriter(Hdf5Group& group,
+                  long count,
+                  const BeamSweepMetadata& metadata,
+                  const Hdf5DatasetOptions& options = {});
+  // Points [begin, begin + block size) from a table of that block.
+  void write(long begin, const BeamSweepTable& block);
+  // The attributes and provenance; once, after the last block.
+  void finish(long converged_count);
+
+ private:
+  Hdf5Group& group_;
+  long count_;
+  BeamSweepMetadata metadata_;
+  Hdf5Dataset alpha2_, a_over_l_, b_over_l_, theta0_, status_, within_validity_;
+};
+
+// The whole table at once (the same file as a streamed sweep).
 void write_beam_sweep(Hdf5Group& group,
                       const BeamSweepTable& table,
-                      const BeamSweepMetadata& metadata);
+                      const BeamSweepMetadata& metadata,
+                      const Hdf5DatasetOptions& options = {});
+
+// What a streamed sweep found.
+struct BeamSweepSummary {
+  long count = 0;
+  long converged_count = 0;
+  long first_failure = -1;            // index of the first point with status != 0, or -1
+  std::string first_failure_message;  // the method's message for that point
+};
+
+// Solves `count` points in blocks of `block_points` (each on options.threads) and writes every
+// block to `writer` before solving the next, so that memory does not grow with count; then calls
+// writer.finish(). Progress (options.progress) counts over the whole sweep.
+BeamSweepSummary stream_beam_sweep(long count,
+                                   const BeamIndexSolver& solve,
+                                   const BeamSweepOptions& options,
+                                   BeamSweepWriter& writer,
+                                   long block_points = 65536);
 
 }  // namespace flexure::io

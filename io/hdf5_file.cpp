@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
@@ -30,6 +31,7 @@ class ScopedId {
     if (id_ >= 0) closer_(id_);
   }
   hid_t get() const { return id_; }
+  hid_t release() { return std::exchange(id_, H5I_INVALID_HID); }
 
  private:
   hid_t id_;
@@ -123,12 +125,12 @@ Hdf5Group Hdf5Group::create_group(const std::string& name) {
   return Hdf5Group(id, file_path_, path);
 }
 
-void Hdf5Group::write_described(const std::string& name,
-                                hid_t type,
-                                hid_t space,
-                                const void* data,
-                                const std::string& units,
-                                const std::string& description) {
+hid_t Hdf5Group::create_described(const std::string& name,
+                                  hid_t type,
+                                  hid_t space,
+                                  hid_t dcpl,
+                                  const std::string& units,
+                                  const std::string& description) {
   const std::string where = fmt::format("dataset '{}' in {}", child_path(name), file_path_);
   // Checked before anything is created: a file is self-describing or not written at all.
   if (units.empty()) throw Hdf5Error(fmt::format("HDF5: no units given for {}", where));
@@ -136,18 +138,170 @@ void Hdf5Group::write_described(const std::string& name,
     throw Hdf5Error(fmt::format("HDF5: the description of {} must be one non-empty line", where));
   }
   ScopedId dataset(
-      check_id(H5Dcreate2(id_, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+      check_id(H5Dcreate2(id_, name.c_str(), type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT),
                where,
                "creating the dataset"),
       H5Dclose);
+  write_string_attribute(dataset.get(), "units", units, where + " (attribute 'units')");
+  write_string_attribute(
+      dataset.get(), "description", description, where + " (attribute 'description')");
+  return dataset.release();
+}
+
+void Hdf5Group::write_described(const std::string& name,
+                                hid_t type,
+                                hid_t space,
+                                const void* data,
+                                const std::string& units,
+                                const std::string& description) {
+  const std::string where = fmt::format("dataset '{}' in {}", child_path(name), file_path_);
+  ScopedId dataset(create_described(name, type, space, H5P_DEFAULT, units, description), H5Dclose);
   if (data != nullptr) {
     check_status(H5Dwrite(dataset.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
                  where,
                  "writing the data");
   }
-  write_string_attribute(dataset.get(), "units", units, where + " (attribute 'units')");
-  write_string_attribute(
-      dataset.get(), "description", description, where + " (attribute 'description')");
+}
+
+Hdf5Dataset Hdf5Group::create_dataset(const std::string& name,
+                                      Hdf5Type type,
+                                      const std::vector<hsize_t>& dims,
+                                      const std::string& units,
+                                      const std::string& description,
+                                      const Hdf5DatasetOptions& options) {
+  const std::string where = fmt::format("dataset '{}' in {}", child_path(name), file_path_);
+  if (dims.empty() || dims.size() > 2) {
+    throw Hdf5Error(fmt::format("HDF5: {} must have rank 1 or 2", where));
+  }
+  const hid_t memory_type = type == Hdf5Type::kFloat64 ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT;
+  ScopedId space(check_id(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
+                          where,
+                          "creating the dataspace"),
+                 H5Sclose);
+  ScopedId dcpl(check_id(H5Pcreate(H5P_DATASET_CREATE), where, "creating the properties"),
+                H5Pclose);
+  hsize_t points = 1;
+  for (hsize_t d : dims) points *= d;
+  if (options.compress && points > 0) {
+    if (H5Zfilter_avail(H5Z_FILTER_DEFLATE) <= 0) {
+      throw Hdf5Error(fmt::format("HDF5: this HDF5 library has no deflate filter ({})", where));
+    }
+    // Chunks of about chunk_points points: whole rows of a 2-D dataset where they fit.
+    std::vector<hsize_t> chunk(dims.size());
+    const hsize_t per_chunk = std::max<hsize_t>(1, options.chunk_points);
+    chunk.back() = std::min(dims.back(), per_chunk);
+    if (dims.size() == 2) chunk[0] = std::clamp<hsize_t>(per_chunk / chunk[1], 1, dims[0]);
+    check_status(H5Pset_chunk(dcpl.get(), static_cast<int>(chunk.size()), chunk.data()),
+                 where,
+                 "setting the chunk size");
+    check_status(H5Pset_shuffle(dcpl.get()), where, "setting the shuffle filter");
+    check_status(H5Pset_deflate(dcpl.get(), 4), where, "setting the deflate filter");
+  }
+  const hid_t id =
+      create_described(name,
+                       memory_type,  // the file type of every flexure dataset (write_numeric)
+                       space.get(),
+                       dcpl.get(),
+                       units,
+                       description);
+  return Hdf5Dataset(id, memory_type, dims, where);
+}
+
+Hdf5Dataset::Hdf5Dataset(hid_t id, hid_t memory_type, std::vector<hsize_t> dims, std::string where)
+    : id_(id), memory_type_(memory_type), dims_(std::move(dims)), where_(std::move(where)) {}
+
+Hdf5Dataset::Hdf5Dataset(Hdf5Dataset&& other) noexcept
+    : id_(std::exchange(other.id_, H5I_INVALID_HID)),
+      memory_type_(other.memory_type_),
+      dims_(std::move(other.dims_)),
+      where_(std::move(other.where_)) {}
+
+Hdf5Dataset& Hdf5Dataset::operator=(Hdf5Dataset&& other) noexcept {
+  if (this != &other) {
+    if (id_ >= 0 && H5Iis_valid(id_) > 0) H5Dclose(id_);
+    id_ = std::exchange(other.id_, H5I_INVALID_HID);
+    memory_type_ = other.memory_type_;
+    dims_ = std::move(other.dims_);
+    where_ = std::move(other.where_);
+  }
+  return *this;
+}
+
+Hdf5Dataset::~Hdf5Dataset() {
+  if (id_ >= 0 && H5Iis_valid(id_) > 0) H5Dclose(id_);
+}
+
+hsize_t Hdf5Dataset::size() const {
+  hsize_t n = 1;
+  for (hsize_t d : dims_) n *= d;
+  return n;
+}
+
+void Hdf5Dataset::write_range(hsize_t begin, std::span<const double> values) {
+  if (memory_type_ != H5T_NATIVE_DOUBLE) {
+    throw Hdf5Error(fmt::format("HDF5: {} holds integers, not doubles", where_));
+  }
+  write_range(begin, values.size(), H5T_NATIVE_DOUBLE, values.data());
+}
+
+void Hdf5Dataset::write_range(hsize_t begin, std::span<const int> values) {
+  if (memory_type_ != H5T_NATIVE_INT) {
+    throw Hdf5Error(fmt::format("HDF5: {} holds doubles, not integers", where_));
+  }
+  write_range(begin, values.size(), H5T_NATIVE_INT, values.data());
+}
+
+void Hdf5Dataset::write_range(hsize_t begin, hsize_t count, hid_t memory_type, const void* data) {
+  if (count == 0) return;
+  if (begin + count > size()) {
+    throw Hdf5Error(fmt::format("HDF5: writing points [{}, {}) past the end ({}) of {}",
+                                begin,
+                                begin + count,
+                                size(),
+                                where_));
+  }
+  ScopedId file_space(check_id(H5Dget_space(id_), where_, "getting the dataspace"), H5Sclose);
+  if (dims_.size() == 1) {
+    check_status(
+        H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &begin, nullptr, &count, nullptr),
+        where_,
+        "selecting the range");
+  } else {
+    // A row-major range of a 2-D dataset: the rest of its first row, whole rows, the start of its
+    // last row. HDF5 transfers a union of blocks in row-major order, which is the range's order.
+    const hsize_t columns = dims_[1];
+    const hsize_t end = begin + count;
+    H5S_seloper_t op = H5S_SELECT_SET;
+    const auto select = [&](hsize_t row, hsize_t column, hsize_t rows, hsize_t columns_n) {
+      const hsize_t start[2] = {row, column};
+      const hsize_t block[2] = {rows, columns_n};
+      check_status(H5Sselect_hyperslab(file_space.get(), op, start, nullptr, block, nullptr),
+                   where_,
+                   "selecting the range");
+      op = H5S_SELECT_OR;
+    };
+    const hsize_t first_row = begin / columns, first_column = begin % columns;
+    if (first_row == (end - 1) / columns) {
+      select(first_row, first_column, 1, count);  // within one row
+    } else {
+      hsize_t row = first_row;
+      if (first_column != 0) {
+        select(row++, first_column, 1, columns - first_column);
+      }
+      const hsize_t whole_rows = (end - row * columns) / columns;
+      if (whole_rows > 0) {
+        select(row, 0, whole_rows, columns);
+        row += whole_rows;
+      }
+      if (row * columns < end) select(row, 0, 1, end - row * columns);
+    }
+  }
+  ScopedId memory_space(
+      check_id(H5Screate_simple(1, &count, nullptr), where_, "creating the memory dataspace"),
+      H5Sclose);
+  check_status(H5Dwrite(id_, memory_type, memory_space.get(), file_space.get(), H5P_DEFAULT, data),
+               where_,
+               "writing the range");
 }
 
 template <typename T>

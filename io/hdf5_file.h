@@ -35,6 +35,45 @@ class Hdf5Error : public std::runtime_error {
 // constructor below; errors are reported as exceptions instead.
 void disable_hdf5_error_printing();
 
+// Options of a dataset written in parts (Hdf5Group::create_dataset).
+struct Hdf5DatasetOptions {
+  // Chunked layout with the shuffle filter and deflate (zlib level 4): smaller files of smooth
+  // data at some CPU cost. Off: contiguous layout.
+  bool compress = false;
+  hsize_t chunk_points = 65536;  // points per chunk when compressed
+};
+
+// A dataset created whole (its shape, units and description) and filled in parts, in any order,
+// e.g. a sweep written chunk by chunk as it is solved so that memory stays flat. Move-only;
+// closes its handle when destroyed.
+class Hdf5Dataset {
+ public:
+  Hdf5Dataset(const Hdf5Dataset&) = delete;
+  Hdf5Dataset& operator=(const Hdf5Dataset&) = delete;
+  Hdf5Dataset(Hdf5Dataset&& other) noexcept;
+  Hdf5Dataset& operator=(Hdf5Dataset&& other) noexcept;
+  ~Hdf5Dataset();
+
+  // Writes values at the row-major positions [begin, begin + values.size()) of the dataset (any
+  // rank: a range of a 2-D dataset may start and end inside rows). The value type must be the
+  // dataset's (double for float64, int for int32); throws Hdf5Error otherwise or out of range.
+  void write_range(hsize_t begin, std::span<const double> values);
+  void write_range(hsize_t begin, std::span<const int> values);
+  hsize_t size() const;  // number of points
+
+ private:
+  friend class Hdf5Group;
+  Hdf5Dataset(hid_t id, hid_t memory_type, std::vector<hsize_t> dims, std::string where);
+  void write_range(hsize_t begin, hsize_t count, hid_t memory_type, const void* data);
+
+  hid_t id_ = H5I_INVALID_HID;
+  hid_t memory_type_ = H5I_INVALID_HID;  // H5T_NATIVE_DOUBLE or H5T_NATIVE_INT (not owned)
+  std::vector<hsize_t> dims_;
+  std::string where_;
+};
+
+enum class Hdf5Type { kFloat64, kInt32 };
+
 // A group (or the root group "/") of a file being written. Move-only; closes its handle when
 // destroyed. Must not outlive the file it belongs to.
 class Hdf5Group {
@@ -77,6 +116,14 @@ class Hdf5Group {
                      const std::vector<std::string>& values,
                      const std::string& units,
                      const std::string& description);
+  // A dataset of `dims` to be filled in parts with Hdf5Dataset::write_range; with its units and
+  // description like every dataset. Points never written read as 0.
+  Hdf5Dataset create_dataset(const std::string& name,
+                             Hdf5Type type,
+                             const std::vector<hsize_t>& dims,
+                             const std::string& units,
+                             const std::string& description,
+                             const Hdf5DatasetOptions& options = {});
   // A scalar (0-d) dataset: one value with units, e.g. a design's Young's modulus.
   void write_scalar(const std::string& name,
                     double value,
@@ -111,6 +158,14 @@ class Hdf5Group {
                        const void* data,
                        const std::string& units,
                        const std::string& description);
+  // Creates the dataset with creation properties `dcpl` and its units and description; returns
+  // its (open) id.
+  hid_t create_described(const std::string& name,
+                         hid_t type,
+                         hid_t space,
+                         hid_t dcpl,
+                         const std::string& units,
+                         const std::string& description);
   void set_scalar_attribute(const std::string& name, hid_t type, const void* value);
   std::string child_path(const std::string& name) const;
 

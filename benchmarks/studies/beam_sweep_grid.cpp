@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/evenly_spaced.h"
 
 namespace flexure {
 namespace {
@@ -53,17 +54,7 @@ const char* flag_name(SweepParameter p) {
 
 const char* units_of(SweepParameter p) { return p == SweepParameter::kTheta0 ? "rad" : "1"; }
 
-double SweepAxis::at(long i) const {
-  if (count == 1) return start;
-  if (i == count - 1) return stop;
-  return start + (stop - start) * static_cast<double>(i) / static_cast<double>(count - 1);
-}
-
-std::vector<double> SweepAxis::values() const {
-  std::vector<double> v(static_cast<std::size_t>(count));
-  for (long i = 0; i < count; ++i) v[static_cast<std::size_t>(i)] = at(i);
-  return v;
-}
+double SweepAxis::at(long i) const { return evenly_spaced(start, stop, count, i); }
 
 void BeamSweepGrid::validate(long max_points) const {
   if (axes.empty() || axes.size() > 2) {

@@ -25,7 +25,6 @@ struct SweepAxis {
   double stop = 0.0;
   long count = 1;
   double at(long i) const;  // exact at both ends
-  std::vector<double> values() const;
 };
 
 struct BeamSweepGrid {

@@ -7,7 +7,7 @@
 //    attribute (it is an axis);
 //  * a sweep over theta0 x mu finds loads whose tip angle is the target to 1e-10, equal to beam
 //    --theta0 --mu; a sweep over b/l the same for the deflection;
-//  * a 1-D alpha2 sweep keeps its old layout (plus /axes/alpha2);
+//  * a 1-D alpha2 sweep keeps its old layout (no /axes: /alpha2 is the axis);
 //  * bad combinations are exit 2 naming the flags, and write nothing.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
