@@ -33,7 +33,8 @@
 
 int main(int argc, char** argv) {
   flexure::disable_gsl_abort();
-  flexure::io::disable_hdf5_error_printing();
+  // HDF5 is initialised by the first file opened (hdf5_file.h), not here: a command that writes
+  // no file does not pay for it (docs/performance.md "Start-up").
   // Every HDF5 file written by this run records the command line that made it.
   flexure::io::record_command_line(argc, argv);
 

@@ -1,0 +1,158 @@
+#!/usr/bin/env python3
+"""Regenerates the measured tables of docs/performance.md from one benchmark run.
+
+    python3 scripts/perf_tables.py --build build            # run the benchmarks, rewrite tables
+    python3 scripts/perf_tables.py --build build --only elliptic_bench sweep_bench
+    python3 scripts/perf_tables.py --from-json runs/        # tables from saved JSON, no run
+
+Every table between the markers
+
+    <!-- perf-table: NAME -->
+    ...
+    <!-- end perf-table -->
+
+in docs/performance.md is replaced by the medians of one run of benchmark program NAME (Google
+Benchmark, --benchmark_repetitions, medians of CPU and wall time) with, where the program has a
+reference benchmark (REFERENCES below), each row's CPU-time ratio to it measured in the same run.
+The `startup` table times whole processes: `flexure beam --alpha2 2 --json` against `true` (an
+empty process), the median of alternating runs. No number in a generated table is typed by hand.
+Standard library only; the raw JSON of each program is kept with --keep DIR.
+"""
+import argparse
+import json
+import os
+import re
+import statistics
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+DOC = os.path.join(ROOT, "docs", "performance.md")
+
+# The yardstick of each program: its other rows are divided by this one's CPU time.
+REFERENCES = {
+    "elliptic_bench": "BM_GslBrentReference",
+    "shooting_bench": None,
+    "chain_bench": None,
+}
+
+MARKER = re.compile(r"<!-- perf-table: (\S+) -->\n.*?<!-- end perf-table -->", re.S)
+
+
+def run_program(build, name, repetitions, keep):
+    exe = os.path.join(build, "benchmarks", name)
+    if not os.access(exe, os.X_OK):
+        sys.exit(f"perf_tables.py: {exe} is not built (cmake --build {build} --target {name})")
+    out = subprocess.run([exe, f"--benchmark_repetitions={repetitions}",
+                          "--benchmark_report_aggregates_only=true",
+                          "--benchmark_format=json"],
+                         capture_output=True, text=True, check=True).stdout
+    if keep:
+        os.makedirs(keep, exist_ok=True)
+        with open(os.path.join(keep, name + ".json"), "w", encoding="utf-8") as f:
+            f.write(out)
+    return json.loads(out)
+
+
+def medians(report):
+    """name -> (cpu, wall, unit) of the median aggregate."""
+    rows = {}
+    for b in report["benchmarks"]:
+        if b.get("aggregate_name", "median") != "median":
+            continue
+        rows[b.get("run_name", b["name"])] = (b["cpu_time"], b["real_time"], b["time_unit"])
+    return rows
+
+
+def to_seconds(value, unit):
+    return value * {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[unit]
+
+
+def pretty(seconds):
+    for unit, scale in (("s", 1.0), ("ms", 1e-3), ("µs", 1e-6), ("ns", 1e-9)):
+        if seconds >= scale:
+            return f"{seconds / scale:.3g} {unit}"
+    return f"{seconds / 1e-9:.3g} ns"
+
+
+def benchmark_table(name, report):
+    rows = medians(report)
+    reference = REFERENCES.get(name)
+    ref_cpu = None
+    if reference and reference in rows:
+        cpu, _, unit = rows[reference]
+        ref_cpu = to_seconds(cpu, unit)
+    context = report.get("context", {})
+    lines = [f"`{name}`, {context.get('num_cpus', '?')} CPUs, "
+             f"{context.get('date', '')[:10]}; medians of "
+             f"{report.get('repetitions', context.get('repetitions', '?'))} repetitions"
+             + (f"; ratio = CPU time / `{reference}` in the same run" if ref_cpu else "") + ":",
+             "",
+             "| benchmark | CPU (median) | wall (median) |" + (" ratio |" if ref_cpu else ""),
+             "|---|---|---|" + ("---|" if ref_cpu else "")]
+    for bench, (cpu, wall, unit) in rows.items():
+        cpu_s, wall_s = to_seconds(cpu, unit), to_seconds(wall, unit)
+        line = f"| `{bench}` | {pretty(cpu_s)} | {pretty(wall_s)} |"
+        if ref_cpu:
+            line += f" {cpu_s / ref_cpu:.3g} |"
+        lines.append(line)
+    return "\n".join(lines)
+
+
+def startup_table(build, runs):
+    flexure = os.path.join(build, "flexure")
+    commands = {"flexure beam --alpha2 2 --json": [flexure, "beam", "--alpha2", "2", "--json"],
+                "flexure --version": [flexure, "--version"],
+                "true (an empty process)": ["true"]}
+    times = {k: [] for k in commands}
+    for _ in range(runs):  # alternating, so that drift of the machine hits every command alike
+        for label, argv in commands.items():
+            start = time.perf_counter()
+            subprocess.run(argv, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
+            times[label].append(time.perf_counter() - start)
+    base = statistics.median(times["true (an empty process)"])
+    lines = [f"Whole processes, wall time, median of {runs} alternating runs:", "",
+             "| command | wall (median) | ratio to `true` |", "|---|---|---|"]
+    for label, t in times.items():
+        m = statistics.median(t)
+        lines.append(f"| `{label}` | {pretty(m)} | {m / base:.3g} |")
+    return "\n".join(lines)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--build", default=os.path.join(ROOT, "build"))
+    parser.add_argument("--repetitions", type=int, default=5)
+    parser.add_argument("--only", nargs="*", help="regenerate these tables only")
+    parser.add_argument("--from-json", help="use the JSON files saved in this directory")
+    parser.add_argument("--keep", help="save each program's JSON here")
+    parser.add_argument("--startup-runs", type=int, default=41)
+    args = parser.parse_args()
+    with open(DOC, encoding="utf-8") as f:
+        doc = f.read()
+
+    def replace(match):
+        name = match.group(1)
+        if args.only and name not in args.only:
+            return match.group(0)
+        if name == "startup":
+            table = startup_table(args.build, args.startup_runs)
+        elif args.from_json:
+            with open(os.path.join(args.from_json, name + ".json"), encoding="utf-8") as f:
+                table = benchmark_table(name, json.load(f))
+        else:
+            table = benchmark_table(name, run_program(args.build, name, args.repetitions,
+                                                      args.keep))
+        print(f"perf_tables.py: {name}", file=sys.stderr)
+        return f"<!-- perf-table: {name} -->\n{table}\n<!-- end perf-table -->"
+
+    new = MARKER.sub(replace, doc)
+    with open(DOC + ".tmp", "w", encoding="utf-8") as f:
+        f.write(new)
+    os.replace(DOC + ".tmp", DOC)
+    print(f"wrote {DOC}")
+
+
+if __name__ == "__main__":
+    main()
