@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config git
   libeigen3-dev libgsl-dev libhdf5-dev hdf5-tools libsundials-dev
+  libaec-dev zlib1g-dev  # the static libhdf5.a needs szip (libaec) and zlib at link time
   libcli11-dev nlohmann-json3-dev libfmt-dev libtomlplusplus-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-matplotlib python3-h5py python3-numpy
