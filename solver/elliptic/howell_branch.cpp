@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "flexure/solver/common/scalar_root.h"
+#include "flexure/solver/elliptic/carlson_integrals.h"
 #include "flexure/solver/elliptic/elliptic_functions.h"
 
 namespace flexure::elliptic {
