@@ -2,8 +2,9 @@
 // computed independently with mpmath (elliprf, elliprd at 40 significant digits), over the
 // arguments the elastica produces: one argument zero (complete integrals), two arguments near zero
 // (the logarithmic singularity at the separatrix, down to 1e-30), very unequal arguments and equal
-// ones. Tolerance: 1e-15 relative (a few units in the last place; GSL's implementation of the same
-// method is as close). Arguments outside the domain (negative, two zeros, NaN) are refused.
+// ones; R_F and R_D from one shared duplication sequence likewise. Tolerance: 1e-15 relative (a few
+// units in the last place; GSL's implementation of the same method is as close). Arguments outside
+// the domain (negative, two zeros, NaN) are refused.
 #include "flexure/solver/elliptic/carlson_integrals.h"
 
 #include <gtest/gtest.h>
@@ -56,6 +57,27 @@ TEST(CarlsonIntegrals, RdMatchesMpmath) {
   };
   for (const Case& c : cases) {
     EXPECT_NEAR(carlson_rd(c.x, c.y, c.z), c.value, kRelTol * c.value)
+        << "R_D(" << c.x << ", " << c.y << ", " << c.z << ")";
+  }
+}
+
+TEST(CarlsonIntegrals, BothFromOneDuplicationMatchMpmath) {
+  struct Pair {
+    double x, y, z, rf, rd;
+  };
+  const Pair cases[] = {
+      {0, 1e-30, 1, 35.92507075603057583744, 104.7752122680917275123},
+      {0, 0.5, 1, 1.854074677301371918434, 3.020584777522178495482},
+      {1, 2, 3, 0.7269459354689081985396, 0.2904602810289906442327},
+      {0.3, 1e-20, 0.9, 2.138710681146835517614, 4.046519815739458535344},
+      {2.5e-17, 0.25, 1, 2.156515637499643295991, 3.781838449724735071472},
+      {1e-05, 1e-05, 1, 6.44963966131461189841, 16.34908247476858338108},
+  };
+  for (const Pair& c : cases) {
+    const CarlsonPair both = carlson_rf_rd(c.x, c.y, c.z);
+    EXPECT_NEAR(both.rf, c.rf, kRelTol * c.rf)
+        << "R_F(" << c.x << ", " << c.y << ", " << c.z << ")";
+    EXPECT_NEAR(both.rd, c.rd, kRelTol * c.rd)
         << "R_D(" << c.x << ", " << c.y << ", " << c.z << ")";
   }
 }
