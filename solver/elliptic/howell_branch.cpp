@@ -6,15 +6,10 @@
 #include "flexure/solver/common/scalar_root.h"
 #include "flexure/solver/elliptic/carlson_integrals.h"
 #include "flexure/solver/elliptic/elliptic_functions.h"
+#include "flexure/solver/elliptic/howell_modulus.h"
 
 namespace flexure::elliptic {
 namespace {
-
-// The modulus of the branch, held as p = k'^2 and q = k^2 - s0^2 with p + q = c0^2.
-struct SplitModulus {
-  double p = 0.0;
-  double q = 0.0;
-};
 
 // p = c0^2 / (1 + e^-zeta), q = c0^2 / (1 + e^zeta): both keep full relative precision for any
 // zeta, and ln(K - F(beta)) is close to linear in zeta at both ends (slope -1/2 for small loads,
@@ -24,24 +19,6 @@ SplitModulus split_from_zeta(double zeta, double c0_sq) {
   const double big = c0_sq / (1.0 + e);
   const double small = big * e;
   return zeta >= 0.0 ? SplitModulus{big, small} : SplitModulus{small, big};
-}
-
-// Amplitude beta* with K - F(beta, k) = F(beta*, k), from tan(beta) tan(beta*) = 1/k'.
-struct ComplementAmplitude {
-  double sin2 = 0.0;    // sin^2 beta*
-  double cos2 = 0.0;    // cos^2 beta*
-  double delta2 = 0.0;  // 1 - k^2 sin^2 beta*
-  double k2 = 0.0;      // k^2
-};
-
-ComplementAmplitude complement_amplitude(SplitModulus split, double s0_sq) {
-  ComplementAmplitude c;
-  const double inverse = 1.0 / (split.q + split.p * s0_sq);
-  c.k2 = s0_sq + split.q;
-  c.sin2 = split.q * inverse;
-  c.cos2 = split.p * s0_sq * inverse;
-  c.delta2 = split.p * c.k2 * inverse;
-  return c;
 }
 
 // K(k) - F(beta, k) = u_tip - u_root: the arc length times sqrt(F) on the branch (Howell eq. 2.90).
@@ -285,12 +262,7 @@ HowellBranchSolution solve_howell_branch(double force, double psi, double x_tole
 
 HowellBranchSolution howell_branch_from_tip_angle(double psi, double theta0) {
   PendulumProblem pr = make_pendulum_problem(1.0, psi, 0.0);
-  // k = sin(chi1/2) with chi1 = chi0 + theta0; p = cos^2(chi1/2) = sin^2((psi - theta0)/2) and
-  // q = sin(theta0/2) sin(psi - theta0/2), both without cancellation.
-  const double half_gap = std::sin(0.5 * (psi - theta0));
-  SplitModulus split;
-  split.p = half_gap * half_gap;
-  split.q = std::sin(0.5 * theta0) * std::sin(psi - 0.5 * theta0);
+  const SplitModulus split = split_from_tip_angle(psi, theta0);
   // sqrt(F) = F(beta*, k) (Howell eq. 2.90) and the R_D of the tip integrals share their
   // arguments: one duplication sequence gives both.
   const ComplementAmplitude c = complement_amplitude(split, pr.s0 * pr.s0);
