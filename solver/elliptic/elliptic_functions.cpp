@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "flexure/solver/common/errors.h"
@@ -115,7 +116,9 @@ double D_over_m_at(double u, double phi, Parameter k) {
   return (u - E) / k.m;
 }
 
-JacobiFunctions jacobi_functions(double u, Parameter k) {
+namespace {
+
+JacobiFunctions gauss_transformation(double u, Parameter k, bool with_amplitude) {
   JacobiFunctions out;
   if (k.m <= 0.0) {
     out = {std::sin(u), std::cos(u), 1.0, u};
@@ -173,9 +176,16 @@ JacobiFunctions jacobi_functions(double u, Parameter k) {
   out.sn = parity * sn_r;
   out.cn = parity * cn_r;
   out.dn = dn;
-  out.am = turns * kPi + std::atan2(sn_r, cn_r);
+  out.am = with_amplitude ? turns * kPi + std::atan2(sn_r, cn_r)
+                          : std::numeric_limits<double>::quiet_NaN();
   return out;
 }
+
+}  // namespace
+
+JacobiFunctions jacobi_functions(double u, Parameter k) { return gauss_transformation(u, k, true); }
+
+JacobiFunctions jacobi_sn_cn_dn(double u, Parameter k) { return gauss_transformation(u, k, false); }
 
 double jacobi_amplitude(double u, Parameter k) { return jacobi_functions(u, k).am; }
 

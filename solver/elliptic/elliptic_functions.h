@@ -65,6 +65,9 @@ struct JacobiFunctions {
   double am = 0.0;  // continuous in u
 };
 JacobiFunctions jacobi_functions(double u, Parameter k);
+// The same without the amplitude (am is left NaN), for callers that need only sn, cn and dn: the
+// amplitude costs an atan2, a fifth of the whole.
+JacobiFunctions jacobi_sn_cn_dn(double u, Parameter k);
 
 // delta(phi) = sqrt(1 - m sin^2 phi) = dn(u) at phi = am(u), formed as sqrt(mc + m cos^2 phi).
 double delta_amplitude(double phi, Parameter k);
