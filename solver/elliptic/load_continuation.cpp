@@ -87,7 +87,9 @@ Corrected correct(PathResidual& g,
                   double tp,
                   double lp,
                   bool fixed_lambda,
-                  const ContinuationOptions& options) {
+                  const ContinuationOptions& options,
+                  double jacobian_drift_t = 0.0,
+                  double jacobian_drift_l = 0.0) {
   Corrected out;
   PathPoint p;
   p.chart = from.chart;
@@ -95,7 +97,8 @@ Corrected correct(PathResidual& g,
   p.lambda = lp;
   p.g = g(p.chart, tp, lp);
   if (!std::isfinite(p.g)) return out;
-  double j_t = from.g_t, j_l = from.g_lambda;
+  // The Jacobian at the predictor: the start point's, moved on by the drift of the last step.
+  double j_t = from.g_t + jacobian_drift_t, j_l = from.g_lambda + jacobian_drift_l;
   auto broyden = [&](double dt, double dl, double dg) {
     const double d2 = dt * dt + dl * dl;
     if (!(d2 > 0.0)) return;
@@ -122,13 +125,29 @@ Corrected correct(PathResidual& g,
     out.iterations = it + 1;
     if (it == 0) out.first_correction = size;
     if (!std::isfinite(size)) return out;
-    if (size <= options.corrector_tolerance * std::max(1.0, std::fabs(p.t))) {
+    const double tolerance = options.corrector_tolerance * std::max(1.0, std::fabs(p.t));
+    if (size <= tolerance) {
       if (!differentiate(g, p)) return out;
       out.ok = true;
       out.point = p;
       return out;
     }
     if (it > 0 && size > 0.5 * previous) return out;  // not contracting: too far from the path
+    // The iteration converges superlinearly, so the correction after this one is smaller than
+    // this one by at least the last ratio: once that predicts it below the tolerance, the
+    // corrected point is accepted without evaluating it. Its Jacobian is taken at p, a correction
+    // away, and its residual is the linear prediction, zero. (At full load the residual is
+    // evaluated, as the polish starts from it.)
+    if (!fixed_lambda && it > 0 && size * (size / previous) <= tolerance) {
+      if (!differentiate(g, p)) return out;
+      p.t += dt;
+      p.lambda += dl;
+      p.g = 0.0;
+      if (!(p.lambda > 0.0)) return out;
+      out.ok = true;
+      out.point = p;
+      return out;
+    }
     previous = size;
     const double g_before = p.g;
     p.t += dt;
@@ -242,6 +261,7 @@ ContinuationSolution solve_by_continuation(double force,
   const long max_evaluations = options.max_evaluations + static_cast<long>(100.0 * expected_steps);
   std::string failure;
   double bend_t = 0.0, bend_l = 0.0;
+  double drift_t = 0.0, drift_l = 0.0;  // change of the Jacobian per unit arclength
   while (true) {
     if (attempts >= max_attempts || g.evaluations >= max_evaluations) {
       failure = fmt::format("the continuation budget ({} steps, {} residual evaluations) ran out",
@@ -265,7 +285,7 @@ ContinuationSolution solve_by_continuation(double force,
     }
     const double tp = y.t + step * tau_t + 0.5 * step * step * bend_t;
     const double lp = crosses ? 1.0 : y.lambda + step * tau_l + 0.5 * step * step * bend_l;
-    const Corrected c = correct(g, y, tp, lp, crosses, options);
+    const Corrected c = correct(g, y, tp, lp, crosses, options, drift_t * step, drift_l * step);
     bool accepted = c.ok;
     if (accepted) {
       const PathPoint& p = c.point;
@@ -312,6 +332,8 @@ ContinuationSolution solve_by_continuation(double force,
       ++out.limit_points;
     }
     ++out.steps;
+    drift_t = (p.g_t - y.g_t) / step;
+    drift_l = (p.g_lambda - y.g_lambda) / step;
     bend_t = (p.tangent_t() - tau_t) / step;
     bend_l = (p.tangent_lambda() - tau_l) / step;
     y = p;
@@ -351,6 +373,7 @@ ContinuationSolution solve_by_continuation(double force,
           y = moved;
           h = options.initial_step;
           bend_t = bend_l = 0.0;  // the bend is not comparable across charts
+          drift_t = drift_l = 0.0;
         }
       }
     }
