@@ -133,6 +133,7 @@ JacobiFunctions gauss_transformation(double u, Parameter k, bool with_amplitude)
   // AGM from a_0 = 1, b_0 = k' (DLMF 22.20.1); a[i] and b[i] are kept for the way back.
   double a[kMaxAgmLevels + 1];
   double b[kMaxAgmLevels + 1];
+  double inverse_a[kMaxAgmLevels + 1];
   int levels = 0;
   double mean = 1.0;
   {
@@ -140,6 +141,7 @@ JacobiFunctions gauss_transformation(double u, Parameter k, bool with_amplitude)
     for (int i = 0; i <= kMaxAgmLevels; ++i) {
       levels = i;
       a[i] = an;
+      inverse_a[i] = 1.0 / an;  // off the critical path of the recurrence below
       b[i] = std::sqrt(bn2);
       mean = 0.5 * (an + b[i]);
       if (std::fabs(an - b[i]) <= kAgmTolerance * an) break;
@@ -164,7 +166,7 @@ JacobiFunctions gauss_transformation(double u, Parameter k, bool with_amplitude)
       ratio *= c;
       c *= dn;
       dn = (b[i] + ratio) / (a[i] + ratio);
-      ratio = c / a[i];
+      ratio = c * inverse_a[i];
     }
     const double s = 1.0 / std::sqrt(c * c + 1.0);
     sn_r = sin_w >= 0.0 ? s : -s;
