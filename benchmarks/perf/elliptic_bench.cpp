@@ -1,9 +1,17 @@
 // Elliptic solver timings (Google Benchmark). The numbers quoted in docs/performance.md come from
 //   build/benchmarks/elliptic_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only
 // Each benchmark cycles through a set of loads so that no result is reused between iterations.
+// BM_GslBrentReference is the yardstick: a straightforward solve of the same problem as
+// BM_ForwardVerticalLoad with GSL's elliptic integrals and GSL's Brent root finder. The machine is
+// shared, so docs/performance.md quotes each path as a ratio to it measured in the same run.
 #include <benchmark/benchmark.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
+#include <gsl/gsl_sf_ellint.h>
 
 #include <cmath>
+#include <numbers>
+#include <random>
 #include <vector>
 
 #include "flexure/solver/elliptic/elliptic_solver.h"
@@ -13,16 +21,71 @@ namespace {
 using flexure::EllipticSolver;
 using flexure::EndLoad;
 
+constexpr double kPi = std::numbers::pi;
+
 // One forward solve, mu = 0: Howell's cantilever, n = 0, alpha2 between 0.5 and 20.
+double vertical_load(int i) { return 0.5 + 19.5 * (i % 997) / 997.0; }
+
 void BM_ForwardVerticalLoad(benchmark::State& state) {
   const EllipticSolver solver;
   int i = 0;
   for (auto _ : state) {
-    const double alpha2 = 0.5 + 19.5 * (i++ % 997) / 997.0;
-    benchmark::DoNotOptimize(solver.solve(EndLoad::howell(0.0, alpha2)).tip);
+    benchmark::DoNotOptimize(solver.solve(EndLoad::howell(0.0, vertical_load(i++))).tip);
   }
 }
 BENCHMARK(BM_ForwardVerticalLoad);
+
+// The reference: Howell eq. 2.90 for n = 0, alpha = K(t) - F(gamma, t) with lambda = sin(theta0),
+// t = sqrt((1 + lambda)/2), gamma = asin(sqrt(1/(1 + lambda))) (eqs. 2.84, 2.91, 2.92), solved
+// for theta0 by gsl_root_fsolver_brent to 1e-13 rad, then the tip by eqs. 2.96 and 2.98. The same
+// loads as BM_ForwardVerticalLoad.
+struct HowellN0 {
+  double alpha = 0.0;
+};
+
+double howell_n0_residual(double theta0, void* params) {
+  const double alpha = static_cast<HowellN0*>(params)->alpha;
+  const double lambda = std::sin(theta0);
+  const double t = std::sqrt(0.5 * (1.0 + lambda));
+  const double gamma = std::asin(std::sqrt(1.0 / (1.0 + lambda)));
+  return gsl_sf_ellint_Kcomp(t, GSL_PREC_DOUBLE) - gsl_sf_ellint_F(gamma, t, GSL_PREC_DOUBLE) -
+         alpha;
+}
+
+void BM_GslBrentReference(benchmark::State& state) {
+  gsl_set_error_handler_off();
+  gsl_root_fsolver* brent = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+  HowellN0 params;
+  gsl_function f{&howell_n0_residual, &params};
+  int i = 0;
+  for (auto _ : state) {
+    params.alpha = std::sqrt(vertical_load(i++));
+    // theta0 lies in (0, pi/2): at 0 the residual is -alpha, near pi/2 K(t) grows without bound.
+    gsl_root_fsolver_set(brent, &f, 0.0, 0.5 * kPi - 1e-6);
+    double lo = 0.0, hi = 0.5 * kPi;
+    for (int it = 0; it < 100; ++it) {
+      gsl_root_fsolver_iterate(brent);
+      lo = gsl_root_fsolver_x_lower(brent);
+      hi = gsl_root_fsolver_x_upper(brent);
+      if (gsl_root_test_interval(lo, hi, 1e-13, 0.0) == GSL_SUCCESS) break;
+    }
+    const double theta0 = gsl_root_fsolver_root(brent);
+    const double lambda = std::sin(theta0);
+    const double t = std::sqrt(0.5 * (1.0 + lambda));
+    const double gamma = std::asin(std::sqrt(1.0 / (1.0 + lambda)));
+    const double span =
+        gsl_sf_ellint_Kcomp(t, GSL_PREC_DOUBLE) - gsl_sf_ellint_F(gamma, t, GSL_PREC_DOUBLE);
+    const double bracket = span + 2.0 * (gsl_sf_ellint_E(gamma, t, GSL_PREC_DOUBLE) -
+                                         gsl_sf_ellint_Ecomp(t, GSL_PREC_DOUBLE));
+    const double b_over_l = bracket / params.alpha;  // 2.96
+    const double a_over_l =
+        std::sqrt(2.0 * (1.0 + lambda)) * std::cos(gamma) / params.alpha;  // 2.98
+    benchmark::DoNotOptimize(a_over_l);
+    benchmark::DoNotOptimize(b_over_l);
+  }
+  gsl_root_fsolver_free(brent);
+}
+BENCHMARK(BM_GslBrentReference);
 
 // One forward solve, mu = 0, across load ratios n in [-5, 10] and alpha2 in [0.5, 20].
 void BM_ForwardAnyLoadRatio(benchmark::State& state) {
@@ -30,13 +93,12 @@ void BM_ForwardAnyLoadRatio(benchmark::State& state) {
   int i = 0;
   for (auto _ : state) {
     const double n = -5.0 + 15.0 * (i % 31) / 30.0;
-    const double alpha2 = 0.5 + 19.5 * (i++ % 997) / 997.0;
-    benchmark::DoNotOptimize(solver.solve(EndLoad::howell(n, alpha2)).tip);
+    benchmark::DoNotOptimize(solver.solve(EndLoad::howell(n, vertical_load(i++))).tip);
   }
 }
 BENCHMARK(BM_ForwardAnyLoadRatio);
 
-// Inverse: alpha2 from the tip angle (explicit for mu = 0).
+// Inverse: alpha2 from the tip angle (explicit for mu = 0), n = 0.
 void BM_InverseFromTipAngle(benchmark::State& state) {
   const EllipticSolver solver;
   int i = 0;
@@ -47,7 +109,19 @@ void BM_InverseFromTipAngle(benchmark::State& state) {
 }
 BENCHMARK(BM_InverseFromTipAngle);
 
-// Combined force and end moment: continuation along proportional loading.
+// Inverse: alpha2 from the tip deflection b/l in [0.02, 0.8], n = 0, mu = 0.
+void BM_InverseFromDeflection(benchmark::State& state) {
+  const EllipticSolver solver;
+  int i = 0;
+  for (auto _ : state) {
+    const double b_over_l = 0.02 + 0.78 * (i++ % 997) / 997.0;
+    benchmark::DoNotOptimize(solver.solve_for_deflection(0.0, b_over_l).load);
+  }
+}
+BENCHMARK(BM_InverseFromDeflection);
+
+// Combined force and end moment: continuation along proportional loading, n = 1, alpha2 = 5,
+// mu in [-2, 2].
 void BM_ForwardWithEndMoment(benchmark::State& state) {
   const EllipticSolver solver;
   int i = 0;
@@ -57,6 +131,32 @@ void BM_ForwardWithEndMoment(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_ForwardWithEndMoment);
+
+// Force and end moment on the goal grid of issue 14: 1000 seeded loads, n in [-5, 10], alpha2 in
+// [-20, 20], mu in [-2 pi, 2 pi] (the grid of tests/solver/elliptic_branch_grid_test.cpp, where
+// every answer is checked against the shooting solver's continuation).
+std::vector<EndLoad> moment_grid() {
+  std::mt19937_64 rng(20261214u);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<EndLoad> loads;
+  for (int i = 0; i < 1000; ++i) {
+    const double n = -5.0 + 15.0 * unit(rng);
+    const double alpha2 = -20.0 + 40.0 * unit(rng);
+    const double mu = -2.0 * kPi + 4.0 * kPi * unit(rng);
+    loads.push_back(EndLoad::howell(n, alpha2, mu));
+  }
+  return loads;
+}
+
+void BM_ForwardWithEndMomentGrid(benchmark::State& state) {
+  const EllipticSolver solver;
+  const std::vector<EndLoad> loads = moment_grid();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(solver.solve(loads[i++ % loads.size()]).tip);
+  }
+}
+BENCHMARK(BM_ForwardWithEndMomentGrid);
 
 // Deflected shape at 101 points after a solve.
 void BM_Shape101Points(benchmark::State& state) {

@@ -124,9 +124,8 @@ BackwardIntegration integrate_from_tip(const PendulumProblem& problem, const Tip
     e.u_tip = turns == 0 ? incomplete_F(0, sin_phi, cos_phi, k)
                          : incomplete_F(turns, -sin_phi, -cos_phi, k);
     e.u_root = e.u_tip - sqrtF;
-    const double phi_root = jacobi_amplitude(e.u_root, k);
-    out.chi_root = 2.0 * kPi * e.winding +
-                   2.0 * std::atan2(kk * std::sin(phi_root), delta_amplitude(phi_root, k));
+    const JacobiFunctions root = jacobi_sn_cn_dn(e.u_root, k);
+    out.chi_root = 2.0 * kPi * e.winding + 2.0 * std::atan2(kk * root.sn, root.dn);
   } else {
     // Family B: chi = 2 am(v), chi' = 2 sigma q dn(v), v = sigma q s + v0, q^2 = (H + F)/2.
     e.family = ElasticaFamily::kNonInflectional;

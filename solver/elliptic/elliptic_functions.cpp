@@ -1,80 +1,70 @@
 #include "flexure/solver/elliptic/elliptic_functions.h"
 
 #include <fmt/format.h>
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_sf_ellint.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "flexure/solver/common/errors.h"
-#include "flexure/solver/common/gsl_guard.h"
-#include "flexure/solver/common/scalar_root.h"
+#include "flexure/solver/elliptic/carlson_integrals.h"
 
 namespace flexure::elliptic {
 namespace {
 
-struct GslHandlerOff {
-  GslHandlerOff() { disable_gsl_abort(); }
-};
-const GslHandlerOff gsl_handler_off;
+constexpr double kPi = std::numbers::pi;
 
-// Below this complementary parameter the AGM amplitude is refined (jacobi_amplitude): the first
-// back-substitution of the AGM takes asin of an argument within about 2 sqrt(mc) of 1 and loses
-// up to half the digits (an amplitude error of 2e-9 at mc = 1e-37, u = 43).
-constexpr double kAmplitudeRefinement = 1e-4;
+// The AGM converges quadratically: once |a - b| <= 1e-8 a, the mean (a + b)/2 differs from the
+// limit by (a - b)^2/(16 a) <= 1e-17 a.
+constexpr double kAgmTolerance = 1e-8;
+constexpr int kMaxAgmLevels = 16;  // mc >= 1e-300 needs 12
 
-// The inverse problem is well conditioned, d phi/du = dn(u) <= 1, and F(phi|m) is increasing in
-// phi, so the root of F(phi|m) = u bracketed around the AGM value and refined by Brent's method
-// has full precision. (Plain Newton diverges: near phi = pi/2 F grows like ln(1/cos phi).)
-double refine_amplitude(double phi, double u, Parameter k) {
-  auto miss = [&](double p) { return incomplete_F(p, k) - u; };
-  double width = 1e-7 * std::max(1.0, std::fabs(phi));
-  double lo = phi - width, hi = phi + width;
-  double f_lo = miss(lo), f_hi = miss(hi);
-  for (int i = 0; i < 30 && !(f_lo <= 0.0 && f_hi >= 0.0); ++i) {
-    width *= 8.0;
-    if (f_lo > 0.0) {
-      lo -= width;
-      f_lo = miss(lo);
-    }
-    if (f_hi < 0.0) {
-      hi += width;
-      f_hi = miss(hi);
-    }
+void require_below_separatrix(Parameter k, const char* what) {
+  if (!(k.mc > 0.0)) {
+    throw NoConvergence(
+        fmt::format("{} is infinite at m = 1 (got m = {}, 1 - m = {})", what, k.m, k.mc));
   }
-  if (!(f_lo <= 0.0 && f_hi >= 0.0)) return phi;
-  ScalarRootOptions options;
-  options.x_tolerance = 0.0;  // Brent's own 2 eps |x| term: the best double
-  const ScalarRootResult root = brent_root(miss, lo, hi, f_lo, f_hi, options);
-  return root.converged() ? root.x : phi;
+}
+
+// M(1, k') = pi / (2 K), DLMF 19.8.5.
+double agm_of_complement(double mc) {
+  double a = 1.0, b = std::sqrt(mc);
+  for (int i = 0; i < kMaxAgmLevels && std::fabs(a - b) > kAgmTolerance * a; ++i) {
+    const double next = 0.5 * (a + b);
+    b = std::sqrt(a * b);
+    a = next;
+  }
+  return 0.5 * (a + b);
 }
 
 }  // namespace
 
-double carlson_rf(double x, double y, double z) {
-  gsl_sf_result r;
-  const int status = gsl_sf_ellint_RF_e(x, y, z, GSL_PREC_DOUBLE, &r);
-  if (status != GSL_SUCCESS) {
-    throw NoConvergence(
-        fmt::format("GSL gsl_sf_ellint_RF({}, {}, {}) failed: {}", x, y, z, gsl_strerror(status)));
-  }
-  return r.val;
+double complete_K(Parameter k) {
+  require_below_separatrix(k, "K(m)");
+  return 0.5 * kPi / agm_of_complement(k.mc);
 }
 
-double carlson_rd(double x, double y, double z) {
-  gsl_sf_result r;
-  const int status = gsl_sf_ellint_RD_e(x, y, z, GSL_PREC_DOUBLE, &r);
-  if (status != GSL_SUCCESS) {
-    throw NoConvergence(
-        fmt::format("GSL gsl_sf_ellint_RD({}, {}, {}) failed: {}", x, y, z, gsl_strerror(status)));
+double complete_K_minus_E_over_m(Parameter k) {
+  require_below_separatrix(k, "K(m) - E(m)");
+  // K - E = K sum_{n>=0} 2^(n-1) c_n^2 with c_0^2 = m (DLMF 19.8.2; Howell eq. F.10). Each term is
+  // carried divided by m, and c_{n+1} = c_n^2 / (4 a_{n+1}) replaces (a_n - b_n)/2, so nothing
+  // cancels and the limit m -> 0 (pi/4) is exact.
+  double a = 1.0, b = std::sqrt(k.mc);
+  double c2_over_m = 1.0;  // c_n^2 / m
+  double sum = 0.5;        // the n = 0 term
+  double weight = 0.5;     // 2^(n-1)
+  for (int i = 0; i < kMaxAgmLevels; ++i) {
+    const double next = 0.5 * (a + b);
+    b = std::sqrt(a * b);
+    a = next;
+    c2_over_m *= c2_over_m * k.m / (16.0 * a * a);
+    weight *= 2.0;
+    const double term = weight * c2_over_m;
+    sum += term;
+    if (term <= 1e-17 * sum && std::fabs(a - b) <= kAgmTolerance * a) break;
   }
-  return r.val;
+  return sum * 0.5 * kPi / (0.5 * (a + b));
 }
-
-double complete_K(Parameter k) { return carlson_rf(0.0, k.mc, 1.0); }
-
-double complete_K_minus_E_over_m(Parameter k) { return carlson_rd(0.0, k.mc, 1.0) / 3.0; }
 
 double delta_amplitude(double phi, Parameter k) {
   const double c = std::cos(phi);
@@ -83,8 +73,8 @@ double delta_amplitude(double phi, Parameter k) {
 
 IncompleteIntegrals incomplete_integrals(double phi, Parameter k) {
   // Reduce to |phi_r| <= pi/2 and add whole half-periods (Howell eqs. F.17-F.18).
-  const double j = std::nearbyint(phi / std::numbers::pi);
-  const double phi_r = phi - j * std::numbers::pi;
+  const double j = std::nearbyint(phi / kPi);
+  const double phi_r = phi - j * kPi;
   const double s = std::sin(phi_r);
   const double c = std::cos(phi_r);
   const double delta2 = k.mc + k.m * c * c;
@@ -101,8 +91,8 @@ IncompleteIntegrals incomplete_integrals(double phi, Parameter k) {
 }
 
 double incomplete_F(double phi, Parameter k) {
-  const double j = std::nearbyint(phi / std::numbers::pi);
-  const double phi_r = phi - j * std::numbers::pi;
+  const double j = std::nearbyint(phi / kPi);
+  const double phi_r = phi - j * kPi;
   const double s = std::sin(phi_r);
   const double c = std::cos(phi_r);
   double F = (s != 0.0) ? s * carlson_rf(c * c, k.mc + k.m * c * c, 1.0) : 0.0;
@@ -126,29 +116,79 @@ double D_over_m_at(double u, double phi, Parameter k) {
   return (u - E) / k.m;
 }
 
-double jacobi_amplitude(double u, Parameter k) {
-  if (k.m <= 0.0) return u;
-  if (k.mc <= 0.0) return 2.0 * std::atan(std::tanh(0.5 * u));  // m = 1: gudermannian
-  // Descending AGM (A&S 16.4.2-16.4.3): a_{n+1} = (a_n + b_n)/2, b_{n+1} = sqrt(a_n b_n),
-  // c_{n+1} = (a_n - b_n)/2; phi_N = 2^N a_N u; phi_{n-1} = (phi_n + asin(c_n/a_n sin phi_n))/2.
-  constexpr int kMaxLevels = 40;
-  double a[kMaxLevels + 1];
-  double c[kMaxLevels + 1];
-  a[0] = 1.0;
-  c[0] = std::sqrt(k.m);
-  double b = std::sqrt(k.mc);
-  int n = 0;
-  // Stop once c_n is at round-off: the next term, c_n^2 / (4 a_n), is then far below it.
-  while (n < kMaxLevels && std::fabs(c[n]) > 1e-15 * a[n]) {
-    a[n + 1] = 0.5 * (a[n] + b);
-    c[n + 1] = 0.5 * (a[n] - b);
-    b = std::sqrt(a[n] * b);
-    ++n;
+namespace {
+
+JacobiFunctions gauss_transformation(double u, Parameter k, bool with_amplitude) {
+  JacobiFunctions out;
+  if (k.m <= 0.0) {
+    out = {std::sin(u), std::cos(u), 1.0, u};
+    return out;
   }
-  double phi = std::ldexp(a[n] * u, n);
-  for (int i = n; i > 0; --i) phi = 0.5 * (phi + std::asin(c[i] / a[i] * std::sin(phi)));
-  if (k.mc < kAmplitudeRefinement) phi = refine_amplitude(phi, u, k);
-  return phi;
+  if (k.mc <= 0.0) {
+    // m = 1: sn = tanh, cn = dn = sech, am = the Gudermannian (DLMF 22.5.8).
+    const double sech = 1.0 / std::cosh(u);
+    out = {std::tanh(u), sech, sech, 2.0 * std::atan(std::tanh(0.5 * u))};
+    return out;
+  }
+  // AGM from a_0 = 1, b_0 = k' (DLMF 22.20.1); a[i] and b[i] are kept for the way back.
+  double a[kMaxAgmLevels + 1];
+  double b[kMaxAgmLevels + 1];
+  double inverse_a[kMaxAgmLevels + 1];
+  int levels = 0;
+  double mean = 1.0;
+  {
+    double an = 1.0, bn2 = k.mc;  // a_n and b_n^2
+    for (int i = 0; i <= kMaxAgmLevels; ++i) {
+      levels = i;
+      a[i] = an;
+      inverse_a[i] = 1.0 / an;  // off the critical path of the recurrence below
+      b[i] = std::sqrt(bn2);
+      mean = 0.5 * (an + b[i]);
+      if (std::fabs(an - b[i]) <= kAgmTolerance * an) break;
+      bn2 = an * b[i];
+      an = mean;
+    }
+  }
+  // At the top the parameter is 0 and the functions are the circular ones of v = M u = pi u/(2K);
+  // the recurrence (Bulirsch 1965, procedure sncndn) carries the ratio cn/sn and dn back down. It
+  // depends on v only through cot v, so v is reduced by whole half-turns j (am(u + 2K) = am(u) +
+  // pi) and only the sign of sn follows sin v.
+  const double v = mean * u;
+  const double turns = std::nearbyint(v / kPi);
+  const double w = v - turns * kPi;  // |w| <= pi/2, cos w >= 0
+  const double sin_w = std::sin(w);
+  const double cos_w = std::cos(w);
+  double sn_r = sin_w, cn_r = cos_w, dn = 1.0;
+  if (sin_w != 0.0) {
+    double ratio = cos_w / sin_w;  // cn/sn at the top
+    double c = mean * ratio;
+    for (int i = levels; i >= 0; --i) {
+      ratio *= c;
+      c *= dn;
+      dn = (b[i] + ratio) / (a[i] + ratio);
+      ratio = c * inverse_a[i];
+    }
+    const double s = 1.0 / std::sqrt(c * c + 1.0);
+    sn_r = sin_w >= 0.0 ? s : -s;
+    cn_r = c * sn_r;
+  }
+  // sn(u) = (-1)^j sn(r), cn(u) = (-1)^j cn(r) for u = r + 2jK; am(r) = atan2(sn(r), cn(r)) lies
+  // in [-pi/2, pi/2] because cn(r) >= 0.
+  const double parity = std::fmod(turns, 2.0) == 0.0 ? 1.0 : -1.0;
+  out.sn = parity * sn_r;
+  out.cn = parity * cn_r;
+  out.dn = dn;
+  out.am = with_amplitude ? turns * kPi + std::atan2(sn_r, cn_r)
+                          : std::numeric_limits<double>::quiet_NaN();
+  return out;
 }
+
+}  // namespace
+
+JacobiFunctions jacobi_functions(double u, Parameter k) { return gauss_transformation(u, k, true); }
+
+JacobiFunctions jacobi_sn_cn_dn(double u, Parameter k) { return gauss_transformation(u, k, false); }
+
+double jacobi_amplitude(double u, Parameter k) { return jacobi_functions(u, k).am; }
 
 }  // namespace flexure::elliptic

@@ -11,6 +11,7 @@
 #include "flexure/solver/common/scalar_root.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/elliptic/howell_branch.h"
+#include "flexure/solver/elliptic/howell_deflection.h"
 
 namespace flexure {
 namespace {
@@ -136,6 +137,27 @@ EllipticResult search_alpha2(const EllipticSolver& solver,
   return missed;
 }
 
+// mu = 0: the smallest load reaching b/l is the first tip angle on the branch where b(theta0)
+// reaches it (howell_deflection.h); b/l has the sign of alpha2 there (the tip angle stays between
+// 0 and the force angle), so alpha2 < 0 is the mirror image with n -> -n. Empty when the fast
+// search cannot settle the target (beyond the peak of b, beyond the force range, near the
+// separatrix): the caller then scans the load as for any other inverse problem, and reports
+// unreachable targets.
+std::optional<EllipticResult> deflection_on_the_branch(double load_ratio_n, double b_over_l) {
+  const bool negative = b_over_l < 0.0;
+  const double psi = negative ? force_angle(-load_ratio_n) : force_angle(load_ratio_n);
+  const elliptic::DeflectionInverse found =
+      elliptic::first_tip_angle_for_deflection(psi, std::fabs(b_over_l), EllipticSolver::kMaxForce);
+  if (!found.found) return std::nullopt;
+  EllipticResult r = result_from_tip_angle(load_ratio_n, negative ? -found.theta0 : found.theta0);
+  if (!(r.converged() && r.parameters.force <= EllipticSolver::kMaxForce)) return std::nullopt;
+  r.iterations = found.evaluations;
+  const double reached = r.tip.b_over_l;
+  r = verified(std::move(r), reached, b_over_l, "tip deflection b/l");
+  if (!r.converged()) return std::nullopt;
+  return r;
+}
+
 }  // namespace
 
 EllipticResult EllipticSolver::solve_for_tip_angle(double load_ratio_n,
@@ -181,6 +203,10 @@ EllipticResult EllipticSolver::solve_for_deflection(double load_ratio_n,
         "tip deflection b/l = {:.6g} is outside (-1, 1): an inextensible beam of length l cannot "
         "reach it",
         b_over_l));
+  }
+  if (mu == 0.0 && b_over_l != 0.0) {
+    std::optional<EllipticResult> fast = deflection_on_the_branch(load_ratio_n, b_over_l);
+    if (fast) return std::move(*fast);
   }
   auto deflection = [](const EllipticResult& r) { return r.tip.b_over_l; };
   // b/l is not monotonic in the load (for compressive n the tip curls past the top), and under

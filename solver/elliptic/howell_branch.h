@@ -17,7 +17,7 @@
 namespace flexure::elliptic {
 
 struct HowellBranchSolution : SolveStatus {
-  // residual: ln(K - F(beta)) - ln(sqrt(F)) at the solution
+  // residual: (G - sqrt F) + ln(G / sqrt F) at the last evaluated point, G = K - F(beta)
   ElasticaParameters parameters;
   TipPose tip;  // normalised frame (force angle psi in (0, pi))
   double root_moment = 0.0;

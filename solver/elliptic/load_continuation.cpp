@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "flexure/solver/elliptic/tip_chart.h"
@@ -13,12 +14,19 @@ namespace {
 // of a tip chart (tip_chart.h). NaN outside the chart.
 class PathResidual {
  public:
-  PathResidual(double force, double psi, double mu) : force_(force), psi_(psi), mu_(mu) {}
+  PathResidual(double force, double psi, double mu)
+      : force_(force), mu_(mu), full_(make_pendulum_problem(force, psi, mu)) {}
+  // The problem at load factor lambda; the force angle and its half-angle functions do not change
+  // along the path.
   PendulumProblem problem(double lambda) const {
-    return make_pendulum_problem(lambda * force_, psi_, lambda * mu_);
+    PendulumProblem p = full_;
+    p.force = lambda * force_;
+    p.mu = lambda * mu_;
+    return p;
   }
   double operator()(const TipChart& chart, double x, double lambda) {
     ++evaluations;
+    if (!(lambda > 0.0)) return std::nan("");  // a predictor behind the unloaded beam
     const PendulumProblem p = problem(lambda);
     TipState state;
     if (!tip_state_in_chart(p, chart, x, state)) return std::nan("");
@@ -27,7 +35,8 @@ class PathResidual {
   long evaluations = 0;
 
  private:
-  double force_, psi_, mu_;
+  double force_, mu_;
+  PendulumProblem full_;
 };
 
 // A point of the path in chart coordinates (x, lambda) with the residual's partial derivatives.
@@ -41,8 +50,11 @@ struct PathPoint {
   // Unit tangent sigma (-g_lambda, g_x)/|.|, sigma the chart's orientation: the direction of the
   // path never depends on the step, and dlambda/ds = sigma g_x/|.| has the same meaning in every
   // chart.
-  double tangent_t() const { return -chart.orientation() * g_lambda / std::hypot(g_t, g_lambda); }
-  double tangent_lambda() const { return chart.orientation() * g_t / std::hypot(g_t, g_lambda); }
+  double tangent_t() const { return -chart.orientation() * g_lambda / norm(); }
+  double tangent_lambda() const { return chart.orientation() * g_t / norm(); }
+  // |(g_x, g_lambda)|; the derivatives are far from overflow, so no hypot (a third of a residual's
+  // cost at the rate tangents are taken).
+  double norm() const { return std::sqrt(g_t * g_t + g_lambda * g_lambda); }
 };
 
 // Forward differences: the residual costs about a microsecond, and the Jacobian only steers the
@@ -55,12 +67,19 @@ bool differentiate(PathResidual& g, PathPoint& p) {
   return std::isfinite(p.g_t) && std::isfinite(p.g_lambda) && (p.g_t != 0.0 || p.g_lambda != 0.0);
 }
 
-// Keller's pseudo-arclength corrector from the predictor (tp, lp): Newton (chord) on
+// Keller's pseudo-arclength corrector from the predictor (tp, lp): quasi-Newton on
 // g(t, lambda) = 0, tangent . ((t, lambda) - predictor) = 0, or with lambda fixed at the predictor
-// when `fixed_lambda`. Converges only if every correction is at most half the previous one.
+// when `fixed_lambda`. The Jacobian is the one of the point the step starts from, updated by
+// Broyden's rank-one formula after every evaluation (first along the predictor step, then along
+// each correction), so no derivative is evaluated before the corrector has converged. It
+// converges only if every correction is at most half the previous one, and only while the
+// updated Jacobian keeps the path's orientation (the sign of the tangent determinant). A point is
+// accepted once the correction it asks for is below the corrector tolerance; its Jacobian is then
+// evaluated afresh (forward differences) to orient the new tangent, whose turn the caller checks.
 struct Corrected {
   bool ok = false;
   int iterations = 0;
+  double first_correction = 0.0;  // the predictor's distance from the path, about
   PathPoint point;
 };
 Corrected correct(PathResidual& g,
@@ -68,47 +87,100 @@ Corrected correct(PathResidual& g,
                   double tp,
                   double lp,
                   bool fixed_lambda,
-                  const ContinuationOptions& options) {
+                  const ContinuationOptions& options,
+                  double jacobian_drift_t = 0.0,
+                  double jacobian_drift_l = 0.0) {
   Corrected out;
   PathPoint p;
   p.chart = from.chart;
   p.t = tp;
   p.lambda = lp;
   p.g = g(p.chart, tp, lp);
-  if (!std::isfinite(p.g) || !differentiate(g, p)) return out;
-  const double g_t = p.g_t, g_l = p.g_lambda;
+  if (!std::isfinite(p.g)) return out;
+  // The Jacobian at the predictor: the start point's, moved on by the drift of the last step.
+  double j_t = from.g_t + jacobian_drift_t, j_l = from.g_lambda + jacobian_drift_l;
+  auto broyden = [&](double dt, double dl, double dg) {
+    const double d2 = dt * dt + dl * dl;
+    if (!(d2 > 0.0)) return;
+    const double r = (dg - (j_t * dt + j_l * dl)) / d2;
+    j_t += r * dt;
+    j_l += r * dl;
+  };
+  broyden(tp - from.t, lp - from.lambda, p.g - from.g);
   const double tau_t = from.tangent_t(), tau_l = from.tangent_lambda();
-  // Orientation at the predictor must agree with the path's (sign of the tangent determinant).
-  const double det = fixed_lambda ? g_t : g_t * tau_l - g_l * tau_t;
-  if (!(fixed_lambda ? g_t * from.g_t > 0.0 : det * from.chart.orientation() > 0.0)) return out;
   double previous = HUGE_VAL;
   for (int it = 0; it < options.max_corrector_iterations; ++it) {
-    if (it > 0) p.g = g(p.chart, p.t, p.lambda);
-    if (!std::isfinite(p.g)) return out;
+    // Orientation at this point must agree with the path's (sign of the tangent determinant).
+    const double det = fixed_lambda ? j_t : j_t * tau_l - j_l * tau_t;
+    if (!(fixed_lambda ? j_t * from.g_t > 0.0 : det * from.chart.orientation() > 0.0)) return out;
     double dt = 0.0, dl = 0.0;
     if (fixed_lambda) {
-      dt = -p.g / g_t;
+      dt = -p.g / j_t;
     } else {
       const double r2 = tau_t * (p.t - tp) + tau_l * (p.lambda - lp);
-      dt = (-p.g * tau_l + r2 * g_l) / det;
-      dl = (-g_t * r2 + tau_t * p.g) / det;
+      dt = (-p.g * tau_l + r2 * j_l) / det;
+      dl = (-j_t * r2 + tau_t * p.g) / det;
     }
-    p.t += dt;
-    p.lambda += dl;
+    const double size = std::sqrt(dt * dt + dl * dl);
     out.iterations = it + 1;
-    const double size = std::hypot(dt, dl);
-    if (!std::isfinite(size) || !(p.lambda > 0.0)) return out;
-    if (size <= options.corrector_tolerance * std::max(1.0, std::fabs(p.t))) {
-      p.g = g(p.chart, p.t, p.lambda);
-      if (!std::isfinite(p.g) || !differentiate(g, p)) return out;
+    if (it == 0) out.first_correction = size;
+    if (!std::isfinite(size)) return out;
+    const double tolerance = options.corrector_tolerance * std::max(1.0, std::fabs(p.t));
+    if (size <= tolerance) {
+      if (!differentiate(g, p)) return out;
       out.ok = true;
       out.point = p;
       return out;
     }
     if (it > 0 && size > 0.5 * previous) return out;  // not contracting: too far from the path
+    // The iteration converges superlinearly, so the correction after this one is smaller than
+    // this one by at least the last ratio: once that predicts it below the tolerance, the
+    // corrected point is accepted without evaluating it. Its Jacobian is taken at p, a correction
+    // away, and its residual is the linear prediction, zero. (At full load the residual is
+    // evaluated, as the polish starts from it.)
+    if (!fixed_lambda && it > 0 && size * (size / previous) <= tolerance) {
+      if (!differentiate(g, p)) return out;
+      p.t += dt;
+      p.lambda += dl;
+      p.g = 0.0;
+      if (!(p.lambda > 0.0)) return out;
+      out.ok = true;
+      out.point = p;
+      return out;
+    }
     previous = size;
+    const double g_before = p.g;
+    p.t += dt;
+    p.lambda += dl;
+    if (!(p.lambda > 0.0)) return out;
+    p.g = g(p.chart, p.t, p.lambda);
+    if (!std::isfinite(p.g)) return out;
+    broyden(dt, dl, p.g - g_before);
   }
   return out;
+}
+
+// A point re-expressed in a new chart: it was within the corrector tolerance in the old chart's
+// coordinate, which near the separatrix is many times coarser than the new chart's (its scale is
+// e^(-sqrt F)/2 or smaller). Secant steps at fixed load factor bring it back within the tolerance
+// in the new coordinate, then its Jacobian is evaluated afresh. False if they do not converge.
+bool settle(PathResidual& g, PathPoint& p, const ContinuationOptions& options) {
+  double slope = p.g_t;
+  bool moved = false;
+  for (int it = 0; it < options.max_corrector_iterations; ++it) {
+    const double dx = -p.g / slope;
+    if (!std::isfinite(dx)) return false;
+    if (std::fabs(dx) <= options.corrector_tolerance * std::max(1.0, std::fabs(p.t))) {
+      return !moved || differentiate(g, p);
+    }
+    const double g_before = p.g;
+    p.t += dx;
+    p.g = g(p.chart, p.t, p.lambda);
+    if (!std::isfinite(p.g) || p.g == g_before) return false;
+    slope = (p.g - g_before) / dx;
+    moved = true;
+  }
+  return false;
 }
 
 // Full-precision root at lambda = 1 from a converged path point: secant steps, which stay on this
@@ -187,8 +259,9 @@ ContinuationSolution solve_by_continuation(double force,
   const double expected_steps = (std::fabs(mu) + std::sqrt(force)) / options.max_step;
   const long max_attempts = options.max_steps + static_cast<long>(10.0 * expected_steps);
   const long max_evaluations = options.max_evaluations + static_cast<long>(100.0 * expected_steps);
-  bool overshot = false;
   std::string failure;
+  double bend_t = 0.0, bend_l = 0.0;
+  double drift_t = 0.0, drift_l = 0.0;  // change of the Jacobian per unit arclength
   while (true) {
     if (attempts >= max_attempts || g.evaluations >= max_evaluations) {
       failure = fmt::format("the continuation budget ({} steps, {} residual evaluations) ran out",
@@ -198,23 +271,41 @@ ContinuationSolution solve_by_continuation(double force,
     }
     ++attempts;
     const double tau_t = y.tangent_t(), tau_l = y.tangent_lambda();
-    // A corrected point may land just past full load although its predictor did not: then the
-    // next attempt goes to lambda = 1 directly.
-    const bool crosses = tau_l > 0.0 && (overshot || y.lambda + h * tau_l >= 1.0);
-    overshot = false;
-    const double step = crosses ? (1.0 - y.lambda) / tau_l : h;
-    const Corrected c = correct(
-        g, y, y.t + step * tau_t, crosses ? 1.0 : y.lambda + step * tau_l, crosses, options);
+    // Second-order predictor: the path bends by `bend` per unit arclength (the change of the
+    // tangent over the last step), X(h) = y + h tau + h^2 bend / 2.
+    const double rise = 1.0 - y.lambda;
+    bool crosses = tau_l > 0.0 && tau_l * h + 0.5 * bend_l * h * h >= rise;
+    double step = h;
+    if (crosses) {
+      // Arclength to lambda = 1 on the predicted parabola (its first root, in the stable form).
+      const double discriminant = tau_l * tau_l + 2.0 * bend_l * rise;
+      step = discriminant >= 0.0 ? 2.0 * rise / (tau_l + std::sqrt(discriminant)) : h;
+      crosses = discriminant >= 0.0 && step <= h;
+      if (!crosses) step = h;
+    }
+    const double tp = y.t + step * tau_t + 0.5 * step * step * bend_t;
+    const double lp = crosses ? 1.0 : y.lambda + step * tau_l + 0.5 * step * step * bend_l;
+    const Corrected c = correct(g, y, tp, lp, crosses, options, drift_t * step, drift_l * step);
     bool accepted = c.ok;
     if (accepted) {
       const PathPoint& p = c.point;
-      const double distance = std::hypot(p.t - (y.t + step * tau_t),
-                                         p.lambda - (crosses ? 1.0 : y.lambda + step * tau_l));
-      const double turn_cos = p.tangent_t() * tau_t + p.tangent_lambda() * tau_l;
+      const double distance =
+          std::sqrt((p.t - tp) * (p.t - tp) + (p.lambda - lp) * (p.lambda - lp));
+      // The turn is measured from the tangent the bend predicts: the path's own curvature does
+      // not count, a jump to another branch or a reversal does.
+      double pred_t = tau_t + step * bend_t, pred_l = tau_l + step * bend_l;
+      const double pred_norm = std::sqrt(pred_t * pred_t + pred_l * pred_l);
+      pred_t /= pred_norm;
+      pred_l /= pred_norm;
+      const double turn_cos = p.tangent_t() * pred_t + p.tangent_lambda() * pred_l;
       accepted = distance <= options.max_predictor_distance * step + 1e-12 &&
                  turn_cos >= std::cos(options.max_turn);
       if (accepted && !crosses && p.lambda >= 1.0) {
-        overshot = true;
+        // The corrected point landed past full load although its predictor did not (the path
+        // bends up): a shorter step, until the predictor itself crosses and the corrector is
+        // held at lambda = 1. (Going to lambda = 1 along the tangent instead would take a step
+        // of (1 - lambda)/tau_lambda, unbounded where the path runs nearly level.)
+        h = 0.5 * step;
         continue;
       }
     }
@@ -241,6 +332,10 @@ ContinuationSolution solve_by_continuation(double force,
       ++out.limit_points;
     }
     ++out.steps;
+    drift_t = (p.g_t - y.g_t) / step;
+    drift_l = (p.g_lambda - y.g_lambda) / step;
+    bend_t = (p.tangent_t() - tau_t) / step;
+    bend_l = (p.tangent_lambda() - tau_l) / step;
     y = p;
     out.load_factor_reached = std::max(out.load_factor_reached, y.lambda);
     if (crosses) {
@@ -248,8 +343,20 @@ ContinuationSolution solve_by_continuation(double force,
       out.set_converged(true);
       break;
     }
-    const bool easy = c.iterations <= 3;
-    h = easy ? std::min(1.6 * step, options.max_step) : step;
+    // The first correction is the predictor's error, about (curvature/2) step^2: the next step
+    // aims at predictor_error times its length.
+    const double ratio = c.first_correction / (options.predictor_error * step);
+    const double factor = ratio > 0.0 ? 1.0 / std::sqrt(ratio) : options.max_step_growth;
+    h = std::min(step * std::clamp(factor, 0.5, options.max_step_growth), options.max_step);
+    // Folds hide where d lambda/ds heads for zero: two of them (an S-shaped path) inside one step
+    // would leave its sign unchanged at both ends and go unseen. While it falls towards zero at
+    // the rate of the last step, the next step is kept to a fraction of the distance to zero.
+    const double level_rate = (y.tangent_lambda() - tau_l) / step;
+    if (y.tangent_lambda() * level_rate < 0.0) {
+      h = std::min(h,
+                   std::max(options.level_fraction * std::fabs(y.tangent_lambda() / level_rate),
+                            options.initial_step));
+    }
     // Re-express the point in the chart that resolves it best (tip_chart.h); a new chart has its
     // own scale, so the step starts afresh.
     const PendulumProblem problem = g.problem(y.lambda);
@@ -262,9 +369,11 @@ ContinuationSolution solve_by_continuation(double force,
         moved.chart = best.chart;
         moved.t = best.x;
         moved.g = g(moved.chart, moved.t, moved.lambda);
-        if (std::isfinite(moved.g) && differentiate(g, moved)) {
+        if (std::isfinite(moved.g) && differentiate(g, moved) && settle(g, moved, options)) {
           y = moved;
           h = options.initial_step;
+          bend_t = bend_l = 0.0;  // the bend is not comparable across charts
+          drift_t = drift_l = 0.0;
         }
       }
     }

@@ -26,10 +26,19 @@
 namespace flexure::elliptic {
 
 struct ContinuationOptions {
-  double x_tolerance = 1e-15;           // final relative tolerance on t = theta0 - psi
-  double corrector_tolerance = 1e-11;   // absolute tolerance of intermediate corrections
-  double initial_step = 0.05;           // first arclength step in (t, lambda)
-  double max_step = 0.3;                // largest arclength step (rad of tip angle, or load factor)
+  double x_tolerance = 1e-15;  // final relative tolerance on t = theta0 - psi
+  // Tolerance of the intermediate corrections (times max(1, |x|)): the path is followed loosely
+  // and only the point at full load is polished to x_tolerance. 1e-11 and 1e-7 give the same
+  // equilibria (tests/solver/elliptic_branch_grid_test.cpp); the branch is kept by the tangent
+  // checks below, not by the corrector's precision.
+  double corrector_tolerance = 1e-7;
+  double initial_step = 0.05;     // first arclength step in (t, lambda)
+  double max_step = 1.0;          // largest arclength step (rad of tip angle, or load factor)
+  double predictor_error = 0.05;  // aimed-at predictor error, as a fraction of the step
+  double max_step_growth = 3.0;   // largest growth of the step from one step to the next
+  // While d lambda/ds falls towards zero (a fold ahead), a step covers at most this fraction of
+  // the arclength to zero extrapolated from the last step.
+  double level_fraction = 0.5;
   double min_step = 1e-9;               // smaller steps mean the path cannot be followed
   double max_turn = 0.35;               // largest angle between consecutive tangents (rad)
   double max_predictor_distance = 0.3;  // largest corrector move, as a fraction of the step

@@ -7,6 +7,10 @@
 // - The AGM Jacobi amplitude against GSL's gsl_sf_elljac_e (a different algorithm) where GSL is
 //   accurate, and against its own inverse F(am(u)) = u, including quasi-periodicity.
 // - The near-separatrix amplitude form against the plain one.
+// - sn, cn, dn, am and the complete integrals K, (K - E)/m against mpmath (90-digit arithmetic, so
+//   that 1 - m keeps its digits for 1 - m down to 1e-37), including arguments near odd multiples of
+//   K where cn and dn are 1e-10 to 1e-19: absolute error below 1e-15 max(1, |u|) (the round-off of
+//   u itself), relative 1e-15 for the complete integrals.
 #include "flexure/solver/elliptic/elliptic_functions.h"
 
 #include <gsl/gsl_sf_elljac.h>
@@ -91,6 +95,90 @@ TEST(EllipticFunctions, SineCosineFormMatchesTheAmplitudeFormAwayFromTheSeparatr
     const double phi_r = phi - turns * kPi;
     EXPECT_NEAR(
         incomplete_F(turns, std::sin(phi_r), std::cos(phi_r), k), incomplete_F(phi, k), 1e-14);
+  }
+}
+
+TEST(EllipticFunctions, JacobiFunctionsMatchMpmathUpToTheSeparatrix) {
+  struct Row {
+    double u, mc, sn, cn, dn, am;
+  };
+  const Row rows[] = {
+      {0.7,
+       0.3,
+       0.6163602660645573605,
+       0.78746429913795333926,
+       0.85677886043703228027,
+       0.66411220145540328246},
+      {-2.9,
+       0.5,
+       -0.69605171392003982629,
+       -0.71799165144796428609,
+       0.87049181832713828096,
+       -2.3717089911790536561},
+      {43.0,
+       1e-37,
+       1.0,
+       3.6392821416534926139e-19,
+       4.8212420087108293326e-19,
+       1.5707963267948966189},
+      {12.0,
+       1e-12,
+       0.99999999992474710217,
+       0.000012268080357304355864,
+       0.000012308769055154396958,
+       1.5707840587145390071},
+      {-25.0,
+       1e-20,
+       -1.0,
+       -6.2230236441804294522e-11,
+       1.177820119016603769e-10,
+       -1.5707963268571268557},
+      {3.0,
+       0.0001,
+       0.99507886019942419993,
+       0.099086134167272813834,
+       0.099584537846075117717,
+       1.4715473330944987437},
+      // K(1 - 1e-20) - 1e-9 and 3 K(1 - 1e-20) + 0.5.
+      {24.412145290060348,
+       1e-20,
+       1.0,
+       9.9999954015921297785e-20,
+       9.9999999999999997308e-11,
+       1.5707963267948966191},
+      {73.73643587318104,
+       1e-20,
+       -1.0,
+       5.2109530549374117055e-11,
+       1.1276259652063778999e-10,
+       4.7123889804367993882},
+  };
+  for (const Row& r : rows) {
+    const JacobiFunctions f = jacobi_functions(r.u, {1.0 - r.mc, r.mc});
+    const double tol = 1e-15 * std::max(1.0, std::fabs(r.u));
+    EXPECT_NEAR(f.sn, r.sn, tol) << "u = " << r.u << ", 1 - m = " << r.mc;
+    EXPECT_NEAR(f.cn, r.cn, tol) << "u = " << r.u << ", 1 - m = " << r.mc;
+    EXPECT_NEAR(f.dn, r.dn, tol) << "u = " << r.u << ", 1 - m = " << r.mc;
+    EXPECT_NEAR(f.am, r.am, tol) << "u = " << r.u << ", 1 - m = " << r.mc;
+    EXPECT_EQ(jacobi_amplitude(r.u, {1.0 - r.mc, r.mc}), f.am);
+  }
+}
+
+TEST(EllipticFunctions, CompleteIntegralsMatchMpmath) {
+  struct Row {
+    double mc, K, K_minus_E_over_m;
+  };
+  const Row rows[] = {
+      {1e-30, 35.92507075603057583744, 34.92507075603057583744},
+      {1e-08, 10.59663475708766030979, 9.596634802570834491648},
+      {0.5, 1.854074677301371918434, 1.006861592507392831827},
+      {1.0, 1.570796326794896619231, 0.7853981633974483096157},  // m = 0: pi/2 and pi/4
+  };
+  for (const Row& r : rows) {
+    const Parameter k{1.0 - r.mc, r.mc};
+    EXPECT_NEAR(complete_K(k), r.K, 1e-15 * r.K) << "1 - m = " << r.mc;
+    EXPECT_NEAR(complete_K_minus_E_over_m(k), r.K_minus_E_over_m, 1e-15 * r.K_minus_E_over_m)
+        << "1 - m = " << r.mc;
   }
 }
 
