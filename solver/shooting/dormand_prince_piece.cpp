@@ -16,6 +16,7 @@ bool dormand_prince_piece(const ElasticaPieceData& piece,
                           std::vector<double>& y,
                           const ExplicitRkSettings& settings,
                           ShapeCursor& shape,
+                          StepObserver* observer,
                           long& steps,
                           std::string& error) {
   // Dormand-Prince 5(4) (Hairer, Norsett & Wanner, Solving ODEs I, Table II.5.2), FSAL, error test
@@ -92,7 +93,11 @@ bool dormand_prince_piece(const ElasticaPieceData& piece,
       return false;
     }
     if (err <= 1.0) {
-      s = last ? s_stop : s + h;
+      const double s_end = last ? s_stop : s + h;
+      if (observer != nullptr) {
+        observer->accepted_step(piece, s, y.data(), k1.data(), s_end, y_new.data(), k7.data());
+      }
+      s = s_end;
       y.swap(y_new);
       k1.swap(k7);
       if (last && s_stop < s_b && shape.shape != nullptr) shape.emit(y.data());

@@ -10,8 +10,9 @@
 namespace flexure {
 
 // Integrates the packed state `y` (4 (Ns + 1) components) of one flexible piece from s_a to s_b,
-// stopping on every pending shape point of `shape` before s_b. Adds the steps taken to `steps`.
-// Returns false with `error` on too many steps or a non-finite state.
+// stopping on every pending shape point of `shape` before s_b. Adds the steps taken to `steps`;
+// `observer` (may be null) sees every accepted step. Returns false with `error` on too many steps
+// or a non-finite state.
 bool dormand_prince_piece(const ElasticaPieceData& piece,
                           int Ns,
                           double s_a,
@@ -19,6 +20,7 @@ bool dormand_prince_piece(const ElasticaPieceData& piece,
                           std::vector<double>& y,
                           const ExplicitRkSettings& settings,
                           ShapeCursor& shape,
+                          StepObserver* observer,
                           long& steps,
                           std::string& error);
 

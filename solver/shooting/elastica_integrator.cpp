@@ -252,6 +252,14 @@ bool ElasticaIntegrator::integrate(
     throw std::logic_error("ElasticaIntegrator: forces or sensitivities sized inconsistently");
   }
   if (!ensure_sensitivities(Ns, error)) return false;
+  if (observer_ != nullptr && options_.backend != Backend::kRk8pd &&
+      options_.backend != Backend::kDormandPrince) {
+    error = fmt::format(
+        "a step observer needs an explicit Runge-Kutta backend (rk8pd or "
+        "dormand-prince), not {}",
+        to_string(options_.backend));
+    return false;
+  }
 
   Eigen::Vector4d state = start;
   Eigen::Matrix<double, 4, Eigen::Dynamic> S = start_sensitivity;
@@ -282,11 +290,12 @@ bool ElasticaIntegrator::integrate(
     const ExplicitRkSettings settings{options_.rtol, options_.atol, options_.max_steps};
     bool ok = false;
     if (options_.backend == Backend::kRk8pd) {
-      ok = d.rk8pd->integrate(d.piece, Ns, s_a, s_b, y, cursor, d.steps, error);
+      ok = d.rk8pd->integrate(d.piece, Ns, s_a, s_b, y, cursor, observer_, d.steps, error);
     } else if (options_.backend == Backend::kArkodeErk) {
       ok = d.arkode->integrate(d.piece, Ns, s_a, s_b, y, cursor, d.steps, error);
     } else {
-      ok = dormand_prince_piece(d.piece, Ns, s_a, s_b, y, settings, cursor, d.steps, error);
+      ok = dormand_prince_piece(
+          d.piece, Ns, s_a, s_b, y, settings, cursor, observer_, d.steps, error);
     }
     next_shape = cursor.next;
     if (!ok) return false;

@@ -59,6 +59,8 @@ struct TipState {
   Eigen::Matrix<double, 4, Eigen::Dynamic> sensitivity;  // d(x, y, theta, m)/dp, one column per p
 };
 
+class StepObserver;  // elastica_piece.h
+
 class ElasticaIntegrator {
  public:
   // Which integrator runs the flexible pieces (docs/theory-shooting.md §4, speed and accuracy in
@@ -106,6 +108,11 @@ class ElasticaIntegrator {
                  std::vector<ShapePoint>* shape = nullptr,
                  bool last = true);
 
+  // Every accepted step of the following integrations is shown to `observer` (null: none). Only
+  // the explicit Runge-Kutta backends (kRk8pd, kDormandPrince) have steps to show; with another
+  // backend integrate() fails saying so.
+  void set_step_observer(StepObserver* observer) { observer_ = observer; }
+
   const Options& options() const { return options_; }
   long steps_taken() const;  // integrator steps since construction (work budgets, performance)
 
@@ -113,6 +120,7 @@ class ElasticaIntegrator {
   bool ensure_sensitivities(int Ns, std::string& error);
   struct Impl;
   Options options_;
+  StepObserver* observer_ = nullptr;
   std::unique_ptr<Impl> impl_;
 };
 

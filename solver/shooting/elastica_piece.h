@@ -75,6 +75,22 @@ struct ShapeCursor {
   }
 };
 
+// Sees every accepted step of an explicit backend on a flexible piece: the state (x, y, theta, m)
+// and its derivative at both ends of the step (the sensitivity columns follow them in the packed
+// arrays). Used to collect per-segment moment statistics from one integration without sampling
+// the shape (segment_moments.h).
+class StepObserver {
+ public:
+  virtual ~StepObserver() = default;
+  virtual void accepted_step(const ElasticaPieceData& piece,
+                             double s0,
+                             const double* y0,
+                             const double* f0,
+                             double s1,
+                             const double* y1,
+                             const double* f1) = 0;
+};
+
 // Tolerances and limits shared by the explicit backends (ElasticaIntegrator::Options).
 struct ExplicitRkSettings {
   double rtol = 1e-12;

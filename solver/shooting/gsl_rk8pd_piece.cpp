@@ -91,6 +91,7 @@ bool GslRk8pdPiece::integrate(const ElasticaPieceData& piece,
                               double s_b,
                               std::vector<double>& y,
                               ShapeCursor& shape,
+                              StepObserver* observer,
                               long& steps,
                               std::string& error) {
   Impl::Stepper* st = impl_->stepper(Ns);
@@ -156,7 +157,12 @@ bool GslRk8pdPiece::integrate(const ElasticaPieceData& piece,
         --taken;
         continue;
       }
-      s = final_step ? target : s + h_try;
+      const double s_end = final_step ? target : s + h_try;
+      if (observer != nullptr) {
+        observer->accepted_step(
+            piece, s, st->y0.data(), st->dydt_in.data(), s_end, y.data(), st->dydt_out.data());
+      }
+      s = s_end;
       st->dydt_in.swap(st->dydt_out);
       // A step shortened to land on the target says nothing against the step before it.
       h = final_step && adjust != GSL_ODEIV_HADJ_INC ? std::max(h, h_next) : h_next;

@@ -23,14 +23,15 @@ class GslRk8pdPiece {
 
   // Integrates the packed state `y` (4 (Ns + 1) components) of one flexible piece from s_a to
   // s_b, stopping on every pending shape point of `shape` before s_b. Adds the steps taken to
-  // `steps`. Returns false with `error` when GSL fails, the step budget is spent or the state is
-  // not finite.
+  // `steps`; `observer` (may be null) sees every accepted step. Returns false with `error` when
+  // GSL fails, the step budget is spent or the state is not finite.
   bool integrate(const ElasticaPieceData& piece,
                  int Ns,
                  double s_a,
                  double s_b,
                  std::vector<double>& y,
                  ShapeCursor& shape,
+                 StepObserver* observer,
                  long& steps,
                  std::string& error);
 
