@@ -26,8 +26,7 @@ namespace flexure::mechanism {
 struct AnalysisOptions {
   int points = 50;           // stroke points (Delta x = k stroke/points, k = 1..points)
   bool exact = true;         // solve the exact model where one exists
-  bool exact_stress = true;  // re-solve each exact point for its shape and stresses
-  int shape_points = 801;    // shape samples for the exact stresses
+  bool exact_stress = true;  // stresses of each exact point (one integration of its solution)
   // Called after each exact stroke point and each exact stress evaluation: (done, total) over
   // both passes (total = 2 points with stresses, else points). Empty: no calls.
   StrokeProgress progress;

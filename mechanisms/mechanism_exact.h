@@ -100,13 +100,14 @@ struct ExactPoint : SolveStatus {
 class ExactMechanismSolver {
  public:
   struct Options {
+    // Inner shooting solves: GSL's rk8pd at rtol 1e-12 (the shooting default; about 4x fewer
+    // right-hand sides than the Dormand-Prince 5(4) used before, docs/performance.md).
     ShootingSolver::Options shooting = [] {
       ShootingSolver::Options o;
-      o.backend = ElasticaIntegrator::Backend::kDormandPrince;  // ~15x faster at equal accuracy
       o.rtol = 1e-12;
       o.atol = 1e-14;
       return o;
-    }();                                // inner shooting solves
+    }();
     double position_tolerance = 1e-10;  // middle pin: |pivot 2 mismatch| / slider_x0
     // Middle pin: a Newton step that no longer decreases the mismatch ends the iteration as
     // converged when the mismatch is below this (integrator rtol 1e-12 times the FD Jacobian).
@@ -206,9 +207,8 @@ ExactPoint exact_first_point(const MechanismDesign& design,
                              const std::vector<double>& displacements,
                              const ExactMechanismSolver::Options& options);
 
-// Bending moment, strain energy and stress of a solved point, from its shape at `shape_points`
-// equally spaced arc lengths: m(s) = m0 + Nx y(s) - Ny x(s) (statics of the distal part, no node
-// loads). Strain energy by the trapezoidal rule on each flexible segment (end values interpolated).
+// Bending moment, strain energy, stress and rotation of the flexible segments of a solved point
+// (mechanism_exact_segments.cpp).
 struct ExactSegmentState {
   std::array<double, 3> max_stress{};  // per pivot, Pa: max |m| h/(2I) + |N|/A
   double strain_energy = 0.0;          // J, integral of m^2/(2 EI) over the flexible segments
@@ -218,9 +218,21 @@ struct ExactSegmentState {
   std::array<double, 3> pivot_rotation{};
   std::array<bool, 3> has_pivot{};  // a flexible segment of this pivot was found
 };
+// From one integration of the point's solution, no Newton iteration and no sampled shape
+// (solver/shooting/segment_moments.h): max |m| and the energy are as accurate as the integrated
+// state (rtol of `options`, an explicit Runge-Kutta backend: rk8pd unless dormand-prince is
+// asked for). What `mechanism analyze` reports for every stroke point.
+ExactSegmentState exact_segment_state(
+    const MechanismDesign& design,
+    const ExactPoint& point,
+    const ShootingSolver::Options& options = ExactMechanismSolver::Options{}.shooting);
+// From the shape re-solved and sampled at `shape_points` equally spaced arc lengths:
+// m(s) = m0 + Nx y(s) - Ny x(s) (statics of the distal part, no node loads); max |m| over the
+// samples, strain energy by the trapezoidal rule on each flexible segment (end values
+// interpolated). An independent check of the above (and of exact_strain_energy's quadrature).
 ExactSegmentState exact_segment_state(const MechanismDesign& design,
                                       const ExactPoint& point,
-                                      int shape_points = 801);
+                                      int shape_points);
 
 // Strain energy of a solved point, J, to quadrature accuracy far below the solver's: the
 // trapezoidal value of exact_segment_state at n and 2n - 1 shape samples, Richardson-extrapolated

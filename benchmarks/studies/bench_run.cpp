@@ -11,6 +11,7 @@
 #include "flexure/benchmarks/studies/bench_hdf5.h"
 #include "flexure/benchmarks/studies/bench_problems.h"
 #include "flexure/benchmarks/studies/bench_solve.h"
+#include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::bench {
@@ -180,7 +181,9 @@ MethodRun run_mechanism_method(const BenchProblem& problem,
   run.family = method ? to_string(family) : "reference";
   // ExactMechanismSolver::Options: inner shooting rtol 1e-12; the PRBM is closed form.
   run.tolerance = family == MethodFamily::kMechanismExact ? 1e-12 : 0.0;
-  if (family == MethodFamily::kMechanismExact) run.backend = "dormand-prince";
+  if (family == MethodFamily::kMechanismExact) {
+    run.backend = to_string(mechanism::ExactMechanismSolver::Options{}.shooting.backend);
+  }
   CfmStrokeSolver solver(problem.mechanism);
   for (const LoadPoint& load : problem.points) {
     double seconds = 0.0;
@@ -234,8 +237,7 @@ MethodRun run_method(const BenchProblem& problem,
   run.method = method->name;
   run.family = to_string(method->family);
   if (method->family == MethodFamily::kShooting) {
-    run.backend =
-        method->backend == ElasticaIntegrator::Backend::kCvodes ? "cvodes" : "dormand-prince";
+    run.backend = to_string(method->backend);
     run.tolerance = method->rtol;
   } else if (method->family == MethodFamily::kChain) {
     run.tolerance = 1e-12;  // ChainAlgorithmSolver::Options::tolerance

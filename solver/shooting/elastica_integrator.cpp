@@ -8,32 +8,29 @@
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <variant>
 
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/shooting/arkode_erk_piece.h"
+#include "flexure/solver/shooting/dormand_prince_piece.h"
+#include "flexure/solver/shooting/elastica_piece.h"
+#include "flexure/solver/shooting/gsl_rk8pd_piece.h"
 
 namespace flexure {
 
 namespace {
-constexpr int kX = 0;
-constexpr int kY = 1;
-constexpr int kTheta = 2;
-constexpr int kM = 3;
-constexpr int kStates = 4;
+constexpr int kX = kElasticaX;
+constexpr int kY = kElasticaY;
+constexpr int kTheta = kElasticaTheta;
+constexpr int kM = kElasticaM;
+constexpr int kStates = kElasticaStates;
 
 }  // namespace
-
-// What the right-hand side needs on the current flexible piece.
-struct ElasticaPieceData {
-  const FlexibleSegment* segment = nullptr;
-  double segment_start = 0.0;  // global arc length where the segment starts
-  double Nx = 0.0;
-  double Ny = 0.0;
-  std::vector<Eigen::Vector2d> dN;  // dN/dp on this segment, one per parameter
-};
 
 namespace {
 using PieceData = ElasticaPieceData;
@@ -121,10 +118,13 @@ struct ElasticaIntegrator::Impl {
   SUNNonlinearSolver NLS = nullptr;       // fixed-point corrector for the state (Adams)
   SUNNonlinearSolver NLS_sens = nullptr;  // fixed-point corrector for state + sensitivities
   N_Vector* yS = nullptr;
-  long steps = 0;      // CVODES steps taken since construction
+  long steps = 0;      // integrator steps taken since construction (every backend)
   int sens_count = 0;  // parameters CVodeSensInit was called with (0 = never)
   PieceData piece;
   FlexibleSegment dummy;
+  std::unique_ptr<GslRk8pdPiece> rk8pd;    // the GSL backend (kRk8pd only)
+  std::unique_ptr<ArkodeErkPiece> arkode;  // the ARKODE backend (kArkodeErk only)
+  std::vector<double> packed;              // state and sensitivities of the explicit backends
 
   ~Impl() {
     if (yS != nullptr) N_VDestroyVectorArray(yS, sens_count);
@@ -144,6 +144,35 @@ void check_setup(int flag, const char* function) {
 }
 }  // namespace
 
+const char* to_string(ElasticaIntegrator::Backend backend) {
+  switch (backend) {
+    case ElasticaIntegrator::Backend::kRk8pd:
+      return "rk8pd";
+    case ElasticaIntegrator::Backend::kCvodes:
+      return "cvodes";
+    case ElasticaIntegrator::Backend::kDormandPrince:
+      return "dormand-prince";
+    case ElasticaIntegrator::Backend::kArkodeErk:
+      return "arkode-erk";
+  }
+  return "unknown";
+}
+
+ElasticaIntegrator::Backend integrator_backend_from_string(const std::string& name) {
+  std::string lower = name;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) {
+    return static_cast<char>(std::tolower(c));
+  });
+  for (auto backend : {ElasticaIntegrator::Backend::kRk8pd,
+                       ElasticaIntegrator::Backend::kCvodes,
+                       ElasticaIntegrator::Backend::kDormandPrince,
+                       ElasticaIntegrator::Backend::kArkodeErk}) {
+    if (lower == to_string(backend)) return backend;
+  }
+  throw InvalidInput(fmt::format(
+      "integrator '{}' is unknown; allowed: rk8pd, cvodes, dormand-prince, arkode-erk", name));
+}
+
 void ElasticaIntegrator::Options::validate() const {
   if (!(rtol > 0.0 && rtol < 1e-2)) {
     throw InvalidInput(
@@ -162,6 +191,15 @@ ElasticaIntegrator::ElasticaIntegrator(Options options)
     : options_(options), impl_(std::make_unique<Impl>()) {
   options_.validate();
   Impl& d = *impl_;
+  d.piece.segment = &d.dummy;
+  const ExplicitRkSettings settings{options_.rtol, options_.atol, options_.max_steps};
+  if (options_.backend == Backend::kRk8pd) d.rk8pd = std::make_unique<GslRk8pdPiece>(settings);
+  if (options_.backend == Backend::kArkodeErk) {
+    d.arkode = std::make_unique<ArkodeErkPiece>(settings);
+  }
+  // The CVODES objects only for the CVODES backend: their set-up costs as much as a whole solve
+  // with an explicit backend (ElasticaIntegrator is made once per solve).
+  if (options_.backend != Backend::kCvodes) return;
   if (SUNContext_Create(nullptr, &d.context) != 0) {
     throw std::runtime_error("SUNContext_Create failed");
   }
@@ -170,7 +208,6 @@ ElasticaIntegrator::ElasticaIntegrator(Options options)
   N_VConst(0.0, d.y);
   d.cvode = CVodeCreate(options_.adams ? CV_ADAMS : CV_BDF, d.context);
   if (d.cvode == nullptr) throw std::runtime_error("CVodeCreate failed");
-  d.piece.segment = &d.dummy;
   check_setup(CVodeInit(d.cvode, rhs, 0.0, d.y), "CVodeInit");
   check_setup(CVodeSStolerances(d.cvode, options_.rtol, options_.atol), "CVodeSStolerances");
   check_setup(CVodeSetUserData(d.cvode, &d.piece), "CVodeSetUserData");
@@ -215,6 +252,14 @@ bool ElasticaIntegrator::integrate(
     throw std::logic_error("ElasticaIntegrator: forces or sensitivities sized inconsistently");
   }
   if (!ensure_sensitivities(Ns, error)) return false;
+  if (observer_ != nullptr && options_.backend != Backend::kRk8pd &&
+      options_.backend != Backend::kDormandPrince) {
+    error = fmt::format(
+        "a step observer needs an explicit Runge-Kutta backend (rk8pd or "
+        "dormand-prince), not {}",
+        to_string(options_.backend));
+    return false;
+  }
 
   Eigen::Vector4d state = start;
   Eigen::Matrix<double, 4, Eigen::Dynamic> S = start_sensitivity;
@@ -231,6 +276,34 @@ bool ElasticaIntegrator::integrate(
       shape->push_back(ShapePoint{(*shape_s)[next_shape], state[kX], state[kY], state[kTheta]});
       ++next_shape;
     }
+  };
+
+  // The explicit backends integrate state and sensitivities as one packed system.
+  auto explicit_piece = [&](double s_a, double s_b) {
+    std::vector<double>& y = d.packed;
+    y.resize(kStates * (Ns + 1));
+    for (int k = 0; k < kStates; ++k) y[k] = state[k];
+    for (int i = 0; i < Ns; ++i) {
+      for (int k = 0; k < kStates; ++k) y[kStates * (i + 1) + k] = S(k, i);
+    }
+    ShapeCursor cursor{want_shape ? shape_s : nullptr, shape, next_shape};
+    const ExplicitRkSettings settings{options_.rtol, options_.atol, options_.max_steps};
+    bool ok = false;
+    if (options_.backend == Backend::kRk8pd) {
+      ok = d.rk8pd->integrate(d.piece, Ns, s_a, s_b, y, cursor, observer_, d.steps, error);
+    } else if (options_.backend == Backend::kArkodeErk) {
+      ok = d.arkode->integrate(d.piece, Ns, s_a, s_b, y, cursor, d.steps, error);
+    } else {
+      ok = dormand_prince_piece(
+          d.piece, Ns, s_a, s_b, y, settings, cursor, observer_, d.steps, error);
+    }
+    next_shape = cursor.next;
+    if (!ok) return false;
+    for (int k = 0; k < kStates; ++k) state[k] = y[k];
+    for (int i = 0; i < Ns; ++i) {
+      for (int k = 0; k < kStates; ++k) S(k, i) = y[kStates * (i + 1) + k];
+    }
+    return true;
   };
 
   d.piece.dN.resize(Ns);
@@ -285,18 +358,8 @@ bool ElasticaIntegrator::integrate(
         const double s_a = piece.segment_start + cuts[p];
         const double s_b = piece.segment_start + cuts[p + 1];
         emit_below(std::nextafter(s_a, std::numeric_limits<double>::infinity()));
-        if (options_.backend == Backend::kDormandPrince) {
-          if (!dormand_prince_piece(d.piece,
-                                    s_a,
-                                    s_b,
-                                    state,
-                                    S,
-                                    error,
-                                    want_shape ? shape_s : nullptr,
-                                    shape,
-                                    next_shape)) {
-            return false;
-          }
+        if (options_.backend != Backend::kCvodes) {
+          if (!explicit_piece(s_a, s_b)) return false;
           continue;
         }
         double* yv = N_VGetArrayPointer(d.y);
@@ -402,144 +465,9 @@ bool ElasticaIntegrator::integrate(
   return true;
 }
 
-namespace {
-
-// Right-hand side of the state and all sensitivity columns, packed as [state(4), S(:,0), ...].
-void full_rhs(const PieceData& piece, double s, const double* y, double* dy, int Ns) {
-  const double c = std::cos(y[kTheta]);
-  const double sn = std::sin(y[kTheta]);
-  const double inv_EI = 1.0 / piece.segment->EI_at(s - piece.segment_start);
-  dy[kX] = c;
-  dy[kY] = sn;
-  dy[kTheta] = y[kM] * inv_EI + piece.segment->kappa0;
-  dy[kM] = piece.Nx * sn - piece.Ny * c;
-  const double dm_dtheta = piece.Nx * c + piece.Ny * sn;
-  for (int i = 0; i < Ns; ++i) {
-    const double* S = y + kStates * (i + 1);
-    double* dS = dy + kStates * (i + 1);
-    dS[kX] = -sn * S[kTheta];
-    dS[kY] = c * S[kTheta];
-    dS[kTheta] = inv_EI * S[kM];
-    dS[kM] = dm_dtheta * S[kTheta] + piece.dN[i].x() * sn - piece.dN[i].y() * c;
-  }
-}
-
-}  // namespace
-
-bool ElasticaIntegrator::dormand_prince_piece(const PieceData& piece,
-                                              double s_a,
-                                              double s_b,
-                                              Eigen::Vector4d& state,
-                                              Eigen::Matrix<double, 4, Eigen::Dynamic>& S,
-                                              std::string& error,
-                                              const std::vector<double>* shape_s,
-                                              std::vector<ShapePoint>* shape,
-                                              std::size_t& next_shape) {
-  // Dormand-Prince 5(4) (Hairer, Norsett & Wanner, Solving ODEs I, Table 5.2), FSAL, error test
-  // on state and sensitivities (the same reason as CVodeSetSensErrCon above).
-  constexpr double c2 = 1.0 / 5, c3 = 3.0 / 10, c4 = 4.0 / 5, c5 = 8.0 / 9;
-  constexpr double a21 = 1.0 / 5;
-  constexpr double a31 = 3.0 / 40, a32 = 9.0 / 40;
-  constexpr double a41 = 44.0 / 45, a42 = -56.0 / 15, a43 = 32.0 / 9;
-  constexpr double a51 = 19372.0 / 6561, a52 = -25360.0 / 2187, a53 = 64448.0 / 6561,
-                   a54 = -212.0 / 729;
-  constexpr double a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247, a64 = 49.0 / 176,
-                   a65 = -5103.0 / 18656;
-  constexpr double b1 = 35.0 / 384, b3 = 500.0 / 1113, b4 = 125.0 / 192, b5 = -2187.0 / 6784,
-                   b6 = 11.0 / 84;
-  // Error coefficients: b - b_hat (fourth-order weights 5179/57600, 0, 7571/16695, 393/640,
-  // -92097/339200, 187/2100, 1/40).
-  constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17253.0 / 339200,
-                   e6 = 22.0 / 525, e7 = -1.0 / 40;
-  const int Ns = static_cast<int>(S.cols());
-  const int dim = kStates * (Ns + 1);
-  std::vector<double> y(dim), y_new(dim), tmp(dim), k1(dim), k2(dim), k3(dim), k4(dim), k5(dim),
-      k6(dim), k7(dim);
-  for (int k = 0; k < kStates; ++k) y[k] = state[k];
-  for (int i = 0; i < Ns; ++i) {
-    for (int k = 0; k < kStates; ++k) y[kStates * (i + 1) + k] = S(k, i);
-  }
-  const double rtol = options_.rtol, atol = options_.atol;
-  const double length = s_b - s_a;
-  double s = s_a;
-  // First step from the tolerance: the local error of a fifth-order step is ~ h^5.
-  double h = std::min(length, 0.5 * std::pow(rtol, 0.2));
-  full_rhs(piece, s, y.data(), k1.data(), Ns);
-  long steps = 0;
-  while (s < s_b) {
-    if (++steps > options_.max_steps) {
-      error = fmt::format("Dormand-Prince: more than {} steps at s = {}", options_.max_steps, s);
-      return false;
-    }
-    double s_stop = s_b;
-    if (shape_s != nullptr && next_shape < shape_s->size() && (*shape_s)[next_shape] < s_b) {
-      s_stop = std::max((*shape_s)[next_shape], s);
-    }
-    bool last = false;
-    if (s + h >= s_stop - 1e-14 * length) {
-      h = s_stop - s;
-      last = true;
-    }
-    if (h <= 0.0) {
-      // A shape point at the current position.
-      shape->push_back(ShapePoint{(*shape_s)[next_shape], y[kX], y[kY], y[kTheta]});
-      ++next_shape;
-      continue;
-    }
-    auto stage = [&](std::vector<double>& out,
-                     std::initializer_list<std::pair<double, const std::vector<double>*>> terms) {
-      for (int k = 0; k < dim; ++k) {
-        double acc = y[k];
-        for (const auto& [a, kv] : terms) acc += h * a * (*kv)[k];
-        out[k] = acc;
-      }
-    };
-    stage(tmp, {{a21, &k1}});
-    full_rhs(piece, s + c2 * h, tmp.data(), k2.data(), Ns);
-    stage(tmp, {{a31, &k1}, {a32, &k2}});
-    full_rhs(piece, s + c3 * h, tmp.data(), k3.data(), Ns);
-    stage(tmp, {{a41, &k1}, {a42, &k2}, {a43, &k3}});
-    full_rhs(piece, s + c4 * h, tmp.data(), k4.data(), Ns);
-    stage(tmp, {{a51, &k1}, {a52, &k2}, {a53, &k3}, {a54, &k4}});
-    full_rhs(piece, s + c5 * h, tmp.data(), k5.data(), Ns);
-    stage(tmp, {{a61, &k1}, {a62, &k2}, {a63, &k3}, {a64, &k4}, {a65, &k5}});
-    full_rhs(piece, s + h, tmp.data(), k6.data(), Ns);
-    stage(y_new, {{b1, &k1}, {b3, &k3}, {b4, &k4}, {b5, &k5}, {b6, &k6}});
-    full_rhs(piece, s + h, y_new.data(), k7.data(), Ns);
-    double err = 0.0;
-    for (int k = 0; k < dim; ++k) {
-      const double e =
-          h * (e1 * k1[k] + e3 * k3[k] + e4 * k4[k] + e5 * k5[k] + e6 * k6[k] + e7 * k7[k]);
-      const double scale = atol + rtol * std::max(std::abs(y[k]), std::abs(y_new[k]));
-      err = std::max(err, std::abs(e) / scale);
-    }
-    if (!std::isfinite(err)) {
-      error = fmt::format("Dormand-Prince: non-finite state at s = {}", s);
-      return false;
-    }
-    if (err <= 1.0) {
-      s = last ? s_stop : s + h;
-      y.swap(y_new);
-      k1.swap(k7);
-      if (last && s_stop < s_b && shape != nullptr) {
-        shape->push_back(ShapePoint{(*shape_s)[next_shape], y[kX], y[kY], y[kTheta]});
-        ++next_shape;
-      }
-      if (last && s_stop >= s_b) break;
-    }
-    h *= std::clamp(0.9 * std::pow(std::max(err, 1e-10), -0.2), 0.2, 5.0);
-  }
-  impl_->steps += steps;
-  for (int k = 0; k < kStates; ++k) state[k] = y[k];
-  for (int i = 0; i < Ns; ++i) {
-    for (int k = 0; k < kStates; ++k) S(k, i) = y[kStates * (i + 1) + k];
-  }
-  return true;
-}
-
 bool ElasticaIntegrator::ensure_sensitivities(int Ns, std::string& error) {
   Impl& d = *impl_;
-  if (options_.backend == Backend::kDormandPrince) return true;
+  if (options_.backend != Backend::kCvodes) return true;
   if (Ns == 0 || Ns == d.sens_count) return true;
   // Sensitivity machinery: (re)created when the number of parameters changes.
   if (d.sens_count > 0) {

@@ -1,5 +1,6 @@
 #pragma once
-// Arc-length integration of a segment chain with SUNDIALS CVODES, with forward sensitivities.
+// Arc-length integration of a segment chain with forward sensitivities: GSL's Prince-Dormand 8(7)
+// (the default), SUNDIALS CVODES (the reference) or the built-in Dormand-Prince 5(4).
 //
 // State along the chain: (x, y, theta, m), m the bending moment (convention of
 // solver/chain_model/segment_chain.h). On a flexible segment (Howell eqs. 2.67-2.69 in
@@ -11,8 +12,9 @@
 // drops, so the integrator knows nothing about which loads are unknown.
 //
 // Sensitivities: each parameter p declares d m(0)/dp, dN/dp on every segment and d(moment
-// drop)/dp at every node; CVODES integrates S' = J S + df/dp alongside the state (staggered off,
-// simultaneous corrector), which gives the exact Jacobian of the tip state for the Newton solver.
+// drop)/dp at every node; S' = J S + df/dp is integrated alongside the state (CVODES: staggered
+// off, simultaneous corrector; the explicit backends: one packed system with the error test on
+// all of it), which gives the exact Jacobian of the tip state for the Newton solver.
 #include <Eigen/Dense>
 #include <memory>
 #include <string>
@@ -57,18 +59,24 @@ struct TipState {
   Eigen::Matrix<double, 4, Eigen::Dynamic> sensitivity;  // d(x, y, theta, m)/dp, one column per p
 };
 
-struct ElasticaPieceData;
+class StepObserver;  // elastica_piece.h
 
 class ElasticaIntegrator {
  public:
-  // kCvodes is the reference; kDormandPrince is an explicit embedded Runge-Kutta 5(4) written here,
-  // about ten times cheaper per solve for these small systems (docs/performance.md).
-  enum class Backend { kCvodes, kDormandPrince };
+  // Which integrator runs the flexible pieces (docs/theory-shooting.md §4, speed and accuracy in
+  // docs/performance.md):
+  //   kRk8pd: GSL's explicit Prince-Dormand 8(7) (gsl_odeiv2_step_rk8pd), the default: the
+  //     fastest at the tolerances the solvers ask for (1e-9 ... 1e-12);
+  //   kCvodes: SUNDIALS CVODES (Adams, forward sensitivities), the reference;
+  //   kDormandPrince: the explicit Runge-Kutta 5(4) written here, kept for comparison;
+  //   kArkodeErk: SUNDIALS ARKODE's explicit stepper with the Fehlberg 13-7-8 table, measured
+  //     against kRk8pd (slower: N_Vector overhead per step).
+  enum class Backend { kRk8pd, kCvodes, kDormandPrince, kArkodeErk };
   struct Options {
-    Backend backend = Backend::kCvodes;  // which integrator runs the flexible pieces
-    double rtol = 1e-12;      // CVODES relative tolerance (issue: <= 1e-12 for the reference)
-    double atol = 1e-14;      // CVODES absolute tolerance on every state component
-    long max_steps = 200000;  // CVODES steps per segment piece before giving up
+    Backend backend = Backend::kRk8pd;  // which integrator runs the flexible pieces
+    double rtol = 1e-12;      // relative tolerance of the local error test (every backend)
+    double atol = 1e-14;      // absolute tolerance on every state component
+    long max_steps = 200000;  // steps per segment piece before giving up
     bool adams = true;        // Adams-Moulton (non-stiff); false = BDF for very stiff loads
     bool sensitivity_error_control = true;  // include sensitivities in the local error test
     bool fixed_point = true;  // Adams only: fixed-point corrector (no Jacobian, no dense
@@ -100,23 +108,25 @@ class ElasticaIntegrator {
                  std::vector<ShapePoint>* shape = nullptr,
                  bool last = true);
 
+  // Every accepted step of the following integrations is shown to `observer` (null: none). Only
+  // the explicit Runge-Kutta backends (kRk8pd, kDormandPrince) have steps to show; with another
+  // backend integrate() fails saying so.
+  void set_step_observer(StepObserver* observer) { observer_ = observer; }
+
   const Options& options() const { return options_; }
-  long steps_taken() const;  // CVODES steps since construction (for performance notes)
+  long steps_taken() const;  // integrator steps since construction (work budgets, performance)
 
  private:
   bool ensure_sensitivities(int Ns, std::string& error);
-  bool dormand_prince_piece(const ElasticaPieceData& piece,
-                            double s_a,
-                            double s_b,
-                            Eigen::Vector4d& state,
-                            Eigen::Matrix<double, 4, Eigen::Dynamic>& S,
-                            std::string& error,
-                            const std::vector<double>* shape_s,
-                            std::vector<ShapePoint>* shape,
-                            std::size_t& next_shape);
   struct Impl;
   Options options_;
+  StepObserver* observer_ = nullptr;
   std::unique_ptr<Impl> impl_;
 };
+
+// Command-line names of the backends: "rk8pd", "cvodes", "dormand-prince", "arkode-erk".
+const char* to_string(ElasticaIntegrator::Backend backend);
+// Accepts those names (case-insensitive); throws InvalidInput naming the allowed ones otherwise.
+ElasticaIntegrator::Backend integrator_backend_from_string(const std::string& name);
 
 }  // namespace flexure

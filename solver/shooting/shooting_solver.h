@@ -1,6 +1,7 @@
 #pragma once
-// Reference solver for planar segment chains: shooting on the root loads with CVODES (rtol 1e-12)
-// and a Newton method whose Jacobian comes from CVODES forward sensitivities.
+// Reference solver for planar segment chains: shooting on the root loads (integrated at rtol 1e-12
+// by GSL's Prince-Dormand 8(7), or CVODES, elastica_integrator.h) and a Newton method whose
+// Jacobian comes from forward sensitivities.
 //
 // Theory and conventions: docs/theory-shooting.md. Problem description:
 // solver/chain_model/segment_chain.h.
@@ -81,13 +82,12 @@ class ShootingSolver {
  public:
   struct Options {
     ShootingStrategy strategy = ShootingStrategy::kAuto;  // see the comment at the top
-    double rtol = 1e-12;  // CVODES relative tolerance (reference: <= 1e-12)
-    double atol = 1e-14;  // CVODES absolute tolerance
-    bool adams = true;    // Adams-Moulton; false = BDF
-    ElasticaIntegrator::Backend backend =
-        ElasticaIntegrator::Backend::kCvodes;   // kCvodes is the
-                                                // reference; kDormandPrince the fast explicit RK
-                                                // 5(4)
+    double rtol = 1e-12;  // integrator relative tolerance (reference: <= 1e-12)
+    double atol = 1e-14;  // integrator absolute tolerance
+    bool adams = true;    // CVODES only: Adams-Moulton; false = BDF
+    // GSL's Prince-Dormand 8(7) by default, the fastest at these tolerances; kCvodes is the
+    // reference, kDormandPrince the former built-in 5(4) (elastica_integrator.h).
+    ElasticaIntegrator::Backend backend = ElasticaIntegrator::Backend::kRk8pd;
     NewtonOptions newton;                       // Newton corrector tolerances and iteration limits
     ContinuationOptions continuation;           // used when the direct attempt fails or is disabled
     MultipleShootingOptions multiple_shooting;  // how finely large loads are cut (see

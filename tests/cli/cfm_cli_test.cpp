@@ -115,13 +115,16 @@ TEST(CfmCli, TableReproducesEveryReproducibleRow) {
 }
 
 TEST(CfmCli, LongExactTableShowsProgressOnATerminalOnly) {
-  // All 68 rows at 100 exact points take a few seconds (2.5 s here): on a terminal (a
-  // pseudo-terminal from util-linux `script`) a progress line appears after the first second and
-  // ends at rows x points; redirected, stderr stays empty and stdout is the same table.
+  // All 68 rows at 600 exact points take a few seconds (3.5 s here; at 100 points the table now
+  // takes 0.9 s, inside the quiet second): on a terminal (a pseudo-terminal from util-linux
+  // `script`) a progress line appears after the first second and ends at rows x points;
+  // redirected, stderr stays empty and stdout is the same table.
   if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "no `script`";
   const std::size_t rows = parse(run_flexure("cfm --list --json"))["subclasses"].size();
   ASSERT_EQ(rows, 68u);
-  const std::string args = "cfm --table --exact --exact-rows all --exact-points 100";
+  constexpr int kPoints = 600;
+  const std::string args =
+      "cfm --table --exact --exact-rows all --exact-points " + std::to_string(kPoints);
   ScratchDir dir;
   const std::string command = "cd '" + dir.path().string() + "' && script -qec \"'" +
                               FLEXURE_BINARY + "' " + args + "\" /dev/null > tty.txt 2>&1";
@@ -133,7 +136,8 @@ TEST(CfmCli, LongExactTableShowsProgressOnATerminalOnly) {
   // Shown by elapsed time: the first line comes after the quiet second.
   const std::size_t open = tty.find('(', first);
   EXPECT_GE(std::stod(tty.substr(open + 1)), 1.0) << tty.substr(first, 80);
-  EXPECT_NE(tty.find(label + std::to_string(rows * 100) + "/" + std::to_string(rows * 100) + " ("),
+  EXPECT_NE(tty.find(label + std::to_string(rows * kPoints) + "/" + std::to_string(rows * kPoints) +
+                     " ("),
             std::string::npos);
   const CommandResult redirected = run_flexure(args);
   ASSERT_EQ(redirected.exit_code, 0) << redirected.err;

@@ -107,9 +107,6 @@ TEST(OptionsValidate, MechanismSolversNameTheBadField) {
   mechanism::AnalysisOptions a;
   a.points = 1;
   expect_refused([&] { a.validate(); }, "points");
-  a = {};
-  a.shape_points = 1;
-  expect_refused([&] { a.validate(); }, "shape_points");
 }
 
 }  // namespace

@@ -5,9 +5,9 @@
 // equilibrium where the path of equilibria from the unloaded beam first reaches full load, and
 // both report the limit points it passes; the tips must agree to 1e-9, the limit-point counts
 // must agree, and the elliptic solver must answer every load (it refuses nothing in this region).
-// The shooting solver uses its Dormand-Prince 5(4) integrator here (about 10x faster than CVODES
-// on these loads, same tolerance); the CVODES reference is compared on a fixed grid in
-// shooting_elliptic_grid_test.cpp.
+// The shooting solver uses its default integrator here, GSL's Prince-Dormand 8(7) (about 20x
+// faster than CVODES on these loads, same tolerance); the CVODES reference is compared on a fixed
+// grid in shooting_elliptic_grid_test.cpp.
 //
 // Plus the loads once returned on a wrong branch, with the tip angle of an independent continuation
 // (scipy DOP853, 4000 proportional load steps) quoted in the issue, and the equilibrium being
@@ -39,11 +39,7 @@ std::string describe(double n, double alpha2, double mu) {
   return out.str();
 }
 
-ShootingSolver fast_shooting() {
-  ShootingSolver::Options options;
-  options.backend = ElasticaIntegrator::Backend::kDormandPrince;
-  return ShootingSolver(options);
-}
+ShootingSolver fast_shooting() { return ShootingSolver(ShootingSolver::Options{}); }
 
 void expect_agreement(double n, double alpha2, double mu, const ShootingSolver& shooting) {
   const EndLoad load = EndLoad::howell(n, alpha2, mu);

@@ -2,7 +2,8 @@
 // continuation from zero load) against the exact elliptic-function solver on a grid of end loads:
 // n in {-5, -2, -1, 0, 1, 3, 10}, alpha2 in {0.5, 2, 5, 10, 20}, mu in {0, +-1, pi, 2 pi}
 // (175 cases, inflectional and non-inflectional, tension and post-buckled compression), once with
-// CVODES (the reference integrator) and once with the built-in Dormand-Prince 5(4). Both
+// each integrator: GSL's Prince-Dormand 8(7) (the default), CVODES (the reference) and the
+// built-in Dormand-Prince 5(4). Both
 // methods return the proportional-loading branch, so tip coordinates must agree to 1e-9. Where the
 // elliptic solver reports a limit point on that branch (snap-through), shooting must pass a limit
 // point on its path and agree with the elliptic solver at 0.9 x the fold load.
@@ -104,8 +105,9 @@ TEST_P(ShootingEllipticGrid, TipAgreesWithEllipticSolver) {
 
 std::vector<GridParam> grid_params() {
   std::vector<GridParam> params;
-  for (auto backend :
-       {ElasticaIntegrator::Backend::kCvodes, ElasticaIntegrator::Backend::kDormandPrince}) {
+  for (auto backend : {ElasticaIntegrator::Backend::kRk8pd,
+                       ElasticaIntegrator::Backend::kCvodes,
+                       ElasticaIntegrator::Backend::kDormandPrince}) {
     for (double n : {-5.0, -2.0, -1.0, 0.0, 1.0, 3.0, 10.0}) params.push_back({n, backend});
   }
   return params;
@@ -115,10 +117,15 @@ INSTANTIATE_TEST_SUITE_P(LoadRatiosAndIntegrators,
                          ShootingEllipticGrid,
                          ::testing::ValuesIn(grid_params()),
                          [](const ::testing::TestParamInfo<GridParam>& info) {
-                           const bool cvodes =
-                               info.param.backend == ElasticaIntegrator::Backend::kCvodes;
+                           const char* name = "Rk8pd";
+                           if (info.param.backend == ElasticaIntegrator::Backend::kCvodes) {
+                             name = "Cvodes";
+                           } else if (info.param.backend ==
+                                      ElasticaIntegrator::Backend::kDormandPrince) {
+                             name = "DormandPrince";
+                           }
                            const int n = static_cast<int>(info.param.n);
-                           return std::string(cvodes ? "Cvodes" : "DormandPrince") + "_n" +
+                           return std::string(name) + "_n" +
                                   (n < 0 ? "minus" + std::to_string(-n) : std::to_string(n));
                          });
 
