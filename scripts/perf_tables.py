@@ -76,6 +76,14 @@ def pretty(seconds):
     return f"{seconds / 1e-9:.3g} ns"
 
 
+def repetitions_of(report):
+    """Google Benchmark records the repetitions on each entry, not at the top."""
+    for b in report.get("benchmarks", []):
+        if "repetitions" in b:
+            return b["repetitions"]
+    return report.get("repetitions", "?")
+
+
 def benchmark_table(name, report):
     rows = medians(report)
     reference = REFERENCES.get(name)
@@ -86,7 +94,7 @@ def benchmark_table(name, report):
     context = report.get("context", {})
     lines = [f"`{name}`, {context.get('num_cpus', '?')} CPUs, "
              f"{context.get('date', '')[:10]}; medians of "
-             f"{report.get('repetitions', context.get('repetitions', '?'))} repetitions"
+             f"{repetitions_of(report)} repetitions"
              + (f"; ratio = CPU time / `{reference}` in the same run" if ref_cpu else "") + ":",
              "",
              "| benchmark | CPU (median) | wall (median) |" + (" ratio |" if ref_cpu else ""),
