@@ -11,10 +11,9 @@
 //     F(phi|m) = sin(phi) RF(cos^2 phi, 1 - m sin^2 phi, 1)                      (DLMF 19.25.5)
 //     F(phi|m) - E(phi|m) = (m/3) sin^3(phi) RD(cos^2 phi, 1 - m sin^2 phi, 1)   (DLMF 19.25.9)
 //   extended to any real phi by F(phi + j pi) = F(phi) + 2 j K (Howell eqs. F.17-F.18).
-// - Complete integrals by the arithmetic-geometric mean started from sqrt(mc): K = pi / (2 M(1,
-// k'))
-//   and K - E = K sum 2^(n-1) c_n^2 (DLMF 19.8.1, 19.8.2; Howell eqs. F.8, F.10), a tenth of the
-//   cost of R_F.
+// - Complete integrals by the arithmetic-geometric mean started from sqrt(mc):
+//   K = pi / (2 M(1, k')) and K - E = K sum 2^(n-1) c_n^2 (DLMF 19.8.1, 19.8.2; Howell eqs. F.8,
+//   F.10), a fifth of the cost of R_F.
 // - sn, cn, dn and the amplitude am by the AGM (DLMF 22.20(ii)), also started from sqrt(mc), in
 //   Bulirsch's rational form of the descending transformation (R. Bulirsch, "Numerical calculation
 //   of elliptic integrals and elliptic functions", Numer. Math. 7 (1965) 78-90): one sine and

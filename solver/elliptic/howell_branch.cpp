@@ -128,7 +128,9 @@ HowellBranchSolution solve_howell_branch(double force, double psi, double x_tole
   const double transverse = 2.0 * force * pr.s0 * pr.c0;
   const double kb = std::sqrt(std::fabs(axial));
   double theta_linear = std::numeric_limits<double>::infinity();
-  if (axial >= 0.0 && kb < 1.4) {
+  if (kb < 1e-3) {
+    theta_linear = 0.5 * transverse;  // the axial load changes it by 5 kb^2/12 relative
+  } else if (axial >= 0.0 && kb < 1.4) {
     // theta0 = Q (sec k - 1)/P, written as 2 Q sin^2(k/2)/(k^2 cos k) to keep small k exact.
     const double h = kb > 0.0 ? std::sin(0.5 * kb) / (0.5 * kb) : 1.0;
     theta_linear = 0.5 * transverse * h * h / std::cos(kb);
