@@ -102,10 +102,14 @@ class ExactMechanismSolver {
   struct Options {
     // Inner shooting solves: GSL's rk8pd at rtol 1e-12 (the shooting default; about 4x fewer
     // right-hand sides than the Dormand-Prince 5(4) used before, docs/performance.md).
+    // A Newton trial may cost at most 4 times the integration of the current point
+    // (NewtonOptions::trial_cost_factor): the far trials of an undamped step (loads 100x the
+    // solution's on the thin strips of 3A-lssm) cost most of its stroke's work and are rejected.
     ShootingSolver::Options shooting = [] {
       ShootingSolver::Options o;
       o.rtol = 1e-12;
       o.atol = 1e-14;
+      o.newton.trial_cost_factor = 4.0;
       return o;
     }();
     double position_tolerance = 1e-10;  // middle pin: |pivot 2 mismatch| / slider_x0
@@ -145,8 +149,13 @@ class ExactMechanismSolver {
   explicit ExactMechanismSolver(MechanismDesign design);
   ExactMechanismSolver(MechanismDesign design, Options options);
 
-  // Solves at `displacement`, starting from `previous` if given (else from the PRBM state).
-  ExactPoint solve(double displacement, const ExactPoint* previous = nullptr) const;
+  // Solves at `displacement`, starting from `previous` if given (else from the PRBM state). With
+  // `fall_back` false and a converged `previous`, the serial chain tries Newton from `previous`
+  // only (no PRBM start, no continuation from zero load): what exact_stroke tries before it
+  // divides a stroke step into substeps.
+  ExactPoint solve(double displacement,
+                   const ExactPoint* previous = nullptr,
+                   bool fall_back = true) const;
 
   const MechanismDesign& design() const { return design_; }
   ExactSupport support() const { return support_; }
@@ -161,7 +170,7 @@ class ExactMechanismSolver {
   double max_force() const { return max_force_; }
 
  private:
-  ExactPoint solve_direct(double displacement, const ExactPoint* previous) const;
+  ExactPoint solve_direct(double displacement, const ExactPoint* previous, bool fall_back) const;
   ExactPoint solve_two_force(double displacement, const ExactPoint* previous) const;
   ExactPoint solve_pinned_middle(double displacement, const ExactPoint* previous) const;
   ExactPoint solve_pinned_ends(double displacement, const ExactPoint* previous) const;
