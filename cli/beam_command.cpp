@@ -44,7 +44,7 @@ struct BeamArgs {
   std::string tip_angle;  // an angle, radians or with a unit
   double follower = 0.0;
   int elements = 100;
-  int increments = 10;
+  int increments = 1;
   std::string chain_variant = "corrected";
   std::string integrator = "rk8pd";
   CLI::Option* integrator_option = nullptr;
@@ -570,8 +570,11 @@ void register_beam_command(CLI::App& app) {
       ->default_str("0");
   beam->add_option("--elements", args->elements, "Chain algorithm: number of elements N")
       ->default_str("100");
-  beam->add_option("--increments", args->increments, "Chain algorithm: load increments")
-      ->default_str("10");
+  beam->add_option("--increments",
+                   args->increments,
+                   "Chain algorithm: load increments to start with (default 1: the whole load; a "
+                   "step whose passes fail is halved, so increments are added only where needed)")
+      ->default_str("1");
   args->integrator_option =
       beam->add_option("--integrator",
                        args->integrator,

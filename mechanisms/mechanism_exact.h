@@ -102,10 +102,14 @@ class ExactMechanismSolver {
   struct Options {
     // Inner shooting solves: GSL's rk8pd at rtol 1e-12 (the shooting default; about 4x fewer
     // right-hand sides than the Dormand-Prince 5(4) used before, docs/performance.md).
+    // A Newton trial may cost at most 4 times the integration of the current point
+    // (NewtonOptions::trial_cost_factor): the far trials of an undamped step (loads 100x the
+    // solution's on the thin strips of 3A-lssm) cost most of its stroke's work and are rejected.
     ShootingSolver::Options shooting = [] {
       ShootingSolver::Options o;
       o.rtol = 1e-12;
       o.atol = 1e-14;
+      o.newton.trial_cost_factor = 4.0;
       return o;
     }();
     double position_tolerance = 1e-10;  // middle pin: |pivot 2 mismatch| / slider_x0
@@ -120,13 +124,15 @@ class ExactMechanismSolver {
     // loaded one: exact_stroke gives up, each remaining solve returning converged = false with a
     // message naming the budget, once work_budget + work_budget_per_point * (stroke points)
     // integrator steps have been spent by all its solves (the shooting solver's own steps are
-    // counted when it returns, the middle-pin Newton's at every evaluation). The slowest built-in
-    // strokes take 1.1e7 steps (3A-lslm at 3 points, where the start strategies run; about 6 s
-    // here at 2e6 steps/s) and at most 1.0e6 at the default 50 points (3A-lssm), so the budget
-    // leaves a factor of about 3.6; near a fold or with very unequal flexures the start strategies
-    // and substeps could otherwise run for minutes (issue 11). A large value lifts it.
-    double work_budget = 4e7;            // integrator steps
-    double work_budget_per_point = 2e5;  // integrator steps per stroke point
+    // counted when it returns, the middle-pin Newton's at every evaluation). An rk8pd step costs
+    // about 2.5 Dormand-Prince steps (about 1.1e6 steps/s here), so the budget, 4e7 + 2e5 per
+    // point when steps were Dormand-Prince's, was halved to keep its time (about 20 s). The slowest
+    // built-in stroke takes 4.4e5 steps (3A-lssm at 5 points, where the start strategies run) and
+    // 5.1e4 at the default 50 points, so the budget leaves a factor of about 45; near a fold or
+    // with very unequal flexures the start strategies and substeps could otherwise run for minutes
+    // (issue 11). A large value lifts it.
+    double work_budget = 2e7;            // integrator steps
+    double work_budget_per_point = 1e5;  // integrator steps per stroke point
     // Set by exact_stroke (solve() called directly has none): the steps spent so far by every
     // solver of the stroke, shared between them, and the limit.
     std::shared_ptr<long> work_spent;
@@ -145,8 +151,13 @@ class ExactMechanismSolver {
   explicit ExactMechanismSolver(MechanismDesign design);
   ExactMechanismSolver(MechanismDesign design, Options options);
 
-  // Solves at `displacement`, starting from `previous` if given (else from the PRBM state).
-  ExactPoint solve(double displacement, const ExactPoint* previous = nullptr) const;
+  // Solves at `displacement`, starting from `previous` if given (else from the PRBM state). With
+  // `fall_back` false and a converged `previous`, the serial chain tries Newton from `previous`
+  // only (no PRBM start, no continuation from zero load): what exact_stroke tries before it
+  // divides a stroke step into substeps.
+  ExactPoint solve(double displacement,
+                   const ExactPoint* previous = nullptr,
+                   bool fall_back = true) const;
 
   const MechanismDesign& design() const { return design_; }
   ExactSupport support() const { return support_; }
@@ -161,7 +172,7 @@ class ExactMechanismSolver {
   double max_force() const { return max_force_; }
 
  private:
-  ExactPoint solve_direct(double displacement, const ExactPoint* previous) const;
+  ExactPoint solve_direct(double displacement, const ExactPoint* previous, bool fall_back) const;
   ExactPoint solve_two_force(double displacement, const ExactPoint* previous) const;
   ExactPoint solve_pinned_middle(double displacement, const ExactPoint* previous) const;
   ExactPoint solve_pinned_ends(double displacement, const ExactPoint* previous) const;

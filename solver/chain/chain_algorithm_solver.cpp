@@ -9,6 +9,7 @@
 #include "flexure/solver/chain/chain_discretisation.h"
 #include "flexure/solver/chain/chain_fixed_point.h"
 #include "flexure/solver/chain/chain_pass.h"
+#include "flexure/solver/chain/chain_transfer.h"
 #include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/tip_reach.h"
 #include "flexure/solver/common/errors.h"
@@ -275,6 +276,22 @@ void ChainAlgorithmSolver::Options::validate() const {
 
 namespace {
 
+// Flexible elements of the coarse chain whose load path predicts the requested one, or 0 when
+// there is none: an eighth of the requested count, at least four per flexible segment, and only
+// when that is at most half the requested count.
+constexpr double kCoarseTolerance = 1e-6;  // passes and tip conditions of the coarse path
+
+int coarse_element_count(const ChainAlgorithmSolver::Options& o, const ChainDiscretisation& d) {
+  if (!o.coarse_path) return 0;
+  int flexible_segments = 0;
+  for (std::size_t j = 0; j + 1 < d.model_node.size(); ++j) {
+    const int first = d.model_node[j];
+    if (first < d.element_count() && !d.elements[first].rigid) ++flexible_segments;
+  }
+  const int coarse = std::max(4 * flexible_segments, o.elements / 8);
+  return 2 * coarse <= o.elements ? coarse : 0;
+}
+
 ChainPose tip_of(const Problem& p, const ChainGeometry& g) {
   const int E = p.d.element_count();
   return ChainPose{g.x[E], g.y[E], g.theta[E]};
@@ -479,6 +496,67 @@ ChainResult ChainAlgorithmSolver::solve_once(const SegmentChain& chain, const Op
                           r.iterations,
                           r.residual);
     return r;
+  }
+
+  // The load path on a coarse chain, then the requested chain in one increment from its answer:
+  // the path needs steps small enough to stay on its branch (max_angle_step), and on the coarse
+  // chain they cost a fraction of the passes; the fine answer is the same discrete equilibrium as
+  // the fine path's, reached from the coarse one's shape (docs/theory-chain.md §4).
+  const int coarse = coarse_element_count(o, p.d);
+  if (coarse > 0) {
+    Options co = o;
+    co.elements = coarse;
+    co.coarse_path = false;
+    // A predictor only: its own discretisation error (about 5e-4 at alpha2 = 10 for 12 elements,
+    // §3) is far above these tolerances, which the fine increment then meets.
+    co.tolerance = std::max(o.tolerance, kCoarseTolerance);
+    co.path_tolerance = std::max(o.path_tolerance, kCoarseTolerance);
+    co.shooting_tolerance = std::max(o.shooting_tolerance, kCoarseTolerance);
+    const ChainResult c = solve_once(chain, co);
+    r.iterations += c.iterations;
+    if (c.converged()) {
+      ChainGeometry coarse_geometry;
+      for (const ShapePoint& q : c.nodes) {
+        coarse_geometry.x.push_back(q.x);
+        coarse_geometry.y.push_back(q.y);
+        coarse_geometry.theta.push_back(q.theta);
+      }
+      const ChainGeometry start =
+          transfer_geometry(discretise(chain, coarse), coarse_geometry, p.d);
+      const Eigen::Vector3d z_coarse(c.tip_reaction.Fx, c.tip_reaction.Fy, c.tip_reaction.M);
+      StepOutcome s = solve_step(p, how, 1.0, z_coarse, start, o);
+      r.iterations += s.passes;
+      r.newton_iterations += c.newton_iterations + s.newton_iterations;
+      double turn = 0.0;
+      for (std::size_t i = 0; s.ok && i < start.theta.size(); ++i) {
+        turn = std::max(turn, std::abs(s.trial.geometry.theta[i] - start.theta[i]));
+      }
+      if (s.ok && turn <= o.max_angle_step) {
+        geometry = std::move(s.trial.geometry);
+        z = s.z;
+        r.residual = s.trial.change;
+        r.boundary_residual = s.trial.norm;
+        // The path is the coarse chain's; its last point is the requested chain's answer.
+        r.increments = c.increments;
+        r.failed_increments = c.failed_increments;
+        r.load_path = c.load_path;
+        if (!r.load_path.empty()) r.load_path.pop_back();
+        record(1.0, geometry, s.passes);
+        fill_state(p, geometry, 1.0, z, r);
+        r.load_factor = 1.0;
+        r.set_converged(true);
+        r.message = fmt::format(
+            "converged: {} increments ({} retried) on a chain of {} elements, then one on the "
+            "requested chain from its answer; {} passes in all, last change {:.3g}",
+            c.increments,
+            c.failed_increments,
+            coarse,
+            r.iterations,
+            r.residual);
+        return r;
+      }
+    }
+    // Otherwise the path on the requested chain itself, as if there were no coarse one.
   }
 
   // Proportional loading with adaptive steps, converged at every step: the corrected variant, and

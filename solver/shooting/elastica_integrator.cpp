@@ -287,10 +287,12 @@ bool ElasticaIntegrator::integrate(
       for (int k = 0; k < kStates; ++k) y[kStates * (i + 1) + k] = S(k, i);
     }
     ShapeCursor cursor{want_shape ? shape_s : nullptr, shape, next_shape};
-    const ExplicitRkSettings settings{options_.rtol, options_.atol, options_.max_steps};
+    ExplicitRkSettings settings{options_.rtol, options_.atol, options_.max_steps};
+    if (step_limit_ > 0) settings.max_steps = std::min(settings.max_steps, step_limit_ - d.steps);
     bool ok = false;
     if (options_.backend == Backend::kRk8pd) {
-      ok = d.rk8pd->integrate(d.piece, Ns, s_a, s_b, y, cursor, observer_, d.steps, error);
+      ok = d.rk8pd->integrate(
+          d.piece, Ns, s_a, s_b, y, cursor, observer_, settings.max_steps, d.steps, error);
     } else if (options_.backend == Backend::kArkodeErk) {
       ok = d.arkode->integrate(d.piece, Ns, s_a, s_b, y, cursor, d.steps, error);
     } else {
@@ -358,6 +360,10 @@ bool ElasticaIntegrator::integrate(
         const double s_a = piece.segment_start + cuts[p];
         const double s_b = piece.segment_start + cuts[p + 1];
         emit_below(std::nextafter(s_a, std::numeric_limits<double>::infinity()));
+        if (step_limit_ > 0 && d.steps >= step_limit_) {
+          error = fmt::format("integration step limit {} reached at s = {}", step_limit_, s_a);
+          return false;
+        }
         if (options_.backend != Backend::kCvodes) {
           if (!explicit_piece(s_a, s_b)) return false;
           continue;

@@ -112,6 +112,11 @@ class ElasticaIntegrator {
   // the explicit Runge-Kutta backends (kRk8pd, kDormandPrince) have steps to show; with another
   // backend integrate() fails saying so.
   void set_step_observer(StepObserver* observer) { observer_ = observer; }
+  // > 0: integrate() fails ("step limit reached") once steps_taken() would exceed this total; the
+  // explicit backends stop within a step, CVODES at the next piece. 0: no limit (the default).
+  // Newton uses it to give up on a trial point that costs far more than the current one
+  // (NewtonOptions::trial_cost_factor).
+  void set_step_limit(long total_steps) { step_limit_ = total_steps; }
 
   const Options& options() const { return options_; }
   long steps_taken() const;  // integrator steps since construction (work budgets, performance)
@@ -121,6 +126,7 @@ class ElasticaIntegrator {
   struct Impl;
   Options options_;
   StepObserver* observer_ = nullptr;
+  long step_limit_ = 0;
   std::unique_ptr<Impl> impl_;
 };
 

@@ -92,6 +92,7 @@ bool GslRk8pdPiece::integrate(const ElasticaPieceData& piece,
                               std::vector<double>& y,
                               ShapeCursor& shape,
                               StepObserver* observer,
+                              long max_steps,
                               long& steps,
                               std::string& error) {
   Impl::Stepper* st = impl_->stepper(Ns);
@@ -121,8 +122,8 @@ bool GslRk8pdPiece::integrate(const ElasticaPieceData& piece,
     const bool to_shape_point = shape.pending_before(s_b);
     const double target = to_shape_point ? std::max((*shape.shape_s)[shape.next], s) : s_b;
     while (s < target) {
-      if (++taken > settings_.max_steps) {
-        error = fmt::format("GSL rk8pd: more than {} steps at s = {}", settings_.max_steps, s);
+      if (++taken > max_steps) {
+        error = fmt::format("GSL rk8pd: more than {} steps at s = {}", max_steps, s);
         return false;
       }
       const bool final_step = h >= target - s;

@@ -24,7 +24,7 @@ class GslRk8pdPiece {
   // Integrates the packed state `y` (4 (Ns + 1) components) of one flexible piece from s_a to
   // s_b, stopping on every pending shape point of `shape` before s_b. Adds the steps taken to
   // `steps`; `observer` (may be null) sees every accepted step. Returns false with `error` when
-  // GSL fails, the step budget is spent or the state is not finite.
+  // GSL fails, more than `max_steps` steps are needed or the state is not finite.
   bool integrate(const ElasticaPieceData& piece,
                  int Ns,
                  double s_a,
@@ -32,6 +32,7 @@ class GslRk8pdPiece {
                  std::vector<double>& y,
                  ShapeCursor& shape,
                  StepObserver* observer,
+                 long max_steps,
                  long& steps,
                  std::string& error);
 

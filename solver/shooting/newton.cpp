@@ -53,6 +53,11 @@ bool assemble(const ShootingProblem& problem,
 
 }  // namespace
 
+namespace {
+// Fewest integration steps a trial may take under NewtonOptions::trial_cost_factor.
+constexpr long kMinTrialSteps = 200;
+}  // namespace
+
 NewtonOutcome newton_solve(const ShootingProblem& problem,
                            ElasticaIntegrator& integrator,
                            const NewtonOptions& options,
@@ -62,10 +67,12 @@ NewtonOutcome newton_solve(const ShootingProblem& problem,
   NewtonOutcome out;
   const int nz = problem.size();
   Augmented sys;
+  long cost = integrator.steps_taken();
   if (!assemble(problem, integrator, z, lambda, constraint, out.last, sys)) {
     out.message = "integration failed at the starting guess: " + out.last.error;
     return out;
   }
+  cost = integrator.steps_taken() - cost;  // of an evaluation at the current point
   double norm = sys.g.lpNorm<Eigen::Infinity>();
   for (int it = 0; it < options.max_iterations; ++it) {
     out.residual = norm;
@@ -91,11 +98,20 @@ NewtonOutcome newton_solve(const ShootingProblem& problem,
       double lambda_try = constraint != nullptr ? lambda + t * step[nz] : lambda;
       ShootingEvaluation eval;
       Augmented trial;
-      if (assemble(problem, integrator, z_try, lambda_try, constraint, eval, trial)) {
+      const long before = integrator.steps_taken();
+      if (options.trial_cost_factor > 0.0) {
+        integrator.set_step_limit(
+            before + std::max(kMinTrialSteps, static_cast<long>(options.trial_cost_factor * cost)));
+      }
+      const bool evaluated =
+          assemble(problem, integrator, z_try, lambda_try, constraint, eval, trial);
+      integrator.set_step_limit(0);
+      if (evaluated) {
         const double trial_norm = trial.g.lpNorm<Eigen::Infinity>();
         if (trial_norm < (1.0 - 1e-4 * t) * norm || trial_norm <= options.residual_tolerance) {
           z = z_try;
           lambda = lambda_try;
+          cost = integrator.steps_taken() - before;
           sys = std::move(trial);
           out.last = std::move(eval);
           norm = trial_norm;

@@ -19,6 +19,12 @@ struct NewtonOptions {
                                       // below 1e3 * residual_tolerance (integration noise floor)
   int max_iterations = 25;            // Newton iterations per solve
   int max_backtracks = 10;            // step halvings in the line search before giving up
+  // > 0: a trial point of the line search may cost at most this times the integration steps of
+  // the current point (and at least kMinTrialSteps); a costlier one is abandoned as a failed
+  // trial, so the step is halved. A trial far from the current point (loads many times its own)
+  // costs many steps and is almost never accepted: in the exact mechanism strokes such trials
+  // took most of the work (3A-lssm, mechanism_exact.h). 0: no limit.
+  double trial_cost_factor = 0.0;
 };
 
 struct NewtonOutcome : SolveStatus {

@@ -18,6 +18,10 @@ void ShootingSolver::Options::validate() const {
   }
   if (!(o.atol > 0.0))
     throw InvalidInput(fmt::format("shooting atol must be > 0 (got {})", o.atol));
+  if (!(o.newton.trial_cost_factor >= 0.0)) {
+    throw InvalidInput(
+        fmt::format("Newton trial_cost_factor must be >= 0 (got {})", o.newton.trial_cost_factor));
+  }
   if (o.newton.max_iterations < 1) {
     throw InvalidInput(
         fmt::format("max Newton iterations must be >= 1 (got {})", o.newton.max_iterations));

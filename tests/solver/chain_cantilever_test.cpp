@@ -219,6 +219,41 @@ TEST(ChainContinuation, FailedStepsAreRetriedSmallerAndThePathIsRecorded) {
   EXPECT_NEAR(r.tip.x, reference.tip.x, 1e-9);
 }
 
+TEST(ChainContinuation, OneIncrementToStartWithAddsIncrementsWhereThePathNeedsThem) {
+  // The defaults start with one increment (the whole load) and a coarse chain's path. alpha2 =
+  // 10 turns the tip by 1.43 rad, beyond max_angle_step (0.25 rad) for one step, so increments are
+  // added by halving; alpha2 = 60 (tip turned 1.7 rad, post-buckled-like bending) needs more. The
+  // answer must be the same discrete equilibrium as the former default (10 increments on the
+  // requested chain, no coarse path) to the pass tolerance, and the exact tip to the N = 100
+  // discretisation error.
+  for (const EndLoad& load : {EndLoad::howell(0.0, 10.0), EndLoad::howell(-2.0, 60.0, 1.0)}) {
+    const ChainResult r = ChainAlgorithmSolver().solve(load);
+    ASSERT_TRUE(r.converged()) << r.message;
+    EXPECT_GT(r.increments, 1) << r.message;
+    EXPECT_GT(r.failed_increments, 0) << r.message;
+    ASSERT_EQ(static_cast<int>(r.load_path.size()), r.increments);
+    EXPECT_DOUBLE_EQ(r.load_path.back().load_factor, 1.0);
+    Options former;
+    former.increments = 10;
+    former.coarse_path = false;
+    const ChainResult f = ChainAlgorithmSolver(former).solve(load);
+    ASSERT_TRUE(f.converged()) << f.message;
+    EXPECT_NEAR(r.tip.x, f.tip.x, 1e-10);
+    EXPECT_NEAR(r.tip.y, f.tip.y, 1e-10);
+    EXPECT_NEAR(r.tip.theta, f.tip.theta, 1e-10);
+    const EllipticResult e = EllipticSolver().solve(load);
+    ASSERT_TRUE(e.converged()) << e.message;
+    EXPECT_NEAR(r.tip_pose.theta0, e.tip.theta0, kTipTolerance);
+    EXPECT_NEAR(r.tip_pose.a_over_l, e.tip.a_over_l, kTipTolerance);
+    EXPECT_NEAR(r.tip_pose.b_over_l, e.tip.b_over_l, kTipTolerance);
+  }
+  // A small load needs no more than the one increment.
+  const ChainResult small = ChainAlgorithmSolver().solve(EndLoad::howell(0.0, 0.3));
+  ASSERT_TRUE(small.converged()) << small.message;
+  EXPECT_EQ(small.increments, 1) << small.message;
+  EXPECT_EQ(small.failed_increments, 0) << small.message;
+}
+
 TEST(ChainContinuation, ReportsWhereAPathCannotContinue) {
   // One element under pure compression Fx = -5 ceases to have a flexibility at the root of eq.
   // 7.30's denominator, L^2 P/EI = -2.4857, i.e. at load factor 2.4857 / 5.

@@ -125,6 +125,35 @@ TEST(ShootingIntegrators, ShapeOfEveryBackendStopsOnTheRequestedPoints) {
   }
 }
 
+TEST(ShootingIntegrators, StepLimitStopsAnIntegrationAndTrialCostLimitsKeepTheAnswer) {
+  // The step limit ends an integration with a message once the total would pass it.
+  const SegmentChain chain = uniform_cantilever(EndLoad::howell(0.0, 3.0));
+  const ShootingProblem problem(chain);
+  ElasticaIntegrator integrator(ElasticaIntegrator::Options{});
+  integrator.set_step_limit(integrator.steps_taken() + 2);
+  ShootingEvaluation eval;
+  EXPECT_FALSE(problem.evaluate(problem.unloaded_unknowns(), 1.0, true, false, integrator, eval));
+  EXPECT_NE(eval.error.find("more than"), std::string::npos) << eval.error;
+  integrator.set_step_limit(0);
+  EXPECT_TRUE(problem.evaluate(problem.unloaded_unknowns(), 1.0, true, false, integrator, eval))
+      << eval.error;
+  // Abandoning costly Newton trials (NewtonOptions::trial_cost_factor) changes the path to an
+  // answer at most, never the answer: the same tips to the integration tolerance on the seeded
+  // loads, by continuation (kContinuation) and by direct Newton from the linear guess.
+  for (ShootingStrategy strategy : {ShootingStrategy::kContinuation, ShootingStrategy::kAuto}) {
+    ShootingSolver::Options plain;
+    plain.strategy = strategy;
+    ShootingSolver::Options limited = plain;
+    limited.newton.trial_cost_factor = 4.0;
+    for (const EndLoad& load : seeded_loads(10)) {
+      const ShootingResult a = ShootingSolver(plain).solve(load);
+      const ShootingResult b = ShootingSolver(limited).solve(load);
+      ASSERT_TRUE(a.converged() && b.converged()) << describe(load) << ": " << b.message;
+      EXPECT_LE(tip_distance(b, a.tip.x, a.tip.y, a.tip.theta), 1e-10) << describe(load);
+    }
+  }
+}
+
 TEST(ShootingIntegrators, BackendNamesRoundTrip) {
   for (auto backend : {ElasticaIntegrator::Backend::kRk8pd,
                        ElasticaIntegrator::Backend::kCvodes,
