@@ -179,8 +179,11 @@ void run_sweep_beam(const SweepBeamArgs& args) {
       progress(static_cast<std::size_t>(done), static_cast<std::size_t>(total));
     };
   }
-  io::BeamSweepMetadata metadata{
-      to_string(method), grid.base.load_ratio_n, grid.base.mu, tolerance};
+  io::BeamSweepMetadata metadata;
+  metadata.method = to_string(method);
+  metadata.load_ratio_n = grid.base.load_ratio_n;
+  metadata.mu = grid.base.mu;
+  metadata.tolerance = tolerance;
   metadata.axes = stored_axes(grid);
   metadata.given = given_name(grid.base);
   metadata.given_value = grid.base.value;

@@ -80,6 +80,8 @@ def family_style(method):
         return "tab:orange", "s"
     if method.startswith("shooting_dopri"):
         return "tab:red", "D"
+    if method.startswith("shooting_rk8pd"):
+        return "tab:brown", "v"
     if method.startswith("chain"):
         return "tab:green", "^"
     if method.startswith("prbm"):
@@ -132,10 +134,10 @@ def plot_pareto(f, out):
     for ax in axes.flat[len(problems):]:
         ax.axis("off")
     handles = [plt.Line2D([], [], color=c, marker=m, ls="") for c, m in
-               [family_style(x) for x in ("elliptic", "shooting_cvodes", "shooting_dopri",
-                                          "chain", "prbm", "calculix")]]
-    fig.legend(handles, ["elliptic", "shooting CVODES", "shooting Dormand-Prince", "chain",
-                         "PRBM", "CalculiX"], loc="lower right", fontsize=8)
+               [family_style(x) for x in ("elliptic", "shooting_rk8pd", "shooting_cvodes",
+                                          "shooting_dopri", "chain", "prbm", "calculix")]]
+    fig.legend(handles, ["elliptic", "shooting rk8pd", "shooting CVODES",
+                         "shooting Dormand-Prince", "chain", "PRBM", "CalculiX"], loc="lower right", fontsize=8)
     fig.suptitle("Accuracy against time (hollow: some loads failed; dashed: Pareto front)",
                  fontsize=10)
     fig.tight_layout()
@@ -166,7 +168,7 @@ def load_plane(g):
 def plot_stability(f, out, problem="cantilever_force"):
     if problem not in f:
         return
-    wanted = [m for m in ("elliptic", "shooting_cvodes_rtol1e-06", "shooting_dopri_rtol1e-06",
+    wanted = [m for m in ("elliptic", "shooting_rk8pd_rtol1e-06", "shooting_cvodes_rtol1e-06",
                           "shooting_cvodes_rtol1e-09", "chain_N010_inc01", "chain_N010_inc20",
                           "chain_N050_inc05", "chain_N200_inc05", "prbm") if m in f[problem]]
     if not wanted:
@@ -225,9 +227,10 @@ def plot_column(f, out, problem="post_buckled_column"):
     ax.set_title("post-buckled column: error ~1 = another equilibrium branch; x at top = failed",
                  fontsize=9)
     handles = [plt.Line2D([], [], color=c, marker=m, ls="") for c, m in
-               [family_style(x) for x in ("elliptic", "shooting_cvodes", "shooting_dopri",
-                                          "chain", "prbm")]]
-    ax.legend(handles, ["elliptic", "shooting CVODES", "shooting Dormand-Prince", "chain",
+               [family_style(x) for x in ("elliptic", "shooting_rk8pd", "shooting_cvodes",
+                                          "shooting_dopri", "chain", "prbm")]]
+    ax.legend(handles, ["elliptic", "shooting rk8pd", "shooting CVODES",
+                        "shooting Dormand-Prince", "chain",
                         "PRBM"], fontsize=7, loc="center right")
     fig.tight_layout()
     fig.savefig(os.path.join(out, "bench_column.png"), dpi=80)

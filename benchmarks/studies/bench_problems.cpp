@@ -146,14 +146,16 @@ std::vector<BenchMethod> standard_methods(bool quick) {
   methods.push_back({"elliptic", MethodFamily::kElliptic});
   const std::vector<double> rtols =
       quick ? std::vector<double>{1e-8} : std::vector<double>{1e-6, 1e-9, 1e-12};
-  for (Backend backend : {Backend::kCvodes, Backend::kDormandPrince}) {
+  // rk8pd is the default integrator; CVODES the reference; Dormand-Prince the former built-in.
+  const std::pair<Backend, const char*> backends[] = {
+      {Backend::kRk8pd, "rk8pd"}, {Backend::kCvodes, "cvodes"}, {Backend::kDormandPrince, "dopri"}};
+  for (const auto& [backend, backend_name] : backends) {
     for (double rtol : rtols) {
       BenchMethod m;
       m.family = MethodFamily::kShooting;
       m.backend = backend;
       m.rtol = rtol;
-      m.name = fmt::format(
-          "shooting_{}_rtol{:.0e}", backend == Backend::kCvodes ? "cvodes" : "dopri", rtol);
+      m.name = fmt::format("shooting_{}_rtol{:.0e}", backend_name, rtol);
       methods.push_back(m);
     }
   }

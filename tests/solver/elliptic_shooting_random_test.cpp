@@ -88,7 +88,9 @@ TEST(EllipticShootingRandom, IssueElevenLoadsFollowTheProportionalPath) {
       {15.0, 3.448426183511485, -3.5841092436926187, -3.70478},
       {10.058119179379627, 8.549908987101713, -6.283185307179586, -3.92930},
   };
-  const ShootingSolver shooting;  // CVODES, the reference integrator
+  ShootingSolver::Options reference;
+  reference.backend = ElasticaIntegrator::Backend::kCvodes;  // the reference integrator
+  const ShootingSolver shooting(reference);
   for (const IssueCase& c : cases) {
     const EndLoad load = EndLoad::howell(c.n, c.alpha2, c.mu);
     const EllipticResult e = EllipticSolver().solve(load);
