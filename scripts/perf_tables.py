@@ -33,8 +33,11 @@ DOC = os.path.join(ROOT, "docs", "performance.md")
 # The yardstick of each program: its other rows are divided by this one's CPU time.
 REFERENCES = {
     "elliptic_bench": "BM_GslBrentReference",
-    "shooting_bench": None,
-    "chain_bench": None,
+    # rk:2 is GSL's rk8pd, the default integrator, on the issue-14 goal case (n = 0, alpha2 = 3).
+    "shooting_bench": "BM_CantileverDirect/rtol_exp:9/rk:2",
+    # The corrected chain at its default (one increment to start, coarse-chain path), N = 100.
+    "chain_bench": "BM_ChainCorrected/N:100/inc:1/coarse:1",
+    "mechanism_bench": "BM_ExactStroke50/1A-lpp",
 }
 
 MARKER = re.compile(r"<!-- perf-table: (\S+) -->\n.*?<!-- end perf-table -->", re.S)
