@@ -16,23 +16,61 @@ namespace flexure::mechanism {
 
 namespace {
 
-// Adds the stresses and strain energy of the flexible segments of one nondimensional chain, solved
-// from `unknowns`, whose internal force (tip load) is (Nx, Ny) N and root moment m0 N m in the
-// chain's own frame; `pivots[j]` = pivot of segment j (0 rigid).
+// One nondimensional chain of a solved point: the crank's chain, or the coupler's. Its internal
+// force (tip load) is the point's (Nx, Ny) N in the chain's own frame (the coupler chain's frame
+// is the root frame turned by pi about the slider: its tip load, the crank's push on the coupler,
+// -N turned by pi, is +N there).
+struct ChainPart {
+  const SegmentChain& chain;
+  const std::vector<double>& unknowns;
+  const std::vector<int>& pivots;  // pivots[j]: the pivot of segment j (0: rigid or none)
+  double m0;                       // root moment, N m
+};
+
+std::vector<ChainPart> chain_parts(const ExactPoint& point, const PhysicalChain& pc) {
+  std::vector<ChainPart> parts{{point.chain, point.unknowns, pc.flexible_pivot, point.m0}};
+  if (!point.coupler_chain.segments.empty()) {
+    parts.push_back(
+        {point.coupler_chain, point.coupler_unknowns, pc.coupler_flexible_pivot, point.coupler_m0});
+  }
+  return parts;
+}
+
+// Adds flexible segment j's strain energy U (J) to the total and, when it belongs to a pivot, its
+// energy, rotation and largest stress (bending M c/I with the largest |moment| m_max N m, plus the
+// axial N/A of the internal force N) to that pivot's.
+void add_segment(const MechanismDesign& design,
+                 const ChainPart& part,
+                 std::size_t j,
+                 double U,
+                 double m_max,
+                 double N,
+                 double rotation,
+                 ExactSegmentState& st) {
+  st.strain_energy += U;
+  const int pivot = j < part.pivots.size() ? part.pivots[j] : 0;
+  if (pivot == 0) return;
+  const JointDesign& jd = design.joints[pivot - 1];
+  const RectangularSection section = jd.section(design.E);
+  const double sigma = m_max * 0.5 * jd.thickness / section.second_moment() + N / section.area();
+  st.max_stress[pivot - 1] = std::max(st.max_stress[pivot - 1], sigma);
+  st.pivot_strain_energy[pivot - 1] += U;
+  st.pivot_rotation[pivot - 1] += rotation;
+  st.has_pivot[pivot - 1] = true;
+}
+
+// Adds the stresses and strain energy of the flexible segments of one chain, re-solved from its
+// unknowns for a shape of `shape_points` samples (the sampled check of add_chain_moments).
 void accumulate_chain(const MechanismDesign& design,
-                      const SegmentChain& chain,
-                      const std::vector<double>& unknowns,
-                      const std::vector<int>& pivots,
-                      double m0,
-                      double Nx,
-                      double Ny,
-                      double L,
-                      double EI_scale,
+                      const ChainPart& part,
+                      const ExactPoint& point,
                       int shape_points,
                       ExactSegmentState& st) {
+  const SegmentChain& chain = part.chain;
+  const double m0 = part.m0, Nx = point.Nx, Ny = point.Ny, L = point.length_scale;
   ShootingSolver::Options o;
   o.shape_points = shape_points;
-  const ShootingResult r = ShootingSolver(o).solve_from(chain, unknowns);
+  const ShootingResult r = ShootingSolver(o).solve_from(chain, part.unknowns);
   if (!r.converged() || r.shape.size() < 2) {
     throw NoConvergence("re-solving the exact point for its shape failed: " + r.message);
   }
@@ -74,19 +112,8 @@ void accumulate_chain(const MechanismDesign& design,
                 samples[k - 1].second * samples[k - 1].second);
         }
       }
-      U *= L / (2.0 * f->EI * EI_scale);
-      st.strain_energy += U;
-      const int pivot = j < pivots.size() ? pivots[j] : 0;
-      if (pivot > 0) {
-        const JointDesign& jd = design.joints[pivot - 1];
-        const RectangularSection section = jd.section(design.E);
-        const double sigma =
-            m_max * 0.5 * jd.thickness / section.second_moment() + N / section.area();
-        st.max_stress[pivot - 1] = std::max(st.max_stress[pivot - 1], sigma);
-        st.pivot_strain_energy[pivot - 1] += U;
-        st.pivot_rotation[pivot - 1] += end.theta - start.theta;
-        st.has_pivot[pivot - 1] = true;
-      }
+      U *= L / (2.0 * f->EI * point.EI_scale);
+      add_segment(design, part, j, U, m_max, N, end.theta - start.theta, st);
     }
     s0 += len;
   }
@@ -100,28 +127,8 @@ ExactSegmentState exact_segment_state(const MechanismDesign& design,
   if (!point.converged()) throw InvalidInput("exact_segment_state needs a converged point");
   const PhysicalChain pc = physical_chain(design);
   ExactSegmentState st;
-  const auto accumulate = [&](const SegmentChain& chain,
-                              const std::vector<double>& unknowns,
-                              const std::vector<int>& pivots,
-                              double m0) {
-    accumulate_chain(design,
-                     chain,
-                     unknowns,
-                     pivots,
-                     m0,
-                     point.Nx,
-                     point.Ny,
-                     point.length_scale,
-                     point.EI_scale,
-                     shape_points,
-                     st);
-  };
-  accumulate(point.chain, point.unknowns, pc.flexible_pivot, point.m0);
-  if (!point.coupler_chain.segments.empty()) {
-    // The coupler chain's frame is the root frame turned by pi about the slider: its tip load
-    // (the crank's push on the coupler, -N, turned by pi) is +N in that frame.
-    accumulate(
-        point.coupler_chain, point.coupler_unknowns, pc.coupler_flexible_pivot, point.coupler_m0);
+  for (const ChainPart& part : chain_parts(point, pc)) {
+    accumulate_chain(design, part, point, shape_points, st);
   }
   return st;
 }
@@ -144,15 +151,12 @@ namespace {
 // `unknowns` are complete (root loads and cut states), else one Newton solve from them to find the
 // cut states. The tip load (Nx, Ny) N gives the axial stress, as above.
 void add_chain_moments(const MechanismDesign& design,
-                       const SegmentChain& chain,
-                       const std::vector<double>& unknowns,
-                       const std::vector<int>& pivots,
-                       double Nx,
-                       double Ny,
-                       double L,
-                       double EI_scale,
+                       const ChainPart& part,
+                       const ExactPoint& point,
                        const ShootingSolver::Options& options,
                        ExactSegmentState& st) {
+  const SegmentChain& chain = part.chain;
+  const std::vector<double>& unknowns = part.unknowns;
   const ShootingProblem problem(chain, options.multiple_shooting);
   Eigen::VectorXd z = Eigen::Map<const Eigen::VectorXd>(unknowns.data(),
                                                         static_cast<Eigen::Index>(unknowns.size()));
@@ -171,22 +175,18 @@ void add_chain_moments(const MechanismDesign& design,
     throw NoConvergence("integrating the exact point for its moments failed: " + error);
   }
   // Nondimensional moments times EI_scale/L; energy integral of m^2/(2 EI) ds times EI_scale/L.
-  const double moment_scale = EI_scale / L;
-  const double N = std::hypot(Nx, Ny);
+  const double moment_scale = point.EI_scale / point.length_scale;
+  const double N = std::hypot(point.Nx, point.Ny);
   for (std::size_t j = 0; j < moments.size(); ++j) {
     if (!moments[j].flexible) continue;
-    const double U = moments[j].strain_energy * moment_scale;
-    st.strain_energy += U;
-    const int pivot = j < pivots.size() ? pivots[j] : 0;
-    if (pivot == 0) continue;
-    const JointDesign& jd = design.joints[pivot - 1];
-    const RectangularSection section = jd.section(design.E);
-    const double m_max = moments[j].max_abs_moment * moment_scale;
-    const double sigma = m_max * 0.5 * jd.thickness / section.second_moment() + N / section.area();
-    st.max_stress[pivot - 1] = std::max(st.max_stress[pivot - 1], sigma);
-    st.pivot_strain_energy[pivot - 1] += U;
-    st.pivot_rotation[pivot - 1] += moments[j].theta_end - moments[j].theta_start;
-    st.has_pivot[pivot - 1] = true;
+    add_segment(design,
+                part,
+                j,
+                moments[j].strain_energy * moment_scale,
+                moments[j].max_abs_moment * moment_scale,
+                N,
+                moments[j].theta_end - moments[j].theta_start,
+                st);
   }
 }
 
@@ -203,28 +203,8 @@ ExactSegmentState exact_segment_state(const MechanismDesign& design,
   if (o.backend != ElasticaIntegrator::Backend::kDormandPrince) {
     o.backend = ElasticaIntegrator::Backend::kRk8pd;
   }
-  add_chain_moments(design,
-                    point.chain,
-                    point.unknowns,
-                    pc.flexible_pivot,
-                    point.Nx,
-                    point.Ny,
-                    point.length_scale,
-                    point.EI_scale,
-                    o,
-                    st);
-  if (!point.coupler_chain.segments.empty()) {
-    add_chain_moments(design,
-                      point.coupler_chain,
-                      point.coupler_unknowns,
-                      pc.coupler_flexible_pivot,
-                      point.Nx,
-                      point.Ny,
-                      point.length_scale,
-                      point.EI_scale,
-                      o,
-                      st);
-  }
+  for (const ChainPart& part : chain_parts(point, pc))
+    add_chain_moments(design, part, point, o, st);
   return st;
 }
 

@@ -65,30 +65,23 @@ ArkodeErkPiece::ArkodeErkPiece(const ExplicitRkSettings& settings)
 
 ArkodeErkPiece::~ArkodeErkPiece() = default;
 
-bool ArkodeErkPiece::integrate(const ElasticaPieceData& piece,
-                               int Ns,
-                               double s_a,
-                               double s_b,
-                               std::vector<double>& y,
-                               ShapeCursor& shape,
-                               long& steps,
-                               std::string& error) {
+bool ArkodeErkPiece::integrate(const PieceRun& run) {
   Impl& d = *impl_;
-  d.data = UserData{&piece, Ns};
-  if (static_cast<int>(d.by_columns.size()) <= Ns) d.by_columns.resize(Ns + 1);
-  Impl::Stepper& st = d.by_columns[Ns];
-  const auto dim = static_cast<sunindextype>(y.size());
+  d.data = UserData{&run.piece, run.Ns};
+  if (static_cast<int>(d.by_columns.size()) <= run.Ns) d.by_columns.resize(run.Ns + 1);
+  Impl::Stepper& st = d.by_columns[run.Ns];
+  const auto dim = static_cast<sunindextype>(run.y.size());
   int flag = 0;
   if (st.mem == nullptr) {
     st.y = N_VNew_Serial(dim, d.context);
     if (st.y == nullptr) {
-      error = "ARKODE: N_VNew_Serial failed";
+      run.error = "ARKODE: N_VNew_Serial failed";
       return false;
     }
-    std::copy(y.begin(), y.end(), N_VGetArrayPointer(st.y));
-    st.mem = ERKStepCreate(arkode_rhs, s_a, st.y, d.context);
+    std::copy(run.y.begin(), run.y.end(), N_VGetArrayPointer(st.y));
+    st.mem = ERKStepCreate(arkode_rhs, run.s_a, st.y, d.context);
     if (st.mem == nullptr) {
-      error = "ARKODE: ERKStepCreate failed";
+      run.error = "ARKODE: ERKStepCreate failed";
       return false;
     }
     for (auto [f, name] :
@@ -100,41 +93,42 @@ bool ArkodeErkPiece::integrate(const ElasticaPieceData& piece,
           std::pair{ERKStepSetErrHandlerFn(st.mem, silent_error_handler, nullptr),
                     "ERKStepSetErrHandlerFn"}}) {
       if (f != ARK_SUCCESS) {
-        error = flag_message(name, f);
+        run.error = flag_message(name, f);
         return false;
       }
     }
   } else {
-    std::copy(y.begin(), y.end(), N_VGetArrayPointer(st.y));
-    flag = ERKStepReInit(st.mem, arkode_rhs, s_a, st.y);
+    std::copy(run.y.begin(), run.y.end(), N_VGetArrayPointer(st.y));
+    flag = ERKStepReInit(st.mem, arkode_rhs, run.s_a, st.y);
     if (flag != ARK_SUCCESS) {
-      error = flag_message("ERKStepReInit", flag);
+      run.error = flag_message("ERKStepReInit", flag);
       return false;
     }
   }
-  realtype s = s_a;
+  realtype s = run.s_a;
   const double* v = N_VGetArrayPointer(st.y);
   for (;;) {
-    const bool to_shape_point = shape.pending_before(s_b);
-    const double target = to_shape_point ? std::max((*shape.shape_s)[shape.next], s) : s_b;
+    const bool to_shape_point = run.shape.pending_before(run.s_b);
+    const double target =
+        to_shape_point ? std::max((*run.shape.shape_s)[run.shape.next], s) : run.s_b;
     // Land exactly on the target (no interpolation): the same stops as the other backends.
     if (target - s > 1e-14 * std::max(1.0, std::abs(s))) {
       flag = ERKStepSetStopTime(st.mem, target);
       if (flag == ARK_SUCCESS) flag = ERKStepEvolve(st.mem, target, st.y, &s, ARK_NORMAL);
       if (flag < 0) {
-        error = flag_message("ERKStepEvolve", flag) + fmt::format(" at s = {}", s);
+        run.error = flag_message("ERKStepEvolve", flag) + fmt::format(" at s = {}", s);
         return false;
       }
     }
     if (!to_shape_point) break;
-    shape.emit(v);
+    run.shape.emit(v);
   }
   long taken = 0;
   ERKStepGetNumSteps(st.mem, &taken);
-  steps += taken;
-  std::copy(v, v + dim, y.begin());
-  if (!std::all_of(y.begin(), y.end(), [](double c) { return std::isfinite(c); })) {
-    error = fmt::format("ARKODE: non-finite state at s = {}", s_b);
+  run.steps += taken;
+  std::copy(v, v + dim, run.y.begin());
+  if (!std::all_of(run.y.begin(), run.y.end(), [](double c) { return std::isfinite(c); })) {
+    run.error = fmt::format("ARKODE: non-finite state at s = {}", run.s_b);
     return false;
   }
   return true;

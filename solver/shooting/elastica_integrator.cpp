@@ -122,9 +122,8 @@ struct ElasticaIntegrator::Impl {
   int sens_count = 0;  // parameters CVodeSensInit was called with (0 = never)
   PieceData piece;
   FlexibleSegment dummy;
-  std::unique_ptr<GslRk8pdPiece> rk8pd;    // the GSL backend (kRk8pd only)
-  std::unique_ptr<ArkodeErkPiece> arkode;  // the ARKODE backend (kArkodeErk only)
-  std::vector<double> packed;              // state and sensitivities of the explicit backends
+  std::unique_ptr<ExplicitPieceIntegrator> explicit_backend;  // every backend but kCvodes
+  std::vector<double> packed;  // state and sensitivities of the explicit backends
 
   ~Impl() {
     if (yS != nullptr) N_VDestroyVectorArray(yS, sens_count);
@@ -193,9 +192,18 @@ ElasticaIntegrator::ElasticaIntegrator(Options options)
   Impl& d = *impl_;
   d.piece.segment = &d.dummy;
   const ExplicitRkSettings settings{options_.rtol, options_.atol, options_.max_steps};
-  if (options_.backend == Backend::kRk8pd) d.rk8pd = std::make_unique<GslRk8pdPiece>(settings);
-  if (options_.backend == Backend::kArkodeErk) {
-    d.arkode = std::make_unique<ArkodeErkPiece>(settings);
+  switch (options_.backend) {
+    case Backend::kRk8pd:
+      d.explicit_backend = std::make_unique<GslRk8pdPiece>(settings);
+      break;
+    case Backend::kArkodeErk:
+      d.explicit_backend = std::make_unique<ArkodeErkPiece>(settings);
+      break;
+    case Backend::kDormandPrince:
+      d.explicit_backend = std::make_unique<DormandPrincePiece>(settings);
+      break;
+    case Backend::kCvodes:
+      break;
   }
   // The CVODES objects only for the CVODES backend: their set-up costs as much as a whole solve
   // with an explicit backend (ElasticaIntegrator is made once per solve).
@@ -287,18 +295,10 @@ bool ElasticaIntegrator::integrate(
       for (int k = 0; k < kStates; ++k) y[kStates * (i + 1) + k] = S(k, i);
     }
     ShapeCursor cursor{want_shape ? shape_s : nullptr, shape, next_shape};
-    ExplicitRkSettings settings{options_.rtol, options_.atol, options_.max_steps};
-    if (step_limit_ > 0) settings.max_steps = std::min(settings.max_steps, step_limit_ - d.steps);
-    bool ok = false;
-    if (options_.backend == Backend::kRk8pd) {
-      ok = d.rk8pd->integrate(
-          d.piece, Ns, s_a, s_b, y, cursor, observer_, settings.max_steps, d.steps, error);
-    } else if (options_.backend == Backend::kArkodeErk) {
-      ok = d.arkode->integrate(d.piece, Ns, s_a, s_b, y, cursor, d.steps, error);
-    } else {
-      ok = dormand_prince_piece(
-          d.piece, Ns, s_a, s_b, y, settings, cursor, observer_, d.steps, error);
-    }
+    const long max_steps =
+        step_limit_ > 0 ? std::min(options_.max_steps, step_limit_ - d.steps) : options_.max_steps;
+    const bool ok = d.explicit_backend->integrate(
+        PieceRun{d.piece, Ns, s_a, s_b, y, cursor, observer_, max_steps, d.steps, error});
     next_shape = cursor.next;
     if (!ok) return false;
     for (int k = 0; k < kStates; ++k) state[k] = y[k];

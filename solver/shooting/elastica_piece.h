@@ -98,4 +98,31 @@ struct ExplicitRkSettings {
   long max_steps = 200000;
 };
 
+// One integration by an explicit backend: the packed state `y` (4 (Ns + 1) components) of one
+// flexible piece from s_a to s_b, stopping on every pending shape point of `shape` before s_b.
+struct PieceRun {
+  const ElasticaPieceData& piece;
+  int Ns;
+  double s_a;
+  double s_b;
+  std::vector<double>& y;  // in: the state at s_a; out: at s_b
+  ShapeCursor& shape;
+  StepObserver* observer;  // may be null: sees every accepted step (backends that have steps)
+  long max_steps;          // the limit of this run (at most ExplicitRkSettings::max_steps)
+  long& steps;             // the steps taken are added
+  std::string& error;      // set when integrate() returns false
+};
+
+// An explicit integrator backend of ElasticaIntegrator. integrate() returns false with
+// run.error set when the library fails, more than run.max_steps steps are needed or the state is
+// not finite.
+class ExplicitPieceIntegrator {
+ public:
+  ExplicitPieceIntegrator() = default;
+  virtual ~ExplicitPieceIntegrator() = default;
+  ExplicitPieceIntegrator(const ExplicitPieceIntegrator&) = delete;
+  ExplicitPieceIntegrator& operator=(const ExplicitPieceIntegrator&) = delete;
+  virtual bool integrate(const PieceRun& run) = 0;
+};
+
 }  // namespace flexure

@@ -85,83 +85,81 @@ GslRk8pdPiece::GslRk8pdPiece(const ExplicitRkSettings& settings)
 
 GslRk8pdPiece::~GslRk8pdPiece() = default;
 
-bool GslRk8pdPiece::integrate(const ElasticaPieceData& piece,
-                              int Ns,
-                              double s_a,
-                              double s_b,
-                              std::vector<double>& y,
-                              ShapeCursor& shape,
-                              StepObserver* observer,
-                              long max_steps,
-                              long& steps,
-                              std::string& error) {
-  Impl::Stepper* st = impl_->stepper(Ns);
+bool GslRk8pdPiece::integrate(const PieceRun& run) {
+  Impl::Stepper* st = impl_->stepper(run.Ns);
   if (st == nullptr || impl_->control == nullptr) {
-    error = "GSL rk8pd: allocation failed";
+    run.error = "GSL rk8pd: allocation failed";
     return false;
   }
-  Parameters parameters{&piece, Ns};
-  const std::size_t dim = kElasticaStates * (Ns + 1);
+  Parameters parameters{&run.piece, run.Ns};
+  const std::size_t dim = kElasticaStates * (run.Ns + 1);
   const gsl_odeiv2_system system{gsl_rhs, nullptr, dim, &parameters};
   gsl_odeiv2_step_reset(st->step);
   // The loop of gsl_odeiv2_evolve_apply (GSL 2.7, ode-initval2/evolve.c) with GSL's stepper and
   // step-size control, except that the derivative at the end of an accepted step is kept as the
   // first stage of the next one: evolve_apply evaluates it again at every call (13 instead of 14
   // right-hand sides per rk8pd step).
-  double s = s_a;
-  elastica_rhs(piece, s, y.data(), st->dydt_in.data(), Ns);
+  double s = run.s_a;
+  elastica_rhs(run.piece, s, run.y.data(), st->dydt_in.data(), run.Ns);
   // First step: the controller's proposal after the first step of the previous integration of
   // this piece; else from the tolerance (the local error of an eighth-order step is ~ h^9; the
   // control grows the step by up to 5x per step from there).
-  const double* remembered = impl_->first_step_of(piece.segment, s_a);
-  double h = std::min(
-      s_b - s_a, remembered != nullptr ? *remembered : 0.5 * std::pow(settings_.rtol, 1.0 / 8.0));
+  const double* remembered = impl_->first_step_of(run.piece.segment, run.s_a);
+  double h =
+      std::min(run.s_b - run.s_a,
+               remembered != nullptr ? *remembered : 0.5 * std::pow(settings_.rtol, 1.0 / 8.0));
   bool first_accepted = false;
   long taken = 0;
   for (;;) {
-    const bool to_shape_point = shape.pending_before(s_b);
-    const double target = to_shape_point ? std::max((*shape.shape_s)[shape.next], s) : s_b;
+    const bool to_shape_point = run.shape.pending_before(run.s_b);
+    const double target =
+        to_shape_point ? std::max((*run.shape.shape_s)[run.shape.next], s) : run.s_b;
     while (s < target) {
-      if (++taken > max_steps) {
-        error = fmt::format("GSL rk8pd: more than {} steps at s = {}", max_steps, s);
+      if (++taken > run.max_steps) {
+        run.error = fmt::format("GSL rk8pd: more than {} steps at s = {}", run.max_steps, s);
         return false;
       }
       const bool final_step = h >= target - s;
       const double h_try = final_step ? target - s : h;
-      std::copy(y.begin(), y.end(), st->y0.begin());
+      std::copy(run.y.begin(), run.y.end(), st->y0.begin());
       const int status = gsl_odeiv2_step_apply(st->step,
                                                s,
                                                h_try,
-                                               y.data(),
+                                               run.y.data(),
                                                st->error.data(),
                                                st->dydt_in.data(),
                                                st->dydt_out.data(),
                                                &system);
       if (status != GSL_SUCCESS) {
-        error = fmt::format("GSL rk8pd: gsl_odeiv2_step_apply returned {} ({}) at s = {}",
-                            status,
-                            gsl_strerror(status),
-                            s);
+        run.error = fmt::format("GSL rk8pd: gsl_odeiv2_step_apply returned {} ({}) at s = {}",
+                                status,
+                                gsl_strerror(status),
+                                s);
         return false;
       }
       double h_next = h_try;
       const int adjust = gsl_odeiv2_control_hadjust(
-          impl_->control, st->step, y.data(), st->error.data(), st->dydt_out.data(), &h_next);
-      if (!std::all_of(y.begin(), y.end(), [](double v) { return std::isfinite(v); })) {
-        error = fmt::format("GSL rk8pd: non-finite state at s = {}", s);
+          impl_->control, st->step, run.y.data(), st->error.data(), st->dydt_out.data(), &h_next);
+      if (!std::all_of(run.y.begin(), run.y.end(), [](double v) { return std::isfinite(v); })) {
+        run.error = fmt::format("GSL rk8pd: non-finite state at s = {}", s);
         return false;
       }
       if (adjust == GSL_ODEIV_HADJ_DEC) {
         // Rejected (GSL decreases h only when the error exceeds 1.1 times the tolerance): undo.
-        std::copy(st->y0.begin(), st->y0.end(), y.begin());
+        std::copy(st->y0.begin(), st->y0.end(), run.y.begin());
         h = h_next;
         --taken;
         continue;
       }
       const double s_end = final_step ? target : s + h_try;
-      if (observer != nullptr) {
-        observer->accepted_step(
-            piece, s, st->y0.data(), st->dydt_in.data(), s_end, y.data(), st->dydt_out.data());
+      if (run.observer != nullptr) {
+        run.observer->accepted_step(run.piece,
+                                    s,
+                                    st->y0.data(),
+                                    st->dydt_in.data(),
+                                    s_end,
+                                    run.y.data(),
+                                    st->dydt_out.data());
       }
       s = s_end;
       st->dydt_in.swap(st->dydt_out);
@@ -169,17 +167,17 @@ bool GslRk8pdPiece::integrate(const ElasticaPieceData& piece,
       h = final_step && adjust != GSL_ODEIV_HADJ_INC ? std::max(h, h_next) : h_next;
       if (!first_accepted) {
         first_accepted = true;
-        if (double* slot = impl_->first_step_of(piece.segment, s_a)) {
+        if (double* slot = impl_->first_step_of(run.piece.segment, run.s_a)) {
           *slot = h;
         } else {
-          impl_->first_step.push_back({piece.segment, s_a, h});
+          impl_->first_step.push_back({run.piece.segment, run.s_a, h});
         }
       }
     }
     if (!to_shape_point) break;
-    shape.emit(y.data());
+    run.shape.emit(run.y.data());
   }
-  steps += taken;
+  run.steps += taken;
   return true;
 }
 
