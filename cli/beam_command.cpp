@@ -1,4 +1,6 @@
 // `flexure beam`: one cantilever with an end load, solved for a given alpha2, theta0 or b/l.
+#include "cli/beam_command.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -12,6 +14,7 @@
 
 #include "cli/beam_methods.h"
 #include "cli/cli_common.h"
+#include "cli/command_runner.h"
 #include "cli/commands.h"
 #include "flexure/benchmarks/studies/physical_beam.h"
 #include "flexure/io/chain_toml.h"
@@ -459,10 +462,17 @@ Json to_json(const BeamInput& input,
   return out;
 }
 
+// Set by beam_problem_of: the callback stops after validating, and reports the problem here.
+thread_local BeamCommandProblem* t_problem_only = nullptr;
+
 void run_beam(const BeamArgs& args) {
   const BeamInput input = make_input(args);
   const BeamProblem& problem = input.problem;
   const BeamMethod method = beam_method_from_string(args.method);
+  if (t_problem_only != nullptr) {
+    *t_problem_only = BeamCommandProblem{problem, method, input.is_physical(), args.json};
+    return;
+  }
   BeamSolution solution;
   std::optional<PhysicalResults> physical;
   if (input.is_physical()) {
@@ -512,13 +522,13 @@ void run_beam(const BeamArgs& args) {
                                     problem.shape_points));
   }
   if (solution.method == BeamMethod::kPrbm && !solution.prbm_inside_validity) {
-    std::cerr << fmt::format(
-        "flexure: warning: the PRB angle Theta = {:.1f} deg is outside the validity limit {:.1f} "
+    warn(fmt::format(
+        "the PRB angle Theta = {:.1f} deg is outside the validity limit {:.1f} "
         "deg ({}); the PRBM tip and force are not trusted here (--method elliptic or shooting "
-        "is exact)\n",
+        "is exact)",
         std::fabs(solution.prbm_Theta) * 180.0 / std::numbers::pi,
         solution.prbm_theta_max * 180.0 / std::numbers::pi,
-        solution.prbm_limits_source);
+        solution.prbm_limits_source));
   }
   if (args.json) {
     print_json(to_json(input, problem, solution, physical));  // refuses NaN/Inf anywhere
@@ -533,6 +543,18 @@ void run_beam(const BeamArgs& args) {
 }
 
 }  // namespace
+
+BeamCommandProblem beam_problem_of(const std::vector<std::string>& args) {
+  BeamCommandProblem out;
+  struct Scope {
+    explicit Scope(BeamCommandProblem* p) { t_problem_only = p; }
+    ~Scope() { t_problem_only = nullptr; }
+  } scope(&out);
+  std::vector<std::string> command{"beam"};
+  command.insert(command.end(), args.begin(), args.end());
+  run_command(command);
+  return out;
+}
 
 void register_beam_command(CLI::App& app) {
   auto args = std::make_shared<BeamArgs>();

@@ -16,8 +16,11 @@
 namespace flexure::cli {
 namespace {
 
-int g_exit_code = kExitOk;
-bool g_json_printed = false;  // print_json ran: a failure after it prints no second object
+// Per thread: run_command (command_runner.h) runs commands in-process, possibly on several
+// threads at once (the Python module releases its lock while a command runs).
+thread_local int g_exit_code = kExitOk;
+thread_local bool g_json_printed = false;  // print_json ran: a failure prints no second object
+thread_local OutputCapture* g_capture = nullptr;  // run_command: collect instead of printing
 
 // Error messages must stay on one line even when they quote user input or library text.
 std::string one_line(std::string text) {
@@ -54,6 +57,7 @@ std::string parse_error_hint(CLI::App& app, int argc, char** argv) {
   std::vector<std::string> flags;
   for (int i = 1; i < argc; ++i) {
     const std::string token = argv[i];
+    if (token.empty()) continue;
     if (token.rfind("--", 0) == 0) {
       flags.push_back(token.substr(
           2, token.find('=') == std::string::npos ? std::string::npos : token.find('=') - 2));
@@ -135,8 +139,16 @@ std::string find_non_finite(const Json& node, const std::string& where) {
 }  // namespace
 
 void warn(const std::string& text) {
-  if (!text.empty()) std::cerr << "flexure: warning: " << text << "\n";
+  if (text.empty()) return;
+  if (g_capture != nullptr) {
+    g_capture->warnings.push_back(text);
+  } else {
+    std::cerr << "flexure: warning: " << text << "\n";
+  }
 }
+
+OutputCapture::OutputCapture() : previous_(g_capture) { g_capture = this; }
+OutputCapture::~OutputCapture() { g_capture = previous_; }
 
 void warn(const std::vector<std::string>& texts) {
   for (const std::string& text : texts) warn(text);
@@ -161,11 +173,40 @@ CLI::App& get_or_add_subcommand(CLI::App& parent,
 }
 
 void set_exit_code(int code) { g_exit_code = code; }
-int exit_code() { return g_exit_code; }
-
-int run_app(CLI::App& app, int argc, char** argv) {
+void reset_exit_code() {
   g_exit_code = kExitOk;
   g_json_printed = false;
+}
+int exit_code() { return g_exit_code; }
+
+void parse_and_run(CLI::App& app, int argc, char** argv) {
+  // CLI11 reads an empty value as the option's default (--alpha2 '' as 0): refuse it instead.
+  for (int i = 1; i < argc; ++i) {
+    const std::string token = argv[i];
+    const bool empty_after_flag =
+        token.empty() && i > 1 && std::string(argv[i - 1]).rfind("--", 0) == 0;
+    if (empty_after_flag || (token.rfind("--", 0) == 0 && token.back() == '=')) {
+      const std::string flag = empty_after_flag ? argv[i - 1] : token.substr(0, token.size() - 1);
+      throw InvalidInput(
+          fmt::format("{} has an empty value ({})", flag, parse_error_hint(app, argc, argv)));
+    }
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    throw;
+  } catch (const CLI::CallForAllHelp&) {
+    throw;
+  } catch (const CLI::CallForVersion&) {
+    throw;
+  } catch (const CLI::ParseError& e) {
+    // CLI11 reports missing, conflicting, unknown and non-numeric arguments here.
+    throw InvalidInput(fmt::format("{} ({})", e.what(), parse_error_hint(app, argc, argv)));
+  }
+}
+
+int run_app(CLI::App& app, int argc, char** argv) {
+  reset_exit_code();
   const bool json = wants_json(argc, argv);
   const auto fail = [&](const std::string& message, int code, const Json& reached) {
     report(message);
@@ -173,7 +214,7 @@ int run_app(CLI::App& app, int argc, char** argv) {
     return code;
   };
   try {
-    app.parse(argc, argv);
+    parse_and_run(app, argc, argv);
     return g_exit_code;
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
@@ -181,11 +222,6 @@ int run_app(CLI::App& app, int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    // CLI11 reports missing, conflicting, unknown and non-numeric arguments here.
-    return fail(fmt::format("{} ({})", e.what(), parse_error_hint(app, argc, argv)),
-                kExitInvalidInput,
-                Json::object());
   } catch (const InvalidInput& e) {
     return fail(e.what(), kExitInvalidInput, Json::object());
   } catch (const NoConvergenceReport& e) {
@@ -203,8 +239,12 @@ void print_json(const Json& object) {
     throw NoConvergence(
         fmt::format("result '{}' is not a finite number; no converged solution to report", bad));
   }
-  std::cout << object.dump() << '\n';
-  std::cout.flush();
+  if (g_capture != nullptr) {
+    g_capture->json = object;
+  } else {
+    std::cout << object.dump() << '\n';
+    std::cout.flush();
+  }
   g_json_printed = true;
 }
 

@@ -44,9 +44,26 @@ CLI::App& get_or_add_subcommand(CLI::App& parent,
                                 const std::string& name,
                                 const std::string& description);
 
-// Exit code a command wants when it finishes without throwing (default kExitOk).
+// Exit code a command wants when it finishes without throwing (default kExitOk). Per thread;
+// reset_exit_code() before a command runs (run_app, run_command).
 void set_exit_code(int code);
 int exit_code();
+void reset_exit_code();
+
+// While one exists on this thread, print_json stores its object here instead of printing it and
+// warn() collects its texts (run_command, command_runner.h). Nests: the innermost one collects.
+class OutputCapture {
+ public:
+  OutputCapture();
+  ~OutputCapture();
+  OutputCapture(const OutputCapture&) = delete;
+  OutputCapture& operator=(const OutputCapture&) = delete;
+  nlohmann::ordered_json json;  // null until print_json runs
+  std::vector<std::string> warnings;
+
+ private:
+  OutputCapture* previous_;
+};
 
 // NoConvergence that carries what was reached (load factor, method tried, ...): run_app adds these
 // keys to the JSON error object printed with --json.
@@ -66,6 +83,12 @@ class NoConvergenceReport : public NoConvergence {
 // command has not printed its JSON object yet, a failure also prints the JSON error object on
 // stdout: {"error": the message, "exit_code": the code, ...NoConvergenceReport::reached()}.
 int run_app(CLI::App& app, int argc, char** argv);
+
+// Parses argv with `app` and runs the selected subcommand's callback, letting every failure
+// through as an exception: a CLI11 parse error becomes InvalidInput with the message run_app
+// prints (the nearest flag to an unknown one, where the help is); --help and --version stay
+// CLI11's CallForHelp / CallForVersion.
+void parse_and_run(CLI::App& app, int argc, char** argv);
 
 // Prints `object` as one line of JSON on stdout. Throws NoConvergence naming the key if any
 // number in it is NaN or Inf (a result is never printed as NaN).

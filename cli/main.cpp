@@ -2,7 +2,8 @@
 //
 // How to add a subcommand (the pattern every command follows):
 //  1. Create cli/<name>_command.cpp with `void register_<name>_command(CLI::App& app)` in
-//     namespace flexure::cli; declare it in cli/commands.h and call it below.
+//     namespace flexure::cli; declare it in cli/commands.h and call it in register_all_commands
+//     (command_runner.cpp), which the tool and the Python module share.
 //  2. In it, keep the parsed arguments in a std::shared_ptr<Args> captured by the subcommand's
 //     callback (CLI11 runs the callback after a successful parse). Add `--json`.
 //  3. The callback validates input and throws flexure::InvalidInput (exit 2) naming the flag and
@@ -20,16 +21,13 @@
 //     new method is plugged in there (docs/architecture.md), not in the commands.
 // Nested commands (`sweep beam`) use get_or_add_subcommand() so that several files can add
 // children to the same parent.
-#include <fmt/format.h>
-
 #include <CLI/CLI.hpp>
 
 #include "cli/cli_common.h"
-#include "cli/commands.h"
+#include "cli/command_runner.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/provenance.h"
 #include "flexure/solver/common/gsl_guard.h"
-#include "flexure/version.h"
 
 int main(int argc, char** argv) {
   flexure::disable_gsl_abort();
@@ -39,22 +37,7 @@ int main(int argc, char** argv) {
   flexure::io::record_command_line(argc, argv);
 
   CLI::App app{"flexure: exact large-deflection beams and compliant mechanisms", "flexure"};
-  app.set_version_flag(
-      "--version",
-      fmt::format("flexure {} (git commit {})", flexure::kVersion, flexure::kGitCommit));
-  app.require_subcommand(1);
-
-  flexure::cli::register_beam_command(app);
-  flexure::cli::register_sweep_command(app);
-  flexure::cli::register_validate_command(app);
-  flexure::cli::register_prbm_command(app);
-  flexure::cli::register_cfm_command(app);
-  flexure::cli::register_path_command(app);
-  flexure::cli::register_mechanism_command(app);
-  flexure::cli::register_dynamics_command(app);
-  flexure::cli::register_bench_command(app);
-  flexure::cli::register_help_command(app);
-  flexure::cli::add_command_examples(app);
+  flexure::cli::register_all_commands(app);
 
   return flexure::cli::run_app(app, argc, argv);
 }

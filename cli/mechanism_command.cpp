@@ -184,22 +184,22 @@ std::string force_sign_note(bool vanishes, bool changes_sign) {
 // min/max ratio (thesis eq. 5.22) describes a force of one sign, so the percentage is reported as
 // 0 instead of a negative or noise-sized ratio (docs/mechanisms.md "Percent constant force").
 void warn_if_force_vanishes(const MechanismAnalysis& a, bool exact) {
-  auto warn = [&](const char* model, const std::vector<double>& force) {
+  auto warn_force = [&](const char* model, const std::vector<double>& force) {
     const ConstantForceMeasure m = constant_force_measure(force);
     if (!m.vanishes) return;
-    std::cerr << fmt::format(
-        "flexure: warning: {}: the {} force {} within the stroke (min {:.4g} N, max {:.4g} N, "
+    warn(fmt::format(
+        "{}: the {} force {} within the stroke (min {:.4g} N, max {:.4g} N, "
         "{}): not a constant-force mechanism over this stroke; its percent constant force is "
-        "reported as 0\n",
+        "reported as 0",
         a.design.name,
         model,
         m.changes_sign ? "changes sign" : "vanishes",
         m.min_force,
         m.max_force,
-        force_of_label(a.force_of));
+        force_of_label(a.force_of)));
   };
-  warn("PRBM", a.prbm.force);
-  if (exact) warn("exact", a.force_exact);
+  warn_force("PRBM", a.prbm.force);
+  if (exact) warn_force("exact", a.force_exact);
 }
 
 // /design: everything MechanismDesign holds, in the described form (pivot 1 at the fixed body;
@@ -583,13 +583,13 @@ void register_mechanism_command(CLI::App& app) {
       throw NoConvergence(fmt::format("{}: {}", d.name, a.exact.message));
     }
     for (int p : a.yielding_pivots) {
-      std::cerr << fmt::format(
-          "flexure: warning: pivot {} of {} yields: max stress {:.4g} Pa >= yield strength "
-          "{:.4g} Pa\n",
-          described_pivot(d, p),
-          d.name,
-          a.max_stress[p - 1],
-          d.yield_strength);
+      warn(
+          fmt::format("pivot {} of {} yields: max stress {:.4g} Pa >= yield strength "
+                      "{:.4g} Pa",
+                      described_pivot(d, p),
+                      d.name,
+                      a.max_stress[p - 1],
+                      d.yield_strength));
     }
     warn_if_force_vanishes(a, a.has_exact && o.exact);
     if (file) write_hdf5(args->out, a, *file);

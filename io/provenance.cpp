@@ -8,6 +8,7 @@
 #include <iterator>
 #include <mutex>
 #include <string_view>
+#include <utility>
 
 #include "flexure/version.h"
 
@@ -17,6 +18,8 @@ namespace {
 std::mutex g_mutex;
 std::vector<std::string> g_arguments;  // recorded by record_command_line
 bool g_recorded = false;
+// A command run in-process (CommandLineScope): this thread's files record it instead.
+thread_local const std::vector<std::string>* t_scoped = nullptr;
 
 // The arguments of this process from /proc/self/cmdline (NUL-separated); empty where there is
 // no /proc.
@@ -50,9 +53,18 @@ void record_command_line(int argc, const char* const* argv) {
   g_recorded = true;
 }
 
+CommandLineScope::CommandLineScope(std::vector<std::string> arguments)
+    : arguments_(std::move(arguments)), previous_(t_scoped) {
+  t_scoped = &arguments_;
+}
+
+CommandLineScope::~CommandLineScope() { t_scoped = previous_; }
+
 std::string command_line() {
   std::vector<std::string> arguments;
-  {
+  if (t_scoped != nullptr) {
+    arguments = *t_scoped;
+  } else {
     const std::lock_guard lock(g_mutex);
     arguments = g_recorded ? g_arguments : proc_arguments();
   }

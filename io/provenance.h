@@ -29,6 +29,20 @@ struct CodeMeaning {
 // once). Without it, command_line() reads /proc/self/cmdline.
 void record_command_line(int argc, const char* const* argv);
 
+// While one exists on this thread, the files it writes record `arguments` as their command line
+// (a command run in-process by the Python module, cli/command_runner.h). Nests.
+class CommandLineScope {
+ public:
+  explicit CommandLineScope(std::vector<std::string> arguments);
+  ~CommandLineScope();
+  CommandLineScope(const CommandLineScope&) = delete;
+  CommandLineScope& operator=(const CommandLineScope&) = delete;
+
+ private:
+  std::vector<std::string> arguments_;
+  const std::vector<std::string>* previous_;
+};
+
 // The recorded command line (or /proc/self/cmdline; "unknown" when neither is available), every
 // argument passed through shell_quote and joined by single spaces.
 std::string command_line();

@@ -1,0 +1,23 @@
+#pragma once
+// `flexure beam` without the solve: the problem the command would solve for these arguments,
+// validated exactly as the tool validates them (the Python module's vectorised beam solves it
+// at many loads; python/flexure_module.cpp).
+#include <string>
+#include <vector>
+
+#include "flexure/benchmarks/studies/beam_problem.h"
+
+namespace flexure::cli {
+
+struct BeamCommandProblem {
+  BeamProblem problem;
+  BeamMethod method = BeamMethod::kAuto;
+  bool physical = false;  // a beam in SI units or a chain file
+  bool json = false;
+};
+
+// `args` are those of `flexure beam` (without "beam"). Throws InvalidInput with the tool's message
+// for anything the tool refuses.
+BeamCommandProblem beam_problem_of(const std::vector<std::string>& args);
+
+}  // namespace flexure::cli

@@ -1,0 +1,54 @@
+#include "cli/command_runner.h"
+
+#include <fmt/format.h>
+
+#include "cli/commands.h"
+#include "flexure/io/provenance.h"
+#include "flexure/version.h"
+
+namespace flexure::cli {
+
+void register_all_commands(CLI::App& app) {
+  app.set_version_flag("--version",
+                       fmt::format("flexure {} (git commit {})", kVersion, kGitCommit));
+  app.require_subcommand(1);
+  register_beam_command(app);
+  register_sweep_command(app);
+  register_validate_command(app);
+  register_prbm_command(app);
+  register_cfm_command(app);
+  register_path_command(app);
+  register_mechanism_command(app);
+  register_dynamics_command(app);
+  register_bench_command(app);
+  register_help_command(app);
+  add_command_examples(app);
+}
+
+CommandOutput run_command(const std::vector<std::string>& args) {
+  CLI::App app{"flexure: exact large-deflection beams and compliant mechanisms", "flexure"};
+  register_all_commands(app);
+  std::vector<std::string> words{"flexure"};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  OutputCapture capture;
+  // Files written by the command record the command line it stands for.
+  const io::CommandLineScope command_line(words);
+  reset_exit_code();
+  try {
+    parse_and_run(app, static_cast<int>(words.size()), argv.data());
+  } catch (const CLI::Success&) {
+    // --help or --version: nothing to return as data.
+    throw InvalidInput(fmt::format("'{}' asks for help text, which run_command does not return",
+                                   fmt::join(args, " ")));
+  }
+  CommandOutput out;
+  out.json = std::move(capture.json);
+  out.warnings = std::move(capture.warnings);
+  out.exit_code = exit_code();
+  return out;
+}
+
+}  // namespace flexure::cli
