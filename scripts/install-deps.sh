@@ -10,6 +10,10 @@ packages=(
   libcli11-dev nlohmann-json3-dev libfmt-dev libtomlplusplus-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-matplotlib python3-h5py python3-numpy
+  # The Python module (docs/python.md): pybind11, the headers of Debian's Python, pytest, and
+  # what `pip install --no-build-isolation .` into a venv needs offline.
+  pybind11-dev python3-pybind11 python3-dev python3-pytest python3-venv python3-pip
+  python3-setuptools python3-wheel
 )
 
 missing=()

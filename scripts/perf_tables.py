@@ -15,7 +15,9 @@ in docs/performance.md is replaced by the medians of one run of benchmark progra
 Benchmark, --benchmark_repetitions, medians of CPU and wall time) with, where the program has a
 reference benchmark (REFERENCES below), each row's CPU-time ratio to it measured in the same run.
 The `startup` table times whole processes: `flexure beam --alpha2 2 --json` against `true` (an
-empty process), the median of alternating runs. No number in a generated table is typed by hand.
+empty process), the median of alternating runs; the `python_beam` table the vectorised
+flexure.beam (Debian's /usr/bin/python3, the module in BUILD/python) against `flexure sweep beam`
+on the same loads. No number in a generated table is typed by hand.
 Standard library only; the raw JSON of each program is kept with --keep DIR.
 """
 import argparse
@@ -131,6 +133,50 @@ def startup_table(build, runs):
     return "\n".join(lines)
 
 
+PYTHON_BEAM = """
+import sys, time, numpy, flexure
+points, threads = int(sys.argv[1]), int(sys.argv[2])
+alpha2 = numpy.linspace(0.1, 10.0, points)
+start = time.perf_counter()
+r = flexure.beam(alpha2=alpha2, method="elliptic", threads=threads)
+elapsed = time.perf_counter() - start
+assert r["converged"].all()
+print(elapsed)
+"""
+
+
+def python_beam_table(build, runs, points=1_000_000):
+    """The vectorised flexure.beam against `flexure sweep beam` on the same 10^6 loads (issue 15:
+    within 1.5x per point): the solve time each reports, alternating, one pair per run."""
+    import tempfile
+    flexure = os.path.join(build, "flexure")
+    env = dict(os.environ, PYTHONPATH=os.path.join(build, "python"))
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for threads in (1, 2):
+            sweep, module, ratios = [], [], []
+            for _ in range(runs):
+                out = subprocess.run(
+                    [flexure, "sweep", "beam", "--alpha2", f"0.1:10:{points}", "--method",
+                     "elliptic", "--threads", str(threads), "--out",
+                     os.path.join(tmp, "s.h5"), "--json"],
+                    capture_output=True, text=True, check=True).stdout
+                sweep.append(json.loads(out)["seconds"])
+                module.append(float(subprocess.run(
+                    ["/usr/bin/python3", "-c", PYTHON_BEAM, str(points), str(threads)],
+                    capture_output=True, text=True, check=True, env=env).stdout))
+                ratios.append(module[-1] / sweep[-1])
+            rows.append((threads, statistics.median(sweep), statistics.median(module),
+                         statistics.median(ratios)))
+    lines = [f"{points} elliptic loads, alpha2 from 0.1 to 10; solve time as each reports it "
+             f"(the sweep's includes writing its file), medians of {runs} alternating pairs:", "",
+             "| threads | `flexure sweep beam` | `flexure.beam(alpha2=array)` | ratio |",
+             "|---|---|---|---|"]
+    for threads, t_sweep, t_module, ratio in rows:
+        lines.append(f"| {threads} | {pretty(t_sweep)} | {pretty(t_module)} | {ratio:.3g} |")
+    return "\n".join(lines)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--build", default=os.path.join(ROOT, "build"))
@@ -139,6 +185,7 @@ def main():
     parser.add_argument("--from-json", help="use the JSON files saved in this directory")
     parser.add_argument("--keep", help="save each program's JSON here")
     parser.add_argument("--startup-runs", type=int, default=41)
+    parser.add_argument("--python-runs", type=int, default=5)
     args = parser.parse_args()
     with open(DOC, encoding="utf-8") as f:
         doc = f.read()
@@ -149,6 +196,8 @@ def main():
             return match.group(0)
         if name == "startup":
             table = startup_table(args.build, args.startup_runs)
+        elif name == "python_beam":
+            table = python_beam_table(args.build, args.python_runs)
         elif args.from_json:
             with open(os.path.join(args.from_json, name + ".json"), encoding="utf-8") as f:
                 table = benchmark_table(name, json.load(f))

@@ -1,0 +1,104 @@
+"""flexure: exact large-deflection beams and compliant mechanisms, from Python.
+
+Every function runs the `flexure` command of the same name in this process: it takes that
+command's flags as keyword arguments (snake_case: --b-over-l -> b_over_l, --theta-max-K ->
+theta_max_K; switches as True) and returns the dict its --json output holds, with the same keys,
+arrays of numbers as numpy arrays. Invalid input raises InvalidInput (a ValueError) with the
+tool's message; no converged solution raises NoConvergence (a RuntimeError) with `.reached`;
+the tool's warnings are FlexureWarning warnings. docs/python.md has the whole API.
+
+    >>> import flexure
+    >>> flexure.beam(alpha2=2.0)["theta0"]                      # doctest: +ELLIPSIS
+    0.6...
+"""
+from . import _core, mechanism, prbm
+from ._beam import beam
+from ._command import FlexureWarning, InvalidInput, NoConvergence, run as _run
+from ._read import read
+
+__version__ = _core.version
+git_commit = _core.git_commit
+
+__all__ = ["beam", "path", "sweep", "cfm", "dynamics", "bench", "validate", "read", "prbm",
+           "mechanism", "InvalidInput", "NoConvergence", "FlexureWarning"]
+
+
+def path(*, out, n=None, alpha2=None, mu=None, follower=None, boundary=None, tip_x=None,
+         tip_y=None, tip_angle=None, method=None, elements=None, increments=None, chain=None):
+    """The load path from the unloaded beam to a load, step by step: `flexure path`.
+
+    The loads and end conditions of flexure.beam (n, alpha2, mu, follower, boundary, tip_x,
+    tip_y, tip_angle, chain); method 'shooting' (continuation, the default) or 'chain' (load
+    increments: elements, increments); out: the HDF5 file the path is written to (required).
+    Returns the dict `flexure path --json` prints (the path's points as numpy arrays, limit
+    points).
+    """
+    return _run(["path"], dict(n=n, alpha2=alpha2, mu=mu, follower=follower, boundary=boundary,
+                               tip_x=tip_x, tip_y=tip_y, tip_angle=tip_angle, method=method,
+                               elements=elements, increments=increments, chain=chain, out=out))
+
+
+def sweep(*, out, alpha2=None, theta0=None, b_over_l=None, n=None, mu=None, method=None,
+          threads=None, compress=False):
+    """A beam sweep written to HDF5: `flexure sweep beam` (docs/hdf5-schema.md).
+
+    alpha2, theta0, b_over_l, n, mu: a value or 'START:STOP:COUNT' (one or two axes); method;
+    threads; compress; out: the HDF5 file (required). Returns the summary `--json` prints; read
+    the file with flexure.read(out). For arrays in memory use flexure.beam with numpy arrays.
+    """
+    return _run(["sweep", "beam"], dict(alpha2=alpha2, theta0=theta0, b_over_l=b_over_l, n=n,
+                                        mu=mu, method=method, out=out, threads=threads,
+                                        compress=compress), switches={"compress"})
+
+
+def cfm(*, config=None, R=None, K1=None, K2=None, d=None, subclass=None, sampling=None,
+        points=None, curve=False, list=False, table=False, exact=False, exact_points=None,
+        exact_max_iterations=None, exact_rows=None):  # noqa: A002 - the tool's flag --list
+    """Nondimensional constant-force mechanism analysis (Weight's thesis): `flexure cfm`.
+
+    config ('1A', '2B', ...), R, K1, K2, d or a thesis subclass ('lpp-b'); sampling, points;
+    curve=True adds the force curve; list=True lists the configurations; table=True reproduces
+    the thesis tables; exact=True also evaluates the exact model (exact_points,
+    exact_max_iterations, exact_rows). Returns the dict `flexure cfm --json` prints (Phi, Psi,
+    Xi, percent constant force, ...).
+    """
+    return _run(["cfm"], dict(config=config, R=R, K1=K1, K2=K2, d=d, subclass=subclass,
+                              sampling=sampling, points=points, curve=curve, list=list,
+                              table=table, exact=exact, exact_points=exact_points,
+                              exact_max_iterations=exact_max_iterations, exact_rows=exact_rows),
+                switches={"curve", "list", "table", "exact"})
+
+
+def dynamics(*, mechanism=None, omega=None, out=None, stroke_percent=None, spring_rule=None,
+             force_of=None, preload_percent=None, samples=None, friction=None, axial_alpha=None,
+             zero_slider_mass=False, zero_inertia=False, history=None, list=False):  # noqa: A002
+    """Inverse dynamics of a modified constant-force slider mechanism: `flexure dynamics`.
+
+    mechanism: a design of the paper's Table 5 ('2B-lplm') or a TOML file with a [dynamics]
+    table; omega 'START:STOP:COUNT' (rad/s); stroke_percent, preload_percent, samples,
+    friction (C1, C2, C3 in N m), axial_alpha, zero_slider_mass, zero_inertia, history (rad/s),
+    spring_rule, force_of ('whole' | 'half'); out: also write HDF5; list=True lists the designs.
+    Returns the dict `flexure dynamics --json` prints.
+    """
+    return _run(["dynamics"], dict(mechanism=mechanism, omega=omega, out=out,
+                                   stroke_percent=stroke_percent, spring_rule=spring_rule,
+                                   force_of=force_of, preload_percent=preload_percent,
+                                   samples=samples, friction=friction, axial_alpha=axial_alpha,
+                                   zero_slider_mass=zero_slider_mass, zero_inertia=zero_inertia,
+                                   history=history, list=list),
+                switches={"zero_slider_mass", "zero_inertia", "list"})
+
+
+def bench(*, out, quick=False, problems=None, methods=None, resume=False, stop_after=None):
+    """Accuracy against time of every method on the standard problems: `flexure bench`
+    (docs/benchmarks.md). out: the HDF5 file (required); quick=True for the small set; problems,
+    methods: names or lists of names. Returns the summary `--json` prints."""
+    return _run(["bench"], dict(out=out, quick=quick, problems=problems, methods=methods,
+                                resume=resume, stop_after=stop_after),
+                switches={"quick", "resume"})
+
+
+def validate(*, out=None):
+    """Every reference problem with every method against its reference: `flexure validate`.
+    Returns the dict `--json` prints; a failed check is reported in it, not raised."""
+    return _run(["validate"], dict(out=out))

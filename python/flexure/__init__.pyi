@@ -1,0 +1,132 @@
+# Type stubs of the flexure module (docs/python.md): names and types for editors and checkers.
+import os
+from typing import Any, Sequence, Union
+
+import numpy as np
+import numpy.typing as npt
+
+from . import mechanism as mechanism
+from . import prbm as prbm
+
+__version__: str
+git_commit: str
+
+Number = Union[int, float]
+Quantity = Union[int, float, str]  # a number in SI units, or a string with a unit ('50mm')
+Loads = Union[Number, npt.ArrayLike]  # a scalar, or an array: the result has its shape
+Path = Union[str, os.PathLike[str]]
+Result = dict[str, Any]
+
+class InvalidInput(ValueError): ...
+
+class NoConvergence(RuntimeError):
+    reached: dict[str, Any]
+    def __init__(self, message: str, reached: dict[str, Any] | None = ...) -> None: ...
+
+class FlexureWarning(UserWarning): ...
+
+def beam(
+    n: Loads | None = ...,
+    alpha2: Loads | None = ...,
+    mu: Loads | None = ...,
+    theta0: Loads | str | None = ...,
+    b_over_l: Loads | None = ...,
+    *,
+    method: str | None = ...,
+    tol: float | None = ...,
+    shape: int | None = ...,
+    boundary: str | None = ...,
+    tip_x: float | None = ...,
+    tip_y: float | None = ...,
+    tip_angle: Quantity | None = ...,
+    follower: float | None = ...,
+    elements: int | None = ...,
+    increments: int | None = ...,
+    chain_variant: str | None = ...,
+    integrator: str | None = ...,
+    chain: Path | None = ...,
+    length: Quantity | None = ...,
+    E: Quantity | None = ...,
+    I: Quantity | None = ...,
+    width: Quantity | None = ...,
+    thickness: Quantity | None = ...,
+    Fx: Quantity | None = ...,
+    Fy: Quantity | None = ...,
+    M: Quantity | None = ...,
+    yield_strength: Quantity | None = ...,
+    threads: int | None = ...,
+) -> Result: ...
+def path(
+    *,
+    out: Path,
+    n: float | None = ...,
+    alpha2: float | None = ...,
+    mu: float | None = ...,
+    follower: float | None = ...,
+    boundary: str | None = ...,
+    tip_x: float | None = ...,
+    tip_y: float | None = ...,
+    tip_angle: Quantity | None = ...,
+    method: str | None = ...,
+    elements: int | None = ...,
+    increments: int | None = ...,
+    chain: Path | None = ...,
+) -> Result: ...
+def sweep(
+    *,
+    out: Path,
+    alpha2: Number | str | None = ...,
+    theta0: Number | str | None = ...,
+    b_over_l: Number | str | None = ...,
+    n: Number | str | None = ...,
+    mu: Number | str | None = ...,
+    method: str | None = ...,
+    threads: int | None = ...,
+    compress: bool = ...,
+) -> Result: ...
+def cfm(
+    *,
+    config: str | None = ...,
+    R: float | None = ...,
+    K1: float | None = ...,
+    K2: float | None = ...,
+    d: float | None = ...,
+    subclass: str | None = ...,
+    sampling: str | None = ...,
+    points: int | None = ...,
+    curve: bool = ...,
+    list: bool = ...,
+    table: bool = ...,
+    exact: bool = ...,
+    exact_points: int | None = ...,
+    exact_max_iterations: int | None = ...,
+    exact_rows: str | None = ...,
+) -> Result: ...
+def dynamics(
+    *,
+    mechanism: Path | None = ...,
+    omega: str | None = ...,
+    out: Path | None = ...,
+    stroke_percent: float | None = ...,
+    spring_rule: str | None = ...,
+    force_of: str | None = ...,
+    preload_percent: float | None = ...,
+    samples: int | None = ...,
+    friction: Sequence[float] | None = ...,
+    axial_alpha: float | None = ...,
+    zero_slider_mass: bool = ...,
+    zero_inertia: bool = ...,
+    history: Sequence[float] | None = ...,
+    list: bool = ...,
+) -> Result: ...
+def bench(
+    *,
+    out: Path,
+    quick: bool = ...,
+    problems: str | Sequence[str] | None = ...,
+    methods: str | Sequence[str] | None = ...,
+    resume: bool = ...,
+    stop_after: int | None = ...,
+) -> Result: ...
+def validate(*, out: Path | None = ...) -> Result: ...
+def read(path: Path) -> dict[str, Any]: ...

@@ -1,0 +1,128 @@
+"""flexure.beam: one load through the tool's `beam` command, or many loads at once."""
+import os
+
+from . import _command, _core
+
+_VECTOR = ("n", "alpha2", "mu", "theta0", "b_over_l")
+_GIVEN = ("alpha2", "theta0", "b_over_l")
+# A value of the given quantity that passes the tool's checks, used once to validate the other
+# options of a vectorised call (every load is checked again on its own).
+_PLACEHOLDER = {"alpha2": 1.0, "theta0": 0.5, "b_over_l": 0.1}
+
+
+def _is_array(value):
+    try:
+        import numpy
+    except ImportError:
+        return False
+    return value is not None and not isinstance(value, str) and numpy.ndim(value) > 0
+
+
+def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=None, tol=None,
+         shape=None, boundary=None, tip_x=None, tip_y=None, tip_angle=None, follower=None,
+         elements=None, increments=None, chain_variant=None, integrator=None, chain=None,
+         length=None, E=None, I=None, width=None, thickness=None, Fx=None, Fy=None, M=None,
+         yield_strength=None, threads=None):
+    """Solves an initially straight cantilever with an end load: `flexure beam` (docs/cli.md).
+
+    Howell's nondimensional loads (give exactly one of alpha2, theta0, b_over_l):
+      n         load ratio: horizontal load n P, n > 0 compressive (default 0)
+      alpha2    P l^2/EI, the vertical tip load
+      mu        end moment M l/EI, counter-clockwise positive (default 0)
+      theta0    inverse problem: the tip angle to reach, rad (or a string with a unit, '30deg')
+      b_over_l  inverse problem: the tip deflection b/l to reach, in [-1, 1]
+    Any of n, alpha2, mu, theta0, b_over_l may be a numpy array (or anything numpy.asarray takes):
+    they broadcast, and every key of the result is an array of the broadcast shape, plus
+    `status` (0 converged, 1 no converged solution, 2 invalid input at that load; `message` says
+    why) and the boolean `converged`. One failed load never raises. The loads are solved in C++
+    on `threads` worker threads (default: all cores) while other Python threads run.
+
+    Method and end conditions (the tool's defaults when None):
+      method      'auto' | 'elliptic' | 'shooting' | 'chain' | 'prbm' (default 'auto')
+      tol         auto only: the relative error allowed (default 1e-6)
+      shape       also return the deflected shape at this many points (scalar loads only)
+      boundary    'free' | 'guided' | 'pinned' | 'slider' | 'fixed'; tip_x, tip_y, tip_angle
+                  prescribe the tip; follower: a follower force F l^2/EI
+      elements, increments, chain_variant: the chain algorithm; integrator: shooting's
+                  ('rk8pd', 'cvodes', 'dormand-prince')
+      chain       a segment chain TOML file (docs/chain-toml.md)
+    A physical cantilever (SI numbers, or strings with units: '50mm', '200GPa', '5N'):
+      length, E, I (or width and thickness), Fx, Fy, M, yield_strength
+
+    Returns the dict `flexure beam --json` prints: method, method_reason, n, alpha2, mu,
+    a_over_l, b_over_l, theta0 (rad), iterations, converged, branch, inflection_points,
+    root_moment, limit_points, target_residual, first_limit_load_factor, family, message,
+    termination, boundary, reactions {Fx, Fy, M}, and per method or input more (shape as columns
+    s, x, y, theta; the SI keys of a physical beam). Raises InvalidInput (a ValueError) for input
+    the tool refuses and NoConvergence (a RuntimeError, with .reached) when a scalar load does
+    not converge.
+
+    Example:
+      >>> import flexure, numpy as np
+      >>> flexure.beam(alpha2=2.0)["theta0"]                        # doctest: +ELLIPSIS
+      0.6...
+      >>> r = flexure.beam(n=np.array([[0.0], [1.0]]), alpha2=np.linspace(0.5, 5, 10))
+      >>> r["theta0"].shape, bool(r["converged"].all())
+      ((2, 10), True)
+    """
+    loads = {"n": n, "alpha2": alpha2, "mu": mu, "theta0": theta0, "b_over_l": b_over_l}
+    options = {"method": method, "tol": tol, "shape": shape, "boundary": boundary,
+               "tip_x": tip_x, "tip_y": tip_y, "tip_angle": tip_angle, "follower": follower,
+               "elements": elements, "increments": increments, "chain_variant": chain_variant,
+               "integrator": integrator, "chain": chain, "length": length, "E": E, "I": I,
+               "width": width, "thickness": thickness, "Fx": Fx, "Fy": Fy, "M": M,
+               "yield_strength": yield_strength}
+    if threads is not None and (not isinstance(threads, int) or isinstance(threads, bool)
+                                or threads < 1):
+        raise _command.InvalidInput(f"threads = {threads!r}: expected an integer >= 1")
+    if not any(_is_array(loads[k]) for k in _VECTOR):
+        return _command.run(["beam"], {**loads, **options})
+    return _beam_many(loads, options, threads or os.cpu_count() or 1)
+
+
+def _beam_many(loads, options, threads):
+    import numpy
+    given = [k for k in _GIVEN if loads[k] is not None]
+    arrays = {}
+    for k in _VECTOR:
+        if loads[k] is None:
+            continue
+        try:
+            arrays[k] = numpy.asarray(loads[k], dtype=numpy.float64)
+        except (TypeError, ValueError) as e:
+            raise _command.InvalidInput(
+                f"{k}: expected numbers (an array of float64), got {loads[k]!r:.60}: {e}") from None
+    try:
+        broadcast = numpy.broadcast_arrays(*arrays.values())
+    except ValueError:
+        shapes = ", ".join(f"{k} {a.shape}" for k, a in arrays.items())
+        raise _command.InvalidInput(
+            f"the load arrays do not broadcast to one shape: {shapes}") from None
+    arrays = dict(zip(arrays, broadcast))
+    shape = broadcast[0].shape
+    # The options are checked once by the tool itself, with a valid placeholder load.
+    # (Two given quantities are refused by the tool, naming them.)
+    scalar = {k: _PLACEHOLDER[k] for k in given}
+    args = ["beam"] + _command.to_flags({**scalar, **options})
+    size = int(numpy.prod(shape)) if shape else 1
+    zeros = numpy.zeros(size)
+
+    def flat(name):
+        return numpy.ascontiguousarray(arrays[name].reshape(-1)) if name in arrays else zeros
+
+    if not given:  # the tool's own message: one of --alpha2, --theta0, --b-over-l is required
+        _command.run(["beam"], options)
+    value = flat(given[0])
+    try:
+        result = _core.beam_many(args[1:], flat("n"), flat("mu"), value, list(shape), threads)
+    except ValueError as e:
+        raise _command.InvalidInput(str(e)) from None
+    if "within_validity" in result:
+        # One warning for the call, where the scalar call warns at each load.
+        outside = (result["method"] == "prbm") & result["converged"] & ~result["within_validity"]
+        if outside.any():
+            _command.emit([f"{int(outside.sum())} of {outside.size} loads solved by the PRBM lie "
+                           f"outside its validity limits (within_validity False): their PRBM tip "
+                           f"and force are not trusted (method='elliptic' or 'shooting' is "
+                           f"exact)"], stacklevel=3)
+    return result

@@ -1,0 +1,141 @@
+"""Every function of the module agrees with the tool's --json output on the same input: equal
+keys, numbers to 1e-12 (issue 15). The tool runs as a subprocess; the module in-process."""
+import os
+
+import pytest
+
+import flexure
+from conftest import ROOT, assert_same
+
+BEAMS = [
+    (dict(alpha2=2.0), ["--alpha2", "2"]),
+    (dict(n=1.0, theta0=0.6), ["--n", "1", "--theta0", "0.6"]),
+    (dict(theta0="30deg"), ["--theta0", "30deg"]),
+    (dict(b_over_l=0.3, n=-0.5), ["--b-over-l", "0.3", "--n", "-0.5"]),
+    (dict(alpha2=5.0, mu=-2.0, shape=11), ["--alpha2", "5", "--mu", "-2", "--shape", "11"]),
+    (dict(alpha2=8.0, method="shooting", boundary="guided"),
+     ["--alpha2", "8", "--method", "shooting", "--boundary", "guided"]),
+    (dict(alpha2=10.0, method="chain", elements=50),
+     ["--alpha2", "10", "--method", "chain", "--elements", "50"]),
+    (dict(alpha2=1.5, method="prbm"), ["--alpha2", "1.5", "--method", "prbm"]),
+    (dict(alpha2=0.1 + 0.2, n=1 / 3), ["--alpha2", repr(0.1 + 0.2), "--n", repr(1 / 3)]),
+    (dict(length="20in", E="30Msi", width="1in", thickness="0.1in", Fy="0.49lbf",
+          yield_strength="167ksi", shape=5),
+     ["--length", "20in", "--E", "30Msi", "--width", "1in", "--thickness", "0.1in",
+      "--Fy", "0.49lbf", "--yield-strength", "167ksi", "--shape", "5"]),
+]
+
+
+@pytest.mark.parametrize("kwargs,flags", BEAMS, ids=[str(k) for k, _ in BEAMS])
+def test_beam(cli, kwargs, flags):
+    assert_same(flexure.beam(**kwargs), cli.json("beam", *flags))
+
+
+EXAMPLES = os.path.join(ROOT, "docs", "examples")
+
+
+@pytest.mark.parametrize("name", ["two_flexures_rigid_link.toml", "steel_strip.toml"])
+def test_beam_chain_file(cli, name):
+    path = os.path.join(EXAMPLES, name)
+    assert_same(flexure.beam(chain=path, method="shooting"),
+                cli.json("beam", "--chain", path, "--method", "shooting"))
+
+
+def test_path(cli, tmp_path):
+    a, b = tmp_path / "a.h5", tmp_path / "b.h5"
+    assert_same(flexure.path(alpha2=3.0, mu=-1.0, out=a),
+                cli.json("path", "--alpha2", "3", "--mu", "-1", "--out", b),
+                skip=("seconds", "out"))
+
+
+def test_sweep_and_read(cli, tmp_path):
+    a, b = tmp_path / "a.h5", tmp_path / "b.h5"
+    assert_same(flexure.sweep(alpha2="0:5:11", n="0:1:3", out=a),
+                cli.json("sweep", "beam", "--alpha2", "0:5:11", "--n", "0:1:3", "--out", b),
+                skip=("seconds", "out"))
+    data_a, data_b = flexure.read(a), flexure.read(b)
+    assert data_a["theta0"].shape == (11, 3)
+    assert data_a["units"]["theta0"] == "rad"
+    assert (data_a["theta0"] == data_b["theta0"]).all()
+    assert "flexure" in data_a["attributes"]["command_line"]
+
+
+@pytest.mark.parametrize("kwargs,flags", [
+    (dict(), []),
+    (dict(segment="end-moment"), ["--segment", "end-moment"]),
+    (dict(n=1.0, step=0.5), ["--n", "1", "--step", "0.5"]),
+])
+def test_prbm_derive(cli, kwargs, flags):
+    assert_same(flexure.prbm.derive(**kwargs), cli.json("prbm", "derive", *flags))
+
+
+def test_prbm_table(cli):
+    assert_same(flexure.prbm.table(step=0.5, n_steps=2),
+                cli.json("prbm", "table", "--step", "0.5", "--n-steps", "2"))
+
+
+def test_prbm_compare(cli):
+    assert_same(flexure.prbm.compare(n=0.5, range="0.5:5:4"),
+                cli.json("prbm", "compare", "--n", "0.5", "--range", "0.5:5:4"))
+
+
+@pytest.mark.parametrize("kwargs,flags", [
+    (dict(config="lpp", R=0.6, d=0.5), ["--config", "lpp", "--R", "0.6", "--d", "0.5"]),
+    (dict(subclass="lpp-b", curve=True), ["--subclass", "lpp-b", "--curve"]),
+    (dict(list=True), ["--list"]),
+])
+def test_cfm(cli, kwargs, flags):
+    assert_same(flexure.cfm(**kwargs), cli.json("cfm", *flags))
+
+
+def test_mechanism_list_and_analyze(cli):
+    assert_same(flexure.mechanism.list(), cli.json("mechanism", "list"))
+    assert_same(flexure.mechanism.analyze("1A-lpp", points=8, method="exact"),
+                cli.json("mechanism", "analyze", "1A-lpp", "--points", "8", "--method", "exact"))
+
+
+def test_mechanism_from_file_and_dict(cli):
+    toml = os.path.join(EXAMPLES, "mechanism_lpp.toml")
+    expected = cli.json("mechanism", "analyze", toml, "--points", "6", "--method", "prbm")
+    assert_same(flexure.mechanism.analyze(toml, points=6, method="prbm"), expected)
+    import tomllib
+    with open(toml, "rb") as f:
+        design = tomllib.load(f)
+    assert_same(flexure.mechanism.analyze(design, points=6, method="prbm"), expected)
+
+
+def test_mechanism_validate(cli):
+    assert_same(flexure.mechanism.validate(designs="thesis", points=6),
+                cli.json("mechanism", "validate", "--designs", "thesis", "--points", "6"))
+
+
+def test_dynamics(cli):
+    assert_same(flexure.dynamics(mechanism="2B-lplm", omega="5:50:4", samples=64),
+                cli.json("dynamics", "--mechanism", "2B-lplm", "--omega", "5:50:4",
+                         "--samples", "64"))
+
+
+def test_bench(cli, tmp_path):
+    a, b = tmp_path / "a.h5", tmp_path / "b.h5"
+    got = flexure.bench(out=a, quick=True, problems="tip_moment", methods=["elliptic", "prbm"])
+    assert_same(got, cli.json("bench", "--out", b, "--quick", "--problems", "tip_moment",
+                              "--methods", "elliptic,prbm"), skip=("seconds", "file"))
+    assert flexure.read(a)["tip_moment"]["elliptic"]["units"]
+
+
+def test_concurrent_calls_from_threads_are_independent():
+    # Each thread has its own captured output, warnings and exit code (cli/command_runner.h).
+    import threading
+    loads = [0.5 + 0.25 * i for i in range(40)]
+    expected = [flexure.beam(alpha2=a, method="shooting")["theta0"] for a in loads]
+    results = {}
+
+    def work(k):
+        results[k] = [flexure.beam(alpha2=a, method="shooting")["theta0"] for a in loads]
+
+    threads = [threading.Thread(target=work, args=(k,)) for k in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert all(results[k] == expected for k in range(4))
