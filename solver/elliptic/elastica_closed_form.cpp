@@ -204,11 +204,12 @@ double tip_angle_residual_by_addition(const PendulumProblem& problem, const TipS
   const double cn_root = c1 * l.cn + s1 * l.sn * d1 * l.dn;
   const double j =
       agm_mean > 0.0 ? std::floor(length * agm_mean / kPi) : (length >= 0.0 ? 0.0 : -1.0);
-  const double phi_tip = std::atan2(s1, c1);
+  // am(v_tip) = chi1/2 - pi upper = tau/2 -+ pi/2 (c1 >= 0 puts it in [-pi/2, pi/2]).
+  const double phi_tip = 0.5 * tip.tau + (tip.tau > 0.0 ? -0.5 * kPi : 0.5 * kPi);
   // The drop of the amplitude, reduced into [j pi - pi/2, j pi + 3 pi/2).
-  double drop = phi_tip - std::atan2(sn_root, cn_root);
   const double low = j * kPi - 0.5 * kPi;
-  drop = low + std::fmod(std::fmod(drop - low, 2.0 * kPi) + 2.0 * kPi, 2.0 * kPi);
+  double drop = phi_tip - std::atan2(sn_root, cn_root) - low;
+  drop = low + drop - 2.0 * kPi * std::floor(drop / (2.0 * kPi));
   return 2.0 * kPi * upper + 2.0 * (phi_tip - drop) - problem.chi0;
 }
 
