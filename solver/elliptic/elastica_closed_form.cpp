@@ -1,5 +1,6 @@
 #include "flexure/solver/elliptic/elastica_closed_form.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -156,6 +157,60 @@ double tip_angle_residual(const PendulumProblem& problem, double tip_from_force)
 
 double tip_angle_residual(const PendulumProblem& problem, const TipState& tip) {
   return integrate_from_tip(problem, tip).chi_root - problem.chi0;
+}
+
+double tip_angle_residual_by_addition(const PendulumProblem& problem, const TipState& tip) {
+  // Below this denominator the addition formulas are not used (see the header).
+  constexpr double kMinDenominator = 1e-3;
+  const double F = problem.force;
+  const double mu = problem.mu;
+  // The same families, windings and tip amplitudes as integrate_from_tip.
+  const int upper = tip.winding + (tip.tau > 0.0 ? 1 : 0);
+  if (tip.h_minus > 0.0 || mu == 0.0) {
+    // Family A: sin(chi/2) = k sn(u), chi' = 2 k sqrt(F) cn(u), u_root = u_tip - sqrt(F).
+    const double m = tip.h_plus / F;
+    const Parameter k{m, std::max(tip.h_minus / F, 0.0)};
+    const double kk = std::sqrt(m);
+    const double sqrtF = std::sqrt(F);
+    // sn(u_tip) = sin(phi1), cn(u_tip) = cos(phi1) = mu / (2 k sqrt(F)), dn(u_tip) by
+    // delta_amplitude's form sqrt(mc + m cn^2).
+    const double s1 = (upper % 2 == 0 ? tip.half_sin : -tip.half_sin) / kk;
+    const double c1 = 0.5 * mu / (kk * sqrtF);
+    const double d1 = std::sqrt(k.mc + m * c1 * c1);
+    const JacobiFunctions l = jacobi_sn_cn_dn(sqrtF, k);
+    if (c1 * c1 + s1 * s1 * l.dn * l.dn < kMinDenominator) return tip_angle_residual(problem, tip);
+    // DLMF 22.8.1 and 22.8.3 with v = -L, both numerators over the same positive denominator:
+    // chi_root = 2 pi w + 2 atan2(k sn(u_root), dn(u_root)) as in integrate_from_tip.
+    const double sn_root = s1 * l.cn * l.dn - l.sn * c1 * d1;
+    const double dn_root = d1 * l.dn + m * s1 * c1 * l.sn * l.cn;
+    return 2.0 * kPi * upper + 2.0 * std::atan2(kk * sn_root, dn_root) - problem.chi0;
+  }
+  // Family B: chi = 2 am(v), v_root = v_tip - sigma q, am(v_tip) = phi_r with |phi_r| <= pi/2.
+  const double m = F / tip.h_plus;
+  const Parameter k{m, std::fabs(tip.h_minus) / tip.h_plus};
+  const double length = (mu > 0.0 ? 1.0 : -1.0) * std::sqrt(tip.h_plus);  // L = sigma q
+  const double parity = upper % 2 == 0 ? 1.0 : -1.0;
+  const double s1 = parity * tip.half_sin;
+  const double c1 = parity * tip.half_cos;
+  const double d1 = std::sqrt(k.mc + m * c1 * c1);
+  double agm_mean = 0.0;  // pi / (2 K)
+  const JacobiFunctions l = jacobi_sn_cn_dn(length, k, agm_mean);
+  if (c1 * c1 + s1 * s1 * l.dn * l.dn < kMinDenominator) return tip_angle_residual(problem, tip);
+  // sn and cn at the clamp (DLMF 22.8.1, 22.8.2 with v = -L) give am(v_root) modulo 2 pi. The
+  // whole turns: with L = 2 K j + r, 0 <= r < 2 K, am(v_tip) - am(v_root) = j pi + (am(v_tip) -
+  // am(v_tip - r)), the last in [0, pi) because am rises by pi per 2 K (Howell eq. F.17); at m = 1
+  // (K infinite) j = 0 for L >= 0 and -1 for L < 0.
+  const double sn_root = s1 * l.cn * l.dn - l.sn * c1 * d1;
+  const double cn_root = c1 * l.cn + s1 * l.sn * d1 * l.dn;
+  const double j =
+      agm_mean > 0.0 ? std::floor(length * agm_mean / kPi) : (length >= 0.0 ? 0.0 : -1.0);
+  // am(v_tip) = chi1/2 - pi upper = tau/2 -+ pi/2 (c1 >= 0 puts it in [-pi/2, pi/2]).
+  const double phi_tip = 0.5 * tip.tau + (tip.tau > 0.0 ? -0.5 * kPi : 0.5 * kPi);
+  // The drop of the amplitude, reduced into [j pi - pi/2, j pi + 3 pi/2).
+  const double low = j * kPi - 0.5 * kPi;
+  double drop = phi_tip - std::atan2(sn_root, cn_root) - low;
+  drop = low + drop - 2.0 * kPi * std::floor(drop / (2.0 * kPi));
+  return 2.0 * kPi * upper + 2.0 * (phi_tip - drop) - problem.chi0;
 }
 
 ShapeEvaluator::ShapeEvaluator(const ElasticaParameters& parameters)

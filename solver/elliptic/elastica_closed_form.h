@@ -64,6 +64,19 @@ BackwardIntegration integrate_from_tip(const PendulumProblem& problem, double ti
 double tip_angle_residual(const PendulumProblem& problem, double tip_from_force);
 double tip_angle_residual(const PendulumProblem& problem, const TipState& tip);
 
+// The same residual without the incomplete integral at the tip, by the addition theorem of the
+// Jacobi functions (DLMF 22.8.1-22.8.3): sn, cn and dn at the clamp, u_root = u_tip - L, follow
+// from those at the tip (the amplitude there is known from the tip state: sn = sin phi1,
+// cn = cos phi1) and those of the beam's length L in the elliptic argument (sqrt(F) in family A,
+// sigma q in family B), so one Gauss transformation replaces R_F plus the Gauss transformation
+// (about a third of a residual's cost). The common denominator D = 1 - m sn^2(u_tip) sn^2(L) =
+// cn^2(u_tip) + sn^2(u_tip) dn^2(L) >= 0 cancels in the atan2 of the clamp angle, but the
+// numerators' rounding (a few ulps times |L|) is divided by it: where D < 1e-3 the residual above
+// is returned instead. The two agree to about 1e-13 (checked in tests/solver/elliptic_solver_test
+// .cpp); the continuation follows its path with this one and polishes the final root with the
+// residual above (docs/theory-elliptic.md, "How a forward solve works").
+double tip_angle_residual_by_addition(const PendulumProblem& problem, const TipState& tip);
+
 // Position and angle at arc length s in [0, 1] in the normalised (unmirrored) frame. The evaluator
 // computes the clamp's amplitude and integrals once for many points.
 class ShapeEvaluator {

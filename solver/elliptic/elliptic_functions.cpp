@@ -118,13 +118,19 @@ double D_over_m_at(double u, double phi, Parameter k) {
 
 namespace {
 
-JacobiFunctions gauss_transformation(double u, Parameter k, bool with_amplitude) {
+// `agm_mean`, when given, receives M(1, k') = pi / (2 K) (DLMF 19.8.5): 1 at m = 0, 0 at m = 1.
+JacobiFunctions gauss_transformation(double u,
+                                     Parameter k,
+                                     bool with_amplitude,
+                                     double* agm_mean = nullptr) {
   JacobiFunctions out;
   if (k.m <= 0.0) {
+    if (agm_mean != nullptr) *agm_mean = 1.0;
     out = {std::sin(u), std::cos(u), 1.0, u};
     return out;
   }
   if (k.mc <= 0.0) {
+    if (agm_mean != nullptr) *agm_mean = 0.0;
     // m = 1: sn = tanh, cn = dn = sech, am = the Gudermannian (DLMF 22.5.8).
     const double sech = 1.0 / std::cosh(u);
     out = {std::tanh(u), sech, sech, 2.0 * std::atan(std::tanh(0.5 * u))};
@@ -153,6 +159,7 @@ JacobiFunctions gauss_transformation(double u, Parameter k, bool with_amplitude)
   // the recurrence (Bulirsch 1965, procedure sncndn) carries the ratio cn/sn and dn back down. It
   // depends on v only through cot v, so v is reduced by whole half-turns j (am(u + 2K) = am(u) +
   // pi) and only the sign of sn follows sin v.
+  if (agm_mean != nullptr) *agm_mean = mean;
   const double v = mean * u;
   const double turns = std::nearbyint(v / kPi);
   const double w = v - turns * kPi;  // |w| <= pi/2, cos w >= 0
@@ -188,6 +195,10 @@ JacobiFunctions gauss_transformation(double u, Parameter k, bool with_amplitude)
 JacobiFunctions jacobi_functions(double u, Parameter k) { return gauss_transformation(u, k, true); }
 
 JacobiFunctions jacobi_sn_cn_dn(double u, Parameter k) { return gauss_transformation(u, k, false); }
+
+JacobiFunctions jacobi_sn_cn_dn(double u, Parameter k, double& agm_mean) {
+  return gauss_transformation(u, k, false, &agm_mean);
+}
 
 double jacobi_amplitude(double u, Parameter k) { return jacobi_functions(u, k).am; }
 

@@ -67,6 +67,9 @@ JacobiFunctions jacobi_functions(double u, Parameter k);
 // The same without the amplitude (am is left NaN), for callers that need only sn, cn and dn: the
 // amplitude costs an atan2, a fifth of the whole.
 JacobiFunctions jacobi_sn_cn_dn(double u, Parameter k);
+// The same, and M(1, k') = pi / (2 K) from the same AGM (DLMF 19.8.5; 0 at m = 1), for callers
+// that count periods.
+JacobiFunctions jacobi_sn_cn_dn(double u, Parameter k, double& agm_mean);
 
 // delta(phi) = sqrt(1 - m sin^2 phi) = dn(u) at phi = am(u), formed as sqrt(mc + m cos^2 phi).
 double delta_amplitude(double phi, Parameter k);
