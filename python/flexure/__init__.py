@@ -45,6 +45,11 @@ def sweep(*, out, alpha2=None, theta0=None, b_over_l=None, n=None, mu=None, meth
     alpha2, theta0, b_over_l, n, mu: a value or 'START:STOP:COUNT' (one or two axes); method;
     threads; compress; out: the HDF5 file (required). Returns the summary `--json` prints; read
     the file with flexure.read(out). For arrays in memory use flexure.beam with numpy arrays.
+
+    Example:
+      >>> flexure.sweep(alpha2="0:20:1001", n="0:2:3", out="sweep.h5")     # doctest: +SKIP
+      >>> flexure.read("sweep.h5")["theta0"].shape                          # doctest: +SKIP
+      (1001, 3)
     """
     return _run(["sweep", "beam"], dict(alpha2=alpha2, theta0=theta0, b_over_l=b_over_l, n=n,
                                         mu=mu, method=method, out=out, threads=threads,
@@ -59,8 +64,12 @@ def cfm(*, config=None, R=None, K1=None, K2=None, d=None, subclass=None, samplin
     config ('1A', '2B', ...), R, K1, K2, d or a thesis subclass ('lpp-b'); sampling, points;
     curve=True adds the force curve; list=True lists the configurations; table=True reproduces
     the thesis tables; exact=True also evaluates the exact model (exact_points,
-    exact_max_iterations, exact_rows). Returns the dict `flexure cfm --json` prints (Phi, Psi,
-    Xi, percent constant force, ...).
+    exact_max_iterations, exact_rows). R = r3/r2, K1 = k2/k1, K2 = k3/k1 (nondimensional), d the
+    stroke in % of r2 + r3. Returns the dict `flexure cfm --json` prints (Phi, Psi, Xi, percent
+    constant force, ...).
+
+    Example:
+      >>> flexure.cfm(subclass="lpp-b", exact=True)                        # doctest: +SKIP
     """
     return _run(["cfm"], dict(config=config, R=R, K1=K1, K2=K2, d=d, subclass=subclass,
                               sampling=sampling, points=points, curve=curve, list=list,
@@ -78,7 +87,10 @@ def dynamics(*, mechanism=None, omega=None, out=None, stroke_percent=None, sprin
     table; omega 'START:STOP:COUNT' (rad/s); stroke_percent, preload_percent, samples,
     friction (C1, C2, C3 in N m), axial_alpha, zero_slider_mass, zero_inertia, history (rad/s),
     spring_rule, force_of ('whole' | 'half'); out: also write HDF5; list=True lists the designs.
-    Returns the dict `flexure dynamics --json` prints.
+    Returns the dict `flexure dynamics --json` prints (forces in N, times in s, omega in rad/s).
+
+    Example:
+      >>> flexure.dynamics(mechanism="2B-lplm", omega="5:50:10")           # doctest: +SKIP
     """
     return _run(["dynamics"], dict(mechanism=mechanism, omega=omega, out=out,
                                    stroke_percent=stroke_percent, spring_rule=spring_rule,
@@ -92,7 +104,12 @@ def dynamics(*, mechanism=None, omega=None, out=None, stroke_percent=None, sprin
 def bench(*, out, quick=False, problems=None, methods=None, resume=False, stop_after=None):
     """Accuracy against time of every method on the standard problems: `flexure bench`
     (docs/benchmarks.md). out: the HDF5 file (required); quick=True for the small set; problems,
-    methods: names or lists of names. Returns the summary `--json` prints."""
+    methods: names or lists of names; resume=True continues an interrupted run; stop_after.
+    Returns the summary `--json` prints; the results are in the file (flexure.read(out)).
+
+    Example:
+      >>> flexure.bench(out="quick.h5", quick=True, methods=["elliptic", "prbm"])   # doctest: +SKIP
+    """
     return _run(["bench"], dict(out=out, quick=quick, problems=problems, methods=methods,
                                 resume=resume, stop_after=stop_after),
                 switches={"quick", "resume"})
@@ -100,5 +117,13 @@ def bench(*, out, quick=False, problems=None, methods=None, resume=False, stop_a
 
 def validate(*, out=None):
     """Every reference problem with every method against its reference: `flexure validate`.
-    Returns the dict `--json` prints; a failed check is reported in it, not raised."""
+
+    out: the results file (default validation.h5 in the current folder). Returns the dict
+    `--json` prints (all_passed, and per check the computed and reference values, the relative
+    error and its tolerance); a failed check is reported in it, not raised.
+
+    Example:
+      >>> flexure.validate(out="checks.h5")["all_passed"]                    # doctest: +SKIP
+      True
+    """
     return _run(["validate"], dict(out=out))

@@ -7,7 +7,14 @@ from . import _command, _core
 
 
 def list():  # noqa: A001 - the tool's name for it: `flexure mechanism list`
-    """The built-in designs: `flexure mechanism list --json` (names, configurations, sources)."""
+    """The built-in designs: `flexure mechanism list` (docs/mechanisms.md).
+
+    Returns the dict `flexure mechanism list --json` prints: `mechanisms`, one entry per design
+    (name, configuration, class, source), as a list of dicts.
+
+    Example:
+      >>> [m["name"] for m in flexure.mechanism.list()["mechanisms"]][:2]   # doctest: +SKIP
+    """
     return _command.run(["mechanism", "list"], {})
 
 

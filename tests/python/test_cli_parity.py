@@ -139,3 +139,10 @@ def test_concurrent_calls_from_threads_are_independent():
     for t in threads:
         t.join()
     assert all(results[k] == expected for k in range(4))
+
+
+def test_validate(cli, tmp_path):
+    a, b = tmp_path / "a.h5", tmp_path / "b.h5"
+    got = flexure.validate(out=a)
+    assert got["all_passed"] is True
+    assert_same(got, cli.json("validate", "--out", b), skip=("seconds_per_solve", "out"))
