@@ -45,6 +45,9 @@ cfm::CfmExactOptions make_exact_options(const CfmArgs& args);
 // The exact model's keys (Phi_exact, percent_constant_force_exact, max_force_error, ...).
 void add_exact_json(Json& j, const cfm::CfmExactResult& e, bool curve);
 // The PRBM model at p; throws NoConvergence, or InvalidInput for a non-finite result.
+// The keys of `flexure cfm --json` for one evaluated design (also `flexure design cfm`).
+Json cfm_result_json(const cfm::CfmResult& r, const cfm::CfmOptions& options);
+
 cfm::CfmResult evaluate_or_throw(const cfm::CfmModel& model, const cfm::CfmParameters& p);
 
 // --table: every printed row recomputed (exit 1 if one is outside its printed rounding).

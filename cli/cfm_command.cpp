@@ -431,6 +431,10 @@ void run_cfm(const CfmArgs& args) {
 
 }  // namespace
 
+Json cfm_result_json(const CfmResult& r, const CfmOptions& options) {
+  return result_json(r, options);
+}
+
 cfm::CfmExactOptions make_exact_options(const CfmArgs& args) {
   cfm::CfmExactOptions options;
   require_in_range(

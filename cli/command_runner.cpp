@@ -21,6 +21,7 @@ void register_all_commands(CLI::App& app) {
   register_mechanism_command(app);
   register_dynamics_command(app);
   register_bench_command(app);
+  register_design_command(app);
   register_help_command(app);
   add_command_examples(app);
 }

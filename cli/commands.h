@@ -13,6 +13,7 @@ void register_path_command(CLI::App& app);       // path_command.cpp
 void register_mechanism_command(CLI::App& app);  // mechanism_command.cpp
 void register_dynamics_command(CLI::App& app);   // dynamics_command.cpp
 void register_bench_command(CLI::App& app);      // bench_command.cpp
+void register_design_command(CLI::App& app);     // design_command.cpp
 void register_help_command(CLI::App& app);       // help_command.cpp (register last)
 // Ends every command\'s --help with its examples (command_examples.cpp); call after registering.
 void add_command_examples(CLI::App& app);

@@ -9,6 +9,7 @@ packages=(
   libaec-dev zlib1g-dev  # the static libhdf5.a needs szip (libaec) and zlib at link time
   libcli11-dev nlohmann-json3-dev libfmt-dev libtomlplusplus-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libnlopt-cxx-dev  # the optimiser of `flexure design` (docs/design.md)
   python3-matplotlib python3-h5py python3-numpy
   # The Python module (docs/python.md): pybind11, the headers of Debian's Python, pytest, and
   # what `pip install --no-build-isolation .` into a venv needs offline.

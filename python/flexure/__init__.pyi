@@ -5,6 +5,7 @@ from typing import Any, Sequence, Union
 import numpy as np
 import numpy.typing as npt
 
+from . import design as design
 from . import mechanism as mechanism
 from . import prbm as prbm
 

@@ -146,3 +146,10 @@ def test_validate(cli, tmp_path):
     got = flexure.validate(out=a)
     assert got["all_passed"] is True
     assert_same(got, cli.json("validate", "--out", b), skip=("seconds_per_solve", "out"))
+
+
+def test_design_cfm(cli):
+    assert_same(flexure.design.cfm(config="lps", d=16, objective="max-psi", pcf_min=95.0,
+                                   orientation="I"),
+                cli.json("design", "cfm", "--config", "lps", "--d", "16", "--objective", "max-psi",
+                         "--pcf-min", "95", "--orientation", "I"))

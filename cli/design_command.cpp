@@ -1,0 +1,181 @@
+// `flexure design cfm`: synthesis of a constant-force mechanism's R, K1, K2 for an objective
+// under the thesis's constraints (mechanisms/design/cfm_synthesis.h, docs/design.md).
+#include <fmt/format.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "cli/cfm_cli_support.h"
+#include "cli/cli_common.h"
+#include "cli/commands.h"
+#include "flexure/mechanisms/cfm/cfm_configuration.h"
+#include "flexure/mechanisms/design/cfm_synthesis.h"
+#include "flexure/solver/common/errors.h"
+
+namespace flexure::cli {
+namespace {
+
+struct DesignCfmArgs {
+  std::string config;
+  double d = 0.0;
+  std::string objective;
+  double pcf_min = 0.0;
+  std::string orientation;
+  double K1 = 0.0;
+  double K2 = 0.0;
+  std::string sampling = "auto";
+  int points = 50;
+  int starts = 0;
+  unsigned long seed = design::SynthesisOptions{}.seed;
+  bool json = false;
+  CLI::Option* pcf_min_option = nullptr;
+  CLI::Option* K1_option = nullptr;
+  CLI::Option* K2_option = nullptr;
+  CLI::Option* points_option = nullptr;
+};
+
+design::CfmDesignProblem make_problem(const DesignCfmArgs& args) {
+  design::CfmDesignProblem p;
+  p.config = args.config;
+  require_finite_input(args.d, "--d (stroke, % of r2 + r3)");
+  p.stroke_percent = args.d;
+  p.objective = design::design_objective_from_string(args.objective);
+  if (*args.pcf_min_option) {
+    require_in_range(args.pcf_min, "--pcf-min (percent constant force)", 1e-9, 100.0 - 1e-9);
+    p.pcf_min = args.pcf_min;
+  }
+  p.orientation = args.orientation;
+  if (*args.K1_option) p.fixed_K1 = args.K1;
+  if (*args.K2_option) p.fixed_K2 = args.K2;
+  p.model = design::default_model_options(p.objective);
+  if (args.sampling == "thesis") {
+    p.model.sampling = cfm::StrokeSampling::kThesisCode;
+  } else if (args.sampling == "uniform") {
+    p.model.sampling = cfm::StrokeSampling::kUniform;
+  } else if (args.sampling != "auto") {
+    throw InvalidInput(
+        fmt::format("--sampling = '{}' is unknown; allowed: auto, thesis, uniform", args.sampling));
+  }
+  if (*args.points_option) {
+    if (p.model.sampling != cfm::StrokeSampling::kUniform) {
+      throw InvalidInput("--points applies to the uniform sampling only (--sampling uniform)");
+    }
+    require_in_range(args.points, "--points (stroke points)", 2, 100000);
+    p.model.points = args.points;
+  }
+  return p;
+}
+
+Json design_json(const design::CfmDesignProblem& p,
+                 const design::CfmSynthesisResult& s,
+                 unsigned long seed) {
+  Json j = cfm_result_json(s.best.result, p.model);
+  j["objective"] = to_string(p.objective);
+  j["objective_value"] = s.best.objective;
+  j["pcf_min"] = p.pcf_min ? Json(*p.pcf_min) : Json(nullptr);
+  j["orientation"] = p.orientation;
+  j["variables"] = s.variables;
+  j["subclass"] = s.nearest_subclass ? Json(*s.nearest_subclass) : Json(nullptr);
+  Json constraints = Json::array();
+  for (const design::NamedConstraint& c : s.best.constraints) {
+    constraints.push_back(Json{{"name", c.name},
+                               {"value", c.value},
+                               {"bound", c.bound},
+                               {"sense", c.upper ? "<=" : ">="},
+                               {"satisfied", c.satisfied()}});
+  }
+  j["constraints"] = std::move(constraints);
+  j["evaluations"] = s.evaluations;
+  j["starts"] = s.starts;
+  j["feasible_starts"] = s.feasible_starts;
+  j["seed"] = seed;
+  j["converged"] = s.converged();
+  j["termination"] = termination_name(s.termination);
+  j["message"] = s.message;
+  return j;
+}
+
+void run_design_cfm(const DesignCfmArgs& args) {
+  const design::CfmDesignProblem problem = make_problem(args);
+  design::SynthesisOptions options;
+  options.starts = args.starts;
+  options.seed = args.seed;
+  const design::CfmSynthesisResult s = design::synthesize_cfm(problem, options);
+  if (s.x.empty()) throw NoConvergence(fmt::format("design cfm: {}", s.message));
+  if (!s.converged()) {
+    throw NoConvergenceReport(
+        fmt::format(
+            "design cfm {} {}: {}", problem.config, to_string(problem.objective), s.message),
+        Json{{"R", s.best.result.R},
+             {"K1", s.best.result.K1},
+             {"K2", s.best.result.K2},
+             {"objective_value", s.best.objective},
+             {"evaluations", s.evaluations}});
+  }
+  if (args.json) {
+    print_json(design_json(problem, s, args.seed));
+    return;
+  }
+  const cfm::CfmResult& r = s.best.result;
+  fmt::print("{} ({}), d = {:g} %: {} = {:.6g}\n",
+             r.config,
+             r.class_name,
+             problem.stroke_percent,
+             to_string(problem.objective),
+             s.best.objective);
+  fmt::print("  R = {:.4f}, K1 = {:.4f}, K2 = {:.4f}\n", r.R, r.K1, r.K2);
+  fmt::print("  Xi = {:.5f}, Xi' = {:.2f} %, Phi = {:.4f}, Psi_raw = {:.5g}, d_N,max = {:.3f} %\n",
+             r.Xi,
+             r.percent_constant_force,
+             r.Phi,
+             r.Psi_raw,
+             r.d_N_max);
+  fmt::print("  nearest thesis sub-class: {}\n", s.nearest_subclass.value_or("none"));
+  for (const design::NamedConstraint& c : s.best.constraints) {
+    fmt::print(
+        "  constraint {}: {:.6g} ({})\n", c.name, c.value, c.satisfied() ? "met" : "VIOLATED");
+  }
+  fmt::print("  {}\n", s.message);
+}
+
+}  // namespace
+
+void register_design_command(CLI::App& app) {
+  CLI::App& design =
+      get_or_add_subcommand(app, "design", "Design constant-force mechanisms (docs/design.md)");
+  auto args = std::make_shared<DesignCfmArgs>();
+  CLI::App* cfm = design.add_subcommand(
+      "cfm", "Synthesis of R, K1, K2 for an objective under the thesis's constraints (PRBM)");
+  cfm->add_option(
+         "--config", args->config, "Configuration: spp, lpp, psp, plp, ssp, slp, sps, lps, sss")
+      ->required();
+  cfm->add_option("--d", args->d, "Design stroke d, % of r2 + r3 (0 < d < 100)")->required();
+  cfm->add_option("--objective",
+                  args->objective,
+                  "min-xi (Table 2.1), max-pcf (Xi'), max-psi (stiffness; needs --pcf-min) or "
+                  "min-dn (normal displacement; needs --pcf-min)")
+      ->required();
+  args->pcf_min_option =
+      cfm->add_option("--pcf-min", args->pcf_min, "Constraint: percent constant force Xi' >= X");
+  cfm->add_option("--orientation",
+                  args->orientation,
+                  "Orientation rules of the flexures: any of I (in-plane), O (out-of-plane), o "
+                  "(possibly out-of-plane), e.g. IO");
+  args->K1_option = cfm->add_option("--K1", args->K1, "Hold K1 = k2/k1 at this value");
+  args->K2_option = cfm->add_option("--K2", args->K2, "Hold K2 = k3/k1 at this value");
+  cfm->add_option("--sampling",
+                  args->sampling,
+                  "Stroke sampling: auto (uniform 50 points for min-xi, else the thesis's), "
+                  "thesis or uniform")
+      ->default_str("auto");
+  args->points_option =
+      cfm->add_option("--points", args->points, "Points of the uniform sampling (default 50)");
+  cfm->add_option("--starts", args->starts, "Local optimisations (0: 8, 16 or 32 by variables)")
+      ->default_str("0");
+  cfm->add_option("--seed", args->seed, "Seed of the optimiser (runs are reproducible)");
+  cfm->add_flag("--json", args->json, "Print one JSON object");
+  cfm->callback([args] { run_design_cfm(*args); });
+}
+
+}  // namespace flexure::cli

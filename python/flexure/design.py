@@ -1,0 +1,30 @@
+"""flexure.design: designing constant-force mechanisms (`flexure design ...`, docs/design.md)."""
+from . import _command
+
+
+def cfm(*, config, d, objective, pcf_min=None, orientation=None, K1=None, K2=None, sampling=None,
+        points=None, starts=None, seed=None):
+    """Synthesis of R, K1, K2 for an objective under the thesis's constraints: `flexure design cfm`.
+
+    config     'spp', 'lpp', 'psp', 'plp', 'ssp', 'slp', 'sps', 'lps' or 'sss'
+    d          design stroke, % of r2 + r3 (0 < d < 100); R stays inside its toggle interval
+    objective  'min-xi' (Xi = Phi_max/Phi_min, Table 2.1), 'max-pcf' (Xi', %), 'max-psi' (the
+               stiffness parameter Psi) or 'min-dn' (d_N,max, % r_tot); the last two need pcf_min
+    pcf_min    constraint Xi' >= pcf_min (%)
+    orientation  any of 'I', 'O', 'o' (in-plane, out-of-plane, possibly out-of-plane rules)
+    K1, K2     hold K1 = k2/k1 or K2 = k3/k1 at this value
+    sampling ('auto' | 'thesis' | 'uniform'), points, starts, seed: the model's stroke sampling
+               and the optimiser's multistart (runs are reproducible)
+    Returns the dict `flexure design cfm --json` prints: the keys of flexure.cfm at the optimum
+    (R, K1, K2, Phi, Psi, Xi, percent_constant_force, ...) and objective, objective_value,
+    subclass (the thesis sub-class within 1 %, or None), constraints, evaluations, converged.
+    Raises NoConvergence when no feasible design is found.
+
+    Example:
+      >>> flexure.design.cfm(config="lpp", d=40, objective="min-xi")["R"]   # doctest: +SKIP
+      0.8858...
+    """
+    return _command.run(["design", "cfm"], dict(config=config, d=d, objective=objective,
+                                                pcf_min=pcf_min, orientation=orientation, K1=K1,
+                                                K2=K2, sampling=sampling, points=points,
+                                                starts=starts, seed=seed))
