@@ -16,6 +16,8 @@ import subprocess
 import sys
 import tempfile
 
+from doc_blocks import write_atomically
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 STRIP = ("--length 50mm --E 200GPa --width 10mm --thickness 0.5mm "
          "--Fx -2.5N --Fy 4.330127N --yield-strength 1.2GPa")
@@ -182,9 +184,7 @@ def main():
             sys.exit("docs/tutorial.md is stale: run python3 scripts/make_tutorial.py")
         print("docs/tutorial.md is up to date")
         return
-    with open(target + ".tmp", "w", encoding="utf-8") as f:
-        f.write(text)
-    os.replace(target + ".tmp", target)
+    write_atomically(target, text)
     print(f"wrote {target}")
 
 

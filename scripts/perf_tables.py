@@ -23,11 +23,12 @@ Standard library only; the raw JSON of each program is kept with --keep DIR.
 import argparse
 import json
 import os
-import re
 import statistics
 import subprocess
 import sys
 import time
+
+from doc_blocks import rewrite_blocks
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DOC = os.path.join(ROOT, "docs", "performance.md")
@@ -41,8 +42,6 @@ REFERENCES = {
     "chain_bench": "BM_ChainCorrected/N:100/inc:1/coarse:1",
     "mechanism_bench": "BM_ExactStroke50/1A-lpp",
 }
-
-MARKER = re.compile(r"<!-- perf-table: (\S+) -->\n.*?<!-- end perf-table -->", re.S)
 
 
 def run_program(build, name, repetitions, keep):
@@ -187,13 +186,9 @@ def main():
     parser.add_argument("--startup-runs", type=int, default=41)
     parser.add_argument("--python-runs", type=int, default=5)
     args = parser.parse_args()
-    with open(DOC, encoding="utf-8") as f:
-        doc = f.read()
-
-    def replace(match):
-        name = match.group(1)
+    def render(name):
         if args.only and name not in args.only:
-            return match.group(0)
+            return None
         if name == "startup":
             table = startup_table(args.build, args.startup_runs)
         elif name == "python_beam":
@@ -205,12 +200,9 @@ def main():
             table = benchmark_table(name, run_program(args.build, name, args.repetitions,
                                                       args.keep))
         print(f"perf_tables.py: {name}", file=sys.stderr)
-        return f"<!-- perf-table: {name} -->\n{table}\n<!-- end perf-table -->"
+        return table
 
-    new = MARKER.sub(replace, doc)
-    with open(DOC + ".tmp", "w", encoding="utf-8") as f:
-        f.write(new)
-    os.replace(DOC + ".tmp", DOC)
+    rewrite_blocks(DOC, "perf-table", render)
     print(f"wrote {DOC}")
 
 

@@ -9,13 +9,13 @@ no number in them is typed by hand. Standard library only.
 import argparse
 import json
 import os
-import re
 import subprocess
 import time
 
+from doc_blocks import rewrite_blocks
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DOC = os.path.join(ROOT, "docs", "design.md")
-MARKER = re.compile(r"<!-- design-table: (\S+) -->\n.*?<!-- end design-table -->", re.S)
 
 # Table 2.1 of Weight's thesis (data/weight_table_2_1.csv): class, all-s member, d, printed R,
 # K1, K2, Xi, and how the row is re-optimised (docs/design.md).
@@ -58,18 +58,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--flexure", default=os.path.join(ROOT, "build", "flexure"))
     args = parser.parse_args()
-    with open(DOC, encoding="utf-8") as f:
-        doc = f.read()
     tables = {"table_2_1": table_2_1}
-
-    def replace(match):
-        return (f"<!-- design-table: {match.group(1)} -->\n{tables[match.group(1)](args.flexure)}\n"
-                f"<!-- end design-table -->")
-
-    new = MARKER.sub(replace, doc)
-    with open(DOC + ".tmp", "w", encoding="utf-8") as f:
-        f.write(new)
-    os.replace(DOC + ".tmp", DOC)
+    rewrite_blocks(DOC, "design-table", lambda name: tables[name](args.flexure))
     print(f"wrote {DOC}")
 
 
