@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 #include <set>
+#include <sstream>
 
 #include "flexure/elements/fixed_pinned_segment.h"
 #include "flexure/io/quantity.h"
@@ -340,6 +341,83 @@ MechanismDesign load_mechanism_toml(const std::string& path) {
 
 MechanismFile load_mechanism_file(const std::string& path) {
   return parse_mechanism_file(io::read_toml_file(path, "mechanism file"), path);
+}
+
+}  // namespace flexure::mechanism
+
+namespace flexure::mechanism {
+namespace {
+
+// A TOML float that reads back to the same double (17 significant digits, always a float).
+std::string toml_number(double v) {
+  std::string s = fmt::format("{:.17g}", v);
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+  return s;
+}
+
+// A TOML basic string with toml++'s escaping.
+std::string toml_string(const std::string& s) {
+  std::ostringstream out;
+  out << toml::value<std::string>(s);
+  return out.str();
+}
+
+}  // namespace
+
+std::string mechanism_toml(const MechanismDesign& d, const std::string& comment) {
+  std::string out;
+  std::istringstream lines(comment);
+  for (std::string line; std::getline(lines, line);) out += "# " + line + "\n";
+  if (d.inverted) {
+    out +=
+        "# The inversion of this design (slider block fixed, mechanisms/inversion.h) is the same\n"
+        "# mechanism read the other way; written here in its original orientation.\n";
+  }
+  // The pivot letters as parse_mechanism_toml reads them: the paper's string of a modified
+  // configuration without its trailing m, with each fixed-fixed segment named below.
+  const std::string letters = d.paper_config.empty() ? d.config : d.paper_config.substr(0, 3);
+  // A modified configuration of paper 004 by its name, so that the reader takes its Table 2
+  // factors; else the letters with each fixed-fixed segment named.
+  std::string config = letters;
+  if (!d.paper_config.empty()) {
+    try {
+      find_modified_configuration(d.paper_config);
+      config = d.paper_config;
+    } catch (const InvalidInput&) {
+    }
+  }
+  out += fmt::format("name = {}\n", toml_string(d.name));
+  out += fmt::format("config = {}\n", toml_string(config));
+  if (!d.note.empty()) out += fmt::format("note = {}\n", toml_string(d.note));
+  out +=
+      fmt::format("r2 = {}            # m, PRBM crank (pivot 1 to pivot 2)\n", toml_number(d.r2));
+  out += fmt::format("r3 = {}            # m, PRBM coupler\n", toml_number(d.r3));
+  out += fmt::format("stroke = {}        # m, slider travel\n", toml_number(d.stroke));
+  bool fixed_fixed = false;
+  for (const JointDesign& j : d.joints) fixed_fixed |= j.segment == SegmentKind::kFixedFixed;
+  if (fixed_fixed) {
+    out += fmt::format("spring_rule = {}\n", toml_string(spring_rule_name(d.spring_rule)));
+  }
+  out += fmt::format("\n[material]\nE = {}               # Pa\nyield_strength = {}  # Pa\n",
+                     toml_number(d.E),
+                     toml_number(d.yield_strength));
+  for (int p = 1; p <= 3; ++p) {
+    const JointDesign& j = d.joints[p - 1];
+    if (j.type == PivotType::kPin) continue;
+    out += fmt::format("\n[{}]                 # pivot {}\n", kJointTables[p - 1], p);
+    out += fmt::format("thickness = {}  # m\nwidth = {}      # m\n",
+                       toml_number(j.thickness),
+                       toml_number(j.width));
+    if (j.segment == SegmentKind::kFixedFixed) {
+      out += "segment = \"fixed-fixed\"\n";
+      out += fmt::format("length = {}     # m\n", toml_number(j.length));
+      if (letters[p - 1] == 'l')
+        out += fmt::format("table2_factor = {}\n", toml_number(j.table2_factor));
+    } else if (j.type == PivotType::kSmall) {
+      out += fmt::format("length = {}     # m\n", toml_number(j.length));
+    }
+  }
+  return out;
 }
 
 }  // namespace flexure::mechanism

@@ -25,4 +25,12 @@ struct MechanismFile {
 MechanismFile parse_mechanism_file(const std::string& text, const std::string& source);
 MechanismFile load_mechanism_file(const std::string& path);
 
+// The TOML description of `design` that parse_mechanism_toml reads back to the same design
+// (every number with 17 significant digits, so the round trip is exact), headed by `comment`
+// lines (each prefixed "# "). A fixed-fixed segment is written with its segment kind, length and
+// table2_factor; the derived lengths of l segments are not written (they are r/gamma). An
+// inverted design is written in its original orientation (the inversion is a reading of the same
+// mechanism, mechanisms/inversion.h) with a comment saying so.
+std::string mechanism_toml(const MechanismDesign& design, const std::string& comment = "");
+
 }  // namespace flexure::mechanism
