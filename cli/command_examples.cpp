@@ -38,6 +38,13 @@ const std::vector<CommandExamples>& command_examples() {
        {"flexure design cfm --config lpp --d 40 --objective min-xi",
         "flexure design cfm --config sss --d 16 --objective min-xi --K1 1 --json",
         "flexure design cfm --config lps --d 16 --objective max-psi --pcf-min 95 --orientation I"}},
+      {{"design", "mechanism"},
+       {"flexure design mechanism --force 25lbf --stroke 4in --E 30Msi --safety-factor 1.2 "
+        "--length-range 12in:15in --width-range 3in:5in --thickness-range 0.04in:0.07in --config "
+        "lpp --out design.toml",
+        "flexure design mechanism --force 100lbf --stroke 6in --E 30Msi --yield-strength 200ksi "
+        "--safety-factor 1 --length-range 24in --width-range 5in --thickness-range 0.01in:0.12in "
+        "--json"}},
       {{"cfm"},
        {"flexure cfm --config lpp --R 1 --d 40",
         "flexure cfm --subclass lpp-b --json",

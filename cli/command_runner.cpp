@@ -22,6 +22,7 @@ void register_all_commands(CLI::App& app) {
   register_dynamics_command(app);
   register_bench_command(app);
   register_design_command(app);
+  register_design_mechanism_command(app);
   register_help_command(app);
   add_command_examples(app);
 }

@@ -5,14 +5,17 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <climits>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
 
+#include "flexure/io/temp_file_cleanup.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::io {
@@ -159,6 +162,33 @@ void check_output_path(const std::string& path, const std::string& option) {
     throw InvalidInput(
         fmt::format("{} '{}': cannot write the file there: {}", option, path, problem));
   }
+}
+
+void write_text_file(const std::string& path, const std::string& text, const std::string& option) {
+  check_output_path(path, option);
+  static std::atomic<unsigned> counter{0};
+  const std::filesystem::path target(path);
+  const std::string directory =
+      target.parent_path().empty() ? std::string(".") : target.parent_path().string();
+  const std::string temp = temporary_path_for(
+      path, static_cast<long>(::getpid()), counter.fetch_add(1), file_name_limit(directory));
+  const int slot = register_temp_file(temp);
+  const auto fail = [&](const std::string& what) {
+    const std::string reason = std::strerror(errno);
+    std::remove(temp.c_str());
+    unregister_temp_file(slot);
+    throw InvalidInput(fmt::format("{} '{}': {}: {}", option, path, what, reason));
+  };
+  errno = 0;
+  {
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    if (!out) fail("cannot create the temporary file");
+    out << text;
+    out.flush();
+    if (!out) fail("cannot write the file");
+  }
+  if (std::rename(temp.c_str(), path.c_str()) != 0) fail("cannot rename the finished file");
+  unregister_temp_file(slot);
 }
 
 }  // namespace flexure::io

@@ -25,6 +25,14 @@ void check_output_path(const std::string& path, const std::string& option = "--o
 // target name that fits the limit itself can be written.
 std::string temporary_path_for(const std::string& target, long pid, unsigned serial, long name_max);
 
+// Writes `text` to `path` whole or not at all: into a temporary file next to it (removed on
+// SIGINT/SIGTERM/SIGHUP, temp_file_cleanup.h), flushed, then renamed over the target. Throws
+// InvalidInput "OPTION PATH: reason" when the path cannot be written (check_output_path) or the
+// write fails; the target is then unchanged.
+void write_text_file(const std::string& path,
+                     const std::string& text,
+                     const std::string& option = "--out");
+
 // The file-name limit of the file system holding `directory` (pathconf _PC_NAME_MAX), or NAME_MAX
 // when it cannot be asked.
 long file_name_limit(const std::string& directory);

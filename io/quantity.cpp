@@ -211,4 +211,29 @@ std::string modulus_warning(const Quantity& modulus, std::string_view what) {
       modulus.si);
 }
 
+QuantityRange parse_quantity_range(std::string_view text,
+                                   Dimension dimension,
+                                   std::string_view what) {
+  const std::size_t colon = text.find(':');
+  if (colon == std::string_view::npos) {
+    const Quantity q = parse_quantity(text, dimension, what);
+    return {q, q};
+  }
+  if (text.find(':', colon + 1) != std::string_view::npos) {
+    throw InvalidInput(fmt::format("{} '{}': give one range A:B (or one value A)", what, text));
+  }
+  QuantityRange r{parse_quantity(text.substr(0, colon), dimension, what),
+                  parse_quantity(text.substr(colon + 1), dimension, what)};
+  if (r.lower.si > r.upper.si) {
+    throw InvalidInput(fmt::format("{} '{}' is inverted: {} {} > {} {}; give the lower end first",
+                                   what,
+                                   text,
+                                   r.lower.si,
+                                   si_unit(dimension),
+                                   r.upper.si,
+                                   si_unit(dimension)));
+  }
+  return r;
+}
+
 }  // namespace flexure::io

@@ -36,6 +36,17 @@ struct Quantity {
 // near miss).
 Quantity parse_quantity(std::string_view text, Dimension dimension, std::string_view what);
 
+// A range "A:B" of two quantities (each with its own optional unit, e.g. "12in:15in"), or one
+// quantity "A" for A:A. Throws InvalidInput naming `what` for a malformed side, more than one
+// colon, or A > B.
+struct QuantityRange {
+  Quantity lower;
+  Quantity upper;
+};
+QuantityRange parse_quantity_range(std::string_view text,
+                                   Dimension dimension,
+                                   std::string_view what);
+
 // The unit names accepted for a dimension, in the order docs/units.md lists them.
 std::vector<std::string> unit_names(Dimension dimension);
 

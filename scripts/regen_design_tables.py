@@ -54,11 +54,68 @@ def table_2_1(flexure):
     return "\n".join(lines)
 
 
+INCH, KSI, LBF = 0.0254, 6894.757293168361e3, 4.4482216152605
+EXAMPLE_1 = ["--force", "25lbf", "--stroke", "4in", "--E", "30Msi", "--safety-factor", "1.2",
+             "--length-range", "12in:15in", "--width-range", "3in:5in",
+             "--thickness-range", "0.04in:0.07in", "--config", "lpp"]
+EXAMPLE_2 = ["--force", "3mN", "--stroke", "7.5mm", "--E", "110GPa", "--yield-strength", "552MPa",
+             "--safety-factor", "1.1", "--length-range", "150mm", "--width-range", "1mm:20mm",
+             "--thickness-range", "1.5mm:2mm", "--pcf-min", "90", "--in-plane", "--config", "sss"]
+EXAMPLE_3 = ["--force", "100lbf", "--stroke", "6in", "--E", "30Msi", "--yield-strength", "200ksi",
+             "--safety-factor", "1", "--length-range", "24in", "--width-range", "5in"]
+
+
+def design_mechanism(flexure, args):
+    start = time.perf_counter()
+    r = subprocess.run([flexure, "design", "mechanism", *args, "--json"], capture_output=True,
+                       text=True)
+    if r.returncode not in (0, 3):
+        raise SystemExit(f"flexure design mechanism failed ({r.returncode}): {r.stderr}")
+    return json.loads(r.stdout), r.returncode, time.perf_counter() - start
+
+
+def examples(flexure):
+    lines = ["| thesis example | printed (after docs/errata.md) | flexure design mechanism | "
+             "exact model of the design | time |", "|---|---|---|---|---|"]
+    j, _, t = design_mechanism(flexure, EXAMPLE_1)
+    d = j["designs"][0]
+    lines.append(
+        f"| 1: lpp, 25 lbf over 4 in, E 30 Msi, SF 1.2 | lpp-b, b = 5 in, h = 0.049 in, "
+        f"S_y = 167 ksi, Ξ′ 97.6 | {d['subclass']}, b = {d['width'] / INCH:.3g} in, "
+        f"h = {d['thicknesses'][0] / INCH:.4g} in, S_y = {d['required_yield_strength'] / KSI:.4g} "
+        f"ksi, Ξ′ {d['subclass_percent_constant_force']:.1f}; F {d['force_prbm'] / LBF:.4g} lbf | "
+        f"F {d['force_exact'] / LBF:.4g} lbf, Ξ′ {d['percent_constant_force_exact']:.1f}, SF "
+        f"{d['safety_factor_exact']:.3g} (S_y for SF 1.2: "
+        f"{d['required_yield_strength_exact'] / KSI:.4g} ksi) | {t * 1e3:.0f} ms |")
+    j, code, t = design_mechanism(flexure, EXAMPLE_2)
+    r = j["rejected"][0]
+    lines.append(
+        f"| 2: sss in-plane, 3 mN over 7.5 mm, l_tot 150 mm, h 1.5–2 mm | no sss: M_max = 0.3792 < "
+        f"1.7796 (sss-a95I); 418.4 mm needed | exit {code}: M_max (screen) = "
+        f"{j['screens']['M_max']:.4f}; closest {r['subclass']}: {r['binding']} | – | "
+        f"{t * 1e3:.0f} ms |")
+    j, code, t = design_mechanism(flexure, EXAMPLE_3 + ["--thickness-range", "0.01in:0.035in"])
+    sc = j["screens"]
+    lines.append(
+        f"| 3: 100 lbf over 6 in, l_tot 24 in, b 5 in, h 0.01–0.035 in (Table 8.6) | Method 2: "
+        f"h_max 0.116 in, F_max 130.3 lbf, Ψ_min 0.767; M_min 1.83; five mechanisms | exit {code}: "
+        f"h_max {sc['lpp_thickness_max'] / INCH:.4g} in, F_max {sc['lpp_force_max'] / LBF:.4g} "
+        f"lbf, Ψ_min {sc['Psi_min']:.3f}, M_min {sc['M_min']:.3f}; no design (the five need "
+        f"h ≈ 0.11 in) | – | {t * 1e3:.0f} ms |")
+    j, code, t = design_mechanism(flexure, EXAMPLE_3 + ["--thickness-range", "0.01in:0.12in"])
+    names = ", ".join(f"{d['subclass']} (h {d['thicknesses'][0] / INCH:.3g} in)"
+                      for d in j["designs"])
+    exact = ", ".join(f"{d['percent_constant_force_exact']:.1f}" for d in j["designs"])
+    lines.append(f"| 3 with h up to 0.12 in | lps-b90I, lpp-b90, lps-b95I, lpp-b95, lpp-b | "
+                 f"{names} | Ξ′ {exact} | {t * 1e3:.0f} ms |")
+    return "\n".join(lines)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--flexure", default=os.path.join(ROOT, "build", "flexure"))
     args = parser.parse_args()
-    tables = {"table_2_1": table_2_1}
+    tables = {"table_2_1": table_2_1, "examples": examples}
     rewrite_blocks(DOC, "design-table", lambda name: tables[name](args.flexure))
     print(f"wrote {DOC}")
 

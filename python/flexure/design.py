@@ -28,3 +28,52 @@ def cfm(*, config, d, objective, pcf_min=None, orientation=None, K1=None, K2=Non
                                                 pcf_min=pcf_min, orientation=orientation, K1=K1,
                                                 K2=K2, sampling=sampling, points=points,
                                                 starts=starts, seed=seed))
+
+
+def _range(keyword, value):
+    """'A:B' for a (lower, upper) pair; a single value or a 'A:B' string as it is."""
+    if isinstance(value, (list, tuple)):
+        if len(value) != 2:
+            raise _command.InvalidInput(f"{keyword}={value!r}: give (lower, upper) or one value")
+        return ":".join(_command.flag_value(keyword, v) for v in value)
+    return value
+
+
+def mechanism(*, force, stroke, E, safety_factor, length_range, width_range, thickness_range,
+              yield_strength=None, in_plane=False, out_of_plane=False, pcf_min=None, config=None,
+              rank=None, force_of=None, exact=True, points=None, out=None):
+    """Dimensional design from a specification (thesis ch. 8): `flexure design mechanism`.
+
+    force, stroke, E, yield_strength   numbers in SI (N, m, Pa) or strings with units ('25lbf',
+                    '4in', '30Msi', '200ksi'); force is of one half unless force_of='whole'
+    safety_factor   on the yield strength
+    length_range, width_range, thickness_range   (lower, upper) or one value: l_tot of one half,
+                    flexure width b, flexure thickness h
+    in_plane / out_of_plane   equal widths (flag I) or equal thicknesses (flags O, o)
+    pcf_min         keep sub-classes with Xi' >= pcf_min (%)
+    config          a configuration or a list of them ('lpp' or ['lpp', 'lps']); default all nine
+    rank            'prbm' (the sub-class's Xi', the thesis's rule) or 'exact'
+    exact           False skips the exact model (faster; force_exact etc. are None)
+    out             a path: write the best design as TOML for flexure.mechanism.analyze
+    Returns the dict `flexure design mechanism --json` prints: designs (best first; each with
+    subclass, r2, r3, segment_lengths, width, thicknesses, required_yield_strength, force_prbm,
+    force_exact, percent_constant_force_prbm/_exact, safety_factor_prbm/_exact, ...), rejected
+    (with the binding constraint and its shortfall) and screens (thesis Table 8.2).
+    Raises NoConvergence (with .reached holding rejected and screens) when no design is feasible.
+
+    Example (thesis example 1):
+      >>> r = flexure.design.mechanism(force="25lbf", stroke="4in", E="30Msi", safety_factor=1.2,
+      ...         length_range=("12in", "15in"), width_range=("3in", "5in"),
+      ...         thickness_range=("0.04in", "0.07in"), config="lpp")   # doctest: +SKIP
+      >>> r["designs"][0]["subclass"]                                     # doctest: +SKIP
+      'lpp-b'
+    """
+    return _command.run(
+        ["design", "mechanism"],
+        dict(force=force, stroke=stroke, E=E, yield_strength=yield_strength,
+             safety_factor=safety_factor, length_range=_range("length_range", length_range),
+             width_range=_range("width_range", width_range),
+             thickness_range=_range("thickness_range", thickness_range), in_plane=in_plane,
+             out_of_plane=out_of_plane, pcf_min=pcf_min, config=config, rank=rank,
+             force_of=force_of, no_exact=not exact, points=points, out=out),
+        switches=("in_plane", "out_of_plane", "no_exact"))

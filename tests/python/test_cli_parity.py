@@ -153,3 +153,23 @@ def test_design_cfm(cli):
                                    orientation="I"),
                 cli.json("design", "cfm", "--config", "lps", "--d", "16", "--objective", "max-psi",
                          "--pcf-min", "95", "--orientation", "I"))
+
+
+def test_design_mechanism(cli):
+    args = ["--force", "25lbf", "--stroke", "4in", "--E", "30Msi", "--safety-factor", "1.2",
+            "--length-range", "12in:15in", "--width-range", "3in:5in",
+            "--thickness-range", "0.04in:0.07in", "--config", "lpp"]
+    got = flexure.design.mechanism(force="25lbf", stroke="4in", E="30Msi", safety_factor=1.2,
+                                   length_range=("12in", "15in"), width_range=("3in", "5in"),
+                                   thickness_range=("0.04in", "0.07in"), config=["lpp"])
+    assert got["designs"][0]["subclass"] == "lpp-b"
+    assert_same(got, cli.json("design", "mechanism", *args))
+    # SI numbers give the same design as the units.
+    si = flexure.design.mechanism(force=25 * 4.4482216152605, stroke=4 * 0.0254,
+                                  E=30e6 * 6894.757293168361, safety_factor=1.2,
+                                  length_range=(12 * 0.0254, 15 * 0.0254),
+                                  width_range=(3 * 0.0254, 5 * 0.0254),
+                                  thickness_range=(0.04 * 0.0254, 0.07 * 0.0254), config="lpp",
+                                  exact=False)
+    assert abs(si["designs"][0]["thicknesses"][0] - got["designs"][0]["thicknesses"][0]) < 1e-12
+    assert si["designs"][0]["force_exact"] is None

@@ -1,0 +1,119 @@
+// `flexure design mechanism` (docs/cli.md, docs/design.md): thesis design examples 1 and 2 through
+// the tool with the designer's units, the JSON contract, the TOML file that `mechanism analyze`
+// reads unchanged, and bad input.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tests/support/cli_test_support.h"
+
+namespace flexure::test {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kInch = 0.0254;
+constexpr double kKsi = 1e3 * 4.4482216152605 / (kInch * kInch);
+
+const std::string kExample1 =
+    "design mechanism --force 25lbf --stroke 4in --E 30Msi --safety-factor 1.2 "
+    "--length-range 12in:15in --width-range 3in:5in --thickness-range 0.04in:0.07in --config lpp";
+
+TEST(CliDesignMechanism, ExampleOneGivesLppBAndATomlFileThatAnalyses) {
+  ScratchDir dir;
+  const std::string toml = (dir / "design.toml").string();
+  const CommandResult r = run_flexure(kExample1 + " --json --out " + toml);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  ASSERT_FALSE(j["designs"].empty());
+  const json& d = j["designs"][0];
+  EXPECT_EQ(d["subclass"], "lpp-b");
+  EXPECT_NEAR(d["thicknesses"][0].get<double>() / kInch, 0.049, 0.0005);
+  EXPECT_NEAR(d["width"].get<double>() / kInch, 5.0, 1e-12);
+  EXPECT_NEAR(d["required_yield_strength"].get<double>() / kKsi, 167.0, 1.0);
+  EXPECT_NEAR(d["subclass_percent_constant_force"].get<double>(), 97.6, 0.05);
+  for (const char* key : {"r2",
+                          "r3",
+                          "segment_lengths",
+                          "percent_constant_force_prbm",
+                          "percent_constant_force_exact",
+                          "force_prbm",
+                          "force_exact",
+                          "safety_factor_prbm",
+                          "safety_factor_exact"}) {
+    EXPECT_TRUE(d.contains(key)) << key;
+  }
+  // The file is the design: `mechanism analyze` gives the same PRBM and exact forces.
+  const CommandResult a = run_flexure("mechanism analyze " + toml + " --json");
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  const json m = json::parse(a.out);
+  EXPECT_NEAR(m["mean_force_prbm"].get<double>(),
+              d["force_prbm"].get<double>(),
+              1e-9 * d["force_prbm"].get<double>());
+  EXPECT_NEAR(m["mean_force_exact"].get<double>(),
+              d["force_exact"].get<double>(),
+              1e-9 * d["force_exact"].get<double>());
+}
+
+TEST(CliDesignMechanism, WholeMechanismForcesAreTwiceTheHalf) {
+  const json half = json::parse(run_flexure(kExample1 + " --json --no-exact").out);
+  const json whole = json::parse(
+      run_flexure("design mechanism --force 50lbf --stroke 4in --E 30Msi --safety-factor 1.2 "
+                  "--length-range 12in:15in --width-range 3in:5in --thickness-range 0.04in:0.07in "
+                  "--config lpp --force-of whole --json --no-exact")
+          .out);
+  EXPECT_NEAR(whole["designs"][0]["force_prbm"].get<double>(),
+              2.0 * half["designs"][0]["force_prbm"].get<double>(),
+              1e-9);
+  EXPECT_EQ(whole["designs"][0]["thicknesses"], half["designs"][0]["thicknesses"]);
+  EXPECT_TRUE(half["designs"][0]["force_exact"].is_null());
+}
+
+TEST(CliDesignMechanism, ExampleTwoIsInfeasibleWithExitThreeNamingM) {
+  ScratchDir dir;
+  const std::string toml = (dir / "design.toml").string();
+  const CommandResult r = run_flexure(
+      "design mechanism --force 3mN --stroke 7.5mm --E 110GPa --yield-strength 552MPa "
+      "--safety-factor 1.1 --length-range 150mm --width-range 1mm:20mm --thickness-range 1.5mm:2mm "
+      "--pcf-min 90 --in-plane --config sss --json --out " +
+      toml);
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  const json j = json::parse(r.out);
+  const std::string error = j["error"];
+  EXPECT_NE(error.find("sss-a95I"), std::string::npos) << error;
+  EXPECT_NE(error.find("M = 1.7796"), std::string::npos) << error;
+  EXPECT_NEAR(j["screens"]["M_max"].get<double>(), 0.3792, 0.00005);
+  EXPECT_FALSE(j["rejected"].empty());
+  EXPECT_TRUE(dir.entries().empty());  // nothing written
+}
+
+TEST(CliDesignMechanism, BadInputIsExitTwoWithAReason) {
+  const std::string base =
+      "design mechanism --force 25lbf --stroke 4in --E 30Msi --safety-factor 1.2 "
+      "--width-range 3in:5in --thickness-range 0.04in:0.07in ";
+  for (const std::string& args :
+       {base + "--length-range 15in:12in",
+        base + "--length-range 12in:15in --config xyz",
+        base + "--length-range 12in:15in --in-plane --out-of-plane",
+        base + "--length-range 12in:15in --rank best",
+        base + "--length-range 12in:15xy",
+        base + "--length-range 12in:15in --force-of both",
+        std::string("design mechanism --force nan --stroke 4in --E 30Msi --safety-factor 1.2 "
+                    "--length-range 12in --width-range 3in --thickness-range 0.04in"),
+        std::string("design mechanism --force 25lbf --stroke 4in --E 30Msi --safety-factor -1 "
+                    "--length-range 12in --width-range 3in --thickness-range 0.04in")}) {
+    const CommandResult r = run_flexure(args + " --json");
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+    EXPECT_FALSE(r.err.empty()) << args;
+  }
+  // A stroke no sub-class reaches: exit 3 naming the stroke.
+  const CommandResult r = run_flexure(
+      "design mechanism --force 25lbf --stroke 15in --E 30Msi --safety-factor 1.2 --width-range "
+      "3in:5in --thickness-range 0.04in:0.07in --length-range 12in:15in --json");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("stroke"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace flexure::test
