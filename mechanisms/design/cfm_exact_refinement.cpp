@@ -1,0 +1,277 @@
+#include "flexure/mechanisms/design/cfm_exact_refinement.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <nlopt.hpp>
+#include <optional>
+#include <string>
+
+#include "flexure/mechanisms/cfm/cfm_exact.h"
+#include "flexure/solver/common/errors.h"
+
+namespace flexure::design {
+namespace {
+
+// What NLopt sees where a point cannot be evaluated (never NaN).
+constexpr double kPenalty = 1e3;
+
+struct ExactSearch {
+  const CfmDesignProblem& problem;
+  CfmDesignProblem constraints_problem;  // the PRBM constraints without Xi' >= pcf_min
+  const ExactRefinementOptions& options;
+  cfm::CfmModel model;
+  int evaluations = 0;
+  // The last point's values: COBYLA asks for the objective and every constraint at one point.
+  std::vector<double> last_y;
+  double last_pcf = 0.0;
+  std::optional<CfmDesignEvaluation> last_prbm;
+
+  void evaluate(const std::vector<double>& y) {
+    if (y == last_y) return;
+    last_y = y;
+    std::vector<double> x(y.size());
+    std::transform(y.begin(), y.end(), x.begin(), [](double v) { return std::exp(v); });
+    ++evaluations;
+    try {
+      last_prbm = evaluate_design(constraints_problem, model, x);
+    } catch (const InvalidInput&) {
+      last_prbm.reset();
+    }
+    last_pcf = last_prbm
+                   ? exact_percent_constant_force(problem, x, options.points, options.work_budget)
+                   : 0.0;
+  }
+};
+
+struct Slot {
+  ExactSearch* search;
+  std::size_t index;  // a PRBM constraint, or npos for Xi'_exact >= pcf_min
+};
+
+double objective(const std::vector<double>& y, std::vector<double>&, void* data) {
+  auto* s = static_cast<ExactSearch*>(data);
+  s->evaluate(y);
+  return -s->last_pcf;
+}
+
+double constraint(const std::vector<double>& y, std::vector<double>&, void* data) {
+  auto* slot = static_cast<Slot*>(data);
+  slot->search->evaluate(y);
+  if (!slot->search->last_prbm) return kPenalty;
+  if (slot->index == std::string::npos)
+    return *slot->search->problem.pcf_min - slot->search->last_pcf;
+  return slot->search->last_prbm->constraints[slot->index].violation();
+}
+
+}  // namespace
+
+void ExactRefinementOptions::validate() const {
+  if (points < 2 || points > 10000 || confirm_points < 2 || confirm_points > 10000) {
+    throw InvalidInput(
+        fmt::format("exact stroke points {} / {} must lie in [2, 10000]", points, confirm_points));
+  }
+  if (max_evaluations < 1) {
+    throw InvalidInput(fmt::format("max_evaluations = {} must be >= 1", max_evaluations));
+  }
+  if (!(xtol_rel > 0.0 && xtol_rel < 0.1)) {
+    throw InvalidInput(fmt::format("xtol_rel = {} must lie in (0, 0.1)", xtol_rel));
+  }
+  if (!(work_budget >= 1e3)) {
+    throw InvalidInput(fmt::format("work_budget = {} must be >= 1000 steps", work_budget));
+  }
+}
+
+double exact_percent_constant_force(const CfmDesignProblem& problem,
+                                    const std::vector<double>& x,
+                                    int points,
+                                    double work_budget) {
+  try {
+    const cfm::CfmResult r = cfm::CfmModel(problem.model).evaluate(parameters_at(problem, x));
+    cfm::CfmExactOptions o;
+    o.points = points;
+    o.solver.work_budget = work_budget;
+    o.solver.work_budget_per_point = 0.0;
+    const cfm::CfmExactResult e = cfm::solve_cfm_exact(r, o);
+    return e.converged() ? e.percent_constant_force_exact : 0.0;
+  } catch (const InvalidInput&) {
+    return 0.0;
+  }
+}
+
+namespace {
+
+// The i-th point of the Halton sequence in base `base`, in (0, 1).
+double halton(int i, int base) {
+  double f = 1.0, r = 0.0;
+  for (int k = i; k > 0; k /= base) {
+    f /= base;
+    r += f * (k % base);
+  }
+  return r;
+}
+
+struct LocalResult {
+  std::vector<double> y;
+  bool stopped_by_test = false;
+};
+
+LocalResult run_local(ExactSearch& s,
+                      std::vector<double> y,
+                      const std::vector<double>& lower,
+                      const std::vector<double>& upper,
+                      const ExactRefinementOptions& options) {
+  const std::size_t n = y.size();
+  s.last_y.clear();
+  s.evaluate(y);
+  const std::size_t count = s.last_prbm ? s.last_prbm->constraints.size() : 0;
+  nlopt::opt opt(nlopt::LN_COBYLA, static_cast<unsigned>(n));
+  opt.set_lower_bounds(lower);
+  opt.set_upper_bounds(upper);
+  opt.set_min_objective(objective, &s);  // -Xi'_exact
+  std::vector<Slot> slots;
+  slots.reserve(count + 1);
+  for (std::size_t k = 0; k < count; ++k) {
+    slots.push_back({&s, k});
+    opt.add_inequality_constraint(constraint, &slots.back(), 1e-9);
+  }
+  if (s.problem.pcf_min) {
+    slots.push_back({&s, std::string::npos});
+    opt.add_inequality_constraint(constraint, &slots.back(), 1e-9);
+  }
+  opt.set_xtol_rel(options.xtol_rel);
+  opt.set_maxeval(options.max_evaluations);
+  // Steps of a twentieth of each log range: a local refinement of a good start.
+  std::vector<double> step(n);
+  for (std::size_t i = 0; i < n; ++i) step[i] = 0.05 * (upper[i] - lower[i]);
+  opt.set_initial_step(step);
+  LocalResult out;
+  double value = 0.0;
+  std::vector<double> best = y;
+  try {
+    const nlopt::result r = opt.optimize(best, value);
+    out.stopped_by_test =
+        r == nlopt::XTOL_REACHED || r == nlopt::FTOL_REACHED || r == nlopt::SUCCESS;
+  } catch (const nlopt::roundoff_limited&) {
+    out.stopped_by_test = true;
+  } catch (const std::runtime_error&) {
+    best = y;  // NLopt's generic failure: keep the start
+  }
+  out.y = best;
+  return out;
+}
+
+std::vector<double> exp_of(const std::vector<double>& y) {
+  std::vector<double> x(y.size());
+  std::transform(y.begin(), y.end(), x.begin(), [](double v) { return std::exp(v); });
+  return x;
+}
+
+}  // namespace
+
+CfmExactRefinement refine_cfm_exact(const CfmDesignProblem& problem,
+                                    const std::vector<std::vector<double>>& starts,
+                                    const ExactRefinementOptions& options) {
+  problem.validate();
+  options.validate();
+  CfmExactRefinement out;
+  out.variables = problem.variables();
+  const std::size_t n = out.variables.size();
+  if (starts.empty()) throw InvalidInput("refine_cfm_exact needs at least one start");
+  const auto [R_lo, R_hi] = toggle_R_interval(problem.stroke_percent);
+  std::vector<double> lower, upper;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::string& v = out.variables[i];
+    const Bounds b = v == "R"
+                         ? Bounds{std::max(problem.R.lower, R_lo), std::min(problem.R.upper, R_hi)}
+                         : (v == "K1" ? problem.K1 : problem.K2);
+    lower.push_back(std::log(b.lower));
+    upper.push_back(std::log(b.upper));
+  }
+  std::vector<std::vector<double>> ys;
+  for (const std::vector<double>& start : starts) {
+    if (start.size() != n) {
+      throw InvalidInput(fmt::format(
+          "a start has {} values; the problem's free variables are {}", start.size(), n));
+    }
+    std::vector<double> y(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      y[i] = std::log(start[i]);
+      if (!(y[i] >= lower[i] - 1e-12 && y[i] <= upper[i] + 1e-12)) {
+        throw InvalidInput(fmt::format("start {} = {} lies outside its bounds [{:.6g}, {:.6g}]",
+                                       out.variables[i],
+                                       start[i],
+                                       std::exp(lower[i]),
+                                       std::exp(upper[i])));
+      }
+      y[i] = std::clamp(y[i], lower[i], upper[i]);
+    }
+    ys.push_back(y);
+  }
+  constexpr int kBases[] = {2, 3, 5};
+  for (int k = 0; k < options.sequence_starts; ++k) {
+    std::vector<double> y(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      y[i] = lower[i] + halton(k + 1, kBases[i]) * (upper[i] - lower[i]);
+    }
+    ys.push_back(y);
+  }
+  CfmDesignProblem prbm_constraints = problem;
+  prbm_constraints.pcf_min.reset();
+  ExactSearch s{problem, prbm_constraints, options, cfm::CfmModel(problem.model)};
+  const auto feasible_at = [&](const std::vector<double>& x, double pcf) {
+    try {
+      const CfmDesignEvaluation e = evaluate_design(prbm_constraints, s.model, x);
+      return e.feasible() && pcf > 0.0 && (!problem.pcf_min || pcf >= *problem.pcf_min - 1e-9);
+    } catch (const InvalidInput&) {
+      return false;
+    }
+  };
+  out.start = starts.front();
+  out.start_percent_constant_force_exact =
+      exact_percent_constant_force(problem, out.start, options.confirm_points, options.work_budget);
+  out.x = out.start;
+  out.percent_constant_force_exact = out.start_percent_constant_force_exact;
+  bool best_feasible = feasible_at(out.x, out.percent_constant_force_exact);
+  bool best_stopped = false;
+  for (const std::vector<double>& y : ys) {
+    const LocalResult local = run_local(s, y, lower, upper, options);
+    const std::vector<double> x = exp_of(local.y);
+    const double pcf =
+        exact_percent_constant_force(problem, x, options.confirm_points, options.work_budget);
+    const bool feasible = feasible_at(x, pcf);
+    // Feasible beats infeasible; then the higher confirmed Xi'_exact.
+    if ((feasible && !best_feasible) ||
+        (feasible == best_feasible && pcf > out.percent_constant_force_exact)) {
+      out.x = x;
+      out.percent_constant_force_exact = pcf;
+      best_feasible = feasible;
+      best_stopped = local.stopped_by_test;
+    }
+  }
+  out.starts = static_cast<int>(ys.size());
+  out.evaluations = s.evaluations;
+  out.iterations = s.evaluations;
+  out.prbm = evaluate_design(prbm_constraints, s.model, out.x);
+  double worst = 0.0;
+  for (const NamedConstraint& c : out.prbm.constraints) worst = std::max(worst, c.violation());
+  if (problem.pcf_min) {
+    worst = std::max(worst, *problem.pcf_min - out.percent_constant_force_exact);
+  }
+  out.residual = worst;
+  // The first start itself may remain the best (COBYLA found nothing better): converged too.
+  const bool stopped = best_stopped || out.x == out.start;
+  out.set_converged(best_feasible && stopped);
+  out.message =
+      !best_feasible ? "no start reached a feasible design with an exact solution"
+      : !stopped
+          ? fmt::format(
+                "the best local run stopped at its evaluation limit "
+                "({})",
+                options.max_evaluations)
+          : fmt::format("best of {} local runs, {} exact strokes", out.starts, out.evaluations);
+  return out;
+}
+
+}  // namespace flexure::design
