@@ -26,6 +26,7 @@ struct DesignMechanismArgs {
   double pcf_min = 0.0;
   std::vector<std::string> configs;
   std::string rank = "prbm";
+  std::string model = "prbm";
   std::string force_of = "half";
   bool no_exact = false;
   int points = 50;
@@ -76,6 +77,12 @@ design::MechanismSpec make_spec(const DesignMechanismArgs& a, mechanism::ForceOf
     throw InvalidInput(fmt::format("--rank '{}' is unknown; allowed: prbm, exact", a.rank));
   }
   s.exact = !a.no_exact;
+  if (a.model != "prbm" && a.model != "exact") {
+    throw InvalidInput(fmt::format("--model '{}' is unknown; allowed: prbm, exact", a.model));
+  }
+  if (a.model == "exact" && a.no_exact) {
+    throw InvalidInput("--model exact refines against the exact model: drop --no-exact");
+  }
   s.points = a.points;
   s.validate();
   return s;
@@ -137,6 +144,13 @@ Json design_json(const design::DimensionedDesign& d, double force_factor) {
   return j;
 }
 
+Json refined_json(const design::DimensionedDesign& d, double force_factor) {
+  Json j = design_json(d, force_factor);
+  j["feasible"] = d.feasible;
+  j["exact_evaluations"] = d.exact_evaluations;
+  return j;
+}
+
 Json screens_json(const design::DesignScreens& s, double force_factor) {
   return Json{
       {"stroke_percent_min", s.stroke_percent_min},
@@ -172,16 +186,25 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
     throw NoConvergenceReport(
         message, Json{{"rejected", rejected}, {"screens", screens_json(r.screens, factor)}});
   }
+  // --model exact: the best design refined against the exact model (R, K1, K2 and sizes).
+  std::optional<design::DimensionedDesign> refined;
+  if (args.model == "exact") refined = design::refine_design_exact(spec, r.designs.front());
   if (!args.out.empty()) {
-    const design::DimensionedDesign& best = r.designs.front();
+    const bool use_refined = refined && refined->feasible;
+    const design::DimensionedDesign& best = use_refined ? *refined : r.designs.front();
+    if (refined && !refined->feasible) {
+      warn(fmt::format("--out: the refined design is not feasible ({}); writing the PRBM design",
+                       refined->binding));
+    }
     io::write_text_file(
         args.out,
         mechanism::mechanism_toml(
             best.design,
             fmt::format("Written by flexure design mechanism: the best of {} feasible designs, "
-                        "sub-class {}.\nSI units. Analyse with: flexure mechanism analyze {}",
+                        "sub-class {}{}.\nSI units. Analyse with: flexure mechanism analyze {}",
                         r.designs.size(),
                         best.subclass,
+                        use_refined ? ", refined against the exact model" : "",
                         args.out)));
   }
   if (args.json) {
@@ -195,6 +218,8 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
                     {"stroke", spec.stroke},
                     {"safety_factor", spec.safety_factor},
                     {"ranking", args.rank},
+                    {"model", args.model},
+                    {"refined", refined ? refined_json(*refined, factor) : Json(nullptr)},
                     {"out", args.out.empty() ? Json(nullptr) : Json(args.out)}});
     return;
   }
@@ -231,7 +256,29 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
         spec.safety_factor,
         best.required_yield_strength_exact.value_or(0.0) * 1e-6));
   }
-  if (!args.out.empty()) fmt::print("wrote {} ({})\n", args.out, best.subclass);
+  if (refined) {
+    const design::DimensionedDesign& x = *refined;
+    if (x.feasible) {
+      fmt::print(
+          "refined against the exact model: R {:.4f}, K1 {:.4f}, K2 {:.4f}; r2 {:.4g} mm, r3 "
+          "{:.4g} mm, primary h {:.4g} mm; exact F {:.4g} N, Xi' {:.1f} % (was {:.1f} %), S_y "
+          "needed {:.4g} MPa ({} exact strokes)\n",
+          x.model.R,
+          x.model.K1,
+          x.model.K2,
+          x.r2 * 1e3,
+          x.r3 * 1e3,
+          x.thickness[x.model.primary_pivot - 1] * 1e3,
+          x.force_exact.value_or(0.0) * factor,
+          x.percent_constant_force_exact.value_or(0.0),
+          best.percent_constant_force_exact.value_or(0.0),
+          x.required_yield_strength_exact.value_or(0.0) * 1e-6,
+          x.exact_evaluations);
+    } else {
+      fmt::print("refined against the exact model: not feasible: {}\n", x.binding);
+    }
+  }
+  if (!args.out.empty()) fmt::print("wrote {}\n", args.out);
 }
 
 }  // namespace
@@ -284,7 +331,13 @@ void register_design_mechanism_command(CLI::App& app) {
                   "What --force and the reported forces are the force of: half (one half "
                   "mechanism, the thesis's F) or whole (both halves, 2 F)")
       ->default_str("half");
-  cmd->add_flag("--no-exact", a->no_exact, "Skip the exact model (PRBM only; faster)");
+  cmd->add_flag("--no-exact", a->no_exact, "Skip the exact model (PRBM only, faster)");
+  cmd->add_option("--model",
+                  a->model,
+                  "prbm (the thesis's design, checked by the exact model) or exact (also refine "
+                  "the best design against the exact model: R, K1, K2 and the thicknesses; key "
+                  "`refined`, and --out writes it)")
+      ->default_str("prbm");
   cmd->add_option("--points", a->points, "Stroke points of the PRBM and exact strokes")
       ->default_str("50");
   cmd->add_option(

@@ -3,12 +3,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 
 #include "flexure/mechanisms/cfm/cfm_comparison.h"
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/design/cfm_exact_refinement.h"
 #include "flexure/mechanisms/design/feasibility.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
@@ -419,6 +421,151 @@ MechanismDesignReport design_mechanisms(const MechanismSpec& spec) {
         return x < y;
       });
   return report;
+}
+
+DimensionedDesign refine_design_exact(const MechanismSpec& spec,
+                                      const DimensionedDesign& prbm_design) {
+  spec.validate();
+  if (!prbm_design.feasible) {
+    throw InvalidInput(
+        fmt::format("refine_design_exact: {} is not a feasible design", prbm_design.subclass));
+  }
+  const cfm::CfmSubclass& row = cfm::find_thesis_subclass(prbm_design.subclass);
+  // The sub-class's constraints (Ch. 7: digits = Xi' floor, flags = orientation rules) at the
+  // design's own stroke.
+  CfmDesignProblem problem;
+  problem.config = row.config;
+  problem.stroke_percent = prbm_design.stroke_percent;
+  problem.objective = DesignObjective::kMaxPcf;
+  problem.model = default_model_options(problem.objective);
+  const std::string name = row.name;
+  std::string digits;
+  for (std::size_t k = name.find('-') + 2; k < name.size(); ++k) {
+    if (std::isdigit(static_cast<unsigned char>(name[k]))) digits += name[k];
+  }
+  if (!digits.empty()) {
+    problem.pcf_min = std::stod(digits);
+    problem.orientation = flags_of(name);
+  }
+  std::vector<double> start;
+  for (const std::string& v : problem.variables()) {
+    start.push_back(v == "R" ? row.R : (v == "K1" ? row.K1 : row.K2));
+  }
+  ExactRefinementOptions o;
+  o.sequence_starts = static_cast<int>(4 * start.size());
+  const CfmExactRefinement r = refine_cfm_exact(problem, {start}, o);
+
+  DimensionedDesign out = prbm_design;
+  out.exact_evaluations = r.evaluations;
+  out.model = cfm::CfmModel().evaluate(parameters_at(problem, r.x));
+  const cfm::CfmResult& m = out.model;
+  const cfm::CfmConfiguration& cfg = cfm::find_cfm_configuration(row.config);
+  mechanism::MechanismDesign& d = out.design;
+  const double r_tot = out.l_tot / m.lambda;
+  d.r2 = r_tot / (m.R + 1.0);
+  d.r3 = m.R * d.r2;
+  out.r2 = d.r2;
+  out.r3 = d.r3;
+  out.stroke_percent = stroke_percent_for(spec.stroke, out.l_tot, m.lambda);
+  d.note = fmt::format(
+      "flexure design mechanism --model exact: sub-class {} refined against the exact model "
+      "(R = {:.4f}, K1 = {:.4f}, K2 = {:.4f}) for F = {:.6g} N over {:.6g} m, SF = {:g}",
+      row.name,
+      m.R,
+      m.K1,
+      m.K2,
+      spec.force,
+      spec.stroke,
+      spec.safety_factor);
+  // Thicknesses by eq. 8.7 from the primary one of the PRBM design (the primary pivot may move),
+  // widths as the section rule had them; then one scale for the exact force.
+  const int p = m.primary_pivot;
+  const double h_p = prbm_design.thickness[prbm_design.model.primary_pivot - 1];
+  const double b_p = prbm_design.width[prbm_design.model.primary_pivot - 1];
+  const bool equal_h = out.section_rule.find("thicknesses") != std::string::npos;
+  for (int i = 1; i <= 3; ++i) {
+    if (cfg.pivots[i - 1] == mechanism::PivotType::kPin) continue;
+    const double D = i == p ? 1.0 : second_moment_ratio(m, i);
+    d.joints[i - 1].thickness = equal_h ? h_p : h_p * std::cbrt(D);
+    d.joints[i - 1].width = equal_h ? b_p * D : b_p;
+    d.joints[i - 1].length = 0.0;  // Table 8.1 again for the new links
+  }
+  mechanism::AnalysisOptions ao;
+  ao.points = spec.points;
+  const auto analyse = [&]() -> std::optional<mechanism::MechanismAnalysis> {
+    try {
+      d.finalise();
+      mechanism::MechanismAnalysis a = mechanism::analyze_mechanism(d, ao);
+      if (!a.has_exact || !a.exact.converged() || !(a.mean_force_exact > 0.0)) {
+        out.exact_note = a.has_exact ? a.exact.message : a.exact_note;
+        return std::nullopt;
+      }
+      return a;
+    } catch (const std::exception& e) {
+      out.exact_note = e.what();
+      return std::nullopt;
+    }
+  };
+  std::optional<mechanism::MechanismAnalysis> a = analyse();
+  for (int it = 0; a && it < 3 && std::abs(a->mean_force_exact / spec.force - 1.0) > 1e-6; ++it) {
+    const double scale = std::cbrt(spec.force / a->mean_force_exact);
+    for (auto& j : d.joints) j.thickness *= scale;
+    a = analyse();
+  }
+  if (!a) {
+    reject(out, fmt::format("exact model: {}", out.exact_note), std::nullopt);
+    return out;
+  }
+  for (int i = 0; i < 3; ++i) {
+    out.thickness[i] = d.joints[i].thickness;
+    out.width[i] = d.joints[i].width;
+    out.segment_length[i] = d.joints[i].length;
+  }
+  const double s_exact = *std::max_element(a->max_stress_exact.begin(), a->max_stress_exact.end());
+  out.force_exact = a->mean_force_exact;
+  out.percent_constant_force_exact = a->percent_constant_force_exact;
+  out.required_yield_strength_exact = spec.safety_factor * s_exact;
+  out.force_prbm = a->prbm.mean_force;
+  out.percent_constant_force_prbm = a->prbm.percent_constant_force;
+  out.required_yield_strength_prbm = spec.safety_factor * a->prbm.max_stress_all;
+  out.primary_stress = primary_stress(spec.E,
+                                      m.lambda,
+                                      prbm_design.M,
+                                      prbm_design.n,
+                                      out.stroke_percent,
+                                      out.thickness[p - 1],
+                                      out.l_tot);
+  out.required_yield_strength = spec.safety_factor * out.primary_stress;
+  if (!spec.yield_strength) d.yield_strength = *out.required_yield_strength_exact;
+  out.safety_factor_exact = d.yield_strength / s_exact;
+  out.safety_factor_prbm = d.yield_strength / a->prbm.max_stress_all;
+  const auto outside = [](double v, const LengthRange& r) {
+    return v < r.lower * (1.0 - kSlack) || v > r.upper * (1.0 + kSlack);
+  };
+  for (int i = 0; i < 3; ++i) {
+    if (out.thickness[i] <= 0.0) continue;
+    if (outside(out.thickness[i], spec.thickness) || outside(out.width[i], spec.width)) {
+      reject(out,
+             fmt::format("range: pivot {} of the refined design needs h = {}, b = {}",
+                         i + 1,
+                         mm(out.thickness[i]),
+                         mm(out.width[i])),
+             std::nullopt);
+      return out;
+    }
+  }
+  if (spec.yield_strength && *out.required_yield_strength_exact > *spec.yield_strength) {
+    reject(out,
+           fmt::format("stress: the refined design needs S_y >= {:.4g} MPa by its exact "
+                       "stresses at SF {:g}; the material has {:.4g} MPa",
+                       *out.required_yield_strength_exact * 1e-6,
+                       spec.safety_factor,
+                       *spec.yield_strength * 1e-6),
+           *out.required_yield_strength_exact / *spec.yield_strength);
+    return out;
+  }
+  out.feasible = true;
+  return out;
 }
 
 }  // namespace flexure::design

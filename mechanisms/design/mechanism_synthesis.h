@@ -92,6 +92,7 @@ struct DimensionedDesign {
   std::optional<double> percent_constant_force_exact;
   std::optional<double> safety_factor_exact;
   std::string exact_note;             // why there is no exact value
+  int exact_evaluations = 0;          // refine_design_exact: exact strokes of the optimisation
   mechanism::MechanismDesign design;  // ready for analyze_mechanism (when feasible)
 };
 
@@ -116,6 +117,17 @@ struct MechanismDesignReport {
 
 // Throws InvalidInput for an invalid specification.
 MechanismDesignReport design_mechanisms(const MechanismSpec& spec);
+
+// Beyond the thesis (docs/design.md "Against the exact model"): the feasible design `prbm_design`
+// refined against the exact model. R, K1, K2 maximise the exact percent constant force at the
+// design's stroke d under the sub-class's orientation rules and Xi' floor (cfm_exact_refinement.h;
+// Xi'_exact depends on them and d only), the links are re-derived at the same l_tot, and all
+// thicknesses are scaled together until the exact mean force is the specified one (the
+// elastica's force scales as h^3 at fixed geometry, its bending stress as h); the widths follow
+// the design's section rule. Returns the refined design with its exact values, or an infeasible
+// one naming the binding constraint (the exact stress over the yield strength, a range).
+DimensionedDesign refine_design_exact(const MechanismSpec& spec,
+                                      const DimensionedDesign& prbm_design);
 
 // Table 8.2's screens on their own (DesignScreens), for the specification.
 DesignScreens design_screens(const MechanismSpec& spec);

@@ -41,7 +41,7 @@ def _range(keyword, value):
 
 def mechanism(*, force, stroke, E, safety_factor, length_range, width_range, thickness_range,
               yield_strength=None, in_plane=False, out_of_plane=False, pcf_min=None, config=None,
-              rank=None, force_of=None, exact=True, points=None, out=None):
+              rank=None, force_of=None, exact=True, model=None, points=None, out=None):
     """Dimensional design from a specification (thesis ch. 8): `flexure design mechanism`.
 
     force, stroke, E, yield_strength   numbers in SI (N, m, Pa) or strings with units ('25lbf',
@@ -54,6 +54,8 @@ def mechanism(*, force, stroke, E, safety_factor, length_range, width_range, thi
     config          a configuration or a list of them ('lpp' or ['lpp', 'lps']); default all nine
     rank            'prbm' (the sub-class's Xi', the thesis's rule) or 'exact'
     exact           False skips the exact model (faster; force_exact etc. are None)
+    model           'prbm' or 'exact': also refine the best design against the exact model
+                    (key 'refined'; out then writes the refined design)
     out             a path: write the best design as TOML for flexure.mechanism.analyze
     Returns the dict `flexure design mechanism --json` prints: designs (best first; each with
     subclass, r2, r3, segment_lengths, width, thicknesses, required_yield_strength, force_prbm,
@@ -75,5 +77,5 @@ def mechanism(*, force, stroke, E, safety_factor, length_range, width_range, thi
              width_range=_range("width_range", width_range),
              thickness_range=_range("thickness_range", thickness_range), in_plane=in_plane,
              out_of_plane=out_of_plane, pcf_min=pcf_min, config=config, rank=rank,
-             force_of=force_of, no_exact=not exact, points=points, out=out),
+             force_of=force_of, no_exact=not exact, model=model, points=points, out=out),
         switches=("in_plane", "out_of_plane", "no_exact"))

@@ -32,6 +32,7 @@ def mechanism(
     rank: str | None = ...,
     force_of: str | None = ...,
     exact: bool = ...,
+    model: str | None = ...,
     points: int | None = ...,
     out: str | None = ...,
 ) -> dict[str, Any]: ...
