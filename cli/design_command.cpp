@@ -10,13 +10,18 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
+#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/design/cfm_exact_refinement.h"
 #include "flexure/mechanisms/design/cfm_synthesis.h"
+#include "flexure/mechanisms/design/subclass_problem.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {
 namespace {
 
 struct DesignCfmArgs {
+  std::string subclass;
+  std::string model = "prbm";
   std::string config;
   double d = 0.0;
   std::string objective;
@@ -30,6 +35,10 @@ struct DesignCfmArgs {
   unsigned long seed = design::SynthesisOptions{}.seed;
   bool json = false;
   CLI::Option* pcf_min_option = nullptr;
+  CLI::Option* config_option = nullptr;
+  CLI::Option* d_option = nullptr;
+  CLI::Option* objective_option = nullptr;
+  CLI::Option* orientation_option = nullptr;
   CLI::Option* K1_option = nullptr;
   CLI::Option* K2_option = nullptr;
   CLI::Option* points_option = nullptr;
@@ -37,17 +46,38 @@ struct DesignCfmArgs {
 
 design::CfmDesignProblem make_problem(const DesignCfmArgs& args) {
   design::CfmDesignProblem p;
-  p.config = args.config;
-  require_finite_input(args.d, "--d (stroke, % of r2 + r3)");
-  p.stroke_percent = args.d;
-  p.objective = design::design_objective_from_string(args.objective);
-  if (*args.pcf_min_option) {
-    require_in_range(args.pcf_min, "--pcf-min (percent constant force)", 1e-9, 100.0 - 1e-9);
-    p.pcf_min = args.pcf_min;
+  if (!args.subclass.empty()) {
+    // The sub-class's own problem (Ch. 7 semantics); --config, --d, --objective, --pcf-min and
+    // --orientation would contradict it.
+    for (const CLI::Option* o : {args.config_option,
+                                 args.d_option,
+                                 args.objective_option,
+                                 args.pcf_min_option,
+                                 args.orientation_option}) {
+      if (*o) {
+        throw InvalidInput(fmt::format("--subclass sets the problem; drop {}", o->get_name()));
+      }
+    }
+    p = design::subclass_problem(cfm::find_thesis_subclass(args.subclass)).problem;
+  } else {
+    if (!*args.config_option || !*args.d_option || !*args.objective_option) {
+      throw InvalidInput("give --config, --d and --objective (or --subclass NAME)");
+    }
+    p.config = args.config;
+    require_finite_input(args.d, "--d (stroke, % of r2 + r3)");
+    p.stroke_percent = args.d;
+    p.objective = design::design_objective_from_string(args.objective);
+    if (*args.pcf_min_option) {
+      require_in_range(args.pcf_min, "--pcf-min (percent constant force)", 1e-9, 100.0 - 1e-9);
+      p.pcf_min = args.pcf_min;
+    }
+    p.orientation = args.orientation;
   }
-  p.orientation = args.orientation;
   if (*args.K1_option) p.fixed_K1 = args.K1;
   if (*args.K2_option) p.fixed_K2 = args.K2;
+  if (args.model != "prbm" && args.model != "exact") {
+    throw InvalidInput(fmt::format("--model '{}' is unknown; allowed: prbm, exact", args.model));
+  }
   p.model = design::default_model_options(p.objective);
   if (args.sampling == "thesis") {
     p.model.sampling = cfm::StrokeSampling::kThesisCode;
@@ -96,6 +126,90 @@ Json design_json(const design::CfmDesignProblem& p,
   return j;
 }
 
+// --model exact: from the PRBM optimum, the printed sub-classes of the same configuration and
+// stroke and a Halton sequence, the exact model's percent constant force maximised under the same
+// constraints (cfm_exact_refinement.h).
+void run_exact(const DesignCfmArgs& args,
+               const design::CfmDesignProblem& problem,
+               const design::CfmSynthesisResult& prbm) {
+  std::vector<std::vector<double>> starts{prbm.x};
+  const auto [R_lo, R_hi] = design::toggle_R_interval(problem.stroke_percent);
+  for (const cfm::CfmSubclass& row : cfm::thesis_subclasses()) {
+    if (row.config != problem.config || row.stroke_percent != problem.stroke_percent) continue;
+    if (row.R < R_lo || row.R > R_hi) continue;  // toggle-clamped rows: outside the interval
+    std::vector<double> x;
+    bool inside = true;
+    for (const std::string& v : problem.variables()) {
+      const double value = v == "R" ? row.R : (v == "K1" ? row.K1 : row.K2);
+      const design::Bounds& b = v == "R" ? problem.R : (v == "K1" ? problem.K1 : problem.K2);
+      inside = inside && value >= b.lower && value <= b.upper;
+      x.push_back(value);
+    }
+    if (inside) starts.push_back(x);
+  }
+  design::ExactRefinementOptions o;
+  o.sequence_starts = static_cast<int>(4 * prbm.x.size());
+  const design::CfmExactRefinement r = design::refine_cfm_exact(problem, starts, o);
+  if (!r.converged()) {
+    throw NoConvergenceReport(
+        fmt::format("design cfm {} --model exact: {}", problem.config, r.message),
+        Json{{"R", r.prbm.result.R},
+             {"K1", r.prbm.result.K1},
+             {"K2", r.prbm.result.K2},
+             {"percent_constant_force_exact", r.percent_constant_force_exact},
+             {"exact_evaluations", r.evaluations}});
+  }
+  const double prbm_exact =
+      design::exact_percent_constant_force(problem, prbm.x, o.confirm_points, o.work_budget);
+  if (args.json) {
+    design::CfmSynthesisResult at_exact = prbm;
+    at_exact.best = r.prbm;
+    Json j = design_json(problem, at_exact, args.seed);
+    j["model"] = "exact";
+    j["objective"] = "max-pcf-exact";
+    j["objective_value"] = r.percent_constant_force_exact;
+    j["percent_constant_force_exact"] = r.percent_constant_force_exact;
+    j["exact_evaluations"] = r.evaluations;
+    j["exact_starts"] = r.starts;
+    j["prbm_optimum"] = Json{{"R", prbm.best.result.R},
+                             {"K1", prbm.best.result.K1},
+                             {"K2", prbm.best.result.K2},
+                             {"objective", to_string(problem.objective)},
+                             {"objective_value", prbm.best.objective},
+                             {"percent_constant_force", prbm.best.result.percent_constant_force},
+                             {"percent_constant_force_exact", prbm_exact}};
+    j["converged"] = r.converged();
+    j["message"] = r.message;
+    print_json(j);
+    return;
+  }
+  const cfm::CfmResult& e = r.prbm.result;
+  fmt::print("{} ({}), d = {:g} %: exact percent constant force {:.2f} % ({} exact strokes)\n",
+             e.config,
+             e.class_name,
+             problem.stroke_percent,
+             r.percent_constant_force_exact,
+             r.evaluations);
+  fmt::print("  R = {:.4f}, K1 = {:.4f}, K2 = {:.4f} (PRBM Xi' there {:.2f} %)\n",
+             e.R,
+             e.K1,
+             e.K2,
+             e.percent_constant_force);
+  fmt::print(
+      "  PRBM optimum ({} = {:.6g}): R = {:.4f}, K1 = {:.4f}, K2 = {:.4f}, exact Xi' "
+      "{:.2f} %\n",
+      to_string(problem.objective),
+      prbm.best.objective,
+      prbm.best.result.R,
+      prbm.best.result.K1,
+      prbm.best.result.K2,
+      prbm_exact);
+  for (const design::NamedConstraint& c : r.prbm.constraints) {
+    fmt::print(
+        "  constraint {}: {:.6g} ({})\n", c.name, c.value, c.satisfied() ? "met" : "VIOLATED");
+  }
+}
+
 void run_design_cfm(const DesignCfmArgs& args) {
   const design::CfmDesignProblem problem = make_problem(args);
   design::SynthesisOptions options;
@@ -112,6 +226,10 @@ void run_design_cfm(const DesignCfmArgs& args) {
              {"K2", s.best.result.K2},
              {"objective_value", s.best.objective},
              {"evaluations", s.evaluations}});
+  }
+  if (args.model == "exact") {
+    run_exact(args, problem, s);
+    return;
   }
   if (args.json) {
     print_json(design_json(problem, s, args.seed));
@@ -147,21 +265,30 @@ void register_design_command(CLI::App& app) {
   auto args = std::make_shared<DesignCfmArgs>();
   CLI::App* cfm = design.add_subcommand(
       "cfm", "Synthesis of R, K1, K2 for an objective under the thesis's constraints (PRBM)");
-  cfm->add_option(
-         "--config", args->config, "Configuration: spp, lpp, psp, plp, ssp, slp, sps, lps, sss")
-      ->required();
-  cfm->add_option("--d", args->d, "Design stroke d, % of r2 + r3 (0 < d < 100)")->required();
-  cfm->add_option("--objective",
-                  args->objective,
-                  "min-xi (Table 2.1), max-pcf (Xi'), max-psi (stiffness; needs --pcf-min) or "
-                  "min-dn (normal displacement; needs --pcf-min)")
-      ->required();
+  args->config_option = cfm->add_option(
+      "--config", args->config, "Configuration: spp, lpp, psp, plp, ssp, slp, sps, lps, sss");
+  args->d_option = cfm->add_option("--d", args->d, "Design stroke d, % of r2 + r3 (0 < d < 100)");
+  args->objective_option = cfm->add_option(
+      "--objective",
+      args->objective,
+      "min-xi (Table 2.1), max-pcf (Xi'), max-psi (stiffness; needs --pcf-min) or min-dn "
+      "(normal displacement; needs --pcf-min)");
+  cfm->add_option("--subclass",
+                  args->subclass,
+                  "A thesis sub-class's own problem instead of --config/--d/--objective (e.g. "
+                  "lps-b95I: max Psi with Xi' >= 95 and rule I at d = 40)");
+  cfm->add_option("--model",
+                  args->model,
+                  "prbm, or exact: then maximise the exact model's Xi' from the PRBM optimum, the "
+                  "thesis's sub-classes and a Halton sequence, under the same constraints")
+      ->default_str("prbm");
   args->pcf_min_option =
       cfm->add_option("--pcf-min", args->pcf_min, "Constraint: percent constant force Xi' >= X");
-  cfm->add_option("--orientation",
-                  args->orientation,
-                  "Orientation rules of the flexures: any of I (in-plane), O (out-of-plane), o "
-                  "(possibly out-of-plane), e.g. IO");
+  args->orientation_option =
+      cfm->add_option("--orientation",
+                      args->orientation,
+                      "Orientation rules of the flexures: any of I (in-plane), O (out-of-plane), o "
+                      "(possibly out-of-plane), e.g. IO");
   args->K1_option = cfm->add_option("--K1", args->K1, "Hold K1 = k2/k1 at this value");
   args->K2_option = cfm->add_option("--K2", args->K2, "Hold K2 = k3/k1 at this value");
   cfm->add_option("--sampling",

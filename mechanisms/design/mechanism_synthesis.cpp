@@ -12,6 +12,7 @@
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/design/cfm_exact_refinement.h"
 #include "flexure/mechanisms/design/feasibility.h"
+#include "flexure/mechanisms/design/subclass_problem.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/solver/common/errors.h"
@@ -40,13 +41,6 @@ void check_range(const LengthRange& r, const char* what) {
   }
 }
 
-// The orientation flags of a sub-class name: the trailing I, O, o ("slp-a95Io" -> "Io").
-std::string flags_of(const std::string& name) {
-  std::size_t k = name.size();
-  while (k > 0 && (name[k - 1] == 'I' || name[k - 1] == 'O' || name[k - 1] == 'o')) --k;
-  return name.substr(k);
-}
-
 bool one_flexure(const cfm::CfmConfiguration& c) {
   int flexures = 0;
   for (auto p : c.pivots) flexures += p != mechanism::PivotType::kPin;
@@ -59,7 +53,7 @@ bool admitted(const MechanismSpec& spec, const cfm::CfmSubclass& row) {
     return false;
   }
   if (spec.pcf_min && row.percent_constant_force < *spec.pcf_min) return false;
-  const std::string flags = flags_of(row.name);
+  const std::string flags = subclass_flags(row.name);
   if (one_flexure(cfm::find_cfm_configuration(row.config))) return true;
   switch (spec.orientation) {
     case FlexureOrientation::kInPlane:
@@ -186,7 +180,7 @@ DimensionedDesign size_subclass(const MechanismSpec& spec, const cfm::CfmSubclas
   out.primary_stress = primary_stress(E, lambda, out.M, out.n, out.stroke_percent, h, l);
 
   // The other flexures (eq. 8.7, I_i = D_equal_i I_p; eqs. 8.8-8.10).
-  const std::string flags = flags_of(row.name);
+  const std::string flags = subclass_flags(row.name);
   const bool in_plane =
       spec.orientation == FlexureOrientation::kInPlane ||
       (spec.orientation == FlexureOrientation::kAny && flags.find('I') != std::string::npos);
@@ -432,25 +426,11 @@ DimensionedDesign refine_design_exact(const MechanismSpec& spec,
   }
   const cfm::CfmSubclass& row = cfm::find_thesis_subclass(prbm_design.subclass);
   // The sub-class's constraints (Ch. 7: digits = Xi' floor, flags = orientation rules) at the
-  // design's own stroke.
-  CfmDesignProblem problem;
-  problem.config = row.config;
+  // design's own stroke; the objective is the exact Xi'.
+  SubclassProblem sub = subclass_problem(row);
+  CfmDesignProblem& problem = sub.problem;
   problem.stroke_percent = prbm_design.stroke_percent;
-  problem.objective = DesignObjective::kMaxPcf;
-  problem.model = default_model_options(problem.objective);
-  const std::string name = row.name;
-  std::string digits;
-  for (std::size_t k = name.find('-') + 2; k < name.size(); ++k) {
-    if (std::isdigit(static_cast<unsigned char>(name[k]))) digits += name[k];
-  }
-  if (!digits.empty()) {
-    problem.pcf_min = std::stod(digits);
-    problem.orientation = flags_of(name);
-  }
-  std::vector<double> start;
-  for (const std::string& v : problem.variables()) {
-    start.push_back(v == "R" ? row.R : (v == "K1" ? row.K1 : row.K2));
-  }
+  const std::vector<double>& start = sub.printed;
   ExactRefinementOptions o;
   o.sequence_starts = static_cast<int>(4 * start.size());
   const CfmExactRefinement r = refine_cfm_exact(problem, {start}, o);

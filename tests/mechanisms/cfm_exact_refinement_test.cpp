@@ -6,39 +6,21 @@
 
 #include <gtest/gtest.h>
 
-#include <cctype>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/design/subclass_problem.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::design {
 namespace {
 
-// The sub-class's own problem (Ch. 7 semantics, docs/design.md): max-pcf without digits, else
-// Xi' >= digits with the orientation flags as constraints.
 CfmDesignProblem problem_of(const cfm::CfmSubclass& row, std::vector<double>& start) {
-  CfmDesignProblem p;
-  p.config = row.config;
-  p.stroke_percent = row.stroke_percent;
-  const std::string name = row.name;
-  std::string digits, flags;
-  for (std::size_t k = name.find('-') + 2; k < name.size(); ++k) {
-    (std::isdigit(static_cast<unsigned char>(name[k])) ? digits : flags) += name[k];
-  }
-  p.objective = DesignObjective::kMaxPcf;
-  if (!digits.empty()) {
-    p.pcf_min = std::stod(digits);
-    p.orientation = flags;
-  }
-  p.model = default_model_options(p.objective);
-  start.clear();
-  for (const std::string& v : p.variables()) {
-    start.push_back(v == "R" ? row.R : (v == "K1" ? row.K1 : row.K2));
-  }
-  return p;
+  const SubclassProblem s = subclass_problem(row);
+  start = s.printed;
+  return s.problem;
 }
 
 // docs/validation.md: lpp-b 97.6 % by the PRBM, 93.3 % exact; slp-b90Io 90.0 -> 81.2.
