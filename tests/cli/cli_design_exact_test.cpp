@@ -25,8 +25,8 @@ TEST(CliDesignExact, LppBGainsInTheExactModelAndCfmExactAgrees) {
   EXPECT_GE(exact, j["prbm_optimum"]["percent_constant_force_exact"].get<double>());
   EXPECT_GT(exact, 96.0);
   // Independently: flexure cfm --exact at the reported R (printed with 17 digits).
-  const CommandResult c = run_flexure(
-      "cfm --config lpp --d 40 --exact --json --R " + json(j["R"].get<double>()).dump());
+  const CommandResult c = run_flexure("cfm --config lpp --d 40 --exact --json --R " +
+                                      json(j["R"].get<double>()).dump());
   ASSERT_EQ(c.exit_code, 0) << c.err;
   EXPECT_NEAR(json::parse(c.out)["percent_constant_force_exact"].get<double>(), exact, 1e-9);
 }
