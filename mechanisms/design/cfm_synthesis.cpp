@@ -403,15 +403,15 @@ std::optional<std::string> nearest_subclass(const CfmDesignProblem& p, const cfm
 }
 
 // Up to `count` samples of `ranked` (best first), each at least `separation` from those taken.
-std::vector<Sample> distinct_best(const std::vector<Sample>& ranked,
-                                  std::size_t count,
-                                  double separation,
-                                  const Search& s) {
-  std::vector<Sample> taken;
-  for (const Sample& c : ranked) {
+std::vector<const Sample*> distinct_best(const std::vector<const Sample*>& ranked,
+                                         std::size_t count,
+                                         double separation,
+                                         const Search& s) {
+  std::vector<const Sample*> taken;
+  for (const Sample* c : ranked) {
     if (taken.size() == count) break;
-    const bool far = std::all_of(taken.begin(), taken.end(), [&](const Sample& t) {
-      return s.box_distance(t.y, c.y) >= separation;
+    const bool far = std::all_of(taken.begin(), taken.end(), [&](const Sample* t) {
+      return s.box_distance(t->y, c->y) >= separation;
     });
     if (far) taken.push_back(c);
   }
@@ -554,14 +554,15 @@ CfmSynthesisResult synthesize_cfm(const CfmDesignProblem& problem,
   };
   std::vector<Optimum> optima;
   for (int v : views) {
-    std::vector<Sample> ranked = scan;
-    std::stable_sort(ranked.begin(), ranked.end(), [v](const Sample& a, const Sample& b) {
-      return ranks_before(a, b, v);
+    std::vector<const Sample*> ranked(scan.size());
+    std::transform(scan.begin(), scan.end(), ranked.begin(), [](const Sample& a) { return &a; });
+    std::stable_sort(ranked.begin(), ranked.end(), [v](const Sample* a, const Sample* b) {
+      return ranks_before(*a, *b, v);
     });
     global.known_optima.clear();
-    for (const Sample& start :
+    for (const Sample* start :
          distinct_best(ranked, static_cast<std::size_t>(starts), 2.0 * spacing, global)) {
-      local_run(global, start, v, coarse_settings);
+      local_run(global, *start, v, coarse_settings);
       ++out.starts;
       if (global.run_best) {
         if (global.run_best->feasible[v]) ++out.feasible_starts;
