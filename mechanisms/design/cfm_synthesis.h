@@ -1,15 +1,17 @@
 #pragma once
-// Synthesis of a constant-force mechanism's nondimensional parameters (docs/design.md), in three
-// deterministic steps over the variables in log scale:
+// Synthesis of a constant-force mechanism's nondimensional parameters (docs/design.md, "The
+// optimiser"), in three deterministic steps over the variables in log scale:
 //  1. a global scan: the model at the points of a Halton sequence over the bounds;
 //  2. local runs of NLopt's COBYLA (derivative-free, constrained; Powell 1994), or Nelder-Mead
 //     where only the bounds constrain a kinked max/min objective (min-xi, max-pcf), from the
-//     scan's best distinct points;
+//     scan's best distinct points, an infeasible start first brought to feasibility;
 //  3. for the thesis code's sampling (~1000 stroke points), steps 1-2 run on a subset of its
-//     points (every `coarse_stride`-th, CfmOptions::stride) and the best distinct local optima are
+//     points (every `coarse_stride`-th, CfmOptions::stride) and the best local optima are
 //     polished on the full sampling, which alone decides the answer.
-// The answer is the best design of the final sampling met at any evaluation: feasible first,
-// then by objective.
+// With max-psi or orientation rules and two or more sprung pivots, steps 1-3 also run in each
+// region of the design space where one pivot is the primary one (Table 5.4's rules and eq. 5.19's
+// Psi jump where it changes; within a region they are smooth). The answer is the best design of
+// the full sampling met at any evaluation: feasible first, then by objective.
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,14 +22,15 @@
 namespace flexure::design {
 
 struct SynthesisOptions {
-  int starts = 0;       // local runs of step 2; 0: 3, 4 or 6 for one, two or three variables
+  int starts = 0;       // local runs of step 2 per region; 0: 3 for one variable, 4 for more
   int scan_points = 0;  // Halton points of step 1; 0: 32, 256 or 1024 by variables
   int polish = 0;       // local optima polished on the full sampling (step 3); 0: 2
   // Step 3's coarse sampling takes every coarse_stride-th stroke point; 1 (or a sampling of fewer
   // than 10 coarse_stride points, such as Table 2.1's 50) runs everything on the full sampling.
   int coarse_stride = 20;
-  // The coarse steps ask Xi' >= pcf_min + pcf_margin: the coarse Xi' is never below the full
-  // sampling's (a subset of its points), so the polish starts on the feasible side.
+  // The coarse steps may ask Xi' >= pcf_min + pcf_margin (the coarse Xi' is never below the full
+  // sampling's, a subset of its points). 0: the two agree to 3e-4 points of Xi' at the 68
+  // sub-classes' optima and the polish starts with a restoration where needed.
   double pcf_margin = 0.0;
   int max_evaluations = 2000;     // per local run
   double xtol_rel = 1e-6;         // final stopping test: absolute on log(R), log(K), i.e. relative
