@@ -235,8 +235,8 @@ void register_design_command(CLI::App& app) {
       cfm->add_option("--points", args->points, "Points of the uniform sampling (default 50)");
   cfm->add_option("--starts",
                   args->starts,
-                  "Local optimisations per region of the primary pivot (0: 3 for one variable, "
-                  "4 for two or three)")
+                  "Local optimisations per region of the primary pivot (0: 4 for two variables, "
+                  "3 for one or three)")
       ->default_str("0");
   cfm->add_option("--scan-points",
                   args->scan_points,

@@ -154,6 +154,14 @@ CfmResult CfmModel::evaluate(const CfmParameters& p) const {
   // at the end of the stroke.
   std::array<std::array<double, 3>, 3> ratio_min;
   for (auto& row : ratio_min) row.fill(std::numeric_limits<double>::infinity());
+  // Only pairs of distinct sprung pivots: a pin is never primary nor subject to a ratio.
+  std::array<std::pair<int, int>, 6> pairs{};
+  int pair_count = 0;
+  for (int j = 0; j < 3; ++j) {
+    for (int i = 0; i < 3; ++i) {
+      if (i != j && r.kappa[i] > 0.0 && r.kappa[j] > 0.0) pairs[pair_count++] = {j, i};
+    }
+  }
   double sum = 0.0;
   double phi_min = std::numeric_limits<double>::infinity();
   double phi_max = -std::numeric_limits<double>::infinity();
@@ -201,10 +209,9 @@ CfmResult CfmModel::evaluate(const CfmParameters& p) const {
     r.residual = std::max(r.residual, loop_closure_residual(p.R, pose));
     const std::array<double, 3> alpha = {
         r.kappa[0] * pose.psi1(), r.kappa[1] * pose.psi2(), r.kappa[2] * pose.psi3()};
-    for (int j = 0; j < 3; ++j) {
-      for (int i = 0; i < 3; ++i) {
-        if (alpha[i] > 0.0) ratio_min[j][i] = std::min(ratio_min[j][i], alpha[j] / alpha[i]);
-      }
+    for (int k = 0; k < pair_count; ++k) {
+      const auto [j, i] = pairs[k];
+      if (alpha[i] > 0.0) ratio_min[j][i] = std::min(ratio_min[j][i], alpha[j] / alpha[i]);
     }
     if (options_.keep_curve) r.curve.push_back({100.0 * u, pose.theta2, pose.theta3, phi});
   }

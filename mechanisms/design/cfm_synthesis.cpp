@@ -61,7 +61,10 @@ struct Sample {
   std::array<double, kViews> f{};
   std::array<double, kViews> violation{};
   std::array<bool, kViews> feasible{};
-  int run = -1;  // the local run that met it (-1: the scan)
+  std::array<bool, kViews> has_view{};  // which views are computed (Search::fill_views)
+  double objective = 0.0;               // the minimised objective as posed
+  std::array<double, 3> log_psi{};      // log Psi_i (log_psi_of), with regions
+  int run = -1;                         // the local run that met it (-1: the scan)
 };
 
 // In view v: feasible before infeasible; then the objective, or the smaller violation.
@@ -115,57 +118,48 @@ class Search {
         problem_(problem),
         model_(options),
         class_1B_(cfm::find_cfm_configuration(problem.config).is_class_1B()),
-        pcf_margin_(pcf_margin) {}
+        pcf_margin_(pcf_margin) {
+    // The free variables' values come from at(); the held ones are set once.
+    const std::vector<std::string> names = problem.variables();
+    parameters_ = parameters_at(problem, std::vector<double>(names.size(), 1.0));
+    for (const std::string& name : names) {
+      if (name == "R") variable_.push_back(&parameters_.R);
+      if (name == "K1") variable_.push_back(&*parameters_.K1);
+      if (name == "K2") variable_.push_back(&*parameters_.K2);
+    }
+  }
 
-  // The design at log variables y, or nullptr where the model refuses it.
-  const Sample* at(const std::vector<double>& y) {
-    if (has_last_ && y == last_.y) {
+  // The design at log variables y[0..n), or nullptr where the model refuses it.
+  const Sample* at(const double* y, std::size_t n) {
+    if (has_last_ && std::equal(y, y + n, last_.y.begin(), last_.y.end())) {
       if (!last_valid_) return nullptr;
+      fill_views(last_);
       note(last_);
       return &last_;
     }
     ++evaluations;
     has_last_ = true;
     last_valid_ = false;
-    last_.y = y;
-    std::vector<double> x(y.size());
-    std::transform(y.begin(), y.end(), x.begin(), [](double v) { return std::exp(v); });
+    last_.y.assign(y, y + n);
+    for (std::size_t i = 0; i < n; ++i) *variable_[i] = std::exp(y[i]);
     try {
-      last_.result = model_.evaluate(parameters_at(problem_, x));
+      last_.result = model_.evaluate(parameters_);
     } catch (const InvalidInput&) {
       return nullptr;
     }
     const cfm::CfmResult& r = last_.result;
     const double objective = objective_value(problem_, r);
     if (!std::isfinite(objective) || !r.converged()) return nullptr;
-    last_.f.fill(minimised(objective));
-    // As posed: the rules relative to the model's primary pivot. The full sampling's feasibility
-    // is the problem's own test; the coarse one's includes the margin.
-    constraint_values(problem_, r, r.primary_pivot, values_);
-    last_.violation[0] = largest_violation(values_);
-    last_.feasible[0] = pcf_margin_ > 0.0
-                            ? last_.violation[0] <= 0.0
-                            : std::all_of(values_.begin(),
-                                          values_.end(),
-                                          [](const ConstraintValue& c) { return c.satisfied(); });
-    if (!regions.empty()) {
-      log_psi_ = log_psi_of(r, class_1B_);
-      for (int j : regions) {
-        if (problem_.objective == DesignObjective::kMaxPsi) last_.f[j] = -log_psi_[j - 1];
-        constraint_values(problem_, r, j, values_);
-        double v = largest_violation(values_);
-        for (int i : regions) {
-          if (i != j) v = std::max(v, region_violation(j, i));
-        }
-        last_.violation[j] = v;
-        last_.feasible[j] = v <= 0.0;
-      }
-    }
+    last_.has_view.fill(false);
+    last_.objective = minimised(objective);
+    if (!regions.empty()) last_.log_psi = log_psi_of(r, class_1B_);
+    fill_views(last_);
     last_.run = run;
     last_valid_ = true;
     note(last_);
     return &last_;
   }
+  const Sample* at(const std::vector<double>& y) { return at(y.data(), y.size()); }
 
   // Starts local run `id` in view `v`: its best starts afresh.
   void begin_run(int id, int v) {
@@ -192,9 +186,8 @@ class Search {
     std::size_t k = 0;
     for (std::size_t c = 1; c < values_.size(); ++c) g[k++] = normalised(values_[c]);
     if (view > 0) {
-      log_psi_ = log_psi_of(s->result, class_1B_);
       for (int i : regions) {
-        if (i != view) g[k++] = region_violation(view, i);
+        if (i != view) g[k++] = region_violation(s->log_psi, view, i);
       }
     }
   }
@@ -216,6 +209,7 @@ class Search {
   int view = 0;                      // its view: 0 as posed, j in region j
   bool log_objective = false;        // Sample::f is a log (max-psi, min-dn)
   bool restoring = false;            // NLopt minimises the violation instead of the objective
+  bool all_views = false;            // compute every view of each sample (the scan)
   std::optional<Sample> best;        // over every evaluation, as posed
   std::optional<Sample> run_best;    // over the run under way, in its view
   nlopt::opt* optimiser = nullptr;   // the local run under way
@@ -224,6 +218,41 @@ class Search {
   bool duplicate = false;                         // the run under way was stopped as one
 
  private:
+  // Sample::f, violation, feasible in view 0 (as posed), the view under way, or every view while
+  // all_views (the scan ranks its points in each).
+  void fill_views(Sample& s) {
+    fill_view(s, 0);
+    if (all_views) {
+      for (int j : regions) fill_view(s, j);
+    } else if (view > 0) {
+      fill_view(s, view);
+    }
+  }
+  void fill_view(Sample& s, int v) {
+    if (s.has_view[v]) return;
+    s.has_view[v] = true;
+    const cfm::CfmResult& r = s.result;
+    s.f[v] =
+        problem_.objective == DesignObjective::kMaxPsi && v > 0 ? -s.log_psi[v - 1] : s.objective;
+    // As posed the rules are relative to the model's primary pivot, in region j to j.
+    constraint_values(problem_, r, v > 0 ? v : r.primary_pivot, values_);
+    double worst = -kMaxViolation;
+    for (const ConstraintValue& c : values_) worst = std::max(worst, normalised(c));
+    if (v > 0) {
+      for (int i : regions) {
+        if (i != v) worst = std::max(worst, region_violation(s.log_psi, v, i));
+      }
+    }
+    s.violation[v] = worst;
+    // The full sampling's feasibility as posed is the problem's own test; the coarse one's
+    // includes the margin.
+    s.feasible[v] = v == 0 && pcf_margin_ == 0.0
+                        ? std::all_of(values_.begin(),
+                                      values_.end(),
+                                      [](const ConstraintValue& c) { return c.satisfied(); })
+                        : worst <= 0.0;
+  }
+
   void note(const Sample& s) {
     if (!best || ranks_before(s, *best, 0)) {
       best = s;
@@ -264,14 +293,9 @@ class Search {
     if (c.kind == ConstraintKind::kPcf) v += pcf_margin_ / std::max(100.0 - c.bound, 1e-3);
     return std::clamp(v, -kMaxViolation, kMaxViolation);
   }
-  double largest_violation(const std::vector<ConstraintValue>& values) const {
-    double v = -kMaxViolation;
-    for (const ConstraintValue& c : values) v = std::max(v, normalised(c));
-    return v;
-  }
   // Pivot j stays the primary one against pivot i: log Psi_j - log Psi_i + margin <= 0.
-  double region_violation(int j, int i) const {
-    const double v = log_psi_[j - 1] - log_psi_[i - 1] + kRegionMargin;
+  static double region_violation(const std::array<double, 3>& log_psi, int j, int i) {
+    const double v = log_psi[j - 1] - log_psi[i - 1] + kRegionMargin;
     return std::isfinite(v) ? std::clamp(v, -kMaxViolation, kMaxViolation) : kMaxViolation;
   }
 
@@ -284,19 +308,20 @@ class Search {
   bool has_last_ = false;
   bool last_valid_ = false;
   std::vector<ConstraintValue> values_;  // scratch
-  std::array<double, 3> log_psi_{};      // scratch
+  cfm::CfmParameters parameters_;        // the model's input, the free variables set by at()
+  std::vector<double*> variable_;        // parameters_' R, K1 or K2 of each free variable
 };
 
 double objective_of(unsigned n, const double* y, double*, void* data) {
   auto* s = static_cast<Search*>(data);
-  const Sample* p = s->at(std::vector<double>(y, y + n));
+  const Sample* p = s->at(y, n);
   if (p == nullptr) return kPenalty;
   return s->restoring ? p->violation[s->view] : p->f[s->view];
 }
 
 void constraints_of(unsigned, double* g, unsigned n, const double* y, double*, void* data) {
   auto* s = static_cast<Search*>(data);
-  s->constraints_of(s->at(std::vector<double>(y, y + n)), g);
+  s->constraints_of(s->at(y, n), g);
 }
 
 struct LocalSettings {
@@ -511,7 +536,9 @@ CfmSynthesisResult synthesize_cfm(const CfmDesignProblem& problem,
     for (std::size_t i = 0; i < n; ++i) {
       y[i] = lower[i] + halton(k, kBases[i]) * (upper[i] - lower[i]);
     }
+    global.all_views = true;
     if (const Sample* p = global.at(y)) scan.push_back(*p);
+    global.all_views = false;
   }
 
   // One local run from a sample in view v: an infeasible start is first brought to feasibility
@@ -533,7 +560,7 @@ CfmSynthesisResult synthesize_cfm(const CfmDesignProblem& problem,
 
   // Step 2: in each view, local runs from the best distinct scan points, with initial steps of
   // about the scan's spacing.
-  const int starts = options.starts > 0 ? options.starts : (n == 1 ? 3 : 4);
+  const int starts = options.starts > 0 ? options.starts : (n == 2 ? 4 : 3);
   const double spacing = 1.0 / std::pow(static_cast<double>(scan_points), 1.0 / n);
   LocalSettings coarse_settings;
   coarse_settings.algorithm = local;

@@ -22,7 +22,7 @@
 namespace flexure::design {
 
 struct SynthesisOptions {
-  int starts = 0;       // local runs of step 2 per region; 0: 3 for one variable, 4 for more
+  int starts = 0;       // local runs of step 2 per region; 0: 4 for two variables, else 3
   int scan_points = 0;  // Halton points of step 1; 0: 32, 256 or 1024 by variables
   int polish = 0;       // local optima polished on the full sampling (step 3); 0: 2
   // Step 3's coarse sampling takes every coarse_stride-th stroke point; 1 (or a sampling of fewer
