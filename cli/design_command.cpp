@@ -2,6 +2,8 @@
 // under the thesis's constraints (mechanisms/design/cfm_synthesis.h, docs/design.md).
 #include <fmt/format.h>
 
+#include <chrono>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -27,11 +29,14 @@ struct DesignCfmArgs {
   std::string objective;
   double pcf_min = 0.0;
   std::string orientation;
+  std::string rule_limits;
   double K1 = 0.0;
   double K2 = 0.0;
   std::string sampling = "auto";
   int points = 50;
   int starts = 0;
+  int scan_points = 0;
+  int coarse_stride = design::SynthesisOptions{}.coarse_stride;
   unsigned long seed = design::SynthesisOptions{}.seed;
   bool json = false;
   CLI::Option* pcf_min_option = nullptr;
@@ -43,6 +48,50 @@ struct DesignCfmArgs {
   CLI::Option* K2_option = nullptr;
   CLI::Option* points_option = nullptr;
 };
+
+// --rule-limits "O:C>=0.99,o:D_equal<=10.4": limits of the orientation rules other than the
+// thesis's (Table 5.4), written as the constraints are named in the output.
+void apply_rule_limits(const std::string& text, design::OrientationLimits& limits) {
+  std::size_t begin = 0;
+  while (begin < text.size()) {
+    const std::size_t end = std::min(text.find(',', begin), text.size());
+    const std::string item = text.substr(begin, end - begin);
+    begin = end + 1;
+    const std::size_t op = item.find_first_of("<>");
+    if (op == std::string::npos || op + 2 > item.size() || item[op + 1] != '=') {
+      throw InvalidInput(
+          fmt::format("--rule-limits item '{}': write RULE:RATIO<=VALUE or RULE:RATIO>=VALUE, e.g. "
+                      "O:C>=0.99 or o:D_equal<=10.4",
+                      item));
+    }
+    const std::string key = item.substr(0, op);
+    const bool upper = item[op] == '<';
+    double value = 0.0;
+    try {
+      std::size_t used = 0;
+      value = std::stod(item.substr(op + 2), &used);
+      if (used != item.size() - op - 2) throw std::invalid_argument(item);
+    } catch (const std::exception&) {
+      throw InvalidInput(fmt::format("--rule-limits item '{}': the value is not a number", item));
+    }
+    if (!(std::isfinite(value) && value > 0.0)) {
+      throw InvalidInput(fmt::format("--rule-limits item '{}': the value must be > 0", item));
+    }
+    if (key == "I:D_min" && upper) {
+      limits.I_D_min_max = value;
+    } else if ((key == "O:C" || key == "o:C") && !upper) {
+      limits.C_min = value;  // one limit for both rules, as Table 5.4
+    } else if (key == "O:D_equal" || key == "o:D_equal") {
+      design::Bounds& b = key[0] == 'O' ? limits.O_D_equal : limits.o_D_equal;
+      (upper ? b.upper : b.lower) = value;
+    } else {
+      throw InvalidInput(fmt::format(
+          "--rule-limits item '{}': the rules are I:D_min<=, O:C>=, o:C>=, O:D_equal>= or <=, "
+          "o:D_equal>= or <=",
+          item));
+    }
+  }
+}
 
 design::CfmDesignProblem make_problem(const DesignCfmArgs& args) {
   design::CfmDesignProblem p;
@@ -73,6 +122,7 @@ design::CfmDesignProblem make_problem(const DesignCfmArgs& args) {
     }
     p.orientation = args.orientation;
   }
+  apply_rule_limits(args.rule_limits, p.orientation_limits);
   if (*args.K1_option) p.fixed_K1 = args.K1;
   if (*args.K2_option) p.fixed_K2 = args.K2;
   if (args.model != "prbm" && args.model != "exact") {
@@ -99,7 +149,8 @@ design::CfmDesignProblem make_problem(const DesignCfmArgs& args) {
 
 Json design_json(const design::CfmDesignProblem& p,
                  const design::CfmSynthesisResult& s,
-                 unsigned long seed) {
+                 unsigned long seed,
+                 double seconds) {
   Json j = cfm_result_json(s.best.result, p.model);
   j["objective"] = to_string(p.objective);
   j["objective_value"] = s.best.objective;
@@ -117,12 +168,14 @@ Json design_json(const design::CfmDesignProblem& p,
   }
   j["constraints"] = std::move(constraints);
   j["evaluations"] = s.evaluations;
+  j["full_sampling_evaluations"] = s.fine_evaluations;
   j["starts"] = s.starts;
   j["feasible_starts"] = s.feasible_starts;
   j["seed"] = seed;
   j["converged"] = s.converged();
   j["termination"] = termination_name(s.termination);
   j["message"] = s.message;
+  j["seconds"] = seconds;  // wall time of the synthesis alone
   return j;
 }
 
@@ -131,7 +184,8 @@ Json design_json(const design::CfmDesignProblem& p,
 // constraints (cfm_exact_refinement.h).
 void run_exact(const DesignCfmArgs& args,
                const design::CfmDesignProblem& problem,
-               const design::CfmSynthesisResult& prbm) {
+               const design::CfmSynthesisResult& prbm,
+               std::chrono::steady_clock::time_point start) {
   std::vector<std::vector<double>> starts{prbm.x};
   const auto [R_lo, R_hi] = design::toggle_R_interval(problem.stroke_percent);
   for (const cfm::CfmSubclass& row : cfm::thesis_subclasses()) {
@@ -164,7 +218,10 @@ void run_exact(const DesignCfmArgs& args,
   if (args.json) {
     design::CfmSynthesisResult at_exact = prbm;
     at_exact.best = r.prbm;
-    Json j = design_json(problem, at_exact, args.seed);
+    // Wall time of the PRBM synthesis and the exact optimisation together.
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    Json j = design_json(problem, at_exact, args.seed, seconds);
     j["model"] = "exact";
     j["objective"] = "max-pcf-exact";
     j["objective_value"] = r.percent_constant_force_exact;
@@ -214,8 +271,13 @@ void run_design_cfm(const DesignCfmArgs& args) {
   const design::CfmDesignProblem problem = make_problem(args);
   design::SynthesisOptions options;
   options.starts = args.starts;
+  options.scan_points = args.scan_points;
+  options.coarse_stride = args.coarse_stride;
   options.seed = args.seed;
+  const auto start = std::chrono::steady_clock::now();
   const design::CfmSynthesisResult s = design::synthesize_cfm(problem, options);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (s.x.empty()) throw NoConvergence(fmt::format("design cfm: {}", s.message));
   if (!s.converged()) {
     throw NoConvergenceReport(
@@ -228,11 +290,11 @@ void run_design_cfm(const DesignCfmArgs& args) {
              {"evaluations", s.evaluations}});
   }
   if (args.model == "exact") {
-    run_exact(args, problem, s);
+    run_exact(args, problem, s, start);
     return;
   }
   if (args.json) {
-    print_json(design_json(problem, s, args.seed));
+    print_json(design_json(problem, s, args.seed, seconds));
     return;
   }
   const cfm::CfmResult& r = s.best.result;
@@ -254,7 +316,7 @@ void run_design_cfm(const DesignCfmArgs& args) {
     fmt::print(
         "  constraint {}: {:.6g} ({})\n", c.name, c.value, c.satisfied() ? "met" : "VIOLATED");
   }
-  fmt::print("  {}\n", s.message);
+  fmt::print("  {} ({:.1f} ms)\n", s.message, 1e3 * seconds);
 }
 
 }  // namespace
@@ -289,6 +351,10 @@ void register_design_command(CLI::App& app) {
                       args->orientation,
                       "Orientation rules of the flexures: any of I (in-plane), O (out-of-plane), o "
                       "(possibly out-of-plane), e.g. IO");
+  cfm->add_option("--rule-limits",
+                  args->rule_limits,
+                  "Other limits of the orientation rules, as the constraints are named, e.g. "
+                  "\"O:C>=0.99,o:D_equal<=10.4\" (default: the thesis's, Table 5.4)");
   args->K1_option = cfm->add_option("--K1", args->K1, "Hold K1 = k2/k1 at this value");
   args->K2_option = cfm->add_option("--K2", args->K2, "Hold K2 = k3/k1 at this value");
   cfm->add_option("--sampling",
@@ -298,8 +364,19 @@ void register_design_command(CLI::App& app) {
       ->default_str("auto");
   args->points_option =
       cfm->add_option("--points", args->points, "Points of the uniform sampling (default 50)");
-  cfm->add_option("--starts", args->starts, "Local optimisations (0: 8, 16 or 32 by variables)")
+  cfm->add_option("--starts",
+                  args->starts,
+                  "Local optimisations per region of the primary pivot (0: 4 for two variables, "
+                  "3 for one or three)")
       ->default_str("0");
+  cfm->add_option("--scan-points",
+                  args->scan_points,
+                  "Points of the global scan (0: 32, 256 or 1024 for one, two or three variables)")
+      ->default_str("0");
+  cfm->add_option("--coarse-stride",
+                  args->coarse_stride,
+                  "The search runs on every N-th stroke point and polishes on all (1: all "
+                  "throughout)");
   cfm->add_option("--seed", args->seed, "Seed of the optimiser (runs are reproducible)");
   cfm->add_flag("--json", args->json, "Print one JSON object");
   cfm->callback([args] { run_design_cfm(*args); });

@@ -40,6 +40,10 @@ const std::vector<CfmConfiguration>& cfm_configurations() {
 }
 
 const CfmConfiguration& find_cfm_configuration(const std::string& name) {
+  // The exact name first: a synthesis looks its configuration up once per model evaluation.
+  for (const CfmConfiguration& c : cfm_configurations()) {
+    if (name == c.name) return c;
+  }
   for (const CfmConfiguration& c : cfm_configurations()) {
     if (same_name(c.name, name)) return c;
   }

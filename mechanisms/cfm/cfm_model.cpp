@@ -81,6 +81,9 @@ void CfmOptions::validate() const {
     throw InvalidInput(
         fmt::format("CfmOptions::points = {} must be between 1 and {}", points, kMaxUniformPoints));
   }
+  if (stride < 1) {
+    throw InvalidInput(fmt::format("CfmOptions::stride = {} must be >= 1", stride));
+  }
 }
 
 CfmModel::CfmModel(CfmOptions options) : options_(options) { options_.validate(); }
@@ -151,18 +154,32 @@ CfmResult CfmModel::evaluate(const CfmParameters& p) const {
   // at the end of the stroke.
   std::array<std::array<double, 3>, 3> ratio_min;
   for (auto& row : ratio_min) row.fill(std::numeric_limits<double>::infinity());
+  // Only pairs of distinct sprung pivots: a pin is never primary nor subject to a ratio.
+  std::array<std::pair<int, int>, 6> pairs{};
+  int pair_count = 0;
+  for (int j = 0; j < 3; ++j) {
+    for (int i = 0; i < 3; ++i) {
+      if (i != j && r.kappa[i] > 0.0 && r.kappa[j] > 0.0) pairs[pair_count++] = {j, i};
+    }
+  }
   double sum = 0.0;
   double phi_min = std::numeric_limits<double>::infinity();
   double phi_max = -std::numeric_limits<double>::infinity();
   SliderCrankPose pose;
-  for (long k = 0; k < count; ++k) {
+  long evaluated = 0;
+  const long stride = options_.stride;
+  long k_prev = 0;  // stride > 1: the previous evaluated point
+  double u_prev = 0.0, phi_prev = 0.0;
+  // k runs over 0, stride, 2 stride, ... and always ends on count - 1 (the end of the stroke).
+  for (long k = 0; k < count; k = (k + 1 == count || k + stride < count) ? k + stride : count - 1) {
+    ++evaluated;
     // The last point is exactly the (clamped) stroke, as the thesis code forces it.
     const double u = k + 1 == count ? d : u0 + static_cast<double>(k) * step;
     pose = slider_crank_pose(p.R, u);
     const double phi = force_function_phi(p.R, r.K1, r.K2, reference_k2, pose);
     if (!std::isfinite(phi)) {
       r.set_converged(false);
-      r.iterations = static_cast<int>(k + 1);
+      r.iterations = static_cast<int>(evaluated);
       r.message = fmt::format(
           "Phi is not finite at stroke {:.6g} % (theta2 = {:.6g}, theta3 = "
           "{:.6g}); the slider-crank is singular there",
@@ -171,21 +188,36 @@ CfmResult CfmModel::evaluate(const CfmParameters& p) const {
           pose.theta3);
       return r;
     }
-    sum += phi;
+    if (stride == 1) {
+      sum += phi;
+    } else {
+      // The stroke points skipped since the previous evaluated one (indices k_prev .. k - 1, the
+      // previous one included) enter the mean through the straight line between the two: the
+      // mean then stands for the full sampling's to O((stride step)^2), not O(stride step).
+      if (evaluated > 1) {
+        const double skipped = static_cast<double>(k - k_prev);
+        const double slope = (phi - phi_prev) / (u - u_prev);
+        sum += skipped * phi_prev + slope * step * skipped * (skipped - 1.0) / 2.0;
+      }
+      if (k + 1 == count) sum += phi;
+      k_prev = k;
+      u_prev = u;
+      phi_prev = phi;
+    }
     phi_min = std::min(phi_min, phi);
     phi_max = std::max(phi_max, phi);
     r.residual = std::max(r.residual, loop_closure_residual(p.R, pose));
     const std::array<double, 3> alpha = {
         r.kappa[0] * pose.psi1(), r.kappa[1] * pose.psi2(), r.kappa[2] * pose.psi3()};
-    for (int j = 0; j < 3; ++j) {
-      for (int i = 0; i < 3; ++i) {
-        if (alpha[i] > 0.0) ratio_min[j][i] = std::min(ratio_min[j][i], alpha[j] / alpha[i]);
-      }
+    for (int k = 0; k < pair_count; ++k) {
+      const auto [j, i] = pairs[k];
+      if (alpha[i] > 0.0) ratio_min[j][i] = std::min(ratio_min[j][i], alpha[j] / alpha[i]);
     }
     if (options_.keep_curve) r.curve.push_back({100.0 * u, pose.theta2, pose.theta3, phi});
   }
-  r.iterations = static_cast<int>(count);
-  r.Phi = sum / static_cast<double>(count);  // thesis `average_phi`, Howell "average of Phi"
+  r.iterations = static_cast<int>(evaluated);
+  // Thesis `average_phi`, Howell "average of Phi" (with a stride, over all `count` points).
+  r.Phi = sum / static_cast<double>(stride == 1 ? evaluated : count);
   r.Phi_min = phi_min;
   r.Phi_max = phi_max;
   r.Xi = phi_max / phi_min;                              // eq. 2.17
@@ -212,6 +244,7 @@ CfmResult CfmModel::evaluate(const CfmParameters& p) const {
     r.primary_pivot = stress[1] > stress[2] ? 2 : 3;
   }
   const int pp = r.primary_pivot - 1;
+  r.alpha_ratio_min = ratio_min;
   // Eq. 5.19: Psi = beta kappa_p (1/alpha_p)^3/(lambda kappa_ref K_{p-1}) at the end of stroke.
   r.Psi_raw =
       r.beta * r.kappa[pp] / std::pow(r.alpha_end[pp], 3) / (r.lambda * r.kappa[ref] * K_prev[pp]);

@@ -43,7 +43,14 @@ enum class StrokeSampling {
 
 struct CfmOptions {
   StrokeSampling sampling = StrokeSampling::kThesisCode;  // see StrokeSampling
-  int points = 50;          // number of points for kUniform (>= 1); ignored by kThesisCode
+  int points = 50;  // number of points for kUniform (>= 1); ignored by kThesisCode
+  // Evaluate only every stride-th point of the sampling (the 1st, 1 + stride-th, ...) and its
+  // last point: a subset of the full sampling with the same first and last points, so its
+  // Phi_min/Phi_max lie inside the full sampling's and its Xi' and C are never below them; the
+  // mean Phi counts the points in between on straight lines, which keeps it within
+  // O((stride step)^2) of the full sampling's. For the coarse phase of a synthesis
+  // (mechanisms/design/cfm_synthesis.h); 1 = every point.
+  int stride = 1;
   bool keep_curve = false;  // fill CfmResult::curve (costs one allocation)
 
   // Throws InvalidInput naming the first field outside its range.
@@ -92,6 +99,11 @@ struct CfmResult : SolveStatus {
   std::array<std::optional<double>, 3> C;
   std::array<std::optional<double>, 3> D_equal;
   std::array<std::optional<double>, 3> D_min;
+  // min over the sampled stroke of alpha_j/alpha_i for every pair (j, i) of distinct sprung
+  // pivots (+inf on the diagonal, for a pin, and where alpha_i is never positive): C_i is
+  // alpha_ratio_min[p - 1][i]. A synthesis asks what C would be were another pivot the primary
+  // one (mechanisms/design/cfm_design_problem.h).
+  std::array<std::array<double, 3>, 3> alpha_ratio_min{};
   double d_N_max = 0.0;  // normal displacement of pivot 2 at the end of the stroke, % r_tot
                          // (eq. 5.45)
   std::vector<CfmCurvePoint> curve;  // only with CfmOptions::keep_curve

@@ -20,11 +20,13 @@ SliderCrankPose slider_crank_pose(double R, double u) {
   // Eq. 2.2, principal branch; the clamp only absorbs rounding at the toggle position itself.
   const double sin_theta3 = std::clamp(-std::sin(pose.theta2) / R, -1.0, 1.0);
   pose.theta3 = std::asin(sin_theta3);
+  pose.cos_theta2 = std::cos(pose.theta2);
+  pose.cos_theta3 = std::cos(pose.theta3);
   return pose;
 }
 
 double loop_closure_residual(double R, const SliderCrankPose& pose) {
-  return std::abs(pose.r1 - (std::cos(pose.theta2) + R * std::cos(pose.theta3)));
+  return std::abs(pose.r1 - (pose.cos_theta2 + R * pose.cos_theta3));
 }
 
 double toggle_stroke_percent(double R) {
@@ -34,8 +36,8 @@ double toggle_stroke_percent(double R) {
 
 double force_function_phi(
     double R, double K1, double K2, bool reference_k2, const SliderCrankPose& pose) {
-  const double c2 = std::cos(pose.theta2);
-  const double c3 = std::cos(pose.theta3);
+  const double c2 = pose.cos_theta2;
+  const double c3 = pose.cos_theta3;
   const double ground = reference_k2 ? 0.0 : pose.psi1();  // eq. 2.19 drops the k1 term
   const double middle = K1 * pose.psi2();
   const double slider = K2 * pose.psi3();

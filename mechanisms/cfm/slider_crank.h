@@ -18,6 +18,10 @@ struct SliderCrankPose {
   double r1 = 0.0;      // ground-to-slider distance / r2 (eq. 2.15)
   double theta2 = 0.0;  // crank angle (eq. 2.1), 0 <= theta2 <= pi/2 on the valid branch
   double theta3 = 0.0;  // principal coupler angle theta3p (eq. 2.2), -pi/2 <= theta3 <= 0
+  // cos(theta2) and cos(theta3), computed once here: the force function (eq. 2.14) and the loop
+  // closure (eq. 2.3) both need them, and cos was a third of a thesis-sampled stroke's time.
+  double cos_theta2 = 1.0;
+  double cos_theta3 = 1.0;
   // Spring rotations at pivots 1 (ground), 2 (middle), 3 (slider); zero when straight.
   double psi1() const { return theta2; }
   double psi2() const { return theta2 - theta3; }

@@ -107,6 +107,14 @@ void CfmDesignProblem::validate() const {
   };
   check_fixed(fixed_K1, 2, "K1");
   check_fixed(fixed_K2, 3, "K2");
+  const OrientationLimits& l = orientation_limits;
+  if (!(l.I_D_min_max > 0.0 && l.C_min > 0.0 && l.O_D_equal.lower > 0.0 &&
+        l.O_D_equal.lower <= l.O_D_equal.upper && l.o_D_equal.lower > 0.0 &&
+        l.o_D_equal.lower <= l.o_D_equal.upper && std::isfinite(l.I_D_min_max) &&
+        std::isfinite(l.C_min) && std::isfinite(l.O_D_equal.upper) &&
+        std::isfinite(l.o_D_equal.upper))) {
+    throw InvalidInput("orientation limits must be finite and positive with lower <= upper");
+  }
   model.validate();
 }
 
@@ -134,10 +142,90 @@ cfm::CfmParameters parameters_at(const CfmDesignProblem& problem, const std::vec
   return p;
 }
 
+double ConstraintValue::normalised_violation() const {
+  switch (kind) {
+    case ConstraintKind::kRatio: {
+      // Ratios are positive; a zero (a flexure that never bends against the primary one) is far
+      // from any bound but must stay finite for the optimiser.
+      const double v = std::log(std::max(value, 1e-300) / bound);
+      return upper ? v : -v;
+    }
+    case ConstraintKind::kPcf:
+      return violation() / std::max(100.0 - bound, 1e-3);
+    case ConstraintKind::kToggle:
+      break;
+  }
+  return violation();
+}
+
 bool CfmDesignEvaluation::feasible() const {
   return std::all_of(constraints.begin(), constraints.end(), [](const NamedConstraint& c) {
     return c.satisfied();
   });
+}
+
+double objective_value(const CfmDesignProblem& problem, const cfm::CfmResult& r) {
+  switch (problem.objective) {
+    case DesignObjective::kMinXi:
+      return r.Xi;
+    case DesignObjective::kMaxPcf:
+      return r.percent_constant_force;
+    case DesignObjective::kMaxPsi:
+      return r.Psi_raw;
+    case DesignObjective::kMinDn:
+      return r.d_N_max;
+  }
+  return r.Xi;
+}
+
+OrientationRatios orientation_ratios(const cfm::CfmResult& r, int primary) {
+  OrientationRatios o;
+  if (primary == r.primary_pivot) {
+    o.C = r.C;
+    o.D_equal = r.D_equal;
+    o.D_min = r.D_min;
+    return o;
+  }
+  // As cfm_model.cpp computes them for the primary pivot p (eqs. 5.35, 5.36).
+  const int p = primary - 1;
+  const std::array<double, 3> K_prev = {1.0, r.K1, r.K2};
+  for (int i = 0; i < 3; ++i) {
+    if (r.kappa[i] <= 0.0) continue;
+    o.C[i] = i == p ? 1.0 : r.alpha_ratio_min[p][i];
+    o.D_equal[i] = K_prev[i] * r.kappa[p] / (K_prev[p] * r.kappa[i]);
+    o.D_min[i] = *o.D_equal[i] / std::pow(*o.C[i], 3);
+  }
+  return o;
+}
+
+void constraint_values(const CfmDesignProblem& problem,
+                       const cfm::CfmResult& r,
+                       int primary,
+                       std::vector<ConstraintValue>& out) {
+  out.clear();
+  // The stroke ends before the toggle position (the model would clamp it: eq. 2.16).
+  out.push_back({problem.stroke_percent, r.toggle_stroke_percent, true, ConstraintKind::kToggle});
+  if (problem.pcf_min) {
+    out.push_back({r.percent_constant_force, *problem.pcf_min, false, ConstraintKind::kPcf});
+  }
+  if (problem.orientation.empty()) return;
+  const OrientationLimits& limits = problem.orientation_limits;
+  const OrientationRatios o = orientation_ratios(r, primary);
+  // Orientation rules (Table 5.4, eqs. 6.10-6.11) on every pivot; a pin or the primary pivot
+  // meets them (C = D = 1 there, or no flexure), so the constraint count stays fixed.
+  const auto value = [](const std::optional<double>& v) { return v.value_or(1.0); };
+  for (int i = 0; i < 3; ++i) {
+    for (char f : problem.orientation) {
+      if (f == 'I') {
+        out.push_back({value(o.D_min[i]), limits.I_D_min_max, true, ConstraintKind::kRatio});
+      } else {
+        const Bounds& D = f == 'O' ? limits.O_D_equal : limits.o_D_equal;
+        out.push_back({value(o.C[i]), limits.C_min, false, ConstraintKind::kRatio});
+        out.push_back({value(o.D_equal[i]), D.lower, false, ConstraintKind::kRatio});
+        out.push_back({value(o.D_equal[i]), D.upper, true, ConstraintKind::kRatio});
+      }
+    }
+  }
 }
 
 CfmDesignEvaluation evaluate_design(const CfmDesignProblem& problem,
@@ -145,53 +233,32 @@ CfmDesignEvaluation evaluate_design(const CfmDesignProblem& problem,
                                     const std::vector<double>& x) {
   CfmDesignEvaluation e;
   e.result = model.evaluate(parameters_at(problem, x));
-  const cfm::CfmResult& r = e.result;
-  switch (problem.objective) {
-    case DesignObjective::kMinXi:
-      e.objective = r.Xi;
-      break;
-    case DesignObjective::kMaxPcf:
-      e.objective = r.percent_constant_force;
-      break;
-    case DesignObjective::kMaxPsi:
-      e.objective = r.Psi_raw;
-      break;
-    case DesignObjective::kMinDn:
-      e.objective = r.d_N_max;
-      break;
-  }
-  // The stroke ends before the toggle position (the model would clamp it: eq. 2.16).
-  e.constraints.push_back({"stroke <= toggle stroke (eq. 2.16)",
-                           problem.stroke_percent,
-                           r.toggle_stroke_percent,
-                           true});
-  if (problem.pcf_min) {
-    e.constraints.push_back({fmt::format("Xi' >= {:g} (eq. 6.8)", *problem.pcf_min),
-                             r.percent_constant_force,
-                             *problem.pcf_min,
-                             false});
-  }
-  // Orientation rules (Table 5.4, eqs. 6.10-6.11) on every pivot; a pin or the primary pivot
-  // meets them (C = D = 1 there, or no flexure), so the constraint count stays fixed.
-  for (int i = 0; i < 3; ++i) {
-    const auto value = [&](const std::optional<double>& v) { return v.value_or(1.0); };
+  e.objective = objective_value(problem, e.result);
+  std::vector<ConstraintValue> values;
+  constraint_values(problem, e.result, e.result.primary_pivot, values);
+  // The names, in constraint_values' order.
+  std::vector<std::string> names{"stroke <= toggle stroke (eq. 2.16)"};
+  if (problem.pcf_min) names.push_back(fmt::format("Xi' >= {:g} (eq. 6.8)", *problem.pcf_min));
+  const OrientationLimits& limits = problem.orientation_limits;
+  for (int i = 0; !problem.orientation.empty() && i < 3; ++i) {
     const std::string pivot = fmt::format("pivot {}", i + 1);
     for (char f : problem.orientation) {
       if (f == 'I') {
-        e.constraints.push_back({pivot + " I: D_min <= 1", value(r.D_min[i]), 1.0, true});
+        names.push_back(fmt::format("{} I: D_min <= {:g}", pivot, limits.I_D_min_max));
       } else {
-        const double D_low = f == 'O' ? 0.5 : 0.1, D_high = f == 'O' ? 2.0 : 10.0;
-        e.constraints.push_back({pivot + " " + f + ": C >= 1", value(r.C[i]), 1.0, false});
-        e.constraints.push_back({fmt::format("{} {}: D_equal >= {:g}", pivot, f, D_low),
-                                 value(r.D_equal[i]),
-                                 D_low,
-                                 false});
-        e.constraints.push_back({fmt::format("{} {}: D_equal <= {:g}", pivot, f, D_high),
-                                 value(r.D_equal[i]),
-                                 D_high,
-                                 true});
+        const Bounds& D = f == 'O' ? limits.O_D_equal : limits.o_D_equal;
+        names.push_back(fmt::format("{} {}: C >= {:g}", pivot, f, limits.C_min));
+        names.push_back(fmt::format("{} {}: D_equal >= {:g}", pivot, f, D.lower));
+        names.push_back(fmt::format("{} {}: D_equal <= {:g}", pivot, f, D.upper));
       }
     }
+  }
+  e.constraints.reserve(values.size());
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    NamedConstraint c;
+    static_cast<ConstraintValue&>(c) = values[k];
+    c.name = names[k];
+    e.constraints.push_back(std::move(c));
   }
   return e;
 }

@@ -10,6 +10,7 @@
 //    o (possibly out-of-plane) C >= 1 and 0.1 <= D_equal <= 10;
 //  * bounds on R, K1, K2.
 // Everything is evaluated by the PRBM model (cfm_model.h); no optimiser type appears here.
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
@@ -41,12 +42,22 @@ struct Bounds {
   double upper = 0.0;
 };
 
+// The limits of the orientation rules (Table 5.4, eqs. 6.10-6.11); the defaults are the thesis's.
+// A test may loosen one to the value a printed sub-class itself reaches (docs/errata.md).
+struct OrientationLimits {
+  double I_D_min_max = 1.0;     // I: D_min <= this
+  double C_min = 1.0;           // O and o: C >= this
+  Bounds O_D_equal{0.5, 2.0};   // O: D_equal within
+  Bounds o_D_equal{0.1, 10.0};  // o: D_equal within
+};
+
 struct CfmDesignProblem {
   std::string config;            // spp, lpp, psp, plp, ssp, slp, sps, lps, sss
   double stroke_percent = 16.0;  // d
   DesignObjective objective = DesignObjective::kMaxPcf;
   std::optional<double> pcf_min;  // Xi' >= this (required by max-psi and min-dn)
   std::string orientation;        // any of "I", "O", "o" (e.g. "IO"); empty: no rule
+  OrientationLimits orientation_limits;
   // Bounds (searched in log scale); R is further limited by the toggle interval. The thesis
   // states none; these hold every printed optimum (docs/design.md).
   Bounds R{0.05, 20.0};
@@ -67,13 +78,29 @@ struct CfmDesignProblem {
 // (the Ch. 7 tables).
 cfm::CfmOptions default_model_options(DesignObjective objective);
 
-struct NamedConstraint {
-  std::string name;  // e.g. "Xi' >= 95", "pivot 2 I: D_min <= 1"
+enum class ConstraintKind {
+  kToggle,  // stroke <= toggle stroke (held by the bounds of R)
+  kPcf,     // Xi' >= pcf_min, in percent
+  kRatio,   // a thickness or width ratio C, D_equal or D_min (positive, compared in log scale)
+};
+
+// One constraint's value at a design, without its name (what an optimiser evaluates many times).
+struct ConstraintValue {
   double value = 0.0;
   double bound = 0.0;
   bool upper = true;  // value <= bound (else value >= bound)
+  ConstraintKind kind = ConstraintKind::kToggle;
   bool satisfied() const { return upper ? value <= bound + 1e-9 : value >= bound - 1e-9; }
   double violation() const { return upper ? value - bound : bound - value; }  // <= 0: met
+  // The violation in units that compare across constraints (<= 0: met): log(value/bound) for a
+  // ratio (missing C >= 1 by 1 % counts 0.01 as missing D <= 2 by 1 % does), the shortfall of
+  // Xi' over the room the bound leaves below 100 % ((bound - Xi')/(100 - bound): 0.1 below 99
+  // weighs as 1 below 90), the plain violation otherwise.
+  double normalised_violation() const;
+};
+
+struct NamedConstraint : ConstraintValue {
+  std::string name;  // e.g. "Xi' >= 95", "pivot 2 I: D_min <= 1"
 };
 
 struct CfmDesignEvaluation {
@@ -91,5 +118,26 @@ cfm::CfmParameters parameters_at(const CfmDesignProblem& problem, const std::vec
 CfmDesignEvaluation evaluate_design(const CfmDesignProblem& problem,
                                     const cfm::CfmModel& model,
                                     const std::vector<double>& x);
+
+// The objective in the problem's sense at a model result.
+double objective_value(const CfmDesignProblem& problem, const cfm::CfmResult& result);
+
+// The thickness and width ratios C_i, D_equal_i, D_min_i (eqs. 5.31-5.36) of every flexure were
+// pivot `primary` (1..3) the primary one; those of result.primary_pivot are result.C, D_equal,
+// D_min. Empty for a pin. (The primary pivot changes across the design space, and with it the
+// flexures the orientation rules apply to: a synthesis looks at each choice on its own.)
+struct OrientationRatios {
+  std::array<std::optional<double>, 3> C;
+  std::array<std::optional<double>, 3> D_equal;
+  std::array<std::optional<double>, 3> D_min;
+};
+OrientationRatios orientation_ratios(const cfm::CfmResult& result, int primary);
+
+// The constraints' values at a model result in evaluate_design's order (its names aside), the
+// orientation rules taken relative to pivot `primary` (1..3), into `out` (resized).
+void constraint_values(const CfmDesignProblem& problem,
+                       const cfm::CfmResult& result,
+                       int primary,
+                       std::vector<ConstraintValue>& out);
 
 }  // namespace flexure::design

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "flexure/mechanisms/cfm/cfm_exact.h"
+#include "flexure/mechanisms/design/halton.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::design {
@@ -101,16 +102,6 @@ double exact_percent_constant_force(const CfmDesignProblem& problem,
 }
 
 namespace {
-
-// The i-th point of the Halton sequence in base `base`, in (0, 1).
-double halton(int i, int base) {
-  double f = 1.0, r = 0.0;
-  for (int k = i; k > 0; k /= base) {
-    f /= base;
-    r += f * (k % base);
-  }
-  return r;
-}
 
 struct LocalResult {
   std::vector<double> y;

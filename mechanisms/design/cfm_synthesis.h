@@ -1,9 +1,17 @@
 #pragma once
-// Synthesis of a constant-force mechanism's nondimensional parameters (docs/design.md): a
-// deterministic multistart of NLopt's COBYLA (derivative-free, constrained; Powell 1994) from the
-// points of a Halton sequence over the bounds in log scale, the best feasible local optimum
-// winning; for min-xi, whose max/min objective has kinks, each local run is polished by
-// Nelder-Mead inside the same bounds when no other constraint is active.
+// Synthesis of a constant-force mechanism's nondimensional parameters (docs/design.md, "The
+// optimiser"), in three deterministic steps over the variables in log scale:
+//  1. a global scan: the model at the points of a Halton sequence over the bounds;
+//  2. local runs of NLopt's COBYLA (derivative-free, constrained; Powell 1994), or Nelder-Mead
+//     where only the bounds constrain a kinked max/min objective (min-xi, max-pcf), from the
+//     scan's best distinct points, an infeasible start first brought to feasibility;
+//  3. for the thesis code's sampling (~1000 stroke points), steps 1-2 run on a subset of its
+//     points (every `coarse_stride`-th, CfmOptions::stride) and the best local optima are
+//     polished on the full sampling, which alone decides the answer.
+// With max-psi or orientation rules and two or more sprung pivots, steps 1-3 also run in each
+// region of the design space where one pivot is the primary one (Table 5.4's rules and eq. 5.19's
+// Psi jump where it changes; within a region they are smooth). The answer is the best design of
+// the full sampling met at any evaluation: feasible first, then by objective.
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,10 +22,19 @@
 namespace flexure::design {
 
 struct SynthesisOptions {
-  int starts = 0;                 // local runs; 0: 8, 16 or 32 for one, two or three variables
+  int starts = 0;       // local runs of step 2 per region; 0: 4 for two variables, else 3
+  int scan_points = 0;  // Halton points of step 1; 0: 32, 256 or 1024 by variables
+  int polish = 0;       // local optima polished on the full sampling (step 3); 0: 2
+  // Step 3's coarse sampling takes every coarse_stride-th stroke point; 1 (or a sampling of fewer
+  // than 10 coarse_stride points, such as Table 2.1's 50) runs everything on the full sampling.
+  int coarse_stride = 20;
+  // The coarse steps may ask Xi' >= pcf_min + pcf_margin (the coarse Xi' is never below the full
+  // sampling's, a subset of its points). 0: the two agree to 3e-4 points of Xi' at the 68
+  // sub-classes' optima and the polish starts with a restoration where needed.
+  double pcf_margin = 0.0;
   int max_evaluations = 2000;     // per local run
-  double xtol_rel = 1e-7;         // local stopping test on log(R), log(K)
-  unsigned long seed = 20011208;  // NLopt's random seed (the starts themselves are a sequence)
+  double xtol_rel = 1e-6;         // final stopping test: absolute on log(R), log(K), i.e. relative
+  unsigned long seed = 20011208;  // NLopt's random seed (the scan is a fixed sequence)
   void validate() const;
 };
 
@@ -25,9 +42,10 @@ struct CfmSynthesisResult : SolveStatus {
   std::vector<std::string> variables;  // the free variables, as problem.variables()
   std::vector<double> x;               // their optimum
   CfmDesignEvaluation best;            // the model at the optimum: R, K1, K2, Phi, Psi, ...
-  int evaluations = 0;                 // model evaluations in all
-  int starts = 0;                      // local runs
-  int feasible_starts = 0;             // local runs that ended feasible
+  int evaluations = 0;                 // distinct model evaluations in all (every sampling)
+  int fine_evaluations = 0;            // of them on the full (requested) sampling
+  int starts = 0;                      // local runs of step 2
+  int feasible_starts = 0;             // local runs of step 2 that ended feasible
   // The thesis sub-class (Ch. 7) of the same configuration and stroke whose R and K lie within
   // 1 % of the optimum, if any.
   std::optional<std::string> nearest_subclass;

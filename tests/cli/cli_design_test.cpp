@@ -49,13 +49,36 @@ TEST(CliDesign, ConstraintsAreReportedAndMet) {
   for (const json& c : j["constraints"]) EXPECT_TRUE(c["satisfied"].get<bool>()) << c.dump();
 }
 
+// A thesis sub-class whose printed point breaks its own rule, re-derived with that one limit
+// loosened to the printed point's value (docs/errata.md: ssp-b90o has D_equal1 = 10.35 under 'o').
+TEST(CliDesign, RuleLimitsLoosenOneBound) {
+  const json j = run_json(
+      "design cfm --config ssp --d 40 --objective max-psi --pcf-min 90 --orientation o "
+      "--rule-limits 'o:D_equal<=10.351'");
+  EXPECT_TRUE(j["converged"].get<bool>());
+  EXPECT_GE(j["Psi_raw"].get<double>(), 0.0053413 * 0.995);  // printed point's Psi_raw 0.0053413
+  bool seen = false;
+  for (const json& c : j["constraints"]) {
+    EXPECT_TRUE(c["satisfied"].get<bool>()) << c.dump();
+    if (c["name"] == "pivot 1 o: D_equal <= 10.351") seen = true;
+  }
+  EXPECT_TRUE(seen);
+  EXPECT_GT(j["seconds"].get<double>(), 0.0);
+  EXPECT_GT(j["full_sampling_evaluations"].get<int>(), 0);
+  EXPECT_LE(j["full_sampling_evaluations"].get<int>(), j["evaluations"].get<int>());
+}
+
 TEST(CliDesign, BadInputIsExitTwoWithAReason) {
-  for (const char* args : {"design cfm --config lpp --d 16 --objective max-psi",
-                           "design cfm --config lpp --d 16 --objective fastest",
-                           "design cfm --config xyz --d 16 --objective min-xi",
-                           "design cfm --config lpp --d 100 --objective min-xi",
-                           "design cfm --config lpp --d 16 --objective min-xi --K1 1",
-                           "design cfm --config lpp --d nan --objective min-xi"}) {
+  for (const char* args :
+       {"design cfm --config lpp --d 16 --objective max-psi",
+        "design cfm --config lpp --d 16 --objective fastest",
+        "design cfm --config xyz --d 16 --objective min-xi",
+        "design cfm --config lpp --d 100 --objective min-xi",
+        "design cfm --config lpp --d 16 --objective min-xi --K1 1",
+        "design cfm --config lpp --d nan --objective min-xi",
+        "design cfm --config ssp --d 16 --objective max-pcf --rule-limits 'C>=1'",
+        "design cfm --config ssp --d 16 --objective max-pcf --rule-limits 'O:C>=x'",
+        "design cfm --config ssp --d 16 --objective max-pcf --coarse-stride 0"}) {
     const CommandResult r = run_flexure(std::string(args) + " --json");
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
     const json e = json::parse(r.out);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "flexure/mechanisms/cfm/cfm_configuration.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/solver/common/errors.h"
@@ -137,6 +138,44 @@ TEST(CfmSynthesis, SameSeedSameAnswer) {
   const CfmSynthesisResult a = synthesize_cfm(p), b = synthesize_cfm(p);
   EXPECT_EQ(a.x, b.x);
   EXPECT_EQ(a.evaluations, b.evaluations);
+  // Three variables, the regions of the primary pivot, the coarse and full samplings (thesis
+  // sub-class sss-b90I): bitwise the same answer.
+  CfmDesignProblem q;
+  q.config = "sss";
+  q.stroke_percent = 40.0;
+  q.objective = DesignObjective::kMaxPsi;
+  q.pcf_min = 90.0;
+  q.orientation = "I";
+  q.model = default_model_options(q.objective);
+  const CfmSynthesisResult c = synthesize_cfm(q), d = synthesize_cfm(q);
+  EXPECT_EQ(c.x, d.x);
+  EXPECT_EQ(c.evaluations, d.evaluations);
+  EXPECT_EQ(c.fine_evaluations, d.fine_evaluations);
+  EXPECT_EQ(c.best.objective, d.best.objective);
+}
+
+// The coarse sampling (CfmOptions::stride) is a subset of the full one with its mean on straight
+// lines between the points: Xi' and C never below the full sampling's, the mean close to it.
+TEST(CfmSynthesis, StrideSamplingBracketsTheFullOne) {
+  cfm::CfmOptions coarse;
+  coarse.stride = 20;
+  const cfm::CfmModel full_model, coarse_model(coarse);
+  for (const cfm::CfmSubclass& r : cfm::thesis_subclasses()) {
+    const cfm::CfmConfiguration& c = cfm::find_cfm_configuration(r.config);
+    cfm::CfmParameters at{r.config, r.R, std::nullopt, std::nullopt, r.stroke_percent};
+    if (c.has_spring(2) && !c.is_class_1B()) at.K1 = r.K1;
+    if (c.has_spring(3)) at.K2 = r.K2;
+    const cfm::CfmResult f = full_model.evaluate(at), g = coarse_model.evaluate(at);
+    EXPECT_GE(g.percent_constant_force, f.percent_constant_force - 1e-12) << r.name;
+    EXPECT_NEAR(g.Phi, f.Phi, 1e-4 * f.Phi) << r.name;
+    EXPECT_EQ(g.primary_pivot, f.primary_pivot) << r.name;
+    EXPECT_LT(g.iterations, f.iterations / 10) << r.name;
+  }
+  cfm::CfmOptions one;
+  one.stride = 1;
+  const cfm::CfmResult a = cfm::CfmModel(one).evaluate({"sss", 2.6633, 1.0, 12.6704, 16.0});
+  const cfm::CfmResult b = full_model.evaluate({"sss", 2.6633, 1.0, 12.6704, 16.0});
+  EXPECT_EQ(a.Phi, b.Phi);  // stride 1 is the full sampling, bitwise
 }
 
 TEST(CfmSynthesis, BadProblemsAreClearErrors) {
