@@ -24,6 +24,7 @@ namespace {
 struct DesignCfmArgs {
   std::string subclass;
   std::string model = "prbm";
+  int exact_starts = -1;  // --exact-starts; -1: two per free variable
   std::string config;
   double d = 0.0;
   std::string objective;
@@ -202,7 +203,8 @@ void run_exact(const DesignCfmArgs& args,
     if (inside) starts.push_back(x);
   }
   design::ExactRefinementOptions o;
-  o.sequence_starts = static_cast<int>(4 * prbm.x.size());
+  o.sequence_starts =
+      args.exact_starts >= 0 ? args.exact_starts : static_cast<int>(2 * prbm.x.size());
   const design::CfmExactRefinement r = design::refine_cfm_exact(problem, starts, o);
   if (!r.converged()) {
     throw NoConvergenceReport(
@@ -344,6 +346,10 @@ void register_design_command(CLI::App& app) {
                   "prbm, or exact: then maximise the exact model's Xi' from the PRBM optimum, the "
                   "thesis's sub-classes and a Halton sequence, under the same constraints")
       ->default_str("prbm");
+  cfm->add_option("--exact-starts",
+                  args->exact_starts,
+                  "--model exact: local runs from a Halton sequence besides the PRBM optimum and "
+                  "the thesis's points (default: two per free variable)");
   args->pcf_min_option =
       cfm->add_option("--pcf-min", args->pcf_min, "Constraint: percent constant force Xi' >= X");
   args->orientation_option =

@@ -25,7 +25,7 @@ struct ExactRefinementOptions {
   double xtol_rel = 1e-4;     // COBYLA's stopping test on log(R), log(K)
   // Integrator steps one exact stroke may spend (ExactMechanismSolver::Options::work_budget): a
   // candidate the exact model cannot follow is given up quickly and counts as Xi' = 0.
-  double work_budget = 2e6;
+  double work_budget = 1e5;
   // Local runs from the points of a Halton sequence over the bounds (log scale), besides the
   // given starts: the exact objective has several optima where the PRBM's has one.
   int sequence_starts = 0;

@@ -432,7 +432,7 @@ DimensionedDesign refine_design_exact(const MechanismSpec& spec,
   problem.stroke_percent = prbm_design.stroke_percent;
   const std::vector<double>& start = sub.printed;
   ExactRefinementOptions o;
-  o.sequence_starts = static_cast<int>(4 * start.size());
+  o.sequence_starts = static_cast<int>(2 * start.size());
   const CfmExactRefinement r = refine_cfm_exact(problem, {start}, o);
 
   DimensionedDesign out = prbm_design;
