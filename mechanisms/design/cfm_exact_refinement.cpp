@@ -28,6 +28,8 @@ struct ExactSearch {
   std::vector<double> last_y;
   double last_pcf = 0.0;
   std::optional<CfmDesignEvaluation> last_prbm;
+  int run = 0;  // the local run under way
+  std::vector<SynthesisEvaluation> history;
 
   void evaluate(const std::vector<double>& y) {
     if (y == last_y) return;
@@ -43,6 +45,25 @@ struct ExactSearch {
     last_pcf = last_prbm
                    ? exact_percent_constant_force(problem, x, options.points, options.work_budget)
                    : 0.0;
+    // The history: the design's R, K1, K2 as the model took them (held values included).
+    SynthesisEvaluation e;
+    e.run = run;
+    e.full_sampling = false;
+    e.valid = last_prbm.has_value();
+    const cfm::CfmParameters p = parameters_at(problem, x);
+    e.R = p.R;
+    e.K1 = p.K1.value_or(0.0);
+    e.K2 = p.K2.value_or(0.0);
+    e.objective = last_pcf;
+    if (last_prbm) {
+      double worst = problem.pcf_min ? *problem.pcf_min - last_pcf : -1.0;
+      for (const NamedConstraint& c : last_prbm->constraints) {
+        worst = std::max(worst, c.violation());
+      }
+      e.max_violation = worst;
+      e.feasible = worst <= 1e-9;
+    }
+    history.push_back(e);
   }
 };
 
@@ -227,6 +248,7 @@ CfmExactRefinement refine_cfm_exact(const CfmDesignProblem& problem,
   bool best_feasible = feasible_at(out.x, out.percent_constant_force_exact);
   bool best_stopped = false;
   for (const std::vector<double>& y : ys) {
+    s.run = static_cast<int>(&y - ys.data());
     const LocalResult local = run_local(s, y, lower, upper, options);
     const std::vector<double> x = exp_of(local.y);
     const double pcf =
@@ -242,6 +264,7 @@ CfmExactRefinement refine_cfm_exact(const CfmDesignProblem& problem,
     }
   }
   out.starts = static_cast<int>(ys.size());
+  out.history = std::move(s.history);
   out.evaluations = s.evaluations;
   out.iterations = s.evaluations;
   out.prbm = evaluate_design(prbm_constraints, s.model, out.x);

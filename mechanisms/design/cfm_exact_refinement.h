@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "flexure/mechanisms/design/cfm_design_problem.h"
+#include "flexure/mechanisms/design/cfm_synthesis.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::design {
@@ -40,6 +41,9 @@ struct CfmExactRefinement : SolveStatus {
   CfmDesignEvaluation prbm;  // the PRBM model and the problem's constraints at the optimum
   int evaluations = 0;       // exact strokes
   int starts = 0;            // local runs
+  // Every exact stroke of the search in order (objective = Xi'_exact at options.points;
+  // full_sampling false; max_violation over the PRBM rules and the Xi' floor).
+  std::vector<SynthesisEvaluation> history;
   // converged(): the optimum is feasible, its exact stroke converged, and COBYLA stopped on its
   // tolerance; iterations = evaluations; residual = the largest constraint violation.
 };

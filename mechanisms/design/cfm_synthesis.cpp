@@ -136,17 +136,22 @@ class Search {
     try {
       last_.result = model_.evaluate(parameters_);
     } catch (const InvalidInput&) {
+      record(nullptr);
       return nullptr;
     }
     const cfm::CfmResult& r = last_.result;
     const double objective = objective_value(problem_, r);
-    if (!std::isfinite(objective) || !r.converged()) return nullptr;
+    if (!std::isfinite(objective) || !r.converged()) {
+      record(nullptr);
+      return nullptr;
+    }
     last_.has_view.fill(false);
     last_.objective = minimised(objective);
     if (!regions.empty()) last_.log_psi = log_psi_of(r, class_1B_);
     fill_views(last_);
     last_.run = run;
     last_valid_ = true;
+    record(&last_);
     note(last_);
     return &last_;
   }
@@ -196,14 +201,16 @@ class Search {
   std::vector<double> lower, upper;  // log bounds
   std::vector<int> regions;          // the sprung pivots (1..3) when regions are searched
   int evaluations = 0;               // distinct model evaluations
-  int run = -1;                      // the local run under way (-1: the scan)
-  int view = 0;                      // its view: 0 as posed, j in region j
-  bool log_objective = false;        // Sample::f is a log (max-psi, min-dn)
-  bool restoring = false;            // NLopt minimises the violation instead of the objective
-  bool all_views = false;            // compute every view of each sample (the scan)
-  std::optional<Sample> best;        // over every evaluation, as posed
-  std::optional<Sample> run_best;    // over the run under way, in its view
-  nlopt::opt* optimiser = nullptr;   // the local run under way
+  std::vector<SynthesisEvaluation>* history = nullptr;  // where record() appends, if anywhere
+  bool full_sampling = true;                            // for record()
+  int run = -1;                                         // the local run under way (-1: the scan)
+  int view = 0;                                         // its view: 0 as posed, j in region j
+  bool log_objective = false;                           // Sample::f is a log (max-psi, min-dn)
+  bool restoring = false;           // NLopt minimises the violation instead of the objective
+  bool all_views = false;           // compute every view of each sample (the scan)
+  std::optional<Sample> best;       // over every evaluation, as posed
+  std::optional<Sample> run_best;   // over the run under way, in its view
+  nlopt::opt* optimiser = nullptr;  // the local run under way
   std::vector<std::vector<double>> known_optima;  // the optima of the runs before, this view
   double duplicate_radius = 0.0;                  // box distance of the duplicate test
   bool duplicate = false;                         // the run under way was stopped as one
@@ -242,6 +249,25 @@ class Search {
                                       values_.end(),
                                       [](const ConstraintValue& c) { return c.satisfied(); })
                         : worst <= 0.0;
+  }
+
+  // Appends the evaluation at parameters_ to the history, if one is kept.
+  void record(Sample* s) {
+    if (history == nullptr) return;
+    SynthesisEvaluation e;
+    e.run = run;
+    e.full_sampling = full_sampling;
+    e.R = parameters_.R;
+    e.K1 = parameters_.K1.value_or(0.0);
+    e.K2 = parameters_.K2.value_or(0.0);
+    if (s != nullptr) {
+      fill_view(*s, 0);
+      e.valid = true;
+      e.objective = objective_value(problem_, s->result);
+      e.max_violation = s->violation[0];
+      e.feasible = s->feasible[0];
+    }
+    history->push_back(e);
   }
 
   void note(const Sample& s) {
@@ -504,6 +530,11 @@ CfmSynthesisResult synthesize_cfm(const CfmDesignProblem& problem,
   Search fine(problem, full, lower, upper, regions, 0.0);
   Search coarse(problem, coarse_options, lower, upper, regions, options.pcf_margin);
   Search& global = two_phase ? coarse : fine;
+  coarse.full_sampling = false;
+  if (options.record_history) {
+    fine.history = &out.history;
+    coarse.history = &out.history;
+  }
 
   // One NLopt constraint per rule and pivot (cfm_design_problem.cpp), a count fixed by the
   // problem; the toggle limit is in the bounds of R.

@@ -35,17 +35,31 @@ struct SynthesisOptions {
   int max_evaluations = 2000;     // per local run
   double xtol_rel = 1e-6;         // final stopping test: absolute on log(R), log(K), i.e. relative
   unsigned long seed = 20011208;  // NLopt's random seed (the scan is a fixed sequence)
+  bool record_history = false;    // fill CfmSynthesisResult::history (`design cfm --out`)
   void validate() const;
 };
 
+// One distinct model evaluation of a synthesis, in the order they were made (the convergence
+// history `flexure design cfm --out` writes).
+struct SynthesisEvaluation {
+  int run = -1;               // local run (-1: the global scan)
+  bool full_sampling = true;  // the requested stroke sampling (else the coarse one of step 2)
+  bool valid = false;         // the model accepted the point
+  double R = 0.0, K1 = 0.0, K2 = 0.0;
+  double objective = 0.0;      // in the problem's sense (0 where not valid)
+  double max_violation = 0.0;  // largest normalised constraint violation as posed (<= 0: met)
+  bool feasible = false;
+};
+
 struct CfmSynthesisResult : SolveStatus {
-  std::vector<std::string> variables;  // the free variables, as problem.variables()
-  std::vector<double> x;               // their optimum
-  CfmDesignEvaluation best;            // the model at the optimum: R, K1, K2, Phi, Psi, ...
-  int evaluations = 0;                 // distinct model evaluations in all (every sampling)
-  int fine_evaluations = 0;            // of them on the full (requested) sampling
-  int starts = 0;                      // local runs of step 2
-  int feasible_starts = 0;             // local runs of step 2 that ended feasible
+  std::vector<std::string> variables;        // the free variables, as problem.variables()
+  std::vector<double> x;                     // their optimum
+  CfmDesignEvaluation best;                  // the model at the optimum: R, K1, K2, Phi, Psi, ...
+  int evaluations = 0;                       // distinct model evaluations in all (every sampling)
+  int fine_evaluations = 0;                  // of them on the full (requested) sampling
+  int starts = 0;                            // local runs of step 2
+  int feasible_starts = 0;                   // local runs of step 2 that ended feasible
+  std::vector<SynthesisEvaluation> history;  // with SynthesisOptions::record_history
   // The thesis sub-class (Ch. 7) of the same configuration and stroke whose R and K lie within
   // 1 % of the optimum, if any.
   std::optional<std::string> nearest_subclass;

@@ -2,12 +2,19 @@
 from . import _command
 
 
-def cfm(*, config, d, objective, pcf_min=None, orientation=None, rule_limits=None, K1=None,
-        K2=None, sampling=None, points=None, starts=None, scan_points=None, coarse_stride=None,
-        seed=None):
+def cfm(*, config=None, d=None, objective=None, subclass=None, pcf_min=None, orientation=None,
+        rule_limits=None, K1=None, K2=None, sampling=None, points=None, starts=None,
+        scan_points=None, coarse_stride=None, seed=None, model=None, exact_starts=None,
+        out=None):
     """Synthesis of R, K1, K2 for an objective under the thesis's constraints: `flexure design cfm`.
 
-    config     'spp', 'lpp', 'psp', 'plp', 'ssp', 'slp', 'sps', 'lps' or 'sss'
+    config     'spp', 'lpp', 'psp', 'plp', 'ssp', 'slp', 'sps', 'lps' or 'sss' (config, d and
+               objective are required unless subclass is given)
+    subclass   a thesis sub-class's own problem instead, e.g. 'lps-b95I'
+    model      'prbm' or 'exact': maximise the exact model's Xi' from the PRBM optimum
+               (keys percent_constant_force_exact, prbm_optimum, exact_evaluations)
+    exact_starts  Halton starts of the exact search (default two per variable)
+    out        a path: the convergence history as HDF5 (docs/hdf5-schema.md)
     d          design stroke, % of r2 + r3 (0 < d < 100); R stays inside its toggle interval
     objective  'min-xi' (Xi = Phi_max/Phi_min, Table 2.1), 'max-pcf' (Xi', %), 'max-psi' (the
                stiffness parameter Psi) or 'min-dn' (d_N,max, % r_tot); the last two need pcf_min
@@ -30,11 +37,12 @@ def cfm(*, config, d, objective, pcf_min=None, orientation=None, rule_limits=Non
       0.8858...
     """
     return _command.run(["design", "cfm"], dict(config=config, d=d, objective=objective,
-                                                pcf_min=pcf_min, orientation=orientation,
-                                                rule_limits=rule_limits, K1=K1, K2=K2,
-                                                sampling=sampling, points=points,
+                                                subclass=subclass, pcf_min=pcf_min,
+                                                orientation=orientation, rule_limits=rule_limits,
+                                                K1=K1, K2=K2, sampling=sampling, points=points,
                                                 starts=starts, scan_points=scan_points,
-                                                coarse_stride=coarse_stride, seed=seed))
+                                                coarse_stride=coarse_stride, seed=seed,
+                                                model=model, exact_starts=exact_starts, out=out))
 
 
 def _range(keyword, value):

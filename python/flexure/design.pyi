@@ -2,9 +2,10 @@ from typing import Any
 
 def cfm(
     *,
-    config: str,
-    d: float,
-    objective: str,
+    config: str | None = ...,
+    d: float | None = ...,
+    objective: str | None = ...,
+    subclass: str | None = ...,
     pcf_min: float | None = ...,
     orientation: str | None = ...,
     rule_limits: str | None = ...,
@@ -16,6 +17,9 @@ def cfm(
     scan_points: int | None = ...,
     coarse_stride: int | None = ...,
     seed: int | None = ...,
+    model: str | None = ...,
+    exact_starts: int | None = ...,
+    out: str | None = ...,
 ) -> dict[str, Any]: ...
 
 def mechanism(

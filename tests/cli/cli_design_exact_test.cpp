@@ -4,8 +4,10 @@
 // sub-class's own problem is read from its name.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "tests/support/cli_test_support.h"
 
@@ -40,6 +42,37 @@ TEST(CliDesignExact, SubclassReadsItsOwnProblem) {
   // Re-derived no worse than printed (Psi_raw; Ch. 7 prints Psi = Psi_raw/0.1032 at 40 %).
   const json printed = json::parse(run_flexure("cfm --subclass lps-b95I --json").out);
   EXPECT_GE(j["Psi_raw"].get<double>(), 0.995 * printed["Psi_raw"].get<double>());
+}
+
+// --out: the convergence history. Every distinct model evaluation is a row; the best feasible
+// row on the full sampling is the reported optimum; with --model exact every exact stroke too.
+TEST(CliDesignExact, OutWritesTheConvergenceHistory) {
+  ScratchDir dir;
+  const std::string path = (dir / "run.h5").string();
+  const CommandResult r =
+      run_flexure("design cfm --subclass lps-b95I --model exact --json --out " + path);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  const hid_t file = open_read_only(path);
+  ASSERT_GE(file, 0);
+  const std::vector<double> objective = read_doubles(file, "/history/objective");
+  const std::vector<int> feasible = read_ints(file, "/history/feasible");
+  const std::vector<int> full = read_ints(file, "/history/full_sampling");
+  EXPECT_EQ(static_cast<long>(objective.size()), j["evaluations"].get<long>());
+  double best = -1.0;
+  for (std::size_t k = 0; k < objective.size(); ++k) {
+    if (feasible[k] && full[k]) best = std::max(best, objective[k]);
+  }
+  EXPECT_NEAR(best, j["prbm_optimum"]["objective_value"].get<double>(), 1e-12);
+  EXPECT_EQ(static_cast<long>(read_doubles(file, "/exact_history/objective").size()),
+            j["exact_evaluations"].get<long>());
+  EXPECT_EQ(read_string_attribute(file, "/", "config"), "lps");
+  EXPECT_NEAR(read_double_attribute(file, "/", "R"), j["prbm_optimum"]["R"].get<double>(), 0.0);
+  H5Fclose(file);
+  // A path that cannot be written fails before the search, and nothing is left behind.
+  const CommandResult bad =
+      run_flexure("design cfm --subclass lpp-a --out " + (dir / "no/such/dir/run.h5").string());
+  EXPECT_EQ(bad.exit_code, 2) << bad.err;
 }
 
 TEST(CliDesignExact, BadCombinationsAreExitTwo) {

@@ -173,3 +173,10 @@ def test_design_mechanism(cli):
                                   exact=False)
     assert abs(si["designs"][0]["thicknesses"][0] - got["designs"][0]["thicknesses"][0]) < 1e-12
     assert si["designs"][0]["force_exact"] is None
+
+
+def test_design_cfm_exact(cli):
+    got = flexure.design.cfm(subclass="lpp-b", model="exact")
+    assert got["percent_constant_force_exact"] > 96.0
+    assert_same(got, cli.json("design", "cfm", "--subclass", "lpp-b", "--model", "exact"),
+                skip=("seconds",))
