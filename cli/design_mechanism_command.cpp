@@ -58,8 +58,10 @@ design::MechanismSpec make_spec(const DesignMechanismArgs& a, mechanism::ForceOf
   require_finite_input(a.safety_factor, "--safety-factor");
   s.safety_factor = a.safety_factor;
   s.length = range_of(a.length_range, "--length-range");
-  s.width = range_of(a.width_range, "--width-range");
-  s.thickness = range_of(a.thickness_range, "--thickness-range");
+  s.width = a.width_range.empty() ? design::MechanismSpec::free_range()
+                                  : range_of(a.width_range, "--width-range");
+  s.thickness = a.thickness_range.empty() ? design::MechanismSpec::free_range()
+                                          : range_of(a.thickness_range, "--thickness-range");
   if (a.in_plane && a.out_of_plane) {
     throw InvalidInput("--in-plane and --out-of-plane exclude each other; give one or neither");
   }
@@ -306,9 +308,14 @@ void register_design_mechanism_command(CLI::App& app) {
                   a->length_range,
                   "Total link length l_tot of one half, A:B or one value, e.g. 12in:15in")
       ->required();
-  cmd->add_option("--width-range", a->width_range, "Flexure width b, A:B or one value")->required();
-  cmd->add_option("--thickness-range", a->thickness_range, "Flexure thickness h, A:B or one value")
-      ->required();
+  cmd->add_option("--width-range",
+                  a->width_range,
+                  "Flexure width b, A:B or one value (default free: from the force at the "
+                  "thickest flexure the stress and the thickness range allow)");
+  cmd->add_option("--thickness-range",
+                  a->thickness_range,
+                  "Flexure thickness h, A:B or one value (default free: from the force at the "
+                  "widest flexure)");
   cmd->add_flag("--in-plane",
                 a->in_plane,
                 "Flexures of equal width (sub-classes with flag I; one-flexure classes always)");

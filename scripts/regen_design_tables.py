@@ -135,7 +135,7 @@ EXAMPLE_1 = ["--force", "25lbf", "--stroke", "4in", "--E", "30Msi", "--safety-fa
              "--length-range", "12in:15in", "--width-range", "3in:5in",
              "--thickness-range", "0.04in:0.07in", "--config", "lpp"]
 EXAMPLE_2 = ["--force", "3mN", "--stroke", "7.5mm", "--E", "110GPa", "--yield-strength", "552MPa",
-             "--safety-factor", "1.1", "--length-range", "150mm", "--width-range", "1mm:20mm",
+             "--safety-factor", "1.1", "--length-range", "150mm",
              "--thickness-range", "1.5mm:2mm", "--pcf-min", "90", "--in-plane", "--config", "sss"]
 EXAMPLE_3 = ["--force", "100lbf", "--stroke", "6in", "--E", "30Msi", "--yield-strength", "200ksi",
              "--safety-factor", "1", "--length-range", "24in", "--width-range", "5in"]

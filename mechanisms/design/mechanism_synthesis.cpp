@@ -29,7 +29,9 @@ void check_positive(double v, const char* what) {
   }
 }
 
-void check_range(const LengthRange& r, const char* what) {
+// `free_allowed`: [0, inf] stands for "not given" (MechanismSpec::free_range()).
+void check_range(const LengthRange& r, const char* what, bool free_allowed = false) {
+  if (free_allowed && r.lower == 0.0 && std::isinf(r.upper)) return;
   check_positive(r.lower, what);
   check_positive(r.upper, what);
   if (r.lower > r.upper) {
@@ -105,7 +107,7 @@ DimensionedDesign size_subclass(const MechanismSpec& spec, const cfm::CfmSubclas
   }
   // Method 1 per sub-class (eqs. 8.5, 8.17): even the thinnest primary flexure at the longest
   // length (the least stressed design) must stay below S_y/SF.
-  if (spec.yield_strength) {
+  if (spec.yield_strength && spec.thickness.lower > 0.0) {
     const double omega = *spec.yield_strength / E;
     const double l_max = spec.length.upper, h_min = spec.thickness.lower;
     const double d_max = stroke_percent_for(spec.stroke, l_max, lambda);
@@ -129,9 +131,27 @@ DimensionedDesign size_subclass(const MechanismSpec& spec, const cfm::CfmSubclas
       return out;
     }
   }
-  // Longest length, widest primary flexure; the thickness from the force (eq. 8.2).
+  // Longest length, widest primary flexure; the thickness from the force (eq. 8.2). With the
+  // width free, the thickest flexure the stress (eq. 8.5) and the thickness range allow, and the
+  // width from the force (thesis example 2, eq. 8.19).
   double l = spec.length.upper, b = spec.width.upper;
-  double h = thickness_for_force(fc, F, E, b, l);
+  double h = 0.0;
+  if (std::isinf(b)) {
+    h = spec.thickness.upper;
+    if (spec.yield_strength) {
+      h = std::min(h,
+                   max_primary_thickness(*spec.yield_strength / E,
+                                         spec.safety_factor,
+                                         lambda,
+                                         out.M,
+                                         out.n,
+                                         stroke_percent_for(spec.stroke, l, lambda),
+                                         l));
+    }
+    b = width_for_force(fc, F, E, h, l);
+  } else {
+    h = thickness_for_force(fc, F, E, b, l);
+  }
   if (h < spec.thickness.lower * (1.0 - kSlack)) {
     h = spec.thickness.lower;
     b = width_for_force(fc, F, E, h, l);
@@ -325,8 +345,13 @@ void MechanismSpec::validate() const {
   if (yield_strength) check_positive(*yield_strength, "yield strength");
   check_positive(safety_factor, "safety factor");
   check_range(length, "length range");
-  check_range(width, "width range");
-  check_range(thickness, "thickness range");
+  check_range(width, "width range", true);
+  check_range(thickness, "thickness range", true);
+  if (std::isinf(width.upper) && std::isinf(thickness.upper) && !yield_strength) {
+    throw InvalidInput(
+        "with the width free, the thickness needs a bound: give --width-range, "
+        "--thickness-range or --yield-strength");
+  }
   if (pcf_min && !(*pcf_min > 0.0 && *pcf_min < 100.0)) {
     throw InvalidInput(fmt::format("pcf-min = {} must lie in (0, 100)", *pcf_min));
   }
@@ -356,20 +381,25 @@ DesignScreens design_screens(const MechanismSpec& spec) {
   if (!spec.yield_strength) return s;
   s.omega = *spec.yield_strength / spec.E;  // eq. 4.18
   constexpr double kScreenExponent = 0.5;   // n of the thesis's screens (Table 8.2, ex. 2, 3)
-  s.M_max = stress_screen_M(s.omega,
-                            spec.safety_factor,
-                            lambda_low,
-                            kScreenExponent,
-                            spec.thickness.lower,
-                            s.stroke_percent_min,
-                            spec.length.upper);
-  s.M_min = stress_screen_M(s.omega,
-                            spec.safety_factor,
-                            lambda_high,
-                            kScreenExponent,
-                            spec.thickness.upper,
-                            s.stroke_percent_max,
-                            spec.length.lower);
+  if (spec.thickness.lower > 0.0) {
+    s.M_max = stress_screen_M(s.omega,
+                              spec.safety_factor,
+                              lambda_low,
+                              kScreenExponent,
+                              spec.thickness.lower,
+                              s.stroke_percent_min,
+                              spec.length.upper);
+  }
+  if (std::isfinite(spec.thickness.upper)) {
+    s.M_min = stress_screen_M(s.omega,
+                              spec.safety_factor,
+                              lambda_high,
+                              kScreenExponent,
+                              spec.thickness.upper,
+                              s.stroke_percent_max,
+                              spec.length.lower);
+  }
+  if (std::isinf(spec.width.upper)) return s;  // Method 2 needs the widest flexure
   // Method 2: the strongest lpp of the same design stroke at the longest, widest, thickest
   // section that the stress allows.
   const double d_lpp = stroke_percent_for(spec.stroke, spec.length.upper, 1.0);

@@ -13,6 +13,7 @@
 // from eq. 8.2; below h_min the width shrinks instead (h_p = h_min); above h_max the length does
 // (h_p = h_max).
 #include <array>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,9 +45,13 @@ struct MechanismSpec {
   double E = 0.0;                        // Pa
   std::optional<double> yield_strength;  // Pa; without it the design reports what it needs
   double safety_factor = 1.0;
-  LengthRange length;     // l_tot, total length of one half's links (eq. 5.1)
-  LengthRange width;      // b of every flexure
-  LengthRange thickness;  // h of every flexure
+  LengthRange length;  // l_tot, total length of one half's links (eq. 5.1)
+  // b and h of every flexure; free_range() where the specification leaves them open (the width
+  // then follows from the force at the thickest flexure the stress and the thickness range
+  // allow; the thickness from the force at the widest flexure).
+  LengthRange width;
+  LengthRange thickness;
+  static LengthRange free_range() { return {0.0, std::numeric_limits<double>::infinity()}; }
   FlexureOrientation orientation = FlexureOrientation::kAny;
   std::optional<double> pcf_min;     // keep sub-classes with Xi' >= this (printed-model value)
   std::vector<std::string> configs;  // empty: all nine

@@ -54,8 +54,8 @@ def _range(keyword, value):
     return value
 
 
-def mechanism(*, force, stroke, E, safety_factor, length_range, width_range, thickness_range,
-              yield_strength=None, in_plane=False, out_of_plane=False, pcf_min=None, config=None,
+def mechanism(*, force, stroke, E, safety_factor, length_range, width_range=None,
+              thickness_range=None, yield_strength=None, in_plane=False, out_of_plane=False, pcf_min=None, config=None,
               rank=None, force_of=None, exact=True, model=None, points=None, out=None):
     """Dimensional design from a specification (thesis ch. 8): `flexure design mechanism`.
 
@@ -63,7 +63,7 @@ def mechanism(*, force, stroke, E, safety_factor, length_range, width_range, thi
                     '4in', '30Msi', '200ksi'); force is of one half unless force_of='whole'
     safety_factor   on the yield strength
     length_range, width_range, thickness_range   (lower, upper) or one value: l_tot of one half,
-                    flexure width b, flexure thickness h
+                    flexure width b, flexure thickness h; width and thickness may be left free
     in_plane / out_of_plane   equal widths (flag I) or equal thicknesses (flags O, o)
     pcf_min         keep sub-classes with Xi' >= pcf_min (%)
     config          a configuration or a list of them ('lpp' or ['lpp', 'lps']); default all nine

@@ -125,6 +125,27 @@ TEST(MechanismSynthesis, ExampleOneGivesTheThesisDesign) {
 
 // With a material of 150 ksi the design needs a thinner flexure than the force allows: the report
 // names the strength needed.
+// Without a thickness range the thickness follows from the force at the widest flexure: the same
+// design (its 0.04875 in lies inside Table 8.3's range). Without a width range the width follows
+// from the force at the thickest flexure the range allows.
+TEST(MechanismSynthesis, FreeRangesFollowFromTheForce) {
+  MechanismSpec spec = example_1();
+  spec.thickness = MechanismSpec::free_range();
+  const MechanismDesignReport r = design_mechanisms(spec);
+  ASSERT_FALSE(r.designs.empty());
+  EXPECT_NEAR(r.designs.front().thickness[0] / kInch, 0.04875, 0.00001);
+  spec = example_1();
+  spec.width = MechanismSpec::free_range();
+  const MechanismDesignReport w = design_mechanisms(spec);
+  ASSERT_FALSE(w.designs.empty());
+  const DimensionedDesign& d = w.designs.front();
+  EXPECT_NEAR(d.thickness[0] / kInch, 0.07, 1e-12);
+  EXPECT_NEAR(d.force_prbm / spec.force, 1.0, 0.01);
+  // Both free and no yield strength: nothing bounds the section.
+  spec.thickness = MechanismSpec::free_range();
+  EXPECT_THROW(design_mechanisms(spec), InvalidInput);
+}
+
 TEST(MechanismSynthesis, ExampleOneWithAWeakMaterialNamesTheStrengthNeeded) {
   MechanismSpec spec = example_1();
   spec.yield_strength = 150.0 * kKsi;
