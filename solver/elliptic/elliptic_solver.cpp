@@ -51,10 +51,10 @@ void unmirror(EllipticResult& r) {
 }
 
 void fill_from_parameters(EllipticResult& r) {
-  const ShapePoint tip = elliptic::evaluate_normalised(r.parameters, 1.0);
-  r.tip = {tip.x, tip.y, tip.theta};
-  r.root_moment = elliptic::root_curvature(r.parameters);
-  r.inflection_points = elliptic::count_inflection_points(r.parameters);
+  const elliptic::EndSummary ends = elliptic::end_summary(r.parameters);
+  r.tip = {ends.tip.x, ends.tip.y, ends.tip.theta};
+  r.root_moment = ends.root_moment;
+  r.inflection_points = ends.inflection_points;
 }
 
 }  // namespace
