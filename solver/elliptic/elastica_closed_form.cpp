@@ -228,6 +228,12 @@ ShapeEvaluator::ShapeEvaluator(const ElasticaParameters& parameters)
 }
 
 ShapePoint ShapeEvaluator::at(double s) const {
+  double amplitude = 0.0;
+  return at(s, amplitude);
+}
+
+ShapePoint ShapeEvaluator::at(double s, double& amplitude) const {
+  amplitude = 0.0;
   ShapePoint point;
   point.s = s;
   if (p_.family == ElasticaFamily::kStraight) {
@@ -249,6 +255,7 @@ ShapePoint ShapeEvaluator::at(double s) const {
   }
   const double u = p_.u_root + span_ * s;
   const double phi = jacobi_amplitude(u, k_);
+  amplitude = phi;
   const double d = D_over_m_at(u, phi, k_);
   const double phi0 = phi_root_;
   double chi = 0.0;
@@ -299,17 +306,48 @@ double root_curvature(const ElasticaParameters& p) {
   return 0.0;
 }
 
-int count_inflection_points(const ElasticaParameters& p) {
-  if (p.family != ElasticaFamily::kInflectional) return 0;
-  // Curvature 2k sqrt(F) cn(u) vanishes where am(u) = pi/2 + j pi, strictly inside the beam.
-  const Parameter k = parameter_of(p);
-  const double phi0 = jacobi_amplitude(p.u_root, k);
-  const double phi1 = jacobi_amplitude(p.u_tip, k);
+namespace {
+
+// Interior zeros of the curvature 2k sqrt(F) cn(u) of family A between the amplitudes at the clamp
+// and the tip: where am(u) = pi/2 + j pi, strictly inside the beam.
+int inflections_between(double phi0, double phi1) {
   // A zero within 1e-9 rad of an end (e.g. the tip of a beam with mu = 0) is not interior.
   constexpr double kEndSlack = 1e-9;
   const double j_min = std::floor((phi0 - 0.5 * kPi) / kPi + kEndSlack) + 1.0;
   const double j_max = std::ceil((phi1 - 0.5 * kPi) / kPi - kEndSlack) - 1.0;
   return std::max(0, static_cast<int>(j_max - j_min + 1.0));
+}
+
+}  // namespace
+
+int count_inflection_points(const ElasticaParameters& p) {
+  if (p.family != ElasticaFamily::kInflectional) return 0;
+  const Parameter k = parameter_of(p);
+  return inflections_between(jacobi_amplitude(p.u_root, k), jacobi_amplitude(p.u_tip, k));
+}
+
+EndSummary end_summary(const ElasticaParameters& p) {
+  EndSummary out;
+  if (p.family != ElasticaFamily::kInflectional && p.family != ElasticaFamily::kNonInflectional) {
+    out.tip = evaluate_normalised(p, 1.0);
+    out.root_moment = root_curvature(p);
+    out.inflection_points = count_inflection_points(p);
+    return out;
+  }
+  // The evaluator's amplitude at the clamp is root_curvature's; the one at s = 1 (u_root + (u_tip -
+  // u_root), within an ulp of u_tip) stands in for count_inflection_points' am(u_tip).
+  const ShapeEvaluator evaluator(p);
+  double phi_tip = 0.0;
+  out.tip = evaluator.at(1.0, phi_tip);
+  const double phi_root = evaluator.root_amplitude();
+  const Parameter k = parameter_of(p);
+  if (p.family == ElasticaFamily::kInflectional) {
+    out.root_moment = 2.0 * std::sqrt(p.modulus2 * p.force) * std::cos(phi_root);
+    out.inflection_points = inflections_between(phi_root, phi_tip);
+  } else {
+    out.root_moment = 2.0 * (p.u_tip - p.u_root) * delta_amplitude(phi_root, k);
+  }
+  return out;
 }
 
 }  // namespace elliptic

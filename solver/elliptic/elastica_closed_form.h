@@ -83,6 +83,9 @@ class ShapeEvaluator {
  public:
   explicit ShapeEvaluator(const ElasticaParameters& parameters);
   ShapePoint at(double s) const;
+  // The same, and the amplitude am(u) there (families A and B; 0 otherwise).
+  ShapePoint at(double s, double& amplitude) const;
+  double root_amplitude() const { return phi_root_; }  // am(u_root) (families A and B)
 
  private:
   ElasticaParameters p_;
@@ -99,5 +102,14 @@ ShapePoint evaluate_normalised(const ElasticaParameters& parameters, double s);
 // Curvature at the clamp (root moment) and number of interior inflection points.
 double root_curvature(const ElasticaParameters& parameters);
 int count_inflection_points(const ElasticaParameters& parameters);
+
+// The three above at once (the tip, s = 1, as evaluate_normalised gives it), from one amplitude at
+// each end instead of five: what every solve reports.
+struct EndSummary {
+  ShapePoint tip;
+  double root_moment = 0.0;
+  int inflection_points = 0;
+};
+EndSummary end_summary(const ElasticaParameters& parameters);
 
 }  // namespace flexure::elliptic

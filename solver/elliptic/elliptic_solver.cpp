@@ -9,6 +9,7 @@
 #include "flexure/solver/elliptic/elastica_closed_form.h"
 #include "flexure/solver/elliptic/howell_branch.h"
 #include "flexure/solver/elliptic/load_continuation.h"
+#include "flexure/solver/elliptic/tabulated_predictor.h"
 
 namespace flexure {
 namespace {
@@ -51,10 +52,10 @@ void unmirror(EllipticResult& r) {
 }
 
 void fill_from_parameters(EllipticResult& r) {
-  const ShapePoint tip = elliptic::evaluate_normalised(r.parameters, 1.0);
-  r.tip = {tip.x, tip.y, tip.theta};
-  r.root_moment = elliptic::root_curvature(r.parameters);
-  r.inflection_points = elliptic::count_inflection_points(r.parameters);
+  const elliptic::EndSummary ends = elliptic::end_summary(r.parameters);
+  r.tip = {ends.tip.x, ends.tip.y, ends.tip.theta};
+  r.root_moment = ends.root_moment;
+  r.inflection_points = ends.inflection_points;
 }
 
 }  // namespace
@@ -118,28 +119,49 @@ EllipticResult EllipticSolver::solve(const EndLoad& load) const {
           psi);
     }
   } else {
+    // With an end moment: the equilibrium reached by proportional loading, from the tabulated path
+    // where its guard accepts, by the continuation everywhere else.
     const double psi = std::atan2(Fy, load.Fx);
-    elliptic::ContinuationOptions copts;
-    copts.x_tolerance = options_.tolerance;
-    copts.max_steps = options_.max_continuation_steps;
-    const elliptic::ContinuationSolution c = elliptic::solve_by_continuation(force, psi, mu, copts);
-    r.iterations = c.iterations;
-    r.continuation_steps = c.steps;
-    r.residual = std::fabs(c.residual);
-    r.limit_points = c.limit_points;
-    r.first_limit_load_factor = c.first_limit_load_factor;
-    if (c.converged()) {
-      const elliptic::PendulumProblem problem = elliptic::make_pendulum_problem(force, psi, mu);
-      p = elliptic::integrate_from_tip(problem, c.tip).parameters;
+    const elliptic::PendulumProblem problem = elliptic::make_pendulum_problem(force, psi, mu);
+    elliptic::GuardedNewton fast;
+    if (options_.tabulated_predictor) {
+      fast = elliptic::solve_with_predictor(
+          elliptic::predictor_table(), load.Fx, Fy, mu, problem, options_.tolerance);
+    }
+    r.iterations = fast.evaluations;
+    if (fast.accepted) {
+      p = fast.parameters;
       p.mirrored = load.Fy < 0.0;
       fill_from_parameters(r);
+      r.residual = fast.residual;
       r.set_converged(true);
-      r.branch_kind = EllipticBranch::kProportionalContinued;
-      r.branch =
-          fmt::format("proportional loading (pseudo-arclength continuation, {} steps)", c.steps);
-      r.branch += limit_points_note(c.limit_points, c.first_limit_load_factor);
+      r.branch_kind = EllipticBranch::kProportionalTabulated;
+      r.branch = fmt::format(
+          "proportional loading (Newton from the tabulated continuation path, {} residuals)",
+          fast.evaluations);
     } else {
-      r.message = c.message;
+      elliptic::ContinuationOptions copts;
+      copts.x_tolerance = options_.tolerance;
+      copts.max_steps = options_.max_continuation_steps;
+      const elliptic::ContinuationSolution c =
+          elliptic::solve_by_continuation(force, psi, mu, copts);
+      r.iterations += c.iterations;
+      r.continuation_steps = c.steps;
+      r.residual = std::fabs(c.residual);
+      r.limit_points = c.limit_points;
+      r.first_limit_load_factor = c.first_limit_load_factor;
+      if (c.converged()) {
+        p = elliptic::integrate_from_tip(problem, c.tip).parameters;
+        p.mirrored = load.Fy < 0.0;
+        fill_from_parameters(r);
+        r.set_converged(true);
+        r.branch_kind = EllipticBranch::kProportionalContinued;
+        r.branch =
+            fmt::format("proportional loading (pseudo-arclength continuation, {} steps)", c.steps);
+        r.branch += limit_points_note(c.limit_points, c.first_limit_load_factor);
+      } else {
+        r.message = c.message;
+      }
     }
   }
   if (r.converged()) {

@@ -8,7 +8,10 @@
 //
 // Where several equilibria exist (large compressive loads, large moments) the solver returns the
 // one reached by proportional loading from the unloaded beam, found by continuation in the load
-// factor; the result says which branch it is and how many inflection points the shape has.
+// factor (on the goal domain of issue 14, n in [-5, 10], |alpha2| <= 20, |mu| <= 2 pi, mostly by a
+// guarded Newton iteration from that continuation's path, tabulated at build time:
+// tabulated_predictor.h); the result says which branch it is and how many inflection points the
+// shape has.
 #include <string>
 #include <vector>
 
@@ -26,11 +29,15 @@ enum class EllipticBranch {
   kProportionalUnique,  // mu = 0: the unique proportional-loading solution (Howell eqs. 2.90-2.98)
   kProportionalContinued,  // mu != 0: proportional loading followed by pseudo-arclength
                            // continuation
+  kProportionalTabulated,  // mu != 0 on the goal domain of issue 14: the same equilibrium, found by
+                           // Newton from the path tabulated by that continuation (tabulated
+                           // predictor, docs/theory-elliptic.md)
 };
 
 struct EllipticResult : SolveStatus {
   // message: why it stopped; names the offending quantity when it failed
-  // iterations: root-finder iterations, summed over continuation steps
+  // iterations: root-finder iterations, summed over continuation steps (with an end moment:
+  // residual evaluations, including those of a tabulated prediction the guard refused)
   int continuation_steps = 0;
   // Limit points (folds of the load factor) passed on the path from the unloaded beam; under load
   // control the beam would snap at the first, at first_limit_load_factor.
@@ -61,6 +68,11 @@ class EllipticSolver {
     double tolerance = 1e-14;  // relative tolerance on the unknown of each scalar solve
     int max_iterations = 200;  // per scalar solve
     int max_continuation_steps = 4000;
+    // With an end moment, on n in [-5, 10], |alpha2| <= 20, |mu| <= 2 pi: start from the tabulated
+    // proportional-loading path and settle the equilibrium by a guarded Newton iteration, falling
+    // back to the continuation wherever the guard refuses (docs/theory-elliptic.md, "Tabulated
+    // predictor"). false: always the continuation (the tests compare the two).
+    bool tabulated_predictor = true;
 
     // Throws InvalidInput naming the first field outside its range.
     void validate() const;
