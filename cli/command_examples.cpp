@@ -45,6 +45,10 @@ const std::vector<CommandExamples>& command_examples() {
         "flexure design mechanism --force 100lbf --stroke 6in --E 30Msi --yield-strength 200ksi "
         "--safety-factor 1 --length-range 24in --width-range 5in --thickness-range 0.01in:0.12in "
         "--json"}},
+      {{"map", "cfm"},
+       {"flexure map cfm --config lpp --R 0.5:1.5:11 --d 16:40:4 --out map.h5",
+        "flexure map cfm --config lps --R 0.5:2:16 --d 40 --K2 0.5:5:10 --model exact --out "
+        "map.h5 --json"}},
       {{"cfm"},
        {"flexure cfm --config lpp --R 1 --d 40",
         "flexure cfm --subclass lpp-b --json",

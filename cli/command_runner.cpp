@@ -23,6 +23,7 @@ void register_all_commands(CLI::App& app) {
   register_bench_command(app);
   register_design_command(app);
   register_design_mechanism_command(app);
+  register_map_command(app);
   register_help_command(app);
   add_command_examples(app);
 }

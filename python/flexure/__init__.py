@@ -11,7 +11,7 @@ the tool's warnings are FlexureWarning warnings. docs/python.md has the whole AP
     >>> flexure.beam(alpha2=2.0)["theta0"]                      # doctest: +ELLIPSIS
     0.6...
 """
-from . import _core, design, mechanism, prbm
+from . import _core, design, map, mechanism, prbm
 from ._beam import beam
 from ._command import FlexureWarning, InvalidInput, NoConvergence, run as _run
 from ._read import read
@@ -20,7 +20,7 @@ __version__ = _core.version
 git_commit = _core.git_commit
 
 __all__ = ["beam", "path", "sweep", "cfm", "dynamics", "bench", "validate", "read", "prbm",
-           "mechanism", "design", "InvalidInput", "NoConvergence", "FlexureWarning"]
+           "mechanism", "design", "map", "InvalidInput", "NoConvergence", "FlexureWarning"]
 
 
 def path(*, out, n=None, alpha2=None, mu=None, follower=None, boundary=None, tip_x=None,

@@ -6,6 +6,7 @@ import numpy as np
 import numpy.typing as npt
 
 from . import design as design
+from . import map as map
 from . import mechanism as mechanism
 from . import prbm as prbm
 

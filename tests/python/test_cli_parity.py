@@ -180,3 +180,11 @@ def test_design_cfm_exact(cli):
     assert got["percent_constant_force_exact"] > 96.0
     assert_same(got, cli.json("design", "cfm", "--subclass", "lpp-b", "--model", "exact"),
                 skip=("seconds",))
+
+
+def test_map_cfm(cli, tmp_path):
+    a, b = tmp_path / "a.h5", tmp_path / "b.h5"
+    got = flexure.map.cfm(config="lps", R="0.5:2:4", d=16, K2=1.0, out=a)
+    assert got["dims"].tolist() == [4, 1, 1, 1]
+    assert_same(got, cli.json("map", "cfm", "--config", "lps", "--R", "0.5:2:4", "--d", "16",
+                              "--K2", "1.0", "--out", b), skip=("out",))

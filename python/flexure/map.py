@@ -1,0 +1,19 @@
+"""flexure.map: design-space maps (`flexure map ...`, docs/design.md "Design-space maps")."""
+from . import _command
+
+
+def cfm(*, config, R, d, out, K1=None, K2=None, model=None, exact_points=None):
+    """The design-space map of one configuration: `flexure map cfm`.
+
+    config   'spp', 'lpp', 'psp', 'plp', 'ssp', 'slp', 'sps', 'lps' or 'sss'
+    R, d     a value or 'START:STOP:COUNT' (d in % of r2 + r3); K1, K2 likewise where the
+             configuration has those springs
+    model    'prbm' (default) or 'exact' (also the exact model at every point, exact_points each)
+    out      the HDF5 file of the map (required; read it with flexure.read)
+    Returns the summary `flexure map cfm --json` prints (dims, ok, invalid, the best Xi').
+
+    Example:
+      >>> flexure.map.cfm(config="lpp", R="0.5:1.5:11", d=40, out="map.h5")  # doctest: +SKIP
+    """
+    return _command.run(["map", "cfm"], dict(config=config, R=R, d=d, K1=K1, K2=K2, model=model,
+                                             exact_points=exact_points, out=out))

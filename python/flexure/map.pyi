@@ -1,0 +1,13 @@
+from typing import Any
+
+def cfm(
+    *,
+    config: str,
+    R: float | str,
+    d: float | str,
+    out: str,
+    K1: float | str | None = ...,
+    K2: float | str | None = ...,
+    model: str | None = ...,
+    exact_points: int | None = ...,
+) -> dict[str, Any]: ...
