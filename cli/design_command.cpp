@@ -11,6 +11,7 @@
 #include "cli/cfm_cli_support.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/slow_progress.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/output_path.h"
 #include "flexure/io/provenance.h"
@@ -19,6 +20,7 @@
 #include "flexure/mechanisms/design/cfm_exact_refinement.h"
 #include "flexure/mechanisms/design/cfm_synthesis.h"
 #include "flexure/mechanisms/design/subclass_problem.h"
+#include "flexure/mechanisms/design/subclass_rederivation.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {
@@ -44,6 +46,7 @@ struct DesignCfmArgs {
   int coarse_stride = design::SynthesisOptions{}.coarse_stride;
   unsigned long seed = design::SynthesisOptions{}.seed;
   bool json = false;
+  bool all_subclasses = false;
   CLI::Option* pcf_min_option = nullptr;
   CLI::Option* config_option = nullptr;
   CLI::Option* d_option = nullptr;
@@ -346,7 +349,171 @@ void run_exact(const DesignCfmArgs& args,
   }
 }
 
+// --all-subclasses: the 68 rows of Ch. 7, each from its own problem (and with --model exact the
+// exact optimum too); --out writes the table (docs/hdf5-schema.md).
+void run_all_subclasses(const DesignCfmArgs& args) {
+  for (const CLI::Option* o : {args.d_option,
+                               args.objective_option,
+                               args.pcf_min_option,
+                               args.orientation_option,
+                               args.K1_option,
+                               args.K2_option}) {
+    if (*o) {
+      throw InvalidInput(fmt::format("--all-subclasses takes each sub-class's own problem; drop {}",
+                                     o->get_name()));
+    }
+  }
+  if (!args.subclass.empty()) throw InvalidInput("give --subclass or --all-subclasses, not both");
+  if (args.model != "prbm" && args.model != "exact") {
+    throw InvalidInput(fmt::format("--model '{}' is unknown; allowed: prbm, exact", args.model));
+  }
+  design::RederivationOptions o;
+  o.exact = args.model == "exact";
+  o.exact_starts = args.exact_starts;
+  o.config = args.config;  // --config: only that configuration's rows
+  o.synthesis.starts = args.starts;
+  o.synthesis.scan_points = args.scan_points;
+  o.synthesis.coarse_stride = args.coarse_stride;
+  o.synthesis.seed = args.seed;
+  std::optional<io::AtomicHdf5File> file;
+  if (!args.out.empty()) {
+    io::check_output_path(args.out);
+    try {
+      file.emplace(args.out);
+    } catch (const io::Hdf5Error& e) {
+      throw InvalidInput(fmt::format("--out: {}", e.what()));
+    }
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<design::SubclassRederivation> rows =
+      design::rederive_subclasses(o, slow_progress("design cfm --all-subclasses"));
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  Json list = Json::array();
+  int converged = 0;
+  for (const auto& r : rows) {
+    converged += r.prbm.converged() ? 1 : 0;
+    const cfm::CfmResult& b = r.prbm.best.result;
+    Json j{{"name", r.name},
+           {"config", r.config},
+           {"stroke_percent", r.stroke_percent},
+           {"objective", to_string(r.objective)},
+           {"printed_objective", r.printed_objective},
+           {"objective_value", r.prbm.best.objective},
+           {"R", b.R},
+           {"K1", b.K1},
+           {"K2", b.K2},
+           {"percent_constant_force", b.percent_constant_force},
+           {"converged", r.prbm.converged()},
+           {"evaluations", r.prbm.evaluations},
+           {"seconds", r.seconds}};
+    if (o.exact) {
+      const auto opt = [](const std::optional<double>& v) { return v ? Json(*v) : Json(nullptr); };
+      j["printed_percent_constant_force_exact"] = opt(r.printed_percent_constant_force_exact);
+      j["percent_constant_force_exact"] = opt(r.percent_constant_force_exact);
+      j["exact_R"] = r.exact_R;
+      j["exact_K1"] = r.exact_K1;
+      j["exact_K2"] = r.exact_K2;
+      j["exact_evaluations"] = r.exact_evaluations;
+      j["exact_message"] = r.exact_message;
+    }
+    list.push_back(std::move(j));
+  }
+  if (file) {
+    io::Hdf5Group& root = file->root();
+    root.set_attribute("model", args.model);
+    root.set_attribute("mpi_ranks", std::int64_t{1});
+    root.set_attribute("seed", static_cast<std::int64_t>(args.seed));
+    std::vector<std::string> names, objectives;
+    std::vector<double> d, printed, value, R, K1, K2, pcf, secs, pe, e, eR, eK1, eK2;
+    std::vector<int> conv, evals, exact_ok;
+    for (const auto& r : rows) {
+      names.push_back(r.name);
+      objectives.push_back(to_string(r.objective));
+      d.push_back(r.stroke_percent);
+      printed.push_back(r.printed_objective);
+      value.push_back(r.prbm.best.objective);
+      R.push_back(r.prbm.best.result.R);
+      K1.push_back(r.prbm.best.result.K1);
+      K2.push_back(r.prbm.best.result.K2);
+      pcf.push_back(r.prbm.best.result.percent_constant_force);
+      secs.push_back(r.seconds);
+      conv.push_back(r.prbm.converged() ? 1 : 0);
+      evals.push_back(r.prbm.evaluations);
+      pe.push_back(r.printed_percent_constant_force_exact.value_or(0.0));
+      e.push_back(r.percent_constant_force_exact.value_or(0.0));
+      exact_ok.push_back(r.percent_constant_force_exact ? 1 : 0);
+      eR.push_back(r.exact_R);
+      eK1.push_back(r.exact_K1);
+      eK2.push_back(r.exact_K2);
+    }
+    using V = std::span<const double>;
+    root.write_dataset("name", names, "text", "thesis sub-class (Tables 7.2-7.12)");
+    root.write_dataset("objective", objectives, "text", "the sub-class's objective");
+    root.write_dataset("stroke_percent", V(d), "%", "effective design stroke");
+    root.write_dataset("printed_objective",
+                       V(printed),
+                       "1",
+                       "objective at the printed point (Psi_raw or Xi' in %)");
+    root.write_dataset("objective_value", V(value), "1", "objective at the re-derived optimum");
+    root.write_dataset("R", V(R), "1", "re-derived R");
+    root.write_dataset("K1", V(K1), "1", "re-derived K1 (0: no spring; class 1B: 1)");
+    root.write_dataset("K2", V(K2), "1", "re-derived K2 (0: no spring)");
+    root.write_dataset("percent_constant_force", V(pcf), "%", "PRBM Xi' at the optimum");
+    root.write_dataset("converged", std::span<const int>(conv), "1", "1: the synthesis converged");
+    root.write_dataset("evaluations", std::span<const int>(evals), "1", "model evaluations");
+    root.write_dataset("seconds", V(secs), "s", "wall time of the row");
+    if (o.exact) {
+      root.write_dataset("printed_percent_constant_force_exact",
+                         V(pe),
+                         "%",
+                         "exact Xi' of the printed point (50 points)");
+      root.write_dataset("percent_constant_force_exact",
+                         V(e),
+                         "%",
+                         "exact Xi' of the exact optimum (0 where exact_found is 0)");
+      root.write_dataset("exact_found",
+                         std::span<const int>(exact_ok),
+                         "1",
+                         "1: the exact search found a feasible optimum");
+      root.write_dataset("exact_R", V(eR), "1", "R of the exact optimum");
+      root.write_dataset("exact_K1", V(eK1), "1", "K1 of the exact optimum");
+      root.write_dataset("exact_K2", V(eK2), "1", "K2 of the exact optimum");
+    }
+    io::write_provenance(root, {});
+    file->commit();
+  }
+  if (args.json) {
+    print_json(Json{{"subclasses", list},
+                    {"model", args.model},
+                    {"rows", rows.size()},
+                    {"converged_rows", converged},
+                    {"seconds", seconds},
+                    {"out", args.out.empty() ? Json(nullptr) : Json(args.out)}});
+    return;
+  }
+  for (const auto& r : rows) {
+    fmt::print("{:<12} {:<8} printed {:.6g}, re-derived {:.6g}{}{}\n",
+               r.name,
+               to_string(r.objective),
+               r.printed_objective,
+               r.prbm.best.objective,
+               r.prbm.converged() ? "" : " (not converged)",
+               o.exact ? fmt::format("; exact Xi' {:.2f} -> {}",
+                                     r.printed_percent_constant_force_exact.value_or(0.0),
+                                     r.percent_constant_force_exact
+                                         ? fmt::format("{:.2f}", *r.percent_constant_force_exact)
+                                         : "none feasible")
+                       : "");
+  }
+  fmt::print("{} rows, {} converged, {:.1f} s\n", rows.size(), converged, seconds);
+}
+
 void run_design_cfm(const DesignCfmArgs& args) {
+  if (args.all_subclasses) {
+    run_all_subclasses(args);
+    return;
+  }
   const design::CfmDesignProblem problem = make_problem(args);
   design::SynthesisOptions options;
   options.starts = args.starts;
@@ -426,6 +593,10 @@ void register_design_command(CLI::App& app) {
       args->objective,
       "min-xi (Table 2.1), max-pcf (Xi'), max-psi (stiffness; needs --pcf-min) or min-dn "
       "(normal displacement; needs --pcf-min)");
+  cfm->add_flag("--all-subclasses",
+                args->all_subclasses,
+                "Every thesis sub-class from its own problem (68 rows, or --config's; with "
+                "--model exact also the exact optimum); --out writes the table");
   cfm->add_option("--subclass",
                   args->subclass,
                   "A thesis sub-class's own problem instead of --config/--d/--objective (e.g. "

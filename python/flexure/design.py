@@ -5,7 +5,7 @@ from . import _command
 def cfm(*, config=None, d=None, objective=None, subclass=None, pcf_min=None, orientation=None,
         rule_limits=None, K1=None, K2=None, sampling=None, points=None, starts=None,
         scan_points=None, coarse_stride=None, seed=None, model=None, exact_starts=None,
-        out=None):
+        out=None, all_subclasses=False):
     """Synthesis of R, K1, K2 for an objective under the thesis's constraints: `flexure design cfm`.
 
     config     'spp', 'lpp', 'psp', 'plp', 'ssp', 'slp', 'sps', 'lps' or 'sss' (config, d and
@@ -15,6 +15,8 @@ def cfm(*, config=None, d=None, objective=None, subclass=None, pcf_min=None, ori
                (keys percent_constant_force_exact, prbm_optimum, exact_evaluations)
     exact_starts  Halton starts of the exact search (default two per variable)
     out        a path: the convergence history as HDF5 (docs/hdf5-schema.md)
+    all_subclasses  True: every thesis sub-class from its own problem (or those of config);
+               returns {'subclasses': [...], ...}
     d          design stroke, % of r2 + r3 (0 < d < 100); R stays inside its toggle interval
     objective  'min-xi' (Xi = Phi_max/Phi_min, Table 2.1), 'max-pcf' (Xi', %), 'max-psi' (the
                stiffness parameter Psi) or 'min-dn' (d_N,max, % r_tot); the last two need pcf_min
@@ -42,7 +44,9 @@ def cfm(*, config=None, d=None, objective=None, subclass=None, pcf_min=None, ori
                                                 K1=K1, K2=K2, sampling=sampling, points=points,
                                                 starts=starts, scan_points=scan_points,
                                                 coarse_stride=coarse_stride, seed=seed,
-                                                model=model, exact_starts=exact_starts, out=out))
+                                                model=model, exact_starts=exact_starts, out=out,
+                                                all_subclasses=all_subclasses),
+                        switches=("all_subclasses",))
 
 
 def _range(keyword, value):

@@ -20,6 +20,7 @@ def cfm(
     model: str | None = ...,
     exact_starts: int | None = ...,
     out: str | None = ...,
+    all_subclasses: bool = ...,
 ) -> dict[str, Any]: ...
 
 def mechanism(
