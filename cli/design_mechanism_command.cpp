@@ -157,7 +157,7 @@ Json screens_json(const design::DesignScreens& s, double force_factor) {
   return Json{
       {"stroke_percent_min", s.stroke_percent_min},
       {"stroke_percent_max", s.stroke_percent_max},
-      {"omega", s.M_max ? Json(s.omega) : Json(nullptr)},
+      {"omega", s.omega > 0.0 ? Json(s.omega) : Json(nullptr)},
       {"M_max", optional_json(s.M_max)},
       {"M_min", optional_json(s.M_min)},
       {"Psi_min", optional_json(s.Psi_min)},

@@ -90,7 +90,8 @@ void write_map(io::AtomicHdf5File& file,
                      std::span<const int>(m.status),
                      dims,
                      "1",
-                     "0 ok, 1 exact model not converged, 2 model refused the point");
+                     "0 ok, 1 exact model not converged or refused (exact values 0), 2 PRBM model "
+                     "refused the point");
   if (spec.exact) {
     grid("percent_constant_force_exact",
          m.percent_constant_force_exact,
@@ -106,7 +107,8 @@ void write_map(io::AtomicHdf5File& file,
                        {{"status", studies::kMapOk, "ok"},
                         {"status",
                          studies::kMapExactNotConverged,
-                         "the exact model did not converge (exact values 0)"},
+                         "the exact model did not converge or refused the point (exact values 0; "
+                         "PRBM values valid)"},
                         {"status", studies::kMapInvalid, "the model refused the point"}});
   file.commit();
 }

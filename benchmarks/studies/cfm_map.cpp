@@ -45,6 +45,14 @@ void CfmMapSpec::validate() const {
             ? fmt::format("configuration {} needs --K2 (k3/k1)", config)
             : fmt::format("configuration {} takes no --K2 (no spring at pivot 3)", config));
   }
+  // The grid's size, checked before any allocation: a product that overflows or a grid beyond
+  // 10^8 points (800 MB per quantity) is refused.
+  double total = 1.0;
+  for (std::size_t n : dims()) total *= static_cast<double>(n);
+  if (total > 1e8) {
+    throw InvalidInput(fmt::format(
+        "the map has {:.4g} points; at most 1e8 (800 MB per quantity) are allowed", total));
+  }
   if (points < 2 || points > 100000) {
     throw InvalidInput(fmt::format("points = {} must lie in [2, 100000]", points));
   }
@@ -100,12 +108,18 @@ CfmMap cfm_map(const CfmMapSpec& spec,
             m.effective_stroke_percent[k] = r.stroke_percent;
             m.stroke_clamped[k] = r.stroke_clamped ? 1 : 0;
             if (spec.exact) {
-              const cfm::CfmExactResult e = cfm::solve_cfm_exact(r, exact_options);
-              if (e.converged()) {
-                m.percent_constant_force_exact[k] = e.percent_constant_force_exact;
-                m.Phi_exact[k] = e.Phi_exact;
-                m.max_force_error[k] = e.max_force_error;
-              } else {
+              // The exact model may refuse a point the PRBM takes (its equivalent design leaves
+              // the slender-beam limits at extreme K): the PRBM values stay, status 1.
+              try {
+                const cfm::CfmExactResult e = cfm::solve_cfm_exact(r, exact_options);
+                if (e.converged()) {
+                  m.percent_constant_force_exact[k] = e.percent_constant_force_exact;
+                  m.Phi_exact[k] = e.Phi_exact;
+                  m.max_force_error[k] = e.max_force_error;
+                } else {
+                  m.status[k] = kMapExactNotConverged;
+                }
+              } catch (const InvalidInput&) {
                 m.status[k] = kMapExactNotConverged;
               }
             }

@@ -31,7 +31,8 @@ struct CfmMapSpec {
 
 // Status codes per point (written as status_meanings of the file).
 inline constexpr int kMapOk = 0;
-inline constexpr int kMapExactNotConverged = 1;  // PRBM values valid; exact values 0
+inline constexpr int kMapExactNotConverged = 1;  // PRBM values valid; the exact model did not
+                                                 // converge or refused the point: exact 0
 inline constexpr int kMapInvalid = 2;            // the model refused the point; every value 0
 
 struct CfmMap {

@@ -79,6 +79,15 @@ void CfmDesignProblem::validate() const {
         lo,
         hi));
   }
+  // Near d = 100 % only R = 1 reaches the stroke: no interval is left to search.
+  if (std::log(std::min(R.upper, hi) / std::max(R.lower, lo)) < 1e-9) {
+    throw InvalidInput(fmt::format(
+        "stroke d = {} % leaves R no room: the toggle position allows only R in [{:.10g}, "
+        "{:.10g}]; use a smaller d",
+        stroke_percent,
+        lo,
+        hi));
+  }
   for (char f : orientation) {
     if (f != 'I' && f != 'O' && f != 'o') {
       throw InvalidInput(

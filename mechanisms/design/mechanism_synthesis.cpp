@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
+#include <set>
 
 #include "flexure/mechanisms/cfm/cfm_comparison.h"
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
@@ -134,7 +135,24 @@ DimensionedDesign size_subclass(const MechanismSpec& spec, const cfm::CfmSubclas
   // Longest length, widest primary flexure; the thickness from the force (eq. 8.2). With the
   // width free, the thickest flexure the stress (eq. 8.5) and the thickness range allow, and the
   // width from the force (thesis example 2, eq. 8.19).
+  // Where the section rule makes another flexure wider than the primary one (b_i = D b_p with
+  // D > 1: equal thicknesses, or the C/D_min rule), that flexure takes the widest width.
   double l = spec.length.upper, b = spec.width.upper;
+  {
+    const std::string row_flags = subclass_flags(row.name);
+    const bool equal_widths =
+        spec.orientation == FlexureOrientation::kInPlane ||
+        (spec.orientation == FlexureOrientation::kAny && row_flags.find('I') != std::string::npos);
+    const bool equal_h = !equal_widths && row_flags.find_first_of("Oo") != std::string::npos;
+    double widest = 1.0;
+    for (int i = 1; i <= 3 && !equal_widths; ++i) {
+      if (i == p || cfg.pivots[i - 1] == mechanism::PivotType::kPin) continue;
+      widest = std::max(
+          widest,
+          equal_h ? second_moment_ratio(m, i) : m.D_min[i - 1].value_or(second_moment_ratio(m, i)));
+    }
+    b /= widest;
+  }
   double h = 0.0;
   if (std::isinf(b)) {
     h = spec.thickness.upper;
@@ -184,6 +202,12 @@ DimensionedDesign size_subclass(const MechanismSpec& spec, const cfm::CfmSubclas
              h_at_min / spec.thickness.upper);
       return out;
     }
+  }
+  if (!(std::isfinite(h) && std::isfinite(b) && h > 0.0 && b > 0.0)) {
+    reject(out,
+           fmt::format("force: the section is not finite (h = {:g} m, b = {:g} m)", h, b),
+           std::nullopt);
+    return out;
   }
   out.l_tot = l;
   out.stroke_percent = stroke_percent_for(spec.stroke, l, lambda);  // eq. 8.6
@@ -344,6 +368,26 @@ void MechanismSpec::validate() const {
   check_positive(E, "E");
   if (yield_strength) check_positive(*yield_strength, "yield strength");
   check_positive(safety_factor, "safety factor");
+  // Physical ranges wide enough for any mechanism (MEMS to machinery) that keep every derived
+  // size finite in double precision.
+  const auto within = [](double v, double lo, double hi, const char* what, const char* unit) {
+    if (v < lo || v > hi) {
+      throw InvalidInput(
+          fmt::format("{} = {:g} {} lies outside [{:g}, {:g}] {}", what, v, unit, lo, hi, unit));
+    }
+  };
+  within(force, 1e-9, 1e9, "force", "N");
+  within(stroke, 1e-9, 1e3, "stroke", "m");
+  within(E, 1e3, 1e13, "E", "Pa");
+  if (yield_strength) within(*yield_strength, 1.0, 1e12, "yield strength", "Pa");
+  within(safety_factor, 1e-3, 1e3, "safety factor", "");
+  for (const auto& [r, what] : {std::pair{&length, "length range"},
+                                std::pair{&width, "width range"},
+                                std::pair{&thickness, "thickness range"}}) {
+    if (r->lower == 0.0 && std::isinf(r->upper)) continue;  // free
+    within(r->lower, 1e-9, 1e3, what, "m");
+    within(r->upper, 1e-9, 1e3, what, "m");
+  }
   check_range(length, "length range");
   check_range(width, "width range", true);
   check_range(thickness, "thickness range", true);
@@ -419,16 +463,41 @@ MechanismDesignReport design_mechanisms(const MechanismSpec& spec) {
   spec.validate();
   MechanismDesignReport report;
   report.screens = design_screens(spec);
+  // The sub-class of the design stroke (thesis §8.5): a (16 %) up to 16 %, b (40 %) beyond. Each
+  // row's d has its own lambda, so near 16 % a configuration's a rows may all land just above it
+  // while its b rows land just below: then the b rows serve.
+  const auto d_of = [&](const cfm::CfmSubclass& row) {
+    return stroke_percent_for(spec.stroke, spec.length.upper, row.lambda);
+  };
+  std::set<std::string> a_fits;
+  for (const cfm::CfmSubclass& row : cfm::thesis_subclasses()) {
+    if (admitted(spec, row) && row.stroke_percent == 16.0 && d_of(row) <= 16.0) {
+      a_fits.insert(row.config);
+    }
+  }
   for (const cfm::CfmSubclass& row : cfm::thesis_subclasses()) {
     if (!admitted(spec, row)) continue;
-    // The sub-class of the design stroke (thesis §8.5): a (16 %) up to 16 %, b (40 %) beyond.
-    const double d = stroke_percent_for(spec.stroke, spec.length.upper, row.lambda);
-    if ((row.stroke_percent == 16.0) != (d <= 16.0)) continue;
+    const bool a_row = row.stroke_percent == 16.0;
+    if (a_row ? d_of(row) > 16.0 : (d_of(row) <= 16.0 && a_fits.count(row.config) > 0)) continue;
     DimensionedDesign design = size_subclass(spec, row);
     (design.feasible ? report.designs : report.rejected).push_back(std::move(design));
   }
   if (spec.exact) {
     for (DimensionedDesign& d : report.designs) evaluate_exact(d, spec.points, spec.safety_factor);
+  }
+  // Without a given yield strength the design carries the strength it needs by every stress the
+  // models compute (eq. 8.5 leaves out axial and clamp stresses), so that its file analyses
+  // without yielding.
+  if (!spec.yield_strength) {
+    for (DimensionedDesign& d : report.designs) {
+      const double needed = std::max({d.required_yield_strength,
+                                      d.required_yield_strength_prbm,
+                                      d.required_yield_strength_exact.value_or(0.0)});
+      const double scale = needed / d.design.yield_strength;
+      d.design.yield_strength = needed;
+      d.safety_factor_prbm *= scale;
+      if (d.safety_factor_exact) *d.safety_factor_exact *= scale;
+    }
   }
   const auto key = [&](const DimensionedDesign& d) {
     if (spec.ranking == DesignRanking::kExact) return d.percent_constant_force_exact.value_or(-1.0);
@@ -464,6 +533,17 @@ DimensionedDesign refine_design_exact(const MechanismSpec& spec,
   ExactRefinementOptions o;
   o.sequence_starts = static_cast<int>(2 * start.size());
   const CfmExactRefinement r = refine_cfm_exact(problem, {start}, o);
+  if (!r.converged()) {
+    DimensionedDesign failed = prbm_design;
+    failed.exact_evaluations = r.evaluations;
+    reject(failed,
+           fmt::format("exact optimisation: {} (best exact Xi' {:.2f} %{})",
+                       r.message,
+                       r.percent_constant_force_exact,
+                       problem.pcf_min ? fmt::format(", floor {:g} %", *problem.pcf_min) : ""),
+           std::nullopt);
+    return failed;
+  }
 
   DimensionedDesign out = prbm_design;
   out.exact_evaluations = r.evaluations;

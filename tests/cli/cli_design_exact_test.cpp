@@ -125,7 +125,8 @@ TEST(CliDesignExact, BadCombinationsAreExitTwo) {
                            "design cfm --subclass lpp-b --model fem",
                            "design cfm --all-subclasses --d 16",
                            "design cfm --all-subclasses --subclass lpp-b",
-                           "design cfm --all-subclasses --config xyz"}) {
+                           "design cfm --all-subclasses --config xyz",
+                           "design cfm --config psp --d 99.9999999 --objective max-pcf"}) {
     const CommandResult r = run_flexure(std::string(args) + " --json");
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
   }

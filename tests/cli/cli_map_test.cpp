@@ -38,7 +38,11 @@ TEST(CliMap, EveryPointEqualsTheSingleEvaluation) {
   H5Fclose(file);
   ASSERT_EQ(pcf.size(), 30u);
   // A few points against `flexure cfm`, row-major with K2 fastest.
-  for (std::size_t k : {0u, 7u, 13u, 29u}) {
+  // R = 0.4 reaches only 34.5 % before its toggle position: d = 40 (k = 4, 5) is clamped.
+  EXPECT_EQ(clamped[4], 1);
+  EXPECT_LT(toggle[4], 40.0);
+  EXPECT_EQ(clamped[0], 0);
+  for (std::size_t k : {0u, 4u, 7u, 13u, 29u}) {
     const std::size_t i = k / 6, jd = (k / 2) % 3, b = k % 2;
     const json one = json::parse(
         run_flexure(
@@ -55,6 +59,24 @@ TEST(CliMap, EveryPointEqualsTheSingleEvaluation) {
   }
 }
 
+// The exact model may refuse a point the PRBM takes (its equivalent design outside the
+// slender-beam limits): status 1, the PRBM values kept.
+TEST(CliMap, AnExactRefusalKeepsThePrbmValues) {
+  ScratchDir dir;
+  const std::string path = (dir / "m.h5").string();
+  const CommandResult r =
+      run_flexure("map cfm --config slp --R 10 --d 25 --K1 500 --model exact --out " + path);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const hid_t file = open_read_only(path);
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(read_ints(file, "/status")[0], 1);
+  const json one = json::parse(run_flexure("cfm --config slp --R 10 --d 25 --K1 500 --json").out);
+  EXPECT_NEAR(read_doubles(file, "/percent_constant_force")[0],
+              one["percent_constant_force"].get<double>(),
+              1e-12);
+  H5Fclose(file);
+}
+
 TEST(CliMap, BadInputIsExitTwoAndWritesNothing) {
   ScratchDir dir;
   const std::string out = " --out " + (dir / "m.h5").string();
@@ -64,7 +86,9 @@ TEST(CliMap, BadInputIsExitTwoAndWritesNothing) {
                            "map cfm --config lpp --R 0:2:3 --d 16",     // R = 0
                            "map cfm --config lpp --R 1 --d 16:120:3",   // d > 100
                            "map cfm --config lpp --R 1 --d 16 --model fem",
-                           "map cfm --config xyz --R 1 --d 16"}) {
+                           "map cfm --config xyz --R 1 --d 16",
+                           "map cfm --config sss --R 0.5:2:65536 --d 1:40:65536 --K1 0.5:2:65536 "
+                           "--K2 0.5:2:65536"}) {
     const CommandResult r = run_flexure(std::string(args) + out + " --json");
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
   }

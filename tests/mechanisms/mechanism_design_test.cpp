@@ -66,9 +66,13 @@ TEST(DesignFeasibility, ForceExampleOfSectionFourTwoFive) {
   // The equation and its inverses agree.
   EXPECT_NEAR(
       design_force(fc, E, 1.0 * kInch, thickness_for_force(fc, F, E, kInch, r), r), F, 1e-12 * F);
-  EXPECT_NEAR(length_for_force(fc, F, E, kInch, 0.0032 * kInch),
-              std::sqrt(fc.c * E * kInch * std::pow(0.0032 * kInch, 3) / F),
-              1e-15);
+  EXPECT_NEAR(
+      design_force(fc, E, kInch, 0.0032 * kInch, length_for_force(fc, F, E, kInch, 0.0032 * kInch)),
+      F,
+      1e-12 * F);
+  EXPECT_NEAR(design_force(fc, E, width_for_force(fc, F, E, 0.0046 * kInch, r), 0.0046 * kInch, r),
+              F,
+              1e-12 * F);
 }
 
 // Example 1 (§8.5.1, Tables 8.3/8.4): 25 lbf over 4 in, E = 30 Msi, SF 1.2 -> lpp-b with
@@ -123,8 +127,6 @@ TEST(MechanismSynthesis, ExampleOneGivesTheThesisDesign) {
   }
 }
 
-// With a material of 150 ksi the design needs a thinner flexure than the force allows: the report
-// names the strength needed.
 // Without a thickness range the thickness follows from the force at the widest flexure: the same
 // design (its 0.04875 in lies inside Table 8.3's range). Without a width range the width follows
 // from the force at the thickest flexure the range allows.
@@ -146,6 +148,8 @@ TEST(MechanismSynthesis, FreeRangesFollowFromTheForce) {
   EXPECT_THROW(design_mechanisms(spec), InvalidInput);
 }
 
+// With a material of 150 ksi the design needs a thinner flexure than the force allows: the report
+// names the strength needed.
 TEST(MechanismSynthesis, ExampleOneWithAWeakMaterialNamesTheStrengthNeeded) {
   MechanismSpec spec = example_1();
   spec.yield_strength = 150.0 * kKsi;
@@ -262,6 +266,81 @@ TEST(MechanismSynthesis, ExampleThreeNeedsThickerStockThanTheTable) {
     EXPECT_LE(d.required_yield_strength, 200.0 * kKsi * (1.0 + 1e-9)) << d.subclass;
     EXPECT_NEAR(d.force_prbm / (100.0 * kPoundForce), 1.0, 0.02) << d.subclass;
   }
+}
+
+// Out of plane (equal thicknesses) a flexure with D_equal > 1 is wider than the primary one: it,
+// not the primary, takes the widest width, and the designs do not depend on how wide the range
+// reaches beyond it.
+TEST(MechanismSynthesis, OutOfPlaneWidestFlexureTakesTheWidestWidth) {
+  MechanismSpec s;
+  s.force = 10.0;
+  s.stroke = 25e-3;
+  s.E = 200e9;
+  s.safety_factor = 1.5;
+  s.length = {0.08, 0.1};
+  s.thickness = {1e-6, 30e-3};
+  s.width = {1e-3, 20e-3};
+  s.orientation = FlexureOrientation::kOutOfPlane;
+  s.configs = {"sps", "ssp", "slp", "sss"};
+  s.exact = false;
+  const MechanismDesignReport r = design_mechanisms(s);
+  ASSERT_GE(r.designs.size(), 5u);
+  for (const DimensionedDesign& d : r.designs) {
+    double widest = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      if (d.thickness[i] > 0.0) {
+        EXPECT_NEAR(d.thickness[i], d.thickness[d.model.primary_pivot - 1], 1e-15) << d.subclass;
+        widest = std::max(widest, d.width[i]);
+      }
+    }
+    EXPECT_NEAR(widest, 20e-3, 1e-15) << d.subclass;
+  }
+}
+
+// Near d = 16 % each row's d has its own lambda: where the a rows land just above 16 % and the b
+// rows just below, the b rows serve (the configuration does not drop out).
+TEST(MechanismSynthesis, AConfigurationDoesNotDropOutAtSixteenPercent) {
+  for (double stroke : {14.5e-3, 14.6e-3, 14.7e-3}) {
+    MechanismSpec s;
+    s.force = 10.0;
+    s.stroke = stroke;
+    s.E = 200e9;
+    s.safety_factor = 1.5;
+    s.length = {0.1, 0.1};
+    s.width = {1e-3, 10e-3};
+    s.thickness = {1e-5, 5e-3};
+    s.configs = {"lpp"};
+    s.pcf_min = 95.0;
+    s.exact = false;
+    EXPECT_FALSE(design_mechanisms(s).designs.empty()) << stroke;
+  }
+}
+
+// --model exact: a refinement whose exact optimum cannot meet the sub-class's Xi' floor is not
+// feasible (lps-b99IO: best 98.5 % exact against 99).
+TEST(MechanismSynthesis, ExactRefinementMustMeetTheFloor) {
+  MechanismSpec s;
+  s.force = 10.0;
+  s.stroke = 36.5e-3;
+  s.E = 200e9;
+  s.safety_factor = 1.5;
+  s.length = {0.1, 0.1};
+  s.width = {1e-3, 10e-3};
+  s.thickness = {1e-5, 5e-3};
+  s.configs = {"lps"};
+  const MechanismDesignReport r = design_mechanisms(s);
+  bool checked = false;
+  for (const DimensionedDesign& d : r.designs) {
+    if (d.subclass != "lps-b99IO") continue;
+    const DimensionedDesign x = refine_design_exact(s, d);
+    if (x.feasible) {
+      EXPECT_GE(*x.percent_constant_force_exact, 99.0 - 1e-9);
+    } else {
+      EXPECT_NE(x.binding.find("floor 99"), std::string::npos) << x.binding;
+    }
+    checked = true;
+  }
+  EXPECT_TRUE(checked);
 }
 
 TEST(MechanismSynthesis, RefusesInconsistentSpecifications) {
