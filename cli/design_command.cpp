@@ -101,6 +101,13 @@ void apply_rule_limits(const std::string& text, design::OrientationLimits& limit
   }
 }
 
+// --exact-starts: 0..1000 and only with --model exact (-1 is the default, two per variable).
+void check_exact_starts(const DesignCfmArgs& args) {
+  if (args.exact_starts == -1) return;
+  if (args.model != "exact") throw InvalidInput("--exact-starts applies to --model exact only");
+  require_in_range(args.exact_starts, "--exact-starts", 0, 1000);
+}
+
 design::CfmDesignProblem make_problem(const DesignCfmArgs& args) {
   design::CfmDesignProblem p;
   if (!args.subclass.empty()) {
@@ -136,6 +143,7 @@ design::CfmDesignProblem make_problem(const DesignCfmArgs& args) {
   if (args.model != "prbm" && args.model != "exact") {
     throw InvalidInput(fmt::format("--model '{}' is unknown; allowed: prbm, exact", args.model));
   }
+  check_exact_starts(args);
   p.model = design::default_model_options(p.objective);
   if (args.sampling == "thesis") {
     p.model.sampling = cfm::StrokeSampling::kThesisCode;
@@ -367,6 +375,7 @@ void run_all_subclasses(const DesignCfmArgs& args) {
   if (args.model != "prbm" && args.model != "exact") {
     throw InvalidInput(fmt::format("--model '{}' is unknown; allowed: prbm, exact", args.model));
   }
+  check_exact_starts(args);
   design::RederivationOptions o;
   o.exact = args.model == "exact";
   o.exact_starts = args.exact_starts;

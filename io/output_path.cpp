@@ -184,7 +184,7 @@ void write_text_file(const std::string& path, const std::string& text, const std
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
     if (!out) fail("cannot create the temporary file");
     out << text;
-    out.flush();
+    out.close();  // a write that fails only when the buffer goes out shows here
     if (!out) fail("cannot write the file");
   }
   if (std::rename(temp.c_str(), path.c_str()) != 0) fail("cannot rename the finished file");

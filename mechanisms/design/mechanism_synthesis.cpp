@@ -573,6 +573,9 @@ DimensionedDesign refine_design_exact(const MechanismSpec& spec,
   const double h_p = prbm_design.thickness[prbm_design.model.primary_pivot - 1];
   const double b_p = prbm_design.width[prbm_design.model.primary_pivot - 1];
   const bool equal_h = out.section_rule.find("thicknesses") != std::string::npos;
+  // The refined design keeps equal thicknesses, or else takes equal widths (the C/D_min rule of
+  // the sub-class does not carry over to other R, K).
+  if (!equal_h && out.section_rule != "one flexure") out.section_rule = "equal widths (in-plane)";
   for (int i = 1; i <= 3; ++i) {
     if (cfg.pivots[i - 1] == mechanism::PivotType::kPin) continue;
     const double D = i == p ? 1.0 : second_moment_ratio(m, i);

@@ -126,7 +126,10 @@ TEST(CliDesignExact, BadCombinationsAreExitTwo) {
                            "design cfm --all-subclasses --d 16",
                            "design cfm --all-subclasses --subclass lpp-b",
                            "design cfm --all-subclasses --config xyz",
-                           "design cfm --config psp --d 99.9999999 --objective max-pcf"}) {
+                           "design cfm --config psp --d 99.9999999 --objective max-pcf",
+                           "design cfm --subclass lpp-b --exact-starts 4",
+                           "design cfm --subclass lpp-b --model exact --exact-starts -2",
+                           "design cfm --subclass lpp-b --model exact --exact-starts 100000"}) {
     const CommandResult r = run_flexure(std::string(args) + " --json");
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
   }
