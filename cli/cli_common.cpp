@@ -10,6 +10,8 @@
 #include <iostream>
 #include <vector>
 
+#include "cli/mpi_launch.h"
+#include "flexure/io/parallel/mpi_world.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/evenly_spaced.h"
 
@@ -205,17 +207,53 @@ void parse_and_run(CLI::App& app, int argc, char** argv) {
   }
 }
 
+namespace {
+
+// The exit code of an exception's type (the table in cli_common.h).
+int exit_code_of(const std::exception_ptr& cause) {
+  try {
+    std::rethrow_exception(cause);
+  } catch (const InvalidInput&) {
+    return kExitInvalidInput;
+  } catch (const NoConvergence&) {
+    return kExitNoConvergence;
+  } catch (...) {
+    return kExitInternal;
+  }
+}
+
+}  // namespace
+
 int run_app(CLI::App& app, int argc, char** argv) {
   reset_exit_code();
   const bool json = wants_json(argc, argv);
+  // Under mpirun (docs/scaling.md): rank 0 prints the report and the errors every rank meets
+  // alike; a rank prints a failure of its own (RankFailure). Once MPI runs, any failure ends all
+  // ranks: together when all met it (a barrier, within a time limit), else with MPI_Abort, so that
+  // no rank is left waiting for another: never a hang.
+  silence_stdout_of_other_ranks();
   const auto fail = [&](const std::string& message, int code, const Json& reached) {
-    report(message);
-    if (json) report_json(message, code, reached);
+    if (parallel::launched_rank() == 0) {
+      report(message);
+      if (json) report_json(message, code, reached);
+    }
+    if (parallel::world_started() && parallel::world().parallel() &&
+        !parallel::world().barrier_within(10.0)) {
+      parallel::world().abort(code);
+    }
     return code;
   };
   try {
+    check_mpi_launch(argc, argv);
     parse_and_run(app, argc, argv);
+    report_balance();
     return g_exit_code;
+  } catch (const parallel::RankFailure& e) {
+    const int code = exit_code_of(e.cause());
+    restore_stdout();
+    report(e.what());
+    if (json) report_json(e.what(), code, Json::object());
+    parallel::world().abort(code);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {

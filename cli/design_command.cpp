@@ -12,6 +12,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/slow_progress.h"
+#include "flexure/benchmarks/studies/subclass_table.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/output_path.h"
 #include "flexure/io/provenance.h"
@@ -384,18 +385,14 @@ void run_all_subclasses(const DesignCfmArgs& args) {
   o.synthesis.scan_points = args.scan_points;
   o.synthesis.coarse_stride = args.coarse_stride;
   o.synthesis.seed = args.seed;
-  std::optional<io::AtomicHdf5File> file;
-  if (!args.out.empty()) {
-    io::check_output_path(args.out);
-    try {
-      file.emplace(args.out);
-    } catch (const io::Hdf5Error& e) {
-      throw InvalidInput(fmt::format("--out: {}", e.what()));
-    }
-  }
   const auto start = std::chrono::steady_clock::now();
+  studies::SubclassTableOptions table;
+  table.rederivation = o;
+  table.out = args.out;
+  table.seed = args.seed;
+  // Under mpirun the rows are divided over the ranks; rank 0 gets them all back and prints.
   const std::vector<design::SubclassRederivation> rows =
-      design::rederive_subclasses(o, slow_progress("design cfm --all-subclasses"));
+      studies::subclass_table(table, slow_progress("design cfm --all-subclasses"));
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   Json list = Json::array();
@@ -427,70 +424,6 @@ void run_all_subclasses(const DesignCfmArgs& args) {
       j["exact_message"] = r.exact_message;
     }
     list.push_back(std::move(j));
-  }
-  if (file) {
-    io::Hdf5Group& root = file->root();
-    root.set_attribute("model", args.model);
-    root.set_attribute("mpi_ranks", std::int64_t{1});
-    root.set_attribute("seed", static_cast<std::int64_t>(args.seed));
-    std::vector<std::string> names, objectives;
-    std::vector<double> d, printed, value, R, K1, K2, pcf, secs, pe, e, eR, eK1, eK2;
-    std::vector<int> conv, evals, exact_ok;
-    for (const auto& r : rows) {
-      names.push_back(r.name);
-      objectives.push_back(to_string(r.objective));
-      d.push_back(r.stroke_percent);
-      printed.push_back(r.printed_objective);
-      value.push_back(r.prbm.best.objective);
-      R.push_back(r.prbm.best.result.R);
-      K1.push_back(r.prbm.best.result.K1);
-      K2.push_back(r.prbm.best.result.K2);
-      pcf.push_back(r.prbm.best.result.percent_constant_force);
-      secs.push_back(r.seconds);
-      conv.push_back(r.prbm.converged() ? 1 : 0);
-      evals.push_back(r.prbm.evaluations);
-      pe.push_back(r.printed_percent_constant_force_exact.value_or(0.0));
-      e.push_back(r.percent_constant_force_exact.value_or(0.0));
-      exact_ok.push_back(r.percent_constant_force_exact ? 1 : 0);
-      eR.push_back(r.exact_R);
-      eK1.push_back(r.exact_K1);
-      eK2.push_back(r.exact_K2);
-    }
-    using V = std::span<const double>;
-    root.write_dataset("name", names, "text", "thesis sub-class (Tables 7.2-7.12)");
-    root.write_dataset("objective", objectives, "text", "the sub-class's objective");
-    root.write_dataset("stroke_percent", V(d), "%", "effective design stroke");
-    root.write_dataset("printed_objective",
-                       V(printed),
-                       "1",
-                       "objective at the printed point (Psi_raw or Xi' in %)");
-    root.write_dataset("objective_value", V(value), "1", "objective at the re-derived optimum");
-    root.write_dataset("R", V(R), "1", "re-derived R");
-    root.write_dataset("K1", V(K1), "1", "re-derived K1 (0: no spring; class 1B: 1)");
-    root.write_dataset("K2", V(K2), "1", "re-derived K2 (0: no spring)");
-    root.write_dataset("percent_constant_force", V(pcf), "%", "PRBM Xi' at the optimum");
-    root.write_dataset("converged", std::span<const int>(conv), "1", "1: the synthesis converged");
-    root.write_dataset("evaluations", std::span<const int>(evals), "1", "model evaluations");
-    root.write_dataset("seconds", V(secs), "s", "wall time of the row");
-    if (o.exact) {
-      root.write_dataset("printed_percent_constant_force_exact",
-                         V(pe),
-                         "%",
-                         "exact Xi' of the printed point (50 points)");
-      root.write_dataset("percent_constant_force_exact",
-                         V(e),
-                         "%",
-                         "exact Xi' of the exact optimum (0 where exact_found is 0)");
-      root.write_dataset("exact_found",
-                         std::span<const int>(exact_ok),
-                         "1",
-                         "1: the exact search found a feasible optimum");
-      root.write_dataset("exact_R", V(eR), "1", "R of the exact optimum");
-      root.write_dataset("exact_K1", V(eK1), "1", "K1 of the exact optimum");
-      root.write_dataset("exact_K2", V(eK2), "1", "K2 of the exact optimum");
-    }
-    io::write_provenance(root, {});
-    file->commit();
   }
   if (args.json) {
     print_json(Json{{"subclasses", list},

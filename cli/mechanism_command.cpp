@@ -4,8 +4,10 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -18,6 +20,8 @@
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/mechanism_toml.h"
 #include "flexure/io/output_path.h"
+#include "flexure/io/parallel/mpi_world.h"
+#include "flexure/io/parallel/work_distribution.h"
 #include "flexure/io/provenance.h"
 #include "flexure/mechanisms/constant_force.h"
 #include "flexure/mechanisms/howell_designs.h"
@@ -337,84 +341,216 @@ std::string percent(double v) { return fmt::format("{:.2f}", 100.0 * v); }
 // BM_ChainCheck100).
 constexpr int kChainCheckElements = 100;
 
+// One design of `mechanism validate`: its JSON object, its Markdown line and the numbers of the
+// --out table (ValidationColumns).
+struct ValidationRow {
+  Json json;
+  std::string line;
+  int status = 0;  // 0 exact converged, 1 exact did not converge, 2 PRBM only
+  std::vector<double> values;
+};
+
+ValidationRow validate_design(MechanismDesign d,
+                              int points,
+                              std::optional<double> toggle_fraction,
+                              std::optional<SpringRule> rule) {
+  ValidationRow row;
+  if (toggle_fraction) d.stroke = *toggle_fraction * d.toggle_stroke();
+  if (rule && has_fixed_fixed(d)) apply_spring_rule(d, *rule);
+  AnalysisOptions o;
+  o.points = points;
+  o.exact_stress = false;
+  // Name the design in an error: the table runs many of them.
+  const MechanismAnalysis a = [&] {
+    try {
+      return analyze_mechanism(d, o);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(fmt::format("{}: {}", d.name, e.what()));
+    } catch (const NoConvergence& e) {
+      throw NoConvergence(fmt::format("{}: {}", d.name, e.what()));
+    }
+  }();
+  const bool exact = a.has_exact && a.exact.converged();
+  // Second opinion on the last stroke point: Howell's chain algorithm (corrected variant,
+  // kChainCheckElements elements per chain) on the exact model's solution.
+  std::optional<ChainCheck> check;
+  if (exact && !a.exact.points.empty()) {
+    check = chain_algorithm_check(a.exact.points.back(), kChainCheckElements);
+  }
+  const std::string limit =
+      a.prbm_validity_limit ? fmt::format("{:.0f}", 100.0 * *a.prbm_validity_limit / d.stroke)
+      : has_fixed_fixed(d)  ? std::string("none (fixed-fixed segments: no Theta_max table)")
+                            : std::string("never (s pivots only, or within Table 5.1)");
+  // A percentage of a force that vanishes is 0 by definition (constant_force.h): say so in the
+  // cell, and leave out the difference, which would compare a definition with a ratio.
+  const std::string prbm_note = force_sign_note(a.prbm.force_vanishes, a.prbm.force_changes_sign);
+  const std::string exact_note =
+      exact ? force_sign_note(a.force_vanishes_exact, a.force_changes_sign_exact) : "";
+  auto pcf_cell = [](double v, const std::string& note) {
+    return note.empty() ? fmt::format("{:.2f}", v) : fmt::format("{:.2f} ({})", v, note);
+  };
+  warn_if_force_vanishes(a, exact);
+  row.line = fmt::format(
+      "| {} | {} | {} | {} | {} | {} | {} | {} | {:.2f} | {} |\n",
+      d.name,
+      a.has_exact ? (exact ? "yes" : "did not converge") : "PRBM only",
+      pcf_cell(a.prbm.percent_constant_force, prbm_note),
+      exact ? pcf_cell(a.percent_constant_force_exact, exact_note) : "-",
+      exact && prbm_note.empty() && exact_note.empty()
+          ? fmt::format("{:+.2f}", a.prbm.percent_constant_force - a.percent_constant_force_exact)
+          : "-",
+      exact ? percent(a.max_force_error) : "-",
+      exact ? fmt::format("{:.0f}", 100.0 * a.max_force_error_at / d.stroke) : "-",
+      limit,
+      a.safety_factor,
+      check ? (check->converged() ? fmt::format("{:.1e}", check->tip_error / d.r2)
+                                  : std::string("did not converge"))
+            : std::string("-"));
+  Json r = analysis_json(a);
+  if (check) {
+    r["chain_check_converged"] = check->converged();
+    r["chain_check_tip_error"] = check->converged() ? Json(check->tip_error) : Json(nullptr);
+    r["chain_check_closure_error"] =
+        check->converged() ? Json(check->closure_error) : Json(nullptr);
+    r["chain_check_elements"] = kChainCheckElements;
+    r["chain_check_at"] = a.exact.points.back().displacement;
+  }
+  r.erase("displacement");
+  r.erase("force_prbm");
+  r.erase("force_exact");
+  row.status = !a.has_exact ? 2 : !exact ? 1 : (check && !check->converged()) ? 3 : 0;
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  row.values = {a.prbm.percent_constant_force,
+                exact ? a.percent_constant_force_exact : none,
+                exact ? a.max_force_error : none,
+                exact ? a.max_force_error_at / d.stroke : none,
+                a.prbm_validity_limit ? *a.prbm_validity_limit / d.stroke : -1.0,
+                a.safety_factor,
+                check && check->converged() ? check->tip_error / d.r2 : none,
+                d.stroke};
+  row.json = std::move(r);
+  return row;
+}
+
+// The numeric datasets of `mechanism validate --out` (docs/hdf5-schema.md), in ValidationRow
+// order: name, units, description.
+const std::vector<std::array<const char*, 3>>& validation_columns() {
+  static const std::vector<std::array<const char*, 3>> columns = {
+      {"percent_constant_force", "%", "PRBM Xi' over the stroke"},
+      {"percent_constant_force_exact", "%", "exact-model Xi'; NaN where status != 0"},
+      {"max_force_error", "1", "largest |F_prbm - F_exact|/|F_exact|; NaN where status != 0"},
+      {"max_force_error_at",
+       "1",
+       "displacement of that largest error / stroke; NaN where status != 0"},
+      {"prbm_validity_limit",
+       "1",
+       "displacement where the PRBM leaves its validity limit / stroke; -1 where it never does"},
+      {"safety_factor", "1", "yield strength / the largest stress over the stroke"},
+      {"chain_check_tip_error",
+       "1",
+       "tip error / r2 of Howell's chain algorithm on the last exact point; NaN where status != "
+       "0"},
+      {"stroke", "m", "the stroke evaluated"}};
+  return columns;
+}
+
 void print_validation(int points,
                       std::optional<double> toggle_fraction,
                       std::optional<SpringRule> rule,
                       bool markdown,
                       bool json,
-                      const std::string& set) {
-  Json rows = Json::array();
+                      const std::string& set,
+                      const std::string& spring_rule,
+                      const std::string& out) {
   std::string table =
       "| Mechanism | Exact model | Xi' PRBM % | Xi' exact % | Xi' error (points) | max force "
       "error % | at Delta x / stroke % | PRBM validity limit (Delta x / stroke %) | SF | chain "
       "check tip error / r2 |\n"
       "|---|---|---|---|---|---|---|---|---|---|\n";
-  for (MechanismDesign d : listed_designs(set)) {
-    if (toggle_fraction) d.stroke = *toggle_fraction * d.toggle_stroke();
-    if (rule && has_fixed_fixed(d)) apply_spring_rule(d, *rule);
-    AnalysisOptions o;
-    o.points = points;
-    o.exact_stress = false;
-    // Name the design in an error: the table runs many of them.
-    const MechanismAnalysis a = [&] {
-      try {
-        return analyze_mechanism(d, o);
-      } catch (const InvalidInput& e) {
-        throw InvalidInput(fmt::format("{}: {}", d.name, e.what()));
-      } catch (const NoConvergence& e) {
-        throw NoConvergence(fmt::format("{}: {}", d.name, e.what()));
-      }
-    }();
-    const bool exact = a.has_exact && a.exact.converged();
-    // Second opinion on the last stroke point: Howell's chain algorithm (corrected variant,
-    // kChainCheckElements elements per chain) on the exact model's solution.
-    std::optional<ChainCheck> check;
-    if (exact && !a.exact.points.empty()) {
-      check = chain_algorithm_check(a.exact.points.back(), kChainCheckElements);
+  const std::vector<MechanismDesign> designs = listed_designs(set);
+  const auto n = static_cast<hsize_t>(designs.size());
+  // --out: created before any design is analysed (a wrong path fails at once); under mpirun every
+  // rank writes the designs it analysed into the one file (docs/scaling.md).
+  std::unique_ptr<io::AtomicHdf5File> file;
+  std::vector<io::Hdf5Dataset> columns;
+  std::optional<io::Hdf5Dataset> status;
+  if (!out.empty()) {
+    io::check_output_path(out);
+    try {
+      file = std::make_unique<io::AtomicHdf5File>(out, io::Hdf5Access::kCollective);
+    } catch (const io::Hdf5Error& e) {
+      throw InvalidInput(fmt::format("--out: {}", e.what()));
     }
-    const std::string limit =
-        a.prbm_validity_limit ? fmt::format("{:.0f}", 100.0 * *a.prbm_validity_limit / d.stroke)
-        : has_fixed_fixed(d)  ? std::string("none (fixed-fixed segments: no Theta_max table)")
-                              : std::string("never (s pivots only, or within Table 5.1)");
-    // A percentage of a force that vanishes is 0 by definition (constant_force.h): say so in the
-    // cell, and leave out the difference, which would compare a definition with a ratio.
-    const std::string prbm_note = force_sign_note(a.prbm.force_vanishes, a.prbm.force_changes_sign);
-    const std::string exact_note =
-        exact ? force_sign_note(a.force_vanishes_exact, a.force_changes_sign_exact) : "";
-    auto pcf_cell = [](double v, const std::string& note) {
-      return note.empty() ? fmt::format("{:.2f}", v) : fmt::format("{:.2f} ({})", v, note);
-    };
-    warn_if_force_vanishes(a, exact);
-    table += fmt::format(
-        "| {} | {} | {} | {} | {} | {} | {} | {} | {:.2f} | {} |\n",
-        d.name,
-        a.has_exact ? (exact ? "yes" : "did not converge") : "PRBM only",
-        pcf_cell(a.prbm.percent_constant_force, prbm_note),
-        exact ? pcf_cell(a.percent_constant_force_exact, exact_note) : "-",
-        exact && prbm_note.empty() && exact_note.empty()
-            ? fmt::format("{:+.2f}", a.prbm.percent_constant_force - a.percent_constant_force_exact)
-            : "-",
-        exact ? percent(a.max_force_error) : "-",
-        exact ? fmt::format("{:.0f}", 100.0 * a.max_force_error_at / d.stroke) : "-",
-        limit,
-        a.safety_factor,
-        check ? (check->converged() ? fmt::format("{:.1e}", check->tip_error / d.r2)
-                                    : std::string("did not converge"))
-              : std::string("-"));
-    Json r = analysis_json(a);
-    if (check) {
-      r["chain_check_converged"] = check->converged();
-      r["chain_check_tip_error"] = check->converged() ? Json(check->tip_error) : Json(nullptr);
-      r["chain_check_closure_error"] =
-          check->converged() ? Json(check->closure_error) : Json(nullptr);
-      r["chain_check_elements"] = kChainCheckElements;
-      r["chain_check_at"] = a.exact.points.back().displacement;
+    io::Hdf5Group& root = file->root();
+    root.set_attribute("designs", set);
+    root.set_attribute("points", static_cast<std::int64_t>(points));
+    root.set_attribute("mpi_ranks",
+                       static_cast<std::int64_t>(root.collective() ? parallel::world().size() : 1));
+    if (toggle_fraction) root.set_attribute("toggle_fraction", *toggle_fraction);
+    if (rule) root.set_attribute("spring_rule", spring_rule);
+    for (const auto& [name, units, description] : validation_columns()) {
+      columns.push_back(root.create_dataset(name, io::Hdf5Type::kFloat64, {n}, units, description));
     }
-    r.erase("displacement");
-    r.erase("force_prbm");
-    r.erase("force_exact");
-    rows.push_back(r);
+    status.emplace(root.create_dataset(
+        "status",
+        io::Hdf5Type::kInt32,
+        {n},
+        "1",
+        "0 exact model converged, 1 exact model did not converge, 2 PRBM only (no exact model), 3 "
+        "the chain-algorithm check did not converge"));
   }
+  // Rows come back to rank 0 as text: the index, the JSON object and the Markdown line.
+  std::vector<std::string> mine;
+  parallel::DistributionOptions distribution;
+  distribution.max_block = 1;
+  distribution.describe = [&](long i) { return designs[i].name; };
+  parallel::distribute(
+      static_cast<long>(designs.size()),
+      [&](long begin, long end) -> parallel::BlockWriter {
+        auto rows = std::make_shared<std::vector<ValidationRow>>();
+        for (long i = begin; i < end; ++i) {
+          rows->push_back(validate_design(designs[i], points, toggle_fraction, rule));
+        }
+        return [&, rows, begin] {
+          for (std::size_t k = 0; k < rows->size(); ++k) {
+            const ValidationRow& row = (*rows)[k];
+            const auto at = static_cast<hsize_t>(begin) + k;
+            for (std::size_t c = 0; c < columns.size(); ++c) {
+              columns[c].write_range(at, std::span<const double>(&row.values[c], 1));
+            }
+            if (status) status->write_range(at, std::span<const int>(&row.status, 1));
+            mine.insert(mine.end(), {std::to_string(at), row.json.dump(), row.line});
+          }
+        };
+      },
+      distribution);
+  const std::vector<std::string> all = parallel::world().gather(mine);
+  std::vector<std::string> lines(designs.size());
+  Json rows = Json::array();
+  std::vector<Json> ordered(designs.size());
+  for (std::size_t k = 0; k + 2 < all.size(); k += 3) {
+    const auto at = static_cast<std::size_t>(std::stoul(all[k]));
+    ordered[at] = Json::parse(all[k + 1]);
+    lines[at] = all[k + 2];
+  }
+  for (std::size_t i = 0; i < designs.size(); ++i) {
+    rows.push_back(ordered[i]);
+    table += lines[i];
+  }
+  if (file) {
+    std::vector<std::string> names;
+    for (const MechanismDesign& d : designs) names.push_back(d.name);
+    file->root().write_dataset("name", names, "text", "the design");
+    io::write_provenance(file->root(),
+                         {{"status", 0, "the exact model converged"},
+                          {"status", 1, "the exact model did not converge"},
+                          {"status", 2, "PRBM only: the configuration has no exact model"},
+                          {"status", 3, "the chain-algorithm check did not converge"}});
+    columns.clear();
+    status.reset();
+    file->commit();
+  }
+  if (!parallel::world().root()) return;
   if (json) {
     print_json(Json{{"points", points}, {"mechanisms", rows}});
   } else if (markdown) {
@@ -644,6 +780,7 @@ void register_mechanism_command(CLI::App& app) {
     std::string designs = "builtin";
     std::string spring_rule;
     bool spring_rules = false;
+    std::string out;
   };
   auto vargs = std::make_shared<ValidateArgs>();
   CLI::App* validate = mech.add_subcommand(
@@ -664,6 +801,10 @@ void register_mechanism_command(CLI::App& app) {
       vargs->spring_rule,
       "Spring rule of the modified designs: pure-bending (default), table2, table5");
   CLI::Option* json_opt = validate->add_flag("--json", vargs->json, "Print one JSON object");
+  CLI::Option* out_opt = validate->add_option(
+      "--out",
+      vargs->out,
+      "Also write the table to this HDF5 file (docs/hdf5-schema.md; one file under mpirun)");
   CLI::Option* designs_opt =
       validate
           ->add_option("--designs",
@@ -676,7 +817,10 @@ void register_mechanism_command(CLI::App& app) {
   // Combinations that were silently ignored: one output format; --spring-rules has its own
   // designs (the modified ones), stroke and rules.
   markdown_opt->excludes(json_opt);
-  spring_rules_opt->excludes(toggle_opt)->excludes(spring_rule_opt)->excludes(designs_opt);
+  spring_rules_opt->excludes(toggle_opt)
+      ->excludes(spring_rule_opt)
+      ->excludes(designs_opt)
+      ->excludes(out_opt);
   validate->callback([vargs] {
     require_in_range(vargs->points, "--points", 2, 100000);
     if (vargs->toggle_fraction) {
@@ -696,8 +840,14 @@ void register_mechanism_command(CLI::App& app) {
     }
     std::optional<SpringRule> rule;
     if (!vargs->spring_rule.empty()) rule = parse_spring_rule(vargs->spring_rule);
-    print_validation(
-        vargs->points, vargs->toggle_fraction, rule, vargs->markdown, vargs->json, vargs->designs);
+    print_validation(vargs->points,
+                     vargs->toggle_fraction,
+                     rule,
+                     vargs->markdown,
+                     vargs->json,
+                     vargs->designs,
+                     vargs->spring_rule,
+                     vargs->out);
   });
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
+#include <optional>
 
 #include "cli/beam_methods.h"
 #include "cli/cli_common.h"
@@ -14,6 +15,7 @@
 #include "flexure/io/beam_sweep.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/output_path.h"
+#include "flexure/io/parallel/mpi_world.h"
 #include "flexure/io/quantity.h"
 #include "flexure/solver/common/errors.h"
 
@@ -29,13 +31,14 @@ struct SweepBeamArgs {
   std::string b_over_l;
   std::string method = "auto";
   std::string out;
-  int threads = 2;
+  std::optional<int> threads;  // default: 2, or 1 per rank under mpirun
   bool compress = false;
   bool json = false;
 };
 
-// At most 10^7 points (a file of about 360 MB); the sweep streams, so memory stays flat.
-constexpr long kMaxSweepCount = 10'000'000;
+// At most 10^7 points (a file of about 400 MB); under mpirun 10^10, the studies of docs/scaling.md
+// (10^9 points: 40 GB). The sweep streams, so memory stays flat either way.
+long max_sweep_count() { return parallel::launched_size() > 1 ? 10'000'000'000L : 10'000'000L; }
 
 // One of the parameters: a fixed value, or an axis when the text has a ':'.
 void add_parameter(BeamSweepGrid& grid, SweepParameter p, const std::string& text) {
@@ -45,7 +48,7 @@ void add_parameter(BeamSweepGrid& grid, SweepParameter p, const std::string& tex
     if (p == SweepParameter::kTheta0) warn(io::angle_warning({value, ""}, what));
   };
   if (text.find(':') != std::string::npos) {
-    const Range r = parse_range(text, what, kMaxSweepCount);
+    const Range r = parse_range(text, what, max_sweep_count());
     grid.axes.push_back({p, r.start, r.stop, r.count});
     check_angle(std::fabs(r.start) > std::fabs(r.stop) ? r.start : r.stop);
     return;
@@ -88,7 +91,7 @@ BeamSweepGrid make_grid(const SweepBeamArgs& args) {
   }
   add_parameter(grid, SweepParameter::kLoadRatioN, args.load_ratio_n);
   add_parameter(grid, SweepParameter::kMu, args.mu);
-  grid.validate(kMaxSweepCount);
+  grid.validate(max_sweep_count());
   return grid;
 }
 
@@ -140,7 +143,9 @@ const char* given_name(const BeamProblem& problem) {
 
 void run_sweep_beam(const SweepBeamArgs& args) {
   const auto started = std::chrono::steady_clock::now();
-  require_in_range(args.threads, "--threads", 1, 64);
+  // Under mpirun the ranks are the parallelism: one thread each unless asked otherwise.
+  const int threads = args.threads.value_or(parallel::launched_size() > 1 ? 1 : 2);
+  require_in_range(threads, "--threads", 1, 64);
   const BeamSweepGrid grid = make_grid(args);
   const long count = grid.size();
   // Fails (exit 2) for a method not in this build, before any file is touched.
@@ -149,9 +154,16 @@ void run_sweep_beam(const SweepBeamArgs& args) {
 
   // Check and open the output first: an unwritable path is reported before minutes of solving.
   io::check_output_path(args.out);
+  // Under mpirun every rank writes its blocks into the one file (docs/scaling.md).
+  if (args.compress && parallel::launched_size() > 1) {
+    throw InvalidInput(
+        "--compress is not available under mpirun with several ranks: parallel HDF5 writes "
+        "compressed datasets only collectively; compress the file afterwards (h5repack -f "
+        "SHUF -f GZIP=4)");
+  }
   std::unique_ptr<io::AtomicHdf5File> file;
   try {
-    file = std::make_unique<io::AtomicHdf5File>(args.out);
+    file = std::make_unique<io::AtomicHdf5File>(args.out, io::Hdf5Access::kCollective);
   } catch (const io::Hdf5Error& e) {
     throw InvalidInput(fmt::format("--out: {}", e.what()));
   }
@@ -167,11 +179,11 @@ void run_sweep_beam(const SweepBeamArgs& args) {
     return point;
   };
   io::BeamSweepOptions options;
-  options.threads = args.threads;
+  options.threads = threads;
   options.describe = [&](long index) { return describe_point(grid, index); };
   // Chunks of about 1/64 of each thread's share, so that progress moves steadily on slow methods;
   // at most 2048 points, which amortises the hand-out on fast ones.
-  options.chunk = std::clamp(count / (64L * args.threads), 1L, 2048L);
+  options.chunk = std::clamp(count / (64L * threads), 1L, 2048L);
   // By elapsed time, not by count: silent for the first second, then "sweep beam: k/n (t s)" on a
   // terminal (a shooting sweep of 2000 loads takes about 40 s).
   if (auto progress = slow_progress("sweep beam")) {
@@ -262,7 +274,9 @@ void register_sweep_command(CLI::App& app) {
       ->default_str("0");
   add_method_option(*beam, args->method);
   beam->add_option("--out", args->out, "Output HDF5 file (written atomically)")->required();
-  beam->add_option("--threads", args->threads, "Worker threads (1-64)")->default_str("2");
+  beam->add_option(
+          "--threads", args->threads, "Worker threads per process (1-64; 1 per rank under mpirun)")
+      ->default_str("2");
   beam->add_flag("--compress",
                  args->compress,
                  "Compress the datasets (shuffle + deflate, chunks of 64 Ki points)");

@@ -11,6 +11,8 @@
 #include <mutex>
 #include <thread>
 
+#include "flexure/io/parallel/mpi_world.h"
+#include "flexure/io/parallel/work_distribution.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/evenly_spaced.h"
 
@@ -258,7 +260,10 @@ void BeamSweepWriter::finish(long converged_count) {
         for (long i = begin; i < std::min(axis.count, begin + kAxisBlock); ++i) {
           block.push_back(evenly_spaced(axis.start, axis.stop, axis.count, i));
         }
-        values.write_range(static_cast<hsize_t>(begin), std::span<const double>(block));
+        // A collective file: rank 0 writes the axis (every rank creates it).
+        if (!axes.collective() || parallel::world().root()) {
+          values.write_range(static_cast<hsize_t>(begin), std::span<const double>(block));
+        }
       }
       names += (names.empty() ? "" : ",") + axis.name;
       n_axis = n_axis || axis.name == "load_ratio_n";
@@ -273,6 +278,8 @@ void BeamSweepWriter::finish(long converged_count) {
     }
   }
   group.set_attribute("method", metadata.method);
+  group.set_attribute("mpi_ranks",
+                      static_cast<std::int64_t>(group.collective() ? parallel::world().size() : 1));
   if (!n_axis) group.set_attribute("load_ratio_n", metadata.load_ratio_n);
   if (!mu_axis) group.set_attribute("mu", metadata.mu);
   group.set_attribute("tolerance", metadata.tolerance);
@@ -295,29 +302,57 @@ BeamSweepSummary stream_beam_sweep(long count,
                                    const BeamSweepOptions& options,
                                    BeamSweepWriter& writer,
                                    long block_points) {
+  const parallel::World& world = parallel::world();
   BeamSweepSummary summary;
   summary.count = count;
-  const long block = std::max(1L, block_points);
-  for (long begin = 0; begin < count; begin += block) {
-    const long n = std::min(block, count - begin);
-    BeamSweepOptions block_options = options;
-    if (options.progress) {
-      block_options.progress = [&, begin](long done, long) {
-        options.progress(begin + done, count);
-      };
-    }
-    if (options.describe) {
-      block_options.describe = [&, begin](long i) { return options.describe(begin + i); };
-    } else {
-      block_options.describe = [begin](long i) { return fmt::format("point {}", begin + i); };
-    }
-    const BeamSweepTable table = run_beam_sweep(
-        n, [&, begin](long i) { return solve(begin + i); }, block_options);
-    writer.write(begin, table);
-    summary.converged_count += table.converged_count;
-    if (summary.first_failure < 0 && table.first_failure >= 0) {
-      summary.first_failure = begin + table.first_failure;
-      summary.first_failure_message = table.first_failure_message;
+  long converged = 0;
+  long first_failure = -1;  // this rank's (its blocks come in increasing order)
+  std::string first_message;
+  parallel::DistributionOptions distribution;
+  // Blocks of at most block_points; several ranks take a share of what is left, so that the blocks
+  // shrink towards the end and the ranks finish together (work_distribution.h).
+  distribution.max_block = std::max(1L, block_points);
+  if (world.parallel()) distribution.progress = options.progress;
+  distribution.describe = options.describe;
+  parallel::distribute(
+      count,
+      [&](long begin, long end) -> parallel::BlockWriter {
+        BeamSweepOptions block_options = options;
+        block_options.progress = nullptr;
+        if (options.progress && !world.parallel()) {
+          // One rank: progress within the block, as the points are solved.
+          block_options.progress = [&, begin](long done, long) {
+            options.progress(begin + done, count);
+          };
+        }
+        if (options.describe) {
+          block_options.describe = [&, begin](long i) { return options.describe(begin + i); };
+        } else {
+          block_options.describe = [begin](long i) { return fmt::format("point {}", begin + i); };
+        }
+        auto table = std::make_shared<BeamSweepTable>(run_beam_sweep(
+            end - begin, [&, begin](long i) { return solve(begin + i); }, block_options));
+        return [&, table, begin] {
+          writer.write(begin, *table);
+          converged += table->converged_count;
+          if (first_failure < 0 && table->first_failure >= 0) {
+            first_failure = begin + table->first_failure;
+            first_message = table->first_failure_message;
+          }
+        };
+      },
+      distribution);
+  summary.converged_count = world.sum(converged);
+  // The first failure over the ranks; its message comes from the rank that met it.
+  constexpr long kNone = std::numeric_limits<long>::max();
+  const long first = world.min(first_failure < 0 ? kNone : first_failure);
+  if (first != kNone) {
+    summary.first_failure = first;
+    const std::vector<std::int64_t> indices =
+        world.gather(std::vector<std::int64_t>{first_failure});
+    const std::vector<std::string> messages = world.gather(std::vector<std::string>{first_message});
+    for (std::size_t r = 0; r < indices.size(); ++r) {
+      if (indices[r] == first) summary.first_failure_message = messages[r];
     }
   }
   writer.finish(summary.converged_count);

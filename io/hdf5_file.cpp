@@ -13,10 +13,26 @@
 #include <utility>
 
 #include "flexure/io/output_path.h"
+#include "flexure/io/parallel/mpi_world.h"
 #include "flexure/io/provenance.h"
 #include "flexure/io/temp_file_cleanup.h"
 
 namespace flexure::io {
+
+namespace detail {
+// How a file is written, shared by its groups (hdf5_file.h Hdf5Access).
+struct Hdf5FileState {
+  bool collective = false;   // kCollective with more than one rank
+  bool writes_whole = true;  // this rank writes datasets given whole (rank 0)
+  // String datasets of a collective file, written by rank 0 in commit().
+  struct DeferredStrings {
+    std::string group_path, name, units, description;
+    std::vector<std::string> values;
+  };
+  std::vector<DeferredStrings> deferred;
+};
+}  // namespace detail
+
 namespace {
 
 // Closes an HDF5 identifier when leaving scope; close failures in cleanup paths are ignored
@@ -83,13 +99,20 @@ void disable_hdf5_error_printing() {
 // ---------------------------------------------------------------------------------------------
 // Hdf5Group
 
-Hdf5Group::Hdf5Group(hid_t id, std::string file_path, std::string group_path)
-    : id_(id), file_path_(std::move(file_path)), group_path_(std::move(group_path)) {}
+Hdf5Group::Hdf5Group(hid_t id,
+                     std::string file_path,
+                     std::string group_path,
+                     std::shared_ptr<detail::Hdf5FileState> state)
+    : id_(id),
+      file_path_(std::move(file_path)),
+      group_path_(std::move(group_path)),
+      state_(std::move(state)) {}
 
 Hdf5Group::Hdf5Group(Hdf5Group&& other) noexcept
     : id_(std::exchange(other.id_, H5I_INVALID_HID)),
       file_path_(std::move(other.file_path_)),
-      group_path_(std::move(other.group_path_)) {}
+      group_path_(std::move(other.group_path_)),
+      state_(std::move(other.state_)) {}
 
 Hdf5Group& Hdf5Group::operator=(Hdf5Group&& other) noexcept {
   if (this != &other) {
@@ -97,6 +120,7 @@ Hdf5Group& Hdf5Group::operator=(Hdf5Group&& other) noexcept {
     id_ = std::exchange(other.id_, H5I_INVALID_HID);
     file_path_ = std::move(other.file_path_);
     group_path_ = std::move(other.group_path_);
+    state_ = std::move(other.state_);
   }
   return *this;
 }
@@ -106,6 +130,8 @@ Hdf5Group::~Hdf5Group() {
   // avoids closing an identifier HDF5 may have reused.
   if (id_ >= 0 && H5Iis_valid(id_) > 0) H5Gclose(id_);
 }
+
+bool Hdf5Group::collective() const { return state_ && state_->collective; }
 
 std::string Hdf5Group::where() const { return fmt::format("{}:{}", file_path_, group_path_); }
 
@@ -122,7 +148,7 @@ Hdf5Group Hdf5Group::create_group(const std::string& name) {
   hid_t id = check_id(H5Gcreate2(id_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                       where,
                       "creating the group");
-  return Hdf5Group(id, file_path_, path);
+  return Hdf5Group(id, file_path_, path, state_);
 }
 
 hid_t Hdf5Group::create_described(const std::string& name,
@@ -156,7 +182,8 @@ void Hdf5Group::write_described(const std::string& name,
                                 const std::string& description) {
   const std::string where = fmt::format("dataset '{}' in {}", child_path(name), file_path_);
   ScopedId dataset(create_described(name, type, space, H5P_DEFAULT, units, description), H5Dclose);
-  if (data != nullptr) {
+  // A collective file: created by every rank, its values written by rank 0 (independent transfer).
+  if (data != nullptr && (!state_ || state_->writes_whole)) {
     check_status(H5Dwrite(dataset.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
                  where,
                  "writing the data");
@@ -170,8 +197,11 @@ Hdf5Dataset Hdf5Group::create_dataset(const std::string& name,
                                       const std::string& description,
                                       const Hdf5DatasetOptions& options) {
   const std::string where = fmt::format("dataset '{}' in {}", child_path(name), file_path_);
-  if (dims.empty() || dims.size() > 2) {
-    throw Hdf5Error(fmt::format("HDF5: {} must have rank 1 or 2", where));
+  if (dims.empty() || dims.size() > 8) {
+    throw Hdf5Error(fmt::format("HDF5: {} must have rank 1 to 8", where));
+  }
+  if (options.compress && dims.size() > 2) {
+    throw Hdf5Error(fmt::format("HDF5: {} can be compressed only with rank 1 or 2", where));
   }
   const hid_t memory_type = type == Hdf5Type::kFloat64 ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT;
   ScopedId space(check_id(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
@@ -183,6 +213,12 @@ Hdf5Dataset Hdf5Group::create_dataset(const std::string& name,
   hsize_t points = 1;
   for (hsize_t d : dims) points *= d;
   if (options.compress && points > 0) {
+    if (state_ && state_->collective) {
+      throw Hdf5Error(fmt::format(
+          "HDF5: {} cannot be compressed when several MPI ranks write it (parallel HDF5 writes "
+          "filtered datasets only with collective transfers); write it uncompressed",
+          where));
+    }
     if (H5Zfilter_avail(H5Z_FILTER_DEFLATE) <= 0) {
       throw Hdf5Error(fmt::format("HDF5: this HDF5 library has no deflate filter ({})", where));
     }
@@ -261,40 +297,32 @@ void Hdf5Dataset::write_range(hsize_t begin, hsize_t count, hid_t memory_type, c
                                 where_));
   }
   ScopedId file_space(check_id(H5Dget_space(id_), where_, "getting the dataspace"), H5Sclose);
-  if (dims_.size() == 1) {
+  // A row-major range of an N-d dataset as a union of blocks (e.g. in 2-d: the rest of its first
+  // row, whole rows, the start of its last row). Each block starts at the range's next point and
+  // is the largest one aligned there: whole trailing axes, several steps of one axis, within that
+  // axis's extent. HDF5 transfers a union of blocks in row-major order, the range's order.
+  const std::size_t rank = dims_.size();
+  std::vector<hsize_t> stride(rank, 1);
+  for (std::size_t k = rank - 1; k > 0; --k) stride[k - 1] = stride[k] * dims_[k];
+  H5S_seloper_t op = H5S_SELECT_SET;
+  for (hsize_t at = begin, end = begin + count; at < end;) {
+    std::size_t axis = rank - 1;
+    for (std::size_t k = 0; k < rank; ++k) {
+      if (at % stride[k] == 0 && at + stride[k] <= end) {
+        axis = k;
+        break;
+      }
+    }
+    std::vector<hsize_t> start(rank), block(rank, 1);
+    for (std::size_t k = 0; k < rank; ++k) start[k] = (at / stride[k]) % dims_[k];
+    block[axis] = std::min((end - at) / stride[axis], dims_[axis] - start[axis]);
+    for (std::size_t k = axis + 1; k < rank; ++k) block[k] = dims_[k];
     check_status(
-        H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &begin, nullptr, &count, nullptr),
+        H5Sselect_hyperslab(file_space.get(), op, start.data(), nullptr, block.data(), nullptr),
         where_,
         "selecting the range");
-  } else {
-    // A row-major range of a 2-D dataset: the rest of its first row, whole rows, the start of its
-    // last row. HDF5 transfers a union of blocks in row-major order, which is the range's order.
-    const hsize_t columns = dims_[1];
-    const hsize_t end = begin + count;
-    H5S_seloper_t op = H5S_SELECT_SET;
-    const auto select = [&](hsize_t row, hsize_t column, hsize_t rows, hsize_t columns_n) {
-      const hsize_t start[2] = {row, column};
-      const hsize_t block[2] = {rows, columns_n};
-      check_status(H5Sselect_hyperslab(file_space.get(), op, start, nullptr, block, nullptr),
-                   where_,
-                   "selecting the range");
-      op = H5S_SELECT_OR;
-    };
-    const hsize_t first_row = begin / columns, first_column = begin % columns;
-    if (first_row == (end - 1) / columns) {
-      select(first_row, first_column, 1, count);  // within one row
-    } else {
-      hsize_t row = first_row;
-      if (first_column != 0) {
-        select(row++, first_column, 1, columns - first_column);
-      }
-      const hsize_t whole_rows = (end - row * columns) / columns;
-      if (whole_rows > 0) {
-        select(row, 0, whole_rows, columns);
-        row += whole_rows;
-      }
-      if (row * columns < end) select(row, 0, 1, end - row * columns);
-    }
+    op = H5S_SELECT_OR;
+    at += block[axis] * stride[axis];
   }
   ScopedId memory_space(
       check_id(H5Screate_simple(1, &count, nullptr), where_, "creating the memory dataspace"),
@@ -360,6 +388,14 @@ void Hdf5Group::write_dataset(const std::string& name,
                               const std::string& units,
                               const std::string& description) {
   const std::string where = fmt::format("dataset '{}' in {}", child_path(name), file_path_);
+  if (state_ && state_->collective) {
+    // Parallel HDF5 does not write variable-length data: rank 0 writes it in commit().
+    if (units.empty() || description.empty() || description.find('\n') != std::string::npos) {
+      throw Hdf5Error(fmt::format("HDF5: {} needs units and a one-line description", where));
+    }
+    state_->deferred.push_back({group_path_, name, units, description, values});
+    return;
+  }
   std::vector<const char*> pointers;
   pointers.reserve(values.size());
   for (const std::string& value : values) pointers.push_back(value.c_str());
@@ -411,7 +447,7 @@ void Hdf5Group::set_attribute(const std::string& name, std::int64_t value) {
 // ---------------------------------------------------------------------------------------------
 // AtomicHdf5File
 
-AtomicHdf5File::AtomicHdf5File(std::string path)
+AtomicHdf5File::AtomicHdf5File(std::string path, Hdf5Access access)
     : path_(std::move(path)), root_(H5I_INVALID_HID, path_, "/") {
   disable_hdf5_error_printing();
   if (path_.empty()) throw Hdf5Error("cannot write an HDF5 file to an empty path");
@@ -419,26 +455,45 @@ AtomicHdf5File::AtomicHdf5File(std::string path)
   if (!problem.empty()) {
     throw Hdf5Error(fmt::format("cannot write HDF5 file '{}': {}", path_, problem));
   }
+  state_ = std::make_shared<detail::Hdf5FileState>();
+  const parallel::World* world = nullptr;
+  if (access == Hdf5Access::kCollective && parallel::world().parallel()) {
+    world = &parallel::world();
+    state_->collective = true;
+    state_->writes_whole = world->root();
+  }
 
   // Same directory as the target so that rename() is atomic (same file system). The name is
   // unique per process and call; H5F_ACC_EXCL refuses to clobber anything. It is cut to fit the
-  // file-name limit, so that any target name the file system allows can be written.
+  // file-name limit, so that any target name the file system allows can be written. A collective
+  // file takes rank 0's name.
   static std::atomic<unsigned> counter{0};
   const std::filesystem::path target(path_);
   const std::string directory =
       target.parent_path().empty() ? std::string(".") : target.parent_path().string();
   temp_path_ = temporary_path_for(
       path_, static_cast<long>(::getpid()), counter.fetch_add(1), file_name_limit(directory));
+  if (world != nullptr) temp_path_ = world->broadcast(temp_path_);
 
-  ScopedId access(check_id(H5Pcreate(H5P_FILE_ACCESS), path_, "creating file-access properties"),
-                  H5Pclose);
+  ScopedId access_list(
+      check_id(H5Pcreate(H5P_FILE_ACCESS), path_, "creating file-access properties"), H5Pclose);
   // STRONG: closing the file closes every group or dataset still open, so commit() really has
   // the complete file on disk before the rename.
-  check_status(H5Pset_fclose_degree(access.get(), H5F_CLOSE_STRONG), path_, "setting close degree");
+  check_status(
+      H5Pset_fclose_degree(access_list.get(), H5F_CLOSE_STRONG), path_, "setting close degree");
+#ifdef FLEXURE_WITH_MPI
+  if (world != nullptr) {
+    check_status(H5Pset_fapl_mpio(access_list.get(), MPI_COMM_WORLD, MPI_INFO_NULL),
+                 path_,
+                 "selecting the MPI-IO driver");
+  }
+#endif
   // Registered before it exists: a signal in between finds nothing to unlink, which is harmless.
+  // Every rank of a collective file registers it: mpirun stops the others with SIGTERM when one
+  // fails, and whichever handler runs first removes it.
   cleanup_slot_ = register_temp_file(temp_path_);
   errno = 0;
-  file_ = H5Fcreate(temp_path_.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, access.get());
+  file_ = H5Fcreate(temp_path_.c_str(), H5F_ACC_EXCL, H5P_DEFAULT, access_list.get());
   if (file_ < 0) {
     // HDF5 does not say why; the errno of the failed open() is usually still there.
     const std::string reason = errno != 0 ? std::strerror(errno) : "HDF5 gave no reason";
@@ -456,7 +511,7 @@ AtomicHdf5File::AtomicHdf5File(std::string path)
     discard();
     throw Hdf5Error(fmt::format("HDF5: opening the root group of '{}' failed", temp_path_));
   }
-  root_ = Hdf5Group(root, path_, "/");
+  root_ = Hdf5Group(root, path_, "/", state_);
 }
 
 AtomicHdf5File::~AtomicHdf5File() {
@@ -464,10 +519,15 @@ AtomicHdf5File::~AtomicHdf5File() {
 }
 
 void AtomicHdf5File::discard() noexcept {
-  if (root_.id_ >= 0 && H5Iis_valid(root_.id_) > 0) H5Gclose(root_.id_);
-  root_.id_ = H5I_INVALID_HID;
-  if (file_ >= 0) H5Fclose(file_);
-  file_ = H5I_INVALID_HID;
+  // A collective file is only removed: closing it is collective, and this rank may be the only
+  // one failing (the run then ends with MPI_Abort; parallel/mpi_world.h RankFailure).
+  const bool collective = state_ && state_->collective;
+  if (!collective) {
+    if (root_.id_ >= 0 && H5Iis_valid(root_.id_) > 0) H5Gclose(root_.id_);
+    root_.id_ = H5I_INVALID_HID;
+    if (file_ >= 0) H5Fclose(file_);
+    file_ = H5I_INVALID_HID;
+  }
   if (!temp_path_.empty()) std::remove(temp_path_.c_str());
   unregister_temp_file(cleanup_slot_);
   cleanup_slot_ = -1;
@@ -489,21 +549,53 @@ void AtomicHdf5File::commit() {
   }
   if (root_.id_ >= 0) H5Gclose(root_.id_);
   root_.id_ = H5I_INVALID_HID;
-  const herr_t closed = H5Fclose(file_);
+  const herr_t closed = H5Fclose(file_);  // collective for a collective file
   file_ = H5I_INVALID_HID;
-  if (closed < 0) {
-    discard();
-    throw Hdf5Error(fmt::format("HDF5: closing (flushing) '{}' failed", temp_path_));
+  const bool collective = state_ && state_->collective;
+  std::string failure;
+  if (closed < 0) failure = fmt::format("HDF5: closing (flushing) '{}' failed", temp_path_);
+  if (collective) {
+    // Rank 0 finishes the file; every rank learns the outcome, so that all go on or all fail.
+    if (!parallel::world().all(closed >= 0)) failure = "HDF5: closing the collective file failed";
+    if (failure.empty() && parallel::world().root()) {
+      try {
+        write_deferred_strings();
+      } catch (const Hdf5Error& e) {
+        failure = e.what();
+      }
+    }
   }
-  if (std::rename(temp_path_.c_str(), path_.c_str()) != 0) {
-    const std::string reason = std::strerror(errno);
+  if (failure.empty() && (!collective || parallel::world().root()) &&
+      std::rename(temp_path_.c_str(), path_.c_str()) != 0) {
+    failure =
+        fmt::format("cannot rename '{}' to '{}': {}", temp_path_, path_, std::strerror(errno));
+  }
+  if (collective) failure = parallel::world().broadcast(failure);
+  if (!failure.empty()) {
+    state_->collective = false;  // closed: discard() only removes the temporary
     discard();
-    throw Hdf5Error(fmt::format("cannot rename '{}' to '{}': {}", temp_path_, path_, reason));
+    throw Hdf5Error(failure);
   }
   // After the rename: a signal before it still removes the temporary.
   unregister_temp_file(cleanup_slot_);
   cleanup_slot_ = -1;
   committed_ = true;
+}
+
+// The string datasets that a collective file deferred (rank 0, after every rank closed the file).
+void AtomicHdf5File::write_deferred_strings() {
+  if (state_->deferred.empty()) return;
+  ScopedId file(check_id(H5Fopen(temp_path_.c_str(), H5F_ACC_RDWR, H5P_DEFAULT),
+                         path_,
+                         "reopening the file for its string datasets"),
+                H5Fclose);
+  for (const detail::Hdf5FileState::DeferredStrings& d : state_->deferred) {
+    hid_t id =
+        check_id(H5Gopen2(file.get(), d.group_path.c_str(), H5P_DEFAULT), path_, "opening a group");
+    Hdf5Group group(id, path_, d.group_path);
+    group.write_dataset(d.name, d.values, d.units, d.description);
+  }
+  check_status(H5Fclose(file.release()), path_, "closing the file after its string datasets");
 }
 
 }  // namespace flexure::io

@@ -19,6 +19,7 @@
 #include <hdf5.h>
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -73,6 +74,22 @@ class Hdf5Dataset {
 };
 
 enum class Hdf5Type { kFloat64, kInt32 };
+
+// How a file is written (docs/scaling.md "One file from many ranks").
+//   kSerial:     by this process alone.
+//   kCollective: by every rank of parallel::world() together (the MPI build under mpirun; the
+//                same as kSerial in a run of one rank). Every rank makes the same calls in the same
+//                order with the same arguments (groups, datasets, attributes: HDF5's metadata),
+//                except Hdf5Dataset::write_range, which each rank calls for its own ranges. A
+//                dataset written whole takes rank 0's values. Parallel HDF5 cannot write
+//                variable-length strings, so string datasets are written by rank 0 after the
+//                collective part is closed, in commit(). Compression (filters) is refused: parallel
+//                HDF5 1.10 writes filtered datasets only with collective transfers.
+enum class Hdf5Access { kSerial, kCollective };
+
+namespace detail {
+struct Hdf5FileState;
+}
 
 // A group (or the root group "/") of a file being written. Move-only; closes its handle when
 // destroyed. Must not outlive the file it belongs to.
@@ -138,11 +155,16 @@ class Hdf5Group {
 
   // "file.h5:/group" for messages.
   std::string where() const;
+  // Whether several ranks write this group's file (Hdf5Access::kCollective under mpirun).
+  bool collective() const;
   hid_t id() const { return id_; }
 
  private:
   friend class AtomicHdf5File;
-  Hdf5Group(hid_t id, std::string file_path, std::string group_path);
+  Hdf5Group(hid_t id,
+            std::string file_path,
+            std::string group_path,
+            std::shared_ptr<detail::Hdf5FileState> state = nullptr);
   template <typename T>
   void write_numeric(const std::string& name,
                      std::span<const T> values,
@@ -172,6 +194,7 @@ class Hdf5Group {
   hid_t id_ = H5I_INVALID_HID;
   std::string file_path_;   // the target path (not the temporary), for messages
   std::string group_path_;  // "/" or "/a/b"
+  std::shared_ptr<detail::Hdf5FileState> state_;  // how the file is written (null: serial)
 };
 
 // An HDF5 file written under a temporary name and renamed to `path` on commit().
@@ -181,7 +204,9 @@ class AtomicHdf5File {
   // it cannot be written and renamed into place (io/output_path.h: missing or read-only
   // directory, a name over the file-name limit, a directory or device in its place, a file of
   // another user in a sticky directory), before any work is done.
-  explicit AtomicHdf5File(std::string path);
+  //
+  // kCollective: every rank calls this with the same path (rank 0 names the temporary file).
+  explicit AtomicHdf5File(std::string path, Hdf5Access access = Hdf5Access::kSerial);
   AtomicHdf5File(const AtomicHdf5File&) = delete;
   AtomicHdf5File& operator=(const AtomicHdf5File&) = delete;
   // Without commit(): closes and removes the temporary file; the target is left untouched.
@@ -192,7 +217,8 @@ class AtomicHdf5File {
   // Closes the file (closing every group still open) and renames it over `path`. Throws
   // Hdf5Error and removes the temporary if the root lacks an attribute of
   // provenance_attribute_names() (io/provenance.h: write_provenance was not called), or if
-  // closing or renaming fails. Call at most once.
+  // closing or renaming fails. Call at most once. kCollective: every rank calls it; the outcome
+  // (rank 0's rename) is the same on every rank.
   void commit();
 
   const std::string& path() const { return path_; }
@@ -201,12 +227,14 @@ class AtomicHdf5File {
 
  private:
   void discard() noexcept;
+  void write_deferred_strings();
 
   std::string path_;
   std::string temp_path_;
   hid_t file_ = H5I_INVALID_HID;
   Hdf5Group root_;
   bool committed_ = false;
+  std::shared_ptr<detail::Hdf5FileState> state_;
   int cleanup_slot_ = -1;  // temp_file_cleanup.h: removed if a signal stops the process
 };
 

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <utility>
 
+#include "flexure/io/parallel/mpi_world.h"
 #include "flexure/version.h"
 
 namespace flexure::io {
@@ -115,8 +116,12 @@ void write_provenance(Hdf5Group& root, const std::vector<CodeMeaning>& codes) {
   root.set_attribute("tool", "flexure");
   root.set_attribute("tool_version", kVersion);
   root.set_attribute("git_commit", kGitCommit);
-  root.set_attribute("command_line", command_line());
-  root.set_attribute("creation_time", utc_now_iso8601());
+  // Attributes of a collective file are written by every rank with the same value: rank 0's.
+  const auto same = [&](const std::string& value) {
+    return root.collective() ? parallel::world().broadcast(value) : value;
+  };
+  root.set_attribute("command_line", same(command_line()));
+  root.set_attribute("creation_time", same(utc_now_iso8601()));
   root.set_attribute("status_meanings", meanings);
 }
 

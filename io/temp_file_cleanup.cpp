@@ -9,6 +9,8 @@
 #include <cstring>
 #include <mutex>
 
+#include "flexure/io/parallel/work_distribution.h"
+
 namespace flexure::io {
 namespace {
 
@@ -49,6 +51,8 @@ extern "C" void remove_temp_files_and_reraise(int signal_number) {
   for (Slot& s : slots) {
     if (s.used.load(std::memory_order_acquire)) ::unlink(s.path);
   }
+  // An MPI run stopped by mpirun (a rank failed, or Ctrl-C): what rank 0 had handed out.
+  parallel::write_blocks_in_progress(STDERR_FILENO);
   if (note.set.load(std::memory_order_acquire)) {
     const bool missing = note.file[0] != '\0' && ::access(note.file, F_OK) != 0;
     write_all(missing ? note.if_missing : note.text);

@@ -10,6 +10,8 @@ packages=(
   libcli11-dev nlohmann-json3-dev libfmt-dev libtomlplusplus-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libnlopt-cxx-dev  # the optimiser of `flexure design` (docs/design.md)
+  # The MPI build (-DFLEXURE_MPI=ON, docs/scaling.md): Open MPI and the parallel HDF5 built on it.
+  openmpi-bin libopenmpi-dev libhdf5-openmpi-dev
   python3-matplotlib python3-h5py python3-numpy
   # The Python module (docs/python.md): pybind11, the headers of Debian's Python, pytest, and
   # what `pip install --no-build-isolation .` into a venv needs offline.

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds flexure in Release mode and runs the whole test suite: ctest, then pytest on the Python
 # module in the build tree, then the module installed as a wheel into a fresh venv and tested
-# there (docs/python.md).
+# there (docs/python.md); then the MPI variant (docs/scaling.md): the tool built against Open MPI
+# and parallel HDF5 in build-mpi/, and its tests under mpirun with 1, 2 and 3 ranks.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -20,3 +21,11 @@ FLEXURE_CMAKE_BUILD_DIR="$PWD/build" "$venv/bin/pip" install --quiet --no-build-
   --no-index .
 FLEXURE_EXPECT_INSTALLED="$venv" FLEXURE_BUILD_DIR="$PWD/build" \
   "$venv/bin/python" -m pytest -q tests/python/test_installed.py tests/python/test_cli_parity.py
+
+# The MPI variant: only the tool and its MPI tests (the library's own tests ran above). The tests
+# compare every file with the serial run of the same binary and with the serial build's binary,
+# and run one at a time (each starts up to 3 ranks on this machine's cores).
+cmake -S . -B build-mpi -DCMAKE_BUILD_TYPE=Release -DFLEXURE_MPI=ON -DFLEXURE_BUILD_BENCHMARKS=OFF
+cmake --build build-mpi -j "$(nproc)" --target flexure mpi_studies_test
+FLEXURE_SERIAL_BINARY="$PWD/build/flexure" \
+  ctest --test-dir build-mpi -R '^MpiStudies\.' --output-on-failure

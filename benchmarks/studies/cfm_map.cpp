@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
@@ -64,75 +65,50 @@ std::vector<std::size_t> CfmMapSpec::dims() const {
       R.size(), d.size(), std::max<std::size_t>(1, K1.size()), std::max<std::size_t>(1, K2.size())};
 }
 
-CfmMap cfm_map(const CfmMapSpec& spec,
-               const std::function<void(std::size_t, std::size_t)>& progress) {
-  spec.validate();
-  CfmMap m;
-  m.dims = spec.dims();
-  const std::size_t total = m.dims[0] * m.dims[1] * m.dims[2] * m.dims[3];
-  for (auto* v : {&m.Phi,
-                  &m.percent_constant_force,
-                  &m.Psi_raw,
-                  &m.toggle_stroke_percent,
-                  &m.effective_stroke_percent}) {
-    v->assign(total, 0.0);
-  }
-  m.stroke_clamped.assign(total, 0);
-  m.status.assign(total, kMapOk);
-  if (spec.exact) {
-    for (auto* v : {&m.percent_constant_force_exact, &m.Phi_exact, &m.max_force_error}) {
-      v->assign(total, 0.0);
-    }
-  }
-  const cfm::CfmModel model(spec.prbm);
-  cfm::CfmExactOptions exact_options;
-  exact_options.points = spec.points;
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < m.dims[0]; ++i) {
-    for (std::size_t j = 0; j < m.dims[1]; ++j) {
-      for (std::size_t a = 0; a < m.dims[2]; ++a) {
-        for (std::size_t b = 0; b < m.dims[3]; ++b, ++k) {
-          cfm::CfmParameters p;
-          p.config = spec.config;
-          p.R = spec.R[i];
-          p.stroke_percent = spec.d[j];
-          if (!spec.K1.empty()) p.K1 = spec.K1[a];
-          if (!spec.K2.empty()) p.K2 = spec.K2[b];
-          try {
-            const cfm::CfmResult r = model.evaluate(p);
-            if (!r.converged()) throw InvalidInput(r.message);
-            m.Phi[k] = r.Phi;
-            m.percent_constant_force[k] = r.percent_constant_force;
-            m.Psi_raw[k] = r.Psi_raw;
-            m.toggle_stroke_percent[k] = r.toggle_stroke_percent;
-            m.effective_stroke_percent[k] = r.stroke_percent;
-            m.stroke_clamped[k] = r.stroke_clamped ? 1 : 0;
-            if (spec.exact) {
-              // The exact model may refuse a point the PRBM takes (its equivalent design leaves
-              // the slender-beam limits at extreme K): the PRBM values stay, status 1.
-              try {
-                const cfm::CfmExactResult e = cfm::solve_cfm_exact(r, exact_options);
-                if (e.converged()) {
-                  m.percent_constant_force_exact[k] = e.percent_constant_force_exact;
-                  m.Phi_exact[k] = e.Phi_exact;
-                  m.max_force_error[k] = e.max_force_error;
-                } else {
-                  m.status[k] = kMapExactNotConverged;
-                }
-              } catch (const InvalidInput&) {
-                m.status[k] = kMapExactNotConverged;
-              }
-            }
-          } catch (const InvalidInput&) {
-            m.status[k] = kMapInvalid;
-            m.Phi[k] = m.percent_constant_force[k] = m.Psi_raw[k] = 0.0;
-            m.toggle_stroke_percent[k] = m.effective_stroke_percent[k] = 0.0;
-            m.stroke_clamped[k] = 0;
-          }
-          if (progress) progress(k + 1, total);
+CfmMapPoint cfm_map_point(const CfmMapSpec& spec, std::size_t index) {
+  const std::vector<std::size_t> dims = spec.dims();
+  // Row-major: K2 fastest.
+  const std::size_t b = index % dims[3];
+  const std::size_t a = (index / dims[3]) % dims[2];
+  const std::size_t j = (index / (dims[3] * dims[2])) % dims[1];
+  const std::size_t i = index / (dims[3] * dims[2] * dims[1]);
+  cfm::CfmParameters p;
+  p.config = spec.config;
+  p.R = spec.R.at(i);
+  p.stroke_percent = spec.d[j];
+  if (!spec.K1.empty()) p.K1 = spec.K1[a];
+  if (!spec.K2.empty()) p.K2 = spec.K2[b];
+  CfmMapPoint m;
+  try {
+    const cfm::CfmResult r = cfm::CfmModel(spec.prbm).evaluate(p);
+    if (!r.converged()) throw InvalidInput(r.message);
+    m.Phi = r.Phi;
+    m.percent_constant_force = r.percent_constant_force;
+    m.Psi_raw = r.Psi_raw;
+    m.toggle_stroke_percent = r.toggle_stroke_percent;
+    m.effective_stroke_percent = r.stroke_percent;
+    m.stroke_clamped = r.stroke_clamped ? 1 : 0;
+    if (spec.exact) {
+      // The exact model may refuse a point the PRBM takes (its equivalent design leaves the
+      // slender-beam limits at extreme K): the PRBM values stay, status 1.
+      cfm::CfmExactOptions exact_options;
+      exact_options.points = spec.points;
+      try {
+        const cfm::CfmExactResult e = cfm::solve_cfm_exact(r, exact_options);
+        if (e.converged()) {
+          m.percent_constant_force_exact = e.percent_constant_force_exact;
+          m.Phi_exact = e.Phi_exact;
+          m.max_force_error = e.max_force_error;
+        } else {
+          m.status = kMapExactNotConverged;
         }
+      } catch (const InvalidInput&) {
+        m.status = kMapExactNotConverged;
       }
     }
+  } catch (const InvalidInput&) {
+    m = CfmMapPoint{};
+    m.status = kMapInvalid;
   }
   return m;
 }

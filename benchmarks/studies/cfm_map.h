@@ -35,18 +35,32 @@ inline constexpr int kMapExactNotConverged = 1;  // PRBM values valid; the exact
                                                  // converge or refused the point: exact 0
 inline constexpr int kMapInvalid = 2;            // the model refused the point; every value 0
 
-struct CfmMap {
-  std::vector<std::size_t> dims;
-  std::vector<double> Phi, percent_constant_force, Psi_raw, toggle_stroke_percent,
-      effective_stroke_percent;
-  std::vector<int> stroke_clamped;
-  std::vector<double> percent_constant_force_exact, Phi_exact, max_force_error;  // with exact
-  std::vector<int> status;
+// One point of the map (index row-major over dims()).
+struct CfmMapPoint {
+  double Phi = 0.0, percent_constant_force = 0.0, Psi_raw = 0.0, toggle_stroke_percent = 0.0,
+         effective_stroke_percent = 0.0;
+  int stroke_clamped = 0;
+  double percent_constant_force_exact = 0.0, Phi_exact = 0.0, max_force_error = 0.0;  // exact
+  int status = kMapOk;
 };
 
-// Evaluates the map; `progress(done, total)` after every point (may be empty). Throws
-// InvalidInput for an invalid spec.
-CfmMap cfm_map(const CfmMapSpec& spec,
-               const std::function<void(std::size_t, std::size_t)>& progress = {});
+// Evaluates point `index` of a validated spec (the PRBM, and the exact model with spec.exact).
+CfmMapPoint cfm_map_point(const CfmMapSpec& spec, std::size_t index);
+
+// What a written map holds (on rank 0 under MPI; the counts and the best point over all ranks).
+struct CfmMapSummary {
+  std::vector<std::size_t> dims;
+  std::size_t points = 0, ok = 0, exact_not_converged = 0, invalid = 0;
+  double best_percent_constant_force = 0.0;  // exact Xi' with spec.exact, else the PRBM's
+  std::size_t best_index = 0;                // the first point of the best value
+};
+
+// Evaluates the map and writes it to `path` (docs/hdf5-schema.md "flexure map cfm") as it goes:
+// under mpirun every rank takes blocks of points (parallel/work_distribution.h) and writes them
+// into the one file; `progress(done, total)` on rank 0 (may be empty). Throws InvalidInput for an
+// invalid spec or an unwritable path, before any point is evaluated.
+CfmMapSummary write_cfm_map(const CfmMapSpec& spec,
+                            const std::string& path,
+                            const std::function<void(std::size_t, std::size_t)>& progress = {});
 
 }  // namespace flexure::studies

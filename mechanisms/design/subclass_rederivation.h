@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/design/cfm_synthesis.h"
 
 namespace flexure::design {
@@ -35,6 +36,14 @@ struct RederivationOptions {
   int exact_starts = -1;  // Halton starts of the exact search; -1: two per free variable
   std::string config;     // only this configuration's rows; empty: all 68
 };
+
+// The thesis rows of `config` (all 68 when empty), in the thesis's order. Throws InvalidInput for
+// an unknown configuration.
+std::vector<const cfm::CfmSubclass*> thesis_rows(const std::string& config);
+
+// One row re-derived (options.synthesis validated by the caller).
+SubclassRederivation rederive_subclass(const cfm::CfmSubclass& row,
+                                       const RederivationOptions& options);
 
 // The rows in the thesis's order; `progress(done, total)` after each (may be empty). Throws
 // InvalidInput for an unknown configuration.

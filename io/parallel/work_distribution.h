@@ -1,0 +1,43 @@
+#pragma once
+// Items of a study divided over the ranks of world() with dynamic load balancing
+// (docs/scaling.md "How the work is divided"): rank 0 hands out blocks of items on request, and a
+// rank asks for its next block as soon as it starts one, so that it never waits for the reply.
+// Blocks shrink towards the end (a share of what is left), so that ranks finish together however
+// the cost varies per item (exact strokes, optimisations). Rank 0 computes too, on a second
+// thread, while its first thread answers requests and writes; in a run of one rank the blocks are
+// computed in order on the calling thread.
+//
+// A block is computed by `compute(begin, end)` (on any thread, without MPI), which returns what is
+// left to do on the calling thread: writing the block (e.g. Hdf5Dataset::write_range of a
+// collective file). A failure in either is thrown as RankFailure naming the rank and the items,
+// after which the run must end with World::abort (cli/cli_common.cpp does so).
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace flexure::parallel {
+
+using BlockWriter = std::function<void()>;
+using BlockCompute = std::function<BlockWriter(long begin, long end)>;
+
+struct DistributionOptions {
+  long max_block = 1;  // at most this many items in one block
+  // Rank 0, on the calling thread: items done over all ranks (counted per finished block).
+  std::function<void(long done, long total)> progress;
+  // Names an item in a failure message, e.g. "R = 1.2, d = 30 %" (null: the index only).
+  std::function<std::string(long item)> describe;
+};
+
+// Computes items [0, total) over the ranks and returns the number this rank computed. Every rank
+// calls it with the same total and max_block.
+long distribute(long total, const BlockCompute& compute, const DistributionOptions& options);
+
+// Items computed by each rank in this process's distribute() calls so far (rank 0; empty in a run
+// of one rank): the balance that the tool reports at the end of an MPI run.
+std::vector<long> items_per_rank();
+
+// For a signal handler (async-signal-safe): writes the blocks in progress on the ranks, as rank 0
+// knows them ("rank 1: items 40-59"), to `fd`; nothing outside a distribute() on rank 0.
+void write_blocks_in_progress(int fd);
+
+}  // namespace flexure::parallel
