@@ -229,3 +229,29 @@ TEST(CliSweep, BadRangesAndMethodsAreExitTwoAndWriteNothing) {
 
 }  // namespace
 }  // namespace flexure::test
+
+namespace flexure::test {
+namespace {
+
+// The serial build (FLEXURE_MPI=OFF) started by mpirun with several ranks would run the whole
+// sweep in each and write the same file: it refuses, naming the build option (docs/scaling.md).
+// The MPI build's behaviour under mpirun is tested in tests/mpi/.
+TEST(CliSweep, SerialBuildUnderMpirunWithSeveralRanksIsRefused) {
+#ifdef FLEXURE_WITH_MPI
+  GTEST_SKIP() << "the MPI build divides the sweep (tests/mpi/)";
+#endif
+  if (std::system("command -v mpirun >/dev/null 2>&1") != 0) GTEST_SKIP() << "no mpirun";
+  ScratchDir dir;
+  const CommandResult r = run_flexure(
+      "sweep beam --alpha2 0:1:11 --out s.h5",
+      dir.path(),
+      "env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 timeout 120 mpirun -np 2 "
+      "--oversubscribe ");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("built without MPI"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("-DFLEXURE_MPI=ON"), std::string::npos) << r.err;
+  EXPECT_TRUE(dir.entries().empty());
+}
+
+}  // namespace
+}  // namespace flexure::test
