@@ -64,16 +64,21 @@ BeamSweepTable run_beam_sweep(long total,
   std::atomic<long> next{0};
   std::atomic<long> done{0};
   std::atomic<bool> stop{false};
+  // A load that throws (invalid input at that load) ends the sweep. The error reported is that of
+  // the first such load, whatever the number of threads: loads past it are skipped, those before
+  // it are all still solved, so that a smaller one that throws too is found.
+  std::atomic<long> error_at{std::numeric_limits<long>::max()};
   std::exception_ptr error;
   std::mutex error_mutex;
   // Points write disjoint entries of the table, so no locking is needed for the results.
   const auto work = [&] {
+    long i = -1;
     try {
       while (!stop.load(std::memory_order_relaxed)) {
         const long begin = next.fetch_add(chunk);
-        if (begin >= total) break;
+        if (begin >= total || begin >= error_at.load()) break;
         const long end = std::min(total, begin + chunk);
-        for (long i = begin; i < end; ++i) {
+        for (i = begin; i < end && i < error_at.load(); ++i) {
           BeamSweepPoint point;
           try {
             point = solve(i);
@@ -96,8 +101,13 @@ BeamSweepTable run_beam_sweep(long total,
       }
     } catch (...) {
       const std::lock_guard lock(error_mutex);
-      if (!error) error = std::current_exception();
-      stop = true;
+      if (i < 0) {
+        stop = true;  // not at a load (nothing is thrown outside the solve today)
+        if (!error) error = std::current_exception();
+      } else if (i < error_at.load()) {
+        error_at = i;
+        error = std::current_exception();
+      }
     }
   };
 
@@ -109,12 +119,13 @@ BeamSweepTable run_beam_sweep(long total,
   if (options.progress) {
     // The caller reports progress between its own chunks; helpers never touch the terminal.
     std::thread caller_worker(work);
-    while (done.load() < total && !stop.load()) {
+    while (done.load() < total && !stop.load() &&
+           error_at.load() == std::numeric_limits<long>::max()) {
       options.progress(done.load(), total);
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
     caller_worker.join();
-    if (!stop.load()) options.progress(total, total);
+    if (!error) options.progress(total, total);
   } else {
     work();
   }

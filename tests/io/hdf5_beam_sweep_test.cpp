@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 #include "flexure/io/beam_sweep.h"
 #include "flexure/solver/common/errors.h"
@@ -102,6 +104,30 @@ TEST(BeamSweep, InvalidInputAbortsTheSweepNamingTheLoad) {
     FAIL() << "no exception";
   } catch (const InvalidInput& e) {
     EXPECT_NE(std::string(e.what()).find("alpha2 = -1"), std::string::npos) << e.what();
+  }
+}
+
+TEST(BeamSweep, WithThreadsTheFirstInvalidLoadIsTheOneReported) {
+  // Load 700 is found invalid only after 50 ms, while every later load is refused at once: another
+  // thread meets those first. The error must still name load 700, as a single thread would (and
+  // as every rank count of an MPI run does: docs/scaling.md).
+  std::vector<double> alpha2(2000);
+  for (std::size_t i = 0; i < alpha2.size(); ++i) alpha2[i] = static_cast<double>(i);
+  const BeamPointSolver reject = [](double a) {
+    if (a == 700.0) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    if (a >= 700.0) throw InvalidInput("refused");
+    return linear_point(a);
+  };
+  BeamSweepOptions options;
+  options.threads = 2;
+  options.chunk = 1;
+  for (int run = 0; run < 3; ++run) {
+    try {
+      run_beam_sweep(alpha2, reject, options);
+      FAIL() << "no exception";
+    } catch (const InvalidInput& e) {
+      EXPECT_NE(std::string(e.what()).find("alpha2 = 700:"), std::string::npos) << e.what();
+    }
   }
 }
 
