@@ -141,7 +141,9 @@ std::string find_non_finite(const Json& node, const std::string& where) {
 }  // namespace
 
 void warn(const std::string& text) {
-  if (text.empty()) return;
+  // Under mpirun rank 0 alone prints (docs/scaling.md): the ranks meet the same input, and the
+  // distributed commands bring the warnings of their items to rank 0.
+  if (text.empty() || parallel::launched_rank() != 0) return;
   if (g_capture != nullptr) {
     g_capture->warnings.push_back(text);
   } else {
@@ -224,31 +226,65 @@ int exit_code_of(const std::exception_ptr& cause) {
 
 }  // namespace
 
+namespace {
+
+// Under mpirun, the end of a run on every rank (docs/scaling.md "Failures"): the ranks agree on
+// the exit code, the largest of theirs, so that an error one rank met after the shared work (rank
+// 0 printing its report, say) ends the others with it. `message` is this rank's error, if any: rank
+// 0 prints its own; another rank prints its own only where rank 0 did not meet the same. A rank
+// that does not arrive within `seconds` (negative: no limit) would leave the others waiting:
+// the run then ends with MPI_Abort, never a hang.
+int end_together(
+    int code, double seconds, const std::string& message, bool json, const Json& reached) {
+  const bool mpi = parallel::world_started() && parallel::world().parallel();
+  const auto print = [&](const std::string& text) {
+    report(text);
+    if (json) report_json(text, code, reached);
+  };
+  if (!mpi) {
+    if (!message.empty() && parallel::launched_rank() == 0) print(message);
+    return code;
+  }
+  const parallel::World& w = parallel::world();
+  report_balance();
+  const std::optional<parallel::World::AgreedCode> agreed = w.agree(code, seconds);
+  if (!message.empty() && (w.root() || !agreed || agreed->root != code)) {
+    if (!w.root()) restore_stdout();
+    print(w.root() ? message : fmt::format("rank {}: {}", w.rank(), message));
+  }
+  if (!agreed) w.abort(code == 0 ? kExitInternal : code);
+  if (w.root() && agreed->largest != code && code == 0) {
+    report(
+        fmt::format("another rank failed (exit code {}); its message is above", agreed->largest));
+  }
+  return agreed->largest;
+}
+
+}  // namespace
+
 int run_app(CLI::App& app, int argc, char** argv) {
   reset_exit_code();
   const bool json = wants_json(argc, argv);
   // Under mpirun (docs/scaling.md): rank 0 prints the report and the errors every rank meets
-  // alike; a rank prints a failure of its own (RankFailure). Once MPI runs, any failure ends all
-  // ranks: together when all met it (a barrier, within a time limit), else with MPI_Abort, so that
-  // no rank is left waiting for another: never a hang.
+  // alike; a rank prints a failure of its own (RankFailure) and ends the run at once with
+  // MPI_Abort; otherwise the ranks end together with one exit code (end_together): never a hang.
   silence_stdout_of_other_ranks();
+  parallel::set_rank_failure_handler([json](const parallel::RankFailure& e) {
+    const int code = exit_code_of(e.cause());
+    restore_stdout();
+    report(e.what());
+    if (json) report_json(e.what(), code, Json::object());
+    parallel::world().abort(code);
+  });
   const auto fail = [&](const std::string& message, int code, const Json& reached) {
-    if (parallel::launched_rank() == 0) {
-      report(message);
-      if (json) report_json(message, code, reached);
-    }
-    if (parallel::world_started() && parallel::world().parallel() &&
-        !parallel::world().barrier_within(10.0)) {
-      parallel::world().abort(code);
-    }
-    return code;
+    return end_together(code, 10.0, message, json, reached);
   };
   try {
     check_mpi_launch(argc, argv);
     parse_and_run(app, argc, argv);
-    report_balance();
-    return g_exit_code;
+    return end_together(g_exit_code, -1.0, "", json, Json::object());
   } catch (const parallel::RankFailure& e) {
+    // Not reached in the tool (the handler above ends the run); kept for a caller without it.
     const int code = exit_code_of(e.cause());
     restore_stdout();
     report(e.what());

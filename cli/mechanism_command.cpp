@@ -187,11 +187,13 @@ std::string force_sign_note(bool vanishes, bool changes_sign) {
 // One stderr warning per model whose force is zero or changes sign within the stroke: Weight's
 // min/max ratio (thesis eq. 5.22) describes a force of one sign, so the percentage is reported as
 // 0 instead of a negative or noise-sized ratio (docs/mechanisms.md "Percent constant force").
-void warn_if_force_vanishes(const MechanismAnalysis& a, bool exact) {
+// The warnings of a force that vanishes within the stroke (one per model), for warn().
+std::vector<std::string> force_vanishing_warnings(const MechanismAnalysis& a, bool exact) {
+  std::vector<std::string> texts;
   auto warn_force = [&](const char* model, const std::vector<double>& force) {
     const ConstantForceMeasure m = constant_force_measure(force);
     if (!m.vanishes) return;
-    warn(fmt::format(
+    texts.push_back(fmt::format(
         "{}: the {} force {} within the stroke (min {:.4g} N, max {:.4g} N, "
         "{}): not a constant-force mechanism over this stroke; its percent constant force is "
         "reported as 0",
@@ -204,6 +206,7 @@ void warn_if_force_vanishes(const MechanismAnalysis& a, bool exact) {
   };
   warn_force("PRBM", a.prbm.force);
   if (exact) warn_force("exact", a.force_exact);
+  return texts;
 }
 
 // /design: everything MechanismDesign holds, in the described form (pivot 1 at the fixed body;
@@ -348,6 +351,7 @@ struct ValidationRow {
   std::string line;
   int status = 0;  // 0 exact converged, 1 exact did not converge, 2 PRBM only
   std::vector<double> values;
+  std::vector<std::string> warnings;  // printed by rank 0 in the order of the designs
 };
 
 ValidationRow validate_design(MechanismDesign d,
@@ -389,7 +393,7 @@ ValidationRow validate_design(MechanismDesign d,
   auto pcf_cell = [](double v, const std::string& note) {
     return note.empty() ? fmt::format("{:.2f}", v) : fmt::format("{:.2f} ({})", v, note);
   };
-  warn_if_force_vanishes(a, exact);
+  row.warnings = force_vanishing_warnings(a, exact);
   row.line = fmt::format(
       "| {} | {} | {} | {} | {} | {} | {} | {} | {:.2f} | {} |\n",
       d.name,
@@ -519,7 +523,9 @@ void print_validation(int points,
               columns[c].write_range(at, std::span<const double>(&row.values[c], 1));
             }
             if (status) status->write_range(at, std::span<const int>(&row.status, 1));
-            mine.insert(mine.end(), {std::to_string(at), row.json.dump(), row.line});
+            std::string warnings;
+            for (const std::string& text : row.warnings) warnings += text + '\n';
+            mine.insert(mine.end(), {std::to_string(at), row.json.dump(), row.line, warnings});
           }
         };
       },
@@ -528,14 +534,20 @@ void print_validation(int points,
   std::vector<std::string> lines(designs.size());
   Json rows = Json::array();
   std::vector<Json> ordered(designs.size());
-  for (std::size_t k = 0; k + 2 < all.size(); k += 3) {
+  std::vector<std::string> warnings(designs.size());
+  for (std::size_t k = 0; k + 3 < all.size(); k += 4) {
     const auto at = static_cast<std::size_t>(std::stoul(all[k]));
     ordered[at] = Json::parse(all[k + 1]);
     lines[at] = all[k + 2];
+    warnings[at] = all[k + 3];
   }
   for (std::size_t i = 0; i < designs.size(); ++i) {
     rows.push_back(ordered[i]);
     table += lines[i];
+    for (std::size_t from = 0, to; (to = warnings[i].find('\n', from)) != std::string::npos;
+         from = to + 1) {
+      warn(warnings[i].substr(from, to - from));
+    }
   }
   if (file) {
     std::vector<std::string> names;
@@ -727,7 +739,7 @@ void register_mechanism_command(CLI::App& app) {
                       a.max_stress[p - 1],
                       d.yield_strength));
     }
-    warn_if_force_vanishes(a, a.has_exact && o.exact);
+    warn(force_vanishing_warnings(a, a.has_exact && o.exact));
     if (file) write_hdf5(args->out, a, *file);
     if (args->json) {
       Json j = analysis_json(a);

@@ -31,24 +31,29 @@ void check_mpi_launch(int argc, char** argv) {
         ranks));
   }
   std::vector<std::string> words;  // the command words before the first flag
-  bool all_subclasses = false, help = false;
+  bool all_subclasses = false, spring_rules = false, help = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--all-subclasses") all_subclasses = true;
+    if (a == "--spring-rules") spring_rules = true;
     if (a == "--help" || a == "-h" || a == "--version") help = true;
-    if (a.rfind("-", 0) != 0 && words.size() < 2 && (words.size() == i - 1)) words.push_back(a);
+    if (a.rfind("-", 0) != 0 && words.size() < 2 &&
+        words.size() == static_cast<std::size_t>(i - 1)) {
+      words.push_back(a);
+    }
   }
   if (help || words.empty()) return;
   const std::string command = words.size() > 1 ? words[0] + " " + words[1] : words[0];
   const bool divides = command == "sweep beam" || command == "map cfm" ||
                        (command == "design cfm" && all_subclasses) ||
-                       command == "mechanism validate";
+                       (command == "mechanism validate" && !spring_rules);
   if (!divides) {
     throw InvalidInput(fmt::format(
-        "'flexure {}' does not divide its work over MPI ranks, and mpirun started {} copies; run "
+        "'flexure {}{}' does not divide its work over MPI ranks, and mpirun started {} copies; run "
         "it without mpirun. Under mpirun: sweep beam, map cfm, design cfm --all-subclasses, "
-        "mechanism validate (docs/scaling.md)",
+        "mechanism validate without --spring-rules (docs/scaling.md)",
         command,
+        spring_rules && command == "mechanism validate" ? " --spring-rules" : "",
         ranks));
   }
 }

@@ -265,16 +265,18 @@ void BeamSweepWriter::finish(long converged_count) {
                                                {static_cast<hsize_t>(axis.count)},
                                                axis.units,
                                                axis.description);
+      // A collective file: every rank creates the axis and writes every size-th block of it, so
+      // that a 10^9-point axis is not written by one rank alone.
+      const int ranks = axes.collective() ? parallel::world().size() : 1;
+      const int rank = axes.collective() ? parallel::world().rank() : 0;
       std::vector<double> block;
-      for (long begin = 0; begin < axis.count; begin += kAxisBlock) {
+      for (long b = rank, begin = b * kAxisBlock; begin < axis.count;
+           b += ranks, begin = b * kAxisBlock) {
         block.clear();
         for (long i = begin; i < std::min(axis.count, begin + kAxisBlock); ++i) {
           block.push_back(evenly_spaced(axis.start, axis.stop, axis.count, i));
         }
-        // A collective file: rank 0 writes the axis (every rank creates it).
-        if (!axes.collective() || parallel::world().root()) {
-          values.write_range(static_cast<hsize_t>(begin), std::span<const double>(block));
-        }
+        values.write_range(static_cast<hsize_t>(begin), std::span<const double>(block));
       }
       names += (names.empty() ? "" : ",") + axis.name;
       n_axis = n_axis || axis.name == "load_ratio_n";
@@ -323,6 +325,7 @@ BeamSweepSummary stream_beam_sweep(long count,
   // Blocks of at most block_points; several ranks take a share of what is left, so that the blocks
   // shrink towards the end and the ranks finish together (work_distribution.h).
   distribution.max_block = std::max(1L, block_points);
+  distribution.min_block = std::min(distribution.max_block, 1024L);
   if (world.parallel()) distribution.progress = options.progress;
   distribution.describe = options.describe;
   parallel::distribute(

@@ -111,6 +111,14 @@ void set_interrupt_note(const std::string& text,
   note.set.store(true, std::memory_order_release);
 }
 
+void remove_temp_files() {
+  std::lock_guard<std::mutex> lock(registry_mutex);
+  for (Slot& s : slots) {
+    if (s.used.load(std::memory_order_acquire)) ::unlink(s.path);
+    s.used.store(false, std::memory_order_release);
+  }
+}
+
 void unregister_temp_file(int slot) {
   if (slot < 0 || slot >= kSlots) return;
   std::lock_guard<std::mutex> lock(registry_mutex);

@@ -16,6 +16,10 @@ int register_temp_file(const std::string& path);
 // Forgets the slot (after the file was renamed or removed); -1 is ignored.
 void unregister_temp_file(int slot);
 
+// Removes every registered temporary file now and forgets it (a process about to end without
+// running destructors: an MPI rank calling MPI_Abort, parallel/mpi_world.h).
+void remove_temp_files();
+
 // A note for the user, written to stderr by the same handler (write(2), after removing the
 // temporaries, before the default action): `note`, or `note_if_missing` when `file` is given and
 // does not exist at that moment (access(2); both calls are async-signal-safe). For a run that can

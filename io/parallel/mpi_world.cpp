@@ -6,10 +6,14 @@
 #include <atomic>
 #include <chrono>
 #include <cstdlib>
+#include <limits>
 #include <mutex>
 #include <thread>
 
+#include "flexure/io/temp_file_cleanup.h"
+
 #ifdef FLEXURE_WITH_MPI
+#include <hdf5.h>
 #include <mpi.h>
 #endif
 
@@ -57,6 +61,11 @@ int launched_size() {
     const int n = env_int(name, -1);
     if (n >= 1) return n;
   }
+  // Slurm's srun --mpi=pmix sets no size of its own beside PMIx's rank: the step's task count.
+  if (env_int("PMIX_RANK", -1) >= 0) {
+    const int n = env_int("SLURM_STEP_NUM_TASKS", -1);
+    if (n >= 1) return n;
+  }
   return 1;
 }
 
@@ -67,11 +76,21 @@ const World& world() {
     started = true;
     const int launched = launched_size();
 #ifdef FLEXURE_WITH_MPI
-    if (launched > 1 || std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr) {
+    // Started by a launcher (mpirun, or srun with PMIx/PMI): MPI gives the true size.
+    const bool by_launcher = launched > 1 || std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr ||
+                             std::getenv("PMIX_RANK") != nullptr ||
+                             std::getenv("PMI_RANK") != nullptr;
+    if (by_launcher) {
       int provided = 0;
       check(MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided), "MPI_Init_thread");
       initialised_here = true;
       std::atexit(finalize);
+      // Rank 0 computes on a second thread while its first calls MPI (work_distribution.h).
+      if (provided < MPI_THREAD_FUNNELED) {
+        throw std::runtime_error(
+            "MPI: this MPI library gives no MPI_THREAD_FUNNELED support, which the work "
+            "distribution needs (docs/scaling.md)");
+      }
       check(MPI_Comm_rank(MPI_COMM_WORLD, &w.rank_), "MPI_Comm_rank");
       check(MPI_Comm_size(MPI_COMM_WORLD, &w.size_), "MPI_Comm_size");
     }
@@ -94,32 +113,55 @@ void finalize() {
 #ifdef FLEXURE_WITH_MPI
   int finalized = 0;
   MPI_Finalized(&finalized);
-  if (initialised_here && !finalized) MPI_Finalize();
+  if (initialised_here && !finalized) {
+    // HDF5 closes what is still open at its own exit, which may come after this one: a collective
+    // file left open by an error every rank met must be closed while MPI still runs.
+    H5close();
+    MPI_Finalize();
+  }
 #endif
+}
+
+namespace {
+std::function<void(const RankFailure&)> rank_failure_handler;
+}  // namespace
+
+void set_rank_failure_handler(std::function<void(const RankFailure&)> handler) {
+  rank_failure_handler = std::move(handler);
+}
+
+void handle_rank_failure(const RankFailure& failure) {
+  if (rank_failure_handler) rank_failure_handler(failure);
+}
+
+std::optional<World::AgreedCode> World::agree(int code, double seconds) const {
+#ifdef FLEXURE_WITH_MPI
+  if (parallel()) {
+    // Both values by one maximum: rank 0's code, and INT_MIN from the others.
+    int local[2] = {code, root() ? code : std::numeric_limits<int>::min()};
+    int result[2] = {code, code};
+    MPI_Request request = MPI_REQUEST_NULL;
+    check(MPI_Iallreduce(local, result, 2, MPI_INT, MPI_MAX, MPI_COMM_WORLD, &request),
+          "MPI_Iallreduce");
+    const auto deadline =
+        std::chrono::steady_clock::now() + std::chrono::duration<double>(std::max(0.0, seconds));
+    int done = 0;
+    while (MPI_Test(&request, &done, MPI_STATUS_IGNORE) == MPI_SUCCESS && !done) {
+      if (seconds >= 0 && std::chrono::steady_clock::now() > deadline) return std::nullopt;
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    if (!done) return std::nullopt;
+    return AgreedCode{result[0], result[1]};
+  }
+#else
+  (void)seconds;
+#endif
+  return AgreedCode{code, code};
 }
 
 void World::barrier() const {
 #ifdef FLEXURE_WITH_MPI
   if (parallel()) check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier");
-#endif
-}
-
-bool World::barrier_within(double seconds) const {
-#ifdef FLEXURE_WITH_MPI
-  if (!parallel()) return true;
-  MPI_Request request = MPI_REQUEST_NULL;
-  if (MPI_Ibarrier(MPI_COMM_WORLD, &request) != MPI_SUCCESS) return false;
-  const auto deadline =
-      std::chrono::steady_clock::now() + std::chrono::duration<double>(std::max(0.0, seconds));
-  int done = 0;
-  while (MPI_Test(&request, &done, MPI_STATUS_IGNORE) == MPI_SUCCESS && !done) {
-    if (std::chrono::steady_clock::now() > deadline) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  return done != 0;
-#else
-  (void)seconds;
-  return true;
 #endif
 }
 
@@ -244,6 +286,7 @@ std::vector<std::string> World::gather(const std::vector<std::string>& local) co
 }
 
 void World::abort(int exit_code) const {
+  io::remove_temp_files();
 #ifdef FLEXURE_WITH_MPI
   if (parallel()) MPI_Abort(MPI_COMM_WORLD, exit_code);
 #endif

@@ -11,6 +11,8 @@
 // must call them in the same order, as with MPI itself.
 #include <cstdint>
 #include <exception>
+#include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -21,7 +23,8 @@ namespace flexure::parallel {
 bool mpi_build();
 
 // The rank and size that the launcher (mpirun) gave this process, read from its environment
-// without initialising MPI (Open MPI's OMPI_COMM_WORLD_*, PMIx, PMI); 0 and 1 without one.
+// without initialising MPI (Open MPI's OMPI_COMM_WORLD_*, PMIx with Slurm's
+// SLURM_STEP_NUM_TASKS, PMI); 0 and 1 without one.
 int launched_rank();
 int launched_size();
 
@@ -33,9 +36,6 @@ class World {
   bool root() const { return rank_ == 0; }
 
   void barrier() const;
-  // A barrier that gives up after `seconds`: whether every rank arrived in time (a run's ranks
-  // agreeing to end on an error they all met; one that did not gets MPI_Abort instead of a hang).
-  bool barrier_within(double seconds) const;
   std::int64_t sum(std::int64_t local) const;
   std::int64_t min(std::int64_t local) const;
   // Logical and of `local` over the ranks: whether every rank succeeded.
@@ -49,8 +49,19 @@ class World {
   std::vector<std::int64_t> gather(const std::vector<std::int64_t>& local) const;
 
   // Ends every rank of the run at once (MPI_Abort) with `exit_code`; in a run of one rank,
-  // std::exit. Never returns. Callers remove their temporary files first.
+  // std::exit. Never returns. Removes this process's registered temporary files first
+  // (io/temp_file_cleanup.h): no destructor runs after MPI_Abort.
   [[noreturn]] void abort(int exit_code) const;
+
+  // The largest of every rank's `code`, and rank 0's own, once every rank has called it; nullopt
+  // when not every rank arrived within `seconds` (negative: no limit). The ranks of a run agree
+  // on its exit code with it at the end, so that an error one rank met ends the others too
+  // (cli/cli_common.cpp run_app).
+  struct AgreedCode {
+    int largest = 0;
+    int root = 0;
+  };
+  std::optional<AgreedCode> agree(int code, double seconds) const;
 
  private:
   friend const World& world();
@@ -66,8 +77,17 @@ const World& world();
 // Whether world() has been called (without calling it).
 bool world_started();
 
-// Finalises MPI if world() initialised it (at the end of main; also registered with atexit).
+// Finalises HDF5, then MPI, if world() initialised MPI (registered with atexit).
 void finalize();
+
+class RankFailure;
+
+// What a rank does on a RankFailure before it is thrown (null: nothing; the exception is thrown).
+// The tool sets one that reports the failure and ends the run with World::abort: without
+// unwinding, because closing this rank's share of a collective HDF5 file is a collective call
+// that the other ranks, still computing, do not join.
+void set_rank_failure_handler(std::function<void(const RankFailure&)> handler);
+void handle_rank_failure(const RankFailure& failure);
 
 // A failure on one rank while the others go on (an exception in an item of the distributed work,
 // a write that failed): the run must end with MPI_Abort, not wait for this rank. The message

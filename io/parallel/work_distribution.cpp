@@ -22,27 +22,57 @@
 namespace flexure::parallel {
 namespace {
 
-// Blocks in progress per rank, for write_blocks_in_progress (rank 0; the first kTracked ranks).
-constexpr int kTracked = 256;
-struct InFlight {
-  std::atomic<long> begin{-1};
-  std::atomic<long> end{-1};
+// Blocks each rank holds, for write_blocks_in_progress (rank 0): the block it computes and the one
+// it was given ahead (a rank asks for its next block as it starts one). One entry per rank,
+// allocated before tracking starts and kept for the process's life, so that a signal handler
+// never reads freed memory.
+struct Held {
+  std::atomic<long> begin{-1}, end{-1};            // the block being computed
+  std::atomic<long> next_begin{-1}, next_end{-1};  // the block handed out ahead of it
 };
-std::array<InFlight, kTracked> in_flight;
+std::atomic<Held*> held{nullptr};
+std::atomic<int> held_count{0};
 std::atomic<bool> tracking{false};
 
 std::vector<long> balance;  // items_per_rank()
 
-void track(int rank, long begin, long end) {
-  if (rank < 0 || rank >= kTracked) return;
-  in_flight[rank].begin.store(begin, std::memory_order_relaxed);
-  in_flight[rank].end.store(end, std::memory_order_relaxed);
+void start_tracking(int ranks) {
+  if (held_count.load() < ranks) {
+    held.store(new Held[static_cast<std::size_t>(ranks)]);  // an older, smaller table is kept
+    held_count.store(ranks);
+  }
+  Held* h = held.load();
+  for (int r = 0; r < ranks; ++r) {
+    h[r].begin = h[r].end = h[r].next_begin = h[r].next_end = -1;
+  }
+  tracking.store(true);
+}
+
+// Rank `rank` was given [begin, end): it computes it now, or after the block it holds.
+void track_given(int rank, long begin, long end) {
+  Held& h = held.load()[rank];
+  if (h.begin.load() < 0) {
+    h.begin = begin;
+    h.end = end;
+  } else {
+    h.next_begin = begin;
+    h.next_end = end;
+  }
+}
+
+// Rank `rank` finished the block it was computing; the one given ahead becomes current.
+void track_finished(int rank) {
+  Held& h = held.load()[rank];
+  h.begin = h.next_begin.load();
+  h.end = h.next_end.load();
+  h.next_begin = h.next_end = -1;
 }
 
 // A share of what is left, at most max_block: big blocks early (little traffic), single items at
 // the end (ranks finish together).
-long next_block_size(long left, int ranks, long max_block) {
-  return std::clamp(left / (4L * ranks), 1L, std::max(1L, max_block));
+long next_block_size(long left, int ranks, const DistributionOptions& options) {
+  const long most = std::max(1L, options.max_block);
+  return std::clamp(left / (4L * ranks), std::clamp(options.min_block, 1L, most), most);
 }
 
 std::string describe_items(long begin, long end, const DistributionOptions& options) {
@@ -61,9 +91,13 @@ std::string describe_items(long begin, long end, const DistributionOptions& opti
     what = e.what();
   } catch (...) {
   }
-  throw RankFailure(
+  RankFailure failure(
       fmt::format("rank {} failed on {}: {}", rank, describe_items(begin, end, options), what),
       cause);
+  // Ends the run here when the tool has set a handler: unwinding would close this rank's share of
+  // a collective file, which the other ranks do not join (mpi_world.h).
+  handle_rank_failure(failure);
+  throw failure;
 }
 
 // FLEXURE_FAIL_ITEM=<n> (docs/scaling.md "Testing the failure path"): the block holding item n
@@ -98,36 +132,46 @@ long run_serial(long total, const BlockCompute& compute, const DistributionOptio
 }
 
 #ifdef FLEXURE_WITH_MPI
-constexpr int kTagRequest = 71;  // worker -> 0: items done so far (int64)
-constexpr int kTagAssign = 72;   // 0 -> worker: begin, end (int64[2]); begin < 0: no more
+// Worker -> 0: {kind, items this worker has finished}, all on one tag so that rank 0 receives a
+// worker's messages in the order they were sent (MPI's non-overtaking rule).
+constexpr int kTagReport = 71;
+constexpr int kTagAssign = 72;         // 0 -> worker: begin, end (int64[2]); begin < 0: no more
+constexpr std::int64_t kIdle = 0;      // holds nothing: answered at once
+constexpr std::int64_t kAhead = 1;     // starts a block and asks for the next one
+constexpr std::int64_t kFinished = 2;  // finished (and wrote) the block it was computing
 
 void check(int code, const char* what) {
   if (code != MPI_SUCCESS) throw std::runtime_error(fmt::format("MPI: {} failed", what));
 }
 
-long run_worker(const World& w,
-                long /*total*/,
-                const BlockCompute& compute,
-                const DistributionOptions& options) {
+void send_report(std::int64_t kind, long done) {
+  const std::int64_t message[2] = {kind, static_cast<std::int64_t>(done)};
+  check(MPI_Send(message, 2, MPI_INT64_T, 0, kTagReport, MPI_COMM_WORLD), "MPI_Send");
+}
+
+long run_worker(const World& w, const BlockCompute& compute, const DistributionOptions& options) {
   long done = 0;
   std::int64_t block[2] = {-1, -1};
   std::int64_t next[2] = {-1, -1};
-  std::int64_t report = 0;
-  check(MPI_Send(&report, 1, MPI_INT64_T, 0, kTagRequest, MPI_COMM_WORLD), "MPI_Send");
+  send_report(kIdle, done);
   check(MPI_Recv(block, 2, MPI_INT64_T, 0, kTagAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
         "MPI_Recv");
   while (block[0] >= 0) {
-    // Ask for the next block now: the reply comes while this one is computed.
-    report = done;
-    check(MPI_Send(&report, 1, MPI_INT64_T, 0, kTagRequest, MPI_COMM_WORLD), "MPI_Send");
+    // Ask for the next block now: the reply comes while this one is computed (rank 0 holds it
+    // back near the end of the items, until this block is finished: see run_root).
+    send_report(kAhead, done);
     MPI_Request pending = MPI_REQUEST_NULL;
     check(MPI_Irecv(next, 2, MPI_INT64_T, 0, kTagAssign, MPI_COMM_WORLD, &pending), "MPI_Irecv");
     try {
       compute_checked(compute, block[0], block[1])();
     } catch (...) {
+      // The receive must not outlive `next`: cancel it (or take the reply) before leaving.
+      MPI_Cancel(&pending);
+      MPI_Wait(&pending, MPI_STATUS_IGNORE);
       fail(w.rank(), block[0], block[1], options);
     }
     done += block[1] - block[0];
+    send_report(kFinished, done);
     check(MPI_Wait(&pending, MPI_STATUS_IGNORE), "MPI_Wait");
     block[0] = next[0];
     block[1] = next[1];
@@ -141,46 +185,68 @@ long run_root(const World& w,
               const DistributionOptions& options) {
   long next = 0;                            // first item not handed out
   long own_done = 0;                        // items rank 0 computed and wrote
-  std::vector<long> reported(w.size(), 0);  // items each worker reported done
+  std::vector<long> reported(w.size(), 0);  // items each worker finished
+  std::vector<char> waiting(w.size(), 0);   // a request held back until the worker finishes
   int workers_left = w.size() - 1;
   bool own_finished = false;
   std::future<BlockWriter> own;
   long own_begin = -1, own_end = -1;
   const auto take = [&]() -> std::pair<long, long> {
     if (next >= total) return {-1, -1};
-    const long n = next_block_size(total - next, w.size(), options.max_block);
+    const long n = next_block_size(total - next, w.size(), options);
     const long begin = next;
     next = std::min(total, next + n);
     return {begin, next};
   };
-  tracking.store(true);
-  for (int r = 0; r < std::min(w.size(), kTracked); ++r) track(r, -1, -1);
+  // A block given ahead waits behind the one the worker computes. Early on that costs nothing and
+  // saves the worker a round trip; near the end (fewer than two items per rank left, or items
+  // that each cost a block of their own: optimisations, designs) it would leave another rank
+  // idle while the item waits, so the request is answered only once the worker is free.
+  const auto ahead_allowed = [&] { return options.max_block > 1 && total - next >= 2L * w.size(); };
+  const auto assign = [&](int worker) {
+    const auto [begin, end] = take();
+    const std::int64_t block[2] = {begin, end};
+    if (begin < 0) {
+      --workers_left;
+    } else {
+      track_given(worker, begin, end);
+    }
+    check(MPI_Send(block, 2, MPI_INT64_T, worker, kTagAssign, MPI_COMM_WORLD), "MPI_Send");
+  };
+  start_tracking(w.size());
   long last_progress = -1;
   while (true) {
     bool busy = false;
-    // Answer every waiting request.
+    // Every waiting message.
     int flag = 1;
     while (flag) {
       MPI_Status status;
-      check(MPI_Iprobe(MPI_ANY_SOURCE, kTagRequest, MPI_COMM_WORLD, &flag, &status), "MPI_Iprobe");
+      check(MPI_Iprobe(MPI_ANY_SOURCE, kTagReport, MPI_COMM_WORLD, &flag, &status), "MPI_Iprobe");
       if (!flag) break;
       busy = true;
-      std::int64_t report = 0;
-      check(MPI_Recv(&report,
-                     1,
-                     MPI_INT64_T,
-                     status.MPI_SOURCE,
-                     kTagRequest,
-                     MPI_COMM_WORLD,
-                     MPI_STATUS_IGNORE),
-            "MPI_Recv");
-      reported[status.MPI_SOURCE] = static_cast<long>(report);
-      const auto [begin, end] = take();
-      std::int64_t block[2] = {begin, end};
-      if (begin < 0) --workers_left;
-      track(status.MPI_SOURCE, begin, end);
-      check(MPI_Send(block, 2, MPI_INT64_T, status.MPI_SOURCE, kTagAssign, MPI_COMM_WORLD),
-            "MPI_Send");
+      const int worker = status.MPI_SOURCE;
+      std::int64_t message[2] = {0, 0};
+      check(
+          MPI_Recv(message, 2, MPI_INT64_T, worker, kTagReport, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
+          "MPI_Recv");
+      reported[worker] = static_cast<long>(message[1]);
+      if (message[0] == kIdle) {
+        assign(worker);
+      } else if (message[0] == kAhead) {
+        // With nothing left, "no more" also waits: the worker's last message is then always
+        // kFinished, and none is left unreceived when this loop ends.
+        if (ahead_allowed() && next < total) {
+          assign(worker);
+        } else {
+          waiting[worker] = 1;
+        }
+      } else {
+        track_finished(worker);
+        if (waiting[worker]) {
+          waiting[worker] = 0;
+          assign(worker);
+        }
+      }
     }
     // Rank 0's own block: computed on a second thread, written here.
     if (own.valid() && own.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
@@ -191,7 +257,7 @@ long run_root(const World& w,
         fail(0, own_begin, own_end, options);
       }
       own_done += own_end - own_begin;
-      track(0, -1, -1);
+      track_finished(0);
     }
     if (!own.valid() && !own_finished) {
       const auto [begin, end] = take();
@@ -200,7 +266,7 @@ long run_root(const World& w,
       } else {
         own_begin = begin;
         own_end = end;
-        track(0, begin, end);
+        track_given(0, begin, end);
         own = std::async(std::launch::async,
                          [&compute, begin, end] { return compute_checked(compute, begin, end); });
       }
@@ -249,7 +315,7 @@ long distribute(long total, const BlockCompute& compute, const DistributionOptio
   if (!w.parallel()) return run_serial(total, compute, options);
 #ifdef FLEXURE_WITH_MPI
   const long mine =
-      w.root() ? run_root(w, total, compute, options) : run_worker(w, total, compute, options);
+      w.root() ? run_root(w, total, compute, options) : run_worker(w, compute, options);
   if (options.progress && w.root()) options.progress(total, total);
   const std::vector<std::int64_t> counts = w.gather(std::vector<std::int64_t>{mine});
   balance.resize(counts.size(), 0);
@@ -264,12 +330,13 @@ std::vector<long> items_per_rank() { return balance; }
 
 void write_blocks_in_progress(int fd) {
   if (!tracking.load()) return;
+  const Held* h = held.load();
+  const int ranks = held_count.load();
+  if (h == nullptr) return;
   bool any = false;
   char a[32], b[32], r[32];
-  for (int rank = 0; rank < kTracked; ++rank) {
-    const long begin = in_flight[rank].begin.load(std::memory_order_relaxed);
-    const long end = in_flight[rank].end.load(std::memory_order_relaxed);
-    if (begin < 0 || end <= begin) continue;
+  const auto write_block = [&](int rank, long begin, long end) {
+    if (begin < 0 || end <= begin) return;
     write_text(fd, any ? "; " : "flexure: blocks in progress when the run was stopped: ");
     any = true;
     write_text(fd, "rank ");
@@ -278,6 +345,17 @@ void write_blocks_in_progress(int fd) {
     write_text(fd, format_long(begin, a, sizeof a));
     write_text(fd, "-");
     write_text(fd, format_long(end - 1, b, sizeof b));
+  };
+  for (int rank = 0; rank < ranks; ++rank) {
+    write_block(rank, h[rank].begin.load(), h[rank].end.load());
+    const long next_begin = h[rank].next_begin.load();
+    if (next_begin >= 0) {
+      write_text(fd, " (then ");
+      write_text(fd, format_long(next_begin, a, sizeof a));
+      write_text(fd, "-");
+      write_text(fd, format_long(h[rank].next_end.load() - 1, b, sizeof b));
+      write_text(fd, ")");
+    }
   }
   if (any) write_text(fd, "\n");
 }

@@ -22,6 +22,9 @@ using BlockCompute = std::function<BlockWriter(long begin, long end)>;
 
 struct DistributionOptions {
   long max_block = 1;  // at most this many items in one block
+  // At least this many (but for the last block): cheap items (a sweep's loads, about a
+  // microsecond each) in blocks worth a message and a write of their own.
+  long min_block = 1;
   // Rank 0, on the calling thread: items done over all ranks (counted per finished block).
   std::function<void(long done, long total)> progress;
   // Names an item in a failure message, e.g. "R = 1.2, d = 30 %" (null: the index only).

@@ -328,7 +328,8 @@ TEST(MpiStudies, KilledRankEndsTheRunWithoutAFile) {
         ASSERT_GT(rank1, 0);
         ::kill(rank1, SIGKILL);
       },
-      "rank 1");
+      // Rank 0 names the block the killed rank was computing (it never reported it finished).
+      "rank 1 items ");
 }
 
 TEST(MpiStudies, CtrlCEndsEveryRankWithoutAFile) {
@@ -340,6 +341,85 @@ TEST(MpiStudies, CommandsThatDoNotDivideTheirWorkAreRefused) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("does not divide its work over MPI ranks"), std::string::npos) << r.err;
   EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+// How often `text` occurs in `in`.
+int occurrences(const std::string& in, const std::string& text) {
+  int n = 0;
+  for (std::size_t at = 0; (at = in.find(text, at)) != std::string::npos; at += text.size()) ++n;
+  return n;
+}
+
+TEST(MpiStudies, WarningsAndErrorsEveryRankMeetsArePrintedOnce) {
+  // A warning on the input (7 rad is more than a full turn), printed once by rank 0, and an error
+  // on one of its loads (no equilibrium for that tip angle), printed once by the rank that met it:
+  // exit 2 as in the serial run, no file.
+  ScratchDir dir;
+  const std::string args = "sweep beam --theta0 0.1:7:5 --n 1 --method elliptic --out s.h5";
+  const CommandResult serial = run_flexure(args, dir.path());
+  ASSERT_EQ(serial.exit_code, 2) << serial.err;
+  const CommandResult r = run_flexure(args, dir.path(), mpirun(3));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(occurrences(r.err, "more than a full turn"), 1) << r.err;
+  EXPECT_EQ(occurrences(r.err, "cannot be reached"), 1) << r.err;
+  // The serial message (the load is an item: under mpirun the rank that met it names it).
+  EXPECT_NE(r.err.find(serial.err.substr(serial.err.find("at theta0 ="))), std::string::npos)
+      << r.err << "\nserial:\n"
+      << serial.err;
+  EXPECT_TRUE(dir.entries().empty());
+}
+
+TEST(MpiStudies, SpringRulesAreRefusedUnderSeveralRanks) {
+  // validate --spring-rules does not divide its work: each rank would run it whole.
+  const CommandResult r = run_flexure("mechanism validate --spring-rules", {}, mpirun(2));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("'flexure mechanism validate --spring-rules' does not divide"),
+            std::string::npos)
+      << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+// Which rank computed each item of distribution_probe's run; every item exactly once.
+std::map<long, int> probe(int ranks, const std::string& args) {
+  ScratchDir dir;
+  const std::string command = mpirun(ranks) + "'" + FLEXURE_DISTRIBUTION_PROBE + "' " + args +
+                              " >'" + (dir / "out").string() + "' 2>'" + (dir / "err").string() +
+                              "'";
+  const int status = std::system(command.c_str());
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_text(dir / "err");
+  std::map<long, int> rank_of;
+  std::istringstream lines(read_text(dir / "out"));
+  long item = 0;
+  int rank = 0;
+  while (lines >> item >> rank) {
+    EXPECT_EQ(rank_of.count(item), 0u) << "item " << item << " computed twice";
+    rank_of[item] = rank;
+  }
+  return rank_of;
+}
+
+TEST(MpiStudies, ASlowItemKeepsItsRankToItself) {
+  // Items that each make a block of their own (designs, optimisations): a rank is given its next
+  // item only once it is free. Rank 1's first item takes 1 s, every other 0.1 s: ranks 0 and 2
+  // share the other seven while rank 1 is busy, and rank 1 takes no second item. Were the next
+  // item given ahead, it would wait behind the slow one and end the run 0.1 s later.
+  const std::map<long, int> rank_of = probe(3, "8 1 1 1.0 0.1");
+  ASSERT_EQ(rank_of.size(), 8u);
+  int on_rank_1 = 0;
+  for (const auto& [item, rank] : rank_of) on_rank_1 += rank == 1;
+  EXPECT_EQ(on_rank_1, 1);
+}
+
+TEST(MpiStudies, BlocksOfManyItemsCoverEveryItemOnce) {
+  // Blocks of up to 16 items, given ahead while many are left, shrinking to single items: each of
+  // 1001 items computed exactly once, by every one of the 3 ranks.
+  const std::map<long, int> rank_of = probe(3, "1001 16 -1 0 0.0005");
+  ASSERT_EQ(rank_of.size(), 1001u);
+  EXPECT_EQ(rank_of.begin()->first, 0);
+  EXPECT_EQ(rank_of.rbegin()->first, 1000);
+  std::set<int> ranks;
+  for (const auto& [item, rank] : rank_of) ranks.insert(rank);
+  EXPECT_EQ(ranks.size(), 3u);
 }
 
 TEST(MpiStudies, CompressIsRefusedUnderSeveralRanks) {
