@@ -237,9 +237,11 @@ namespace {
 int end_together(
     int code, double seconds, const std::string& message, bool json, const Json& reached) {
   const bool mpi = parallel::world_started() && parallel::world().parallel();
+  // The JSON error object from rank 0 alone: stdout holds one object (a rank's own error goes to
+  // stderr as text).
   const auto print = [&](const std::string& text) {
     report(text);
-    if (json) report_json(text, code, reached);
+    if (json && parallel::launched_rank() == 0) report_json(text, code, reached);
   };
   if (!mpi) {
     if (!message.empty() && parallel::launched_rank() == 0) print(message);
@@ -249,13 +251,12 @@ int end_together(
   report_balance();
   const std::optional<parallel::World::AgreedCode> agreed = w.agree(code, seconds);
   if (!message.empty() && (w.root() || !agreed || agreed->root != code)) {
-    if (!w.root()) restore_stdout();
     print(w.root() ? message : fmt::format("rank {}: {}", w.rank(), message));
   }
   if (!agreed) w.abort(code == 0 ? kExitInternal : code);
   if (w.root() && agreed->largest != code && code == 0) {
-    report(
-        fmt::format("another rank failed (exit code {}); its message is above", agreed->largest));
+    report(fmt::format("another rank failed (exit code {}); it prints its own message",
+                       agreed->largest));
   }
   return agreed->largest;
 }
@@ -282,7 +283,6 @@ int run_app(CLI::App& app, int argc, char** argv) {
   try {
     check_mpi_launch(argc, argv);
     parse_and_run(app, argc, argv);
-    return end_together(g_exit_code, -1.0, "", json, Json::object());
   } catch (const parallel::RankFailure& e) {
     // Not reached in the tool (the handler above ends the run); kept for a caller without it.
     const int code = exit_code_of(e.cause());
@@ -305,6 +305,8 @@ int run_app(CLI::App& app, int argc, char** argv) {
   } catch (const std::exception& e) {
     return fail(fmt::format("error: {}", e.what()), kExitInternal, Json::object());
   }
+  // Outside the try: each rank agrees once, on this path or on a failure's.
+  return end_together(g_exit_code, -1.0, "", json, Json::object());
 }
 
 void print_json(const Json& object) {

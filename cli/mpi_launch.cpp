@@ -35,7 +35,7 @@ void check_mpi_launch(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--all-subclasses") all_subclasses = true;
-    if (a == "--spring-rules") spring_rules = true;
+    if (a == "--spring-rules" || a.rfind("--spring-rules=", 0) == 0) spring_rules = true;
     if (a == "--help" || a == "-h" || a == "--version") help = true;
     if (a.rfind("-", 0) != 0 && words.size() < 2 &&
         words.size() == static_cast<std::size_t>(i - 1)) {

@@ -125,12 +125,12 @@ BeamSweepTable run_beam_sweep(long total,
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
     caller_worker.join();
-    if (!error) options.progress(total, total);
   } else {
     work();
   }
   for (std::thread& helper : helpers) helper.join();
   if (error) std::rethrow_exception(error);
+  if (options.progress) options.progress(total, total);
 
   for (long i = 0; i < total; ++i) {
     if (table.status[i] == kSweepConverged) {
@@ -325,7 +325,7 @@ BeamSweepSummary stream_beam_sweep(long count,
   // Blocks of at most block_points; several ranks take a share of what is left, so that the blocks
   // shrink towards the end and the ranks finish together (work_distribution.h).
   distribution.max_block = std::max(1L, block_points);
-  distribution.min_block = std::min(distribution.max_block, 1024L);
+  distribution.min_block = std::min(distribution.max_block, std::max(1L, options.min_block));
   if (world.parallel()) distribution.progress = options.progress;
   distribution.describe = options.describe;
   parallel::distribute(

@@ -54,6 +54,9 @@ using BeamIndexSolver = std::function<BeamSweepPoint(long index)>;
 struct BeamSweepOptions {
   int threads = 2;    // worker threads including the caller; 1 = serial
   long chunk = 2048;  // loads handed to a thread at a time (amortises synchronisation)
+  // Under mpirun, the fewest loads in a block given to a rank (stream_beam_sweep; the last block
+  // may hold fewer): about a millisecond of work, e.g. 1024 loads of a microsecond each.
+  long min_block = 1;
   // Called on the calling thread with the number of points done so far (may be null).
   std::function<void(long done, long total)> progress;
   // Names point `index` in an error message, e.g. "alpha2 = 2.5, n = 1" (null: "point 17").

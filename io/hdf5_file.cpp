@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <filesystem>
 #include <mutex>
 #include <utility>
@@ -53,6 +54,14 @@ class ScopedId {
   hid_t id_;
   Closer closer_;
 };
+
+// A group or dataset of a collective file is left open while an exception unwinds: closing it
+// may be a collective call, and this rank may be the only one failing. The ranks then agree to
+// end (cli/cli_common.cpp) and HDF5 closes what is left before MPI ends (parallel/mpi_world.h
+// finalize), or one rank ends them all with MPI_Abort.
+bool leave_open_while_unwinding(bool collective) {
+  return collective && std::uncaught_exceptions() > 0;
+}
 
 hid_t check_id(hid_t id, const std::string& where, const char* what) {
   if (id < 0) throw Hdf5Error(fmt::format("HDF5: {} failed for {}", what, where));
@@ -126,6 +135,7 @@ Hdf5Group& Hdf5Group::operator=(Hdf5Group&& other) noexcept {
 }
 
 Hdf5Group::~Hdf5Group() {
+  if (leave_open_while_unwinding(collective())) return;
   // After the file was closed with H5F_CLOSE_STRONG the id is no longer valid; H5Iis_valid
   // avoids closing an identifier HDF5 may have reused.
   if (id_ >= 0 && H5Iis_valid(id_) > 0) H5Gclose(id_);
@@ -240,7 +250,9 @@ Hdf5Dataset Hdf5Group::create_dataset(const std::string& name,
                        dcpl.get(),
                        units,
                        description);
-  return Hdf5Dataset(id, memory_type, dims, where);
+  Hdf5Dataset dataset(id, memory_type, dims, where);
+  dataset.collective_ = state_ && state_->collective;
+  return dataset;
 }
 
 Hdf5Dataset::Hdf5Dataset(hid_t id, hid_t memory_type, std::vector<hsize_t> dims, std::string where)
@@ -250,7 +262,8 @@ Hdf5Dataset::Hdf5Dataset(Hdf5Dataset&& other) noexcept
     : id_(std::exchange(other.id_, H5I_INVALID_HID)),
       memory_type_(other.memory_type_),
       dims_(std::move(other.dims_)),
-      where_(std::move(other.where_)) {}
+      where_(std::move(other.where_)),
+      collective_(other.collective_) {}
 
 Hdf5Dataset& Hdf5Dataset::operator=(Hdf5Dataset&& other) noexcept {
   if (this != &other) {
@@ -259,11 +272,13 @@ Hdf5Dataset& Hdf5Dataset::operator=(Hdf5Dataset&& other) noexcept {
     memory_type_ = other.memory_type_;
     dims_ = std::move(other.dims_);
     where_ = std::move(other.where_);
+    collective_ = other.collective_;
   }
   return *this;
 }
 
 Hdf5Dataset::~Hdf5Dataset() {
+  if (leave_open_while_unwinding(collective_)) return;
   if (id_ >= 0 && H5Iis_valid(id_) > 0) H5Dclose(id_);
 }
 

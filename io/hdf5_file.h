@@ -71,6 +71,7 @@ class Hdf5Dataset {
   hid_t memory_type_ = H5I_INVALID_HID;  // H5T_NATIVE_DOUBLE or H5T_NATIVE_INT (not owned)
   std::vector<hsize_t> dims_;
   std::string where_;
+  bool collective_ = false;  // of a kCollective file under several ranks
 };
 
 enum class Hdf5Type { kFloat64, kInt32 };

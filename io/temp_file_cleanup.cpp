@@ -111,6 +111,8 @@ void set_interrupt_note(const std::string& text,
   note.set.store(true, std::memory_order_release);
 }
 
+void install_interrupt_handlers() { install_handlers_once(); }
+
 void remove_temp_files() {
   std::lock_guard<std::mutex> lock(registry_mutex);
   for (Slot& s : slots) {

@@ -16,6 +16,10 @@ int register_temp_file(const std::string& path);
 // Forgets the slot (after the file was renamed or removed); -1 is ignored.
 void unregister_temp_file(int slot);
 
+// Installs the handlers without registering a file (they also write the blocks in progress of an
+// MPI run, parallel/work_distribution.h). Idempotent.
+void install_interrupt_handlers();
+
 // Removes every registered temporary file now and forgets it (a process about to end without
 // running destructors: an MPI rank calling MPI_Abort, parallel/mpi_world.h).
 void remove_temp_files();

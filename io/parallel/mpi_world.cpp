@@ -29,7 +29,9 @@ int env_int(const char* name, int fallback) {
                                                                       : fallback;
 }
 
+#ifdef FLEXURE_WITH_MPI
 bool initialised_here = false;
+#endif
 std::atomic<bool> started{false};
 
 #ifdef FLEXURE_WITH_MPI
@@ -72,8 +74,10 @@ int launched_size() {
 const World& world() {
   static World w;
   static std::once_flag once;
+  // Set once; thrown by every call, so that a failed start is never tried again (a second
+  // MPI_Init is a fatal MPI error that would hide this message).
+  static std::string failure;
   std::call_once(once, [] {
-    started = true;
     const int launched = launched_size();
 #ifdef FLEXURE_WITH_MPI
     // Started by a launcher (mpirun, or srun with PMIx/PMI): MPI gives the true size.
@@ -82,28 +86,40 @@ const World& world() {
                              std::getenv("PMI_RANK") != nullptr;
     if (by_launcher) {
       int provided = 0;
-      check(MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided), "MPI_Init_thread");
+      if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS) {
+        failure = "MPI: MPI_Init_thread failed";
+        return;
+      }
       initialised_here = true;
       std::atexit(finalize);
       // Rank 0 computes on a second thread while its first calls MPI (work_distribution.h).
       if (provided < MPI_THREAD_FUNNELED) {
-        throw std::runtime_error(
+        failure =
             "MPI: this MPI library gives no MPI_THREAD_FUNNELED support, which the work "
-            "distribution needs (docs/scaling.md)");
+            "distribution needs (docs/scaling.md)";
+        return;
       }
-      check(MPI_Comm_rank(MPI_COMM_WORLD, &w.rank_), "MPI_Comm_rank");
-      check(MPI_Comm_size(MPI_COMM_WORLD, &w.size_), "MPI_Comm_size");
+      if (MPI_Comm_rank(MPI_COMM_WORLD, &w.rank_) != MPI_SUCCESS ||
+          MPI_Comm_size(MPI_COMM_WORLD, &w.size_) != MPI_SUCCESS) {
+        w.rank_ = 0;
+        w.size_ = 1;
+        failure = "MPI: MPI_Comm_rank or MPI_Comm_size failed";
+        return;
+      }
     }
 #else
     if (launched > 1) {
-      throw std::runtime_error(fmt::format(
+      failure = fmt::format(
           "this flexure was built without MPI (FLEXURE_MPI=OFF), and mpirun started {} copies: "
           "each would run the whole study and write the same file. Build with -DFLEXURE_MPI=ON "
           "(docs/scaling.md) or run it without mpirun",
-          launched));
+          launched);
+      return;
     }
 #endif
+    started = true;
   });
+  if (!failure.empty()) throw std::runtime_error(failure);
   return w;
 }
 
@@ -137,9 +153,13 @@ void handle_rank_failure(const RankFailure& failure) {
 std::optional<World::AgreedCode> World::agree(int code, double seconds) const {
 #ifdef FLEXURE_WITH_MPI
   if (parallel()) {
-    // Both values by one maximum: rank 0's code, and INT_MIN from the others.
-    int local[2] = {code, root() ? code : std::numeric_limits<int>::min()};
-    int result[2] = {code, code};
+    // Both values by one maximum: rank 0's code, and INT_MIN from the others. Static: a request
+    // that times out stays pending until MPI_Abort, and must not write into a dead stack frame.
+    static int local[2];
+    static int result[2];
+    local[0] = code;
+    local[1] = root() ? code : std::numeric_limits<int>::min();
+    result[0] = result[1] = code;
     MPI_Request request = MPI_REQUEST_NULL;
     check(MPI_Iallreduce(local, result, 2, MPI_INT, MPI_MAX, MPI_COMM_WORLD, &request),
           "MPI_Iallreduce");

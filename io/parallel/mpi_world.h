@@ -74,7 +74,7 @@ class World {
 // by mpirun with more than one rank: every rank would run the whole study and write the same file.
 const World& world();
 
-// Whether world() has been called (without calling it).
+// Whether world() has been called and started (without calling it).
 bool world_started();
 
 // Finalises HDF5, then MPI, if world() initialised MPI (registered with atexit).

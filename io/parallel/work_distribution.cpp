@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "flexure/io/parallel/mpi_world.h"
+#include "flexure/io/temp_file_cleanup.h"
 
 #ifdef FLEXURE_WITH_MPI
 #include <mpi.h>
@@ -36,6 +37,7 @@ std::atomic<bool> tracking{false};
 
 std::vector<long> balance;  // items_per_rank()
 
+#ifdef FLEXURE_WITH_MPI
 void start_tracking(int ranks) {
   if (held_count.load() < ranks) {
     held.store(new Held[static_cast<std::size_t>(ranks)]);  // an older, smaller table is kept
@@ -46,6 +48,9 @@ void start_tracking(int ranks) {
     h[r].begin = h[r].end = h[r].next_begin = h[r].next_end = -1;
   }
   tracking.store(true);
+  // Ctrl-C or mpirun's SIGTERM then names the blocks even where no temporary file was registered
+  // (a command without --out).
+  io::install_interrupt_handlers();
 }
 
 // Rank `rank` was given [begin, end): it computes it now, or after the block it holds.
@@ -78,7 +83,12 @@ long next_block_size(long left, int ranks, const DistributionOptions& options) {
 std::string describe_items(long begin, long end, const DistributionOptions& options) {
   std::string text =
       end - begin == 1 ? fmt::format("item {}", begin) : fmt::format("items {}-{}", begin, end - 1);
-  if (options.describe) text += fmt::format(" (first: {})", options.describe(begin));
+  if (options.describe) {
+    try {
+      text += fmt::format(" (first: {})", options.describe(begin));
+    } catch (...) {  // the failure is reported with the index alone
+    }
+  }
   return text;
 }
 
@@ -99,6 +109,8 @@ std::string describe_items(long begin, long end, const DistributionOptions& opti
   handle_rank_failure(failure);
   throw failure;
 }
+
+#endif
 
 // FLEXURE_FAIL_ITEM=<n> (docs/scaling.md "Testing the failure path"): the block holding item n
 // throws, on whichever rank computes it. Read once.
@@ -202,7 +214,11 @@ long run_root(const World& w,
   // saves the worker a round trip; near the end (fewer than two items per rank left, or items
   // that each cost a block of their own: optimisations, designs) it would leave another rank
   // idle while the item waits, so the request is answered only once the worker is free.
-  const auto ahead_allowed = [&] { return options.max_block > 1 && total - next >= 2L * w.size(); };
+  const auto ahead_allowed = [&] {
+    const long left = total - next;
+    return options.max_block > 1 &&
+           left >= 2L * w.size() * next_block_size(left, w.size(), options);
+  };
   const auto assign = [&](int worker) {
     const auto [begin, end] = take();
     const std::int64_t block[2] = {begin, end};
@@ -214,6 +230,10 @@ long run_root(const World& w,
     check(MPI_Send(block, 2, MPI_INT64_T, worker, kTagAssign, MPI_COMM_WORLD), "MPI_Send");
   };
   start_tracking(w.size());
+  // Clears the table however this ends (a failure of rank 0's own block throws out of the loop).
+  struct StopTracking {
+    ~StopTracking() { tracking.store(false); }
+  } stop_tracking;
   long last_progress = -1;
   while (true) {
     bool busy = false;
@@ -280,7 +300,6 @@ long run_root(const World& w,
     if (own_finished && !own.valid() && workers_left == 0) break;
     if (!busy) std::this_thread::sleep_for(std::chrono::microseconds(200));
   }
-  tracking.store(false);
   return own_done;
 }
 #endif
@@ -320,6 +339,9 @@ long distribute(long total, const BlockCompute& compute, const DistributionOptio
   const std::vector<std::int64_t> counts = w.gather(std::vector<std::int64_t>{mine});
   balance.resize(counts.size(), 0);
   for (std::size_t r = 0; r < counts.size(); ++r) balance[r] += static_cast<long>(counts[r]);
+  // Every rank leaves together: a worker's first request of a following distribute() must not
+  // reach rank 0 while it still answers this one.
+  w.barrier();
   return mine;
 #else
   return run_serial(total, compute, options);
@@ -330,8 +352,9 @@ std::vector<long> items_per_rank() { return balance; }
 
 void write_blocks_in_progress(int fd) {
   if (!tracking.load()) return;
-  const Held* h = held.load();
+  // The count first: start_tracking publishes a larger table before its count.
   const int ranks = held_count.load();
+  const Held* h = held.load();
   if (h == nullptr) return;
   bool any = false;
   char a[32], b[32], r[32];

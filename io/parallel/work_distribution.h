@@ -1,9 +1,11 @@
 #pragma once
 // Items of a study divided over the ranks of world() with dynamic load balancing
 // (docs/scaling.md "How the work is divided"): rank 0 hands out blocks of items on request, and a
-// rank asks for its next block as soon as it starts one, so that it never waits for the reply.
-// Blocks shrink towards the end (a share of what is left), so that ranks finish together however
-// the cost varies per item (exact strokes, optimisations). Rank 0 computes too, on a second
+// rank asks for its next block as soon as it starts one; rank 0 answers at once while many blocks
+// are left (the rank then never waits), else once the rank is free (a block given ahead would
+// wait behind a slow one while other ranks idle). Blocks shrink towards the end (a share of what
+// is left), so that ranks finish together however the cost varies per item (exact strokes,
+// optimisations). Rank 0 computes too, on a second
 // thread, while its first thread answers requests and writes; in a run of one rank the blocks are
 // computed in order on the calling thread.
 //
@@ -32,7 +34,8 @@ struct DistributionOptions {
 };
 
 // Computes items [0, total) over the ranks and returns the number this rank computed. Every rank
-// calls it with the same total and max_block.
+// calls it with the same total and options; it ends with a barrier, so that the messages of one
+// call never meet the next.
 long distribute(long total, const BlockCompute& compute, const DistributionOptions& options);
 
 // Items computed by each rank in this process's distribute() calls so far (rank 0; empty in a run
@@ -40,7 +43,8 @@ long distribute(long total, const BlockCompute& compute, const DistributionOptio
 std::vector<long> items_per_rank();
 
 // For a signal handler (async-signal-safe): writes the blocks in progress on the ranks, as rank 0
-// knows them ("rank 1: items 40-59"), to `fd`; nothing outside a distribute() on rank 0.
+// knows them ("rank 1 items 40-59 (then 60-79)"), to `fd`; nothing outside a distribute() on
+// rank 0. A distribute() on rank 0 installs the handlers of io/temp_file_cleanup.h, which call it.
 void write_blocks_in_progress(int fd);
 
 }  // namespace flexure::parallel
