@@ -3,7 +3,9 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 
 #include "flexure/io/parallel/mpi_world.h"
@@ -12,23 +14,43 @@ namespace flexure::cli {
 
 namespace {
 
+// Seconds between progress lines under mpirun: FLEXURE_PROGRESS_SECONDS (a batch job may want
+// them rarer), else 10 (docs/scaling.md).
+double progress_interval() {
+  constexpr double kDefault = 10.0;
+  const char* text = std::getenv("FLEXURE_PROGRESS_SECONDS");
+  if (text == nullptr || *text == '\0') return kDefault;
+  char* end = nullptr;
+  const double seconds = std::strtod(text, &end);
+  if (*end != '\0' || !(seconds > 0.0) || !std::isfinite(seconds)) {
+    std::fprintf(stderr,
+                 "flexure: warning: FLEXURE_PROGRESS_SECONDS=%s is not a positive number of "
+                 "seconds; progress every %.0f s\n",
+                 text,
+                 kDefault);
+    return kDefault;
+  }
+  return seconds;
+}
+
 // Under mpirun a rank cannot tell whether the user watches a terminal (mpirun gives ranks a pty
 // whether or not its own output is one, and forwards stderr through a pipe): rank 0 prints whole
-// lines, every kEverySeconds, which suit a terminal and a batch job's log alike; short runs print
-// nothing.
+// lines, every progress_interval(), which suit a terminal and a batch job's log alike; short runs
+// print nothing.
 std::function<void(std::size_t, std::size_t)> mpi_progress(std::string label) {
   if (parallel::launched_rank() != 0) return nullptr;
-  constexpr double kEverySeconds = 10.0;
+  const double every = progress_interval();
   struct State {
     std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-    double next = kEverySeconds;
+    double next = 0.0;
   };
   auto state = std::make_shared<State>();
-  return [state, label = std::move(label)](std::size_t done, std::size_t total) {
+  state->next = every;
+  return [state, every, label = std::move(label)](std::size_t done, std::size_t total) {
     const double t =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - state->start).count();
     if (t < state->next) return;
-    state->next = t + kEverySeconds;
+    state->next = t + every;
     std::fprintf(stderr,
                  "%s: %zu/%zu (%.0f %%, %.0f s, %d ranks)\n",
                  label.c_str(),

@@ -369,6 +369,33 @@ TEST(MpiStudies, WarningsAndErrorsEveryRankMeetsArePrintedOnce) {
   EXPECT_TRUE(dir.entries().empty());
 }
 
+TEST(MpiStudies, RankZeroPrintsProgressOverAllRanks) {
+  // Progress lines every 0.2 s (FLEXURE_PROGRESS_SECONDS) on a map of 200 exact strokes (about 1 s
+  // over 2 ranks): "map cfm lps: k/200 (p %, t s, 2 ranks)", k counting the items of both ranks,
+  // never falling, up to 200.
+  ScratchDir dir;
+  const CommandResult r = run_flexure(
+      "map cfm --config lps --R 0.6:2.4:20 --d 15:45:10 --K2 1.5 --model exact "
+      "--exact-points 200 --out map.h5",
+      dir.path(),
+      mpirun(2, "FLEXURE_PROGRESS_SECONDS=0.2"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream lines(r.err);
+  long last = -1;
+  int count = 0;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("map cfm lps: ", 0) != 0) continue;
+    ++count;
+    const long done = std::stol(line.substr(13));
+    EXPECT_NE(line.find("/200 ("), std::string::npos) << line;
+    EXPECT_NE(line.find(", 2 ranks)"), std::string::npos) << line;
+    EXPECT_GE(done, last) << r.err;
+    EXPECT_LE(done, 200) << line;
+    last = done;
+  }
+  EXPECT_GE(count, 2) << r.err;
+}
+
 TEST(MpiStudies, SpringRulesAreRefusedUnderSeveralRanks) {
   // validate --spring-rules does not divide its work: each rank would run it whole.
   const CommandResult r = run_flexure("mechanism validate --spring-rules", {}, mpirun(2));
