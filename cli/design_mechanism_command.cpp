@@ -1,6 +1,7 @@
 // `flexure design mechanism`: dimensional design of a constant-force mechanism from a
 // specification (mechanisms/design/mechanism_synthesis.h; Weight 2001 ch. 8; docs/design.md).
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <memory>
 #include <optional>
@@ -32,9 +33,33 @@ struct DesignMechanismArgs {
   int points = 50;
   bool json = false;
   std::string out;
+  std::string stress_rule = "computed";
+  std::string minimize;
+  double max_width_to_thickness = design::SectionBounds{}.max_width_to_thickness;
+  double max_width_to_length = design::SectionBounds{}.max_width_to_length;
+  bool allow_infeasible = false;
+  double force_tolerance_percent = 100.0 * design::MechanismSpec{}.force_tolerance;
   CLI::Option* yield_option = nullptr;
   CLI::Option* pcf_min_option = nullptr;
 };
+
+design::StressRule parse_stress_rule(const std::string& text) {
+  if (text == "computed") return design::StressRule::kComputed;
+  if (text == "thesis") return design::StressRule::kThesis;
+  throw InvalidInput(fmt::format(
+      "--stress-rule '{}' is unknown; allowed: computed (the PRBM and exact stresses of each "
+      "design), thesis (eq. 8.5 alone, to reproduce the thesis's examples)",
+      text));
+}
+
+design::SizeObjective parse_minimize(const std::string& text) {
+  if (text.empty()) return design::SizeObjective::kNone;
+  if (text == "length") return design::SizeObjective::kLength;
+  if (text == "footprint") return design::SizeObjective::kFootprint;
+  if (text == "mass") return design::SizeObjective::kMass;
+  throw InvalidInput(
+      fmt::format("--minimize '{}' is unknown; allowed: length, footprint, mass", text));
+}
 
 design::LengthRange range_of(const std::string& text, const char* what) {
   const io::QuantityRange r = io::parse_quantity_range(text, io::Dimension::kLength, what);
@@ -47,6 +72,7 @@ design::MechanismSpec make_spec(const DesignMechanismArgs& a, mechanism::ForceOf
   // The specification's force is of `of`; the design equations size one half (eq. 8.2).
   s.force = io::parse_quantity(a.force, Dimension::kForce, "--force").si *
             mechanism::force_of_factor(of, mechanism::ForceOf::kOneHalf);
+  s.force_of = of;
   s.stroke = io::parse_quantity(a.stroke, Dimension::kLength, "--stroke").si;
   const io::Quantity E = io::parse_quantity(a.E, Dimension::kStress, "--E");
   warn(io::modulus_warning(E, "--E"));
@@ -86,13 +112,29 @@ design::MechanismSpec make_spec(const DesignMechanismArgs& a, mechanism::ForceOf
     throw InvalidInput("--model exact refines against the exact model: drop --no-exact");
   }
   s.points = a.points;
+  s.stress_rule = parse_stress_rule(a.stress_rule);
+  s.minimize = parse_minimize(a.minimize);
+  require_finite_input(a.max_width_to_thickness, "--max-width-to-thickness");
+  require_finite_input(a.max_width_to_length, "--max-width-to-length");
+  s.bounds.max_width_to_thickness = a.max_width_to_thickness;
+  s.bounds.max_width_to_length = a.max_width_to_length;
+  require_finite_input(a.force_tolerance_percent, "--force-tolerance");
+  s.force_tolerance = a.force_tolerance_percent / 100.0;
+  if (a.allow_infeasible && a.model != "exact") {
+    throw InvalidInput(
+        "--allow-infeasible applies to --model exact (whose refinement may miss the "
+        "specification); the PRBM designs listed are feasible");
+  }
+  if (a.allow_infeasible && a.out.empty()) {
+    throw InvalidInput("--allow-infeasible says what --out may write: give --out");
+  }
   s.validate();
   return s;
 }
 
 Json optional_json(const std::optional<double>& v) { return v ? Json(*v) : Json(nullptr); }
 
-Json design_json(const design::DimensionedDesign& d, double force_factor) {
+Json design_json(const design::DimensionedDesign& d, double force_factor, double specified_force) {
   const cfm::CfmResult& m = d.model;
   Json j{{"subclass", d.subclass},
          {"config", d.config},
@@ -110,6 +152,7 @@ Json design_json(const design::DimensionedDesign& d, double force_factor) {
   if (!d.feasible) {
     j["binding"] = d.binding;
     j["shortfall"] = optional_json(d.shortfall);
+    j["length_needed"] = optional_json(d.length_needed);
     return j;
   }
   Json pivots = Json::array(), lengths = Json::array(), thicknesses = Json::array(),
@@ -142,12 +185,20 @@ Json design_json(const design::DimensionedDesign& d, double force_factor) {
   j["percent_constant_force_exact"] = optional_json(d.percent_constant_force_exact);
   j["safety_factor_prbm"] = d.safety_factor_prbm;
   j["safety_factor_exact"] = optional_json(d.safety_factor_exact);
+  j["safety_factor_eq_8_5"] = d.design.yield_strength / d.primary_stress;
+  // Relative to the specified force (both of one half here).
+  j["force_error_exact"] =
+      d.force_exact ? Json(*d.force_exact / specified_force - 1.0) : Json(nullptr);
+  j["footprint"] = d.footprint;
+  j["flexure_volume"] = d.flexure_volume;
+  j["width_to_thickness"] = d.width_to_thickness;
+  j["width_to_length"] = d.width_to_length;
   if (!d.exact_note.empty()) j["exact_note"] = d.exact_note;
   return j;
 }
 
-Json refined_json(const design::DimensionedDesign& d, double force_factor) {
-  Json j = design_json(d, force_factor);
+Json refined_json(const design::DimensionedDesign& d, double force_factor, double specified_force) {
+  Json j = design_json(d, force_factor, specified_force);
   j["feasible"] = d.feasible;
   j["exact_evaluations"] = d.exact_evaluations;
   return j;
@@ -166,6 +217,42 @@ Json screens_json(const design::DesignScreens& s, double force_factor) {
       {"lpp_force_max", s.lpp_force_max ? Json(*s.lpp_force_max * force_factor) : Json(nullptr)}};
 }
 
+const char* stress_rule_name(design::StressRule r) {
+  return r == design::StressRule::kThesis ? "thesis" : "computed";
+}
+
+Json bounds_json(const design::SectionBounds& b) {
+  return Json{{"max_width_to_thickness", b.max_width_to_thickness},
+              {"max_width_to_length", b.max_width_to_length}};
+}
+
+// The file's header: what it is, by which rule, and, for a design that misses the specification
+// (--allow-infeasible), why.
+std::string toml_comment(const design::DimensionedDesign& d,
+                         std::size_t feasible,
+                         const design::MechanismSpec& spec,
+                         bool refined,
+                         const std::string& path) {
+  std::string text;
+  if (!d.feasible) {
+    text += fmt::format(
+        "NOT FEASIBLE (--allow-infeasible): this design misses the specification: {}\n", d.binding);
+  }
+  text += fmt::format(
+      "Written by flexure design mechanism: {} of {} feasible designs, sub-class {}{}.\n"
+      "Specified {} (force_of below), stress rule {} (safety factor {:g}).\n"
+      "SI units. Analyse with: flexure mechanism analyze {}",
+      d.feasible ? "the best" : "refined from the best",
+      feasible,
+      d.subclass,
+      refined ? ", refined against the exact model" : "",
+      design::specified_force_text(spec),
+      stress_rule_name(spec.stress_rule),
+      spec.safety_factor,
+      path);
+  return text;
+}
+
 void run_design_mechanism(const DesignMechanismArgs& args) {
   const mechanism::ForceOf of = mechanism::parse_force_of(args.force_of);
   const design::MechanismSpec spec = make_spec(args, of);
@@ -173,74 +260,153 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
   const double factor = mechanism::force_of_factor(mechanism::ForceOf::kOneHalf, of);
   const design::MechanismDesignReport r = design::design_mechanisms(spec);
   Json rejected = Json::array();
-  for (const auto& d : r.rejected) rejected.push_back(design_json(d, factor));
+  for (const auto& d : r.rejected) rejected.push_back(design_json(d, factor, spec.force));
+  const auto mm_hint = [](double l) {
+    return fmt::format("{:.4g} mm", design::length_hint(l) * 1e3);
+  };
   if (r.designs.empty()) {
     std::string message = "design mechanism: no sub-class meets the specification";
     if (!r.rejected.empty()) {
       message += fmt::format("; the closest, {}, fails on {}",
                              r.rejected.front().subclass,
                              r.rejected.front().binding);
+      if (r.length_needed) {
+        message += fmt::format(
+            ". The shortest mechanism that meets it: l_tot = {} ({}, by the full sizing; give "
+            "--length-range up to it)",
+            mm_hint(*r.length_needed),
+            r.length_needed_subclass);
+      }
     } else {
       message +=
           " (no sub-class passed the filters --config, --pcf-min, --in-plane/--out-of-plane "
           "for this stroke)";
     }
     throw NoConvergenceReport(
-        message, Json{{"rejected", rejected}, {"screens", screens_json(r.screens, factor)}});
+        message,
+        Json{{"rejected", rejected},
+             {"screens", screens_json(r.screens, factor)},
+             {"length_needed", optional_json(r.length_needed)},
+             {"length_needed_subclass",
+              r.length_needed ? Json(r.length_needed_subclass) : Json(nullptr)},
+             {"stress_rule", stress_rule_name(spec.stress_rule)}});
   }
   // --model exact: the best design refined against the exact model (R, K1, K2 and sizes).
   std::optional<design::DimensionedDesign> refined;
   if (args.model == "exact") refined = design::refine_design_exact(spec, r.designs.front());
-  if (!args.out.empty()) {
-    const bool use_refined = refined && refined->feasible;
-    const design::DimensionedDesign& best = use_refined ? *refined : r.designs.front();
-    if (refined && !refined->feasible) {
-      warn(fmt::format("--out: the refined design is not feasible ({}); writing the PRBM design",
-                       refined->binding));
+  const bool refinement_failed = refined && !refined->feasible;
+  const Json designs_json = [&] {
+    Json a = Json::array();
+    for (const auto& d : r.designs) a.push_back(design_json(d, factor, spec.force));
+    return a;
+  }();
+  const Json summary{
+      {"designs", designs_json},
+      {"rejected", rejected},
+      {"screens", screens_json(r.screens, factor)},
+      {"force", spec.force * factor},
+      {"force_of", mechanism::force_of_label(of)},
+      {"stroke", spec.stroke},
+      {"safety_factor", spec.safety_factor},
+      {"ranking", args.rank},
+      {"model", args.model},
+      {"stress_rule", stress_rule_name(spec.stress_rule)},
+      {"minimize", args.minimize.empty() ? Json(nullptr) : Json(args.minimize)},
+      {"section_bounds", bounds_json(spec.bounds)},
+      {"force_tolerance_percent", 100.0 * spec.force_tolerance},
+      {"refined", refined ? refined_json(*refined, factor, spec.force) : Json(nullptr)},
+      {"out", args.out.empty() ? Json(nullptr) : Json(args.out)}};
+  if (!args.out.empty() && (!refinement_failed || args.allow_infeasible)) {
+    // A refinement that failed before dimensioning (the optimisation) leaves the PRBM design,
+    // whose exact force misses the specification: that is what --allow-infeasible writes then.
+    design::DimensionedDesign written = refined ? *refined : r.designs.front();
+    if (refinement_failed) {
+      const bool prbm_design = refined->design.r2 == r.designs.front().design.r2;
+      written.feasible = false;
+      written.binding = fmt::format("the refinement against the exact model failed: {}{}",
+                                    refined->binding,
+                                    prbm_design ? "; this is the PRBM design" : "");
+      written.design.note = "NOT FEASIBLE: " + written.binding + ". " + written.design.note;
     }
     io::write_text_file(
         args.out,
         mechanism::mechanism_toml(
-            best.design,
-            fmt::format("Written by flexure design mechanism: the best of {} feasible designs, "
-                        "sub-class {}{}.\nSI units. Analyse with: flexure mechanism analyze {}",
-                        r.designs.size(),
-                        best.subclass,
-                        use_refined ? ", refined against the exact model" : "",
-                        args.out)));
+            written.design,
+            toml_comment(written, r.designs.size(), spec, refined.has_value(), args.out)));
+  }
+  if (refinement_failed) {
+    // The answer asked for (the design refined against the exact model) misses the
+    // specification: exit 3 with the reason, whatever --allow-infeasible wrote.
+    Json reached = summary;
+    throw NoConvergenceReport(
+        fmt::format(
+            "design mechanism --model exact: the refinement of {} against the exact "
+            "model is not feasible: {}{}",
+            r.designs.front().subclass,
+            refined->binding,
+            args.out.empty() ? ""
+            : args.allow_infeasible
+                ? fmt::format("; wrote it to {} anyway (--allow-infeasible), marked NOT "
+                              "FEASIBLE",
+                              args.out)
+                : fmt::format("; nothing written to {} (--allow-infeasible writes it)", args.out)),
+        reached);
+  }
+  // The thesis's rule lists designs that its own stresses would not pass: say which.
+  std::vector<std::string> short_of;
+  for (const auto& d : r.designs) {
+    const double sf = std::min(d.safety_factor_prbm, d.safety_factor_exact.value_or(1e300));
+    if (sf < spec.safety_factor * (1.0 - 1e-9)) {
+      short_of.push_back(fmt::format("{} {:.3g}", d.subclass, sf));
+    }
+  }
+  if (!short_of.empty()) {
+    warn(fmt::format(
+        "{} of {} designs miss safety factor {:g} by the PRBM or exact stresses (eq. 8.5, "
+        "--stress-rule thesis, leaves out the axial stress and the clamp moment): {}",
+        short_of.size(),
+        r.designs.size(),
+        spec.safety_factor,
+        fmt::join(short_of, ", ")));
   }
   if (args.json) {
-    Json designs = Json::array();
-    for (const auto& d : r.designs) designs.push_back(design_json(d, factor));
-    print_json(Json{{"designs", designs},
-                    {"rejected", rejected},
-                    {"screens", screens_json(r.screens, factor)},
-                    {"force", spec.force * factor},
-                    {"force_of", mechanism::force_of_label(of)},
-                    {"stroke", spec.stroke},
-                    {"safety_factor", spec.safety_factor},
-                    {"ranking", args.rank},
-                    {"model", args.model},
-                    {"refined", refined ? refined_json(*refined, factor) : Json(nullptr)},
-                    {"out", args.out.empty() ? Json(nullptr) : Json(args.out)}});
+    print_json(summary);
     return;
   }
-  fmt::print("{} feasible design{} ({} rejected), best first; forces of {}:\n",
-             r.designs.size(),
-             r.designs.size() == 1 ? "" : "s",
-             r.rejected.size(),
-             mechanism::force_of_label(of));
+  fmt::print(
+      "{} feasible design{} ({} rejected), {}; forces of {}; safety factor {:g} by the {} "
+      "stresses:\n",
+      r.designs.size(),
+      r.designs.size() == 1 ? "" : "s",
+      r.rejected.size(),
+      spec.minimize == design::SizeObjective::kNone ? "best first"
+                                                    : "smallest " + args.minimize + " first",
+      mechanism::force_of_label(of),
+      spec.safety_factor,
+      spec.stress_rule == design::StressRule::kThesis ? "eq. 8.5 (--stress-rule thesis)"
+                                                      : "PRBM and exact");
   for (const auto& d : r.designs) {
     const int p = d.model.primary_pivot;
+    std::string size;
+    if (spec.minimize == design::SizeObjective::kFootprint) {
+      size = fmt::format("; footprint {:.4g} mm^2", d.footprint * 1e6);
+    } else if (spec.minimize == design::SizeObjective::kMass) {
+      size = fmt::format("; flexure volume {:.4g} mm^3", d.flexure_volume * 1e9);
+    }
     fmt::print(
-        "  {:<10} l_tot {:.4g} mm, r2 {:.4g} mm, r3 {:.4g} mm, primary h {:.4g} mm, b {:.4g} mm; "
-        "S_y needed {:.4g} MPa; F {:.4g} N (exact {}), Xi' {:.1f} % (exact {})\n",
+        "  {:<10} l_tot {:.4g} mm, r2 {:.4g} mm, r3 {:.4g} mm, primary h {:.4g} mm, b {:.4g} mm{}; "
+        "SF PRBM {:.3g}, exact {} (S_y {:.4g} MPa; eq. 8.5 alone needs {:.4g}); F {:.4g} N "
+        "(exact {}), Xi' {:.1f} % (exact {})\n",
         d.subclass,
         d.l_tot * 1e3,
         d.r2 * 1e3,
         d.r3 * 1e3,
         d.thickness[p - 1] * 1e3,
         d.width[p - 1] * 1e3,
+        size,
+        d.safety_factor_prbm,
+        d.safety_factor_exact ? fmt::format("{:.3g}", *d.safety_factor_exact) : "n/a",
+        d.design.yield_strength * 1e-6,
         d.required_yield_strength * 1e-6,
         d.force_prbm * factor,
         d.force_exact ? fmt::format("{:.4g} N", *d.force_exact * factor) : "n/a",
@@ -248,37 +414,27 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
         d.percent_constant_force_exact ? fmt::format("{:.1f} %", *d.percent_constant_force_exact)
                                        : "n/a");
   }
-  const design::DimensionedDesign& best = r.designs.front();
-  if (best.safety_factor_exact && *best.safety_factor_exact < spec.safety_factor) {
-    warn(fmt::format(
-        "{}: eq. 8.5 leaves out the axial and clamp stresses; by the exact stresses its safety "
-        "factor is {:.3g}, not {:g} (S_y >= {:.4g} MPa would give it)",
-        best.subclass,
-        *best.safety_factor_exact,
-        spec.safety_factor,
-        best.required_yield_strength_exact.value_or(0.0) * 1e-6));
-  }
   if (refined) {
     const design::DimensionedDesign& x = *refined;
-    if (x.feasible) {
-      fmt::print(
-          "refined against the exact model: R {:.4f}, K1 {:.4f}, K2 {:.4f}; r2 {:.4g} mm, r3 "
-          "{:.4g} mm, primary h {:.4g} mm; exact F {:.4g} N, Xi' {:.1f} % (was {:.1f} %), S_y "
-          "needed {:.4g} MPa ({} exact strokes)\n",
-          x.model.R,
-          x.model.K1,
-          x.model.K2,
-          x.r2 * 1e3,
-          x.r3 * 1e3,
-          x.thickness[x.model.primary_pivot - 1] * 1e3,
-          x.force_exact.value_or(0.0) * factor,
-          x.percent_constant_force_exact.value_or(0.0),
-          best.percent_constant_force_exact.value_or(0.0),
-          x.required_yield_strength_exact.value_or(0.0) * 1e-6,
-          x.exact_evaluations);
-    } else {
-      fmt::print("refined against the exact model: not feasible: {}\n", x.binding);
-    }
+    const design::DimensionedDesign& best = r.designs.front();
+    fmt::print(
+        "refined against the exact model: R {:.4f}, K1 {:.4f}, K2 {:.4f}; r2 {:.4g} mm, r3 "
+        "{:.4g} mm, primary h {:.4g} mm, b {:.4g} mm; exact F {:.4g} N, Xi' {:.1f} % (was "
+        "{:.1f} %), SF exact {:.3g}, PRBM {:.3g} (S_y {:.4g} MPa; {} exact strokes)\n",
+        x.model.R,
+        x.model.K1,
+        x.model.K2,
+        x.r2 * 1e3,
+        x.r3 * 1e3,
+        x.thickness[x.model.primary_pivot - 1] * 1e3,
+        x.width[x.model.primary_pivot - 1] * 1e3,
+        x.force_exact.value_or(0.0) * factor,
+        x.percent_constant_force_exact.value_or(0.0),
+        best.percent_constant_force_exact.value_or(0.0),
+        x.safety_factor_exact.value_or(0.0),
+        x.safety_factor_prbm,
+        x.design.yield_strength * 1e-6,
+        x.exact_evaluations);
   }
   if (!args.out.empty()) fmt::print("wrote {}\n", args.out);
 }
@@ -349,6 +505,35 @@ void register_design_mechanism_command(CLI::App& app) {
       ->default_str("50");
   cmd->add_option(
       "--out", a->out, "Write the best design as TOML that `flexure mechanism analyze` reads");
+  cmd->add_option("--stress-rule",
+                  a->stress_rule,
+                  "computed: size and filter by the PRBM and exact stresses of each design "
+                  "(axial stress and clamp moment included; every listed design meets the safety "
+                  "factor by both); thesis: eq. 8.5 alone, as thesis ch. 8 (its examples)")
+      ->default_str("computed");
+  cmd->add_option("--minimize",
+                  a->minimize,
+                  "length (l_tot), footprint (plan area over the stroke) or mass (the flexures' "
+                  "volume): each sub-class at its smallest feasible design in the length range, "
+                  "ranked smallest first (default: the longest length, ranked by Xi')");
+  cmd->add_option("--max-width-to-thickness",
+                  a->max_width_to_thickness,
+                  "Largest width/thickness of any flexure (foil beyond; thesis example 1 has 102)")
+      ->default_str("200");
+  cmd->add_option("--max-width-to-length",
+                  a->max_width_to_length,
+                  "Largest width of any flexure as a multiple of l_tot (no flexure wider than the "
+                  "half mechanism is long)")
+      ->default_str("1");
+  cmd->add_option("--force-tolerance",
+                  a->force_tolerance_percent,
+                  "Largest difference, in %, of a design's exact mean force from --force (the "
+                  "PRBM sizes the force by eq. 8.2; checked with the exact model)")
+      ->default_str("10");
+  cmd->add_flag("--allow-infeasible",
+                a->allow_infeasible,
+                "With --model exact and --out: write the refined design even when it misses the "
+                "specification (marked NOT FEASIBLE in the file; the exit code stays 3)");
   cmd->add_flag("--json", a->json, "Print one JSON object");
   cmd->callback([a] { run_design_mechanism(*a); });
 }

@@ -667,6 +667,7 @@ void register_mechanism_command(CLI::App& app) {
     CLI::Option* tol_option = nullptr;
     std::string spring_rule;
     std::string force_of = "half";
+    CLI::Option* force_of_option = nullptr;
   };
   auto args = std::make_shared<AnalyzeArgs>();
   CLI::App* analyze = mech.add_subcommand(
@@ -695,12 +696,14 @@ void register_mechanism_command(CLI::App& app) {
                       args->spring_rule,
                       "Spring constant of fixed-fixed segments (modified designs): pure-bending "
                       "(k = EI/L, default), table2, table5 (paper 004 Tables 2/5)");
-  analyze
-      ->add_option("--force-of",
-                   args->force_of,
-                   "Forces of one half of the symmetric mechanism (the model's half) or of the "
-                   "whole mechanism (two halves on one slider, = 2 x half), as dynamics reports")
-      ->default_str("half");
+  args->force_of_option =
+      analyze
+          ->add_option("--force-of",
+                       args->force_of,
+                       "Forces of one half of the symmetric mechanism (the model's half) or of "
+                       "the whole mechanism (two halves on one slider, = 2 x half), as dynamics "
+                       "reports; default half, or the design file's force_of")
+          ->default_str("half");
   analyze->callback([args] {
     require_in_range(args->points, "--points", 2, 100000);
     if (args->no_exact && args->method == "exact") {
@@ -709,7 +712,9 @@ void register_mechanism_command(CLI::App& app) {
     if (!args->out.empty()) io::check_output_path(args->out);
     MechanismDesign d = resolve(args->what);
     if (!args->spring_rule.empty()) apply_spring_rule(d, parse_spring_rule(args->spring_rule));
-    const ForceOf force_of = parse_force_of(args->force_of);
+    // A design file's force_of (written by `flexure design mechanism`) unless --force-of is given.
+    const ForceOf force_of =
+        *args->force_of_option || !d.force_of ? parse_force_of(args->force_of) : *d.force_of;
     std::optional<io::AtomicHdf5File> file;
     if (!args->out.empty()) {
       try {

@@ -134,7 +134,8 @@ MechanismFile parse_mechanism_file(const std::string& text, const std::string& s
                    "ground",
                    "middle",
                    "slider",
-                   "dynamics"},
+                   "dynamics",
+                   "force_of"},
                   "the file",
                   source);
   MechanismDesign d;
@@ -321,6 +322,21 @@ MechanismFile parse_mechanism_file(const std::string& text, const std::string& s
   } catch (const InvalidInput& e) {
     throw InvalidInput(fmt::format("{}: {}", source, e.what()));
   }
+  // What the design's forces are reported as unless --force-of says otherwise (written by
+  // `flexure design mechanism` for the force it was specified by).
+  if (const toml::node* of = root.get("force_of")) {
+    const std::optional<std::string> v = of->value<std::string>();
+    try {
+      if (!v) throw InvalidInput("not a string");
+      d.force_of = parse_force_of(*v);
+    } catch (const InvalidInput&) {
+      toml_fail(source,
+                line_of(*of),
+                fmt::format("force_of = {} is unknown; allowed: \"half\" (one half of the "
+                            "symmetric mechanism) or \"whole\" (both halves on one slider)",
+                            v ? "'" + *v + "'" : std::string("a non-string")));
+    }
+  }
   MechanismFile file{d, parse_dynamics_table(root, source), {}};
   const auto warn = [&](const std::string& text) {
     if (!text.empty()) file.warnings.push_back(fmt::format("{}: {}", source, text));
@@ -393,6 +409,11 @@ std::string mechanism_toml(const MechanismDesign& d, const std::string& comment)
       fmt::format("r2 = {}            # m, PRBM crank (pivot 1 to pivot 2)\n", toml_number(d.r2));
   out += fmt::format("r3 = {}            # m, PRBM coupler\n", toml_number(d.r3));
   out += fmt::format("stroke = {}        # m, slider travel\n", toml_number(d.stroke));
+  if (d.force_of) {
+    out += fmt::format("force_of = {}       # the forces `flexure mechanism analyze` reports: {}\n",
+                       toml_string(*d.force_of == ForceOf::kOneHalf ? "half" : "whole"),
+                       force_of_label(*d.force_of));
+  }
   bool fixed_fixed = false;
   for (const JointDesign& j : d.joints) fixed_fixed |= j.segment == SegmentKind::kFixedFixed;
   if (fixed_fixed) {

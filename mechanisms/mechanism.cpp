@@ -265,6 +265,20 @@ double associated_link_length(const MechanismDesign& design, int pivot) {
   return 0.5 * (design.r2 + design.r3);
 }
 
+double table_8_1_segment_length(const MechanismDesign& design, int pivot) {
+  const JointDesign& j = design.joints[pivot - 1];
+  switch (j.type) {
+    case PivotType::kPin:
+      return 0.0;
+    case PivotType::kLong:
+      return associated_link_length(design, pivot) / long_segment_gamma();
+    case PivotType::kSmall:
+      if (j.segment == SegmentKind::kFixedFixed || j.length > 0.0) return j.length;
+      return kMu * associated_link_length(design, pivot);
+  }
+  return 0.0;
+}
+
 double MechanismDesign::toggle_stroke() const {
   return cfm::toggle_stroke_percent(R()) / 100.0 * (r2 + r3);
 }

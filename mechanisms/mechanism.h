@@ -12,11 +12,13 @@
 // elements/fixed_pinned_segment.h). The modified configurations of paper 004 add fixed-fixed
 // segments (SegmentKind below; modified_designs.h). Units: SI (m, Pa, N) throughout.
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
+#include "flexure/mechanisms/force_of.h"
 
 namespace flexure::mechanism {
 
@@ -70,6 +72,10 @@ struct MechanismDesign {
   // `config` is then the thesis pattern of the same topology with every segment an s ("sps").
   std::string paper_config;
   SpringRule spring_rule = SpringRule::kPureBending;  // fixed-fixed segments only
+  // What the design's slider forces are reported as unless a command is told otherwise
+  // (--force-of): a design file's `force_of` key, which `flexure design mechanism` writes for the
+  // force it was specified by. Empty: one half (every model computes one half, force_of.h).
+  std::optional<ForceOf> force_of;
 
   const cfm::CfmConfiguration& configuration() const;
   double R() const { return r3 / r2; }
@@ -125,6 +131,12 @@ struct SlenderBeamLimits {
 // The link a flexible pivot's default length is based on (Table 8.1): r2 at the ground, r3 at the
 // slider, r_ave in the middle (s) or r2/r3 for a middle long segment (plp/slp).
 double associated_link_length(const MechanismDesign& design, int pivot);
+
+// The flexible length finalise() gives a thesis segment of pivot `pivot` (1..3) of `design`
+// (config, r2 and r3 set): Table 8.1's l = r/gamma for an l segment, 0.1 r for an s pivot without
+// a length of its own (its own length where it has one, and for a fixed-fixed segment); 0 for a
+// pin. Lets the design layer bound sections by h/L before a design is finalised.
+double table_8_1_segment_length(const MechanismDesign& design, int pivot);
 
 // Gives every flexure of `design` (its config, r2, r3 and E set) width `width` and sizes the
 // thicknesses so that the spring ratios are k2/k_ref = K1 and k3/k_ref = K2 (thesis eqs.

@@ -6,7 +6,8 @@ the first file (as Figs. 11-13).
     /usr/bin/python3 scripts/plot_dynamics.py full.h5 no_slider.h5 no_inertia.h5 \
         --labels "Table 5" "slider mass 0" "all inertias 0" --out dynamics.png
 
-Axis units come from the datasets' `units` attributes. Writes only the --out image (default
+Axis units come from the datasets' `units` attributes; the force axes name what the force is the
+force of (the files' `force_of`, which must agree). Writes only the --out image (default
 dynamics.png in the working directory) and prints its path. Run with Debian's python3
 (matplotlib and h5py from apt).
 """
@@ -62,6 +63,13 @@ def main(argv):
     if len(labels) != len(args.files):
         parser.error("--labels needs one label per file")
     sweeps = [read_sweep(p) for p in args.files]
+    # One force axis: every file's forces must be of the same thing (one half or the whole).
+    force_of = sweeps[0]["force_of"]
+    mixed = [p for p, s in zip(args.files, sweeps) if s["force_of"] != force_of]
+    if mixed:
+        parser.error(f"{args.files[0]} has forces of the {force_of}, {mixed[0]} of "
+                     f"{sweeps[args.files.index(mixed[0])]['force_of']}: write them with the same "
+                     "--force-of")
 
     has_history = bool(sweeps[0]["history"])
     fig, axes = plt.subplots(2 if has_history else 1, 3, figsize=(14, 8 if has_history else 4),
@@ -73,7 +81,7 @@ def main(argv):
         for sweep, label in zip(sweeps, labels):
             ax.plot(sweep["omega"], sweep[key], label=label)
         ax.set_xlabel(f"drive frequency omega ({sweeps[0]['omega_unit']})")
-        ax.set_ylabel(f"{ylabel} ({force_unit})")
+        ax.set_ylabel(f"{ylabel}, {force_of} ({force_unit})")
         ax.grid(True, alpha=0.3)
     axes[0][0].legend()
     axes[0][1].set_title(f"{sweeps[0]['mechanism']} (force of: {sweeps[0]['force_of']})")
@@ -85,7 +93,7 @@ def main(argv):
             ax.plot(phase, static_force, "--", label="static PRBM")
             ax.set_title(f"omega = {omega:g} {sweeps[0]['omega_unit']}")
             ax.set_xlabel("phase t / period (1)")
-            ax.set_ylabel(f"force ({force_unit})")
+            ax.set_ylabel(f"force, {force_of} ({force_unit})")
             ax.grid(True, alpha=0.3)
         axes[1][0].legend()
     fig.tight_layout()

@@ -5,7 +5,9 @@ displacement, the PRBM force error relative to the exact model in a second panel
 validity limit as a vertical line where the file has one, and a stress panel: the PRBM and (where
 the exact model ran) the exact stress of every flexure with the material's yield strength as a
 horizontal line (--no-stress leaves the panel out). Axis units come from the datasets' `units`
-attributes. The title names the design and its percent constant force.
+attributes; the force axis names what the force is the force of (the file's `force_of`: one half
+of the symmetric mechanism or the whole). The title names the design and its percent constant
+force.
 
     flexure mechanism analyze 1A-lpp --method exact --out lpp.h5
     /usr/bin/python3 scripts/plot_mechanism.py lpp.h5 --out lpp.png
@@ -69,6 +71,9 @@ def read_stroke(path):
             "force_prbm": f["force_prbm"][()],
             "force_exact": f["force_exact"][()] if "force_exact" in f else None,
             "mechanism": text(f.attrs.get("mechanism", os.path.basename(path))),
+            # `flexure mechanism analyze` reports one half unless --force-of whole (or the design
+            # file's force_of) says otherwise; files written before the attribute: one half.
+            "force_of": text(f.attrs.get("force_of", "one half")),
             "config": text(f.attrs.get("config", "")),
             "pcf_prbm": f.attrs.get("percent_constant_force_prbm"),
             "pcf_exact": f.attrs.get("percent_constant_force_exact"),
@@ -139,7 +144,7 @@ def main(argv):
     ax.plot(dx, d["force_prbm"] * force_scale, "o-", ms=3, label="PRBM")
     if exact is not None:
         ax.plot(dx, exact * force_scale, "s-", ms=3, label="exact (elastica)")
-    ax.set_ylabel(f"slider force F ({force_unit})")
+    ax.set_ylabel(f"slider force F, {d['force_of']} ({force_unit})")
     ax.grid(True, alpha=0.3)
     row = 1
     if exact is not None:

@@ -139,6 +139,10 @@ EXAMPLE_2 = ["--force", "3mN", "--stroke", "7.5mm", "--E", "110GPa", "--yield-st
              "--thickness-range", "1.5mm:2mm", "--pcf-min", "90", "--in-plane", "--config", "sss"]
 EXAMPLE_3 = ["--force", "100lbf", "--stroke", "6in", "--E", "30Msi", "--yield-strength", "200ksi",
              "--safety-factor", "1", "--length-range", "24in", "--width-range", "5in"]
+# The thesis's examples by its own rules: eq. 8.5, no section bounds, no check of the exact force
+# (docs/design.md "The stress rule"); the tool's defaults are in the table after them.
+THESIS = ["--stress-rule", "thesis", "--max-width-to-thickness", "1e6",
+          "--max-width-to-length", "1000", "--force-tolerance", "100"]
 
 
 def design_mechanism(flexure, args):
@@ -153,7 +157,7 @@ def design_mechanism(flexure, args):
 def examples(flexure):
     lines = ["| thesis example | printed (after docs/errata.md) | flexure design mechanism | "
              "exact model of the design | time |", "|---|---|---|---|---|"]
-    j, _, t = design_mechanism(flexure, EXAMPLE_1)
+    j, _, t = design_mechanism(flexure, EXAMPLE_1 + THESIS)
     d = j["designs"][0]
     lines.append(
         f"| 1: lpp, 25 lbf over 4 in, E 30 Msi, SF 1.2 | lpp-b, b = 5 in, h = 0.049 in, "
@@ -163,14 +167,15 @@ def examples(flexure):
         f"F {d['force_exact'] / LBF:.4g} lbf, Ξ′ {d['percent_constant_force_exact']:.1f}, SF "
         f"{d['safety_factor_exact']:.3g} (S_y for SF 1.2: "
         f"{d['required_yield_strength_exact'] / KSI:.4g} ksi) | {t * 1e3:.0f} ms |")
-    j, code, t = design_mechanism(flexure, EXAMPLE_2)
+    j, code, t = design_mechanism(flexure, EXAMPLE_2 + THESIS)
     r = j["rejected"][0]
     lines.append(
         f"| 2: sss in-plane, 3 mN over 7.5 mm, l_tot 150 mm, h 1.5–2 mm | no sss: M_max = 0.3792 < "
         f"1.7796 (sss-a95I); 418.4 mm needed | exit {code}: M_max (screen) = "
         f"{j['screens']['M_max']:.4f}; closest {r['subclass']}: {r['binding']} | – | "
         f"{t * 1e3:.0f} ms |")
-    j, code, t = design_mechanism(flexure, EXAMPLE_3 + ["--thickness-range", "0.01in:0.035in"])
+    j, code, t = design_mechanism(flexure,
+                                  EXAMPLE_3 + THESIS + ["--thickness-range", "0.01in:0.035in"])
     sc = j["screens"]
     lines.append(
         f"| 3: 100 lbf over 6 in, l_tot 24 in, b 5 in, h 0.01–0.035 in (Table 8.6) | Method 2: "
@@ -178,12 +183,69 @@ def examples(flexure):
         f"h_max {sc['lpp_thickness_max'] / INCH:.4g} in, F_max {sc['lpp_force_max'] / LBF:.4g} "
         f"lbf, Ψ_min {sc['Psi_min']:.3f}, M_min {sc['M_min']:.3f}; no design (the five need "
         f"h ≈ 0.11 in) | – | {t * 1e3:.0f} ms |")
-    j, code, t = design_mechanism(flexure, EXAMPLE_3 + ["--thickness-range", "0.01in:0.12in"])
+    j, code, t = design_mechanism(flexure,
+                                  EXAMPLE_3 + THESIS + ["--thickness-range", "0.01in:0.12in"])
     names = ", ".join(f"{d['subclass']} (h {d['thicknesses'][0] / INCH:.3g} in)"
                       for d in j["designs"])
     exact = ", ".join(f"{d['percent_constant_force_exact']:.1f}" for d in j["designs"])
     lines.append(f"| 3 with h up to 0.12 in | lps-b90I, lpp-b90, lps-b95I, lpp-b95, lpp-b | "
                  f"{names} | Ξ′ {exact} | {t * 1e3:.0f} ms |")
+    return "\n".join(lines)
+
+
+STEEL_20N = ["--force", "20N", "--stroke", "10mm", "--E", "200GPa", "--yield-strength",
+             "1200MPa", "--safety-factor", "1.5"]
+SPRING_25LBF = ["--force", "25lbf", "--stroke", "4in", "--E", "30Msi", "--yield-strength", "167ksi",
+                "--safety-factor", "1.5", "--length-range", "10in:20in"]
+
+
+def rules(flexure):
+    """Issue 27's reproducers before (the thesis's rule, no bounds) and after (the defaults)."""
+    lines = ["| specification | options | designs | below SF 1.5 by exact, PRBM stresses | "
+             "least SF exact, PRBM | largest b/h, b/l_tot | largest exact force error | best | "
+             "time |", "|---|---|---|---|---|---|---|---|---|"]
+    cases = [("20 N, 10 mm, 200 GPa, 1200 MPa, l_tot 30-150 mm", STEEL_20N +
+              ["--length-range", "30mm:150mm"]),
+             ("25 lbf, 4 in, 30 Msi, 167 ksi, l_tot 10-20 in", SPRING_25LBF)]
+    for spec, args in cases:
+        for options, extra in (("`--stress-rule thesis`, no bounds (as before issue 27)", THESIS),
+                               ("defaults", []),
+                               ("`--minimize length`", ["--minimize", "length"]),
+                               ("`--minimize footprint`", ["--minimize", "footprint"]),
+                               ("`--minimize mass`", ["--minimize", "mass"])):
+            j, code, t = design_mechanism(flexure, args + extra)
+            ds = j.get("designs", [])
+            if not ds:
+                lines.append(f"| {spec} | {options} | 0 (exit {code}) | | | | | | {t:.2f} s |")
+                continue
+            sfe = [d["safety_factor_exact"] for d in ds]
+            sfp = [d["safety_factor_prbm"] for d in ds]
+            best = ds[0]
+            size = {"length": f"l_tot {best['l_tot'] * 1e3:.4g} mm",
+                    "footprint": f"{best['footprint'] * 1e6:.4g} mm²",
+                    "mass": f"flexures {best['flexure_volume'] * 1e9:.4g} mm³"}.get(
+                        j.get("minimize"), f"l_tot {best['l_tot'] * 1e3:.4g} mm")
+            lines.append(
+                f"| {spec} | {options} | {len(ds)} | {sum(x < 1.5 for x in sfe)}, "
+                f"{sum(x < 1.5 for x in sfp)} | {min(sfe):.3g}, {min(sfp):.3g} | "
+                f"{max(d['width_to_thickness'] for d in ds):.3g}, "
+                f"{max(d['width_to_length'] for d in ds):.3g} | "
+                f"{max(abs(d['force_error_exact']) for d in ds) * 100:.1f} % | "
+                f"{best['subclass']}, {size} | {t:.2f} s |")
+    # --model exact on the second specification, and the length hint of an infeasible one.
+    for options, extra in (("`--model exact --stress-rule thesis`, no bounds", THESIS),
+                           ("`--model exact`", [])):
+        j, code, t = design_mechanism(flexure, SPRING_25LBF + ["--model", "exact"] + extra)
+        x = j.get("refined") or {}
+        verdict = ("refined: exact F {:.4g} lbf, SF exact {:.3g}, PRBM {:.3g}".format(
+            x["force_exact"] / LBF, x["safety_factor_exact"], x["safety_factor_prbm"])
+            if x.get("feasible") else f"refinement not feasible: exit {code}")
+        lines.append(f"| 25 lbf ... (as above) | {options} | {verdict} | | | | | | {t:.2f} s |")
+    j, code, t = design_mechanism(flexure, STEEL_20N + ["--thickness-range", "0.2mm:1mm",
+                                                        "--length-range", "40mm"])
+    lines.append(f"| 20 N ..., h 0.2-1 mm, l_tot 40 mm | defaults | 0 (exit {code}): the shortest "
+                 f"feasible mechanism l_tot = {j['length_needed'] * 1e3:.4g} mm "
+                 f"({j['length_needed_subclass']}) | | | | | | {t:.2f} s |")
     return "\n".join(lines)
 
 
@@ -232,10 +294,15 @@ def exact_optimum(flexure):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--flexure", default=os.path.join(ROOT, "build", "flexure"))
+    parser.add_argument("--only", nargs="+", metavar="TABLE",
+                        help="regenerate only these tables (table_2_1 subclasses strict_rules "
+                             "examples rules exact_optimum); the others stay as they are")
     args = parser.parse_args()
     tables = {"table_2_1": table_2_1, "subclasses": subclasses, "strict_rules": strict_rules,
-              "examples": examples, "exact_optimum": exact_optimum}
-    rewrite_blocks(DOC, "design-table", lambda name: tables[name](args.flexure))
+              "examples": examples, "rules": rules, "exact_optimum": exact_optimum}
+    rewrite_blocks(DOC, "design-table",
+                   lambda name: tables[name](args.flexure)
+                   if args.only is None or name in args.only else None)
     print(f"wrote {DOC}")
 
 

@@ -6,14 +6,19 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <set>
+#include <string_view>
 
 #include "flexure/mechanisms/cfm/cfm_comparison.h"
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/design/cfm_exact_refinement.h"
 #include "flexure/mechanisms/design/feasibility.h"
+#include "flexure/mechanisms/design/length_search.h"
+#include "flexure/mechanisms/design/section_family.h"
 #include "flexure/mechanisms/design/subclass_problem.h"
+#include "flexure/mechanisms/design/subclass_sizing.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/solver/common/errors.h"
@@ -78,286 +83,177 @@ void reject(DimensionedDesign& d, std::string why, std::optional<double> shortfa
 // Lengths in the messages, in mm (the specification may have come in inches; SI is the contract).
 std::string mm(double m) { return fmt::format("{:.4g} mm", m * 1e3); }
 
-// Sizes the sub-class `row` for the specification (see the header's sizing rule).
-DimensionedDesign size_subclass(const MechanismSpec& spec, const cfm::CfmSubclass& row) {
-  DimensionedDesign out;
-  out.subclass = row.name;
-  out.config = row.config;
-  out.model = cfm::CfmModel().evaluate(cfm::parameters_of(row));
-  out.M = row.M;
-  out.n = row.n;
-  const cfm::CfmResult& m = out.model;
-  const cfm::CfmConfiguration& cfg = cfm::find_cfm_configuration(row.config);
-  const double lambda = m.lambda;
-  const int p = m.primary_pivot;
-  const ForceCoefficient fc = force_coefficient(m);
-  const double F = spec.force, E = spec.E;
-
-  // The stroke first (eq. 8.6): it is shortest in % at the longest length.
-  const double d_at_max = stroke_percent_for(spec.stroke, spec.length.upper, lambda);
-  if (d_at_max > m.stroke_percent * (1.0 + kSlack)) {
-    reject(out,
-           fmt::format("stroke: d = {:.4g} % of r_tot at the longest l_tot = {} (eq. 8.6) exceeds "
-                       "the sub-class's design stroke {:.4g} %; the travel needs l_tot >= {}",
-                       d_at_max,
-                       mm(spec.length.upper),
-                       m.stroke_percent,
-                       mm(100.0 * spec.stroke * lambda / m.stroke_percent)),
-           d_at_max / m.stroke_percent);
-    return out;
-  }
-  // Method 1 per sub-class (eqs. 8.5, 8.17): even the thinnest primary flexure at the longest
-  // length (the least stressed design) must stay below S_y/SF.
-  if (spec.yield_strength && spec.thickness.lower > 0.0) {
-    const double omega = *spec.yield_strength / E;
-    const double l_max = spec.length.upper, h_min = spec.thickness.lower;
-    const double d_max = stroke_percent_for(spec.stroke, l_max, lambda);
-    const double M_max =
-        stress_screen_M(omega, spec.safety_factor, lambda, out.n, h_min, d_max, l_max);
-    if (out.M > M_max * (1.0 + kSlack)) {
-      reject(out,
-             fmt::format("stress: M = {:.4f} exceeds M_max = {:.4f} (eq. 8.17 at h = {}, "
-                         "l_tot = {}, d = {:.4g} %): the flexure may be at most h = {} thick, or "
-                         "l_tot at least {} long (eq. 8.5)",
-                         out.M,
-                         M_max,
-                         mm(h_min),
-                         mm(l_max),
-                         d_max,
-                         mm(max_primary_thickness(
-                             omega, spec.safety_factor, lambda, out.M, out.n, d_max, l_max)),
-                         mm(length_for_stress(
-                             omega, spec.safety_factor, lambda, out.M, out.n, h_min, spec.stroke))),
-             out.M / M_max);
-      return out;
+// The thesis's choice of rows (§8.5): the a rows (16 %) up to d = 16 % of the design stroke, the
+// b rows (40 %) beyond. Each row's d has its own lambda, so near 16 % a configuration's a rows may
+// all land just above it while its b rows land just below: then the b rows serve. With
+// --minimize every admitted row competes at its own length (its stroke limit decides).
+class RowSelection {
+ public:
+  explicit RowSelection(const MechanismSpec& spec) : spec_(spec) {
+    for (const cfm::CfmSubclass& row : cfm::thesis_subclasses()) {
+      if (admitted(spec, row)) rows_.push_back(&row);
     }
   }
-  // Longest length, widest primary flexure; the thickness from the force (eq. 8.2). With the
-  // width free, the thickest flexure the stress (eq. 8.5) and the thickness range allow, and the
-  // width from the force (thesis example 2, eq. 8.19).
-  // Where the section rule makes another flexure wider than the primary one (b_i = D b_p with
-  // D > 1: equal thicknesses, or the C/D_min rule), that flexure takes the widest width.
-  double l = spec.length.upper, b = spec.width.upper;
-  {
-    const std::string row_flags = subclass_flags(row.name);
-    const bool equal_widths =
-        spec.orientation == FlexureOrientation::kInPlane ||
-        (spec.orientation == FlexureOrientation::kAny && row_flags.find('I') != std::string::npos);
-    const bool equal_h = !equal_widths && row_flags.find_first_of("Oo") != std::string::npos;
-    double widest = 1.0;
-    for (int i = 1; i <= 3 && !equal_widths; ++i) {
-      if (i == p || cfg.pivots[i - 1] == mechanism::PivotType::kPin) continue;
-      widest = std::max(
-          widest,
-          equal_h ? second_moment_ratio(m, i) : m.D_min[i - 1].value_or(second_moment_ratio(m, i)));
-    }
-    b /= widest;
-  }
-  double h = 0.0;
-  if (std::isinf(b)) {
-    h = spec.thickness.upper;
-    if (spec.yield_strength) {
-      h = std::min(h,
-                   max_primary_thickness(*spec.yield_strength / E,
-                                         spec.safety_factor,
-                                         lambda,
-                                         out.M,
-                                         out.n,
-                                         stroke_percent_for(spec.stroke, l, lambda),
-                                         l));
-    }
-    b = width_for_force(fc, F, E, h, l);
-  } else {
-    h = thickness_for_force(fc, F, E, b, l);
-  }
-  if (h < spec.thickness.lower * (1.0 - kSlack)) {
-    h = spec.thickness.lower;
-    b = width_for_force(fc, F, E, h, l);
-    if (b < spec.width.lower * (1.0 - kSlack)) {
-      const double F_min = design_force(fc, E, spec.width.lower, h, l);
-      reject(out,
-             fmt::format("force: the thinnest, narrowest primary flexure (h = {}, b = {}) at the "
-                         "longest length {} already gives {:.4g} N > {:.4g} N (eq. 8.2)",
-                         mm(h),
-                         mm(spec.width.lower),
-                         mm(l),
-                         F_min,
-                         F),
-             F_min / F);
-      return out;
-    }
-  } else if (h > spec.thickness.upper * (1.0 + kSlack)) {
-    h = spec.thickness.upper;
-    l = length_for_force(fc, F, E, b, h);
-    if (l < spec.length.lower * (1.0 - kSlack)) {
-      const double h_at_min = thickness_for_force(fc, F, E, b, spec.length.lower);
-      reject(out,
-             fmt::format("force: {:.4g} N needs a primary flexure h = {} (b = {}, l_tot = {}; "
-                         "eq. 8.2), beyond the thickness range's {}",
-                         F,
-                         mm(h_at_min),
-                         mm(b),
-                         mm(spec.length.lower),
-                         mm(spec.thickness.upper)),
-             h_at_min / spec.thickness.upper);
-      return out;
-    }
-  }
-  if (!(std::isfinite(h) && std::isfinite(b) && h > 0.0 && b > 0.0)) {
-    reject(out,
-           fmt::format("force: the section is not finite (h = {:g} m, b = {:g} m)", h, b),
-           std::nullopt);
-    return out;
-  }
-  out.l_tot = l;
-  out.stroke_percent = stroke_percent_for(spec.stroke, l, lambda);  // eq. 8.6
-  if (out.stroke_percent > m.stroke_percent * (1.0 + kSlack)) {
-    reject(out,
-           fmt::format("stroke: d = {:.4g} % of r_tot at l_tot = {} (eq. 8.6) exceeds the "
-                       "sub-class's design stroke {:.4g} %",
-                       out.stroke_percent,
-                       mm(l),
-                       m.stroke_percent),
-           out.stroke_percent / m.stroke_percent);
-    return out;
-  }
-  out.primary_stress = primary_stress(E, lambda, out.M, out.n, out.stroke_percent, h, l);
-
-  // The other flexures (eq. 8.7, I_i = D_equal_i I_p; eqs. 8.8-8.10).
-  const std::string flags = subclass_flags(row.name);
-  const bool in_plane =
-      spec.orientation == FlexureOrientation::kInPlane ||
-      (spec.orientation == FlexureOrientation::kAny && flags.find('I') != std::string::npos);
-  const bool out_of_plane = !in_plane && flags.find_first_of("Oo") != std::string::npos;
-  out.section_rule = one_flexure(cfg) ? "one flexure"
-                     : in_plane       ? "equal widths (in-plane)"
-                     : out_of_plane   ? "equal thicknesses (out-of-plane)"
-                                      : "h = C h_p, b = D_min b_p (eqs. 8.8, 8.9)";
-  for (int i = 1; i <= 3; ++i) {
-    if (cfg.pivots[i - 1] == mechanism::PivotType::kPin) continue;
-    double hi = h, bi = b;
-    if (i != p) {
-      const double D = second_moment_ratio(m, i);
-      if (in_plane) {
-        hi = h * std::cbrt(D);
-      } else if (out_of_plane) {
-        bi = b * D;
-      } else {
-        hi = h * m.C[i - 1].value_or(1.0);
-        bi = b * m.D_min[i - 1].value_or(D);
+  const std::vector<const cfm::CfmSubclass*>& rows() const { return rows_; }
+  bool selected(const cfm::CfmSubclass& row, double l_tot) const {
+    if (spec_.minimize != SizeObjective::kNone) return true;
+    const auto d_of = [&](const cfm::CfmSubclass& r) {
+      return stroke_percent_for(spec_.stroke, l_tot, r.lambda);
+    };
+    if (row.stroke_percent == 16.0) return d_of(row) <= 16.0;
+    if (d_of(row) > 16.0) return true;
+    for (const cfm::CfmSubclass* a : rows_) {
+      if (std::string_view(a->config) == row.config && a->stroke_percent == 16.0 &&
+          d_of(*a) <= 16.0) {
+        return false;
       }
     }
-    out.thickness[i - 1] = hi;
-    out.width[i - 1] = bi;
-    const auto outside = [&](double v, const LengthRange& r) {
-      return v < r.lower * (1.0 - kSlack) || v > r.upper * (1.0 + kSlack);
-    };
-    if (outside(hi, spec.thickness) || outside(bi, spec.width)) {
-      const bool thick = outside(hi, spec.thickness);
-      const double v = thick ? hi : bi;
-      const LengthRange& r = thick ? spec.thickness : spec.width;
-      reject(out,
-             fmt::format("{}: pivot {} needs {} = {} ({}), outside the range {}:{}",
-                         thick ? "thickness" : "width",
-                         i,
-                         thick ? "h" : "b",
-                         mm(v),
-                         out.section_rule,
-                         mm(r.lower),
-                         mm(r.upper)),
-             std::max(v / r.upper, r.lower / v));
-      return out;
-    }
+    return true;
   }
 
-  // The mechanism (Table 8.1 segment lengths by MechanismDesign::finalise, eqs. 8.11-8.14).
-  mechanism::MechanismDesign& d = out.design;
-  d.name = row.name;
-  d.config = row.config;
-  const double r_tot = l / lambda;
-  d.r2 = r_tot / (m.R + 1.0);
-  d.r3 = m.R * d.r2;
-  out.r2 = d.r2;
-  out.r3 = d.r3;
-  d.E = E;
-  d.yield_strength = spec.yield_strength.value_or(spec.safety_factor * out.primary_stress);
-  d.stroke = spec.stroke;
-  for (int i = 0; i < 3; ++i) {
-    d.joints[i].type = cfg.pivots[i];
-    d.joints[i].thickness = out.thickness[i];
-    d.joints[i].width = out.width[i];
-  }
-  d.note = fmt::format(
-      "flexure design mechanism: sub-class {} (R = {:.4f}, K1 = {:.4f}, K2 = {:.4f}) for "
-      "F = {:.6g} N over {:.6g} m, SF = {:g}",
-      row.name,
-      m.R,
-      m.K1,
-      m.K2,
-      F,
-      spec.stroke,
-      spec.safety_factor);
-  try {
-    d.finalise();
-  } catch (const InvalidInput& e) {
-    reject(out, fmt::format("geometry: {}", e.what()), std::nullopt);
-    return out;
-  }
-  for (int i = 0; i < 3; ++i) out.segment_length[i] = d.joints[i].length;
+ private:
+  const MechanismSpec& spec_;
+  std::vector<const cfm::CfmSubclass*> rows_;
+};
 
-  const mechanism::PrbmStrokeResult prbm = mechanism::prbm_stroke(d, spec.points);
-  out.required_yield_strength = spec.safety_factor * out.primary_stress;
-  out.required_yield_strength_prbm = spec.safety_factor * prbm.max_stress_all;
-  if (spec.yield_strength && out.required_yield_strength > *spec.yield_strength * (1.0 + kSlack)) {
-    reject(out,
-           fmt::format("stress: needs S_y >= {:.4g} MPa at SF {:g} (eq. 8.5), the material has "
-                       "{:.4g} MPa; the primary flexure would have to be h <= {} (has {})",
-                       out.required_yield_strength * 1e-6,
-                       spec.safety_factor,
-                       *spec.yield_strength * 1e-6,
-                       mm(max_primary_thickness(*spec.yield_strength / E,
-                                                spec.safety_factor,
-                                                lambda,
-                                                out.M,
-                                                out.n,
-                                                out.stroke_percent,
-                                                l)),
-                       mm(h)),
-           out.required_yield_strength / *spec.yield_strength);
-    return out;
-  }
-  if (!spec.yield_strength) {
-    d.yield_strength = out.required_yield_strength;
-    d.finalise();
-  }
-  out.force_prbm = prbm.mean_force;
-  out.percent_constant_force_prbm = prbm.percent_constant_force;
-  out.safety_factor_prbm = d.yield_strength / prbm.max_stress_all;
-  out.feasible = true;
-  return out;
+// The thesis's sizing (§8.4.2): the longest length, or, where the section is too thick there, the
+// longest length at which it fits.
+DimensionedDesign size_longest(const MechanismSpec& spec, const SubclassSizer& sizer) {
+  const SectionPolicy policy = section_policy(spec);
+  DimensionedDesign d = sizer.at(spec.length.upper, policy, SizingDepth::kFull);
+  if (d.feasible || d.cure != LengthCure::kShorter) return d;
+  const std::optional<double> l =
+      sizer.longest_fitting_length(spec.length.lower, spec.length.upper);
+  if (!l) return d;
+  return sizer.at(*l, policy, SizingDepth::kFull);
 }
 
-void evaluate_exact(DimensionedDesign& out, int points, double safety_factor) {
-  mechanism::AnalysisOptions o;
-  o.points = points;
-  try {
-    const mechanism::MechanismAnalysis a = mechanism::analyze_mechanism(out.design, o);
-    if (!a.has_exact || !a.exact.converged()) {
-      out.exact_note = a.has_exact ? a.exact.message : a.exact_note;
-      return;
-    }
-    out.force_exact = a.mean_force_exact;
-    out.percent_constant_force_exact = a.percent_constant_force_exact;
-    if (a.has_exact_stress) {
-      const double s = *std::max_element(a.max_stress_exact.begin(), a.max_stress_exact.end());
-      if (s > 0.0) {
-        out.safety_factor_exact = out.design.yield_strength / s;
-        out.required_yield_strength_exact = safety_factor * s;
-      }
-    }
-  } catch (const std::exception& e) {  // InvalidInput or NoConvergence of the exact model
-    out.exact_note = e.what();
+bool needs_full_search(const MechanismSpec& spec) {
+  // The full sizing differs from the PRBM-only one by the exact model alone (its force, and
+  // under the computed rule its stresses).
+  return spec.exact;
+}
+
+// The full condition at one length, with the stress ratio of the least stressed section where
+// the stress is what binds (length_search.h).
+LengthProbe probe(const MechanismSpec& spec, const DimensionedDesign& d) {
+  LengthProbe p;
+  p.feasible = d.feasible;
+  if (!spec.yield_strength || spec.stress_rule != StressRule::kComputed) return p;
+  if (d.feasible) {
+    const double sf = std::min(d.safety_factor_prbm, d.safety_factor_exact.value_or(1e300));
+    if (sf > 0.0) p.stress_ratio = spec.safety_factor / sf;
+  } else if (d.binding.rfind("stress", 0) == 0) {
+    p.stress_ratio = d.shortfall;
   }
+  return p;
+}
+
+// The first length in [lower, upper] at which `sizer` is feasible (and its row selected).
+std::optional<double> shortest_length(const MechanismSpec& spec,
+                                      const SubclassSizer& sizer,
+                                      const RowSelection& selection,
+                                      double lower,
+                                      double upper) {
+  const SectionPolicy policy = section_policy(spec);
+  const auto cheap = [&](double l) {
+    return selection.selected(sizer.row(), l) &&
+           sizer.at(l, policy, SizingDepth::kPrbm, SizingPurpose::kCheck).feasible;
+  };
+  const auto full = [&](double l) {
+    if (!selection.selected(sizer.row(), l)) return LengthProbe{};
+    if (!needs_full_search(spec)) return LengthProbe{cheap(l), std::nullopt};
+    return probe(spec, sizer.at(l, policy, SizingDepth::kFull, SizingPurpose::kCheck));
+  };
+  return first_feasible_length(cheap, full, lower, upper);
+}
+
+// --minimize: the smallest design of one row in the length range.
+DimensionedDesign size_smallest(const MechanismSpec& spec,
+                                const SubclassSizer& sizer,
+                                const RowSelection& selection) {
+  const SectionPolicy policy = section_policy(spec);
+  const std::optional<double> l0 =
+      shortest_length(spec, sizer, selection, spec.length.lower, spec.length.upper);
+  if (!l0) return size_longest(spec, sizer);  // the reason, at the longest length
+  DimensionedDesign best = sizer.at(*l0, policy, SizingDepth::kFull);
+  if (spec.minimize != SizeObjective::kMass || *l0 >= spec.length.upper) return best;
+  // Mass: the flexures' volume over the feasible lengths is not monotone (thickest section:
+  // V ~ l^(1 - 2n) by eqs. 8.2 and 8.5), so a grid of lengths refined by golden section, with
+  // the PRBM-only sizing; the exact model checks the answer (and the shortest design stays the
+  // answer where it is lighter or the exact check fails).
+  const auto volume = [&](double l) {
+    const DimensionedDesign d = sizer.at(l, policy, SizingDepth::kPrbm);
+    return d.feasible ? d.flexure_volume : std::numeric_limits<double>::infinity();
+  };
+  constexpr int kGrid = 9;
+  const double ratio = spec.length.upper / *l0;
+  std::vector<double> ls(kGrid), vs(kGrid);
+  int k_best = 0;
+  for (int k = 0; k < kGrid; ++k) {
+    ls[k] = *l0 * std::pow(ratio, static_cast<double>(k) / (kGrid - 1));
+    vs[k] = volume(ls[k]);
+    if (vs[k] < vs[k_best]) k_best = k;
+  }
+  double a = std::log(ls[std::max(0, k_best - 1)]),
+         b = std::log(ls[std::min(kGrid - 1, k_best + 1)]);
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  double x1 = b - g * (b - a), x2 = a + g * (b - a);
+  double f1 = volume(std::exp(x1)), f2 = volume(std::exp(x2));
+  for (int it = 0; it < 30 && b - a > 1e-6; ++it) {
+    if (f1 <= f2) {
+      b = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = b - g * (b - a);
+      f1 = volume(std::exp(x1));
+    } else {
+      a = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = a + g * (b - a);
+      f2 = volume(std::exp(x2));
+    }
+  }
+  double l_best = f1 <= f2 ? std::exp(x1) : std::exp(x2);
+  if (std::min(f1, f2) > vs[k_best]) l_best = ls[k_best];
+  // The exact stresses may bind where the PRBM's did not (and thin the section): the lightest of
+  // the full sizings at the PRBM's answer, its grid neighbours and the ends.
+  for (double l : {l_best,
+                   ls[std::max(0, k_best - 1)],
+                   ls[std::min(kGrid - 1, k_best + 1)],
+                   spec.length.upper}) {
+    DimensionedDesign light = sizer.at(l, policy, SizingDepth::kFull);
+    if (light.feasible && light.flexure_volume < best.flexure_volume) best = std::move(light);
+  }
+  return best;
+}
+
+double objective_value(const MechanismSpec& spec, const DimensionedDesign& d) {
+  switch (spec.minimize) {
+    case SizeObjective::kLength:
+      return d.l_tot;
+    case SizeObjective::kFootprint:
+      return d.footprint;
+    case SizeObjective::kMass:
+      return d.flexure_volume;
+    case SizeObjective::kNone:
+      break;
+  }
+  return 0.0;
+}
+
+// The strength a design needs by its stress rule (the ranking's tie-break).
+double rule_strength(const MechanismSpec& spec, const DimensionedDesign& d) {
+  if (spec.stress_rule == StressRule::kThesis) return d.required_yield_strength;
+  return std::max(d.required_yield_strength_prbm, d.required_yield_strength_exact.value_or(0.0));
+}
+
+// A length in mm rounded up to 4 significant digits: fed back, it is at least the length found.
+double round_up_4(double m) {
+  const double x = m * 1e3;
+  const double p = std::pow(10.0, std::floor(std::log10(x)) - 3.0);
+  return std::ceil(x / p - 1e-9) * p * 1e-3;
 }
 
 }  // namespace
@@ -402,6 +298,22 @@ void MechanismSpec::validate() const {
   for (const std::string& c : configs) cfm::find_cfm_configuration(c);  // throws, listing names
   if (points < 2 || points > 10000) {
     throw InvalidInput(fmt::format("points = {} must lie in [2, 10000]", points));
+  }
+  if (!(std::isfinite(bounds.max_width_to_thickness) && bounds.max_width_to_thickness >= 1.0 &&
+        bounds.max_width_to_thickness <= 1e6)) {
+    throw InvalidInput(fmt::format(
+        "max width/thickness = {} must lie in [1, 1e6] (a strip narrower than it is thick bends "
+        "out of the plane; docs/mechanisms.md \"Geometry limits\")",
+        bounds.max_width_to_thickness));
+  }
+  if (!(std::isfinite(force_tolerance) && force_tolerance > 0.0 && force_tolerance <= 1.0)) {
+    throw InvalidInput(
+        fmt::format("force tolerance = {} % must lie in (0, 100]", 100.0 * force_tolerance));
+  }
+  if (!(std::isfinite(bounds.max_width_to_length) && bounds.max_width_to_length > 0.0 &&
+        bounds.max_width_to_length <= 1e3)) {
+    throw InvalidInput(
+        fmt::format("max width/length = {} must lie in (0, 1e3]", bounds.max_width_to_length));
   }
 }
 
@@ -463,40 +375,60 @@ MechanismDesignReport design_mechanisms(const MechanismSpec& spec) {
   spec.validate();
   MechanismDesignReport report;
   report.screens = design_screens(spec);
-  // The sub-class of the design stroke (thesis §8.5): a (16 %) up to 16 %, b (40 %) beyond. Each
-  // row's d has its own lambda, so near 16 % a configuration's a rows may all land just above it
-  // while its b rows land just below: then the b rows serve.
-  const auto d_of = [&](const cfm::CfmSubclass& row) {
-    return stroke_percent_for(spec.stroke, spec.length.upper, row.lambda);
-  };
-  std::set<std::string> a_fits;
-  for (const cfm::CfmSubclass& row : cfm::thesis_subclasses()) {
-    if (admitted(spec, row) && row.stroke_percent == 16.0 && d_of(row) <= 16.0) {
-      a_fits.insert(row.config);
+  const RowSelection selection(spec);
+  for (const cfm::CfmSubclass* row : selection.rows()) {
+    if (!selection.selected(*row, spec.length.upper)) {
+      // --minimize takes every row; the thesis's choice by the longest length.
+      continue;
     }
-  }
-  for (const cfm::CfmSubclass& row : cfm::thesis_subclasses()) {
-    if (!admitted(spec, row)) continue;
-    const bool a_row = row.stroke_percent == 16.0;
-    if (a_row ? d_of(row) > 16.0 : (d_of(row) <= 16.0 && a_fits.count(row.config) > 0)) continue;
-    DimensionedDesign design = size_subclass(spec, row);
+    const SubclassSizer sizer(spec, *row);
+    DimensionedDesign design = spec.minimize == SizeObjective::kNone
+                                   ? size_longest(spec, sizer)
+                                   : size_smallest(spec, sizer, selection);
     (design.feasible ? report.designs : report.rejected).push_back(std::move(design));
   }
-  if (spec.exact) {
-    for (DimensionedDesign& d : report.designs) evaluate_exact(d, spec.points, spec.safety_factor);
-  }
-  // Without a given yield strength the design carries the strength it needs by every stress the
-  // models compute (eq. 8.5 leaves out axial and clamp stresses), so that its file analyses
-  // without yielding.
-  if (!spec.yield_strength) {
-    for (DimensionedDesign& d : report.designs) {
-      const double needed = std::max({d.required_yield_strength,
-                                      d.required_yield_strength_prbm,
-                                      d.required_yield_strength_exact.value_or(0.0)});
-      const double scale = needed / d.design.yield_strength;
-      d.design.yield_strength = needed;
-      d.safety_factor_prbm *= scale;
-      if (d.safety_factor_exact) *d.safety_factor_exact *= scale;
+  // Nothing feasible: the shortest length at which a sub-class is feasible by the full sizing
+  // (so the length hint, fed back, is feasible). A scan up from the longest length over every
+  // admitted row (rows the thesis's choice left out at l_max may serve a longer mechanism), each
+  // row that turns feasible searched down to its first feasible length.
+  if (report.designs.empty()) {
+    const double cap = std::min(1e3, 100.0 * spec.length.upper);
+    const SectionPolicy policy = section_policy(spec);
+    std::vector<std::pair<const cfm::CfmSubclass*, double>> found;
+    std::set<const cfm::CfmSubclass*> searched;
+    std::vector<std::unique_ptr<SubclassSizer>> sizers;
+    for (const cfm::CfmSubclass* row : selection.rows()) {
+      sizers.push_back(std::make_unique<SubclassSizer>(spec, *row));
+    }
+    double best = std::numeric_limits<double>::infinity();
+    for (double l = spec.length.upper; l < std::min(cap, best);) {
+      const double next = std::min({cap, l * 1.25, best});
+      for (const auto& sizer : sizers) {
+        const cfm::CfmSubclass* row = &sizer->row();
+        if (searched.count(row) > 0 || !selection.selected(*row, next) ||
+            !sizer->at(next, policy, SizingDepth::kPrbm, SizingPurpose::kCheck).feasible) {
+          continue;
+        }
+        searched.insert(row);
+        if (const std::optional<double> m =
+                shortest_length(spec, *sizer, selection, l * (1.0 + 1e-12), cap)) {
+          found.emplace_back(row, *m);
+          if (*m < best) {
+            best = *m;
+            report.length_needed = *m;
+            report.length_needed_subclass = row->name;
+          }
+        }
+      }
+      l = next;
+    }
+    for (DimensionedDesign& d : report.rejected) {
+      for (const auto& [row, m] : found) {
+        if (row->name != d.subclass) continue;
+        d.length_needed = m;
+        d.binding +=
+            fmt::format("; l_tot >= {} makes it feasible (full sizing)", mm(round_up_4(m)));
+      }
     }
   }
   const auto key = [&](const DimensionedDesign& d) {
@@ -504,8 +436,12 @@ MechanismDesignReport design_mechanisms(const MechanismSpec& spec) {
     return d.model.percent_constant_force;
   };
   std::stable_sort(report.designs.begin(), report.designs.end(), [&](const auto& a, const auto& b) {
+    if (spec.minimize != SizeObjective::kNone) {
+      const double x = objective_value(spec, a), y = objective_value(spec, b);
+      if (x != y) return x < y;
+    }
     if (key(a) != key(b)) return key(a) > key(b);
-    return a.required_yield_strength < b.required_yield_strength;
+    return rule_strength(spec, a) < rule_strength(spec, b);
   });
   std::stable_sort(
       report.rejected.begin(), report.rejected.end(), [](const auto& a, const auto& b) {
@@ -514,6 +450,18 @@ MechanismDesignReport design_mechanisms(const MechanismSpec& spec) {
         return x < y;
       });
   return report;
+}
+
+double length_hint(double l_tot) { return round_up_4(l_tot); }
+
+std::string specified_force_text(const MechanismSpec& spec) {
+  if (spec.force_of == mechanism::ForceOf::kOneHalf) {
+    return fmt::format("F = {:.6g} N (one half)", spec.force);
+  }
+  return fmt::format(
+      "F = {:.6g} N for the whole symmetric mechanism ({:.6g} N per half)",
+      spec.force * mechanism::force_of_factor(mechanism::ForceOf::kOneHalf, spec.force_of),
+      spec.force);
 }
 
 DimensionedDesign refine_design_exact(const MechanismSpec& spec,
@@ -557,14 +505,15 @@ DimensionedDesign refine_design_exact(const MechanismSpec& spec,
   out.r2 = d.r2;
   out.r3 = d.r3;
   out.stroke_percent = stroke_percent_for(spec.stroke, out.l_tot, m.lambda);
+  d.force_of = spec.force_of;
   d.note = fmt::format(
       "flexure design mechanism --model exact: sub-class {} refined against the exact model "
-      "(R = {:.4f}, K1 = {:.4f}, K2 = {:.4f}) for F = {:.6g} N over {:.6g} m, SF = {:g}",
+      "(R = {:.4f}, K1 = {:.4f}, K2 = {:.4f}) for {} over {:.6g} m, SF = {:g}",
       row.name,
       m.R,
       m.K1,
       m.K2,
-      spec.force,
+      specified_force_text(spec),
       spec.stroke,
       spec.safety_factor);
   // Thicknesses by eq. 8.7 from the primary one of the PRBM design (the primary pivot may move),
@@ -609,6 +558,35 @@ DimensionedDesign refine_design_exact(const MechanismSpec& spec,
     reject(out, fmt::format("exact model: {}", out.exact_note), std::nullopt);
     return out;
   }
+  // The sections that make this exact force (section_family.h: the elastica depends on E I
+  // alone), inside the ranges and SectionBounds.
+  const SectionFamily family = family_of(d, p);
+  const SectionInterval interval = section_interval(family, spec, out.l_tot);
+  const double t_now = d.joints[p - 1].thickness;
+  if (interval.lo > interval.hi * (1.0 + kSlack) ||
+      (spec.stress_rule == StressRule::kThesis &&
+       (t_now < interval.lo * (1.0 - kSlack) || t_now > interval.hi * (1.0 + kSlack)))) {
+    reject(out,
+           fmt::format("range: the refined design's section (h_p = {} for the exact force) does "
+                       "not fit: {} needs h_p >= {}, {} allows h_p <= {}",
+                       mm(t_now),
+                       interval.lo_reason,
+                       mm(interval.lo),
+                       interval.hi_reason,
+                       mm(interval.hi)),
+           interval.lo / interval.hi);
+    return out;
+  }
+  if (spec.stress_rule == StressRule::kComputed) {
+    // The thickness by the PRBM and exact stresses, as the PRBM design was sized.
+    StressedSection s =
+        choose_section(spec, d, family, interval, section_policy(spec), true, std::nullopt);
+    if (!s.feasible) {
+      reject(out, fmt::format("the refined design: {}", s.binding), s.shortfall);
+      return out;
+    }
+    a = std::move(s.analysis);
+  }
   for (int i = 0; i < 3; ++i) {
     out.thickness[i] = d.joints[i].thickness;
     out.width[i] = d.joints[i].width;
@@ -629,25 +607,21 @@ DimensionedDesign refine_design_exact(const MechanismSpec& spec,
                                       out.thickness[p - 1],
                                       out.l_tot);
   out.required_yield_strength = spec.safety_factor * out.primary_stress;
-  if (!spec.yield_strength) d.yield_strength = *out.required_yield_strength_exact;
+  if (!spec.yield_strength) {
+    d.yield_strength =
+        spec.stress_rule == StressRule::kThesis
+            ? *out.required_yield_strength_exact
+            : std::max(*out.required_yield_strength_exact, out.required_yield_strength_prbm);
+  }
   out.safety_factor_exact = d.yield_strength / s_exact;
   out.safety_factor_prbm = d.yield_strength / a->prbm.max_stress_all;
-  const auto outside = [](double v, const LengthRange& r) {
-    return v < r.lower * (1.0 - kSlack) || v > r.upper * (1.0 + kSlack);
-  };
-  for (int i = 0; i < 3; ++i) {
-    if (out.thickness[i] <= 0.0) continue;
-    if (outside(out.thickness[i], spec.thickness) || outside(out.width[i], spec.width)) {
-      reject(out,
-             fmt::format("range: pivot {} of the refined design needs h = {}, b = {}",
-                         i + 1,
-                         mm(out.thickness[i]),
-                         mm(out.width[i])),
-             std::nullopt);
-      return out;
-    }
-  }
-  if (spec.yield_strength && *out.required_yield_strength_exact > *spec.yield_strength) {
+  const double h_primary = out.thickness[p - 1];
+  out.footprint = mechanism_footprint(d, out.l_tot, spec.points);
+  out.flexure_volume = flexure_volume(d);
+  out.width_to_thickness = max_width_to_thickness(family, h_primary);
+  out.width_to_length = max_width(family, h_primary) / out.l_tot;
+  if (spec.stress_rule == StressRule::kThesis && spec.yield_strength &&
+      *out.required_yield_strength_exact > *spec.yield_strength) {
     reject(out,
            fmt::format("stress: the refined design needs S_y >= {:.4g} MPa by its exact "
                        "stresses at SF {:g}; the material has {:.4g} MPa",

@@ -2,16 +2,23 @@
 // Dimensional design of a constant-force slider mechanism from a specification (Weight 2001
 // ch. 8; docs/design.md "Dimensional design"): for every thesis sub-class (Tables 7.2-7.12) that
 // the specification admits, the total length, width and thickness of the primary flexure from
-// the displacement, stress and force design equations 8.5, 8.6 and 8.2, the other flexures by
-// eq. 8.7, the segments by Table 8.1 (MechanismDesign::finalise), and what the result does in
-// the PRBM and in the exact model. Feasible designs come back ranked, the others with the
-// constraint that binds and by how much.
+// the displacement and force design equations 8.6 and 8.2 and the stress rule, the other
+// flexures by eq. 8.7, the segments by Table 8.1 (MechanismDesign::finalise), and what the result
+// does in the PRBM and in the exact model (subclass_sizing.h). Feasible designs come back ranked,
+// the others with the constraint that binds and by how much; with nothing feasible, the shortest
+// length at which something is (length_search.h).
 //
 // Sizing rule (thesis §8.4.2 "maximise length", Fig. 8.6): the stress of the primary flexure
 // grows like h l^-(1+n) and the force like b h^3/l^2, so the design at the longest length and the
 // widest section is the least stressed one that makes the force: l_tot = l_max, b_p = b_max, h_p
 // from eq. 8.2; below h_min the width shrinks instead (h_p = h_min); above h_max the length does
-// (h_p = h_max).
+// (h_p = h_max). With the width free the thickest section the stress allows (and the narrowest
+// width that then makes the force). Every section stays within SectionBounds.
+//
+// Stress rule (docs/design.md "The stress rule"): by default the stresses the tool computes for
+// the dimensioned design -- the PRBM's and, with the exact model, the exact ones, axial stress and
+// an l segment's clamp moment included -- must both leave the safety factor; the thesis's eq. 8.5
+// (the primary flexure's spring rotation alone) on request, to reproduce ch. 8's examples.
 #include <array>
 #include <limits>
 #include <optional>
@@ -19,6 +26,7 @@
 #include <vector>
 
 #include "flexure/mechanisms/cfm/cfm_model.h"
+#include "flexure/mechanisms/force_of.h"
 #include "flexure/mechanisms/mechanism.h"
 
 namespace flexure::design {
@@ -39,8 +47,38 @@ enum class DesignRanking {
   kExact,  // the exact model's Xi' of the dimensioned design, then the least S_y
 };
 
+enum class StressRule {
+  kComputed,  // the PRBM and exact stresses of the design (axial and clamp stresses included)
+  kThesis,    // thesis eq. 8.5 alone (sizes and filters as ch. 8 does; reproduces its examples)
+};
+
+// What `design_mechanisms` minimises per sub-class and ranks by (kNone: the thesis's sizing at the
+// longest length, ranked by Xi').
+enum class SizeObjective {
+  kNone,
+  kLength,     // l_tot, the total link length of one half
+  kFootprint,  // the plan area the whole mechanism (both halves) sweeps over the stroke
+  kMass,       // the volume of the flexible segments of both halves (mass = density x volume)
+};
+
+// Bounds on every flexure's section beyond the specification's ranges (docs/design.md "Section
+// bounds"). Eq. 8.2 trades width for thickness freely (F ~ b h^3), so without them a thin strip
+// can be sized metres wide: b h^3 stays, b grows like h^-3.
+struct SectionBounds {
+  // b/h of every flexure. Thesis example 1's strip (5 in x 0.049 in) has b/h = 102; beyond a few
+  // hundred a strip is foil that the planar beam model (plane stress, one bending plane) and the
+  // clamps no longer describe: twice example 1.
+  double max_width_to_thickness = 200.0;
+  // b/l_tot of every flexure: no flexure wider than the half mechanism is long (thesis examples:
+  // 0.33 and 0.21).
+  double max_width_to_length = 1.0;
+};
+
 struct MechanismSpec {
-  double force = 0.0;                    // N, mean slider force of one half (eq. 8.2's F)
+  double force = 0.0;  // N, mean slider force of one half (eq. 8.2's F)
+  // What the user's force was the force of (force_of.h): labels the designs (their notes and the
+  // `force_of` their files carry); `force` above is one half's whatever it says.
+  mechanism::ForceOf force_of = mechanism::ForceOf::kOneHalf;
   double stroke = 0.0;                   // m, slider travel (eq. 8.6's disp)
   double E = 0.0;                        // Pa
   std::optional<double> yield_strength;  // Pa; without it the design reports what it needs
@@ -58,11 +96,21 @@ struct MechanismSpec {
   DesignRanking ranking = DesignRanking::kPrbm;
   bool exact = true;  // evaluate the feasible designs with the exact model
   int points = 50;    // stroke points of the PRBM and exact strokes
+  StressRule stress_rule = StressRule::kComputed;
+  // Largest |F_exact/F - 1| of a design's exact mean force against the specified force, with the
+  // exact model (docs/design.md "The force"): eq. 8.2 sizes by the PRBM, which is 2-8 % off the
+  // elastica for the thesis's sub-classes at their strokes but 40 % for some at short lengths.
+  double force_tolerance = 0.10;
+  SectionBounds bounds;
+  SizeObjective minimize = SizeObjective::kNone;
 
   // Throws InvalidInput naming the first field outside its range (non-finite, <= 0, a range with
   // lower > upper, an unknown configuration).
   void validate() const;
 };
+
+// Which way l_tot would have to move to cure an infeasible design (at the length tried).
+enum class LengthCure { kNone, kLonger, kShorter };
 
 struct DimensionedDesign {
   std::string subclass;  // "lpp-b"
@@ -72,6 +120,11 @@ struct DimensionedDesign {
   // the closest infeasible design has the smallest).
   std::string binding;
   std::optional<double> shortfall;  // empty where no ratio measures it (a geometry limit)
+  LengthCure cure = LengthCure::kNone;
+  // m: the shortest l_tot (above the range) at which the full sizing makes this sub-class
+  // feasible, when none is feasible in the range and a longer mechanism cures it (a bisection to
+  // 1e-4; this value itself was sized feasible). Empty where not searched or not found.
+  std::optional<double> length_needed;
 
   cfm::CfmResult model;     // the sub-class by the PRBM model (thesis sampling, its design stroke)
   double M = 0.0, n = 0.0;  // stress power law (printed Ch. 7 values; eq. 8.5)
@@ -96,7 +149,14 @@ struct DimensionedDesign {
   std::optional<double> force_exact;
   std::optional<double> percent_constant_force_exact;
   std::optional<double> safety_factor_exact;
-  std::string exact_note;             // why there is no exact value
+  std::string exact_note;  // why there is no exact value
+  // The size of the mechanism (docs/design.md "--minimize"): plan area swept by both halves over
+  // the stroke (l_tot by twice the highest PRBM pivot 2), m^2, and the volume of the flexible
+  // segments of both halves, m^3.
+  double footprint = 0.0;
+  double flexure_volume = 0.0;
+  double width_to_thickness = 0.0;    // largest b/h of any flexure
+  double width_to_length = 0.0;       // largest b/l_tot of any flexure
   int exact_evaluations = 0;          // refine_design_exact: exact strokes of the optimisation
   mechanism::MechanismDesign design;  // ready for analyze_mechanism (when feasible)
 };
@@ -118,6 +178,12 @@ struct MechanismDesignReport {
   std::vector<DimensionedDesign> designs;   // feasible, best first
   std::vector<DimensionedDesign> rejected;  // closest first
   DesignScreens screens;
+  // Nothing feasible in the length range: the shortest l_tot (up to 100 l_max) at which a
+  // sub-class is feasible by the full sizing, and which (it may be a row the thesis's choice of
+  // a or b rows left out at l_max). A bisection to 1e-4: this length was sized feasible, and
+  // 1e-4 less was not.
+  std::optional<double> length_needed;
+  std::string length_needed_subclass;
 };
 
 // Throws InvalidInput for an invalid specification.
@@ -129,12 +195,21 @@ MechanismDesignReport design_mechanisms(const MechanismSpec& spec);
 // Xi'_exact depends on them and d only), the links are re-derived at the same l_tot, and all
 // thicknesses are scaled together until the exact mean force is the specified one (the
 // elastica's force scales as h^3 at fixed geometry, its bending stress as h); the widths follow
-// the design's section rule. Returns the refined design with its exact values, or an infeasible
-// one naming the binding constraint (the exact stress over the yield strength, a range).
+// the design's section rule; then the section of that force (section_family.h) is chosen within
+// the ranges and SectionBounds by the stress rule (kComputed: the exact and PRBM stresses; kThesis:
+// the exact stress against the yield strength). Returns the refined design with its exact values,
+// or an infeasible one naming the binding constraint (an unmet Xi' floor, the stress, a range).
 DimensionedDesign refine_design_exact(const MechanismSpec& spec,
                                       const DimensionedDesign& prbm_design);
 
 // Table 8.2's screens on their own (DesignScreens), for the specification.
 DesignScreens design_screens(const MechanismSpec& spec);
+
+// "F = 10 N (one half)" or "F = 20 N for the whole symmetric mechanism (10 N per half)".
+std::string specified_force_text(const MechanismSpec& spec);
+
+// A length hint as printed: l_tot rounded up to 4 significant digits in mm (m), so that the
+// printed value, fed back, is no shorter than the feasible length found.
+double length_hint(double l_tot);
 
 }  // namespace flexure::design

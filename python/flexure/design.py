@@ -59,8 +59,11 @@ def _range(keyword, value):
 
 
 def mechanism(*, force, stroke, E, safety_factor, length_range, width_range=None,
-              thickness_range=None, yield_strength=None, in_plane=False, out_of_plane=False, pcf_min=None, config=None,
-              rank=None, force_of=None, exact=True, model=None, points=None, out=None):
+              thickness_range=None, yield_strength=None, in_plane=False, out_of_plane=False,
+              pcf_min=None, config=None, rank=None, force_of=None, exact=True, model=None,
+              points=None, out=None, stress_rule=None, minimize=None,
+              max_width_to_thickness=None, max_width_to_length=None, force_tolerance=None,
+              allow_infeasible=False):
     """Dimensional design from a specification (thesis ch. 8): `flexure design mechanism`.
 
     force, stroke, E, yield_strength   numbers in SI (N, m, Pa) or strings with units ('25lbf',
@@ -76,6 +79,17 @@ def mechanism(*, force, stroke, E, safety_factor, length_range, width_range=None
     model           'prbm' or 'exact': also refine the best design against the exact model
                     (key 'refined'; out then writes the refined design)
     out             a path: write the best design as TOML for flexure.mechanism.analyze
+                    (with its force_of)
+    stress_rule     'computed' (default: every design meets safety_factor by the PRBM and the
+                    exact stresses, axial stress and clamp moment included) or 'thesis' (eq. 8.5
+                    alone, to reproduce the thesis's examples)
+    minimize        'length', 'footprint' or 'mass': each sub-class at its smallest feasible
+                    design, ranked smallest first (keys footprint, flexure_volume)
+    max_width_to_thickness, max_width_to_length   section bounds (defaults 200 and 1: b/h of
+                    every flexure, and its width over l_tot)
+    force_tolerance largest difference of the exact mean force from force, in % (default 10)
+    allow_infeasible  with model='exact' and out: write the refined design even when it misses
+                    the specification (marked NOT FEASIBLE; NoConvergence is still raised)
     Returns the dict `flexure design mechanism --json` prints: designs (best first; each with
     subclass, r2, r3, segment_lengths, width, thicknesses, required_yield_strength, force_prbm,
     force_exact, percent_constant_force_prbm/_exact, safety_factor_prbm/_exact, ...), rejected
@@ -96,5 +110,9 @@ def mechanism(*, force, stroke, E, safety_factor, length_range, width_range=None
              width_range=_range("width_range", width_range),
              thickness_range=_range("thickness_range", thickness_range), in_plane=in_plane,
              out_of_plane=out_of_plane, pcf_min=pcf_min, config=config, rank=rank,
-             force_of=force_of, no_exact=not exact, model=model, points=points, out=out),
-        switches=("in_plane", "out_of_plane", "no_exact"))
+             force_of=force_of, no_exact=not exact, model=model, points=points, out=out,
+             stress_rule=stress_rule, minimize=minimize,
+             max_width_to_thickness=max_width_to_thickness,
+             max_width_to_length=max_width_to_length, force_tolerance=force_tolerance,
+             allow_infeasible=allow_infeasible),
+        switches=("in_plane", "out_of_plane", "no_exact", "allow_infeasible"))

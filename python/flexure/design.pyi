@@ -43,4 +43,10 @@ def mechanism(
     model: str | None = ...,
     points: int | None = ...,
     out: str | None = ...,
+    stress_rule: str | None = ...,
+    minimize: str | None = ...,
+    max_width_to_thickness: float | None = ...,
+    max_width_to_length: float | None = ...,
+    force_tolerance: float | None = ...,
+    allow_infeasible: bool = ...,
 ) -> dict[str, Any]: ...

@@ -56,7 +56,8 @@ TEST(PlotMechanism, LabelsEveryAxisWithUnitsAndDrawsExactStressesAndTheYieldLimi
   }
   EXPECT_NE(std::find(labels.begin(), labels.end(), "slider displacement Delta x (mm)"),
             labels.end());
-  EXPECT_NE(std::find(labels.begin(), labels.end(), "slider force F (N)"), labels.end());
+  // The force axis says what the force is the force of (analyze's default: one half).
+  EXPECT_NE(std::find(labels.begin(), labels.end(), "slider force F, one half (N)"), labels.end());
   EXPECT_NE(std::find(labels.begin(), labels.end(), "largest stress (MPa)"), labels.end());
 
   ASSERT_EQ(run_script("s.h5 --out s.svg", dir), 0) << read_text(dir / "err.txt");
@@ -64,6 +65,28 @@ TEST(PlotMechanism, LabelsEveryAxisWithUnitsAndDrawsExactStressesAndTheYieldLimi
   EXPECT_NE(svg.find("<!-- yield strength -->"), std::string::npos);
   EXPECT_NE(svg.find("<!-- pivot 1 exact -->"), std::string::npos);
   EXPECT_NE(svg.find("<!-- pivot 1 PRBM -->"), std::string::npos);
+}
+
+// A design written for the whole mechanism's force (`design mechanism --force-of whole`): its
+// file says force_of = "whole", analyze reports the whole mechanism's forces, and the plot's force
+// axis says so -- at twice the one-half forces of the same file analysed with --force-of half.
+TEST(PlotMechanism, ForceAxisNamesTheWholeMechanismOfADesignFile) {
+  if (!python_has_plot_modules()) GTEST_SKIP() << "/usr/bin/python3 lacks matplotlib or h5py";
+  ScratchDir dir;
+  ASSERT_EQ(run_flexure("design mechanism --force 20N --force-of whole --stroke 10mm --E 200GPa "
+                        "--yield-strength 1200MPa --safety-factor 1.5 --length-range 150mm "
+                        "--config lpp --no-exact --out w.toml",
+                        dir.path())
+                .exit_code,
+            0);
+  ASSERT_EQ(run_flexure("mechanism analyze w.toml --points 8 --method prbm --out w.h5", dir.path())
+                .exit_code,
+            0);
+  ASSERT_EQ(run_script("w.h5 --out w.png", dir, true), 0) << read_text(dir / "err.txt");
+  const std::vector<std::string> labels = axis_labels(read_text(dir / "out.txt"));
+  EXPECT_NE(
+      std::find(labels.begin(), labels.end(), "slider force F, whole symmetric mechanism (N)"),
+      labels.end());
 }
 
 TEST(PlotMechanism, RefusesAFileWithoutAStroke) {

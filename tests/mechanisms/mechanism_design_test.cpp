@@ -3,6 +3,10 @@
 // the design examples 1-3 of §8.5, with the errata of docs/errata.md (example 1's stroke is 4 in;
 // eq. 4.63's beta is 7.263; eq. 8.19's beta is sss-a95I's 330.679). Tolerances: the printed
 // rounding, or the stated difference of lambda where the thesis used another sub-class's value.
+// The examples size by the thesis's own stress rule, eq. 8.5 (StressRule::kThesis), with the
+// section bounds and the force tolerance opened far enough not to bind, as ch. 8 has none: they
+// reproduce the thesis. The tool's default (the PRBM and exact stresses, the bounds) is tested in
+// mechanism_design_rules_test.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -78,6 +82,14 @@ TEST(DesignFeasibility, ForceExampleOfSectionFourTwoFive) {
 // Example 1 (§8.5.1, Tables 8.3/8.4): 25 lbf over 4 in, E = 30 Msi, SF 1.2 -> lpp-b with
 // l_tot = 15 in, b = 5 in, h = 0.049 in, S_y = 167 ksi, Xi' = 97.6; the built-in 1A-lpp is that
 // design.
+// Thesis ch. 8 as printed: eq. 8.5's stress rule, no section bounds, no force check.
+void as_thesis(MechanismSpec& s) {
+  s.stress_rule = StressRule::kThesis;
+  s.bounds.max_width_to_thickness = 1e6;
+  s.bounds.max_width_to_length = 1e3;
+  s.force_tolerance = 1.0;
+}
+
 MechanismSpec example_1() {
   MechanismSpec s;
   s.force = 25.0 * kPoundForce;
@@ -88,6 +100,7 @@ MechanismSpec example_1() {
   s.width = {3.0 * kInch, 5.0 * kInch};
   s.thickness = {0.04 * kInch, 0.07 * kInch};
   s.configs = {"lpp"};
+  as_thesis(s);  // thesis eq. 8.5, to reproduce the example
   return s;
 }
 
@@ -194,6 +207,7 @@ TEST(MechanismSynthesis, ExampleTwoHasNoInPlaneSssDesign) {
   s.pcf_min = 90.0;
   s.orientation = FlexureOrientation::kInPlane;
   s.configs = {"sss"};
+  as_thesis(s);  // thesis eq. 8.5, to reproduce the example
   const MechanismDesignReport r = design_mechanisms(s);
   EXPECT_TRUE(r.designs.empty());
   ASSERT_FALSE(r.rejected.empty());
@@ -219,6 +233,7 @@ MechanismSpec example_3(double h_max_inch) {
   s.length = {24.0 * kInch, 24.0 * kInch};
   s.width = {5.0 * kInch, 5.0 * kInch};
   s.thickness = {0.01 * kInch, h_max_inch * kInch};
+  as_thesis(s);  // thesis eq. 8.5, to reproduce the example
   return s;
 }
 

@@ -175,6 +175,34 @@ def test_design_mechanism(cli):
     assert si["designs"][0]["force_exact"] is None
 
 
+def test_design_mechanism_rules(cli, tmp_path):
+    """The keywords of issue 27's flags give the tool's JSON for the same flags."""
+    args = ["--force", "20N", "--stroke", "10mm", "--E", "200GPa", "--yield-strength", "1200MPa",
+            "--safety-factor", "1.5", "--length-range", "60mm:150mm", "--config", "lpp",
+            "--stress-rule", "computed", "--minimize", "length", "--max-width-to-thickness", "150",
+            "--max-width-to-length", "0.8", "--force-tolerance", "8", "--force-of", "whole"]
+    got = flexure.design.mechanism(force="20N", stroke="10mm", E="200GPa",
+                                   yield_strength="1200MPa", safety_factor=1.5,
+                                   length_range=("60mm", "150mm"), config="lpp",
+                                   stress_rule="computed", minimize="length",
+                                   max_width_to_thickness=150, max_width_to_length=0.8,
+                                   force_tolerance=8, force_of="whole")
+    assert got["minimize"] == "length" and got["stress_rule"] == "computed"
+    assert got["section_bounds"] == {"max_width_to_thickness": 150.0, "max_width_to_length": 0.8}
+    for d in got["designs"]:
+        assert min(d["safety_factor_prbm"], d["safety_factor_exact"]) >= 1.5
+    assert_same(got, cli.json("design", "mechanism", *args))
+    # A refinement that misses the specification raises, and with allow_infeasible writes it.
+    out = tmp_path / "x.toml"
+    with pytest.raises(flexure.NoConvergence) as e:
+        flexure.design.mechanism(force="25lbf", stroke="4in", E="30Msi", yield_strength="167ksi",
+                                 safety_factor=1.5, length_range=("10in", "20in"), config="lpp",
+                                 stress_rule="thesis", model="exact", allow_infeasible=True,
+                                 out=out)
+    assert "not feasible" in str(e.value)
+    assert out.read_text().startswith("# NOT FEASIBLE")
+
+
 def test_design_cfm_exact(cli):
     got = flexure.design.cfm(subclass="lpp-b", model="exact")
     assert got["percent_constant_force_exact"] > 96.0
