@@ -42,9 +42,11 @@ const std::vector<CommandExamples>& command_examples() {
        {"flexure design mechanism --force 25lbf --stroke 4in --E 30Msi --safety-factor 1.2 "
         "--length-range 12in:15in --width-range 3in:5in --thickness-range 0.04in:0.07in --config "
         "lpp --out design.toml",
+        "flexure design mechanism --force 20N --stroke 10mm --E 200GPa --yield-strength 1200MPa "
+        "--safety-factor 1.5 --length-range 30mm:150mm --minimize length",
         "flexure design mechanism --force 100lbf --stroke 6in --E 30Msi --yield-strength 200ksi "
         "--safety-factor 1 --length-range 24in --width-range 5in --thickness-range 0.01in:0.12in "
-        "--json"}},
+        "--stress-rule thesis --max-width-to-thickness 1e6 --json"}},
       {{"map", "cfm"},
        {"flexure map cfm --config lpp --R 0.5:1.5:11 --d 16:40:4 --out map.h5",
         "flexure map cfm --config lps --R 0.5:2:16 --d 40 --K2 0.5:5:10 --model exact --out "

@@ -240,15 +240,15 @@ std::string toml_comment(const design::DimensionedDesign& d,
   }
   text += fmt::format(
       "Written by flexure design mechanism: {} of {} feasible designs, sub-class {}{}.\n"
-      "Specified {} (force_of below), stress rule {} (safety factor {:g}).\n"
+      "Specified: {}, safety factor {:g} by the {} stress rule; force_of below.\n"
       "SI units. Analyse with: flexure mechanism analyze {}",
       d.feasible ? "the best" : "refined from the best",
       feasible,
       d.subclass,
       refined ? ", refined against the exact model" : "",
       design::specified_force_text(spec),
-      stress_rule_name(spec.stress_rule),
       spec.safety_factor,
+      stress_rule_name(spec.stress_rule),
       path);
   return text;
 }

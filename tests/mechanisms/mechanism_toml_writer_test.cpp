@@ -13,6 +13,7 @@
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/mechanisms/modified_designs.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {
 namespace {
@@ -67,6 +68,30 @@ TEST(MechanismTomlWriter, EscapesQuotesAndBackslashesInTexts) {
   const MechanismDesign back = parse_mechanism_toml(mechanism_toml(d), "test");
   EXPECT_EQ(back.name, d.name);
   EXPECT_EQ(back.note, d.note);
+}
+
+// force_of (what `mechanism analyze` reports for the file) is written only when set and reads
+// back; an unknown value is refused naming the key and the line.
+TEST(MechanismTomlWriter, ForceOfReadsBackAndAnUnknownValueIsRefused) {
+  MechanismDesign d = builtin_mechanisms().front();
+  EXPECT_EQ(mechanism_toml(d).find("force_of"), std::string::npos);
+  EXPECT_FALSE(parse_mechanism_toml(mechanism_toml(d), "test").force_of.has_value());
+  for (ForceOf of : {ForceOf::kWholeMechanism, ForceOf::kOneHalf}) {
+    d.force_of = of;
+    const MechanismDesign back = parse_mechanism_toml(mechanism_toml(d), "test");
+    ASSERT_TRUE(back.force_of.has_value());
+    EXPECT_EQ(*back.force_of, of);
+  }
+  std::string text = mechanism_toml(d);
+  text.replace(text.find("force_of = 'half'"), 17, "force_of = 'both'");
+  try {
+    parse_mechanism_toml(text, "bad.toml");
+    ADD_FAILURE() << "force_of = 'both' was accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.toml:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("force_of = 'both' is unknown"), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
