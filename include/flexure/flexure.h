@@ -11,12 +11,14 @@
 // Core: end loads and tip poses, errors.
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/version.h"
 
 // Beam solvers.
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/chain_model/equilibrium_stability.h"
+#include "flexure/solver/chain_model/jacobi_stability.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/inverse/tip_target.h"

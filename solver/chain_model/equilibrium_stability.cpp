@@ -429,7 +429,7 @@ namespace {
 // eigenvalues.
 struct Grids {
   std::vector<Grid> levels;
-  double tolerance = 1e-13;
+  double tolerance = 1e-12;
 
   // The k-th eigenvalue, extrapolated over the grids (Romberg): the discrete eigenvalues are
   // lambda + c1 h^2 + c2 h^4 + O(h^6) (uniform elements, symmetric quadrature), so

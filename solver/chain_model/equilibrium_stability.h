@@ -54,7 +54,7 @@ struct StabilityOptions {
   // |margin| <= this is critical (stability.h says why 1e-6).
   double critical_tolerance = kCriticalMarginTolerance;
   // Each discrete eigenvalue is found to this times max(1, |lambda|).
-  double eigenvalue_tolerance = 1e-13;
+  double eigenvalue_tolerance = 1e-12;
   // Stations: each flexible segment gets n equal elements, n = length * q / element_resolution
   // within [min_elements, max_elements], rounded up to a multiple of 4 (the extrapolation uses the
   // grids of every 2nd and 4th sample too) and of the EI profile's intervals (its kinks fall on

@@ -54,8 +54,8 @@ struct PencilInertia {
   // d/dsigma log |det [A C^T; C 0]| (Newton's step is -1 / this, in sigma).
   double log_det_slope = 0.0;
 };
-// A(sigma) is never exactly singular here: where a pivot vanishes to rounding, sigma is moved by a
-// relative 1e-12 (an eigenvalue that close to lambda is within the eigenvalue tolerance anyway).
+// Where A(sigma) is singular to rounding S is large but its sign, and the count, stay right (the
+// dense projection in tests/solver/stability_discretisation_test.cpp checks it there).
 PencilInertia constrained_inertia(const DiscreteSecondVariation& q, double lambda);
 inline int constrained_count(const DiscreteSecondVariation& q, double lambda) {
   return constrained_inertia(q, lambda).count;
@@ -66,7 +66,8 @@ struct PencilEigenvalue {
   double value = 1.0;
   int evaluations = 0;  // inertia evaluations spent
 };
-// The k-th (k >= 1) constrained eigenvalue below 1, to `tolerance` times max(1, |lambda|); `guess`
+// The k-th (k >= 1) constrained eigenvalue below 1, to `tolerance` times max(1, |lambda|) or the
+// rounding noise of the inertia there, 1e-17 n^2 (1 - lambda), whichever is larger; `guess`
 // (optional, < 1) is where to start looking (e.g. the same eigenvalue on a coarser grid) and
 // `guess_radius` (> 0) how far off it may be (default 1e-3 max(1, |guess|)); a wrong guess costs
 // evaluations, never the answer.

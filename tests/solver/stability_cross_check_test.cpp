@@ -42,7 +42,7 @@ constexpr double kPi = std::numbers::pi;
 // form, which refines its stations until its margin's error estimate is below 1e-9) is accurate to
 // about 1e-10 (against closed forms in stability_closed_form_test.cpp), method 2 to about 1e-10
 // (bisection to 1e-11 at rtol 1e-12) where its growth exponent is moderate (kTrustedGrowth). The
-// largest differences measured are printed by each test (at most 2e-10 when written).
+// largest differences measured are printed by each test (at most 1e-10 when written).
 constexpr double kMarginAgreement = 2e-9;
 
 std::string describe(const EndLoad& load) {
