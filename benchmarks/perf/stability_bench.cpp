@@ -16,6 +16,7 @@
 #include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/jacobi_stability.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
+#include "flexure/solver/shooting/shooting_shape.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {
@@ -39,21 +40,6 @@ Case cantilever(const EndLoad& load) {
   return c;
 }
 
-std::vector<ShapePoint> shooting_shape(const SegmentChain& chain,
-                                       const ShootingResult& r,
-                                       const std::vector<double>& s) {
-  const ShootingSolver::Options o;
-  const ShootingProblem problem(chain, o.multiple_shooting);
-  ElasticaIntegrator integrator(o.integrator_options());
-  const Eigen::VectorXd z = Eigen::Map<const Eigen::VectorXd>(
-      r.unknowns.data(), static_cast<Eigen::Index>(r.unknowns.size()));
-  TipState tip;
-  std::string error;
-  std::vector<ShapePoint> shape;
-  problem.integrate_solution(z, 1.0, integrator, tip, error, &s, &shape);
-  return shape;
-}
-
 Case clamped_clamped(double tip_angle) {
   Case c;
   c.chain = uniform_cantilever(EndLoad{});
@@ -63,7 +49,7 @@ Case clamped_clamped(double tip_angle) {
   c.support = tip_support_reaction(c.chain, r.tip_load);
   c.root = r.reaction;
   c.stations = stability_stations(c.chain, c.support);
-  c.shape = shooting_shape(c.chain, r, c.stations);
+  c.shape = shooting_shape_at(c.chain, r, c.stations);
   return c;
 }
 
@@ -119,7 +105,7 @@ void BM_ShapeShooting(benchmark::State& state) {
   chain.prescribed = TipPrescription{0.9, 0.001, 0.01};
   const ShootingResult r = ShootingSolver().solve(chain);
   const std::vector<double> s = stability_stations(chain, tip_support_reaction(chain, r.tip_load));
-  for (auto _ : state) benchmark::DoNotOptimize(shooting_shape(chain, r, s).size());
+  for (auto _ : state) benchmark::DoNotOptimize(shooting_shape_at(chain, r, s).size());
   state.counters["points"] = static_cast<double>(s.size());
 }
 BENCHMARK(BM_ShapeShooting)->Unit(benchmark::kMicrosecond);

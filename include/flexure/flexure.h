@@ -23,6 +23,7 @@
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/inverse/tip_target.h"
 #include "flexure/solver/ode/ode_integrator.h"
+#include "flexure/solver/shooting/shooting_shape.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 // Pseudo-rigid-body model elements and their derivation.

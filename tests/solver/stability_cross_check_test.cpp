@@ -32,6 +32,7 @@
 #include "flexure/solver/common/scalar_root.h"
 #include "flexure/solver/elliptic/elastica_closed_form.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
+#include "flexure/solver/shooting/shooting_shape.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {
@@ -62,32 +63,11 @@ std::string describe(const SegmentChain& chain) {
   return out.str();
 }
 
-// The equilibrium of a shooting result at arc lengths s: the root unknowns completed by one
-// integration from the clamp (the solver's own integrator), then integrated to the tip.
-std::vector<ShapePoint> shooting_shape(const SegmentChain& chain,
-                                       const ShootingResult& r,
-                                       const std::vector<double>& s) {
-  const ShootingSolver::Options o;
-  const ShootingProblem problem(chain, o.multiple_shooting);
-  ElasticaIntegrator integrator(o.integrator_options());
-  Eigen::VectorXd root(problem.root_unknown_count());
-  for (int i = 0; i < root.size(); ++i) root[i] = r.unknowns[static_cast<std::size_t>(i)];
-  Eigen::VectorXd z;
-  std::string error;
-  EXPECT_TRUE(problem.complete_guess(root, 1.0, integrator, z, error)) << error;
-  TipState tip;
-  std::vector<ShapePoint> shape;
-  EXPECT_TRUE(problem.integrate_solution(z, 1.0, integrator, tip, error, &s, &shape)) << error;
-  EXPECT_NEAR(tip.x, r.tip.x, 1e-8);
-  EXPECT_NEAR(tip.y, r.tip.y, 1e-8);
-  return shape;
-}
-
 // Method 1 on a shooting result: the support's reaction from the total tip load.
 Stability discrete_of(const SegmentChain& chain, const ShootingResult& r) {
   const Reaction support = tip_support_reaction(chain, r.tip_load);
   return equilibrium_stability(
-      chain, support, [&](const std::vector<double>& s) { return shooting_shape(chain, r, s); });
+      chain, support, [&](const std::vector<double>& s) { return shooting_shape_at(chain, r, s); });
 }
 
 // Method 2's constraint correction loses about e^G digits, G its growth exponent
@@ -178,6 +158,32 @@ TEST(StabilityReproducer, StraightCantileverBeyondEulerLoad) {
   }
 }
 
+TEST(ShootingShape, ReproducesTheSolutionAtAnyStations) {
+  // The two-stage solve of a straight clamped-clamped beam, a guided beam and a cantilever: the
+  // shape at the stations ends at the result's tip, and is refused for an unconverged result.
+  for (const SegmentChain& chain : {clamped_clamped(0.0),
+                                    [] {
+                                      SegmentChain c = uniform_cantilever(EndLoad{0.0, 8.0, 0.0});
+                                      c.end = EndCondition::kGuided;
+                                      return c;
+                                    }(),
+                                    uniform_cantilever(EndLoad::howell(1.0, 5.0, 1.0))}) {
+    const ShootingResult r = ShootingSolver().solve(chain);
+    ASSERT_TRUE(r.converged()) << r.message;
+    const std::vector<double> s =
+        stability_stations(chain, tip_support_reaction(chain, r.tip_load));
+    const std::vector<ShapePoint> shape = shooting_shape_at(chain, r, s);
+    ASSERT_EQ(shape.size(), s.size());
+    EXPECT_NEAR(shape.back().x, r.tip.x, 1e-10);
+    EXPECT_NEAR(shape.back().y, r.tip.y, 1e-10);
+    EXPECT_NEAR(shape.back().theta, r.tip.theta, 1e-10);
+    ShootingResult unconverged = r;
+    unconverged.set_converged(false);
+    EXPECT_THROW(shooting_shape_at(chain, unconverged, s), InvalidInput);
+    EXPECT_THROW(shooting_shape_at(chain, r, {0.0, 2.0}), InvalidInput);
+  }
+}
+
 // ---- seeded random cross-check -----------------------------------------------------------------
 
 // The closed-form tangent angle of an elliptic result at s (mirrored like
@@ -262,15 +268,19 @@ TEST(StabilityCrossCheck, CantileverPathsThroughLimitPoints) {
 }
 
 TEST(StabilityCrossCheck, EveryExactEquilibriumOfALoad) {
-  // All equilibria of a few cantilever loads (the sign changes of the elliptic tip-angle residual
-  // over three turns): stable ones and unstable ones of index 1 to 3.
+  // All equilibria of five cantilever loads (the sign changes of the elliptic tip-angle residual
+  // over three turns), one with an end moment past 2 pi: stable ones and unstable ones of index 1
+  // and more.
   std::mt19937_64 rng(27002u);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   Agreement agreement;
   int highest_index = 0;
-  for (int i = 0; i < 4; ++i) {
-    const EndLoad load = EndLoad::howell(
-        -2.0 + 12.0 * unit(rng), 2.0 + 10.0 * unit(rng), (2.0 * unit(rng) - 1.0) * 2.0 * kPi);
+  for (int i = 0; i < 5; ++i) {
+    // The fifth: an end moment past 2 pi (the beam wound more than once).
+    const EndLoad load =
+        EndLoad::howell(-2.0 + 12.0 * unit(rng),
+                        2.0 + 10.0 * unit(rng),
+                        i < 4 ? (2.0 * unit(rng) - 1.0) * 2.0 * kPi : 2.0 * kPi + 1.5 * unit(rng));
     const double F = std::hypot(load.Fx, load.Fy), psi = std::atan2(load.Fy, load.Fx);
     const elliptic::PendulumProblem p = elliptic::make_pendulum_problem(F, psi, load.mu);
     auto g = [&](double t) { return elliptic::tip_angle_residual(p, t); };
