@@ -369,6 +369,17 @@ Reaction tip_support_reaction(const SegmentChain& chain, const Reaction& total_t
                   mask.theta ? total_tip_load.M : 0.0};
 }
 
+Reaction tip_support_reaction_from_root(const SegmentChain& chain, const Reaction& root_reaction) {
+  // N(0) = -R_clamp; across node k the internal force drops by the node's load.
+  double Nx = -root_reaction.Fx, Ny = -root_reaction.Fy;
+  for (const NodeLoad& load : chain.node_loads) {
+    Nx -= load.Fx;
+    Ny -= load.Fy;
+  }
+  const PrescribedMask mask = prescribed_mask(chain.end);
+  return Reaction{mask.x ? Nx : 0.0, mask.y ? Ny : 0.0, 0.0};
+}
+
 std::vector<double> stability_stations(const SegmentChain& chain,
                                        const Reaction& support_reaction,
                                        const StabilityOptions& options) {

@@ -78,6 +78,11 @@ struct StabilityOptions {
 // the given load plus the reaction) conjugate to the coordinates the chain's end condition
 // prescribes; the others zero.
 Reaction tip_support_reaction(const SegmentChain& chain, const Reaction& total_tip_load);
+// The same from the clamp's reaction (ShootingResult::reaction, PathPoint::reaction; the chain at
+// the point's load, e.g. chain.at_load_factor(lambda)): the force at the tip is N(L) = -R_clamp -
+// the node loads, of which the prescribed components are the support's. Its moment is left 0
+// (the verdict does not use it; it needs the shape).
+Reaction tip_support_reaction_from_root(const SegmentChain& chain, const Reaction& root_reaction);
 
 // The arc lengths (root to tip, increasing, every node between segments included once, rigid
 // segments only at their ends) at which equilibrium_stability wants the shape: each flexible

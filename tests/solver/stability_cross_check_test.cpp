@@ -177,6 +177,11 @@ TEST(ShootingShape, ReproducesTheSolutionAtAnyStations) {
     EXPECT_NEAR(shape.back().x, r.tip.x, 1e-10);
     EXPECT_NEAR(shape.back().y, r.tip.y, 1e-10);
     EXPECT_NEAR(shape.back().theta, r.tip.theta, 1e-10);
+    // The support's force from the clamp's reaction equals that of the total tip load.
+    const Reaction from_tip = tip_support_reaction(chain, r.tip_load);
+    const Reaction from_root = tip_support_reaction_from_root(chain, r.reaction);
+    EXPECT_NEAR(from_root.Fx, from_tip.Fx, 1e-9);
+    EXPECT_NEAR(from_root.Fy, from_tip.Fy, 1e-9);
     ShootingResult unconverged = r;
     unconverged.set_converged(false);
     EXPECT_THROW(shooting_shape_at(chain, unconverged, s), InvalidInput);
@@ -425,6 +430,10 @@ TEST(StabilityCrossCheck, TaperedCurvedChainWithRigidLink) {
     }
     for (const ShootingResult& r : equilibria) {
       if (!r.converged()) continue;
+      // The support's force from the clamp's reaction, through the node load.
+      const Reaction from_root = tip_support_reaction_from_root(chain, r.reaction);
+      EXPECT_NEAR(from_root.Fx, tip_support_reaction(chain, r.tip_load).Fx, 1e-9);
+      EXPECT_NEAR(from_root.Fy, tip_support_reaction(chain, r.tip_load).Fy, 1e-9);
       agreement.check(
           discrete_of(chain, r), JacobiSecondVariation(chain, r.reaction), describe(chain));
     }
