@@ -41,6 +41,8 @@ REFERENCES = {
     # The corrected chain at its default (one increment to start, coarse-chain path), N = 100.
     "chain_bench": "BM_ChainCorrected/N:100/inc:1/coarse:1",
     "mechanism_bench": "BM_ExactStroke50/1A-lpp",
+    # One elliptic forward solve of the same cantilever load: what a verdict adds to a solve.
+    "stability_bench": "BM_EllipticSolve",
 }
 
 

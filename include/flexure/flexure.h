@@ -11,16 +11,19 @@
 // Core: end loads and tip poses, errors.
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/version.h"
 
 // Beam solvers.
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/chain_model/equilibrium_stability.h"
+#include "flexure/solver/chain_model/jacobi_stability.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/inverse/tip_target.h"
 #include "flexure/solver/ode/ode_integrator.h"
+#include "flexure/solver/shooting/shooting_shape.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 // Pseudo-rigid-body model elements and their derivation.

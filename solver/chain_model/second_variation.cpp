@@ -1,0 +1,248 @@
+#include "flexure/solver/chain_model/second_variation.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+#include "flexure/solver/common/errors.h"
+
+namespace flexure {
+namespace {
+
+// Inertia of the constrained pencil with reusable work arrays (the eigenvalue search evaluates it
+// a few dozen times on the same pencil).
+class InertiaEvaluator {
+ public:
+  explicit InertiaEvaluator(const DiscreteSecondVariation& q) : q_(q) {
+    const std::size_t n = q.bending_diag.size();
+    if (q.bending_off.size() + 1 != std::max<std::size_t>(n, 1) || q.axial.size() != n ||
+        q.constraints.size() > 2 ||
+        std::any_of(q.constraints.begin(), q.constraints.end(), [n](const auto& row) {
+          return row.size() != n;
+        })) {
+      throw InvalidInput(fmt::format(
+          "inconsistent discrete second variation: {} diagonal, {} off-diagonal, {} axial "
+          "entries, {} constraint rows (at most 2, each of the size of the diagonal)",
+          n,
+          q.bending_off.size(),
+          q.axial.size(),
+          q.constraints.size()));
+    }
+    inv_d_.resize(n);
+    l_.resize(n);
+    x0_.resize(n);
+    x1_.resize(n);
+  }
+
+  PencilInertia operator()(double lambda) {
+    PencilInertia out;
+    const std::size_t n = q_.bending_diag.size();
+    if (n == 0) return out;
+    const double* B = q_.bending_diag.data();
+    const double* b = q_.bending_off.data();
+    const double* W = q_.axial.data();
+    const double sigma = 1.0 / (1.0 - lambda);
+    // L D L^T of A(sigma) = B + sigma W, with the pivots' sigma-derivatives: d_i = a_i -
+    // b_{i-1}^2 / d_{i-1}, so d_i' = W_ii + (b_{i-1} / d_{i-1})^2 d_{i-1}' (B, b constant). A
+    // tridiagonal L D L^T counts the negative eigenvalues of a matrix within rounding of A
+    // (Kahan 1966), so no pivoting; a pivot that is exactly zero is replaced by the smallest
+    // negative number (an eigenvalue at sigma is counted as below it).
+    int negative = 0;
+    double slope = 0.0;
+    double inv = 0.0, dd = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      double a = B[i] + sigma * W[i];
+      double da = W[i];
+      if (i > 0) {
+        const double l = b[i - 1] * inv;
+        l_[i - 1] = l;
+        a -= l * b[i - 1];
+        da += l * l * dd;
+      }
+      if (a == 0.0) a = -std::numeric_limits<double>::min();
+      inv = 1.0 / a;
+      dd = da;
+      inv_d_[i] = inv;
+      negative += a < 0.0 ? 1 : 0;
+      slope += da * inv;
+    }
+    out.negative_A = negative;
+    out.log_det_slope = slope;
+    const std::size_t m = q_.constraints.size();
+    if (m == 0) {
+      out.count = out.negative_A;
+      return out;
+    }
+    // X = A^{-1} C^T (both rows in one sweep), S = C X, dS/dsigma = -X^T W X.
+    const double* c0 = q_.constraints[0].data();
+    const double* c1 = m > 1 ? q_.constraints[1].data() : c0;
+    double* x0 = x0_.data();
+    double* x1 = x1_.data();
+    x0[0] = c0[0];
+    x1[0] = c1[0];
+    for (std::size_t i = 1; i < n; ++i) {
+      x0[i] = c0[i] - l_[i - 1] * x0[i - 1];
+      x1[i] = c1[i] - l_[i - 1] * x1[i - 1];
+    }
+    x0[n - 1] *= inv_d_[n - 1];
+    x1[n - 1] *= inv_d_[n - 1];
+    for (std::size_t i = n - 1; i-- > 0;) {
+      x0[i] = x0[i] * inv_d_[i] - l_[i] * x0[i + 1];
+      x1[i] = x1[i] * inv_d_[i] - l_[i] * x1[i + 1];
+    }
+    double s00 = 0.0, s01 = 0.0, s11 = 0.0, d00 = 0.0, d01 = 0.0, d11 = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      s00 += c0[i] * x0[i];
+      s01 += c0[i] * x1[i];
+      s11 += c1[i] * x1[i];
+      d00 -= W[i] * x0[i] * x0[i];
+      d01 -= W[i] * x0[i] * x1[i];
+      d11 -= W[i] * x1[i] * x1[i];
+    }
+    if (m == 1) {
+      out.negative_S = s00 < 0.0 ? 1 : 0;
+      out.zero_S = s00 == 0.0 ? 1 : 0;
+      out.log_det_slope += d00 / s00;
+    } else {
+      const double det = s00 * s11 - s01 * s01;
+      const double trace = s00 + s11;
+      if (det < 0.0) {
+        out.negative_S = 1;
+      } else if (det > 0.0) {
+        out.negative_S = trace < 0.0 ? 2 : 0;
+      } else {
+        out.zero_S = 1;
+        out.negative_S = trace < 0.0 ? 1 : 0;
+      }
+      out.log_det_slope += (s11 * d00 - 2.0 * s01 * d01 + s00 * d11) / det;
+    }
+    out.count = out.negative_A - out.negative_S - out.zero_S;
+    return out;
+  }
+
+ private:
+  const DiscreteSecondVariation& q_;
+  std::vector<double> inv_d_, l_, x0_, x1_;
+};
+
+}  // namespace
+
+PencilInertia constrained_inertia(const DiscreteSecondVariation& q, double lambda) {
+  InertiaEvaluator evaluate(q);
+  return evaluate(lambda);
+}
+
+PencilEigenvalue constrained_eigenvalue(const DiscreteSecondVariation& q,
+                                        int k,
+                                        double tolerance,
+                                        const double* guess,
+                                        double guess_radius) {
+  PencilEigenvalue result;
+  if (q.size() == 0 || !(q.compression_bound > 0.0) || k < 1) return result;
+  InertiaEvaluator evaluate(q);
+  const double gamma = q.compression_bound;
+  // Below 1 - Gamma no eigenvalue (second_variation.h); a little lower for rounding.
+  double lo = 1.0 - gamma * (1.0 + 1e-9) - 1e-12;
+  int count_lo = 0;
+  double hi = 1.0;
+  int count_hi = -1;  // not yet known
+  auto record = [&](double x, const PencilInertia& at) {
+    ++result.evaluations;
+    if (at.count >= k) {
+      if (count_hi < 0 || x < hi) {
+        hi = x;
+        count_hi = at.count;
+      }
+    } else if (x > lo) {
+      lo = x;
+      count_lo = at.count;
+    }
+  };
+  double x = 1.0 - 0.5 * gamma;
+  PencilInertia at;
+  if (guess != nullptr && *guess > lo && *guess < 1.0) {
+    // Probe outwards from the guess, by guess_radius and then 4 times further each time, until the
+    // eigenvalue is bracketed; Newton then starts from the guess.
+    x = *guess;
+    at = evaluate(x);
+    record(x, at);
+    double step = guess_radius > 0.0 ? guess_radius : 1e-3 * std::max(1.0, std::fabs(x));
+    double from = x;
+    for (int probe = 0; probe < 6 && (count_hi < 0 || count_lo != k - 1 || count_hi != k);
+         ++probe) {
+      const bool left = count_hi >= 0 && hi <= from;
+      double y = left ? from - step : from + step;
+      if (left && y <= lo) y = 0.5 * (lo + from);
+      if (!left && y >= 1.0) y = 1.0 - 0.25 * (1.0 - from);
+      const PencilInertia at_y = evaluate(y);
+      record(y, at_y);
+      if ((left && at_y.count < k) || (!left && at_y.count >= k)) break;
+      from = y;
+      step *= 4.0;
+    }
+  } else {
+    at = evaluate(x);
+    record(x, at);
+  }
+  // Without an upper end yet: move towards 1 (sigma doubled twice per step) until k eigenvalues
+  // lie below; none within 1e-14 of 1 means fewer than k exist.
+  while (count_hi < 0) {
+    if (1.0 - lo < 1e-14) return result;
+    x = 1.0 - 0.25 * (1.0 - lo);
+    at = evaluate(x);
+    record(x, at);
+  }
+  // The requested tolerance, but not below the rounding noise of the inertia near the eigenvalue:
+  // A(sigma) = B + sigma W is singular there through the cancellation of B's smallest eigenvalue
+  // (about EI/L / n) against sigma W, B's largest being about 4 n EI/L; rounding perturbs sigma by
+  // eps n^2 at worst, by far less in practice (margins at n = 260, 516 and 1028 agree to 2e-11),
+  // so lambda = 1 - 1/sigma is taken as known to 1e-17 n^2 (1 - lambda).
+  const double n2 = static_cast<double>(q.size()) * static_cast<double>(q.size());
+  auto width_tolerance = [&](double v) {
+    return std::max(tolerance * std::max(1.0, std::fabs(v)), 1e-17 * n2 * (1.0 - v));
+  };
+  double step_two_ago = HUGE_VAL, step_one_ago = HUGE_VAL;
+  for (int iteration = 0; iteration < 400; ++iteration) {
+    const double width = hi - lo;
+    if (width <= width_tolerance(hi)) {
+      result.value = 0.5 * (lo + hi);
+      result.exists = true;
+      return result;
+    }
+    // Newton in sigma once [lo, hi] holds the k-th eigenvalue alone, while its step stays inside
+    // the bracket and is at most half the step before the last (as in Numerical Recipes'
+    // rtsafe); bisection in lambda otherwise.
+    double next = 0.5 * (lo + hi);
+    bool newton = false;
+    if (count_lo == k - 1 && count_hi == k && std::isfinite(at.log_det_slope) &&
+        at.log_det_slope != 0.0) {
+      const double sigma = 1.0 / (1.0 - x);
+      const double sigma_next = sigma - 1.0 / at.log_det_slope;
+      if (sigma_next > 0.0) {
+        const double candidate = 1.0 - 1.0 / sigma_next;
+        if (candidate > lo && candidate < hi && std::fabs(candidate - x) <= 0.5 * step_two_ago) {
+          next = candidate;
+          newton = true;
+        }
+      }
+    }
+    if (newton && std::fabs(next - x) <= 0.5 * width_tolerance(next)) {
+      result.value = next;
+      result.exists = true;
+      return result;
+    }
+    step_two_ago = step_one_ago;
+    step_one_ago = std::fabs(next - x);
+    x = next;
+    at = evaluate(x);
+    record(x, at);
+  }
+  result.value = 0.5 * (lo + hi);
+  result.exists = true;
+  return result;
+}
+
+}  // namespace flexure
