@@ -129,21 +129,31 @@ TEST(CliDesign, RuleLimitsLoosenOneBound) {
 }
 
 TEST(CliDesign, BadInputIsExitTwoWithAReason) {
-  for (const char* args :
-       {"design cfm --config lpp --d 16 --objective max-psi",
-        "design cfm --config lpp --d 16 --objective fastest",
-        "design cfm --config xyz --d 16 --objective min-xi",
-        "design cfm --config lpp --d 100 --objective min-xi",
-        "design cfm --config lpp --d 16 --objective min-xi --K1 1",
-        "design cfm --config lpp --d nan --objective min-xi",
-        "design cfm --config ssp --d 16 --objective max-pcf --rule-limits 'C>=1'",
-        "design cfm --config ssp --d 16 --objective max-pcf --rule-limits 'O:C>=x'",
-        "design cfm --config ssp --d 16 --objective max-pcf --coarse-stride 0"}) {
-    const CommandResult r = run_flexure(std::string(args) + " --json");
-    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+  const struct {
+    const char* args;
+    const char* says;  // key words of the reason
+  } cases[] = {
+      {"design cfm --config lpp --d 16 --objective max-psi", "give --pcf-min"},
+      {"design cfm --config lpp --d 16 --objective fastest", "objective 'fastest' is unknown"},
+      {"design cfm --config xyz --d 16 --objective min-xi", "configuration 'xyz' is unknown"},
+      {"design cfm --config lpp --d 100 --objective min-xi", "d = 100 % must lie in (0, 100)"},
+      {"design cfm --config lpp --d 16 --objective min-xi --K1 1",
+       "K1 is not a variable of configuration lpp"},
+      {"design cfm --config lpp --d nan --objective min-xi", "--d (stroke, % of r2 + r3) = nan"},
+      {"design cfm --config ssp --d 16 --objective max-pcf --rule-limits 'C>=1'",
+       "--rule-limits item 'C>=1'"},
+      {"design cfm --config ssp --d 16 --objective max-pcf --rule-limits 'O:C>=x'",
+       "'O:C>=x': the value is not a number"},
+      {"design cfm --config ssp --d 16 --objective max-pcf --coarse-stride 0",
+       "coarse_stride = 0 must be >= 1"},
+  };
+  for (const auto& c : cases) {
+    const CommandResult r = run_flexure(std::string(c.args) + " --json");
+    EXPECT_EQ(r.exit_code, 2) << c.args << ": " << r.err;
     const json e = json::parse(r.out);
-    EXPECT_EQ(e["exit_code"], 2) << args;
-    EXPECT_FALSE(e["error"].get<std::string>().empty()) << args;
+    EXPECT_EQ(e["exit_code"], 2) << c.args;
+    EXPECT_NE(e["error"].get<std::string>().find(c.says), std::string::npos)
+        << c.args << ": " << e["error"];
   }
 }
 
