@@ -3,8 +3,7 @@
 //    tip it prints agrees with the exact elliptic tip (`--method elliptic`, an independent
 //    solver) within that tolerance relative to the deflection.
 //  * With the default tolerance auto gives the elliptic tip; off the free cantilever, shooting.
-// Skipped (with a message) while `flexure beam` does not yet offer --tol (cli/beam_command.cpp
-// wiring, see docs/benchmarks.md).
+//  * --tol 0 and --tol with a named method are refused (exit 2) saying why.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,10 +17,6 @@ namespace {
 
 constexpr double kLooseTolerance = 1e-2;  // the --tol given to auto
 
-bool beam_has_tol_option() {
-  return run_flexure("beam --help").out.find("  --tol FLOAT") != std::string::npos;
-}
-
 nlohmann::json beam_json(const std::string& args) {
   const CommandResult r = run_flexure("beam " + args + " --json");
   EXPECT_EQ(r.exit_code, 0) << r.err;
@@ -29,7 +24,6 @@ nlohmann::json beam_json(const std::string& args) {
 }
 
 TEST(AutoMethodCli, LooseToleranceInsideValidityPicksPrbm) {
-  if (!beam_has_tol_option()) GTEST_SKIP() << "flexure beam has no --tol yet";
   const nlohmann::json prbm = beam_json("--alpha2 3 --method auto --tol 1e-2");
   const nlohmann::json exact = beam_json("--alpha2 3 --method elliptic");
   ASSERT_EQ(prbm.value("method", ""), "prbm") << prbm.dump();
@@ -42,15 +36,22 @@ TEST(AutoMethodCli, LooseToleranceInsideValidityPicksPrbm) {
 }
 
 TEST(AutoMethodCli, DefaultToleranceAndOtherBoundariesPickExactMethods) {
-  if (!beam_has_tol_option()) GTEST_SKIP() << "flexure beam has no --tol yet";
   EXPECT_EQ(beam_json("--alpha2 3").value("method", ""), "elliptic");
   EXPECT_EQ(beam_json("--alpha2 3 --tol 1e-2 --boundary guided").value("method", ""), "shooting");
-  EXPECT_EQ(run_flexure("beam --alpha2 3 --tol 0").exit_code, 2);
+  const CommandResult zero = run_flexure("beam --alpha2 3 --tol 0");
+  EXPECT_EQ(zero.exit_code, 2);
+  EXPECT_NE(zero.err.find("--tol must be a finite relative error > 0"), std::string::npos)
+      << zero.err;
   // --tol means one thing (the error auto allows); with a named method it is refused, saying why.
   const CommandResult named = run_flexure("beam --alpha2 3 --method elliptic --tol 1e-3");
   EXPECT_EQ(named.exit_code, 2);
+  EXPECT_NE(named.err.find("--method elliptic works to its own tolerance"), std::string::npos)
+      << named.err;
   EXPECT_NE(named.err.find("--method auto"), std::string::npos) << named.err;
-  EXPECT_EQ(run_flexure("mechanism analyze 1A-lpp --method exact --tol 0.1").exit_code, 2);
+  const CommandResult mechanism = run_flexure("mechanism analyze 1A-lpp --method exact --tol 0.1");
+  EXPECT_EQ(mechanism.exit_code, 2);
+  EXPECT_NE(mechanism.err.find("--method exact works to its own tolerance"), std::string::npos)
+      << mechanism.err;
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 """Every function of the module agrees with the tool's --json output on the same input: equal
 keys, numbers to 1e-12 (issue 15). The tool runs as a subprocess; the module in-process."""
+import math
 import os
 
 import pytest
@@ -141,9 +142,36 @@ def test_concurrent_calls_from_threads_are_independent():
     assert all(results[k] == expected for k in range(4))
 
 
+# The largest tolerance `validate` may give a check, by method: the solvers' own accuracy
+# (elliptic 1e-10, shooting 1e-8, chain N = 100 1e-5) or the rounding of a printed reference
+# (7 significant digits of a value up to 10: 2e-6); docs/validation.md.
+VALIDATE_TOLERANCE_CAP = {"elliptic": 2e-6, "shooting": 2e-6, "chain": 1e-5}
+
+
 def test_validate(cli, tmp_path):
     a, b = tmp_path / "a.h5", tmp_path / "b.h5"
     got = flexure.validate(out=a)
+    # Every verdict recomputed here from the computed and reference values, not read from the
+    # tool's "passed" and "all_passed": the error relative to the reference, absolute where the
+    # reference is zero (a/l of the half and full circle). The tool divides by max(|reference|,
+    # a floor <= 1), so its rel_error lies between |diff| / max(1, |reference|) and ours.
+    assert len(got["checks"]) >= 200
+    for c in got["checks"]:
+        diff = abs(c["computed"] - c["reference"])
+        error = diff / abs(c["reference"]) if abs(c["reference"]) > 1e-6 else diff
+        assert c["tolerance"] <= VALIDATE_TOLERANCE_CAP[c["method"]], c
+        assert error <= c["tolerance"], c
+        assert c["passed"] is True, c
+        assert diff / max(1.0, abs(c["reference"])) * (1 - 1e-12) <= c["rel_error"], c
+        assert c["rel_error"] <= error * (1 + 1e-12) + 1e-300, c
+        # The end-moment references are the circular arc a/l = sin(mu)/mu, b/l = (1 - cos mu)/mu
+        # (Howell eqs. 2.59, 2.64), recomputed here.
+        if c["problem"].startswith("end-moment mu="):
+            mu = {"1": 1.0, "pi": math.pi, "2pi": 2.0 * math.pi}[c["problem"].split()[1][3:]]
+            arc = {"a_over_l": math.sin(mu) / mu, "b_over_l": (1.0 - math.cos(mu)) / mu,
+                   "theta0": mu}
+            if c["quantity"] in arc:
+                assert abs(c["reference"] - arc[c["quantity"]]) <= 1e-15, c
     assert got["all_passed"] is True
     assert_same(got, cli.json("validate", "--out", b), skip=("seconds_per_solve", "out"))
 
