@@ -79,12 +79,25 @@ const std::vector<CommandExamples>& command_examples() {
   return table;
 }
 
+// The child of `parent` named `name`, or null (a stub has no children: command_table.h).
+CLI::App* find_child(CLI::App* parent, const std::string& name) {
+  for (CLI::App* child : parent->get_subcommands([](CLI::App*) { return true; })) {
+    if (child->get_name() == name) return child;
+  }
+  return nullptr;
+}
+
 }  // namespace
 
 void add_command_examples(CLI::App& app) {
   for (const CommandExamples& entry : command_examples()) {
     CLI::App* command = &app;
-    for (const std::string& name : entry.path) command = command->get_subcommand(name);
+    for (const std::string& name : entry.path) {
+      if (command != nullptr) command = find_child(command, name);
+    }
+    // Below a stub (command_table.h), which has no children; a stub's own footer is harmless:
+    // its help is never printed.
+    if (command == nullptr) continue;
     std::string footer = "\nExamples:";
     for (const std::string& example : entry.examples) footer += "\n  " + example;
     command->footer(footer);
