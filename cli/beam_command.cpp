@@ -16,6 +16,7 @@
 #include "cli/cli_common.h"
 #include "cli/command_runner.h"
 #include "cli/commands.h"
+#include "flexure/benchmarks/studies/method_selector.h"
 #include "flexure/benchmarks/studies/physical_beam.h"
 #include "flexure/io/chain_toml.h"
 #include "flexure/io/quantity.h"
@@ -401,6 +402,10 @@ Json to_json(const BeamInput& input,
   Json out;
   out["method"] = to_string(solution.method);
   out["method_reason"] = solution.method_reason;
+  // The relative tip error the method is known to stay within (null where none is known: the chain
+  // algorithm, the PRBM off its measured map).
+  out["expected_error"] =
+      std::isfinite(solution.expected_error) ? Json(solution.expected_error) : Json(nullptr);
   // Howell's parameters; null for a chain that has none (not one uniform straight beam).
   out["n"] = number_or_null(solution.load_ratio_n);
   out["alpha2"] = number_or_null(solution.alpha2);
@@ -475,14 +480,18 @@ void run_beam(const BeamArgs& args) {
   }
   BeamSolution solution;
   std::optional<PhysicalResults> physical;
-  if (input.is_physical()) {
-    PhysicalBeamSolution solved = input.physical
-                                      ? solve_physical_beam(method, *input.physical, problem)
-                                      : solve_physical_chain(method, problem, *input.chain_file);
-    solution = std::move(solved.solution);
-    if (solution.converged()) physical = std::move(solved.physical);
-  } else {
-    solution = solve_beam(method, problem);
+  try {
+    if (input.is_physical()) {
+      PhysicalBeamSolution solved = input.physical
+                                        ? solve_physical_beam(method, *input.physical, problem)
+                                        : solve_physical_chain(method, problem, *input.chain_file);
+      solution = std::move(solved.solution);
+      if (solution.converged()) physical = std::move(solved.physical);
+    } else {
+      solution = solve_beam(method, problem);
+    }
+  } catch (const bench::ToleranceBelowReach& e) {
+    refuse_tolerance_below_reach(e, problem.tolerance);
   }
   if (!solution.converged()) {
     // What was reached, for the JSON error object (null where it is not a number).

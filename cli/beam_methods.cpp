@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "cli/cli_common.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
 
@@ -57,6 +58,17 @@ void refuse_tol_with_named_method(const CLI::Option* tol_option, const std::stri
       "--tol is the error --method auto allows when it chooses a method; --method {} works to its "
       "own tolerance, so --tol does not apply (drop it, or use --method auto)",
       method));
+}
+
+void refuse_tolerance_below_reach(const bench::ToleranceBelowReach& e, double tolerance) {
+  // Rather than an answer that misses the tolerance (docs/cli.md, "--tol").
+  throw InvalidInputReport(
+      fmt::format("--tol: {} (--tol {:.0e}, or drop --tol for the default 1e-6)",
+                  e.what(),
+                  e.best_tolerance()),
+      Json{{"tolerance", tolerance},
+           {"best_tolerance", e.best_tolerance()},
+           {"best_method", e.best_method()}});
 }
 
 }  // namespace flexure::cli

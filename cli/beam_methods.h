@@ -7,6 +7,7 @@
 
 #include "flexure/benchmarks/studies/beam_method.h"
 #include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/benchmarks/studies/method_selector.h"
 
 namespace flexure::cli {
 
@@ -18,6 +19,12 @@ CLI::Option* add_tolerance_option(CLI::App& command, double& tolerance);
 // --tol means one thing: the error `--method auto` allows when it chooses a method. With a named
 // method it does not apply (each method works to its own tolerance): InvalidInput saying so.
 void refuse_tol_with_named_method(const CLI::Option* tol_option, const std::string& method);
+
+// `--method auto` with a --tol that no method meets (bench::ToleranceBelowReach): the refusal as
+// InvalidInputReport (exit 2), with the flag to give and the JSON keys tolerance, best_tolerance,
+// best_method.
+[[noreturn]] void refuse_tolerance_below_reach(const bench::ToleranceBelowReach& e,
+                                               double tolerance);
 
 // A sentence for non-convergence messages: which other method may work.
 std::string other_methods_hint(BeamMethod failed_method);

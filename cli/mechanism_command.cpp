@@ -719,8 +719,13 @@ void register_mechanism_command(CLI::App& app) {
       }
     }
     refuse_tol_with_named_method(args->tol_option, args->no_exact ? "prbm" : args->method);
-    const MechanismMethodChoice choice =
-        choose_mechanism_method(d, args->no_exact ? "prbm" : args->method, args->tol);
+    const MechanismMethodChoice choice = [&] {
+      try {
+        return choose_mechanism_method(d, args->no_exact ? "prbm" : args->method, args->tol);
+      } catch (const bench::ToleranceBelowReach& e) {
+        refuse_tolerance_below_reach(e, args->tol);
+      }
+    }();
     AnalysisOptions o;
     o.points = args->points;
     o.exact = choice.exact;
