@@ -505,6 +505,13 @@ void run_beam(const BeamArgs& args) {
     if (std::isfinite(solution.target_residual)) {
       reached["target_residual"] = solution.target_residual;
     }
+    // The methods the message suggests (failure_advice.h), most capable first; empty when none is
+    // measured to reach further (the message then says what to change).
+    Json suggested = Json::array();
+    for (BeamMethod m : advise_after_failure(problem, solution, solution.methods_tried).methods) {
+      suggested.push_back(to_string(m));
+    }
+    reached["suggested_methods"] = std::move(suggested);
     for (auto& [key, value] : reached.items()) {
       if (value.is_number_float() && !std::isfinite(value.get<double>())) value = nullptr;
     }
@@ -513,7 +520,7 @@ void run_beam(const BeamArgs& args) {
                     to_string(solution.method),
                     solution.iterations,
                     solution.message.empty() ? "no message" : solution.message,
-                    other_methods_hint(solution.method)),
+                    failure_hint(problem, solution)),
         std::move(reached));
   }
   if (!problem.chain) require_finite_result(solution.alpha2, "alpha2");
@@ -531,13 +538,15 @@ void run_beam(const BeamArgs& args) {
                                     problem.shape_points));
   }
   if (solution.method == BeamMethod::kPrbm && !solution.prbm_inside_validity) {
-    warn(fmt::format(
-        "the PRB angle Theta = {:.1f} deg is outside the validity limit {:.1f} "
-        "deg ({}); the PRBM tip and force are not trusted here (--method elliptic or shooting "
-        "is exact)",
-        std::fabs(solution.prbm_Theta) * 180.0 / std::numbers::pi,
-        solution.prbm_theta_max * 180.0 / std::numbers::pi,
-        solution.prbm_limits_source));
+    warn(
+        fmt::format("the PRB angle Theta = {:.1f} deg is outside the validity limit {:.1f} "
+                    "deg ({}); the PRBM tip and force are not trusted here ({} exact)",
+                    std::fabs(solution.prbm_Theta) * 180.0 / std::numbers::pi,
+                    solution.prbm_theta_max * 180.0 / std::numbers::pi,
+                    solution.prbm_limits_source,
+                    // The elliptic solver takes only the free cantilever with dead loads.
+                    problem.is_plain_cantilever() ? "--method elliptic or shooting is"
+                                                  : "--method shooting is"));
   }
   if (args.json) {
     print_json(to_json(input, problem, solution, physical));  // refuses NaN/Inf anywhere

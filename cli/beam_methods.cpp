@@ -24,15 +24,23 @@ void add_method_option(CLI::App& command, std::string& method) {
                         CLI::ignore_case));
 }
 
-std::string other_methods_hint(BeamMethod failed_method) {
-  if (failed_method == BeamMethod::kElliptic) {
-    return "The shooting method (--method shooting) follows the load path by arc-length "
-           "continuation past limit points.";
+std::string failure_hint(const BeamProblem& problem, const BeamSolution& failed) {
+  const BeamFailureAdvice advice = advise_after_failure(problem, failed, failed.methods_tried);
+  if (advice.methods.empty()) {
+    return advice.load_path_helps
+               ? advice.text + " (flexure path with the same loads and --out FILE writes it)"
+               : advice.text;
   }
-  if (failed_method == BeamMethod::kChain) {
-    return "The shooting method (--method shooting) is the reference for any chain.";
+  // The library's advice with the flag of each method.
+  std::string hint = "Try ";
+  for (std::size_t i = 0; i < advice.methods.size(); ++i) {
+    hint += fmt::format("{}{} (--method {}): {}",
+                        i > 0 ? "; or " : "",
+                        advice.names[i],
+                        to_string(advice.methods[i]),
+                        advice.reasons[i]);
   }
-  return "Try smaller loads or --method chain with more --increments.";
+  return hint + ".";
 }
 
 CLI::Option* add_tolerance_option(CLI::App& command, double& tolerance) {

@@ -7,6 +7,7 @@
 
 #include "flexure/benchmarks/studies/beam_method.h"
 #include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/benchmarks/studies/failure_advice.h"
 #include "flexure/benchmarks/studies/method_selector.h"
 
 namespace flexure::cli {
@@ -26,7 +27,8 @@ void refuse_tol_with_named_method(const CLI::Option* tol_option, const std::stri
 [[noreturn]] void refuse_tolerance_below_reach(const bench::ToleranceBelowReach& e,
                                                double tolerance);
 
-// A sentence for non-convergence messages: which other method may work.
-std::string other_methods_hint(BeamMethod failed_method);
+// Sentences for non-convergence messages: the library's advice (failure_advice.h: a method only
+// where it is measured to reach further than those tried, else what to change) with the flags.
+std::string failure_hint(const BeamProblem& problem, const BeamSolution& failed);
 
 }  // namespace flexure::cli

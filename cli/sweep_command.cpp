@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -236,6 +237,10 @@ void run_sweep_beam(const SweepBeamArgs& args) {
     fmt::print("  converged: {} of {}; {:.3f} s\n", table.converged_count, count, seconds);
   }
   if (table.first_failure >= 0) {
+    BeamSolution failed;
+    failed.method = method;
+    failed.methods_tried = {method};
+    failed.alpha2 = std::numeric_limits<double>::quiet_NaN();
     throw NoConvergence(fmt::format(
         "{} of {} points have no converged solution (stored with status 1 and NaN in '{}'); the "
         "first is {}: {}. {}",
@@ -244,7 +249,7 @@ void run_sweep_beam(const SweepBeamArgs& args) {
         args.out,
         describe_point(grid, table.first_failure),
         table.first_failure_message,
-        other_methods_hint(method)));
+        failure_hint(grid.at(table.first_failure), failed)));
   }
 }
 

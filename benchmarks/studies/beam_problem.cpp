@@ -377,6 +377,7 @@ BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem) {
             bench::exact_method_error_bound(BeamMethod::kShooting, inverse)};
   };
   BeamSolution solution;
+  std::vector<BeamMethod> tried{used.method};
   switch (used.method) {
     case BeamMethod::kElliptic:
       try {
@@ -387,6 +388,7 @@ BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem) {
         // shooting solver has no such fixed limit.
         shooting_fallback(
             fmt::format("{}; the elliptic solver cannot answer ({})", used.reason, e.what()));
+        tried.push_back(BeamMethod::kShooting);
         solution = solve_numerical(BeamMethod::kShooting, problem);
       }
       break;
@@ -406,6 +408,7 @@ BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem) {
     const std::string failed = to_string(used.method);
     const std::string failure = solution.message;
     shooting_fallback(used.reason);
+    tried.push_back(BeamMethod::kShooting);
     BeamSolution fallback = solve_numerical(BeamMethod::kShooting, problem);
     used.reason = fmt::format(
         "{}; the {} method did not converge ({}), so the shooting method was tried: "
@@ -418,6 +421,7 @@ BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem) {
   }
   solution.method_reason = used.reason;
   solution.expected_error = used.expected_error;
+  solution.methods_tried = std::move(tried);
   if (!problem.chain) {
     solution.load_ratio_n = problem.load_ratio_n;
     solution.mu = problem.mu;

@@ -61,6 +61,8 @@ struct BeamSolution : SolveStatus {
   // The relative tip error the method that answered is known to stay within (MethodResolution);
   // NaN where none is known (chain, PRBM off its measured map).
   double expected_error = std::numeric_limits<double>::quiet_NaN();
+  // Every method tried, in order (auto tries a second when the first fails); the last is `method`.
+  std::vector<BeamMethod> methods_tried;
   // Howell's load parameters (eqs. 2.67, 2.83). For a chain given as a whole they exist only when
   // it is uniform (flexible segments of one constant EI, straight, total length L): alpha2 = Fy
   // L^2/EI, n = -Fx/Fy, mu = M L/EI; otherwise NaN (no single alpha2), and root_moment and
