@@ -45,39 +45,49 @@ long pid_of(std::string_view pid_serial) {
   return std::stol(std::string(pid_serial.substr(0, dash)));
 }
 
-// Seconds since the epoch at which process `pid` started, from /proc (Linux); NaN when unknown.
-double process_start_time(long pid) {
+// What /proc (Linux) says of process `pid`: its state letter (field 3: 'Z' a zombie, which has
+// ended but was not yet reaped, as the ranks of a killed mpirun in a container whose init does not
+// reap) and when it started, in seconds since the epoch (NaN when unknown).
+struct ProcessInfo {
+  char state = '?';
+  double started = std::nan("");
+};
+ProcessInfo process_info(long pid) {
+  ProcessInfo info;
   std::ifstream stat_file(fmt::format("/proc/{}/stat", pid));
   std::string line;
-  if (!std::getline(stat_file, line)) return std::nan("");
-  // Field 22, starttime in clock ticks after boot; fields counted after the command name, which
-  // is in parentheses and may hold spaces.
+  if (!std::getline(stat_file, line)) return info;
+  // Fields counted after the command name, which is in parentheses and may hold spaces: field 3
+  // the state, field 22 starttime in clock ticks after boot.
   const std::size_t close = line.rfind(')');
-  if (close == std::string::npos) return std::nan("");
+  if (close == std::string::npos) return info;
   std::istringstream fields(line.substr(close + 1));
   std::string field;
   for (int i = 3; i <= 22 && fields >> field; ++i) {
+    if (i == 3) info.state = field.empty() ? '?' : field[0];
     if (i < 22) continue;
     std::ifstream proc_stat("/proc/stat");
     for (std::string row; std::getline(proc_stat, row);) {
       if (row.rfind("btime ", 0) == 0) {
         const double boot = std::stod(row.substr(6));
-        return boot + std::stod(field) / static_cast<double>(::sysconf(_SC_CLK_TCK));
+        info.started = boot + std::stod(field) / static_cast<double>(::sysconf(_SC_CLK_TCK));
       }
     }
   }
-  return std::nan("");
+  return info;
 }
 
 // Whether the process that wrote a temporary last modified at `written` (seconds since the epoch)
-// is gone: no process has its number, or the one that has it started after the file was written
-// (the number was reused). A process of another user still counts as there (EPERM).
+// is gone: no process has its number, it has ended (a zombie), or the one that has it started
+// after the file was written (the number was reused). A process of another user still counts as
+// there (EPERM).
 bool writer_gone(long pid, double written) {
   if (pid <= 0 || pid == static_cast<long>(::getpid())) return false;
   if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) return true;
-  const double started = process_start_time(pid);
+  const ProcessInfo info = process_info(pid);
+  if (info.state == 'Z' || info.state == 'X') return true;  // ended, not yet reaped
   // A margin of 2 s over the clock-tick and file-time granularity.
-  return std::isfinite(started) && started > written + 2.0;
+  return std::isfinite(info.started) && info.started > written + 2.0;
 }
 
 std::filesystem::path directory_of(const std::filesystem::path& path) {

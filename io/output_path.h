@@ -40,11 +40,11 @@ std::string temporary_host_tag();
 // Removes the temporaries that flexure processes left next to `target` when they were killed
 // without running their handlers (kill -9 of the process, or of mpirun, which takes its ranks
 // down at once; docs/scaling.md "Failures"): in the target's directory, every
-// ".NAME.PID-SERIAL@HOST.tmp" of this host whose process PID no longer exists, or is a younger
-// process that reuses the number (it started after the file was last written), and the same for
-// the host-less names of this target. Temporaries of other hosts (a shared file system) and of
-// live processes are left alone. Returns the paths removed. Errors are ignored (a file that
-// cannot be removed stays).
+// ".NAME.PID-SERIAL@HOST.tmp" of this host whose process PID no longer exists (or has ended and
+// waits to be reaped: a zombie), or is a younger process that reuses the number (it started after
+// the file was last written), and the same for the host-less names of this target. Temporaries of
+// other hosts (a shared file system) and of live processes are left alone. Returns the paths
+// removed. Errors are ignored (a file that cannot be removed stays).
 std::vector<std::string> remove_stale_temporaries(const std::string& target);
 
 // Writes `text` to `path` whole or not at all: into a temporary file next to it (removed on

@@ -126,12 +126,17 @@ TEST(OutputPath, StaleTemporariesOfGoneProcessesAreRemoved) {
     ::sleep(30);
     ::_exit(0);
   }
+  // A process that has ended but is not reaped yet (a zombie: the ranks of a killed mpirun where
+  // no init reaps them) is gone too, though kill(pid, 0) still finds it.
+  const pid_t zombie = ::fork();
+  if (zombie == 0) ::_exit(0);
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
   const std::string live = std::to_string(child);
   const std::vector<std::string> removed_names = {
       ".out.h5." + dead + "-0@" + host + ".tmp",    // this target, process gone
       ".other.h5." + dead + "-2@" + host + ".tmp",  // another target in the directory, gone
       ".out.h5." + dead + "-1.tmp",                 // this target, the name without a host
+      ".out.h5." + std::to_string(zombie) + "-0@" + host + ".tmp",  // ended, not reaped
   };
   const std::vector<std::string> kept_names = {
       ".other.h5." + dead + "-1.tmp",             // without a host: only this target's
@@ -149,6 +154,7 @@ TEST(OutputPath, StaleTemporariesOfGoneProcessesAreRemoved) {
   std::vector<std::string> removed = remove_stale_temporaries((dir / "out.h5").string());
   ::kill(child, SIGKILL);
   ::waitpid(child, nullptr, 0);
+  ::waitpid(zombie, nullptr, 0);
   for (std::string& path : removed) path = std::filesystem::path(path).filename().string();
   std::sort(removed.begin(), removed.end());
   std::vector<std::string> expected = removed_names;
