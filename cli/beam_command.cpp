@@ -16,6 +16,7 @@
 #include "cli/cli_common.h"
 #include "cli/command_runner.h"
 #include "cli/commands.h"
+#include "flexure/benchmarks/studies/method_selector.h"
 #include "flexure/benchmarks/studies/physical_beam.h"
 #include "flexure/io/chain_toml.h"
 #include "flexure/io/quantity.h"
@@ -401,6 +402,10 @@ Json to_json(const BeamInput& input,
   Json out;
   out["method"] = to_string(solution.method);
   out["method_reason"] = solution.method_reason;
+  // The relative tip error the method is known to stay within (null where none is known: the chain
+  // algorithm, the PRBM off its measured map).
+  out["expected_error"] =
+      std::isfinite(solution.expected_error) ? Json(solution.expected_error) : Json(nullptr);
   // Howell's parameters; null for a chain that has none (not one uniform straight beam).
   out["n"] = number_or_null(solution.load_ratio_n);
   out["alpha2"] = number_or_null(solution.alpha2);
@@ -475,14 +480,18 @@ void run_beam(const BeamArgs& args) {
   }
   BeamSolution solution;
   std::optional<PhysicalResults> physical;
-  if (input.is_physical()) {
-    PhysicalBeamSolution solved = input.physical
-                                      ? solve_physical_beam(method, *input.physical, problem)
-                                      : solve_physical_chain(method, problem, *input.chain_file);
-    solution = std::move(solved.solution);
-    if (solution.converged()) physical = std::move(solved.physical);
-  } else {
-    solution = solve_beam(method, problem);
+  try {
+    if (input.is_physical()) {
+      PhysicalBeamSolution solved = input.physical
+                                        ? solve_physical_beam(method, *input.physical, problem)
+                                        : solve_physical_chain(method, problem, *input.chain_file);
+      solution = std::move(solved.solution);
+      if (solution.converged()) physical = std::move(solved.physical);
+    } else {
+      solution = solve_beam(method, problem);
+    }
+  } catch (const bench::ToleranceBelowReach& e) {
+    refuse_tolerance_below_reach(e, problem.tolerance);
   }
   if (!solution.converged()) {
     // What was reached, for the JSON error object (null where it is not a number).
@@ -496,6 +505,13 @@ void run_beam(const BeamArgs& args) {
     if (std::isfinite(solution.target_residual)) {
       reached["target_residual"] = solution.target_residual;
     }
+    // The methods the message suggests (failure_advice.h), most capable first; empty when none is
+    // measured to reach further (the message then says what to change).
+    Json suggested = Json::array();
+    for (BeamMethod m : advise_after_failure(problem, solution, solution.methods_tried).methods) {
+      suggested.push_back(to_string(m));
+    }
+    reached["suggested_methods"] = std::move(suggested);
     for (auto& [key, value] : reached.items()) {
       if (value.is_number_float() && !std::isfinite(value.get<double>())) value = nullptr;
     }
@@ -504,7 +520,7 @@ void run_beam(const BeamArgs& args) {
                     to_string(solution.method),
                     solution.iterations,
                     solution.message.empty() ? "no message" : solution.message,
-                    other_methods_hint(solution.method)),
+                    failure_hint(problem, solution)),
         std::move(reached));
   }
   if (!problem.chain) require_finite_result(solution.alpha2, "alpha2");
@@ -522,13 +538,15 @@ void run_beam(const BeamArgs& args) {
                                     problem.shape_points));
   }
   if (solution.method == BeamMethod::kPrbm && !solution.prbm_inside_validity) {
-    warn(fmt::format(
-        "the PRB angle Theta = {:.1f} deg is outside the validity limit {:.1f} "
-        "deg ({}); the PRBM tip and force are not trusted here (--method elliptic or shooting "
-        "is exact)",
-        std::fabs(solution.prbm_Theta) * 180.0 / std::numbers::pi,
-        solution.prbm_theta_max * 180.0 / std::numbers::pi,
-        solution.prbm_limits_source));
+    warn(
+        fmt::format("the PRB angle Theta = {:.1f} deg is outside the validity limit {:.1f} "
+                    "deg ({}); the PRBM tip and force are not trusted here ({} exact)",
+                    std::fabs(solution.prbm_Theta) * 180.0 / std::numbers::pi,
+                    solution.prbm_theta_max * 180.0 / std::numbers::pi,
+                    solution.prbm_limits_source,
+                    // The elliptic solver takes only the free cantilever with dead loads.
+                    problem.is_plain_cantilever() ? "--method elliptic or shooting is"
+                                                  : "--method shooting is"));
   }
   if (args.json) {
     print_json(to_json(input, problem, solution, physical));  // refuses NaN/Inf anywhere

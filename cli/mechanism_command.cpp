@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <iostream>
 #include <limits>
@@ -138,6 +139,31 @@ Json design_json(const MechanismDesign& d) {
   return out;
 }
 
+// The PRBM's validity over the stroke (prbm_validity.h): what is outside Table 5.1, where, and the
+// PRBM's force error there (null where the exact model was not solved).
+Json validity_json(const PrbmStrokeValidity& v, double stroke) {
+  const auto number = [](double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); };
+  Json j;
+  j["table"] = v.has_table ? Json("Howell Table 5.1") : Json(nullptr);
+  j["no_table"] = v.has_table ? Json(nullptr) : Json(v.no_table);
+  j["points"] = v.inside.size();
+  j["points_outside"] = v.points_outside;
+  j["limit"] = v.limit ? Json(*v.limit) : Json(nullptr);
+  j["pivot"] = v.first_outside ? Json(v.pivot) : Json(nullptr);
+  j["quantity"] = v.first_outside ? Json(v.quantity) : Json(nullptr);
+  j["value"] = v.first_outside ? Json(v.value) : Json(nullptr);
+  j["unit"] = v.first_outside ? Json(v.unit) : Json(nullptr);
+  j["table_range"] = v.first_outside ? Json::array({v.table_min, v.table_max}) : Json(nullptr);
+  Json ranges = Json::array();
+  for (const auto& [first, last] : v.outside_ranges) ranges.push_back(Json::array({first, last}));
+  j["outside_ranges"] = std::move(ranges);
+  j["force_error_at_limit"] = number(v.force_error_at_limit);
+  j["max_force_error_outside"] = number(v.max_force_error_outside);
+  j["max_force_error_inside"] = number(v.max_force_error_inside);
+  j["summary"] = describe_validity(v, stroke);
+  return j;
+}
+
 Json analysis_json(const MechanismAnalysis& a) {
   const bool exact = a.has_exact && a.exact.converged();
   Json j;
@@ -169,6 +195,8 @@ Json analysis_json(const MechanismAnalysis& a) {
   j["max_force_error_at"] = or_null(exact, a.max_force_error_at);
   j["prbm_validity_limit"] = a.prbm_validity_limit ? Json(*a.prbm_validity_limit) : Json(nullptr);
   j["prbm_validity_reason"] = a.prbm_validity_reason;
+  j["prbm_validity"] = validity_json(a.prbm_validity, a.design.stroke);
+  j["prbm_within_validity"] = a.prbm_validity.inside;
   j["max_stress"] = a.max_stress_all;
   j["max_stress_per_pivot"] = pivot_array(a.design, a.max_stress);
   j["max_stress_prbm"] = pivot_array(a.design, a.prbm.max_stress);
@@ -311,6 +339,31 @@ void write_hdf5(const std::string& path, const MechanismAnalysis& a, io::AtomicH
     root.set_attribute("prbm_validity_limit", *a.prbm_validity_limit);
     attribute_units += "; prbm_validity_limit: m";
   }
+  // What is outside Table 5.1 and how large the PRBM's error is there (prbm_validity.h); the
+  // errors are NaN where the exact model was not solved or no point falls in the group.
+  const PrbmStrokeValidity& v = a.prbm_validity;
+  root.set_attribute("prbm_validity", describe_validity(v, a.design.stroke));
+  if (v.first_outside) {
+    root.set_attribute("prbm_validity_reason", v.reason);
+    root.set_attribute("prbm_validity_quantity", v.quantity);
+    root.set_attribute("prbm_validity_value", v.value);
+    root.set_attribute("prbm_validity_table_min", v.table_min);
+    root.set_attribute("prbm_validity_table_max", v.table_max);
+    attribute_units += fmt::format(
+        "; prbm_validity_value, prbm_validity_table_min, prbm_validity_table_max: {}", v.unit);
+  }
+  root.set_attribute("prbm_points_outside_validity", static_cast<std::int64_t>(v.points_outside));
+  root.set_attribute("prbm_force_error_at_validity_limit", v.force_error_at_limit);
+  root.set_attribute("prbm_max_force_error_outside_validity", v.max_force_error_outside);
+  root.set_attribute("prbm_max_force_error_inside_validity", v.max_force_error_inside);
+  attribute_units +=
+      "; prbm_force_error_at_validity_limit, prbm_max_force_error_outside_validity, "
+      "prbm_max_force_error_inside_validity: 1";
+  root.write_dataset("prbm_within_validity",
+                     std::span<const int>(v.inside),
+                     "1",
+                     "per stroke point: 1 inside Howell Table 5.1 (every fixed-pinned segment), 0 "
+                     "outside, -1 no table applies (small-length pivots, fixed-fixed segments)");
   root.set_attribute("attribute_units", attribute_units);
   for (int p = 0; p < 3; ++p) {
     const int described = described_pivot(a.design, p + 1);
@@ -422,6 +475,7 @@ ValidationRow validate_design(MechanismDesign d,
   r.erase("displacement");
   r.erase("force_prbm");
   r.erase("force_exact");
+  r.erase("prbm_within_validity");
   row.status = !a.has_exact ? 2 : !exact ? 1 : (check && !check->converged()) ? 3 : 0;
   const double none = std::numeric_limits<double>::quiet_NaN();
   row.values = {a.prbm.percent_constant_force,
@@ -724,8 +778,13 @@ void register_mechanism_command(CLI::App& app) {
       }
     }
     refuse_tol_with_named_method(args->tol_option, args->no_exact ? "prbm" : args->method);
-    const MechanismMethodChoice choice =
-        choose_mechanism_method(d, args->no_exact ? "prbm" : args->method, args->tol);
+    const MechanismMethodChoice choice = [&] {
+      try {
+        return choose_mechanism_method(d, args->no_exact ? "prbm" : args->method, args->tol);
+      } catch (const bench::ToleranceBelowReach& e) {
+        refuse_tolerance_below_reach(e, args->tol);
+      }
+    }();
     AnalysisOptions o;
     o.points = args->points;
     o.exact = choice.exact;
@@ -783,6 +842,7 @@ void register_mechanism_command(CLI::App& app) {
                                100.0 * a.max_force_error,
                                a.max_force_error_at);
     }
+    std::cout << fmt::format("  PRBM validity: {}\n", describe_validity(a.prbm_validity, d.stroke));
     std::cout << fmt::format("  max stress {:.5g} Pa, safety factor {:.3f}{}\n",
                              a.max_stress_all,
                              a.safety_factor,

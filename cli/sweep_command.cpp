@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -185,8 +186,9 @@ void run_sweep_beam(const SweepBeamArgs& args) {
   // at most 2048 points, which amortises the hand-out on fast ones.
   options.chunk = std::clamp(count / (64L * threads), 1L, 2048L);
   // Under mpirun: the elliptic solve and the PRBM take about a microsecond per load, so that a
-  // rank's block holds at least 1024 (a message and a write worth their cost); the other methods
-  // take milliseconds, and their blocks shrink to single loads at the end (docs/scaling.md).
+  // rank's block holds at least 1024 (a message and a write worth their cost), or half a rank's
+  // share in a smaller sweep (every rank gets work); the other methods take milliseconds, and their
+  // blocks shrink to single loads at the end (docs/scaling.md).
   options.min_block = method == BeamMethod::kElliptic || method == BeamMethod::kPrbm ? 1024 : 1;
   // By elapsed time, not by count: silent for the first second, then "sweep beam: k/n (t s)" on a
   // terminal (a shooting sweep of 2000 loads takes about 40 s).
@@ -236,6 +238,10 @@ void run_sweep_beam(const SweepBeamArgs& args) {
     fmt::print("  converged: {} of {}; {:.3f} s\n", table.converged_count, count, seconds);
   }
   if (table.first_failure >= 0) {
+    BeamSolution failed;
+    failed.method = method;
+    failed.methods_tried = {method};
+    failed.alpha2 = std::numeric_limits<double>::quiet_NaN();
     throw NoConvergence(fmt::format(
         "{} of {} points have no converged solution (stored with status 1 and NaN in '{}'); the "
         "first is {}: {}. {}",
@@ -244,7 +250,7 @@ void run_sweep_beam(const SweepBeamArgs& args) {
         args.out,
         describe_point(grid, table.first_failure),
         table.first_failure_message,
-        other_methods_hint(method)));
+        failure_hint(grid.at(table.first_failure), failed)));
   }
 }
 

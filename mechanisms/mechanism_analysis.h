@@ -20,6 +20,7 @@
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/prbm_validity.h"
 
 namespace flexure::mechanism {
 
@@ -61,6 +62,9 @@ struct MechanismAnalysis {
   // First Delta x where the PRBM leaves its validity range (see above); empty if it never does.
   std::optional<double> prbm_validity_limit;
   std::string prbm_validity_reason;
+  // The validity at every stroke point: what is outside Table 5.1 and the PRBM's force error
+  // there against the exact model (prbm_validity.h).
+  PrbmStrokeValidity prbm_validity;
   // Governing stress: the larger of the PRBM and (if computed) exact values, per pivot.
   std::array<double, 3> max_stress{};
   double max_stress_all = 0.0;

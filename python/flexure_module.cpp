@@ -321,6 +321,7 @@ struct Columns {
         reaction_M(shape, kNaN),
         Theta(shape, kNaN, prbm),
         theta_max(shape, kNaN, prbm),
+        expected_error(shape, kNaN),
         iterations(shape, 0),
         inflection_points(shape, 0),
         limit_points(shape, 0),
@@ -337,7 +338,8 @@ struct Columns {
         termination(count, workers),
         validity_source(prbm ? count : 0, workers) {}
   NumpyColumn<double> n, alpha2, mu, a_over_l, b_over_l, theta0, root_moment, target_residual,
-      first_limit_load_factor, reaction_Fx, reaction_Fy, reaction_M, Theta, theta_max;
+      first_limit_load_factor, reaction_Fx, reaction_Fy, reaction_M, Theta, theta_max,
+      expected_error;
   NumpyColumn<long long> iterations, inflection_points, limit_points, elements, increments, status;
   NumpyColumn<bool> within_validity, converged;
   TextColumn method, method_reason, branch, family, message, termination, validity_source;
@@ -381,6 +383,7 @@ void solve_one(const cli::BeamCommandProblem& base,
     const BeamSolution s = solve_beam(base.method, problem);
     c.method.set(i, worker, to_string(s.method));
     c.method_reason.set(i, worker, s.method_reason);
+    c.expected_error.data[i] = finite_or_nan(s.expected_error);
     c.iterations.data[i] = s.iterations;
     if (!s.converged() || !std::isfinite(s.alpha2) || !std::isfinite(s.tip.a_over_l) ||
         !std::isfinite(s.tip.b_over_l) || !std::isfinite(s.tip.theta0)) {
@@ -495,6 +498,7 @@ py::dict beam_many(const std::vector<std::string>& args,
   py::dict out;
   out["method"] = c.method.to_numpy(shape);
   out["method_reason"] = c.method_reason.to_numpy(shape);
+  out["expected_error"] = c.expected_error.array;
   out["n"] = c.n.array;
   out["alpha2"] = c.alpha2.array;
   out["mu"] = c.mu.array;

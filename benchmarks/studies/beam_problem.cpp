@@ -345,17 +345,20 @@ SegmentChain BeamProblem::to_chain(double alpha2) const {
 }
 
 MethodResolution resolve_beam_method(BeamMethod method, const BeamProblem& problem) {
-  if (method != BeamMethod::kAuto) return {method, fmt::format("requested: {}", to_string(method))};
+  const bool inverse = problem.given != BeamProblem::Given::kAlpha2;
+  if (method != BeamMethod::kAuto) {
+    return {method,
+            fmt::format("requested: {}", to_string(method)),
+            bench::exact_method_error_bound(method, inverse)};
+  }
   bench::AutoMethodRequest request;
   request.load_ratio_n = problem.load_ratio_n;
-  request.alpha2 = problem.given == BeamProblem::Given::kAlpha2
-                       ? problem.value
-                       : std::numeric_limits<double>::quiet_NaN();
+  request.alpha2 = inverse ? std::numeric_limits<double>::quiet_NaN() : problem.value;
   request.mu = problem.mu;
   request.plain_cantilever = problem.is_plain_cantilever();
   request.tolerance = problem.tolerance;
   const bench::AutoMethodChoice choice = bench::choose_beam_method(request);
-  return {choice.method, choice.reason};
+  return {choice.method, choice.reason, choice.expected_error};
 }
 
 BeamMethod resolve_beam_method(BeamMethod method) {
@@ -364,7 +367,17 @@ BeamMethod resolve_beam_method(BeamMethod method) {
 
 BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem) {
   MethodResolution used = resolve_beam_method(method, problem);
+  const bool inverse = problem.given != BeamProblem::Given::kAlpha2;
+  // auto's fallback answers to the tolerance too: refused (exit code 2) when the shooting method
+  // cannot meet it, instead of an answer that misses it.
+  const auto shooting_fallback = [&](const std::string& reason) {
+    bench::require_tolerance_within_reach(problem.tolerance, BeamMethod::kShooting, inverse);
+    used = {BeamMethod::kShooting,
+            reason,
+            bench::exact_method_error_bound(BeamMethod::kShooting, inverse)};
+  };
   BeamSolution solution;
+  std::vector<BeamMethod> tried{used.method};
   switch (used.method) {
     case BeamMethod::kElliptic:
       try {
@@ -372,9 +385,10 @@ BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem) {
       } catch (const OutsideMethodDomain& e) {
         if (method != BeamMethod::kAuto) throw;
         // auto: the load (or the target's load) lies beyond the elliptic solver's range; the
-        // shooting solver has no such limit.
-        used = {BeamMethod::kShooting,
-                fmt::format("{}; the elliptic solver cannot answer ({})", used.reason, e.what())};
+        // shooting solver has no such fixed limit.
+        shooting_fallback(
+            fmt::format("{}; the elliptic solver cannot answer ({})", used.reason, e.what()));
+        tried.push_back(BeamMethod::kShooting);
         solution = solve_numerical(BeamMethod::kShooting, problem);
       }
       break;
@@ -391,18 +405,23 @@ BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem) {
   if (method == BeamMethod::kAuto && !solution.converged() &&
       used.method != BeamMethod::kShooting) {
     // auto falls back instead of giving up: the shooting method applies to every problem.
+    const std::string failed = to_string(used.method);
+    const std::string failure = solution.message;
+    shooting_fallback(used.reason);
+    tried.push_back(BeamMethod::kShooting);
     BeamSolution fallback = solve_numerical(BeamMethod::kShooting, problem);
-    used = {
-        BeamMethod::kShooting,
-        fmt::format("{}; the {} method did not converge ({}), so the shooting method was tried: "
-                    "{}",
-                    used.reason,
-                    to_string(used.method),
-                    solution.message,
-                    fallback.converged() ? "it answered" : "it did not converge either")};
+    used.reason = fmt::format(
+        "{}; the {} method did not converge ({}), so the shooting method was tried: "
+        "{}",
+        used.reason,
+        failed,
+        failure,
+        fallback.converged() ? "it answered" : "it did not converge either");
     solution = std::move(fallback);
   }
   solution.method_reason = used.reason;
+  solution.expected_error = used.expected_error;
+  solution.methods_tried = std::move(tried);
   if (!problem.chain) {
     solution.load_ratio_n = problem.load_ratio_n;
     solution.mu = problem.mu;

@@ -58,6 +58,11 @@ struct BeamProblem {
 struct BeamSolution : SolveStatus {
   BeamMethod method = BeamMethod::kElliptic;  // the method actually used (what auto resolved to)
   std::string method_reason;                  // why that method: requested, or auto's reasoning
+  // The relative tip error the method that answered is known to stay within (MethodResolution);
+  // NaN where none is known (chain, PRBM off its measured map).
+  double expected_error = std::numeric_limits<double>::quiet_NaN();
+  // Every method tried, in order (auto tries a second when the first fails); the last is `method`.
+  std::vector<BeamMethod> methods_tried;
   // Howell's load parameters (eqs. 2.67, 2.83). For a chain given as a whole they exist only when
   // it is uniform (flexible segments of one constant EI, straight, total length L): alpha2 = Fy
   // L^2/EI, n = -Fx/Fy, mu = M L/EI; otherwise NaN (no single alpha2), and root_moment and
@@ -104,6 +109,9 @@ struct BeamSolution : SolveStatus {
 struct MethodResolution {
   BeamMethod method = BeamMethod::kElliptic;
   std::string reason;
+  // The relative tip error the method is known to stay within (method_selector.h); NaN where it
+  // depends on the discretisation (chain) or is not measured (PRBM off the map).
+  double expected_error = std::numeric_limits<double>::quiet_NaN();
 };
 MethodResolution resolve_beam_method(BeamMethod method, const BeamProblem& problem);
 // Without a problem (sweeps over alpha2): auto = elliptic.

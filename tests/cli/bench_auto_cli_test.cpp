@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -52,6 +53,40 @@ TEST(AutoMethodCli, DefaultToleranceAndOtherBoundariesPickExactMethods) {
   EXPECT_EQ(mechanism.exit_code, 2);
   EXPECT_NE(mechanism.err.find("--method exact works to its own tolerance"), std::string::npos)
       << mechanism.err;
+}
+
+// A --tol below what any method reaches is refused with exit 2 naming the tolerance that can be
+// met, never answered with exit 0 (issue 27): by the method auto would choose, by the shooting
+// method auto falls back to beyond the elliptic range, and by mechanism analyze.
+TEST(AutoMethodCli, ToleranceBelowEveryMethodIsRefused) {
+  const CommandResult r = run_flexure("beam --alpha2 3 --tol 1e-16 --json");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  const nlohmann::json e = nlohmann::json::parse(r.out.empty() ? "{}" : r.out);
+  EXPECT_NE(e.value("error", "").find("below the error of every method"), std::string::npos)
+      << r.out;
+  EXPECT_NE(e.value("error", "").find("--tol 1e-13"), std::string::npos) << r.out;
+  EXPECT_EQ(e.value("best_tolerance", 0.0), 1e-13) << r.out;
+  EXPECT_EQ(e.value("best_method", ""), "elliptic") << r.out;
+  EXPECT_EQ(e.value("tolerance", 0.0), 1e-16) << r.out;
+  // At the bound it answers, and says which error it stands for.
+  const nlohmann::json ok = beam_json("--alpha2 3 --tol 1e-13");
+  EXPECT_EQ(ok.value("method", ""), "elliptic");
+  EXPECT_EQ(ok.value("expected_error", 0.0), 1e-13);
+
+  // alpha2 = 2e4 is beyond the elliptic solver's range (1e4): auto would fall back to shooting,
+  // whose error bound 1e-9 is above 1e-10.
+  const CommandResult far = run_flexure("beam --alpha2 2e4 --tol 1e-10");
+  EXPECT_EQ(far.exit_code, 2) << far.err;
+  EXPECT_NE(far.err.find("the shooting method"), std::string::npos) << far.err;
+  EXPECT_NE(far.err.find("--tol 1e-09"), std::string::npos) << far.err;
+
+  ScratchDir dir;
+  const CommandResult m =
+      run_flexure("mechanism analyze 1A-lpp --tol 1e-10 --out m.h5", dir.path());
+  EXPECT_EQ(m.exit_code, 2) << m.err;
+  EXPECT_NE(m.err.find("below the force error of both models"), std::string::npos) << m.err;
+  EXPECT_NE(m.err.find("--tol 1e-09"), std::string::npos) << m.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "m.h5"));
 }
 
 }  // namespace

@@ -120,7 +120,8 @@ def test_bench(cli, tmp_path):
     a, b = tmp_path / "a.h5", tmp_path / "b.h5"
     got = flexure.bench(out=a, quick=True, problems="tip_moment", methods=["elliptic", "prbm"])
     assert_same(got, cli.json("bench", "--out", b, "--quick", "--problems", "tip_moment",
-                              "--methods", "elliptic,prbm"), skip=("seconds", "file"))
+                              "--methods", "elliptic,prbm"),
+                skip=("seconds", "median_seconds", "file"))  # timings differ between runs
     assert flexure.read(a)["tip_moment"]["elliptic"]["units"]
 
 

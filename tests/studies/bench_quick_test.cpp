@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "flexure/benchmarks/studies/bench_run.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "tests/support/cli_test_support.h"
 
@@ -329,6 +330,104 @@ TEST_F(BenchQuickTest, CfmStrokeComparesPrbmWithTheExactMechanismModel) {
     }
   }
   H5Fclose(file);
+}
+
+// Group statistics (issue 27): the attributes agree with the datasets, recomputed here, and a
+// statistic over zero points is NaN in the file and "n/a" in the progress line, never 0.
+TEST_F(BenchQuickTest, GroupStatisticsCoverOnlyTheirPoints) {
+  ASSERT_EQ(result_->exit_code, 0) << result_->err;
+  const hid_t file = open_read_only(*dir_ / "q.h5");
+  ASSERT_GE(file, 0);
+  int without_error = 0;
+  for (const std::string& problem : group_members(file, "/")) {
+    for (const std::string& method : group_members(file, "/" + problem)) {
+      const std::string g = "/" + problem + "/" + method;
+      const std::vector<int> status = read_ints(file, (g + "/status").c_str());
+      const std::vector<double> error = read_doubles(file, (g + "/error_relative").c_str());
+      long long converged = 0, measured = 0;
+      double worst = -1.0;
+      for (std::size_t i = 0; i < status.size(); ++i) {
+        converged += status[i] == 0 || status[i] == 3 ? 1 : 0;
+        if (status[i] == 0 && std::isfinite(error[i])) {
+          ++measured;
+          worst = std::max(worst, error[i]);
+        }
+      }
+      EXPECT_EQ(read_int_attribute(file, g.c_str(), "converged_points"), converged) << g;
+      EXPECT_EQ(read_int_attribute(file, g.c_str(), "measured_points"), measured) << g;
+      const double stored = read_double_attribute(file, g.c_str(), "max_relative_error");
+      // The progress line of this group, as printed on stderr.
+      const std::size_t at = result_->err.find("] " + problem + "/" + method + ": ");
+      ASSERT_NE(at, std::string::npos) << g;
+      const std::string line = result_->err.substr(at, result_->err.find('\n', at) - at);
+      if (measured == 0) {
+        ++without_error;
+        EXPECT_TRUE(std::isnan(stored)) << g << ": " << stored;
+        EXPECT_NE(line.find("max relative error n/a"), std::string::npos) << line;
+        EXPECT_EQ(line.find("0.00e+00"), std::string::npos) << line;
+      } else {
+        EXPECT_EQ(stored, worst) << g;
+        EXPECT_EQ(line.find("n/a"), std::string::npos) << line;
+      }
+    }
+  }
+  // At least the reference groups (no error against themselves).
+  EXPECT_GE(without_error, 6);
+  H5Fclose(file);
+}
+
+// A group in which nothing converged (0 of 3): no error statistic, and the line says why.
+TEST(BenchStatisticsTest, NothingConvergedHasNoErrorStatistic) {
+  bench::MethodRun run;
+  run.problem = "tip_moment";
+  run.method = "chain_N010_inc05";
+  run.alpha2 = {1.0, 2.0, 3.0};
+  run.status = {bench::kStatusNotConverged, bench::kStatusError, bench::kStatusNotConverged};
+  run.error_relative.assign(3, std::numeric_limits<double>::quiet_NaN());
+  run.seconds = {3e-5, 1e-5, 2e-5};
+  const bench::RunStatistics s = bench::run_statistics(run);
+  EXPECT_EQ(s.points, 3);
+  EXPECT_EQ(s.converged, 0);
+  EXPECT_EQ(s.measured, 0);
+  EXPECT_TRUE(std::isnan(s.max_relative_error));
+  EXPECT_EQ(s.median_seconds, 2e-5);
+  const std::string line = bench::summarize(run);
+  EXPECT_NE(line.find("0/3 converged, max relative error n/a (no converged load)"),
+            std::string::npos)
+      << line;
+  // One converged load with an error of 0 (an exact method on its own reference) is a real 0.
+  run.status[1] = bench::kStatusConverged;
+  run.error_relative[1] = 0.0;
+  EXPECT_EQ(bench::run_statistics(run).max_relative_error, 0.0);
+  EXPECT_NE(bench::summarize(run).find("1/3 converged, max relative error 0.00e+00"),
+            std::string::npos)
+      << bench::summarize(run);
+}
+
+// The JSON summary carries the same statistics per group, null where they cover no point.
+TEST(BenchJsonTest, StatisticsOverNoConvergedLoadAreNull) {
+  ScratchDir dir;
+  const CommandResult r = run_flexure(
+      "bench --quick --problems tip_moment --methods elliptic --out j.h5 --json", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json out = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(out.contains("groups")) << r.out;
+  int seen = 0;
+  for (const nlohmann::json& g : out["groups"]) {
+    ASSERT_TRUE(g.contains("max_relative_error")) << g.dump();
+    if (g["method"] == "reference") {
+      EXPECT_TRUE(g["max_relative_error"].is_null()) << g.dump();
+      EXPECT_EQ(g["measured_points"], 0) << g.dump();
+      ++seen;
+    } else if (g["method"] == "elliptic") {
+      // The elliptic solver is the reference here: measured at every load, error 0.
+      EXPECT_EQ(g["measured_points"], g["points"]) << g.dump();
+      EXPECT_EQ(g["max_relative_error"], 0.0) << g.dump();
+      ++seen;
+    }
+    EXPECT_TRUE(g["median_seconds"].is_number()) << g.dump();
+  }
+  EXPECT_EQ(seen, 2) << r.out;
 }
 
 TEST(BenchResumeTest, InterruptedRunResumesFromItsCheckpoint) {
