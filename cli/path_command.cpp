@@ -260,23 +260,30 @@ void print_text(const PathTable& t, const PathArgs& args) {
                  : std::string(),
              t.message);
   const PathUnits& u = t.units;
+  const bool si = u.system == "SI";
+  const char* m = si ? " m" : "";
+  const char* N = si ? " N" : "";
+  const char* Nm = si ? " N m" : "";
   for (const PathSpecialPoint& p : t.special_points) {
+    // (+ 0.0 prints a negative zero as 0.)
     fmt::print(
-        "  {} at load factor {:.10g}{} (path point {}): tip x = {:.8g}, y = {:.8g}{}, angle = "
-        "{:.8g} rad; reaction Fx = {:.8g}, Fy = {:.8g}{}, M = {:.8g}{}{}\n",
+        "  {} at load factor {:.10g}{} (path point {}): tip x = {:.8g}{}, y = {:.8g}{}, angle = "
+        "{:.8g} rad; clamp reaction Fx = {:.8g}{}, Fy = {:.8g}{}, M = {:.8g}{}{}\n",
         p.kind == "limit_point" ? "limit point" : "bifurcation",
         p.load_factor,
         p.located ? "" : " (not located)",
         p.index >= 0 ? p.index : p.index_after,
-        p.tip_x,
-        p.tip_y,
-        u.system == "SI" ? " m" : "",
-        p.tip_theta,
-        p.reaction_Fx,
-        p.reaction_Fy,
-        u.system == "SI" ? " N" : "",
-        p.reaction_M,
-        u.system == "SI" ? " N m" : "",
+        p.tip_x + 0.0,
+        m,
+        p.tip_y + 0.0,
+        m,
+        p.tip_theta + 0.0,
+        p.reaction_Fx + 0.0,
+        N,
+        p.reaction_Fy + 0.0,
+        N,
+        p.reaction_M + 0.0,
+        Nm,
         p.switched ? "; the path left here onto the other branch" : "");
   }
   fmt::print("written to {}\n", args.out);

@@ -176,6 +176,14 @@ class PathTracer {
     Eigen::VectorXd t_other;  // the other branch's tangent (orthogonal to t_along)
   };
   Bifurcation locate_bifurcation(double ds, const Corrected& end);
+  // One or two more fixed-lambda Newton iterations to the integration noise floor, for points
+  // near a bifurcation, whose error is the residual divided by a small singular value of dg/dz
+  // (the corrector stops at 1e-10). Returns the point with both derivatives evaluated.
+  Corrected polish(const Corrected& c);
+  // The path through the point `best` found next to a bifurcation, where no corrector is well
+  // conditioned: the cubic Hermite interpolant between polished corrected points a distance
+  // delta on either side (their error stays small, the interpolant's is O(delta^4)), evaluated.
+  std::optional<Corrected> bridge(const Corrected& best, double ds);
   std::optional<std::pair<double, Corrected>> locate_fold(double ds, const Corrected& end);
   // Leaves the bifurcation `b` onto its other branch; false when no corrector lands there.
   bool switch_branch(const Bifurcation& b, int index_of_special);
@@ -398,7 +406,9 @@ PathTracer::Bifurcation PathTracer::locate_bifurcation(double ds, const Correcte
   auto found = locate(ds, end, o_.location_tolerance, singularity);
   if (!found) return b;
   b.h = found->first;
-  b.at = std::move(found->second);
+  std::optional<Corrected> at = bridge(found->second, ds);
+  if (!at) return b;
+  b.at = std::move(*at);
   // At a simple bifurcation point [J S, g_lambda] has a 2-d null space holding both branches'
   // tangents; a jump to another branch shows up as a located "root" where the corrector changes
   // branch, with no singular value near zero.
@@ -437,6 +447,66 @@ PathTracer::Bifurcation PathTracer::locate_bifurcation(double ds, const Correcte
   b.t_other = other;
   b.verified = true;
   return b;
+}
+
+Corrected PathTracer::polish(const Corrected& c) {
+  NewtonOptions tight = newton_;
+  tight.residual_tolerance = 1e-14;
+  tight.max_iterations = 2;
+  Corrected out = c;
+  double lambda = c.lambda;
+  const NewtonOutcome nw = newton_solve(problem_, integrator_, tight, out.z, lambda, nullptr);
+  path_.newton_iterations += nw.iterations;
+  if (!(nw.residual <= c.nw.residual)) out.z = c.z;  // no improvement: keep the point
+  ShootingEvaluation e;
+  if (!problem_.evaluate(out.z, c.lambda, true, true, integrator_, e)) return c;
+  out.nw.last = std::move(e);
+  out.nw.residual = std::min(nw.residual, c.nw.residual);
+  return out;
+}
+
+std::optional<Corrected> PathTracer::bridge(const Corrected& best, double ds) {
+  // The path's own direction through the point: in the 2-d null space of [J S, g_lambda] (both
+  // branches' tangents), the part along the chord from the step's start.
+  const Eigen::VectorXd u_best = scaled(best.z, best.lambda);
+  Eigen::MatrixXd A(nz_, nz_ + 1);
+  A.leftCols(nz_) = best.nw.last.jacobian * scale_.asDiagonal();
+  A.col(nz_) = best.nw.last.d_lambda;
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullV);
+  const Eigen::MatrixXd null = svd.matrixV().rightCols(2);
+  Eigen::VectorXd along = null * (null.transpose() * (u_best - u_));
+  if (!(along.norm() > 0.0)) along = t_;
+  along.normalize();
+  if (along.dot(t_) < 0.0) along = -along;
+  // Correctors on hyperplanes normal to `along`: the corrector's nearly singular direction is
+  // then the other branch's tangent, orthogonal to the path, so the points stay on the path up to
+  // an offset towards the other branch, which the polish removes.
+  const double delta = std::max(1e-3 * ds, 1e-7);
+  struct Side {
+    Eigen::VectorXd u, du;  // point and du/ds (s = along . (u - u_best))
+  };
+  std::vector<Side> sides;
+  for (const double s : {-delta, delta}) {
+    Corrected c = correct(u_best, along, s);
+    ++path_.location_corrections;
+    if (!c.ok) return std::nullopt;
+    c = polish(c);
+    const Eigen::VectorXd tau = tangent_at(c.nw.last, scale_, along, 0).t;
+    if (!(tau.dot(along) > 0.0)) return std::nullopt;
+    sides.push_back({scaled(c.z, c.lambda), tau / tau.dot(along)});
+  }
+  // Cubic Hermite at the midpoint s = 0.
+  const double w = 2.0 * delta;
+  const Eigen::VectorXd u =
+      0.5 * (sides[0].u + sides[1].u) + 0.125 * w * (sides[0].du - sides[1].du);
+  Corrected out;
+  out.z = u.head(nz_).cwiseProduct(scale_);
+  out.lambda = u[nz_];
+  out.ok = problem_.evaluate(out.z, out.lambda, true, true, integrator_, out.nw.last);
+  if (!out.ok) return std::nullopt;
+  out.nw.set_converged(true);
+  out.nw.residual = out.nw.last.residual.lpNorm<Eigen::Infinity>();
+  return out;
 }
 
 bool PathTracer::switch_branch(const Bifurcation& b, int index_of_special) {
@@ -611,6 +681,12 @@ LoadPath PathTracer::run(const Eigen::VectorXd* start) {
       if (!reject(0.5 * ds)) break;
       continue;
     }
+    if (o_.max_load_step > 0.0 && std::abs(c.lambda - lambda_) > o_.max_load_step) {
+      // The corrector moved lambda past the cap (the predictor keeps to it): shorten in
+      // proportion, with a margin.
+      if (!reject(0.95 * ds * o_.max_load_step / std::abs(c.lambda - lambda_))) break;
+      continue;
+    }
     // The tangent by continuity: a turn beyond max_turn is a corrector on another branch.
     const Tangent tn = tangent_at(c.nw.last, scale_, t_, 0);
     if (tn.t.dot(t_) < std::cos(o_.max_turn)) {
@@ -640,6 +716,16 @@ LoadPath PathTracer::run(const Eigen::VectorXd* start) {
     }
     // Accepted.
     const double step_start = arclength_;
+    if (bifurcation && bifurcation->verified) {
+      // The points on either side of a bifurcation: to the noise floor (see polish()).
+      c = polish(c);
+      if (o_.record_path && !path_.points.empty() && arclength_of_.back() == step_start &&
+          path_.points.back().status == PathStatus::kAccepted) {
+        const Corrected before = polish(current_as_corrected());
+        PathPoint& p = path_.points.back();
+        p = make_point(before.nw.last, before.z, lambda_, p.step, p.iterations, p.status);
+      }
+    }
     if (bifurcation) {
       ++bifurcations_seen;
       const bool located = bifurcation->verified;
@@ -689,6 +775,8 @@ LoadPath PathTracer::run(const Eigen::VectorXd* start) {
         }
       }
     }
+    const double t_before_lambda = t_[nz_];
+    const double step_length = ds;
     arclength_ = step_start + ds;
     z_ = c.z;
     lambda_ = c.lambda;
@@ -716,6 +804,11 @@ LoadPath PathTracer::run(const Eigen::VectorXd* start) {
       ds = std::min(ds * o_.growth, o_.max_step);
     } else if (c.nw.iterations > 2 * o_.easy_iterations) {
       ds *= 0.7;
+    }
+    const double level_rate = (t_[nz_] - t_before_lambda) / step_length;
+    if (t_[nz_] * level_rate < 0.0) {
+      ds = std::min(
+          ds, std::max(o_.level_fraction * std::abs(t_[nz_] / level_rate), o_.level_min_step));
     }
   }
   path_.message = fmt::format(

@@ -28,9 +28,15 @@ struct ContinuationOptions {
                                // path has at least 1/max_load_step points per unit of lambda
                                // (`flexure path --min-points`); 0: no such cap
   double growth = 1.6;         // step growth after an easy correction
-  int easy_iterations = 3;     // corrections in at most this many Newton iterations are easy
-  int max_steps = 500;         // accepted + rejected steps before giving up (never a hang);
-                               // paths in the test grids need at most about 70
+  // Folds hide where the tangent's lambda-component heads for zero: two of them (an S-shaped
+  // path) inside one step leave its sign unchanged at both ends and go unseen. While it falls
+  // towards zero at the rate of the last step, the next step covers at most level_fraction of the
+  // arclength to zero extrapolated from that rate, but not less than level_min_step.
+  double level_fraction = 0.5;
+  double level_min_step = 0.01;
+  int easy_iterations = 3;  // corrections in at most this many Newton iterations are easy
+  int max_steps = 500;      // accepted + rejected steps before giving up (never a hang);
+                            // paths in the test grids need at most about 70
   long max_integrator_steps = 500000;   // CVODES steps over the whole path (time budget), times
                                         // max(1, shooting intervals / 16)
   double max_predictor_distance = 0.5;  // reject a correction farther than this * step from the
