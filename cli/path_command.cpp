@@ -118,13 +118,15 @@ PathRequest make_request(const PathArgs& args) {
     }
     if (by_end) return;
     throw InvalidInput(fmt::format(
-        "{} is prescribed neither by --boundary {} nor by --control (it prescribes{}{}{}; "
-        "--control {} moves that coordinate)",
+        "{} is not prescribed by --boundary {} (it prescribes {}); --control {} moves that "
+        "coordinate as the path parameter",
         flag,
         args.boundary,
-        mask.x ? " tip x" : "",
-        mask.y ? " tip y" : "",
-        mask.theta ? " tip angle" : (mask.x || mask.y ? "" : " nothing"),
+        mask.x || mask.y || mask.theta ? fmt::format("{}{}{}",
+                                                     mask.x ? "tip x " : "",
+                                                     mask.y ? "tip y " : "",
+                                                     mask.theta ? "tip angle" : "")
+                                       : std::string("nothing"),
         flag + 2));
   };
   TipPrescription tip;

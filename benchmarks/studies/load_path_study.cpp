@@ -144,12 +144,6 @@ PathTable shooting_table(const PathRequest& r) {
   t.newton_iterations = path.newton_iterations;
   t.location_corrections = path.location_corrections;
   t.message = path.message;
-  if (r.branch > 0 && !path.switched_branch && path.bifurcation_points < r.branch) {
-    t.warnings.push_back(fmt::format(
-        "--branch {}: the path passed {} bifurcation(s), so it stayed on the path from zero load",
-        r.branch,
-        path.bifurcation_points));
-  }
   int number = 0;
   for (std::size_t i = 0; i < t.special_points.size(); ++i) {
     const PathSpecialPoint& b = t.special_points[i];

@@ -1,5 +1,6 @@
 """Every function of the module agrees with the tool's --json output on the same input: equal
 keys, numbers to 1e-12 (issue 15). The tool runs as a subprocess; the module in-process."""
+import math
 import os
 
 import pytest
@@ -46,6 +47,29 @@ def test_path(cli, tmp_path):
     assert_same(flexure.path(alpha2=3.0, mu=-1.0, out=a),
                 cli.json("path", "--alpha2", "3", "--mu", "-1", "--out", b),
                 skip=("seconds", "out"))
+
+
+def test_path_bifurcations_branch_and_control(cli, tmp_path):
+    """The keys of issue 27 (bifurcations, limit_point_list, control, shapes) come through."""
+    a, b = tmp_path / "a.h5", tmp_path / "b.h5"
+    column = flexure.path(length="1m", E="1GPa", I=1e-9, Fx="-30N", out=a)
+    assert_same(column, cli.json("path", "--length", "1m", "--E", "1GPa", "--I", "1e-9",
+                                 "--Fx", "-30N", "--out", b), skip=("seconds", "out"))
+    # pi^2/4 and 9 pi^2/4 of the load 30 N on a beam with EI = 1 N m^2, L = 1 m.
+    loads = [30.0 * p["load_factor"] for p in column["bifurcations"]]
+    assert loads == pytest.approx([math.pi ** 2 / 4, 9 * math.pi ** 2 / 4], rel=1e-8)
+    assert column["bifurcations"][0]["index_after"] == column["bifurcations"][0]["index"] + 1
+    buckled = flexure.path(length="1m", E="1GPa", I=1e-9, Fx="-3N", branch=1, out=a)
+    assert_same(buckled, cli.json("path", "--length", "1m", "--E", "1GPa", "--I", "1e-9",
+                                  "--Fx", "-3N", "--branch", "1", "--out", b),
+                skip=("seconds", "out"))
+    assert buckled["switched_branch"] is True
+    guided = flexure.path(boundary="guided", control="tip-y", tip_y=0.3, shapes=5, out=a)
+    assert_same(guided, cli.json("path", "--boundary", "guided", "--control", "tip-y",
+                                 "--tip-y", "0.3", "--shapes", "5", "--out", b),
+                skip=("seconds", "out"))
+    assert guided["control"] == "tip-y" and guided["shape_points"] == 5
+    assert flexure.read(a)["shapes"]["x"].shape == (guided["points"], 5)
 
 
 def test_sweep_and_read(cli, tmp_path):
