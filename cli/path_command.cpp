@@ -94,13 +94,14 @@ PathRequest make_request(const PathArgs& args) {
         "a physical beam (--length, --E, the section, --Fx, --Fy, --M) is loaded in newtons; do "
         "not combine it with the nondimensional --n, --alpha2, --mu, --follower or with --chain");
   }
+  // The file first: its own errors (a missing file, bad TOML) are named before the combination.
+  std::optional<SegmentChain> file_chain;
+  if (from_file) file_chain = io::read_chain_toml(args.chain_file);
   if (from_file && (howell || args.boundary != "free")) {
     throw InvalidInput(
         "--chain FILE.toml describes the whole problem (segments, loads, boundary); do not "
         "combine it with --n, --alpha2, --mu, --follower or --boundary");
   }
-  std::optional<SegmentChain> file_chain;
-  if (from_file) file_chain = io::read_chain_toml(args.chain_file);
   const EndCondition end = from_file ? file_chain->end : end_condition_from_string(args.boundary);
   const bool controlled = args.control != "load";
   const TipCoordinate coordinate = control_coordinate(args.control);

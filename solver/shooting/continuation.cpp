@@ -905,8 +905,11 @@ LoadPath continue_load_path(const ShootingProblem& problem,
                             const ContinuationOptions& options,
                             const NewtonOptions& newton,
                             const Eigen::VectorXd* start) {
+  const long before = integrator.steps_taken();
   PathTracer tracer(problem, integrator, options, newton);
-  return tracer.run(start);
+  LoadPath path = tracer.run(start);
+  path.integrator_steps = integrator.steps_taken() - before;
+  return path;
 }
 
 }  // namespace flexure

@@ -32,8 +32,8 @@ struct ContinuationOptions {
   // path) inside one step leave its sign unchanged at both ends and go unseen. While it falls
   // towards zero at the rate of the last step, the next step covers at most level_fraction of the
   // arclength to zero extrapolated from that rate, but not less than level_min_step.
-  double level_fraction = 0.5;
-  double level_min_step = 0.01;
+  double level_fraction = 0.8;
+  double level_min_step = 0.05;
   int easy_iterations = 3;  // corrections in at most this many Newton iterations are easy
   int max_steps = 500;      // accepted + rejected steps before giving up (never a hang);
                             // paths in the test grids need at most about 70
@@ -120,6 +120,7 @@ struct LoadPath : SolveStatus {
   int rejected_steps = 0;                    // halved steps
   int newton_iterations = 0;                 // summed over all corrections
   int location_corrections = 0;              // corrector solves spent locating special points
+  long integrator_steps = 0;                 // integrator steps over the whole path (its cost)
   int limit_points = 0;                      // turning points of lambda passed
   double first_limit_load_factor = 0.0;      // load factor at the first turning point (located)
   int bifurcation_points = 0;                // simple bifurcation points crossed (or switched at)

@@ -289,6 +289,7 @@ void append_stage(LoadPath& joined, const LoadPath& later, int stage) {
   joined.rejected_steps += later.rejected_steps;
   joined.newton_iterations += later.newton_iterations;
   joined.location_corrections += later.location_corrections;
+  joined.integrator_steps += later.integrator_steps;
   joined.limit_points += later.limit_points;
   joined.bifurcation_points += later.bifurcation_points;
   joined.switched_branch = joined.switched_branch || later.switched_branch;
