@@ -186,7 +186,8 @@ class PathTracer {
   std::optional<Corrected> bridge(const Corrected& best, double ds);
   std::optional<std::pair<double, Corrected>> locate_fold(double ds, const Corrected& end);
   // Leaves the bifurcation `b` onto its other branch; false when no corrector lands there.
-  bool switch_branch(const Bifurcation& b, int index_of_special);
+  // `local_step`: the step that passed it (the path's own scale there).
+  bool switch_branch(const Bifurcation& b, int index_of_special, double local_step);
 
   const ShootingProblem& problem_;
   ElasticaIntegrator& integrator_;
@@ -396,13 +397,26 @@ std::optional<std::pair<double, Corrected>> PathTracer::locate_fold(double ds,
 PathTracer::Bifurcation PathTracer::locate_bifurcation(double ds, const Corrected& end) {
   Bifurcation b;
   const BorderedTest test(end.nw.last.jacobian * scale_.asDiagonal());
-  auto singularity = [&](const Corrected& c) {
+  auto bordered = [&](const Corrected& c) {
     return test(c.nw.last.jacobian * scale_.asDiagonal());
   };
-  const double g0 = singularity(current_as_corrected()), g1 = singularity(end);
-  if (!(std::isfinite(g0) && std::isfinite(g1)) || g0 == 0.0 || (g0 > 0.0) == (g1 > 0.0)) {
+  auto determinant = [&](const Corrected& c) {
+    return normalized_determinant(c.nw.last.jacobian, scale_);
+  };
+  auto brackets = [](double g0, double g1) {
+    return std::isfinite(g0) && std::isfinite(g1) && g0 != 0.0 && (g0 > 0.0) != (g1 > 0.0);
+  };
+  // The bordered function is the better scaled, but its border comes from one end of the step:
+  // where the smallest singular vectors turn much within the step, det M may change sign too and
+  // g = det A / det M then keeps its sign (the clamped-clamped beam at the start of its second
+  // stage). The normalized determinant always changes sign with det J.
+  const bool use_bordered = brackets(bordered(current_as_corrected()), bordered(end));
+  if (!use_bordered && !brackets(determinant(current_as_corrected()), determinant(end))) {
     return b;
   }
+  auto singularity = [&](const Corrected& c) {
+    return use_bordered ? bordered(c) : determinant(c);
+  };
   auto found = locate(ds, end, o_.location_tolerance, singularity);
   if (!found) return b;
   b.h = found->first;
@@ -509,28 +523,40 @@ std::optional<Corrected> PathTracer::bridge(const Corrected& best, double ds) {
   return out;
 }
 
-bool PathTracer::switch_branch(const Bifurcation& b, int index_of_special) {
+bool PathTracer::switch_branch(const Bifurcation& b, int index_of_special, double local_step) {
   const Eigen::VectorXd u_star = scaled(b.at.z, b.at.lambda);
-  const double h = o_.branch_switch_step;
-  const ChainPose tip_star{b.at.nw.last.tip.x, b.at.nw.last.tip.y, b.at.nw.last.tip.theta};
-  // Which way the tip moves along +t_other: y, or theta when y does not move. The half-branch
-  // asked for is the one on which that coordinate increases (branch_side +1) or decreases.
+  // Which way the new branch goes: the tip's y, or its angle when the end holds y, or the clamp's
+  // bending moment m(0) when the end holds both. The half-branch asked for is the one on which
+  // that quantity increases (branch_side +1) or decreases.
+  const PrescribedMask& held = problem_.mask();
+  auto side_of = [&](const Corrected& c) {
+    if (!held.y) return c.nw.last.tip.y - b.at.nw.last.tip.y;
+    if (!held.theta) return c.nw.last.tip.theta - b.at.nw.last.tip.theta;
+    return c.z[0] - b.at.z[0];
+  };
+  // The first step is branch_switch_step, or four times the step that passed the point where the
+  // path's own scale is smaller (a clamped-clamped beam at the start of its second stage passes
+  // its bifurcation in steps of 1e-6); a step that lands nowhere is retried a quarter as long.
   std::optional<Corrected> chosen;
   Eigen::VectorXd direction;
-  for (const double sign : {1.0, -1.0}) {
-    const Eigen::VectorXd d = sign * b.t_other;
-    Corrected c = correct(u_star, d, h);
-    if (!c.ok || c.moved > o_.max_predictor_distance * h) continue;
-    const double dy = c.nw.last.tip.y - tip_star.y;
-    const double dtheta = c.nw.last.tip.theta - tip_star.theta;
-    const double side = std::abs(dy) > 1e-9 * h ? dy : dtheta;
-    if ((side > 0.0) == (o_.branch_side > 0)) {
-      chosen = std::move(c);
-      direction = d;
-      break;
+  double h = std::min(o_.branch_switch_step, 4.0 * local_step);
+  for (int attempt = 0; attempt < 12 && !chosen; ++attempt, h *= 0.25) {
+    for (const double sign : {1.0, -1.0}) {
+      const Eigen::VectorXd d = sign * b.t_other;
+      Corrected c = correct(u_star, d, h);
+      if (!c.ok || c.moved > o_.max_predictor_distance * h) continue;
+      if ((side_of(c) > 0.0) == (o_.branch_side > 0)) {
+        chosen = std::move(c);
+        direction = d;
+        break;
+      }
     }
   }
   if (!chosen) return false;
+  // Still next to the bifurcation, where the residual is divided by a small singular value (and
+  // the tangent with it): to the noise floor first.
+  chosen = polish(*chosen);
+  h = (scaled(chosen->z, chosen->lambda) - u_star).norm();
   // Now on the other branch: continue away from the bifurcation, oriented by continuity.
   ++branch_;
   const Tangent tn = tangent_at(chosen->nw.last, scale_, direction, 0);
@@ -739,13 +765,13 @@ LoadPath PathTracer::run(const Eigen::VectorXd* start) {
       }
       if (located && o_.switch_at_bifurcation == bifurcations_seen) {
         arclength_ = step_start + bifurcation->h;
-        if (switch_branch(*bifurcation, static_cast<int>(path_.special_points.size()) - 1)) {
+        if (switch_branch(*bifurcation, static_cast<int>(path_.special_points.size()) - 1, ds)) {
           ++path_.steps;
           path_.z = z_;
           path_.lambda = lambda_;
           path_.tip = ChainPose{eval_.tip.x, eval_.tip.y, eval_.tip.theta};
           path_.tip_state = eval_.tip;
-          ds = std::max(o_.branch_switch_step, std::min(ds, 2.0 * o_.branch_switch_step));
+          ds = std::min(ds, 2.0 * o_.branch_switch_step);
           continue;
         }
         path_.message = fmt::format(

@@ -9,9 +9,10 @@
 //    over the root moment m0 (each m0 solved for lambda by Newton), to 1e-8; the row marked as a
 //    limit point holds the largest (smallest) load factor of its neighbourhood;
 //  * the buckled cantilever and guided column reached by switching at the first bifurcation
-//    against the elastica of a pure end force: P L^2/EI = 4 K(k)^2 ... for the cantilever
-//    K(k) = sqrt(P), x = 2E/K - 1, y = 2k/K (Timoshenko & Gere §2.7); the guided column is two
-//    such half-length cantilevers (antisymmetry), to 1e-8;
+//    against the elastica of a pure end force: for the cantilever K(k) = sqrt(P L^2/EI),
+//    x = 2E/K - 1, y = 2k/K (Timoshenko & Gere §2.7); the guided column is two such half-length
+//    cantilevers (antisymmetry), to 1e-8; the clamped-clamped beam's first mode (four quarter
+//    waves: P = 16 K^2) reached from its second-mode path, to 1e-5 (its tip offset's effect);
 //  * displacement control of a guided beam moved transversely: the support force against the
 //    linear stiffness 12 EI/L^3 at small deflection, and every path point against a force-
 //    controlled shooting solve with the path's force (tip y to 1e-9);
@@ -253,6 +254,44 @@ TEST(ShootingBifurcation, BranchSwitchingReachesTheBuckledGuidedColumn) {
   EXPECT_NEAR(path.points.back().tip.x, 2.0 * E / K - 1.0, kState);
   EXPECT_NEAR(path.points.back().tip.y, 2.0 * k / K, kState);
   EXPECT_NEAR(path.points.back().tip.theta, 0.0, kState);
+}
+
+TEST(ShootingBifurcation, ClampedClampedBeamSwitchesToItsFirstMode) {
+  disable_gsl_abort();
+  // Both ends clamped, the far end moved to x = 0.9 with a tip offset y = 1e-3 (a straight beam
+  // cannot start shortening): proportional loading follows the antisymmetric second mode and
+  // passes the first mode's bifurcation at 4 pi^2 early in its second stage; switching there gives
+  // the symmetric first mode: four quarter waves, each a cantilever of length 1/4 under P, so
+  // P = 16 K(k)^2 with x = 2E/K - 1 = 0.9 and the clamp moment 2 k sqrt(P). The offset shifts
+  // these by about 1e-6 relative.
+  SegmentChain chain = uniform_cantilever(EndLoad{});
+  chain.end = EndCondition::kFixed;
+  chain.prescribed.x = 0.9;
+  chain.prescribed.y = 1e-3;
+  ShootingSolver::Options options;
+  options.continuation.switch_at_bifurcation = 1;
+  const LoadPath path = ShootingSolver(options).load_path(chain);
+  ASSERT_TRUE(path.converged()) << path.message;
+  ASSERT_TRUE(path.switched_branch);
+  const SpecialPoint& b = path.special_points.front();
+  EXPECT_EQ(b.kind, SpecialPointKind::kBifurcation);
+  EXPECT_EQ(b.stage, 2);
+  EXPECT_NEAR(b.reaction.Fx / (4.0 * kPi * kPi), 1.0, 1e-5);
+  double lo = 0.0, hi = 0.99;  // E(k)/K(k) = 0.95 falls with k
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (E_of(mid) / K_of(mid) > 0.95 ? lo : hi) = mid;
+  }
+  const double k = 0.5 * (lo + hi);
+  const double P = 16.0 * K_of(k) * K_of(k);
+  const PathPoint& end = path.points.back();
+  EXPECT_NEAR(end.tip.x, 0.9, 1e-9);
+  EXPECT_NEAR(end.reaction.Fx / P, 1.0, 1e-5);
+  EXPECT_NEAR(std::abs(end.reaction.M) / (2.0 * k * std::sqrt(P)), 1.0, 1e-5);
+  // Without switching the path ends on the second mode (the clamp moment nearly vanishes).
+  const LoadPath second = ShootingSolver().load_path(chain);
+  ASSERT_TRUE(second.converged()) << second.message;
+  EXPECT_GT(second.points.back().reaction.Fx, 80.0);
 }
 
 TEST(ShootingBifurcation, NoBranchToSwitchToLeavesThePathAlone) {
