@@ -57,13 +57,14 @@ struct ContinuationOptions {
   // folds are only counted at the step after them (the point after is marked kLimitPoint).
   bool locate_special_points = true;
   double location_tolerance = 1e-11;  // arclength bracket of a located special point (scaled)
-  double singular_tolerance = 1e-6;   // a located bifurcation must have sigma_min / sigma_max of
-                                      // [dg/dz S, dg/dlambda] below this (else: a branch jump)
+  double singular_tolerance = 1e-6;   // a located bifurcation must have the second-smallest
+                                      // singular value of [dg/dz S, dg/dlambda] below this times
+                                      // its size over the step (else: a branch jump)
   // Branch switching: at the switch_at_bifurcation-th bifurcation (counted from 1 along the path;
   // 0 = never) the path leaves onto the other branch through it, along the null direction of
   // [dg/dz S, dg/dlambda] orthogonal to the path's tangent, by a first step of branch_switch_step;
-  // branch_side +1 takes the half-branch on which the tip moves to +y (to +theta when y stays),
-  // -1 the other.
+  // branch_side +1 takes the half-branch on which the tip moves to +y (to +theta when the end holds
+  // y, the clamp's moment m(0) grows when it holds both), -1 the other.
   int switch_at_bifurcation = 0;
   int branch_side = 1;
   double branch_switch_step = 0.02;
