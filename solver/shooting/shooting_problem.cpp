@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
+
+#include "flexure/solver/common/errors.h"
 
 namespace flexure {
 
@@ -34,12 +37,24 @@ ShootingProblem::ShootingProblem(const SegmentChain& chain,
   chain_.validate();
   mask_ = homotopy_.mask.value_or(prescribed_mask(chain_.end));
   const PrescribedMask full = prescribed_mask(chain_.end);
-  if ((mask_.x && !full.x) || (mask_.y && !full.y) || (mask_.theta && !full.theta)) {
-    throw std::logic_error("ShootingProblem: a homotopy may only release prescribed coordinates");
+  // A coordinate the homotopy prescribes beyond the end condition takes the place of its given
+  // tip load, which must then be zero (segment_chain.h: the load is the support's reaction).
+  const std::pair<bool, double> added[] = {{mask_.x && !full.x, chain_.tip_load.Fx},
+                                           {mask_.y && !full.y, chain_.tip_load.Fy},
+                                           {mask_.theta && !full.theta, chain_.tip_load.M}};
+  const char* names[] = {"x (its tip force Fx", "y (its tip force Fy", "angle (its tip moment M"};
+  for (int i = 0; i < 3; ++i) {
+    if (added[i].first && added[i].second != 0.0) {
+      throw InvalidInput(fmt::format(
+          "a controlled tip {}) must be 0 (got {:g}): it is the reaction of the support that "
+          "moves the tip",
+          names[i],
+          added[i].second));
+    }
   }
   tip_unloaded_ = chain_.unloaded_tip();
   tip_start_ = homotopy_.tip_start.value_or(tip_unloaded_);
-  tip_target_ = chain_.prescribed_tip();
+  tip_target_ = homotopy_.tip_target.value_or(chain_.prescribed_tip());
   const bool follower = chain_.tip_load.follower != 0.0;
   unknown_names_.push_back("m0");
   if (mask_.x || follower) {

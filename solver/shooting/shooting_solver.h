@@ -48,9 +48,11 @@ struct ShootingResult : SolveStatus {
   // iterations: Newton iterations, summed over continuation steps
   int continuation_steps = 0;  // accepted continuation steps (0 for a direct solve)
   int limit_points = 0;        // folds of the load factor passed on the path (snap-through)
-  double first_limit_load_factor = 0.0;  // load factor at the first of them
-  int shooting_intervals = 1;            // 1 = single shooting; more = multiple shooting cuts + 1
-  long integrator_steps = 0;             // integrator steps taken in all integrations of this solve
+  double first_limit_load_factor = 0.0;      // load factor at the first of them (located)
+  int bifurcation_points = 0;                // simple bifurcation points passed on the path
+  std::vector<SpecialPoint> special_points;  // the folds and bifurcations, located
+  int shooting_intervals = 1;  // 1 = single shooting; more = multiple shooting cuts + 1
+  long integrator_steps = 0;   // integrator steps taken in all integrations of this solve
   // residual: max |g_i| of the far-end conditions at the returned point
   double load_factor = 0.0;  // load factor reached (1 when converged)
 
@@ -69,6 +71,15 @@ struct ShootingResult : SolveStatus {
 };
 
 enum class ShootingStrategy { kAuto, kContinuation, kDirect };
+
+// Displacement control of a path (ShootingSolver::controlled_path): a tip coordinate is moved
+// and is the path parameter, instead of the loads growing in proportion.
+enum class TipCoordinate { kX, kY, kTheta };
+const char* to_string(TipCoordinate coordinate);  // "tip-x", "tip-y", "tip-angle"
+struct DisplacementControl {
+  TipCoordinate coordinate = TipCoordinate::kY;
+  double target = 0.0;  // the coordinate's value at the end of the path (root frame; rad)
+};
 
 // Contraction constant of the elastica map theta -> integral of m/EI for a chain with a free end
 // and dead loads only; below 1 the equilibrium is unique for any end moment. Returns +infinity when
@@ -125,6 +136,17 @@ class ShootingSolver {
   // fraction of the released coordinate's travel, loads at full value).
   LoadPath load_path(const SegmentChain& chain) const;
 
+  // Path under displacement control: stage 1 applies the given loads by proportional loading
+  // (load_path(), recorded; skipped when the chain carries no load and prescribes no motion) with
+  // the controlled coordinate held at its unloaded value when the end condition prescribes it,
+  // free otherwise; the last stage moves the controlled coordinate linearly from where stage 1
+  // left it to `control.target` with the loads at full value (lambda = fraction moved), so the
+  // support's reaction (PathPoint::tip_load) traced against the coordinate is the
+  // force-displacement curve. The end condition's other prescribed coordinates stay at their
+  // targets; the load conjugate to the controlled coordinate must be zero (it is the reaction).
+  // Throws InvalidInput for a target the chain cannot reach.
+  LoadPath controlled_path(const SegmentChain& chain, const DisplacementControl& control) const;
+
   const Options& options() const { return options_; }
 
  private:
@@ -151,5 +173,8 @@ class ShootingSolver {
 // CLI entry points.
 ShootingResult solve_shooting(const SegmentChain& chain, const ShootingSolver::Options& options);
 LoadPath trace_load_path(const SegmentChain& chain, const ShootingSolver::Options& options);
+LoadPath trace_controlled_path(const SegmentChain& chain,
+                               const DisplacementControl& control,
+                               const ShootingSolver::Options& options);
 
 }  // namespace flexure
