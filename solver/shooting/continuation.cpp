@@ -77,6 +77,12 @@ PathPoint make_point(const ShootingProblem& problem,
 
 }  // namespace
 
+int jacobian_sign(const ShootingEvaluation& eval) {
+  if (eval.jacobian.size() == 0) return 0;
+  const double det = eval.jacobian.partialPivLu().determinant();
+  return det > 0.0 ? 1 : (det < 0.0 ? -1 : 0);
+}
+
 bool singular_jacobian(const ShootingEvaluation& eval) {
   Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(eval.jacobian);
   qr.setThreshold(1e-10);
@@ -188,6 +194,7 @@ LoadPath continue_load_path(const ShootingProblem& problem,
         path.tip = ChainPose{nw.last.tip.x, nw.last.tip.y, nw.last.tip.theta};
         path.tip_state = nw.last.tip;
         path.set_converged(true);
+        path.jacobian_sign = jacobian_sign(at_end);
         if (options.record_path) {
           path.points.push_back(
               make_point(problem, nw.last, z, 1.0, h, nw.iterations, PathStatus::kEnd));
