@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flexure/solver/chain/chain_constrained.h"
 #include "flexure/solver/chain/chain_discretisation.h"
 #include "flexure/solver/chain/chain_fixed_point.h"
 #include "flexure/solver/chain/chain_pass.h"
@@ -74,6 +75,8 @@ ChainNodeLoads loads_at(const Problem& p, double lambda, const Eigen::Vector3d& 
   return loads;
 }
 
+Trial with_residual(const Problem& p, double lambda, Trial t);
+
 Trial evaluate(const Problem& p,
                const Evaluation& how,
                double lambda,
@@ -104,6 +107,11 @@ Trial evaluate(const Problem& p,
       return t;
     }
   }
+  return with_residual(p, lambda, std::move(t));
+}
+
+// The tip residual (eq. 7.37) of a trial's geometry at load factor lambda.
+Trial with_residual(const Problem& p, double lambda, Trial t) {
   const int E = p.d.element_count();
   const double tip[3] = {t.geometry.x[E], t.geometry.y[E], t.geometry.theta[E]};
   const double start[3] = {p.start.x, p.start.y, p.start.theta};
@@ -144,6 +152,35 @@ StepOutcome solve_step(const Problem& p,
                        const ChainAlgorithmSolver::Options& options) {
   StepOutcome out;
   out.z = z_guess;
+  if (!p.unknowns.empty() && !how.single_pass && options.constrained_passes) {
+    // Passes that meet the tip conditions as they go (chain_constrained.h).
+    ConstrainedTip tip;
+    tip.unknowns = p.unknowns;
+    const double start[3] = {p.start.x, p.start.y, p.start.theta};
+    const double target[3] = {p.target.x, p.target.y, p.target.theta};
+    for (int c = 0; c < 3; ++c) {
+      tip.wanted[c] = start[c] + lambda * (target[c] - start[c]);  // eq. 7.37, moved with lambda
+      tip.unknown_scale[c] = p.unknown_scale[c];
+    }
+    tip.tolerance = options.shooting_tolerance;
+    ChainGeometry geometry = base;
+    const ConstrainedReport r = converge_constrained_chain(
+        p.d, loads_at(p, lambda, Eigen::Vector3d::Zero()), tip, out.z, geometry, how.fixed_point);
+    out.passes = r.passes;
+    out.newton_iterations = r.iterations;  // each iteration corrects the reactions
+    if (!r.converged()) {
+      out.failure = r.failure;
+      return out;
+    }
+    Trial converged;
+    converged.geometry = std::move(geometry);
+    converged.passes = r.passes;
+    converged.change = r.change;
+    out.trial = with_residual(p, lambda, std::move(converged));
+    out.ok = out.trial.ok;
+    if (!out.ok) out.failure = out.trial.failure;
+    return out;
+  }
   Trial current = evaluate(p, how, lambda, out.z, base);
   out.passes += current.passes;
   if (!current.ok) {
