@@ -411,6 +411,61 @@ std::string representation_problem(const SegmentChain& chain,
   return {};
 }
 
+// The flexible elements that represent the load (the self-check of representation_problem), as
+// predicted from the coarse chain's answer: the elements are refined by doublings of the requested
+// count, as a failed check would, but before the requested chain is solved, so that it is solved
+// once. Each coarse element's curvature beyond the stress-free one is its turn over its length;
+// the peak inside it is extrapolated from its neighbours' (half the difference: the curvature of a
+// cantilever peaks at the clamp, where an element average lies below it), and a fine element turns
+// by that curvature times its length, which must stay within max_element_rotation (as the check
+// asks; where the prediction falls short, the check still fails and doubles).
+int predicted_elements(const SegmentChain& chain,
+                       const std::vector<ShapePoint>& coarse_nodes,
+                       const ChainAlgorithmSolver::Options& o) {
+  std::vector<double> ends;
+  double s = 0.0, flexible_length = 0.0;
+  for (const Segment& segment : chain.segments) {
+    const double length = std::visit([](const auto& seg) { return seg.length; }, segment);
+    s += length;
+    ends.push_back(s);
+    if (std::holds_alternative<FlexibleSegment>(segment)) flexible_length += length;
+  }
+  // Signed curvature beyond kappa0 of each coarse element and its segment (-1: rigid).
+  std::vector<double> kappa;
+  std::vector<int> segment_of;
+  for (std::size_t i = 0; i + 1 < coarse_nodes.size(); ++i) {
+    const ShapePoint& a = coarse_nodes[i];
+    const ShapePoint& b = coarse_nodes[i + 1];
+    const double h = b.s - a.s;
+    const std::size_t k = static_cast<std::size_t>(std::min<std::ptrdiff_t>(
+        std::upper_bound(ends.begin(), ends.end(), 0.5 * (a.s + b.s)) - ends.begin(),
+        static_cast<std::ptrdiff_t>(ends.size()) - 1));
+    const auto* flexible = std::get_if<FlexibleSegment>(&chain.segments[k]);
+    if (flexible == nullptr || !(h > 0.0)) {
+      kappa.push_back(0.0);
+      segment_of.push_back(-1);
+      continue;
+    }
+    kappa.push_back((b.theta - a.theta - flexible->kappa0 * h) / h);
+    segment_of.push_back(static_cast<int>(k));
+  }
+  double peak = 0.0;
+  for (std::size_t i = 0; i < kappa.size(); ++i) {
+    if (segment_of[i] < 0) continue;
+    double here = std::fabs(kappa[i]);
+    for (std::size_t j : {i - 1, i + 1}) {  // i - 1 wraps to a huge index at i = 0
+      if (j < kappa.size() && segment_of[j] == segment_of[i]) {
+        here = std::max(here, std::fabs(kappa[i]) + 0.5 * std::fabs(kappa[i] - kappa[j]));
+      }
+    }
+    peak = std::max(peak, here);
+  }
+  const double needed = peak * flexible_length / o.max_element_rotation;
+  int elements = o.elements;
+  while (elements < needed && 2 * elements <= o.max_elements) elements *= 2;
+  return elements;
+}
+
 }  // namespace
 
 ChainResult ChainAlgorithmSolver::solve(const SegmentChain& chain) const {
@@ -420,6 +475,8 @@ ChainResult ChainAlgorithmSolver::solve(const SegmentChain& chain) const {
   Options o = options_;
   for (;;) {
     ChainResult r = solve_once(chain, o);
+    // The count the coarse path predicted, if it refined (solve_once).
+    if (r.elements > o.elements) o.elements = r.elements;
     if (!r.converged()) return r;
     const std::string problem = representation_problem(chain, r, o.max_element_rotation);
     if (!problem.empty()) {
@@ -456,8 +513,10 @@ ChainResult ChainAlgorithmSolver::solve(const SegmentChain& chain) const {
   }
 }
 
-ChainResult ChainAlgorithmSolver::solve_once(const SegmentChain& chain, const Options& o) const {
-  const Problem p = make_problem(chain, o.elements);
+ChainResult ChainAlgorithmSolver::solve_once(const SegmentChain& chain,
+                                             const Options& requested) const {
+  Options o = requested;
+  Problem p = make_problem(chain, o.elements);
   const bool corrected = o.variant == ChainVariant::kCorrected;
 
   Evaluation how;
@@ -551,6 +610,17 @@ ChainResult ChainAlgorithmSolver::solve_once(const SegmentChain& chain, const Op
     co.shooting_tolerance = std::max(o.shooting_tolerance, kCoarseTolerance);
     const ChainResult c = solve_once(chain, co);
     r.iterations += c.iterations;
+    if (c.converged() && o.refine_elements && o.predict_elements) {
+      // Enough elements for this load from the start (predicted_elements), instead of solving
+      // on the requested count, failing the representation check and solving again.
+      const int elements = predicted_elements(chain, c.nodes, o);
+      if (elements > o.elements) {
+        o.elements = elements;
+        p = make_problem(chain, elements);
+        r.elements = p.d.flexible_elements;
+        geometry = unloaded_geometry(p.d);
+      }
+    }
     if (c.converged()) {
       ChainGeometry coarse_geometry;
       for (const ShapePoint& q : c.nodes) {

@@ -115,6 +115,10 @@ class ChainAlgorithmSolver {
     // refine_elements is set, and is reported as not converged otherwise.
     double max_element_rotation = 0.2;
     bool refine_elements = true;
+    // With refine_elements and the coarse path: the doublings the load needs are predicted from
+    // the coarse chain's answer before the requested chain is solved, so that it is solved once
+    // (docs/theory-chain.md, "Self-checks"). false: solve, check, double and solve again.
+    bool predict_elements = true;
     int max_elements = 6400;
   };
 
@@ -129,7 +133,7 @@ class ChainAlgorithmSolver {
   const Options& options() const { return options_; }
 
  private:
-  ChainResult solve_once(const SegmentChain& chain, const Options& options) const;
+  ChainResult solve_once(const SegmentChain& chain, const Options& requested) const;
   Options options_;
 };
 
