@@ -94,7 +94,7 @@ class ChainAlgorithmSolver {
     // with a free end, which needed over a million passes for a guided end under compression
     // (docs/theory-chain.md §5).
     bool constrained_passes = true;
-    int max_newton_iterations = 30;  // per increment
+    int max_newton_iterations = 30;  // per increment (constrained_passes = false only)
     // Converge the passes at a fixed load with Anderson acceleration and the implicit own
     // rotation of each element (chain_pass.h). The fixed point is the same; false gives Howell's
     // plain passes, whose convergence slows down badly as the load grows (57 passes at
