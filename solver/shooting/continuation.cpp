@@ -680,6 +680,7 @@ LoadPath PathTracer::run(const Eigen::VectorXd* start) {
         path_.tip = ChainPose{nw.last.tip.x, nw.last.tip.y, nw.last.tip.theta};
         path_.tip_state = nw.last.tip;
         path_.set_converged(true);
+        path_.jacobian_sign = jacobian_sign(at_end);
         if (o_.record_path) {
           record(make_point(nw.last, z_, 1.0, h, nw.iterations, PathStatus::kEnd), arclength_ + h);
         }
@@ -852,6 +853,12 @@ LoadPath PathTracer::run(const Eigen::VectorXd* start) {
 }
 
 }  // namespace
+
+int jacobian_sign(const ShootingEvaluation& eval) {
+  if (eval.jacobian.size() == 0) return 0;
+  const double det = eval.jacobian.partialPivLu().determinant();
+  return det > 0.0 ? 1 : (det < 0.0 ? -1 : 0);
+}
 
 bool singular_jacobian(const ShootingEvaluation& eval) {
   Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(eval.jacobian);

@@ -133,7 +133,15 @@ struct LoadPath : SolveStatus {
   // residual: at the last accepted point
   ChainPose tip;       // tip pose at the last accepted point
   TipState tip_state;  // tip state (with the bending moment) at the last accepted point
+  // Sign of det dg/dz at the end point when the path converged (0 otherwise): it changes at every
+  // limit point and bifurcation point, so a neighbouring load's solution with the same sign and a
+  // short, undamped Newton step lies on the same smooth stretch of branch (ShootingSolver::
+  // solve_near).
+  int jacobian_sign = 0;
 };
+
+// Sign of det dg/dz of an evaluation with its Jacobian (0 when it is exactly singular).
+int jacobian_sign(const ShootingEvaluation& eval);
 
 // Follows the path from lambda = 0 to lambda = 1 (or until it stops), starting from `start`
 // (which must solve g(start, 0) = 0; default: problem.unloaded_unknowns()). Stops at once, with

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/shooting/inflection_count.h"
 
 namespace flexure {
 
@@ -65,6 +66,9 @@ void ShootingSolver::Options::validate() const {
     throw InvalidInput(
         fmt::format("path shape points must be 0 (none) or >= 2 (got {})", c.shape_points));
   }
+  if (!(max_neighbour_jump > 0.0)) {
+    throw InvalidInput(fmt::format("max_neighbour_jump must be > 0 (got {})", max_neighbour_jump));
+  }
 }
 
 const char* to_string(TipCoordinate coordinate) {
@@ -78,6 +82,24 @@ const char* to_string(TipCoordinate coordinate) {
   }
   return "unknown";
 }
+
+namespace {
+
+// Newton's recorder of the curvature (inflection_count.h) when the inflection points are wanted
+// and the backend shows its steps; null otherwise (finish() then counts on an integration of its
+// own).
+CurvatureRecorder* curvature_recorder(const ShootingSolver::Options& options,
+                                      CurvatureRecorder& recorder) {
+  const bool explicit_rk = options.backend == ElasticaIntegrator::Backend::kRk8pd ||
+                           options.backend == ElasticaIntegrator::Backend::kDormandPrince;
+  return options.count_inflections && explicit_rk ? &recorder : nullptr;
+}
+
+void take_count(const CurvatureRecorder& recorder, ShootingResult& result) {
+  if (recorder.has_accepted()) result.inflection_points = recorder.inflection_points();
+}
+
+}  // namespace
 
 double unique_equilibrium_bound(const SegmentChain& chain) {
   chain.validate();
@@ -142,6 +164,17 @@ ShootingResult ShootingSolver::finish(const ShootingProblem& problem,
   result.reaction = problem.reaction(z, lambda);
   const ChainForces forces = problem.forces(z, lambda);
   const Eigen::Vector2d N_tip = forces.N.back();
+  InflectionCount count;
+  if (options_.count_inflections && result.converged() && result.inflection_points < 0) {
+    std::string error;
+    if (!count_inflections(problem, z, lambda, integrator, count, error)) {
+      result.set_converged(false);
+      result.message += "; final integration failed: " + error;
+      return result;
+    }
+    result.inflection_points = count.inflection_points;
+    known_tip = &count.tip;
+  }
   if (known_tip != nullptr && options_.shape_points <= 1) {
     result.tip = ChainPose{known_tip->x, known_tip->y, known_tip->theta};
     result.tip_load = Reaction{N_tip.x(), N_tip.y(), known_tip->m};
@@ -187,14 +220,23 @@ ShootingResult ShootingSolver::solve(const SegmentChain& chain) const {
       // Linear theory: z(1) ~ z(0) + dz/dlambda, the path tangent at zero load.
       Eigen::VectorXd z = z0 + robust_solve(start.jacobian, -start.d_lambda);
       double lambda = 1.0;
-      NewtonOutcome nw = newton_solve(problem, integrator, options_.newton, z, lambda, nullptr);
+      CurvatureRecorder recorder;
+      NewtonOutcome nw = newton_solve(problem,
+                                      integrator,
+                                      options_.newton,
+                                      z,
+                                      lambda,
+                                      nullptr,
+                                      curvature_recorder(options_, recorder));
       result.iterations += nw.iterations;
       if (nw.converged()) {
+        take_count(recorder, result);
         result.set_converged(true);
         result.method = "direct Newton";
         result.path = ShootingPath::kDirectNewton;
         result.residual = nw.residual;
         result.message = nw.message;
+        result.jacobian_sign = jacobian_sign(nw.last);
         return finish(problem, integrator, z, 1.0, result, &nw.last.tip);
       }
     }
@@ -225,6 +267,7 @@ ShootingResult ShootingSolver::solve(const SegmentChain& chain) const {
   result.residual = path.residual;
   result.set_converged(path.converged());
   result.message = path.message;
+  result.jacobian_sign = path.jacobian_sign;
   if (!path.converged()) {
     // Report the furthest equilibrium that was reached.
     result.message = fmt::format("not converged: {}", path.message);
@@ -441,7 +484,103 @@ ShootingResult ShootingSolver::solve_from(const SegmentChain& chain,
   result.residual = nw.residual;
   result.set_converged(nw.converged());
   result.message = nw.message;
+  if (nw.converged()) result.jacobian_sign = jacobian_sign(nw.last);
   return finish(problem, integrator, z, nw.converged() ? 1.0 : 0.0, result);
+}
+
+ShootingResult ShootingSolver::solve_near(const SegmentChain& chain,
+                                          const ShootingNeighbour& neighbour) const {
+  options_.validate();
+  const ShootingProblem problem(chain, options_.multiple_shooting);
+  ShootingResult result;
+  result.method = "Newton from the neighbouring load";
+  result.path = ShootingPath::kFromNeighbour;
+  const auto refuse = [&](std::string why) {
+    result.set_converged(false);
+    result.message = "not taken from the neighbouring load: " + std::move(why);
+    return result;
+  };
+  const int nz = problem.size();
+  const int root = problem.root_unknown_count();
+  const std::vector<double>& start =
+      neighbour.predicted.empty() ? neighbour.unknowns : neighbour.predicted;
+  if (neighbour.unknowns.size() < static_cast<std::size_t>(root) ||
+      (!neighbour.predicted.empty() && neighbour.predicted.size() != neighbour.unknowns.size())) {
+    throw InvalidInput(fmt::format(
+        "a neighbour needs at least the {} root unknowns, and a prediction as many unknowns as "
+        "the neighbour",
+        root));
+  }
+  if (neighbour.jacobian_sign == 0) return refuse("the sign of its Jacobian is not known");
+  for (double v : start) require_finite(v, "neighbouring unknowns");
+  require_reachable_tip(chain);
+  ElasticaIntegrator integrator(options_.integrator_options());
+  Eigen::VectorXd z;
+  if (static_cast<int>(start.size()) == nz) {
+    z = Eigen::Map<const Eigen::VectorXd>(start.data(), nz);
+  } else {
+    // Other multiple-shooting cuts: the root unknowns carry over, the cut states come from one
+    // integration from the root. (The sign of det dg/dz does not depend on the cuts: the
+    // continuity rows eliminate to the single-shooting Jacobian, docs/theory-shooting.md.)
+    std::string error;
+    const Eigen::VectorXd head = Eigen::Map<const Eigen::VectorXd>(start.data(), root);
+    if (!problem.complete_guess(head, 1.0, integrator, z, error)) {
+      return refuse("integration from its root unknowns failed: " + error);
+    }
+  }
+  double lambda = 1.0;
+  CurvatureRecorder recorder;
+  const NewtonOutcome nw = newton_solve(problem,
+                                        integrator,
+                                        options_.newton,
+                                        z,
+                                        lambda,
+                                        nullptr,
+                                        curvature_recorder(options_, recorder));
+  result.iterations = nw.iterations;
+  result.residual = nw.residual;
+  result.integrator_steps = integrator.steps_taken();
+  // The checks of the header comment, in order; the first that fails is the reason.
+  constexpr double kMaxContraction = 0.25;
+  if (!nw.converged()) return refuse(nw.message);
+  if (nw.damped) return refuse("Newton needed a damped step (a start far from the root)");
+  if (nw.contraction > kMaxContraction) {
+    return refuse(fmt::format(
+        "Newton's steps shrank only by {:.3g} per iteration (a start near the edge of the root's "
+        "basin)",
+        nw.contraction));
+  }
+  const int sign = jacobian_sign(nw.last);
+  if (sign != neighbour.jacobian_sign) {
+    return refuse(
+        "the sign of det dg/dz changed (a limit point or bifurcation point lies between)");
+  }
+  if (!neighbour.predicted.empty() && static_cast<int>(neighbour.predicted.size()) == nz) {
+    // The prediction must have made most of the move (at a fold it degrades: the path bends).
+    const Eigen::VectorXd predicted = Eigen::Map<const Eigen::VectorXd>(start.data(), nz);
+    const Eigen::VectorXd from = Eigen::Map<const Eigen::VectorXd>(neighbour.unknowns.data(), nz);
+    const double correction = (z - predicted).lpNorm<Eigen::Infinity>();
+    const double move = (predicted - from).lpNorm<Eigen::Infinity>();
+    if (correction > 0.5 * move + 1e-8 * (1.0 + z.lpNorm<Eigen::Infinity>())) {
+      return refuse(fmt::format(
+          "Newton moved {:.3g} from the prediction, more than half the predicted move {:.3g}",
+          correction,
+          move));
+    }
+  }
+  const TipState& tip = nw.last.tip;
+  const double turn = std::fabs(tip.theta - neighbour.tip.theta);
+  const double moved =
+      std::hypot(tip.x - neighbour.tip.x, tip.y - neighbour.tip.y) / chain.total_length();
+  if (!(std::max(turn, moved) <= options_.max_neighbour_jump)) {
+    return refuse(
+        fmt::format("the tip jumped (turned {:.3g} rad, moved {:.3g} lengths)", turn, moved));
+  }
+  result.set_converged(true);
+  result.jacobian_sign = sign;
+  take_count(recorder, result);
+  result.message = fmt::format("converged from the neighbouring load: {}", nw.message);
+  return finish(problem, integrator, z, 1.0, result, &nw.last.tip);
 }
 
 LoadPath ShootingSolver::load_path(const SegmentChain& chain) const {
