@@ -95,8 +95,12 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
     }
     a.stability_prbm.displacement_control = summarise_stroke_stability(
         std::move(dc), a.prbm.displacement, "PRBM", SliderControl::kDisplacement);
-    a.stability_prbm.force_control = summarise_stroke_stability(
-        std::move(fc), a.prbm.displacement, "PRBM", SliderControl::kForce);
+    a.stability_prbm.force_control =
+        summarise_stroke_stability(std::move(fc),
+                                   a.prbm.displacement,
+                                   "PRBM",
+                                   SliderControl::kForce,
+                                   &a.stability_prbm.displacement_control.points);
   }
   a.max_stress = a.prbm.max_stress;
   a.has_exact = exact_support(d) != ExactSupport::kPrbmOnly;
@@ -155,8 +159,12 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
         }
         a.stability_exact.displacement_control = summarise_stroke_stability(
             std::move(dc), a.prbm.displacement, "exact", SliderControl::kDisplacement);
-        a.stability_exact.force_control = summarise_stroke_stability(
-            std::move(fc), a.prbm.displacement, "exact", SliderControl::kForce);
+        a.stability_exact.force_control =
+            summarise_stroke_stability(std::move(fc),
+                                       a.prbm.displacement,
+                                       "exact",
+                                       SliderControl::kForce,
+                                       &a.stability_exact.displacement_control.points);
         a.has_exact_stability = true;
       }
       const ConstantForceMeasure cf = constant_force_measure(a.force_exact);

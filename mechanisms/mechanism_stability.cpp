@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <deque>
 
 #include "flexure/mechanisms/prbm_virtual_work.h"
 #include "flexure/solver/common/errors.h"
@@ -91,6 +92,29 @@ std::vector<ShapePoint> integrate_shape(const SegmentChain& chain,
   return shape;
 }
 
+// The shapes integrated so far for one point: both controls sample the same chains at the same
+// stations (which depend on the force only), so each shape is integrated once.
+class ShapeMemo {
+ public:
+  const std::vector<ShapePoint>& at(const SegmentChain& chain,
+                                    const std::vector<double>& unknowns,
+                                    const std::vector<double>& s) {
+    for (const Entry& e : entries_) {
+      if (e.chain == &chain && e.s == s) return e.shape;
+    }
+    entries_.push_back({&chain, s, integrate_shape(chain, unknowns, s)});
+    return entries_.back().shape;
+  }
+
+ private:
+  struct Entry {
+    const SegmentChain* chain;
+    std::vector<double> s;
+    std::vector<ShapePoint> shape;
+  };
+  std::deque<Entry> entries_;  // references stay valid as it grows
+};
+
 // The stations of a chain carrying the dead tip force (Nx, Ny) (its own frame).
 std::vector<double> stations_of(const SegmentChain& chain,
                                 double Nx,
@@ -123,10 +147,11 @@ struct Part {
 std::vector<PathPiece> part_pieces(const Part& part,
                                    double xs,
                                    const StabilityOptions& options,
+                                   ShapeMemo& memo,
                                    std::array<double, 2>& tip) {
   const SegmentChain& chain = *part.chain;
   const std::vector<double> s = stations_of(chain, part.Nx, part.Ny, options);
-  const std::vector<ShapePoint> shape = integrate_shape(chain, *part.unknowns, s);
+  const std::vector<ShapePoint>& shape = memo.at(chain, *part.unknowns, s);
   auto global = [&](const ShapePoint& p) {
     return part.turned ? std::array<double, 2>{xs - p.x, -p.y} : std::array<double, 2>{p.x, p.y};
   };
@@ -178,10 +203,13 @@ void check_closure(double miss, double scale, const char* what) {
 
 }  // namespace
 
-MechanismPath exact_mechanism_path(const MechanismDesign& design,
-                                   const ExactPoint& point,
-                                   SliderControl control,
-                                   const StabilityOptions& options) {
+namespace {
+
+MechanismPath build_path(const MechanismDesign& design,
+                         const ExactPoint& point,
+                         SliderControl control,
+                         const StabilityOptions& options,
+                         ShapeMemo& memo) {
   if (!point.converged()) throw InvalidInput("exact_mechanism_path needs a converged point");
   const ExactSupport support = exact_support(design);
   const double L = point.length_scale;
@@ -204,7 +232,7 @@ MechanismPath exact_mechanism_path(const MechanismDesign& design,
       // root kink carries the crank angle).
       Part crank{&point.chain, &point.unknowns, path.Nx, path.Ny};
       crank.hinge_first = support == ExactSupport::kPinnedEnds;
-      append(part_pieces(crank, xs, options, tip));
+      append(part_pieces(crank, xs, options, memo, tip));
       check_closure(std::hypot(tip[0] - xs, tip[1]), xs, "the slider joint");
       path.hold_theta = point.chain.end == EndCondition::kFixed;
       break;
@@ -212,7 +240,7 @@ MechanismPath exact_mechanism_path(const MechanismDesign& design,
     case ExactSupport::kTwoForceCoupler: {
       // The crank, then the rigid coupler between pivot 2 and the slider pin.
       Part crank{&point.chain, &point.unknowns, path.Nx, path.Ny};
-      append(part_pieces(crank, xs, options, tip));
+      append(part_pieces(crank, xs, options, memo, tip));
       const double r3 = design.r3 / L;
       check_closure(std::fabs(std::hypot(xs - tip[0], tip[1]) - r3), xs, "the coupler's length");
       PathPiece coupler;
@@ -227,13 +255,13 @@ MechanismPath exact_mechanism_path(const MechanismDesign& design,
       // the slider (its frame turned by pi about the slider). The force across every section is
       // the pin force P in the path's frame; in the coupler's own frame its tip load reads +P.
       Part crank{&point.chain, &point.unknowns, path.Nx, path.Ny};
-      append(part_pieces(crank, xs, options, tip));
+      append(part_pieces(crank, xs, options, memo, tip));
       Part coupler{&point.coupler_chain, &point.coupler_unknowns, path.Nx, path.Ny};
       coupler.turned = true;
       coupler.reversed = true;
       coupler.hinge_first = true;
       std::array<double, 2> coupler_tip{};
-      append(part_pieces(coupler, xs, options, coupler_tip));
+      append(part_pieces(coupler, xs, options, memo, coupler_tip));
       check_closure(std::hypot(tip[0] - coupler_tip[0], tip[1] - coupler_tip[1]), xs, "pivot 2");
       path.hold_theta = true;  // the coupler's flexure is clamped into the slider
       break;
@@ -242,6 +270,16 @@ MechanismPath exact_mechanism_path(const MechanismDesign& design,
       throw InvalidInput(fmt::format("design {} has no exact model", design.name));
   }
   return path;
+}
+
+}  // namespace
+
+MechanismPath exact_mechanism_path(const MechanismDesign& design,
+                                   const ExactPoint& point,
+                                   SliderControl control,
+                                   const StabilityOptions& options) {
+  ShapeMemo memo;
+  return build_path(design, point, control, options, memo);
 }
 
 namespace {
@@ -257,10 +295,11 @@ int path_elements(const MechanismPath& path) {
 Stability judge_path(const MechanismDesign& design,
                      const ExactPoint& point,
                      SliderControl control,
-                     const StabilityOptions& options) {
+                     const StabilityOptions& options,
+                     ShapeMemo& memo) {
   StabilityOptions o = options;
   for (;;) {
-    const MechanismPath path = exact_mechanism_path(design, point, control, o);
+    const MechanismPath path = build_path(design, point, control, o, memo);
     const PathVerdict v = path_stability(path, o, "the mechanism");
     const bool refinable = 2 * path_elements(path) <= o.max_elements;
     if (!v.stability.judged() || !refinable ||
@@ -277,7 +316,8 @@ Stability judge_path(const MechanismDesign& design,
 // the slider force as a dead load.
 Stability judge_chain(const ExactPoint& point,
                       SliderControl control,
-                      const StabilityOptions& options) {
+                      const StabilityOptions& options,
+                      ShapeMemo& memo) {
   const double L = point.length_scale;
   const double force_scale = point.EI_scale / (L * L);
   const double Nx = point.Nx / force_scale, Ny = point.Ny / force_scale;
@@ -295,7 +335,7 @@ Stability judge_chain(const ExactPoint& point,
       chain,
       support,
       [&](const std::vector<double>& s) {
-        std::vector<ShapePoint> shape = integrate_shape(point.chain, point.unknowns, s);
+        std::vector<ShapePoint> shape = memo.at(point.chain, point.unknowns, s);
         if (!shape.empty() && s.back() >= point.chain.total_length() * (1.0 - 1e-12)) {
           check_closure(std::hypot(shape.back().x - xs, shape.back().y), xs, "the slider joint");
         }
@@ -322,16 +362,18 @@ PointStability exact_point_stability(const MechanismDesign& design,
     return out;
   }
   const ExactSupport support = exact_support(design);
+  ShapeMemo memo;
   if (support == ExactSupport::kDirectChain) {
-    out.displacement_control = judge_chain(point, SliderControl::kDisplacement, options);
+    out.displacement_control = judge_chain(point, SliderControl::kDisplacement, options, memo);
     // A pin at the slider: the chain's slider end; a flexure clamped into it (y and the angle
     // held, x free) is none of the chain's ends: the path.
     out.force_control = point.chain.end == EndCondition::kPinned
-                            ? judge_chain(point, SliderControl::kForce, options)
-                            : judge_path(design, point, SliderControl::kForce, options);
+                            ? judge_chain(point, SliderControl::kForce, options, memo)
+                            : judge_path(design, point, SliderControl::kForce, options, memo);
   } else {
-    out.displacement_control = judge_path(design, point, SliderControl::kDisplacement, options);
-    out.force_control = judge_path(design, point, SliderControl::kForce, options);
+    out.displacement_control =
+        judge_path(design, point, SliderControl::kDisplacement, options, memo);
+    out.force_control = judge_path(design, point, SliderControl::kForce, options, memo);
   }
   out.displacement_control =
       with_control(std::move(out.displacement_control), SliderControl::kDisplacement);
@@ -371,7 +413,8 @@ std::vector<StabilityStretch> stability_stretches(const std::vector<double>& dis
 StrokeStability summarise_stroke_stability(std::vector<Stability> points,
                                            const std::vector<double>& displacement,
                                            const char* model,
-                                           SliderControl control) {
+                                           SliderControl control,
+                                           const std::vector<Stability>* held) {
   StrokeStability out;
   out.points = std::move(points);
   bool any_judged = false;
@@ -402,12 +445,23 @@ StrokeStability summarise_stroke_stability(std::vector<Stability> points,
                 ? fmt::format("{} at Delta x = {} mm", what, mm(s.from))
                 : fmt::format("{} for Delta x in [{}, {}] mm", what, mm(s.from), mm(s.to));
     if (s.kind == StabilityKind::kUnstable && control == SliderControl::kForce) {
-      text += std::string_view(model) == "PRBM"
-                  ? " (the force falls: snap-through under a dead load)"
-                  : " (snap-through under a dead load)";
+      // One negative direction more than with the slider held: the slider's own, where dF/dx < 0.
+      const int held_index = held != nullptr && s.first < held->size() &&
+                                     (*held)[s.first].kind == StabilityKind::kUnstable
+                                 ? (*held)[s.first].index
+                                 : 0;
+      text += s.index > held_index ? " (the force falls: snap-through under a dead load)"
+                                   : " (unstable with the slider held as well)";
     }
   }
-  if (any_judged) {
+  const bool rigid_linkage =
+      std::string_view(model) == "PRBM" && control == SliderControl::kDisplacement &&
+      out.unstable_points + out.critical_points + out.not_checked_points == 0;
+  if (rigid_linkage) {
+    text +=
+        " (held at its slider the pseudo-rigid-body linkage has no degree of freedom; margin 1 by "
+        "convention)";
+  } else if (any_judged) {
     text += fmt::format("; least margin {:.3g} at Delta x = {} mm", out.least_margin, mm(least_at));
     if (control == SliderControl::kForce &&
         std::max(std::fabs(out.least_margin), std::fabs(out.largest_margin)) <=

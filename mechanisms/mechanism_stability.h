@@ -106,11 +106,15 @@ struct ModelStability {
 };
 
 // Builds the summary of `points` at `displacement` (m, printed in mm) for `model` ("PRBM",
-// "exact") under `control`.
+// "exact") under `control`. Under force control `held` (the same model's displacement-control
+// verdicts, if given) tells an unstable stretch where the force falls (one negative direction
+// more than with the slider held: snap-through under a dead load) from one that is unstable with
+// the slider held as well.
 StrokeStability summarise_stroke_stability(std::vector<Stability> points,
                                            const std::vector<double>& displacement,
                                            const char* model,
-                                           SliderControl control);
+                                           SliderControl control,
+                                           const std::vector<Stability>* held = nullptr);
 
 // Force control of a constant-force mechanism: where every judged margin lies within this of 0 the
 // summary calls the mechanism near-critical by design (docs/stability.md "Constant force and
