@@ -15,7 +15,8 @@
 //
 // PRBM. The pseudo-rigid-body linkage has one degree of freedom, the slider's travel Delta x
 // (Howell ch. 5; thesis §2.1.1); its energy is V = sum k_i psi_i^2 / 2 on the loop-closure
-// manifold (prbm_virtual_work.h).
+// manifold (Howell eqs. 6.47, 11.6; prbm_virtual_work.h), stable where d^2V/dq^2 > 0 (Howell
+// §11.2).
 //   displacement control: with the slider held the linkage has no degree of freedom left (the loop
 //     closure fixes theta2 and theta3 away from the toggle, where the stroke ends): nothing can
 //     move, so the point is stable with index 0; the margin is 1 by convention (the unloaded

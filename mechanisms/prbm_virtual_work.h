@@ -1,6 +1,7 @@
 #pragma once
 // Slider force of a PRBM slider-crank with ANY set of torsional springs, by the principle of
-// virtual work written directly (Howell §5.x/§10.1.1; the energy V = sum k_i psi_i^2/2):
+// virtual work written directly (Howell eq. 6.50, §10.1.1; the energy V = sum k_i psi_i^2/2,
+// eq. 11.6):
 //
 //   F = dV/dDelta x = sum_i k_i psi_i dpsi_i/dDelta x,
 //
