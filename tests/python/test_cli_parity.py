@@ -118,6 +118,20 @@ def test_mechanism_list_and_analyze(cli):
                 cli.json("mechanism", "analyze", "1A-lpp", "--points", "8", "--method", "exact"))
 
 
+def test_mechanism_stability_keys(cli):
+    # docs/stability.md "Mechanisms": one verdict per stroke point, per model and control.
+    got = flexure.mechanism.analyze("2A-ssp", points=8, method="exact")
+    assert_same(got, cli.json("mechanism", "analyze", "2A-ssp", "--points", "8", "--method",
+                              "exact"))
+    for control in ("stability_displacement_control", "stability_force_control"):
+        for model in ("prbm", "exact"):
+            v = got[control][model]
+            assert len(v["stability"]) == 8
+            assert len(v["stability_margin"]) == 8
+            assert v["not_checked_points"] == 0
+    assert list(got["stability_displacement_control"]["prbm"]["stability_margin"]) == [1.0] * 8
+
+
 def test_mechanism_from_file_and_dict(cli):
     toml = os.path.join(EXAMPLES, "mechanism_lpp.toml")
     expected = cli.json("mechanism", "analyze", toml, "--points", "6", "--method", "prbm")
