@@ -82,4 +82,18 @@ std::vector<ValidationCheck> run_validation_checks() {
   return checks;
 }
 
+ValidationReport run_validation() {
+  ValidationReport report;
+  report.checks = run_validation_checks();
+  const auto failed = std::count_if(report.checks.begin(),
+                                    report.checks.end(),
+                                    [](const ValidationCheck& c) { return !c.passed; });
+  report.all_passed = failed == 0;
+  report.set_converged(report.all_passed);
+  report.message = report.all_passed
+                       ? fmt::format("all {} checks passed", report.checks.size())
+                       : fmt::format("{} of {} checks failed", failed, report.checks.size());
+  return report;
+}
+
 }  // namespace flexure

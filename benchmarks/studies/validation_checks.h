@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "flexure/solver/common/status.h"
+
 namespace flexure {
 
 // One row of the results table.
@@ -25,5 +27,15 @@ struct ValidationCheck {
 // Runs every check. A solve that throws or does not converge is a failed check, never an
 // exception. Each solve is repeated for about 2 ms to time it.
 std::vector<ValidationCheck> run_validation_checks();
+
+// The whole of `flexure validate`: the checks, and whether every one passed. Converged when all
+// passed; otherwise kNoConvergence with a message naming how many failed (the tool's exit 1).
+struct ValidationReport : SolveStatus {
+  std::vector<ValidationCheck> checks;
+  bool all_passed = false;
+};
+
+// Runs run_validation_checks() and summarises it.
+ValidationReport run_validation();
 
 }  // namespace flexure
