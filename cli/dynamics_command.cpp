@@ -15,23 +15,20 @@
 // 62.832 rad/s). The design comes from dynamics/dynamics_design.h.
 #include <fmt/format.h>
 
-#include <chrono>
-#include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/slow_progress.h"
-#include "flexure/io/hdf5_file.h"
+#include "flexure/benchmarks/studies/dynamics_study.h"
+#include "flexure/benchmarks/studies/dynamics_study_file.h"
 #include "flexure/io/mechanism_toml.h"
 #include "flexure/io/output_path.h"
-#include "flexure/io/provenance.h"
 #include "flexure/mechanisms/dynamics/cfsm_designs.h"
 #include "flexure/mechanisms/dynamics/dynamics_design.h"
-#include "flexure/mechanisms/dynamics/forward_dynamics.h"
-#include "flexure/mechanisms/dynamics/inverse_dynamics.h"
 #include "flexure/mechanisms/force_of.h"
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/solver/common/errors.h"
@@ -41,17 +38,9 @@ namespace {
 
 using dynamics::CfsmDesign;
 using dynamics::DynamicsDesign;
-using dynamics::DynamicsParameters;
-using dynamics::ForceSample;
 using dynamics::ForceStatistics;
-using dynamics::InverseDynamics;
 using dynamics::SinusoidalMotion;
-using dynamics::SliderCrankDynamics;
 using mechanism::ForceOf;
-
-// Samples of the static nominal force (inverse_dynamics.h static_nominal_force): the mean over
-// Delta x = k stroke/N, k = 1..N, as `mechanism analyze --points N` samples its stroke.
-constexpr int kStaticForcePoints = 1000;
 
 struct DynamicsArgs {
   std::string mechanism;
@@ -140,47 +129,43 @@ void run_dynamics(const DynamicsArgs& args) {
   for (double w : args.history) require_in_range(w, "--history (rad/s)", 0.0, 1e6);
   const ForceOf force_of = mechanism::parse_force_of(args.force_of);
   const DynamicsDesign d = resolve_design(args);
-  // The model computes the whole mechanism (two halves, one slider); one half is exactly half of
-  // it with the slider's inertia shared equally (force_of.h).
-  const double to_reported = mechanism::force_of_factor(ForceOf::kWholeMechanism, force_of);
-
-  DynamicsParameters p = dynamics::from_bar_links(d.r2, d.r3, d.m2, d.m3, d.m_slider, d.k);
-  if (args.zero_slider_mass) p.m_slider = 0.0;
-  if (args.zero_inertia) p.m2 = p.m3 = p.m_slider = p.J_C2 = p.J_C3 = 0.0;
+  DynamicsStudyOptions o;
   for (std::size_t i = 0; i < args.friction.size(); ++i) {
     require_in_range(args.friction[i], fmt::format("--friction C{} (N m)", i + 1), 0.0, 1e6);
-    p.coulomb[i] = args.friction[i];
+    o.friction[i] = args.friction[i];
   }
-  p.axial_alpha = args.axial_alpha;
-  const SliderCrankDynamics model(p);
-  const InverseDynamics inverse(model, {.samples_per_period = args.samples});
-  const double r_tot = model.r_tot();
+  o.omegas.resize(range.count);
+  for (long i = 0; i < range.count; ++i) o.omegas[i] = range.at(i);
   // A design file's own stroke unless --stroke-percent is given (built-ins: 40 %, Table 6).
-  const double stroke = d.stroke && args.stroke_option->count() == 0
-                            ? *d.stroke
-                            : args.stroke_percent / 100.0 * r_tot;
-  SinusoidalMotion motion{args.preload_percent / 100.0 * r_tot, stroke, 0.0};
-  model.theta2_at(motion.preload + motion.stroke);  // throws (exit 2) past the toggle position
+  if (args.stroke_option->count() > 0 || !d.stroke) o.stroke_percent = args.stroke_percent;
+  o.preload_percent = args.preload_percent;
+  o.samples = args.samples;
+  o.axial_alpha = args.axial_alpha;
+  o.zero_slider_mass = args.zero_slider_mass;
+  o.zero_inertia = args.zero_inertia;
+  o.history_omegas = args.history;
+  o.force_of = force_of;
+  o.progress = slow_progress("dynamics");
+  dynamics_study_setup(d, o);  // throws (exit 2) past the toggle position
 
   // Open the output first: an unwritable path fails before any work (exit 2).
-  std::unique_ptr<io::AtomicHdf5File> output;
+  std::optional<DynamicsStudyFile> output;
   try {
-    if (!args.out.empty()) output = std::make_unique<io::AtomicHdf5File>(args.out);
-  } catch (const io::Hdf5Error& e) {
+    if (!args.out.empty()) output.emplace(args.out);
+  } catch (const InvalidInput& e) {
     throw InvalidInput(fmt::format("--out {}: {}", args.out, e.what()));
   }
+  const DynamicsStudy study = run_dynamics_study(d, o);
+  if (!study.converged()) throw NoConvergence(study.message);
+  if (output) output->write(study);
 
-  const auto start = std::chrono::steady_clock::now();
-  std::vector<double> omegas(range.count);
-  for (long i = 0; i < range.count; ++i) omegas[i] = range.at(i);
-  std::vector<ForceStatistics> rows = inverse.sweep(motion, omegas, slow_progress("dynamics"));
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double F_nom = study.static_nominal_force;
+  const double F_nom_paper = study.paper_nominal_force.value_or(0.0);
+  const std::string force_of_label = mechanism::force_of_label(force_of);
+  const double omega_n = study.natural_frequency;
+  const SinusoidalMotion& motion = study.motion;
   std::vector<double> mean, median, min, max, p2p, pcf;
-  for (ForceStatistics& s : rows) {
-    require_finite_result(s.mean, fmt::format("mean force at omega = {}", s.omega));
-    require_finite_result(s.peak_to_peak, fmt::format("peak-to-peak force at omega = {}", s.omega));
-    for (double* f : {&s.mean, &s.median, &s.min, &s.max, &s.peak_to_peak}) *f *= to_reported;
+  for (const ForceStatistics& s : study.rows) {
     mean.push_back(s.mean);
     median.push_back(s.median);
     min.push_back(s.min);
@@ -188,92 +173,10 @@ void run_dynamics(const DynamicsArgs& args) {
     p2p.push_back(s.peak_to_peak);
     pcf.push_back(s.percent_constant_force);
   }
-  const double F_nom =
-      to_reported * dynamics::static_nominal_force(model, motion.stroke, kStaticForcePoints);
-  const double F_nom_paper = to_reported * d.F_nom_paper;
-  const std::string force_of_label = mechanism::force_of_label(force_of);
-  const bool has_inertia = model.terms(0.0).M > 0.0;
-  const double omega_n = has_inertia ? dynamics::linearise(model, 0.0).omega_n : 0.0;
-
-  // The requested time histories (one period each).
-  struct History {
-    double omega = 0.0;
-    std::vector<double> t, delta_x, theta2, force, static_force;
-  };
-  std::vector<History> histories;
-  for (double w : args.history) {
-    motion.omega = w;
-    History h{w, {}, {}, {}, {}, {}};
-    for (const ForceSample& sample : inverse.history(motion)) {
-      h.t.push_back(sample.t);
-      h.delta_x.push_back(sample.delta_x);
-      h.theta2.push_back(sample.theta2);
-      h.force.push_back(to_reported * sample.force);
-      h.static_force.push_back(to_reported * sample.static_force);
-    }
-    histories.push_back(std::move(h));
-  }
-
-  if (output) {
-    // Every force is of what force_of says (--force-of), as in the JSON.
-    io::Hdf5Group& root = output->root();
-    const auto of = [&](const char* what) { return fmt::format("{} ({})", what, force_of_label); };
-    root.write_dataset("omega", omegas, "rad/s", "drive frequency omega of the sinusoidal motion");
-    root.write_dataset("mean_force", mean, "N", of("mean input force over one period"));
-    root.write_dataset("median_force", median, "N", of("median input force over one period"));
-    root.write_dataset("min_force", min, "N", of("smallest input force over one period"));
-    root.write_dataset("max_force", max, "N", of("largest input force over one period"));
-    root.write_dataset("peak_to_peak_force", p2p, "N", of("max_force - min_force over one period"));
-    root.write_dataset("percent_constant_force",
-                       pcf,
-                       "%",
-                       "percent constant force 100 min_force / max_force over one period");
-    root.set_attribute("mechanism", d.name);
-    root.set_attribute("stroke_m", motion.stroke);
-    root.set_attribute("preload_m", motion.preload);
-    root.set_attribute("samples_per_period", static_cast<std::int64_t>(args.samples));
-    root.set_attribute("zero_slider_mass", static_cast<std::int64_t>(args.zero_slider_mass));
-    root.set_attribute("zero_inertia", static_cast<std::int64_t>(args.zero_inertia));
-    root.set_attribute("friction_C1", p.coulomb[0]);
-    root.set_attribute("friction_C2", p.coulomb[1]);
-    root.set_attribute("friction_C3", p.coulomb[2]);
-    root.set_attribute("axial_alpha", p.axial_alpha);
-    root.set_attribute("static_nominal_force", F_nom);
-    if (d.F_nom_paper > 0.0) root.set_attribute("paper_nominal_force", F_nom_paper);
-    root.set_attribute("natural_frequency", omega_n);
-    root.set_attribute("force_of", force_of_label);
-    root.set_attribute("spring_rule", d.spring_rule.value_or("none"));
-    root.set_attribute("attribute_units",
-                       fmt::format("stroke_m, preload_m: m; friction_C1, friction_C2, friction_C3: "
-                                   "N m; axial_alpha: rad; static_nominal_force, "
-                                   "paper_nominal_force: N ({}); natural_frequency: rad/s",
-                                   force_of_label));
-    io::write_provenance(root, {});
-    io::Hdf5Group history_group = root.create_group("history");
-    history_group.set_attribute("description",
-                                "one period of the motion at each --history frequency, groups 0, "
-                                "1, ... in the order given");
-    for (std::size_t i = 0; i < histories.size(); ++i) {
-      const History& h = histories[i];
-      io::Hdf5Group g = history_group.create_group(fmt::format("{}", i));
-      g.set_attribute("omega", h.omega);
-      g.set_attribute("attribute_units", "omega: rad/s");
-      g.write_dataset("t", h.t, "s", "time within the period, from 0");
-      g.write_dataset("delta_x",
-                      h.delta_x,
-                      "m",
-                      "slider displacement Delta x(t) = preload + stroke (1 - cos omega t)/2");
-      g.write_dataset("theta2", h.theta2, "rad", "crank angle theta2 at Delta x(t)");
-      g.write_dataset("force", h.force, "N", of("input force of the dynamic model"));
-      g.write_dataset(
-          "static_force", h.static_force, "N", of("static PRBM force at the same Delta x"));
-    }
-    output->commit();
-  }
 
   if (args.json) {
     Json history = Json::array();
-    for (const History& h : histories) {
+    for (const DynamicsForceHistory& h : study.histories) {
       history.push_back(Json{{"omega", h.omega},
                              {"t", h.t},
                              {"delta_x", h.delta_x},
@@ -291,11 +194,11 @@ void run_dynamics(const DynamicsArgs& args) {
              {"preload", motion.preload},
              {"history", history},
              {"static_nominal_force", F_nom},
-             {"static_nominal_force_points", kStaticForcePoints},
-             {"paper_nominal_force", d.F_nom_paper > 0.0 ? Json(F_nom_paper) : Json(nullptr)},
+             {"static_nominal_force_points", study.static_force_points},
+             {"paper_nominal_force", study.paper_nominal_force ? Json(F_nom_paper) : Json(nullptr)},
              {"natural_frequency", omega_n},
-             {"seconds", seconds},
-             {"omega", omegas},
+             {"seconds", study.seconds},
+             {"omega", study.omegas},
              {"mean_force", mean},
              {"median_force", median},
              {"peak_to_peak_force", p2p},
@@ -308,7 +211,7 @@ void run_dynamics(const DynamicsArgs& args) {
         "  force of: {}; springs per half {:.6g}, {:.6g}, {:.6g} N m ({})\n",
         d.name,
         F_nom,
-        d.F_nom_paper > 0.0 ? fmt::format(" (paper {:.4f} N)", F_nom_paper) : "",
+        study.paper_nominal_force ? fmt::format(" (paper {:.4f} N)", F_nom_paper) : "",
         omega_n,
         force_of_label,
         d.k[0],
@@ -321,7 +224,7 @@ void run_dynamics(const DynamicsArgs& args) {
                "median N",
                "p-p N",
                "PCF %");
-    for (const ForceStatistics& s : rows) {
+    for (const ForceStatistics& s : study.rows) {
       fmt::print("{:12.4f} {:12.4f} {:12.4f} {:12.4f} {:8.3f}\n",
                  s.omega,
                  s.mean,
