@@ -22,11 +22,6 @@ using cfm::CfmModel;
 using cfm::CfmResult;
 using cfm::CfmSubclass;
 
-// Class 1B: the mean of a force rising steeply from Delta x = 0 depends on sampling details at
-// ~1e-3 (docs/cfm.md §3 item 4: with and without the Delta x -> 0 point the Table 10.1 row is
-// bracketed), so 1B class rows get this extra allowance in --table.
-constexpr double kClass1BSamplingAllowance = 2e-3;
-
 // The printed stroke, and the effective one where the toggle clamp shortened it.
 std::string stroke_cell(double printed_percent, const CfmResult& r) {
   return r.stroke_clamped ? fmt::format("{:g} → {:.2f}", printed_percent, r.stroke_percent)
@@ -45,28 +40,10 @@ Json comparison_json(const cfm::PrintedComparison& c) {
               {"within", c.within()}};
 }
 
-// Largest |computed - printed|/tolerance of one quantity over the sub-class rows.
-struct WorstRatio {
-  const char* quantity = "";
-  double ratio = 0.0;
-  std::string row;
-  void update(const cfm::PrintedComparison& c, const std::string& name) {
-    const double r = std::abs(c.deviation()) / c.tolerance;
-    if (r > ratio) {
-      ratio = r;
-      row = name;
-    }
-  }
-};
-
 }  // namespace
 
 void run_table(const CfmArgs& args) {
-  bool all_ok = true;
-  std::array<WorstRatio, 6> worst;
-  for (std::size_t i = 0; i < worst.size(); ++i) {
-    worst[i].quantity = std::array{"Phi", "Xi'", "beta", "lambda", "Psi", "d_N max"}[i];
-  }
+  const cfm::PrintedTablesReport report = cfm::compare_printed_tables();
   Json subclass_rows = Json::array();
   Json class_rows = Json::array();
   if (args.markdown) {
@@ -76,15 +53,8 @@ void run_table(const CfmArgs& args) {
   } else if (!args.json) {
     fmt::print("Thesis sub-classes: computed / printed (✗ = outside rounding tolerance)\n");
   }
-  for (const CfmSubclass& row : cfm::thesis_subclasses()) {
-    const cfm::SubclassComparison c = cfm::compare_with_thesis(row);
-    all_ok = all_ok && c.all_within();
-    worst[0].update(c.Phi, row.name);
-    worst[1].update(c.percent_constant_force, row.name);
-    worst[2].update(c.beta, row.name);
-    worst[3].update(c.lambda, row.name);
-    worst[4].update(c.Psi, row.name);
-    worst[5].update(c.d_N_max, row.name);
+  for (const cfm::SubclassComparison& c : report.subclasses) {
+    const CfmSubclass& row = *c.row;
     const std::string pivot =
         fmt::format("{}/{}{}",
                     c.result.primary_pivot,
@@ -137,18 +107,20 @@ void run_table(const CfmArgs& args) {
   if (!args.json) {
     fmt::print("{}Largest |computed - printed| / tolerance over the 68 rows:",
                args.markdown ? "\n" : "");
-    for (const WorstRatio& w : worst) {
-      fmt::print(
-          " {} {:.2f} ({}){}", w.quantity, w.ratio, w.row, &w == &worst.back() ? ".\n" : ";");
+    for (const cfm::WorstDeviation& w : report.worst) {
+      fmt::print(" {} {:.2f} ({}){}",
+                 w.quantity,
+                 w.ratio,
+                 w.row,
+                 &w == &report.worst.back() ? ".\n" : ";");
     }
   }
 
   // Thickness and width ratios (Tables 7.7, 7.10, 7.13).
   Json ratio_rows = Json::array();
   std::vector<std::string> ratio_lines;
-  for (const cfm::CfmThicknessRatios& row : cfm::thesis_thickness_ratios()) {
-    const cfm::RatioComparison c = cfm::compare_with_thesis_ratios(row);
-    all_ok = all_ok && c.all_within();
+  for (const cfm::RatioComparison& c : report.ratios) {
+    const cfm::CfmThicknessRatios& row = *c.row;
     auto cells = [&](const std::array<std::optional<cfm::PrintedComparison>, 3>& field) {
       std::string text;
       Json values = Json::array();
@@ -194,48 +166,47 @@ void run_table(const CfmArgs& args) {
   } else if (!args.json) {
     fmt::print("Class rows (50 equally spaced points): computed / printed\n");
   }
-  for (const auto* table : {&cfm::thesis_table_2_1(), &cfm::howell_table_10_1()}) {
-    for (const CfmClassRow& row : *table) {
-      const double extra = std::string(row.class_name) == "1B" ? kClass1BSamplingAllowance : 0.0;
-      const cfm::ClassRowComparison c = cfm::compare_with_class_row(row, extra);
-      const bool within = c.Xi.within() && c.Phi.within();
-      if (row.reproducible) all_ok = all_ok && within;
-      const std::string verdict = within             ? "yes"
-                                  : row.reproducible ? "**no**"
-                                                     : "no (printed K2 inconsistent, see text)";
-      if (args.json) {
-        class_rows.push_back({{"name", row.name},
-                              {"stroke_percent", c.result.stroke_percent},
-                              {"Xi", comparison_json(c.Xi)},
-                              {"Phi", comparison_json(c.Phi)},
-                              {"reproducible", row.reproducible},
-                              {"within", within}});
-        continue;
-      }
-      const std::string stroke = stroke_cell(row.stroke_percent, c.result);
-      if (args.markdown) {
-        fmt::print("| {} | {} | {} | {} | {} | {} |\n",
-                   row.name,
-                   row.config,
-                   stroke,
-                   cell(c.Xi, 4),
-                   cell(c.Phi, 4),
-                   verdict);
-      } else {
-        fmt::print("  {:<16} d {:<12} Xi {:<22} Phi {:<22} {}\n",
-                   row.name,
-                   stroke,
-                   cell(c.Xi, 4),
-                   cell(c.Phi, 4),
-                   verdict);
-      }
+  for (const cfm::ClassRowReport& report_row : report.class_rows) {
+    const cfm::ClassRowComparison& c = report_row.comparison;
+    const CfmClassRow& row = *c.row;
+    const bool within = report_row.verdict == cfm::RowVerdict::kWithin;
+    const std::string verdict = within ? "yes"
+                                : report_row.verdict == cfm::RowVerdict::kOutside
+                                    ? "**no**"
+                                    : "no (printed K2 inconsistent, see text)";
+    if (args.json) {
+      class_rows.push_back({{"name", row.name},
+                            {"stroke_percent", c.result.stroke_percent},
+                            {"Xi", comparison_json(c.Xi)},
+                            {"Phi", comparison_json(c.Phi)},
+                            {"reproducible", row.reproducible},
+                            {"within", within}});
+      continue;
+    }
+    const std::string stroke = stroke_cell(row.stroke_percent, c.result);
+    if (args.markdown) {
+      fmt::print("| {} | {} | {} | {} | {} | {} |\n",
+                 row.name,
+                 row.config,
+                 stroke,
+                 cell(c.Xi, 4),
+                 cell(c.Phi, 4),
+                 verdict);
+    } else {
+      fmt::print("  {:<16} d {:<12} Xi {:<22} Phi {:<22} {}\n",
+                 row.name,
+                 stroke,
+                 cell(c.Xi, 4),
+                 cell(c.Phi, 4),
+                 verdict);
     }
   }
   if (args.json) {
-    print_json(
-        Json{{"subclasses", subclass_rows}, {"class_rows", class_rows}, {"all_within", all_ok}});
+    print_json(Json{{"subclasses", subclass_rows},
+                    {"class_rows", class_rows},
+                    {"all_within", report.all_within}});
   }
-  if (!all_ok) set_exit_code(kExitCheckFailed);
+  if (!report.all_within) set_exit_code(kExitCheckFailed);
 }
 
 // --table --exact: the thesis sub-classes (the nine "a" rows, or all 68) solved with the exact
@@ -245,7 +216,6 @@ void run_exact_table(const CfmArgs& args) {
     throw InvalidInput(
         fmt::format("--exact-rows = '{}' is unknown; allowed: a, all", args.exact_rows));
   }
-  bool all_converged = true;
   Json rows = Json::array();
   if (args.markdown) {
     fmt::print(
@@ -256,34 +226,12 @@ void run_exact_table(const CfmArgs& args) {
         "Thesis sub-classes, PRBM and exact model on {} equally spaced points (Phi, Xi' in %)\n",
         args.exact_points);
   }
-  std::vector<const CfmSubclass*> selected;
-  for (const CfmSubclass& row : cfm::thesis_subclasses()) {
-    const std::string name = row.name;
-    // Sub-class "a" of each configuration: "lpp-a", "slp-aIo" (not "lpp-a99", "slp-a90I").
-    const std::size_t dash = name.find('-');
-    const bool is_a = name.size() > dash + 1 && name[dash + 1] == 'a' &&
-                      (name.size() == dash + 2 || !std::isdigit(name[dash + 2]));
-    if (args.exact_rows == "a" && !is_a) continue;
-    selected.push_back(&row);
-  }
   // Progress by elapsed time on a terminal (slow_progress.h), counted in exact stroke points over
-  // all rows: a row's cost varies with its stroke (near a fold substeps multiply it).
-  cfm::CfmExactOptions options = make_exact_options(args);
-  const auto progress = slow_progress("cfm --table --exact: stroke points");
-  const std::size_t total = selected.size() * static_cast<std::size_t>(options.points);
-  std::size_t reported = 0;
-  for (std::size_t i = 0; i < selected.size(); ++i) {
-    const CfmSubclass& row = *selected[i];
-    if (progress) {
-      const std::size_t before = i * static_cast<std::size_t>(options.points);
-      options.progress = [&progress, &reported, before, total](std::size_t done, std::size_t) {
-        reported = before + done;
-        progress(reported, total);
-      };
-    }
-    const CfmResult r = evaluate_or_throw(CfmModel(), cfm::parameters_of(row));
-    const cfm::CfmExactResult e = cfm::solve_cfm_exact(r, options);
-    all_converged = all_converged && e.converged();
+  // all rows; each row is printed as it is finished.
+  const auto print_row = [&](const cfm::ExactTableRow& t) {
+    const CfmSubclass& row = *t.row;
+    const CfmResult& r = t.prbm;
+    const cfm::CfmExactResult& e = t.exact;
     const std::string stroke = r.stroke_clamped ? fmt::format("{:.2f}", r.stroke_percent)
                                                 : fmt::format("{:g}", r.stroke_percent);
     if (args.json) {
@@ -300,7 +248,7 @@ void run_exact_table(const CfmArgs& args) {
         j["exact_message"] = e.message;
       }
       rows.push_back(j);
-      continue;
+      return;
     }
     const std::string phi_exact = e.converged() ? fmt::format("{:.4f}", e.Phi_exact) : "–";
     const std::string xi_exact =
@@ -323,11 +271,14 @@ void run_exact_table(const CfmArgs& args) {
                e.percent_constant_force_prbm,
                xi_exact,
                error);
-  }
-  // A stroke that stopped early leaves the count short: end the progress line all the same.
-  if (progress && reported < total) progress(total, total);
+  };
+  const cfm::ExactTableReport report = cfm::compare_exact_table(
+      args.exact_rows == "a" ? cfm::ExactTableRows::kSubclassA : cfm::ExactTableRows::kAll,
+      make_exact_options(args),
+      slow_progress("cfm --table --exact: stroke points"),
+      print_row);
   if (args.json) print_json(Json{{"points", args.exact_points}, {"subclasses", rows}});
-  if (!all_converged) set_exit_code(kExitNoConvergence);
+  if (!report.all_converged) set_exit_code(kExitNoConvergence);
 }
 
 }  // namespace flexure::cli

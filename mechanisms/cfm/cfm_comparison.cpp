@@ -1,8 +1,14 @@
 #include "flexure/mechanisms/cfm/cfm_comparison.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <functional>
+#include <string>
+
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::cfm {
 namespace {
@@ -174,6 +180,120 @@ ClassRowComparison compare_with_class_row(const CfmClassRow& row, double extra_t
   c.Phi = compare(
       model, p, c.result, row.Phi, 4, [](const CfmResult& r) { return r.Phi; }, extra_tolerance);
   return c;
+}
+
+namespace {
+
+void update(WorstDeviation& worst, const PrintedComparison& c, const char* row) {
+  const double r = std::abs(c.deviation()) / c.tolerance;
+  if (r > worst.ratio) {
+    worst.ratio = r;
+    worst.row = row;
+  }
+}
+
+// The PRBM at a printed row; a model failure or a non-finite result is no answer.
+CfmResult evaluate_printed(const CfmSubclass& row) {
+  CfmResult r = CfmModel().evaluate(parameters_of(row));
+  if (!r.converged()) throw NoConvergence("cfm model: " + r.message);
+  for (double v : {r.Phi, r.Xi, r.percent_constant_force, r.beta, r.lambda}) {
+    if (!std::isfinite(v)) {
+      throw NoConvergence(
+          fmt::format("cfm result came out as {}; no converged solution to report", v));
+    }
+  }
+  return r;
+}
+
+}  // namespace
+
+PrintedTablesReport compare_printed_tables() {
+  PrintedTablesReport report;
+  const std::array<const char*, 6> quantities{"Phi", "Xi'", "beta", "lambda", "Psi", "d_N max"};
+  for (std::size_t i = 0; i < quantities.size(); ++i) report.worst[i].quantity = quantities[i];
+  int outside = 0;
+  for (const CfmSubclass& row : thesis_subclasses()) {
+    SubclassComparison c = compare_with_thesis(row);
+    if (!c.all_within()) ++outside;
+    update(report.worst[0], c.Phi, row.name);
+    update(report.worst[1], c.percent_constant_force, row.name);
+    update(report.worst[2], c.beta, row.name);
+    update(report.worst[3], c.lambda, row.name);
+    update(report.worst[4], c.Psi, row.name);
+    update(report.worst[5], c.d_N_max, row.name);
+    report.subclasses.push_back(std::move(c));
+  }
+  for (const CfmThicknessRatios& row : thesis_thickness_ratios()) {
+    RatioComparison c = compare_with_thesis_ratios(row);
+    if (!c.all_within()) ++outside;
+    report.ratios.push_back(std::move(c));
+  }
+  for (const auto* table : {&thesis_table_2_1(), &howell_table_10_1()}) {
+    for (const CfmClassRow& row : *table) {
+      const double extra = std::string(row.class_name) == "1B" ? kClass1BSamplingAllowance : 0.0;
+      ClassRowReport r{compare_with_class_row(row, extra), RowVerdict::kWithin};
+      if (!(r.comparison.Xi.within() && r.comparison.Phi.within())) {
+        r.verdict = row.reproducible ? RowVerdict::kOutside : RowVerdict::kOutsideIrreproducible;
+        if (row.reproducible) ++outside;
+      }
+      report.class_rows.push_back(std::move(r));
+    }
+  }
+  report.all_within = outside == 0;
+  report.set_converged(report.all_within);
+  report.message = report.all_within
+                       ? "every printed row reproduced within its rounding"
+                       : fmt::format("{} printed row(s) outside their rounding", outside);
+  return report;
+}
+
+std::vector<const CfmSubclass*> exact_table_rows(ExactTableRows rows) {
+  std::vector<const CfmSubclass*> selected;
+  for (const CfmSubclass& row : thesis_subclasses()) {
+    const std::string name = row.name;
+    // Sub-class "a" of each configuration: "lpp-a", "slp-aIo" (not "lpp-a99", "slp-a90I").
+    const std::size_t dash = name.find('-');
+    const bool is_a = name.size() > dash + 1 && name[dash + 1] == 'a' &&
+                      (name.size() == dash + 2 || !std::isdigit(name[dash + 2]));
+    if (rows == ExactTableRows::kSubclassA && !is_a) continue;
+    selected.push_back(&row);
+  }
+  return selected;
+}
+
+ExactTableReport compare_exact_table(ExactTableRows rows,
+                                     CfmExactOptions options,
+                                     const std::function<void(std::size_t, std::size_t)>& progress,
+                                     const std::function<void(const ExactTableRow&)>& on_row) {
+  ExactTableReport report;
+  const std::vector<const CfmSubclass*> selected = exact_table_rows(rows);
+  const std::size_t total = selected.size() * static_cast<std::size_t>(options.points);
+  std::size_t reported = 0;
+  int failed = 0;
+  for (std::size_t i = 0; i < selected.size(); ++i) {
+    if (progress) {
+      const std::size_t before = i * static_cast<std::size_t>(options.points);
+      options.progress = [&progress, &reported, before, total](std::size_t done, std::size_t) {
+        reported = before + done;
+        progress(reported, total);
+      };
+    }
+    ExactTableRow row{selected[i], evaluate_printed(*selected[i]), {}};
+    row.exact = solve_cfm_exact(row.prbm, options);
+    if (!row.exact.converged()) ++failed;
+    if (on_row) on_row(row);
+    report.rows.push_back(std::move(row));
+  }
+  // A stroke that stopped early leaves the count short: end the progress all the same.
+  if (progress && reported < total) progress(total, total);
+  report.all_converged = failed == 0;
+  report.set_converged(report.all_converged);
+  report.message =
+      report.all_converged
+          ? fmt::format("{} rows solved", report.rows.size())
+          : fmt::format(
+                "the exact model did not converge on {} of {} rows", failed, report.rows.size());
+  return report;
 }
 
 }  // namespace flexure::cfm
