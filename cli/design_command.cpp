@@ -13,9 +13,8 @@
 #include "cli/commands.h"
 #include "cli/slow_progress.h"
 #include "flexure/benchmarks/studies/subclass_table.h"
-#include "flexure/io/hdf5_file.h"
+#include "flexure/io/design_history_file.h"
 #include "flexure/io/output_path.h"
-#include "flexure/io/provenance.h"
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/design/cfm_exact_refinement.h"
@@ -196,77 +195,6 @@ Json design_json(const design::CfmDesignProblem& p,
   return j;
 }
 
-// --out: the search's convergence history (docs/hdf5-schema.md "flexure design cfm --out").
-void write_history(io::AtomicHdf5File& file,
-                   const design::CfmDesignProblem& problem,
-                   const design::CfmSynthesisResult& s,
-                   const design::CfmExactRefinement* exact,
-                   unsigned long seed) {
-  io::Hdf5Group& root = file.root();
-  root.set_attribute("config", problem.config);
-  root.set_attribute("stroke_percent", problem.stroke_percent);
-  root.set_attribute("objective", to_string(problem.objective));
-  root.set_attribute("pcf_min", problem.pcf_min.value_or(0.0));
-  root.set_attribute("orientation", problem.orientation);
-  root.set_attribute("seed", static_cast<std::int64_t>(seed));
-  root.set_attribute("algorithm",
-                     "Halton scan, NLopt COBYLA / Nelder-Mead local runs per region of the "
-                     "primary pivot, polish on the full sampling (docs/design.md)");
-  root.set_attribute("R", s.best.result.R);
-  root.set_attribute("K1", s.best.result.K1);
-  root.set_attribute("K2", s.best.result.K2);
-  root.set_attribute("objective_value", s.best.objective);
-  root.set_attribute("converged", std::int64_t{s.converged() ? 1 : 0});
-  root.set_attribute("attribute_units",
-                     "stroke_percent: % of r2 + r3; pcf_min: % (0: none); R, K1, K2: 1");
-  const auto columns = [](io::Hdf5Group& g, const auto& rows, const char* objective_text) {
-    std::vector<int> run, full, valid, feasible;
-    std::vector<double> R, K1, K2, objective, violation;
-    for (const auto& e : rows) {
-      run.push_back(e.run);
-      full.push_back(e.full_sampling ? 1 : 0);
-      valid.push_back(e.valid ? 1 : 0);
-      feasible.push_back(e.feasible ? 1 : 0);
-      R.push_back(e.R);
-      K1.push_back(e.K1);
-      K2.push_back(e.K2);
-      objective.push_back(e.objective);
-      violation.push_back(e.max_violation);
-    }
-    g.write_dataset(
-        "run", std::span<const int>(run), "1", "local run of the evaluation (-1: the global scan)");
-    g.write_dataset("full_sampling",
-                    std::span<const int>(full),
-                    "1",
-                    "1: the requested stroke sampling, 0: the coarse one of the search");
-    g.write_dataset(
-        "valid", std::span<const int>(valid), "1", "1 where the model accepted the point");
-    g.write_dataset("feasible",
-                    std::span<const int>(feasible),
-                    "1",
-                    "1 where every constraint is met as posed");
-    g.write_dataset("R", std::span<const double>(R), "1", "R = r3/r2");
-    g.write_dataset("K1", std::span<const double>(K1), "1", "K1 = k2/k1 (0: no spring)");
-    g.write_dataset("K2", std::span<const double>(K2), "1", "K2 = k3/k1 (0: no spring)");
-    g.write_dataset("objective", std::span<const double>(objective), "1", objective_text);
-    g.write_dataset("max_violation",
-                    std::span<const double>(violation),
-                    "1",
-                    "largest normalised constraint violation (<= 0: all met)");
-  };
-  io::Hdf5Group h = root.create_group("history");
-  h.set_attribute("description", "every distinct PRBM model evaluation, in order");
-  columns(h, s.history, "the objective in the problem's sense (0 where not valid)");
-  if (exact != nullptr) {
-    io::Hdf5Group e = root.create_group("exact_history");
-    e.set_attribute("description", "every exact stroke of --model exact, in order");
-    e.set_attribute("percent_constant_force_exact", exact->percent_constant_force_exact);
-    columns(e, exact->history, "exact percent constant force Xi' (%) at the search's points");
-  }
-  io::write_provenance(root, {});
-  file.commit();
-}
-
 // --model exact: from the PRBM optimum, the printed sub-classes of the same configuration and
 // stroke and a Halton sequence, the exact model's percent constant force maximised under the same
 // constraints (cfm_exact_refinement.h).
@@ -274,26 +202,10 @@ void run_exact(const DesignCfmArgs& args,
                const design::CfmDesignProblem& problem,
                const design::CfmSynthesisResult& prbm,
                std::chrono::steady_clock::time_point start,
-               std::optional<io::AtomicHdf5File>& file) {
-  std::vector<std::vector<double>> starts{prbm.x};
-  const auto [R_lo, R_hi] = design::toggle_R_interval(problem.stroke_percent);
-  for (const cfm::CfmSubclass& row : cfm::thesis_subclasses()) {
-    if (row.config != problem.config || row.stroke_percent != problem.stroke_percent) continue;
-    if (row.R < R_lo || row.R > R_hi) continue;  // toggle-clamped rows: outside the interval
-    std::vector<double> x;
-    bool inside = true;
-    for (const std::string& v : problem.variables()) {
-      const double value = v == "R" ? row.R : (v == "K1" ? row.K1 : row.K2);
-      const design::Bounds& b = v == "R" ? problem.R : (v == "K1" ? problem.K1 : problem.K2);
-      inside = inside && value >= b.lower && value <= b.upper;
-      x.push_back(value);
-    }
-    if (inside) starts.push_back(x);
-  }
+               std::optional<io::DesignHistoryFile>& file) {
   design::ExactRefinementOptions o;
-  o.sequence_starts =
-      args.exact_starts >= 0 ? args.exact_starts : static_cast<int>(2 * prbm.x.size());
-  const design::CfmExactRefinement r = design::refine_cfm_exact(problem, starts, o);
+  o.sequence_starts = args.exact_starts;  // -1: two per free variable
+  const design::CfmExactRefinement r = design::refine_cfm_exact_from_prbm(problem, prbm, o);
   if (!r.converged()) {
     throw NoConvergenceReport(
         fmt::format("design cfm {} --model exact: {}", problem.config, r.message),
@@ -303,9 +215,9 @@ void run_exact(const DesignCfmArgs& args,
              {"percent_constant_force_exact", r.percent_constant_force_exact},
              {"exact_evaluations", r.evaluations}});
   }
-  if (file) write_history(*file, problem, prbm, &r, args.seed);
-  const double prbm_exact =
-      design::exact_percent_constant_force(problem, prbm.x, o.confirm_points, o.work_budget);
+  if (file) file->write(problem, prbm, &r, args.seed);
+  // The first start of the refinement is the PRBM optimum.
+  const double prbm_exact = r.start_percent_constant_force_exact;
   if (args.json) {
     design::CfmSynthesisResult at_exact = prbm;
     at_exact.best = r.prbm;
@@ -464,12 +376,12 @@ void run_design_cfm(const DesignCfmArgs& args) {
   options.seed = args.seed;
   options.record_history = !args.out.empty();
   // The output file is checked and opened before the search (a wrong path fails at once).
-  std::optional<io::AtomicHdf5File> file;
+  std::optional<io::DesignHistoryFile> file;
   if (!args.out.empty()) {
     io::check_output_path(args.out);
     try {
       file.emplace(args.out);
-    } catch (const io::Hdf5Error& e) {
+    } catch (const InvalidInput& e) {
       throw InvalidInput(fmt::format("--out: {}", e.what()));
     }
   }
@@ -492,7 +404,7 @@ void run_design_cfm(const DesignCfmArgs& args) {
     run_exact(args, problem, s, start, file);
     return;
   }
-  if (file) write_history(*file, problem, s, nullptr, args.seed);
+  if (file) file->write(problem, s, nullptr, args.seed);
   if (args.json) {
     print_json(design_json(problem, s, args.seed, seconds));
     return;

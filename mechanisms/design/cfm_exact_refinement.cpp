@@ -9,6 +9,7 @@
 #include <string>
 
 #include "flexure/mechanisms/cfm/cfm_exact.h"
+#include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/design/halton.h"
 #include "flexure/solver/common/errors.h"
 
@@ -222,7 +223,9 @@ CfmExactRefinement refine_cfm_exact(const CfmDesignProblem& problem,
     ys.push_back(y);
   }
   constexpr int kBases[] = {2, 3, 5};
-  for (int k = 0; k < options.sequence_starts; ++k) {
+  const int sequence_starts =
+      options.sequence_starts < 0 ? static_cast<int>(2 * n) : options.sequence_starts;
+  for (int k = 0; k < sequence_starts; ++k) {
     std::vector<double> y(n);
     for (std::size_t i = 0; i < n; ++i) {
       y[i] = lower[i] + halton(k + 1, kBases[i]) * (upper[i] - lower[i]);
@@ -286,6 +289,37 @@ CfmExactRefinement refine_cfm_exact(const CfmDesignProblem& problem,
                 options.max_evaluations)
           : fmt::format("best of {} local runs, {} exact strokes", out.starts, out.evaluations);
   return out;
+}
+
+std::vector<std::vector<double>> exact_refinement_starts(const CfmDesignProblem& problem,
+                                                         const std::vector<double>& prbm_x) {
+  std::vector<std::vector<double>> starts{prbm_x};
+  const auto [R_lo, R_hi] = toggle_R_interval(problem.stroke_percent);
+  const std::vector<std::string> variables = problem.variables();
+  for (const cfm::CfmSubclass& row : cfm::thesis_subclasses()) {
+    if (row.config != problem.config || row.stroke_percent != problem.stroke_percent) continue;
+    if (row.R < R_lo || row.R > R_hi) continue;  // toggle-clamped rows: outside the interval
+    std::vector<double> x;
+    bool inside = true;
+    for (const std::string& v : variables) {
+      const double value = v == "R" ? row.R : (v == "K1" ? row.K1 : row.K2);
+      const Bounds& b = v == "R" ? problem.R : (v == "K1" ? problem.K1 : problem.K2);
+      inside = inside && value >= b.lower && value <= b.upper;
+      x.push_back(value);
+    }
+    if (inside) starts.push_back(x);
+  }
+  return starts;
+}
+
+CfmExactRefinement refine_cfm_exact_from_prbm(const CfmDesignProblem& problem,
+                                              const CfmSynthesisResult& prbm,
+                                              const ExactRefinementOptions& options) {
+  if (prbm.x.empty()) {
+    throw InvalidInput(
+        "refine_cfm_exact_from_prbm: the PRBM synthesis found no design to start from");
+  }
+  return refine_cfm_exact(problem, exact_refinement_starts(problem, prbm.x), options);
 }
 
 }  // namespace flexure::design

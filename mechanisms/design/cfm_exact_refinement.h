@@ -28,7 +28,8 @@ struct ExactRefinementOptions {
   // candidate the exact model cannot follow is given up quickly and counts as Xi' = 0.
   double work_budget = 1e5;
   // Local runs from the points of a Halton sequence over the bounds (log scale), besides the
-  // given starts: the exact objective has several optima where the PRBM's has one.
+  // given starts: the exact objective has several optima where the PRBM's has one. Negative: two
+  // per free variable (the default of `flexure design cfm --model exact`).
   int sequence_starts = 0;
   void validate() const;
 };
@@ -54,6 +55,19 @@ struct CfmExactRefinement : SolveStatus {
 CfmExactRefinement refine_cfm_exact(const CfmDesignProblem& problem,
                                     const std::vector<std::vector<double>>& starts,
                                     const ExactRefinementOptions& options = {});
+
+// The starts of the refinement of a PRBM optimum `prbm_x` (the free variables): the optimum first,
+// then the printed thesis sub-classes of the problem's configuration and stroke whose R lies in the
+// toggle interval and whose free variables lie inside the problem's bounds, in table order.
+std::vector<std::vector<double>> exact_refinement_starts(const CfmDesignProblem& problem,
+                                                         const std::vector<double>& prbm_x);
+
+// The refinement of a PRBM synthesis: refine_cfm_exact from exact_refinement_starts(problem,
+// prbm.x). Its start_percent_constant_force_exact is Xi'_exact of the PRBM optimum. Throws
+// InvalidInput as above, and when the synthesis found no design (prbm.x empty).
+CfmExactRefinement refine_cfm_exact_from_prbm(const CfmDesignProblem& problem,
+                                              const CfmSynthesisResult& prbm,
+                                              const ExactRefinementOptions& options = {});
 
 // Xi'_exact of one design (the problem's configuration and stroke at the free variables `x`) at
 // `points` stroke points; 0 where the exact model does not converge or the force vanishes.
