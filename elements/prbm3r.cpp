@@ -204,8 +204,9 @@ Prbm3rResult Prbm3rSolver::solve(const CantileverCase& problem) const {
   out.load_steps = outcome.load_steps;
   out.load_factor = outcome.load_factor;
   out.set_converged(outcome.converged);
-  out.message = outcome.converged ? fmt::format("proportional loading in {} steps ({} constants)",
+  out.message = outcome.converged ? fmt::format("proportional loading in {} step{} ({} constants)",
                                                 outcome.load_steps,
+                                                outcome.load_steps == 1 ? "" : "s",
                                                 c.name)
                                   : outcome.message;
   out.joint_angles = angles_of(z);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "flexure/benchmarks/studies/beam_ladder.h"
 #include "flexure/benchmarks/studies/beam_solution_parts.h"
 #include "flexure/benchmarks/studies/method_selector.h"
 #include "flexure/elements/prbm_cantilever.h"
@@ -326,6 +327,12 @@ BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem) {
       break;
     case BeamMethod::kPrbm:
       solution = solve_prbm(problem);
+      break;
+    case BeamMethod::kLinear:
+    case BeamMethod::kPrbm3r:
+    case BeamMethod::kBcm:
+    case BeamMethod::kCbcm:
+      solution = solve_ladder_model(used.method, problem);  // beam_ladder.h
       break;
     case BeamMethod::kAuto:
       throw InvalidInput("auto did not resolve to a method");  // resolve_beam_method never does
