@@ -259,18 +259,20 @@ CbcmResult ChainedBcmSolver::solve(const SegmentChain& chain) const {
     return r.allFinite();
   };
   const int n = options_.elements;
-  const auto tip_angle = [n](const Eigen::VectorXd& z) {
+  // Every element node's angle (load_path_newton.h watches each).
+  const detail::MeasureFunction node_angles = [n](const Eigen::VectorXd& z) -> Eigen::VectorXd {
+    Eigen::VectorXd angles(n);
     double angle = 0.0;
-    for (int j = 0; j < n; ++j) angle += z[2 * j + 1];
-    return angle;
+    for (int j = 0; j < n; ++j) angles[j] = angle += z[2 * j + 1];
+    return angles;
   };
   detail::LoadPathOptions path;
   path.tolerance = options_.tolerance * prepared.load_scale;
   path.max_iterations = options_.max_iterations;
   path.max_load_steps = options_.max_load_steps;
-  path.max_change = 0.5;
   Eigen::VectorXd z = Eigen::VectorXd::Zero(model.size());
-  detail::LoadPathOutcome outcome = detail::follow_load_path(z, residual, nullptr, tip_angle, path);
+  detail::LoadPathOutcome outcome =
+      detail::follow_load_path(z, residual, nullptr, node_angles, path);
   if (!outcome.converged && outcome.load_steps == 0 && inverse_d == 0.0 &&
       prepared.prescribed > 0) {
     // An inextensible segment whose prescribed tip must approach the root from the start has no
@@ -283,14 +285,14 @@ CbcmResult ChainedBcmSolver::solve(const SegmentChain& chain) const {
     z.setZero();
     model.set_inverse_axial_stiffness(kRegularisingInverseD);
     const detail::LoadPathOutcome first =
-        detail::follow_load_path(z, residual, nullptr, tip_angle, path);
+        detail::follow_load_path(z, residual, nullptr, node_angles, path);
     if (first.converged) {
       const auto stiffen = [&](const Eigen::VectorXd& state, double t, Eigen::VectorXd& r) {
         model.set_inverse_axial_stiffness((1.0 - t) * kRegularisingInverseD);
         model.residual(state, 1.0, scratch, r);
         return r.allFinite();
       };
-      outcome = detail::follow_load_path(z, stiffen, nullptr, tip_angle, path);
+      outcome = detail::follow_load_path(z, stiffen, nullptr, node_angles, path);
       outcome.iterations += first.iterations;
       outcome.load_steps += first.load_steps;
       if (!outcome.converged) {

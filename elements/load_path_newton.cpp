@@ -123,8 +123,9 @@ LoadPathOutcome follow_load_path(Eigen::VectorXd& z,
     if (previous_step > 0.0) trial += (z - previous) * (step / previous_step);
     const NewtonResult n = newton(trial, target, residual, jacobian, options);
     out.iterations += n.iterations;
-    const double change = std::fabs(measure(trial) - measure(z));
-    if (n.converged && (change <= 2.0 * options.max_change || step <= options.min_step)) {
+    const double change =
+        n.converged ? (measure(trial) - measure(z)).lpNorm<Eigen::Infinity>() : 0.0;
+    if (n.converged && (change <= options.max_change || step <= options.min_step)) {
       previous = z;
       previous_step = step;
       z = trial;

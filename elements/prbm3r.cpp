@@ -187,16 +187,21 @@ Prbm3rResult Prbm3rSolver::solve(const CantileverCase& problem) const {
     }
     return true;
   };
-  const auto tip_angle = [](const Eigen::VectorXd& z) { return z[0] + z[1] + z[2]; };
+  // The three link angles beyond the joints (load_path_newton.h watches every one).
+  const auto link_angles = [](const Eigen::VectorXd& z) {
+    return Eigen::Vector3d(z[0], z[0] + z[1], z[0] + z[1] + z[2]).eval();
+  };
+  const detail::MeasureFunction measure = [&](const Eigen::VectorXd& z) -> Eigen::VectorXd {
+    return link_angles(z);
+  };
   detail::LoadPathOptions path;
   path.tolerance = options_.tolerance *
                    std::max({1.0, std::fabs(load.Fx), std::fabs(load.Fy), std::fabs(load.mu)});
   path.max_iterations = options_.max_iterations;
   path.max_load_steps = options_.max_load_steps;
-  path.max_change = 0.5;
   Eigen::VectorXd z = Eigen::VectorXd::Zero(size);
   const detail::LoadPathOutcome outcome =
-      detail::follow_load_path(z, residual, jacobian, tip_angle, path);
+      detail::follow_load_path(z, residual, jacobian, measure, path);
 
   Prbm3rResult out;
   out.iterations = outcome.iterations;

@@ -516,3 +516,27 @@ TEST(LadderRefusals, OptionsNameTheBadField) {
 
 }  // namespace
 }  // namespace flexure
+
+namespace flexure {
+namespace {
+
+TEST(LadderLoadPath, StaysOnTheBranchOfProportionalLoading) {
+  // A compressive tip force with an opposing end moment: the tip angle of the path stays small
+  // while the beam turns into an S. Watching the tip angle alone, one long step converged onto
+  // another equilibrium (theta0 = -0.96 for the CBCM, -0.88 and unstable for PR-3R, against the
+  // elastica's +0.750, whose load path has no fold here).
+  const CantileverCase c = free_case(1.0, 4.0, -2.0);
+  const EllipticResult e = EllipticSolver().solve(c.load);
+  ASSERT_TRUE(e.converged());
+  ASSERT_EQ(e.limit_points, 0);
+  const CbcmResult r = cbcm(32).solve(c);
+  ASSERT_TRUE(r.converged()) << r.message;
+  EXPECT_NEAR(r.tip.theta, e.tip.theta0, 1e-3);
+  const Prbm3rResult p = Prbm3rSolver().solve(c);
+  ASSERT_TRUE(p.converged()) << p.message;
+  EXPECT_TRUE(p.stable);
+  EXPECT_NEAR(p.tip.theta0, e.tip.theta0, 0.1);
+}
+
+}  // namespace
+}  // namespace flexure
