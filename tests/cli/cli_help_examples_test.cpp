@@ -28,6 +28,7 @@ const std::vector<std::string> kCommands = {"beam",
                                             "mechanism analyze",
                                             "mechanism validate",
                                             "dynamics",
+                                            "models map",
                                             "bench",
                                             "help"};
 
