@@ -55,6 +55,8 @@ const std::vector<CommandExamples>& command_examples() {
        {"flexure models map --n 0 --alpha2 0.5:5:4 --mu 0 --out models.h5",
         "flexure models map --boundary guided --n 0 --alpha2 1:20:5 --models linear,bcm,cbcm "
         "--out guided.h5 --json"}},
+      {{"models", "prbm3r-constants"},
+       {"flexure models prbm3r-constants --json", "flexure models prbm3r-constants"}},
       {{"cfm"},
        {"flexure cfm --config lpp --R 1 --d 40",
         "flexure cfm --subclass lpp-b --json",

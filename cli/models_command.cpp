@@ -13,9 +13,12 @@
 #include "cli/slow_progress.h"
 #include "flexure/benchmarks/studies/model_map.h"
 #include "flexure/elements/prbm3r.h"
+#include "flexure/elements/prbm3r_derivation.h"
 #include "flexure/io/output_path.h"
+#include "flexure/io/provenance.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/version.h"
 
 namespace flexure::cli {
 namespace {
@@ -148,6 +151,33 @@ void run_models_map(const ModelsMapArgs& a) {
   }
 }
 
+// `flexure models prbm3r-constants`: derives the PR-3R constants against the exact elastica
+// (elements/prbm3r_derivation.h) and prints data/prbm3r_flexure_constants.csv, or a summary.
+void run_prbm3r_constants(bool json) {
+  const Prbm3rDerivation d = derive_prbm3r_constants();
+  if (!d.converged()) {
+    throw NoConvergence(
+        fmt::format("the PR-3R constants' optimisation did not converge: {}", d.message));
+  }
+  if (json) {
+    const Prbm3rConstants& c = d.constants;
+    print_json(Json{{"gamma", {c.gamma[0], c.gamma[1], c.gamma[2], c.gamma[3]}},
+                    {"k", {c.k[0], c.k[1], c.k[2]}},
+                    {"objective", d.objective},
+                    {"objective_su", d.objective_su},
+                    {"max_position_error", d.max_position_error},
+                    {"max_position_error_su", d.max_position_error_su},
+                    {"loads", d.loads},
+                    {"domain", d.domain}});
+    return;
+  }
+  fmt::print(
+      "{}",
+      prbm3r_constants_csv(
+          d,
+          fmt::format("flexure {} (git commit {}): {}", kVersion, kGitCommit, io::command_line())));
+}
+
 }  // namespace
 
 void register_models_command(CLI::App& app) {
@@ -188,6 +218,14 @@ void register_models_command(CLI::App& app) {
   map->add_option("--out", a->out, "The HDF5 file of the map (docs/hdf5-schema.md)")->required();
   map->add_flag("--json", a->json, "Print a JSON summary");
   map->callback([a] { run_models_map(*a); });
+
+  auto json = std::make_shared<bool>(false);
+  CLI::App* constants = models.add_subcommand(
+      "prbm3r-constants",
+      "Derive the PR-3R model's constants against the exact elastica (docs/models.md) and print "
+      "data/prbm3r_flexure_constants.csv");
+  constants->add_flag("--json", *json, "Print the constants, objective and domain as JSON");
+  constants->callback([json] { run_prbm3r_constants(*json); });
 }
 
 }  // namespace flexure::cli

@@ -256,7 +256,7 @@ std::string prbm3r_constants_csv(const Prbm3rDerivation& d, const std::string& p
       "# Objective (RMS of e): {:.6g}; Su's general set on the same domain: {:.6g}.\n"
       "# Largest relative tip position error over the domain: {:.4g} (Su's general set: {:.4g}).\n"
       "# Provenance: {}\n"
-      "# Regenerate with scripts/regen_model_data.py (flexure models prbm3r-constants).\n"
+      "# Regenerate with: flexure models prbm3r-constants > data/prbm3r_flexure_constants.csv\n"
       "# Read by elements/prbm3r.cpp (Prbm3rConstants::flexure, --constants flexure).\n"
       "#\n"
       "# Columns (all dimensionless):\n"
