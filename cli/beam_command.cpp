@@ -16,6 +16,7 @@
 #include "cli/cli_common.h"
 #include "cli/command_runner.h"
 #include "cli/commands.h"
+#include "cli/physical_flags.h"
 #include "cli/warning_output.h"
 #include "flexure/benchmarks/studies/method_selector.h"
 #include "flexure/benchmarks/studies/physical_beam.h"
@@ -64,8 +65,7 @@ struct BeamArgs {
   CLI::Option* tip_angle_option = nullptr;
   CLI::Option* chain_option = nullptr;
   // A physical cantilever (SI, or values with units: 50mm, 200GPa, 5N; io/quantity.h).
-  std::string length, E, I, width, thickness, Fx, Fy, M, yield_strength;
-  std::vector<CLI::Option*> physical_options;
+  PhysicalFlags physical;
 };
 
 // What `flexure beam` solves: Howell's nondimensional problem, and the physical beam or chain file
@@ -82,39 +82,6 @@ double angle_option(const std::string& text, const char* what) {
   const io::Quantity q = io::parse_quantity(text, io::Dimension::kAngle, what);
   warn(io::angle_warning(q, what));
   return q.si;
-}
-
-std::optional<double> quantity_option(const std::string& text,
-                                      io::Dimension dimension,
-                                      const char* what) {
-  if (text.empty()) return std::nullopt;
-  return io::parse_quantity(text, dimension, what).si;
-}
-
-// The physical cantilever of --length, --E, the section and the loads (docs/units.md).
-PhysicalCantilever physical_beam(const BeamArgs& args) {
-  using io::Dimension;
-  PhysicalCantilever beam;
-  if (args.length.empty() || args.E.empty()) {
-    throw InvalidInput(
-        "a physical beam needs --length and --E, a section (--I, or --width and --thickness) and "
-        "its tip loads (--Fx, --Fy, --M; default 0)");
-  }
-  beam.length = io::parse_quantity(args.length, Dimension::kLength, "--length").si;
-  const io::Quantity E = io::parse_quantity(args.E, Dimension::kStress, "--E");
-  beam.E = E.si;
-  beam.I = quantity_option(args.I, Dimension::kSecondMoment, "--I");
-  beam.width = quantity_option(args.width, Dimension::kLength, "--width");
-  beam.thickness = quantity_option(args.thickness, Dimension::kLength, "--thickness");
-  beam.Fx = quantity_option(args.Fx, Dimension::kForce, "--Fx").value_or(0.0);
-  beam.Fy = quantity_option(args.Fy, Dimension::kForce, "--Fy").value_or(0.0);
-  beam.M = quantity_option(args.M, Dimension::kMoment, "--M").value_or(0.0);
-  beam.yield_strength =
-      quantity_option(args.yield_strength, Dimension::kStress, "--yield-strength");
-  beam.validate();
-  warn(io::modulus_warning(E, "--E"));
-  if (beam.thickness) warn(io::thickness_warning(*beam.thickness, beam.length, "--thickness"));
-  return beam;
 }
 
 constexpr int kMaxShapePoints = 1'000'000;
@@ -213,10 +180,7 @@ BeamInput make_input(const BeamArgs& args) {
   const bool any_given = *args.alpha2_option || *args.theta0_option || *args.b_over_l_option;
   const bool nondimensional_loads = any_given || args.load_ratio_n != 0.0 || args.mu != 0.0 ||
                                     args.follower != 0.0 || args.boundary != "free";
-  const bool physical = std::any_of(args.physical_options.begin(),
-                                    args.physical_options.end(),
-                                    [](const CLI::Option* o) { return bool(*o); });
-  if (physical) {
+  if (args.physical.given()) {
     if (nondimensional_loads || *args.chain_option) {
       throw InvalidInput(
           "a physical beam (--length, --E, the section, --Fx, --Fy, --M) is loaded in newtons; "
@@ -224,7 +188,7 @@ BeamInput make_input(const BeamArgs& args) {
           "--follower, --boundary or with --chain (a chain file can be in SI units itself: "
           "docs/chain-toml.md)");
     }
-    input.physical = physical_beam(args);
+    input.physical = args.physical.parse();
     problem = input.physical->to_problem(problem);
     return input;
   }
@@ -704,34 +668,7 @@ void register_beam_command(CLI::App& app) {
   args->shape_option = beam->add_option(
       "--shape", args->shape_points, "Also output the deflected shape at K points (K >= 2)");
   // A physical cantilever (docs/units.md): SI numbers or values with units.
-  CLI::Option_group* physical = beam->add_option_group(
-      "physical beam", "A cantilever in physical units (SI, or with units: 50mm, 200GPa, 5N)");
-  const std::pair<const char*, std::string*> physical_flags[] = {
-      {"--length", &args->length},
-      {"--E", &args->E},
-      {"--I", &args->I},
-      {"--width", &args->width},
-      {"--thickness", &args->thickness},
-      {"--Fx", &args->Fx},
-      {"--Fy", &args->Fy},
-      {"--M", &args->M},
-      {"--yield-strength", &args->yield_strength},
-  };
-  const char* physical_help[] = {
-      "Beam length L (m, or 50mm, 2in)",
-      "Young's modulus E (Pa, or 200GPa, 30Msi)",
-      "Area moment of inertia I (m^4, or mm^4, in^4); or --width and --thickness",
-      "Section width b (m, or mm, in), out of the plane of bending",
-      "Section thickness h (m, or mm, in), in the plane of bending: I = b h^3/12, stress M h/2I",
-      "Tip force along the undeformed beam, from the clamp (N, or lbf)",
-      "Tip force perpendicular to the undeformed beam (N, or lbf)",
-      "Tip moment, counter-clockwise (N m, or N mm, lbf in)",
-      "Yield strength S_y for the safety factor (Pa, or MPa, ksi)",
-  };
-  for (std::size_t i = 0; i < std::size(physical_flags); ++i) {
-    args->physical_options.push_back(
-        physical->add_option(physical_flags[i].first, *physical_flags[i].second, physical_help[i]));
-  }
+  args->physical.add_to(*beam, true);
   beam->add_flag("--json", args->json, "Print one JSON object on stdout");
   beam->callback([args] { run_beam(*args); });
 }

@@ -28,7 +28,8 @@ const std::vector<CommandEntry>& command_table() {
        "Constant-force slider mechanism, nondimensional PRBM (Weight 2001, Howell §10.1)",
        {register_cfm_command}},
       {"path",
-       "Load path of proportional loading from zero (continuation), written to HDF5",
+       "Equilibrium path from zero load (continuation: limit points and bifurcations located, "
+       "branch switching, displacement control), written to HDF5",
        {register_path_command}},
       {"mechanism",
        "Constant-force slider mechanisms: PRBM and exact model of one design",

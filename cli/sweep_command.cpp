@@ -13,6 +13,7 @@
 #include "cli/commands.h"
 #include "cli/slow_progress.h"
 #include "flexure/benchmarks/studies/beam_sweep_grid.h"
+#include "flexure/benchmarks/studies/beam_sweep_solver.h"
 #include "flexure/io/beam_sweep.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/output_path.h"
@@ -169,8 +170,10 @@ void run_sweep_beam(const SweepBeamArgs& args) {
     throw InvalidInput(fmt::format("--out: {}", e.what()));
   }
 
+  // Shooting sweeps start each point from its neighbour where that gives the same answer.
+  const BeamSweepSolver sweep_solver(grid, method);
   const io::BeamIndexSolver solve_point = [&](long index) {
-    BeamSolution solution = solve_beam(method, grid.at(index));
+    BeamSolution solution = sweep_solver.solve(index);
     io::BeamSweepPoint point;
     point.set_converged(solution.converged());
     point.tip = solution.tip;

@@ -30,13 +30,30 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
   a.prbm_validity = prbm_stroke_validity(d, a.prbm.displacement);
   a.prbm_validity_limit = a.prbm_validity.limit;
   a.prbm_validity_reason = a.prbm_validity.reason;
+  if (options.stability) {
+    std::vector<Stability> dc, fc;
+    for (double dx : a.prbm.displacement) {
+      PointStability v = prbm_point_stability(d, dx);
+      dc.push_back(std::move(v.displacement_control));
+      fc.push_back(std::move(v.force_control));
+    }
+    a.stability_prbm.displacement_control = summarise_stroke_stability(
+        std::move(dc), a.prbm.displacement, "PRBM", SliderControl::kDisplacement);
+    a.stability_prbm.force_control =
+        summarise_stroke_stability(std::move(fc),
+                                   a.prbm.displacement,
+                                   "PRBM",
+                                   SliderControl::kForce,
+                                   &a.stability_prbm.displacement_control.points);
+  }
   a.max_stress = a.prbm.max_stress;
   a.has_exact = exact_support(d) != ExactSupport::kPrbmOnly;
   if (!a.has_exact) {
     a.exact_note = exact_support_reason(d);
   } else if (options.exact) {
     const std::size_t n = a.prbm.displacement.size();
-    const std::size_t total = options.exact_stress ? 2 * n : n;
+    const std::size_t passes = 1 + (options.exact_stress ? 1 : 0) + (options.stability ? 1 : 0);
+    const std::size_t total = passes * n;
     StrokeProgress stroke_progress;
     if (options.progress) {
       stroke_progress = [&](std::size_t done, std::size_t) { options.progress(done, total); };
@@ -70,6 +87,32 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
       a.has_exact_stress = options.exact_stress;
       // How large the PRBM's error is where it is outside its table, and where it is inside.
       add_force_errors(a.prbm_validity, a.prbm.force, a.force_exact);
+      if (options.stability) {
+        std::vector<Stability> dc, fc;
+        const std::size_t done = (passes - 1) * n;
+        for (std::size_t k = 0; k < a.exact.points.size(); ++k) {
+          PointStability v;
+          try {
+            v = exact_point_stability(d, a.exact.points[k]);
+          } catch (const std::exception& e) {
+            // Not a verdict: say why at this point (the shape could not be integrated again).
+            v.displacement_control = v.force_control =
+                not_checked_stability(fmt::format("the verdict failed: {}", e.what()));
+          }
+          dc.push_back(std::move(v.displacement_control));
+          fc.push_back(std::move(v.force_control));
+          if (options.progress) options.progress(done + k + 1, total);
+        }
+        a.stability_exact.displacement_control = summarise_stroke_stability(
+            std::move(dc), a.prbm.displacement, "exact", SliderControl::kDisplacement);
+        a.stability_exact.force_control =
+            summarise_stroke_stability(std::move(fc),
+                                       a.prbm.displacement,
+                                       "exact",
+                                       SliderControl::kForce,
+                                       &a.stability_exact.displacement_control.points);
+        a.has_exact_stability = true;
+      }
       const ConstantForceMeasure cf = constant_force_measure(a.force_exact);
       a.percent_constant_force_exact = cf.percent;
       a.force_vanishes_exact = cf.vanishes;

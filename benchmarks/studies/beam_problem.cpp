@@ -114,81 +114,119 @@ BeamSolution solve_prbm(const BeamProblem& problem) {
   return solution;
 }
 
-BeamSolution solve_numerical_forward(BeamMethod method,
-                                     const BeamProblem& problem,
-                                     double alpha2,
-                                     int shape_points) {
-  const SegmentChain chain = problem.to_chain(alpha2);
+// What every numerical forward solve ends with: a chain's loads in its own units, and the shape
+// per unit length of the chain (Howell's a/l, b/l are).
+void finish_numerical(const BeamProblem& problem, const SegmentChain& chain, BeamSolution& s) {
+  if (problem.chain) describe_chain_loads(chain, s);
   const double length = chain.total_length();
-  BeamSolution solution;
-  solution.method = method;
-  solution.alpha2 = alpha2;
-  solution.family = "numerical";
-  if (method == BeamMethod::kShooting) {
-    ShootingSolver::Options options;
-    options.shape_points = std::max(shape_points, 401);
-    options.backend = problem.integrator;
-    const ShootingResult r = solve_shooting(chain, options);
-    solution.termination = r.termination;
-    solution.message = r.message;
-    solution.iterations = r.iterations;
-    solution.tip = r.tip_pose(length);
-    solution.reactions = {r.reaction.Fx, r.reaction.Fy, r.reaction.M};
-    solution.root_moment = -r.reaction.M;
-    solution.load_factor = r.load_factor;
-    solution.tolerance = options.rtol;
-    switch (r.path) {
-      case ShootingPath::kContinuation:
-        solution.branch = fmt::format(
-            "proportional loading (pseudo-arclength continuation, {} steps)", r.continuation_steps);
-        break;
-      case ShootingPath::kTwoStageContinuation:
-        solution.branch = fmt::format(
-            "proportional loading (two-stage pseudo-arclength continuation, {} steps in the "
-            "first stage)",
-            r.continuation_steps);
-        break;
-      case ShootingPath::kDirectNewton:
-        solution.branch = "unique equilibrium (direct Newton; contraction bound below 1)";
-        break;
-      case ShootingPath::kNewtonFromGuess:
-        solution.branch = "Newton from a given guess";
-        break;
-    }
-    solution.limit_points = r.limit_points;
-    solution.first_limit_load_factor = r.first_limit_load_factor;
-    solution.branch += limit_points_note(r.limit_points, r.first_limit_load_factor);
-    solution.inflection_points = count_curvature_sign_changes(r.shape);
-    if (shape_points > 0 && r.converged()) solution.shape = resample(r.shape, shape_points);
-  } else {
-    ChainAlgorithmSolver::Options options;
-    options.elements = problem.elements;
-    options.increments = problem.increments;
-    options.variant = problem.chain_variant;
-    const ChainResult r = solve_chain(chain, options);
-    solution.termination = r.termination;
-    solution.message = r.message;
-    solution.iterations = r.iterations;
-    solution.tip = r.tip_pose;
-    solution.reactions = {r.root_reaction.Fx, r.root_reaction.Fy, r.root_reaction.M};
-    solution.root_moment = r.root_moment;
-    solution.load_factor = r.load_factor;
-    solution.tolerance = options.tolerance;
-    solution.elements = r.elements;
-    solution.increments = r.increments;
-    solution.branch = fmt::format("proportional loading ({} load increments, {} variant)",
-                                  r.increments,
-                                  to_string(options.variant));
-    solution.inflection_points = count_curvature_sign_changes(r.nodes);
-    if (shape_points > 0 && r.converged()) solution.shape = resample(r.nodes, shape_points);
-  }
-  if (problem.chain) describe_chain_loads(chain, solution);
-  // Howell's a/l, b/l are per unit length of the chain; the shape is reported the same way.
-  for (ShapePoint& p : solution.shape) {
+  for (ShapePoint& p : s.shape) {
     p.s /= length;
     p.x /= length;
     p.y /= length;
   }
+}
+
+}  // namespace
+
+ShootingSolver::Options beam_shooting_options(const BeamProblem& problem, int shape_points) {
+  ShootingSolver::Options options;
+  options.shape_points = shape_points;
+  // The inflection points from the moment along the integration, not from a sampled shape (a
+  // shape of 401 points cost about as much as the solve, docs/performance.md).
+  options.count_inflections = true;
+  options.backend = problem.integrator;
+  return options;
+}
+
+BeamSolution beam_solution_from_shooting(const BeamProblem& problem,
+                                         double alpha2,
+                                         const ShootingResult& r,
+                                         int shape_points) {
+  const SegmentChain chain = problem.to_chain(alpha2);
+  BeamSolution solution;
+  solution.method = BeamMethod::kShooting;
+  solution.alpha2 = alpha2;
+  solution.family = "numerical";
+  solution.termination = r.termination;
+  solution.message = r.message;
+  solution.iterations = r.iterations;
+  solution.tip = r.tip_pose(chain.total_length());
+  solution.reactions = {r.reaction.Fx, r.reaction.Fy, r.reaction.M};
+  solution.root_moment = -r.reaction.M;
+  solution.load_factor = r.load_factor;
+  solution.tolerance = beam_shooting_options(problem, 0).rtol;
+  switch (r.path) {
+    case ShootingPath::kContinuation:
+      solution.branch = fmt::format(
+          "proportional loading (pseudo-arclength continuation, {} steps)", r.continuation_steps);
+      break;
+    case ShootingPath::kTwoStageContinuation:
+      solution.branch = fmt::format(
+          "proportional loading (two-stage pseudo-arclength continuation, {} steps in the "
+          "first stage)",
+          r.continuation_steps);
+      break;
+    case ShootingPath::kDirectNewton:
+      solution.branch = "unique equilibrium (direct Newton; contraction bound below 1)";
+      break;
+    case ShootingPath::kNewtonFromGuess:
+      solution.branch = "Newton from a given guess";
+      break;
+    case ShootingPath::kFromNeighbour:
+      // The caller (beam_sweep_solver.cpp) says why this is the proportional-loading branch.
+      solution.branch = "Newton from the neighbouring load";
+      break;
+  }
+  solution.limit_points = r.limit_points;
+  solution.first_limit_load_factor = r.first_limit_load_factor;
+  solution.branch += limit_points_note(r.limit_points, r.first_limit_load_factor);
+  solution.inflection_points = std::max(r.inflection_points, 0);
+  if (shape_points > 0 && r.converged()) {
+    solution.shape = static_cast<int>(r.shape.size()) == shape_points
+                         ? r.shape
+                         : resample(r.shape, shape_points);
+  }
+  finish_numerical(problem, chain, solution);
+  return solution;
+}
+
+namespace {
+
+BeamSolution solve_numerical_forward(BeamMethod method,
+                                     const BeamProblem& problem,
+                                     double alpha2,
+                                     int shape_points) {
+  if (method == BeamMethod::kShooting) {
+    const ShootingSolver::Options options = beam_shooting_options(problem, shape_points);
+    const ShootingResult r = solve_shooting(problem.to_chain(alpha2), options);
+    return beam_solution_from_shooting(problem, alpha2, r, shape_points);
+  }
+  const SegmentChain chain = problem.to_chain(alpha2);
+  BeamSolution solution;
+  solution.method = method;
+  solution.alpha2 = alpha2;
+  solution.family = "numerical";
+  ChainAlgorithmSolver::Options options;
+  options.elements = problem.elements;
+  options.increments = problem.increments;
+  options.variant = problem.chain_variant;
+  const ChainResult r = solve_chain(chain, options);
+  solution.termination = r.termination;
+  solution.message = r.message;
+  solution.iterations = r.iterations;
+  solution.tip = r.tip_pose;
+  solution.reactions = {r.root_reaction.Fx, r.root_reaction.Fy, r.root_reaction.M};
+  solution.root_moment = r.root_moment;
+  solution.load_factor = r.load_factor;
+  solution.tolerance = options.tolerance;
+  solution.elements = r.elements;
+  solution.increments = r.increments;
+  solution.branch = fmt::format("proportional loading ({} load increments, {} variant)",
+                                r.increments,
+                                to_string(options.variant));
+  solution.inflection_points = count_curvature_sign_changes(r.nodes);
+  if (shape_points > 0 && r.converged()) solution.shape = resample(r.nodes, shape_points);
+  finish_numerical(problem, chain, solution);
   return solution;
 }
 

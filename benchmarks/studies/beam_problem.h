@@ -18,6 +18,7 @@
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/elastica_integrator.h"
+#include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {
 
@@ -136,5 +137,15 @@ BeamMethod resolve_beam_method(BeamMethod method);
 // chosen method that does not converge, goes to the shooting method (it follows the load path past
 // limit points); method_reason then says which method answered and why.
 BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem);
+
+// The shooting method's part of solve_beam for a forward problem, split so that a sweep can start
+// each point from its neighbour (beam_sweep_solver.h): the solver's options for `problem` (the
+// shape at `shape_points` points, 0 for none; the inflection points counted without a shape),
+// and a result at load alpha2 as the BeamSolution solve_beam returns.
+ShootingSolver::Options beam_shooting_options(const BeamProblem& problem, int shape_points);
+BeamSolution beam_solution_from_shooting(const BeamProblem& problem,
+                                         double alpha2,
+                                         const ShootingResult& r,
+                                         int shape_points);
 
 }  // namespace flexure

@@ -57,6 +57,29 @@ def test_path(cli, tmp_path):
                 skip=("seconds", "out"))
 
 
+def test_path_bifurcations_branch_and_control(cli, tmp_path):
+    """The keys of issue 27 (bifurcations, limit_point_list, control, shapes) come through."""
+    a, b = tmp_path / "a.h5", tmp_path / "b.h5"
+    column = flexure.path(length="1m", E="1GPa", I=1e-9, Fx="-30N", out=a)
+    assert_same(column, cli.json("path", "--length", "1m", "--E", "1GPa", "--I", "1e-9",
+                                 "--Fx", "-30N", "--out", b), skip=("seconds", "out"))
+    # pi^2/4 and 9 pi^2/4 of the load 30 N on a beam with EI = 1 N m^2, L = 1 m.
+    loads = [30.0 * p["load_factor"] for p in column["bifurcations"]]
+    assert loads == pytest.approx([math.pi ** 2 / 4, 9 * math.pi ** 2 / 4], rel=1e-8)
+    assert column["bifurcations"][0]["index_after"] == column["bifurcations"][0]["index"] + 1
+    buckled = flexure.path(length="1m", E="1GPa", I=1e-9, Fx="-3N", branch=1, out=a)
+    assert_same(buckled, cli.json("path", "--length", "1m", "--E", "1GPa", "--I", "1e-9",
+                                  "--Fx", "-3N", "--branch", "1", "--out", b),
+                skip=("seconds", "out"))
+    assert buckled["switched_branch"] is True
+    guided = flexure.path(boundary="guided", control="tip-y", tip_y=0.3, shapes=5, out=a)
+    assert_same(guided, cli.json("path", "--boundary", "guided", "--control", "tip-y",
+                                 "--tip-y", "0.3", "--shapes", "5", "--out", b),
+                skip=("seconds", "out"))
+    assert guided["control"] == "tip-y" and guided["shape_points"] == 5
+    assert flexure.read(a)["shapes"]["x"].shape == (guided["points"], 5)
+
+
 def test_sweep_and_read(cli, tmp_path):
     a, b = tmp_path / "a.h5", tmp_path / "b.h5"
     assert_same(flexure.sweep(alpha2="0:5:11", n="0:1:3", out=a),
@@ -101,6 +124,20 @@ def test_mechanism_list_and_analyze(cli):
     assert_same(flexure.mechanism.list(), cli.json("mechanism", "list"))
     assert_same(flexure.mechanism.analyze("1A-lpp", points=8, method="exact"),
                 cli.json("mechanism", "analyze", "1A-lpp", "--points", "8", "--method", "exact"))
+
+
+def test_mechanism_stability_keys(cli):
+    # docs/stability.md "Mechanisms": one verdict per stroke point, per model and control.
+    got = flexure.mechanism.analyze("2A-ssp", points=8, method="exact")
+    assert_same(got, cli.json("mechanism", "analyze", "2A-ssp", "--points", "8", "--method",
+                              "exact"))
+    for control in ("stability_displacement_control", "stability_force_control"):
+        for model in ("prbm", "exact"):
+            v = got[control][model]
+            assert len(v["stability"]) == 8
+            assert len(v["stability_margin"]) == 8
+            assert v["not_checked_points"] == 0
+    assert list(got["stability_displacement_control"]["prbm"]["stability_margin"]) == [1.0] * 8
 
 
 def test_mechanism_from_file_and_dict(cli):

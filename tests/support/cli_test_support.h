@@ -102,7 +102,9 @@ inline const std::vector<std::string>& mechanism_analyze_contract_keys() {
                                                 "percent_constant_force_exact",
                                                 "max_force_error",
                                                 "max_stress",
-                                                "safety_factor"};
+                                                "safety_factor",
+                                                "stability_displacement_control",
+                                                "stability_force_control"};
   return keys;
 }
 
