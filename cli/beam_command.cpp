@@ -17,6 +17,7 @@
 #include "cli/command_runner.h"
 #include "cli/commands.h"
 #include "cli/physical_flags.h"
+#include "cli/warning_output.h"
 #include "flexure/benchmarks/studies/method_selector.h"
 #include "flexure/benchmarks/studies/physical_beam.h"
 #include "flexure/io/chain_toml.h"
@@ -49,6 +50,11 @@ struct BeamArgs {
   std::string tip_angle;  // an angle, radians or with a unit
   double follower = 0.0;
   int elements = 100;
+  CLI::Option* elements_option = nullptr;
+  std::string constants = "su";  // --method prbm3r: the PR-3R constants
+  CLI::Option* constants_option = nullptr;
+  double slenderness = 0.0;  // --method bcm, cbcm: L/t (0: inextensible)
+  CLI::Option* slenderness_option = nullptr;
   int increments = 1;
   std::string chain_variant = "corrected";
   std::string integrator = "rk8pd";
@@ -79,6 +85,45 @@ double angle_option(const std::string& text, const char* what) {
 }
 
 constexpr int kMaxShapePoints = 1'000'000;
+
+// The options of the cheaper models (docs/models.md): --elements of the chained BCM, --constants of
+// PR-3R, --slenderness of the BCM and CBCM; each refused with a method that does not use it (auto
+// chooses among the models at their defaults, the settings its error map was measured with).
+void add_ladder_options(const BeamArgs& args, BeamProblem& problem) {
+  if (*args.elements_option) {
+    if (same_name(args.method, "bcm")) {
+      throw InvalidInput(
+          "--elements: the BCM is one element; --method cbcm --elements N chains N of them");
+    }
+    if (same_name(args.method, "cbcm")) {
+      require_in_range(args.elements, "--elements (chained BCM elements N)", 1, 2000);
+      problem.cbcm_elements = args.elements;
+    }
+  }
+  if (*args.constants_option) {
+    if (!same_name(args.method, "prbm3r")) {
+      throw InvalidInput(fmt::format(
+          "--constants chooses the PR-3R model's constants; --method {} does not use them",
+          args.method));
+    }
+    problem.prbm3r_constants = to_lower(args.constants);
+  }
+  if (*args.slenderness_option) {
+    if (!same_name(args.method, "bcm") && !same_name(args.method, "cbcm")) {
+      throw InvalidInput(fmt::format(
+          "--slenderness sets the axial stiffness of the BCM and CBCM (d = 12 (L/t)^2); --method "
+          "{} is inextensible",
+          args.method));
+    }
+    require_finite_input(args.slenderness, "--slenderness (L/t)");
+    if (!(args.slenderness > 0.0)) {
+      throw InvalidInput(fmt::format(
+          "--slenderness L/t must be > 0 (got {:g}); leave it out for the inextensible beam",
+          args.slenderness));
+    }
+    problem.slenderness = args.slenderness;
+  }
+}
 
 BeamInput make_input(const BeamArgs& args) {
   refuse_tol_with_named_method(args.tol_option, args.method);
@@ -119,6 +164,7 @@ BeamInput make_input(const BeamArgs& args) {
   require_in_range(args.increments, "--increments (load increments)", 1, 1'000'000);
   problem.elements = args.elements;
   problem.increments = args.increments;
+  add_ladder_options(args, problem);
   problem.chain_variant = chain_variant_from_string(args.chain_variant);
   if (*args.integrator_option && !same_name(args.method, "shooting") &&
       !same_name(args.method, "auto")) {
@@ -409,6 +455,14 @@ Json to_json(const BeamInput& input,
     out["elements"] = solution.elements;
     out["increments"] = solution.increments;
   }
+  if (solution.method == BeamMethod::kPrbm3r) out["constants"] = solution.model_constants;
+  if (solution.method == BeamMethod::kBcm || solution.method == BeamMethod::kCbcm) {
+    // The BCM's validity as a result: the largest element deflection against its stated 0.1.
+    out["elements"] = solution.elements;
+    out["max_element_deflection"] = solution.max_element_deflection;
+    out["within_validity"] = solution.model_inside_validity;
+    out["slenderness"] = solution.slenderness > 0.0 ? Json(solution.slenderness) : Json(nullptr);
+  }
   if (problem.shape_points > 0) {
     Json shape = Json::array();
     for (const ShapePoint& p : solution.shape) {
@@ -501,6 +555,7 @@ void run_beam(const BeamArgs& args) {
                                     solution.shape.size(),
                                     problem.shape_points));
   }
+  warn(solution.warnings);  // e.g. the BCM beyond its stated deflection range
   if (solution.method == BeamMethod::kPrbm && !solution.prbm_inside_validity) {
     warn(
         fmt::format("the PRB angle Theta = {:.1f} deg is outside the validity limit {:.1f} "
@@ -572,8 +627,25 @@ void register_beam_command(CLI::App& app) {
                        "Prescribed tip angle, rad or with a unit (guided, fixed; default 0)");
   beam->add_option("--follower", args->follower, "Follower tip force F l^2/EI, normal to the tip")
       ->default_str("0");
-  beam->add_option("--elements", args->elements, "Chain algorithm: number of elements N")
-      ->default_str("100");
+  args->elements_option =
+      beam->add_option("--elements",
+                       args->elements,
+                       "Number of elements N: the chain algorithm's (default 100) or the chained "
+                       "BCM's (cbcm, default 6)")
+          ->default_str("100");
+  args->constants_option =
+      beam->add_option("--constants",
+                       args->constants,
+                       "PR-3R model (prbm3r): su (Su 2009's general set, the default), su-moment, "
+                       "su-force (Su's sets for one load) or flexure (derived against the exact "
+                       "elastica, docs/models.md)")
+          ->default_str("su")
+          ->transform(CLI::IsMember({"su", "su-moment", "su-force", "flexure"}, CLI::ignore_case));
+  args->slenderness_option = beam->add_option(
+      "--slenderness",
+      args->slenderness,
+      "BCM and chained BCM: slenderness L/t of the flexible segment, axial stiffness d = 12 "
+      "(L/t)^2 (default: inextensible, d -> infinity)");
   beam->add_option("--increments",
                    args->increments,
                    "Chain algorithm: load increments to start with (default 1: the whole load; a "

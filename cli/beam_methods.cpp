@@ -17,7 +17,8 @@ void add_method_option(CLI::App& command, std::string& method) {
       .add_option("--method",
                   method,
                   "Solution method: auto (the cheapest within --tol: PRBM, elliptic or shooting), "
-                  "elliptic, shooting, chain, prbm")
+                  "elliptic, shooting, chain, prbm; the cheaper models linear, prbm3r, bcm, cbcm "
+                  "(docs/models.md)")
       ->default_str("auto")
       ->transform(
           CLI::IsMember(std::vector<std::string>(kBeamMethodNames.begin(), kBeamMethodNames.end()),

@@ -51,6 +51,12 @@ const std::vector<CommandExamples>& command_examples() {
        {"flexure map cfm --config lpp --R 0.5:1.5:11 --d 16:40:4 --out map.h5",
         "flexure map cfm --config lps --R 0.5:2:16 --d 40 --K2 0.5:5:10 --model exact --out "
         "map.h5 --json"}},
+      {{"models", "map"},
+       {"flexure models map --n 0 --alpha2 0.5:5:4 --mu 0 --out models.h5",
+        "flexure models map --boundary guided --n 0 --alpha2 1:20:5 --models linear,bcm,cbcm "
+        "--out guided.h5 --json"}},
+      {{"models", "prbm3r-constants"},
+       {"flexure models prbm3r-constants --json", "flexure models prbm3r-constants"}},
       {{"cfm"},
        {"flexure cfm --config lpp --R 1 --d 40",
         "flexure cfm --subclass lpp-b --json",

@@ -25,6 +25,15 @@ std::unique_ptr<PrbmElement> prbm_cantilever_element(EndCondition end,
       return std::make_unique<FixedGuidedSegment>(FixedPinnedConstants::from_table(load_ratio_n));
     case EndCondition::kFree:
       if (!force) return std::make_unique<EndMomentSegment>();
+      if (mu != 0.0) {
+        // Howell's 1R model has one pivot: a force or a moment, not both (§5.2, §5.4).
+        throw InvalidInput(fmt::format(
+            "the 1R pseudo-rigid-body model (Howell's fixed-pinned segment) carries a tip force or "
+            "an end moment, not both (got alpha2 = {:g} with mu = {:g}); the PR-3R model (prbm3r), "
+            "the BCM and the chained BCM (bcm, cbcm) and the exact methods carry both",
+            alpha2,
+            mu));
+      }
       return std::make_unique<FixedPinnedSegment>(FixedPinnedConstants::from_table(load_ratio_n));
     default:
       throw InvalidInput(fmt::format(

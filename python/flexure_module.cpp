@@ -303,10 +303,17 @@ class TextColumn {
   std::vector<long> last_;
 };
 
+// Which method-specific keys a call may print (auto: all of them).
+struct UsedKeys {
+  bool prbm = false;    // within_validity, Theta, theta_max, validity_source
+  bool chain = false;   // elements, increments
+  bool prbm3r = false;  // constants
+  bool bcm = false;     // bcm, cbcm: elements, max_element_deflection, within_validity, slenderness
+};
+
 // The keys of `flexure beam --json` (cli/beam_command.cpp to_json) as columns.
 struct Columns {
-  Columns(
-      const std::vector<py::ssize_t>& shape, std::size_t count, int workers, bool prbm, bool chain)
+  Columns(const std::vector<py::ssize_t>& shape, std::size_t count, int workers, UsedKeys used)
       : n(shape, kNaN),
         alpha2(shape, kNaN),
         mu(shape, kNaN),
@@ -319,16 +326,18 @@ struct Columns {
         reaction_Fx(shape, kNaN),
         reaction_Fy(shape, kNaN),
         reaction_M(shape, kNaN),
-        Theta(shape, kNaN, prbm),
-        theta_max(shape, kNaN, prbm),
+        Theta(shape, kNaN, used.prbm),
+        theta_max(shape, kNaN, used.prbm),
         expected_error(shape, kNaN),
+        max_element_deflection(shape, kNaN, used.bcm),
+        slenderness(shape, kNaN, used.bcm),
         iterations(shape, 0),
         inflection_points(shape, 0),
         limit_points(shape, 0),
-        elements(shape, 0, chain),
-        increments(shape, 0, chain),
+        elements(shape, 0, used.chain || used.bcm),
+        increments(shape, 0, used.chain),
         status(shape, kNotConverged),
-        within_validity(shape, false, prbm),
+        within_validity(shape, false, used.prbm || used.bcm),
         converged(shape, false),
         method(count, workers),
         method_reason(count, workers),
@@ -336,14 +345,16 @@ struct Columns {
         family(count, workers),
         message(count, workers),
         termination(count, workers),
-        validity_source(prbm ? count : 0, workers) {}
+        validity_source(used.prbm ? count : 0, workers),
+        constants(used.prbm3r ? count : 0, workers) {}
   NumpyColumn<double> n, alpha2, mu, a_over_l, b_over_l, theta0, root_moment, target_residual,
       first_limit_load_factor, reaction_Fx, reaction_Fy, reaction_M, Theta, theta_max,
-      expected_error;
+      expected_error, max_element_deflection, slenderness;
   NumpyColumn<long long> iterations, inflection_points, limit_points, elements, increments, status;
   NumpyColumn<bool> within_validity, converged;
-  TextColumn method, method_reason, branch, family, message, termination, validity_source;
-  std::atomic<bool> any_prbm{false}, any_chain{false};
+  TextColumn method, method_reason, branch, family, message, termination, validity_source,
+      constants;
+  std::atomic<bool> any_prbm{false}, any_chain{false}, any_prbm3r{false}, any_bcm{false};
 };
 
 double finite_or_nan(double v) { return std::isfinite(v) ? v : kNaN; }
@@ -424,6 +435,17 @@ void solve_one(const cli::BeamCommandProblem& base,
       c.elements.data[i] = s.elements;
       c.increments.data[i] = s.increments;
     }
+    if (s.method == BeamMethod::kPrbm3r) {
+      c.any_prbm3r = true;
+      c.constants.set(i, worker, s.model_constants);
+    }
+    if (s.method == BeamMethod::kBcm || s.method == BeamMethod::kCbcm) {
+      c.any_bcm = true;
+      c.elements.data[i] = s.elements;
+      c.max_element_deflection.data[i] = s.max_element_deflection;
+      c.within_validity.data[i] = s.model_inside_validity;
+      c.slenderness.data[i] = s.slenderness > 0.0 ? s.slenderness : kNaN;  // the tool's null
+    }
   } catch (const InvalidInput& e) {
     fail_point(c, i, worker, kInvalid, e.what());
   } catch (const NoConvergence& e) {
@@ -468,11 +490,12 @@ py::dict beam_many(const std::vector<std::string>& args,
       static_cast<int>(std::clamp<std::size_t>(count / 256 + 1, 1, std::max(threads, 1)));
   // Auto may resolve to any method, so it keeps every column.
   const bool auto_method = base.method == BeamMethod::kAuto;
-  Columns c(shape,
-            count,
-            workers,
-            auto_method || base.method == BeamMethod::kPrbm,
-            auto_method || base.method == BeamMethod::kChain);
+  UsedKeys used;
+  used.prbm = auto_method || base.method == BeamMethod::kPrbm;
+  used.chain = auto_method || base.method == BeamMethod::kChain;
+  used.prbm3r = auto_method || base.method == BeamMethod::kPrbm3r;
+  used.bcm = auto_method || base.method == BeamMethod::kBcm || base.method == BeamMethod::kCbcm;
+  Columns c(shape, count, workers, used);
   const double* pn = n.data();
   const double* pmu = mu.data();
   const double* pv = value.data();
@@ -524,6 +547,7 @@ py::dict beam_many(const std::vector<std::string>& args,
   reactions["Fy"] = c.reaction_Fy.array;
   reactions["M"] = c.reaction_M.array;
   out["reactions"] = reactions;
+  // In the tool's order for each method (a key two methods share keeps its first place).
   if (c.any_prbm) {
     out["within_validity"] = c.within_validity.array;
     out["Theta"] = c.Theta.array;
@@ -533,6 +557,13 @@ py::dict beam_many(const std::vector<std::string>& args,
   if (c.any_chain) {
     out["elements"] = c.elements.array;
     out["increments"] = c.increments.array;
+  }
+  if (c.any_prbm3r) out["constants"] = c.constants.to_numpy(shape);
+  if (c.any_bcm) {
+    out["elements"] = c.elements.array;
+    out["max_element_deflection"] = c.max_element_deflection.array;
+    out["within_validity"] = c.within_validity.array;
+    out["slenderness"] = c.slenderness.array;
   }
   out["status"] = c.status.array;
   return out;

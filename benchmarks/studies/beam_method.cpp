@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "flexure/elements/chained_bcm.h"
+#include "flexure/elements/prbm3r.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
@@ -30,6 +32,13 @@ double beam_method_tolerance(BeamMethod method) {
       return ChainAlgorithmSolver::Options{}.tolerance;
     case BeamMethod::kPrbm:
       return 1e-13;  // virtual-work residual of PrbmElement::solve
+    case BeamMethod::kLinear:
+    case BeamMethod::kBcm:
+      return 0.0;  // closed forms
+    case BeamMethod::kPrbm3r:
+      return Prbm3rSolver::Options{}.tolerance;
+    case BeamMethod::kCbcm:
+      return ChainedBcmSolver::Options{}.tolerance;
   }
   return EllipticSolver::Options{}.tolerance;
 }

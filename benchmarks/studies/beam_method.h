@@ -13,11 +13,17 @@ enum class BeamMethod {
   kShooting,  // shooting method with continuation (solver/shooting)
   kChain,     // Howell's chain algorithm (solver/chain)
   kPrbm,      // pseudo-rigid-body model (elements/prbm_cantilever.h)
+  // The cheaper models of the ladder (beam_ladder.h, docs/models.md):
+  kLinear,  // linear Euler-Bernoulli theory (elements/linear_beam.h)
+  kPrbm3r,  // Su's pseudo-rigid-body 3R model (elements/prbm3r.h)
+  kBcm,     // the beam-constraint model, one element (elements/beam_constraint_model.h)
+  kCbcm,    // the chained beam-constraint model (elements/chained_bcm.h)
 };
 
-// "auto", "elliptic", "shooting", "chain", "prbm", in the order of the enum.
-inline constexpr std::array<const char*, 5> kBeamMethodNames = {
-    "auto", "elliptic", "shooting", "chain", "prbm"};
+// "auto", "elliptic", "shooting", "chain", "prbm", "linear", "prbm3r", "bcm", "cbcm", in the order
+// of the enum.
+inline constexpr std::array<const char*, 9> kBeamMethodNames = {
+    "auto", "elliptic", "shooting", "chain", "prbm", "linear", "prbm3r", "bcm", "cbcm"};
 
 const char* to_string(BeamMethod method);
 // Throws InvalidInput naming the allowed names.

@@ -45,6 +45,12 @@ struct BeamProblem {
   std::optional<SegmentChain> chain;  // a chain of segments (overrides the loads above)
   // `auto` picks the cheapest method whose relative error is within this (method_selector.h).
   double tolerance = 1e-6;
+  // The cheaper models of the ladder (beam_ladder.h): the chained BCM's number of elements N, the
+  // PR-3R model's constants (Prbm3rConstants::by_name: su, su-moment, su-force, flexure), the
+  // slenderness L/t of the BCM and CBCM (d = 12 (L/t)^2; 0: inextensible, the default).
+  int cbcm_elements = 6;
+  std::string prbm3r_constants = "su";
+  double slenderness = 0.0;
 
   // The segment chain this problem describes (the given chain, or Howell's uniform cantilever with
   // Fx = -n alpha2, Fy = alpha2, M = mu, the follower force and the end condition). Throws
@@ -101,6 +107,13 @@ struct BeamSolution : SolveStatus {
   double prbm_theta_max = 0.0;
   std::string prbm_limits_source;
   bool prbm_inside_validity = false;
+  // The cheaper models of the ladder (beam_ladder.h): the PR-3R constants used; the BCM's and
+  // CBCM's largest element deflection |y|/element length (NaN for the others), whether it is within
+  // the BCM's stated 0.1, and the slenderness L/t used (0: inextensible).
+  std::string model_constants;
+  double max_element_deflection = std::numeric_limits<double>::quiet_NaN();
+  bool model_inside_validity = true;
+  double slenderness = 0.0;
 };
 
 // The method `auto` resolves to for this problem: the cheapest whose error is within

@@ -27,17 +27,23 @@
 #include "flexure/solver/shooting/shooting_solver.h"
 
 // Pseudo-rigid-body model elements and their derivation.
+#include "flexure/elements/beam_constraint_model.h"
+#include "flexure/elements/cantilever_case.h"
+#include "flexure/elements/chained_bcm.h"
 #include "flexure/elements/curved_pinned_pinned_segment.h"
 #include "flexure/elements/end_moment_segment.h"
 #include "flexure/elements/fixed_fixed_segment.h"
 #include "flexure/elements/fixed_guided_segment.h"
 #include "flexure/elements/fixed_pinned_segment.h"
 #include "flexure/elements/initially_curved_cantilever.h"
+#include "flexure/elements/linear_beam.h"
 #include "flexure/elements/pinned_pinned_segment.h"
 #include "flexure/elements/prbm_cantilever.h"
 #include "flexure/elements/prbm_derivation.h"
 #include "flexure/elements/prbm_element.h"
 #include "flexure/elements/prbm_tables.h"
+#include "flexure/elements/prbm3r.h"
+#include "flexure/elements/prbm3r_derivation.h"
 #include "flexure/elements/small_length_flexural_pivot.h"
 
 // Mechanisms: designs, PRBM and exact models, constant-force mechanisms, dynamics.

@@ -47,6 +47,8 @@ def beam(
     chain_variant: str | None = ...,
     integrator: str | None = ...,
     chain: Path | None = ...,
+    constants: str | None = ...,
+    slenderness: float | None = ...,
     length: Quantity | None = ...,
     E: Quantity | None = ...,
     I: Quantity | None = ...,

@@ -21,8 +21,8 @@ def _is_array(value):
 def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=None, tol=None,
          shape=None, boundary=None, tip_x=None, tip_y=None, tip_angle=None, follower=None,
          elements=None, increments=None, chain_variant=None, integrator=None, chain=None,
-         length=None, E=None, I=None, width=None, thickness=None, Fx=None, Fy=None, M=None,
-         yield_strength=None, threads=None):
+         constants=None, slenderness=None, length=None, E=None, I=None, width=None,
+         thickness=None, Fx=None, Fy=None, M=None, yield_strength=None, threads=None):
     """Solves an initially straight cantilever with an end load: `flexure beam` (docs/cli.md).
 
     Howell's nondimensional loads (give exactly one of alpha2, theta0, b_over_l):
@@ -38,13 +38,16 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
     on `threads` worker threads (default: all cores) while other Python threads run.
 
     Method and end conditions (the tool's defaults when None):
-      method      'auto' | 'elliptic' | 'shooting' | 'chain' | 'prbm' (default 'auto')
+      method      'auto' | 'elliptic' | 'shooting' | 'chain' | 'prbm', or a cheaper model of the
+                  ladder: 'linear' | 'prbm3r' | 'bcm' | 'cbcm' (default 'auto'; docs/models.md)
       tol         auto only: the relative error allowed (default 1e-6)
       shape       also return the deflected shape at this many points (scalar loads only)
       boundary    'free' | 'guided' | 'pinned' | 'slider' | 'fixed'; tip_x, tip_y, tip_angle
                   prescribe the tip; follower: a follower force F l^2/EI
       elements, increments, chain_variant: the chain algorithm; integrator: shooting's
-                  ('rk8pd', 'cvodes', 'dormand-prince')
+                  ('rk8pd', 'cvodes', 'dormand-prince'); elements is also the chained BCM's N
+      constants   prbm3r: 'su' (default) | 'su-moment' | 'su-force' | 'flexure'
+      slenderness bcm, cbcm: L/t of the segment, axial stiffness 12 (L/t)^2 (default inextensible)
       chain       a segment chain TOML file (docs/chain-toml.md)
     A physical cantilever (SI numbers, or strings with units: '50mm', '200GPa', '5N'):
       length, E, I (or width and thickness), Fx, Fy, M, yield_strength
@@ -69,7 +72,8 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
     options = {"method": method, "tol": tol, "shape": shape, "boundary": boundary,
                "tip_x": tip_x, "tip_y": tip_y, "tip_angle": tip_angle, "follower": follower,
                "elements": elements, "increments": increments, "chain_variant": chain_variant,
-               "integrator": integrator, "chain": chain, "length": length, "E": E, "I": I,
+               "integrator": integrator, "chain": chain, "constants": constants,
+               "slenderness": slenderness, "length": length, "E": E, "I": I,
                "width": width, "thickness": thickness, "Fx": Fx, "Fy": Fy, "M": M,
                "yield_strength": yield_strength}
     if threads is not None and (not isinstance(threads, int) or isinstance(threads, bool)
@@ -125,4 +129,10 @@ def _beam_many(loads, options, threads):
                            f"outside its validity limits (within_validity False): their PRBM tip "
                            f"and force are not trusted (method='elliptic' or 'shooting' is "
                            f"exact)"], stacklevel=3)
+        beyond = (result["method"] == "bcm") & result["converged"] & ~result["within_validity"]
+        if beyond.any():
+            _command.emit([f"{int(beyond.sum())} of {beyond.size} loads solved by the BCM deflect "
+                           f"its element beyond its stated range |y| <= 0.1 l "
+                           f"(max_element_deflection): method='cbcm' follows larger "
+                           f"deflections"], stacklevel=3)
     return result

@@ -194,5 +194,13 @@ TEST(CliHdf5Metadata, MechanismAnalyzeFileIsSelfDescribing) {
   check_file(dir / "m.h5", "mechanism analyze");
 }
 
+TEST(CliHdf5Metadata, ModelsMapFileIsSelfDescribing) {
+  ScratchDir dir;
+  const CommandResult r = run_flexure(
+      "models map --n 0 --alpha2 1:2:2 --mu 0:0.5:2 --min-seconds 0 --out models.h5", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  check_file(dir / "models.h5", "models map");
+}
+
 }  // namespace
 }  // namespace flexure::test

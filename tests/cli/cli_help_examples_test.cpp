@@ -28,6 +28,8 @@ const std::vector<std::string> kCommands = {"beam",
                                             "mechanism analyze",
                                             "mechanism validate",
                                             "dynamics",
+                                            "models map",
+                                            "models prbm3r-constants",
                                             "bench",
                                             "help"};
 
@@ -69,7 +71,7 @@ INSTANTIATE_TEST_SUITE_P(Commands,
                          [](const ::testing::TestParamInfo<std::string>& info) {
                            std::string name = info.param;
                            for (char& c : name) {
-                             if (c == ' ') c = '_';
+                             if (c == ' ' || c == '-') c = '_';
                            }
                            return name;
                          });

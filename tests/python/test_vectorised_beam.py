@@ -39,6 +39,23 @@ def test_every_method_agrees_with_the_scalar_call(method):
         assert_same(point, one, where=f"{method} point {i}")
 
 
+@pytest.mark.filterwarnings("ignore::flexure.FlexureWarning")  # the BCM beyond |y| = 0.1
+@pytest.mark.parametrize("method,extra", [("linear", {}), ("prbm3r", {"constants": "flexure"}),
+                                          ("bcm", {"slenderness": 30.0}),
+                                          ("cbcm", {"elements": 4})])
+def test_every_model_of_the_ladder_agrees_with_the_scalar_call(method, extra):
+    rng = np.random.default_rng(30)
+    n = rng.uniform(-0.5, 1, 8)
+    alpha2 = rng.uniform(0.1, 1.5, 8)
+    many = flexure.beam(n=n, alpha2=alpha2, mu=0.2, method=method, **extra)
+    assert many["converged"].all()
+    for i in range(8):
+        one = flexure.beam(n=float(n[i]), alpha2=float(alpha2[i]), mu=0.2, method=method, **extra)
+        point = {k: (v[i] if not isinstance(v, dict) else {c: a[i] for c, a in v.items()})
+                 for k, v in many.items() if k != "status"}
+        assert_same(point, one, where=f"{method} point {i}")
+
+
 def test_inverse_problems_hit_their_targets():
     targets = np.linspace(0.05, 0.8, 9)
     r = flexure.beam(b_over_l=targets, n=np.array([[0.0], [1.0]]))
