@@ -20,4 +20,8 @@ struct BeamCommandProblem {
 // for anything the tool refuses.
 BeamCommandProblem beam_problem_of(const std::vector<std::string>& args);
 
+// The warnings of an answer that `flexure beam` prints on stderr and lists under the JSON key
+// `warnings`: a PRBM outside its validity limits, an unstable or critical equilibrium.
+std::vector<std::string> beam_warnings(const BeamSolution& solution);
+
 }  // namespace flexure::cli

@@ -18,6 +18,7 @@
 #include "flexure/io/parallel/mpi_world.h"
 #include "flexure/io/quantity.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/names.h"
 
 namespace flexure::cli {
 namespace {
@@ -34,6 +35,7 @@ struct SweepBeamArgs {
   std::optional<int> threads;  // default: 2, or 1 per rank under mpirun
   bool compress = false;
   bool json = false;
+  std::string stability = "on";  // the verdict per point (docs/stability.md), or off
 };
 
 // At most 10^7 points (a file of about 400 MB); under mpirun 10^10, the studies of docs/scaling.md
@@ -168,13 +170,21 @@ void run_sweep_beam(const SweepBeamArgs& args) {
     throw InvalidInput(fmt::format("--out: {}", e.what()));
   }
 
+  // The verdict per point, as `flexure beam` gives it (docs/stability.md; its cost:
+  // docs/performance.md, "Stability verdict").
+  const bool judge = same_name(args.stability, "on");
   const io::BeamIndexSolver solve_point = [&](long index) {
-    BeamSolution solution = solve_beam(method, grid.at(index));
+    BeamProblem problem = grid.at(index);
+    problem.judge_stability = judge;
+    BeamSolution solution = solve_beam(method, problem);
     io::BeamSweepPoint point;
     point.set_converged(solution.converged());
     point.tip = solution.tip;
     point.alpha2 = solution.alpha2;
     if (solution.method == BeamMethod::kPrbm) point.within_validity = solution.prbm_inside_validity;
+    point.stability = solution.stability.kind;
+    point.stability_index = solution.stability.index;
+    point.stability_margin = solution.stability.margin;
     if (!solution.converged()) point.message = std::move(solution.message);
     return point;
   };
@@ -281,6 +291,13 @@ void register_sweep_command(CLI::App& app) {
   beam->add_option(
           "--threads", args->threads, "Worker threads per process (1-64; 1 per rank under mpirun)")
       ->default_str("2");
+  beam->add_option("--stability",
+                   args->stability,
+                   "The stability verdict of every point (stored in /stability, "
+                   "/stability_index, /stability_margin): on (default) or off (faster; the file "
+                   "then says not_checked)")
+      ->default_str("on")
+      ->transform(CLI::IsMember({"on", "off"}, CLI::ignore_case));
   beam->add_flag("--compress",
                  args->compress,
                  "Compress the datasets (shuffle + deflate, chunks of 64 Ki points)");

@@ -319,6 +319,8 @@ struct Columns {
         reaction_Fx(shape, kNaN),
         reaction_Fy(shape, kNaN),
         reaction_M(shape, kNaN),
+        stability_index(shape, kNaN),
+        stability_margin(shape, kNaN),
         Theta(shape, kNaN, prbm),
         theta_max(shape, kNaN, prbm),
         iterations(shape, 0),
@@ -335,12 +337,20 @@ struct Columns {
         family(count, workers),
         message(count, workers),
         termination(count, workers),
+        stability(count, workers),
+        stability_message(count, workers),
+        stable_search(count, workers),
+        warnings(count, workers),
         validity_source(prbm ? count : 0, workers) {}
   NumpyColumn<double> n, alpha2, mu, a_over_l, b_over_l, theta0, root_moment, target_residual,
-      first_limit_load_factor, reaction_Fx, reaction_Fy, reaction_M, Theta, theta_max;
+      first_limit_load_factor, reaction_Fx, reaction_Fy, reaction_M, stability_index,
+      stability_margin, Theta, theta_max;
+  // stability_index is a float column: NaN where not judged, the scalar call's None.
   NumpyColumn<long long> iterations, inflection_points, limit_points, elements, increments, status;
   NumpyColumn<bool> within_validity, converged;
-  TextColumn method, method_reason, branch, family, message, termination, validity_source;
+  // warnings: the point's warnings joined by newlines (split into lists by flexure/_beam.py).
+  TextColumn method, method_reason, branch, family, message, termination, stability,
+      stability_message, stable_search, warnings, validity_source;
   std::atomic<bool> any_prbm{false}, any_chain{false};
 };
 
@@ -409,6 +419,16 @@ void solve_one(const cli::BeamCommandProblem& base,
     c.reaction_Fx.data[i] = finite_or_nan(s.reactions.Fx);
     c.reaction_Fy.data[i] = finite_or_nan(s.reactions.Fy);
     c.reaction_M.data[i] = finite_or_nan(s.reactions.M);
+    c.stability.set(i, worker, stability_name(s.stability.kind));
+    c.stability_message.set(i, worker, s.stability.message);
+    c.stable_search.set(i, worker, s.stable_search);
+    std::string joined;
+    for (const std::string& w : cli::beam_warnings(s)) joined += (joined.empty() ? "" : "\n") + w;
+    c.warnings.set(i, worker, joined);
+    if (s.stability.judged()) {
+      c.stability_index.data[i] = s.stability.index;
+      c.stability_margin.data[i] = finite_or_nan(s.stability.margin);
+    }
     if (s.method == BeamMethod::kPrbm) {
       c.any_prbm = true;
       c.within_validity.data[i] = s.prbm_inside_validity;
@@ -520,6 +540,13 @@ py::dict beam_many(const std::vector<std::string>& args,
   reactions["Fy"] = c.reaction_Fy.array;
   reactions["M"] = c.reaction_M.array;
   out["reactions"] = reactions;
+  out["stability"] = c.stability.to_numpy(shape);
+  out["stability_index"] = c.stability_index.array;
+  out["stability_margin"] = c.stability_margin.array;
+  out["stability_message"] = c.stability_message.to_numpy(shape);
+  out["stable_search"] = base.problem.stable ? c.stable_search.to_numpy(shape)
+                                             : py::module_::import("numpy").attr("full")(
+                                                   shape, py::none(), py::dtype("O"));
   if (c.any_prbm) {
     out["within_validity"] = c.within_validity.array;
     out["Theta"] = c.Theta.array;
@@ -530,6 +557,7 @@ py::dict beam_many(const std::vector<std::string>& args,
     out["elements"] = c.elements.array;
     out["increments"] = c.increments.array;
   }
+  out["warnings"] = c.warnings.to_numpy(shape);  // texts; lists made by flexure/_beam.py
   out["status"] = c.status.array;
   return out;
 }

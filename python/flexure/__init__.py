@@ -39,11 +39,12 @@ def path(*, out, n=None, alpha2=None, mu=None, follower=None, boundary=None, tip
 
 
 def sweep(*, out, alpha2=None, theta0=None, b_over_l=None, n=None, mu=None, method=None,
-          threads=None, compress=False):
+          threads=None, compress=False, stability=None):
     """A beam sweep written to HDF5: `flexure sweep beam` (docs/hdf5-schema.md).
 
     alpha2, theta0, b_over_l, n, mu: a value or 'START:STOP:COUNT' (one or two axes); method;
-    threads; compress; out: the HDF5 file (required). Returns the summary `--json` prints; read
+    threads; compress; stability: 'on' (default: a verdict per point in /stability,
+    /stability_index, /stability_margin) or 'off'; out: the HDF5 file (required). Returns the summary `--json` prints; read
     the file with flexure.read(out). For arrays in memory use flexure.beam with numpy arrays.
 
     Example:
@@ -53,7 +54,8 @@ def sweep(*, out, alpha2=None, theta0=None, b_over_l=None, n=None, mu=None, meth
     """
     return _run(["sweep", "beam"], dict(alpha2=alpha2, theta0=theta0, b_over_l=b_over_l, n=n,
                                         mu=mu, method=method, out=out, threads=threads,
-                                        compress=compress), switches={"compress"})
+                                        compress=compress, stability=stability),
+                switches={"compress"})
 
 
 def cfm(*, config=None, R=None, K1=None, K2=None, d=None, subclass=None, sampling=None,

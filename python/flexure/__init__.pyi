@@ -56,6 +56,8 @@ def beam(
     Fy: Quantity | None = ...,
     M: Quantity | None = ...,
     yield_strength: Quantity | None = ...,
+    stable: bool = ...,
+    stability: str | None = ...,
     threads: int | None = ...,
 ) -> Result: ...
 def path(
@@ -85,6 +87,7 @@ def sweep(
     method: str | None = ...,
     threads: int | None = ...,
     compress: bool = ...,
+    stability: str | None = ...,
 ) -> Result: ...
 def cfm(
     *,

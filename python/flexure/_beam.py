@@ -22,7 +22,7 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
          shape=None, boundary=None, tip_x=None, tip_y=None, tip_angle=None, follower=None,
          elements=None, increments=None, chain_variant=None, integrator=None, chain=None,
          length=None, E=None, I=None, width=None, thickness=None, Fx=None, Fy=None, M=None,
-         yield_strength=None, threads=None):
+         yield_strength=None, stable=False, stability=None, threads=None):
     """Solves an initially straight cantilever with an end load: `flexure beam` (docs/cli.md).
 
     Howell's nondimensional loads (give exactly one of alpha2, theta0, b_over_l):
@@ -46,14 +46,23 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
       elements, increments, chain_variant: the chain algorithm; integrator: shooting's
                   ('rk8pd', 'cvodes', 'dormand-prince')
       chain       a segment chain TOML file (docs/chain-toml.md)
+      stability   'on' (default) or 'off': the stability verdict of every answer (off: faster,
+                  stability 'not_checked')
+      stable      True: when the equilibrium reached by proportional loading is unstable or
+                  critical, return a stable equilibrium found from it (key stable_search says
+                  what was done; NoConvergence when none is found); given loads only
     A physical cantilever (SI numbers, or strings with units: '50mm', '200GPa', '5N'):
       length, E, I (or width and thickness), Fx, Fy, M, yield_strength
 
     Returns the dict `flexure beam --json` prints: method, method_reason, n, alpha2, mu,
     a_over_l, b_over_l, theta0 (rad), iterations, converged, branch, inflection_points,
     root_moment, limit_points, target_residual, first_limit_load_factor, family, message,
-    termination, boundary, reactions {Fx, Fy, M}, and per method or input more (shape as columns
-    s, x, y, theta; the SI keys of a physical beam). Raises InvalidInput (a ValueError) for input
+    termination, boundary, reactions {Fx, Fy, M}, the stability verdict (stability:
+    'stable' | 'unstable' | 'critical' | 'not_conservative' | 'not_checked', stability_index and
+    stability_margin, None where not judged, stability_message, stable_search, warnings), and per
+    method or input more (shape as columns s, x, y, theta; the SI keys of a physical beam). An
+    unstable answer is returned (it is the proportional-loading answer, labelled) with a
+    FlexureWarning. Raises InvalidInput (a ValueError) for input
     the tool refuses and NoConvergence (a RuntimeError, with .reached) when a scalar load does
     not converge.
 
@@ -71,12 +80,12 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
                "elements": elements, "increments": increments, "chain_variant": chain_variant,
                "integrator": integrator, "chain": chain, "length": length, "E": E, "I": I,
                "width": width, "thickness": thickness, "Fx": Fx, "Fy": Fy, "M": M,
-               "yield_strength": yield_strength}
+               "yield_strength": yield_strength, "stable": stable, "stability": stability}
     if threads is not None and (not isinstance(threads, int) or isinstance(threads, bool)
                                 or threads < 1):
         raise _command.InvalidInput(f"threads = {threads!r}: expected an integer >= 1")
     if not any(_is_array(loads[k]) for k in _VECTOR):
-        return _command.run(["beam"], {**loads, **options})
+        return _command.run(["beam"], {**loads, **options}, switches={"stable"})
     return _beam_many(loads, options, threads or os.cpu_count() or 1)
 
 
@@ -103,7 +112,7 @@ def _beam_many(loads, options, threads):
     # The options are checked once by the tool itself, with a valid placeholder load.
     # (Two given quantities are refused by the tool, naming them.)
     scalar = {k: _PLACEHOLDER[k] for k in given}
-    args = ["beam"] + _command.to_flags({**scalar, **options})
+    args = ["beam"] + _command.to_flags({**scalar, **options}, switches={"stable"})
     size = int(numpy.prod(shape)) if shape else 1
     zeros = numpy.zeros(size)
 
@@ -111,12 +120,24 @@ def _beam_many(loads, options, threads):
         return numpy.ascontiguousarray(arrays[name].reshape(-1)) if name in arrays else zeros
 
     if not given:  # the tool's own message: one of --alpha2, --theta0, --b-over-l is required
-        _command.run(["beam"], options)
+        _command.run(["beam"], options, switches={"stable"})
     value = flat(given[0])
     try:
         result = _core.beam_many(args[1:], flat("n"), flat("mu"), value, list(shape), threads)
     except ValueError as e:
         raise _command.InvalidInput(str(e)) from None
+    # The warnings of each load as a list, as the scalar call has them.
+    lists = numpy.empty(result["warnings"].shape, dtype=object)
+    for index, text in numpy.ndenumerate(result["warnings"]):
+        lists[index] = text.split("\n") if text else []
+    result["warnings"] = lists
+    unstable = result["converged"] & (result["stability"] == "unstable")
+    if unstable.any():
+        # One warning for the call, where the scalar call warns at each load.
+        _command.emit([f"{int(unstable.sum())} of {unstable.size} loads have an UNSTABLE answer "
+                       f"(stability 'unstable'): the equilibrium reached by proportional loading, "
+                       f"which the beam cannot hold under those loads; stable=True returns a "
+                       f"stable equilibrium"], stacklevel=3)
     if "within_validity" in result:
         # One warning for the call, where the scalar call warns at each load.
         outside = (result["method"] == "prbm") & result["converged"] & ~result["within_validity"]

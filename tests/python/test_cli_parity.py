@@ -19,6 +19,15 @@ BEAMS = [
      ["--alpha2", "10", "--method", "chain", "--elements", "50"]),
     (dict(alpha2=1.5, method="prbm"), ["--alpha2", "1.5", "--method", "prbm"]),
     (dict(alpha2=0.1 + 0.2, n=1 / 3), ["--alpha2", repr(0.1 + 0.2), "--n", repr(1 / 3)]),
+    # Stability (issue 27): an unstable answer, labelled; --stable; the verdict switched off.
+    (dict(length=1, E="1MPa", I=1e-6, Fx=-3), ["--length", "1", "--E", "1MPa", "--I", "1e-6",
+                                               "--Fx", "-3"]),
+    (dict(length=1, E="1MPa", I=1e-6, Fx=-3, stable=True),
+     ["--length", "1", "--E", "1MPa", "--I", "1e-6", "--Fx", "-3", "--stable"]),
+    (dict(alpha2=0.0, boundary="fixed", tip_x=0.9, tip_y=0.001, tip_angle=0.0, stable=True),
+     ["--alpha2", "0", "--boundary", "fixed", "--tip-x", "0.9", "--tip-y", "0.001",
+      "--tip-angle", "0", "--stable"]),
+    (dict(alpha2=2.0, stability="off"), ["--alpha2", "2", "--stability", "off"]),
     (dict(length="20in", E="30Msi", width="1in", thickness="0.1in", Fy="0.49lbf",
           yield_strength="167ksi", shape=5),
      ["--length", "20in", "--E", "30Msi", "--width", "1in", "--thickness", "0.1in",
@@ -26,9 +35,26 @@ BEAMS = [
 ]
 
 
+@pytest.mark.filterwarnings("ignore::flexure.FlexureWarning")  # the unstable column warns
 @pytest.mark.parametrize("kwargs,flags", BEAMS, ids=[str(k) for k, _ in BEAMS])
 def test_beam(cli, kwargs, flags):
     assert_same(flexure.beam(**kwargs), cli.json("beam", *flags))
+
+
+def test_beam_stability_keys():
+    with pytest.warns(flexure.FlexureWarning, match="UNSTABLE"):
+        r = flexure.beam(length=1, E="1MPa", I=1e-6, Fx=-30)
+    assert (r["stability"], r["stability_index"]) == ("unstable", 2)
+    # 1 - 4 P L^2 / (pi^2 EI): P L^2/EI = 30.
+    assert abs(r["stability_margin"] - (1 - 120 / 3.141592653589793 ** 2)) < 1e-8
+    assert r["stable_search"] is None and len(r["warnings"]) == 1
+    stable = flexure.beam(length=1, E="1MPa", I=1e-6, Fx=-30, stable=True)
+    assert stable["stability"] == "stable" and stable["warnings"] == []
+    assert stable["stable_search"].startswith("the shooting answer")
+    with pytest.raises(flexure.InvalidInput, match="stable equilibrium"):
+        flexure.beam(theta0=0.5, stable=True)
+    with pytest.raises(flexure.NoConvergence, match="no stable equilibrium"):
+        flexure.beam(length=1, E="1MPa", I=1e-6, Fx=-2.4674011002723395, stable=True)
 
 
 EXAMPLES = os.path.join(ROOT, "docs", "examples")
