@@ -276,6 +276,28 @@ class TextColumn {
     }
     codes_[i] = static_cast<std::uint32_t>(last * static_cast<long>(texts_.size()) + worker);
   }
+  // An object array of lists of str: each point's text split at newlines ("" an empty list).
+  py::array to_numpy_lists(const std::vector<py::ssize_t>& shape) const {
+    const auto workers = static_cast<std::uint32_t>(texts_.size());
+    py::array out = py::module_::import("numpy").attr("empty")(shape, py::dtype("O"));
+    auto** cells = static_cast<PyObject**>(out.mutable_data());
+    for (std::size_t i = 0; i < codes_.size(); ++i) {
+      const std::uint32_t w = codes_[i] % workers, k = codes_[i] / workers;
+      py::list items;
+      if (k < texts_[w].size() && !texts_[w][k].empty()) {
+        std::string_view rest = texts_[w][k];
+        for (;;) {
+          const std::size_t end = rest.find('\n');
+          items.append(py::str(std::string(rest.substr(0, end))));
+          if (end == std::string_view::npos) break;
+          rest.remove_prefix(end + 1);
+        }
+      }
+      Py_XDECREF(cells[i]);  // numpy.empty fills object arrays with None
+      cells[i] = items.release().ptr();
+    }
+    return out;
+  }
   // An object array of str (equal texts share one object); points never set read "".
   py::array to_numpy(const std::vector<py::ssize_t>& shape) const {
     const auto workers = static_cast<std::uint32_t>(texts_.size());
@@ -348,7 +370,7 @@ struct Columns {
   // stability_index is a float column: NaN where not judged, the scalar call's None.
   NumpyColumn<long long> iterations, inflection_points, limit_points, elements, increments, status;
   NumpyColumn<bool> within_validity, converged;
-  // warnings: the point's warnings joined by newlines (split into lists by flexure/_beam.py).
+  // warnings: the point's warnings joined by newlines (returned as a list per point).
   TextColumn method, method_reason, branch, family, message, termination, stability,
       stability_message, stable_search, warnings, validity_source;
   std::atomic<bool> any_prbm{false}, any_chain{false};
@@ -376,6 +398,12 @@ void solve_one(const cli::BeamCommandProblem& base,
                int worker) {
   c.n.data[i] = n;
   c.mu.data[i] = mu;
+  // A text column reads another point's text where it was never set: a failed load's are set
+  // here.
+  c.stability.set(i, worker, stability_name(StabilityKind::kNotChecked));
+  c.stability_message.set(i, worker, "");
+  c.stable_search.set(i, worker, "");
+  c.warnings.set(i, worker, "");
   try {
     cli::require_finite_input(n, "--n (load ratio n)");
     cli::require_finite_input(mu, "--mu (end moment M l/EI)");
@@ -557,7 +585,7 @@ py::dict beam_many(const std::vector<std::string>& args,
     out["elements"] = c.elements.array;
     out["increments"] = c.increments.array;
   }
-  out["warnings"] = c.warnings.to_numpy(shape);  // texts; lists made by flexure/_beam.py
+  out["warnings"] = c.warnings.to_numpy_lists(shape);
   out["status"] = c.status.array;
   return out;
 }

@@ -126,11 +126,6 @@ def _beam_many(loads, options, threads):
         result = _core.beam_many(args[1:], flat("n"), flat("mu"), value, list(shape), threads)
     except ValueError as e:
         raise _command.InvalidInput(str(e)) from None
-    # The warnings of each load as a list, as the scalar call has them.
-    lists = numpy.empty(result["warnings"].shape, dtype=object)
-    for index, text in numpy.ndenumerate(result["warnings"]):
-        lists[index] = text.split("\n") if text else []
-    result["warnings"] = lists
     unstable = result["converged"] & (result["stability"] == "unstable")
     if unstable.any():
         # One warning for the call, where the scalar call warns at each load.

@@ -139,3 +139,14 @@ def test_stability_columns_agree_with_the_scalar_call():
     off = flexure.beam(alpha2=np.array([1.0, 2.0]), stability="off")
     assert off["stability"].tolist() == ["not_checked"] * 2
     assert np.isnan(off["stability_index"]).all() and np.isnan(off["stability_margin"]).all()
+
+
+def test_failed_loads_carry_no_verdict_and_no_warnings():
+    # A failed load was judged by nothing: its text columns must not read another load's texts
+    # (the interned columns share texts between loads).
+    r = flexure.beam(n=np.array([0.0, np.nan, 0.0]), alpha2=np.array([1.0, 1.0, 1e9]),
+                     threads=1)
+    assert r["status"].tolist() == [0, 2, 1]
+    assert r["stability"].tolist() == ["stable", "not_checked", "not_checked"]
+    assert r["stability_index"][0] == 0.0 and np.isnan(r["stability_index"][1:]).all()
+    assert [list(w) for w in r["warnings"]] == [[], [], []]
