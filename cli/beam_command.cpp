@@ -16,6 +16,8 @@
 #include "cli/cli_common.h"
 #include "cli/command_runner.h"
 #include "cli/commands.h"
+#include "cli/physical_flags.h"
+#include "flexure/benchmarks/studies/method_selector.h"
 #include "flexure/benchmarks/studies/physical_beam.h"
 #include "flexure/io/chain_toml.h"
 #include "flexure/io/quantity.h"
@@ -59,8 +61,7 @@ struct BeamArgs {
   CLI::Option* tip_angle_option = nullptr;
   CLI::Option* chain_option = nullptr;
   // A physical cantilever (SI, or values with units: 50mm, 200GPa, 5N; io/quantity.h).
-  std::string length, E, I, width, thickness, Fx, Fy, M, yield_strength;
-  std::vector<CLI::Option*> physical_options;
+  PhysicalFlags physical;
 };
 
 // What `flexure beam` solves: Howell's nondimensional problem, and the physical beam or chain file
@@ -77,39 +78,6 @@ double angle_option(const std::string& text, const char* what) {
   const io::Quantity q = io::parse_quantity(text, io::Dimension::kAngle, what);
   warn(io::angle_warning(q, what));
   return q.si;
-}
-
-std::optional<double> quantity_option(const std::string& text,
-                                      io::Dimension dimension,
-                                      const char* what) {
-  if (text.empty()) return std::nullopt;
-  return io::parse_quantity(text, dimension, what).si;
-}
-
-// The physical cantilever of --length, --E, the section and the loads (docs/units.md).
-PhysicalCantilever physical_beam(const BeamArgs& args) {
-  using io::Dimension;
-  PhysicalCantilever beam;
-  if (args.length.empty() || args.E.empty()) {
-    throw InvalidInput(
-        "a physical beam needs --length and --E, a section (--I, or --width and --thickness) and "
-        "its tip loads (--Fx, --Fy, --M; default 0)");
-  }
-  beam.length = io::parse_quantity(args.length, Dimension::kLength, "--length").si;
-  const io::Quantity E = io::parse_quantity(args.E, Dimension::kStress, "--E");
-  beam.E = E.si;
-  beam.I = quantity_option(args.I, Dimension::kSecondMoment, "--I");
-  beam.width = quantity_option(args.width, Dimension::kLength, "--width");
-  beam.thickness = quantity_option(args.thickness, Dimension::kLength, "--thickness");
-  beam.Fx = quantity_option(args.Fx, Dimension::kForce, "--Fx").value_or(0.0);
-  beam.Fy = quantity_option(args.Fy, Dimension::kForce, "--Fy").value_or(0.0);
-  beam.M = quantity_option(args.M, Dimension::kMoment, "--M").value_or(0.0);
-  beam.yield_strength =
-      quantity_option(args.yield_strength, Dimension::kStress, "--yield-strength");
-  beam.validate();
-  warn(io::modulus_warning(E, "--E"));
-  if (beam.thickness) warn(io::thickness_warning(*beam.thickness, beam.length, "--thickness"));
-  return beam;
 }
 
 constexpr int kMaxShapePoints = 1'000'000;
@@ -170,10 +138,7 @@ BeamInput make_input(const BeamArgs& args) {
   const bool any_given = *args.alpha2_option || *args.theta0_option || *args.b_over_l_option;
   const bool nondimensional_loads = any_given || args.load_ratio_n != 0.0 || args.mu != 0.0 ||
                                     args.follower != 0.0 || args.boundary != "free";
-  const bool physical = std::any_of(args.physical_options.begin(),
-                                    args.physical_options.end(),
-                                    [](const CLI::Option* o) { return bool(*o); });
-  if (physical) {
+  if (args.physical.given()) {
     if (nondimensional_loads || *args.chain_option) {
       throw InvalidInput(
           "a physical beam (--length, --E, the section, --Fx, --Fy, --M) is loaded in newtons; "
@@ -181,7 +146,7 @@ BeamInput make_input(const BeamArgs& args) {
           "--follower, --boundary or with --chain (a chain file can be in SI units itself: "
           "docs/chain-toml.md)");
     }
-    input.physical = physical_beam(args);
+    input.physical = args.physical.parse();
     problem = input.physical->to_problem(problem);
     return input;
   }
@@ -446,16 +411,18 @@ void add_physical_json(Json& out, const BeamInput& input, const PhysicalResults&
 
 }  // namespace
 
-std::vector<std::string> beam_warnings(const BeamSolution& solution) {
+std::vector<std::string> beam_warnings(const BeamProblem& problem, const BeamSolution& solution) {
   std::vector<std::string> out;
   if (solution.method == BeamMethod::kPrbm && !solution.prbm_inside_validity) {
-    out.push_back(fmt::format(
-        "the PRB angle Theta = {:.1f} deg is outside the validity limit {:.1f} "
-        "deg ({}); the PRBM tip and force are not trusted here (--method elliptic or shooting "
-        "is exact)",
-        std::fabs(solution.prbm_Theta) * 180.0 / std::numbers::pi,
-        solution.prbm_theta_max * 180.0 / std::numbers::pi,
-        solution.prbm_limits_source));
+    out.push_back(
+        fmt::format("the PRB angle Theta = {:.1f} deg is outside the validity limit {:.1f} "
+                    "deg ({}); the PRBM tip and force are not trusted here ({} exact)",
+                    std::fabs(solution.prbm_Theta) * 180.0 / std::numbers::pi,
+                    solution.prbm_theta_max * 180.0 / std::numbers::pi,
+                    solution.prbm_limits_source,
+                    // The elliptic solver takes only the free cantilever with dead loads.
+                    problem.is_plain_cantilever() ? "--method elliptic or shooting is"
+                                                  : "--method shooting is"));
   }
   const std::string stability = stability_warning(solution.stability);
   if (!stability.empty()) out.push_back(stability);
@@ -471,6 +438,10 @@ Json to_json(const BeamInput& input,
   Json out;
   out["method"] = to_string(solution.method);
   out["method_reason"] = solution.method_reason;
+  // The relative tip error the method is known to stay within (null where none is known: the chain
+  // algorithm, the PRBM off its measured map).
+  out["expected_error"] =
+      std::isfinite(solution.expected_error) ? Json(solution.expected_error) : Json(nullptr);
   // Howell's parameters; null for a chain that has none (not one uniform straight beam).
   out["n"] = number_or_null(solution.load_ratio_n);
   out["alpha2"] = number_or_null(solution.alpha2);
@@ -532,7 +503,7 @@ Json to_json(const BeamInput& input,
   }
   if (physical) add_physical_json(out, input, *physical);
   Json warnings = Json::array();
-  for (const std::string& w : beam_warnings(solution)) warnings.push_back(w);
+  for (const std::string& w : beam_warnings(problem, solution)) warnings.push_back(w);
   out["warnings"] = std::move(warnings);
   return out;
 }
@@ -550,14 +521,18 @@ void run_beam(const BeamArgs& args) {
   }
   BeamSolution solution;
   std::optional<PhysicalResults> physical;
-  if (input.is_physical()) {
-    PhysicalBeamSolution solved = input.physical
-                                      ? solve_physical_beam(method, *input.physical, problem)
-                                      : solve_physical_chain(method, problem, *input.chain_file);
-    solution = std::move(solved.solution);
-    if (solution.converged()) physical = std::move(solved.physical);
-  } else {
-    solution = solve_beam(method, problem);
+  try {
+    if (input.is_physical()) {
+      PhysicalBeamSolution solved = input.physical
+                                        ? solve_physical_beam(method, *input.physical, problem)
+                                        : solve_physical_chain(method, problem, *input.chain_file);
+      solution = std::move(solved.solution);
+      if (solution.converged()) physical = std::move(solved.physical);
+    } else {
+      solution = solve_beam(method, problem);
+    }
+  } catch (const bench::ToleranceBelowReach& e) {
+    refuse_tolerance_below_reach(e, problem.tolerance);
   }
   if (!solution.converged()) {
     // What was reached, for the JSON error object (null where it is not a number).
@@ -575,6 +550,13 @@ void run_beam(const BeamArgs& args) {
       add_stability_json(reached, solution.stability);
     }
     if (problem.stable) reached["stable_search"] = solution.stable_search;
+    // The methods the message suggests (failure_advice.h), most capable first; empty when none is
+    // measured to reach further (the message then says what to change).
+    Json suggested = Json::array();
+    for (BeamMethod m : advise_after_failure(problem, solution, solution.methods_tried).methods) {
+      suggested.push_back(to_string(m));
+    }
+    reached["suggested_methods"] = std::move(suggested);
     for (auto& [key, value] : reached.items()) {
       if (value.is_number_float() && !std::isfinite(value.get<double>())) value = nullptr;
     }
@@ -587,7 +569,7 @@ void run_beam(const BeamArgs& args) {
                     to_string(solution.method),
                     solution.iterations,
                     solution.message.empty() ? "no message" : solution.message,
-                    other_methods_hint(solution.method)),
+                    failure_hint(problem, solution)),
         std::move(reached));
   }
   if (!problem.chain) require_finite_result(solution.alpha2, "alpha2");
@@ -604,7 +586,7 @@ void run_beam(const BeamArgs& args) {
                                     solution.shape.size(),
                                     problem.shape_points));
   }
-  warn(beam_warnings(solution));
+  warn(beam_warnings(problem, solution));
   if (args.json) {
     print_json(to_json(input, problem, solution, physical));  // refuses NaN/Inf anywhere
   } else {
@@ -689,34 +671,7 @@ void register_beam_command(CLI::App& app) {
   args->shape_option = beam->add_option(
       "--shape", args->shape_points, "Also output the deflected shape at K points (K >= 2)");
   // A physical cantilever (docs/units.md): SI numbers or values with units.
-  CLI::Option_group* physical = beam->add_option_group(
-      "physical beam", "A cantilever in physical units (SI, or with units: 50mm, 200GPa, 5N)");
-  const std::pair<const char*, std::string*> physical_flags[] = {
-      {"--length", &args->length},
-      {"--E", &args->E},
-      {"--I", &args->I},
-      {"--width", &args->width},
-      {"--thickness", &args->thickness},
-      {"--Fx", &args->Fx},
-      {"--Fy", &args->Fy},
-      {"--M", &args->M},
-      {"--yield-strength", &args->yield_strength},
-  };
-  const char* physical_help[] = {
-      "Beam length L (m, or 50mm, 2in)",
-      "Young's modulus E (Pa, or 200GPa, 30Msi)",
-      "Area moment of inertia I (m^4, or mm^4, in^4); or --width and --thickness",
-      "Section width b (m, or mm, in), out of the plane of bending",
-      "Section thickness h (m, or mm, in), in the plane of bending: I = b h^3/12, stress M h/2I",
-      "Tip force along the undeformed beam, from the clamp (N, or lbf)",
-      "Tip force perpendicular to the undeformed beam (N, or lbf)",
-      "Tip moment, counter-clockwise (N m, or N mm, lbf in)",
-      "Yield strength S_y for the safety factor (Pa, or MPa, ksi)",
-  };
-  for (std::size_t i = 0; i < std::size(physical_flags); ++i) {
-    args->physical_options.push_back(
-        physical->add_option(physical_flags[i].first, *physical_flags[i].second, physical_help[i]));
-  }
+  args->physical.add_to(*beam, true);
   beam->add_flag("--stable",
                  args->stable,
                  "Return a stable equilibrium: when the one reached by proportional loading is "

@@ -22,6 +22,6 @@ BeamCommandProblem beam_problem_of(const std::vector<std::string>& args);
 
 // The warnings of an answer that `flexure beam` prints on stderr and lists under the JSON key
 // `warnings`: a PRBM outside its validity limits, an unstable or critical equilibrium.
-std::vector<std::string> beam_warnings(const BeamSolution& solution);
+std::vector<std::string> beam_warnings(const BeamProblem& problem, const BeamSolution& solution);
 
 }  // namespace flexure::cli

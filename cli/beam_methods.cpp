@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "cli/cli_common.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
 
@@ -23,15 +24,23 @@ void add_method_option(CLI::App& command, std::string& method) {
                         CLI::ignore_case));
 }
 
-std::string other_methods_hint(BeamMethod failed_method) {
-  if (failed_method == BeamMethod::kElliptic) {
-    return "The shooting method (--method shooting) follows the load path by arc-length "
-           "continuation past limit points.";
+std::string failure_hint(const BeamProblem& problem, const BeamSolution& failed) {
+  const BeamFailureAdvice advice = advise_after_failure(problem, failed, failed.methods_tried);
+  if (advice.methods.empty()) {
+    return advice.load_path_helps
+               ? advice.text + " (flexure path with the same loads and --out FILE writes it)"
+               : advice.text;
   }
-  if (failed_method == BeamMethod::kChain) {
-    return "The shooting method (--method shooting) is the reference for any chain.";
+  // The library's advice with the flag of each method.
+  std::string hint = "Try ";
+  for (std::size_t i = 0; i < advice.methods.size(); ++i) {
+    hint += fmt::format("{}{} (--method {}): {}",
+                        i > 0 ? "; or " : "",
+                        advice.names[i],
+                        to_string(advice.methods[i]),
+                        advice.reasons[i]);
   }
-  return "Try smaller loads or --method chain with more --increments.";
+  return hint + ".";
 }
 
 CLI::Option* add_tolerance_option(CLI::App& command, double& tolerance) {
@@ -57,6 +66,17 @@ void refuse_tol_with_named_method(const CLI::Option* tol_option, const std::stri
       "--tol is the error --method auto allows when it chooses a method; --method {} works to its "
       "own tolerance, so --tol does not apply (drop it, or use --method auto)",
       method));
+}
+
+void refuse_tolerance_below_reach(const bench::ToleranceBelowReach& e, double tolerance) {
+  // Rather than an answer that misses the tolerance (docs/cli.md, "--tol").
+  throw InvalidInputReport(
+      fmt::format("--tol: {} (--tol {:.0e}, or drop --tol for the default 1e-6)",
+                  e.what(),
+                  e.best_tolerance()),
+      Json{{"tolerance", tolerance},
+           {"best_tolerance", e.best_tolerance()},
+           {"best_method", e.best_method()}});
 }
 
 }  // namespace flexure::cli

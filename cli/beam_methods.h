@@ -7,6 +7,8 @@
 
 #include "flexure/benchmarks/studies/beam_method.h"
 #include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/benchmarks/studies/failure_advice.h"
+#include "flexure/benchmarks/studies/method_selector.h"
 
 namespace flexure::cli {
 
@@ -19,7 +21,14 @@ CLI::Option* add_tolerance_option(CLI::App& command, double& tolerance);
 // method it does not apply (each method works to its own tolerance): InvalidInput saying so.
 void refuse_tol_with_named_method(const CLI::Option* tol_option, const std::string& method);
 
-// A sentence for non-convergence messages: which other method may work.
-std::string other_methods_hint(BeamMethod failed_method);
+// `--method auto` with a --tol that no method meets (bench::ToleranceBelowReach): the refusal as
+// InvalidInputReport (exit 2), with the flag to give and the JSON keys tolerance, best_tolerance,
+// best_method.
+[[noreturn]] void refuse_tolerance_below_reach(const bench::ToleranceBelowReach& e,
+                                               double tolerance);
+
+// Sentences for non-convergence messages: the library's advice (failure_advice.h: a method only
+// where it is measured to reach further than those tried, else what to change) with the flags.
+std::string failure_hint(const BeamProblem& problem, const BeamSolution& failed);
 
 }  // namespace flexure::cli

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -98,6 +99,23 @@ void run_bench(BenchArgs& args) {
     out["solves"] = points;
     out["failed_solves"] = failed;
     out["seconds"] = seconds;
+    // Per group, as the progress lines print them; null where a statistic covers no point (a
+    // group in which nothing converged has no error, not an error of 0).
+    Json groups = Json::array();
+    for (const bench::MethodRun& run : summary.runs) {
+      const bench::RunStatistics s = bench::run_statistics(run);
+      const auto number_or_null = [](double v) {
+        return std::isfinite(v) ? Json(v) : Json(nullptr);
+      };
+      groups.push_back(Json{{"problem", run.problem},
+                            {"method", run.method},
+                            {"points", s.points},
+                            {"converged_points", s.converged},
+                            {"measured_points", s.measured},
+                            {"max_relative_error", number_or_null(s.max_relative_error)},
+                            {"median_seconds", number_or_null(s.median_seconds)}});
+    }
+    out["groups"] = std::move(groups);
     out["resume_command"] = summary.complete ? Json(nullptr) : Json(resume);
     print_json(out);
   } else {

@@ -12,14 +12,11 @@
 //                                             --table: PRBM vs exact for the sub-class rows
 //
 // A stroke past the toggle position is clamped as in the thesis (stroke_percent reports the
-// effective stroke) with a warning on stderr.
+// effective stroke) with a warning (the model's, printed through warn()).
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <array>
 #include <cctype>
-#include <cmath>
-#include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
@@ -29,6 +26,7 @@
 #include "cli/cfm_cli_support.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/warning_output.h"
 #include "flexure/mechanisms/cfm/cfm_comparison.h"
 #include "flexure/mechanisms/cfm/cfm_exact.h"
 #include "flexure/mechanisms/cfm/cfm_model.h"
@@ -49,17 +47,7 @@ using cfm::StrokeSampling;
 cfm::CfmExactResult solve_exact_or_throw(const CfmResult& r, const CfmArgs& args) {
   cfm::CfmExactResult e = cfm::solve_cfm_exact(r, make_exact_options(args));
   if (!e.converged()) throw NoConvergence("cfm --exact: exact model: " + e.message);
-  if (e.force_vanishes_exact) {
-    // Its min/max would be meaningless (negative when it changes sign): reported as 0
-    // (docs/mechanisms.md "Percent constant force").
-    const auto [lo, hi] = std::minmax_element(e.Phi_exact_curve.begin(), e.Phi_exact_curve.end());
-    fmt::print(stderr,
-               "flexure: warning: the exact force {} within the stroke (Phi_exact from {:.3g} to "
-               "{:.3g}): percent_constant_force_exact is reported as 0\n",
-               e.force_changes_sign_exact ? "changes sign" : "vanishes",
-               *lo,
-               *hi);
-  }
+  warn(e.warnings);  // a force that vanishes or changes sign: Xi' exact reported as 0
   return e;
 }
 
@@ -130,14 +118,6 @@ Json kappa_json(const CfmResult& r) {
   return k;
 }
 
-// At the toggle position of a class 1A mechanism the slider force is zero (the crank spring's
-// moment has no lever along the slider): Phi_min is then rounding noise and Xi = Phi_max/Phi_min
-// meaningless.
-bool force_vanishes(const CfmResult& r) {
-  constexpr double kRoundingRelative = 1e-9;
-  return r.Phi_min <= kRoundingRelative * std::abs(r.Phi_max);
-}
-
 Json result_json(const CfmResult& r, const CfmOptions& options) {
   Json j;
   j["config"] = r.config;
@@ -148,7 +128,7 @@ Json result_json(const CfmResult& r, const CfmOptions& options) {
   j["d"] = r.requested_stroke_percent;
   j["Phi"] = r.Phi;
   // Xi = Phi_max/Phi_min is unbounded when the force vanishes: null, not rounding noise.
-  j["Xi"] = force_vanishes(r) ? Json(nullptr) : Json(r.Xi);
+  j["Xi"] = r.force_vanishes ? Json(nullptr) : Json(r.Xi);
   j["percent_constant_force"] = r.percent_constant_force;
   j["stroke_percent"] = r.stroke_percent;
   j["toggle_stroke_percent"] = r.toggle_stroke_percent;
@@ -156,7 +136,7 @@ Json result_json(const CfmResult& r, const CfmOptions& options) {
   j["lambda"] = r.lambda;
   j["beta"] = r.beta;
   j["Phi_min"] = r.Phi_min;
-  j["force_vanishes"] = force_vanishes(r);
+  j["force_vanishes"] = r.force_vanishes;
   j["Phi_max"] = r.Phi_max;
   j["kappa"] = kappa_json(r);
   j["primary_pivot"] = r.primary_pivot;
@@ -185,23 +165,6 @@ Json result_json(const CfmResult& r, const CfmOptions& options) {
   return j;
 }
 
-void warn_if_clamped(const CfmResult& r) {
-  if (force_vanishes(r)) {
-    fmt::print(stderr,
-               "flexure: warning: the force vanishes within the stroke (Phi_min = {:.3g} against "
-               "Phi_max = {:.3g}, zero to rounding): Xi is unbounded and not printed\n",
-               r.Phi_min,
-               r.Phi_max);
-  }
-  if (!r.stroke_clamped) return;
-  fmt::print(stderr,
-             "flexure: warning: stroke d = {:g} % is past the toggle position of R = {:g}; "
-             "clamped to {:.4f} % as in the thesis (stroke_percent)\n",
-             r.requested_stroke_percent,
-             r.R,
-             r.stroke_percent);
-}
-
 void print_report(const CfmResult& r, const CfmOptions& options) {
   fmt::print("Configuration {}-{}  R = {:g}  K1 = {:g}  K2 = {:g}\n",
              r.class_name,
@@ -218,7 +181,7 @@ void print_report(const CfmResult& r, const CfmOptions& options) {
              r.Phi,
              r.class_name == "1B" ? "Phi'" : "Phi",
              r.class_name == "1B" ? "k2" : "k1");
-  if (force_vanishes(r)) {
+  if (r.force_vanishes) {
     fmt::print("  Xi = max/min      = unbounded (the force vanishes)\n");
   } else {
     fmt::print("  Xi = max/min      = {:.6f}\n", r.Xi);
@@ -253,7 +216,7 @@ void run_config(const CfmArgs& args) {
   p.stroke_percent = args.d;
   const CfmOptions options = make_options(args, StrokeSampling::kThesisCode);
   const CfmResult r = evaluate_or_throw(CfmModel(options), p);
-  warn_if_clamped(r);
+  warn(r.warnings);  // a stroke clamped at the toggle, a force that vanishes
   std::optional<cfm::CfmExactResult> e;
   if (args.exact) e = solve_exact_or_throw(r, args);
   if (args.json) {
@@ -286,7 +249,7 @@ void run_subclass(const CfmArgs& args) {
   if (const CfmClassRow* row = cfm::find_class_row(args.subclass)) {
     const CfmOptions options = make_options(args, StrokeSampling::kUniform);
     const CfmResult r = evaluate_or_throw(CfmModel(options), cfm::parameters_of(*row));
-    warn_if_clamped(r);
+    warn(r.warnings);  // a stroke clamped at the toggle, a force that vanishes
     std::optional<cfm::CfmExactResult> e;
     if (args.exact) e = solve_exact_or_throw(r, args);
     if (args.json) {
@@ -313,7 +276,7 @@ void run_subclass(const CfmArgs& args) {
   const CfmSubclass& row = cfm::find_thesis_subclass(args.subclass);
   const CfmOptions options = make_options(args, StrokeSampling::kThesisCode);
   const CfmResult r = evaluate_or_throw(CfmModel(options), cfm::parameters_of(row));
-  warn_if_clamped(r);
+  warn(r.warnings);  // a stroke clamped at the toggle, a force that vanishes
   std::optional<cfm::CfmExactResult> e;
   if (args.exact) e = solve_exact_or_throw(r, args);
   if (args.json) {

@@ -296,6 +296,8 @@ int run_app(CLI::App& app, int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
+  } catch (const InvalidInputReport& e) {
+    return fail(e.what(), kExitInvalidInput, e.keys());
   } catch (const InvalidInput& e) {
     return fail(e.what(), kExitInvalidInput, Json::object());
   } catch (const NoConvergenceReport& e) {

@@ -77,11 +77,23 @@ class NoConvergenceReport : public NoConvergence {
   Json reached_;
 };
 
+// InvalidInput with keys for the JSON error object (e.g. the tolerance that can be met).
+class InvalidInputReport : public InvalidInput {
+ public:
+  InvalidInputReport(const std::string& message, Json keys)
+      : InvalidInput(message), keys_(std::move(keys)) {}
+  const Json& keys() const { return keys_; }
+
+ private:
+  Json keys_;
+};
+
 // Parses argv with `app` and runs the selected subcommand's callback. Maps CLI11 parse errors and
 // InvalidInput to 2, NoConvergence to 3, anything else to 4, each as one line on stderr prefixed
 // "flexure: ". --help and --version print to stdout and return 0. When argv holds --json and the
 // command has not printed its JSON object yet, a failure also prints the JSON error object on
-// stdout: {"error": the message, "exit_code": the code, ...NoConvergenceReport::reached()}.
+// stdout: {"error": the message, "exit_code": the code, ...NoConvergenceReport::reached() or
+// InvalidInputReport::keys()}.
 int run_app(CLI::App& app, int argc, char** argv);
 
 // Parses argv with `app` and runs the selected subcommand's callback, letting every failure

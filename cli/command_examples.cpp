@@ -57,7 +57,8 @@ const std::vector<CommandExamples>& command_examples() {
         "flexure cfm --list"}},
       {{"path"},
        {"flexure path --alpha2 10 --mu -6.2832 --out path.h5",
-        "flexure path --alpha2 5 --n 2 --out p.h5 --json"}},
+        "flexure path --length 1m --E 1GPa --I 1e-9 --Fx -3N --branch 1 --out buckled.h5",
+        "flexure path --boundary guided --control tip-y --tip-y 0.3 --out guided.h5 --json"}},
       {{"mechanism", "list"}, {"flexure mechanism list", "flexure mechanism list --json"}},
       {{"mechanism", "analyze"},
        {"flexure mechanism analyze 1A-lpp --points 20",
@@ -79,12 +80,25 @@ const std::vector<CommandExamples>& command_examples() {
   return table;
 }
 
+// The child of `parent` named `name`, or null (a stub has no children: command_table.h).
+CLI::App* find_child(CLI::App* parent, const std::string& name) {
+  for (CLI::App* child : parent->get_subcommands([](CLI::App*) { return true; })) {
+    if (child->get_name() == name) return child;
+  }
+  return nullptr;
+}
+
 }  // namespace
 
 void add_command_examples(CLI::App& app) {
   for (const CommandExamples& entry : command_examples()) {
     CLI::App* command = &app;
-    for (const std::string& name : entry.path) command = command->get_subcommand(name);
+    for (const std::string& name : entry.path) {
+      if (command != nullptr) command = find_child(command, name);
+    }
+    // Below a stub (command_table.h), which has no children; a stub's own footer is harmless:
+    // its help is never printed.
+    if (command == nullptr) continue;
     std::string footer = "\nExamples:";
     for (const std::string& example : entry.examples) footer += "\n  " + example;
     command->footer(footer);

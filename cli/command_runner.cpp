@@ -2,35 +2,20 @@
 
 #include <fmt/format.h>
 
-#include "cli/commands.h"
+#include "cli/command_table.h"
 #include "flexure/io/provenance.h"
-#include "flexure/version.h"
 
 namespace flexure::cli {
 
 void register_all_commands(CLI::App& app) {
-  app.set_version_flag("--version",
-                       fmt::format("flexure {} (git commit {})", kVersion, kGitCommit));
-  app.require_subcommand(1);
-  register_beam_command(app);
-  register_sweep_command(app);
-  register_validate_command(app);
-  register_prbm_command(app);
-  register_cfm_command(app);
-  register_path_command(app);
-  register_mechanism_command(app);
-  register_dynamics_command(app);
-  register_bench_command(app);
-  register_design_command(app);
-  register_design_mechanism_command(app);
-  register_map_command(app);
-  register_help_command(app);
-  add_command_examples(app);
+  std::vector<std::string> names;
+  for (const CommandEntry& entry : command_table()) names.emplace_back(entry.name);
+  register_commands_for(app, names);
 }
 
 CommandOutput run_command(const std::vector<std::string>& args) {
   CLI::App app{"flexure: exact large-deflection beams and compliant mechanisms", "flexure"};
-  register_all_commands(app);
+  register_commands_for(app, args);
   std::vector<std::string> words{"flexure"};
   words.insert(words.end(), args.begin(), args.end());
   std::vector<char*> argv;

@@ -11,7 +11,9 @@
 
 namespace flexure::cli {
 
-// Adds every subcommand of the tool to `app` (main.cpp and run_command share it).
+// Adds every subcommand of the tool to `app`, each in full (tests, tools that walk the help).
+// main.cpp and run_command register in full only the commands their arguments name
+// (register_commands_for, command_table.h).
 void register_all_commands(CLI::App& app);
 
 struct CommandOutput {

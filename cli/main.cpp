@@ -2,8 +2,9 @@
 //
 // How to add a subcommand (the pattern every command follows):
 //  1. Create cli/<name>_command.cpp with `void register_<name>_command(CLI::App& app)` in
-//     namespace flexure::cli; declare it in cli/commands.h and call it in register_all_commands
-//     (command_runner.cpp), which the tool and the Python module share.
+//     namespace flexure::cli; declare it in cli/commands.h and add it, with the description it
+//     gives its subcommand, to command_table() (command_table.cpp), which the tool and the
+//     Python module share.
 //  2. In it, keep the parsed arguments in a std::shared_ptr<Args> captured by the subcommand's
 //     callback (CLI11 runs the callback after a successful parse). Add `--json`.
 //  3. The callback validates input and throws flexure::InvalidInput (exit 2) naming the flag and
@@ -22,9 +23,11 @@
 // Nested commands (`sweep beam`) use get_or_add_subcommand() so that several files can add
 // children to the same parent.
 #include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
 
 #include "cli/cli_common.h"
-#include "cli/command_runner.h"
+#include "cli/command_table.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/provenance.h"
 #include "flexure/solver/common/gsl_guard.h"
@@ -37,7 +40,8 @@ int main(int argc, char** argv) {
   flexure::io::record_command_line(argc, argv);
 
   CLI::App app{"flexure: exact large-deflection beams and compliant mechanisms", "flexure"};
-  flexure::cli::register_all_commands(app);
+  // Only the command the arguments name is registered in full (command_table.h): start-up.
+  flexure::cli::register_commands_for(app, std::vector<std::string>(argv + 1, argv + argc));
 
   return flexure::cli::run_app(app, argc, argv);
 }

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <iostream>
 #include <limits>
@@ -138,6 +139,112 @@ Json design_json(const MechanismDesign& d) {
   return out;
 }
 
+// The PRBM's validity over the stroke (prbm_validity.h): what is outside Table 5.1, where, and the
+// PRBM's force error there (null where the exact model was not solved).
+Json validity_json(const PrbmStrokeValidity& v, double stroke) {
+  const auto number = [](double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); };
+  Json j;
+  j["table"] = v.has_table ? Json("Howell Table 5.1") : Json(nullptr);
+  j["no_table"] = v.has_table ? Json(nullptr) : Json(v.no_table);
+  j["points"] = v.inside.size();
+  j["points_outside"] = v.points_outside;
+  j["limit"] = v.limit ? Json(*v.limit) : Json(nullptr);
+  j["pivot"] = v.first_outside ? Json(v.pivot) : Json(nullptr);
+  j["quantity"] = v.first_outside ? Json(v.quantity) : Json(nullptr);
+  j["value"] = v.first_outside ? Json(v.value) : Json(nullptr);
+  j["unit"] = v.first_outside ? Json(v.unit) : Json(nullptr);
+  j["table_range"] = v.first_outside ? Json::array({v.table_min, v.table_max}) : Json(nullptr);
+  Json ranges = Json::array();
+  for (const auto& [first, last] : v.outside_ranges) ranges.push_back(Json::array({first, last}));
+  j["outside_ranges"] = std::move(ranges);
+  j["force_error_at_limit"] = number(v.force_error_at_limit);
+  j["max_force_error_outside"] = number(v.max_force_error_outside);
+  j["max_force_error_inside"] = number(v.max_force_error_inside);
+  j["summary"] = describe_validity(v, stroke);
+  return j;
+}
+
+// One model's verdicts under one control as parallel arrays (stability.h names; JSON keys of
+// docs/cli.md "flexure mechanism"), with the stretches in words.
+Json stroke_stability_json(const StrokeStability& s) {
+  Json kinds = Json::array(), index = Json::array(), margin = Json::array();
+  Json not_checked = Json::array();  // {point, reason} where no verdict could be computed
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    const Stability& v = s.points[i];
+    kinds.push_back(std::string(stability_name(v.kind)));
+    index.push_back(v.index);
+    margin.push_back(v.margin);
+    if (!v.judged()) not_checked.push_back(Json{{"point", i}, {"reason", v.message}});
+  }
+  return Json{{"stability", kinds},
+              {"stability_index", index},
+              {"stability_margin", margin},
+              {"unstable_points", s.unstable_points},
+              {"critical_points", s.critical_points},
+              {"not_checked_points", s.not_checked_points},
+              {"least_margin",
+               static_cast<int>(s.points.size()) > s.not_checked_points ? Json(s.least_margin)
+                                                                        : Json(nullptr)},
+              {"not_checked", not_checked},
+              {"summary", s.summary}};
+}
+
+// The four stroke verdicts (control x model) that `analyze` computed, in output order; `exact`
+// null where the exact model did not run.
+struct StabilityEntry {
+  const char* control;  // JSON/HDF5 name: "displacement_control" or "force_control"
+  const char* model;    // "prbm" or "exact"
+  const StrokeStability* stroke;
+};
+std::vector<StabilityEntry> stability_entries(const MechanismAnalysis& a) {
+  std::vector<StabilityEntry> out;
+  if (a.stability_prbm.displacement_control.points.empty()) return out;
+  const bool exact = a.has_exact && a.exact.converged() && a.has_exact_stability;
+  out.push_back({"displacement_control", "prbm", &a.stability_prbm.displacement_control});
+  out.push_back(
+      {"displacement_control", "exact", exact ? &a.stability_exact.displacement_control : nullptr});
+  out.push_back({"force_control", "prbm", &a.stability_prbm.force_control});
+  out.push_back({"force_control", "exact", exact ? &a.stability_exact.force_control : nullptr});
+  return out;
+}
+
+// The meanings of the HDF5 `stability` codes (StabilityKind in its enum order).
+std::vector<io::CodeMeaning> stability_code_meanings() {
+  return {{"stability", 0, "stable: the potential energy has a strict minimum"},
+          {"stability", 1, "unstable: stability_index directions in which the energy decreases"},
+          {"stability",
+           2,
+           "critical: the lowest eigenvalue is zero within 1e-6 (buckling or limit point)"},
+          {"stability", 3, "not_conservative: a follower load (never for a mechanism stroke)"},
+          {"stability", 4, "not_checked: no verdict at this point (reason in the JSON output)"}};
+}
+
+// stderr warnings: an exact state the mechanism cannot hold with its slider held.
+std::vector<std::string> stability_warnings(const MechanismAnalysis& a) {
+  std::vector<std::string> texts;
+  if (!a.has_exact_stability) return texts;
+  const StrokeStability& dc = a.stability_exact.displacement_control;
+  if (dc.unstable_points > 0) {
+    texts.push_back(fmt::format(
+        "{}: the exact model's equilibrium is unstable with the slider held at {} of {} stroke "
+        "points (least stability margin {:.3g}): the mechanism cannot hold these shapes and would "
+        "buckle into another one, which this force curve does not describe (docs/stability.md "
+        "\"Mechanisms\")",
+        a.design.name,
+        dc.unstable_points,
+        dc.points.size(),
+        dc.least_margin));
+  }
+  if (dc.not_checked_points > 0 || a.stability_exact.force_control.not_checked_points > 0) {
+    texts.push_back(fmt::format(
+        "{}: no stability verdict at {} stroke points of the exact model (the JSON's "
+        "not_checked lists the reasons)",
+        a.design.name,
+        std::max(dc.not_checked_points, a.stability_exact.force_control.not_checked_points)));
+  }
+  return texts;
+}
+
 Json analysis_json(const MechanismAnalysis& a) {
   const bool exact = a.has_exact && a.exact.converged();
   Json j;
@@ -169,6 +276,8 @@ Json analysis_json(const MechanismAnalysis& a) {
   j["max_force_error_at"] = or_null(exact, a.max_force_error_at);
   j["prbm_validity_limit"] = a.prbm_validity_limit ? Json(*a.prbm_validity_limit) : Json(nullptr);
   j["prbm_validity_reason"] = a.prbm_validity_reason;
+  j["prbm_validity"] = validity_json(a.prbm_validity, a.design.stroke);
+  j["prbm_within_validity"] = a.prbm_validity.inside;
   j["max_stress"] = a.max_stress_all;
   j["max_stress_per_pivot"] = pivot_array(a.design, a.max_stress);
   j["max_stress_prbm"] = pivot_array(a.design, a.prbm.max_stress);
@@ -176,6 +285,12 @@ Json analysis_json(const MechanismAnalysis& a) {
   j["max_stress_exact"] = pivot_array(a.design, a.max_stress_exact, exact && a.has_exact_stress);
   j["safety_factor"] = a.safety_factor;
   j["yielding_pivots"] = described_pivots(a.design, a.yielding_pivots);
+  // Per stroke point, under each way of driving the slider (docs/stability.md "Mechanisms"):
+  // {"prbm": {...}, "exact": {...} or null}; absent when not computed.
+  for (const StabilityEntry& e : stability_entries(a)) {
+    j[std::string("stability_") + e.control][e.model] =
+        e.stroke != nullptr ? stroke_stability_json(*e.stroke) : Json(nullptr);
+  }
   return j;
 }
 
@@ -311,6 +426,31 @@ void write_hdf5(const std::string& path, const MechanismAnalysis& a, io::AtomicH
     root.set_attribute("prbm_validity_limit", *a.prbm_validity_limit);
     attribute_units += "; prbm_validity_limit: m";
   }
+  // What is outside Table 5.1 and how large the PRBM's error is there (prbm_validity.h); the
+  // errors are NaN where the exact model was not solved or no point falls in the group.
+  const PrbmStrokeValidity& v = a.prbm_validity;
+  root.set_attribute("prbm_validity", describe_validity(v, a.design.stroke));
+  if (v.first_outside) {
+    root.set_attribute("prbm_validity_reason", v.reason);
+    root.set_attribute("prbm_validity_quantity", v.quantity);
+    root.set_attribute("prbm_validity_value", v.value);
+    root.set_attribute("prbm_validity_table_min", v.table_min);
+    root.set_attribute("prbm_validity_table_max", v.table_max);
+    attribute_units += fmt::format(
+        "; prbm_validity_value, prbm_validity_table_min, prbm_validity_table_max: {}", v.unit);
+  }
+  root.set_attribute("prbm_points_outside_validity", static_cast<std::int64_t>(v.points_outside));
+  root.set_attribute("prbm_force_error_at_validity_limit", v.force_error_at_limit);
+  root.set_attribute("prbm_max_force_error_outside_validity", v.max_force_error_outside);
+  root.set_attribute("prbm_max_force_error_inside_validity", v.max_force_error_inside);
+  attribute_units +=
+      "; prbm_force_error_at_validity_limit, prbm_max_force_error_outside_validity, "
+      "prbm_max_force_error_inside_validity: 1";
+  root.write_dataset("prbm_within_validity",
+                     std::span<const int>(v.inside),
+                     "1",
+                     "per stroke point: 1 inside Howell Table 5.1 (every fixed-pinned segment), 0 "
+                     "outside, -1 no table applies (small-length pivots, fixed-fixed segments)");
   root.set_attribute("attribute_units", attribute_units);
   for (int p = 0; p < 3; ++p) {
     const int described = described_pivot(a.design, p + 1);
@@ -331,8 +471,54 @@ void write_hdf5(const std::string& path, const MechanismAnalysis& a, io::AtomicH
                                      described));
     }
   }
+  // Per stroke point, under each way of driving the slider (docs/stability.md "Mechanisms"):
+  // /stability_displacement_control/{prbm,exact}, /stability_force_control/{prbm,exact}.
+  std::vector<io::CodeMeaning> codes;
+  const std::vector<StabilityEntry> entries = stability_entries(a);
+  for (const char* control : {"displacement_control", "force_control"}) {
+    std::optional<io::Hdf5Group> group;
+    for (const StabilityEntry& e : entries) {
+      if (e.stroke == nullptr || std::string(e.control) != control) continue;
+      if (!group) {
+        group.emplace(root.create_group(std::string("stability_") + control));
+        group->set_attribute(
+            "description",
+            std::string(control) == "displacement_control"
+                ? "stability of each stroke point with the slider held at its position"
+                : "stability of each stroke point under a dead load on the slider equal to its "
+                  "force there");
+      }
+      io::Hdf5Group g = group->create_group(e.model);
+      std::vector<int> kind, index;
+      std::vector<double> margin;
+      for (const Stability& v : e.stroke->points) {
+        kind.push_back(static_cast<int>(v.kind));
+        index.push_back(v.index);
+        margin.push_back(v.margin);
+      }
+      const std::string model = std::string(e.model) == "prbm" ? "PRBM" : "exact-model";
+      g.write_dataset("stability",
+                      std::span<const int>(kind),
+                      "1",
+                      model +
+                          " verdict per stroke point: 0 stable, 1 unstable, 2 critical, 4 not "
+                          "checked (root status_meanings)");
+      g.write_dataset("stability_index",
+                      std::span<const int>(index),
+                      "1",
+                      model + " number of directions in which the potential energy decreases");
+      g.write_dataset("stability_margin",
+                      std::span<const double>(margin),
+                      "1",
+                      model +
+                          " lowest eigenvalue of the second variation relative to the "
+                          "unloaded stiffness (1 unloaded, 0 critical, < 0 unstable)");
+      g.set_attribute("summary", e.stroke->summary);
+      codes = stability_code_meanings();
+    }
+  }
   write_design_group(root, a.design);
-  io::write_provenance(root, {});
+  io::write_provenance(root, codes);
   file.commit();
   (void)path;
 }
@@ -394,8 +580,23 @@ ValidationRow validate_design(MechanismDesign d,
     return note.empty() ? fmt::format("{:.2f}", v) : fmt::format("{:.2f} ({})", v, note);
   };
   row.warnings = force_vanishing_warnings(a, exact);
+  for (std::string& text : stability_warnings(a)) row.warnings.push_back(std::move(text));
+  // Unstable stroke points (docs/stability.md "Mechanisms"): exact with the slider held, exact
+  // under a dead load, PRBM under a dead load (held, the PRBM linkage cannot move).
+  const bool exact_stability = exact && a.has_exact_stability;
+  const std::string unstable_cell =
+      a.stability_prbm.force_control.points.empty()
+          ? std::string("-")
+          : fmt::format("{} / {} / {}",
+                        exact_stability
+                            ? std::to_string(a.stability_exact.displacement_control.unstable_points)
+                            : std::string("-"),
+                        exact_stability
+                            ? std::to_string(a.stability_exact.force_control.unstable_points)
+                            : std::string("-"),
+                        a.stability_prbm.force_control.unstable_points);
   row.line = fmt::format(
-      "| {} | {} | {} | {} | {} | {} | {} | {} | {:.2f} | {} |\n",
+      "| {} | {} | {} | {} | {} | {} | {} | {} | {:.2f} | {} | {} |\n",
       d.name,
       a.has_exact ? (exact ? "yes" : "did not converge") : "PRBM only",
       pcf_cell(a.prbm.percent_constant_force, prbm_note),
@@ -409,8 +610,19 @@ ValidationRow validate_design(MechanismDesign d,
       a.safety_factor,
       check ? (check->converged() ? fmt::format("{:.1e}", check->tip_error / d.r2)
                                   : std::string("did not converge"))
-            : std::string("-"));
+            : std::string("-"),
+      unstable_cell);
   Json r = analysis_json(a);
+  // The per-point arrays stay in `analyze`; the table keeps the counts, least margin and summary.
+  for (const char* control : {"stability_displacement_control", "stability_force_control"}) {
+    if (!r.contains(control)) continue;
+    for (auto& [model, v] : r[control].items()) {
+      if (v.is_null()) continue;
+      v.erase("stability");
+      v.erase("stability_index");
+      v.erase("stability_margin");
+    }
+  }
   if (check) {
     r["chain_check_converged"] = check->converged();
     r["chain_check_tip_error"] = check->converged() ? Json(check->tip_error) : Json(nullptr);
@@ -422,16 +634,22 @@ ValidationRow validate_design(MechanismDesign d,
   r.erase("displacement");
   r.erase("force_prbm");
   r.erase("force_exact");
+  r.erase("prbm_within_validity");
   row.status = !a.has_exact ? 2 : !exact ? 1 : (check && !check->converged()) ? 3 : 0;
   const double none = std::numeric_limits<double>::quiet_NaN();
-  row.values = {a.prbm.percent_constant_force,
-                exact ? a.percent_constant_force_exact : none,
-                exact ? a.max_force_error : none,
-                exact ? a.max_force_error_at / d.stroke : none,
-                a.prbm_validity_limit ? *a.prbm_validity_limit / d.stroke : -1.0,
-                a.safety_factor,
-                check && check->converged() ? check->tip_error / d.r2 : none,
-                d.stroke};
+  row.values = {
+      a.prbm.percent_constant_force,
+      exact ? a.percent_constant_force_exact : none,
+      exact ? a.max_force_error : none,
+      exact ? a.max_force_error_at / d.stroke : none,
+      a.prbm_validity_limit ? *a.prbm_validity_limit / d.stroke : -1.0,
+      a.safety_factor,
+      check && check->converged() ? check->tip_error / d.r2 : none,
+      d.stroke,
+      exact_stability ? static_cast<double>(a.stability_exact.displacement_control.unstable_points)
+                      : none,
+      exact_stability ? static_cast<double>(a.stability_exact.force_control.unstable_points) : none,
+      static_cast<double>(a.stability_prbm.force_control.unstable_points)};
   row.json = std::move(r);
   return row;
 }
@@ -454,7 +672,17 @@ const std::vector<std::array<const char*, 3>>& validation_columns() {
        "1",
        "tip error / r2 of Howell's chain algorithm on the last exact point; NaN where status != "
        "0"},
-      {"stroke", "m", "the stroke evaluated"}};
+      {"stroke", "m", "the stroke evaluated"},
+      {"unstable_points_displacement_control_exact",
+       "1",
+       "exact stroke points unstable with the slider held (docs/stability.md); NaN where status "
+       "is 1 or 2"},
+      {"unstable_points_force_control_exact",
+       "1",
+       "exact stroke points unstable under a dead slider load; NaN where status is 1 or 2"},
+      {"unstable_points_force_control_prbm",
+       "1",
+       "PRBM stroke points unstable under a dead slider load (where the force falls)"}};
   return columns;
 }
 
@@ -469,8 +697,8 @@ void print_validation(int points,
   std::string table =
       "| Mechanism | Exact model | Xi' PRBM % | Xi' exact % | Xi' error (points) | max force "
       "error % | at Delta x / stroke % | PRBM validity limit (Delta x / stroke %) | SF | chain "
-      "check tip error / r2 |\n"
-      "|---|---|---|---|---|---|---|---|---|---|\n";
+      "check tip error / r2 | unstable points: exact held / exact dead load / PRBM dead load |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|\n";
   const std::vector<MechanismDesign> designs = listed_designs(set);
   const auto n = static_cast<hsize_t>(designs.size());
   // --out: created before any design is analysed (a wrong path fails at once); under mpirun every
@@ -724,8 +952,13 @@ void register_mechanism_command(CLI::App& app) {
       }
     }
     refuse_tol_with_named_method(args->tol_option, args->no_exact ? "prbm" : args->method);
-    const MechanismMethodChoice choice =
-        choose_mechanism_method(d, args->no_exact ? "prbm" : args->method, args->tol);
+    const MechanismMethodChoice choice = [&] {
+      try {
+        return choose_mechanism_method(d, args->no_exact ? "prbm" : args->method, args->tol);
+      } catch (const bench::ToleranceBelowReach& e) {
+        refuse_tolerance_below_reach(e, args->tol);
+      }
+    }();
     AnalysisOptions o;
     o.points = args->points;
     o.exact = choice.exact;
@@ -745,6 +978,7 @@ void register_mechanism_command(CLI::App& app) {
                       d.yield_strength));
     }
     warn(force_vanishing_warnings(a, a.has_exact && o.exact));
+    warn(stability_warnings(a));
     if (file) write_hdf5(args->out, a, *file);
     if (args->json) {
       Json j = analysis_json(a);
@@ -783,10 +1017,19 @@ void register_mechanism_command(CLI::App& app) {
                                100.0 * a.max_force_error,
                                a.max_force_error_at);
     }
+    std::cout << fmt::format("  PRBM validity: {}\n", describe_validity(a.prbm_validity, d.stroke));
     std::cout << fmt::format("  max stress {:.5g} Pa, safety factor {:.3f}{}\n",
                              a.max_stress_all,
                              a.safety_factor,
                              a.yielding_pivots.empty() ? "" : " (YIELDS)");
+    const std::vector<StabilityEntry> entries = stability_entries(a);
+    if (!entries.empty()) {
+      std::cout << "  stability (margin: the lowest eigenvalue of the second variation of the "
+                   "energy / the unloaded stiffness; docs/stability.md \"Mechanisms\"):\n";
+      for (const StabilityEntry& e : entries) {
+        if (e.stroke != nullptr) std::cout << "    " << e.stroke->summary << "\n";
+      }
+    }
   });
 
   struct ValidateArgs {

@@ -1,20 +1,25 @@
-// `flexure path`: the load path of proportional loading from zero, by pseudo-arclength
-// continuation (shooting) or load increments (chain algorithm), written to HDF5.
+// `flexure path`: the equilibrium path from zero load (proportional loading or a moved tip
+// coordinate), by pseudo-arclength continuation (shooting; folds and bifurcations located) or the
+// chain algorithm's load increments, written to HDF5. The work is in
+// benchmarks/studies/load_path_study.h; this file parses, calls and prints.
 #include <fmt/format.h>
 
 #include <chrono>
 #include <cmath>
-#include <cstdint>
+#include <cstdlib>
 #include <memory>
+#include <optional>
 
 #include "cli/beam_methods.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/physical_flags.h"
+#include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/benchmarks/studies/load_path_study.h"
 #include "flexure/io/chain_toml.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/output_path.h"
-#include "flexure/io/provenance.h"
-#include "flexure/solver/chain/chain_algorithm_solver.h"
+#include "flexure/io/quantity.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
@@ -27,154 +32,269 @@ struct PathArgs {
   double mu = 0.0;
   double follower = 0.0;
   std::string boundary = "free";
-  double tip_x = 0.0, tip_y = 0.0, tip_angle = 0.0;
+  std::string tip_x, tip_y, tip_angle;
   CLI::Option* tip_x_option = nullptr;
   CLI::Option* tip_y_option = nullptr;
   CLI::Option* tip_angle_option = nullptr;
+  CLI::Option* n_option = nullptr;
+  CLI::Option* alpha2_option = nullptr;
+  CLI::Option* mu_option = nullptr;
+  CLI::Option* follower_option = nullptr;
   std::string method = "shooting";
   int elements = 100;
   int increments = 10;
   std::string chain_file;
   CLI::Option* chain_option = nullptr;
+  PhysicalFlags physical;
+  // Continuation (shooting only).
+  double max_step = 0.0;
+  CLI::Option* max_step_option = nullptr;
+  int min_points = 0;
+  CLI::Option* min_points_option = nullptr;
+  int branch = 0;
+  std::string branch_side = "positive";
+  std::string control = "load";
+  int shapes = 0;
+  CLI::Option* shapes_option = nullptr;
   std::string out;
   bool json = false;
 };
 
-// The columns of the path file (docs/cli.md, "flexure path").
-struct PathTable {
-  std::vector<double> load_factor, tip_x, tip_y, tip_theta, reaction_Fx, reaction_Fy, reaction_M;
-  std::vector<int> status;  // 0 start, 1 accepted, 2 limit point passed, 3 end (full load)
-  bool completed = false;
-  double lambda_reached = 0.0;
-  int limit_points = 0;
-  std::string message;
-};
-
-PathTable shooting_path(const SegmentChain& chain) {
-  const LoadPath path = trace_load_path(chain, ShootingSolver::Options{});
-  PathTable t;
-  for (const PathPoint& p : path.points) {
-    t.load_factor.push_back(p.lambda);
-    t.tip_x.push_back(p.tip.x);
-    t.tip_y.push_back(p.tip.y);
-    t.tip_theta.push_back(p.tip.theta);
-    t.reaction_Fx.push_back(p.reaction.Fx);
-    t.reaction_Fy.push_back(p.reaction.Fy);
-    t.reaction_M.push_back(p.reaction.M);
-    t.status.push_back(static_cast<int>(p.status));
+// A nondimensional tip coordinate (x/l, y/l): a plain number; a unit needs a physical beam.
+double plain_length(const std::string& text, const char* what) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end == text.c_str() || *end != '\0') {
+    throw InvalidInput(fmt::format(
+        "{} = '{}': a tip coordinate of Howell's nondimensional beam is a plain number (x/l, "
+        "y/l); a length with a unit needs a physical beam (--length, --E, the section)",
+        what,
+        text));
   }
-  t.completed = path.converged();
-  t.lambda_reached = path.lambda_reached;
-  t.limit_points = path.limit_points;
-  t.message = path.message;
-  return t;
+  require_finite_input(value, what);
+  return value;
 }
 
-PathTable chain_path(const SegmentChain& chain, const PathArgs& args) {
-  ChainAlgorithmSolver::Options options;
-  options.elements = args.elements;
-  options.increments = args.increments;
-  options.record_load_path = true;
-  const ChainResult r = solve_chain(chain, options);
-  PathTable t;
-  t.load_factor.push_back(0.0);
-  const ChainPose start = chain.unloaded_tip();
-  t.tip_x.push_back(start.x);
-  t.tip_y.push_back(start.y);
-  t.tip_theta.push_back(start.theta);
-  t.status.push_back(0);
-  for (const ChainLoadPathPoint& p : r.load_path) {
-    t.load_factor.push_back(p.load_factor);
-    t.tip_x.push_back(p.tip.x);
-    t.tip_y.push_back(p.tip.y);
-    t.tip_theta.push_back(p.tip.theta);
-    t.status.push_back(p.load_factor >= 1.0 ? 3 : 1);
+TipCoordinate control_coordinate(const std::string& name) {
+  if (name == "tip-x") return TipCoordinate::kX;
+  if (name == "tip-y") return TipCoordinate::kY;
+  return TipCoordinate::kTheta;
+}
+
+// The request `flexure path` describes: the chain (nondimensional, physical or from a file), its
+// units, the method and the continuation settings.
+PathRequest make_request(const PathArgs& args) {
+  PathRequest request;
+  const bool physical = args.physical.given();
+  const bool from_file = bool(*args.chain_option);
+  const bool howell =
+      *args.n_option || *args.alpha2_option || *args.mu_option || *args.follower_option;
+  if (physical && (howell || from_file)) {
+    throw InvalidInput(
+        "a physical beam (--length, --E, the section, --Fx, --Fy, --M) is loaded in newtons; do "
+        "not combine it with the nondimensional --n, --alpha2, --mu, --follower or with --chain");
   }
-  // The chain algorithm records tip poses per increment; reactions only at the end.
-  t.reaction_Fx.assign(t.load_factor.size(), std::nan(""));
-  t.reaction_Fy.assign(t.load_factor.size(), std::nan(""));
-  t.reaction_M.assign(t.load_factor.size(), std::nan(""));
-  t.reaction_Fx.back() = r.root_reaction.Fx;
-  t.reaction_Fy.back() = r.root_reaction.Fy;
-  t.reaction_M.back() = r.root_reaction.M;
-  t.completed = r.converged();
-  t.lambda_reached = r.load_factor;
-  t.message = r.message;
-  return t;
-}
+  // The file first: its own errors (a missing file, bad TOML) are named before the combination.
+  std::optional<SegmentChain> file_chain;
+  if (from_file) file_chain = io::read_chain_toml(args.chain_file);
+  if (from_file && (howell || args.boundary != "free")) {
+    throw InvalidInput(
+        "--chain FILE.toml describes the whole problem (segments, loads, boundary); do not "
+        "combine it with --n, --alpha2, --mu, --follower or --boundary");
+  }
+  const EndCondition end = from_file ? file_chain->end : end_condition_from_string(args.boundary);
+  const bool controlled = args.control != "load";
+  const TipCoordinate coordinate = control_coordinate(args.control);
 
-// The codes of /status (PathTable::status).
-const std::vector<io::CodeMeaning>& path_code_meanings() {
-  static const std::vector<io::CodeMeaning> codes = {
-      {"status", 0, "start: the unloaded beam (load factor 0)"},
-      {"status", 1, "an accepted continuation step or load increment"},
-      {"status", 2, "a limit point (fold) of the load factor was passed at this step"},
-      {"status", 3, "end: the full load (load factor 1)"}};
-  return codes;
-}
+  // The tip targets: metres for a physical beam, x/l and y/l otherwise; angles in rad or with a
+  // unit. A coordinate may be given only when the end condition or --control prescribes it.
+  const PrescribedMask mask = prescribed_mask(end);
+  auto allowed = [&](bool by_end, TipCoordinate c, const char* flag) {
+    if (controlled && coordinate == c) return;
+    if (from_file) {
+      throw InvalidInput(fmt::format(
+          "{}: with --chain the file prescribes the tip (its end condition and values); the tip "
+          "flags only give the target of --control",
+          flag));
+    }
+    if (by_end) return;
+    throw InvalidInput(fmt::format(
+        "{} is not prescribed by --boundary {} (it prescribes {}); --control {} moves that "
+        "coordinate as the path parameter",
+        flag,
+        args.boundary,
+        mask.x || mask.y || mask.theta ? fmt::format("{}{}{}",
+                                                     mask.x ? "tip x " : "",
+                                                     mask.y ? "tip y " : "",
+                                                     mask.theta ? "tip angle" : "")
+                                       : std::string("nothing"),
+        flag + 2));
+  };
+  TipPrescription tip;
+  auto length_value = [&](const std::string& text, const char* flag) {
+    return physical ? io::parse_quantity(text, io::Dimension::kLength, flag).si
+                    : plain_length(text, flag);
+  };
+  if (*args.tip_x_option) {
+    allowed(mask.x, TipCoordinate::kX, "--tip-x");
+    tip.x = length_value(args.tip_x, "--tip-x");
+  }
+  if (*args.tip_y_option) {
+    allowed(mask.y, TipCoordinate::kY, "--tip-y");
+    tip.y = length_value(args.tip_y, "--tip-y");
+  }
+  if (*args.tip_angle_option) {
+    allowed(mask.theta, TipCoordinate::kTheta, "--tip-angle");
+    const io::Quantity angle =
+        io::parse_quantity(args.tip_angle, io::Dimension::kAngle, "--tip-angle");
+    warn(io::angle_warning(angle, "--tip-angle"));
+    tip.theta = angle.si;
+  }
+  // --control: the target is the coordinate's own flag; the end condition keeps only what it
+  // prescribes (a coordinate it leaves free is added by the control).
+  std::optional<double> target;
+  if (controlled) {
+    const std::optional<double>& given = coordinate == TipCoordinate::kX   ? tip.x
+                                         : coordinate == TipCoordinate::kY ? tip.y
+                                                                           : tip.theta;
+    if (!given) {
+      throw InvalidInput(fmt::format(
+          "--control {} moves the tip to the value of --{}; give it (the target of the path)",
+          args.control,
+          args.control));
+    }
+    target = *given;
+    const bool by_end = coordinate == TipCoordinate::kX   ? mask.x
+                        : coordinate == TipCoordinate::kY ? mask.y
+                                                          : mask.theta;
+    if (!by_end) {
+      (coordinate == TipCoordinate::kX   ? tip.x
+       : coordinate == TipCoordinate::kY ? tip.y
+                                         : tip.theta)
+          .reset();
+    }
+  }
 
-// The path file (docs/hdf5-schema.md "flexure path"). Without --chain the problem is Howell's
-// nondimensional beam (l = 1, EI = 1); a chain file is in whatever consistent units it was written
-// in (docs/chain-toml.md), so the units say that instead of guessing.
-void write_path_file(io::Hdf5Group& file,
-                     const PathTable& t,
-                     const PathArgs& args,
-                     const SegmentChain& chain) {
-  const bool from_file = args.chain_option != nullptr && *args.chain_option;
-  const std::string length = from_file ? "length unit of the chain file" : "1";
-  const std::string force = from_file ? "force unit of the chain file" : "1";
-  const std::string moment = from_file ? "force unit * length unit of the chain file" : "1";
-  const std::string scaled = from_file ? "" : " (nondimensional: l = 1, EI = 1)";
-  file.write_dataset("load_factor",
-                     t.load_factor,
-                     "1",
-                     "load factor lambda: 0 unloaded, 1 full load; may fall and rise at limit "
-                     "points");
-  file.write_dataset("tip_x", t.tip_x, length, "tip x along the clamp's axis" + scaled);
-  file.write_dataset("tip_y", t.tip_y, length, "tip y perpendicular to the clamp's axis" + scaled);
-  file.write_dataset("tip_theta", t.tip_theta, "rad", "tip angle");
-  file.write_dataset("reaction_Fx",
-                     t.reaction_Fx,
-                     force,
-                     "x force the clamp exerts" + scaled + "; chain: NaN except at the last point");
-  file.write_dataset("reaction_Fy",
-                     t.reaction_Fy,
-                     force,
-                     "y force the clamp exerts" + scaled + "; chain: NaN except at the last point");
-  file.write_dataset("reaction_M",
-                     t.reaction_M,
-                     moment,
-                     "moment the clamp exerts" + scaled + "; chain: NaN except at the last point");
-  file.write_dataset("status", t.status, "1", "kind of point (root status_meanings)");
-  file.set_attribute("method", args.method);
-  file.set_attribute("boundary", to_string(chain.end));
-  file.set_attribute("completed", static_cast<std::int64_t>(t.completed ? 1 : 0));
-  file.set_attribute("load_factor_reached", t.lambda_reached);
-  file.set_attribute("limit_points", static_cast<std::int64_t>(t.limit_points));
-  file.set_attribute("message", t.message);
-  io::write_provenance(file, path_code_meanings());
-}
-
-void run_path(const PathArgs& args) {
-  BeamProblem problem;
-  if (*args.chain_option) {
-    problem.chain = io::read_chain_toml(args.chain_file);
+  if (physical) {
+    const PhysicalCantilever beam = args.physical.parse();
+    request.chain = beam.to_chain(end, tip);
+    request.units = PathUnits::si(beam.length, beam.flexural_rigidity());
+  } else if (from_file) {
+    request.chain = *file_chain;
+    request.units = PathUnits::chain_file();
   } else {
     require_finite_input(args.load_ratio_n, "--n (load ratio n)");
     require_finite_input(args.alpha2, "--alpha2 (P l^2/EI)");
     require_finite_input(args.mu, "--mu (end moment M l/EI)");
     require_finite_input(args.follower, "--follower (follower force F l^2/EI)");
+    BeamProblem problem;
     problem.load_ratio_n = args.load_ratio_n;
     problem.mu = args.mu;
     problem.follower = args.follower;
-    problem.boundary = end_condition_from_string(args.boundary);
-    if (*args.tip_x_option) problem.prescribed.x = args.tip_x;
-    if (*args.tip_y_option) problem.prescribed.y = args.tip_y;
-    if (*args.tip_angle_option) problem.prescribed.theta = args.tip_angle;
+    problem.boundary = end;
+    problem.prescribed = tip;
+    request.chain = problem.to_chain(args.alpha2);
+    request.units = PathUnits::nondimensional();
   }
+  if (controlled) {
+    const double scale =
+        coordinate == TipCoordinate::kTheta || !physical ? 1.0 : 1.0 / request.units.length;
+    request.control = DisplacementControl{coordinate, *target * scale};
+  }
+
+  request.method = args.method == "chain" ? PathMethod::kChain : PathMethod::kShooting;
   require_in_range(args.elements, "--elements (chain algorithm elements N)", 1, 1'000'000);
   require_in_range(args.increments, "--increments (load increments)", 1, 1'000'000);
-  const SegmentChain chain = problem.to_chain(args.alpha2);
+  request.elements = args.elements;
+  request.increments = args.increments;
+  if (*args.max_step_option) {
+    require_in_range(args.max_step, "--max-step (largest arclength step)", 1e-6, 10.0);
+    request.max_step = args.max_step;
+  }
+  if (*args.min_points_option) {
+    require_in_range(args.min_points, "--min-points (points from zero to full load)", 2, 1e6);
+    request.min_points = args.min_points;
+  }
+  request.branch = args.branch;
+  request.branch_side = args.branch_side == "negative" ? -1 : 1;
+  if (*args.shapes_option) {
+    require_in_range(args.shapes, "--shapes (shape points per path point)", 2, 1e6);
+    request.shape_points = args.shapes;
+  }
+  return request;
+}
+
+Json maybe_index(int index) { return index >= 0 ? Json(index) : Json(nullptr); }
+
+Json special_point_json(const PathSpecialPoint& p) {
+  return Json{{"kind", p.kind},
+              {"load_factor", p.load_factor},
+              {"index", maybe_index(p.index)},
+              {"index_after", maybe_index(p.index_after)},
+              {"tip_x", p.tip_x},
+              {"tip_y", p.tip_y},
+              {"tip_theta", p.tip_theta},
+              {"reaction_Fx", p.reaction_Fx},
+              {"reaction_Fy", p.reaction_Fy},
+              {"reaction_M", p.reaction_M},
+              {"tip_Fx", p.tip_Fx},
+              {"tip_Fy", p.tip_Fy},
+              {"tip_M", p.tip_M},
+              {"stage", p.stage},
+              {"branch", p.branch},
+              {"located", p.located},
+              {"switched", p.switched}};
+}
+
+Json special_points_json(const PathTable& t, const char* kind) {
+  Json list = Json::array();
+  for (const PathSpecialPoint* p : t.of_kind(kind)) list.push_back(special_point_json(*p));
+  return list;
+}
+
+void print_text(const PathTable& t, const PathArgs& args) {
+  fmt::print("{} load path: {} points, load factor reached {:.6g}, {} limit point(s){}; {}\n",
+             args.method,
+             t.size(),
+             t.lambda_reached,
+             t.limit_points,
+             t.bifurcation_points > 0
+                 ? fmt::format(", {} bifurcation point(s)", t.bifurcation_points)
+                 : std::string(),
+             t.message);
+  const PathUnits& u = t.units;
+  const bool si = u.system == "SI";
+  const char* m = si ? " m" : "";
+  const char* N = si ? " N" : "";
+  const char* Nm = si ? " N m" : "";
+  for (const PathSpecialPoint& p : t.special_points) {
+    // (+ 0.0 prints a negative zero as 0.)
+    fmt::print(
+        "  {} at load factor {:.10g}{} (path point {}): tip x = {:.8g}{}, y = {:.8g}{}, angle = "
+        "{:.8g} rad; clamp reaction Fx = {:.8g}{}, Fy = {:.8g}{}, M = {:.8g}{}{}\n",
+        p.kind == "limit_point" ? "limit point" : "bifurcation",
+        p.load_factor,
+        p.located ? "" : " (not located)",
+        p.index >= 0 ? p.index : p.index_after,
+        p.tip_x + 0.0,
+        m,
+        p.tip_y + 0.0,
+        m,
+        p.tip_theta + 0.0,
+        p.reaction_Fx + 0.0,
+        N,
+        p.reaction_Fy + 0.0,
+        N,
+        p.reaction_M + 0.0,
+        Nm,
+        p.switched ? "; the path left here onto the other branch" : "");
+  }
+  fmt::print("written to {}\n", args.out);
+}
+
+void run_path(const PathArgs& args) {
+  const PathRequest request = make_request(args);
+  request.validate();
   // Check and open the output first: an unwritable path fails before any solving (exit 2).
   io::check_output_path(args.out);
   std::unique_ptr<io::AtomicHdf5File> output;
@@ -183,30 +303,40 @@ void run_path(const PathArgs& args) {
   } catch (const io::Hdf5Error& e) {
     throw InvalidInput(fmt::format("--out {}: {}", args.out, e.what()));
   }
-  io::Hdf5Group& file = output->root();
   const auto start = std::chrono::steady_clock::now();
-  const PathTable t = args.method == "chain" ? chain_path(chain, args) : shooting_path(chain);
+  const PathTable t = run_load_path(request);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  write_path_file(file, t, args, chain);
+  write_path_file(output->root(), t);
   output->commit();
+  for (const std::string& w : t.warnings) warn(w);
   if (args.json) {
-    print_json(Json{{"out", args.out},
-                    {"method", args.method},
-                    {"points", static_cast<long>(t.load_factor.size())},
-                    {"completed", t.completed},
-                    {"load_factor_reached", t.lambda_reached},
-                    {"limit_points", t.limit_points},
-                    {"message", t.message},
-                    {"seconds", seconds}});
+    Json out{{"out", args.out},
+             {"method", args.method},
+             {"points", static_cast<long>(t.size())},
+             {"completed", t.completed},
+             {"load_factor_reached", t.lambda_reached},
+             {"limit_points", t.limit_points},
+             {"message", t.message},
+             {"seconds", seconds}};
+    out["units"] = t.units.system;
+    out["boundary"] = t.boundary;
+    out["control"] = t.control;
+    out["control_target"] = t.control == "load" ? Json(nullptr) : Json(t.control_target);
+    out["first_limit_load_factor"] =
+        t.first_limit_load_factor ? Json(*t.first_limit_load_factor) : Json(nullptr);
+    out["bifurcation_points"] = t.bifurcation_points;
+    out["bifurcations"] = special_points_json(t, "bifurcation");
+    out["limit_point_list"] = special_points_json(t, "limit_point");
+    out["branch"] = args.branch;
+    out["switched_branch"] = t.switched_branch;
+    out["steps"] = t.steps;
+    out["rejected_steps"] = t.rejected_steps;
+    out["location_corrections"] = t.location_corrections;
+    out["shape_points"] = t.shape_points;
+    print_json(out);
   } else {
-    fmt::print("{} load path: {} points, load factor reached {:.6g}, {} limit point(s); {}\n",
-               args.method,
-               t.load_factor.size(),
-               t.lambda_reached,
-               t.limit_points,
-               t.message);
-    fmt::print("written to {}\n", args.out);
+    print_text(t, args);
   }
   if (!t.completed) {
     throw NoConvergence(fmt::format(
@@ -216,6 +346,14 @@ void run_path(const PathArgs& args) {
         t.message,
         args.out));
   }
+  if (args.branch > 0 && !t.switched_branch) {
+    throw NoConvergence(fmt::format(
+        "--branch {}: the path met {} bifurcation(s) on the way to full load, so there was no "
+        "branch to follow; the path from zero load is in {}",
+        args.branch,
+        t.bifurcation_points,
+        args.out));
+  }
 }
 
 }  // namespace
@@ -223,18 +361,29 @@ void run_path(const PathArgs& args) {
 void register_path_command(CLI::App& app) {
   auto args = std::make_shared<PathArgs>();
   CLI::App* path = app.add_subcommand(
-      "path", "Load path of proportional loading from zero (continuation), written to HDF5");
-  path->add_option("--n", args->load_ratio_n, "Load ratio n: horizontal load nP, n > 0 compressive")
-      ->default_str("0");
-  path->add_option("--alpha2", args->alpha2, "Full load alpha2 = P l^2/EI")->default_str("0");
-  path->add_option("--mu", args->mu, "End moment mu = M l/EI")->default_str("0");
-  path->add_option("--follower", args->follower, "Follower tip force F l^2/EI")->default_str("0");
+      "path",
+      "Equilibrium path from zero load (continuation: limit points and bifurcations located, "
+      "branch switching, displacement control), written to HDF5");
+  args->n_option = path->add_option("--n",
+                                    args->load_ratio_n,
+                                    "Load ratio n: horizontal load nP, n > 0 "
+                                    "compressive")
+                       ->default_str("0");
+  args->alpha2_option =
+      path->add_option("--alpha2", args->alpha2, "Full load alpha2 = P l^2/EI")->default_str("0");
+  args->mu_option = path->add_option("--mu", args->mu, "End moment mu = M l/EI")->default_str("0");
+  args->follower_option =
+      path->add_option("--follower", args->follower, "Follower tip force F l^2/EI")
+          ->default_str("0");
   path->add_option("--boundary", args->boundary, "free | guided | pinned | slider | fixed")
       ->default_str("free")
       ->transform(CLI::IsMember({"free", "guided", "pinned", "slider", "fixed"}, CLI::ignore_case));
-  args->tip_x_option = path->add_option("--tip-x", args->tip_x, "Prescribed tip x/l");
-  args->tip_y_option = path->add_option("--tip-y", args->tip_y, "Prescribed tip y/l");
-  args->tip_angle_option = path->add_option("--tip-angle", args->tip_angle, "Prescribed tip angle");
+  args->tip_x_option = path->add_option(
+      "--tip-x", args->tip_x, "Prescribed tip x (x/l; metres or with a unit for a physical beam)");
+  args->tip_y_option = path->add_option(
+      "--tip-y", args->tip_y, "Prescribed tip y (y/l; metres or with a unit for a physical beam)");
+  args->tip_angle_option =
+      path->add_option("--tip-angle", args->tip_angle, "Prescribed tip angle (rad, or 30deg)");
   path->add_option("--method", args->method, "shooting (arc-length continuation) | chain")
       ->default_str("shooting")
       ->transform(CLI::IsMember({"shooting", "chain"}, CLI::ignore_case));
@@ -243,6 +392,40 @@ void register_path_command(CLI::App& app) {
       ->default_str("10");
   args->chain_option =
       path->add_option("--chain", args->chain_file, "Segment chain from a TOML file");
+  args->max_step_option = path->add_option(
+      "--max-step",
+      args->max_step,
+      "Largest arclength step of the continuation (scaled: about one unit of load factor at the "
+      "start; default 0.5)");
+  args->min_points_option = path->add_option(
+      "--min-points",
+      args->min_points,
+      "At least N points from zero to full load (the load factor changes by at most 1/(N-1) per "
+      "step)");
+  path->add_option("--branch",
+                   args->branch,
+                   "Leave the path at its N-th bifurcation onto the other branch and follow it "
+                   "to full load")
+      ->default_str("0");
+  path->add_option("--branch-side",
+                   args->branch_side,
+                   "positive: the half-branch on which the tip moves to +y (+angle when y "
+                   "cannot move); negative: the other")
+      ->default_str("positive")
+      ->transform(CLI::IsMember({"positive", "negative"}, CLI::ignore_case));
+  path->add_option("--control",
+                   args->control,
+                   "load (proportional loading) | tip-x | tip-y | tip-angle: move that tip "
+                   "coordinate to its --tip-... value as the path parameter (displacement "
+                   "control), the loads applied first")
+      ->default_str("load")
+      ->transform(CLI::IsMember({"load", "tip-x", "tip-y", "tip-angle"}, CLI::ignore_case));
+  args->shapes_option =
+      path->add_option("--shapes",
+                       args->shapes,
+                       "Store the shape (x, y, angle, moment) at K points of every path "
+                       "point");
+  args->physical.add_to(*path, false);
   path->add_option("--out", args->out, "Output HDF5 file (written atomically)")->required();
   path->add_flag("--json", args->json, "Print one JSON summary object on stdout");
   path->callback([args] { run_path(*args); });

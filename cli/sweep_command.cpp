@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -12,6 +13,7 @@
 #include "cli/commands.h"
 #include "cli/slow_progress.h"
 #include "flexure/benchmarks/studies/beam_sweep_grid.h"
+#include "flexure/benchmarks/studies/beam_sweep_solver.h"
 #include "flexure/io/beam_sweep.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/output_path.h"
@@ -148,7 +150,10 @@ void run_sweep_beam(const SweepBeamArgs& args) {
   // Under mpirun the ranks are the parallelism: one thread each unless asked otherwise.
   const int threads = args.threads.value_or(parallel::launched_size() > 1 ? 1 : 2);
   require_in_range(threads, "--threads", 1, 64);
-  const BeamSweepGrid grid = make_grid(args);
+  BeamSweepGrid grid = make_grid(args);
+  // The verdict per point, as `flexure beam` gives it (docs/stability.md; its cost:
+  // docs/performance.md, "Stability verdict"), also at the points started from a neighbour.
+  grid.base.judge_stability = same_name(args.stability, "on");
   const long count = grid.size();
   // Fails (exit 2) for a method not in this build, before any file is touched.
   const BeamMethod method = resolve_beam_method(beam_method_from_string(args.method));
@@ -170,13 +175,10 @@ void run_sweep_beam(const SweepBeamArgs& args) {
     throw InvalidInput(fmt::format("--out: {}", e.what()));
   }
 
-  // The verdict per point, as `flexure beam` gives it (docs/stability.md; its cost:
-  // docs/performance.md, "Stability verdict").
-  const bool judge = same_name(args.stability, "on");
+  // Shooting sweeps start each point from its neighbour where that gives the same answer.
+  const BeamSweepSolver sweep_solver(grid, method);
   const io::BeamIndexSolver solve_point = [&](long index) {
-    BeamProblem problem = grid.at(index);
-    problem.judge_stability = judge;
-    BeamSolution solution = solve_beam(method, problem);
+    BeamSolution solution = sweep_solver.solve(index);
     io::BeamSweepPoint point;
     point.set_converged(solution.converged());
     point.tip = solution.tip;
@@ -195,8 +197,9 @@ void run_sweep_beam(const SweepBeamArgs& args) {
   // at most 2048 points, which amortises the hand-out on fast ones.
   options.chunk = std::clamp(count / (64L * threads), 1L, 2048L);
   // Under mpirun: the elliptic solve and the PRBM take about a microsecond per load, so that a
-  // rank's block holds at least 1024 (a message and a write worth their cost); the other methods
-  // take milliseconds, and their blocks shrink to single loads at the end (docs/scaling.md).
+  // rank's block holds at least 1024 (a message and a write worth their cost), or half a rank's
+  // share in a smaller sweep (every rank gets work); the other methods take milliseconds, and their
+  // blocks shrink to single loads at the end (docs/scaling.md).
   options.min_block = method == BeamMethod::kElliptic || method == BeamMethod::kPrbm ? 1024 : 1;
   // By elapsed time, not by count: silent for the first second, then "sweep beam: k/n (t s)" on a
   // terminal (a shooting sweep of 2000 loads takes about 40 s).
@@ -246,6 +249,10 @@ void run_sweep_beam(const SweepBeamArgs& args) {
     fmt::print("  converged: {} of {}; {:.3f} s\n", table.converged_count, count, seconds);
   }
   if (table.first_failure >= 0) {
+    BeamSolution failed;
+    failed.method = method;
+    failed.methods_tried = {method};
+    failed.alpha2 = std::numeric_limits<double>::quiet_NaN();
     throw NoConvergence(fmt::format(
         "{} of {} points have no converged solution (stored with status 1 and NaN in '{}'); the "
         "first is {}: {}. {}",
@@ -254,7 +261,7 @@ void run_sweep_beam(const SweepBeamArgs& args) {
         args.out,
         describe_point(grid, table.first_failure),
         table.first_failure_message,
-        other_methods_hint(method)));
+        failure_hint(grid.at(table.first_failure), failed)));
   }
 }
 

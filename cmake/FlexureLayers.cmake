@@ -69,7 +69,7 @@ function(flexure_add_layer layer)
 endfunction()
 
 # flexure_header_closure(<out-var> <headers...>): the headers (relative to the source root) and
-# every "flexure/..." header they include, recursively.
+# every "flexure/..." or <flexure/...> header they include, recursively.
 function(flexure_header_closure out)
   set(pending ${ARGN})
   set(seen "")
@@ -80,9 +80,10 @@ function(flexure_header_closure out)
     endif()
     list(APPEND seen ${header})
     set(path ${PROJECT_SOURCE_DIR}/${header})
-    file(STRINGS ${path} lines REGEX "^#include \"flexure/")
+    file(STRINGS ${path} lines REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"]flexure/")
     foreach(line ${lines})
-      string(REGEX REPLACE "^#include \"flexure/([^\"]+)\".*" "\\1" included "${line}")
+      string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]*[<\"]flexure/([^\">]+)[\">].*" "\\1"
+                           included "${line}")
       if(included STREQUAL "version.h" OR included STREQUAL "flexure.h")
         continue()
       endif()

@@ -1,40 +1,90 @@
-# Fails when a source file includes a header of a layer above its own (docs/architecture.md).
+# Fails when a library file includes a header of a folder it may not use (docs/architecture.md).
 # Run at every build (target `layer_check`) and by ctest. Usage:
-#   cmake -DSOURCE_DIR=<repo> -P cmake/check_layers.cmake
+#   cmake -DSOURCE_DIR=<repo> [-DPUBLIC_HEADERS_FILE=<list>] -P cmake/check_layers.cmake
 #
-# Rank of each folder; a file may include "flexure/<folder>/..." only for folders of rank <= its own.
-# io sits beside the layers: it may use the mechanisms (its TOML readers build their types), and
-# only the studies and the tool may use io.
-set(layer_folders
-  "solver/common" 0
-  "solver" 1
-  "elements" 2
-  "mechanisms" 3
-  "io" 4
-  "benchmarks/studies" 5)
+# The folders form a graph: each names the folders it may include directly, and a file may include
+# its own folder and every folder reachable from it. A file belongs to the longest folder of the
+# graph that contains it. Both include styles are read, "flexure/..." and <flexure/...>. Because
+# the graph has no cycle (checked below), two folders that include each other are a violation:
+# no separate cycle finder is needed (scripts/include_graph.py prints cycles for people).
+#
+# The solver's packages are ranked: the models and the closed forms (ode, elliptic, chain_model)
+# below the methods built on them (shooting and chain on chain_model; inverse on elliptic).
+# mechanisms and io are one node each until their sub-folders lose their cycles (issue 28).
+cmake_minimum_required(VERSION 3.22)  # IN_LIST, list(POP_FRONT)
+set(layer_graph
+  "solver/common:"
+  "solver/ode:solver/common"
+  "solver/elliptic:solver/common"
+  "solver/chain_model:solver/common"
+  "solver/shooting:solver/chain_model"
+  "solver/chain:solver/chain_model"
+  "solver/inverse:solver/elliptic"
+  "elements:solver/shooting,solver/chain,solver/inverse,solver/ode"
+  "mechanisms:elements"
+  "io:mechanisms"
+  "benchmarks/studies:io")
+# Headers any file may include: generated, no dependencies.
+set(allowed_everywhere "version.h")
 # Installed (public) headers must not expose these libraries' types.
 set(forbidden_in_public "<CLI/" "<nlohmann/" "<hdf5.h>" "<H5" "<toml++/")
 
-function(rank_of path out)
-  set(best -1)
+# The graph: node list and each node's direct successors.
+set(nodes "")
+foreach(entry ${layer_graph})
+  string(FIND "${entry}" ":" colon)
+  string(SUBSTRING "${entry}" 0 ${colon} node)
+  math(EXPR after "${colon} + 1")
+  string(SUBSTRING "${entry}" ${after} -1 below)
+  string(REPLACE "," ";" below "${below}")
+  list(APPEND nodes ${node})
+  set(direct_${node} ${below})
+endforeach()
+foreach(node ${nodes})
+  foreach(below ${direct_${node}})
+    if(NOT below IN_LIST nodes)
+      message(FATAL_ERROR "layer graph: ${node} lists ${below}, which is not a node")
+    endif()
+  endforeach()
+endforeach()
+
+# reachable_<node>: every folder below `node` (its transitive successors). A node reaching itself
+# is a cycle in the graph, a mistake in the list above.
+foreach(node ${nodes})
+  set(seen "")
+  set(pending ${direct_${node}})
+  while(pending)
+    list(POP_FRONT pending next)
+    if(next STREQUAL node)
+      message(FATAL_ERROR "layer graph: ${node} reaches itself; the graph must have no cycle")
+    endif()
+    if(next IN_LIST seen)
+      continue()
+    endif()
+    list(APPEND seen ${next})
+    list(APPEND pending ${direct_${next}})
+  endwhile()
+  set(reachable_${node} ${seen})
+endforeach()
+
+# The node of a path relative to the source root ("" when none): the longest node that is a
+# prefix of it.
+function(node_of path out)
+  set(best "")
   set(best_len 0)
-  list(LENGTH layer_folders n)
-  math(EXPR last "${n} - 1")
-  foreach(i RANGE 0 ${last} 2)
-    list(GET layer_folders ${i} folder)
-    math(EXPR j "${i} + 1")
-    list(GET layer_folders ${j} rank)
-    string(LENGTH "${folder}" len)
-    string(FIND "${path}" "${folder}/" pos)
+  foreach(node ${nodes})
+    string(LENGTH "${node}" len)
+    string(FIND "${path}" "${node}/" pos)
     if(pos EQUAL 0 AND len GREATER best_len)
-      set(best ${rank})
+      set(best ${node})
       set(best_len ${len})
     endif()
   endforeach()
-  set(${out} ${best} PARENT_SCOPE)
+  set(${out} "${best}" PARENT_SCOPE)
 endfunction()
 
 set(violations "")
+set(include_line "^[ \t]*#[ \t]*include[ \t]*[<\"]")
 file(GLOB_RECURSE sources RELATIVE ${SOURCE_DIR}
   ${SOURCE_DIR}/solver/*.h ${SOURCE_DIR}/solver/*.cpp
   ${SOURCE_DIR}/elements/*.h ${SOURCE_DIR}/elements/*.cpp
@@ -42,20 +92,28 @@ file(GLOB_RECURSE sources RELATIVE ${SOURCE_DIR}
   ${SOURCE_DIR}/io/*.h ${SOURCE_DIR}/io/*.cpp
   ${SOURCE_DIR}/benchmarks/studies/*.h ${SOURCE_DIR}/benchmarks/studies/*.cpp)
 foreach(source ${sources})
-  rank_of(${source} own)
-  file(STRINGS ${SOURCE_DIR}/${source} lines REGEX "^#include \"")
+  node_of(${source} own)
+  if(own STREQUAL "")
+    list(APPEND violations "${source}: in no folder of the layer graph (cmake/check_layers.cmake)")
+    continue()
+  endif()
+  file(STRINGS ${SOURCE_DIR}/${source} lines REGEX "${include_line}")
   foreach(line ${lines})
-    if(line MATCHES "^#include \"flexure/([^\"]+)\"")
+    if(line MATCHES "${include_line}flexure/([^\">]+)[\">]")
       set(included ${CMAKE_MATCH_1})
-      if(included STREQUAL "version.h")
+      if(included IN_LIST allowed_everywhere)
         continue()
       endif()
-      rank_of(${included} theirs)
-      if(theirs GREATER own)
-        list(APPEND violations "${source} (layer ${own}) includes flexure/${included} (layer ${theirs})")
+      node_of(${included} theirs)
+      if(theirs STREQUAL "")
+        list(APPEND violations
+             "${source}: includes flexure/${included}, which is in no library folder")
+      elseif(NOT theirs STREQUAL own AND NOT theirs IN_LIST reachable_${own})
+        list(APPEND violations
+             "${source}: includes flexure/${included} (${theirs}), which ${own} may not use")
       endif()
-    elseif(line MATCHES "^#include \"(cli|tests)/")
-      list(APPEND violations "${source} includes ${line}: the library cannot use the tool or tests")
+    elseif(line MATCHES "${include_line}(cli|tests)/")
+      list(APPEND violations "${source}: ${line}: the library cannot use the tool or tests")
     endif()
   endforeach()
 endforeach()
@@ -80,4 +138,4 @@ if(violations)
   message(FATAL_ERROR "layering violations:\n  ${text}")
 endif()
 list(LENGTH sources count)
-message(STATUS "layers: ${count} library files checked, no upward includes")
+message(STATUS "layers: ${count} library files checked, no include outside the layer graph")

@@ -486,8 +486,16 @@ AtomicHdf5File::AtomicHdf5File(std::string path, Hdf5Access access)
   const std::filesystem::path target(path_);
   const std::string directory =
       target.parent_path().empty() ? std::string(".") : target.parent_path().string();
-  temp_path_ = temporary_path_for(
-      path_, static_cast<long>(::getpid()), counter.fetch_add(1), file_name_limit(directory));
+  if (world == nullptr || world->root()) {
+    // The temporaries of runs killed without their handlers (kill -9 of mpirun takes every rank
+    // down at once): removed when their process is gone (output_path.h).
+    remove_stale_temporaries(path_);
+    temp_path_ = temporary_path_for(path_,
+                                    static_cast<long>(::getpid()),
+                                    counter.fetch_add(1),
+                                    file_name_limit(directory),
+                                    temporary_host_tag());
+  }
   if (world != nullptr) temp_path_ = world->broadcast(temp_path_);
 
   ScopedId access_list(

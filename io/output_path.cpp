@@ -6,13 +6,17 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cctype>
 #include <cerrno>
 #include <climits>
+#include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 #include <vector>
 
 #include "flexure/io/temp_file_cleanup.h"
@@ -21,9 +25,70 @@
 namespace flexure::io {
 namespace {
 
+// The longest host tag in a temporary name (temporary_host_tag).
+constexpr std::size_t kMaxHostTag = 32;
 // The most a temporary name adds to the target's file name: "." + "." + a pid (up to 10 digits)
-// + "-" + a serial (up to 10 digits) + ".tmp".
-constexpr std::size_t kTemporaryOverhead = 1 + 1 + 10 + 1 + 10 + 4;
+// + "-" + a serial (up to 10 digits) + "@" + the host tag + ".tmp".
+constexpr std::size_t kTemporaryOverhead = 1 + 1 + 10 + 1 + 10 + 1 + kMaxHostTag + 4;
+
+bool all_digits(std::string_view text) {
+  return !text.empty() && text.find_first_not_of("0123456789") == std::string_view::npos;
+}
+
+// "PID-SERIAL" -> PID, or -1 when it is not of that form.
+long pid_of(std::string_view pid_serial) {
+  const std::size_t dash = pid_serial.find('-');
+  if (dash == std::string_view::npos || !all_digits(pid_serial.substr(0, dash)) ||
+      !all_digits(pid_serial.substr(dash + 1)) || dash > 10) {
+    return -1;
+  }
+  return std::stol(std::string(pid_serial.substr(0, dash)));
+}
+
+// What /proc (Linux) says of process `pid`: its state letter (field 3: 'Z' a zombie, which has
+// ended but was not yet reaped, as the ranks of a killed mpirun in a container whose init does not
+// reap) and when it started, in seconds since the epoch (NaN when unknown).
+struct ProcessInfo {
+  char state = '?';
+  double started = std::nan("");
+};
+ProcessInfo process_info(long pid) {
+  ProcessInfo info;
+  std::ifstream stat_file(fmt::format("/proc/{}/stat", pid));
+  std::string line;
+  if (!std::getline(stat_file, line)) return info;
+  // Fields counted after the command name, which is in parentheses and may hold spaces: field 3
+  // the state, field 22 starttime in clock ticks after boot.
+  const std::size_t close = line.rfind(')');
+  if (close == std::string::npos) return info;
+  std::istringstream fields(line.substr(close + 1));
+  std::string field;
+  for (int i = 3; i <= 22 && fields >> field; ++i) {
+    if (i == 3) info.state = field.empty() ? '?' : field[0];
+    if (i < 22) continue;
+    std::ifstream proc_stat("/proc/stat");
+    for (std::string row; std::getline(proc_stat, row);) {
+      if (row.rfind("btime ", 0) == 0) {
+        const double boot = std::stod(row.substr(6));
+        info.started = boot + std::stod(field) / static_cast<double>(::sysconf(_SC_CLK_TCK));
+      }
+    }
+  }
+  return info;
+}
+
+// Whether the process that wrote a temporary last modified at `written` (seconds since the epoch)
+// is gone: no process has its number, it has ended (a zombie), or the one that has it started
+// after the file was written (the number was reused). A process of another user still counts as
+// there (EPERM).
+bool writer_gone(long pid, double written) {
+  if (pid <= 0 || pid == static_cast<long>(::getpid())) return false;
+  if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) return true;
+  const ProcessInfo info = process_info(pid);
+  if (info.state == 'Z' || info.state == 'X') return true;  // ended, not yet reaped
+  // A margin of 2 s over the clock-tick and file-time granularity.
+  return std::isfinite(info.started) && info.started > written + 2.0;
+}
 
 std::filesystem::path directory_of(const std::filesystem::path& path) {
   return path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
@@ -71,12 +136,22 @@ long file_name_limit(const std::string& directory) {
   return limit > 0 ? limit : NAME_MAX;
 }
 
-std::string temporary_path_for(const std::string& target,
-                               long pid,
-                               unsigned serial,
-                               long name_max) {
+std::string temporary_host_tag() {
+  char name[256] = {};
+  std::string tag;
+  if (::gethostname(name, sizeof name - 1) == 0) {
+    for (const char* c = name; *c != '\0' && *c != '.' && tag.size() < kMaxHostTag; ++c) {
+      if (std::isalnum(static_cast<unsigned char>(*c)) || *c == '-' || *c == '_') tag += *c;
+    }
+  }
+  return tag.empty() ? std::string("localhost") : tag;
+}
+
+std::string temporary_path_for(
+    const std::string& target, long pid, unsigned serial, long name_max, const std::string& host) {
   const std::filesystem::path path(target);
-  const std::string suffix = fmt::format(".{}-{}.tmp", pid, serial);
+  const std::string suffix = host.empty() ? fmt::format(".{}-{}.tmp", pid, serial)
+                                          : fmt::format(".{}-{}@{}.tmp", pid, serial, host);
   std::string name = path.filename().string();
   const std::size_t room =
       static_cast<std::size_t>(std::max(0L, name_max - 1 - static_cast<long>(suffix.size())));
@@ -87,6 +162,46 @@ std::string temporary_path_for(const std::string& target,
     name.resize(cut);
   }
   return (path.parent_path() / ("." + name + suffix)).string();
+}
+
+std::vector<std::string> remove_stale_temporaries(const std::string& target) {
+  std::vector<std::string> removed;
+  const std::filesystem::path path(target);
+  const std::filesystem::path dir = directory_of(path);
+  const std::string host = temporary_host_tag();
+  // The host-less names of this target, ".NAME.": NAME as temporary_path_for cuts it is at most
+  // the whole name, so a prefix of ".NAME." or of the cut name matches.
+  const std::string name = path.filename().string();
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string file = it->path().filename().string();
+    if (file.size() < 6 || file[0] != '.' || file.compare(file.size() - 4, 4, ".tmp") != 0) {
+      continue;
+    }
+    const std::string_view body(file.data(), file.size() - 4);  // without ".tmp"
+    long pid = -1;
+    const std::size_t at = body.rfind('@');
+    if (at != std::string_view::npos) {
+      // ".NAME.PID-SERIAL@HOST": any target in this directory, but only this host's.
+      if (body.substr(at + 1) != host) continue;
+      const std::size_t dot = body.rfind('.', at);
+      if (dot == std::string_view::npos || dot == 0) continue;
+      pid = pid_of(body.substr(dot + 1, at - dot - 1));
+    } else {
+      // ".NAME.PID-SERIAL": only this target's (the name may have been cut to fit).
+      const std::size_t dot = body.rfind('.');
+      if (dot == std::string_view::npos || dot < 2) continue;
+      const std::string_view stem = body.substr(1, dot - 1);
+      if (stem.empty() || name.compare(0, stem.size(), stem) != 0) continue;
+      pid = pid_of(body.substr(dot + 1));
+    }
+    if (pid <= 0) continue;
+    struct stat info {};
+    if (::lstat(it->path().c_str(), &info) != 0 || !S_ISREG(info.st_mode)) continue;
+    if (!writer_gone(pid, static_cast<double>(info.st_mtime))) continue;
+    if (::unlink(it->path().c_str()) == 0) removed.push_back(it->path().string());
+  }
+  return removed;
 }
 
 std::string output_path_problem(const std::string& path_text) {
@@ -170,8 +285,13 @@ void write_text_file(const std::string& path, const std::string& text, const std
   const std::filesystem::path target(path);
   const std::string directory =
       target.parent_path().empty() ? std::string(".") : target.parent_path().string();
-  const std::string temp = temporary_path_for(
-      path, static_cast<long>(::getpid()), counter.fetch_add(1), file_name_limit(directory));
+  // Temporaries of killed runs (kill -9) that no handler could remove.
+  remove_stale_temporaries(path);
+  const std::string temp = temporary_path_for(path,
+                                              static_cast<long>(::getpid()),
+                                              counter.fetch_add(1),
+                                              file_name_limit(directory),
+                                              temporary_host_tag());
   const int slot = register_temp_file(temp);
   const auto fail = [&](const std::string& what) {
     const std::string reason = std::strerror(errno);

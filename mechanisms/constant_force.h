@@ -18,9 +18,9 @@ struct ConstantForceMeasure {
   double max_force = 0.0;     // largest sampled force (signed), N
 };
 
-// Rounding threshold of "zero": |F|_min <= 1e-9 |F|_max, as `flexure cfm` flags force_vanishes
-// (cli/cfm_command.cpp): below it the smallest force is the rounding noise of a closed form that
-// is exactly zero there (class 1A at its toggle position).
+// Rounding threshold of "zero": |F|_min <= 1e-9 |F|_max, the one threshold of the code base (also
+// CfmResult::force_vanishes, cfm/cfm_model.h): below it the smallest force is the rounding noise
+// of a closed form that is exactly zero there (class 1A at its toggle position).
 inline constexpr double kForceVanishesRelative = 1e-9;
 
 // Throws InvalidInput for an empty curve.

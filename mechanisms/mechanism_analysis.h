@@ -20,6 +20,8 @@
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/prbm_validity.h"
+#include "flexure/mechanisms/mechanism_stability.h"
 
 namespace flexure::mechanism {
 
@@ -27,8 +29,11 @@ struct AnalysisOptions {
   int points = 50;           // stroke points (Delta x = k stroke/points, k = 1..points)
   bool exact = true;         // solve the exact model where one exists
   bool exact_stress = true;  // stresses of each exact point (one integration of its solution)
-  // Called after each exact stroke point and each exact stress evaluation: (done, total) over
-  // both passes (total = 2 points with stresses, else points). Empty: no calls.
+  // Stability verdicts of every stroke point under displacement and force control of the slider,
+  // PRBM and (when it ran) exact (mechanism_stability.h, docs/stability.md "Mechanisms").
+  bool stability = true;
+  // Called after each exact stroke point, each exact stress evaluation and each exact stability
+  // verdict: (done, total) over the passes (total = points times the passes). Empty: no calls.
   StrokeProgress progress;
 
   // Throws InvalidInput naming the first field outside its range.
@@ -61,11 +66,20 @@ struct MechanismAnalysis {
   // First Delta x where the PRBM leaves its validity range (see above); empty if it never does.
   std::optional<double> prbm_validity_limit;
   std::string prbm_validity_reason;
+  // The validity at every stroke point: what is outside Table 5.1 and the PRBM's force error
+  // there against the exact model (prbm_validity.h).
+  PrbmStrokeValidity prbm_validity;
   // Governing stress: the larger of the PRBM and (if computed) exact values, per pivot.
   std::array<double, 3> max_stress{};
   double max_stress_all = 0.0;
   double safety_factor = 0.0;        // yield_strength/max_stress_all
   std::vector<int> yielding_pivots;  // pivots whose max stress reaches the yield strength
+  // Stability of every stroke point (when AnalysisOptions::stability): PRBM always, exact when
+  // has_exact_stability (the exact model ran and converged). A point whose verdict could not be
+  // computed is kNotChecked with the reason.
+  ModelStability stability_prbm;
+  ModelStability stability_exact;
+  bool has_exact_stability = false;
   // What the slider forces prbm.force, prbm.mean_force, force_exact and mean_force_exact are the
   // force of: one half as analyze_mechanism computes them; report_forces_of() rescales them. The
   // solver's own points (exact), pin forces and stresses always belong to one half.

@@ -51,11 +51,23 @@ VirtualWorkState virtual_work_state(double r2,
   const double denom = std::sin(s.theta2 - s.theta3);
   const double dtheta2 = std::cos(s.theta3) / (r2 * denom);
   const double dtheta3 = -std::cos(s.theta2) / (r3 * denom);
+  // Second derivatives: with D = sin(theta2 - theta3), D' = cos(theta2 - theta3) (theta2' -
+  // theta3'), the quotient rule on the rates above gives
+  //   theta2'' = (-sin theta3 theta3' D - cos theta3 D') / (r2 D^2),
+  //   theta3'' = ( sin theta2 theta2' D + cos theta2 D') / (r3 D^2).
+  const double ddenom = std::cos(s.theta2 - s.theta3) * (dtheta2 - dtheta3);
+  const double d2theta2 =
+      (-std::sin(s.theta3) * dtheta3 * denom - std::cos(s.theta3) * ddenom) / (r2 * denom * denom);
+  const double d2theta3 =
+      (std::sin(s.theta2) * dtheta2 * denom + std::cos(s.theta2) * ddenom) / (r3 * denom * denom);
   s.psi = {s.theta2, s.theta2 - s.theta3, -s.theta3};
   s.dpsi = {dtheta2, dtheta2 - dtheta3, -dtheta3};
+  s.d2psi = {d2theta2, d2theta2 - d2theta3, -d2theta3};
   for (int i = 0; i < 3; ++i) {
     s.force += k[i] * s.psi[i] * s.dpsi[i];
     s.energy += 0.5 * k[i] * s.psi[i] * s.psi[i];
+    s.unloaded_stiffness += k[i] * s.dpsi[i] * s.dpsi[i];
+    s.stiffness += k[i] * (s.dpsi[i] * s.dpsi[i] + s.psi[i] * s.d2psi[i]);
   }
   return s;
 }

@@ -1,6 +1,7 @@
 #pragma once
 // Slider force of a PRBM slider-crank with ANY set of torsional springs, by the principle of
-// virtual work written directly (Howell §5.x/§10.1.1; the energy V = sum k_i psi_i^2/2):
+// virtual work written directly (Howell eq. 6.50, §10.1.1; the energy V = sum k_i psi_i^2/2,
+// eq. 11.6):
 //
 //   F = dV/dDelta x = sum_i k_i psi_i dpsi_i/dDelta x,
 //
@@ -25,6 +26,16 @@ struct VirtualWorkState {
   std::array<double, 3> dpsi{};  // d psi_i / d Delta x, rad/m
   double force = 0.0;   // slider input force, N (positive pushes the slider towards the ground)
   double energy = 0.0;  // sum k_i psi_i^2 / 2, J
+  // The second derivative of the energy along the stroke, the slider's stiffness under a dead load
+  // (docs/stability.md "Mechanisms"):
+  //   d^2V/dDelta x^2 = dF/dDelta x = sum_i k_i (psi_i'^2 + psi_i psi_i''),   N/m,
+  // and its part without the springs' preload, the stiffness the springs would give the slider at
+  // this pose if they were unstressed (the PRBM's B, as int EI eta'^2 is the chain's):
+  //   sum_i k_i psi_i'^2 > 0,   N/m.
+  // psi_i'' from differentiating the loop-closure rates once more (prbm_virtual_work.cpp).
+  double stiffness = 0.0;
+  double unloaded_stiffness = 0.0;
+  std::array<double, 3> d2psi{};  // d^2 psi_i / d Delta x^2, rad/m^2
 };
 
 // State at slider displacement 0 < Delta x <= the toggle stroke of (r2, r3); k = (k1, k2, k3) in

@@ -345,6 +345,7 @@ struct Columns {
         stability_margin(shape, kNaN),
         Theta(shape, kNaN, prbm),
         theta_max(shape, kNaN, prbm),
+        expected_error(shape, kNaN),
         iterations(shape, 0),
         inflection_points(shape, 0),
         limit_points(shape, 0),
@@ -366,7 +367,7 @@ struct Columns {
         validity_source(prbm ? count : 0, workers) {}
   NumpyColumn<double> n, alpha2, mu, a_over_l, b_over_l, theta0, root_moment, target_residual,
       first_limit_load_factor, reaction_Fx, reaction_Fy, reaction_M, stability_index,
-      stability_margin, Theta, theta_max;
+      stability_margin, Theta, theta_max, expected_error;
   // stability_index is a float column: NaN where not judged, the scalar call's None.
   NumpyColumn<long long> iterations, inflection_points, limit_points, elements, increments, status;
   NumpyColumn<bool> within_validity, converged;
@@ -419,6 +420,7 @@ void solve_one(const cli::BeamCommandProblem& base,
     const BeamSolution s = solve_beam(base.method, problem);
     c.method.set(i, worker, to_string(s.method));
     c.method_reason.set(i, worker, s.method_reason);
+    c.expected_error.data[i] = finite_or_nan(s.expected_error);
     c.iterations.data[i] = s.iterations;
     if (!s.converged() || !std::isfinite(s.alpha2) || !std::isfinite(s.tip.a_over_l) ||
         !std::isfinite(s.tip.b_over_l) || !std::isfinite(s.tip.theta0)) {
@@ -451,7 +453,8 @@ void solve_one(const cli::BeamCommandProblem& base,
     c.stability_message.set(i, worker, s.stability.message);
     c.stable_search.set(i, worker, s.stable_search);
     std::string joined;
-    for (const std::string& w : cli::beam_warnings(s)) joined += (joined.empty() ? "" : "\n") + w;
+    for (const std::string& w : cli::beam_warnings(problem, s))
+      joined += (joined.empty() ? "" : "\n") + w;
     c.warnings.set(i, worker, joined);
     if (s.stability.judged()) {
       c.stability_index.data[i] = s.stability.index;
@@ -543,6 +546,7 @@ py::dict beam_many(const std::vector<std::string>& args,
   py::dict out;
   out["method"] = c.method.to_numpy(shape);
   out["method_reason"] = c.method_reason.to_numpy(shape);
+  out["expected_error"] = c.expected_error.array;
   out["n"] = c.n.array;
   out["alpha2"] = c.alpha2.array;
   out["mu"] = c.mu.array;

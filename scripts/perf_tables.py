@@ -17,7 +17,10 @@ reference benchmark (REFERENCES below), each row's CPU-time ratio to it measured
 The `startup` table times whole processes: `flexure beam --alpha2 2 --json` against `true` (an
 empty process), the median of alternating runs; the `python_beam` table the vectorised
 flexure.beam (Debian's /usr/bin/python3, the module in BUILD/python) against `flexure sweep beam`
-on the same loads. No number in a generated table is typed by hand.
+on the same loads; the `edges` table the commands of issue 27 as a user runs them (a shooting
+sweep, the guided chain, the chain's element count), with the GSL + Brent yardstick of
+shooting_sweep_bench measured in the same run, and the same commands of an older build given by
+--baseline BUILD (the before column). No number in a generated table is typed by hand.
 Standard library only; the raw JSON of each program is kept with --keep DIR.
 """
 import argparse
@@ -45,17 +48,20 @@ REFERENCES = {
     "stability_bench": "BM_EllipticSolve",
     # The elliptic solve of the same load without the verdict: what the verdict adds to an answer.
     "beam_stability_bench": "BM_SolveBeam/load:0/verdict:0",
+    # Issue 27: the shooting sweep per point against the GSL + Brent yardstick.
+    "shooting_sweep_bench": "BM_GslBrentReference",
 }
 
 
-def run_program(build, name, repetitions, keep):
+def run_program(build, name, repetitions, keep, only=None):
     exe = os.path.join(build, "benchmarks", name)
     if not os.access(exe, os.X_OK):
         sys.exit(f"perf_tables.py: {exe} is not built (cmake --build {build} --target {name})")
-    out = subprocess.run([exe, f"--benchmark_repetitions={repetitions}",
-                          "--benchmark_report_aggregates_only=true",
-                          "--benchmark_format=json"],
-                         capture_output=True, text=True, check=True).stdout
+    argv = [exe, f"--benchmark_repetitions={repetitions}",
+            "--benchmark_report_aggregates_only=true", "--benchmark_format=json"]
+    if only:
+        argv.append(f"--benchmark_filter={only}")
+    out = subprocess.run(argv, capture_output=True, text=True, check=True).stdout
     if keep:
         os.makedirs(keep, exist_ok=True)
         with open(os.path.join(keep, name + ".json"), "w", encoding="utf-8") as f:
@@ -148,6 +154,17 @@ print(elapsed)
 """
 
 
+PYTHON_CHAIN = """
+import sys, time, numpy, flexure
+start = time.process_time()
+r = flexure.beam(alpha2=numpy.full(400, 10.0), method="chain", elements=int(sys.argv[1]),
+                 threads=1)
+elapsed = time.process_time() - start
+assert r["converged"].all()
+print(elapsed / 400)
+"""
+
+
 def python_beam_table(build, runs, points=1_000_000):
     """The vectorised flexure.beam against `flexure sweep beam` on the same 10^6 loads (issue 15:
     within 1.5x per point): the solve time each reports, alternating, one pair per run."""
@@ -182,6 +199,131 @@ def python_beam_table(build, runs, points=1_000_000):
     return "\n".join(lines)
 
 
+def child_cpu():
+    """CPU seconds (user + system) of the finished child processes so far."""
+    import resource
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
+def run_timed(argv):
+    """(wall seconds, CPU seconds, exit code, stdout) of one whole process. The CPU time is the
+    task clock of `perf stat` where perf is installed (nanoseconds; getrusage's child times move in
+    scheduler ticks, too coarse for the 0.1 ms differences of the element counts), else
+    getrusage."""
+    import shutil
+    import tempfile
+    perf = shutil.which("perf")
+    with tempfile.NamedTemporaryFile(suffix=".perf") as stat:
+        command = ([perf, "stat", "-x,", "-e", "task-clock", "-o", stat.name] + argv
+                   if perf else argv)
+        cpu0, start = child_cpu(), time.perf_counter()
+        p = subprocess.run(command, capture_output=True, text=True)
+        wall, cpu = time.perf_counter() - start, child_cpu() - cpu0
+        if perf:
+            for line in open(stat.name, encoding="utf-8"):
+                fields = line.strip().split(",")
+                if len(fields) > 2 and fields[2].startswith("task-clock") and fields[1] == "msec":
+                    cpu = float(fields[0]) * 1e-3
+    return wall, cpu, p.returncode, p.stdout
+
+
+def flexure_version(build):
+    out = subprocess.run([os.path.join(build, "flexure"), "--version"], capture_output=True,
+                         text=True).stdout.strip()
+    return out.split("(")[-1].rstrip(")") if "(" in out else out
+
+
+SWEEP = ["sweep", "beam", "--method", "shooting", "--n", "0", "--alpha2"]
+GUIDED = [("3.662974688762594", "12.458088565233949", "-0.42576506449933227"),
+          ("1.656626959124937", "8.95598052442481", "0.06897238676232442"),
+          ("4.132632167956947", "14.966530943697453", "0.456109405479435")]
+
+
+def sweep_per_point(build, tmp, runs, threads):
+    """CPU per point of the issue's sweep (500 points less a 1-point sweep of the same command, so
+    that start-up and the file cancel) and the wall time per point it reports itself."""
+    flexure = os.path.join(build, "flexure")
+    cpu, wall = [], []
+    for _ in range(runs):
+        _, full, rc, out = run_timed([flexure] + SWEEP + ["0.5:10:500", "--threads", str(threads),
+                                                          "--out", os.path.join(tmp, "s.h5"),
+                                                          "--json"])
+        _, one, rc1, _ = run_timed([flexure] + SWEEP + ["0.5:10:1", "--threads", "1", "--out",
+                                                        os.path.join(tmp, "1.h5")])
+        if rc or rc1:
+            sys.exit(f"perf_tables.py: the sweep failed in {build}")
+        cpu.append((full - one) / 499)
+        wall.append(json.loads(out)["seconds"] / 500)
+    return statistics.median(cpu), statistics.median(wall)
+
+
+def command_time(build, args, runs):
+    """Median wall and CPU time of a whole `flexure` process, its exit code (of the last run)."""
+    walls, cpus, rc = [], [], 0
+    for _ in range(runs):
+        wall, cpu, rc, _ = run_timed([os.path.join(build, "flexure")] + args)
+        walls.append(wall)
+        cpus.append(cpu)
+    return statistics.median(walls), statistics.median(cpus), rc
+
+
+def edges_table(build, baseline, runs, baseline_label=None):
+    """Issue 27's commands, this build against --baseline (if given), one run of this script."""
+    import tempfile
+    report = run_program(build, "shooting_sweep_bench", 5, None, "BM_GslBrentReference")
+    cpu, _, unit = medians(report)["BM_GslBrentReference"]
+    reference = to_seconds(cpu, unit)
+    builds = [("this build", build)] + ([("baseline", baseline)] if baseline else [])
+    versions = {label: flexure_version(b) for label, b in builds}
+    if baseline and baseline_label:
+        versions["baseline"] = baseline_label
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for threads in (1, 2):
+            cells = []
+            for label, b in builds:
+                cpu, wall = sweep_per_point(b, tmp, runs, threads)
+                cells.append(f"{pretty(cpu)} CPU, {pretty(wall)} wall ({cpu / reference:.3g}x)"
+                             if threads == 1 else f"{pretty(wall)} wall")
+            rows.append((f"`flexure sweep beam --method shooting --n 0 --alpha2 0.5:10:500 "
+                         f"--threads {threads}`, per point", cells))
+        for n, alpha2, angle in GUIDED:
+            args = ["beam", "--method", "chain", "--boundary", "guided", "--n", n, "--alpha2",
+                    alpha2, "--tip-angle", angle, "--json"]
+            cells = []
+            for label, b in builds:
+                # The baseline takes seconds per run: once.
+                wall, cpu, rc = command_time(b, args, runs if label == "this build" else 1)
+                cells.append(f"{pretty(wall)} wall, {pretty(cpu)} CPU, exit {rc}")
+            rows.append((f"`flexure beam --method chain --boundary guided --n {n} --alpha2 "
+                         f"{alpha2} --tip-angle {angle}`", cells))
+        # The element count: a 0.1 ms difference, below the noise of a whole 4 ms process on a
+        # shared machine, so the loads go through the Python module's vectorised flexure.beam (a
+        # path a user runs, the same solve_beam) and its CPU time per load is taken.
+        for elements in (10, 20, 30, 40):
+            cells = []
+            for label, b in builds:
+                env = dict(os.environ, PYTHONPATH=os.path.join(b, "python"))
+                times = [float(subprocess.run(
+                    ["/usr/bin/python3", "-c", PYTHON_CHAIN, str(elements)], capture_output=True,
+                    text=True, check=True, env=env).stdout) for _ in range(runs)]
+                cells.append(f"{pretty(statistics.median(times))} CPU per load")
+            rows.append((f"`flexure.beam(alpha2=numpy.full(400, 10.0), method=\"chain\", "
+                         f"elements={elements}, threads=1)` (= `flexure beam --method chain "
+                         f"--alpha2 10 --elements {elements}`)", cells))
+    header = "| command | " + " | ".join(f"{label} ({versions[label]})" for label, _ in builds)
+    lines = [f"Whole processes, medians of {runs} runs (the baseline's guided chain: one run; the "
+             f"element counts: the CPU time per load of 400 loads in one call of the Python "
+             f"module); CPU is the task clock of `perf stat`; "
+             f"x = CPU per point / `BM_GslBrentReference` ({pretty(reference)}, "
+             f"shooting_sweep_bench in the same run):", "",
+             header + " |", "|---|" + "---|" * len(builds)]
+    for command, cells in rows:
+        lines.append(f"| {command} | " + " | ".join(cells) + " |")
+    return "\n".join(lines)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--build", default=os.path.join(ROOT, "build"))
@@ -191,6 +333,11 @@ def main():
     parser.add_argument("--keep", help="save each program's JSON here")
     parser.add_argument("--startup-runs", type=int, default=41)
     parser.add_argument("--python-runs", type=int, default=5)
+    parser.add_argument("--baseline", help="an older build directory: the before column of the "
+                        "edges table")
+    parser.add_argument("--baseline-label", help="how the edges table names the baseline (default: "
+                        "its `flexure --version` commit)")
+    parser.add_argument("--edge-runs", type=int, default=5)
     args = parser.parse_args()
     def render(name):
         if args.only and name not in args.only:
@@ -199,6 +346,8 @@ def main():
             table = startup_table(args.build, args.startup_runs)
         elif name == "python_beam":
             table = python_beam_table(args.build, args.python_runs)
+        elif name == "edges":
+            table = edges_table(args.build, args.baseline, args.edge_runs, args.baseline_label)
         elif args.from_json:
             with open(os.path.join(args.from_json, name + ".json"), encoding="utf-8") as f:
                 table = benchmark_table(name, json.load(f))

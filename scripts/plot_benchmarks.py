@@ -274,7 +274,7 @@ def print_table(f):
         print("|---|---|---|---|")
         for method in f[problem]:
             conv, total, worst, t = summary(f[problem][method])
-            w = "-" if not math.isfinite(worst) else f"{worst:.1e}"
+            w = "n/a" if not math.isfinite(worst) else f"{worst:.1e}"
             print(f"| {method} | {conv}/{total} | {w} | {t:.2e} |")
 
 

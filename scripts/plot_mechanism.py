@@ -19,6 +19,7 @@ Runs under Debian's /usr/bin/python3 with the apt packages python3-matplotlib an
 mechanism stroke; the image is written whole or not at all (temporary file + rename).
 """
 import argparse
+import math
 import os
 import sys
 import tempfile
@@ -84,6 +85,12 @@ def read_stroke(path):
             "sign_exact": f.attrs.get("force_changes_sign_exact"),
             "vanish_exact": f.attrs.get("force_vanishes_exact"),
             "validity": f.attrs.get("prbm_validity_limit"),
+            # What is outside Table 5.1 there and the PRBM's force error (absent in older files).
+            "validity_quantity": text(f.attrs.get("prbm_validity_quantity", "")),
+            "validity_value": f.attrs.get("prbm_validity_value"),
+            "validity_error": f.attrs.get("prbm_force_error_at_validity_limit"),
+            "within_validity": (f["prbm_within_validity"][()]
+                                if "prbm_within_validity" in f else None),
             # Absent in files written before the design was stored.
             "yield": (float(f["design/yield_strength"][()])
                       if "design/yield_strength" in f else None),
@@ -169,9 +176,29 @@ def main(argv):
         sa.legend(fontsize=7, ncol=2)
         sa.grid(True, alpha=0.3)
     if d["validity"] is not None:
-        for a in axes:
-            a.axvline(float(d["validity"]) * length_scale, color="C3", ls="--", lw=1)
-        axes[0].plot([], [], color="C3", ls="--", label="PRBM validity limit (Table 5.1)")
+        label = "PRBM outside Table 5.1"
+        names = {"load_ratio_n": "n", "load_angle_phi": "phi [deg]", "Theta": "Theta [deg]"}
+        if d["validity_quantity"] in names and d["validity_value"] is not None:
+            label += f" ({names[d['validity_quantity']]} = {float(d['validity_value']):.3g} at the first"
+            error = d["validity_error"]
+            if error is not None and math.isfinite(float(error)):
+                label += f"; PRBM force error there {100 * float(error):.1f} %"
+            label += ")"
+        inside = d["within_validity"]
+        if inside is not None and len(inside) == len(dx):
+            # The points outside, each shaded out to half-way to its neighbours.
+            edges = [dx[0] - 0.5 * (dx[1] - dx[0]) if len(dx) > 1 else dx[0]]
+            edges += [0.5 * (a + b) for a, b in zip(dx[:-1], dx[1:])]
+            edges += [dx[-1] + 0.5 * (dx[-1] - dx[-2]) if len(dx) > 1 else dx[-1]]
+            for a in axes:
+                for k, flag in enumerate(inside):
+                    if int(flag) == 0:
+                        a.axvspan(edges[k], edges[k + 1], color="C3", alpha=0.12, lw=0)
+            axes[0].fill_between([], [], color="C3", alpha=0.12, label=label)
+        else:  # files without the per-point flags: the first point outside
+            for a in axes:
+                a.axvline(float(d["validity"]) * length_scale, color="C3", ls="--", lw=1)
+            axes[0].plot([], [], color="C3", ls="--", label=label)
     axes[0].legend(fontsize=8)
     axes[-1].set_xlabel(f"slider displacement Delta x ({length_unit})")
 

@@ -77,6 +77,66 @@ BENCHMARK(BM_ChainCorrected)
     ->Args({400, 1, 1})
     ->ArgNames({"N", "inc", "coarse"})
     ->Unit(benchmark::kMicrosecond);
+// The cost as the requested N grows past what the load needs (alpha2 = 10 needs about 23 elements
+// by the self-check of 0.2 rad per element): N = 10 and 20 are refined to 40. predict:1 predicts
+// the refinement from the coarse chain (the default), predict:0 solves, fails the check and solves
+// again on 2N (and 4N), as before issue 27.
+void BM_ChainElements(benchmark::State& state) {
+  ChainAlgorithmSolver::Options o;
+  o.elements = static_cast<int>(state.range(0));
+  o.predict_elements = state.range(1) != 0;
+  const ChainAlgorithmSolver solver(o);
+  const EndLoad load = EndLoad::howell(0.0, 10.0);
+  int elements = 0;
+  for (auto _ : state) {
+    const flexure::ChainResult r = solver.solve(load);
+    if (!r.converged()) state.SkipWithError(r.message.c_str());
+    elements = r.elements;
+    benchmark::DoNotOptimize(r.tip.theta);
+  }
+  state.counters["elements"] = elements;
+}
+BENCHMARK(BM_ChainElements)
+    ->ArgsProduct({{10, 20, 30, 40, 80}, {1, 0}})
+    ->ArgNames({"N", "predict"})
+    ->Unit(benchmark::kMicrosecond);
+
+// A guided end under compression, the loads of issue 27 (N = 100): case 0 took 14.6 s (1.4 million
+// passes), cases 1 and 2 gave up after 8-10 s. constrained:1 is the default (the passes meet the
+// tip angle as they go, chain_constrained.h); constrained:0, the shooting method as printed, is
+// timed on case 0 only (once, for the ratio).
+void BM_ChainGuided(benchmark::State& state) {
+  static const double kLoads[3][3] = {{3.662974688762594, 12.458088565233949, -0.42576506449933227},
+                                      {1.656626959124937, 8.95598052442481, 0.06897238676232442},
+                                      {4.132632167956947, 14.966530943697453, 0.456109405479435}};
+  const double* l = kLoads[state.range(0)];
+  flexure::SegmentChain chain = flexure::uniform_cantilever(EndLoad{-l[0] * l[1], l[1], 0.0});
+  chain.end = flexure::EndCondition::kGuided;
+  chain.prescribed.theta = l[2];
+  ChainAlgorithmSolver::Options o;
+  o.constrained_passes = state.range(1) != 0;
+  const ChainAlgorithmSolver solver(o);
+  int passes = 0;
+  for (auto _ : state) {
+    const flexure::ChainResult r = solver.solve(chain);
+    if (!r.converged()) state.SkipWithError(r.message.c_str());
+    passes = r.iterations;
+    benchmark::DoNotOptimize(r.tip.theta);
+  }
+  state.counters["passes"] = passes;
+}
+BENCHMARK(BM_ChainGuided)
+    ->Args({0, 1})
+    ->Args({1, 1})
+    ->Args({2, 1})
+    ->ArgNames({"case", "constrained"})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ChainGuided)
+    ->Args({0, 0})
+    ->ArgNames({"case", "constrained"})
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+
 BENCHMARK(BM_ChainCorrectedOneStepUnguarded)
     ->Args({100, 1, 0})
     ->ArgNames({"N", "inc", "coarse"})

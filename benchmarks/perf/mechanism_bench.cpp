@@ -17,6 +17,7 @@
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/mechanism_stability.h"
 #include "flexure/solver/common/gsl_guard.h"
 
 namespace {
@@ -80,6 +81,44 @@ BENCHMARK_CAPTURE(BM_ExactStresses50, lssm_solution, "3A-lssm", false)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_ExactStresses50, lssm_sampled801, "3A-lssm", true)
     ->Unit(benchmark::kMillisecond);
+
+// Stability verdicts of every point of a 50-point stroke under both controls
+// (mechanisms/mechanism_stability.h): the PRBM's (closed form) and the exact model's (the shape
+// integrated again at the stations, the second variation of the chain or of the mechanism's path).
+void BM_PrbmStability50(benchmark::State& state, const char* name) {
+  MechanismDesign d = find_builtin_mechanism(name);
+  d.finalise();
+  const std::vector<double> dx = stroke_displacements(d, 50);
+  for (auto _ : state) {
+    double sum = 0.0;
+    for (double x : dx) sum += prbm_point_stability(d, x).force_control.margin;
+    benchmark::DoNotOptimize(sum);
+  }
+}
+BENCHMARK_CAPTURE(BM_PrbmStability50, lpp, "1A-lpp");
+void BM_ExactStability50(benchmark::State& state, const char* name) {
+  flexure::disable_gsl_abort();
+  MechanismDesign d = find_builtin_mechanism(name);
+  d.finalise();
+  const ExactStrokeResult stroke = exact_stroke(d, stroke_displacements(d, 50));
+  if (!stroke.converged()) state.SkipWithError(stroke.message.c_str());
+  for (auto _ : state) {
+    double sum = 0.0;
+    for (const ExactPoint& p : stroke.points) {
+      const PointStability v = exact_point_stability(d, p);
+      sum += v.displacement_control.margin + v.force_control.margin;
+    }
+    benchmark::DoNotOptimize(sum);
+  }
+}
+// One per topology: two-force coupler, pinned ends, serial chain (pin / flexure at the slider),
+// pinned middle; and 3A-lssm.
+BENCHMARK_CAPTURE(BM_ExactStability50, lpp, "1A-lpp")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactStability50, psp, "1B-psp")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactStability50, ssp, "2A-ssp")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactStability50, sss, "3A-sss")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactStability50, lps, "2B-lps")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactStability50, lssm, "3A-lssm")->Unit(benchmark::kMillisecond);
 
 // Chain-algorithm second opinion on the last stroke point (corrected variant, N = 100, as in
 // `flexure mechanism validate`; docs/mechanisms.md "Chain algorithm check").

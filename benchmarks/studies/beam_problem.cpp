@@ -100,20 +100,23 @@ void seek_stable(const BeamProblem& problem,
       stability_name(solution.stability.kind),
       limit_points_note(solution.limit_points, solution.first_limit_load_factor));
   solution.inflection_points = count_curvature_sign_changes(r.shape);
+  // In the chain's units: the numerical methods scale it per unit length afterwards
+  // (finish_numerical); the elliptic method's chain has length 1.
   solution.shape.clear();
-  if (shape_points > 0) {
-    solution.shape = resample(r.shape, shape_points);
-    for (ShapePoint& p : solution.shape) {
-      p.s /= length;
-      p.x /= length;
-      p.y /= length;
-    }
-  }
+  if (shape_points > 0) solution.shape = resample(r.shape, shape_points);
   solution.stable_search = fmt::format(
       "{}; {}; the result is {}", before, found.message, verdict_words(found.stability));
   solution.message = fmt::format("a stable equilibrium: {}", found.message);
   solution.stability = found.stability;
   solution.off_path = true;
+}
+
+// An answer left unjudged because the verdict is off says so.
+void label_unjudged(const BeamProblem& problem, BeamSolution& solution) {
+  if (!problem.judge_stability && !problem.stable &&
+      solution.stability.kind == StabilityKind::kNotChecked) {
+    solution.stability = not_checked_stability("the verdict was switched off (--stability off)");
+  }
 }
 
 // Whether BeamProblem::stable asks for a search from this answer.
@@ -302,105 +305,149 @@ void describe_chain_loads(const SegmentChain& chain, BeamSolution& s) {
       s.reactions.Fx * force_scale, s.reactions.Fy * force_scale, s.reactions.M * moment_scale};
 }
 
+// What every numerical forward solve ends with: a chain's loads in its own units, and the shape
+// per unit length of the chain (Howell's a/l, b/l are).
+void finish_numerical(const BeamProblem& problem, const SegmentChain& chain, BeamSolution& s) {
+  if (problem.chain) describe_chain_loads(chain, s);
+  const double length = chain.total_length();
+  for (ShapePoint& p : s.shape) {
+    p.s /= length;
+    p.x /= length;
+    p.y /= length;
+  }
+}
+
+}  // namespace
+
+ShootingSolver::Options beam_shooting_options(const BeamProblem& problem, int shape_points) {
+  ShootingSolver::Options options;
+  options.shape_points = shape_points;
+  // The inflection points from the moment along the integration, not from a sampled shape (a
+  // shape of 401 points cost about as much as the solve, docs/performance.md).
+  options.count_inflections = true;
+  options.backend = problem.integrator;
+  return options;
+}
+
+namespace {
+
+// beam_solution_from_shooting; `final_answer` false for the forward solves of an inverse
+// problem's search, which are not judged (only the answer is).
+BeamSolution shooting_solution(const BeamProblem& problem,
+                               double alpha2,
+                               const ShootingResult& r,
+                               int shape_points,
+                               bool final_answer) {
+  const SegmentChain chain = problem.to_chain(alpha2);
+  BeamSolution solution;
+  solution.method = BeamMethod::kShooting;
+  solution.alpha2 = alpha2;
+  solution.family = "numerical";
+  solution.termination = r.termination;
+  solution.message = r.message;
+  solution.iterations = r.iterations;
+  solution.tip = r.tip_pose(chain.total_length());
+  solution.reactions = {r.reaction.Fx, r.reaction.Fy, r.reaction.M};
+  solution.root_moment = -r.reaction.M;
+  solution.load_factor = r.load_factor;
+  solution.tolerance = beam_shooting_options(problem, 0).rtol;
+  switch (r.path) {
+    case ShootingPath::kContinuation:
+      solution.branch = fmt::format(
+          "proportional loading (pseudo-arclength continuation, {} steps)", r.continuation_steps);
+      break;
+    case ShootingPath::kTwoStageContinuation:
+      solution.branch = fmt::format(
+          "proportional loading (two-stage pseudo-arclength continuation, {} steps in the "
+          "first stage)",
+          r.continuation_steps);
+      break;
+    case ShootingPath::kDirectNewton:
+      solution.branch = "unique equilibrium (direct Newton; contraction bound below 1)";
+      break;
+    case ShootingPath::kNewtonFromGuess:
+      solution.branch = "Newton from a given guess";
+      break;
+    case ShootingPath::kFromNeighbour:
+      // The caller (beam_sweep_solver.cpp) says why this is the proportional-loading branch.
+      solution.branch = "Newton from the neighbouring load";
+      break;
+  }
+  solution.limit_points = r.limit_points;
+  solution.first_limit_load_factor = r.first_limit_load_factor;
+  solution.branch += limit_points_note(r.limit_points, r.first_limit_load_factor);
+  solution.inflection_points = std::max(r.inflection_points, 0);
+  if (shape_points > 0 && r.converged()) {
+    solution.shape = static_cast<int>(r.shape.size()) == shape_points
+                         ? r.shape
+                         : resample(r.shape, shape_points);
+  }
+  if (r.converged() && final_answer && (problem.judge_stability || problem.stable)) {
+    // The shape at the verdict's stations, integrated from the result's unknowns with the
+    // options of the solve (the shape_points requested do not matter to it).
+    const ShootingSolver::Options options = beam_shooting_options(problem, 0);
+    const Reaction support = tip_support_reaction(chain, r.tip_load);
+    const ShapeAtStations shape = [&](const std::vector<double>& s) {
+      return shooting_shape_at(chain, r, s, options);
+    };
+    solution.stability = judge(chain, support, shape, problem.stability_options);
+    if (wants_stable_search(problem, solution)) {
+      seek_stable(problem, chain, shape, support, shape_points, solution);
+    }
+  }
+  finish_numerical(problem, chain, solution);
+  label_unjudged(problem, solution);
+  return solution;
+}
+
 BeamSolution solve_numerical_forward(BeamMethod method,
                                      const BeamProblem& problem,
                                      double alpha2,
                                      int shape_points,
                                      bool final_answer = true) {
+  if (method == BeamMethod::kShooting) {
+    const ShootingSolver::Options options = beam_shooting_options(problem, shape_points);
+    const ShootingResult r = solve_shooting(problem.to_chain(alpha2), options);
+    return shooting_solution(problem, alpha2, r, shape_points, final_answer);
+  }
   // Only the answer is judged (not the forward solves of an inverse problem's search).
   const bool judge_it = final_answer && (problem.judge_stability || problem.stable);
   const SegmentChain chain = problem.to_chain(alpha2);
-  const double length = chain.total_length();
   BeamSolution solution;
   solution.method = method;
   solution.alpha2 = alpha2;
   solution.family = "numerical";
-  if (method == BeamMethod::kShooting) {
-    ShootingSolver::Options options;
-    options.shape_points = std::max(shape_points, 401);
-    options.backend = problem.integrator;
-    const ShootingResult r = solve_shooting(chain, options);
-    solution.termination = r.termination;
-    solution.message = r.message;
-    solution.iterations = r.iterations;
-    solution.tip = r.tip_pose(length);
-    solution.reactions = {r.reaction.Fx, r.reaction.Fy, r.reaction.M};
-    solution.root_moment = -r.reaction.M;
-    solution.load_factor = r.load_factor;
-    solution.tolerance = options.rtol;
-    switch (r.path) {
-      case ShootingPath::kContinuation:
-        solution.branch = fmt::format(
-            "proportional loading (pseudo-arclength continuation, {} steps)", r.continuation_steps);
-        break;
-      case ShootingPath::kTwoStageContinuation:
-        solution.branch = fmt::format(
-            "proportional loading (two-stage pseudo-arclength continuation, {} steps in the "
-            "first stage)",
-            r.continuation_steps);
-        break;
-      case ShootingPath::kDirectNewton:
-        solution.branch = "unique equilibrium (direct Newton; contraction bound below 1)";
-        break;
-      case ShootingPath::kNewtonFromGuess:
-        solution.branch = "Newton from a given guess";
-        break;
-    }
-    solution.limit_points = r.limit_points;
-    solution.first_limit_load_factor = r.first_limit_load_factor;
-    solution.branch += limit_points_note(r.limit_points, r.first_limit_load_factor);
-    solution.inflection_points = count_curvature_sign_changes(r.shape);
-    if (shape_points > 0 && r.converged()) solution.shape = resample(r.shape, shape_points);
-    if (r.converged() && judge_it) {
-      const Reaction support = tip_support_reaction(chain, r.tip_load);
-      const ShapeAtStations shape = [&](const std::vector<double>& s) {
-        return shooting_shape_at(chain, r, s, options);
-      };
-      solution.stability = judge(chain, support, shape, problem.stability_options);
-      if (wants_stable_search(problem, solution)) {
-        seek_stable(problem, chain, shape, support, shape_points, solution);
-      }
-    }
-  } else {
-    ChainAlgorithmSolver::Options options;
-    options.elements = problem.elements;
-    options.increments = problem.increments;
-    options.variant = problem.chain_variant;
-    const ChainResult r = solve_chain(chain, options);
-    solution.termination = r.termination;
-    solution.message = r.message;
-    solution.iterations = r.iterations;
-    solution.tip = r.tip_pose;
-    solution.reactions = {r.root_reaction.Fx, r.root_reaction.Fy, r.root_reaction.M};
-    solution.root_moment = r.root_moment;
-    solution.load_factor = r.load_factor;
-    solution.tolerance = options.tolerance;
-    solution.elements = r.elements;
-    solution.increments = r.increments;
-    solution.branch = fmt::format("proportional loading ({} load increments, {} variant)",
-                                  r.increments,
-                                  to_string(options.variant));
-    solution.inflection_points = count_curvature_sign_changes(r.nodes);
-    if (shape_points > 0 && r.converged()) solution.shape = resample(r.nodes, shape_points);
-    if (judge_it) solution.stability = r.stability;
-    // The chain refuses an unstable answer (chain_algorithm_solver.h) but keeps its verdict and
-    // nodes: a valid equilibrium to start the search for a stable one from.
-    const bool refused_unstable =
-        !r.converged() && r.stability.kind == StabilityKind::kUnstable && r.nodes.size() >= 2;
-    if (judge_it && problem.stable &&
-        (refused_unstable || wants_stable_search(problem, solution))) {
-      if (refused_unstable) solution.set_converged(true);  // the search decides
-      seek_stable(
-          problem, chain, interpolated_shape(r.nodes), r.tip_reaction, shape_points, solution);
-    }
+  ChainAlgorithmSolver::Options options;
+  options.elements = problem.elements;
+  options.increments = problem.increments;
+  options.variant = problem.chain_variant;
+  const ChainResult r = solve_chain(chain, options);
+  solution.termination = r.termination;
+  solution.message = r.message;
+  solution.iterations = r.iterations;
+  solution.tip = r.tip_pose;
+  solution.reactions = {r.root_reaction.Fx, r.root_reaction.Fy, r.root_reaction.M};
+  solution.root_moment = r.root_moment;
+  solution.load_factor = r.load_factor;
+  solution.tolerance = options.tolerance;
+  solution.elements = r.elements;
+  solution.increments = r.increments;
+  solution.branch = fmt::format("proportional loading ({} load increments, {} variant)",
+                                r.increments,
+                                to_string(options.variant));
+  solution.inflection_points = count_curvature_sign_changes(r.nodes);
+  if (shape_points > 0 && r.converged()) solution.shape = resample(r.nodes, shape_points);
+  if (judge_it) solution.stability = r.stability;
+  // The chain refuses an unstable answer (chain_algorithm_solver.h) but keeps its verdict and
+  // nodes: a valid equilibrium to start the search for a stable one from.
+  const bool refused_unstable =
+      !r.converged() && r.stability.kind == StabilityKind::kUnstable && r.nodes.size() >= 2;
+  if (judge_it && problem.stable && (refused_unstable || wants_stable_search(problem, solution))) {
+    if (refused_unstable) solution.set_converged(true);  // the search decides
+    seek_stable(
+        problem, chain, interpolated_shape(r.nodes), r.tip_reaction, shape_points, solution);
   }
-  if (problem.chain) describe_chain_loads(chain, solution);
-  // Howell's a/l, b/l are per unit length of the chain; the shape is reported the same way.
-  for (ShapePoint& p : solution.shape) {
-    p.s /= length;
-    p.x /= length;
-    p.y /= length;
-  }
+  finish_numerical(problem, chain, solution);
   return solution;
 }
 
@@ -456,6 +503,13 @@ BeamSolution solve_numerical(BeamMethod method, const BeamProblem& problem) {
 
 }  // namespace
 
+BeamSolution beam_solution_from_shooting(const BeamProblem& problem,
+                                         double alpha2,
+                                         const ShootingResult& r,
+                                         int shape_points) {
+  return shooting_solution(problem, alpha2, r, shape_points, true);
+}
+
 SegmentChain BeamProblem::to_chain(double alpha2) const {
   if (chain) return *chain;
   SegmentChain c = uniform_cantilever(EndLoad::howell(load_ratio_n, alpha2, mu));
@@ -486,17 +540,20 @@ SegmentChain BeamProblem::to_chain(double alpha2) const {
 }
 
 MethodResolution resolve_beam_method(BeamMethod method, const BeamProblem& problem) {
-  if (method != BeamMethod::kAuto) return {method, fmt::format("requested: {}", to_string(method))};
+  const bool inverse = problem.given != BeamProblem::Given::kAlpha2;
+  if (method != BeamMethod::kAuto) {
+    return {method,
+            fmt::format("requested: {}", to_string(method)),
+            bench::exact_method_error_bound(method, inverse)};
+  }
   bench::AutoMethodRequest request;
   request.load_ratio_n = problem.load_ratio_n;
-  request.alpha2 = problem.given == BeamProblem::Given::kAlpha2
-                       ? problem.value
-                       : std::numeric_limits<double>::quiet_NaN();
+  request.alpha2 = inverse ? std::numeric_limits<double>::quiet_NaN() : problem.value;
   request.mu = problem.mu;
   request.plain_cantilever = problem.is_plain_cantilever();
   request.tolerance = problem.tolerance;
   const bench::AutoMethodChoice choice = bench::choose_beam_method(request);
-  return {choice.method, choice.reason};
+  return {choice.method, choice.reason, choice.expected_error};
 }
 
 BeamMethod resolve_beam_method(BeamMethod method) {
@@ -519,7 +576,17 @@ BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem) {
     }
   }
   MethodResolution used = resolve_beam_method(method, problem);
+  const bool inverse = problem.given != BeamProblem::Given::kAlpha2;
+  // auto's fallback answers to the tolerance too: refused (exit code 2) when the shooting method
+  // cannot meet it, instead of an answer that misses it.
+  const auto shooting_fallback = [&](const std::string& reason) {
+    bench::require_tolerance_within_reach(problem.tolerance, BeamMethod::kShooting, inverse);
+    used = {BeamMethod::kShooting,
+            reason,
+            bench::exact_method_error_bound(BeamMethod::kShooting, inverse)};
+  };
   BeamSolution solution;
+  std::vector<BeamMethod> tried{used.method};
   switch (used.method) {
     case BeamMethod::kElliptic:
       try {
@@ -527,9 +594,10 @@ BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem) {
       } catch (const OutsideMethodDomain& e) {
         if (method != BeamMethod::kAuto) throw;
         // auto: the load (or the target's load) lies beyond the elliptic solver's range; the
-        // shooting solver has no such limit.
-        used = {BeamMethod::kShooting,
-                fmt::format("{}; the elliptic solver cannot answer ({})", used.reason, e.what())};
+        // shooting solver has no such fixed limit.
+        shooting_fallback(
+            fmt::format("{}; the elliptic solver cannot answer ({})", used.reason, e.what()));
+        tried.push_back(BeamMethod::kShooting);
         solution = solve_numerical(BeamMethod::kShooting, problem);
       }
       break;
@@ -546,22 +614,24 @@ BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem) {
   if (method == BeamMethod::kAuto && !solution.converged() &&
       used.method != BeamMethod::kShooting) {
     // auto falls back instead of giving up: the shooting method applies to every problem.
+    const std::string failed = to_string(used.method);
+    const std::string failure = solution.message;
+    shooting_fallback(used.reason);
+    tried.push_back(BeamMethod::kShooting);
     BeamSolution fallback = solve_numerical(BeamMethod::kShooting, problem);
-    used = {
-        BeamMethod::kShooting,
-        fmt::format("{}; the {} method did not converge ({}), so the shooting method was tried: "
-                    "{}",
-                    used.reason,
-                    to_string(used.method),
-                    solution.message,
-                    fallback.converged() ? "it answered" : "it did not converge either")};
+    used.reason = fmt::format(
+        "{}; the {} method did not converge ({}), so the shooting method was tried: "
+        "{}",
+        used.reason,
+        failed,
+        failure,
+        fallback.converged() ? "it answered" : "it did not converge either");
     solution = std::move(fallback);
   }
   solution.method_reason = used.reason;
-  if (!problem.judge_stability && !problem.stable &&
-      solution.stability.kind == StabilityKind::kNotChecked) {
-    solution.stability = not_checked_stability("the verdict was switched off (--stability off)");
-  }
+  solution.expected_error = used.expected_error;
+  solution.methods_tried = std::move(tried);
+  label_unjudged(problem, solution);
   if (problem.stable) {
     if (solution.stable_search.empty() && solution.converged()) {
       solution.stable_search = fmt::format(

@@ -20,6 +20,7 @@
 #include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/elastica_integrator.h"
+#include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {
 
@@ -73,6 +74,11 @@ struct BeamProblem {
 struct BeamSolution : SolveStatus {
   BeamMethod method = BeamMethod::kElliptic;  // the method actually used (what auto resolved to)
   std::string method_reason;                  // why that method: requested, or auto's reasoning
+  // The relative tip error the method that answered is known to stay within (MethodResolution);
+  // NaN where none is known (chain, PRBM off its measured map).
+  double expected_error = std::numeric_limits<double>::quiet_NaN();
+  // Every method tried, in order (auto tries a second when the first fails); the last is `method`.
+  std::vector<BeamMethod> methods_tried;
   // Howell's load parameters (eqs. 2.67, 2.83). For a chain given as a whole they exist only when
   // it is uniform (flexible segments of one constant EI, straight, total length L): alpha2 = Fy
   // L^2/EI, n = -Fx/Fy, mu = M L/EI; otherwise NaN (no single alpha2), and root_moment and
@@ -129,6 +135,9 @@ struct BeamSolution : SolveStatus {
 struct MethodResolution {
   BeamMethod method = BeamMethod::kElliptic;
   std::string reason;
+  // The relative tip error the method is known to stay within (method_selector.h); NaN where it
+  // depends on the discretisation (chain) or is not measured (PRBM off the map).
+  double expected_error = std::numeric_limits<double>::quiet_NaN();
 };
 MethodResolution resolve_beam_method(BeamMethod method, const BeamProblem& problem);
 // Without a problem (sweeps over alpha2): auto = elliptic.
@@ -142,5 +151,16 @@ BeamMethod resolve_beam_method(BeamMethod method);
 // not converge, goes to the shooting method (it follows the load path past limit points);
 // method_reason then says which method answered and why.
 BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem);
+
+// The shooting method's part of solve_beam for a forward problem, split so that a sweep can start
+// each point from its neighbour (beam_sweep_solver.h): the solver's options for `problem` (the
+// shape at `shape_points` points, 0 for none; the inflection points counted without a shape),
+// and a result at load alpha2 as the BeamSolution solve_beam returns (with its stability verdict
+// per problem.judge_stability, and with problem.stable a stable equilibrium searched from it).
+ShootingSolver::Options beam_shooting_options(const BeamProblem& problem, int shape_points);
+BeamSolution beam_solution_from_shooting(const BeamProblem& problem,
+                                         double alpha2,
+                                         const ShootingResult& r,
+                                         int shape_points);
 
 }  // namespace flexure

@@ -7,6 +7,7 @@
 
 #include <thread>
 
+#include "flexure/benchmarks/studies/bench_run.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/provenance.h"
 #include "flexure/solver/chain_model/segment_chain.h"
@@ -145,6 +146,12 @@ void write_run(io::Hdf5Group& problem_group, const MethodRun& run) {
   g.set_attribute("tolerance", run.tolerance);
   g.set_attribute("elements", static_cast<std::int64_t>(run.elements));
   g.set_attribute("increments", static_cast<std::int64_t>(run.increments));
+  // The group's statistics, as `bench` prints them; NaN where they cover no point.
+  const RunStatistics stats = run_statistics(run);
+  g.set_attribute("converged_points", static_cast<std::int64_t>(stats.converged));
+  g.set_attribute("measured_points", static_cast<std::int64_t>(stats.measured));
+  g.set_attribute("max_relative_error", stats.max_relative_error);
+  g.set_attribute("median_seconds", stats.median_seconds);
   // The beam problems are nondimensional (l = 1, EI = 1); cfm_stroke is a mechanism in SI units
   // whose beam columns are present but NaN (docs/hdf5-schema.md).
   const bool mechanism = !run.displacement.empty();

@@ -143,25 +143,45 @@ bool same_points(const MethodRun& run, const BenchProblem& problem) {
   return true;
 }
 
-std::string summarize(const MethodRun& run) {
-  int converged = 0;
-  double max_error = 0.0;
+}  // namespace
+
+RunStatistics run_statistics(const MethodRun& run) {
+  RunStatistics s;
+  s.points = static_cast<int>(run.size());
   std::vector<double> times;
   for (std::size_t i = 0; i < run.size(); ++i) {
-    if (run.status[i] == kStatusConverged || run.status[i] == kStatusNoReference) ++converged;
+    if (run.status[i] == kStatusConverged || run.status[i] == kStatusNoReference) ++s.converged;
     if (run.status[i] == kStatusConverged && std::isfinite(run.error_relative[i])) {
-      max_error = std::max(max_error, run.error_relative[i]);
+      s.max_relative_error = s.measured == 0
+                                 ? run.error_relative[i]
+                                 : std::max(s.max_relative_error, run.error_relative[i]);
+      ++s.measured;
     }
-    times.push_back(run.seconds[i]);
+    if (i < run.seconds.size() && std::isfinite(run.seconds[i])) times.push_back(run.seconds[i]);
   }
-  return fmt::format("{}/{} converged, max relative error {:.2e}, median time {:.3g} s",
-                     converged,
-                     run.size(),
-                     max_error,
-                     times.empty() ? 0.0 : median(times));
+  if (!times.empty()) s.median_seconds = median(times);
+  return s;
 }
 
-}  // namespace
+std::string summarize(const MethodRun& run) {
+  const RunStatistics s = run_statistics(run);
+  std::string error;
+  if (s.measured > 0) {
+    error = fmt::format("{:.2e}", s.max_relative_error);
+  } else if (run.method == "reference") {
+    error = "n/a (this is the reference)";
+  } else if (s.converged > 0) {
+    error = "n/a (no reference at the converged loads)";
+  } else {
+    error = "n/a (no converged load)";
+  }
+  return fmt::format(
+      "{}/{} converged, max relative error {}, median time {}",
+      s.converged,
+      s.points,
+      error,
+      std::isfinite(s.median_seconds) ? fmt::format("{:.3g} s", s.median_seconds) : "n/a");
+}
 
 std::string checkpoint_path(const std::string& out) { return out + ".partial"; }
 

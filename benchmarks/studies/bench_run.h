@@ -9,6 +9,7 @@
 // reused when their load points are exactly the ones of this run; everything else is computed. On
 // success `<out>` is written and the checkpoint removed.
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,21 @@ std::string checkpoint_path(const std::string& out);
 // Throws InvalidInput for unknown problem or method names or an incompatible resume file;
 // io::Hdf5Error when a file cannot be written.
 BenchSummary run_benchmark(const BenchOptions& options);
+
+// Statistics of one group over its load points. Over zero points a statistic has no value: NaN
+// (printed "n/a", JSON null, HDF5 NaN; docs/hdf5-schema.md), never a 0 that reads as "exact".
+struct RunStatistics {
+  int points = 0;     // load points of the group
+  int converged = 0;  // status 0 or 3 (converged, with or without a reference there)
+  int measured = 0;   // status 0 with a finite error: the points the error statistics cover
+  double max_relative_error = std::numeric_limits<double>::quiet_NaN();  // over `measured`
+  double median_seconds = std::numeric_limits<double>::quiet_NaN();      // over all points
+};
+RunStatistics run_statistics(const MethodRun& run);
+
+// One line for the progress output: "3/3 converged, max relative error 1.2e-09, median time ...";
+// "max relative error n/a (no converged point with a reference)" when no error was measured.
+std::string summarize(const MethodRun& run);
 
 // Solves every load of `problem` with `method` (or the reference when `reference` is null) and
 // fills errors against `reference`.

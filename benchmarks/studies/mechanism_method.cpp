@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <map>
 
+#include "flexure/benchmarks/studies/method_selector.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/solver/common/errors.h"
@@ -86,6 +88,22 @@ MechanismMethodChoice choose_mechanism_method(const MechanismDesign& design,
     }
     const double expected = kPrbmErrorMargin * measured;
     const bool prbm_suffices = expected <= tolerance;
+    if (!prbm_suffices && tolerance < kExactForceErrorBound &&
+        exact_support(design) != ExactSupport::kPrbmOnly) {
+      throw bench::ToleranceBelowReach(
+          fmt::format("the tolerance {:.3g} is below the force error of both models: the PRBM's "
+                      "{} and the exact model's {:.0e} (its force moves by up to 4.6e-10 when "
+                      "every tolerance of its solves is tightened); ask for a tolerance of at "
+                      "least {:.0e}",
+                      tolerance,
+                      std::isfinite(measured)
+                          ? fmt::format("{:.3g} (measured, x{} margin)", expected, kPrbmErrorMargin)
+                          : std::string("(not measured for this design)"),
+                      kExactForceErrorBound,
+                      kExactForceErrorBound),
+          kExactForceErrorBound,
+          "exact");
+    }
     c = {!prbm_suffices,
          prbm_suffices ? "prbm" : "exact",
          fmt::format("auto: PRBM force error measured {:.3g} for {} designs, x{} margin = {:.3g} "

@@ -80,12 +80,52 @@ bool bracket(const std::vector<double>& grid, double x, std::size_t& lo, std::si
   return true;
 }
 
-// Measured shooting accuracy at rtol 1e-12 (docs/benchmarks.md): below 1e-9.
-constexpr double kShootingMeasuredError = 1e-9;
-// The elliptic solver's scalar solves converge to 1e-14 relative.
-constexpr double kEllipticError = 1e-13;
+// The refusal of a tolerance that `method`, the most accurate method here, cannot meet.
+[[noreturn]] void refuse_tolerance(double tolerance,
+                                   BeamMethod method,
+                                   double bound,
+                                   bool inverse) {
+  const bool elliptic = method == BeamMethod::kElliptic;
+  const std::string how =
+      inverse    ? fmt::format("ends its inverse solve within {:.0e} of the target",
+                            elliptic ? 1e-10 : 1e-8)
+      : elliptic ? std::string(
+                       "has a relative tip error of about 1e-13 (its scalar solves converge "
+                       "to 1e-14)")
+                 : std::string(
+                       "has a relative tip error below 1e-9 (measured at rtol 1e-12 on the "
+                       "benchmark set, docs/benchmarks.md)");
+  throw ToleranceBelowReach(
+      fmt::format("the tolerance {:.3g} is below the error of every method that solves this "
+                  "problem: the most accurate here, the {} method, {}; ask for a tolerance of at "
+                  "least {:.0e}",
+                  tolerance,
+                  to_string(method),
+                  how,
+                  bound),
+      bound,
+      to_string(method));
+}
 
 }  // namespace
+
+double exact_method_error_bound(BeamMethod method, bool inverse) {
+  switch (method) {
+    case BeamMethod::kElliptic:
+      return inverse ? kEllipticInverseErrorBound : kEllipticErrorBound;
+    case BeamMethod::kShooting:
+      return inverse ? kShootingInverseErrorBound : kShootingErrorBound;
+    default:
+      return std::numeric_limits<double>::quiet_NaN();
+  }
+}
+
+void require_tolerance_within_reach(double tolerance, BeamMethod method, bool inverse) {
+  const double bound = exact_method_error_bound(method, inverse);
+  if (std::isfinite(bound) && tolerance < bound) {
+    refuse_tolerance(tolerance, method, bound, inverse);
+  }
+}
 
 double prbm_measured_error(double load_ratio_n, double alpha2) {
   const ErrorMap& map = error_map();
@@ -107,11 +147,15 @@ AutoMethodChoice choose_beam_method(const AutoMethodRequest& r) {
     throw InvalidInput(
         fmt::format("the tolerance must be a finite relative error > 0 (got {})", r.tolerance));
   }
+  const bool inverse = !std::isfinite(r.alpha2);
   if (!r.plain_cantilever) {
+    const double bound = exact_method_error_bound(BeamMethod::kShooting, inverse);
+    if (r.tolerance < bound) refuse_tolerance(r.tolerance, BeamMethod::kShooting, bound, inverse);
     return {BeamMethod::kShooting,
             fmt::format("not a free uniform cantilever with dead loads: the shooting solver "
                         "(rtol 1e-12, measured error < {:.0e}) is the only exact method here",
-                        kShootingMeasuredError)};
+                        bound),
+            bound};
   }
   std::string why_not_prbm;
   if (!std::isfinite(r.alpha2)) {
@@ -158,13 +202,17 @@ AutoMethodChoice choose_beam_method(const AutoMethodRequest& r) {
                           std::fabs(eq.Theta) * kDeg,
                           theta_max * kDeg,
                           measured,
-                          r.tolerance)};
+                          r.tolerance),
+              measured};
     }
   }
+  const double bound = exact_method_error_bound(BeamMethod::kElliptic, inverse);
+  if (r.tolerance < bound) refuse_tolerance(r.tolerance, BeamMethod::kElliptic, bound, inverse);
   return {BeamMethod::kElliptic,
           fmt::format("{}; the exact elliptic solution (error ~{:.0e}) is the next cheapest",
                       why_not_prbm,
-                      kEllipticError)};
+                      bound),
+          bound};
 }
 
 }  // namespace flexure::bench

@@ -13,8 +13,10 @@
 // The elliptic solution (error ~1e-14) serves every other free cantilever with dead loads; the
 // shooting solver (rtol 1e-12; measured error below 1e-9) every other chain and end condition.
 #include <string>
+#include <utility>
 
 #include "flexure/benchmarks/studies/beam_method.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::bench {
 
@@ -29,9 +31,44 @@ struct AutoMethodRequest {
 struct AutoMethodChoice {
   BeamMethod method = BeamMethod::kElliptic;  // kPrbm, kElliptic or kShooting
   std::string reason;                         // one sentence: why this method and not a cheaper one
+  double expected_error = 0.0;  // the error bound the choice rests on (relative tip error)
 };
 
-// Throws InvalidInput unless the tolerance is finite and > 0.
+// The relative tip errors (|tip - exact tip| / tip displacement, the measure of the tolerance) the
+// exact methods are known to stay within (docs/benchmarks.md). Forward problems: the elliptic
+// solver's scalar solves converge to 1e-14 relative (bound 1e-13); the shooting method at rtol
+// 1e-12 is measured below 1e-9 on the benchmark set. Inverse problems end when the tip quantity
+// is within 1e-10 (elliptic) or 1e-8 (shooting) of its target (beam_problem.h), which bounds them.
+inline constexpr double kEllipticErrorBound = 1e-13;
+inline constexpr double kEllipticInverseErrorBound = 1e-10;
+inline constexpr double kShootingErrorBound = 1e-9;
+inline constexpr double kShootingInverseErrorBound = 1e-8;
+// The bound of an exact method (kElliptic or kShooting; NaN for the others, whose error depends on
+// the load and the discretisation).
+double exact_method_error_bound(BeamMethod method, bool inverse);
+
+// A tolerance below what every method that can answer reaches: the answer would miss it, so the
+// problem is refused before any solve (exit code 2). Names the smallest tolerance that can be met.
+class ToleranceBelowReach : public InvalidInput {
+ public:
+  ToleranceBelowReach(const std::string& message, double best_tolerance, std::string best_method)
+      : InvalidInput(message),
+        best_tolerance_(best_tolerance),
+        best_method_(std::move(best_method)) {}
+  double best_tolerance() const { return best_tolerance_; }
+  const std::string& best_method() const { return best_method_; }  // "elliptic", "exact", ...
+
+ private:
+  double best_tolerance_;
+  std::string best_method_;
+};
+
+// Throws ToleranceBelowReach when `tolerance` is below the bound of `method` (an exact method that
+// auto falls back to).
+void require_tolerance_within_reach(double tolerance, BeamMethod method, bool inverse);
+
+// Throws InvalidInput unless the tolerance is finite and > 0, and ToleranceBelowReach when it is
+// below the error bound of the most accurate method for this problem.
 AutoMethodChoice choose_beam_method(const AutoMethodRequest& request);
 
 // The PRBM's relative tip-position error measured by `flexure bench` for the fixed-pinned segment

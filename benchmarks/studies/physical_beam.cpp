@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <variant>
 
 #include "flexure/solver/common/errors.h"
@@ -296,6 +297,44 @@ BeamProblem PhysicalCantilever::to_problem(BeamProblem problem) const {
     problem.chain = uniform_cantilever(EndLoad{Fx * force_scale, 0.0, mu});
   }
   return problem;
+}
+
+SegmentChain PhysicalCantilever::to_chain(EndCondition end,
+                                          const TipPrescription& prescribed_m) const {
+  validate();
+  const double EI = flexural_rigidity();
+  const double force_scale = length * length / EI;  // F l^2/EI (Howell eq. 2.83)
+  SegmentChain chain =
+      uniform_cantilever(EndLoad{Fx * force_scale, Fy * force_scale, M * length / EI});
+  for (const auto& [value, name] : {std::pair{chain.tip_load.Fx, "Fx L^2/EI"},
+                                    std::pair{chain.tip_load.Fy, "Fy L^2/EI"},
+                                    std::pair{chain.tip_load.M, "M L/EI"}}) {
+    if (!std::isfinite(value)) {
+      throw InvalidInput(
+          fmt::format("the nondimensional load {} overflows; check the units", name));
+    }
+  }
+  chain.end = end;
+  const PrescribedMask mask = prescribed_mask(end);
+  for (const auto& [prescribed, load, flag, coordinate] :
+       {std::tuple{mask.x, Fx, "--Fx", "x"},
+        std::tuple{mask.y, Fy, "--Fy", "y"},
+        std::tuple{mask.theta, M, "--M", "angle"}}) {
+    if (prescribed && load != 0.0) {
+      throw InvalidInput(fmt::format(
+          "a {} end prescribes the tip {}, so {} must be 0 (got {:g}): the support supplies it "
+          "as a reaction",
+          to_string(end),
+          coordinate,
+          flag,
+          load));
+    }
+  }
+  if (prescribed_m.x) chain.prescribed.x = *prescribed_m.x / length;
+  if (prescribed_m.y) chain.prescribed.y = *prescribed_m.y / length;
+  chain.prescribed.theta = prescribed_m.theta;
+  chain.validate();
+  return chain;
 }
 
 PhysicalBeamSolution solve_physical_beam(BeamMethod method,

@@ -39,6 +39,11 @@ struct PhysicalCantilever {
   // nondimensional loads, which the shooting and chain methods solve. The method settings
   // (tolerance, integrator, shape points, ...) are those of `settings`.
   BeamProblem to_problem(BeamProblem settings = {}) const;
+  // Howell's nondimensional chain of this beam (length 1, EI 1: forces F L^2/EI, moments M L/EI)
+  // with the far end `end` and the prescribed tip values given in metres and radians (`flexure
+  // path`, which takes any end condition). Throws InvalidInput for a load on a prescribed
+  // coordinate (it is the support's reaction) and for loads that overflow.
+  SegmentChain to_chain(EndCondition end, const TipPrescription& prescribed_m = {}) const;
 };
 
 // One point of the deflected shape in SI units.

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <future>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "flexure/io/parallel/mpi_world.h"
@@ -148,7 +149,6 @@ long run_serial(long total, const BlockCompute& compute, const DistributionOptio
 // worker's messages in the order they were sent (MPI's non-overtaking rule).
 constexpr int kTagReport = 71;
 constexpr int kTagAssign = 72;         // 0 -> worker: begin, end (int64[2]); begin < 0: no more
-constexpr std::int64_t kIdle = 0;      // holds nothing: answered at once
 constexpr std::int64_t kAhead = 1;     // starts a block and asks for the next one
 constexpr std::int64_t kFinished = 2;  // finished (and wrote) the block it was computing
 
@@ -161,13 +161,31 @@ void send_report(std::int64_t kind, long done) {
   check(MPI_Send(message, 2, MPI_INT64_T, 0, kTagReport, MPI_COMM_WORLD), "MPI_Send");
 }
 
-long run_worker(const World& w, const BlockCompute& compute, const DistributionOptions& options) {
+// The first block of every rank, known to all without a message: the first `ranks` blocks in rank
+// order (empty pairs when there are fewer blocks than ranks). Each rank starts at once, and none
+// can take a second block before every rank has its first: a sweep of cheap loads that rank 0
+// could finish before a worker's first request arrives still keeps every rank busy.
+std::vector<std::pair<long, long>> first_blocks(long total,
+                                                int ranks,
+                                                const DistributionOptions& options) {
+  std::vector<std::pair<long, long>> blocks(static_cast<std::size_t>(ranks), {-1L, -1L});
+  long next = 0;
+  for (int r = 0; r < ranks && next < total; ++r) {
+    const long n = next_block_size(total - next, ranks, options);
+    blocks[static_cast<std::size_t>(r)] = {next, std::min(total, next + n)};
+    next = std::min(total, next + n);
+  }
+  return blocks;
+}
+
+long run_worker(const World& w,
+                long total,
+                const BlockCompute& compute,
+                const DistributionOptions& options) {
   long done = 0;
-  std::int64_t block[2] = {-1, -1};
+  const std::pair<long, long> first = first_blocks(total, w.size(), options)[w.rank()];
+  std::int64_t block[2] = {first.first, first.second};
   std::int64_t next[2] = {-1, -1};
-  send_report(kIdle, done);
-  check(MPI_Recv(block, 2, MPI_INT64_T, 0, kTagAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
-        "MPI_Recv");
   while (block[0] >= 0) {
     // Ask for the next block now: the reply comes while this one is computed (rank 0 holds it
     // back near the end of the items, until this block is finished: see run_root).
@@ -195,11 +213,16 @@ long run_root(const World& w,
               long total,
               const BlockCompute& compute,
               const DistributionOptions& options) {
-  long next = 0;                            // first item not handed out
   long own_done = 0;                        // items rank 0 computed and wrote
   std::vector<long> reported(w.size(), 0);  // items each worker finished
   std::vector<char> waiting(w.size(), 0);   // a request held back until the worker finishes
-  int workers_left = w.size() - 1;
+  // Every rank's first block is fixed in advance (first_blocks); the rest is handed out on request.
+  const std::vector<std::pair<long, long>> firsts = first_blocks(total, w.size(), options);
+  long next = 0;  // first item not handed out
+  int workers_left = 0;
+  for (const auto& [begin, end] : firsts) next = std::max(next, end);
+  for (int r = 1; r < w.size(); ++r) workers_left += firsts[r].first >= 0 ? 1 : 0;
+  std::pair<long, long> own_first = firsts[0];
   bool own_finished = false;
   std::future<BlockWriter> own;
   long own_begin = -1, own_end = -1;
@@ -230,6 +253,9 @@ long run_root(const World& w,
     check(MPI_Send(block, 2, MPI_INT64_T, worker, kTagAssign, MPI_COMM_WORLD), "MPI_Send");
   };
   start_tracking(w.size());
+  for (int r = 1; r < w.size(); ++r) {
+    if (firsts[r].first >= 0) track_given(r, firsts[r].first, firsts[r].second);
+  }
   // Clears the table however this ends (a failure of rank 0's own block throws out of the loop).
   struct StopTracking {
     ~StopTracking() { tracking.store(false); }
@@ -250,9 +276,7 @@ long run_root(const World& w,
           MPI_Recv(message, 2, MPI_INT64_T, worker, kTagReport, MPI_COMM_WORLD, MPI_STATUS_IGNORE),
           "MPI_Recv");
       reported[worker] = static_cast<long>(message[1]);
-      if (message[0] == kIdle) {
-        assign(worker);
-      } else if (message[0] == kAhead) {
+      if (message[0] == kAhead) {
         // With nothing left, "no more" also waits: the worker's last message is then always
         // kFinished, and none is left unreceived when this loop ends.
         if (ahead_allowed() && next < total) {
@@ -280,7 +304,8 @@ long run_root(const World& w,
       track_finished(0);
     }
     if (!own.valid() && !own_finished) {
-      const auto [begin, end] = take();
+      const auto [begin, end] = own_first.first >= 0 ? own_first : take();
+      own_first = {-1, -1};
       if (begin < 0) {
         own_finished = true;
       } else {
@@ -333,8 +358,12 @@ long distribute(long total, const BlockCompute& compute, const DistributionOptio
   if (total <= 0) return 0;
   if (!w.parallel()) return run_serial(total, compute, options);
 #ifdef FLEXURE_WITH_MPI
+  // A minimum block larger than the items allow would leave ranks idle (1000 cheap loads on 2
+  // ranks with blocks of at least 1024: one rank computed all): at least two blocks per rank.
+  DistributionOptions adapted = options;
+  adapted.min_block = std::min(options.min_block, std::max(1L, total / (2L * w.size())));
   const long mine =
-      w.root() ? run_root(w, total, compute, options) : run_worker(w, compute, options);
+      w.root() ? run_root(w, total, compute, adapted) : run_worker(w, total, compute, adapted);
   if (options.progress && w.root()) options.progress(total, total);
   const std::vector<std::int64_t> counts = w.gather(std::vector<std::int64_t>{mine});
   balance.resize(counts.size(), 0);

@@ -1,13 +1,14 @@
 #pragma once
 // Items of a study divided over the ranks of world() with dynamic load balancing
-// (docs/scaling.md "How the work is divided"): rank 0 hands out blocks of items on request, and a
-// rank asks for its next block as soon as it starts one; rank 0 answers at once while many blocks
-// are left (the rank then never waits), else once the rank is free (a block given ahead would
-// wait behind a slow one while other ranks idle). Blocks shrink towards the end (a share of what
-// is left), so that ranks finish together however the cost varies per item (exact strokes,
-// optimisations). Rank 0 computes too, on a second
-// thread, while its first thread answers requests and writes; in a run of one rank the blocks are
-// computed in order on the calling thread.
+// (docs/scaling.md "How the work is divided"): every rank's first block is fixed in advance (the
+// first blocks in rank order, so that each rank starts at once and has work), rank 0 hands out the
+// later blocks on request, and a rank asks for its next block as soon as it starts one; rank 0
+// answers at once while many blocks are left (the rank then never waits), else once the rank is
+// free (a block given ahead would wait behind a slow one while other ranks idle). Blocks shrink
+// towards the end (a share of what is left), so that ranks finish together however the cost varies
+// per item (exact strokes, optimisations). Rank 0 computes too, on a second thread, while its first
+// thread answers requests and writes; in a run of one rank the blocks are computed in order on the
+// calling thread.
 //
 // A block is computed by `compute(begin, end)` (on any thread, without MPI), which returns what is
 // left to do on the calling thread: writing the block (e.g. Hdf5Dataset::write_range of a
@@ -25,7 +26,8 @@ using BlockCompute = std::function<BlockWriter(long begin, long end)>;
 struct DistributionOptions {
   long max_block = 1;  // at most this many items in one block
   // At least this many (but for the last block): cheap items (a sweep's loads, about a
-  // microsecond each) in blocks worth a message and a write of their own.
+  // microsecond each) in blocks worth a message and a write of their own. Lowered to
+  // total / (2 ranks) when that is smaller, so that every rank has a block.
   long min_block = 1;
   // Rank 0, on the calling thread: items done over all ranks (counted per finished block).
   std::function<void(long done, long total)> progress;

@@ -106,6 +106,17 @@ CfmExactResult solve_cfm_exact(const CfmResult& prbm, const CfmExactOptions& opt
   if (!std::isfinite(r.Phi_exact) || !std::isfinite(r.max_force_error)) {
     r.set_converged(false);
     r.message = "exact model returned a non-finite force";
+    return r;
+  }
+  if (r.force_vanishes_exact) {
+    // Its min/max would be meaningless (negative when it changes sign): reported as 0
+    // (docs/mechanisms.md "Percent constant force").
+    r.warn(WarningKind::kForceVanishes,
+           fmt::format("the exact force {} within the stroke (Phi_exact from {:.3g} to {:.3g}): "
+                       "percent_constant_force_exact is reported as 0",
+                       r.force_changes_sign_exact ? "changes sign" : "vanishes",
+                       m.min_force,
+                       m.max_force));
   }
   return r;
 }

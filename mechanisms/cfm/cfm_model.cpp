@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "flexure/mechanisms/cfm/slider_crank.h"
+#include "flexure/mechanisms/constant_force.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::cfm {
@@ -222,6 +223,7 @@ CfmResult CfmModel::evaluate(const CfmParameters& p) const {
   r.Phi_max = phi_max;
   r.Xi = phi_max / phi_min;                              // eq. 2.17
   r.percent_constant_force = 100.0 * phi_min / phi_max;  // eq. 5.22 (thesis code `xi`)
+  r.force_vanishes = phi_min <= mechanism::kForceVanishesRelative * std::abs(phi_max);
 
   // beta = gamma K_theta (R+1)^2 Phi/rho = kappa_ref (R+1) Phi (eq. 4.43; class 1B eq. 4.55 with
   // the middle pivot as reference); linear in Phi, so its stroke average uses the mean Phi.
@@ -264,6 +266,21 @@ CfmResult CfmModel::evaluate(const CfmParameters& p) const {
                                 p.stroke_percent,
                                 r.toggle_stroke_percent)
                   : "closed form";
+  if (r.force_vanishes) {
+    r.warn(WarningKind::kForceVanishes,
+           fmt::format("the force vanishes within the stroke (Phi_min = {:.3g} against Phi_max = "
+                       "{:.3g}, zero to rounding): Xi is unbounded and not printed",
+                       r.Phi_min,
+                       r.Phi_max));
+  }
+  if (r.stroke_clamped) {
+    r.warn(WarningKind::kStrokeClamped,
+           fmt::format("stroke d = {:g} % is past the toggle position of R = {:g}; clamped to "
+                       "{:.4f} % as in the thesis (stroke_percent)",
+                       r.requested_stroke_percent,
+                       r.R,
+                       r.stroke_percent));
+  }
   return r;
 }
 

@@ -78,7 +78,11 @@ struct CfmResult : SolveStatus {
   double Phi = 0.0;      // mean of Phi over the sampled stroke (thesis `average_phi`)
   double Phi_min = 0.0;  // smallest sampled Phi
   double Phi_max = 0.0;  // largest sampled Phi
-  double Xi = 0.0;       // Phi_max/Phi_min (eq. 2.17)
+  double Xi = 0.0;       // Phi_max/Phi_min (eq. 2.17); unbounded when force_vanishes
+  // Phi_min <= kForceVanishesRelative |Phi_max| (mechanisms/constant_force.h): the force is zero
+  // within the stroke to rounding (a class 1A mechanism at its toggle position, where the crank
+  // spring's moment has no lever along the slider) or changes sign; Xi is then meaningless.
+  bool force_vanishes = false;
   double percent_constant_force = 0.0;  // Xi' = 100 Phi_min/Phi_max (eq. 5.22)
   double lambda = 0.0;                  // l_tot/r_tot, length parameter (thesis Table 5.1)
   double beta = 0.0;  // F r_tot^2/(E I_ref) averaged over the stroke (eq. 4.43; 1B eq. 4.55)
@@ -111,6 +115,7 @@ struct CfmResult : SolveStatus {
   // converged(): closed form: true whenever every sampled Phi is finite
   // iterations: stroke points evaluated
   // residual: largest loop-closure residual of eq. 2.3 over the stroke, / r2
+  // warnings: kStrokeClamped when the stroke was clamped, kForceVanishes with force_vanishes
 };
 
 // Length parameter lambda = l_tot/r_tot (thesis Table 5.1): a long segment replacing link i is

@@ -534,6 +534,7 @@ DimensionedDesign refine_design_exact(const MechanismSpec& spec,
   }
   mechanism::AnalysisOptions ao;
   ao.points = spec.points;
+  ao.stability = false;  // sizing reads forces and stresses only
   const auto analyse = [&]() -> std::optional<mechanism::MechanismAnalysis> {
     try {
       d.finalise();

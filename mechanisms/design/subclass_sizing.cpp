@@ -79,6 +79,7 @@ ExactAt exact_at(const mechanism::MechanismDesign& d, int points) {
   ExactAt r;
   mechanism::AnalysisOptions o;
   o.points = points;
+  o.stability = false;  // sizing reads forces and stresses only
   try {
     r.analysis = mechanism::analyze_mechanism(d, o);
   } catch (const std::exception& e) {  // InvalidInput or NoConvergence of the exact model

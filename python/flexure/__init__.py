@@ -24,18 +24,33 @@ __all__ = ["beam", "path", "sweep", "cfm", "dynamics", "bench", "validate", "rea
 
 
 def path(*, out, n=None, alpha2=None, mu=None, follower=None, boundary=None, tip_x=None,
-         tip_y=None, tip_angle=None, method=None, elements=None, increments=None, chain=None):
-    """The load path from the unloaded beam to a load, step by step: `flexure path`.
+         tip_y=None, tip_angle=None, method=None, elements=None, increments=None, chain=None,
+         length=None, E=None, I=None, width=None, thickness=None, Fx=None, Fy=None, M=None,
+         max_step=None, min_points=None, branch=None, branch_side=None, control=None,
+         shapes=None):  # noqa: E741 - the tool's flag --I
+    """The equilibrium path from the unloaded beam to a load, step by step: `flexure path`.
 
     The loads and end conditions of flexure.beam (n, alpha2, mu, follower, boundary, tip_x,
-    tip_y, tip_angle, chain); method 'shooting' (continuation, the default) or 'chain' (load
-    increments: elements, increments); out: the HDF5 file the path is written to (required).
-    Returns the dict `flexure path --json` prints (the path's points as numpy arrays, limit
-    points).
+    tip_y, tip_angle, chain), or a physical beam (length, E, I or width and thickness, Fx, Fy, M;
+    any boundary); method 'shooting' (continuation, the default) or 'chain' (load increments:
+    elements, increments); out: the HDF5 file the path is written to (required). Continuation:
+    max_step, min_points, branch (follow the other branch at the N-th bifurcation; branch_side
+    'positive' or 'negative'), control ('tip-x', 'tip-y', 'tip-angle': move that coordinate to
+    its tip_... value as the path parameter), shapes (K shape points at every path point).
+    Returns the dict `flexure path --json` prints: the counts, the located `bifurcations` and
+    `limit_point_list` (lists of dicts with load_factor, index, index_after, tip and reactions).
+
+    Example:
+      >>> flexure.path(length=1, E=1, I=1, Fx=-30, out="column.h5")["bifurcations"][0]["load_factor"]  # doctest: +SKIP
+      0.0822467033...
     """
     return _run(["path"], dict(n=n, alpha2=alpha2, mu=mu, follower=follower, boundary=boundary,
                                tip_x=tip_x, tip_y=tip_y, tip_angle=tip_angle, method=method,
-                               elements=elements, increments=increments, chain=chain, out=out))
+                               elements=elements, increments=increments, chain=chain,
+                               length=length, E=E, I=I, width=width, thickness=thickness, Fx=Fx,
+                               Fy=Fy, M=M, max_step=max_step, min_points=min_points,
+                               branch=branch, branch_side=branch_side, control=control,
+                               shapes=shapes, out=out))
 
 
 def sweep(*, out, alpha2=None, theta0=None, b_over_l=None, n=None, mu=None, method=None,

@@ -54,17 +54,17 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
     A physical cantilever (SI numbers, or strings with units: '50mm', '200GPa', '5N'):
       length, E, I (or width and thickness), Fx, Fy, M, yield_strength
 
-    Returns the dict `flexure beam --json` prints: method, method_reason, n, alpha2, mu,
-    a_over_l, b_over_l, theta0 (rad), iterations, converged, branch, inflection_points,
-    root_moment, limit_points, target_residual, first_limit_load_factor, family, message,
-    termination, boundary, reactions {Fx, Fy, M}, the stability verdict (stability:
-    'stable' | 'unstable' | 'critical' | 'not_conservative' | 'not_checked', stability_index and
-    stability_margin, None where not judged, stability_message, stable_search, warnings), and per
-    method or input more (shape as columns s, x, y, theta; the SI keys of a physical beam). An
-    unstable answer is returned (it is the proportional-loading answer, labelled) with a
-    FlexureWarning. Raises InvalidInput (a ValueError) for input
-    the tool refuses and NoConvergence (a RuntimeError, with .reached) when a scalar load does
-    not converge.
+    Returns the dict `flexure beam --json` prints: method, method_reason, expected_error, n,
+    alpha2, mu, a_over_l, b_over_l, theta0 (rad), iterations, converged, branch,
+    inflection_points, root_moment, limit_points, target_residual, first_limit_load_factor,
+    family, message, termination, boundary, reactions {Fx, Fy, M}, the stability verdict
+    (stability: 'stable' | 'unstable' | 'critical' | 'not_conservative' | 'not_checked',
+    stability_index and stability_margin, None where not judged, stability_message,
+    stable_search, warnings), and per method or input more (shape as columns s, x, y, theta; the
+    SI keys of a physical beam). An unstable answer is returned (it is the proportional-loading
+    answer, labelled) with a FlexureWarning. Raises InvalidInput (a ValueError) for input the tool
+    refuses and NoConvergence (a RuntimeError, with .reached) when a scalar load does not
+    converge.
 
     Example:
       >>> import flexure, numpy as np

@@ -53,7 +53,10 @@ def analyze(mechanism, *, points=None, method=None, tol=None, out=None, prbm_onl
                 such a file
     points      stroke points (default 50); method 'auto' | 'prbm' | 'exact'; tol for auto
     out         also write the curves to this HDF5 file; spring_rule, force_of ('half' | 'whole')
-    Returns the dict `flexure mechanism analyze --json` prints (curves as numpy arrays in N, m).
+    Returns the dict `flexure mechanism analyze --json` prints (curves as numpy arrays in N, m),
+    with the stability of every stroke point in `stability_displacement_control` and
+    `stability_force_control` ({"prbm": ..., "exact": ...}: `stability`, `stability_index`,
+    `stability_margin` per point; docs/stability.md "Mechanisms").
 
     Example:
       >>> r = flexure.mechanism.analyze("1A-lpp", points=20, method="exact")   # doctest: +SKIP

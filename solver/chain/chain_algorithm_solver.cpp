@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flexure/solver/chain/chain_constrained.h"
 #include "flexure/solver/chain/chain_discretisation.h"
 #include "flexure/solver/chain/chain_fixed_point.h"
 #include "flexure/solver/chain/chain_pass.h"
@@ -74,6 +75,8 @@ ChainNodeLoads loads_at(const Problem& p, double lambda, const Eigen::Vector3d& 
   return loads;
 }
 
+Trial with_residual(const Problem& p, double lambda, Trial t);
+
 Trial evaluate(const Problem& p,
                const Evaluation& how,
                double lambda,
@@ -104,6 +107,11 @@ Trial evaluate(const Problem& p,
       return t;
     }
   }
+  return with_residual(p, lambda, std::move(t));
+}
+
+// The tip residual (eq. 7.37) of a trial's geometry at load factor lambda.
+Trial with_residual(const Problem& p, double lambda, Trial t) {
   const int E = p.d.element_count();
   const double tip[3] = {t.geometry.x[E], t.geometry.y[E], t.geometry.theta[E]};
   const double start[3] = {p.start.x, p.start.y, p.start.theta};
@@ -144,6 +152,35 @@ StepOutcome solve_step(const Problem& p,
                        const ChainAlgorithmSolver::Options& options) {
   StepOutcome out;
   out.z = z_guess;
+  if (!p.unknowns.empty() && !how.single_pass && options.constrained_passes) {
+    // Passes that meet the tip conditions as they go (chain_constrained.h).
+    ConstrainedTip tip;
+    tip.unknowns = p.unknowns;
+    const double start[3] = {p.start.x, p.start.y, p.start.theta};
+    const double target[3] = {p.target.x, p.target.y, p.target.theta};
+    for (int c = 0; c < 3; ++c) {
+      tip.wanted[c] = start[c] + lambda * (target[c] - start[c]);  // eq. 7.37, moved with lambda
+      tip.unknown_scale[c] = p.unknown_scale[c];
+    }
+    tip.tolerance = options.shooting_tolerance;
+    ChainGeometry geometry = base;
+    const ConstrainedReport r = converge_constrained_chain(
+        p.d, loads_at(p, lambda, Eigen::Vector3d::Zero()), tip, out.z, geometry, how.fixed_point);
+    out.passes = r.passes;
+    out.newton_iterations = r.iterations;  // each iteration corrects the reactions
+    if (!r.converged()) {
+      out.failure = r.failure;
+      return out;
+    }
+    Trial converged;
+    converged.geometry = std::move(geometry);
+    converged.passes = r.passes;
+    converged.change = r.change;
+    out.trial = with_residual(p, lambda, std::move(converged));
+    out.ok = out.trial.ok;
+    if (!out.ok) out.failure = out.trial.failure;
+    return out;
+  }
   Trial current = evaluate(p, how, lambda, out.z, base);
   out.passes += current.passes;
   if (!current.ok) {
@@ -374,6 +411,61 @@ std::string representation_problem(const SegmentChain& chain,
   return {};
 }
 
+// The flexible elements that represent the load (the self-check of representation_problem), as
+// predicted from the coarse chain's answer: the elements are refined by doublings of the requested
+// count, as a failed check would, but before the requested chain is solved, so that it is solved
+// once. Each coarse element's curvature beyond the stress-free one is its turn over its length;
+// the peak inside it is extrapolated from its neighbours' (half the difference: the curvature of a
+// cantilever peaks at the clamp, where an element average lies below it), and a fine element turns
+// by that curvature times its length, which must stay within max_element_rotation (as the check
+// asks; where the prediction falls short, the check still fails and doubles).
+int predicted_elements(const SegmentChain& chain,
+                       const std::vector<ShapePoint>& coarse_nodes,
+                       const ChainAlgorithmSolver::Options& o) {
+  std::vector<double> ends;
+  double s = 0.0, flexible_length = 0.0;
+  for (const Segment& segment : chain.segments) {
+    const double length = std::visit([](const auto& seg) { return seg.length; }, segment);
+    s += length;
+    ends.push_back(s);
+    if (std::holds_alternative<FlexibleSegment>(segment)) flexible_length += length;
+  }
+  // Signed curvature beyond kappa0 of each coarse element and its segment (-1: rigid).
+  std::vector<double> kappa;
+  std::vector<int> segment_of;
+  for (std::size_t i = 0; i + 1 < coarse_nodes.size(); ++i) {
+    const ShapePoint& a = coarse_nodes[i];
+    const ShapePoint& b = coarse_nodes[i + 1];
+    const double h = b.s - a.s;
+    const std::size_t k = static_cast<std::size_t>(std::min<std::ptrdiff_t>(
+        std::upper_bound(ends.begin(), ends.end(), 0.5 * (a.s + b.s)) - ends.begin(),
+        static_cast<std::ptrdiff_t>(ends.size()) - 1));
+    const auto* flexible = std::get_if<FlexibleSegment>(&chain.segments[k]);
+    if (flexible == nullptr || !(h > 0.0)) {
+      kappa.push_back(0.0);
+      segment_of.push_back(-1);
+      continue;
+    }
+    kappa.push_back((b.theta - a.theta - flexible->kappa0 * h) / h);
+    segment_of.push_back(static_cast<int>(k));
+  }
+  double peak = 0.0;
+  for (std::size_t i = 0; i < kappa.size(); ++i) {
+    if (segment_of[i] < 0) continue;
+    double here = std::fabs(kappa[i]);
+    for (std::size_t j : {i - 1, i + 1}) {  // i - 1 wraps to a huge index at i = 0
+      if (j < kappa.size() && segment_of[j] == segment_of[i]) {
+        here = std::max(here, std::fabs(kappa[i]) + 0.5 * std::fabs(kappa[i] - kappa[j]));
+      }
+    }
+    peak = std::max(peak, here);
+  }
+  const double needed = peak * flexible_length / o.max_element_rotation;
+  int elements = o.elements;
+  while (elements < needed && 2 * elements <= o.max_elements) elements *= 2;
+  return elements;
+}
+
 }  // namespace
 
 ChainResult ChainAlgorithmSolver::solve(const SegmentChain& chain) const {
@@ -383,6 +475,8 @@ ChainResult ChainAlgorithmSolver::solve(const SegmentChain& chain) const {
   Options o = options_;
   for (;;) {
     ChainResult r = solve_once(chain, o);
+    // The count the coarse path predicted, if it refined (solve_once).
+    if (r.elements > o.elements) o.elements = r.elements;
     if (!r.converged()) return r;
     const std::string problem = representation_problem(chain, r, o.max_element_rotation);
     if (!problem.empty()) {
@@ -427,8 +521,10 @@ ChainResult ChainAlgorithmSolver::solve(const SegmentChain& chain) const {
   }
 }
 
-ChainResult ChainAlgorithmSolver::solve_once(const SegmentChain& chain, const Options& o) const {
-  const Problem p = make_problem(chain, o.elements);
+ChainResult ChainAlgorithmSolver::solve_once(const SegmentChain& chain,
+                                             const Options& requested) const {
+  Options o = requested;
+  Problem p = make_problem(chain, o.elements);
   const bool corrected = o.variant == ChainVariant::kCorrected;
 
   Evaluation how;
@@ -522,6 +618,17 @@ ChainResult ChainAlgorithmSolver::solve_once(const SegmentChain& chain, const Op
     co.shooting_tolerance = std::max(o.shooting_tolerance, kCoarseTolerance);
     const ChainResult c = solve_once(chain, co);
     r.iterations += c.iterations;
+    if (c.converged() && o.refine_elements && o.predict_elements) {
+      // Enough elements for this load from the start (predicted_elements), instead of solving
+      // on the requested count, failing the representation check and solving again.
+      const int elements = predicted_elements(chain, c.nodes, o);
+      if (elements > o.elements) {
+        o.elements = elements;
+        p = make_problem(chain, elements);
+        r.elements = p.d.flexible_elements;
+        geometry = unloaded_geometry(p.d);
+      }
+    }
     if (c.converged()) {
       ChainGeometry coarse_geometry;
       for (const ShapePoint& q : c.nodes) {

@@ -46,7 +46,8 @@ struct ChainResult : SolveStatus {
   // iterations: chain passes in total (all increments, retries and shooting evaluations)
   int increments = 0;         // load increments that succeeded
   int failed_increments = 0;  // increments that failed and were retried with a smaller step
-  int newton_iterations = 0;  // shooting-method Newton steps (eqs. 7.38-7.40), summed
+  int newton_iterations = 0;  // corrections of the tip reactions (eqs. 7.38-7.40), summed: one per
+                              // constrained iteration (Options::constrained_passes) or Newton step
   double load_factor = 0.0;   // load factor reached (1 when converged)
   // residual: geometry change of the last pass (positions / total length, rad)
   double boundary_residual = 0.0;  // max |tip coordinate - prescribed value| (scaled as above)
@@ -94,7 +95,13 @@ class ChainAlgorithmSolver {
     // settle on the mirror image: n = 13.48, alpha2 = 2.42 gave theta0 = -3.19 for 3.04).
     double max_angle_step = 0.25;
     double shooting_tolerance = 1e-10;  // |tip coordinate - prescribed| (scaled as residual)
-    int max_newton_iterations = 30;     // per increment
+    // Prescribed tip coordinates: the passes meet them as they go, the reactions corrected by
+    // every pass (chain_constrained.h; the same discrete equilibrium). false: the shooting method
+    // of §7.2.1 as printed, Newton on the reactions around fully converged passes of the chain
+    // with a free end, which needed over a million passes for a guided end under compression
+    // (docs/theory-chain.md §5).
+    bool constrained_passes = true;
+    int max_newton_iterations = 30;  // per increment (constrained_passes = false only)
     // Converge the passes at a fixed load with Anderson acceleration and the implicit own
     // rotation of each element (chain_pass.h). The fixed point is the same; false gives Howell's
     // plain passes, whose convergence slows down badly as the load grows (57 passes at
@@ -115,6 +122,10 @@ class ChainAlgorithmSolver {
     // refine_elements is set, and is reported as not converged otherwise.
     double max_element_rotation = 0.2;
     bool refine_elements = true;
+    // With refine_elements and the coarse path: the doublings the load needs are predicted from
+    // the coarse chain's answer before the requested chain is solved, so that it is solved once
+    // (docs/theory-chain.md, "Self-checks"). false: solve, check, double and solve again.
+    bool predict_elements = true;
     int max_elements = 6400;
   };
 
@@ -129,7 +140,7 @@ class ChainAlgorithmSolver {
   const Options& options() const { return options_; }
 
  private:
-  ChainResult solve_once(const SegmentChain& chain, const Options& options) const;
+  ChainResult solve_once(const SegmentChain& chain, const Options& requested) const;
   Options options_;
 };
 

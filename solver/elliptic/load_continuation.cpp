@@ -228,6 +228,13 @@ double locate_fold(PathResidual& g,
   const bool rising = from.tangent_lambda() > 0.0;
   double lo = 0.0, hi = step;
   double best = rising ? std::max(from.lambda, lambda_end) : std::min(from.lambda, lambda_end);
+  // The trials are corrected tightly: `best` is the largest lambda among them, so a trial left at
+  // the path's loose corrector_tolerance (1e-7) biased the fold upward by up to that much (9e-8
+  // at n = 0, alpha2 = 10, mu = -2 pi against the shooting path's located fold and an
+  // independent maximisation of lambda(m0), tests/solver/shooting_bifurcation_test.cpp).
+  ContinuationOptions tight = options;
+  tight.corrector_tolerance = std::min(options.corrector_tolerance, 1e-13);
+  tight.max_corrector_iterations = std::max(options.max_corrector_iterations, 20);
   for (int it = 0; it < 40 && hi - lo > 1e-12 * step; ++it) {
     const double mid = 0.5 * (lo + hi);
     const Corrected c = correct(g,
@@ -235,7 +242,7 @@ double locate_fold(PathResidual& g,
                                 from.t + mid * from.tangent_t(),
                                 from.lambda + mid * from.tangent_lambda(),
                                 false,
-                                options);
+                                tight);
     if (!c.ok) break;
     best = rising ? std::max(best, c.point.lambda) : std::min(best, c.point.lambda);
     if ((c.point.tangent_lambda() > 0.0) == rising) {

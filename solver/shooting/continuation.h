@@ -7,6 +7,9 @@
 // stepping in lambda alone cannot. Predictor: the unit tangent (null vector of [dg/dz dg/dlambda]);
 // corrector: Newton with the Keller constraint (newton.h). Steps grow after easy corrections and
 // are halved after a failed one; below min_step the path stops and reports the lambda reached.
+// Folds (the tangent's lambda-component changes sign) and simple bifurcation points (det dg/dz
+// changes sign while lambda keeps its direction) are located to about 1e-10 in lambda, and the
+// path can leave a bifurcation onto the other branch (docs/theory-shooting.md §5).
 #include <Eigen/Dense>
 #include <string>
 #include <vector>
@@ -18,13 +21,22 @@
 namespace flexure {
 
 struct ContinuationOptions {
-  double initial_step = 0.1;  // first arclength step (scaled variables)
-  double min_step = 1e-7;     // give up below this step
-  double max_step = 0.5;      // cap on the arclength step
-  double growth = 1.6;        // step growth after an easy correction
-  int easy_iterations = 3;    // corrections in at most this many Newton iterations are easy
-  int max_steps = 500;        // accepted + rejected steps before giving up (never a hang);
-                              // paths in the test grids need at most about 70
+  double initial_step = 0.1;   // first arclength step (scaled variables; at most max_step)
+  double min_step = 1e-7;      // give up below this step
+  double max_step = 0.5;       // cap on the arclength step (`flexure path --max-step`)
+  double max_load_step = 0.0;  // > 0: no step changes the load factor by more than this, so the
+                               // path has at least 1/max_load_step points per unit of lambda
+                               // (`flexure path --min-points`); 0: no such cap
+  double growth = 1.6;         // step growth after an easy correction
+  // Folds hide where the tangent's lambda-component heads for zero: two of them (an S-shaped
+  // path) inside one step leave its sign unchanged at both ends and go unseen. While it falls
+  // towards zero at the rate of the last step, the next step covers at most level_fraction of the
+  // arclength to zero extrapolated from that rate, but not less than level_min_step.
+  double level_fraction = 0.8;
+  double level_min_step = 0.05;
+  int easy_iterations = 3;  // corrections in at most this many Newton iterations are easy
+  int max_steps = 500;      // accepted + rejected steps before giving up (never a hang);
+                            // paths in the test grids need at most about 70
   long max_integrator_steps = 500000;   // CVODES steps over the whole path (time budget), times
                                         // max(1, shooting intervals / 16)
   double max_predictor_distance = 0.5;  // reject a correction farther than this * step from the
@@ -32,48 +44,110 @@ struct ContinuationOptions {
   double max_turn = 0.6;  // reject a step whose tangent turned by more than this (rad); the
                           // tangent's sign comes from the path's orientation (continuation.cpp),
                           // so a corrector that lands on another branch shows up as a large turn
-  double bifurcation_step = 1e-3;      // an orientation flip that persists at steps this short is a
-                                       // bifurcation point crossed on the branch (continuation.cpp)
-  double bifurcation_vicinity = 0.01;  // no path samples recorded this close to a crossing
+  double bifurcation_step = 1e-3;      // an orientation flip that cannot be located (or is not
+                                       // verified as a singular point) is accepted as a crossing
+                                       // only at steps this short (continuation.cpp)
+  double bifurcation_vicinity = 0.01;  // no ordinary path samples recorded this close to a
+                                       // bifurcation (the located point itself is recorded)
   bool record_path = true;             // store every accepted point
+  // Special points (docs/theory-shooting.md, "Limit points and bifurcations"): each fold of the
+  // load factor and each simple bifurcation (dg/dz singular while lambda keeps its direction) is
+  // located on the path by Brent's method on the arclength of the step that passed it: a fold
+  // where the tangent's lambda-component vanishes, a bifurcation where det(dg/dz) does. Off: the
+  // folds are only counted at the step after them (the point after is marked kLimitPoint).
+  bool locate_special_points = true;
+  double location_tolerance = 1e-11;  // arclength bracket of a located special point (scaled)
+  double singular_tolerance = 1e-6;   // a located bifurcation must have the second-smallest
+                                      // singular value of [dg/dz S, dg/dlambda] below this times
+                                      // its size over the step (else: a branch jump)
+  // Branch switching: at the switch_at_bifurcation-th bifurcation (counted from 1 along the path;
+  // 0 = never) the path leaves onto the other branch through it, along the null direction of
+  // [dg/dz S, dg/dlambda] orthogonal to the path's tangent, by a first step of branch_switch_step;
+  // branch_side +1 takes the half-branch on which the tip moves to +y (to +theta when the end holds
+  // y, the clamp's moment m(0) grows when it holds both), -1 the other.
+  int switch_at_bifurcation = 0;
+  int branch_side = 1;
+  double branch_switch_step = 0.02;
+  int shape_points = 0;  // > 1: the shape (x, y, theta, moment) at this many equally spaced arc
+                         // lengths at every recorded point
 };
 
-enum class PathStatus { kStart, kAccepted, kLimitPoint, kEnd };
+// The kind of a recorded path point. The integer values are the `status` codes of `flexure path`
+// files (docs/hdf5-schema.md); keep them.
+enum class PathStatus { kStart, kAccepted, kLimitPoint, kEnd, kBifurcation };
 const char* to_string(PathStatus status);
 
 struct PathPoint {
   double lambda = 0.0;  // load factor
   ChainPose tip;        // tip x, y, theta
   Reaction reaction;    // loads the clamp applies to the chain
+  Reaction tip_load;    // total load on the tip: N(tip), m(tip) (the support's reaction for a
+                        // prescribed coordinate)
   double step = 0.0;    // arclength step that reached this point
   int iterations = 0;   // Newton iterations of the corrector
   PathStatus status = PathStatus::kAccepted;
-  int stage = 1;  // 2 only in the second stage of a two-stage path (shooting_solver.h)
+  int stage = 1;   // > 1 in later stages of a staged path (shooting_solver.h)
+  int branch = 0;  // 0 on the path from zero load; k after switching at the k-th bifurcation
+  std::vector<ShapePoint> shape;  // ContinuationOptions::shape_points > 1: the deflected shape
+  std::vector<double> moment;     // bending moment at each shape point (statics, same units)
+};
+
+// A located fold of the load factor (limit point) or simple bifurcation point on the path.
+enum class SpecialPointKind { kLimitPoint, kBifurcation };
+const char* to_string(SpecialPointKind kind);  // "limit_point", "bifurcation"
+
+struct SpecialPoint {
+  SpecialPointKind kind = SpecialPointKind::kLimitPoint;
+  double lambda = 0.0;  // load factor at the point (to about 1e-10 when located)
+  ChainPose tip;
+  Reaction reaction;     // loads the clamp applies to the chain
+  Reaction tip_load;     // total load on the tip
+  int index = -1;        // position in LoadPath::points (-1 when the path is not recorded)
+  int index_after = -1;  // first recorded point after it (-1 when none: the path stopped)
+  int stage = 1;
+  int branch = 0;         // branch on which it lies (PathPoint::branch)
+  bool located = true;    // false: the step could not be refined; lambda is then the nearer end
+                          // (a fold: the larger lambda of the step) and index the point after it
+  bool switched = false;  // the path left here onto the other branch
+  Eigen::VectorXd z;      // unknowns at the point (of the stage's ShootingProblem)
 };
 
 struct LoadPath : SolveStatus {
   // converged(): reached lambda = 1
   bool singular_start = false;  // dg/dz singular at lambda = 0: the path starts at a bifurcation
   // message: where and why it stopped
-  double lambda_reached = 0.0;           // largest lambda on the path
-  int steps = 0;                         // accepted steps
-  int rejected_steps = 0;                // halved steps
-  int newton_iterations = 0;             // summed over all corrections
-  int limit_points = 0;                  // turning points of lambda passed
-  double first_limit_load_factor = 0.0;  // largest lambda before the first turning point
-  int bifurcation_points = 0;  // simple bifurcation points crossed (the path stays on its branch)
+  double lambda_reached = 0.0;               // largest lambda on the path
+  int steps = 0;                             // accepted steps
+  int rejected_steps = 0;                    // halved steps
+  int newton_iterations = 0;                 // summed over all corrections
+  int location_corrections = 0;              // corrector solves spent locating special points
+  long integrator_steps = 0;                 // integrator steps over the whole path (its cost)
+  int limit_points = 0;                      // turning points of lambda passed
+  double first_limit_load_factor = 0.0;      // load factor at the first turning point (located)
+  int bifurcation_points = 0;                // simple bifurcation points crossed (or switched at)
+  std::vector<SpecialPoint> special_points;  // in path order, folds and bifurcations
+  bool switched_branch = false;              // the path left onto a bifurcated branch
   std::vector<PathPoint> points;
   Eigen::VectorXd z;    // unknowns at the last accepted point
   double lambda = 0.0;  // load factor at the last accepted point
   // residual: at the last accepted point
   ChainPose tip;       // tip pose at the last accepted point
   TipState tip_state;  // tip state (with the bending moment) at the last accepted point
+  // Sign of det dg/dz at the end point when the path converged (0 otherwise): it changes at every
+  // limit point and bifurcation point, so a neighbouring load's solution with the same sign and a
+  // short, undamped Newton step lies on the same smooth stretch of branch (ShootingSolver::
+  // solve_near).
+  int jacobian_sign = 0;
 };
+
+// Sign of det dg/dz of an evaluation with its Jacobian (0 when it is exactly singular).
+int jacobian_sign(const ShootingEvaluation& eval);
 
 // Follows the path from lambda = 0 to lambda = 1 (or until it stops), starting from `start`
 // (which must solve g(start, 0) = 0; default: problem.unloaded_unknowns()). Stops at once, with
 // a message, when dg/dz is singular at the start (a bifurcation, e.g. shortening a straight
-// inextensible chain).
+// inextensible chain). Folds and bifurcations passed are located (options) and recorded in
+// special_points and, as points of their own (kLimitPoint, kBifurcation), in points.
 LoadPath continue_load_path(const ShootingProblem& problem,
                             ElasticaIntegrator& integrator,
                             const ContinuationOptions& options,
@@ -82,5 +156,21 @@ LoadPath continue_load_path(const ShootingProblem& problem,
 
 // True when dg/dz is rank deficient at (z, lambda) (relative threshold 1e-10).
 bool singular_jacobian(const ShootingEvaluation& eval);
+
+// det(dg/dz S) divided by the product of the row norms of dg/dz S: a scale-free signed measure of
+// how singular dg/dz is, in [-1, 1] by Hadamard's inequality, with the sign of det(dg/dz).
+double normalized_determinant(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& scale);
+
+// The shape at arc lengths `s` (ascending) of the solution (z, lambda) and the bending moment at
+// each of its points from the statics of the part between the clamp and the point (no derivative
+// of the shape). Returns false with `error` when the integration fails.
+bool shape_with_moments(const ShootingProblem& problem,
+                        ElasticaIntegrator& integrator,
+                        const Eigen::VectorXd& z,
+                        double lambda,
+                        const std::vector<double>& s,
+                        std::vector<ShapePoint>& shape,
+                        std::vector<double>& moment,
+                        std::string& error);
 
 }  // namespace flexure

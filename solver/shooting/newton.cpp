@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace flexure {
@@ -63,17 +64,38 @@ NewtonOutcome newton_solve(const ShootingProblem& problem,
                            const NewtonOptions& options,
                            Eigen::VectorXd& z,
                            double& lambda,
-                           const ArclengthConstraint* constraint) {
+                           const ArclengthConstraint* constraint,
+                           NewtonRecorder* recorder) {
   NewtonOutcome out;
+  // The recorder watches every evaluation and is told which one is the current point.
+  struct Watch {
+    ElasticaIntegrator& integrator;
+    NewtonRecorder* recorder;
+    explicit Watch(ElasticaIntegrator& i, NewtonRecorder* r) : integrator(i), recorder(r) {
+      if (recorder != nullptr) integrator.set_step_observer(recorder->observer());
+    }
+    ~Watch() {
+      if (recorder != nullptr) integrator.set_step_observer(nullptr);
+    }
+    void begin() {
+      if (recorder != nullptr) recorder->begin_evaluation();
+    }
+    void accept() {
+      if (recorder != nullptr) recorder->accept_evaluation();
+    }
+  } watch(integrator, recorder);
   const int nz = problem.size();
   Augmented sys;
   long cost = integrator.steps_taken();
+  watch.begin();
   if (!assemble(problem, integrator, z, lambda, constraint, out.last, sys)) {
     out.message = "integration failed at the starting guess: " + out.last.error;
     return out;
   }
+  watch.accept();
   cost = integrator.steps_taken() - cost;  // of an evaluation at the current point
   double norm = sys.g.lpNorm<Eigen::Infinity>();
+  double previous_step = 0.0;
   for (int it = 0; it < options.max_iterations; ++it) {
     out.residual = norm;
     if (norm <= options.residual_tolerance) {
@@ -103,12 +125,14 @@ NewtonOutcome newton_solve(const ShootingProblem& problem,
         integrator.set_step_limit(
             before + std::max(kMinTrialSteps, static_cast<long>(options.trial_cost_factor * cost)));
       }
+      watch.begin();
       const bool evaluated =
           assemble(problem, integrator, z_try, lambda_try, constraint, eval, trial);
       integrator.set_step_limit(0);
       if (evaluated) {
         const double trial_norm = trial.g.lpNorm<Eigen::Infinity>();
         if (trial_norm < (1.0 - 1e-4 * t) * norm || trial_norm <= options.residual_tolerance) {
+          watch.accept();
           z = z_try;
           lambda = lambda_try;
           cost = integrator.steps_taken() - before;
@@ -122,6 +146,11 @@ NewtonOutcome newton_solve(const ShootingProblem& problem,
       }
     }
     const double step_norm = step.head(nz).lpNorm<Eigen::Infinity>();
+    // Steps at the integration's noise level say nothing about the basin.
+    if (previous_step > 1e-8 * (1.0 + z.lpNorm<Eigen::Infinity>())) {
+      out.contraction = std::max(out.contraction, step_norm / previous_step);
+    }
+    previous_step = step_norm;
     if (!accepted) {
       // At the integration noise floor no step reduces the residual any more.
       if (step_norm <= options.step_tolerance * (1.0 + z.lpNorm<Eigen::Infinity>()) &&

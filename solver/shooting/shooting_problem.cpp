@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
+
+#include "flexure/solver/common/errors.h"
 
 namespace flexure {
 
@@ -34,12 +37,24 @@ ShootingProblem::ShootingProblem(const SegmentChain& chain,
   chain_.validate();
   mask_ = homotopy_.mask.value_or(prescribed_mask(chain_.end));
   const PrescribedMask full = prescribed_mask(chain_.end);
-  if ((mask_.x && !full.x) || (mask_.y && !full.y) || (mask_.theta && !full.theta)) {
-    throw std::logic_error("ShootingProblem: a homotopy may only release prescribed coordinates");
+  // A coordinate the homotopy prescribes beyond the end condition takes the place of its given
+  // tip load, which must then be zero (segment_chain.h: the load is the support's reaction).
+  const std::pair<bool, double> added[] = {{mask_.x && !full.x, chain_.tip_load.Fx},
+                                           {mask_.y && !full.y, chain_.tip_load.Fy},
+                                           {mask_.theta && !full.theta, chain_.tip_load.M}};
+  const char* names[] = {"x (its tip force Fx", "y (its tip force Fy", "angle (its tip moment M"};
+  for (int i = 0; i < 3; ++i) {
+    if (added[i].first && added[i].second != 0.0) {
+      throw InvalidInput(fmt::format(
+          "a controlled tip {}) must be 0 (got {:g}): it is the reaction of the support that "
+          "moves the tip",
+          names[i],
+          added[i].second));
+    }
   }
   tip_unloaded_ = chain_.unloaded_tip();
   tip_start_ = homotopy_.tip_start.value_or(tip_unloaded_);
-  tip_target_ = chain_.prescribed_tip();
+  tip_target_ = homotopy_.tip_target.value_or(chain_.prescribed_tip());
   const bool follower = chain_.tip_load.follower != 0.0;
   unknown_names_.push_back("m0");
   if (mask_.x || follower) {
@@ -200,21 +215,22 @@ bool ShootingProblem::evaluate(const Eigen::VectorXd& z,
   const int M = interval_count();
   const ChainForces f = forces(z, lambda);
 
-  // Sensitivity columns of one interval: start-state columns (only m for single shooting), then
-  // the shot force components, then lambda.
-  const int init_cols = want_jacobian ? (M == 1 ? 1 : 4) : 0;
-  std::vector<ForceDerivative> derivs(init_cols);
+  // Sensitivity columns of one interval: its free start-state components, then the shot force
+  // components, then lambda. At the clamp only m(0) is free. At a cut, x and y need no columns:
+  // the elastica does not depend on where it starts (x, y enter no right-hand side, nor a rigid
+  // link or a node load), so d(end)/d(x, y at the cut) is the unit vector of x or y; theta and m
+  // get a column each.
+  std::vector<ForceDerivative> force_derivs;
   std::vector<int> force_cols;  // global column of each force sensitivity
   if (want_jacobian) {
     for (int idx : {index_Nx_, index_Ny_}) {
       if (idx < 0) continue;
       ForceDerivative d;
       d.dN.assign(n, idx == index_Nx_ ? Eigen::Vector2d(1.0, 0.0) : Eigen::Vector2d(0.0, 1.0));
-      derivs.push_back(std::move(d));
+      force_derivs.push_back(std::move(d));
       force_cols.push_back(idx);
     }
   }
-  const int lam_col = static_cast<int>(derivs.size());
   if (want_lambda_derivative) {
     ForceDerivative d;
     const double slope = homotopy_.load_slope;
@@ -227,13 +243,30 @@ bool ShootingProblem::evaluate(const Eigen::VectorXd& z,
       for (int j = load.node; j < n; ++j) d.dN[j] -= slope * Eigen::Vector2d(load.Fx, load.Fy);
       d.dmoment_drop[load.node] += slope * load.M;
     }
-    derivs.push_back(std::move(d));
+    force_derivs.push_back(std::move(d));
   }
-  const int Ns = static_cast<int>(derivs.size());
-  Eigen::Matrix<double, 4, Eigen::Dynamic> start_sens =
-      Eigen::Matrix<double, 4, Eigen::Dynamic>::Zero(4, Ns);
-  if (init_cols == 1) start_sens(3, 0) = 1.0;
-  if (init_cols == 4) start_sens.leftCols(4).setIdentity();
+  // Columns of the clamp's interval (index 0) and of a cut's: the start columns, then the rest.
+  struct Columns {
+    int start = 0;  // start-state columns
+    std::vector<ForceDerivative> derivs;
+    Eigen::Matrix<double, 4, Eigen::Dynamic> start_sens;
+  };
+  const auto columns = [&](int free_start) {
+    Columns c;
+    c.start = want_jacobian ? free_start : 0;
+    c.derivs.resize(c.start);
+    c.derivs.insert(c.derivs.end(), force_derivs.begin(), force_derivs.end());
+    const int Ns = static_cast<int>(c.derivs.size());
+    c.start_sens = Eigen::Matrix<double, 4, Eigen::Dynamic>::Zero(4, Ns);
+    if (c.start == 1) c.start_sens(3, 0) = 1.0;  // m
+    if (c.start == 2) {
+      c.start_sens(2, 0) = 1.0;  // theta
+      c.start_sens(3, 1) = 1.0;  // m
+    }
+    return c;
+  };
+  const Columns at_clamp = columns(1);
+  const Columns at_cut = M > 1 ? columns(2) : Columns{};
 
   out.residual.setZero(nz);
   if (want_jacobian) out.jacobian.setZero(nz, nz);
@@ -242,23 +275,33 @@ bool ShootingProblem::evaluate(const Eigen::VectorXd& z,
   Eigen::Matrix<double, 4, Eigen::Dynamic> D(4, nz);  // d(end state)/dz of the current interval
   Eigen::Vector4d D_lambda = Eigen::Vector4d::Zero();
   for (int k = 0; k < M; ++k) {
+    const Columns& cols = k == 0 ? at_clamp : at_cut;
     TipState end;
-    out.ok = integrator.integrate(
-        chain_, intervals_[k], f, derivs, interval_start(z, k), start_sens, end, out.error);
+    out.ok = integrator.integrate(chain_,
+                                  intervals_[k],
+                                  f,
+                                  cols.derivs,
+                                  interval_start(z, k),
+                                  cols.start_sens,
+                                  end,
+                                  out.error);
     if (!out.ok) return false;
     if (want_jacobian) {
       D.setZero();
-      if (M == 1) {
-        D.col(0) = end.sensitivity.col(0);
-      } else if (k == 0) {
-        D.col(0) = end.sensitivity.col(3);  // only m(0) is free at the clamp
+      if (k == 0) {
+        D.col(0) = end.sensitivity.col(0);  // only m(0) is free at the clamp
       } else {
-        D.middleCols(root_count_ + 4 * (k - 1), 4) = end.sensitivity.leftCols(4);
+        const int first = root_count_ + 4 * (k - 1);
+        D(0, first) = 1.0;  // x at the cut moves the end along x
+        D(1, first + 1) = 1.0;
+        D.col(first + 2) = end.sensitivity.col(0);
+        D.col(first + 3) = end.sensitivity.col(1);
       }
       for (std::size_t c = 0; c < force_cols.size(); ++c) {
-        D.col(force_cols[c]) += end.sensitivity.col(init_cols + c);
+        D.col(force_cols[c]) += end.sensitivity.col(cols.start + c);
       }
     }
+    const int lam_col = cols.start + static_cast<int>(force_cols.size());
     if (want_lambda_derivative) D_lambda = end.sensitivity.col(lam_col);
     const Eigen::Vector4d E(end.x, end.y, end.theta, end.m);
     if (k + 1 < M) {

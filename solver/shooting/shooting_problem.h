@@ -45,12 +45,15 @@ struct ShootingEvaluation {
 // stress-free chain (segment_chain.h). Loads are multiplied by load_offset + load_slope * lambda;
 // each prescribed tip coordinate moves from tip_start (lambda = 0) to its target (lambda = 1).
 // `mask` may release prescribed coordinates (their conjugate load is then the given one, zero),
-// which the solver uses to reach a pinned end in two stages (shooting_solver.cpp).
+// which the solver uses to reach a pinned end in two stages (shooting_solver.cpp), and may
+// prescribe a coordinate the end condition leaves free (displacement control: its conjugate tip
+// load, which must be given as zero, becomes the support's reaction).
 struct Homotopy {
   double load_offset = 0.0;
   double load_slope = 1.0;
-  std::optional<ChainPose> tip_start;  // default: the stress-free tip
-  std::optional<PrescribedMask> mask;  // default: prescribed_mask(chain.end)
+  std::optional<ChainPose> tip_start;   // default: the stress-free tip
+  std::optional<ChainPose> tip_target;  // default: chain.prescribed_tip()
+  std::optional<PrescribedMask> mask;   // default: prescribed_mask(chain.end)
 };
 
 struct MultipleShootingOptions {

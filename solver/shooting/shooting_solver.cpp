@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/shooting/inflection_count.h"
 
 namespace flexure {
 
@@ -33,7 +34,72 @@ void ShootingSolver::Options::validate() const {
   if (shape_points < 0) {
     throw InvalidInput(fmt::format("shape_points must be >= 0 (got {})", shape_points));
   }
+  const ContinuationOptions& c = o.continuation;
+  if (!(std::isfinite(c.max_step) && c.max_step >= c.min_step)) {
+    throw InvalidInput(fmt::format(
+        "the largest continuation step must be finite and at least the smallest step {:g} (got "
+        "{})",
+        c.min_step,
+        c.max_step));
+  }
+  if (!(std::isfinite(c.max_load_step) && c.max_load_step >= 0.0)) {
+    throw InvalidInput(
+        fmt::format("the largest load-factor step must be finite and >= 0 (0: no cap; got {})",
+                    c.max_load_step));
+  }
+  if (c.switch_at_bifurcation < 0) {
+    throw InvalidInput(
+        fmt::format("the bifurcation to switch branch at is counted from 1 (0: none; got {})",
+                    c.switch_at_bifurcation));
+  }
+  if (c.branch_side != 1 && c.branch_side != -1) {
+    throw InvalidInput(fmt::format("branch_side must be +1 or -1 (got {})", c.branch_side));
+  }
+  if (!(std::isfinite(c.branch_switch_step) && c.branch_switch_step > 0.0)) {
+    throw InvalidInput(
+        fmt::format("branch_switch_step must be finite and > 0 (got {})", c.branch_switch_step));
+  }
+  if (!(c.location_tolerance > 0.0 && c.singular_tolerance > 0.0)) {
+    throw InvalidInput("the location and singular-value tolerances must be > 0");
+  }
+  if (c.shape_points < 0 || c.shape_points == 1) {
+    throw InvalidInput(
+        fmt::format("path shape points must be 0 (none) or >= 2 (got {})", c.shape_points));
+  }
+  if (!(max_neighbour_jump > 0.0)) {
+    throw InvalidInput(fmt::format("max_neighbour_jump must be > 0 (got {})", max_neighbour_jump));
+  }
 }
+
+const char* to_string(TipCoordinate coordinate) {
+  switch (coordinate) {
+    case TipCoordinate::kX:
+      return "tip-x";
+    case TipCoordinate::kY:
+      return "tip-y";
+    case TipCoordinate::kTheta:
+      return "tip-angle";
+  }
+  return "unknown";
+}
+
+namespace {
+
+// Newton's recorder of the curvature (inflection_count.h) when the inflection points are wanted
+// and the backend shows its steps; null otherwise (finish() then counts on an integration of its
+// own).
+CurvatureRecorder* curvature_recorder(const ShootingSolver::Options& options,
+                                      CurvatureRecorder& recorder) {
+  const bool explicit_rk = options.backend == ElasticaIntegrator::Backend::kRk8pd ||
+                           options.backend == ElasticaIntegrator::Backend::kDormandPrince;
+  return options.count_inflections && explicit_rk ? &recorder : nullptr;
+}
+
+void take_count(const CurvatureRecorder& recorder, ShootingResult& result) {
+  if (recorder.has_accepted()) result.inflection_points = recorder.inflection_points();
+}
+
+}  // namespace
 
 double unique_equilibrium_bound(const SegmentChain& chain) {
   chain.validate();
@@ -98,6 +164,17 @@ ShootingResult ShootingSolver::finish(const ShootingProblem& problem,
   result.reaction = problem.reaction(z, lambda);
   const ChainForces forces = problem.forces(z, lambda);
   const Eigen::Vector2d N_tip = forces.N.back();
+  InflectionCount count;
+  if (options_.count_inflections && result.converged() && result.inflection_points < 0) {
+    std::string error;
+    if (!count_inflections(problem, z, lambda, integrator, count, error)) {
+      result.set_converged(false);
+      result.message += "; final integration failed: " + error;
+      return result;
+    }
+    result.inflection_points = count.inflection_points;
+    known_tip = &count.tip;
+  }
   if (known_tip != nullptr && options_.shape_points <= 1) {
     result.tip = ChainPose{known_tip->x, known_tip->y, known_tip->theta};
     result.tip_load = Reaction{N_tip.x(), N_tip.y(), known_tip->m};
@@ -143,14 +220,23 @@ ShootingResult ShootingSolver::solve(const SegmentChain& chain) const {
       // Linear theory: z(1) ~ z(0) + dz/dlambda, the path tangent at zero load.
       Eigen::VectorXd z = z0 + robust_solve(start.jacobian, -start.d_lambda);
       double lambda = 1.0;
-      NewtonOutcome nw = newton_solve(problem, integrator, options_.newton, z, lambda, nullptr);
+      CurvatureRecorder recorder;
+      NewtonOutcome nw = newton_solve(problem,
+                                      integrator,
+                                      options_.newton,
+                                      z,
+                                      lambda,
+                                      nullptr,
+                                      curvature_recorder(options_, recorder));
       result.iterations += nw.iterations;
       if (nw.converged()) {
+        take_count(recorder, result);
         result.set_converged(true);
         result.method = "direct Newton";
         result.path = ShootingPath::kDirectNewton;
         result.residual = nw.residual;
         result.message = nw.message;
+        result.jacobian_sign = jacobian_sign(nw.last);
         return finish(problem, integrator, z, 1.0, result, &nw.last.tip);
       }
     }
@@ -176,15 +262,117 @@ ShootingResult ShootingSolver::solve(const SegmentChain& chain) const {
   result.continuation_steps = path.steps;
   result.limit_points = path.limit_points;
   result.first_limit_load_factor = path.first_limit_load_factor;
+  result.bifurcation_points = path.bifurcation_points;
+  result.special_points = path.special_points;
   result.residual = path.residual;
   result.set_converged(path.converged());
   result.message = path.message;
+  result.jacobian_sign = path.jacobian_sign;
   if (!path.converged()) {
     // Report the furthest equilibrium that was reached.
     result.message = fmt::format("not converged: {}", path.message);
   }
   return finish(problem, integrator, path.z, path.lambda, result, &path.tip_state);
 }
+
+namespace {
+
+// The unknowns of `to` at the solution z (load factor lambda) of `from` on the same chain: shared
+// names are copied, a force component that `to` shoots for and `from` does not comes from the
+// internal force at the root.
+Eigen::VectorXd carry_unknowns(const ShootingProblem& from,
+                               const Eigen::VectorXd& z,
+                               double lambda,
+                               const ShootingProblem& to) {
+  Eigen::VectorXd out = to.unloaded_unknowns();
+  const ChainForces f = from.forces(z, lambda);
+  const auto& names = from.unknown_names();
+  for (int i = 0; i < to.size(); ++i) {
+    const std::string& name = to.unknown_names()[i];
+    const auto it = std::find(names.begin(), names.end(), name);
+    if (it != names.end()) {
+      out[i] = z[it - names.begin()];
+    } else if (name == "Nx0") {
+      out[i] = f.N[0].x();
+    } else if (name == "Ny0") {
+      out[i] = f.N[0].y();
+    }
+  }
+  return out;
+}
+
+// The bifurcation a later stage switches at, counted within that stage: none when an earlier
+// stage switched already or the count lies in an earlier stage.
+int remaining_switch(const ContinuationOptions& options, const LoadPath& earlier) {
+  if (options.switch_at_bifurcation == 0 || earlier.switched_branch) return 0;
+  const int left = options.switch_at_bifurcation - earlier.bifurcation_points;
+  return left > 0 ? left : 0;
+}
+
+// Appends the points and special points of a later stage to `joined` (its start point, the end of
+// the previous stage, is not repeated) with stage number `stage`, and sums the counts.
+void append_stage(LoadPath& joined, const LoadPath& later, int stage) {
+  const int offset = static_cast<int>(joined.points.size()) - 1;
+  for (PathPoint p : later.points) {
+    if (p.status == PathStatus::kStart) continue;
+    p.stage = stage;
+    joined.points.push_back(std::move(p));
+  }
+  for (SpecialPoint sp : later.special_points) {
+    sp.stage = stage;
+    if (sp.index >= 0) sp.index += offset;
+    if (sp.index_after >= 0) sp.index_after += offset;
+    if (sp.kind == SpecialPointKind::kLimitPoint && joined.limit_points == 0) {
+      joined.first_limit_load_factor = sp.lambda;
+    }
+    joined.special_points.push_back(std::move(sp));
+  }
+  joined.set_converged(later.converged());
+  joined.steps += later.steps;
+  joined.rejected_steps += later.rejected_steps;
+  joined.newton_iterations += later.newton_iterations;
+  joined.location_corrections += later.location_corrections;
+  joined.integrator_steps += later.integrator_steps;
+  joined.limit_points += later.limit_points;
+  joined.bifurcation_points += later.bifurcation_points;
+  joined.switched_branch = joined.switched_branch || later.switched_branch;
+  joined.z = later.z;
+  joined.residual = later.residual;
+  joined.tip = later.tip;
+  joined.tip_state = later.tip_state;
+}
+
+// Throws InvalidInput when the tip pose `target` (its coordinates in `mask`) is out of the chain's
+// reach (tip_reach.h): both x and y as for a pinned end, one of them alone within the length.
+void require_controlled_reach(const SegmentChain& chain,
+                              const PrescribedMask& mask,
+                              const ChainPose& target,
+                              TipCoordinate coordinate) {
+  if (mask.x && mask.y) {
+    SegmentChain pinned = chain;
+    pinned.end = mask.theta ? EndCondition::kFixed : EndCondition::kPinned;
+    pinned.prescribed = TipPrescription{target.x, target.y, target.theta};
+    pinned.tip_load = TipLoad{};
+    pinned.node_loads.clear();
+    require_reachable_tip(pinned);
+    return;
+  }
+  if (coordinate == TipCoordinate::kTheta) return;
+  const double value = coordinate == TipCoordinate::kX ? target.x : target.y;
+  const ChainPose unloaded = chain.unloaded_tip();
+  const double start = coordinate == TipCoordinate::kX ? unloaded.x : unloaded.y;
+  const double length = chain.total_length();
+  if (std::abs(value) >= length && value != start) {
+    throw InvalidInput(fmt::format(
+        "the controlled {} = {:g} cannot be reached: an inextensible chain of length {:g} reaches "
+        "less than its length from the clamp (except straight along its axis)",
+        to_string(coordinate),
+        value,
+        length));
+  }
+}
+
+}  // namespace
 
 ShootingSolver::TwoStageRun ShootingSolver::run_two_stages(const SegmentChain& chain,
                                                            ElasticaIntegrator& integrator,
@@ -215,23 +403,9 @@ ShootingSolver::TwoStageRun ShootingSolver::run_two_stages(const SegmentChain& c
   stage2.tip_start = start;
   run.p2.emplace(chain, options_.multiple_shooting, stage2);
   // Carry the stage-1 solution over; the released force component becomes an unknown.
-  const ShootingProblem& p1 = *run.p1;
-  const ShootingProblem& p2 = *run.p2;
-  Eigen::VectorXd z0 = p2.unloaded_unknowns();
-  const ChainForces f1 = p1.forces(run.s1.z, 1.0);
-  for (int i = 0; i < p2.size(); ++i) {
-    const std::string& name = p2.unknown_names()[i];
-    const auto& names1 = p1.unknown_names();
-    const auto it = std::find(names1.begin(), names1.end(), name);
-    if (it != names1.end()) {
-      z0[i] = run.s1.z[it - names1.begin()];
-    } else if (name == "Nx0") {
-      z0[i] = f1.N[0].x();
-    } else if (name == "Ny0") {
-      z0[i] = f1.N[0].y();
-    }
-  }
-  run.s2 = continue_load_path(p2, integrator, copt, options_.newton, &z0);
+  const Eigen::VectorXd z0 = carry_unknowns(*run.p1, run.s1.z, 1.0, *run.p2);
+  copt.switch_at_bifurcation = remaining_switch(copt, run.s1);
+  run.s2 = continue_load_path(*run.p2, integrator, copt, options_.newton, &z0);
   return run;
 }
 
@@ -310,7 +484,103 @@ ShootingResult ShootingSolver::solve_from(const SegmentChain& chain,
   result.residual = nw.residual;
   result.set_converged(nw.converged());
   result.message = nw.message;
+  if (nw.converged()) result.jacobian_sign = jacobian_sign(nw.last);
   return finish(problem, integrator, z, nw.converged() ? 1.0 : 0.0, result);
+}
+
+ShootingResult ShootingSolver::solve_near(const SegmentChain& chain,
+                                          const ShootingNeighbour& neighbour) const {
+  options_.validate();
+  const ShootingProblem problem(chain, options_.multiple_shooting);
+  ShootingResult result;
+  result.method = "Newton from the neighbouring load";
+  result.path = ShootingPath::kFromNeighbour;
+  const auto refuse = [&](std::string why) {
+    result.set_converged(false);
+    result.message = "not taken from the neighbouring load: " + std::move(why);
+    return result;
+  };
+  const int nz = problem.size();
+  const int root = problem.root_unknown_count();
+  const std::vector<double>& start =
+      neighbour.predicted.empty() ? neighbour.unknowns : neighbour.predicted;
+  if (neighbour.unknowns.size() < static_cast<std::size_t>(root) ||
+      (!neighbour.predicted.empty() && neighbour.predicted.size() != neighbour.unknowns.size())) {
+    throw InvalidInput(fmt::format(
+        "a neighbour needs at least the {} root unknowns, and a prediction as many unknowns as "
+        "the neighbour",
+        root));
+  }
+  if (neighbour.jacobian_sign == 0) return refuse("the sign of its Jacobian is not known");
+  for (double v : start) require_finite(v, "neighbouring unknowns");
+  require_reachable_tip(chain);
+  ElasticaIntegrator integrator(options_.integrator_options());
+  Eigen::VectorXd z;
+  if (static_cast<int>(start.size()) == nz) {
+    z = Eigen::Map<const Eigen::VectorXd>(start.data(), nz);
+  } else {
+    // Other multiple-shooting cuts: the root unknowns carry over, the cut states come from one
+    // integration from the root. (The sign of det dg/dz does not depend on the cuts: the
+    // continuity rows eliminate to the single-shooting Jacobian, docs/theory-shooting.md.)
+    std::string error;
+    const Eigen::VectorXd head = Eigen::Map<const Eigen::VectorXd>(start.data(), root);
+    if (!problem.complete_guess(head, 1.0, integrator, z, error)) {
+      return refuse("integration from its root unknowns failed: " + error);
+    }
+  }
+  double lambda = 1.0;
+  CurvatureRecorder recorder;
+  const NewtonOutcome nw = newton_solve(problem,
+                                        integrator,
+                                        options_.newton,
+                                        z,
+                                        lambda,
+                                        nullptr,
+                                        curvature_recorder(options_, recorder));
+  result.iterations = nw.iterations;
+  result.residual = nw.residual;
+  result.integrator_steps = integrator.steps_taken();
+  // The checks of the header comment, in order; the first that fails is the reason.
+  constexpr double kMaxContraction = 0.25;
+  if (!nw.converged()) return refuse(nw.message);
+  if (nw.damped) return refuse("Newton needed a damped step (a start far from the root)");
+  if (nw.contraction > kMaxContraction) {
+    return refuse(fmt::format(
+        "Newton's steps shrank only by {:.3g} per iteration (a start near the edge of the root's "
+        "basin)",
+        nw.contraction));
+  }
+  const int sign = jacobian_sign(nw.last);
+  if (sign != neighbour.jacobian_sign) {
+    return refuse(
+        "the sign of det dg/dz changed (a limit point or bifurcation point lies between)");
+  }
+  if (!neighbour.predicted.empty() && static_cast<int>(neighbour.predicted.size()) == nz) {
+    // The prediction must have made most of the move (at a fold it degrades: the path bends).
+    const Eigen::VectorXd predicted = Eigen::Map<const Eigen::VectorXd>(start.data(), nz);
+    const Eigen::VectorXd from = Eigen::Map<const Eigen::VectorXd>(neighbour.unknowns.data(), nz);
+    const double correction = (z - predicted).lpNorm<Eigen::Infinity>();
+    const double move = (predicted - from).lpNorm<Eigen::Infinity>();
+    if (correction > 0.5 * move + 1e-8 * (1.0 + z.lpNorm<Eigen::Infinity>())) {
+      return refuse(fmt::format(
+          "Newton moved {:.3g} from the prediction, more than half the predicted move {:.3g}",
+          correction,
+          move));
+    }
+  }
+  const TipState& tip = nw.last.tip;
+  const double turn = std::fabs(tip.theta - neighbour.tip.theta);
+  const double moved =
+      std::hypot(tip.x - neighbour.tip.x, tip.y - neighbour.tip.y) / chain.total_length();
+  if (!(std::max(turn, moved) <= options_.max_neighbour_jump)) {
+    return refuse(
+        fmt::format("the tip jumped (turned {:.3g} rad, moved {:.3g} lengths)", turn, moved));
+  }
+  result.set_converged(true);
+  result.jacobian_sign = sign;
+  take_count(recorder, result);
+  result.message = fmt::format("converged from the neighbouring load: {}", nw.message);
+  return finish(problem, integrator, z, 1.0, result, &nw.last.tip);
 }
 
 LoadPath ShootingSolver::load_path(const SegmentChain& chain) const {
@@ -331,22 +601,9 @@ LoadPath ShootingSolver::load_path(const SegmentChain& chain) const {
     joined.message = fmt::format("stage 1 (loads, {} released) {}", released, joined.message);
     return joined;
   }
-  for (PathPoint p : run.s2.points) {
-    if (p.status == PathStatus::kStart) continue;
-    p.stage = 2;
-    joined.points.push_back(p);
-  }
-  joined.set_converged(run.s2.converged());
-  joined.steps += run.s2.steps;
-  joined.rejected_steps += run.s2.rejected_steps;
-  joined.newton_iterations += run.s2.newton_iterations;
-  joined.limit_points += run.s2.limit_points;
-  joined.z = run.s2.z;
+  append_stage(joined, run.s2, 2);
   joined.lambda = run.s2.converged() ? 1.0 : 0.0;
   joined.lambda_reached = joined.lambda;
-  joined.residual = run.s2.residual;
-  joined.tip = run.s2.tip;
-  joined.tip_state = run.s2.tip_state;
   joined.message = fmt::format(
       "two stages: stage 1 (loads, {} released) {}; stage 2 ({} moved to "
       "its target, lambda = fraction moved) {}",
@@ -357,12 +614,111 @@ LoadPath ShootingSolver::load_path(const SegmentChain& chain) const {
   return joined;
 }
 
+LoadPath ShootingSolver::controlled_path(const SegmentChain& chain,
+                                         const DisplacementControl& control) const {
+  options_.validate();
+  chain.validate();
+  require_finite(control.target, "the controlled tip coordinate's target");
+  const PrescribedMask end_mask = prescribed_mask(chain.end);
+  PrescribedMask mask = end_mask;
+  const ChainPose unloaded = chain.unloaded_tip();
+  ChainPose target = chain.prescribed_tip();
+  SegmentChain first = chain;  // stage 1: the loads, the controlled coordinate held or free
+  switch (control.coordinate) {
+    case TipCoordinate::kX:
+      mask.x = true;
+      target.x = control.target;
+      if (end_mask.x) first.prescribed.x = unloaded.x;
+      break;
+    case TipCoordinate::kY:
+      mask.y = true;
+      target.y = control.target;
+      if (end_mask.y) first.prescribed.y = unloaded.y;
+      break;
+    case TipCoordinate::kTheta:
+      mask.theta = true;
+      target.theta = control.target;
+      if (end_mask.theta) first.prescribed.theta = unloaded.theta;
+      break;
+  }
+  require_controlled_reach(chain, mask, target, control.coordinate);
+  require_reachable_tip(first);
+  // The controlled coordinate's load must be zero: ShootingProblem refuses it, name it here first.
+  Homotopy moving;
+  moving.load_offset = 1.0;
+  moving.load_slope = 0.0;
+  moving.tip_target = target;
+  moving.mask = mask;
+  (void)ShootingProblem(chain, options_.multiple_shooting, moving);
+
+  bool loaded = chain.tip_load.Fx != 0.0 || chain.tip_load.Fy != 0.0 || chain.tip_load.M != 0.0 ||
+                chain.tip_load.follower != 0.0;
+  for (const NodeLoad& load : chain.node_loads) {
+    loaded = loaded || load.Fx != 0.0 || load.Fy != 0.0 || load.M != 0.0;
+  }
+  const ChainPose first_target = first.prescribed_tip();
+  loaded = loaded || (end_mask.x && first_target.x != unloaded.x) ||
+           (end_mask.y && first_target.y != unloaded.y) ||
+           (end_mask.theta && first_target.theta != unloaded.theta);
+
+  LoadPath joined;
+  ChainPose start = unloaded;
+  Eigen::VectorXd z0;
+  std::string first_message;
+  if (loaded) {
+    joined = load_path(first);
+    if (!joined.converged()) {
+      joined.message = fmt::format("stage 1 (the loads applied before {} moves) {}",
+                                   to_string(control.coordinate),
+                                   joined.message);
+      return joined;
+    }
+    start = joined.tip;
+    first_message = joined.message;
+  }
+  moving.tip_start = start;
+  const ShootingProblem problem(chain, options_.multiple_shooting, moving);
+  if (loaded)
+    z0 = carry_unknowns(ShootingProblem(first, options_.multiple_shooting), joined.z, 1.0, problem);
+  ElasticaIntegrator integrator(options_.integrator_options());
+  ContinuationOptions copt = options_.continuation;
+  copt.record_path = true;
+  copt.switch_at_bifurcation = remaining_switch(copt, joined);
+  LoadPath moved =
+      continue_load_path(problem, integrator, copt, options_.newton, loaded ? &z0 : nullptr);
+  const double from = control.coordinate == TipCoordinate::kX   ? start.x
+                      : control.coordinate == TipCoordinate::kY ? start.y
+                                                                : start.theta;
+  const std::string what = fmt::format("{} moved from {:.9g} to {:.9g} (lambda = fraction moved)",
+                                       to_string(control.coordinate),
+                                       from,
+                                       control.target);
+  if (!loaded) {
+    moved.message = fmt::format("{}: {}", what, moved.message);
+    return moved;
+  }
+  int stage = 1;
+  for (const PathPoint& p : joined.points) stage = std::max(stage, p.stage);
+  append_stage(joined, moved, stage + 1);
+  joined.lambda = moved.lambda;
+  joined.lambda_reached = moved.lambda_reached;
+  joined.message =
+      fmt::format("stage 1 (the loads) {}; then {}: {}", first_message, what, moved.message);
+  return joined;
+}
+
 ShootingResult solve_shooting(const SegmentChain& chain, const ShootingSolver::Options& options) {
   return ShootingSolver(options).solve(chain);
 }
 
 LoadPath trace_load_path(const SegmentChain& chain, const ShootingSolver::Options& options) {
   return ShootingSolver(options).load_path(chain);
+}
+
+LoadPath trace_controlled_path(const SegmentChain& chain,
+                               const DisplacementControl& control,
+                               const ShootingSolver::Options& options) {
+  return ShootingSolver(options).controlled_path(chain, control);
 }
 
 }  // namespace flexure

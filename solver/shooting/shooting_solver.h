@@ -39,6 +39,7 @@ enum class ShootingPath {
   kContinuation,          // pseudo-arclength continuation from the unloaded chain
   kTwoStageContinuation,  // a straight chain with both tip coordinates prescribed
   kNewtonFromGuess,       // solve_from(): Newton from a caller's guess
+  kFromNeighbour,         // solve_near(): Newton from a neighbouring load's solution, checked
 };
 
 struct ShootingResult : SolveStatus {
@@ -48,9 +49,11 @@ struct ShootingResult : SolveStatus {
   // iterations: Newton iterations, summed over continuation steps
   int continuation_steps = 0;  // accepted continuation steps (0 for a direct solve)
   int limit_points = 0;        // folds of the load factor passed on the path (snap-through)
-  double first_limit_load_factor = 0.0;  // load factor at the first of them
-  int shooting_intervals = 1;            // 1 = single shooting; more = multiple shooting cuts + 1
-  long integrator_steps = 0;             // integrator steps taken in all integrations of this solve
+  double first_limit_load_factor = 0.0;      // load factor at the first of them (located)
+  int bifurcation_points = 0;                // simple bifurcation points passed on the path
+  std::vector<SpecialPoint> special_points;  // the folds and bifurcations, located
+  int shooting_intervals = 1;  // 1 = single shooting; more = multiple shooting cuts + 1
+  long integrator_steps = 0;   // integrator steps taken in all integrations of this solve
   // residual: max |g_i| of the far-end conditions at the returned point
   double load_factor = 0.0;  // load factor reached (1 when converged)
 
@@ -61,6 +64,12 @@ struct ShootingResult : SolveStatus {
   std::vector<std::string> unknown_names;
   std::vector<double> unknowns;   // m(0), shot force components, then the states at the cuts
   std::vector<ShapePoint> shape;  // on request (Options::shape_points), s from 0 to total length
+  // On request (Options::count_inflections): interior sign changes of the curvature m/EI + kappa0
+  // (inflection_count.h); -1 when not counted.
+  int inflection_points = -1;
+  // Sign of det dg/dz at the returned point (0: not known, e.g. a two-stage path); it changes at
+  // every limit point and bifurcation point of a branch (solve_near checks it).
+  int jacobian_sign = 0;
 
   // Howell's tip description for a cantilever of length l: (x/l, y/l, theta).
   TipPose tip_pose(double length = 1.0) const {
@@ -69,6 +78,25 @@ struct ShootingResult : SolveStatus {
 };
 
 enum class ShootingStrategy { kAuto, kContinuation, kDirect };
+
+// Displacement control of a path (ShootingSolver::controlled_path): a tip coordinate is moved
+// and is the path parameter, instead of the loads growing in proportion.
+enum class TipCoordinate { kX, kY, kTheta };
+const char* to_string(TipCoordinate coordinate);  // "tip-x", "tip-y", "tip-angle"
+struct DisplacementControl {
+  TipCoordinate coordinate = TipCoordinate::kY;
+  double target = 0.0;  // the coordinate's value at the end of the path (root frame; rad)
+};
+
+// A solution at a neighbouring load to start from (ShootingSolver::solve_near): the next point of
+// a sweep, say.
+struct ShootingNeighbour {
+  std::vector<double> unknowns;   // all unknowns of the neighbour's ShootingResult
+  int jacobian_sign = 0;          // the neighbour's ShootingResult::jacobian_sign (must be +-1)
+  std::vector<double> predicted;  // optional: the unknowns predicted for this load (same size),
+                                  // e.g. extrapolated from two neighbours; empty: `unknowns`
+  ChainPose tip;                  // the neighbour's tip, for the jump check
+};
 
 // Contraction constant of the elastica map theta -> integral of m/EI for a chain with a free end
 // and dead loads only; below 1 the equilibrium is unique for any end moment. Returns +infinity when
@@ -93,6 +121,13 @@ class ShootingSolver {
     MultipleShootingOptions multiple_shooting;  // how finely large loads are cut (see
                                                 // shooting_problem.h)
     int shape_points = 0;  // > 1: return the shape at this many equally spaced s
+    // Count the inflection points (ShootingResult::inflection_points) from the integration of the
+    // solution, without a sampled shape (inflection_count.h).
+    bool count_inflections = false;
+    // solve_near: the largest change of the tip angle (rad) and of the tip position (in total
+    // lengths) from the neighbour that is accepted; a larger one is a jump (a snap-through, or
+    // another branch).
+    double max_neighbour_jump = 0.2;
 
     // Throws InvalidInput naming the first field outside its range (checked by every solve).
     void validate() const;
@@ -119,11 +154,34 @@ class ShootingSolver {
   // guess holds either the root unknowns (m0, then any shot force components) or all unknowns.
   ShootingResult solve_from(const SegmentChain& chain, const std::vector<double>& guess) const;
 
+  // Newton at full load from a neighbouring load's solution, kept only when it provably stays on
+  // the neighbour's smooth stretch of branch: Newton converges with full steps that shrink at
+  // least 4x per iteration (the start lies well inside the root's basin), the sign of det dg/dz is
+  // the neighbour's (no limit point or bifurcation point between them), Newton moves less from a
+  // prediction than half the predicted move, and the tip moves by at most max_neighbour_jump.
+  // Otherwise the result is not converged and says which check failed;
+  // the caller then solves from zero load (solve()). Neighbours with other multiple-shooting cuts
+  // lend their root unknowns. Whether that stretch of branch is the proportional-loading answer at
+  // this load is the caller's to know (for a load on the same ray from zero, farther out, it is:
+  // benchmarks/studies/beam_sweep_solver.h); limit_points is 0 (the caller knows the path).
+  ShootingResult solve_near(const SegmentChain& chain, const ShootingNeighbour& neighbour) const;
+
   // Load path by pseudo-arclength continuation from zero load (all points recorded). A straight
   // chain with both end coordinates prescribed is recorded in the two stages solve() uses: stage 1
   // points have PathPoint::stage = 1 (lambda = load factor), stage 2 points stage = 2 (lambda =
   // fraction of the released coordinate's travel, loads at full value).
   LoadPath load_path(const SegmentChain& chain) const;
+
+  // Path under displacement control: stage 1 applies the given loads by proportional loading
+  // (load_path(), recorded; skipped when the chain carries no load and prescribes no motion) with
+  // the controlled coordinate held at its unloaded value when the end condition prescribes it,
+  // free otherwise; the last stage moves the controlled coordinate linearly from where stage 1
+  // left it to `control.target` with the loads at full value (lambda = fraction moved), so the
+  // support's reaction (PathPoint::tip_load) traced against the coordinate is the
+  // force-displacement curve. The end condition's other prescribed coordinates stay at their
+  // targets; the load conjugate to the controlled coordinate must be zero (it is the reaction).
+  // Throws InvalidInput for a target the chain cannot reach.
+  LoadPath controlled_path(const SegmentChain& chain, const DisplacementControl& control) const;
 
   const Options& options() const { return options_; }
 
@@ -151,5 +209,8 @@ class ShootingSolver {
 // CLI entry points.
 ShootingResult solve_shooting(const SegmentChain& chain, const ShootingSolver::Options& options);
 LoadPath trace_load_path(const SegmentChain& chain, const ShootingSolver::Options& options);
+LoadPath trace_controlled_path(const SegmentChain& chain,
+                               const DisplacementControl& control,
+                               const ShootingSolver::Options& options);
 
 }  // namespace flexure

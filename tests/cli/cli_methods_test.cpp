@@ -14,6 +14,8 @@
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "tests/support/cli_test_support.h"
@@ -78,7 +80,11 @@ TEST(CliMethods, ShootingIntegratorIsSelectable) {
   }
   EXPECT_NEAR(cvodes["b_over_l"].get<double>(), rk["b_over_l"].get<double>(), 1e-9);
   EXPECT_NE(run_flexure("beam --help").out.find("--integrator"), std::string::npos);
-  EXPECT_EQ(run_flexure("beam --alpha2 3 --method elliptic --integrator cvodes").exit_code, 2);
+  const test::CommandResult refused =
+      run_flexure("beam --alpha2 3 --method elliptic --integrator cvodes");
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("--method elliptic does not use one"), std::string::npos)
+      << refused.err;
 }
 
 TEST(CliMethods, ChainKeysMeanWhatTheirNamesSay) {
@@ -185,6 +191,8 @@ TEST(CliMethods, TomlErrorsNameTheKeyAndLine) {
   EXPECT_NE(r.err.find("length"), std::string::npos) << r.err;
   r = run_flexure("beam --chain " + (dir / "absent.toml").string());
   EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("cannot read --chain file"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("absent.toml"), std::string::npos) << r.err;
 }
 
 TEST(CliMethods, PathFollowsLimitPointsTheEllipticSolverReports) {
@@ -218,14 +226,30 @@ TEST(CliMethods, PathFollowsLimitPointsTheEllipticSolverReports) {
 }
 
 TEST(CliMethods, InvalidCombinationsExitTwo) {
-  EXPECT_EQ(run_flexure("beam --alpha2 1 --method elliptic --boundary guided").exit_code, 2);
-  EXPECT_EQ(run_flexure("beam --alpha2 1 --tip-x 0.9").exit_code,
-            2);  // free end: nothing prescribed
-  EXPECT_EQ(run_flexure("beam --alpha2 1 --boundary slider --method shooting").exit_code, 2);
-  EXPECT_EQ(run_flexure("beam --alpha2 1 --method chain --elements 0").exit_code, 2);
-  EXPECT_EQ(run_flexure("beam --alpha2 1 --boundary sideways").exit_code, 2);
-  EXPECT_EQ(run_flexure("beam").exit_code, 2);
-  EXPECT_EQ(run_flexure("path --alpha2 1 --out /nonexistent/dir/p.h5").exit_code, 2);
+  // Each refusal is for its own reason: exit 2 and key words of that reason on stderr.
+  const struct {
+    const char* args;
+    std::vector<std::string> reason;
+  } cases[] = {
+      {"beam --alpha2 1 --method elliptic --boundary guided",
+       {"elliptic method solves the uniform cantilever with a free end", "shooting or chain"}},
+      // A free end prescribes nothing.
+      {"beam --alpha2 1 --tip-x 0.9", {"--tip-x is not prescribed by --boundary free"}},
+      {"beam --alpha2 1 --boundary slider --method shooting",
+       {"slider end prescribes the tip y", "alpha2 must be 0"}},
+      {"beam --alpha2 1 --method chain --elements 0", {"--elements", "= 0 is outside"}},
+      {"beam --alpha2 1 --boundary sideways", {"--boundary", "sideways not in"}},
+      {"beam", {"one of --alpha2, --theta0 or --b-over-l is required"}},
+      {"path --alpha2 1 --out /nonexistent/dir/p.h5",
+       {"--out", "directory '/nonexistent/dir' does not exist"}},
+  };
+  for (const auto& c : cases) {
+    const test::CommandResult r = run_flexure(c.args);
+    EXPECT_EQ(r.exit_code, 2) << c.args;
+    for (const std::string& word : c.reason) {
+      EXPECT_NE(r.err.find(word), std::string::npos) << c.args << ": " << r.err;
+    }
+  }
 }
 
 TEST(CliMethods, ShootingBranchSaysWhichPathWasTaken) {

@@ -64,7 +64,8 @@ TEST(PrbmCli, DeriveInitiallyCurvedAtZeroCurvatureGivesTheStraightBeam) {
   EXPECT_NEAR(j["gamma"].get<double>(), 0.8517, 0.001);
   EXPECT_NEAR(j["theta_max_gamma_deg"].get<double>(), 64.3, 1.0);
   EXPECT_DOUBLE_EQ(j["theta_i_deg"].get<double>(), 0.0);
-  EXPECT_EQ(run_flexure("prbm derive --segment initially-curved --kappa0 5").exit_code, 2);
+  test::expect_refused("prbm derive --segment initially-curved --kappa0 5",
+                       {"--kappa0", "= 5 is outside the allowed range [0, 3]"});
 }
 
 TEST(PrbmCli, CompareReportsExactTipAndValidity) {
@@ -99,11 +100,17 @@ TEST(PrbmCli, InvalidInputExitsWithCode2) {
   const auto r = run_flexure("prbm derive --segment fixed-pinned --n 99");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(test::count_lines(r.err), 1);
-  EXPECT_NE(r.err.find("--n"), std::string::npos);
-  EXPECT_EQ(run_flexure("prbm table --segment nonsense").exit_code, 2);
-  EXPECT_EQ(run_flexure("prbm compare --segment fixed-pinned --alpha2 -1").exit_code, 2);
-  EXPECT_EQ(run_flexure("prbm compare --segment fixed-pinned --range 1:2:0").exit_code, 2);
-  EXPECT_EQ(run_flexure("prbm compare --segment fixed-guided").exit_code, 2);
+  EXPECT_NE(r.err.find("--n (load ratio) = 99 is outside the allowed range [-20, 20]"),
+            std::string::npos)
+      << r.err;
+  test::expect_refused("prbm table --segment nonsense",
+                       {"--segment = 'nonsense' has no table", "fixed-pinned"});
+  test::expect_refused("prbm compare --segment fixed-pinned --alpha2 -1",
+                       {"--alpha2", "= -1 is outside"});
+  test::expect_refused("prbm compare --segment fixed-pinned --range 1:2:0",
+                       {"--range = '1:2:0' is not a valid range", "COUNT"});
+  test::expect_refused("prbm compare --segment fixed-guided",
+                       {"'fixed-guided' cannot be compared", "allowed: fixed-pinned, end-moment"});
 }
 
 }  // namespace

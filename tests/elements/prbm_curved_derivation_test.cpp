@@ -9,8 +9,9 @@
 //    theta0) for n = -0.5, 0, 1;
 //  * the load-ratio averages over -0.5 <= n <= 1 against Table 5.2: gamma and rho within half a
 //    unit of the book's last printed digit for kappa0 <= 1; K_theta (per-n fits at the averaged
-//    gamma) within the book's rounding plus the Table 5.1 tolerance for kappa0 <= 0.1, and the
-//    documented systematic excess (derived above the book, by less than 0.12) for 0.25..1;
+//    gamma) within the book's rounding plus the Table 5.1 tolerance for kappa0 <= 0.1; for
+//    0.25..1, where the derivation misses the table (docs/prbm.md), a REGRESSION check: the gaps
+//    +0.0271, +0.0486, +0.0812 measured here, to 5e-4;
 //  * CurvedCantileverConstants::from_derivation(0.1) builds an element with Table 5.2's row;
 //  * the reason rows kappa0 >= 1.5 are not reproduced: on the tension side of the average the
 //    0.5 % range Theta_max(gamma) - Theta_i collapses below 2 deg (docs/prbm.md).
@@ -114,6 +115,15 @@ TEST(CurvedCantileverDerivation, StraightLimitReproducesTheFixedPinnedDerivation
   }
 }
 
+// Regression values (see AveragesReproduceTable52GammaAndRhoUpToKappa0One): derived K_theta minus
+// Table 5.2's at kappa0 = 0.25, 0.5, 1, measured with fast_options().
+constexpr double kKThetaGap025 = 0.0271;
+constexpr double kKThetaGap05 = 0.0486;
+constexpr double kKThetaGap1 = 0.0812;
+// Half a unit of the fourth decimal: well above rounding differences between builds (the values
+// are deterministic), well below any change of the fit range or the averaging (~0.005 and up).
+constexpr double kKThetaGapRegressionTolerance = 5e-4;
+
 TEST(CurvedCantileverDerivation, AveragesReproduceTable52GammaAndRhoUpToKappa0One) {
   for (double kappa0 : {0.0, 0.1, 0.25, 0.5, 1.0}) {
     const CurvedCantileverTableRow& row = row_at(kappa0);
@@ -127,10 +137,16 @@ TEST(CurvedCantileverDerivation, AveragesReproduceTable52GammaAndRhoUpToKappa0On
     if (kappa0 <= 0.1) {
       EXPECT_NEAR(a.K_theta, row.K_theta, kKThetaRowTolerance) << "kappa0 = " << kappa0;
     } else {
-      // Measured +0.027, +0.049, +0.081 at kappa0 = 0.25, 0.5, 1: the derived K_theta keeps the
-      // book's dip-and-rise shape but sits above it (docs/prbm.md).
-      EXPECT_GT(a.K_theta, row.K_theta) << "kappa0 = " << kappa0;
-      EXPECT_LT(a.K_theta - row.K_theta, 0.12) << "kappa0 = " << kappa0;
+      // REGRESSION, not a table check: for kappa0 = 0.25, 0.5, 1 the derived K_theta misses
+      // Table 5.2 (it keeps the book's dip-and-rise shape but sits above it, docs/prbm.md), so
+      // no source value exists to assert. Pinned instead to the gaps measured with these options
+      // (0.25 deg samples), so that a change of the derivation shows; a change that moves them
+      // must re-measure them and say why.
+      const double measured_gap = kappa0 == 0.25  ? kKThetaGap025
+                                  : kappa0 == 0.5 ? kKThetaGap05
+                                                  : kKThetaGap1;
+      EXPECT_NEAR(a.K_theta - row.K_theta, measured_gap, kKThetaGapRegressionTolerance)
+          << "kappa0 = " << kappa0 << " (regression)";
     }
   }
 }

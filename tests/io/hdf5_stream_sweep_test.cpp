@@ -5,7 +5,9 @@
 //  * memory stays flat: streaming 2e6 points raises the process's peak resident set (VmHWM in
 //    /proc/self/status) by less than 40 MB, while holding the same sweep as a table (the way
 //    before streaming) raises it by more than 60 MB (2e6 x 40 bytes), which shows the measurement
-//    sees the difference.
+//    sees the difference. A bound of a plain build: skipped under AddressSanitizer, whose shadow
+//    memory and quarantine of freed blocks raise the peak by ~100 MB whatever the sweep does
+//    (scripts/sanitize.sh measured 99,812 kB).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,6 +16,15 @@
 
 #include "flexure/io/beam_sweep.h"
 #include "tests/support/cli_test_support.h"
+
+// AddressSanitizer: GCC defines __SANITIZE_ADDRESS__, Clang answers __has_feature.
+#if defined(__SANITIZE_ADDRESS__)
+#define FLEXURE_TEST_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define FLEXURE_TEST_UNDER_ASAN 1
+#endif
+#endif
 
 namespace flexure::io {
 namespace {
@@ -115,6 +126,10 @@ long peak_rss_kb() {
 }
 
 TEST(StreamedSweep, MemoryDoesNotGrowWithTheNumberOfPoints) {
+#ifdef FLEXURE_TEST_UNDER_ASAN
+  GTEST_SKIP() << "a peak-memory bound of the plain build: AddressSanitizer's shadow memory and "
+                  "quarantine of freed blocks raise the peak by ~100 MB whatever the sweep does";
+#endif
   constexpr long kPoints = 2'000'000;
   test::ScratchDir dir;
   BeamSweepOptions options;

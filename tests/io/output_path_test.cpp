@@ -11,7 +11,12 @@
 //   bench) exits 2 before any work, naming the path and the reason; for a sweep that would take
 //   about a minute (5000 shooting solves, about 12 ms each) the refusal comes in seconds, for a
 //   directory in place of the target and, run as nobody, for another user's file in a sticky
-//   directory (found only by the rename after the whole sweep before).
+//   directory (found only by the rename after the whole sweep before);
+// - temporaries left by killed processes (kill -9: no handler runs) are recognised by the pid and
+//   host in their name and removed by the next writer of that directory: those of processes that
+//   are gone or whose number a younger process now has; those of live processes, of other hosts
+//   and files of other forms stay. A `sweep beam` killed with SIGKILL leaves its temporary, and
+//   the next run to the same --out leaves only its file (issue 27).
 #include "flexure/io/output_path.h"
 
 #include <fcntl.h>
@@ -20,11 +25,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <climits>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/provenance.h"
@@ -72,6 +81,91 @@ TEST(OutputPath, TemporaryNameFitsTheLimitInTheTargetsDirectory) {
   EXPECT_EQ(cut, "." + accents.substr(0, 12) + ".1-0.tmp");
   const std::string odd = std::filesystem::path(temporary_path_for(accents, 1, 0, 22)).filename();
   EXPECT_EQ(odd, "." + accents.substr(0, 12) + ".1-0.tmp") << "13 bytes would split a character";
+}
+
+TEST(OutputPath, TemporaryNameRecordsPidAndHost) {
+  EXPECT_EQ(temporary_path_for("dir/out.h5", 123, 7, 255, "node1"), "dir/.out.h5.123-7@node1.tmp");
+  // The name is cut, never the pid, serial or host.
+  EXPECT_EQ(temporary_path_for("abcdefghij", 1, 0, 20, "h"), ".abcdefghi.1-0@h.tmp");
+  const std::string host = temporary_host_tag();
+  EXPECT_FALSE(host.empty());
+  EXPECT_LE(host.size(), 32u);
+  EXPECT_EQ(
+      host.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_"),
+      std::string::npos)
+      << host;
+}
+
+// A pid that no process has: a child that has exited and been reaped.
+pid_t gone_pid() {
+  const pid_t pid = ::fork();
+  if (pid == 0) ::_exit(0);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return pid;
+}
+
+void touch(const std::filesystem::path& path, double seconds_ago = 0.0) {
+  std::ofstream(path) << "x";
+  if (seconds_ago > 0.0) {
+    const auto when = std::filesystem::last_write_time(path) -
+                      std::chrono::duration_cast<std::filesystem::file_time_type::duration>(
+                          std::chrono::duration<double>(seconds_ago));
+    std::filesystem::last_write_time(path, when);
+  }
+}
+
+TEST(OutputPath, StaleTemporariesOfGoneProcessesAreRemoved) {
+  ScratchDir dir;
+  const std::string host = temporary_host_tag();
+  const std::string dead = std::to_string(gone_pid());
+  // A live process that started now: a temporary written an hour ago cannot be its own (its pid
+  // was reused), one written now can.
+  const pid_t child = ::fork();
+  if (child == 0) {
+    ::sleep(30);
+    ::_exit(0);
+  }
+  // A process that has ended but is not reaped yet (a zombie: the ranks of a killed mpirun where
+  // no init reaps them) is gone too, though kill(pid, 0) still finds it.
+  const pid_t zombie = ::fork();
+  if (zombie == 0) ::_exit(0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  const std::string live = std::to_string(child);
+  const std::vector<std::string> removed_names = {
+      ".out.h5." + dead + "-0@" + host + ".tmp",    // this target, process gone
+      ".other.h5." + dead + "-2@" + host + ".tmp",  // another target in the directory, gone
+      ".out.h5." + dead + "-1.tmp",                 // this target, the name without a host
+      ".out.h5." + std::to_string(zombie) + "-0@" + host + ".tmp",  // ended, not reaped
+  };
+  const std::vector<std::string> kept_names = {
+      ".other.h5." + dead + "-1.tmp",             // without a host: only this target's
+      ".out.h5." + dead + "-0@another-host.tmp",  // another host: its pids say nothing here
+      ".out.h5." + live + "-0@" + host + ".tmp",  // a live writer
+      ".out.h5.1-0@" + host + ".tmp",             // pid 1 is alive and older than the file
+      ".out.h5.x1-0@" + host + ".tmp",            // not a pid
+      "notes.tmp",
+      "out.h5",
+  };
+  for (const std::string& name : removed_names) touch(dir / name);
+  for (const std::string& name : kept_names) touch(dir / name);
+  const std::string reused = ".out.h5." + live + "-5@" + host + ".tmp";
+  touch(dir / reused, 3600.0);
+  std::vector<std::string> removed = remove_stale_temporaries((dir / "out.h5").string());
+  ::kill(child, SIGKILL);
+  ::waitpid(child, nullptr, 0);
+  ::waitpid(zombie, nullptr, 0);
+  for (std::string& path : removed) path = std::filesystem::path(path).filename().string();
+  std::sort(removed.begin(), removed.end());
+  std::vector<std::string> expected = removed_names;
+  expected.push_back(reused);
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(removed, expected);
+  std::vector<std::string> left = dir.entries();
+  std::sort(left.begin(), left.end());
+  std::vector<std::string> kept = kept_names;
+  std::sort(kept.begin(), kept.end());
+  EXPECT_EQ(left, kept);
 }
 
 TEST(OutputPath, ATargetNameAtTheLimitIsWrittenAndNothingElseIsLeft) {
@@ -244,6 +338,33 @@ TEST(OutputPathCli, ALongSweepOverAnotherUsersFileInAStickyDirectoryReturnsAtOnc
   EXPECT_NE(r.err.find("sticky directory"), std::string::npos) << r.err;
   EXPECT_LT(seconds, 5.0);
   EXPECT_EQ(test::read_text(theirs), "root's file");
+}
+
+TEST(OutputPathCli, ARunKilledWithSigkillIsCleanedUpByTheNextRun) {
+  ScratchDir dir;
+  // A sweep of about a minute, killed once its temporary exists: no handler runs.
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const std::string command = "cd '" + dir.path().string() + "' && exec '" + FLEXURE_BINARY +
+                                "' " + kLongSweep + " --out k.h5 >/dev/null 2>&1";
+    ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  bool started = false;
+  for (int i = 0; i < 200 && !started; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    started = !dir.entries().empty();
+  }
+  ::kill(pid, SIGKILL);
+  ::waitpid(pid, nullptr, 0);
+  ASSERT_TRUE(started);
+  const std::vector<std::string> left = dir.entries();
+  ASSERT_EQ(left.size(), 1u);
+  EXPECT_EQ(left[0].rfind(".k.h5." + std::to_string(pid) + "-", 0), 0u) << left[0];
+  // The next run to the same file removes it and leaves only its own result.
+  const test::CommandResult r = run_flexure("sweep beam --alpha2 0:1:3 --out k.h5", dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"k.h5"});
 }
 
 }  // namespace

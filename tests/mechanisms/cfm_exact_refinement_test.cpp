@@ -36,9 +36,17 @@ TEST(CfmExactRefinement, BeatsTheThesisOptimumInTheExactModel) {
               << r.message << "\n";
     EXPECT_GE(r.percent_constant_force_exact, r.start_percent_constant_force_exact) << name;
     EXPECT_TRUE(r.prbm.feasible()) << name;
-    // An independent solve at 100 points.
+    // Independent solves at 100 and 200 points. Xi' of a sampled stroke converges at first order
+    // in 1/N (the sampled extremum): measured 96.729, 96.643, 96.600, 96.578 at N = 50, 100, 200,
+    // 400 for lpp-b (differences 0.086, 0.043, 0.022) and 97.750, 97.685, 97.652, 97.636 for
+    // slp-b90Io. So the reported 50-point value must differ from the 100-point one by about twice
+    // the 100 -> 200 change, not by a fixed allowance.
     const double check = exact_percent_constant_force(p, r.x, 100, 2e7);
-    EXPECT_NEAR(check, r.percent_constant_force_exact, 0.2) << name;
+    const double finer = exact_percent_constant_force(p, r.x, 200, 2e7);
+    const double ratio = (r.percent_constant_force_exact - check) / (check - finer);
+    EXPECT_NEAR(ratio, 2.0, 0.3) << name << ": 50 -> 100 -> 200 points "
+                                 << r.percent_constant_force_exact << ", " << check << ", "
+                                 << finer;
     if (p.pcf_min) EXPECT_GE(r.percent_constant_force_exact, *p.pcf_min - 1e-9) << name;
   }
 }

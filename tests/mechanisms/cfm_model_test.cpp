@@ -8,7 +8,11 @@
 //  * the toggle clamp: 37.04 % (R = 0.4323) and 26.62 % (R = 0.3000) (docs/cfm.md §1.3),
 //    and at the clamp the coupler (R < 1) or the crank (R > 1) is perpendicular to the slider axis;
 //  * lambda against the Table 5.1 closed forms; kinematics against the law of cosines;
-//  * bad input is refused with InvalidInput.
+//  * bad input is refused with InvalidInput;
+//  * the result's warnings: a class 1A mechanism clamped at its toggle has a force that vanishes
+//    there (the derivative of its spring energy is zero at the toggle, central differences), and
+//    is flagged and warned; a clamped stroke whose force stays positive (K1 > 0) is warned as
+//    clamped only; an unclamped lpp-b neither.
 #include "flexure/mechanisms/cfm/cfm_model.h"
 
 #include <gtest/gtest.h>
@@ -16,6 +20,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <string>
 
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/solver/common/errors.h"
@@ -208,6 +213,49 @@ TEST(CfmModel, RefusesBadInput) {
   EXPECT_NO_THROW(model.evaluate({"lpp", 0.8, 0.0, 0.0, 16}));
   EXPECT_NO_THROW(model.evaluate({"psp", 1.0, 1.0, none, 16}));
   EXPECT_TRUE(model.evaluate({"lpp", 0.8, none, none, 100}).stroke_clamped);
+}
+
+// Class 1A (lpp, k1 only) driven past its toggle at R = 0.3 is clamped at 26.62 %, where the
+// coupler stands perpendicular to the slider: theta2 is stationary in Delta x, so the force
+// dV/du/(1 + R) of the spring energy V = theta2^2/2 is zero there.
+TEST(CfmModel, ForceVanishingAtTheToggleIsFlaggedAndWarned) {
+  const std::optional<double> none;
+  const CfmResult r = CfmModel().evaluate({"lpp", 0.3, none, none, 60});
+  ASSERT_TRUE(r.converged());
+  ASSERT_TRUE(r.stroke_clamped);
+  EXPECT_NEAR(r.stroke_percent, 26.62, kToggleRounding);
+  // The independent zero: the derivative of the spring energy at the clamped stroke.
+  const double u = r.stroke_percent / 100.0, h = 1e-5;
+  const double force =
+      (spring_energy(0.3, 0.0, 0.0, false, u + h) - spring_energy(0.3, 0.0, 0.0, false, u - h)) /
+      (2.0 * h) / 1.3;
+  EXPECT_NEAR(force, 0.0, kFiniteDifference);
+  EXPECT_NEAR(r.Phi_min, 0.0, kFiniteDifference);
+  EXPECT_TRUE(r.force_vanishes);
+  ASSERT_EQ(r.warnings.size(), 2u);
+  EXPECT_EQ(r.warnings[0].kind, WarningKind::kForceVanishes);
+  EXPECT_NE(r.warnings[0].text.find("the force vanishes within the stroke"), std::string::npos)
+      << r.warnings[0].text;
+  EXPECT_EQ(r.warnings[1].kind, WarningKind::kStrokeClamped);
+  EXPECT_NE(r.warnings[1].text.find("d = 60 % is past the toggle position of R = 0.3; clamped to "
+                                    "26.62"),
+            std::string::npos)
+      << r.warnings[1].text;
+  EXPECT_EQ(warning_kind_name(r.warnings[0].kind), "force_vanishes");
+
+  // Clamped (thesis ssp-bIo, 37.04 %) but the middle spring keeps the force positive at the toggle.
+  const CfmResult ssp = CfmModel().evaluate({"ssp", 0.4323, 0.2237, none, 40});
+  ASSERT_TRUE(ssp.stroke_clamped);
+  EXPECT_FALSE(ssp.force_vanishes);
+  EXPECT_GT(ssp.Phi_min, 0.1 * ssp.Phi_max);
+  ASSERT_EQ(ssp.warnings.size(), 1u);
+  EXPECT_EQ(ssp.warnings[0].kind, WarningKind::kStrokeClamped);
+
+  // lpp-b at its design stroke (thesis Table 7.2): within the toggle, force of one sign.
+  const CfmResult lpp_b = CfmModel().evaluate({"lpp", 0.8853, none, none, 40});
+  EXPECT_FALSE(lpp_b.stroke_clamped);
+  EXPECT_FALSE(lpp_b.force_vanishes);
+  EXPECT_TRUE(lpp_b.warnings.empty());
 }
 
 }  // namespace

@@ -19,8 +19,10 @@
 #include <functional>
 #include <regex>
 #include <string>
+#include <vector>
 
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/mechanisms/design/cfm_synthesis.h"
@@ -72,6 +74,60 @@ Posed pose(const cfm::CfmSubclass& row) {
   return p;
 }
 
+// The constraints of the posed problem judged here from their definitions (docs/design.md), on
+// the model evaluated afresh at the found R, K1, K2, not by the synthesis's own verdicts: the
+// toggle (eq. 2.16: R in [(1 - q)/(1 + q), (1 + q)/(1 - q)], q = (1 - d/100)^2), Xi' >= the
+// sub-class's digits (eq. 6.8) and the orientation rules of its flags (Table 5.4) at every flexure.
+// Returns what is not met.
+std::vector<std::string> unmet_rules(const Posed& p, const cfm::CfmResult& found) {
+  constexpr double kSlack = 1e-9;  // a design on its bound is met, as the optimiser's
+  const CfmDesignProblem& q = p.problem;
+  const cfm::CfmConfiguration& c = cfm::find_cfm_configuration(q.config);
+  cfm::CfmParameters at{q.config, found.R, std::nullopt, std::nullopt, q.stroke_percent};
+  if (c.has_spring(2) && !c.is_class_1B()) at.K1 = found.K1;
+  if (c.has_spring(3)) at.K2 = found.K2;
+  const cfm::CfmResult r = cfm::CfmModel(q.model).evaluate(at);
+  std::vector<std::string> unmet;
+  const auto need = [&](bool ok, const std::string& what, double value) {
+    if (!ok) unmet.push_back(what + " = " + std::to_string(value));
+  };
+  const double t = (1.0 - q.stroke_percent / 100.0) * (1.0 - q.stroke_percent / 100.0);
+  need(found.R >= (1.0 - t) / (1.0 + t) - kSlack && found.R <= (1.0 + t) / (1.0 - t) + kSlack,
+       "R inside the toggle interval",
+       found.R);
+  if (q.pcf_min) {
+    need(r.percent_constant_force >= *q.pcf_min - kSlack, "Xi'", r.percent_constant_force);
+  }
+  const OrientationLimits& l = q.orientation_limits;
+  for (int i = 0; i < 3; ++i) {
+    if (!r.C[i]) continue;  // a pin
+    const double C = *r.C[i], De = *r.D_equal[i], Dm = *r.D_min[i];
+    const std::string pivot = "pivot " + std::to_string(i + 1);
+    for (char flag : q.orientation) {
+      if (flag == 'I') need(Dm <= l.I_D_min_max + kSlack, pivot + " I: D_min", Dm);
+      if (flag == 'O' || flag == 'o') need(C >= l.C_min - kSlack, pivot + ": C", C);
+      const Bounds& b = flag == 'O' ? l.O_D_equal : l.o_D_equal;
+      if (flag == 'O' || flag == 'o') {
+        need(De >= b.lower - kSlack && De <= b.upper + kSlack, pivot + ": D_equal", De);
+      }
+    }
+  }
+  return unmet;
+}
+
+TEST(SubclassSynthesisRules, TheThesisRuleLimitsAreTheDefaults) {
+  // Table 5.4 (docs/design.md): I: D_min <= 1; O: C >= 1, 0.5 <= D_equal <= 2; o: C >= 1,
+  // 0.1 <= D_equal <= 10. unmet_rules() takes the problem's limits: they must be these unless
+  // loosened above.
+  const OrientationLimits l;
+  EXPECT_EQ(l.I_D_min_max, 1.0);
+  EXPECT_EQ(l.C_min, 1.0);
+  EXPECT_EQ(l.O_D_equal.lower, 0.5);
+  EXPECT_EQ(l.O_D_equal.upper, 2.0);
+  EXPECT_EQ(l.o_D_equal.lower, 0.1);
+  EXPECT_EQ(l.o_D_equal.upper, 10.0);
+}
+
 class SubclassSynthesis : public ::testing::TestWithParam<int> {};
 
 TEST_P(SubclassSynthesis, ReachesThePrintedObjectiveWithItsConstraintsMet) {
@@ -105,6 +161,7 @@ TEST_P(SubclassSynthesis, ReachesThePrintedObjectiveWithItsConstraintsMet) {
       cpu_ms);
   EXPECT_TRUE(s.converged()) << s.message;
   EXPECT_GE(found, printed * 0.995) << row.name;
+  for (const std::string& u : unmet_rules(p, s.best.result)) ADD_FAILURE() << row.name << ": " << u;
   for (const NamedConstraint& c : s.best.constraints) {
     EXPECT_TRUE(c.satisfied()) << row.name << ": " << c.name << " = " << c.value;
   }

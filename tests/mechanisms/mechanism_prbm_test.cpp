@@ -1,6 +1,7 @@
 // What is checked against what:
 //  * the dimensional PRBM force (virtual work, thesis eq. 2.14 scaled by eq. 2.13) against the
-//    statics of the two PRB links (moment balance of crank and coupler) -- two routes to one force;
+//    derivative of the spring energy that the test computes itself (its own slider-crank
+//    kinematics, a finite difference), and against the library's statics of the two PRB links;
 //  * the built-in sub-class designs against the thesis's nondimensional model (CfmModel, 50 equally
 //    spaced points): mean F r2/k_ref = Phi and the spring ratios K1, K2 of the sub-class;
 //  * the thesis design example 1 (1A-lpp, Weight 2001 Table 8.4): required force F = 25 lbf;
@@ -28,12 +29,44 @@ namespace {
 // Closed forms in double precision, different algebra: rounding only.
 constexpr double kClosedForm = 1e-10;
 
-TEST(MechanismPrbm, VirtualWorkForceEqualsLinkStatics) {
+// The spring energy of the PRB slider-crank at slider displacement dx, from the test's own
+// kinematics: r1 = r2 + r3 - dx, the crank angle from the law of cosines in its cancellation-free
+// form 1 - cos theta2 = dx (r1 + r3 - r2)/(2 r2 r1), the coupler at theta3 = -asin(r2 sin theta2
+// / r3), springs turned by psi1 = theta2, psi2 = theta2 - theta3, psi3 = -theta3 (thesis eqs.
+// 2.8-2.12; zero in the straight position).
+double spring_energy(const MechanismDesign& d, double dx) {
+  const double r1 = d.r2 + d.r3 - dx;
+  const double theta2 = 2.0 * std::asin(std::sqrt(dx * (r1 + d.r3 - d.r2) / (4.0 * d.r2 * r1)));
+  const double theta3 = -std::asin(d.r2 * std::sin(theta2) / d.r3);
+  const double psi[3] = {theta2, theta2 - theta3, -theta3};
+  double V = 0.0;
+  for (int p = 1; p <= 3; ++p) V += 0.5 * d.spring_constant(p) * psi[p - 1] * psi[p - 1];
+  return V;
+}
+
+TEST(MechanismPrbm, ForceIsTheDerivativeOfTheSpringEnergy) {
+  // Virtual work done by the test: F = dV/d(dx) by a fourth-order central difference of the
+  // energy above (step 1e-3 dx: truncation ~1e-12, rounding ~1e-13 relative), independent of the
+  // library's closed-form derivative (thesis eq. 2.14) and of its link statics. Inversions (the
+  // slider block fixed, inversion.h) have their own tests.
+  constexpr double kDifferenceTolerance = 1e-8;
+  int designs = 0;
   for (const MechanismDesign& d : builtin_mechanisms()) {
+    if (d.inverted) continue;
     const PrbmStrokeResult r = prbm_stroke(d, 50);
     ASSERT_TRUE(r.converged()) << d.name;
-    EXPECT_LT(r.residual, kClosedForm) << d.name;  // |F_statics - F_virtual_work|/|F|
+    EXPECT_LT(r.residual, kClosedForm) << d.name;  // the library's two routes agree
+    for (std::size_t i = 0; i < r.displacement.size(); ++i) {
+      const double x = r.displacement[i], h = 1e-3 * x;
+      const double dV = (spring_energy(d, x - 2 * h) - 8 * spring_energy(d, x - h) +
+                         8 * spring_energy(d, x + h) - spring_energy(d, x + 2 * h)) /
+                        (12 * h);
+      EXPECT_NEAR(r.force[i], dV, kDifferenceTolerance * std::abs(dV))
+          << d.name << " at dx = " << x << " m";
+    }
+    ++designs;
   }
+  EXPECT_GE(designs, 20);
 }
 
 TEST(MechanismPrbm, SubclassDesignsReproduceTheNondimensionalModel) {

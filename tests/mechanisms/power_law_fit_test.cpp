@@ -14,7 +14,12 @@
 namespace flexure::cfm {
 namespace {
 
-// Ch. 7 prints M and n to 4 decimals; the fit reproduces them to one unit in the last place.
+// Ch. 7 prints M and n to 4 decimals. n is reproduced to one unit in the last place (measured at
+// most 5.2e-5). M to two units: half a unit of its own rounding plus the effect of the printed R's
+// rounding (half a unit of R moves M by 1.2e-4 to 1.3e-4 on the spp rows); measured at most 1.8e-4
+// (spp-a95), 1.3e-4 (slp-a90I), 1.2e-4 (spp-a90), all others below 7.6e-5.
+constexpr double kMTolerance = 2e-4;
+constexpr double kNTolerance = 1e-4;
 TEST(PowerLawFit, ReproducesEveryChapterSevenRow) {
   int rows = 0;
   for (const CfmSubclass& row : thesis_subclasses()) {
@@ -24,8 +29,8 @@ TEST(PowerLawFit, ReproducesEveryChapterSevenRow) {
     if (std::string(row.name) != "sps-b86IO") {
       EXPECT_EQ(f.primary_pivot, row.primary_pivot) << row.name;
     }
-    EXPECT_NEAR(f.M, row.M, 1e-3) << row.name;
-    EXPECT_NEAR(f.n, row.n, 1e-4) << row.name;
+    EXPECT_NEAR(f.M, row.M, kMTolerance) << row.name;
+    EXPECT_NEAR(f.n, row.n, kNTolerance) << row.name;
     ++rows;
   }
   EXPECT_EQ(rows, 68);

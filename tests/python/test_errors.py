@@ -78,3 +78,14 @@ def test_interpreter_survives_a_thousand_bad_calls():
         with pytest.raises((flexure.InvalidInput, TypeError)):
             flexure.beam(alpha2=value)
     assert flexure.beam(alpha2=1.0)["converged"]
+
+
+def test_cfm_clamped_stroke_warns(capfd):
+    """A stroke past the toggle position (lpp, R = 0.5: toggle at 42.26 %) is clamped with the
+    model's warning, which Python raises as FlexureWarning; nothing is printed raw on stderr."""
+    with pytest.warns(flexure.FlexureWarning, match="past the toggle position") as caught:
+        result = flexure.cfm(config="lpp", R=0.5, d=95)
+    assert result["stroke_clamped"]
+    assert result["stroke_percent"] < 95
+    assert any(f"clamped to {result['stroke_percent']:.4f} %" in str(w.message) for w in caught)
+    assert capfd.readouterr().err == ""

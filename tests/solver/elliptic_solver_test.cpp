@@ -9,6 +9,8 @@
 //   with and against the force, inflection points, tip angles past 180 deg, tension and
 //   compression.
 // - Statics: root moment = mu + a Fy - b Fx.
+// - Loads alpha2 = 100-1000 (tension, compression, end moments) against an mpmath solution of the
+//   elastica written by scripts/elliptic_large_load_oracle.py (tests/data/).
 // - Mirror symmetry, forward/inverse agreement, the proportional-loading branch when several
 //   equilibria exist, and bad input.
 #include "flexure/solver/elliptic/elliptic_solver.h"
@@ -20,10 +22,12 @@
 #include <random>
 #include <vector>
 
+#include "flexure/solver/common/csv_table.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/elliptic/elastica_closed_form.h"
 #include "flexure/solver/elliptic/tip_chart.h"
 #include "flexure/solver/shooting/shooting_solver.h"
+#include "tests/support/data_file_support.h"
 #include "tests/support/elastica_reference.h"
 
 namespace flexure {
@@ -36,6 +40,8 @@ constexpr double kOracleRelTol = 6e-8;
 constexpr double kSelfConsistency = 1e-12;
 // RK4 + Richardson with 8000 steps: truncation error ~1e-12 for |F| <= 30.
 constexpr double kIvpTol = 1e-9;
+// alpha2 100-1000 against the mpmath elastica (30+ digits): the solver's round-off.
+constexpr double kLargeLoadTolerance = 1e-12;
 
 void expect_rel(double computed, double reference, double tol, const char* what) {
   EXPECT_NEAR(computed, reference, tol * std::fabs(reference)) << what;
@@ -104,9 +110,10 @@ TEST(EllipticSolver, ForwardMatchesHowellEquationsToRoundOffOnASeededGrid) {
   // The mu = 0 forward solve (secant iteration in zeta, docs/theory-elliptic.md) against Howell
   // eqs. 2.90, 2.96 and 2.98 with phi1 = atan2(1, -n), evaluated with mpmath at 40 digits on 40
   // seeded (n, theta0) pairs: n uniform in [-5, 10], theta0 uniform in (0.02, 0.97) times the
-  // force angle (loads alpha2 from 0.01 to 1000, tension and compression). The load alpha2 is
-  // given to 20 digits; the tip must come back to 1e-12 (round-off level: the iteration's
-  // shortcuts may not cost accuracy).
+  // force angle (the loads come out at alpha2 = 0.099 to 9.67, tension and compression; larger
+  // loads: LargeLoadsMatchAnIndependentMpmathElastica). The load alpha2 is given to 20 digits;
+  // the tip must come back to 1e-12 (round-off level: the iteration's shortcuts may not cost
+  // accuracy).
   struct Row {
     double n, theta0, alpha2, a, b;
   };
@@ -685,6 +692,29 @@ TEST(EllipticSolver, RejectsBadInput) {
     solver.solve_for_tip_angle(0.0, 2.0);
   } catch (const InvalidInput& e) {
     EXPECT_NE(std::string(e.what()).find("theta0"), std::string::npos);
+  }
+}
+
+TEST(EllipticSolver, LargeLoadsMatchAnIndependentMpmathElastica) {
+  // alpha2 = 100, 300, 1000 at n = -5, -1, 0, 1, 5, and with end moments mu = 0.5 (n = -1, 0, 1)
+  // and mu = 1 (n = 2, alpha2 = 500): tests/data/elliptic_large_loads_mpmath.csv, written by
+  // scripts/elliptic_large_load_oracle.py from the elastica's first integral by mpmath quadrature
+  // at 40 digits and checked by an mpmath Taylor-series integration of the ODE (no flexure
+  // code). At these loads the tip angle is within 1e-30 to 1e-4 rad of the force angle, past the
+  // 40-row grid above (alpha2 <= 9.67).
+  const CsvTable t =
+      CsvTable::parse(test::read_repository_file("tests/data/elliptic_large_loads_mpmath.csv"),
+                      "tests/data/elliptic_large_loads_mpmath.csv");
+  ASSERT_GE(t.row_count(), 20u);
+  const EllipticSolver solver;
+  for (std::size_t i = 0; i < t.row_count(); ++i) {
+    const double n = t.number(i, "n"), mu = t.number(i, "mu"), alpha2 = t.number(i, "alpha2");
+    SCOPED_TRACE(::testing::Message() << "n = " << n << ", mu = " << mu << ", alpha2 = " << alpha2);
+    const EllipticResult r = solver.solve(EndLoad::howell(n, alpha2, mu));
+    ASSERT_TRUE(r.converged()) << r.message;
+    EXPECT_NEAR(r.tip.a_over_l, t.number(i, "a_over_l"), kLargeLoadTolerance);
+    EXPECT_NEAR(r.tip.b_over_l, t.number(i, "b_over_l"), kLargeLoadTolerance);
+    EXPECT_NEAR(r.tip.theta0, t.number(i, "theta0"), kLargeLoadTolerance);
   }
 }
 

@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
 
 #include "flexure/benchmarks/studies/method_selector.h"
 #include "flexure/elements/fixed_pinned_segment.h"
@@ -85,6 +87,32 @@ TEST(AutoMethod, PicksAnExactMethodOtherwise) {
 TEST(AutoMethod, RejectsANonPositiveTolerance) {
   EXPECT_THROW(choose_beam_method({0.0, 1.0, 0.0, true, 0.0}), InvalidInput);
   EXPECT_THROW(choose_beam_method({0.0, 1.0, 0.0, true, std::nan("")}), InvalidInput);
+}
+
+// A tolerance below the error of the most accurate method for the problem is refused, naming the
+// smallest tolerance that can be met (issue 27: --tol 1e-16 used to pick the elliptic solver).
+TEST(AutoMethod, RefusesAToleranceBelowEveryMethodsError) {
+  const auto best = [](AutoMethodRequest r) {
+    try {
+      choose_beam_method(r);
+    } catch (const ToleranceBelowReach& e) {
+      EXPECT_NE(std::string(e.what()).find("below the error of every method"), std::string::npos)
+          << e.what();
+      return std::make_pair(e.best_tolerance(), e.best_method());
+    }
+    return std::make_pair(0.0, std::string("accepted"));
+  };
+  // Forward free cantilever: the elliptic solver, 1e-13.
+  EXPECT_EQ(best({0.0, 3.0, 0.0, true, 1e-16}), std::make_pair(1e-13, std::string("elliptic")));
+  // Inverse: the target tolerance 1e-10 bounds it.
+  EXPECT_EQ(best({0.0, std::nan(""), 0.0, true, 1e-12}),
+            std::make_pair(1e-10, std::string("elliptic")));
+  // Off the free cantilever: the shooting method, measured below 1e-9.
+  EXPECT_EQ(best({0.0, 1.0, 0.0, false, 1e-10}), std::make_pair(1e-9, std::string("shooting")));
+  // At the bound itself the tolerance is met.
+  EXPECT_EQ(best({0.0, 3.0, 0.0, true, 1e-13}).second, "accepted");
+  EXPECT_EQ(best({0.0, 1.0, 0.0, false, 1e-9}).second, "accepted");
+  EXPECT_EQ(choose_beam_method({0.0, 3.0, 0.0, true, 1e-13}).expected_error, 1e-13);
 }
 
 }  // namespace

@@ -53,8 +53,9 @@ TEST(MechanismMethod, CliReportsTheChoice) {
   const json t = json::parse(tight.out);
   EXPECT_EQ(t["method"], "exact");
   EXPECT_EQ(t["force_exact"].size(), 10u);
-  EXPECT_EQ(test::run_flexure("mechanism analyze 1A-spp --method newton").exit_code, 2);
-  EXPECT_EQ(test::run_flexure("mechanism analyze 1A-spp --tol -1").exit_code, 2);
+  test::expect_refused("mechanism analyze 1A-spp --method newton", {"--method: newton not in"});
+  test::expect_refused("mechanism analyze 1A-spp --tol -1",
+                       {"tolerance must be finite and > 0 (got -1)"});
 }
 
 }  // namespace

@@ -80,6 +80,18 @@ inline CommandResult run_flexure(const std::string& args,
   return result;
 }
 
+// A refusal for the expected reason: `flexure args` exits 2 (invalid input, docs/cli.md) and its
+// stderr names the reason with each of `reason` (key words of the message).
+inline void expect_refused(const std::string& args,
+                           const std::vector<std::string>& reason,
+                           const std::filesystem::path& cwd = {}) {
+  const CommandResult r = run_flexure(args, cwd);
+  EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+  for (const std::string& word : reason) {
+    EXPECT_NE(r.err.find(word), std::string::npos) << args << ": '" << word << "' not in " << r.err;
+  }
+}
+
 // The keys docs/cli.md names for `flexure mechanism analyze --json` (a contract: users' scripts
 // read them).
 inline const std::vector<std::string>& mechanism_analyze_contract_keys() {
@@ -90,7 +102,9 @@ inline const std::vector<std::string>& mechanism_analyze_contract_keys() {
                                                 "percent_constant_force_exact",
                                                 "max_force_error",
                                                 "max_stress",
-                                                "safety_factor"};
+                                                "safety_factor",
+                                                "stability_displacement_control",
+                                                "stability_force_control"};
   return keys;
 }
 

@@ -1,0 +1,450 @@
+#include "flexure/benchmarks/studies/load_path_study.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "flexure/solver/chain/chain_algorithm_solver.h"
+#include "flexure/solver/common/errors.h"
+
+namespace flexure {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// Shape values stored at most (points x shape points), so that a file stays within a few GB.
+constexpr double kMaxShapeValues = 5e7;
+
+void require_in_range(int value, const char* what, int lo, int hi) {
+  if (value < lo || value > hi) {
+    throw InvalidInput(
+        fmt::format("{} = {} is outside the allowed range [{}, {}]", what, value, lo, hi));
+  }
+}
+
+PathSpecialPoint to_table(const SpecialPoint& sp, const PathUnits& u) {
+  PathSpecialPoint out;
+  out.kind = to_string(sp.kind);
+  out.load_factor = sp.lambda;
+  out.index = sp.index;
+  out.index_after = sp.index_after;
+  out.tip_x = sp.tip.x * u.length;
+  out.tip_y = sp.tip.y * u.length;
+  out.tip_theta = sp.tip.theta;
+  out.reaction_Fx = sp.reaction.Fx * u.force;
+  out.reaction_Fy = sp.reaction.Fy * u.force;
+  out.reaction_M = sp.reaction.M * u.moment;
+  out.tip_Fx = sp.tip_load.Fx * u.force;
+  out.tip_Fy = sp.tip_load.Fy * u.force;
+  out.tip_M = sp.tip_load.M * u.moment;
+  out.stage = sp.stage;
+  out.branch = sp.branch;
+  out.located = sp.located;
+  out.switched = sp.switched;
+  return out;
+}
+
+// What a bifurcation passed means for the state on the path. Under dead loads the unloaded chain
+// is stable and each simple bifurcation crossed changes the number of unstable directions of the
+// state on the path (negative eigenvalues of the second variation) by one, as det(dg/dz) changes
+// sign there (Jacobi's conjugate points); so after the first special point on a proportional path
+// from zero the state is certainly unstable. Further on, only the change is known.
+std::string bifurcation_warning(const PathSpecialPoint& b,
+                                int number,
+                                bool first_special,
+                                bool follower,
+                                bool displacement_control) {
+  const std::string where =
+      fmt::format("the path passed a bifurcation at load factor {:.10g} (path point {})",
+                  b.load_factor,
+                  b.index >= 0 ? b.index : b.index_after);
+  const std::string follow = fmt::format("--branch {} follows it", number);
+  if (follower) {
+    return fmt::format(
+        "{}: another branch exists ({}); stability under the follower load cannot be judged by "
+        "the energy",
+        where,
+        follow);
+  }
+  if (first_special && b.stage == 1 && b.branch == 0 && !displacement_control) {
+    return fmt::format(
+        "{}: beyond it the proportional-loading state is unstable; another branch exists ({})",
+        where,
+        follow);
+  }
+  return fmt::format(
+      "{}: another branch exists ({}); the state on the path gains or loses one unstable "
+      "direction there",
+      where,
+      follow);
+}
+
+PathTable shooting_table(const PathRequest& r) {
+  ShootingSolver::Options options;
+  ContinuationOptions& c = options.continuation;
+  if (r.max_step > 0.0) {
+    c.max_step = r.max_step;
+    c.initial_step = std::min(c.initial_step, r.max_step);
+  }
+  if (r.min_points >= 2) c.max_load_step = 1.0 / (r.min_points - 1);
+  c.switch_at_bifurcation = r.branch;
+  c.branch_side = r.branch_side;
+  c.shape_points = r.shape_points;
+  const LoadPath path = r.control ? trace_controlled_path(r.chain, *r.control, options)
+                                  : trace_load_path(r.chain, options);
+  const PathUnits& u = r.units;
+  PathTable t;
+  t.shape_points = r.shape_points;
+  for (const PathPoint& p : path.points) {
+    t.load_factor.push_back(p.lambda);
+    t.tip_x.push_back(p.tip.x * u.length);
+    t.tip_y.push_back(p.tip.y * u.length);
+    t.tip_theta.push_back(p.tip.theta);
+    t.reaction_Fx.push_back(p.reaction.Fx * u.force);
+    t.reaction_Fy.push_back(p.reaction.Fy * u.force);
+    t.reaction_M.push_back(p.reaction.M * u.moment);
+    t.tip_Fx.push_back(p.tip_load.Fx * u.force);
+    t.tip_Fy.push_back(p.tip_load.Fy * u.force);
+    t.tip_M.push_back(p.tip_load.M * u.moment);
+    t.status.push_back(static_cast<int>(p.status));
+    t.stage.push_back(p.stage);
+    t.branch.push_back(p.branch);
+    if (r.shape_points > 0) {
+      const bool have = static_cast<int>(p.shape.size()) == r.shape_points;
+      for (int k = 0; k < r.shape_points; ++k) {
+        t.shape_x.push_back(have ? p.shape[k].x * u.length : kNaN);
+        t.shape_y.push_back(have ? p.shape[k].y * u.length : kNaN);
+        t.shape_theta.push_back(have ? p.shape[k].theta : kNaN);
+        t.shape_moment.push_back(have ? p.moment[k] * u.moment : kNaN);
+      }
+      if (!have) {
+        throw std::runtime_error(
+            fmt::format("the shape of path point {} (load factor {:.6g}) could not be integrated",
+                        t.size() - 1,
+                        p.lambda));
+      }
+    }
+  }
+  if (r.shape_points > 0) {
+    const double total = r.chain.total_length();
+    for (int k = 0; k < r.shape_points; ++k) {
+      t.shape_s.push_back(total * k / (r.shape_points - 1) * u.length);
+    }
+  }
+  for (const SpecialPoint& sp : path.special_points) t.special_points.push_back(to_table(sp, u));
+  t.completed = path.converged();
+  t.lambda_reached = path.lambda_reached;
+  t.limit_points = path.limit_points;
+  t.bifurcation_points = path.bifurcation_points;
+  if (path.limit_points > 0) t.first_limit_load_factor = path.first_limit_load_factor;
+  t.switched_branch = path.switched_branch;
+  t.steps = path.steps;
+  t.rejected_steps = path.rejected_steps;
+  t.newton_iterations = path.newton_iterations;
+  t.location_corrections = path.location_corrections;
+  t.message = path.message;
+  int number = 0;
+  for (std::size_t i = 0; i < t.special_points.size(); ++i) {
+    const PathSpecialPoint& b = t.special_points[i];
+    if (b.kind != "bifurcation") continue;
+    ++number;
+    if (b.switched) continue;
+    t.warnings.push_back(bifurcation_warning(
+        b, number, i == 0, r.chain.tip_load.follower != 0.0, r.control.has_value()));
+  }
+  return t;
+}
+
+PathTable chain_table(const PathRequest& r) {
+  ChainAlgorithmSolver::Options options;
+  options.elements = r.elements;
+  options.increments = r.increments;
+  options.record_load_path = true;
+  const ChainResult result = solve_chain(r.chain, options);
+  const PathUnits& u = r.units;
+  PathTable t;
+  const ChainPose start = r.chain.unloaded_tip();
+  auto add = [&](double lambda, const ChainPose& tip, int status) {
+    t.load_factor.push_back(lambda);
+    t.tip_x.push_back(tip.x * u.length);
+    t.tip_y.push_back(tip.y * u.length);
+    t.tip_theta.push_back(tip.theta);
+    t.status.push_back(status);
+    t.stage.push_back(1);
+    t.branch.push_back(0);
+  };
+  add(0.0, start, 0);
+  for (const ChainLoadPathPoint& p : result.load_path) {
+    add(p.load_factor, p.tip, p.load_factor >= 1.0 ? 3 : 1);
+  }
+  // The chain algorithm records tip poses per increment; reactions only at the end.
+  for (auto* column :
+       {&t.reaction_Fx, &t.reaction_Fy, &t.reaction_M, &t.tip_Fx, &t.tip_Fy, &t.tip_M}) {
+    column->assign(t.size(), kNaN);
+  }
+  t.reaction_Fx.back() = result.root_reaction.Fx * u.force;
+  t.reaction_Fy.back() = result.root_reaction.Fy * u.force;
+  t.reaction_M.back() = result.root_reaction.M * u.moment;
+  t.completed = result.converged();
+  t.lambda_reached = result.load_factor;
+  t.steps = result.increments;
+  t.message = result.message;
+  return t;
+}
+
+}  // namespace
+
+// (Built whole: assigning short literals to the members trips GCC 12's -Wrestrict.)
+PathUnits PathUnits::si(double length_m, double EI_Nm2) {
+  // F = (F l^2/EI) EI / l^2, M = (M l/EI) EI / l.
+  return PathUnits{std::string("SI"),
+                   length_m,
+                   EI_Nm2 / (length_m * length_m),
+                   EI_Nm2 / length_m,
+                   std::string("m"),
+                   std::string("N"),
+                   std::string("N m")};
+}
+
+PathUnits PathUnits::chain_file() {
+  return PathUnits{std::string("chain file"),
+                   1.0,
+                   1.0,
+                   1.0,
+                   std::string("length unit of the chain file"),
+                   std::string("force unit of the chain file"),
+                   std::string("force unit * length unit of the chain file")};
+}
+
+void PathRequest::validate() const {
+  chain.validate();
+  if (method == PathMethod::kChain) {
+    require_in_range(elements, "--elements (chain algorithm elements N)", 1, 1'000'000);
+    require_in_range(increments, "--increments (load increments)", 1, 1'000'000);
+    const char* shooting_only = max_step > 0.0     ? "--max-step"
+                                : min_points > 0   ? "--min-points"
+                                : branch > 0       ? "--branch"
+                                : control          ? "--control"
+                                : shape_points > 0 ? "--shapes"
+                                                   : nullptr;
+    if (shooting_only != nullptr) {
+      throw InvalidInput(fmt::format(
+          "{} belongs to the continuation of --method shooting; the chain algorithm takes load "
+          "increments (--increments) and records the tip only",
+          shooting_only));
+    }
+    return;
+  }
+  if (max_step != 0.0 && !(std::isfinite(max_step) && max_step >= 1e-6 && max_step <= 10.0)) {
+    throw InvalidInput(fmt::format(
+        "--max-step (largest arclength step, scaled so that 1 is about a unit of load factor at "
+        "the start) must be in [1e-6, 10] (got {})",
+        max_step));
+  }
+  if (min_points != 0) {
+    require_in_range(min_points, "--min-points (points from zero to full load)", 2, 1'000'000);
+  }
+  if (branch < 0) {
+    throw InvalidInput(
+        fmt::format("--branch counts the bifurcations along the path from 1 (got {})", branch));
+  }
+  if (branch_side != 1 && branch_side != -1) {
+    throw InvalidInput("the branch side is +1 (tip to +y) or -1 (tip to -y)");
+  }
+  if (shape_points != 0) {
+    require_in_range(shape_points, "--shapes (shape points per path point)", 2, 1'000'000);
+  }
+}
+
+std::vector<const PathSpecialPoint*> PathTable::of_kind(const std::string& kind) const {
+  std::vector<const PathSpecialPoint*> out;
+  for (const PathSpecialPoint& sp : special_points) {
+    if (sp.kind == kind) out.push_back(&sp);
+  }
+  return out;
+}
+
+PathTable run_load_path(const PathRequest& request) {
+  request.validate();
+  PathTable t =
+      request.method == PathMethod::kChain ? chain_table(request) : shooting_table(request);
+  t.method = request.method;
+  t.units = request.units;
+  t.boundary = to_string(request.chain.end);
+  if (request.control) {
+    t.control = to_string(request.control->coordinate);
+    t.control_target = request.control->coordinate == TipCoordinate::kTheta
+                           ? request.control->target
+                           : request.control->target * request.units.length;
+  }
+  if (request.shape_points > 0 &&
+      static_cast<double>(t.size()) * request.shape_points > kMaxShapeValues) {
+    throw InvalidInput(fmt::format(
+        "--shapes {}: {} path points x {} shape points exceeds the {:g} values a path file holds; "
+        "ask for fewer shape points",
+        request.shape_points,
+        t.size(),
+        request.shape_points,
+        kMaxShapeValues));
+  }
+  return t;
+}
+
+const std::vector<io::CodeMeaning>& path_code_meanings() {
+  static const std::vector<io::CodeMeaning> codes = {
+      {"status", 0, "start: the unloaded beam (load factor 0)"},
+      {"status", 1, "an accepted continuation step or load increment"},
+      {"status",
+       2,
+       "a limit point (fold) of the load factor, located: this row is the fold itself (not "
+       "located: the first point after it)"},
+      {"status", 3, "end: the full load (load factor 1)"},
+      {"status",
+       4,
+       "a bifurcation point, located: dg/dz singular while the load factor keeps its direction "
+       "(another branch crosses here)"},
+      {"located", 0, "not refined: the load factor is that of the nearer path point"},
+      {"located", 1, "located on the path to about 1e-10 in the load factor"},
+      {"switched", 0, "the path went on through this point"},
+      {"switched", 1, "the path left here onto the other branch (--branch)"}};
+  return codes;
+}
+
+void write_path_file(io::Hdf5Group& root, const PathTable& t) {
+  const PathUnits& u = t.units;
+  const bool nondimensional = u.system == "nondimensional";
+  const std::string scaled = nondimensional ? " (nondimensional: l = 1, EI = 1)" : "";
+  const std::string chain_only = t.method == PathMethod::kChain ? "; chain: NaN except at the last "
+                                                                  "point"
+                                                                : "";
+  root.write_dataset(
+      "load_factor",
+      t.load_factor,
+      "1",
+      t.control == "load"
+          ? "load factor lambda: 0 unloaded, 1 full load; may fall and rise at limit points"
+          : "path parameter lambda: in the last stage the fraction of the controlled tip "
+            "coordinate's travel (root attribute control)");
+  root.write_dataset("tip_x", t.tip_x, u.length_unit, "tip x along the clamp's axis" + scaled);
+  root.write_dataset(
+      "tip_y", t.tip_y, u.length_unit, "tip y perpendicular to the clamp's axis" + scaled);
+  root.write_dataset("tip_theta", t.tip_theta, "rad", "tip angle");
+  root.write_dataset(
+      "reaction_Fx", t.reaction_Fx, u.force_unit, "x force the clamp exerts" + scaled + chain_only);
+  root.write_dataset(
+      "reaction_Fy", t.reaction_Fy, u.force_unit, "y force the clamp exerts" + scaled + chain_only);
+  root.write_dataset(
+      "reaction_M", t.reaction_M, u.moment_unit, "moment the clamp exerts" + scaled + chain_only);
+  const std::string tip_note =
+      t.method == PathMethod::kChain
+          ? "; chain: NaN (not recorded)"
+          : "; a prescribed coordinate's component is the support's reaction";
+  root.write_dataset(
+      "tip_Fx", t.tip_Fx, u.force_unit, "total x force on the tip" + scaled + tip_note);
+  root.write_dataset(
+      "tip_Fy", t.tip_Fy, u.force_unit, "total y force on the tip" + scaled + tip_note);
+  root.write_dataset(
+      "tip_M", t.tip_M, u.moment_unit, "total moment on the tip" + scaled + tip_note);
+  root.write_dataset("status", t.status, "1", "kind of point (root status_meanings)");
+  root.write_dataset("stage",
+                     t.stage,
+                     "1",
+                     "stage of a staged path: 1, then 2 (3) for the second stage of a pinned or "
+                     "fixed straight beam and for the moving stage of --control");
+  root.write_dataset("branch",
+                     t.branch,
+                     "1",
+                     "0 on the path from zero load; k after switching at the k-th bifurcation");
+
+  // The special points, exactly (the rows `index` of the path datasets hold them too).
+  io::Hdf5Group sp = root.create_group("special_points");
+  std::vector<std::string> kind;
+  std::vector<double> lambda, x, y, theta, rfx, rfy, rm, tfx, tfy, tm;
+  std::vector<int> index, after, stage, branch, located, switched;
+  for (const PathSpecialPoint& p : t.special_points) {
+    kind.push_back(p.kind);
+    lambda.push_back(p.load_factor);
+    x.push_back(p.tip_x);
+    y.push_back(p.tip_y);
+    theta.push_back(p.tip_theta);
+    rfx.push_back(p.reaction_Fx);
+    rfy.push_back(p.reaction_Fy);
+    rm.push_back(p.reaction_M);
+    tfx.push_back(p.tip_Fx);
+    tfy.push_back(p.tip_Fy);
+    tm.push_back(p.tip_M);
+    index.push_back(p.index);
+    after.push_back(p.index_after);
+    stage.push_back(p.stage);
+    branch.push_back(p.branch);
+    located.push_back(p.located ? 1 : 0);
+    switched.push_back(p.switched ? 1 : 0);
+  }
+  sp.write_dataset("kind",
+                   kind,
+                   "text",
+                   "limit_point (a fold of the load factor) or bifurcation (dg/dz singular while "
+                   "the load factor keeps its direction)");
+  sp.write_dataset("load_factor", lambda, "1", "load factor at the point (located to ~1e-10)");
+  sp.write_dataset(
+      "index", index, "1", "row of the path datasets holding the point (-1: not stored)");
+  sp.write_dataset("index_after",
+                   after,
+                   "1",
+                   "first row of the path datasets after the point (-1: the path stopped there)");
+  sp.write_dataset("tip_x", x, u.length_unit, "tip x at the point" + scaled);
+  sp.write_dataset("tip_y", y, u.length_unit, "tip y at the point" + scaled);
+  sp.write_dataset("tip_theta", theta, "rad", "tip angle at the point");
+  sp.write_dataset("reaction_Fx", rfx, u.force_unit, "x force the clamp exerts" + scaled);
+  sp.write_dataset("reaction_Fy", rfy, u.force_unit, "y force the clamp exerts" + scaled);
+  sp.write_dataset("reaction_M", rm, u.moment_unit, "moment the clamp exerts" + scaled);
+  sp.write_dataset("tip_Fx", tfx, u.force_unit, "total x force on the tip" + scaled);
+  sp.write_dataset("tip_Fy", tfy, u.force_unit, "total y force on the tip" + scaled);
+  sp.write_dataset("tip_M", tm, u.moment_unit, "total moment on the tip" + scaled);
+  sp.write_dataset("stage", stage, "1", "stage of the path (dataset /stage)");
+  sp.write_dataset("branch", branch, "1", "branch on which it lies (dataset /branch)");
+  sp.write_dataset("located", located, "1", "1 located, 0 not refined (root status_meanings)");
+  sp.write_dataset(
+      "switched", switched, "1", "1 where the path left onto the other branch (--branch)");
+
+  if (t.shape_points > 0) {
+    io::Hdf5Group shapes = root.create_group("shapes");
+    const std::vector<hsize_t> dims = {static_cast<hsize_t>(t.size()),
+                                       static_cast<hsize_t>(t.shape_points)};
+    shapes.write_dataset(
+        "s", t.shape_s, u.length_unit, "arc length from the clamp of each shape column" + scaled);
+    shapes.write_dataset(
+        "x", t.shape_x, dims, u.length_unit, "x of the shape [path point, shape point]" + scaled);
+    shapes.write_dataset(
+        "y", t.shape_y, dims, u.length_unit, "y of the shape [path point, shape point]" + scaled);
+    shapes.write_dataset(
+        "theta", t.shape_theta, dims, "rad", "tangent angle [path point, shape point]");
+    shapes.write_dataset("moment",
+                         t.shape_moment,
+                         dims,
+                         u.moment_unit,
+                         "bending moment m = EI (theta' - kappa0) [path point, shape point], "
+                         "counter-clockwise on the part nearer the clamp" +
+                             scaled);
+  }
+
+  root.set_attribute("method", t.method == PathMethod::kChain ? "chain" : "shooting");
+  root.set_attribute("boundary", t.boundary);
+  root.set_attribute("units", t.units.system);
+  root.set_attribute("control", t.control);
+  if (t.control != "load") root.set_attribute("control_target", t.control_target);
+  root.set_attribute("completed", static_cast<std::int64_t>(t.completed ? 1 : 0));
+  root.set_attribute("load_factor_reached", t.lambda_reached);
+  root.set_attribute("limit_points", static_cast<std::int64_t>(t.limit_points));
+  if (t.first_limit_load_factor) {
+    root.set_attribute("first_limit_load_factor", *t.first_limit_load_factor);
+  }
+  root.set_attribute("bifurcation_points", static_cast<std::int64_t>(t.bifurcation_points));
+  root.set_attribute("switched_branch", static_cast<std::int64_t>(t.switched_branch ? 1 : 0));
+  root.set_attribute("shape_points", static_cast<std::int64_t>(t.shape_points));
+  root.set_attribute("message", t.message);
+  io::write_provenance(root, path_code_meanings());
+}
+
+}  // namespace flexure

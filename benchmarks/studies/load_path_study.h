@@ -1,0 +1,123 @@
+#pragma once
+// `flexure path`: the equilibrium path of a beam or segment chain from the unloaded state, by
+// pseudo-arclength continuation (shooting: folds and bifurcations located, a bifurcated branch
+// followed on request, displacement control, shapes) or by the chain algorithm's load increments,
+// as a table of path points and special points, and its HDF5 file (docs/hdf5-schema.md
+// "flexure path", docs/cli.md "flexure path").
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "flexure/io/hdf5_file.h"
+#include "flexure/io/provenance.h"
+#include "flexure/solver/chain_model/segment_chain.h"
+#include "flexure/solver/shooting/shooting_solver.h"
+
+namespace flexure {
+
+// How the numbers of a path are reported: lengths, forces and moments of the chain (l = 1, EI = 1
+// for Howell's nondimensional beam) times these factors, in these units.
+struct PathUnits {
+  std::string system = "nondimensional";  // "nondimensional", "SI" or "chain file"
+  double length = 1.0;                    // chain length unit -> reported length unit
+  double force = 1.0;
+  double moment = 1.0;
+  std::string length_unit = "1";
+  std::string force_unit = "1";
+  std::string moment_unit = "1";
+  // Howell's nondimensional beam; a physical beam of length L and rigidity EI in SI (m, N, N m);
+  // a chain file in its own units.
+  static PathUnits nondimensional() { return {}; }
+  static PathUnits si(double length_m, double EI_Nm2);
+  static PathUnits chain_file();
+};
+
+enum class PathMethod { kShooting, kChain };
+
+struct PathRequest {
+  SegmentChain chain;  // the full-load problem (lambda = 1)
+  PathMethod method = PathMethod::kShooting;
+  PathUnits units;
+  // Chain algorithm: elements and load increments.
+  int elements = 100;
+  int increments = 10;
+  // Shooting (continuation.h): 0 = the defaults.
+  double max_step = 0.0;  // > 0: largest arclength step (scaled variables; default 0.5)
+  int min_points = 0;     // >= 2: at least this many points from zero to full load (the load
+                          // factor changes by at most 1/(min_points - 1) per step)
+  int branch = 0;         // k > 0: switch onto the other branch at the k-th bifurcation
+  int branch_side = 1;    // +1: the half-branch on which the tip moves to +y (+theta), -1: -y
+  std::optional<DisplacementControl> control;  // a tip coordinate as the path parameter
+  int shape_points = 0;  // >= 2: the shape at every point of the path, at this many points
+
+  // Throws InvalidInput naming the field: a step that is not finite and positive, too few points,
+  // a negative branch, shapes or options the chain algorithm does not have, ...
+  void validate() const;
+};
+
+// A located fold (limit point) or bifurcation, in the units of the table.
+struct PathSpecialPoint {
+  std::string kind;  // "limit_point" or "bifurcation"
+  double load_factor = 0.0;
+  int index = -1;        // row of the path table holding the point itself (-1: not stored)
+  int index_after = -1;  // first row after it (-1: none, the path stopped there)
+  double tip_x = 0.0, tip_y = 0.0, tip_theta = 0.0;
+  double reaction_Fx = 0.0, reaction_Fy = 0.0, reaction_M = 0.0;
+  double tip_Fx = 0.0, tip_Fy = 0.0, tip_M = 0.0;
+  int stage = 1;
+  int branch = 0;
+  bool located = true;    // false: not refined; the load factor is that of the nearer point
+  bool switched = false;  // the path left here onto the other branch
+};
+
+// The columns of a path file (one row per path point) and what the path did.
+struct PathTable {
+  std::vector<double> load_factor, tip_x, tip_y, tip_theta;
+  std::vector<double> reaction_Fx, reaction_Fy, reaction_M;  // the clamp on the chain
+  std::vector<double> tip_Fx, tip_Fy, tip_M;                 // total load on the tip
+  std::vector<int> status;  // PathStatus codes: 0 start, 1 accepted, 2 limit point, 3 end,
+                            // 4 bifurcation
+  std::vector<int> stage;   // 1, or the stage of a staged path
+  std::vector<int> branch;  // 0 on the path from zero load; k after switching
+  std::vector<PathSpecialPoint> special_points;
+  // Shapes (shape_points > 0): rows = path points, columns = shape points, row-major.
+  int shape_points = 0;
+  std::vector<double> shape_s, shape_x, shape_y, shape_theta, shape_moment;
+
+  PathMethod method = PathMethod::kShooting;
+  PathUnits units;
+  std::string boundary;          // end condition
+  std::string control = "load";  // "load" (proportional loading) or the controlled coordinate
+  double control_target = 0.0;
+  bool completed = false;
+  double lambda_reached = 0.0;
+  int limit_points = 0;
+  int bifurcation_points = 0;
+  std::optional<double> first_limit_load_factor;
+  bool switched_branch = false;
+  int steps = 0;
+  int rejected_steps = 0;
+  int newton_iterations = 0;
+  int location_corrections = 0;
+  std::string message;
+  // One line per bifurcation passed (not switched at): where, and what it means for the state on
+  // the path (for the text output and stderr).
+  std::vector<std::string> warnings;
+
+  std::size_t size() const { return load_factor.size(); }
+  std::vector<const PathSpecialPoint*> of_kind(const std::string& kind) const;
+};
+
+// Runs the path. Throws InvalidInput for bad input; a path that stops before the full load
+// returns completed == false with the message (the table holds the path up to there).
+PathTable run_load_path(const PathRequest& request);
+
+// The codes of the `status`, `special_points/located` and `special_points/switched` datasets (root
+// attribute status_meanings).
+const std::vector<io::CodeMeaning>& path_code_meanings();
+
+// Writes the table to `root` (datasets, /special_points, /shapes, attributes and provenance;
+// docs/hdf5-schema.md "flexure path").
+void write_path_file(io::Hdf5Group& root, const PathTable& table);
+
+}  // namespace flexure

@@ -1,0 +1,82 @@
+#include "cli/physical_flags.h"
+
+#include <algorithm>
+#include <optional>
+#include <utility>
+
+#include "cli/cli_common.h"
+#include "flexure/io/quantity.h"
+#include "flexure/solver/common/errors.h"
+
+namespace flexure::cli {
+namespace {
+
+std::optional<double> quantity_option(const std::string& text,
+                                      io::Dimension dimension,
+                                      const char* what) {
+  if (text.empty()) return std::nullopt;
+  return io::parse_quantity(text, dimension, what).si;
+}
+
+}  // namespace
+
+void PhysicalFlags::add_to(CLI::App& command, bool with_yield_strength) {
+  CLI::Option_group* group = command.add_option_group(
+      "physical beam", "A cantilever in physical units (SI, or with units: 50mm, 200GPa, 5N)");
+  const std::pair<const char*, std::string*> flags[] = {
+      {"--length", &length},
+      {"--E", &E},
+      {"--I", &I},
+      {"--width", &width},
+      {"--thickness", &thickness},
+      {"--Fx", &Fx},
+      {"--Fy", &Fy},
+      {"--M", &M},
+      {"--yield-strength", &yield_strength},
+  };
+  const char* help[] = {
+      "Beam length L (m, or 50mm, 2in)",
+      "Young's modulus E (Pa, or 200GPa, 30Msi)",
+      "Area moment of inertia I (m^4, or mm^4, in^4); or --width and --thickness",
+      "Section width b (m, or mm, in), out of the plane of bending",
+      "Section thickness h (m, or mm, in), in the plane of bending: I = b h^3/12, stress M h/2I",
+      "Tip force along the undeformed beam, from the clamp (N, or lbf)",
+      "Tip force perpendicular to the undeformed beam (N, or lbf)",
+      "Tip moment, counter-clockwise (N m, or N mm, lbf in)",
+      "Yield strength S_y for the safety factor (Pa, or MPa, ksi)",
+  };
+  const std::size_t count = std::size(flags) - (with_yield_strength ? 0 : 1);
+  for (std::size_t i = 0; i < count; ++i) {
+    options.push_back(group->add_option(flags[i].first, *flags[i].second, help[i]));
+  }
+}
+
+bool PhysicalFlags::given() const {
+  return std::any_of(options.begin(), options.end(), [](const CLI::Option* o) { return bool(*o); });
+}
+
+PhysicalCantilever PhysicalFlags::parse() const {
+  using io::Dimension;
+  PhysicalCantilever beam;
+  if (length.empty() || E.empty()) {
+    throw InvalidInput(
+        "a physical beam needs --length and --E, a section (--I, or --width and --thickness) and "
+        "its tip loads (--Fx, --Fy, --M; default 0)");
+  }
+  beam.length = io::parse_quantity(length, Dimension::kLength, "--length").si;
+  const io::Quantity modulus = io::parse_quantity(E, Dimension::kStress, "--E");
+  beam.E = modulus.si;
+  beam.I = quantity_option(I, Dimension::kSecondMoment, "--I");
+  beam.width = quantity_option(width, Dimension::kLength, "--width");
+  beam.thickness = quantity_option(thickness, Dimension::kLength, "--thickness");
+  beam.Fx = quantity_option(Fx, Dimension::kForce, "--Fx").value_or(0.0);
+  beam.Fy = quantity_option(Fy, Dimension::kForce, "--Fy").value_or(0.0);
+  beam.M = quantity_option(M, Dimension::kMoment, "--M").value_or(0.0);
+  beam.yield_strength = quantity_option(yield_strength, Dimension::kStress, "--yield-strength");
+  beam.validate();
+  warn(io::modulus_warning(modulus, "--E"));
+  if (beam.thickness) warn(io::thickness_warning(*beam.thickness, beam.length, "--thickness"));
+  return beam;
+}
+
+}  // namespace flexure::cli

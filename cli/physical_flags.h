@@ -1,0 +1,26 @@
+#pragma once
+// The physical-beam flags that `flexure beam` and `flexure path` share (docs/cli.md, "Physical
+// beams"; docs/units.md): --length, --E, the section (--I, or --width and --thickness), the tip
+// loads --Fx, --Fy, --M and, for `beam`, --yield-strength, as SI numbers or values with units.
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "flexure/benchmarks/studies/physical_beam.h"
+
+namespace flexure::cli {
+
+struct PhysicalFlags {
+  std::string length, E, I, width, thickness, Fx, Fy, M, yield_strength;
+  std::vector<CLI::Option*> options;
+
+  // Adds the flags to `command` in an option group "physical beam".
+  void add_to(CLI::App& command, bool with_yield_strength);
+  // Whether any of them was given.
+  bool given() const;
+  // The cantilever they describe; throws InvalidInput naming the flag (missing length or modulus,
+  // a bad unit, a section given twice, ...). Warns of likely unit mistakes.
+  PhysicalCantilever parse() const;
+};
+
+}  // namespace flexure::cli
