@@ -217,6 +217,7 @@ void print_physical(const PhysicalResults& r) {
 }
 
 Json number_or_null(double value);
+std::string special_points_words(const BeamSolution& solution);
 
 // "unstable, index 1, stability margin -0.215854 (the message)" (index and margin only when the
 // energy judged the equilibrium).
@@ -336,6 +337,9 @@ void print_report(const BeamInput& input,
              solution.inflection_points,
              solution.branch);
   fmt::print("  converged in {} iterations: {}\n", solution.iterations, solution.message);
+  if (!solution.special_points.empty()) {
+    fmt::print("  passed on the path: {}\n", special_points_words(solution));
+  }
   fmt::print("  stability: {}\n", stability_line(solution.stability));
   if (!solution.stable_search.empty()) {
     fmt::print("  stable equilibrium search: {}\n", solution.stable_search);
@@ -376,6 +380,20 @@ Json number_or_null(double value) {
   return std::isfinite(value) ? Json(value + 0.0) : Json(nullptr);
 }
 
+// The special points in words, for the text output ("" when none).
+std::string special_points_words(const BeamSolution& solution) {
+  std::string text;
+  for (const SpecialPoint& sp : solution.special_points) {
+    text += fmt::format("{}{} at load factor {:.10g}{}{}",
+                        text.empty() ? "" : "; ",
+                        sp.kind == SpecialPointKind::kLimitPoint ? "limit point" : "bifurcation",
+                        sp.lambda,
+                        sp.stage > 1 ? fmt::format(" (stage {})", sp.stage) : std::string(),
+                        sp.located ? "" : " (not located)");
+  }
+  return text;
+}
+
 Json reaction_json(const Reaction& r) {
   return Json{
       {"Fx", number_or_null(r.Fx)}, {"Fy", number_or_null(r.Fy)}, {"M", number_or_null(r.M)}};
@@ -410,6 +428,25 @@ void add_physical_json(Json& out, const BeamInput& input, const PhysicalResults&
 }
 
 }  // namespace
+
+// The limit and bifurcation points the shooting method's continuation passed (null for the other
+// methods): the load factor (stage 2 of a pinned or fixed straight beam: the fraction of the
+// released coordinate's travel), the tip per unit length as a_over_l, b_over_l are, and where.
+Json special_points_json(const BeamProblem& problem, const BeamSolution& solution) {
+  if (!solution.special_points_known) return Json(nullptr);
+  const double length = problem.chain ? problem.chain->total_length() : 1.0;
+  Json list = Json::array();
+  for (const SpecialPoint& sp : solution.special_points) {
+    list.push_back(Json{{"kind", to_string(sp.kind)},
+                        {"load_factor", sp.lambda},
+                        {"a_over_l", sp.tip.x / length},
+                        {"b_over_l", sp.tip.y / length},
+                        {"theta0", sp.tip.theta},
+                        {"stage", sp.stage},
+                        {"located", sp.located}});
+  }
+  return list;
+}
 
 std::vector<std::string> beam_warnings(const BeamProblem& problem, const BeamSolution& solution) {
   std::vector<std::string> out;
@@ -459,6 +496,7 @@ Json to_json(const BeamInput& input,
       std::isfinite(solution.target_residual) ? Json(solution.target_residual) : Json(nullptr);
   out["first_limit_load_factor"] =
       solution.limit_points > 0 ? Json(solution.first_limit_load_factor) : Json(nullptr);
+  out["special_points"] = special_points_json(problem, solution);
   out["family"] = solution.family;
   out["message"] = solution.message;
   out["termination"] = termination_name(solution.termination);

@@ -298,6 +298,26 @@ class TextColumn {
     }
     return out;
   }
+  // An object array of the JSON texts as the scalar call returns them (to_python; "" is None);
+  // equal texts share one object.
+  py::array to_numpy_json(const std::vector<py::ssize_t>& shape) const {
+    const auto workers = static_cast<std::uint32_t>(texts_.size());
+    std::vector<std::vector<py::object>> objects(texts_.size());
+    for (std::size_t w = 0; w < texts_.size(); ++w) {
+      for (const std::string& text : texts_[w]) {
+        objects[w].push_back(text.empty() ? py::none() : to_python(Json::parse(text)));
+      }
+    }
+    py::array out = py::module_::import("numpy").attr("empty")(shape, py::dtype("O"));
+    auto** cells = static_cast<PyObject**>(out.mutable_data());
+    for (std::size_t i = 0; i < codes_.size(); ++i) {
+      const std::uint32_t w = codes_[i] % workers, k = codes_[i] / workers;
+      py::object value = k < objects[w].size() ? objects[w][k] : py::none();
+      Py_XDECREF(cells[i]);  // numpy.empty fills object arrays with None
+      cells[i] = value.release().ptr();
+    }
+    return out;
+  }
   // An object array of str (equal texts share one object); points never set read "".
   py::array to_numpy(const std::vector<py::ssize_t>& shape) const {
     const auto workers = static_cast<std::uint32_t>(texts_.size());
@@ -364,7 +384,8 @@ struct Columns {
         stability_message(count, workers),
         stable_search(count, workers),
         warnings(count, workers),
-        validity_source(prbm ? count : 0, workers) {}
+        validity_source(prbm ? count : 0, workers),
+        special_points(count, workers) {}
   NumpyColumn<double> n, alpha2, mu, a_over_l, b_over_l, theta0, root_moment, target_residual,
       first_limit_load_factor, reaction_Fx, reaction_Fy, reaction_M, stability_index,
       stability_margin, Theta, theta_max, expected_error;
@@ -374,6 +395,8 @@ struct Columns {
   // warnings: the point's warnings joined by newlines (returned as a list per point).
   TextColumn method, method_reason, branch, family, message, termination, stability,
       stability_message, stable_search, warnings, validity_source;
+  // special_points: the JSON text of the key (cli::special_points_json), "" for null.
+  TextColumn special_points;
   std::atomic<bool> any_prbm{false}, any_chain{false};
 };
 
@@ -405,6 +428,7 @@ void solve_one(const cli::BeamCommandProblem& base,
   c.stability_message.set(i, worker, "");
   c.stable_search.set(i, worker, "");
   c.warnings.set(i, worker, "");
+  c.special_points.set(i, worker, "");
   try {
     cli::require_finite_input(n, "--n (load ratio n)");
     cli::require_finite_input(mu, "--mu (end moment M l/EI)");
@@ -449,6 +473,9 @@ void solve_one(const cli::BeamCommandProblem& base,
     c.reaction_Fx.data[i] = finite_or_nan(s.reactions.Fx);
     c.reaction_Fy.data[i] = finite_or_nan(s.reactions.Fy);
     c.reaction_M.data[i] = finite_or_nan(s.reactions.M);
+    if (s.special_points_known) {
+      c.special_points.set(i, worker, cli::special_points_json(problem, s).dump());
+    }
     c.stability.set(i, worker, stability_name(s.stability.kind));
     c.stability_message.set(i, worker, s.stability.message);
     c.stable_search.set(i, worker, s.stable_search);
@@ -561,6 +588,7 @@ py::dict beam_many(const std::vector<std::string>& args,
   out["limit_points"] = c.limit_points.array;
   out["target_residual"] = c.target_residual.array;
   out["first_limit_load_factor"] = c.first_limit_load_factor.array;
+  out["special_points"] = c.special_points.to_numpy_json(shape);
   out["family"] = c.family.to_numpy(shape);
   out["message"] = c.message.to_numpy(shape);
   out["termination"] = c.termination.to_numpy(shape);

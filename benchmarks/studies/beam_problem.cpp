@@ -376,6 +376,10 @@ BeamSolution shooting_solution(const BeamProblem& problem,
   solution.limit_points = r.limit_points;
   solution.first_limit_load_factor = r.first_limit_load_factor;
   solution.branch += limit_points_note(r.limit_points, r.first_limit_load_factor);
+  // The continuation's located special points (a direct Newton solve of a unique equilibrium has
+  // none to pass; a neighbour's start did not trace the path).
+  solution.special_points_known = r.path != ShootingPath::kFromNeighbour;
+  solution.special_points = r.special_points;
   solution.inflection_points = std::max(r.inflection_points, 0);
   if (shape_points > 0 && r.converged()) {
     solution.shape = static_cast<int>(r.shape.size()) == shape_points

@@ -105,6 +105,13 @@ struct BeamSolution : SolveStatus {
   // control at the first); elliptic and shooting only.
   int limit_points = 0;
   double first_limit_load_factor = 0.0;
+  // Shooting only: the limit points and bifurcation points its continuation passed, located on the
+  // path (solver/shooting/continuation.h), in Howell's units (the chain's for a chain file) with
+  // the tip per unit length; `special_points_known` false for the other methods and for answers
+  // whose path is not the shooting method's own (a direct Newton solve of a provably unique
+  // equilibrium passes none, a sweep's neighbour start does not trace it).
+  bool special_points_known = false;
+  std::vector<SpecialPoint> special_points;
   // Chains given as a whole: the tip load, root moment and clamp reactions in the chain's units.
   Reaction chain_tip_load;
   double chain_root_moment = 0.0;

@@ -89,6 +89,7 @@ def path(
     branch_side: str | None = ...,
     control: str | None = ...,
     shapes: int | None = ...,
+    stability: str | None = ...,
 ) -> Result: ...
 def sweep(
     *,

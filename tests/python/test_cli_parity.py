@@ -308,3 +308,21 @@ def test_map_cfm(cli, tmp_path):
     assert got["dims"].tolist() == [4, 1, 1, 1]
     assert_same(got, cli.json("map", "cfm", "--config", "lps", "--R", "0.5:2:4", "--d", "16",
                               "--K2", "1.0", "--out", b), skip=("out",))
+
+
+def test_path_stability_per_point(cli, tmp_path):
+    """Every path point's verdict: the straight column against 1 - P/(pi^2/4), as the tool."""
+    a, b = tmp_path / "a.h5", tmp_path / "b.h5"
+    column = flexure.path(length="1m", E="1GPa", I=1e-9, Fx="-3N", out=a)
+    assert_same(column, cli.json("path", "--length", "1m", "--E", "1GPa", "--I", "1e-9",
+                                 "--Fx", "-3N", "--out", b), skip=("seconds", "out"))
+    data = flexure.read(a)
+    P = 3.0 * data["load_factor"]
+    assert column["stability_margin"] == pytest.approx(1 - P / (math.pi ** 2 / 4), abs=1e-8)
+    assert (data["stability_margin"] == column["stability_margin"]).all()
+    kinds = [("stable" if p < math.pi ** 2 / 4 else "unstable") for p in P]
+    critical = data["status"] == 4
+    assert [k for k, c in zip(column["stability"], critical) if not c] == \
+        [k for k, c in zip(kinds, critical) if not c]
+    off = flexure.path(alpha2=3.0, stability="off", out=a)
+    assert set(off["stability"]) == {"not_checked"}
