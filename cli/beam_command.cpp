@@ -60,6 +60,8 @@ struct BeamArgs {
   std::string integrator = "rk8pd";
   CLI::Option* integrator_option = nullptr;
   std::string chain_file;
+  bool stable = false;           // --stable: a stable equilibrium instead of an unstable one
+  std::string stability = "on";  // --stability on|off: the verdict (docs/stability.md)
   CLI::Option* tip_x_option = nullptr;
   CLI::Option* tip_y_option = nullptr;
   CLI::Option* tip_angle_option = nullptr;
@@ -166,6 +168,8 @@ BeamInput make_input(const BeamArgs& args) {
   problem.increments = args.increments;
   add_ladder_options(args, problem);
   problem.chain_variant = chain_variant_from_string(args.chain_variant);
+  problem.stable = args.stable;
+  problem.judge_stability = same_name(args.stability, "on");
   if (*args.integrator_option && !same_name(args.method, "shooting") &&
       !same_name(args.method, "auto")) {
     throw InvalidInput(fmt::format(
@@ -258,6 +262,49 @@ void print_physical(const PhysicalResults& r) {
   }
 }
 
+Json number_or_null(double value);
+std::string special_points_words(const BeamSolution& solution);
+
+// "unstable, index 1, stability margin -0.215854 (the message)" (index and margin only when the
+// energy judged the equilibrium).
+std::string stability_line(const Stability& s) {
+  if (!s.judged()) return fmt::format("{} ({})", stability_name(s.kind), s.message);
+  return fmt::format("{}, index {}, stability margin {:.6g} ({})",
+                     stability_name(s.kind),
+                     s.index,
+                     s.margin,
+                     s.message);
+}
+
+// The warning an answer that is not stable gets (stderr, and the JSON key `warnings`); empty for
+// a stable one or one the energy cannot judge.
+std::string stability_warning(const Stability& s) {
+  if (s.kind == StabilityKind::kUnstable) {
+    return fmt::format(
+        "the returned equilibrium is UNSTABLE (index {}, stability margin {:.6g}): it is the "
+        "equilibrium reached by proportional loading, but the beam cannot stay there under "
+        "these loads and supports (a small disturbance makes it buckle or snap away); --stable "
+        "returns a stable equilibrium",
+        s.index,
+        s.margin);
+  }
+  if (s.kind == StabilityKind::kCritical) {
+    return fmt::format(
+        "the returned equilibrium is CRITICAL (stability margin {:.3g}): a buckling or limit "
+        "point, where the slightest further load makes the beam buckle or snap",
+        s.margin);
+  }
+  return {};
+}
+
+// The stability keys (docs/cli.md): index and margin null unless the energy judged it.
+void add_stability_json(Json& out, const Stability& s) {
+  out["stability"] = std::string(stability_name(s.kind));
+  out["stability_index"] = s.judged() ? Json(s.index) : Json(nullptr);
+  out["stability_margin"] = s.judged() ? number_or_null(s.margin) : Json(nullptr);
+  out["stability_message"] = s.message;
+}
+
 void print_report(const BeamInput& input,
                   const BeamProblem& problem,
                   const BeamSolution& solution,
@@ -336,6 +383,13 @@ void print_report(const BeamInput& input,
              solution.inflection_points,
              solution.branch);
   fmt::print("  converged in {} iterations: {}\n", solution.iterations, solution.message);
+  if (!solution.special_points.empty()) {
+    fmt::print("  passed on the path: {}\n", special_points_words(solution));
+  }
+  fmt::print("  stability: {}\n", stability_line(solution.stability));
+  if (!solution.stable_search.empty()) {
+    fmt::print("  stable equilibrium search: {}\n", solution.stable_search);
+  }
   if (physical && !physical->shape.empty()) {
     fmt::print("  shape ({} points, SI):\n  {:>12} {:>14} {:>14} {:>14} {:>14} {:>14}\n",
                physical->shape.size(),
@@ -372,6 +426,20 @@ Json number_or_null(double value) {
   return std::isfinite(value) ? Json(value + 0.0) : Json(nullptr);
 }
 
+// The special points in words, for the text output ("" when none).
+std::string special_points_words(const BeamSolution& solution) {
+  std::string text;
+  for (const SpecialPoint& sp : solution.special_points) {
+    text += fmt::format("{}{} at load factor {:.10g}{}{}",
+                        text.empty() ? "" : "; ",
+                        sp.kind == SpecialPointKind::kLimitPoint ? "limit point" : "bifurcation",
+                        sp.lambda,
+                        sp.stage > 1 ? fmt::format(" (stage {})", sp.stage) : std::string(),
+                        sp.located ? "" : " (not located)");
+  }
+  return text;
+}
+
 Json reaction_json(const Reaction& r) {
   return Json{
       {"Fx", number_or_null(r.Fx)}, {"Fy", number_or_null(r.Fy)}, {"M", number_or_null(r.M)}};
@@ -405,6 +473,49 @@ void add_physical_json(Json& out, const BeamInput& input, const PhysicalResults&
   }
 }
 
+}  // namespace
+
+// The limit and bifurcation points the shooting method's continuation passed (null for the other
+// methods): the load factor (stage 2 of a pinned or fixed straight beam: the fraction of the
+// released coordinate's travel), the tip per unit length as a_over_l, b_over_l are, and where.
+Json special_points_json(const BeamProblem& problem, const BeamSolution& solution) {
+  if (!solution.special_points_known) return Json(nullptr);
+  const double length = problem.chain ? problem.chain->total_length() : 1.0;
+  Json list = Json::array();
+  for (const SpecialPoint& sp : solution.special_points) {
+    list.push_back(Json{{"kind", to_string(sp.kind)},
+                        {"load_factor", sp.lambda},
+                        {"a_over_l", sp.tip.x / length},
+                        {"b_over_l", sp.tip.y / length},
+                        {"theta0", sp.tip.theta},
+                        {"stage", sp.stage},
+                        {"located", sp.located}});
+  }
+  return list;
+}
+
+std::vector<std::string> beam_warnings(const BeamProblem& problem, const BeamSolution& solution) {
+  std::vector<std::string> out;
+  // The solver's own warnings, e.g. the BCM beyond its stated deflection range.
+  for (const Warning& w : solution.warnings) out.push_back(w.text);
+  if (solution.method == BeamMethod::kPrbm && !solution.prbm_inside_validity) {
+    out.push_back(
+        fmt::format("the PRB angle Theta = {:.1f} deg is outside the validity limit {:.1f} "
+                    "deg ({}); the PRBM tip and force are not trusted here ({} exact)",
+                    std::fabs(solution.prbm_Theta) * 180.0 / std::numbers::pi,
+                    solution.prbm_theta_max * 180.0 / std::numbers::pi,
+                    solution.prbm_limits_source,
+                    // The elliptic solver takes only the free cantilever with dead loads.
+                    problem.is_plain_cantilever() ? "--method elliptic or shooting is"
+                                                  : "--method shooting is"));
+  }
+  const std::string stability = stability_warning(solution.stability);
+  if (!stability.empty()) out.push_back(stability);
+  return out;
+}
+
+namespace {
+
 Json to_json(const BeamInput& input,
              const BeamProblem& problem,
              const BeamSolution& solution,
@@ -433,11 +544,14 @@ Json to_json(const BeamInput& input,
       std::isfinite(solution.target_residual) ? Json(solution.target_residual) : Json(nullptr);
   out["first_limit_load_factor"] =
       solution.limit_points > 0 ? Json(solution.first_limit_load_factor) : Json(nullptr);
+  out["special_points"] = special_points_json(problem, solution);
   out["family"] = solution.family;
   out["message"] = solution.message;
   out["termination"] = termination_name(solution.termination);
   out["boundary"] = to_string(problem.boundary);
   out["reactions"] = reaction_json(solution.reactions);
+  add_stability_json(out, solution.stability);
+  out["stable_search"] = problem.stable ? Json(solution.stable_search) : Json(nullptr);
   if (input.chain_file) {
     // The chain's loads in the file's own units, whether or not it has Howell's parameters.
     out["tip_load_chain_units"] = reaction_json(solution.chain_tip_load);
@@ -482,6 +596,9 @@ Json to_json(const BeamInput& input,
     out["shape"] = std::move(shape);
   }
   if (physical) add_physical_json(out, input, *physical);
+  Json warnings = Json::array();
+  for (const std::string& w : beam_warnings(problem, solution)) warnings.push_back(w);
+  out["warnings"] = std::move(warnings);
   return out;
 }
 
@@ -523,6 +640,10 @@ void run_beam(const BeamArgs& args) {
     if (std::isfinite(solution.target_residual)) {
       reached["target_residual"] = solution.target_residual;
     }
+    if (solution.stability.kind != StabilityKind::kNotChecked) {
+      add_stability_json(reached, solution.stability);
+    }
+    if (problem.stable) reached["stable_search"] = solution.stable_search;
     // The methods the message suggests (failure_advice.h), most capable first; empty when none is
     // measured to reach further (the message then says what to change).
     Json suggested = Json::array();
@@ -532,6 +653,10 @@ void run_beam(const BeamArgs& args) {
     reached["suggested_methods"] = std::move(suggested);
     for (auto& [key, value] : reached.items()) {
       if (value.is_number_float() && !std::isfinite(value.get<double>())) value = nullptr;
+    }
+    if (problem.stable && !solution.stable_search.empty()) {
+      // The answer was reached; no stable equilibrium was found from it.
+      throw NoConvergenceReport(solution.message, std::move(reached));
     }
     throw NoConvergenceReport(
         fmt::format("method '{}' found no converged solution after {} iterations: {}. {}",
@@ -555,18 +680,7 @@ void run_beam(const BeamArgs& args) {
                                     solution.shape.size(),
                                     problem.shape_points));
   }
-  warn(solution.warnings);  // e.g. the BCM beyond its stated deflection range
-  if (solution.method == BeamMethod::kPrbm && !solution.prbm_inside_validity) {
-    warn(
-        fmt::format("the PRB angle Theta = {:.1f} deg is outside the validity limit {:.1f} "
-                    "deg ({}); the PRBM tip and force are not trusted here ({} exact)",
-                    std::fabs(solution.prbm_Theta) * 180.0 / std::numbers::pi,
-                    solution.prbm_theta_max * 180.0 / std::numbers::pi,
-                    solution.prbm_limits_source,
-                    // The elliptic solver takes only the free cantilever with dead loads.
-                    problem.is_plain_cantilever() ? "--method elliptic or shooting is"
-                                                  : "--method shooting is"));
-  }
+  warn(beam_warnings(problem, solution));
   if (args.json) {
     print_json(to_json(input, problem, solution, physical));  // refuses NaN/Inf anywhere
   } else {
@@ -669,6 +783,17 @@ void register_beam_command(CLI::App& app) {
       "--shape", args->shape_points, "Also output the deflected shape at K points (K >= 2)");
   // A physical cantilever (docs/units.md): SI numbers or values with units.
   args->physical.add_to(*beam, true);
+  beam->add_flag("--stable",
+                 args->stable,
+                 "Return a stable equilibrium: when the one reached by proportional loading is "
+                 "unstable or critical, descend the potential energy from it and return the stable "
+                 "equilibrium found (exit 3 when none is); given loads only (docs/stability.md)");
+  beam->add_option("--stability",
+                   args->stability,
+                   "The stability verdict of the answer: on (default) or off (stability "
+                   "not_checked; --stable judges anyway)")
+      ->default_str("on")
+      ->transform(CLI::IsMember({"on", "off"}, CLI::ignore_case));
   beam->add_flag("--json", args->json, "Print one JSON object on stdout");
   beam->callback([args] { run_beam(*args); });
 }

@@ -2,6 +2,7 @@
 // `flexure beam` without the solve: the problem the command would solve for these arguments,
 // validated exactly as the tool validates them (the Python module's vectorised beam solves it
 // at many loads; python/flexure_module.cpp).
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -19,5 +20,14 @@ struct BeamCommandProblem {
 // `args` are those of `flexure beam` (without "beam"). Throws InvalidInput with the tool's message
 // for anything the tool refuses.
 BeamCommandProblem beam_problem_of(const std::vector<std::string>& args);
+
+// The warnings of an answer that `flexure beam` prints on stderr and lists under the JSON key
+// `warnings`: a PRBM outside its validity limits, an unstable or critical equilibrium.
+// The JSON key `special_points` of an answer: the limit and bifurcation points the shooting
+// method's continuation passed (null for the other methods).
+nlohmann::ordered_json special_points_json(const BeamProblem& problem,
+                                           const BeamSolution& solution);
+
+std::vector<std::string> beam_warnings(const BeamProblem& problem, const BeamSolution& solution);
 
 }  // namespace flexure::cli

@@ -21,6 +21,7 @@
 #include "flexure/io/output_path.h"
 #include "flexure/io/quantity.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/names.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure::cli {
@@ -56,6 +57,7 @@ struct PathArgs {
   std::string control = "load";
   int shapes = 0;
   CLI::Option* shapes_option = nullptr;
+  std::string stability = "on";  // --stability on|off: the verdict of every point
   std::string out;
   bool json = false;
 };
@@ -215,6 +217,7 @@ PathRequest make_request(const PathArgs& args) {
     require_in_range(args.min_points, "--min-points (points from zero to full load)", 2, 1e6);
     request.min_points = args.min_points;
   }
+  request.judge_stability = same_name(args.stability, "on");
   request.branch = args.branch;
   request.branch_side = args.branch_side == "negative" ? -1 : 1;
   if (*args.shapes_option) {
@@ -244,6 +247,38 @@ Json special_point_json(const PathSpecialPoint& p) {
               {"branch", p.branch},
               {"located", p.located},
               {"switched", p.switched}};
+}
+
+// The verdict of every point as columns (null where not judged) and its stretches.
+void add_stability_json(Json& out, const PathTable& t) {
+  Json kind = Json::array(), index = Json::array(), margin = Json::array();
+  for (const Stability& s : t.stability) {
+    kind.push_back(std::string(stability_name(s.kind)));
+    index.push_back(s.judged() ? Json(s.index) : Json(nullptr));
+    margin.push_back(s.judged() && std::isfinite(s.margin) ? Json(s.margin) : Json(nullptr));
+  }
+  out["stability"] = std::move(kind);
+  out["stability_index"] = std::move(index);
+  out["stability_margin"] = std::move(margin);
+  Json stretches = Json::array();
+  for (const StabilityStretch& s : t.stability_stretches()) {
+    const bool judged = s.kind == StabilityKind::kStable || s.kind == StabilityKind::kUnstable ||
+                        s.kind == StabilityKind::kCritical;
+    stretches.push_back(Json{{"stability", std::string(stability_name(s.kind))},
+                             {"stability_index", judged ? Json(s.index) : Json(nullptr)},
+                             {"first_index", s.first},
+                             {"last_index", s.last},
+                             {"first_load_factor", s.first_load_factor},
+                             {"last_load_factor", s.last_load_factor}});
+  }
+  out["stability_stretches"] = std::move(stretches);
+}
+
+// "under load control" / "under displacement control of tip-y" (the text output).
+std::string stability_control_words(const PathTable& t) {
+  return t.control == "load"
+             ? "under load control"
+             : fmt::format("under displacement control of {} in the moving stage", t.control);
 }
 
 Json special_points_json(const PathTable& t, const char* kind) {
@@ -288,6 +323,11 @@ void print_text(const PathTable& t, const PathArgs& args) {
         p.reaction_M + 0.0,
         Nm,
         p.switched ? "; the path left here onto the other branch" : "");
+  }
+  const std::vector<StabilityStretch> stretches = t.stability_stretches();
+  if (!stretches.empty()) {
+    fmt::print("  stability {}:\n", stability_control_words(t));
+    for (const StabilityStretch& s : stretches) fmt::print("    {}\n", describe(s));
   }
   fmt::print("written to {}\n", args.out);
 }
@@ -334,6 +374,7 @@ void run_path(const PathArgs& args) {
     out["rejected_steps"] = t.rejected_steps;
     out["location_corrections"] = t.location_corrections;
     out["shape_points"] = t.shape_points;
+    add_stability_json(out, t);
     print_json(out);
   } else {
     print_text(t, args);
@@ -425,6 +466,12 @@ void register_path_command(CLI::App& app) {
                        args->shapes,
                        "Store the shape (x, y, angle, moment) at K points of every path "
                        "point");
+  path->add_option("--stability",
+                   args->stability,
+                   "The stability verdict of every point under the path's control: on (default; "
+                   "shooting) or off")
+      ->default_str("on")
+      ->transform(CLI::IsMember({"on", "off"}, CLI::ignore_case));
   args->physical.add_to(*path, false);
   path->add_option("--out", args->out, "Output HDF5 file (written atomically)")->required();
   path->add_flag("--json", args->json, "Print one JSON summary object on stdout");

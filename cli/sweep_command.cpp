@@ -20,6 +20,7 @@
 #include "flexure/io/parallel/mpi_world.h"
 #include "flexure/io/quantity.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/names.h"
 
 namespace flexure::cli {
 namespace {
@@ -36,6 +37,7 @@ struct SweepBeamArgs {
   std::optional<int> threads;  // default: 2, or 1 per rank under mpirun
   bool compress = false;
   bool json = false;
+  std::string stability = "on";  // the verdict per point (docs/stability.md), or off
 };
 
 // At most 10^7 points (a file of about 400 MB); under mpirun 10^10, the studies of docs/scaling.md
@@ -148,7 +150,10 @@ void run_sweep_beam(const SweepBeamArgs& args) {
   // Under mpirun the ranks are the parallelism: one thread each unless asked otherwise.
   const int threads = args.threads.value_or(parallel::launched_size() > 1 ? 1 : 2);
   require_in_range(threads, "--threads", 1, 64);
-  const BeamSweepGrid grid = make_grid(args);
+  BeamSweepGrid grid = make_grid(args);
+  // The verdict per point, as `flexure beam` gives it (docs/stability.md; its cost:
+  // docs/performance.md, "Stability verdict"), also at the points started from a neighbour.
+  grid.base.judge_stability = same_name(args.stability, "on");
   const long count = grid.size();
   // Fails (exit 2) for a method not in this build, before any file is touched.
   const BeamMethod method = resolve_beam_method(beam_method_from_string(args.method));
@@ -179,6 +184,9 @@ void run_sweep_beam(const SweepBeamArgs& args) {
     point.tip = solution.tip;
     point.alpha2 = solution.alpha2;
     if (solution.method == BeamMethod::kPrbm) point.within_validity = solution.prbm_inside_validity;
+    point.stability = solution.stability.kind;
+    point.stability_index = solution.stability.index;
+    point.stability_margin = solution.stability.margin;
     if (!solution.converged()) point.message = std::move(solution.message);
     return point;
   };
@@ -290,6 +298,13 @@ void register_sweep_command(CLI::App& app) {
   beam->add_option(
           "--threads", args->threads, "Worker threads per process (1-64; 1 per rank under mpirun)")
       ->default_str("2");
+  beam->add_option("--stability",
+                   args->stability,
+                   "The stability verdict of every point (stored in /stability, "
+                   "/stability_index, /stability_margin): on (default) or off (faster; the file "
+                   "then says not_checked)")
+      ->default_str("on")
+      ->transform(CLI::IsMember({"on", "off"}, CLI::ignore_case));
   beam->add_flag("--compress",
                  args->compress,
                  "Compress the datasets (shuffle + deflate, chunks of 64 Ki points)");

@@ -5,6 +5,7 @@
 #include "flexure/elements/end_moment_segment.h"
 #include "flexure/elements/fixed_guided_segment.h"
 #include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/elements/prbm_stability.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure {
@@ -67,6 +68,8 @@ PrbmCantileverSolution solve_prbm_cantilever(EndCondition end,
   out.root_moment = element->max_moment(eq.Theta, load);
   out.inside_validity = out.limits.contains(eq.Theta);
   out.inflection_points = end == EndCondition::kGuided && eq.Theta != 0.0 ? 1 : 0;
+  out.stability = eq.converged() ? prbm_stability(*element, eq.Theta, load)
+                                 : not_checked_stability("the PRBM did not converge");
   return out;
 }
 

@@ -13,6 +13,7 @@
 #include "flexure/elements/prbm_element.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
+#include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure {
@@ -39,6 +40,9 @@ struct PrbmCantileverSolution : SolveStatus {
   int inflection_points = 0;
   ValidityLimits limits;
   bool inside_validity = false;  // limits.contains(Theta): Howell eqs. 5.47 and 5.63
+  // The PRBM's own verdict: the sign of d^2V/dTheta^2 of its potential energy (prbm_stability.h);
+  // not_checked when the solve did not converge.
+  Stability stability;
 };
 
 // Solves the cantilever's PRBM. Throws as prbm_cantilever_element, and InvalidInput for a load the

@@ -59,6 +59,9 @@ BeamSweepTable run_beam_sweep(long total,
   table.theta0.assign(total, kNaN);
   table.status.assign(total, kSweepNotConverged);
   table.within_validity.assign(total, -1);
+  table.stability.assign(total, stability_code(StabilityKind::kNotChecked));
+  table.stability_index.assign(total, -1);
+  table.stability_margin.assign(total, kNaN);
 
   const long chunk = std::max(1L, options.chunk);
   std::atomic<long> next{0};
@@ -95,6 +98,17 @@ BeamSweepTable run_beam_sweep(long total,
             table.theta0[i] = point.tip.theta0;
             table.status[i] = kSweepConverged;
             table.within_validity[i] = point.within_validity;
+            table.stability[i] = stability_code(point.stability);
+            const bool judged = point.stability == StabilityKind::kStable ||
+                                point.stability == StabilityKind::kUnstable ||
+                                point.stability == StabilityKind::kCritical;
+            if (judged && std::isfinite(point.stability_margin)) {
+              table.stability_index[i] = point.stability_index;
+              table.stability_margin[i] = point.stability_margin;
+            } else {
+              table.stability[i] =
+                  stability_code(judged ? StabilityKind::kNotChecked : point.stability);
+            }
           }
         }
         done.fetch_add(end - begin);
@@ -161,9 +175,22 @@ const std::vector<CodeMeaning>& beam_sweep_code_meanings() {
        "no converged solution at this load (a_over_l, b_over_l, theta0 are NaN)"},
       {"within_validity", -1, "no validity limit: an exact method, or no solution at this load"},
       {"within_validity", 0, "PRBM: the PRB angle is outside the element's validity limit"},
-      {"within_validity", 1, "PRBM: the PRB angle is within the element's validity limit"}};
+      {"within_validity", 1, "PRBM: the PRB angle is within the element's validity limit"},
+      {"stability", 0, "stable: the potential energy has a strict minimum (docs/stability.md)"},
+      {"stability", 1, "unstable: the energy decreases in stability_index directions"},
+      {"stability", 2, "critical: a buckling or limit point (|margin| <= 1e-6)"},
+      {"stability",
+       3,
+       "not_conservative: a follower force, which the energy cannot judge (index -1, margin "
+       "NaN)"},
+      {"stability",
+       4,
+       "not_checked: not computed (no solution at this load, or the verdict was switched off; "
+       "index -1, margin NaN)"}};
   return codes;
 }
+
+int stability_code(StabilityKind kind) { return static_cast<int>(kind); }
 
 namespace {
 
@@ -229,6 +256,31 @@ BeamSweepWriter::BeamSweepWriter(Hdf5Group& group,
           "1",
           "PRBM: 1 PRB angle within the element's validity limit, 0 outside; -1 exact methods "
           "and failed points",
+          options)),
+      stability_(group.create_dataset(
+          "stability",
+          Hdf5Type::kInt32,
+          sweep_dims(count, metadata),
+          "1",
+          "stability verdict of the equilibrium: 0 stable, 1 unstable, 2 critical, 3 "
+          "not_conservative, 4 not_checked (root status_meanings; docs/stability.md)",
+          options)),
+      stability_index_(group.create_dataset(
+          "stability_index",
+          Hdf5Type::kInt32,
+          sweep_dims(count, metadata),
+          "1",
+          "independent directions in which the potential energy decreases (0 stable); -1 where "
+          "not judged (stability 3 or 4)",
+          options)),
+      stability_margin_(group.create_dataset(
+          "stability_margin",
+          Hdf5Type::kFloat64,
+          sweep_dims(count, metadata),
+          "1",
+          "lowest eigenvalue of the second variation of the energy relative to the unloaded "
+          "bending stiffness (1 - P/P_cr for a column; the PRBM: d2V/dTheta2 over the spring "
+          "stiffness); NaN where not judged (stability 3 or 4)",
           options)) {
   hsize_t points = 1;
   for (hsize_t d : sweep_dims(count, metadata)) points *= d;
@@ -246,6 +298,9 @@ void BeamSweepWriter::write(long begin, const BeamSweepTable& block) {
   theta0_.write_range(at, std::span<const double>(block.theta0));
   status_.write_range(at, std::span<const int>(block.status));
   within_validity_.write_range(at, std::span<const int>(block.within_validity));
+  stability_.write_range(at, std::span<const int>(block.stability));
+  stability_index_.write_range(at, std::span<const int>(block.stability_index));
+  stability_margin_.write_range(at, std::span<const double>(block.stability_margin));
 }
 
 void BeamSweepWriter::finish(long converged_count) {

@@ -14,9 +14,14 @@
 //   /theta0           float64  tip angle in rad, NaN where status != 0
 //   /status           int32    0 converged, 1 no converged solution at this load
 //   /within_validity  int32    PRBM validity per load (BeamSweepPoint::within_validity)
+//   /stability        int32    the verdict (docs/stability.md): 0 stable, 1 unstable, 2
+//                              critical, 3 not_conservative, 4 not_checked (also where status != 0)
+//   /stability_index  int32    negative directions of the energy; -1 where not judged (3, 4)
+//   /stability_margin float64  lowest eigenvalue / bending stiffness; NaN where not judged
 // Root attributes: method, load_ratio_n, mu, tolerance, count, converged_count and the
 // provenance of io/provenance.h (status_meanings from beam_sweep_code_meanings()).
-// NaN in a stored float dataset always means "no solution" and is always flagged by status = 1.
+// NaN in a stored float dataset means "no solution" (flagged by status = 1), except in
+// /stability_margin, where it means "not judged" (flagged by /stability 3 or 4).
 #include <functional>
 #include <limits>
 #include <string>
@@ -25,6 +30,7 @@
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/provenance.h"
 #include "flexure/solver/common/end_load.h"
+#include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::io {
@@ -42,8 +48,16 @@ struct BeamSweepPoint : SolveStatus {
   // The load alpha2 at this point: the given one (forward), the one found (inverse: a tip angle
   // or deflection given), NaN if none was found. Stored whether or not the point converged.
   double alpha2 = std::numeric_limits<double>::quiet_NaN();
+  // The verdict of the point's equilibrium (its message is not stored).
+  StabilityKind stability = StabilityKind::kNotChecked;
+  int stability_index = 0;
+  double stability_margin = 0.0;
   // message: why it failed (only needed when !converged)
 };
+
+// The code stored in /stability for a verdict: the order of StabilityKind (0 stable ... 4
+// not_checked).
+int stability_code(StabilityKind kind);
 
 // Solves one load alpha2; must be safe to call from several threads at once. May throw
 // NoConvergence (stored as status 1) or InvalidInput (aborts the sweep).
@@ -70,6 +84,9 @@ struct BeamSweepTable {
   std::vector<double> theta0;
   std::vector<int> status;
   std::vector<int> within_validity;  // per point as BeamSweepPoint::within_validity (-1 if failed)
+  std::vector<int> stability;        // stability_code(); 4 (not_checked) where status != 0
+  std::vector<int> stability_index;  // -1 where not judged
+  std::vector<double> stability_margin;  // NaN where not judged
   long converged_count = 0;
   long first_failure = -1;            // index of the first point with status != 0, or -1
   std::string first_failure_message;  // the method's message for that point
@@ -113,7 +130,7 @@ struct BeamSweepMetadata {
   double given_value = 0.0;
 };
 
-// The meanings of the codes in /status and /within_validity.
+// The meanings of the codes in /status, /within_validity and /stability.
 const std::vector<CodeMeaning>& beam_sweep_code_meanings();
 
 // Writes the layout above into `group` (the root of an AtomicHdf5File) as the sweep is solved:
@@ -134,7 +151,8 @@ class BeamSweepWriter {
   Hdf5Group& group_;
   long count_;
   BeamSweepMetadata metadata_;
-  Hdf5Dataset alpha2_, a_over_l_, b_over_l_, theta0_, status_, within_validity_;
+  Hdf5Dataset alpha2_, a_over_l_, b_over_l_, theta0_, status_, within_validity_, stability_,
+      stability_index_, stability_margin_;
 };
 
 // The whole table at once (the same file as a streamed sweep).

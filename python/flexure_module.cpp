@@ -276,6 +276,48 @@ class TextColumn {
     }
     codes_[i] = static_cast<std::uint32_t>(last * static_cast<long>(texts_.size()) + worker);
   }
+  // An object array of lists of str: each point's text split at newlines ("" an empty list).
+  py::array to_numpy_lists(const std::vector<py::ssize_t>& shape) const {
+    const auto workers = static_cast<std::uint32_t>(texts_.size());
+    py::array out = py::module_::import("numpy").attr("empty")(shape, py::dtype("O"));
+    auto** cells = static_cast<PyObject**>(out.mutable_data());
+    for (std::size_t i = 0; i < codes_.size(); ++i) {
+      const std::uint32_t w = codes_[i] % workers, k = codes_[i] / workers;
+      py::list items;
+      if (k < texts_[w].size() && !texts_[w][k].empty()) {
+        std::string_view rest = texts_[w][k];
+        for (;;) {
+          const std::size_t end = rest.find('\n');
+          items.append(py::str(std::string(rest.substr(0, end))));
+          if (end == std::string_view::npos) break;
+          rest.remove_prefix(end + 1);
+        }
+      }
+      Py_XDECREF(cells[i]);  // numpy.empty fills object arrays with None
+      cells[i] = items.release().ptr();
+    }
+    return out;
+  }
+  // An object array of the JSON texts as the scalar call returns them (to_python; "" is None);
+  // equal texts share one object.
+  py::array to_numpy_json(const std::vector<py::ssize_t>& shape) const {
+    const auto workers = static_cast<std::uint32_t>(texts_.size());
+    std::vector<std::vector<py::object>> objects(texts_.size());
+    for (std::size_t w = 0; w < texts_.size(); ++w) {
+      for (const std::string& text : texts_[w]) {
+        objects[w].push_back(text.empty() ? py::none() : to_python(Json::parse(text)));
+      }
+    }
+    py::array out = py::module_::import("numpy").attr("empty")(shape, py::dtype("O"));
+    auto** cells = static_cast<PyObject**>(out.mutable_data());
+    for (std::size_t i = 0; i < codes_.size(); ++i) {
+      const std::uint32_t w = codes_[i] % workers, k = codes_[i] / workers;
+      py::object value = k < objects[w].size() ? objects[w][k] : py::none();
+      Py_XDECREF(cells[i]);  // numpy.empty fills object arrays with None
+      cells[i] = value.release().ptr();
+    }
+    return out;
+  }
   // An object array of str (equal texts share one object); points never set read "".
   py::array to_numpy(const std::vector<py::ssize_t>& shape) const {
     const auto workers = static_cast<std::uint32_t>(texts_.size());
@@ -326,6 +368,8 @@ struct Columns {
         reaction_Fx(shape, kNaN),
         reaction_Fy(shape, kNaN),
         reaction_M(shape, kNaN),
+        stability_index(shape, kNaN),
+        stability_margin(shape, kNaN),
         Theta(shape, kNaN, used.prbm),
         theta_max(shape, kNaN, used.prbm),
         expected_error(shape, kNaN),
@@ -345,15 +389,24 @@ struct Columns {
         family(count, workers),
         message(count, workers),
         termination(count, workers),
+        stability(count, workers),
+        stability_message(count, workers),
+        stable_search(count, workers),
+        warnings(count, workers),
         validity_source(used.prbm ? count : 0, workers),
-        constants(used.prbm3r ? count : 0, workers) {}
+        constants(used.prbm3r ? count : 0, workers),
+        special_points(count, workers) {}
   NumpyColumn<double> n, alpha2, mu, a_over_l, b_over_l, theta0, root_moment, target_residual,
-      first_limit_load_factor, reaction_Fx, reaction_Fy, reaction_M, Theta, theta_max,
-      expected_error, max_element_deflection, slenderness;
+      first_limit_load_factor, reaction_Fx, reaction_Fy, reaction_M, stability_index,
+      stability_margin, Theta, theta_max, expected_error, max_element_deflection, slenderness;
+  // stability_index is a float column: NaN where not judged, the scalar call's None.
   NumpyColumn<long long> iterations, inflection_points, limit_points, elements, increments, status;
   NumpyColumn<bool> within_validity, converged;
-  TextColumn method, method_reason, branch, family, message, termination, validity_source,
-      constants;
+  // warnings: the point's warnings joined by newlines (returned as a list per point).
+  TextColumn method, method_reason, branch, family, message, termination, stability,
+      stability_message, stable_search, warnings, validity_source, constants;
+  // special_points: the JSON text of the key (cli::special_points_json), "" for null.
+  TextColumn special_points;
   std::atomic<bool> any_prbm{false}, any_chain{false}, any_prbm3r{false}, any_bcm{false};
 };
 
@@ -379,6 +432,13 @@ void solve_one(const cli::BeamCommandProblem& base,
                int worker) {
   c.n.data[i] = n;
   c.mu.data[i] = mu;
+  // A text column reads another point's text where it was never set: a failed load's are set
+  // here.
+  c.stability.set(i, worker, stability_name(StabilityKind::kNotChecked));
+  c.stability_message.set(i, worker, "");
+  c.stable_search.set(i, worker, "");
+  c.warnings.set(i, worker, "");
+  c.special_points.set(i, worker, "");
   try {
     cli::require_finite_input(n, "--n (load ratio n)");
     cli::require_finite_input(mu, "--mu (end moment M l/EI)");
@@ -423,6 +483,20 @@ void solve_one(const cli::BeamCommandProblem& base,
     c.reaction_Fx.data[i] = finite_or_nan(s.reactions.Fx);
     c.reaction_Fy.data[i] = finite_or_nan(s.reactions.Fy);
     c.reaction_M.data[i] = finite_or_nan(s.reactions.M);
+    if (s.special_points_known) {
+      c.special_points.set(i, worker, cli::special_points_json(problem, s).dump());
+    }
+    c.stability.set(i, worker, stability_name(s.stability.kind));
+    c.stability_message.set(i, worker, s.stability.message);
+    c.stable_search.set(i, worker, s.stable_search);
+    std::string joined;
+    for (const std::string& w : cli::beam_warnings(problem, s))
+      joined += (joined.empty() ? "" : "\n") + w;
+    c.warnings.set(i, worker, joined);
+    if (s.stability.judged()) {
+      c.stability_index.data[i] = s.stability.index;
+      c.stability_margin.data[i] = finite_or_nan(s.stability.margin);
+    }
     if (s.method == BeamMethod::kPrbm) {
       c.any_prbm = true;
       c.within_validity.data[i] = s.prbm_inside_validity;
@@ -536,6 +610,7 @@ py::dict beam_many(const std::vector<std::string>& args,
   out["limit_points"] = c.limit_points.array;
   out["target_residual"] = c.target_residual.array;
   out["first_limit_load_factor"] = c.first_limit_load_factor.array;
+  out["special_points"] = c.special_points.to_numpy_json(shape);
   out["family"] = c.family.to_numpy(shape);
   out["message"] = c.message.to_numpy(shape);
   out["termination"] = c.termination.to_numpy(shape);
@@ -548,6 +623,13 @@ py::dict beam_many(const std::vector<std::string>& args,
   reactions["M"] = c.reaction_M.array;
   out["reactions"] = reactions;
   // In the tool's order for each method (a key two methods share keeps its first place).
+  out["stability"] = c.stability.to_numpy(shape);
+  out["stability_index"] = c.stability_index.array;
+  out["stability_margin"] = c.stability_margin.array;
+  out["stability_message"] = c.stability_message.to_numpy(shape);
+  out["stable_search"] = base.problem.stable ? c.stable_search.to_numpy(shape)
+                                             : py::module_::import("numpy").attr("full")(
+                                                   shape, py::none(), py::dtype("O"));
   if (c.any_prbm) {
     out["within_validity"] = c.within_validity.array;
     out["Theta"] = c.Theta.array;
@@ -565,6 +647,7 @@ py::dict beam_many(const std::vector<std::string>& args,
     out["within_validity"] = c.within_validity.array;
     out["slenderness"] = c.slenderness.array;
   }
+  out["warnings"] = c.warnings.to_numpy_lists(shape);
   out["status"] = c.status.array;
   return out;
 }

@@ -10,10 +10,13 @@
 #include "flexure/benchmarks/studies/beam_solution_parts.h"
 #include "flexure/benchmarks/studies/method_selector.h"
 #include "flexure/elements/prbm_cantilever.h"
+#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/inverse/tip_target.h"
+#include "flexure/solver/shooting/shooting_shape.h"
 #include "flexure/solver/shooting/shooting_solver.h"
+#include "flexure/solver/shooting/stable_equilibrium.h"
 
 namespace flexure {
 namespace {
@@ -25,6 +28,100 @@ constexpr double kNumericalInverseTolerance = 1e-8;
 // Tip quantity used by the inverse problems.
 double given_quantity(const BeamProblem& problem, const TipPose& tip) {
   return problem.given == BeamProblem::Given::kTheta0 ? tip.theta0 : tip.b_over_l;
+}
+
+// The verdict from a shape function (docs/stability.md): a shape that cannot be evaluated or a
+// chain the verdict refuses leaves it not_checked with the reason (never a failed solve).
+Stability judge(const SegmentChain& chain,
+                const Reaction& support,
+                const ShapeAtStations& shape,
+                const StabilityOptions& options) {
+  try {
+    return equilibrium_stability(chain, support, shape, options);
+  } catch (const NoConvergence& e) {
+    return not_checked_stability(e.what());
+  } catch (const InvalidInput& e) {
+    return not_checked_stability(e.what());
+  }
+}
+
+
+// The verdict in words, for messages: "unstable (index 1, stability margin -0.216)".
+std::string verdict_words(const Stability& s) {
+  if (!s.judged()) return std::string(stability_name(s.kind));
+  return fmt::format(
+      "{} (index {}, stability margin {:.6g})", stability_name(s.kind), s.index, s.margin);
+}
+
+// BeamProblem::stable: the answer is not stable, so a stable equilibrium is sought from it
+// (solver/shooting/stable_equilibrium.h) and, when found, replaces it (method shooting, whose
+// Newton iteration converged it); otherwise the solution is not converged and says why.
+void seek_stable(const BeamProblem& problem,
+                 const SegmentChain& chain,
+                 const ShapeAtStations& start,
+                 const Reaction& start_support,
+                 int shape_points,
+                 BeamSolution& solution) {
+  // The chain algorithm cannot vouch that an unstable answer is the path's (its passes also
+  // converge off the path), so it is not called that.
+  const std::string before = fmt::format("the {} answer{} is {}",
+                                         to_string(solution.method),
+                                         solution.method == BeamMethod::kChain
+                                             ? ""
+                                             : ", the equilibrium reached by proportional loading,",
+                                         verdict_words(solution.stability));
+  StableEquilibriumOptions options;
+  options.shooting.shape_points = std::max(shape_points, 401);
+  options.shooting.backend = problem.integrator;
+  const StableEquilibrium found = find_stable_equilibrium(chain, start, start_support, options);
+  if (!found.converged()) {
+    solution.set_converged(false);
+    solution.stable_search = fmt::format("{}; {}", before, found.message);
+    solution.message = fmt::format("no stable equilibrium found: {}", solution.stable_search);
+    return;
+  }
+  const ShootingResult& r = found.equilibrium;
+  const double length = chain.total_length();
+  solution.method = BeamMethod::kShooting;
+  solution.termination = Termination::kConverged;
+  solution.iterations += found.iterations + r.iterations;
+  solution.residual = r.residual;
+  solution.tip = r.tip_pose(length);
+  solution.reactions = {r.reaction.Fx, r.reaction.Fy, r.reaction.M};
+  solution.root_moment = -r.reaction.M;
+  solution.load_factor = 1.0;
+  solution.tolerance = options.shooting.rtol;
+  solution.family = "numerical";
+  solution.elements = 0;
+  solution.increments = 0;
+  solution.branch = fmt::format(
+      "a stable equilibrium off the proportional load path (energy descent from the path's "
+      "{} answer, then Newton){}",
+      stability_name(solution.stability.kind),
+      limit_points_note(solution.limit_points, solution.first_limit_load_factor));
+  solution.inflection_points = count_curvature_sign_changes(r.shape);
+  // In the chain's units: the numerical methods scale it per unit length afterwards
+  // (finish_numerical); the elliptic method's chain has length 1.
+  solution.shape.clear();
+  if (shape_points > 0) solution.shape = resample(r.shape, shape_points);
+  solution.stable_search = fmt::format(
+      "{}; {}; the result is {}", before, found.message, verdict_words(found.stability));
+  solution.message = fmt::format("a stable equilibrium: {}", found.message);
+  solution.stability = found.stability;
+  solution.off_path = true;
+}
+
+// An answer left unjudged because the verdict is off says so.
+void label_unjudged(const BeamProblem& problem, BeamSolution& solution) {
+  if (!problem.judge_stability && !problem.stable &&
+      solution.stability.kind == StabilityKind::kNotChecked) {
+    solution.stability = not_checked_stability("the verdict was switched off (--stability off)");
+  }
+}
+
+// Whether BeamProblem::stable asks for a search from this answer.
+bool wants_stable_search(const BeamProblem& problem, const BeamSolution& solution) {
+  return problem.stable && solution.converged() && !solution.stability.stable();
 }
 
 BeamSolution solve_elliptic(const BeamProblem& problem) {
@@ -70,6 +167,16 @@ BeamSolution solve_elliptic(const BeamProblem& problem) {
   if (result.converged() && problem.shape_points > 0) {
     solution.shape = solver.shape(result, problem.shape_points);
   }
+  if (result.converged() && (problem.judge_stability || problem.stable)) {
+    const SegmentChain chain = uniform_cantilever(result.load);
+    const ShapeAtStations shape = [&](const std::vector<double>& s) {
+      return solver.shape_at(result, s);
+    };
+    solution.stability = judge(chain, Reaction{}, shape, problem.stability_options);
+    if (wants_stable_search(problem, solution)) {
+      seek_stable(problem, chain, shape, Reaction{}, problem.shape_points, solution);
+    }
+  }
   return solution;
 }
 
@@ -111,6 +218,17 @@ BeamSolution solve_prbm(const BeamProblem& problem) {
   // carries the other end moment, equal and opposite (Howell eq. 5.106).
   solution.reactions = {-load.Fx, -load.Fy, -solution.root_moment};
   solution.load_factor = prbm.converged() ? 1.0 : 0.0;
+  if (problem.judge_stability || problem.stable) solution.stability = prbm.stability;
+  if (wants_stable_search(problem, solution)) {
+    // The PRBM's first root met from the unloaded angle is a minimum of its energy (the energy's
+    // slope changes sign from falling to rising there), so this is a critical tangency at most.
+    solution.set_converged(false);
+    solution.stable_search = fmt::format(
+        "the PRBM's equilibrium is {}; the search for a stable equilibrium follows the exact "
+        "methods' equilibria only (method elliptic or shooting)",
+        verdict_words(solution.stability));
+    solution.message = fmt::format("no stable equilibrium found: {}", solution.stable_search);
+  }
   return solution;
 }
 
@@ -138,10 +256,15 @@ ShootingSolver::Options beam_shooting_options(const BeamProblem& problem, int sh
   return options;
 }
 
-BeamSolution beam_solution_from_shooting(const BeamProblem& problem,
-                                         double alpha2,
-                                         const ShootingResult& r,
-                                         int shape_points) {
+namespace {
+
+// beam_solution_from_shooting; `final_answer` false for the forward solves of an inverse
+// problem's search, which are not judged (only the answer is).
+BeamSolution shooting_solution(const BeamProblem& problem,
+                               double alpha2,
+                               const ShootingResult& r,
+                               int shape_points,
+                               bool final_answer) {
   const SegmentChain chain = problem.to_chain(alpha2);
   BeamSolution solution;
   solution.method = BeamMethod::kShooting;
@@ -180,27 +303,46 @@ BeamSolution beam_solution_from_shooting(const BeamProblem& problem,
   solution.limit_points = r.limit_points;
   solution.first_limit_load_factor = r.first_limit_load_factor;
   solution.branch += limit_points_note(r.limit_points, r.first_limit_load_factor);
+  // The continuation's located special points (a direct Newton solve of a unique equilibrium has
+  // none to pass; a neighbour's start did not trace the path).
+  solution.special_points_known = r.path != ShootingPath::kFromNeighbour;
+  solution.special_points = r.special_points;
   solution.inflection_points = std::max(r.inflection_points, 0);
   if (shape_points > 0 && r.converged()) {
     solution.shape = static_cast<int>(r.shape.size()) == shape_points
                          ? r.shape
                          : resample(r.shape, shape_points);
   }
+  if (r.converged() && final_answer && (problem.judge_stability || problem.stable)) {
+    // The shape at the verdict's stations, integrated from the result's unknowns with the
+    // options of the solve (the shape_points requested do not matter to it).
+    const ShootingSolver::Options options = beam_shooting_options(problem, 0);
+    const Reaction support = tip_support_reaction(chain, r.tip_load);
+    const ShapeAtStations shape = [&](const std::vector<double>& s) {
+      return shooting_shape_at(chain, r, s, options);
+    };
+    solution.stability = judge(chain, support, shape, problem.stability_options);
+    if (wants_stable_search(problem, solution)) {
+      seek_stable(problem, chain, shape, support, shape_points, solution);
+    }
+  }
   finish_numerical(problem, chain, solution);
+  label_unjudged(problem, solution);
   return solution;
 }
-
-namespace {
 
 BeamSolution solve_numerical_forward(BeamMethod method,
                                      const BeamProblem& problem,
                                      double alpha2,
-                                     int shape_points) {
+                                     int shape_points,
+                                     bool final_answer = true) {
   if (method == BeamMethod::kShooting) {
     const ShootingSolver::Options options = beam_shooting_options(problem, shape_points);
     const ShootingResult r = solve_shooting(problem.to_chain(alpha2), options);
-    return beam_solution_from_shooting(problem, alpha2, r, shape_points);
+    return shooting_solution(problem, alpha2, r, shape_points, final_answer);
   }
+  // Only the answer is judged (not the forward solves of an inverse problem's search).
+  const bool judge_it = final_answer && (problem.judge_stability || problem.stable);
   const SegmentChain chain = problem.to_chain(alpha2);
   BeamSolution solution;
   solution.method = method;
@@ -226,6 +368,16 @@ BeamSolution solve_numerical_forward(BeamMethod method,
                                 to_string(options.variant));
   solution.inflection_points = count_curvature_sign_changes(r.nodes);
   if (shape_points > 0 && r.converged()) solution.shape = resample(r.nodes, shape_points);
+  if (judge_it) solution.stability = r.stability;
+  // The chain refuses an unstable answer (chain_algorithm_solver.h) but keeps its verdict and
+  // nodes: a valid equilibrium to start the search for a stable one from.
+  const bool refused_unstable =
+      !r.converged() && r.stability.kind == StabilityKind::kUnstable && r.nodes.size() >= 2;
+  if (judge_it && problem.stable && (refused_unstable || wants_stable_search(problem, solution))) {
+    if (refused_unstable) solution.set_converged(true);  // the search decides
+    seek_stable(
+        problem, chain, interpolated_shape(r.nodes), r.tip_reaction, shape_points, solution);
+  }
   finish_numerical(problem, chain, solution);
   return solution;
 }
@@ -247,7 +399,7 @@ BeamSolution solve_numerical(BeamMethod method, const BeamProblem& problem) {
   target.load_ratio_n = problem.load_ratio_n;
   target.mu = problem.mu;
   auto forward = [&](double alpha2) -> std::optional<TipPose> {
-    const BeamSolution s = solve_numerical_forward(method, problem, alpha2, 0);
+    const BeamSolution s = solve_numerical_forward(method, problem, alpha2, 0, false);
     if (!s.converged()) return std::nullopt;
     return s.tip;
   };
@@ -281,6 +433,13 @@ BeamSolution solve_numerical(BeamMethod method, const BeamProblem& problem) {
 }
 
 }  // namespace
+
+BeamSolution beam_solution_from_shooting(const BeamProblem& problem,
+                                         double alpha2,
+                                         const ShootingResult& r,
+                                         int shape_points) {
+  return shooting_solution(problem, alpha2, r, shape_points, true);
+}
 
 SegmentChain BeamProblem::to_chain(double alpha2) const {
   if (chain) return *chain;
@@ -333,6 +492,20 @@ BeamMethod resolve_beam_method(BeamMethod method) {
 }
 
 BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem) {
+  if (problem.stable) {
+    if (problem.given != BeamProblem::Given::kAlpha2 && !problem.chain) {
+      throw InvalidInput(
+          "a stable equilibrium is sought for given loads: with a given tip angle theta0 or "
+          "deflection b/l the load is found from the proportional-loading path, and another "
+          "equilibrium would miss the target; give the load alpha2 instead");
+    }
+    const double follower = problem.chain ? problem.chain->tip_load.follower : problem.follower;
+    if (follower != 0.0) {
+      throw InvalidInput(
+          "a stable equilibrium is a minimum of the potential energy, and a follower force has "
+          "none (its stability is a dynamic question): the search needs dead loads");
+    }
+  }
   MethodResolution used = resolve_beam_method(method, problem);
   const bool inverse = problem.given != BeamProblem::Given::kAlpha2;
   // auto's fallback answers to the tolerance too: refused (exit code 2) when the shooting method
@@ -395,6 +568,21 @@ BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem) {
   solution.method_reason = used.reason;
   solution.expected_error = used.expected_error;
   solution.methods_tried = std::move(tried);
+  label_unjudged(problem, solution);
+  if (problem.stable) {
+    if (solution.stable_search.empty() && solution.converged()) {
+      solution.stable_search = fmt::format(
+          "not needed: the answer, the equilibrium reached by proportional loading, "
+          "is {}",
+          verdict_words(solution.stability));
+    } else if (solution.converged() && solution.off_path) {
+      solution.method_reason = fmt::format(
+          "{}; its answer was not stable, so a stable equilibrium was sought from it: an energy "
+          "descent along its unstable direction, converged by the shooting method's Newton "
+          "iteration",
+          used.reason);
+    }
+  }
   if (!problem.chain) {
     solution.load_ratio_n = problem.load_ratio_n;
     solution.mu = problem.mu;

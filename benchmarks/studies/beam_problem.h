@@ -14,8 +14,10 @@
 
 #include "flexure/benchmarks/studies/beam_method.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
+#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
+#include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/elastica_integrator.h"
 #include "flexure/solver/shooting/shooting_solver.h"
@@ -51,6 +53,19 @@ struct BeamProblem {
   int cbcm_elements = 6;
   std::string prbm3r_constants = "su";
   double slenderness = 0.0;
+  // The stability verdict of the answer (BeamSolution::stability; docs/stability.md): on by
+  // default; false leaves it not_checked (a sweep that does not want its cost). Its settings:
+  // the defaults judge the margin to 1e-9; a sweep asks for less (margin_accuracy), which only
+  // saves the refinements of margins close to 1 (docs/performance.md, "Stability").
+  bool judge_stability = true;
+  StabilityOptions stability_options;
+  // Return a stable equilibrium: when the one reached by proportional loading is not stable
+  // (unstable or critical), descend the potential energy from it along its unstable direction and
+  // converge by the shooting method's Newton iteration (solver/shooting/stable_equilibrium.h);
+  // the answer is then that equilibrium (method shooting) and stable_search says what was done,
+  // or it is not converged with the reason. For given loads only (not theta0 or b/l), dead
+  // loads only (InvalidInput otherwise).
+  bool stable = false;
 
   // The segment chain this problem describes (the given chain, or Howell's uniform cantilever with
   // Fx = -n alpha2, Fy = alpha2, M = mu, the follower force and the end condition). Throws
@@ -96,6 +111,13 @@ struct BeamSolution : SolveStatus {
   // control at the first); elliptic and shooting only.
   int limit_points = 0;
   double first_limit_load_factor = 0.0;
+  // Shooting only: the limit points and bifurcation points its continuation passed, located on the
+  // path (solver/shooting/continuation.h), in Howell's units (the chain's for a chain file) with
+  // the tip per unit length; `special_points_known` false for the other methods and for answers
+  // whose path is not the shooting method's own (a direct Newton solve of a provably unique
+  // equilibrium passes none, a sweep's neighbour start does not trace it).
+  bool special_points_known = false;
+  std::vector<SpecialPoint> special_points;
   // Chains given as a whole: the tip load, root moment and clamp reactions in the chain's units.
   Reaction chain_tip_load;
   double chain_root_moment = 0.0;
@@ -114,6 +136,16 @@ struct BeamSolution : SolveStatus {
   double max_element_deflection = std::numeric_limits<double>::quiet_NaN();
   bool model_inside_validity = true;
   double slenderness = 0.0;
+  // The stability verdict of the returned equilibrium under the problem's loads and supports
+  // (docs/stability.md): the discrete second variation for elliptic, shooting and the chain
+  // algorithm, d^2V/dTheta^2 of the PRBM's energy for the PRBM; not_conservative for a follower
+  // force, not_checked when the solve failed or judge_stability is off. An unstable answer is
+  // still the documented proportional-loading answer, now labelled.
+  Stability stability;
+  // BeamProblem::stable: what the search for a stable equilibrium did (empty when not asked), and
+  // whether its result replaced the proportional-loading answer (the answer is then off the path).
+  std::string stable_search;
+  bool off_path = false;
 };
 
 // The method `auto` resolves to for this problem: the cheapest whose error is within
@@ -133,15 +165,18 @@ BeamMethod resolve_beam_method(BeamMethod method);
 
 // Solves `problem` with `method`. Throws InvalidInput for bad input or a problem the method does
 // not solve (OutsideMethodDomain for a load beyond its range); a failed solve returns converged()
-// false and a message. With kAuto, a load beyond the elliptic solver's range, or a solve of the
-// chosen method that does not converge, goes to the shooting method (it follows the load path past
-// limit points); method_reason then says which method answered and why.
+// false and a message. The answer carries its stability verdict; with problem.stable an answer
+// that is not stable is replaced by a stable equilibrium (or not converged when none is found).
+// With kAuto, a load beyond the elliptic solver's range, or a solve of the chosen method that does
+// not converge, goes to the shooting method (it follows the load path past limit points);
+// method_reason then says which method answered and why.
 BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem);
 
 // The shooting method's part of solve_beam for a forward problem, split so that a sweep can start
 // each point from its neighbour (beam_sweep_solver.h): the solver's options for `problem` (the
 // shape at `shape_points` points, 0 for none; the inflection points counted without a shape),
-// and a result at load alpha2 as the BeamSolution solve_beam returns.
+// and a result at load alpha2 as the BeamSolution solve_beam returns (with its stability verdict
+// per problem.judge_stability, and with problem.stable a stable equilibrium searched from it).
 ShootingSolver::Options beam_shooting_options(const BeamProblem& problem, int shape_points);
 BeamSolution beam_solution_from_shooting(const BeamProblem& problem,
                                          double alpha2,

@@ -8,6 +8,7 @@
 
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/shooting/path_point_stability.h"
 
 namespace flexure {
 namespace {
@@ -132,6 +133,17 @@ PathTable shooting_table(const PathRequest& r) {
       t.shape_s.push_back(total * k / (r.shape_points - 1) * u.length);
     }
   }
+  // The verdict of every point under the path's control there (path_point_stability.h).
+  for (const PathPoint& p : path.points) {
+    t.stability.push_back(
+        r.judge_stability
+            ? path_point_stability(r.chain,
+                                   p,
+                                   path_held_coordinates(r.chain, r.control, path, p.stage),
+                                   options,
+                                   r.stability)
+            : not_checked_stability("the verdict was switched off (--stability off)"));
+  }
   for (const SpecialPoint& sp : path.special_points) t.special_points.push_back(to_table(sp, u));
   t.completed = path.converged();
   t.lambda_reached = path.lambda_reached;
@@ -186,6 +198,14 @@ PathTable chain_table(const PathRequest& r) {
   t.reaction_Fx.back() = result.root_reaction.Fx * u.force;
   t.reaction_Fy.back() = result.root_reaction.Fy * u.force;
   t.reaction_M.back() = result.root_reaction.M * u.moment;
+  // The increments record tips only (no shape to judge); the answer carries the chain
+  // algorithm's own verdict (chain_algorithm_solver.h).
+  t.stability.assign(t.size(),
+                     not_checked_stability("the chain algorithm's path records the tip only; "
+                                           "--method shooting judges every point"));
+  if (r.judge_stability && result.stability.kind != StabilityKind::kNotChecked) {
+    t.stability.back() = result.stability;
+  }
   t.completed = result.converged();
   t.lambda_reached = result.load_factor;
   t.steps = result.increments;
@@ -219,6 +239,7 @@ PathUnits PathUnits::chain_file() {
 
 void PathRequest::validate() const {
   chain.validate();
+  if (judge_stability) stability.validate();
   if (method == PathMethod::kChain) {
     require_in_range(elements, "--elements (chain algorithm elements N)", 1, 1'000'000);
     require_in_range(increments, "--increments (load increments)", 1, 1'000'000);
@@ -265,6 +286,40 @@ std::vector<const PathSpecialPoint*> PathTable::of_kind(const std::string& kind)
   return out;
 }
 
+std::vector<StabilityStretch> PathTable::stability_stretches() const {
+  std::vector<StabilityStretch> out;
+  for (std::size_t i = 0; i < stability.size() && i < size(); ++i) {
+    const Stability& s = stability[i];
+    const int index = s.judged() ? s.index : 0;
+    if (out.empty() || out.back().kind != s.kind || out.back().index != index) {
+      StabilityStretch next;
+      next.kind = s.kind;
+      next.index = index;
+      next.first = static_cast<int>(i);
+      next.first_load_factor = load_factor[i];
+      out.push_back(next);
+    }
+    out.back().last = static_cast<int>(i);
+    out.back().last_load_factor = load_factor[i];
+  }
+  return out;
+}
+
+std::string describe(const StabilityStretch& s) {
+  const std::string kind = s.kind == StabilityKind::kUnstable
+                               ? fmt::format("unstable (index {})", s.index)
+                               : std::string(stability_name(s.kind));
+  if (s.first == s.last) {
+    return fmt::format("{} at point {} (load factor {:.10g})", kind, s.first, s.first_load_factor);
+  }
+  return fmt::format("{} at points {}-{} (load factor {:.10g} to {:.10g})",
+                     kind,
+                     s.first,
+                     s.last,
+                     s.first_load_factor,
+                     s.last_load_factor);
+}
+
 PathTable run_load_path(const PathRequest& request) {
   request.validate();
   PathTable t =
@@ -307,7 +362,21 @@ const std::vector<io::CodeMeaning>& path_code_meanings() {
       {"located", 0, "not refined: the load factor is that of the nearer path point"},
       {"located", 1, "located on the path to about 1e-10 in the load factor"},
       {"switched", 0, "the path went on through this point"},
-      {"switched", 1, "the path left here onto the other branch (--branch)"}};
+      {"switched", 1, "the path left here onto the other branch (--branch)"},
+      {"stability",
+       0,
+       "stable: the second variation of the energy is positive definite under the path's control "
+       "(docs/stability.md)"},
+      {"stability", 1, "unstable: the energy decreases in stability_index directions"},
+      {"stability",
+       2,
+       "critical: the lowest eigenvalue is zero within 1e-6 (a located limit or bifurcation "
+       "point)"},
+      {"stability", 3, "not_conservative: a follower force; the energy cannot judge"},
+      {"stability",
+       4,
+       "not_checked: not computed (the chain algorithm's increments, --stability off, or the "
+       "shape could not be integrated; index -1, margin NaN)"}};
   return codes;
 }
 
@@ -356,6 +425,35 @@ void write_path_file(io::Hdf5Group& root, const PathTable& t) {
                      t.branch,
                      "1",
                      "0 on the path from zero load; k after switching at the k-th bifurcation");
+  std::vector<int> stability, stability_index;
+  std::vector<double> stability_margin;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const Stability s = i < t.stability.size() ? t.stability[i] : Stability{};
+    stability.push_back(static_cast<int>(s.kind));
+    stability_index.push_back(s.judged() ? s.index : -1);
+    stability_margin.push_back(s.judged() ? s.margin : kNaN);
+  }
+  const std::string under = t.control == "load"
+                                ? "under load control (proportional loading)"
+                                : "under displacement control of " + t.control +
+                                      " in the moving stage (the loads applied first under load "
+                                      "control)";
+  root.write_dataset("stability",
+                     stability,
+                     "1",
+                     "stability verdict of the point's equilibrium " + under +
+                         ": 0 stable, 1 unstable, 2 critical, 3 not_conservative, 4 not_checked "
+                         "(root status_meanings; docs/stability.md)");
+  root.write_dataset("stability_index",
+                     stability_index,
+                     "1",
+                     "independent directions in which the potential energy decreases (0 "
+                     "stable); -1 where stability is 3 or 4");
+  root.write_dataset("stability_margin",
+                     stability_margin,
+                     "1",
+                     "lowest eigenvalue of the second variation relative to the unloaded bending "
+                     "stiffness (1 - P/P_cr for a straight column); NaN where stability is 3 or 4");
 
   // The special points, exactly (the rows `index` of the path datasets hold them too).
   io::Hdf5Group sp = root.create_group("special_points");

@@ -10,7 +10,9 @@
 
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/provenance.h"
+#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/segment_chain.h"
+#include "flexure/solver/common/stability.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {
@@ -49,6 +51,11 @@ struct PathRequest {
   int branch_side = 1;    // +1: the half-branch on which the tip moves to +y (+theta), -1: -y
   std::optional<DisplacementControl> control;  // a tip coordinate as the path parameter
   int shape_points = 0;  // >= 2: the shape at every point of the path, at this many points
+  // The stability verdict of every point under the path's control (docs/stability.md, "Points
+  // of a path"): shooting only; the chain algorithm's path records tips only, and only its last
+  // point (its answer) is judged.
+  bool judge_stability = true;
+  StabilityOptions stability;
 
   // Throws InvalidInput naming the field: a step that is not finite and positive, too few points,
   // a negative branch, shapes or options the chain algorithm does not have, ...
@@ -70,6 +77,15 @@ struct PathSpecialPoint {
   bool switched = false;  // the path left here onto the other branch
 };
 
+// Consecutive path points with one verdict (the same kind and index): where the state on the
+// path is stable, unstable, critical (a located limit or bifurcation point) or not judged.
+struct StabilityStretch {
+  StabilityKind kind = StabilityKind::kNotChecked;
+  int index = 0;            // negative directions (judged kinds only)
+  int first = 0, last = 0;  // rows of the path table
+  double first_load_factor = 0.0, last_load_factor = 0.0;
+};
+
 // The columns of a path file (one row per path point) and what the path did.
 struct PathTable {
   std::vector<double> load_factor, tip_x, tip_y, tip_theta;
@@ -80,6 +96,8 @@ struct PathTable {
   std::vector<int> stage;   // 1, or the stage of a staged path
   std::vector<int> branch;  // 0 on the path from zero load; k after switching
   std::vector<PathSpecialPoint> special_points;
+  // The verdict of each point under the path's control (PathRequest::judge_stability).
+  std::vector<Stability> stability;
   // Shapes (shape_points > 0): rows = path points, columns = shape points, row-major.
   int shape_points = 0;
   std::vector<double> shape_s, shape_x, shape_y, shape_theta, shape_moment;
@@ -106,7 +124,12 @@ struct PathTable {
 
   std::size_t size() const { return load_factor.size(); }
   std::vector<const PathSpecialPoint*> of_kind(const std::string& kind) const;
+  std::vector<StabilityStretch> stability_stretches() const;
 };
+
+// "stable at points 0-12 (load factor 0 to 0.8224670334)", "unstable (index 1) at points ...":
+// one stretch in words (text output).
+std::string describe(const StabilityStretch& s);
 
 // Runs the path. Throws InvalidInput for bad input; a path that stops before the full load
 // returns completed == false with the message (the table holds the path up to there).

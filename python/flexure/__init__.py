@@ -27,7 +27,7 @@ def path(*, out, n=None, alpha2=None, mu=None, follower=None, boundary=None, tip
          tip_y=None, tip_angle=None, method=None, elements=None, increments=None, chain=None,
          length=None, E=None, I=None, width=None, thickness=None, Fx=None, Fy=None, M=None,
          max_step=None, min_points=None, branch=None, branch_side=None, control=None,
-         shapes=None):  # noqa: E741 - the tool's flag --I
+         shapes=None, stability=None):  # noqa: E741 - the tool's flag --I
     """The equilibrium path from the unloaded beam to a load, step by step: `flexure path`.
 
     The loads and end conditions of flexure.beam (n, alpha2, mu, follower, boundary, tip_x,
@@ -37,8 +37,11 @@ def path(*, out, n=None, alpha2=None, mu=None, follower=None, boundary=None, tip
     max_step, min_points, branch (follow the other branch at the N-th bifurcation; branch_side
     'positive' or 'negative'), control ('tip-x', 'tip-y', 'tip-angle': move that coordinate to
     its tip_... value as the path parameter), shapes (K shape points at every path point).
+    stability: 'on' (default) or 'off', the verdict of every point under the path's control.
     Returns the dict `flexure path --json` prints: the counts, the located `bifurcations` and
-    `limit_point_list` (lists of dicts with load_factor, index, index_after, tip and reactions).
+    `limit_point_list` (lists of dicts with load_factor, index, index_after, tip and reactions),
+    and per point `stability` (list of str), `stability_index` and `stability_margin` (arrays,
+    NaN where not judged) and `stability_stretches`.
 
     Example:
       >>> flexure.path(length=1, E=1, I=1, Fx=-30, out="column.h5")["bifurcations"][0]["load_factor"]  # doctest: +SKIP
@@ -50,15 +53,16 @@ def path(*, out, n=None, alpha2=None, mu=None, follower=None, boundary=None, tip
                                length=length, E=E, I=I, width=width, thickness=thickness, Fx=Fx,
                                Fy=Fy, M=M, max_step=max_step, min_points=min_points,
                                branch=branch, branch_side=branch_side, control=control,
-                               shapes=shapes, out=out))
+                               shapes=shapes, stability=stability, out=out))
 
 
 def sweep(*, out, alpha2=None, theta0=None, b_over_l=None, n=None, mu=None, method=None,
-          threads=None, compress=False):
+          threads=None, compress=False, stability=None):
     """A beam sweep written to HDF5: `flexure sweep beam` (docs/hdf5-schema.md).
 
     alpha2, theta0, b_over_l, n, mu: a value or 'START:STOP:COUNT' (one or two axes); method;
-    threads; compress; out: the HDF5 file (required). Returns the summary `--json` prints; read
+    threads; compress; stability: 'on' (default: a verdict per point in /stability,
+    /stability_index, /stability_margin) or 'off'; out: the HDF5 file (required). Returns the summary `--json` prints; read
     the file with flexure.read(out). For arrays in memory use flexure.beam with numpy arrays.
 
     Example:
@@ -68,7 +72,8 @@ def sweep(*, out, alpha2=None, theta0=None, b_over_l=None, n=None, mu=None, meth
     """
     return _run(["sweep", "beam"], dict(alpha2=alpha2, theta0=theta0, b_over_l=b_over_l, n=n,
                                         mu=mu, method=method, out=out, threads=threads,
-                                        compress=compress), switches={"compress"})
+                                        compress=compress, stability=stability),
+                switches={"compress"})
 
 
 def cfm(*, config=None, R=None, K1=None, K2=None, d=None, subclass=None, sampling=None,

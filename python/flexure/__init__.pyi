@@ -58,6 +58,8 @@ def beam(
     Fy: Quantity | None = ...,
     M: Quantity | None = ...,
     yield_strength: Quantity | None = ...,
+    stable: bool = ...,
+    stability: str | None = ...,
     threads: int | None = ...,
 ) -> Result: ...
 def path(
@@ -89,6 +91,7 @@ def path(
     branch_side: str | None = ...,
     control: str | None = ...,
     shapes: int | None = ...,
+    stability: str | None = ...,
 ) -> Result: ...
 def sweep(
     *,
@@ -101,6 +104,7 @@ def sweep(
     method: str | None = ...,
     threads: int | None = ...,
     compress: bool = ...,
+    stability: str | None = ...,
 ) -> Result: ...
 def cfm(
     *,

@@ -22,7 +22,8 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
          shape=None, boundary=None, tip_x=None, tip_y=None, tip_angle=None, follower=None,
          elements=None, increments=None, chain_variant=None, integrator=None, chain=None,
          constants=None, slenderness=None, length=None, E=None, I=None, width=None,
-         thickness=None, Fx=None, Fy=None, M=None, yield_strength=None, threads=None):
+         thickness=None, Fx=None, Fy=None, M=None, yield_strength=None, stable=False, stability=None,
+         threads=None):
     """Solves an initially straight cantilever with an end load: `flexure beam` (docs/cli.md).
 
     Howell's nondimensional loads (give exactly one of alpha2, theta0, b_over_l):
@@ -49,16 +50,25 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
       constants   prbm3r: 'su' (default) | 'su-moment' | 'su-force' | 'flexure'
       slenderness bcm, cbcm: L/t of the segment, axial stiffness 12 (L/t)^2 (default inextensible)
       chain       a segment chain TOML file (docs/chain-toml.md)
+      stability   'on' (default) or 'off': the stability verdict of every answer (off: faster,
+                  stability 'not_checked')
+      stable      True: when the equilibrium reached by proportional loading is unstable or
+                  critical, return a stable equilibrium found from it (key stable_search says
+                  what was done; NoConvergence when none is found); given loads only
     A physical cantilever (SI numbers, or strings with units: '50mm', '200GPa', '5N'):
       length, E, I (or width and thickness), Fx, Fy, M, yield_strength
 
     Returns the dict `flexure beam --json` prints: method, method_reason, expected_error, n,
     alpha2, mu, a_over_l, b_over_l, theta0 (rad), iterations, converged, branch,
     inflection_points, root_moment, limit_points, target_residual, first_limit_load_factor,
-    family, message, termination, boundary, reactions {Fx, Fy, M}, and per method or input more
-    (shape as columns s, x, y, theta; the SI keys of a physical beam). Raises InvalidInput (a
-    ValueError) for input the tool refuses and NoConvergence (a RuntimeError, with .reached) when
-    a scalar load does not converge.
+    family, message, termination, boundary, reactions {Fx, Fy, M}, the stability verdict
+    (stability: 'stable' | 'unstable' | 'critical' | 'not_conservative' | 'not_checked',
+    stability_index and stability_margin, None where not judged, stability_message,
+    stable_search, warnings), and per method or input more (shape as columns s, x, y, theta; the
+    SI keys of a physical beam). An unstable answer is returned (it is the proportional-loading
+    answer, labelled) with a FlexureWarning. Raises InvalidInput (a ValueError) for input the tool
+    refuses and NoConvergence (a RuntimeError, with .reached) when a scalar load does not
+    converge.
 
     Example:
       >>> import flexure, numpy as np
@@ -75,12 +85,12 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
                "integrator": integrator, "chain": chain, "constants": constants,
                "slenderness": slenderness, "length": length, "E": E, "I": I,
                "width": width, "thickness": thickness, "Fx": Fx, "Fy": Fy, "M": M,
-               "yield_strength": yield_strength}
+               "yield_strength": yield_strength, "stable": stable, "stability": stability}
     if threads is not None and (not isinstance(threads, int) or isinstance(threads, bool)
                                 or threads < 1):
         raise _command.InvalidInput(f"threads = {threads!r}: expected an integer >= 1")
     if not any(_is_array(loads[k]) for k in _VECTOR):
-        return _command.run(["beam"], {**loads, **options})
+        return _command.run(["beam"], {**loads, **options}, switches={"stable"})
     return _beam_many(loads, options, threads or os.cpu_count() or 1)
 
 
@@ -107,7 +117,7 @@ def _beam_many(loads, options, threads):
     # The options are checked once by the tool itself, with a valid placeholder load.
     # (Two given quantities are refused by the tool, naming them.)
     scalar = {k: _PLACEHOLDER[k] for k in given}
-    args = ["beam"] + _command.to_flags({**scalar, **options})
+    args = ["beam"] + _command.to_flags({**scalar, **options}, switches={"stable"})
     size = int(numpy.prod(shape)) if shape else 1
     zeros = numpy.zeros(size)
 
@@ -115,12 +125,19 @@ def _beam_many(loads, options, threads):
         return numpy.ascontiguousarray(arrays[name].reshape(-1)) if name in arrays else zeros
 
     if not given:  # the tool's own message: one of --alpha2, --theta0, --b-over-l is required
-        _command.run(["beam"], options)
+        _command.run(["beam"], options, switches={"stable"})
     value = flat(given[0])
     try:
         result = _core.beam_many(args[1:], flat("n"), flat("mu"), value, list(shape), threads)
     except ValueError as e:
         raise _command.InvalidInput(str(e)) from None
+    unstable = result["converged"] & (result["stability"] == "unstable")
+    if unstable.any():
+        # One warning for the call, where the scalar call warns at each load.
+        _command.emit([f"{int(unstable.sum())} of {unstable.size} loads have an UNSTABLE answer "
+                       f"(stability 'unstable'): the equilibrium reached by proportional loading, "
+                       f"which the beam cannot hold under those loads; stable=True returns a "
+                       f"stable equilibrium"], stacklevel=3)
     if "within_validity" in result:
         # One warning for the call, where the scalar call warns at each load.
         outside = (result["method"] == "prbm") & result["converged"] & ~result["within_validity"]

@@ -499,15 +499,23 @@ ChainResult ChainAlgorithmSolver::solve(const SegmentChain& chain) const {
                                o.elements);
     }
     // The chain algorithm's passes follow no limit point, so its answer must be a stable state of
-    // the load path; an unstable one means its increments left the path (equilibrium_stability.h).
-    const StabilityVerdict stability = equilibrium_stability(chain, r.nodes);
-    if (stability.kind == StabilityVerdict::Kind::kUnstable) {
+    // the load path; an unstable one may lie off the path: the passes also converge to unstable
+    // equilibria that the path never reaches (tests/solver/chain_self_check_test.cpp: tip angle
+    // -1.02 where the path ends at 2.27), and they cannot tell the two apart.
+    try {
+      r.stability = equilibrium_stability(chain, r.tip_reaction, r.nodes);
+    } catch (const InvalidInput& e) {
+      r.stability = not_checked_stability(e.what());
+    }
+    if (r.stability.kind == StabilityKind::kUnstable) {
       r.set_converged(false);
       r.message = fmt::format(
-          "the load increments converged to an {}; the load path from zero passes a limit point "
-          "or a near-bifurcation that the chain algorithm cannot follow (the shooting method "
-          "can)",
-          stability.message);
+          "the chain's passes converged to an unstable equilibrium (index {}, stability margin "
+          "{:.6g}), which may not be the one the load path from zero reaches (the passes also "
+          "settle on unstable equilibria off the path); the shooting method follows the path and "
+          "labels its answer's stability, and a stable equilibrium can be asked for instead",
+          r.stability.index,
+          r.stability.margin);
     }
     return r;
   }

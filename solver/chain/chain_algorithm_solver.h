@@ -21,6 +21,7 @@
 
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
+#include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure {
@@ -59,6 +60,12 @@ struct ChainResult : SolveStatus {
   double root_moment = 0.0;       // bending moment at the clamp, m(0) = -root_reaction.M
   std::vector<ShapePoint> nodes;  // every element node, s = arc length from the root
   std::vector<ChainLoadPathPoint> load_path;
+  // The verdict of the converged nodes (equilibrium_stability with tip_reaction, every end
+  // condition; docs/stability.md). An unstable one is refused (converged() false, the verdict
+  // kept here): the passes also converge to unstable equilibria the load path never reaches, so
+  // the chain algorithm cannot vouch that one is the proportional-loading answer.
+  // not_checked when the solve stopped before.
+  Stability stability;
 };
 
 class ChainAlgorithmSolver {

@@ -9,6 +9,7 @@
 #include <optional>
 #include <variant>
 
+#include "flexure/solver/chain_model/held_stability.h"
 #include "flexure/solver/chain_model/second_variation.h"
 #include "flexure/solver/common/errors.h"
 
@@ -55,11 +56,19 @@ std::vector<std::pair<double, double>> segment_forces(const SegmentChain& chain,
   return N;
 }
 
-void check_support_reaction(const SegmentChain& chain, const Reaction& support) {
+// The coordinates the verdict holds: `held` (held_stability.h), else the end condition's.
+using Held = std::optional<PrescribedMask>;
+PrescribedMask held_mask(const SegmentChain& chain, const Held& held) {
+  return held.value_or(prescribed_mask(chain.end));
+}
+
+void check_support_reaction(const SegmentChain& chain,
+                            const Reaction& support,
+                            const Held& held = std::nullopt) {
   require_finite(support.Fx, "tip support reaction Fx");
   require_finite(support.Fy, "tip support reaction Fy");
   require_finite(support.M, "tip support reaction M");
-  const PrescribedMask mask = prescribed_mask(chain.end);
+  const PrescribedMask mask = held_mask(chain, held);
   auto refuse = [&](const char* component, const char* coordinate, double value) {
     throw InvalidInput(fmt::format(
         "tip support reaction {} = {:.6g} for a {} end, whose tip {} is not prescribed: pass the "
@@ -84,6 +93,7 @@ bool has_flexible_segment(const SegmentChain& chain) {
 // last (arriving side of the far node) samples; for a flexible segment every sample in between.
 struct SampledChain {
   const SegmentChain* chain = nullptr;
+  PrescribedMask mask;  // the tip coordinates held
   const std::vector<ShapePoint>* shape = nullptr;
   std::vector<std::pair<double, double>> N;
   std::vector<std::size_t> first, last;  // per segment (unused for zero-length kinks)
@@ -95,9 +105,11 @@ struct SampledChain {
 
 SampledChain sample_chain(const SegmentChain& chain,
                           const Reaction& support,
-                          const std::vector<ShapePoint>& shape) {
+                          const std::vector<ShapePoint>& shape,
+                          const Held& held = std::nullopt) {
   SampledChain c;
   c.chain = &chain;
+  c.mask = held_mask(chain, held);
   c.shape = &shape;
   c.N = segment_forces(chain, support);
   c.total = chain.total_length();
@@ -183,7 +195,7 @@ struct Grid {
 Grid assemble(const SampledChain& c, int stride) {
   const SegmentChain& chain = *c.chain;
   const std::vector<ShapePoint>& shape = *c.shape;
-  const PrescribedMask mask = prescribed_mask(chain.end);
+  const PrescribedMask mask = c.mask;
   Grid g;
   const std::size_t rows = (mask.x ? 1 : 0) + (mask.y ? 1 : 0);
   g.raw_rows.resize(rows);
@@ -380,12 +392,15 @@ Reaction tip_support_reaction_from_root(const SegmentChain& chain, const Reactio
   return Reaction{mask.x ? Nx : 0.0, mask.y ? Ny : 0.0, 0.0};
 }
 
-std::vector<double> stability_stations(const SegmentChain& chain,
-                                       const Reaction& support_reaction,
-                                       const StabilityOptions& options) {
+namespace {
+
+std::vector<double> stations_held(const SegmentChain& chain,
+                                  const Reaction& support_reaction,
+                                  const StabilityOptions& options,
+                                  const Held& held) {
   options.validate();
   chain.validate();
-  check_support_reaction(chain, support_reaction);
+  check_support_reaction(chain, support_reaction, held);
   const std::size_t n = chain.segments.size();
   const auto N = segment_forces(chain, support_reaction);
   // A bound on |m| over every segment, from the tip towards the root: across a segment |m| grows
@@ -434,6 +449,14 @@ std::vector<double> stability_stations(const SegmentChain& chain,
     if (length > 0.0) s.push_back(start);
   }
   return s;
+}
+
+}  // namespace
+
+std::vector<double> stability_stations(const SegmentChain& chain,
+                                       const Reaction& support_reaction,
+                                       const StabilityOptions& options) {
+  return stations_held(chain, support_reaction, options, std::nullopt);
 }
 
 namespace {
@@ -500,8 +523,9 @@ struct Grids {
 Grids make_grids(const SegmentChain& chain,
                  const Reaction& support_reaction,
                  const std::vector<ShapePoint>& shape,
-                 double eigenvalue_tolerance) {
-  const SampledChain sampled = sample_chain(chain, support_reaction, shape);
+                 double eigenvalue_tolerance,
+                 const Held& held = std::nullopt) {
+  const SampledChain sampled = sample_chain(chain, support_reaction, shape, held);
   Grids grids;
   grids.tolerance = eigenvalue_tolerance;
   for (int level = 0; level < sampled.levels; ++level) {
@@ -536,7 +560,8 @@ struct Verdict {
 Verdict judge(const SegmentChain& chain,
               const Reaction& support_reaction,
               const std::vector<ShapePoint>& shape,
-              const StabilityOptions& options) {
+              const StabilityOptions& options,
+              const Held& held = std::nullopt) {
   Verdict v;
   if (chain.tip_load.follower != 0.0) {
     v.stability = not_conservative_stability(
@@ -547,7 +572,8 @@ Verdict judge(const SegmentChain& chain,
     v.stability = not_checked_stability("the chain has no flexible segment, so it cannot deflect");
     return v;
   }
-  const Grids grids = make_grids(chain, support_reaction, shape, options.eigenvalue_tolerance);
+  const Grids grids =
+      make_grids(chain, support_reaction, shape, options.eigenvalue_tolerance, held);
   const DiscreteSecondVariation& fine = grids.levels.front().q;
   const double threshold = -options.critical_tolerance;
   const int below = constrained_count(fine, threshold);
@@ -586,22 +612,25 @@ Stability equilibrium_stability(const SegmentChain& chain,
   return judge(chain, support_reaction, shape, options).stability;
 }
 
-Stability equilibrium_stability(const SegmentChain& chain,
-                                const Reaction& support_reaction,
-                                const ShapeAtStations& shape_at,
-                                const StabilityOptions& options) {
+namespace {
+
+Stability stability_from_shape_function(const SegmentChain& chain,
+                                        const Reaction& support_reaction,
+                                        const ShapeAtStations& shape_at,
+                                        const StabilityOptions& options,
+                                        const Held& held) {
   options.validate();
   chain.validate();
-  check_support_reaction(chain, support_reaction);
+  check_support_reaction(chain, support_reaction, held);
   StabilityOptions o = options;
   for (;;) {
-    const std::vector<double> s = stability_stations(chain, support_reaction, o);
+    const std::vector<double> s = stations_held(chain, support_reaction, o, held);
     const std::vector<ShapePoint> shape = shape_at(s);
     if (shape.size() != s.size()) {
       throw InvalidInput(fmt::format(
           "the shape function returned {} points for {} stations", shape.size(), s.size()));
     }
-    const Verdict v = judge(chain, support_reaction, shape, o);
+    const Verdict v = judge(chain, support_reaction, shape, o, held);
     const bool refinable = 2 * (s.size() - 1) <= static_cast<std::size_t>(o.max_elements);
     if (!v.stability.judged() || !refinable ||
         v.margin_error <= o.margin_accuracy * std::max(1.0, std::fabs(v.stability.margin))) {
@@ -612,6 +641,23 @@ Stability equilibrium_stability(const SegmentChain& chain,
     o.element_resolution *= 0.5;
     o.min_elements = std::min(2 * o.min_elements, o.max_elements);
   }
+}
+
+}  // namespace
+
+Stability equilibrium_stability(const SegmentChain& chain,
+                                const Reaction& support_reaction,
+                                const ShapeAtStations& shape_at,
+                                const StabilityOptions& options) {
+  return stability_from_shape_function(chain, support_reaction, shape_at, options, std::nullopt);
+}
+
+Stability equilibrium_stability_held(const SegmentChain& chain,
+                                     const Reaction& support_reaction,
+                                     const ShapeAtStations& shape_at,
+                                     const PrescribedMask& held,
+                                     const StabilityOptions& options) {
+  return stability_from_shape_function(chain, support_reaction, shape_at, options, held);
 }
 
 std::vector<double> second_variation_eigenvalues(const SegmentChain& chain,

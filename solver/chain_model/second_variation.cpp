@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Sparse>
+#include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -243,6 +245,110 @@ PencilEigenvalue constrained_eigenvalue(const DiscreteSecondVariation& q,
   result.value = 0.5 * (lo + hi);
   result.exists = true;
   return result;
+}
+
+bool solve_bordered(const DiscreteSecondVariation& q,
+                    double bending_factor,
+                    double axial_factor,
+                    const std::vector<double>& rhs,
+                    std::vector<double>& x) {
+  const int n = q.size();
+  const int m = static_cast<int>(q.constraints.size());
+  if (static_cast<int>(rhs.size()) != n) {
+    throw InvalidInput(fmt::format(
+        "bordered solve: right-hand side of {} entries for {} unknowns", rhs.size(), n));
+  }
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(static_cast<std::size_t>(3 * n + 2 * m * n));
+  for (int i = 0; i < n; ++i) {
+    entries.emplace_back(i, i, bending_factor * q.bending_diag[i] + axial_factor * q.axial[i]);
+    if (i + 1 < n) {
+      entries.emplace_back(i, i + 1, bending_factor * q.bending_off[i]);
+      entries.emplace_back(i + 1, i, bending_factor * q.bending_off[i]);
+    }
+  }
+  for (int a = 0; a < m; ++a) {
+    for (int i = 0; i < n; ++i) {
+      const double c = q.constraints[a][i];
+      if (c == 0.0) continue;
+      entries.emplace_back(n + a, i, c);
+      entries.emplace_back(i, n + a, c);
+    }
+  }
+  Eigen::SparseMatrix<double> K(n + m, n + m);
+  K.setFromTriplets(entries.begin(), entries.end());
+  K.makeCompressed();
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
+  lu.compute(K);
+  if (lu.info() != Eigen::Success) return false;
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(n + m);
+  for (int i = 0; i < n; ++i) b[i] = rhs[i];
+  const Eigen::VectorXd solution = lu.solve(b);
+  if (lu.info() != Eigen::Success || !solution.allFinite()) return false;
+  x.assign(solution.data(), solution.data() + n);
+  return true;
+}
+
+std::vector<double> constrained_eigenvector(const DiscreteSecondVariation& q, double lambda) {
+  if (!(lambda < 1.0)) {
+    throw InvalidInput(fmt::format(
+        "constrained_eigenvector: lambda = {} must be below 1 (the eigenvalues of the pencil "
+        "below 1 have eigenvectors)",
+        lambda));
+  }
+  const int n = q.size();
+  if (n == 0) throw InvalidInput("constrained_eigenvector: no degrees of freedom");
+  // B-products and norms (B tridiagonal).
+  auto times_B = [&](const std::vector<double>& v) {
+    std::vector<double> out(n);
+    for (int i = 0; i < n; ++i) {
+      double sum = q.bending_diag[i] * v[i];
+      if (i > 0) sum += q.bending_off[i - 1] * v[i - 1];
+      if (i + 1 < n) sum += q.bending_off[i] * v[i + 1];
+      out[i] = sum;
+    }
+    return out;
+  };
+  auto normalise = [&](std::vector<double>& v) {
+    const std::vector<double> Bv = times_B(v);
+    double norm2 = 0.0;
+    for (int i = 0; i < n; ++i) norm2 += v[i] * Bv[i];
+    if (!(norm2 > 0.0) || !std::isfinite(norm2)) return false;
+    const double scale = 1.0 / std::sqrt(norm2);
+    std::size_t largest = 0;
+    for (int i = 0; i < n; ++i) {
+      if (std::fabs(v[i]) > std::fabs(v[largest])) largest = static_cast<std::size_t>(i);
+    }
+    const double sign = v[largest] < 0.0 ? -1.0 : 1.0;
+    for (double& value : v) value *= sign * scale;
+    return true;
+  };
+  const double sigma = 1.0 / (1.0 - lambda);
+  const double shifted = sigma * (1.0 + 1e-9);
+  // A smooth start with a component along every low mode: eta_i = i + 1 (a ramp), made
+  // admissible by the first solve.
+  std::vector<double> v(n);
+  for (int i = 0; i < n; ++i) v[i] = 1.0 + i;
+  std::vector<double> next;
+  for (int iteration = 0; iteration < 30; ++iteration) {
+    // (B + sigma' W) y = B v on ker C: amplifies the eigenvector at sigma by 1 / (1 - sigma' /
+    // sigma) against the others.
+    if (!solve_bordered(q, 1.0, shifted, times_B(v), next) || !normalise(next)) {
+      throw NoConvergence(fmt::format(
+          "constrained_eigenvector: the bordered matrix at lambda = {:.12g} is singular", lambda));
+    }
+    double change = 0.0, size = 0.0;
+    for (int i = 0; i < n; ++i) {
+      change = std::max(change, std::fabs(next[i] - v[i]));
+      size = std::max(size, std::fabs(next[i]));
+    }
+    v.swap(next);
+    if (iteration > 0 && change <= 1e-10 * size) return v;
+  }
+  throw NoConvergence(fmt::format(
+      "constrained_eigenvector: inverse iteration at lambda = {:.12g} did not settle (a multiple "
+      "eigenvalue, or not an eigenvalue of the pencil)",
+      lambda));
 }
 
 }  // namespace flexure

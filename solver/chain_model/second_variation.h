@@ -77,4 +77,23 @@ PencilEigenvalue constrained_eigenvalue(const DiscreteSecondVariation& q,
                                         const double* guess = nullptr,
                                         double guess_radius = 0.0);
 
+// Solves the bordered system [a B + b W, C^T; C, 0] [x; mu] = [rhs; 0] by a sparse LU with partial
+// pivoting, so a B + b W may be indefinite or singular as long as the bordered matrix is not (it is
+// nonsingular exactly where a B + b W is nonsingular on ker C and C has full row rank). `rhs` and
+// `x` have q.size() entries (mu is dropped). Returns false when the matrix is singular.
+bool solve_bordered(const DiscreteSecondVariation& q,
+                    double bending_factor,
+                    double axial_factor,
+                    const std::vector<double>& rhs,
+                    std::vector<double>& x);
+
+// The eigenvector of the constrained pencil for the eigenvalue `lambda` < 1 (a value that
+// constrained_eigenvalue returned): C eta = 0, eta^T B eta = 1, signed so that its component of
+// largest magnitude is positive. By inverse iteration on the bordered matrix at sigma = 1 / (1 -
+// lambda) moved off the eigenvalue by 1e-9 of it (about 1e-9 relative to the gap to the next
+// eigenvalue per iteration: a few iterations). Used to follow an unstable direction off an
+// equilibrium (solver/shooting/stable_equilibrium.h). Throws NoConvergence when the iteration does
+// not settle (a multiple eigenvalue, or lambda not an eigenvalue), InvalidInput for lambda >= 1.
+std::vector<double> constrained_eigenvector(const DiscreteSecondVariation& q, double lambda);
+
 }  // namespace flexure

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <string>
 
+#include "flexure/solver/chain_model/held_stability.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/shooting/path_point_stability.h"
 
 namespace flexure {
 
@@ -53,6 +55,55 @@ std::vector<ShapePoint> shooting_shape_at(const SegmentChain& chain,
         miss));
   }
   return shape;
+}
+
+Stability path_point_stability(const SegmentChain& chain,
+                               const PathPoint& point,
+                               const PrescribedMask& held,
+                               const ShootingSolver::Options& options,
+                               const StabilityOptions& stability) {
+  if (chain.tip_load.follower != 0.0) {
+    return not_conservative_stability(
+        fmt::format("a follower force of {:.6g} acts at the tip", chain.tip_load.follower));
+  }
+  // The same equilibrium with every tip load dead and given: the support's reactions act like dead
+  // loads in the second variation (equilibrium_stability.h), the held coordinates are its
+  // constraints.
+  SegmentChain free = chain;
+  free.end = EndCondition::kFree;
+  free.prescribed = TipPrescription{};
+  free.tip_load = TipLoad{point.tip_load.Fx, point.tip_load.Fy, point.tip_load.M, 0.0};
+  const double factor = point.stage == 1 ? point.lambda : 1.0;
+  for (NodeLoad& load : free.node_loads) {
+    load.Fx *= factor;
+    load.Fy *= factor;
+    load.M *= factor;
+  }
+  ShootingSolver::Options o = options;
+  o.shape_points = 0;
+  o.count_inflections = false;
+  // The clamp moment is the only root unknown of a free end: m(0) = -M_clamp.
+  const ShootingResult r = ShootingSolver(o).solve_from(free, {-point.reaction.M});
+  const double total = chain.total_length();
+  const double miss = std::hypot(r.tip.x - point.tip.x, r.tip.y - point.tip.y);
+  // (A loose bound: another equilibrium of the same loads lies far away; the point's loads carry
+  // the path's corrector tolerance, which an ill-conditioned free end amplifies.)
+  if (!r.converged() || !(miss <= 1e-6 * total)) {
+    return not_checked_stability(
+        r.converged()
+            ? fmt::format("the point's equilibrium could not be reproduced (tip {:.3g} away)", miss)
+            : "the point's equilibrium could not be reproduced: " + r.message);
+  }
+  const ShapeAtStations shape = [&](const std::vector<double>& s) {
+    return shooting_shape_at(free, r, s, o);
+  };
+  try {
+    return equilibrium_stability_held(free, Reaction{}, shape, held, stability);
+  } catch (const NoConvergence& e) {
+    return not_checked_stability(e.what());
+  } catch (const InvalidInput& e) {
+    return not_checked_stability(e.what());
+  }
 }
 
 }  // namespace flexure

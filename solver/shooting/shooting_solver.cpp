@@ -9,6 +9,7 @@
 
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/shooting/inflection_count.h"
+#include "flexure/solver/shooting/path_point_stability.h"
 
 namespace flexure {
 
@@ -426,6 +427,16 @@ ShootingResult ShootingSolver::solve_in_two_stages(const SegmentChain& chain,
   }
   result.iterations += run.s2.newton_iterations;
   result.continuation_steps += run.s2.steps;
+  // The special points of both stages, with their stage (stage 2's lambda is the fraction of the
+  // released coordinate's travel); limit_points stays the count of folds of the load factor.
+  result.special_points.clear();
+  for (const LoadPath* stage : {&run.s1, &run.s2}) {
+    for (SpecialPoint sp : stage->special_points) {
+      sp.stage = stage == &run.s1 ? 1 : 2;
+      result.special_points.push_back(std::move(sp));
+    }
+  }
+  result.bifurcation_points = run.s1.bifurcation_points + run.s2.bifurcation_points;
   result.residual = run.s2.residual;
   result.set_converged(run.s2.converged());
   result.message =
@@ -705,6 +716,37 @@ LoadPath ShootingSolver::controlled_path(const SegmentChain& chain,
   joined.message =
       fmt::format("stage 1 (the loads) {}; then {}: {}", first_message, what, moved.message);
   return joined;
+}
+
+PrescribedMask path_held_coordinates(const SegmentChain& chain,
+                                     const std::optional<DisplacementControl>& control,
+                                     const LoadPath& path,
+                                     int stage) {
+  PrescribedMask mask = prescribed_mask(chain.end);
+  int last = 1;
+  for (const PathPoint& p : path.points) last = std::max(last, p.stage);
+  // controlled_path: the loads (load_path, one or two stages) and then the moving stage, numbered
+  // after them; without loads the moving stage alone (stage 1). A path that stopped while applying
+  // the loads has no moving stage (its message says so: controlled_path above).
+  bool moving = false;
+  if (control) {
+    const bool stopped_loading = path.message.rfind("stage 1 (the loads applied before", 0) == 0;
+    moving = !stopped_loading && stage == last;
+    if (!stopped_loading) --last;  // the stages of the loads
+  }
+  if (moving) {
+    (control->coordinate == TipCoordinate::kX   ? mask.x
+     : control->coordinate == TipCoordinate::kY ? mask.y
+                                                : mask.theta) = true;
+    return mask;
+  }
+  if (last == 2 && stage == 1) {
+    // run_two_stages: stage 1 releases the coordinate along the unloaded tip tangent.
+    const ChainPose tangent = chain.unloaded_tip();
+    const bool release_x = std::abs(std::cos(tangent.theta)) >= std::abs(std::sin(tangent.theta));
+    (release_x ? mask.x : mask.y) = false;
+  }
+  return mask;
 }
 
 ShootingResult solve_shooting(const SegmentChain& chain, const ShootingSolver::Options& options) {

@@ -28,6 +28,15 @@ BEAMS = [
     (dict(theta0=0.4, method="cbcm", elements=12, shape=5),
      ["--theta0", "0.4", "--method", "cbcm", "--elements", "12", "--shape", "5"]),
     (dict(alpha2=0.1 + 0.2, n=1 / 3), ["--alpha2", repr(0.1 + 0.2), "--n", repr(1 / 3)]),
+    # Stability (issue 27): an unstable answer, labelled; --stable; the verdict switched off.
+    (dict(length=1, E="1MPa", I=1e-6, Fx=-3), ["--length", "1", "--E", "1MPa", "--I", "1e-6",
+                                               "--Fx", "-3"]),
+    (dict(length=1, E="1MPa", I=1e-6, Fx=-3, stable=True),
+     ["--length", "1", "--E", "1MPa", "--I", "1e-6", "--Fx", "-3", "--stable"]),
+    (dict(alpha2=0.0, boundary="fixed", tip_x=0.9, tip_y=0.001, tip_angle=0.0, stable=True),
+     ["--alpha2", "0", "--boundary", "fixed", "--tip-x", "0.9", "--tip-y", "0.001",
+      "--tip-angle", "0", "--stable"]),
+    (dict(alpha2=2.0, stability="off"), ["--alpha2", "2", "--stability", "off"]),
     (dict(length="20in", E="30Msi", width="1in", thickness="0.1in", Fy="0.49lbf",
           yield_strength="167ksi", shape=5),
      ["--length", "20in", "--E", "30Msi", "--width", "1in", "--thickness", "0.1in",
@@ -35,9 +44,26 @@ BEAMS = [
 ]
 
 
+@pytest.mark.filterwarnings("ignore::flexure.FlexureWarning")  # the unstable column warns
 @pytest.mark.parametrize("kwargs,flags", BEAMS, ids=[str(k) for k, _ in BEAMS])
 def test_beam(cli, kwargs, flags):
     assert_same(flexure.beam(**kwargs), cli.json("beam", *flags))
+
+
+def test_beam_stability_keys():
+    with pytest.warns(flexure.FlexureWarning, match="UNSTABLE"):
+        r = flexure.beam(length=1, E="1MPa", I=1e-6, Fx=-30)
+    assert (r["stability"], r["stability_index"]) == ("unstable", 2)
+    # 1 - 4 P L^2 / (pi^2 EI): P L^2/EI = 30.
+    assert abs(r["stability_margin"] - (1 - 120 / 3.141592653589793 ** 2)) < 1e-8
+    assert r["stable_search"] is None and len(r["warnings"]) == 1
+    stable = flexure.beam(length=1, E="1MPa", I=1e-6, Fx=-30, stable=True)
+    assert stable["stability"] == "stable" and stable["warnings"] == []
+    assert stable["stable_search"].startswith("the shooting answer")
+    with pytest.raises(flexure.InvalidInput, match="stable equilibrium"):
+        flexure.beam(theta0=0.5, stable=True)
+    with pytest.raises(flexure.NoConvergence, match="no stable equilibrium"):
+        flexure.beam(length=1, E="1MPa", I=1e-6, Fx=-2.4674011002723395, stable=True)
 
 
 EXAMPLES = os.path.join(ROOT, "docs", "examples")
@@ -290,3 +316,21 @@ def test_map_cfm(cli, tmp_path):
     assert got["dims"].tolist() == [4, 1, 1, 1]
     assert_same(got, cli.json("map", "cfm", "--config", "lps", "--R", "0.5:2:4", "--d", "16",
                               "--K2", "1.0", "--out", b), skip=("out",))
+
+
+def test_path_stability_per_point(cli, tmp_path):
+    """Every path point's verdict: the straight column against 1 - P/(pi^2/4), as the tool."""
+    a, b = tmp_path / "a.h5", tmp_path / "b.h5"
+    column = flexure.path(length="1m", E="1GPa", I=1e-9, Fx="-3N", out=a)
+    assert_same(column, cli.json("path", "--length", "1m", "--E", "1GPa", "--I", "1e-9",
+                                 "--Fx", "-3N", "--out", b), skip=("seconds", "out"))
+    data = flexure.read(a)
+    P = 3.0 * data["load_factor"]
+    assert column["stability_margin"] == pytest.approx(1 - P / (math.pi ** 2 / 4), abs=1e-8)
+    assert (data["stability_margin"] == column["stability_margin"]).all()
+    kinds = [("stable" if p < math.pi ** 2 / 4 else "unstable") for p in P]
+    critical = data["status"] == 4
+    assert [k for k, c in zip(column["stability"], critical) if not c] == \
+        [k for k, c in zip(kinds, critical) if not c]
+    off = flexure.path(alpha2=3.0, stability="off", out=a)
+    assert set(off["stability"]) == {"not_checked"}

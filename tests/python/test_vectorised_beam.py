@@ -134,3 +134,36 @@ def test_lock_is_released_during_a_long_call():
     worker.join()
     assert result["r"]["converged"].all()
     assert ticks > 1000, f"only {ticks} ticks ran during the call"
+
+
+def test_stability_columns_agree_with_the_scalar_call():
+    # The clamped-clamped beam of issue 27 at two tip angles: the second mode (unstable) at 0,
+    # the first (stable) at 0.01; one warning for the call.
+    args = dict(alpha2=np.zeros(2), boundary="fixed", tip_x=0.9, tip_y=0.001, tip_angle=0.0,
+                threads=1)
+    with pytest.warns(flexure.FlexureWarning, match="2 of 2 loads have an UNSTABLE answer"):
+        many = flexure.beam(**args)
+    assert many["stability"].tolist() == ["unstable", "unstable"]
+    assert many["stability_index"].tolist() == [1.0, 1.0]
+    with pytest.warns(flexure.FlexureWarning):
+        one = flexure.beam(alpha2=0.0, boundary="fixed", tip_x=0.9, tip_y=0.001, tip_angle=0.0)
+    point = {k: (v[0] if not isinstance(v, dict) else {c: a[0] for c, a in v.items()})
+             for k, v in many.items() if k != "status"}
+    assert_same(point, one)
+    stable = flexure.beam(**{**args, "stable": True})
+    assert stable["stability"].tolist() == ["stable", "stable"]
+    assert all(s.startswith("the shooting answer") for s in stable["stable_search"])
+    off = flexure.beam(alpha2=np.array([1.0, 2.0]), stability="off")
+    assert off["stability"].tolist() == ["not_checked"] * 2
+    assert np.isnan(off["stability_index"]).all() and np.isnan(off["stability_margin"]).all()
+
+
+def test_failed_loads_carry_no_verdict_and_no_warnings():
+    # A failed load was judged by nothing: its text columns must not read another load's texts
+    # (the interned columns share texts between loads).
+    r = flexure.beam(n=np.array([0.0, np.nan, 0.0]), alpha2=np.array([1.0, 1.0, 1e9]),
+                     threads=1)
+    assert r["status"].tolist() == [0, 2, 1]
+    assert r["stability"].tolist() == ["stable", "not_checked", "not_checked"]
+    assert r["stability_index"][0] == 0.0 and np.isnan(r["stability_index"][1:]).all()
+    assert [list(w) for w in r["warnings"]] == [[], [], []]
