@@ -1,0 +1,379 @@
+// The general mechanism assembler's PRBM (mechanisms/general/, issue 31) against independent
+// values: Howell's bistable switch (Tables 11.1, 11.2; eq. 11.17), the parallel-guiding mechanism's
+// small-displacement stiffness 24 EI/L^3 (two fixed-guided beams, 12 EI/L^3 each), the closed-form
+// stability of an inverted pendulum on a torsion spring, and seeded random four-bars whose input
+// load is checked against a finite difference of their own energy and whose stability verdicts
+// are checked against the sign of its second difference.
+#include "flexure/mechanisms/general/general_mechanism.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "flexure/elements/fixed_guided_segment.h"
+#include "flexure/mechanisms/general/general_prbm.h"
+#include "flexure/solver/common/errors.h"
+
+namespace flexure::mechanism::general {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kDeg = kPi / 180.0;
+
+// Point A of a four-bar with ground pivots O2 = (0, 0), O4 = (r1, 0), given B: the intersection of
+// the circles r2 about O2 and r3 about B on the side `branch` (+1: left of O2 -> B).
+Vec2 circle_point(double r2, double r3, Vec2 B, double branch) {
+  const double d = std::hypot(B.x, B.y);
+  const double a = (r2 * r2 - r3 * r3 + d * d) / (2 * d);
+  const double h = std::sqrt(r2 * r2 - a * a);
+  const Vec2 u{B.x / d, B.y / d};
+  return {a * u.x - branch * h * u.y, a * u.y + branch * h * u.x};
+}
+
+// Howell's bistable switch, Table 11.1: r1 3.61 cm, r2 2.0 cm, r3 1.0 cm, r4 1.23 cm,
+// theta4o = 142 deg; a small-length flexural pivot at position 4 (polypropylene, E = 1.4 GPa,
+// b4 = 6.3 mm, h4 = 2.3 mm, l4 = 4.2 mm; K4 = EI/l, eq. 11.18), living hinges (pins) elsewhere.
+// Described at the second stable position of Table 11.2 (theta4 = theta4o, theta2 near 0).
+struct Switch {
+  static constexpr double r1 = 0.0361, r2 = 0.020, r3 = 0.010, r4 = 0.0123;
+  static constexpr double theta4o = 142.0 * kDeg;
+  static constexpr double E = 1.4e9, b4 = 6.3e-3, h4 = 2.3e-3, l4 = 4.2e-3;
+  static double K4() { return E * b4 * h4 * h4 * h4 / 12.0 / l4; }
+};
+
+GeneralMechanism bistable_switch(double start_deg, double stop_deg, int count) {
+  const Vec2 O4{Switch::r1, 0.0};
+  const Vec2 B{O4.x + Switch::r4 * std::cos(Switch::theta4o),
+               O4.y + Switch::r4 * std::sin(Switch::theta4o)};
+  const Vec2 A = circle_point(Switch::r2, Switch::r3, B, -1.0);  // theta2 near 0 (theta3 ~ 50)
+  const Vec2 u{std::cos(Switch::theta4o), std::sin(Switch::theta4o)};
+  const double hl = Switch::l4 / 2;
+  GeneralMechanism m;
+  m.name = "howell-bistable-switch";
+  m.body("ground", {{"O2", {0, 0}}, {"F", {O4.x - hl * u.x, O4.y - hl * u.y}}})
+      .body("crank", {{"O2", {0, 0}}, {"A", A}})
+      .body("coupler", {{"A", A}, {"B", B}})
+      .body("rocker", {{"B", B}, {"F", {O4.x + hl * u.x, O4.y + hl * u.y}}})
+      .pin("O2", "ground.O2", "crank.O2")
+      .pin("A", "crank.A", "coupler.A")
+      .pin("B", "coupler.B", "rocker.B")
+      .flexure("pivot4",
+               "ground.F",
+               "rocker.F",
+               Switch::b4,
+               Switch::h4,
+               Switch::E,
+               PrbmKind::kSmallLengthPivot)
+      .input_coordinate(InputCoordinate::kAngle,
+                        "crank.O2",
+                        "crank.A",
+                        InputControl::kDisplacement,
+                        start_deg * kDeg,
+                        stop_deg * kDeg,
+                        count);
+  return m;
+}
+
+// Position analysis of the switch at crank angle theta2 on the branch through the described
+// configuration (theta3 > theta2 before the toggle, below after): theta3, theta4 from the
+// intersection of the circles r3 about A and r4 about O4 (Howell ch. 4), computed here directly.
+struct FourBarAngles {
+  double theta3, theta4;
+};
+FourBarAngles switch_angles(double theta2) {
+  const Vec2 A{Switch::r2 * std::cos(theta2), Switch::r2 * std::sin(theta2)};
+  const Vec2 d{Switch::r1 - A.x, -A.y};  // A -> O4
+  const double dist = std::hypot(d.x, d.y);
+  const double a = (Switch::r3 * Switch::r3 - Switch::r4 * Switch::r4 + dist * dist) / (2 * dist);
+  const double h = std::sqrt(Switch::r3 * Switch::r3 - a * a);
+  const Vec2 u{d.x / dist, d.y / dist};
+  // B on the upper side of A -> O4 (the described branch: B above the line A O4).
+  const Vec2 B{A.x + a * u.x - h * u.y, A.y + a * u.y + h * u.x};
+  return {std::atan2(B.y - A.y, B.x - A.x), std::atan2(B.y, B.x - Switch::r1)};
+}
+
+TEST(GeneralMechanismPrbm, HowellBistableSwitchEquilibriaMatchTable11_2) {
+  const GeneralPrbmResult r = solve_general_prbm(bistable_switch(-5.0, 33.0, 77));
+  ASSERT_TRUE(r.converged()) << r.message;
+  ASSERT_EQ(r.points.size(), 77u);
+  EXPECT_EQ(r.degrees_of_freedom, 1);
+  ASSERT_EQ(r.equilibria.size(), 3u);
+  // Table 11.2: second stable theta2 = 0, unstable 18.7, first stable 32 (degrees, printed to
+  // two or three digits). With theta4o = 142 exactly the closure gives -0.30 and 32.30 deg:
+  // tolerance 0.5 deg for the two printed as integers, 0.05 deg for 18.7.
+  EXPECT_NEAR(r.equilibria[0].input / kDeg, 0.0, 0.5);
+  EXPECT_NEAR(r.equilibria[1].input / kDeg, 18.7, 0.05);
+  EXPECT_NEAR(r.equilibria[2].input / kDeg, 32.0, 0.5);
+  EXPECT_EQ(r.equilibria[0].stability.kind, StabilityKind::kStable);
+  EXPECT_EQ(r.equilibria[1].stability.kind, StabilityKind::kUnstable);
+  EXPECT_EQ(r.equilibria[1].stability.index, 1);
+  EXPECT_EQ(r.equilibria[2].stability.kind, StabilityKind::kStable);
+  // theta3, theta4 at each (Table 11.2: 50/142, 18.7/128.6, -18/142 with the sign of theta3
+  // corrected, docs/errata.md), from the position analysis at the found theta2.
+  const FourBarAngles second = switch_angles(r.equilibria[0].input);
+  const FourBarAngles toggle = switch_angles(r.equilibria[1].input);
+  const FourBarAngles first = switch_angles(r.equilibria[2].input);
+  EXPECT_NEAR(second.theta3 / kDeg, 50.0, 0.5);
+  EXPECT_NEAR(second.theta4 / kDeg, 142.0, 1e-6);  // a stable position is V = 0: theta4 = theta4o
+  EXPECT_NEAR(toggle.theta3 / kDeg, 18.7, 0.05);
+  EXPECT_NEAR(toggle.theta4 / kDeg, 128.6, 0.05);
+  EXPECT_NEAR(first.theta3 / kDeg, -18.0, 0.5);
+  EXPECT_NEAR(first.theta4 / kDeg, 142.0, 1e-6);
+  // The unstable position is the toggle: links 2 and 3 collinear (Howell §11.3.2).
+  EXPECT_NEAR(toggle.theta3, r.equilibria[1].input, 1e-7);
+  // Energies: 0 at the stable positions, K4 (theta4 - theta4o)^2/2 at the toggle (eq. 11.16).
+  EXPECT_NEAR(r.equilibria[0].energy, 0.0, 1e-12);
+  EXPECT_NEAR(r.equilibria[2].energy, 0.0, 1e-12);
+  const double dtheta4 = toggle.theta4 - Switch::theta4o;
+  EXPECT_NEAR(r.equilibria[1].energy,
+              0.5 * Switch::K4() * dtheta4 * dtheta4,
+              1e-7 * r.equilibria[1].energy);
+}
+
+TEST(GeneralMechanismPrbm, HowellBistableSwitchTorqueIsEquation11_17) {
+  const GeneralPrbmResult r = solve_general_prbm(bistable_switch(-5.0, 33.0, 39));
+  ASSERT_TRUE(r.converged()) << r.message;
+  double largest = 0.0;
+  for (const GeneralPrbmPoint& p : r.points) {
+    largest = std::max(largest, std::fabs(p.input_load));
+  }
+  for (const GeneralPrbmPoint& p : r.points) {
+    const double theta2 = p.input;
+    const FourBarAngles a = switch_angles(theta2);
+    // Howell eq. 11.17: dV/dtheta2 = K4 (theta4 - theta4o) r2 sin(theta3 - theta2) /
+    // (r4 sin(theta3 - theta4)).
+    const double torque = Switch::K4() * (a.theta4 - Switch::theta4o) * Switch::r2 *
+                          std::sin(a.theta3 - theta2) /
+                          (Switch::r4 * std::sin(a.theta3 - a.theta4));
+    EXPECT_NEAR(p.input_load, torque, 1e-8 * largest) << "theta2 = " << theta2 / kDeg;
+    EXPECT_NEAR(p.energy,
+                0.5 * Switch::K4() * std::pow(a.theta4 - Switch::theta4o, 2),
+                1e-9 * Switch::K4());
+    // A one-degree-of-freedom linkage held at its input cannot move.
+    EXPECT_EQ(p.displacement_control.kind, StabilityKind::kStable);
+  }
+  // The torque peaks between the equilibria (Howell Fig. 11.9's critical torques); here just its
+  // scale: of order K4 times a tenth of a radian.
+  EXPECT_GT(largest, 0.01 * Switch::K4());
+}
+
+// Parallel-guiding mechanism (Howell §5.3): a stage on two parallel fixed-guided flexures of
+// length L, clamped to the ground and to the stage. Small-displacement stiffness: 2 x 12 EI/L^3
+// (the exact beam); the PRBM's is 2 x 4 K_Theta/gamma EI/L^3 (eq. 5.105 with F = dV/dx).
+GeneralMechanism parallel_guide(double L, double spacing, double E, double b, double h) {
+  GeneralMechanism m;
+  m.body("ground", {{"c1", {0, 0}}, {"c2", {spacing, 0}}})
+      .body("stage", {{"c1", {0, L}}, {"c2", {spacing, L}}})
+      .flexure("left", "ground.c1", "stage.c1", b, h, E, PrbmKind::kFixedGuided)
+      .flexure("right", "ground.c2", "stage.c2", b, h, E, PrbmKind::kFixedGuided)
+      .input_coordinate(
+          InputCoordinate::kX, "stage.c1", "", InputControl::kDisplacement, -1e-5 * L, 1e-5 * L, 3);
+  return m;
+}
+
+TEST(GeneralMechanismPrbm, ParallelGuideSmallDisplacementStiffness) {
+  const double L = 0.05, E = 2e9, b = 0.01, h = 1e-3;
+  const double EI = E * b * h * h * h / 12.0;
+  const GeneralPrbmResult r = solve_general_prbm(parallel_guide(L, 0.03, E, b, h));
+  ASSERT_TRUE(r.converged()) << r.message;
+  ASSERT_EQ(r.points.size(), 3u);
+  const double k =
+      (r.points[2].input_load - r.points[0].input_load) / (r.points[2].input - r.points[0].input);
+  const double exact = 24.0 * EI / (L * L * L);
+  // The PRBM's stiffness is known to be 4.7 % above the beam's at small displacement
+  // (4 K_Theta/gamma = 12.57 for Table 5.1 n = 0 against 12): within 5 %.
+  EXPECT_NEAR(k, exact, 0.05 * exact);
+  const FixedPinnedConstants c = FixedPinnedConstants::from_table(0.0);
+  EXPECT_NEAR(k, 8.0 * c.K_theta / c.gamma * EI / (L * L * L), 1e-6 * k);
+  // The stage translates without turning (parallelogram), and is stable both ways.
+  for (const GeneralPrbmPoint& p : r.points) {
+    EXPECT_NEAR(p.body_phi[0], 0.0, 1e-12);
+    EXPECT_EQ(p.force_control.kind, StabilityKind::kStable);
+    EXPECT_EQ(p.displacement_control.kind, StabilityKind::kStable);
+  }
+  EXPECT_EQ(r.degrees_of_freedom, 1);
+}
+
+// An inverted pendulum: a link of height a pinned to a slider (the input: its x) with a torsion
+// spring k, under a dead load P downward at its top. With the slider held, the upright link's
+// second variation is k - P a, so the margin is 1 - P a/k: stable below P a = k, unstable above.
+GeneralMechanism inverted_pendulum(double k, double P, double a) {
+  GeneralMechanism m;
+  m.body("ground", {{"O", {0, 0}}})
+      .body("slider", {{"O", {0, 0}}})
+      .body("link", {{"O", {0, 0}}, {"top", {0, a}}})
+      .slider("guide", "ground.O", "slider.O", 0.0)
+      .pin("hinge", "slider.O", "link.O")
+      .torsion_spring("k", "slider", "link", k)
+      .load("P", "link.top", 0.0, -P)
+      .input_coordinate(
+          InputCoordinate::kX, "slider.O", "", InputControl::kDisplacement, 0.0, 0.01, 3);
+  return m;
+}
+
+TEST(GeneralMechanismPrbm, DisplacementControlVerdictIsTheClosedForm) {
+  for (const double ratio : {0.25, 0.5, 0.9, 1.5, 3.0}) {
+    const double k = 2.0, a = 0.1;
+    const double P = ratio * k / a;
+    const GeneralPrbmResult r = solve_general_prbm(inverted_pendulum(k, P, a));
+    ASSERT_TRUE(r.converged()) << r.message;
+    for (const GeneralPrbmPoint& p : r.points) {
+      EXPECT_NEAR(p.displacement_control.margin, 1.0 - ratio, 1e-8) << ratio;
+      EXPECT_EQ(p.displacement_control.kind,
+                ratio < 1.0 ? StabilityKind::kStable : StabilityKind::kUnstable);
+      EXPECT_EQ(p.displacement_control.index, ratio < 1.0 ? 0 : 1);
+      // The slider is free under a dead load too; nothing resists its travel (input load 0).
+      EXPECT_NEAR(p.input_load, 0.0, 1e-9);
+      EXPECT_NEAR(p.body_phi[1], 0.0, 1e-12);
+    }
+  }
+}
+
+// A random four-bar (ground pivots 0 and r1, crank r2 at rest angle theta2o, elbow-up) with a
+// small-length flexural pivot of random section at each of its four joints; the input is the
+// crank's angle over a few degrees.
+GeneralMechanism random_four_bar(std::mt19937& rng, double* start, double* stop) {
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  for (;;) {
+    const double r1 = 0.05, r2 = 0.02 + 0.02 * U(rng), r3 = 0.04 + 0.03 * U(rng),
+                 r4 = 0.03 + 0.03 * U(rng);
+    const double theta2 = (30.0 + 90.0 * U(rng)) * kDeg;
+    const Vec2 A{r2 * std::cos(theta2), r2 * std::sin(theta2)};
+    const Vec2 d{r1 - A.x, -A.y};
+    const double dist = std::hypot(d.x, d.y);
+    if (dist >= r3 + r4 - 0.005 || dist <= std::fabs(r3 - r4) + 0.005) {
+      continue;  // cannot close, or too near a folded position
+    }
+    const double a = (r3 * r3 - r4 * r4 + dist * dist) / (2 * dist);
+    const double h = std::sqrt(r3 * r3 - a * a);
+    const Vec2 u{d.x / dist, d.y / dist};
+    const Vec2 B{A.x + a * u.x - h * u.y, A.y + a * u.y + h * u.x};
+    const Vec2 O4{r1, 0};
+    const double l = 0.002;
+    auto ends = [&](Vec2 J, Vec2 along) {
+      const double n = std::hypot(along.x, along.y);
+      const Vec2 e{along.x / n * l / 2, along.y / n * l / 2};
+      return std::pair<Vec2, Vec2>{{J.x - e.x, J.y - e.y}, {J.x + e.x, J.y + e.y}};
+    };
+    const auto f1 = ends({0, 0}, A);
+    const auto f2 = ends(A, {B.x - A.x, B.y - A.y});
+    const auto f3 = ends(B, {O4.x - B.x, O4.y - B.y});
+    const auto f4 = ends(O4, {B.x - O4.x, B.y - O4.y});
+    auto thickness = [&] { return 2e-4 + 4e-4 * U(rng); };
+    GeneralMechanism m;
+    m.body("ground", {{"f1", f1.first}, {"f4", f4.first}})
+        .body("crank", {{"O2", {0, 0}}, {"A", A}, {"f1", f1.second}, {"f2", f2.first}})
+        .body("coupler", {{"f2", f2.second}, {"f3", f3.first}})
+        .body("rocker", {{"f3", f3.second}, {"f4", f4.second}})
+        .flexure(
+            "j1", "ground.f1", "crank.f1", 5e-3, thickness(), 1.4e9, PrbmKind::kSmallLengthPivot)
+        .flexure(
+            "j2", "crank.f2", "coupler.f2", 5e-3, thickness(), 1.4e9, PrbmKind::kSmallLengthPivot)
+        .flexure(
+            "j3", "coupler.f3", "rocker.f3", 5e-3, thickness(), 1.4e9, PrbmKind::kSmallLengthPivot)
+        .flexure(
+            "j4", "ground.f4", "rocker.f4", 5e-3, thickness(), 1.4e9, PrbmKind::kSmallLengthPivot);
+    *start = theta2 - 4.0 * kDeg;
+    *stop = theta2 + 4.0 * kDeg;
+    return m;
+  }
+}
+
+TEST(GeneralMechanismPrbm, RandomFourBarsLoadIsTheEnergysSlopeAndVerdictsItsCurvature) {
+  std::mt19937 rng(31);
+  int judged = 0;
+  for (int trial = 0; trial < 12; ++trial) {
+    double start = 0.0, stop = 0.0;
+    GeneralMechanism m = random_four_bar(rng, &start, &stop);
+    const int count = 161;  // spacing 0.05 deg
+    m.input_coordinate(InputCoordinate::kAngle,
+                       "crank.O2",
+                       "crank.A",
+                       InputControl::kDisplacement,
+                       start,
+                       stop,
+                       count);
+    const GeneralPrbmResult r = solve_general_prbm(m);
+    ASSERT_TRUE(r.converged()) << "trial " << trial << ": " << r.message;
+    ASSERT_EQ(r.points.size(), static_cast<std::size_t>(count));
+    const double step = (stop - start) / (count - 1);
+    double load_scale = 0.0, curvature_scale = 0.0;
+    for (std::size_t i = 1; i + 1 < r.points.size(); ++i) {
+      load_scale = std::max(load_scale, std::fabs(r.points[i].input_load));
+      curvature_scale = std::max(
+          curvature_scale,
+          std::fabs(r.points[i + 1].energy - 2 * r.points[i].energy + r.points[i - 1].energy) /
+              (step * step));
+    }
+    for (std::size_t i = 1; i + 1 < r.points.size(); ++i) {
+      const GeneralPrbmPoint& p = r.points[i];
+      EXPECT_NEAR(p.input, start + step * static_cast<double>(i), 1e-12);
+      // Central difference of the energy along the manifold: error ~ step^2 V'''/6.
+      const double slope = (r.points[i + 1].energy - r.points[i - 1].energy) / (2 * step);
+      EXPECT_NEAR(p.input_load, slope, 1e-5 * load_scale + 1e-12) << trial << " " << i;
+      const double curvature =
+          (r.points[i + 1].energy - 2 * p.energy + r.points[i - 1].energy) / (step * step);
+      if (std::fabs(curvature) > 1e-3 * curvature_scale) {
+        ++judged;
+        EXPECT_EQ(p.force_control.kind,
+                  curvature > 0 ? StabilityKind::kStable : StabilityKind::kUnstable)
+            << trial << " " << i << " curvature " << curvature;
+      }
+    }
+  }
+  EXPECT_GT(judged, 1000);
+}
+
+TEST(GeneralMechanismDescription, BadDescriptionsAreNamedErrors) {
+  auto message = [](const GeneralMechanism& m) {
+    try {
+      solve_general_prbm(m);
+    } catch (const InvalidInput& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  {
+    GeneralMechanism m = bistable_switch(0, 10, 3);
+    m.flexures[0].b = {"ground", "O2"};
+    EXPECT_NE(message(m).find("flexure 'pivot4': runs between ground.F and ground.O2, two "
+                              "points of the same body"),
+              std::string::npos)
+        << message(m);
+  }
+  {
+    GeneralMechanism m = bistable_switch(0, 10, 3);
+    m.flexures[0].thickness = 0.0;
+    EXPECT_NE(message(m).find("flexure 'pivot4': missing or invalid section"), std::string::npos)
+        << message(m);
+  }
+  {
+    GeneralMechanism m = bistable_switch(0, 10, 3);
+    m.bodies[2].points[1].position.x += 1e-3;  // coupler's B moved by 1 mm
+    EXPECT_NE(message(m).find("pin 'B': coupler.B at"), std::string::npos) << message(m);
+    EXPECT_NE(message(m).find("the loop cannot close"), std::string::npos) << message(m);
+  }
+  {
+    GeneralMechanism m = bistable_switch(0, 10, 3);
+    m.body("loose", {{"P", {0.01, 0.01}}});
+    EXPECT_NE(message(m).find("body 'loose' is unconstrained"), std::string::npos) << message(m);
+  }
+  {
+    // A coupler on two pins with nothing else: it can turn about... no, here a rocker pinned to
+    // the ground by one pin only, with no spring: free to swing while the input is held.
+    GeneralMechanism m = bistable_switch(0, 10, 3);
+    m.body("flap", {{"P", {0.0, 0.0}}}).pin("flap-pin", "ground.O2", "flap.P");
+    EXPECT_NE(message(m).find("body 'flap' can move with the input held"), std::string::npos)
+        << message(m);
+  }
+  {
+    GeneralMechanism m = bistable_switch(0, 10, 3);
+    m.flexures[0].model = FlexureModel::kExact;
+    EXPECT_NE(message(m).find("not assembled for general mechanisms yet"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace flexure::mechanism::general
