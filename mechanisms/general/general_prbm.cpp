@@ -69,19 +69,25 @@ Stability verdict(const MatrixXd& H,
   }
   const MatrixXd Hr = Z.transpose() * H * Z;
   const MatrixXd Br = Z.transpose() * B * Z;
-  Eigen::SelfAdjointEigenSolver<MatrixXd> b_eig(Br);
-  const double b_max = b_eig.eigenvalues().maxCoeff();
+  // The stiffest spring, in the same coordinates: what "no stiffness" is measured against.
+  const double reference = std::max(
+      Eigen::SelfAdjointEigenSolver<MatrixXd>(B, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff(),
+      0.0);
+  Eigen::SelfAdjointEigenSolver<MatrixXd> b_eig(Br, Eigen::EigenvaluesOnly);
   const double b_min = b_eig.eigenvalues().minCoeff();
   VectorXd eig;
   std::string note;
-  if (b_max > 0.0 && b_min > kRankTolerance * b_max) {
-    Eigen::GeneralizedSelfAdjointEigenSolver<MatrixXd> g(Hr, Br);
+  if (reference > 0.0 && b_min > kRankTolerance * reference) {
+    Eigen::GeneralizedSelfAdjointEigenSolver<MatrixXd> g(Hr, Br, Eigen::EigenvaluesOnly);
     eig = g.eigenvalues();
   } else {
-    // A direction that strains no spring: the margin is measured against the stiffest direction.
-    Eigen::SelfAdjointEigenSolver<MatrixXd> h(Hr);
-    eig = h.eigenvalues() / (b_max > 0.0 ? b_max : 1.0);
-    note = " (a free direction strains no spring; margin relative to the stiffest direction)";
+    // A free direction that strains no spring to first order (a toggle position, a linkage
+    // without springs): the margin is measured against the stiffest spring instead.
+    Eigen::SelfAdjointEigenSolver<MatrixXd> h(Hr, Eigen::EigenvaluesOnly);
+    eig = h.eigenvalues() / (reference > 0.0 ? reference : 1.0);
+    note =
+        " (a free direction strains no spring to first order: margin relative to the stiffest "
+        "spring)";
   }
   int index = 0;
   for (int i = 0; i < eig.size(); ++i) {
@@ -381,7 +387,26 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
       }
       ++steps;
       if (t[p] * tn[p] < 0.0) {
-        result.limit_inputs.push_back(A.input_si(zn[si]));
+        // A limit point of the controlled quantity inside this step: bisect the arclength on the
+        // sign of the tangent's component along it.
+        double lo = 0.0, hi = h;
+        VectorXd zl = zn;
+        for (int k = 0; k < 60 && hi - lo > 1e-13; ++k) {
+          const double mid = 0.5 * (lo + hi);
+          VectorXd zm = zc + mid * t;
+          int mits = 0;
+          if (!P.corrector(zm, zc, t, mid, &mits)) {
+            break;
+          }
+          if (P.tangent(zm, t)[p] * t[p] > 0.0) {
+            lo = mid;
+          } else {
+            hi = mid;
+          }
+          zl = zm;
+        }
+        result.limit_inputs.push_back(A.input_si(zl[si]));
+        result.limit_loads.push_back(A.load_si(zl[li]));
       }
       // Grid values (and the target) crossed by this step, in the order of travel.
       const double from = zc[p];
@@ -436,6 +461,7 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
   if (end == Termination::kConverged) {
     record(z);
     result.limit_inputs.clear();
+    result.limit_loads.clear();
     end = follow(z, grid.back(), true);
   }
   result.iterations = steps;

@@ -60,8 +60,12 @@ struct GeneralPrbmResult : SolveStatus {
   std::vector<GeneralPrbmPoint> points;  // at each grid value of the controlled quantity, in path
                                          // order (a value crossed twice after a limit point twice)
   std::vector<GeneralEquilibrium> equilibria;  // in path order
-  std::vector<double> limit_inputs;  // input coordinate at limit points of the controlled quantity
-  int degrees_of_freedom = 0;        // of the PRB linkage with the input free
+  // Limit points of the controlled quantity along the path (the input coordinate under
+  // displacement control, the load under force control: where a dead load makes it snap): the
+  // input coordinate and the input load there, located to about 1e-12 of arclength.
+  std::vector<double> limit_inputs;
+  std::vector<double> limit_loads;
+  int degrees_of_freedom = 0;  // of the PRB linkage with the input free
 };
 
 // Solves the PRBM of `mechanism` over its input range. Throws InvalidInput for a bad description

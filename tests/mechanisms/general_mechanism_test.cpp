@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -94,6 +95,18 @@ FourBarAngles switch_angles(double theta2) {
   return {std::atan2(B.y - A.y, B.x - A.x), std::atan2(B.y, B.x - Switch::r1)};
 }
 
+// Howell eq. 11.17: the crank torque dV/dtheta2 = K4 (theta4 - theta4o) r2 sin(theta3 - theta2) /
+// (r4 sin(theta3 - theta4)), from the position analysis above; and eq. 11.16's energy.
+double switch_torque(double theta2) {
+  const FourBarAngles a = switch_angles(theta2);
+  return Switch::K4() * (a.theta4 - Switch::theta4o) * Switch::r2 * std::sin(a.theta3 - theta2) /
+         (Switch::r4 * std::sin(a.theta3 - a.theta4));
+}
+double switch_energy(double theta2) {
+  const double d = switch_angles(theta2).theta4 - Switch::theta4o;
+  return 0.5 * Switch::K4() * d * d;
+}
+
 TEST(GeneralMechanismPrbm, HowellBistableSwitchEquilibriaMatchTable11_2) {
   const GeneralPrbmResult r = solve_general_prbm(bistable_switch(-5.0, 33.0, 77));
   ASSERT_TRUE(r.converged()) << r.message;
@@ -130,6 +143,90 @@ TEST(GeneralMechanismPrbm, HowellBistableSwitchEquilibriaMatchTable11_2) {
   EXPECT_NEAR(r.equilibria[1].energy,
               0.5 * Switch::K4() * dtheta4 * dtheta4,
               1e-7 * r.equilibria[1].energy);
+  // Margins: at the stable positions the spring is unstressed, V'' = K4 (dtheta4/dtheta2)^2 is
+  // the unloaded stiffness itself (margin 1). At the toggle dtheta4/dtheta2 = 0, no spring is
+  // strained to first order, and the margin is V''/K4 (the one spring is the stiffest), here
+  // against a second difference of eq. 11.16's energy from the position analysis.
+  EXPECT_NEAR(r.equilibria[0].stability.margin, 1.0, 1e-6);
+  EXPECT_NEAR(r.equilibria[2].stability.margin, 1.0, 1e-6);
+  const double t = r.equilibria[1].input, dt = 1e-4;
+  const double curvature =
+      (switch_energy(t + dt) - 2 * switch_energy(t) + switch_energy(t - dt)) / (dt * dt);
+  EXPECT_LT(curvature, 0.0);
+  // The margin is then per unit motion of the scaled coordinates (each body's centroid
+  // displacement over the mechanism's size, its rotation): divide by |dq/dtheta2|^2, here from
+  // the position analysis.
+  auto pose = [](double theta2) {
+    const FourBarAngles a = switch_angles(theta2);
+    const Vec2 A{Switch::r2 * std::cos(theta2), Switch::r2 * std::sin(theta2)};
+    const Vec2 B{A.x + Switch::r3 * std::cos(a.theta3), A.y + Switch::r3 * std::sin(a.theta3)};
+    const Vec2 F{Switch::r1 + Switch::l4 / 2 * std::cos(a.theta4),
+                 Switch::l4 / 2 * std::sin(a.theta4)};
+    return std::array<double, 9>{A.x / 2,
+                                 A.y / 2,
+                                 theta2,
+                                 (A.x + B.x) / 2,
+                                 (A.y + B.y) / 2,
+                                 a.theta3,
+                                 (B.x + F.x) / 2,
+                                 (B.y + F.y) / 2,
+                                 a.theta4};
+  };
+  const double size = bistable_switch(0, 1, 2).size();
+  const auto plus = pose(t + 1e-6), minus = pose(t - 1e-6);
+  double metric = 0.0;
+  for (int i = 0; i < 9; ++i) {
+    const double rate = (plus[i] - minus[i]) / 2e-6 / (i % 3 == 2 ? 1.0 : size);
+    metric += rate * rate;
+  }
+  EXPECT_NEAR(r.equilibria[1].stability.margin,
+              curvature / Switch::K4() / metric,
+              1e-5 * std::fabs(curvature / Switch::K4() / metric));
+}
+
+// Under a dead crank torque rising from 0 to 1.2 N m the switch follows its first branch up to the
+// largest torque of eq. 11.17 (a limit point: under force control it snaps there), then the path
+// continues through the unstable stretch, the torque's minimum and the second stable branch.
+TEST(GeneralMechanismPrbm, HowellBistableSwitchUnderTorqueControlPassesItsLimitPoints) {
+  GeneralMechanism m = bistable_switch(0.0, 1.0, 2);
+  m.input.control = InputControl::kForce;
+  m.input.start = 0.0;
+  m.input.stop = 1.2;
+  m.input.count = 13;
+  const GeneralPrbmResult r = solve_general_prbm(m);
+  ASSERT_TRUE(r.converged()) << r.message;
+  // The torque's extremes from eq. 11.17 by golden-section search on the position analysis.
+  auto extreme = [](double lo, double hi, double sign) {
+    const double g = (std::sqrt(5.0) - 1) / 2;
+    for (int i = 0; i < 200; ++i) {
+      const double a = hi - g * (hi - lo), b = lo + g * (hi - lo);
+      if (sign * switch_torque(a) > sign * switch_torque(b)) {
+        hi = b;
+      } else {
+        lo = a;
+      }
+    }
+    return 0.5 * (lo + hi);
+  };
+  const double at_max = extreme(-0.3 * kDeg, 18.6 * kDeg, 1.0);
+  const double at_min = extreme(18.7 * kDeg, 32.3 * kDeg, -1.0);
+  ASSERT_EQ(r.limit_loads.size(), 2u);
+  EXPECT_NEAR(r.limit_loads[0], switch_torque(at_max), 1e-9 * Switch::K4());
+  EXPECT_NEAR(r.limit_loads[1], switch_torque(at_min), 1e-9 * Switch::K4());
+  EXPECT_NEAR(r.limit_inputs[0], at_max, 1e-6);
+  EXPECT_NEAR(r.limit_inputs[1], at_min, 1e-6);
+  // Grid torques 0, 0.1, 0.2 on the first branch (its largest torque is 0.2x N m), 0.2, 0.1, 0 on
+  // the way down (none below 0), then 0 ... 1.2 on the second branch: 3 + 3 + 13 points.
+  ASSERT_GT(switch_torque(at_max), 0.2);
+  ASSERT_LT(switch_torque(at_max), 0.3);
+  ASSERT_EQ(r.points.size(), 19u);
+  for (const GeneralPrbmPoint& p : r.points) {
+    EXPECT_NEAR(switch_torque(p.input), p.input_load, 1e-8 * Switch::K4()) << p.input / kDeg;
+    const double slope = (switch_torque(p.input + 1e-6) - switch_torque(p.input - 1e-6)) / 2e-6;
+    EXPECT_EQ(p.force_control.kind, slope > 0 ? StabilityKind::kStable : StabilityKind::kUnstable)
+        << p.input / kDeg << " slope " << slope;
+  }
+  EXPECT_EQ(r.equilibria.size(), 3u);
 }
 
 TEST(GeneralMechanismPrbm, HowellBistableSwitchTorqueIsEquation11_17) {
@@ -141,12 +238,8 @@ TEST(GeneralMechanismPrbm, HowellBistableSwitchTorqueIsEquation11_17) {
   }
   for (const GeneralPrbmPoint& p : r.points) {
     const double theta2 = p.input;
+    const double torque = switch_torque(theta2);
     const FourBarAngles a = switch_angles(theta2);
-    // Howell eq. 11.17: dV/dtheta2 = K4 (theta4 - theta4o) r2 sin(theta3 - theta2) /
-    // (r4 sin(theta3 - theta4)).
-    const double torque = Switch::K4() * (a.theta4 - Switch::theta4o) * Switch::r2 *
-                          std::sin(a.theta3 - theta2) /
-                          (Switch::r4 * std::sin(a.theta3 - a.theta4));
     EXPECT_NEAR(p.input_load, torque, 1e-8 * largest) << "theta2 = " << theta2 / kDeg;
     EXPECT_NEAR(p.energy,
                 0.5 * Switch::K4() * std::pow(a.theta4 - Switch::theta4o, 2),
