@@ -215,7 +215,7 @@ TEST(GeneralMechanismPrbm, HowellBistableSwitchUnderTorqueControlPassesItsLimitP
   EXPECT_NEAR(r.limit_loads[1], switch_torque(at_min), 1e-9 * Switch::K4());
   EXPECT_NEAR(r.limit_inputs[0], at_max, 1e-6);
   EXPECT_NEAR(r.limit_inputs[1], at_min, 1e-6);
-  // Grid torques 0, 0.1, 0.2 on the first branch (its largest torque is 0.2x N m), 0.2, 0.1, 0 on
+  // Grid torques 0, 0.1, 0.2 on the first branch (its largest torque is 0.2676 N m), 0.2, 0.1, 0 on
   // the way down (none below 0), then 0 ... 1.2 on the second branch: 3 + 3 + 13 points.
   ASSERT_GT(switch_torque(at_max), 0.2);
   ASSERT_LT(switch_torque(at_max), 0.3);
