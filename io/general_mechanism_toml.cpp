@@ -308,7 +308,10 @@ GeneralMechanism parse_general_mechanism_toml(const std::string& text, const std
     const toml::table& t = *node->as_table();
     const Reader r(t, "[input]", source);
     check_toml_keys(
-        t, {"coordinate", "point", "to", "control", "start", "stop", "count"}, "[input]", source);
+        t,
+        {"coordinate", "point", "to", "control", "start", "stop", "count", "start_rotation"},
+        "[input]",
+        source);
     Input& in = m.input;
     in.line = r.line();
     const std::string coordinate = *r.string("coordinate", true);
@@ -354,6 +357,16 @@ GeneralMechanism parse_general_mechanism_toml(const std::string& text, const std
       r.fail(t.get("count"), "count must be a whole number between 2 and 100000");
     }
     in.count = static_cast<int>(count);
+    if (const toml::node* n = t.get("start_rotation")) {
+      if (!n->is_table()) {
+        r.fail(n, "start_rotation must be a table { BODY = ANGLE, ... }");
+      }
+      for (const auto& [key, value] : *n->as_table()) {
+        in.start_rotation.push_back(
+            {std::string(key.str()),
+             r.number(value, "start_rotation." + std::string(key.str()), Dimension::kAngle)});
+      }
+    }
     m.has_input = true;
   }
 

@@ -459,6 +459,15 @@ void GeneralMechanism::validate() const {
     throw InvalidInput(item + ": the range must be two different finite values (from " +
                        fmt(input.start) + " to " + fmt(input.stop) + ")");
   }
+  for (const auto& [body, angle] : input.start_rotation) {
+    if (find_body(body) == nullptr || body == "ground") {
+      throw InvalidInput(item + ": start_rotation names '" + body +
+                         "', which is not a moving body");
+    }
+    if (!std::isfinite(angle)) {
+      throw InvalidInput(item + ": start_rotation of '" + body + "' is not finite");
+    }
+  }
   if (input.count < 2 || input.count > 100000) {
     throw InvalidInput(item + ": count must be between 2 and 100000 (" +
                        std::to_string(input.count) + ")");

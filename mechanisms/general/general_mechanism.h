@@ -14,6 +14,7 @@
 // (io/general_mechanism_toml.h); `validate()` checks it and throws InvalidInput naming the item,
 // and, for a TOML description, the file and line ("switch.toml:31: flexure 'f4': ...").
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace flexure::mechanism::general {
@@ -135,6 +136,11 @@ struct Input {
   double stop = 0.0;
   int count = 51;
   int line = 0;
+  // Rotations (rad) of named bodies from which Newton finds the first point directly, for a
+  // described configuration where the input cannot move to first order (a dead point: a straight
+  // slider-crank moves its slider only at second order in the crank angle, and which way the crank
+  // goes is a choice). Empty: the path is followed from the described configuration.
+  std::vector<std::pair<std::string, double>> start_rotation;
 };
 
 std::string_view prbm_kind_name(PrbmKind kind);    // "small-length", "fixed-pinned", "fixed-guided"

@@ -283,11 +283,18 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
   result.degrees_of_freedom = N - rank_g;
   MatrixXd Jdc0(m + 1, N);
   Jdc0 << Jg0, A.input_gradient(q0).transpose();
-  if (result.degrees_of_freedom == 0 || rank_of(Jdc0) == rank_g) {
+  const bool start_given = !mechanism.input.start_rotation.empty();
+  if (result.degrees_of_freedom == 0) {
     throw InvalidInput(mechanism.where(mechanism.input.line) +
-                       "input: the joints leave the input coordinate no freedom to move (the "
-                       "mechanism has " +
-                       std::to_string(result.degrees_of_freedom) + " degrees of freedom)");
+                       "input: the joints leave the mechanism no freedom to move (0 degrees of "
+                       "freedom)");
+  }
+  if (rank_of(Jdc0) == rank_g && !start_given) {
+    throw InvalidInput(mechanism.where(mechanism.input.line) +
+                       "input: the input coordinate cannot move to first order in the described "
+                       "configuration (a dead point, e.g. a straight slider-crank); give the "
+                       "input a start_rotation of the bodies that says which way the mechanism "
+                       "leaves it");
   }
   {
     const MatrixXd Z = null_space(Jdc0, N);
@@ -455,7 +462,24 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
   };
 
   Termination end = Termination::kConverged;
-  if (z[p] != grid.front()) {
+  if (start_given) {
+    // Newton for the first grid value directly, from the given body rotations.
+    z.setZero();
+    const std::vector<std::string> names = A.body_names();
+    for (const auto& [body, angle] : in.start_rotation) {
+      const auto it = std::find(names.begin(), names.end(), body);
+      z[3 * (it - names.begin()) + 2] = angle;
+    }
+    z[si] = A.input(P.q(z));
+    z[p] = grid.front();
+    if (!P.newton_fixed(z, p)) {
+      result.termination = Termination::kNoConvergence;
+      result.message =
+          "Newton did not converge at the first input value from the given "
+          "start_rotation";
+      return result;
+    }
+  } else if (z[p] != grid.front()) {
     end = follow(z, grid.front(), false);
   }
   if (end == Termination::kConverged) {

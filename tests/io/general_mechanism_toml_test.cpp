@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numbers>
 #include <string>
 
@@ -90,6 +91,51 @@ TEST(GeneralMechanismToml, ValidDescriptionSolvesToItsClosedForm) {
   ASSERT_EQ(r.points.size(), 3u);
   EXPECT_NEAR(r.points[2].input_load, K * 10 * kDeg, 1e-10 * K);
   EXPECT_NEAR(r.points[2].energy, 0.5 * K * std::pow(10 * kDeg, 2), 1e-10 * K);
+}
+
+// An isosceles slider-crank (r2 = r3 = r) described straight, a torsion spring k between ground
+// and crank: Delta x = 2 r (1 - cos theta2), V = k theta2^2/2, so the force pushing the slider in
+// is dV/dDelta x = k theta2/(2 r sin theta2). The straight position is a dead point of the input.
+std::string slider_crank(const std::string& start_rotation) {
+  return "[[body]]\nname = \"ground\"\npoints = { O = [0, 0], S = [0.2, 0] }\n"
+         "[[body]]\nname = \"crank\"\npoints = { O = [0, 0], A = [0.1, 0] }\n"
+         "[[body]]\nname = \"coupler\"\npoints = { A = [0.1, 0], S = [0.2, 0] }\n"
+         "[[body]]\nname = \"slider\"\npoints = { S = [0.2, 0] }\n"
+         "[[joint]]\nname = \"O\"\ntype = \"pin\"\na = \"ground.O\"\nb = \"crank.O\"\n"
+         "[[joint]]\nname = \"A\"\ntype = \"pin\"\na = \"crank.A\"\nb = \"coupler.A\"\n"
+         "[[joint]]\nname = \"S\"\ntype = \"pin\"\na = \"coupler.S\"\nb = \"slider.S\"\n"
+         "[[joint]]\nname = \"guide\"\ntype = \"slider\"\na = \"ground.S\"\nb = \"slider.S\"\n"
+         "axis = 0\n"
+         "[[spring]]\nname = \"k\"\ntype = \"torsion\"\na = \"ground\"\nb = \"crank\"\n"
+         "stiffness = 3.0\n"
+         "[input]\ncoordinate = \"x\"\npoint = \"slider.S\"\nstart = \"199 mm\"\n"
+         "stop = \"150 mm\"\ncount = 50\n" +
+         start_rotation;
+}
+
+TEST(GeneralMechanismToml, DeadPointStartNeedsAStartRotation) {
+  EXPECT_NE(error_of(slider_crank(""))
+                .find("m.toml:40: input: the input coordinate cannot move "
+                      "to first order"),
+            std::string::npos)
+      << error_of(slider_crank(""));
+  const GeneralMechanism m = parse_general_mechanism_toml(
+      slider_crank("start_rotation = { crank = \"5 deg\" }\n"), "m.toml");
+  const GeneralPrbmResult r = solve_general_prbm(m);
+  ASSERT_TRUE(r.converged()) << r.message;
+  ASSERT_EQ(r.points.size(), 50u);
+  for (const GeneralPrbmPoint& p : r.points) {
+    const double dx = 0.2 - p.input;
+    const double theta2 = std::acos(1 - dx / 0.2);
+    EXPECT_NEAR(p.body_phi[0], theta2, 1e-9);  // the crank turned up (start_rotation > 0)
+    EXPECT_NEAR(-p.input_load, 3.0 * theta2 / (0.2 * std::sin(theta2)), 1e-8);
+  }
+  // The other branch (crank down) from a negative start rotation: the same force.
+  const GeneralPrbmResult down = solve_general_prbm(parse_general_mechanism_toml(
+      slider_crank("start_rotation = { crank = \"-5 deg\" }\n"), "m.toml"));
+  ASSERT_TRUE(down.converged());
+  EXPECT_NEAR(down.points[10].body_phi[0], -r.points[10].body_phi[0], 1e-9);
+  EXPECT_NEAR(down.points[10].input_load, r.points[10].input_load, 1e-9);
 }
 
 TEST(GeneralMechanismToml, BadDescriptionsNameFileLineAndItem) {
