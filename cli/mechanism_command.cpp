@@ -936,9 +936,11 @@ void register_mechanism_command(CLI::App& app) {
                        "reports; default half, or the design file's force_of")
           ->default_str("half");
   analyze
-      ->add_option("--model",
-                   args->model,
-                   "General mechanism files ([[body]] form): prbm (default), exact or both")
+      ->add_option(
+          "--model",
+          args->model,
+          "General mechanism files ([[body]] form): prbm (default), exact (each flexure an "
+          "elastica) or both")
       ->transform(CLI::IsMember({"prbm", "exact", "both"}, CLI::ignore_case));
   analyze->add_option("--input",
                       args->input_range,

@@ -32,7 +32,8 @@ constexpr double kHessianStep = 1e-6;
 
 }  // namespace
 
-PrbmAssembly::PrbmAssembly(const GeneralMechanism& mechanism) : mechanism_(mechanism) {
+PrbmAssembly::PrbmAssembly(const GeneralMechanism& mechanism, bool assemble_flexures)
+    : mechanism_(mechanism) {
   mechanism_.validate();
   length_scale_ = mechanism_.size();
   const double L = length_scale_;
@@ -96,6 +97,9 @@ PrbmAssembly::PrbmAssembly(const GeneralMechanism& mechanism) : mechanism_(mecha
   }
 
   for (const Flexure& f : mechanism_.flexures) {
+    if (!assemble_flexures) {
+      break;
+    }
     const Eigen::Vector2d a = scaled(f.a);
     const Eigen::Vector2d b = scaled(f.b);
     const double l = (b - a).norm();
@@ -417,6 +421,32 @@ Vec2 PrbmAssembly::point_position_si(const Eigen::VectorXd& q, const PointRef& r
   const Pt p = make_point(body_index(ref.body), vec(mechanism_.point(ref)) / length_scale_);
   const Eigen::Vector2d x = position(q, p) * length_scale_;
   return {x.x(), x.y()};
+}
+
+}  // namespace flexure::mechanism::general
+
+namespace flexure::mechanism::general {
+
+Eigen::Vector2d PrbmAssembly::point_scaled(const Eigen::VectorXd& q, const PointRef& ref) const {
+  const Vec2 p = mechanism_.point(ref);
+  return position(q, make_point(body_index(ref.body), Eigen::Vector2d(p.x, p.y) / length_scale_));
+}
+
+double PrbmAssembly::body_rotation(const Eigen::VectorXd& q, const std::string& body) const {
+  return phi(q, body_index(body));
+}
+
+void PrbmAssembly::add_wrench(const Eigen::VectorXd& q,
+                              const PointRef& ref,
+                              const Eigen::Vector2d& force,
+                              double moment,
+                              Eigen::VectorXd& generalized) const {
+  const Vec2 p = mechanism_.point(ref);
+  const Pt pt = make_point(body_index(ref.body), Eigen::Vector2d(p.x, p.y) / length_scale_);
+  Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(coordinate_count());
+  add_position_gradient(q, pt, force, row);
+  add_phi_gradient(pt.body, moment, row);
+  generalized += row.transpose();
 }
 
 }  // namespace flexure::mechanism::general

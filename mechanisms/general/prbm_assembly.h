@@ -34,8 +34,10 @@ namespace flexure::mechanism::general {
 
 class PrbmAssembly {
  public:
-  // Validates the description (GeneralMechanism::validate) and assembles its PRBM.
-  explicit PrbmAssembly(const GeneralMechanism& mechanism);
+  // Validates the description (GeneralMechanism::validate) and assembles its PRBM. With
+  // `assemble_flexures` false the flexures add nothing (no PRB pins, springs or links): the exact
+  // model (general_exact.h) adds them as elastica between their bodies instead.
+  explicit PrbmAssembly(const GeneralMechanism& mechanism, bool assemble_flexures = true);
 
   int coordinate_count() const { return 3 * static_cast<int>(bodies_.size()); }
   int constraint_count() const { return constraint_rows_; }
@@ -69,6 +71,16 @@ class PrbmAssembly {
 
   // Position (SI, m) of a named point of a described body at coordinates q.
   Vec2 point_position_si(const Eigen::VectorXd& q, const PointRef& ref) const;
+  // The same in scaled units, the rotation of a body (0 for the ground), and the generalised
+  // force of a force (scaled) at a body point and a moment on its body: F . dp/dq + M dphi/dq,
+  // added to `generalized`.
+  Eigen::Vector2d point_scaled(const Eigen::VectorXd& q, const PointRef& ref) const;
+  double body_rotation(const Eigen::VectorXd& q, const std::string& body) const;
+  void add_wrench(const Eigen::VectorXd& q,
+                  const PointRef& ref,
+                  const Eigen::Vector2d& force,
+                  double moment,
+                  Eigen::VectorXd& generalized) const;
 
   // Scales: lengths (m), energies (J = N m).
   double length_scale() const { return length_scale_; }

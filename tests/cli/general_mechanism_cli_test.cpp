@@ -51,14 +51,34 @@ TEST(GeneralMechanismCli, InputRangeFromTheCommandLine) {
 }
 
 TEST(GeneralMechanismCli, Refusals) {
-  expect_refused("mechanism analyze " + kSwitch + " --model exact", {"not implemented yet"});
   expect_refused("mechanism analyze " + kSwitch + " --out x.h5", {"--out", "general"});
   expect_refused("mechanism analyze " + kSwitch + " --input '0deg:10mm:3'", {"--input STOP"});
   expect_refused("mechanism analyze 1A-lpp --model prbm", {"--model applies to general"});
-  const CommandResult r = run_flexure("mechanism analyze " + kSwitch + " --model both --json");
+  const CommandResult r =
+      run_flexure("mechanism analyze " + kSwitch + " --model exact --input '0Nm:1Nm:3' --json");
   EXPECT_EQ(r.exit_code, 2);
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["exit_code"], 2);
+}
+
+TEST(GeneralMechanismCli, BothModels) {
+  const CommandResult r =
+      run_flexure("mechanism analyze " + kSwitch + " --model both --input '-5deg:33deg:39' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["model"], "both");
+  EXPECT_EQ(j["input"], j["models"]["prbm"]["input"]);
+  const auto& exact = j["models"]["exact"];
+  ASSERT_EQ(exact["input_load"].size(), 39u);
+  ASSERT_EQ(exact["equilibria"].size(), 3u);
+  // The stable positions are where the flexure is unstressed: the same for both models.
+  for (int i : {0, 2}) {
+    EXPECT_NEAR(exact["equilibria"][i]["input"].get<double>(),
+                j["models"]["prbm"]["equilibria"][i]["input"].get<double>(),
+                1e-8);
+  }
+  EXPECT_EQ(exact["equilibria"][1]["stability"], "not_checked");
+  EXPECT_EQ(exact["stability"]["force_control"][0], "not_checked");
 }
 
 }  // namespace
