@@ -252,11 +252,13 @@ GeneralPrbmResult solve_general_exact(const GeneralMechanism& mechanism,
                        "input: the exact model of a general mechanism follows displacement "
                        "control only so far");
   }
+  const int dof = check_general_mechanism(mechanism);
   const PrbmAssembly A(mechanism, /*assemble_flexures=*/false);
   ExactSystem S(mechanism, A);
   const int N = A.coordinate_count();
   const int m = A.constraint_count();
   GeneralPrbmResult result;
+  result.degrees_of_freedom = dof;
   const std::vector<std::string> names = A.body_names();
   result.body_names = names;
 

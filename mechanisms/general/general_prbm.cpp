@@ -235,39 +235,11 @@ void GeneralPrbmOptions::validate() const {
   }
 }
 
-GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
-                                     const GeneralPrbmOptions& options) {
-  options.validate();
-  for (const Flexure& f : mechanism.flexures) {
-    if (f.model == FlexureModel::kExact) {
-      throw InvalidInput(mechanism.where(f.line) + "flexure '" + f.name +
-                         "': model \"exact\" is not assembled for general mechanisms yet; use "
-                         "\"prbm\"");
-    }
-  }
+int check_general_mechanism(const GeneralMechanism& mechanism) {
   const PrbmAssembly A(mechanism);
-  PathSolver P(A, options);
   const int N = A.coordinate_count();
   const int m = A.constraint_count();
-  const int li = P.lambda_index();
-  const int si = P.s_index();
-
-  GeneralPrbmResult result;
-  for (const Flexure& f : mechanism.flexures) {
-    const Vec2 a = mechanism.point(f.a);
-    const Vec2 b = mechanism.point(f.b);
-    const double ratio = f.thickness / std::hypot(b.x - a.x, b.y - a.y);
-    if (ratio > 0.5) {
-      result.warn(WarningKind::kOutsideValidity,
-                  "flexure '" + f.name + "': thickness/length = " + fmt(ratio) +
-                      " > 0.5, outside slender-beam theory; its PRBM spring is the textbook "
-                      "value, not a beam result (docs/mechanisms.md, geometry limits)");
-    }
-  }
   const std::vector<std::string> all_names = A.body_names();
-  result.body_names.assign(all_names.begin(), all_names.begin() + A.described_body_count());
-
-  // Structural checks in the described configuration.
   const VectorXd q0 = VectorXd::Zero(N);
   const MatrixXd Jg0 = A.constraint_jacobian(q0);
   const int rank_g = rank_of(Jg0);
@@ -280,11 +252,11 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
                        "): the PRBM assembler needs independent joints (over-constrained "
                        "mechanisms are not supported)");
   }
-  result.degrees_of_freedom = N - rank_g;
+  const int dof = N - rank_g;
   MatrixXd Jdc0(m + 1, N);
   Jdc0 << Jg0, A.input_gradient(q0).transpose();
   const bool start_given = !mechanism.input.start_rotation.empty();
-  if (result.degrees_of_freedom == 0) {
+  if (dof == 0) {
     throw InvalidInput(mechanism.where(mechanism.input.line) +
                        "input: the joints leave the mechanism no freedom to move (0 degrees of "
                        "freedom)");
@@ -319,6 +291,45 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
       }
     }
   }
+
+  return dof;
+}
+
+GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
+                                     const GeneralPrbmOptions& options) {
+  options.validate();
+  for (const Flexure& f : mechanism.flexures) {
+    if (f.model == FlexureModel::kExact) {
+      throw InvalidInput(mechanism.where(f.line) + "flexure '" + f.name +
+                         "': a model per flexure is not supported yet: the PRBM solves every "
+                         "flexure as a PRBM element (solve_general_exact every one exactly)");
+    }
+  }
+  const PrbmAssembly A(mechanism);
+  PathSolver P(A, options);
+  const int N = A.coordinate_count();
+  const int m = A.constraint_count();
+  const int li = P.lambda_index();
+  const int si = P.s_index();
+
+  GeneralPrbmResult result;
+  for (const Flexure& f : mechanism.flexures) {
+    const Vec2 a = mechanism.point(f.a);
+    const Vec2 b = mechanism.point(f.b);
+    const double ratio = f.thickness / std::hypot(b.x - a.x, b.y - a.y);
+    if (ratio > 0.5) {
+      result.warn(WarningKind::kOutsideValidity,
+                  "flexure '" + f.name + "': thickness/length = " + fmt(ratio) +
+                      " > 0.5, outside slender-beam theory; its PRBM spring is the textbook "
+                      "value, not a beam result (docs/mechanisms.md, geometry limits)");
+    }
+  }
+  const std::vector<std::string> all_names = A.body_names();
+  result.body_names.assign(all_names.begin(), all_names.begin() + A.described_body_count());
+
+  result.degrees_of_freedom = check_general_mechanism(mechanism);
+  const bool start_given = !mechanism.input.start_rotation.empty();
+  const VectorXd q0 = VectorXd::Zero(N);
 
   // The described configuration, projected onto the constraints (s held at its value there).
   VectorXd z = VectorXd::Zero(P.size());

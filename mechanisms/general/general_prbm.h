@@ -68,6 +68,13 @@ struct GeneralPrbmResult : SolveStatus {
   int degrees_of_freedom = 0;  // of the PRB linkage with the input free
 };
 
+// The structural checks both models make before solving, on the PRB linkage in the described
+// configuration; returns its degrees of freedom with the input free. Throws InvalidInput for
+// redundant joints, a linkage that cannot move, an input that cannot move to first order without a
+// start_rotation (a dead point), and a body that moves with the input held without straining any
+// spring (naming it).
+int check_general_mechanism(const GeneralMechanism& mechanism);
+
 // Solves the PRBM of `mechanism` over its input range. Throws InvalidInput for a bad description
 // (GeneralMechanism::validate), for redundant constraints, for a body or direction that moves with
 // no stiffness while the input is held (naming the body), and for a flexure whose model is

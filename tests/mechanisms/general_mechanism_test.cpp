@@ -658,11 +658,22 @@ TEST(GeneralMechanismDescription, BadDescriptionsAreNamedErrors) {
     m.body("flap", {{"P", {0.0, 0.0}}}).pin("flap-pin", "ground.O2", "flap.P");
     EXPECT_NE(message(m).find("body 'flap' can move with the input held"), std::string::npos)
         << message(m);
+    // The exact model makes the same structural checks.
+    EXPECT_THROW(
+        {
+          try {
+            solve_general_exact(m);
+          } catch (const InvalidInput& e) {
+            EXPECT_NE(std::string(e.what()).find("body 'flap' can move"), std::string::npos);
+            throw;
+          }
+        },
+        InvalidInput);
   }
   {
     GeneralMechanism m = bistable_switch(0, 10, 3);
     m.flexures[0].model = FlexureModel::kExact;
-    EXPECT_NE(message(m).find("not assembled for general mechanisms yet"), std::string::npos);
+    EXPECT_NE(message(m).find("a model per flexure is not supported yet"), std::string::npos);
   }
 }
 
