@@ -16,6 +16,7 @@
 #include "cli/beam_methods.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/general_mechanism_command.h"
 #include "cli/slow_progress.h"
 #include "flexure/benchmarks/studies/mechanism_method.h"
 #include "flexure/io/hdf5_file.h"
@@ -896,6 +897,8 @@ void register_mechanism_command(CLI::App& app) {
     std::string spring_rule;
     std::string force_of = "half";
     CLI::Option* force_of_option = nullptr;
+    std::string model;        // general mechanism files only
+    std::string input_range;  // general mechanism files only
   };
   auto args = std::make_shared<AnalyzeArgs>();
   CLI::App* analyze = mech.add_subcommand(
@@ -932,8 +935,42 @@ void register_mechanism_command(CLI::App& app) {
                        "the whole mechanism (two halves on one slider, = 2 x half), as dynamics "
                        "reports; default half, or the design file's force_of")
           ->default_str("half");
-  analyze->callback([args] {
+  analyze
+      ->add_option(
+          "--model",
+          args->model,
+          "General mechanism files ([[body]] form): prbm (default), exact (each flexure an "
+          "elastica) or both")
+      ->transform(CLI::IsMember({"prbm", "exact", "both"}, CLI::ignore_case));
+  analyze->add_option("--input",
+                      args->input_range,
+                      "General mechanism files: the input range START:STOP:COUNT with units "
+                      "(\"-5deg:33deg:77\"), replacing the file's [input] range");
+  analyze->callback([args, analyze] {
     require_in_range(args->points, "--points", 2, 100000);
+    if (is_general_mechanism_file(args->what)) {
+      GeneralAnalyzeRequest request;
+      request.file = args->what;
+      request.model = args->model;
+      request.input_range = args->input_range;
+      request.json = args->json;
+      request.points = analyze->count("--points") > 0 ? args->points : 0;
+      for (const char* flag :
+           {"--out", "--prbm-only", "--method", "--tol", "--spring-rule", "--force-of"}) {
+        if (analyze->count(flag) > 0) {
+          request.foreign_flag = flag;
+          break;
+        }
+      }
+      analyze_general_mechanism(request);
+      return;
+    }
+    if (!args->model.empty() || !args->input_range.empty()) {
+      throw InvalidInput(std::string(args->model.empty() ? "--input" : "--model") +
+                         " applies to general mechanism files ([[body]] form, docs/mechanisms.md "
+                         "\"General mechanisms\"); the constant-force designs take --method and "
+                         "--points");
+    }
     if (args->no_exact && args->method == "exact") {
       throw InvalidInput("--prbm-only (= --method prbm) contradicts --method exact; give one");
     }

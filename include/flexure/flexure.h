@@ -56,6 +56,9 @@
 #include "flexure/mechanisms/dynamics/cfsm_designs.h"
 #include "flexure/mechanisms/dynamics/forward_dynamics.h"
 #include "flexure/mechanisms/dynamics/inverse_dynamics.h"
+#include "flexure/mechanisms/general/general_exact.h"
+#include "flexure/mechanisms/general/general_mechanism.h"
+#include "flexure/mechanisms/general/general_prbm.h"
 #include "flexure/mechanisms/howell_designs.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
@@ -65,6 +68,7 @@
 
 // Reading chains and mechanisms from TOML files.
 #include "flexure/io/chain_toml.h"
+#include "flexure/io/general_mechanism_toml.h"
 #include "flexure/io/mechanism_toml.h"
 
 // Studies: beam problems by any method, method selection for `--method auto`, the reference

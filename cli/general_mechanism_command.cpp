@@ -1,0 +1,209 @@
+#include "cli/general_mechanism_command.h"
+
+#include <fmt/format.h>
+
+#include <iostream>
+
+#include "cli/cli_common.h"
+#include "flexure/io/general_mechanism_toml.h"
+#include "flexure/io/quantity.h"
+#include "flexure/io/toml_support.h"
+#include "flexure/mechanisms/general/general_exact.h"
+#include "flexure/mechanisms/general/general_prbm.h"
+#include "flexure/solver/common/errors.h"
+
+namespace flexure::cli {
+namespace {
+
+using namespace flexure::mechanism::general;
+
+// --input START:STOP:COUNT with the units of the input (angle or length; moment or force under
+// force control).
+void apply_input_range(const std::string& text, Input& input) {
+  const auto first = text.find(':');
+  const auto second = first == std::string::npos ? first : text.find(':', first + 1);
+  if (second == std::string::npos || text.find(':', second + 1) != std::string::npos) {
+    throw InvalidInput("--input must be START:STOP:COUNT (e.g. \"-5deg:33deg:77\"), got '" + text +
+                       "'");
+  }
+  const bool angle = input.coordinate == InputCoordinate::kAngle;
+  const io::Dimension dimension = input.control == InputControl::kDisplacement
+                                      ? (angle ? io::Dimension::kAngle : io::Dimension::kLength)
+                                      : (angle ? io::Dimension::kMoment : io::Dimension::kForce);
+  input.start = io::parse_quantity(text.substr(0, first), dimension, "--input START").si;
+  input.stop =
+      io::parse_quantity(text.substr(first + 1, second - first - 1), dimension, "--input STOP").si;
+  double count = 0.0;
+  if (!parse_double(text.substr(second + 1), count) || count != std::floor(count) || count < 2 ||
+      count > 100000) {
+    throw InvalidInput("--input COUNT must be a whole number between 2 and 100000, got '" +
+                       text.substr(second + 1) + "'");
+  }
+  input.count = static_cast<int>(count);
+}
+
+std::string_view input_unit(const Input& in) {
+  return in.coordinate == InputCoordinate::kAngle ? "rad" : "m";
+}
+std::string_view load_unit(const Input& in) {
+  return in.coordinate == InputCoordinate::kAngle ? "N m" : "N";
+}
+
+Json stability_json(const Stability& s) {
+  return Json{{"stability", stability_name(s.kind)}, {"index", s.index}, {"margin", s.margin}};
+}
+
+}  // namespace
+
+bool is_general_mechanism_file(const std::string& what) {
+  const bool is_file = what.size() > 5 && what.substr(what.size() - 5) == ".toml";
+  if (!is_file) {
+    return false;
+  }
+  return is_general_mechanism_toml(io::read_toml_file(what, "mechanism file"), what);
+}
+
+namespace {
+
+// One model's arrays, equilibria and limit points.
+Json model_json(const GeneralPrbmResult& r) {
+  Json input = Json::array(), load = Json::array(), energy = Json::array();
+  Json dc = Json::array(), fc = Json::array(), dc_margin = Json::array(), fc_margin = Json::array();
+  for (const GeneralPrbmPoint& p : r.points) {
+    input.push_back(p.input);
+    load.push_back(p.input_load);
+    energy.push_back(p.energy);
+    dc.push_back(stability_name(p.displacement_control.kind));
+    fc.push_back(stability_name(p.force_control.kind));
+    dc_margin.push_back(p.displacement_control.margin);
+    fc_margin.push_back(p.force_control.margin);
+  }
+  Json equilibria = Json::array();
+  for (const GeneralEquilibrium& e : r.equilibria) {
+    Json j{{"input", e.input}, {"energy", e.energy}};
+    j.update(stability_json(e.stability));
+    equilibria.push_back(j);
+  }
+  Json limits = Json::array();
+  for (std::size_t i = 0; i < r.limit_inputs.size(); ++i) {
+    limits.push_back(Json{{"input", r.limit_inputs[i]}, {"input_load", r.limit_loads[i]}});
+  }
+  return Json{{"termination", termination_name(r.termination)},
+              {"input", input},
+              {"input_load", load},
+              {"energy", energy},
+              {"stability",
+               Json{{"displacement_control", dc},
+                    {"force_control", fc},
+                    {"displacement_control_margin", dc_margin},
+                    {"force_control_margin", fc_margin}}},
+              {"equilibria", equilibria},
+              {"limit_points", limits},
+              {"steps", r.iterations}};
+}
+
+void print_model(const std::string& title, const GeneralPrbmResult& r, const Input& in) {
+  const bool angle = in.coordinate == InputCoordinate::kAngle;
+  auto show = [&](double v) {
+    return angle ? fmt::format("{:.6g} deg", v * 180.0 / 3.14159265358979323846)
+                 : fmt::format("{:.6g} mm", v * 1e3);
+  };
+  double lo = 0.0, hi = 0.0;
+  for (const GeneralPrbmPoint& p : r.points) {
+    lo = std::min(lo, p.input_load);
+    hi = std::max(hi, p.input_load);
+  }
+  std::cout << fmt::format("  {}: {} points; input load from {:.6g} to {:.6g} {}\n",
+                           title,
+                           r.points.size(),
+                           lo,
+                           hi,
+                           load_unit(in));
+  std::cout << fmt::format("    equilibria of the unloaded mechanism: {}\n", r.equilibria.size());
+  for (const GeneralEquilibrium& e : r.equilibria) {
+    std::cout << fmt::format(
+        "      {}: {} (energy {:.6g} J{})\n",
+        show(e.input),
+        stability_name(e.stability.kind),
+        e.energy,
+        e.stability.judged() ? fmt::format(", margin {:.4g}", e.stability.margin) : std::string());
+  }
+  for (std::size_t i = 0; i < r.limit_inputs.size(); ++i) {
+    std::cout << fmt::format("    limit point at {}: input load {:.6g} {}\n",
+                             show(r.limit_inputs[i]),
+                             r.limit_loads[i],
+                             load_unit(in));
+  }
+}
+
+}  // namespace
+
+void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
+  if (!request.foreign_flag.empty()) {
+    throw InvalidInput(request.foreign_flag +
+                       " belongs to the constant-force designs; a general mechanism file takes "
+                       "--model, --input, --points and --json");
+  }
+  const std::string model = request.model.empty() ? "prbm" : request.model;
+  GeneralMechanism m = load_general_mechanism_toml(request.file);
+  if (!request.input_range.empty()) {
+    apply_input_range(request.input_range, m.input);
+  }
+  if (request.points > 0) {
+    m.input.count = request.points;
+  }
+  m.validate();
+  const Input& in = m.input;
+  std::vector<std::pair<std::string, GeneralPrbmResult>> results;
+  if (model == "prbm" || model == "both") {
+    results.emplace_back("prbm", solve_general_prbm(m));
+  }
+  if (model == "exact" || model == "both") {
+    results.emplace_back("exact", solve_general_exact(m));
+  }
+  for (const auto& [name, r] : results) {
+    for (const Warning& w : r.warnings) {
+      warn(w.text);
+    }
+    if (!r.converged()) {
+      throw NoConvergence(fmt::format("{}: {}: {}", m.name, name, r.message));
+    }
+  }
+  const GeneralPrbmResult& first = results.front().second;
+  if (request.json) {
+    Json models = Json::object();
+    for (const auto& [name, r] : results) {
+      models[name] = model_json(r);
+    }
+    // The top-level arrays are the first model's (the PRBM's for "both").
+    const Json& top = models[results.front().first];
+    Json out{{"name", m.name},
+             {"form", "general"},
+             {"model", model},
+             {"input_body", in.body},
+             {"input_coordinate", input_coordinate_name(in.coordinate)},
+             {"control", input_control_name(in.control)},
+             {"input_unit", input_unit(in)},
+             {"input_load_unit", load_unit(in)},
+             {"degrees_of_freedom", first.degrees_of_freedom},
+             {"input", top["input"]},
+             {"input_load", top["input_load"]},
+             {"energy", top["energy"]},
+             {"stability", top["stability"]},
+             {"equilibria", top["equilibria"]},
+             {"limit_points", top["limit_points"]},
+             {"models", models}};
+    print_json(out);
+    return;
+  }
+  std::cout << fmt::format("{} (general mechanism): input {} of {} ({} control)\n",
+                           m.name,
+                           input_coordinate_name(in.coordinate),
+                           in.body,
+                           input_control_name(in.control));
+  for (const auto& [name, r] : results) {
+    print_model(name == "prbm" ? "PRBM" : "exact", r, in);
+  }
+}
+
+}  // namespace flexure::cli

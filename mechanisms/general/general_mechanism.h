@@ -1,0 +1,219 @@
+#pragma once
+// The description of any planar compliant mechanism (issue 31; docs/mechanisms.md "General
+// mechanisms"): rigid bodies with named points, joints between them, flexures between points of
+// two bodies, linear and torsion springs, dead loads, and one input.
+//
+// Conventions. SI units (m, N, N m, Pa, rad). Every point is given in global coordinates in the
+// *described configuration*, the as-made state in which every flexure is straight and unstressed
+// and every spring is at its rest length or angle. A body's pose is its displacement (x, y) and
+// rotation phi from there; the ground (body "ground") never moves. The input is an absolute
+// coordinate: the x or y of a body point, or the angle of the line from one body point to another
+// (measured from +x), so that a crank angle reads as in Howell's figures.
+//
+// The same description comes from the C++ builder below and from TOML
+// (io/general_mechanism_toml.h); `validate()` checks it and throws InvalidInput naming the item,
+// and, for a TOML description, the file and line ("switch.toml:31: flexure 'f4': ...").
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace flexure::mechanism::general {
+
+struct Vec2 {
+  double x = 0.0;
+  double y = 0.0;
+};
+
+// A named point of a body, in global coordinates of the described configuration (m).
+struct NamedPoint {
+  std::string name;
+  Vec2 position;
+};
+
+struct Body {
+  std::string name;
+  std::vector<NamedPoint> points;
+  int line = 0;  // line of the TOML item, 0 when built in C++
+};
+
+// "body.point": a point of a body.
+struct PointRef {
+  std::string body;
+  std::string point;
+  std::string text() const { return body + "." + point; }
+};
+
+enum class JointKind {
+  kPin,     // the two points coincide; relative rotation free
+  kSlider,  // the point of b stays on the line of a through its point at `axis_angle`, and the two
+            // bodies keep their relative angle (a prismatic joint)
+  kWeld,    // the two bodies move as one
+};
+
+struct Joint {
+  std::string name;
+  JointKind kind = JointKind::kPin;
+  PointRef a;
+  PointRef b;
+  double axis_angle = 0.0;  // slider: direction of the line on body a, rad from +x (described)
+  int line = 0;
+};
+
+// The PRBM element that models a flexure (Howell ch. 5; elements/).
+enum class PrbmKind {
+  kSmallLengthPivot,  // both ends clamped; pivot at mid-length, K = EI/l (eq. 5.14)
+  kFixedPinned,       // clamped to a, pinned to b at its far end; pivot (1 - gamma) l from the
+                      // clamp, K = gamma K_Theta EI/l (eq. 5.72), Howell's averages gamma = 0.85,
+                      // K_Theta = 2.65 (§5.2)
+  kFixedGuided,       // both ends clamped; two pivots (1 - gamma) l/2 from the ends, each
+                      // K = 2 gamma K_Theta EI/l (eq. 5.105), Table 5.1 n = 0
+};
+
+// The flexure's model (only the PRBM is assembled so far; "exact" is refused by the solver).
+enum class FlexureModel { kPrbm, kExact };
+
+// A straight flexure from point a (on one body) to point b (on another) in the described
+// configuration; its length is their distance (a given length must agree to 1e-6).
+struct Flexure {
+  std::string name;
+  PointRef a;
+  PointRef b;
+  double width = 0.0;           // b, out of the plane, m
+  double thickness = 0.0;       // h, in the plane, m
+  double youngs_modulus = 0.0;  // E, Pa
+  double length = 0.0;          // l, m; 0: the distance from a to b
+  PrbmKind prbm = PrbmKind::kSmallLengthPivot;
+  FlexureModel model = FlexureModel::kPrbm;
+  int line = 0;
+
+  double flexural_rigidity() const {
+    return youngs_modulus * width * thickness * thickness * thickness / 12.0;
+  }
+};
+
+struct LinearSpring {
+  std::string name;
+  PointRef a;
+  PointRef b;
+  double stiffness = 0.0;     // N/m
+  double rest_length = -1.0;  // m; < 0: the described distance
+  int line = 0;
+};
+
+struct TorsionSpring {
+  std::string name;
+  std::string body_a;
+  std::string body_b;
+  double stiffness = 0.0;   // N m/rad, on phi_b - phi_a
+  double rest_angle = 0.0;  // rad: phi_b - phi_a at which the spring is relaxed (0: described)
+  int line = 0;
+};
+
+// A dead (constant, non-follower) force and moment on a body point.
+struct DeadLoad {
+  std::string name;
+  PointRef at;
+  double fx = 0.0;      // N
+  double fy = 0.0;      // N
+  double moment = 0.0;  // N m, counter-clockwise
+  int line = 0;
+};
+
+enum class InputCoordinate { kX, kY, kAngle };
+enum class InputControl {
+  kDisplacement,  // the coordinate is prescribed over the range
+  kForce,         // a dead load conjugate to the coordinate (a force along x or y on the point, a
+                  // moment on the body) is prescribed over the range
+};
+
+struct Input {
+  std::string body;
+  InputCoordinate coordinate = InputCoordinate::kAngle;
+  std::string point;     // x, y: the point; angle: the line's first point
+  std::string point_to;  // angle: the line's second point
+  InputControl control = InputControl::kDisplacement;
+  double start = 0.0;  // coordinate (m or rad) or load (N or N m), SI
+  double stop = 0.0;
+  int count = 51;
+  int line = 0;
+  // Rotations (rad) of named bodies from which Newton finds the first point directly, for a
+  // described configuration where the input cannot move to first order (a dead point: a straight
+  // slider-crank moves its slider only at second order in the crank angle, and which way the crank
+  // goes is a choice). Empty: the path is followed from the described configuration.
+  std::vector<std::pair<std::string, double>> start_rotation;
+};
+
+std::string_view prbm_kind_name(PrbmKind kind);    // "small-length", "fixed-pinned", "fixed-guided"
+std::string_view joint_kind_name(JointKind kind);  // "pin", "slider", "weld"
+std::string_view input_coordinate_name(InputCoordinate c);  // "x", "y", "angle"
+std::string_view input_control_name(InputControl c);        // "displacement", "force"
+
+struct GeneralMechanism {
+  std::string name;
+  std::string source;        // file name for messages (empty when built in C++)
+  std::vector<Body> bodies;  // "ground" is implicit: a body of that name adds points to it
+  std::vector<Joint> joints;
+  std::vector<Flexure> flexures;
+  std::vector<LinearSpring> linear_springs;
+  std::vector<TorsionSpring> torsion_springs;
+  std::vector<DeadLoad> loads;
+  Input input;
+  bool has_input = false;
+
+  // Builder: each returns *this so that calls chain. Angles in rad, everything SI.
+  GeneralMechanism& body(const std::string& name, std::vector<NamedPoint> points);
+  GeneralMechanism& pin(const std::string& name, const std::string& a, const std::string& b);
+  GeneralMechanism& slider(const std::string& name,
+                           const std::string& a,
+                           const std::string& b,
+                           double axis_angle);
+  GeneralMechanism& weld(const std::string& name, const std::string& a, const std::string& b);
+  GeneralMechanism& flexure(const std::string& name,
+                            const std::string& a,
+                            const std::string& b,
+                            double width,
+                            double thickness,
+                            double youngs_modulus,
+                            PrbmKind prbm);
+  GeneralMechanism& linear_spring(const std::string& name,
+                                  const std::string& a,
+                                  const std::string& b,
+                                  double stiffness);
+  GeneralMechanism& torsion_spring(const std::string& name,
+                                   const std::string& body_a,
+                                   const std::string& body_b,
+                                   double stiffness);
+  GeneralMechanism& load(
+      const std::string& name, const std::string& at, double fx, double fy, double moment = 0.0);
+  // The input: "body.point" for x or y; for an angle, the line "body.P" -> "body.Q" as two refs.
+  GeneralMechanism& input_coordinate(InputCoordinate coordinate,
+                                     const std::string& point,
+                                     const std::string& point_to,
+                                     InputControl control,
+                                     double start,
+                                     double stop,
+                                     int count);
+
+  // Throws InvalidInput naming the item (and SOURCE:LINE for a TOML item): unknown bodies or
+  // points, duplicate names, non-finite coordinates, a joint or flexure or spring between points
+  // of one body, a pin whose points do not coincide or a slider point off its line in the
+  // described configuration (a loop that cannot close there; tolerance 1e-6 of the mechanism's
+  // size), a flexure without a section or modulus or whose length disagrees with its ends, a body
+  // joined to the ground by no chain of joints and flexures (unconstrained), a missing input or a
+  // range with count < 2. Stiffness-related checks (a body free to move with no stiffness) need
+  // the assembled model: general_prbm.h.
+  void validate() const;
+
+  // Position of a point in the described configuration; throws InvalidInput for unknown names.
+  Vec2 point(const PointRef& ref) const;
+  const Body* find_body(const std::string& name) const;
+  // The largest distance between two points of the description (m): the mechanism's size.
+  double size() const;
+  // "FILE:LINE: " when the item has a line in a file, else "".
+  std::string where(int line) const;
+};
+
+// "body.point" split at the first dot; throws InvalidInput naming `what` when malformed.
+PointRef parse_point_ref(const std::string& text, const std::string& what);
+
+}  // namespace flexure::mechanism::general

@@ -1,0 +1,553 @@
+#include "flexure/mechanisms/general/general_prbm.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "flexure/mechanisms/general/prbm_assembly.h"
+#include "flexure/solver/common/errors.h"
+
+namespace flexure::mechanism::general {
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+// Singular values below this fraction of the largest (or of 1) count as zero when the rank of the
+// constraint Jacobian and the admissible directions are taken.
+constexpr double kRankTolerance = 1e-9;
+
+std::string fmt(double v) {
+  std::ostringstream out;
+  out.precision(6);
+  out << v;
+  return out.str();
+}
+
+// Orthonormal basis of the null space of A (rows: constraints), from its SVD.
+MatrixXd null_space(const MatrixXd& A, int cols) {
+  if (A.rows() == 0) {
+    return MatrixXd::Identity(cols, cols);
+  }
+  Eigen::JacobiSVD<MatrixXd> svd(A, Eigen::ComputeFullV);
+  const VectorXd& sv = svd.singularValues();
+  const double cut = kRankTolerance * std::max(1.0, sv.size() > 0 ? sv[0] : 0.0);
+  int rank = 0;
+  for (int i = 0; i < sv.size(); ++i) {
+    rank += sv[i] > cut ? 1 : 0;
+  }
+  return svd.matrixV().rightCols(cols - rank);
+}
+
+int rank_of(const MatrixXd& A) {
+  if (A.rows() == 0) {
+    return 0;
+  }
+  Eigen::JacobiSVD<MatrixXd> svd(A);
+  const VectorXd& sv = svd.singularValues();
+  const double cut = kRankTolerance * std::max(1.0, sv[0]);
+  int rank = 0;
+  for (int i = 0; i < sv.size(); ++i) {
+    rank += sv[i] > cut ? 1 : 0;
+  }
+  return rank;
+}
+
+// The verdict of the reduced second variation Z^T H Z against the springs' unloaded stiffness
+// Z^T B Z (generalized eigenvalues: the margin is 1 for the unloaded springs, 0 at a critical
+// state; docs/stability.md "Mechanisms").
+Stability verdict(const MatrixXd& H,
+                  const MatrixXd& B,
+                  const MatrixXd& Z,
+                  double tolerance,
+                  const std::string& control) {
+  if (Z.cols() == 0) {
+    Stability s = classify_stability(0, 1.0, tolerance, "the mechanism");
+    s.message = "stable by convention under " + control +
+                " control: the PRB linkage has no free direction (margin 1, the unloaded value)";
+    return s;
+  }
+  const MatrixXd Hr = Z.transpose() * H * Z;
+  const MatrixXd Br = Z.transpose() * B * Z;
+  // The stiffest spring, in the same coordinates: what "no stiffness" is measured against.
+  const double reference = std::max(
+      Eigen::SelfAdjointEigenSolver<MatrixXd>(B, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff(),
+      0.0);
+  Eigen::SelfAdjointEigenSolver<MatrixXd> b_eig(Br, Eigen::EigenvaluesOnly);
+  const double b_min = b_eig.eigenvalues().minCoeff();
+  VectorXd eig;
+  std::string note;
+  if (reference > 0.0 && b_min > kRankTolerance * reference) {
+    Eigen::GeneralizedSelfAdjointEigenSolver<MatrixXd> g(Hr, Br, Eigen::EigenvaluesOnly);
+    eig = g.eigenvalues();
+  } else {
+    // A free direction that strains no spring to first order (a toggle position, a linkage
+    // without springs): the margin is measured against the stiffest spring instead.
+    Eigen::SelfAdjointEigenSolver<MatrixXd> h(Hr, Eigen::EigenvaluesOnly);
+    eig = h.eigenvalues() / (reference > 0.0 ? reference : 1.0);
+    note =
+        " (a free direction strains no spring to first order: margin relative to the stiffest "
+        "spring)";
+  }
+  int index = 0;
+  for (int i = 0; i < eig.size(); ++i) {
+    index += eig[i] < -tolerance ? 1 : 0;
+  }
+  Stability s = classify_stability(index, eig.minCoeff(), tolerance, "the mechanism");
+  s.message += " under " + control + " control" + note;
+  return s;
+}
+
+class PathSolver {
+ public:
+  PathSolver(const PrbmAssembly& assembly, const GeneralPrbmOptions& options)
+      : a_(assembly),
+        o_(options),
+        N_(assembly.coordinate_count()),
+        m_(assembly.constraint_count()),
+        n_(N_ + m_ + 2) {}
+
+  int lambda_index() const { return N_ + m_; }
+  int s_index() const { return N_ + m_ + 1; }
+  int size() const { return n_; }
+
+  VectorXd q(const VectorXd& z) const { return z.head(N_); }
+  VectorXd mu(const VectorXd& z) const { return z.segment(N_, m_); }
+
+  VectorXd F(const VectorXd& z) const {
+    VectorXd f(n_ - 1);
+    const VectorXd qq = q(z);
+    f.head(N_) = a_.lagrangian_gradient(qq, mu(z), z[lambda_index()]);
+    f.segment(N_, m_) = a_.constraints(qq);
+    f[N_ + m_] = a_.input(qq) - z[s_index()];
+    return f;
+  }
+
+  MatrixXd JF(const VectorXd& z) const {
+    const VectorXd qq = q(z);
+    MatrixXd J = MatrixXd::Zero(n_ - 1, n_);
+    const MatrixXd Jg = a_.constraint_jacobian(qq);
+    const VectorXd gc = a_.input_gradient(qq);
+    J.topLeftCorner(N_, N_) = a_.lagrangian_hessian(qq, mu(z), z[lambda_index()]);
+    J.block(0, N_, N_, m_) = -Jg.transpose();
+    J.col(lambda_index()).head(N_) = -gc;
+    J.block(N_, 0, m_, N_) = Jg;
+    J.block(N_ + m_, 0, 1, N_) = gc.transpose();
+    J(N_ + m_, s_index()) = -1.0;
+    return J;
+  }
+
+  // Newton on F = 0 with z[p] held; returns whether it converged (z updated in place).
+  bool newton_fixed(VectorXd& z, int p, int* iterations = nullptr) const {
+    for (int it = 0; it <= o_.max_newton_iterations; ++it) {
+      const VectorXd f = F(z);
+      const double r = f.lpNorm<Eigen::Infinity>();
+      if (!std::isfinite(r)) {
+        return false;
+      }
+      if (r < o_.tolerance) {
+        if (iterations != nullptr) {
+          *iterations = it;
+        }
+        residual_ = std::max(residual_, r);
+        return true;
+      }
+      MatrixXd J = JF(z);
+      MatrixXd Js(n_ - 1, n_ - 1);
+      Js << J.leftCols(p), J.rightCols(n_ - 1 - p);
+      const VectorXd dx = Js.fullPivLu().solve(-f);
+      if (!dx.allFinite()) {
+        return false;
+      }
+      for (int i = 0, k = 0; i < n_; ++i) {
+        if (i != p) {
+          z[i] += dx[k++];
+        }
+      }
+    }
+    return false;
+  }
+
+  // Unit tangent of the curve at z, oriented along `orient`.
+  VectorXd tangent(const VectorXd& z, const VectorXd& orient) const {
+    MatrixXd M(n_, n_);
+    M.topRows(n_ - 1) = JF(z);
+    M.row(n_ - 1) = orient.transpose();
+    VectorXd rhs = VectorXd::Zero(n_);
+    rhs[n_ - 1] = 1.0;
+    VectorXd t = M.fullPivLu().solve(rhs);
+    t.normalize();
+    if (t.dot(orient) < 0.0) {
+      t = -t;
+    }
+    return t;
+  }
+
+  // Pseudo-arclength corrector from the predictor zp along t.
+  bool corrector(VectorXd& z, const VectorXd& z_base, const VectorXd& t, double h, int* its) const {
+    for (int it = 0; it <= o_.max_newton_iterations; ++it) {
+      VectorXd f(n_);
+      f.head(n_ - 1) = F(z);
+      f[n_ - 1] = t.dot(z - z_base) - h;
+      const double r = f.lpNorm<Eigen::Infinity>();
+      if (!std::isfinite(r)) {
+        return false;
+      }
+      if (r < o_.tolerance) {
+        *its = it;
+        return true;
+      }
+      MatrixXd M(n_, n_);
+      M.topRows(n_ - 1) = JF(z);
+      M.row(n_ - 1) = t.transpose();
+      const VectorXd dx = M.fullPivLu().solve(-f);
+      if (!dx.allFinite()) {
+        return false;
+      }
+      z += dx;
+    }
+    return false;
+  }
+
+  double residual() const { return residual_; }
+
+ private:
+  const PrbmAssembly& a_;
+  const GeneralPrbmOptions& o_;
+  int N_, m_, n_;
+  mutable double residual_ = 0.0;
+};
+
+}  // namespace
+
+void GeneralPrbmOptions::validate() const {
+  if (!(tolerance > 0.0) || !(tolerance < 1e-3)) {
+    throw InvalidInput("GeneralPrbmOptions.tolerance must be in (0, 1e-3)");
+  }
+  if (max_newton_iterations < 1 || max_steps < 1) {
+    throw InvalidInput("GeneralPrbmOptions.max_newton_iterations and max_steps must be >= 1");
+  }
+  if (!(max_step > 0.0) || !(max_step <= 1.0)) {
+    throw InvalidInput("GeneralPrbmOptions.max_step must be in (0, 1]");
+  }
+  if (!(critical_tolerance >= 0.0) || !std::isfinite(critical_tolerance)) {
+    throw InvalidInput("GeneralPrbmOptions.critical_tolerance must be finite and >= 0");
+  }
+}
+
+int check_general_mechanism(const GeneralMechanism& mechanism) {
+  const PrbmAssembly A(mechanism);
+  const int N = A.coordinate_count();
+  const int m = A.constraint_count();
+  const std::vector<std::string> all_names = A.body_names();
+  const VectorXd q0 = VectorXd::Zero(N);
+  const MatrixXd Jg0 = A.constraint_jacobian(q0);
+  const int rank_g = rank_of(Jg0);
+  if (rank_g < m) {
+    throw InvalidInput(mechanism.where(0) +
+                       "the joints are redundant in the described "
+                       "configuration (" +
+                       std::to_string(m) + " constraint equations of rank " +
+                       std::to_string(rank_g) +
+                       "): the PRBM assembler needs independent joints (over-constrained "
+                       "mechanisms are not supported)");
+  }
+  const int dof = N - rank_g;
+  MatrixXd Jdc0(m + 1, N);
+  Jdc0 << Jg0, A.input_gradient(q0).transpose();
+  const bool start_given = !mechanism.input.start_rotation.empty();
+  if (dof == 0) {
+    throw InvalidInput(mechanism.where(mechanism.input.line) +
+                       "input: the joints leave the mechanism no freedom to move (0 degrees of "
+                       "freedom)");
+  }
+  if (rank_of(Jdc0) == rank_g && !start_given) {
+    throw InvalidInput(mechanism.where(mechanism.input.line) +
+                       "input: the input coordinate cannot move to first order in the described "
+                       "configuration (a dead point, e.g. a straight slider-crank); give the "
+                       "input a start_rotation of the bodies that says which way the mechanism "
+                       "leaves it");
+  }
+  {
+    const MatrixXd Z = null_space(Jdc0, N);
+    if (Z.cols() > 0) {
+      const MatrixXd Br = Z.transpose() * A.unloaded_stiffness(q0) * Z;
+      Eigen::SelfAdjointEigenSolver<MatrixXd> e(Br);
+      const double scale = std::max(1.0, e.eigenvalues().maxCoeff());
+      if (e.eigenvalues().minCoeff() < 1e-10 * scale) {
+        const VectorXd v = Z * e.eigenvectors().col(0);
+        int worst = 0;
+        double largest = -1.0;
+        for (int b = 0; b < N / 3; ++b) {
+          const double motion = v.segment(3 * b, 3).norm();
+          if (motion > largest) {
+            largest = motion;
+            worst = b;
+          }
+        }
+        throw InvalidInput(mechanism.where(0) + "body '" + all_names[worst] +
+                           "' can move with the input held without straining any spring: it "
+                           "is unconstrained (add a joint, a flexure or a spring)");
+      }
+    }
+  }
+
+  return dof;
+}
+
+GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
+                                     const GeneralPrbmOptions& options) {
+  options.validate();
+  for (const Flexure& f : mechanism.flexures) {
+    if (f.model == FlexureModel::kExact) {
+      throw InvalidInput(mechanism.where(f.line) + "flexure '" + f.name +
+                         "': a model per flexure is not supported yet: the PRBM solves every "
+                         "flexure as a PRBM element (solve_general_exact every one exactly)");
+    }
+  }
+  const PrbmAssembly A(mechanism);
+  PathSolver P(A, options);
+  const int N = A.coordinate_count();
+  const int m = A.constraint_count();
+  const int li = P.lambda_index();
+  const int si = P.s_index();
+
+  GeneralPrbmResult result;
+  for (const Flexure& f : mechanism.flexures) {
+    const Vec2 a = mechanism.point(f.a);
+    const Vec2 b = mechanism.point(f.b);
+    const double ratio = f.thickness / std::hypot(b.x - a.x, b.y - a.y);
+    if (ratio > 0.5) {
+      result.warn(WarningKind::kOutsideValidity,
+                  "flexure '" + f.name + "': thickness/length = " + fmt(ratio) +
+                      " > 0.5, outside slender-beam theory; its PRBM spring is the textbook "
+                      "value, not a beam result (docs/mechanisms.md, geometry limits)");
+    }
+  }
+  const std::vector<std::string> all_names = A.body_names();
+  result.body_names.assign(all_names.begin(), all_names.begin() + A.described_body_count());
+
+  result.degrees_of_freedom = check_general_mechanism(mechanism);
+  const bool start_given = !mechanism.input.start_rotation.empty();
+  const VectorXd q0 = VectorXd::Zero(N);
+
+  // The described configuration, projected onto the constraints (s held at its value there).
+  VectorXd z = VectorXd::Zero(P.size());
+  z[si] = A.input(q0);
+  if (!P.newton_fixed(z, si)) {
+    result.termination = Termination::kNoConvergence;
+    result.message = "Newton did not converge at the described configuration";
+    return result;
+  }
+
+  const bool displacement = mechanism.input.control == InputControl::kDisplacement;
+  const int p = displacement ? si : li;
+  const Input& in = mechanism.input;
+  auto scaled_param = [&](double v) { return displacement ? A.input_scaled(v) : A.load_scaled(v); };
+  std::vector<double> grid(static_cast<std::size_t>(in.count));
+  for (int i = 0; i < in.count; ++i) {
+    grid[static_cast<std::size_t>(i)] =
+        scaled_param(in.start + (in.stop - in.start) * i / (in.count - 1));
+  }
+
+  auto record = [&](const VectorXd& zz) {
+    const VectorXd qq = P.q(zz);
+    const VectorXd mu = P.mu(zz);
+    const double lambda = zz[li];
+    GeneralPrbmPoint pt;
+    pt.input = A.input_si(zz[si]);
+    pt.input_load = A.load_si(lambda);
+    pt.energy = A.energy_si(A.energy(qq));
+    pt.spring_energy = A.energy_si(A.spring_energy(qq));
+    const MatrixXd H = A.lagrangian_hessian(qq, mu, lambda);
+    const MatrixXd B = A.unloaded_stiffness(qq);
+    const MatrixXd Jg = A.constraint_jacobian(qq);
+    MatrixXd Jdc(m + 1, N);
+    Jdc << Jg, A.input_gradient(qq).transpose();
+    pt.force_control = verdict(H, B, null_space(Jg, N), options.critical_tolerance, "force");
+    pt.displacement_control =
+        verdict(H, B, null_space(Jdc, N), options.critical_tolerance, "displacement");
+    for (int b = 0; b < A.described_body_count(); ++b) {
+      pt.body_x.push_back(qq[3 * b] * A.length_scale());
+      pt.body_y.push_back(qq[3 * b + 1] * A.length_scale());
+      pt.body_phi.push_back(qq[3 * b + 2]);
+    }
+    result.points.push_back(std::move(pt));
+  };
+
+  // Follows the curve from z with the controlled quantity moving towards `target`; records the
+  // grid values crossed when `recording`, and keeps every accepted step in `dense`.
+  std::vector<VectorXd> dense;
+  int steps = 0;
+  auto follow = [&](VectorXd& zc, double target, bool recording) -> Termination {
+    VectorXd orient = VectorXd::Zero(P.size());
+    orient[p] = target >= zc[p] ? 1.0 : -1.0;
+    VectorXd t = P.tangent(zc, orient);
+    double h = options.max_step;
+    if (recording) {
+      dense.push_back(zc);
+    }
+    while (steps < options.max_steps) {
+      VectorXd zn = zc + h * t;
+      int its = 0;
+      bool ok = P.corrector(zn, zc, t, h, &its);
+      VectorXd tn;
+      if (ok) {
+        tn = P.tangent(zn, t);
+        ok = t.dot(tn) > 0.9;  // a sharp turn: the step may have jumped to another branch
+      }
+      if (!ok) {
+        h *= 0.5;
+        if (h < 1e-10) {
+          return Termination::kNoConvergence;
+        }
+        continue;
+      }
+      ++steps;
+      if (t[p] * tn[p] < 0.0) {
+        // A limit point of the controlled quantity inside this step: bisect the arclength on the
+        // sign of the tangent's component along it.
+        double lo = 0.0, hi = h;
+        VectorXd zl = zn;
+        for (int k = 0; k < 60 && hi - lo > 1e-13; ++k) {
+          const double mid = 0.5 * (lo + hi);
+          VectorXd zm = zc + mid * t;
+          int mits = 0;
+          if (!P.corrector(zm, zc, t, mid, &mits)) {
+            break;
+          }
+          if (P.tangent(zm, t)[p] * t[p] > 0.0) {
+            lo = mid;
+          } else {
+            hi = mid;
+          }
+          zl = zm;
+        }
+        result.limit_inputs.push_back(A.input_si(zl[si]));
+        result.limit_loads.push_back(A.load_si(zl[li]));
+      }
+      // Grid values (and the target) crossed by this step, in the order of travel.
+      const double from = zc[p];
+      const double to = zn[p];
+      auto crossed = [&](double v) { return (v - from) * (v - to) <= 0.0 && v != from; };
+      auto solve_at = [&](double v, VectorXd& out) {
+        const double w = (v - from) / (to - from);
+        out = zc + w * (zn - zc);
+        out[p] = v;
+        return P.newton_fixed(out, p);
+      };
+      if (recording) {
+        std::vector<double> hits;
+        for (double v : grid) {
+          if (crossed(v)) {
+            hits.push_back(v);
+          }
+        }
+        std::sort(hits.begin(), hits.end(), [&](double x, double y) {
+          return to > from ? x < y : x > y;
+        });
+        for (double v : hits) {
+          VectorXd zg;
+          if (!solve_at(v, zg)) {
+            return Termination::kNoConvergence;
+          }
+          record(zg);
+        }
+        dense.push_back(zn);
+      }
+      if (crossed(target)) {
+        VectorXd zt;
+        if (!solve_at(target, zt)) {
+          return Termination::kNoConvergence;
+        }
+        zc = zt;
+        return Termination::kConverged;
+      }
+      zc = zn;
+      t = tn;
+      if (its <= 3) {
+        h = std::min(1.5 * h, options.max_step);
+      }
+    }
+    return Termination::kLimitPoint;
+  };
+
+  Termination end = Termination::kConverged;
+  if (start_given) {
+    // Newton for the first grid value directly, from the given body rotations.
+    z.setZero();
+    const std::vector<std::string> names = A.body_names();
+    for (const auto& [body, angle] : in.start_rotation) {
+      const auto it = std::find(names.begin(), names.end(), body);
+      z[3 * (it - names.begin()) + 2] = angle;
+    }
+    z[si] = A.input(P.q(z));
+    z[p] = grid.front();
+    if (!P.newton_fixed(z, p)) {
+      result.termination = Termination::kNoConvergence;
+      result.message =
+          "Newton did not converge at the first input value from the given "
+          "start_rotation";
+      return result;
+    }
+  } else if (z[p] != grid.front()) {
+    end = follow(z, grid.front(), false);
+  }
+  if (end == Termination::kConverged) {
+    record(z);
+    result.limit_inputs.clear();
+    result.limit_loads.clear();
+    end = follow(z, grid.back(), true);
+  }
+  result.iterations = steps;
+  result.termination = end;
+  if (end == Termination::kLimitPoint) {
+    result.message = "the path did not reach the end of the input range after " +
+                     std::to_string(steps) + " steps" +
+                     (result.limit_inputs.empty() ? std::string()
+                                                  : "; it turned back at a limit point at input " +
+                                                        fmt(result.limit_inputs.front()));
+  } else if (end == Termination::kNoConvergence) {
+    result.message = "the continuation failed after " + std::to_string(steps) + " steps (" +
+                     std::to_string(result.points.size()) + " of " + std::to_string(in.count) +
+                     " points)";
+  }
+
+  // Equilibria of the unloaded mechanism: sign changes of the input load along the path.
+  for (std::size_t i = 0; i + 1 < dense.size(); ++i) {
+    const double l0 = dense[i][li];
+    const double l1 = dense[i + 1][li];
+    if (!(l0 * l1 <= 0.0)) {
+      continue;
+    }
+    VectorXd ze =
+        l0 == l1 ? dense[i] : VectorXd(dense[i] + (l0 / (l0 - l1)) * (dense[i + 1] - dense[i]));
+    ze[li] = 0.0;
+    if (!P.newton_fixed(ze, li)) {
+      result.warn(WarningKind::kOther,
+                  "an equilibrium near input " + fmt(A.input_si(dense[i][si])) +
+                      " was bracketed but Newton did not converge");
+      continue;
+    }
+    const double s = A.input_si(ze[si]);
+    if (!result.equilibria.empty() &&
+        std::fabs(result.equilibria.back().input - s) <
+            1e-9 * std::max(1.0, std::fabs(s)) * (A.input_is_angle() ? 1.0 : A.length_scale())) {
+      continue;
+    }
+    const VectorXd qq = P.q(ze);
+    GeneralEquilibrium e;
+    e.input = s;
+    e.energy = A.energy_si(A.energy(qq));
+    e.stability = verdict(A.lagrangian_hessian(qq, P.mu(ze), 0.0),
+                          A.unloaded_stiffness(qq),
+                          null_space(A.constraint_jacobian(qq), N),
+                          options.critical_tolerance,
+                          "force");
+    result.equilibria.push_back(std::move(e));
+  }
+  result.residual = P.residual();
+  return result;
+}
+
+}  // namespace flexure::mechanism::general

@@ -1,0 +1,85 @@
+// `flexure mechanism analyze FILE.toml` for the general form (docs/mechanisms.md "General
+// mechanisms"): the shipped bistable switch through the tool, its JSON keys, and the refusals.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "tests/support/cli_test_support.h"
+
+namespace flexure::test {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+const std::string kSwitch =
+    std::string("'") + FLEXURE_SOURCE_DIR + "/docs/examples/howell_bistable_switch.toml'";
+
+TEST(GeneralMechanismCli, BistableSwitchJsonReportsTable11_2Equilibria) {
+  const CommandResult r = run_flexure("mechanism analyze " + kSwitch + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["form"], "general");
+  EXPECT_EQ(j["model"], "prbm");
+  EXPECT_EQ(j["input_unit"], "rad");
+  EXPECT_EQ(j["input_load_unit"], "N m");
+  ASSERT_EQ(j["input"].size(), 77u);
+  ASSERT_EQ(j["input_load"].size(), 77u);
+  ASSERT_EQ(j["stability"]["force_control"].size(), 77u);
+  ASSERT_EQ(j["equilibria"].size(), 3u);
+  // Howell Table 11.2: 0, 18.7, 32 deg (stable, unstable, stable).
+  EXPECT_NEAR(j["equilibria"][0]["input"].get<double>() / kDeg, 0.0, 0.5);
+  EXPECT_NEAR(j["equilibria"][1]["input"].get<double>() / kDeg, 18.7, 0.05);
+  EXPECT_NEAR(j["equilibria"][2]["input"].get<double>() / kDeg, 32.0, 0.5);
+  EXPECT_EQ(j["equilibria"][0]["stability"], "stable");
+  EXPECT_EQ(j["equilibria"][1]["stability"], "unstable");
+  EXPECT_EQ(j["equilibria"][2]["stability"], "stable");
+  EXPECT_EQ(j["models"]["prbm"]["input"], j["input"]);
+  // The flexure is thicker than half its length: said once on stderr.
+  EXPECT_NE(r.err.find("warning: flexure 'pivot4': thickness/length = 0.547619"),
+            std::string::npos);
+}
+
+TEST(GeneralMechanismCli, InputRangeFromTheCommandLine) {
+  const CommandResult r =
+      run_flexure("mechanism analyze " + kSwitch + " --input '10deg:20deg:3' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["input"].size(), 3u);
+  EXPECT_NEAR(j["input"][0].get<double>(), 10 * kDeg, 1e-12);
+  EXPECT_NEAR(j["input"][2].get<double>(), 20 * kDeg, 1e-12);
+  ASSERT_EQ(j["equilibria"].size(), 1u);  // only the toggle lies in 10..20 deg
+}
+
+TEST(GeneralMechanismCli, Refusals) {
+  expect_refused("mechanism analyze " + kSwitch + " --out x.h5", {"--out", "general"});
+  expect_refused("mechanism analyze " + kSwitch + " --input '0deg:10mm:3'", {"--input STOP"});
+  expect_refused("mechanism analyze 1A-lpp --model prbm", {"--model applies to general"});
+  const CommandResult r =
+      run_flexure("mechanism analyze " + kSwitch + " --model exact --input '0Nm:1Nm:3' --json");
+  EXPECT_EQ(r.exit_code, 2);
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["exit_code"], 2);
+}
+
+TEST(GeneralMechanismCli, BothModels) {
+  const CommandResult r =
+      run_flexure("mechanism analyze " + kSwitch + " --model both --input '-5deg:33deg:39' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["model"], "both");
+  EXPECT_EQ(j["input"], j["models"]["prbm"]["input"]);
+  const auto& exact = j["models"]["exact"];
+  ASSERT_EQ(exact["input_load"].size(), 39u);
+  ASSERT_EQ(exact["equilibria"].size(), 3u);
+  // The stable positions are where the flexure is unstressed: the same for both models.
+  for (int i : {0, 2}) {
+    EXPECT_NEAR(exact["equilibria"][i]["input"].get<double>(),
+                j["models"]["prbm"]["equilibria"][i]["input"].get<double>(),
+                1e-8);
+  }
+  EXPECT_EQ(exact["equilibria"][1]["stability"], "not_checked");
+  EXPECT_EQ(exact["stability"]["force_control"][0], "not_checked");
+}
+
+}  // namespace
+}  // namespace flexure::test
