@@ -7,6 +7,7 @@
 
 #include "flexure/elements/fixed_pinned_segment.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/mechanism_stability.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {
@@ -304,6 +305,7 @@ ExactPoint ExactMechanismSolver::solve_direct(double displacement,
   p.set_converged(r.converged());
   p.message = r.converged() ? r.method : history + "continuation: " + r.message;
   p.unknowns = r.unknowns;
+  p.jacobian_sign = r.jacobian_sign;
   p.length_scale = length_scale_;
   p.EI_scale = EI_scale_;
   p.Nx = r.tip_load.Fx * force_scale_;
@@ -460,15 +462,90 @@ ExactPoint ExactMechanismSolver::solve_two_force(double displacement,
   return p;
 }
 
+namespace {
+
+// The first point of a serial chain's stroke, checked: an equilibrium that is unstable with the
+// slider held is not where the mechanism goes. The PRBM start (or the thickness homotopy) follows
+// the linkage mode of the PRBM; where a thin flexure has a lower buckling mode of its own
+// (3A-lssm, 3A-lslm: the middle strip sways between its two long links at half the linkage's
+// buckling load) that branch is unstable, and the mechanism leaves the straight position on the
+// branch of the lowest mode instead (docs/stability.md "Mechanisms", docs/mechanisms.md "Exact
+// model: the first stroke point"). Keeps `point` when it is stable, cannot be judged, or no stable
+// point is found on that branch (its verdict then says so in the analysis).
+ExactPoint checked_first_point(const MechanismDesign& design,
+                               ExactPoint point,
+                               const ExactMechanismSolver::Options& options) {
+  if (exact_support(design) != ExactSupport::kDirectChain) return point;
+  Stability held;
+  try {
+    held = exact_point_stability(design, point).displacement_control;
+  } catch (const std::exception&) {
+    return point;
+  }
+  if (held.kind != StabilityKind::kUnstable) return point;
+  ExactPoint lowest = exact_lowest_mode_point(design, point.displacement, options);
+  if (!lowest.converged()) {
+    point.message +=
+        "; unstable with the slider held, and the lowest buckling mode's branch: " + lowest.message;
+    return point;
+  }
+  Stability lowest_held;
+  try {
+    lowest_held = exact_point_stability(design, lowest).displacement_control;
+  } catch (const std::exception&) {
+    return point;
+  }
+  if (lowest_held.kind != StabilityKind::kStable) return point;
+  lowest.iterations += point.iterations;
+  lowest.message += fmt::format(
+      "; the PRBM start's equilibrium (force {:.6g} N) is unstable with the slider held (index {})",
+      point.force,
+      held.index);
+  return lowest;
+}
+
+}  // namespace
+
 ExactStrokeResult exact_stroke(const MechanismDesign& design,
                                const std::vector<double>& displacements) {
   return exact_stroke(design, displacements, ExactMechanismSolver::Options{});
 }
 
+namespace {
+
+ExactStrokeResult stroke_from_start(const MechanismDesign& design,
+                                    const std::vector<double>& displacements,
+                                    const ExactMechanismSolver::Options& options_in,
+                                    const StrokeProgress& progress,
+                                    bool check_first);
+
+}  // namespace
+
 ExactStrokeResult exact_stroke(const MechanismDesign& design,
                                const std::vector<double>& displacements,
-                               const ExactMechanismSolver::Options& options_in,
+                               const ExactMechanismSolver::Options& options,
                                const StrokeProgress& progress) {
+  ExactStrokeResult r =
+      stroke_from_start(design, displacements, options, progress, options.stable_start);
+  if (r.converged() || !r.lowest_mode_start) return r;
+  // The stable branch could not be followed over the whole stroke (3A-lslm at most point counts:
+  // its pitchfork): the stroke from the PRBM start, whose verdicts say it is unstable.
+  ExactStrokeResult fallback = stroke_from_start(design, displacements, options, progress, false);
+  if (!fallback.converged()) return r;
+  fallback.message += fmt::format(
+      " (from the PRBM start: the stable branch of the lowest buckling mode stopped there: {})",
+      r.message);
+  fallback.integrator_steps += r.integrator_steps;
+  return fallback;
+}
+
+namespace {
+
+ExactStrokeResult stroke_from_start(const MechanismDesign& design,
+                                    const std::vector<double>& displacements,
+                                    const ExactMechanismSolver::Options& options_in,
+                                    const StrokeProgress& progress,
+                                    bool check_first) {
   // The work budget runs from here (docs/mechanisms.md "Work budget").
   ExactMechanismSolver::Options options = options_in;
   options.work_spent = std::make_shared<long>(0);
@@ -485,6 +562,19 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
         std::min(first_options.shooting.newton.max_iterations, kFirstTryIterations);
   }
   const ExactMechanismSolver first_try(design, first_options);
+  // With stable_start: a serial chain's point whose shooting Jacobian changed sign from its
+  // neighbour's (same cuts) lies on another branch: Newton from an extrapolated guess can land on a
+  // nearby branch where two branches run close (3A-lssm's stable start, 6-8 % into the stroke, next
+  // to the PRBM's unstable branch). Such a point is refused and the step divided.
+  auto on_branch_of = [&](ExactPoint& q, const ExactPoint& neighbour) {
+    if (check_first && q.converged() && q.jacobian_sign != 0 && neighbour.jacobian_sign != 0 &&
+        q.unknowns.size() == neighbour.unknowns.size() &&
+        q.jacobian_sign != neighbour.jacobian_sign) {
+      q.set_converged(false);
+      q.message = "landed on another branch (the shooting Jacobian changed sign)";
+    }
+    return q.converged();
+  };
   ExactStrokeResult result;
   result.points.reserve(displacements.size());
   const ExactPoint* previous = nullptr;
@@ -534,6 +624,7 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
     // can throw Newton onto another branch), before the serial chain's fall-backs -- the PRBM
     // start and continuation from zero load -- which start far from the path and cost more.
     ExactPoint point = k == 0 ? solver.solve(dx) : first_try.solve(dx, previous, false);
+    if (k >= 1) on_branch_of(point, result.points[k - 1]);
     if (!point.converged() && k == 0) {
       // No neighbour to start from and the PRBM start failed (mechanism_exact_start.cpp).
       ExactPoint started = exact_first_point(design, displacements, options);
@@ -542,6 +633,11 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
       } else {
         point.message += "; start strategies: " + started.message;
       }
+    }
+    if (k == 0 && point.converged() && check_first) {
+      const double force = point.force;
+      point = checked_first_point(design, std::move(point), options);
+      result.lowest_mode_start = point.force != force;
     }
     auto substeps = [&](bool fall_back) {
       const ExactPoint last = result.points[k - 1];
@@ -553,7 +649,7 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
           const double x = last.displacement + (dx - last.displacement) * i / m;
           ExactPoint q = solver.solve(x, &current, fall_back);
           iterations += q.iterations;
-          ok = q.converged();
+          ok = on_branch_of(q, current);
           if (ok) current = std::move(q);
         }
         if (ok) {
@@ -566,8 +662,20 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
       return false;
     };
     if (!point.converged() && k >= 1 && !substeps(false)) {
-      point = solver.solve(dx, previous);
-      if (!point.converged()) substeps(true);
+      // With stable_start, before the fall-backs that start far from the path: steps adapted to
+      // the branch, which also leave it for a stable one where it turns unstable (a pitchfork).
+      const ExactPoint& last = result.points[k - 1];
+      ExactPoint near;
+      if (check_first) {
+        near = exact_adaptive_walk(design, last, dx, (dx - last.displacement) / 64.0, options);
+      }
+      if (near.converged()) {
+        near.message += " (adaptive steps from the previous point)";
+        point = std::move(near);
+      } else {
+        point = solver.solve(dx, previous);
+        if (!point.converged()) substeps(true);
+      }
     }
     result.points.push_back(std::move(point));
     const ExactPoint& p = result.points.back();
@@ -592,5 +700,7 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
   result.integrator_steps = *options.work_spent;
   return result;
 }
+
+}  // namespace
 
 }  // namespace flexure::mechanism

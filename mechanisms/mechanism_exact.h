@@ -93,6 +93,10 @@ struct ExactPoint : SolveStatus {
   // change of sign between stroke points (with the same multiple-shooting cuts) means a singular
   // point was passed (fold or bifurcation).
   double stiffness_determinant = 0.0;
+  // kDirectChain: sign of det dg/dz of the shooting problem at the solution (0: not known). It
+  // changes at every fold and bifurcation of the stroke, so between stroke points with the same
+  // multiple-shooting cuts a change means Newton landed on another branch (exact_stroke).
+  int jacobian_sign = 0;
   // iterations: shooting Newton iterations, all solves of this point
   // residual: shooting residual; two-force case |pivot 2 mismatch|/slider_x0
 };
@@ -143,6 +147,14 @@ class ExactMechanismSolver {
     // pinned-ends model of 1B-plp near its toggle tried F L^2/EI = 2e8, one shooting solve
     // there took 21 s.
     double max_load_parameter = 1e4;
+    // exact_stroke of a serial chain: when the first point from the PRBM start is unstable with
+    // the slider held, start instead on the branch of the straight chain's lowest buckling mode
+    // (exact_lowest_mode_point) and follow it, leaving it for a stable neighbour where it turns
+    // unstable (exact_adaptive_walk). Off by default: on 3A-lssm and 3A-lslm at 50 points it gives
+    // strokes stable at every point (forces 11.0-19.5 N and 11.3-43.6 N), but at other point
+    // counts 3A-lslm's pitchfork is not followed (the stroke from the PRBM start is returned) and
+    // 3A-lssm at 5 or 10 points costs 1.9e7 integrator steps (docs/stability.md "Mechanisms").
+    bool stable_start = false;
 
     // Throws InvalidInput naming the first field outside its range.
     void validate() const;
@@ -170,6 +182,11 @@ class ExactMechanismSolver {
   // Largest nondimensional force magnitude within options_.max_load_parameter on every flexible
   // segment of the scaled chains (infinite when there is none).
   double max_force() const { return max_force_; }
+  // The nondimensional chain solved at `displacement` (kDirectChain: with its slider end
+  // condition) and the scales: force = nondimensional force * force_scale() N.
+  SegmentChain scaled_chain(double displacement) const { return chain_at(displacement, 0.0); }
+  double force_scale() const { return force_scale_; }
+  const Options& options() const { return options_; }
 
  private:
   ExactPoint solve_direct(double displacement, const ExactPoint* previous, bool fall_back) const;
@@ -195,6 +212,11 @@ struct ExactStrokeResult : SolveStatus {
   std::vector<ExactPoint> points;
   // converged(): every point converged
   long integrator_steps = 0;  // work spent by all solves of the stroke (see Options::work_budget)
+  // The first point solved from the PRBM start was unstable with the slider held, and the stroke
+  // starts on the branch of the straight chain's lowest buckling mode instead
+  // (exact_lowest_mode_point). When that branch cannot be followed to the end, exact_stroke
+  // returns the stroke from the PRBM start (this flag then false, the message saying so).
+  bool lowest_mode_start = false;
 };
 ExactStrokeResult exact_stroke(const MechanismDesign& design,
                                const std::vector<double>& displacements);
@@ -217,6 +239,53 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
 ExactPoint exact_first_point(const MechanismDesign& design,
                              const std::vector<double>& displacements,
                              const ExactMechanismSolver::Options& options);
+
+// The straight serial chain (kDirectChain) at the undeflected slider position: its lowest buckling
+// load under the slider's end condition (pinned or fixed, the chain's x held) and the root loads
+// of its mode (mechanism_exact_start.cpp). The mechanism's stroke starts at this bifurcation: as
+// the slider moves in, the straight chain buckles in its first mode, and the branch that leaves
+// it is the stable one (docs/stability.md "Mechanisms"). The PRBM knows one mode only, the
+// linkage turning about its pivots; a thin flexure between two long links can have a lower one
+// of its own (3A-lssm: the middle strip sways at 10.1 N, the linkage mode needs 20.95 N).
+struct ExactBucklingMode : SolveStatus {
+  double load = 0.0;  // the lowest buckling load: the compressive force along the chain, N
+  // The mode's root loads, nondimensional (ExactMechanismSolver::force_scale()), unit norm; the
+  // sign turns the ground flexure the way the PRBM's crank turns (theta2 > 0).
+  double m0 = 0.0, Ny = 0.0;
+  double next_load = 0.0;  // the next buckling load found below the scanned bound (0: none), N
+};
+ExactBucklingMode exact_lowest_buckling_mode(const MechanismDesign& design,
+                                             const ExactMechanismSolver::Options& options = {},
+                                             double max_load = 0.0);
+
+// The point at `displacement` on the branch that leaves the straight serial chain at its lowest
+// buckling load: Newton from the mode at a small slider displacement (amplitude from the mode's
+// end shortening), then walked to `displacement` in geometric steps. What exact_stroke uses when
+// its first point is unstable with the slider held (mechanism_exact_start.cpp).
+ExactPoint exact_lowest_mode_point(const MechanismDesign& design,
+                                   double displacement,
+                                   const ExactMechanismSolver::Options& options);
+
+// Walks a serial chain's branch from the converged point `from` to the displacement `to` in steps
+// that start at `first_step`, double after a converged step and halve after a failed one; a step
+// across which the shooting Jacobian changes sign (a fold or bifurcation) is replaced by
+// exact_stable_neighbour. `steps` (if given) gets the number of solves added.
+ExactPoint exact_adaptive_walk(const MechanismDesign& design,
+                               const ExactPoint& from,
+                               double to,
+                               double first_step,
+                               const ExactMechanismSolver::Options& options,
+                               int* steps = nullptr);
+
+// A displacement-control-stable equilibrium at `displacement` next to the converged serial-chain
+// point `from` whose branch lost its stability before `displacement` (a pitchfork: 3A-lslm's sway
+// branch, where the symmetric states turn unstable and two mirror-image asymmetric ones take
+// over): Newton from `from` displaced along the null direction of its shooting Jacobian, both
+// ways, at growing amplitudes; the first stable result (mechanism_exact_start.cpp).
+ExactPoint exact_stable_neighbour(const MechanismDesign& design,
+                                  const ExactPoint& from,
+                                  double displacement,
+                                  const ExactMechanismSolver::Options& options);
 
 // Bending moment, strain energy, stress and rotation of the flexible segments of a solved point
 // (mechanism_exact_segments.cpp).

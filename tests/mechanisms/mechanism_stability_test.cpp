@@ -28,6 +28,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <map>
 
@@ -217,6 +218,53 @@ TEST(ExactStability, LssmAndLslmFollowAnUnstableBranch) {
       EXPECT_EQ(j.index, 1);
       EXPECT_LT(v.displacement_control.margin, -0.3);
     }
+  }
+}
+
+// With ExactMechanismSolver::Options::stable_start the strokes of 3A-lssm and 3A-lslm start on
+// the branch of the straight chain's lowest buckling mode (the thin middle strip swaying between
+// its two links, P1 = 10.10 N and 10.55 N, below the linkage mode the PRBM describes) and follow
+// it; 3A-lslm leaves it for one of its two mirror-image asymmetric branches at its pitchfork
+// (about 13 % of the stroke). Every point stable with the slider held by both methods (the old
+// default stroke is unstable at all of them, the test above), and the force curve checked
+// against the energy: the slider's work (Simpson over the stroke points) equals the strain energy
+// gained (exact_strain_energy, from the shapes).
+TEST(ExactStability, StableStartFollowsTheLowestBucklingMode) {
+  disable_gsl_abort();
+  ExactMechanismSolver::Options o;
+  o.stable_start = true;
+  for (const char* name : {"3A-lssm", "3A-lslm"}) {
+    const MechanismDesign d = design(name);
+    const ExactStrokeResult r = exact_stroke(d, stroke_displacements(d, 50), o);
+    ASSERT_TRUE(r.converged()) << r.message;
+    EXPECT_TRUE(r.lowest_mode_start) << name;
+    for (const ExactPoint& p : r.points) {
+      const PointStability v = exact_point_stability(d, p);
+      const Stability j = jacobi_verdict(p, SliderControl::kDisplacement);
+      EXPECT_EQ(v.displacement_control.kind, StabilityKind::kStable)
+          << name << " " << p.displacement;
+      EXPECT_EQ(j.index, 0) << name;
+    }
+    // Simpson on the first 49 points (48 intervals), and on every second one for its error.
+    auto simpson = [&](int stride) {
+      const double h = r.points[stride].displacement - r.points[0].displacement;
+      double w = 0.0;
+      for (int i = 0; i + 2 * stride <= 48; i += 2 * stride) {
+        w +=
+            h / 3.0 *
+            (r.points[i].force + 4.0 * r.points[i + stride].force + r.points[i + 2 * stride].force);
+      }
+      return w;
+    };
+    const double W = simpson(1), W_coarse = simpson(2);
+    const double dU = exact_strain_energy(d, r.points[48]) - exact_strain_energy(d, r.points[0]);
+    std::printf("%s: work %.8g J (coarse %.8g), energy change %.8g J\n", name, W, W_coarse, dU);
+    EXPECT_NEAR(W / dU, 1.0, 2e-3) << name;
+    // The force starts near the lowest buckling load, far below the PRBM's.
+    const ExactBucklingMode mode = exact_lowest_buckling_mode(d);
+    ASSERT_TRUE(mode.converged()) << mode.message;
+    EXPECT_GT(r.points.front().force, mode.load);
+    EXPECT_LT(r.points.front().force, 1.1 * mode.load);
   }
 }
 
