@@ -385,6 +385,7 @@ std::vector<double> stability_stations(const SegmentChain& chain,
                                        const StabilityOptions& options) {
   options.validate();
   chain.validate();
+  chain.require_elastica_only("the stability analysis");
   check_support_reaction(chain, support_reaction);
   const std::size_t n = chain.segments.size();
   const auto N = segment_forces(chain, support_reaction);
@@ -582,6 +583,7 @@ Stability equilibrium_stability(const SegmentChain& chain,
                                 const StabilityOptions& options) {
   options.validate();
   chain.validate();
+  chain.require_elastica_only("the stability analysis");
   check_support_reaction(chain, support_reaction);
   return judge(chain, support_reaction, shape, options).stability;
 }
@@ -592,6 +594,7 @@ Stability equilibrium_stability(const SegmentChain& chain,
                                 const StabilityOptions& options) {
   options.validate();
   chain.validate();
+  chain.require_elastica_only("the stability analysis");
   check_support_reaction(chain, support_reaction);
   StabilityOptions o = options;
   for (;;) {
@@ -621,6 +624,7 @@ std::vector<double> second_variation_eigenvalues(const SegmentChain& chain,
                                                  const StabilityOptions& options) {
   options.validate();
   chain.validate();
+  chain.require_elastica_only("the stability analysis");
   check_support_reaction(chain, support_reaction);
   require_conservative_and_flexible(chain);
   if (count < 0) throw InvalidInput(fmt::format("eigenvalue count must be >= 0 (got {})", count));
@@ -635,6 +639,7 @@ DiscreteSecondVariation discrete_second_variation(const SegmentChain& chain,
                                                   const std::vector<ShapePoint>& shape,
                                                   int stride) {
   chain.validate();
+  chain.require_elastica_only("the stability analysis");
   check_support_reaction(chain, support_reaction);
   require_conservative_and_flexible(chain);
   if (stride != 1 && stride != 2 && stride != 4) {
