@@ -243,8 +243,14 @@ void print_physical(const PhysicalResults& r) {
       r.max_moment,
       r.max_moment_at,
       std::string_view(r.max_from) == "ends" ? " (PRBM: the larger end moment)" : "");
+  if (r.max_axial_strain) {
+    fmt::print("    largest axial force |N| = {:.10g} N; axial strain N/EA up to {:.6g}\n",
+               r.max_axial_force,
+               *r.max_axial_strain);
+  }
   if (r.max_stress) {
-    fmt::print("    largest bending stress M c/I = {:.6g} MPa at s = {:.6g} m\n",
+    fmt::print("    largest {} = {:.6g} MPa at s = {:.6g} m\n",
+               r.max_axial_strain ? "stress |N|/A + |M| c/I" : "bending stress M c/I",
                *r.max_stress * 1e-6,
                *r.max_stress_at);
   } else {
@@ -458,7 +464,19 @@ void add_physical_json(Json& out, const BeamInput& input, const PhysicalResults&
     out["Fx_N"] = b.Fx;
     out["Fy_N"] = b.Fy;
     out["M_Nm"] = b.M;
+    if (b.beyond_elastica()) {
+      out["qx_N_per_m"] = b.qx;
+      out["qy_N_per_m"] = b.total_qy();  // including the self-weight
+      out["q_follower_N_per_m"] = b.q_follower;
+      if (b.extensible) {
+        out["EA_N"] = b.E * b.area().value_or(0.0);
+        out["GAs_N"] =
+            b.shear_coefficient * b.E / (2.0 * (1.0 + b.nu.value_or(0.0))) * b.area().value_or(0.0);
+      }
+    }
   }
+  out["max_axial_force_N"] = r.max_axial_force;
+  out["max_axial_strain"] = r.max_axial_strain ? Json(*r.max_axial_strain) : Json(nullptr);
   out["tip_x"] = r.tip_x;
   out["tip_y"] = r.tip_y;
   out["root_moment_Nm"] = r.root_moment;
@@ -591,6 +609,7 @@ Json to_json(const BeamInput& input,
         shape[i]["y_m"] = p.y;
         shape[i]["moment_Nm"] = p.moment;
         shape[i]["stress_Pa"] = p.stress ? Json(*p.stress) : Json(nullptr);
+        shape[i]["axial_force_N"] = p.axial_force;
       }
     }
     out["shape"] = std::move(shape);

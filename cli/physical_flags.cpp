@@ -1,5 +1,7 @@
 #include "cli/physical_flags.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <optional>
 #include <utility>
@@ -16,6 +18,15 @@ std::optional<double> quantity_option(const std::string& text,
                                       const char* what) {
   if (text.empty()) return std::nullopt;
   return io::parse_quantity(text, dimension, what).si;
+}
+
+// A dimensionless number (Poisson's ratio, a shear coefficient): no unit allowed.
+double plain_number(const std::string& text, const char* what) {
+  const io::Quantity q = io::parse_quantity(text, io::Dimension::kAngle, what);
+  if (q.has_unit()) {
+    throw InvalidInput(fmt::format("{} is a plain number without a unit (got '{}')", what, text));
+  }
+  return q.si;
 }
 
 }  // namespace
@@ -49,6 +60,34 @@ void PhysicalFlags::add_to(CLI::App& command, bool with_yield_strength) {
   for (std::size_t i = 0; i < count; ++i) {
     options.push_back(group->add_option(flags[i].first, *flags[i].second, help[i]));
   }
+  // Distributed loads and extension (docs/distributed-loads.md, docs/extensible.md).
+  const std::pair<const char*, std::string*> more[] = {
+      {"--qx", &qx},
+      {"--qy", &qy},
+      {"--q-follower", &q_follower},
+      {"--density", &density},
+      {"--g", &g},
+      {"--nu", &nu},
+      {"--shear-coefficient", &shear_coefficient},
+  };
+  const char* more_help[] = {
+      "Dead load per unit length along the undeformed beam (N/m, or N/mm, lbf/in)",
+      "Dead load per unit length perpendicular to the undeformed beam (N/m, or N/mm, lbf/in)",
+      "Follower pressure per unit length along the deflected normal, toward the left of the "
+      "tangent (N/m)",
+      "Density for the self-weight rho A g along -y (kg/m^3, or g/cm^3; needs --width and "
+      "--thickness)",
+      "Gravity of the self-weight (m/s^2; default 9.80665)",
+      "Poisson's ratio (with --extensible: G = E / (2 (1 + nu)))",
+      "Timoshenko's shear coefficient k (with --extensible; default 5/6, the rectangle)",
+  };
+  for (std::size_t i = 0; i < std::size(more); ++i) {
+    options.push_back(group->add_option(more[i].first, *more[i].second, more_help[i]));
+  }
+  options.push_back(group->add_flag(
+      "--extensible",
+      extensible,
+      "Extensible and shear-flexible beam (Reissner): EA = E b h, GAs = k G b h (needs --nu)"));
 }
 
 bool PhysicalFlags::given() const {
@@ -73,6 +112,21 @@ PhysicalCantilever PhysicalFlags::parse() const {
   beam.Fy = quantity_option(Fy, Dimension::kForce, "--Fy").value_or(0.0);
   beam.M = quantity_option(M, Dimension::kMoment, "--M").value_or(0.0);
   beam.yield_strength = quantity_option(yield_strength, Dimension::kStress, "--yield-strength");
+  beam.qx = quantity_option(qx, Dimension::kForcePerLength, "--qx").value_or(0.0);
+  beam.qy = quantity_option(qy, Dimension::kForcePerLength, "--qy").value_or(0.0);
+  beam.q_follower =
+      quantity_option(q_follower, Dimension::kForcePerLength, "--q-follower").value_or(0.0);
+  beam.density = quantity_option(density, Dimension::kDensity, "--density");
+  if (!g.empty()) {
+    if (!beam.density) throw InvalidInput("--g is the gravity of the self-weight; give --density");
+    beam.g = io::parse_quantity(g, Dimension::kAcceleration, "--g").si;
+  }
+  beam.extensible = extensible;
+  if (!nu.empty()) beam.nu = plain_number(nu, "--nu");
+  if (!shear_coefficient.empty()) {
+    if (!extensible) throw InvalidInput("--shear-coefficient is used with --extensible only");
+    beam.shear_coefficient = plain_number(shear_coefficient, "--shear-coefficient");
+  }
   beam.validate();
   warn(io::modulus_warning(modulus, "--E"));
   if (beam.thickness) warn(io::thickness_warning(*beam.thickness, beam.length, "--thickness"));

@@ -1,7 +1,9 @@
 #pragma once
 // The physical-beam flags that `flexure beam` and `flexure path` share (docs/cli.md, "Physical
 // beams"; docs/units.md): --length, --E, the section (--I, or --width and --thickness), the tip
-// loads --Fx, --Fy, --M and, for `beam`, --yield-strength, as SI numbers or values with units.
+// loads --Fx, --Fy, --M, the distributed loads --qx, --qy, --q-follower, the self-weight
+// --density (--g), the extensible beam (--extensible, --nu, --shear-coefficient) and, for `beam`,
+// --yield-strength, as SI numbers or values with units.
 #include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
@@ -12,6 +14,9 @@ namespace flexure::cli {
 
 struct PhysicalFlags {
   std::string length, E, I, width, thickness, Fx, Fy, M, yield_strength;
+  // Distributed loads, self-weight and extension (docs/cli.md, "Physical beams").
+  std::string qx, qy, q_follower, density, g, nu, shear_coefficient;
+  bool extensible = false;
   std::vector<CLI::Option*> options;
 
   // Adds the flags to `command` in an option group "physical beam".

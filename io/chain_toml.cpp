@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -103,9 +104,40 @@ const toml::table& as_table(const toml::node& node,
 // physical units; checked against the units once the whole file is read.
 struct SectionKeys {
   std::optional<Quantity> E;
-  std::optional<double> I, width, thickness;
+  std::optional<double> I, width, thickness, area;
+  std::optional<double> density, g, nu, shear_coefficient;
+  bool extensible = false;
   int line = 0;
 };
+
+// A pair [x, y] of numbers or strings with a unit of force per length.
+std::array<double, 2> read_pair(const toml::node& node, const std::string& what, Reader& r) {
+  const toml::array* a = node.as_array();
+  if (a == nullptr || a->size() != 2) {
+    toml_fail(r.source, line_of(node), what + " must be an array of two values [qx, qy]");
+  }
+  std::array<double, 2> out{};
+  for (std::size_t c = 0; c < 2; ++c) {
+    const toml::node& v = *a->get(c);
+    if (const std::optional<double> x = toml_number(v)) {
+      if (!std::isfinite(*x)) toml_fail(r.source, line_of(v), what + " must be finite numbers");
+      out[c] = *x;
+    } else if (v.is_string()) {
+      try {
+        const Quantity q = parse_quantity(**v.as_string(), Dimension::kForcePerLength, what);
+        r.any_unit = r.any_unit || q.has_unit();
+        out[c] = q.si;
+      } catch (const InvalidInput& e) {
+        toml_fail(r.source, line_of(v), e.what());
+      }
+    } else {
+      toml_fail(r.source,
+                line_of(v),
+                what + " must contain numbers or strings with a unit (e.g. \"-2 N/m\")");
+    }
+  }
+  return out;
+}
 
 Segment read_segment(const toml::table& t, int index, Reader& r, SectionKeys& section) {
   const std::string where = fmt::format("segment {}", index + 1);
@@ -119,7 +151,9 @@ Segment read_segment(const toml::table& t, int index, Reader& r, SectionKeys& se
   if (type == "flexible") {
     check_toml_keys(
         t,
-        {"type", "length", "EI", "EI_profile", "kappa0", "E", "I", "width", "thickness"},
+        {"type",      "length",     "EI", "EI_profile",       "kappa0",     "E",       "I", "width",
+         "thickness", "A",          "q",  "q_profile",        "q_follower", "density", "g", "EA",
+         "GAs",       "extensible", "nu", "shear_coefficient"},
         where,
         r.source);
     FlexibleSegment s;
@@ -129,9 +163,54 @@ Segment read_segment(const toml::table& t, int index, Reader& r, SectionKeys& se
     section.I = r.number(t, "I", where, Dimension::kSecondMoment);
     section.width = r.number(t, "width", where, Dimension::kLength);
     section.thickness = r.number(t, "thickness", where, Dimension::kLength);
+    section.area = r.number(t, "A", where, Dimension::kArea);
+    section.density = r.number(t, "density", where, Dimension::kDensity);
+    section.g = r.number(t, "g", where, Dimension::kAcceleration);
+    section.nu = r.number(t, "nu", where);
+    section.shear_coefficient = r.number(t, "shear_coefficient", where);
+    if (const toml::node* e = t.get("extensible")) {
+      if (!e->is_boolean())
+        toml_fail(r.source, line_of(*e), where + ".extensible must be true or false");
+      section.extensible = **e->as_boolean();
+    }
     section.line = line_of(t);
+    // Distributed loads (docs/distributed-loads.md) and axial/shear rigidity (docs/extensible.md).
+    if (const toml::node* q = t.get("q")) {
+      const std::array<double, 2> v = read_pair(*q, where + ".q", r);
+      s.qx = v[0];
+      s.qy = v[1];
+    }
+    if (const toml::node* profile = t.get("q_profile")) {
+      const toml::array* a = profile->as_array();
+      if (a == nullptr) {
+        toml_fail(r.source, line_of(*profile), where + ".q_profile must be an array of [qx, qy]");
+      }
+      if (t.get("q") != nullptr) {
+        toml_fail(r.source, line_of(*profile), where + " gives both q and q_profile; give one");
+      }
+      for (const toml::node& v : *a) {
+        s.q_profile.push_back(read_pair(v, where + ".q_profile[]", r));
+      }
+    }
+    s.q_follower = r.number(t, "q_follower", where, Dimension::kForcePerLength).value_or(0.0);
+    if (const std::optional<double> EA = r.number(t, "EA", where, Dimension::kForce)) {
+      if (!(*EA > 0.0)) toml_fail(r.source, line_of(t), where + ".EA must be > 0");
+      s.EA = *EA;
+    }
+    if (const std::optional<double> GAs = r.number(t, "GAs", where, Dimension::kForce)) {
+      if (!(*GAs > 0.0)) toml_fail(r.source, line_of(t), where + ".GAs must be > 0");
+      s.GAs = *GAs;
+    }
+    if (section.extensible && (t.get("EA") != nullptr || t.get("GAs") != nullptr)) {
+      toml_fail(r.source,
+                line_of(t),
+                where +
+                    " gives extensible = true and EA or GAs; give one (extensible = true takes "
+                    "EA and GAs from the section, E and nu)");
+    }
     const std::optional<double> EI = r.number(t, "EI", where, Dimension::kRigidity);
-    const bool has_section = section.E || section.I || section.width || section.thickness;
+    const bool has_section =
+        section.E || section.I || section.width || section.thickness || section.area;
     if (has_section) {
       if (EI || t.get("EI_profile") != nullptr) {
         toml_fail(r.source,
@@ -140,6 +219,11 @@ Segment read_segment(const toml::table& t, int index, Reader& r, SectionKeys& se
       }
       if (!section.E) {
         toml_fail(r.source, line_of(t), where + ": a section needs the modulus E");
+      }
+      if (section.area && (section.width || section.thickness)) {
+        toml_fail(r.source,
+                  line_of(t),
+                  where + " gives A with width and thickness; A = width thickness already");
       }
       if (section.I.has_value() == (section.width.has_value() || section.thickness.has_value()) ||
           section.width.has_value() != section.thickness.has_value()) {
@@ -152,7 +236,8 @@ Segment read_segment(const toml::table& t, int index, Reader& r, SectionKeys& se
       for (const auto& [name, value] : {std::pair{"E", section.E->si},
                                         std::pair{"I", section.I.value_or(1.0)},
                                         std::pair{"width", section.width.value_or(1.0)},
-                                        std::pair{"thickness", section.thickness.value_or(1.0)}}) {
+                                        std::pair{"thickness", section.thickness.value_or(1.0)},
+                                        std::pair{"A", section.area.value_or(1.0)}}) {
         if (!(value > 0.0)) {
           toml_fail(r.source, line_of(t), fmt::format("{}.{} must be > 0", where, name));
         }
@@ -310,6 +395,14 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
   for (std::size_t k = 0; k < sections.size(); ++k) {
     const SectionKeys& keys = sections[k];
     if (!keys.E) {
+      const std::string where = fmt::format("segment {}", k + 1);
+      if (keys.density || keys.extensible || keys.nu || keys.shear_coefficient || keys.g) {
+        toml_fail(source,
+                  keys.line,
+                  where +
+                      ": density, g, extensible, nu and shear_coefficient need the section "
+                      "(E with width and thickness, or with I and A) in physical units");
+      }
       file.sections.emplace_back();
       continue;
     }
@@ -326,6 +419,57 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
     section.E = keys.E->si;
     section.I = keys.I ? *keys.I : *keys.width * std::pow(*keys.thickness, 3) / 12.0;
     section.thickness = keys.thickness;
+    if (keys.area) section.area = keys.area;
+    if (keys.width) section.area = *keys.width * *keys.thickness;
+    auto& segment = std::get<FlexibleSegment>(chain.segments[k]);
+    if ((keys.density || keys.extensible) && !section.area) {
+      toml_fail(source,
+                keys.line,
+                where +
+                    ": density and extensible = true need the section's area: give width and "
+                    "thickness, or A with I");
+    }
+    if (!keys.density && keys.g) {
+      toml_fail(source, keys.line, where + ": g is the gravity of the self-weight; give density");
+    }
+    if (keys.density) {
+      // Self-weight per unit length rho A g along -y of the root frame (standard gravity unless
+      // g is given).
+      if (!(*keys.density > 0.0)) toml_fail(source, keys.line, where + ".density must be > 0");
+      const double g = keys.g.value_or(9.80665);
+      if (!(g >= 0.0)) toml_fail(source, keys.line, where + ".g must be >= 0");
+      const double weight = *keys.density * *section.area * g;
+      segment.qy -= segment.q_profile.empty() ? weight : 0.0;
+      for (auto& q : segment.q_profile) q[1] -= weight;
+      section.weight_per_length = weight;
+    }
+    if (keys.extensible) {
+      if (!keys.nu) {
+        toml_fail(source, keys.line, where + ": extensible = true needs Poisson's ratio nu");
+      }
+      if (!(*keys.nu > -1.0 && *keys.nu < 0.5)) {
+        toml_fail(source, keys.line, where + ".nu must be in (-1, 0.5)");
+      }
+      // Timoshenko's shear coefficient: 5/6 for a rectangle (Cowper 1966 gives 10(1+nu)/(12+11nu);
+      // 5/6 is the common engineering value); another section must give its own.
+      if (!keys.shear_coefficient && !keys.width) {
+        toml_fail(source,
+                  keys.line,
+                  where +
+                      ": extensible = true with a section given by I and A needs "
+                      "shear_coefficient (5/6 is taken only for a rectangle)");
+      }
+      const double kappa = keys.shear_coefficient.value_or(5.0 / 6.0);
+      if (!(kappa > 0.0 && kappa <= 1.0)) {
+        toml_fail(source, keys.line, where + ".shear_coefficient must be in (0, 1]");
+      }
+      segment.EA = section.E * *section.area;
+      segment.GAs = kappa * section.E / (2.0 * (1.0 + *keys.nu)) * *section.area;
+    } else if (keys.nu || keys.shear_coefficient) {
+      toml_fail(source,
+                keys.line,
+                where + ": nu and shear_coefficient are used with extensible = true only");
+    }
     file.sections.push_back(section);
     r.warn(modulus_warning(*keys.E, where + ".E"));
     if (keys.thickness) {

@@ -22,6 +22,8 @@ struct SegmentSection {
   double E = 0.0;                   // Pa
   double I = 0.0;                   // m^4
   std::optional<double> thickness;  // m
+  std::optional<double> area;       // m^2: width thickness, or A (the axial stress N/A)
+  double weight_per_length = 0.0;   // N/m: rho A g where density is given (self-weight)
 };
 
 struct ChainFile {

@@ -74,6 +74,17 @@ constexpr std::array kUnits{
     Unit{Dimension::kAngle, "rad", 1.0},
     Unit{Dimension::kAngle, "deg", std::numbers::pi / 180.0},
     Unit{Dimension::kAngle, "°", std::numbers::pi / 180.0},
+    Unit{Dimension::kForcePerLength, "N/m", 1.0},
+    Unit{Dimension::kForcePerLength, "N/mm", 1e3},
+    Unit{Dimension::kForcePerLength, "kN/m", 1e3},
+    Unit{Dimension::kForcePerLength, "lbf/in", kPoundForce / kInch},
+    Unit{Dimension::kDensity, "kg/m^3", 1.0},
+    Unit{Dimension::kDensity, "g/cm^3", 1e3},
+    Unit{Dimension::kAcceleration, "m/s^2", 1.0},
+    Unit{Dimension::kArea, "m^2", 1.0},
+    Unit{Dimension::kArea, "mm^2", 1e-6},
+    Unit{Dimension::kArea, "cm^2", 1e-4},
+    Unit{Dimension::kArea, "in^2", kInch* kInch},
 };
 
 // What each dimension is called in messages, and its SI unit.
@@ -83,7 +94,7 @@ struct DimensionInfo {
 };
 
 DimensionInfo info(Dimension dimension) {
-  constexpr std::array<DimensionInfo, 7> kInfo{{
+  constexpr std::array<DimensionInfo, 11> kInfo{{
       {"a length", "m"},
       {"a force", "N"},
       {"a moment", "N m"},
@@ -91,6 +102,10 @@ DimensionInfo info(Dimension dimension) {
       {"an area moment of inertia", "m^4"},
       {"a flexural rigidity", "N m^2"},
       {"an angle", "rad"},
+      {"a force per unit length", "N/m"},
+      {"a density", "kg/m^3"},
+      {"an acceleration", "m/s^2"},
+      {"an area", "m^2"},
   }};
   return kInfo[static_cast<std::size_t>(dimension)];
 }

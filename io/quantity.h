@@ -12,13 +12,17 @@ namespace flexure::io {
 
 // (info() in quantity.cpp lists names and SI units in this order.)
 enum class Dimension {
-  kLength,        // m
-  kForce,         // N
-  kMoment,        // N m
-  kStress,        // Pa (moduli and strengths)
-  kSecondMoment,  // m^4 (area moment of inertia)
-  kRigidity,      // N m^2 (flexural rigidity EI)
-  kAngle,         // rad
+  kLength,          // m
+  kForce,           // N
+  kMoment,          // N m
+  kStress,          // Pa (moduli and strengths)
+  kSecondMoment,    // m^4 (area moment of inertia)
+  kRigidity,        // N m^2 (flexural rigidity EI)
+  kAngle,           // rad
+  kForcePerLength,  // N/m (distributed loads, pressures per unit length)
+  kDensity,         // kg/m^3
+  kAcceleration,    // m/s^2 (gravity)
+  kArea,            // m^2 (cross-section area)
 };
 
 // The SI unit of a dimension, e.g. "N m".

@@ -42,7 +42,8 @@ std::optional<double> uniform_EI(const SegmentChain& chain) {
   std::optional<double> EI;
   for (const Segment& segment : chain.segments) {
     const auto* flexible = std::get_if<FlexibleSegment>(&segment);
-    if (flexible == nullptr || !flexible->EI_profile.empty() || flexible->kappa0 != 0.0) {
+    if (flexible == nullptr || !flexible->EI_profile.empty() || flexible->kappa0 != 0.0 ||
+        flexible->beyond_elastica()) {
       return std::nullopt;
     }
     if (EI && *EI != flexible->EI) return std::nullopt;

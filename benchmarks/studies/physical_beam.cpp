@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <tuple>
@@ -27,8 +28,9 @@ struct Scaling {
   double length = 1.0;  // total arc length, m
   double lever = 1.0;
   double moment_to_si = 1.0;
+  double force_to_si = 1.0;
   Reaction root;                        // the clamp's reaction on the chain, in the solver's units
-  const SegmentChain* chain = nullptr;  // node loads (chains only)
+  const SegmentChain* chain = nullptr;  // node and distributed loads (the solver's chain)
 };
 
 // A dead load at a joint, at arc length s (per unit length) and position r (lever units).
@@ -65,23 +67,75 @@ std::vector<PointLoad> joint_loads(const Scaling& scale, const std::vector<Shape
   return loads;
 }
 
+// The distributed loads' force on the shape interval [a, b] (positions in lever units, arc
+// lengths per unit length): a dead load by the midpoint rule, a follower pressure p R90 (r_b - r_a)
+// exactly for the chord (docs/distributed-loads.md).
+std::pair<double, double> distributed_force(const Scaling& scale,
+                                            const ShapePoint& a,
+                                            const ShapePoint& b) {
+  if (scale.chain == nullptr || !scale.chain->has_distributed_loads()) return {0.0, 0.0};
+  const SegmentChain& chain = *scale.chain;
+  const double total = chain.total_length();
+  const double mid = 0.5 * (a.s + b.s) * total;
+  double start = 0.0;
+  for (const Segment& segment : chain.segments) {
+    const double length = std::visit([](const auto& seg) { return seg.length; }, segment);
+    if (mid <= start + length || &segment == &chain.segments.back()) {
+      const auto* f = std::get_if<FlexibleSegment>(&segment);
+      if (f == nullptr) return {0.0, 0.0};
+      const std::array<double, 2> q = f->q_at(mid - start);
+      const double du = (b.s - a.s) * total;
+      const double dx = (b.x - a.x) * scale.lever, dy = (b.y - a.y) * scale.lever;
+      return {q[0] * du - f->q_follower * dy, q[1] * du + f->q_follower * dx};
+    }
+    start += length;
+  }
+  return {0.0, 0.0};
+}
+
+struct InternalForces {
+  std::vector<double> moment;  // N m
+  std::vector<double> axial;   // N . t, N
+};
+
 // Bending moment at each shape point from the statics of the part between the clamp and the
-// point: M(s) = -R_M + r(s) x R_F - sum over joint loads before s of [M_k + (r_k - r(s)) x F_k],
-// with (R_F, R_M) the clamp's reaction. It holds for any end condition (the reaction carries the
-// tip's) and needs no derivative of the shape. Returned in N m.
-std::vector<double> moments_along(const std::vector<ShapePoint>& shape, const Scaling& scale) {
+// point: M(s) = -R_M + r(s) x R_F - sum over joint loads before s of [M_k + (r_k - r(s)) x F_k]
+// - integral over [0, s] of (r(u) - r(s)) x q(u) du, with (R_F, R_M) the clamp's reaction; and
+// the internal force N(s) = -R_F - (the loads on [0, s]). It holds for any end condition (the
+// reaction carries the tip's) and needs no derivative of the shape. The distributed loads'
+// integral runs over the shape's intervals (second order in their length; 1/2000 gives ~3e-7 of
+// q L^2). Returned in N m and N.
+InternalForces forces_along(const std::vector<ShapePoint>& shape, const Scaling& scale) {
   const std::vector<PointLoad> loads = joint_loads(scale, shape);
-  std::vector<double> moments;
-  moments.reserve(shape.size());
-  for (const ShapePoint& p : shape) {
+  InternalForces out;
+  out.moment.reserve(shape.size());
+  out.axial.reserve(shape.size());
+  double Fx_acc = 0.0, Fy_acc = 0.0, M_acc = 0.0;  // distributed: sum dF, sum r_mid x dF
+  for (std::size_t i = 0; i < shape.size(); ++i) {
+    const ShapePoint& p = shape[i];
+    if (i > 0 && p.s > shape[i - 1].s) {
+      const auto [fx, fy] = distributed_force(scale, shape[i - 1], p);
+      const double xm = 0.5 * (p.x + shape[i - 1].x) * scale.lever;
+      const double ym = 0.5 * (p.y + shape[i - 1].y) * scale.lever;
+      Fx_acc += fx;
+      Fy_acc += fy;
+      M_acc += cross(xm, ym, fx, fy);
+    }
     const double x = p.x * scale.lever, y = p.y * scale.lever;
     double m = -scale.root.M + cross(x, y, scale.root.Fx, scale.root.Fy);
+    double Nx = -scale.root.Fx - Fx_acc, Ny = -scale.root.Fy - Fy_acc;
     for (const PointLoad& load : loads) {
-      if (load.s < p.s) m -= load.M + cross(load.x - x, load.y - y, load.Fx, load.Fy);
+      if (load.s < p.s) {
+        m -= load.M + cross(load.x - x, load.y - y, load.Fx, load.Fy);
+        Nx -= load.Fx;
+        Ny -= load.Fy;
+      }
     }
-    moments.push_back(m * scale.moment_to_si);
+    m -= M_acc - cross(x, y, Fx_acc, Fy_acc);
+    out.moment.push_back(m * scale.moment_to_si);
+    out.axial.push_back((Nx * std::cos(p.theta) + Ny * std::sin(p.theta)) * scale.force_to_si);
   }
-  return moments;
+  return out;
 }
 
 // Largest value of f sampled at s (ascending), refined by the parabola through the largest sample
@@ -113,6 +167,9 @@ struct SectionSpan {
   double s0 = 0.0, s1 = 0.0;  // per unit length
   std::optional<double> section_modulus;
   bool flexible = true;
+  // Extensible segments: the axial stress N/A joins the bending stress, N/EA is the strain.
+  std::optional<double> area;  // m^2
+  std::optional<double> EA;    // N
 };
 
 PhysicalResults evaluate(const BeamSolution& solution,
@@ -152,7 +209,8 @@ PhysicalResults evaluate(const BeamSolution& solution,
       out.max_stress_at = out.max_moment_at;
     }
   } else {
-    const std::vector<double> moments = moments_along(shape, scale);
+    const InternalForces forces = forces_along(shape, scale);
+    const std::vector<double>& moments = forces.moment;
     std::vector<double> s(shape.size()), magnitude(shape.size()), stress(shape.size(), 0.0);
     std::vector<int> piece(shape.size(), 0);
     for (std::size_t i = 0; i < shape.size(); ++i) {
@@ -162,8 +220,13 @@ PhysicalResults evaluate(const BeamSolution& solution,
       for (std::size_t k = 0; k < spans.size(); ++k) {
         const double eps = 1e-12;
         if (shape[i].s < spans[k].s0 - eps || shape[i].s > spans[k].s1 + eps) continue;
+        if (spans[k].EA) {
+          const double strain = std::fabs(forces.axial[i]) / *spans[k].EA;
+          out.max_axial_strain = std::max(out.max_axial_strain.value_or(0.0), strain);
+        }
         if (spans[k].section_modulus) {
-          const double sigma = magnitude[i] / *spans[k].section_modulus;
+          double sigma = magnitude[i] / *spans[k].section_modulus;
+          if (spans[k].EA && spans[k].area) sigma += std::fabs(forces.axial[i]) / *spans[k].area;
           if (sigma >= stress[i]) {
             stress[i] = sigma;
             piece[i] = static_cast<int>(k);
@@ -173,6 +236,7 @@ PhysicalResults evaluate(const BeamSolution& solution,
         }
       }
     }
+    for (double N : forces.axial) out.max_axial_force = std::max(out.max_axial_force, std::fabs(N));
     std::vector<int> one_piece(shape.size(), 0);  // the moment is smooth across joints
     const auto [m, m_at] = refined_max(s, magnitude, one_piece);
     out.max_moment = m;
@@ -190,6 +254,7 @@ PhysicalResults evaluate(const BeamSolution& solution,
       p.y = shape[i].y * scale.length;
       p.theta = shape[i].theta;
       p.moment = moments[i];
+      p.axial_force = forces.axial[i];
       if (stresses) p.stress = stress[i];
       out.shape.push_back(p);
     }
@@ -257,6 +322,30 @@ void PhysicalCantilever::validate() const {
           "section as --width and --thickness instead of --I");
     }
   }
+  require_finite(qx, "--qx (distributed load along the beam, N/m)");
+  require_finite(qy, "--qy (distributed load across the beam, N/m)");
+  require_finite(q_follower, "--pressure (follower pressure, N/m)");
+  if ((density || extensible) && !area()) {
+    throw InvalidInput(
+        "--density and --extensible need the section's area: give the section as --width and "
+        "--thickness");
+  }
+  if (density) require_positive(*density, "--density (kg/m^3)");
+  if (!(std::isfinite(g) && g >= 0.0)) {
+    throw InvalidInput(fmt::format("--g must be a finite number >= 0 (got {:g})", g));
+  }
+  if (extensible) {
+    if (!nu) throw InvalidInput("--extensible needs Poisson's ratio --nu");
+    if (!(*nu > -1.0 && *nu < 0.5)) {
+      throw InvalidInput(fmt::format("--nu must be in (-1, 0.5) (got {:g})", *nu));
+    }
+    if (!(shear_coefficient > 0.0 && shear_coefficient <= 1.0)) {
+      throw InvalidInput(
+          fmt::format("--shear-coefficient must be in (0, 1] (got {:g})", shear_coefficient));
+    }
+  } else if (nu) {
+    throw InvalidInput("--nu is used with --extensible only");
+  }
   const double EI = flexural_rigidity();
   if (!(std::isfinite(EI) && EI > 0.0)) {
     throw InvalidInput(
@@ -281,6 +370,11 @@ BeamProblem PhysicalCantilever::to_problem(BeamProblem problem) const {
   problem.mu = mu;
   problem.chain.reset();
   problem.boundary = EndCondition::kFree;
+  if (beyond_elastica()) {
+    // Distributed loads or extension: the one-segment chain (l = 1, EI = 1) carries them.
+    problem.chain = to_chain(EndCondition::kFree);
+    return problem;
+  }
   for (const auto& [value, name] : {std::pair{alpha2, "alpha2 = Fy L^2/EI"},
                                     std::pair{Fx * force_scale, "Fx L^2/EI"},
                                     std::pair{mu, "mu = M L/EI"}}) {
@@ -306,6 +400,16 @@ SegmentChain PhysicalCantilever::to_chain(EndCondition end,
   const double force_scale = length * length / EI;  // F l^2/EI (Howell eq. 2.83)
   SegmentChain chain =
       uniform_cantilever(EndLoad{Fx * force_scale, Fy * force_scale, M * length / EI});
+  // Distributed loads q L^3/EI, rigidities EA L^2/EI (docs/distributed-loads.md, extensible.md).
+  auto& segment = std::get<FlexibleSegment>(chain.segments[0]);
+  segment.qx = qx * force_scale * length;
+  segment.qy = total_qy() * force_scale * length;
+  segment.q_follower = q_follower * force_scale * length;
+  if (extensible) {
+    const double A = area().value_or(0.0);
+    segment.EA = E * A * force_scale;
+    segment.GAs = shear_coefficient * E / (2.0 * (1.0 + *nu)) * A * force_scale;
+  }
   for (const auto& [value, name] : {std::pair{chain.tip_load.Fx, "Fx L^2/EI"},
                                     std::pair{chain.tip_load.Fy, "Fy L^2/EI"},
                                     std::pair{chain.tip_load.M, "M L/EI"}}) {
@@ -342,6 +446,13 @@ PhysicalBeamSolution solve_physical_beam(BeamMethod method,
                                          BeamProblem problem) {
   problem = beam.to_problem(problem);
   const int shape_points = problem.shape_points;
+  if (problem.chain && beam.beyond_elastica() &&
+      (method == BeamMethod::kElliptic || method == BeamMethod::kPrbm)) {
+    throw InvalidInput(fmt::format(
+        "a distributed load, self-weight or an extensible beam is solved by the shooting method "
+        "(auto chooses it; the chain method takes dead loads), not by the {} method",
+        to_string(method)));
+  }
   if (problem.chain && (method == BeamMethod::kElliptic || method == BeamMethod::kPrbm)) {
     throw InvalidInput(fmt::format(
         "a tip load along the beam only (Fy = 0, Fx = {:g} N) has no Howell's load ratio n; the "
@@ -360,12 +471,19 @@ PhysicalBeamSolution solve_physical_beam(BeamMethod method,
   }
   Scaling scale;
   scale.length = beam.length;
-  scale.moment_to_si = beam.flexural_rigidity() / beam.length;  // M = mu EI / L
-  scale.root = out.solution.reactions;
+  scale.moment_to_si = beam.flexural_rigidity() / beam.length;                 // M = mu EI / L
+  scale.force_to_si = beam.flexural_rigidity() / (beam.length * beam.length);  // F L^2/EI
+  // A chain problem's reactions are the chain's (its distributed loads enter the statics).
+  scale.root = problem.chain ? out.solution.chain_reactions : out.solution.reactions;
+  if (problem.chain) scale.chain = &*problem.chain;
   SectionSpan span;
   span.s0 = 0.0;
   span.s1 = 1.0;
   if (beam.thickness) span.section_modulus = beam.second_moment() / (0.5 * *beam.thickness);
+  if (beam.extensible) {
+    span.area = beam.area();
+    span.EA = beam.E * beam.area().value_or(0.0);
+  }
   out.physical = evaluate(out.solution, scale, {span}, beam.yield_strength, shape_points, step);
   if (out.solution.method != BeamMethod::kPrbm) thin_shape(out.solution, shape_points, step);
   return out;
@@ -400,6 +518,10 @@ PhysicalBeamSolution solve_physical_chain(BeamMethod method,
     const std::optional<io::SegmentSection>& section = file.sections[k];
     if (section && section->thickness) {
       span.section_modulus = section->I / (0.5 * *section->thickness);
+    }
+    if (const auto* f = std::get_if<FlexibleSegment>(&chain.segments[k]); f && f->extensible()) {
+      span.EA = f->EA;
+      if (section) span.area = section->area;
     }
     spans.push_back(span);
   }

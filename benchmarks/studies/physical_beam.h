@@ -26,6 +26,28 @@ struct PhysicalCantilever {
   double Fy = 0.0;                       // N
   double M = 0.0;                        // N m
   std::optional<double> yield_strength;  // Pa
+  // Distributed loads and extension (docs/distributed-loads.md, docs/extensible.md); any of them
+  // makes the beam a one-segment chain (shooting or chain method).
+  double qx = 0.0;                // dead load per unit length along the undeformed beam, N/m
+  double qy = 0.0;                // dead load per unit length perpendicular to it, N/m
+  double q_follower = 0.0;        // pressure along the deflected normal, N/m
+  std::optional<double> density;  // kg/m^3: self-weight rho A g along -y (needs the rectangle)
+  double g = 9.80665;             // m/s^2
+  bool extensible = false;        // EA = E A, GAs = k E A / (2 (1 + nu)) (needs the rectangle)
+  std::optional<double> nu;       // Poisson's ratio (extensible)
+  double shear_coefficient = 5.0 / 6.0;  // Timoshenko's k of the rectangle
+
+  // Whether any of the above is given.
+  bool beyond_elastica() const {
+    return qx != 0.0 || qy != 0.0 || q_follower != 0.0 || density.has_value() || extensible;
+  }
+  // width thickness, where the section is a rectangle.
+  std::optional<double> area() const {
+    if (width && thickness) return *width * *thickness;
+    return std::nullopt;
+  }
+  // The dead load per unit length including the self-weight, N/m.
+  double total_qy() const { return qy - (density ? *density * area().value_or(0.0) * g : 0.0); }
 
   // Throws InvalidInput naming the bad field: lengths, modulus and section > 0 and finite, I or
   // (width and thickness) but not both, finite loads, a yield strength > 0 with a section to
@@ -53,20 +75,23 @@ struct PhysicalShapePoint {
   double y = 0.0;       // m
   double theta = 0.0;   // rad
   double moment = 0.0;  // bending moment, N m (counter-clockwise on the part nearer the clamp)
-  std::optional<double> stress;  // |M| c / I, Pa, where the section is known
+  std::optional<double> stress;  // |M| c / I (+ |N_a|/A for an extensible beam), Pa
+  double axial_force = 0.0;      // N_a = N . t, N (tension positive)
 };
 
 struct PhysicalResults {
-  double length = 0.0;                  // total arc length, m
-  double tip_x = 0.0;                   // m
-  double tip_y = 0.0;                   // m
-  double theta0 = 0.0;                  // tip angle, rad
-  double root_moment = 0.0;             // bending moment at the clamp, N m
-  double max_moment = 0.0;              // largest |bending moment| along the beam, N m
-  double max_moment_at = 0.0;           // arc length where it acts, m
-  std::optional<double> max_stress;     // largest M c / I, Pa (needs every flexible section)
-  std::optional<double> max_stress_at;  // m
-  std::optional<double> safety_factor;  // yield strength / max_stress (null when unloaded)
+  double length = 0.0;                     // total arc length, m
+  double tip_x = 0.0;                      // m
+  double tip_y = 0.0;                      // m
+  double theta0 = 0.0;                     // tip angle, rad
+  double root_moment = 0.0;                // bending moment at the clamp, N m
+  double max_moment = 0.0;                 // largest |bending moment| along the beam, N m
+  double max_moment_at = 0.0;              // arc length where it acts, m
+  std::optional<double> max_stress;        // largest M c / I, Pa (needs every flexible section)
+  std::optional<double> max_stress_at;     // m
+  std::optional<double> safety_factor;     // yield strength / max_stress (null when unloaded)
+  double max_axial_force = 0.0;            // largest |N . t| along the beam, N
+  std::optional<double> max_axial_strain;  // largest |N . t| / EA (extensible segments only)
   std::optional<double> yield_strength;
   // How the maximum was found: "shape" (sampled along the solved shape, refined by a parabola
   // through the largest sample and its neighbours) or "ends" (the PRBM, which has no shape: the

@@ -3,8 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
+#include <variant>
+#include <vector>
 
 #include "flexure/solver/common/errors.h"
 
@@ -46,7 +49,29 @@ std::vector<int> split_elements(const std::vector<double>& lengths, int total) {
 
 }  // namespace
 
+namespace {
+double segment_start(const SegmentChain& chain, int segment) {
+  double s = 0.0;
+  for (int k = 0; k < segment; ++k) {
+    s += std::visit([](const auto& seg) { return seg.length; }, chain.segments[k]);
+  }
+  return s;
+}
+}  // namespace
+
 ChainDiscretisation discretise(const SegmentChain& chain, int flexible_elements) {
+  for (int k = 0; k < chain.segment_count(); ++k) {
+    const auto* f = std::get_if<FlexibleSegment>(&chain.segments[k]);
+    if (f == nullptr) continue;
+    if (f->q_follower != 0.0 || f->extensible() || f->shear_flexible()) {
+      throw InvalidInput(fmt::format(
+          "segment {} {}, which the chain algorithm does not model (it lumps dead distributed "
+          "loads only); use the shooting method (--method shooting)",
+          k + 1,
+          f->q_follower != 0.0 ? "carries a follower pressure"
+                               : "is extensible or shear-flexible (finite EA or GAs)"));
+    }
+  }
   std::vector<double> flexible_lengths;
   for (const Segment& seg : chain.segments) {
     if (const auto* f = std::get_if<FlexibleSegment>(&seg)) flexible_lengths.push_back(f->length);
@@ -110,6 +135,28 @@ ChainDiscretisation discretise(const SegmentChain& chain, int flexible_elements)
     d.loads.fx[j] += load.Fx;
     d.loads.fy[j] += load.Fy;
     d.loads.m[j] += load.M;
+  }
+  // Dead distributed loads lumped on the element nodes: each element's share of the load goes to
+  // its two end nodes in the ratio of the load's first moment about them (the statically
+  // equivalent split of a linear load: for a constant q, q L/2 each; on the clamp's node it is
+  // carried by the clamp). The element's moment error is O(L^2) (docs/distributed-loads.md).
+  for (int e = 0; e < E; ++e) {
+    const ChainElement& el = d.elements[e];
+    if (el.rigid) continue;
+    const auto& f = std::get<FlexibleSegment>(chain.segments[el.segment]);
+    if (!f.has_dead_load()) continue;
+    const double s0 = el.s_start - segment_start(chain, el.segment);
+    const double L = el.length;
+    // Simpson's rule of q and q (s - s0)/L over the element (exact for a linear q on the element;
+    // the element count is split at stations only approximately, so this is second order).
+    const std::array<double, 2> qa = f.q_at(s0), qm = f.q_at(s0 + 0.5 * L), qb = f.q_at(s0 + L);
+    for (int c = 0; c < 2; ++c) {
+      const double total = L / 6.0 * (qa[c] + 4.0 * qm[c] + qb[c]);
+      const double far = L / 6.0 * (2.0 * qm[c] + qb[c]);  // int q (s - s0)/L ds
+      std::vector<double>& f_axis = c == 0 ? d.loads.fx : d.loads.fy;
+      f_axis[e] += total - far;
+      f_axis[e + 1] += far;
+    }
   }
   d.loads.fx[E] += chain.tip_load.Fx;
   d.loads.fy[E] += chain.tip_load.Fy;

@@ -400,6 +400,7 @@ std::vector<double> stations_held(const SegmentChain& chain,
                                   const Held& held) {
   options.validate();
   chain.validate();
+  chain.require_elastica_only("the stability analysis");
   check_support_reaction(chain, support_reaction, held);
   const std::size_t n = chain.segments.size();
   const auto N = segment_forces(chain, support_reaction);
@@ -608,6 +609,7 @@ Stability equilibrium_stability(const SegmentChain& chain,
                                 const StabilityOptions& options) {
   options.validate();
   chain.validate();
+  chain.require_elastica_only("the stability analysis");
   check_support_reaction(chain, support_reaction);
   return judge(chain, support_reaction, shape, options).stability;
 }
@@ -621,6 +623,7 @@ Stability stability_from_shape_function(const SegmentChain& chain,
                                         const Held& held) {
   options.validate();
   chain.validate();
+  chain.require_elastica_only("the stability analysis");
   check_support_reaction(chain, support_reaction, held);
   StabilityOptions o = options;
   for (;;) {
@@ -667,6 +670,7 @@ std::vector<double> second_variation_eigenvalues(const SegmentChain& chain,
                                                  const StabilityOptions& options) {
   options.validate();
   chain.validate();
+  chain.require_elastica_only("the stability analysis");
   check_support_reaction(chain, support_reaction);
   require_conservative_and_flexible(chain);
   if (count < 0) throw InvalidInput(fmt::format("eigenvalue count must be >= 0 (got {})", count));
@@ -681,6 +685,7 @@ DiscreteSecondVariation discrete_second_variation(const SegmentChain& chain,
                                                   const std::vector<ShapePoint>& shape,
                                                   int stride) {
   chain.validate();
+  chain.require_elastica_only("the stability analysis");
   check_support_reaction(chain, support_reaction);
   require_conservative_and_flexible(chain);
   if (stride != 1 && stride != 2 && stride != 4) {

@@ -198,6 +198,7 @@ JacobiSecondVariation::JacobiSecondVariation(const SegmentChain& chain,
     : chain_(chain), options_(options) {
   options_.validate();
   chain_.validate();
+  chain_.require_elastica_only("the Jacobi stability test");
   require_finite(root_reaction.Fx, "root reaction Fx");
   require_finite(root_reaction.Fy, "root reaction Fy");
   require_finite(root_reaction.M, "root reaction M");
@@ -214,6 +215,7 @@ JacobiSecondVariation::JacobiSecondVariation(const SegmentChain& chain,
     : chain_(chain), options_(options), theta_(std::move(theta)) {
   options_.validate();
   chain_.validate();
+  chain_.require_elastica_only("the Jacobi stability test");
   require_finite(root_reaction.Fx, "root reaction Fx");
   require_finite(root_reaction.Fy, "root reaction Fy");
   Nx0_ = -root_reaction.Fx;

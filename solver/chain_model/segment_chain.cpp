@@ -35,6 +35,74 @@ double FlexibleSegment::EI_at(double s_local) const {
   return (1.0 - w) * EI_profile[i] + w * EI_profile[i + 1];
 }
 
+std::array<double, 2> FlexibleSegment::q_at(double s_local) const {
+  if (q_profile.empty()) return {qx, qy};
+  const int stations = static_cast<int>(q_profile.size());
+  if (stations == 1) return q_profile.front();
+  const double t = std::clamp(s_local / length, 0.0, 1.0) * (stations - 1);
+  const int i = std::min(static_cast<int>(t), stations - 2);
+  const double w = t - i;
+  return {(1.0 - w) * q_profile[i][0] + w * q_profile[i + 1][0],
+          (1.0 - w) * q_profile[i][1] + w * q_profile[i + 1][1]};
+}
+
+std::array<double, 2> FlexibleSegment::q_resultant(double s_local) const {
+  const double s = std::clamp(s_local, 0.0, length);
+  if (q_profile.empty()) return {qx * s, qy * s};
+  if (q_profile.size() == 1) return {q_profile[0][0] * s, q_profile[0][1] * s};
+  // Trapezoids over the whole station intervals before s, then the partial one (exact for the
+  // piecewise-linear profile).
+  const int intervals = static_cast<int>(q_profile.size()) - 1;
+  const double h = length / intervals;
+  std::array<double, 2> sum{0.0, 0.0};
+  int i = 0;
+  for (; i < intervals && (i + 1) * h <= s; ++i) {
+    for (int c = 0; c < 2; ++c) sum[c] += 0.5 * h * (q_profile[i][c] + q_profile[i + 1][c]);
+  }
+  const double rest = s - i * h;
+  if (i < intervals && rest > 0.0) {
+    const std::array<double, 2> q_end = q_at(s);
+    for (int c = 0; c < 2; ++c) sum[c] += 0.5 * rest * (q_profile[i][c] + q_end[c]);
+  }
+  return sum;
+}
+
+bool SegmentChain::has_distributed_loads() const {
+  return std::any_of(segments.begin(), segments.end(), [](const Segment& seg) {
+    const auto* f = std::get_if<FlexibleSegment>(&seg);
+    return f != nullptr && f->has_distributed_load();
+  });
+}
+
+bool SegmentChain::has_follower_pressure() const {
+  return std::any_of(segments.begin(), segments.end(), [](const Segment& seg) {
+    const auto* f = std::get_if<FlexibleSegment>(&seg);
+    return f != nullptr && f->q_follower != 0.0;
+  });
+}
+
+bool SegmentChain::has_extensible_segments() const {
+  return std::any_of(segments.begin(), segments.end(), [](const Segment& seg) {
+    const auto* f = std::get_if<FlexibleSegment>(&seg);
+    return f != nullptr && (f->extensible() || f->shear_flexible());
+  });
+}
+
+void SegmentChain::require_elastica_only(const char* who) const {
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const auto* f = std::get_if<FlexibleSegment>(&segments[i]);
+    if (f == nullptr || !f->beyond_elastica()) continue;
+    const char* what = f->has_distributed_load()
+                           ? "carries a distributed load"
+                           : "is extensible or shear-flexible (finite EA or GAs)";
+    throw InvalidInput(fmt::format(
+        "segment {} {}, which {} does not model; use the shooting method (--method shooting)",
+        i + 1,
+        what,
+        who));
+  }
+}
+
 const char* to_string(EndCondition end) {
   switch (end) {
     case EndCondition::kFree:
@@ -109,6 +177,35 @@ void SegmentChain::validate() const {
       if (f->EI_profile.size() == 1) {
         throw InvalidInput(
             fmt::format("{} (flexible): EI_profile needs at least 2 stations (got 1)", where));
+      }
+      require_finite_field(f->qx, where, "qx");
+      require_finite_field(f->qy, where, "qy");
+      require_finite_field(f->q_follower, where, "q_follower");
+      if (!(f->EA > 0.0) || std::isnan(f->EA)) {
+        throw InvalidInput(fmt::format(
+            "{} (flexible): EA must be > 0 (got {}; infinity = inextensible)", where, f->EA));
+      }
+      if (!(f->GAs > 0.0) || std::isnan(f->GAs)) {
+        throw InvalidInput(fmt::format(
+            "{} (flexible): GAs must be > 0 (got {}; infinity = shear-rigid)", where, f->GAs));
+      }
+      if (f->q_profile.size() == 1) {
+        throw InvalidInput(
+            fmt::format("{} (flexible): q_profile needs at least 2 stations (got 1)", where));
+      }
+      for (std::size_t j = 0; j < f->q_profile.size(); ++j) {
+        for (int c = 0; c < 2; ++c) {
+          if (!std::isfinite(f->q_profile[j][c])) {
+            throw InvalidInput(
+                fmt::format("{} (flexible): q_profile[{}] must be finite numbers (got {})",
+                            where,
+                            j,
+                            f->q_profile[j][c]));
+          }
+        }
+      }
+      if (!f->q_profile.empty() && (f->qx != 0.0 || f->qy != 0.0)) {
+        throw InvalidInput(fmt::format("{} (flexible): give q or q_profile, not both", where));
       }
       for (std::size_t j = 0; j < f->EI_profile.size(); ++j) {
         const double v = f->EI_profile[j];
@@ -230,6 +327,17 @@ SegmentChain SegmentChain::at_load_factor(double lambda) const {
   out.tip_load.Fy *= lambda;
   out.tip_load.M *= lambda;
   out.tip_load.follower *= lambda;
+  for (Segment& seg : out.segments) {
+    if (auto* f = std::get_if<FlexibleSegment>(&seg)) {
+      f->qx *= lambda;
+      f->qy *= lambda;
+      f->q_follower *= lambda;
+      for (auto& q : f->q_profile) {
+        q[0] *= lambda;
+        q[1] *= lambda;
+      }
+    }
+  }
   const ChainPose start = unloaded_tip();
   const ChainPose target = prescribed_tip();
   out.prescribed.x = start.x + lambda * (target.x - start.x);

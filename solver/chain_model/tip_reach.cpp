@@ -34,6 +34,8 @@ ChainPose straightened_tip(const SegmentChain& chain) {
 double reachable_load_factor(const SegmentChain& chain) {
   const PrescribedMask mask = prescribed_mask(chain.end);
   if (!mask.x && !mask.y) return 1.0;
+  // An extensible segment stretches: any point can be reached (at a large enough force).
+  if (chain.has_extensible_segments()) return 1.0;
   const double L = chain.total_length();
   const ChainPose p0 = chain.unloaded_tip();
   const ChainPose p1 = chain.prescribed_tip();

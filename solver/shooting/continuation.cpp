@@ -80,8 +80,11 @@ Reaction tip_load_of(const ShootingProblem& problem,
                      const Eigen::VectorXd& z,
                      double lambda,
                      const TipState& tip) {
-  const Eigen::Vector2d N_tip = problem.forces(z, lambda).N.back();
-  return Reaction{N_tip.x(), N_tip.y(), tip.m};
+  // The integrated N at the tip: with distributed loads N varies along the last segment.
+  (void)problem;
+  (void)z;
+  (void)lambda;
+  return Reaction{tip.N.x(), tip.N.y(), tip.m};
 }
 
 // A corrected point of the path and its evaluation (with dg/dz and dg/dlambda).
@@ -885,6 +888,22 @@ bool shape_with_moments(const ShootingProblem& problem,
                         std::vector<double>& moment,
                         std::string& error) {
   const SegmentChain& chain = problem.chain();
+  if (chain.has_distributed_loads()) {
+    // N varies along the segments: the moment is the integrated state (docs/distributed-loads.md).
+    TipState tip;
+    std::vector<double> moments;
+    shape.clear();
+    integrator.set_shape_moments(&moments);
+    const bool ok = problem.integrate_solution(z, lambda, integrator, tip, error, &s, &shape);
+    integrator.set_shape_moments(nullptr);
+    if (!ok) return false;
+    if (shape.size() != s.size() || moments.size() != s.size()) {
+      error = "the shape integration returned fewer points than asked for";
+      return false;
+    }
+    moment = std::move(moments);
+    return true;
+  }
   const ChainForces f = problem.forces(z, lambda);
   const int n = chain.segment_count();
   // Arc length of every node 1..n-1 where the internal force or the moment changes.

@@ -282,6 +282,7 @@ bool ElasticaIntegrator::integrate(
     if (!want_shape) return;
     while (next_shape < shape_s->size() && (*shape_s)[next_shape] < s_limit) {
       shape->push_back(ShapePoint{(*shape_s)[next_shape], state[kX], state[kY], state[kTheta]});
+      if (shape_moment_ != nullptr) shape_moment_->push_back(state[kM]);
       ++next_shape;
     }
   };
@@ -294,7 +295,7 @@ bool ElasticaIntegrator::integrate(
     for (int i = 0; i < Ns; ++i) {
       for (int k = 0; k < kStates; ++k) y[kStates * (i + 1) + k] = S(k, i);
     }
-    ShapeCursor cursor{want_shape ? shape_s : nullptr, shape, next_shape};
+    ShapeCursor cursor{want_shape ? shape_s : nullptr, shape, next_shape, shape_moment_};
     const long max_steps =
         step_limit_ > 0 ? std::min(options_.max_steps, step_limit_ - d.steps) : options_.max_steps;
     const bool ok = d.explicit_backend->integrate(
@@ -309,11 +310,24 @@ bool ElasticaIntegrator::integrate(
   };
 
   d.piece.dN.resize(Ns);
+  d.piece.dload_factor.resize(Ns);
+  d.piece.load_factor = forces.load_factor;
+  for (int i = 0; i < Ns; ++i) d.piece.dload_factor[i] = derivatives[i].dload_factor;
+  // G: the follower pressures' resultant accumulated since the start of these pieces (they start
+  // at the clamp whenever a follower pressure acts: ShootingProblem makes no cuts then), and dG/dp.
+  Eigen::Vector2d G = Eigen::Vector2d::Zero();
+  Eigen::Matrix<double, 2, Eigen::Dynamic> dG =
+      Eigen::Matrix<double, 2, Eigen::Dynamic>::Zero(2, Ns);
+  Eigen::Vector2d N_end = Eigen::Vector2d::Zero();
+  Eigen::Matrix<double, 2, Eigen::Dynamic> dN_end =
+      Eigen::Matrix<double, 2, Eigen::Dynamic>::Zero(2, Ns);
+  const double lf = forces.load_factor;
   for (const IntegrationPiece& piece : pieces) {
     const int j = piece.segment;
-    const Eigen::Vector2d N = forces.N[j];
+    const Eigen::Vector2d N = forces.N[j] - G;
     for (int i = 0; i < Ns; ++i) {
-      d.piece.dN[i] = derivatives[i].dN.empty() ? Eigen::Vector2d::Zero() : derivatives[i].dN[j];
+      d.piece.dN[i] =
+          (derivatives[i].dN.empty() ? Eigen::Vector2d::Zero() : derivatives[i].dN[j]) - dG.col(i);
     }
     if (const auto* rigid = std::get_if<RigidSegment>(&chain.segments[j])) {
       // A straight link: theta jumps by the offset, the moment changes by L (N_x sin - N_y cos).
@@ -325,6 +339,9 @@ bool ElasticaIntegrator::integrate(
           const double ds = std::max(0.0, (*shape_s)[next_shape] - piece.segment_start);
           shape->push_back(
               ShapePoint{(*shape_s)[next_shape], state[kX] + ds * c, state[kY] + ds * sn, th});
+          if (shape_moment_ != nullptr) {
+            shape_moment_->push_back(state[kM] + ds * (N.x() * sn - N.y() * c));
+          }
           ++next_shape;
         }
       }
@@ -339,12 +356,57 @@ bool ElasticaIntegrator::integrate(
       state[kY] += L * sn;
       state[kM] += L * (N.x() * sn - N.y() * c);
       state[kTheta] = th;
+      N_end = N;
+      for (int i = 0; i < Ns; ++i) dN_end.col(i) = d.piece.dN[i];
     } else {
       const auto& flex = std::get<FlexibleSegment>(chain.segments[j]);
       d.piece.segment = &flex;
       d.piece.segment_start = piece.segment_start;
       d.piece.Nx = N.x();
       d.piece.Ny = N.y();
+      d.piece.extended = flex.beyond_elastica();
+      d.piece.inv_EA = flex.extensible() ? 1.0 / flex.EA : 0.0;
+      d.piece.inv_GA = flex.shear_flexible() ? 1.0 / flex.GAs : 0.0;
+      if (d.piece.extended && options_.backend == Backend::kCvodes) {
+        error = fmt::format(
+            "segment {} carries a distributed load or is extensible: the cvodes integrator does "
+            "not support it (use rk8pd, dormand-prince or arkode-erk)",
+            j + 1);
+        return false;
+      }
+      const double p = flex.q_follower;
+      // The follower anchor: on this piece G(s) = G_a + lf p R90 (r(s) - r_a), so the constant
+      // part of N is N - G_a + lf p R90 r_a, R90 (x, y) = (-y, x).
+      // Follower pressure p: on a sub-piece from r_a, G(s) = G_a + lf p R90 (r(s) - r_a), so the
+      // constant part of N(s) (reissner_force) is N[j] - G_a + lf p R90 r_a, R90 (x, y) = (-y, x).
+      auto dN_start = [&](int i) -> Eigen::Vector2d {
+        return derivatives[i].dN.empty() ? Eigen::Vector2d::Zero() : derivatives[i].dN[j];
+      };
+      auto set_anchor = [&]() {
+        if (p == 0.0) return;
+        const Eigen::Vector2d Nc =
+            forces.N[j] - G + lf * p * Eigen::Vector2d(-state[kY], state[kX]);
+        d.piece.Nx = Nc.x();
+        d.piece.Ny = Nc.y();
+        for (int i = 0; i < Ns; ++i) {
+          const double dlf = derivatives[i].dload_factor;
+          d.piece.dN[i] = dN_start(i) - dG.col(i) +
+                          dlf * p * Eigen::Vector2d(-state[kY], state[kX]) +
+                          lf * p * Eigen::Vector2d(-S(kY, i), S(kX, i));
+        }
+      };
+      // G at the end r_b of the sub-piece: G_a + lf p R90 (r_b - r_a) = N[j] - N_c + lf p R90 r_b.
+      auto close_anchor = [&]() {
+        if (p == 0.0) return;
+        const Eigen::Vector2d Nc(d.piece.Nx, d.piece.Ny);
+        G = forces.N[j] - Nc + lf * p * Eigen::Vector2d(-state[kY], state[kX]);
+        for (int i = 0; i < Ns; ++i) {
+          const double dlf = derivatives[i].dload_factor;
+          dG.col(i) = dN_start(i) - d.piece.dN[i] +
+                      dlf * p * Eigen::Vector2d(-state[kY], state[kX]) +
+                      lf * p * Eigen::Vector2d(-S(kY, i), S(kX, i));
+        }
+      };
       // EI tabulated: integrate station to station so that the kinks in EI(s) fall on sub-piece
       // ends, where CVODES restarts.
       std::vector<double> cuts{piece.begin};
@@ -354,6 +416,16 @@ bool ElasticaIntegrator::integrate(
           const double station = flex.length * p / intervals;
           if (station > piece.begin && station < piece.end) cuts.push_back(station);
         }
+      }
+      if (flex.q_profile.size() >= 2) {
+        // The dead load's stations too: its kinks fall on sub-piece ends.
+        const int intervals = static_cast<int>(flex.q_profile.size()) - 1;
+        for (int p = 1; p < intervals; ++p) {
+          const double station = flex.length * p / intervals;
+          if (station > piece.begin && station < piece.end) cuts.push_back(station);
+        }
+        std::sort(cuts.begin(), cuts.end());
+        cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
       }
       cuts.push_back(piece.end);
       for (std::size_t p = 0; p + 1 < cuts.size(); ++p) {
@@ -365,7 +437,9 @@ bool ElasticaIntegrator::integrate(
           return false;
         }
         if (options_.backend != Backend::kCvodes) {
+          set_anchor();
           if (!explicit_piece(s_a, s_b)) return false;
+          close_anchor();
           continue;
         }
         double* yv = N_VGetArrayPointer(d.y);
@@ -416,6 +490,7 @@ bool ElasticaIntegrator::integrate(
           }
           const double* yo = N_VGetArrayPointer(d.y);
           shape->push_back(ShapePoint{s_out, yo[kX], yo[kY], yo[kTheta]});
+          if (shape_moment_ != nullptr) shape_moment_->push_back(yo[kM]);
           ++next_shape;
         }
         if (beyond(s_b, t)) {
@@ -447,6 +522,22 @@ bool ElasticaIntegrator::integrate(
         }
       }
     }
+    if (const auto* flex = std::get_if<FlexibleSegment>(&chain.segments[j])) {
+      // N at the end of the piece: N[j] - lf Q_j(end) - G (G updated by close_anchor).
+      N_end = forces.N[j] - G;
+      for (int i = 0; i < Ns; ++i) {
+        dN_end.col(i) =
+            (derivatives[i].dN.empty() ? Eigen::Vector2d::Zero() : derivatives[i].dN[j]) -
+            dG.col(i);
+      }
+      if (flex->has_dead_load()) {
+        const std::array<double, 2> Q = flex->q_resultant(piece.end);
+        N_end -= lf * Eigen::Vector2d(Q[0], Q[1]);
+        for (int i = 0; i < Ns; ++i) {
+          dN_end.col(i) -= derivatives[i].dload_factor * Eigen::Vector2d(Q[0], Q[1]);
+        }
+      }
+    }
     if (!state.allFinite()) {
       error = fmt::format("integration produced a non-finite state on segment {}", j);
       return false;
@@ -468,6 +559,8 @@ bool ElasticaIntegrator::integrate(
   end.theta = state[kTheta];
   end.m = state[kM];
   end.sensitivity = S;
+  end.N = N_end;
+  end.N_sensitivity = dN_end;
   return true;
 }
 

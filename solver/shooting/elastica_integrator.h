@@ -27,9 +27,14 @@ namespace flexure {
 
 // Internal loads along the chain for one evaluation.
 struct ChainForces {
-  double m0 = 0.0;                  // bending moment at the root, m(0)
-  std::vector<Eigen::Vector2d> N;   // internal force on segment j (size n)
+  double m0 = 0.0;  // bending moment at the root, m(0)
+  // Internal force at the near end of segment j (size n) from the dead loads: constant on the
+  // segment without distributed loads; with them N(s) = N[j] - load_factor Q_j(s) - G(s), Q_j the
+  // segment's dead-load resultant from its start and G the follower pressures' resultant from the
+  // root, which the integrator accumulates (docs/distributed-loads.md).
+  std::vector<Eigen::Vector2d> N;
   std::vector<double> moment_drop;  // m(after node k) = m(before) - moment_drop[k]; size n+1
+  double load_factor = 0.0;         // the factor of the segments' distributed loads
 };
 
 // Derivatives of ChainForces with respect to one shooting parameter (the parameter's effect on
@@ -37,6 +42,7 @@ struct ChainForces {
 struct ForceDerivative {
   std::vector<Eigen::Vector2d> dN;   // size n (empty = all zero)
   std::vector<double> dmoment_drop;  // size n+1 (empty = all zero)
+  double dload_factor = 0.0;         // d(ChainForces::load_factor)/dp
 };
 
 // A stretch of one segment integrated in one call: local arc lengths [begin, end] of segment
@@ -57,6 +63,9 @@ struct TipState {
   double theta = 0.0;
   double m = 0.0;
   Eigen::Matrix<double, 4, Eigen::Dynamic> sensitivity;  // d(x, y, theta, m)/dp, one column per p
+  // Internal force just before the end (on the last segment integrated) and dN/dp.
+  Eigen::Vector2d N = Eigen::Vector2d::Zero();
+  Eigen::Matrix<double, 2, Eigen::Dynamic> N_sensitivity;
 };
 
 class StepObserver;  // elastica_piece.h
@@ -117,6 +126,9 @@ class ElasticaIntegrator {
   // Newton uses it to give up on a trial point that costs far more than the current one
   // (NewtonOptions::trial_cost_factor).
   void set_step_limit(long total_steps) { step_limit_ = total_steps; }
+  // Not null: every shape point integrate() appends also appends its bending moment m here (the
+  // integrated state; with distributed loads the statics of the shape cannot give it exactly).
+  void set_shape_moments(std::vector<double>* moments) { shape_moment_ = moments; }
 
   const Options& options() const { return options_; }
   long steps_taken() const;  // integrator steps since construction (work budgets, performance)
@@ -127,6 +139,7 @@ class ElasticaIntegrator {
   Options options_;
   StepObserver* observer_ = nullptr;
   long step_limit_ = 0;
+  std::vector<double>* shape_moment_ = nullptr;
   std::unique_ptr<Impl> impl_;
 };
 

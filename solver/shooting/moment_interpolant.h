@@ -26,8 +26,7 @@ class MomentQuintic {
     const double h = s1 - s0;
     // m'' = (N_x cos theta + N_y sin theta) theta' (differentiating m' = N_x sin - N_y cos).
     auto second = [&](const double* y, const double* f) {
-      const double th = y[kElasticaTheta];
-      return (piece.Nx * std::cos(th) + piece.Ny * std::sin(th)) * f[kElasticaTheta];
+      return moment_second_derivative(piece, y == y0 ? s0 : s1, y, f);
     };
     // p(t), t = (s - s0)/h: p, p', p'' match m, h m', h^2 m'' at t = 0 and t = 1.
     c_[0] = y0[kElasticaM];

@@ -23,6 +23,13 @@ Eigen::Vector4d unloaded_along(const ChainPose& p, double kappa0, double s) {
       p.x + s * sinc * std::cos(mean), p.y + s * sinc * std::sin(mean), p.theta + turn, 0.0);
 }
 
+// Total dead load of a flexible segment (its resultant over the whole length).
+Eigen::Vector2d dead_resultant(const FlexibleSegment& f) {
+  if (!f.has_dead_load()) return Eigen::Vector2d::Zero();
+  const std::array<double, 2> Q = f.q_resultant(f.length);
+  return Eigen::Vector2d(Q[0], Q[1]);
+}
+
 double min_EI(const FlexibleSegment& f) {
   if (f.EI_profile.empty()) return f.EI;
   return *std::min_element(f.EI_profile.begin(), f.EI_profile.end());
@@ -55,7 +62,8 @@ ShootingProblem::ShootingProblem(const SegmentChain& chain,
   tip_unloaded_ = chain_.unloaded_tip();
   tip_start_ = homotopy_.tip_start.value_or(tip_unloaded_);
   tip_target_ = homotopy_.tip_target.value_or(chain_.prescribed_tip());
-  const bool follower = chain_.tip_load.follower != 0.0;
+  // A follower force or pressure depends on the deflected shape: both force components are shot.
+  const bool follower = chain_.tip_load.follower != 0.0 || chain_.has_follower_pressure();
   unknown_names_.push_back("m0");
   if (mask_.x || follower) {
     index_Nx_ = size();
@@ -73,6 +81,23 @@ ShootingProblem::ShootingProblem(const SegmentChain& chain,
     node_force_sum_ += Eigen::Vector2d(load.Fx, load.Fy);
     force_scale += std::hypot(load.Fx, load.Fy);
   }
+  // Distributed loads: their resultants join the dead force sum (N(0) where not shot), and their
+  // magnitudes the scale that sets the multiple-shooting cuts.
+  segment_dead_load_.assign(chain_.segment_count(), Eigen::Vector2d::Zero());
+  for (int j = 0; j < chain_.segment_count(); ++j) {
+    const auto* f = std::get_if<FlexibleSegment>(&chain_.segments[j]);
+    if (f == nullptr) continue;
+    segment_dead_load_[j] = dead_resultant(*f);
+    node_force_sum_ += segment_dead_load_[j];
+    double magnitude = std::hypot(f->qx, f->qy) * f->length;
+    for (const auto& q : f->q_profile) {
+      magnitude = std::max(magnitude, std::hypot(q[0], q[1]) * f->length);
+    }
+    force_scale += magnitude + std::abs(f->q_follower) * f->length;
+  }
+  // A follower pressure's resultant depends on the shape from the clamp on (the integrator
+  // accumulates it), so such a chain is shot from the clamp in one interval (no cuts).
+  const bool single_interval = chain_.has_follower_pressure();
   tip_dead_force_ = Eigen::Vector2d(chain_.tip_load.Fx, chain_.tip_load.Fy);
 
   // Cut the flexible segments so that no part amplifies errors by more than e^budget.
@@ -89,7 +114,9 @@ ShootingProblem::ShootingProblem(const SegmentChain& chain,
       const double upper = std::max(1, options.max_parts_per_segment);
       const double wanted = std::ceil(growth / options.amplification_budget);
       const int parts =
-          static_cast<int>(std::isfinite(wanted) ? std::clamp(wanted, lower, upper) : upper);
+          single_interval
+              ? 1
+              : static_cast<int>(std::isfinite(wanted) ? std::clamp(wanted, lower, upper) : upper);
       for (int p = 0; p < parts; ++p) {
         IntegrationPiece piece;
         piece.segment = j;
@@ -131,10 +158,16 @@ ChainForces ShootingProblem::forces(const Eigen::VectorXd& z, double lambda) con
   if (index_Ny_ >= 0) N0.y() = z[index_Ny_];
   f.N.assign(n, N0);
   f.moment_drop.assign(n + 1, 0.0);
+  f.load_factor = lf;
   for (const NodeLoad& load : chain_.node_loads) {
     // Node k is the far end of segment k-1: segments k..n-1 no longer carry its force.
     for (int j = load.node; j < n; ++j) f.N[j] -= lf * Eigen::Vector2d(load.Fx, load.Fy);
     f.moment_drop[load.node] += lf * load.M;
+  }
+  // N[j] is N at the near end of segment j: the dead loads of the segments before it are gone.
+  for (int k = 0; k < n; ++k) {
+    if (segment_dead_load_[k].isZero()) continue;
+    for (int j = k + 1; j < n; ++j) f.N[j] -= lf * segment_dead_load_[k];
   }
   return f;
 }
@@ -243,6 +276,10 @@ bool ShootingProblem::evaluate(const Eigen::VectorXd& z,
       for (int j = load.node; j < n; ++j) d.dN[j] -= slope * Eigen::Vector2d(load.Fx, load.Fy);
       d.dmoment_drop[load.node] += slope * load.M;
     }
+    for (int k = 0; k < n; ++k) {
+      for (int j = k + 1; j < n; ++j) d.dN[j] -= slope * segment_dead_load_[k];
+    }
+    d.dload_factor = slope;
     force_derivs.push_back(std::move(d));
   }
   // Columns of the clamp's interval (index 0) and of a cut's: the start columns, then the rest.
@@ -274,6 +311,11 @@ bool ShootingProblem::evaluate(const Eigen::VectorXd& z,
 
   Eigen::Matrix<double, 4, Eigen::Dynamic> D(4, nz);  // d(end state)/dz of the current interval
   Eigen::Vector4d D_lambda = Eigen::Vector4d::Zero();
+  // d(N at the tip)/dz and /dlambda (the last interval); the force columns' own unit part is in
+  // the integrator's N sensitivity.
+  Eigen::Matrix<double, 2, Eigen::Dynamic> DN =
+      Eigen::Matrix<double, 2, Eigen::Dynamic>::Zero(2, nz);
+  Eigen::Vector2d DN_lambda = Eigen::Vector2d::Zero();
   for (int k = 0; k < M; ++k) {
     const Columns& cols = k == 0 ? at_clamp : at_cut;
     TipState end;
@@ -300,9 +342,25 @@ bool ShootingProblem::evaluate(const Eigen::VectorXd& z,
       for (std::size_t c = 0; c < force_cols.size(); ++c) {
         D.col(force_cols[c]) += end.sensitivity.col(cols.start + c);
       }
+      if (k + 1 == M) {
+        DN.setZero();
+        if (k == 0) {
+          DN.col(0) = end.N_sensitivity.col(0);
+        } else {
+          const int first = root_count_ + 4 * (k - 1);
+          DN.col(first + 2) = end.N_sensitivity.col(0);
+          DN.col(first + 3) = end.N_sensitivity.col(1);
+        }
+        for (std::size_t c = 0; c < force_cols.size(); ++c) {
+          DN.col(force_cols[c]) += end.N_sensitivity.col(cols.start + c);
+        }
+      }
     }
     const int lam_col = cols.start + static_cast<int>(force_cols.size());
-    if (want_lambda_derivative) D_lambda = end.sensitivity.col(lam_col);
+    if (want_lambda_derivative) {
+      D_lambda = end.sensitivity.col(lam_col);
+      DN_lambda = end.N_sensitivity.col(lam_col);
+    }
     const Eigen::Vector4d E(end.x, end.y, end.theta, end.m);
     if (k + 1 < M) {
       const int row = root_count_ + 4 * k;
@@ -318,7 +376,7 @@ bool ShootingProblem::evaluate(const Eigen::VectorXd& z,
   }
 
   const TipState& t = out.tip;
-  const Eigen::Vector2d N_tip = f.N[n - 1];
+  const Eigen::Vector2d N_tip = t.N;
   const double lf = load_factor(lambda);
   const double slope = homotopy_.load_slope;
   const double P = chain_.tip_load.follower;
@@ -356,14 +414,10 @@ bool ShootingProblem::evaluate(const Eigen::VectorXd& z,
       const double d_follower_dtheta = axis == 0 ? -P * c_th : -P * s_th;
       const double dead = axis == 0 ? tip_dead_force_.x() : tip_dead_force_.y();
       out.residual[row] = N_tip[axis] - lf * (dead + follower);
-      if (want_jacobian) {
-        out.jacobian.row(row) = -lf * d_follower_dtheta * D.row(2);
-        out.jacobian(row, row) += 1.0;
-      }
+      if (want_jacobian) out.jacobian.row(row) = DN.row(axis) - lf * d_follower_dtheta * D.row(2);
       if (want_lambda_derivative) {
-        const double dN_tip = -slope * (axis == 0 ? node_force_sum_.x() : node_force_sum_.y());
         out.d_lambda[row] =
-            dN_tip - slope * (dead + follower) - lf * d_follower_dtheta * D_lambda[2];
+            DN_lambda[axis] - slope * (dead + follower) - lf * d_follower_dtheta * D_lambda[2];
       }
     }
   }

@@ -124,7 +124,8 @@ class ShootingProblem {
   int index_Nx_ = -1;  // position of N_x(0) in z, or -1
   int index_Ny_ = -1;
   int root_count_ = 1;              // m0 plus shot force components
-  Eigen::Vector2d node_force_sum_;  // sum of intermediate dead forces at full load
+  Eigen::Vector2d node_force_sum_;  // sum of intermediate and distributed dead forces, full load
+  std::vector<Eigen::Vector2d> segment_dead_load_;  // each segment's dead-load resultant
   Eigen::Vector2d tip_dead_force_;
   std::vector<std::vector<IntegrationPiece>> intervals_;
   std::vector<Eigen::Vector4d> unloaded_cut_states_;  // stress-free state at each interior cut

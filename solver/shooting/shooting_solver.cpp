@@ -104,7 +104,8 @@ void take_count(const CurvatureRecorder& recorder, ShootingResult& result) {
 
 double unique_equilibrium_bound(const SegmentChain& chain) {
   chain.validate();
-  if (chain.end != EndCondition::kFree || chain.tip_load.follower != 0.0) {
+  if (chain.end != EndCondition::kFree || chain.tip_load.follower != 0.0 ||
+      chain.has_follower_pressure() || chain.has_extensible_segments()) {
     return std::numeric_limits<double>::infinity();
   }
   // Largest internal force: partial sums of the dead loads from the tip.
@@ -143,6 +144,24 @@ double unique_equilibrium_bound(const SegmentChain& chain) {
       t0 += std::get<RigidSegment>(seg).length;
     }
   }
+  // Dead distributed loads: |delta m(t)| <= (L - t) max|delta theta| times the sum of the load
+  // magnitudes beyond t, so the sum of all magnitudes bounds the force factor.
+  double q_magnitude = 0.0;
+  for (const Segment& seg : chain.segments) {
+    const auto* f = std::get_if<FlexibleSegment>(&seg);
+    if (f == nullptr || !f->has_dead_load()) continue;
+    const int stations = f->q_profile.empty() ? 1 : static_cast<int>(f->q_profile.size());
+    double largest = std::hypot(f->qx, f->qy);
+    for (int i = 0; i < stations && !f->q_profile.empty(); ++i) {
+      largest = std::max(largest, std::hypot(f->q_profile[i][0], f->q_profile[i][1]));
+    }
+    q_magnitude += largest * f->length;
+  }
+  if (q_magnitude > 0.0) {
+    uniform = false;
+    max_force = std::hypot(chain.tip_load.Fx, chain.tip_load.Fy) + q_magnitude;
+    for (const NodeLoad& load : chain.node_loads) max_force += std::hypot(load.Fx, load.Fy);
+  }
   if (flexible_count == 0 || max_force == 0.0) return 0.0;
   if (uniform && flexible_count == 1 && chain.node_loads.empty()) {
     return 4.0 * max_force * flexible_length * flexible_length /
@@ -163,8 +182,6 @@ ShootingResult ShootingSolver::finish(const ShootingProblem& problem,
   result.unknowns.assign(z.data(), z.data() + z.size());
   result.shooting_intervals = problem.interval_count();
   result.reaction = problem.reaction(z, lambda);
-  const ChainForces forces = problem.forces(z, lambda);
-  const Eigen::Vector2d N_tip = forces.N.back();
   InflectionCount count;
   if (options_.count_inflections && result.converged() && result.inflection_points < 0) {
     std::string error;
@@ -178,7 +195,7 @@ ShootingResult ShootingSolver::finish(const ShootingProblem& problem,
   }
   if (known_tip != nullptr && options_.shape_points <= 1) {
     result.tip = ChainPose{known_tip->x, known_tip->y, known_tip->theta};
-    result.tip_load = Reaction{N_tip.x(), N_tip.y(), known_tip->m};
+    result.tip_load = Reaction{known_tip->N.x(), known_tip->N.y(), known_tip->m};
     return result;
   }
   TipState tip;
@@ -199,7 +216,7 @@ ShootingResult ShootingSolver::finish(const ShootingProblem& problem,
     return result;
   }
   result.tip = ChainPose{tip.x, tip.y, tip.theta};
-  result.tip_load = Reaction{N_tip.x(), N_tip.y(), tip.m};
+  result.tip_load = Reaction{tip.N.x(), tip.N.y(), tip.m};
   return result;
 }
 
@@ -349,6 +366,7 @@ void require_controlled_reach(const SegmentChain& chain,
                               const PrescribedMask& mask,
                               const ChainPose& target,
                               TipCoordinate coordinate) {
+  if (chain.has_extensible_segments()) return;  // a stretching chain reaches any point
   if (mask.x && mask.y) {
     SegmentChain pinned = chain;
     pinned.end = mask.theta ? EndCondition::kFixed : EndCondition::kPinned;
@@ -663,7 +681,7 @@ LoadPath ShootingSolver::controlled_path(const SegmentChain& chain,
   (void)ShootingProblem(chain, options_.multiple_shooting, moving);
 
   bool loaded = chain.tip_load.Fx != 0.0 || chain.tip_load.Fy != 0.0 || chain.tip_load.M != 0.0 ||
-                chain.tip_load.follower != 0.0;
+                chain.tip_load.follower != 0.0 || chain.has_distributed_loads();
   for (const NodeLoad& load : chain.node_loads) {
     loaded = loaded || load.Fx != 0.0 || load.Fy != 0.0 || load.M != 0.0;
   }
