@@ -1,7 +1,8 @@
 #pragma once
 // The physical-beam flags that `flexure beam` and `flexure path` share (docs/cli.md, "Physical
 // beams"; docs/units.md): --length, --E, the section (--I, or --width and --thickness), the tip
-// loads --Fx, --Fy, --M and, for `beam`, --yield-strength, as SI numbers or values with units.
+// loads --Fx, --Fy, --M and, for `beam`, --yield-strength, as SI numbers or values with units;
+// --material NAME (data/materials.csv) gives E and S_y that --E and --yield-strength override.
 #include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
@@ -11,8 +12,9 @@
 namespace flexure::cli {
 
 struct PhysicalFlags {
-  std::string length, E, I, width, thickness, Fx, Fy, M, yield_strength;
+  std::string length, E, I, width, thickness, Fx, Fy, M, yield_strength, material;
   std::vector<CLI::Option*> options;
+  bool with_yield_strength = false;  // add_to's argument: the command reports a safety factor
 
   // Adds the flags to `command` in an option group "physical beam".
   void add_to(CLI::App& command, bool with_yield_strength);
