@@ -19,6 +19,7 @@
 #include "cli/fatigue_flags.h"
 #include "cli/slow_progress.h"
 #include "flexure/benchmarks/studies/mechanism_method.h"
+#include "flexure/benchmarks/studies/mechanism_tolerance.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/mechanism_toml.h"
 #include "flexure/io/output_path.h"
@@ -1169,6 +1170,154 @@ void register_mechanism_command(CLI::App& app) {
       for (const StabilityEntry& e : entries) {
         if (e.stroke != nullptr) std::cout << "    " << e.stroke->summary << "\n";
       }
+    }
+  });
+
+  // `mechanism tolerance`: the sampled study of benchmarks/studies/mechanism_tolerance.h.
+  struct ToleranceArgs {
+    std::string what, thickness, width, length, E, distribution = "normal", method = "exact", out;
+    int samples = 100, points = 50;
+    std::uint64_t seed = 1;
+    bool json = false;
+  };
+  auto targs = std::make_shared<ToleranceArgs>();
+  CLI::App* tolerance = mech.add_subcommand(
+      "tolerance",
+      "Manufacturing tolerances: the force, percent constant force and safety factor over "
+      "sampled thicknesses, widths, lengths and E, with first-order sensitivities");
+  tolerance->add_option("mechanism", targs->what, "Built-in name or FILE.toml (as for analyze)")
+      ->required();
+  tolerance->add_option(
+      "--thickness", targs->thickness, "Spread of every flexure's thickness: 3% or 0.03");
+  tolerance->add_option("--width", targs->width, "Spread of every flexure's width: 1% or 0.01");
+  tolerance->add_option("--length",
+                        targs->length,
+                        "Spread of the links r2, r3 and every small-length flexure's length");
+  tolerance->add_option("--E", targs->E, "Spread of Young's modulus (one draw per sample)");
+  tolerance->add_option("--samples", targs->samples, "Sampled designs (2..100000)")
+      ->default_str("100");
+  tolerance
+      ->add_option("--distribution",
+                   targs->distribution,
+                   "normal (spread = standard deviation, cut at 3.5) or uniform (spread = "
+                   "half-width)")
+      ->default_str("normal");
+  tolerance->add_option("--seed", targs->seed, "Seed of the draws")->default_str("1");
+  tolerance->add_option("--method", targs->method, "exact (PRBM and exact) or prbm")
+      ->default_str("exact")
+      ->transform(CLI::IsMember({"prbm", "exact"}, CLI::ignore_case));
+  tolerance->add_option("--points", targs->points, "Stroke points of each analysis")
+      ->default_str("50");
+  tolerance->add_option("--out", targs->out, "Write the samples and statistics to this HDF5 file");
+  tolerance->add_flag("--json", targs->json, "Print one JSON object");
+  tolerance->callback([targs] {
+    const auto spread = [](const std::string& text, const char* flag) {
+      if (text.empty()) return 0.0;
+      const bool percent = text.back() == '%';
+      double v = 0.0;
+      try {
+        std::size_t used = 0;
+        const std::string number = percent ? text.substr(0, text.size() - 1) : text;
+        v = std::stod(number, &used);
+        if (used != number.size()) throw std::invalid_argument(text);
+      } catch (const std::exception&) {
+        throw InvalidInput(fmt::format("{} '{}' is not a spread: give 3% or 0.03", flag, text));
+      }
+      return percent ? v / 100.0 : v;
+    };
+    ToleranceOptions o;
+    o.spread.thickness = spread(targs->thickness, "--thickness");
+    o.spread.width = spread(targs->width, "--width");
+    o.spread.length = spread(targs->length, "--length");
+    o.spread.E = spread(targs->E, "--E");
+    o.samples = targs->samples;
+    o.points = targs->points;
+    o.seed = targs->seed;
+    o.exact = targs->method == "exact";
+    o.distribution = parse_spread_distribution(targs->distribution);
+    o.validate();
+    if (!targs->out.empty()) io::check_output_path(targs->out);
+    const MechanismDesign d = resolve(targs->what);
+    const ToleranceStudy s = mechanism_tolerance(d, o);
+    if (s.failed_samples > 0) {
+      warn(fmt::format("{} of {} samples could not be analysed and are left out (first: {})",
+                       s.failed_samples,
+                       o.samples,
+                       s.first_failure));
+    }
+    if (!targs->out.empty()) {
+      io::AtomicHdf5File file(targs->out);
+      write_tolerance_file(file.root(), s);
+      file.commit();
+    }
+    if (targs->json) {
+      Json j{{"design", s.design},
+             {"samples", o.samples},
+             {"failed_samples", s.failed_samples},
+             {"distribution", spread_distribution_name(o.distribution)},
+             {"seed", o.seed},
+             {"method", o.exact ? "exact" : "prbm"},
+             {"spread",
+              Json{{"thickness", o.spread.thickness},
+                   {"width", o.spread.width},
+                   {"length", o.spread.length},
+                   {"E", o.spread.E}}},
+             {"parameters", s.parameters},
+             {"out", targs->out.empty() ? Json(nullptr) : Json(targs->out)}};
+      for (const ToleranceStats& q : s.quantities) {
+        j[q.name] = Json{{"unit", q.unit},
+                         {"nominal", q.nominal},
+                         {"mean", q.mean},
+                         {"std", q.std},
+                         {"p05", q.p05},
+                         {"p50", q.p50},
+                         {"p95", q.p95},
+                         {"first_order_std", q.first_order_std},
+                         {"sensitivity",
+                          Json{{"thickness", q.sensitivity[0]},
+                               {"width", q.sensitivity[1]},
+                               {"length", q.sensitivity[2]},
+                               {"E", q.sensitivity[3]}}}};
+      }
+      print_json(j);
+      return;
+    }
+    std::cout << fmt::format(
+        "{}: {} samples ({}), spreads thickness {:g} %, width {:g} %, length {:g} %, E {:g} %{}\n",
+        s.design,
+        o.samples,
+        spread_distribution_name(o.distribution),
+        100 * o.spread.thickness,
+        100 * o.spread.width,
+        100 * o.spread.length,
+        100 * o.spread.E,
+        s.failed_samples > 0 ? fmt::format(" ({} failed)", s.failed_samples) : "");
+    std::cout << fmt::format(
+        "  {:<30} {:>11} {:>11} {:>10} {:>11} {:>11} {:>10}   dQ/d(rel): "
+        "thickness width length E\n",
+        "quantity",
+        "nominal",
+        "mean",
+        "std",
+        "p05",
+        "p95",
+        "1st-order");
+    for (const ToleranceStats& q : s.quantities) {
+      std::cout << fmt::format(
+          "  {:<30} {:>11.5g} {:>11.5g} {:>10.3g} {:>11.5g} {:>11.5g} {:>10.3g}   {:.3g} {:.3g} "
+          "{:.3g} {:.3g} ({})\n",
+          q.name,
+          q.nominal,
+          q.mean,
+          q.std,
+          q.p05,
+          q.p95,
+          q.first_order_std,
+          q.sensitivity[0],
+          q.sensitivity[1],
+          q.sensitivity[2],
+          q.sensitivity[3],
+          q.unit);
     }
   });
 
