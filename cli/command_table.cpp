@@ -46,7 +46,8 @@ const std::vector<CommandEntry>& command_table() {
        {register_design_command, register_design_mechanism_command}},
       {"map", "Design-space maps (docs/design.md)", {register_map_command}},
       {"materials",
-       "The material library (Howell Appendix C): E, nu, strengths, endurance limit, source",
+       "The material library (Howell Appendix C): E, nu, strengths, endurance limit, density, "
+       "source",
        {register_materials_command}},
       {"help", "Help for flexure or one command: flexure help [COMMAND]", {register_help_command}},
   };

@@ -48,8 +48,8 @@ std::string mpa(const std::optional<double>& v) {
 void register_materials_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "materials",
-      "The material library (data/materials.csv: Howell Appendix C): E, nu, strengths, "
-      "endurance limit, density, source");
+      "The material library (Howell Appendix C): E, nu, strengths, endurance limit, density, "
+      "source");
   auto json = std::make_shared<bool>(false);
   auto name = std::make_shared<std::string>();
   cmd->add_option("name", *name, "Show one material (id or designation, e.g. 1095-HR)");
