@@ -16,12 +16,14 @@
 #include "cli/cli_common.h"
 #include "cli/command_runner.h"
 #include "cli/commands.h"
+#include "cli/fatigue_flags.h"
 #include "cli/physical_flags.h"
 #include "cli/warning_output.h"
 #include "flexure/benchmarks/studies/method_selector.h"
 #include "flexure/benchmarks/studies/physical_beam.h"
 #include "flexure/io/chain_toml.h"
 #include "flexure/io/quantity.h"
+#include "flexure/mechanisms/load_cycle_fatigue.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
 
@@ -68,6 +70,9 @@ struct BeamArgs {
   CLI::Option* chain_option = nullptr;
   // A physical cantilever (SI, or values with units: 50mm, 200GPa, 5N; io/quantity.h).
   PhysicalFlags physical;
+  // Fatigue of a load cycle of the physical beam (load_cycle_fatigue.h; docs/fatigue.md).
+  std::string cycle;
+  FatigueFlags fatigue;
 };
 
 // What `flexure beam` solves: Howell's nondimensional problem, and the physical beam or chain file
@@ -624,8 +629,61 @@ Json to_json(const BeamInput& input,
 // Set by beam_problem_of: the callback stops after validating, and reports the problem here.
 thread_local BeamCommandProblem* t_problem_only = nullptr;
 
+// The fatigue of `--cycle`: the critical fibre's cycle at the beam's largest stress.
+struct BeamFatigue {
+  FatigueMaterial material;
+  FatigueOptions options;
+  PartFatigueStrength strength;
+  FatigueCheck check;
+  LoadCycle cycle = LoadCycle::kReversed;
+};
+
+BeamFatigue beam_fatigue(const BeamArgs& args, const BeamInput& input, const PhysicalResults& r) {
+  BeamFatigue f;
+  f.cycle = parse_load_cycle(args.cycle);
+  f.options = args.fatigue.options();
+  f.material = args.fatigue.fatigue_material_of(args.physical.material, r.yield_strength);
+  const PhysicalCantilever& b = *input.physical;
+  f.strength = part_fatigue_strength(
+      f.material, f.options, equivalent_diameter_rectangle(*b.width, *b.thickness));
+  f.check = check_load_cycle(r.max_stress.value_or(0.0), f.cycle, f.material, f.strength);
+  return f;
+}
+
+Json number_or_null_value(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+
+void add_fatigue_json(Json& out, const BeamFatigue& f) {
+  out["fatigue_safety_factor"] = number_or_null_value(f.check.safety_factor);
+  out["alternating_stress"] = f.check.alternating_stress;
+  out["mean_stress"] = f.check.mean_stress;
+  out["endurance_limit"] = f.check.endurance_limit;
+  out["fatigue"] = Json{{"cycle", load_cycle_name(f.cycle)},
+                        {"criterion", "modified Goodman (Howell eq. 3.110)"},
+                        {"infinite_life", f.check.infinite_life && !f.material.fatigue_cycles},
+                        {"cycles_to_failure", number_or_null_value(f.check.cycles_to_failure)},
+                        {"ultimate_strength", f.material.ultimate_strength},
+                        {"uncorrected_endurance_limit", f.material.uncorrected_strength},
+                        {"endurance_limit_source", f.material.source},
+                        {"surface_finish", surface_finish_name(f.options.finish)},
+                        {"reliability", f.options.reliability},
+                        {"K_f", f.options.K_f},
+                        {"c_surf", f.strength.factors.surface},
+                        {"c_size", f.strength.factors.size},
+                        {"c_load", f.strength.factors.load},
+                        {"c_reliab", f.strength.factors.reliability},
+                        {"c_misc", f.strength.factors.misc}};
+}
+
 void run_beam(const BeamArgs& args) {
   const BeamInput input = make_input(args);
+  if (!args.cycle.empty()) {
+    if (!input.physical || !input.physical->thickness) {
+      throw InvalidInput(
+          "--cycle checks a physical cantilever with a rectangular section: give --length, --E "
+          "(or --material), --width and --thickness");
+    }
+    args.fatigue.options();  // a bad --reliability, --Kf or --surface-finish before solving
+  }
   const BeamProblem& problem = input.problem;
   const BeamMethod method = beam_method_from_string(args.method);
   if (t_problem_only != nullptr) {
@@ -700,8 +758,20 @@ void run_beam(const BeamArgs& args) {
                                     problem.shape_points));
   }
   warn(beam_warnings(problem, solution));
+  std::optional<BeamFatigue> fatigue;
+  if (!args.cycle.empty() && physical) fatigue = beam_fatigue(args, input, *physical);
+  if (fatigue && !fatigue->check.infinite_life) {
+    warn(
+        fmt::format("the {} load cycle has a finite life: about {:.3g} cycles (fatigue safety "
+                    "factor {:.3g})",
+                    load_cycle_name(fatigue->cycle),
+                    fatigue->check.cycles_to_failure,
+                    fatigue->check.safety_factor));
+  }
   if (args.json) {
-    print_json(to_json(input, problem, solution, physical));  // refuses NaN/Inf anywhere
+    Json out = to_json(input, problem, solution, physical);
+    if (fatigue) add_fatigue_json(out, *fatigue);
+    print_json(out);  // refuses NaN/Inf anywhere
   } else {
     for (const ShapePoint& p : solution.shape) {
       require_finite_result(p.x, "shape x");
@@ -709,6 +779,20 @@ void run_beam(const BeamArgs& args) {
       require_finite_result(p.theta, "shape theta");
     }
     print_report(input, problem, solution, physical);
+    if (fatigue) {
+      fmt::print(
+          "    fatigue ({} load cycle): sigma_a = {:.6g} MPa, sigma_m = {:.6g} MPa, S_e = {:.6g} "
+          "MPa (S_e' {:.6g} MPa x Marin {:.4f}); fatigue safety factor {:.4g} (modified "
+          "Goodman){}\n",
+          load_cycle_name(fatigue->cycle),
+          fatigue->check.alternating_stress * 1e-6,
+          fatigue->check.mean_stress * 1e-6,
+          fatigue->check.endurance_limit * 1e-6,
+          fatigue->material.uncorrected_strength * 1e-6,
+          fatigue->strength.factors.product(),
+          fatigue->check.safety_factor,
+          fatigue->check.infinite_life ? "" : "  -- FINITE LIFE");
+    }
   }
 }
 
@@ -813,6 +897,13 @@ void register_beam_command(CLI::App& app) {
                    "not_checked; --stable judges anyway)")
       ->default_str("on")
       ->transform(CLI::IsMember({"on", "off"}, CLI::ignore_case));
+  beam->add_option("--cycle",
+                   args->cycle,
+                   "Fatigue of the physical beam over a load cycle: reversed (the load and its "
+                   "mirror image) or repeated (unloaded to the load); needs S_ut and S_e' "
+                   "(--material, or --ultimate-strength and --endurance-limit)")
+      ->transform(CLI::IsMember({"reversed", "repeated"}));
+  args->fatigue.add_to(*beam);
   beam->add_flag("--json", args->json, "Print one JSON object on stdout");
   beam->callback([args] { run_beam(*args); });
 }

@@ -48,6 +48,10 @@ const std::vector<CommandEntry>& command_table() {
       {"models",
        "The model ladder: every model's error and time against the exact solution",
        {register_models_command}},
+      {"materials",
+       "The material library (Howell Appendix C): E, nu, strengths, endurance limit, density, "
+       "source",
+       {register_materials_command}},
       {"help", "Help for flexure or one command: flexure help [COMMAND]", {register_help_command}},
   };
   return table;

@@ -10,11 +10,13 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/fatigue_flags.h"
 #include "flexure/io/mechanism_toml.h"
 #include "flexure/io/output_path.h"
 #include "flexure/io/quantity.h"
 #include "flexure/mechanisms/design/mechanism_synthesis.h"
 #include "flexure/mechanisms/force_of.h"
+#include "flexure/mechanisms/material_library.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {
@@ -41,6 +43,9 @@ struct DesignMechanismArgs {
   double force_tolerance_percent = 100.0 * design::MechanismSpec{}.force_tolerance;
   CLI::Option* yield_option = nullptr;
   CLI::Option* pcf_min_option = nullptr;
+  std::string material;
+  bool fatigue = false;
+  FatigueFlags fatigue_flags;
 };
 
 design::StressRule parse_stress_rule(const std::string& text) {
@@ -74,13 +79,43 @@ design::MechanismSpec make_spec(const DesignMechanismArgs& a, mechanism::ForceOf
             mechanism::force_of_factor(of, mechanism::ForceOf::kOneHalf);
   s.force_of = of;
   s.stroke = io::parse_quantity(a.stroke, Dimension::kLength, "--stroke").si;
-  const io::Quantity E = io::parse_quantity(a.E, Dimension::kStress, "--E");
-  warn(io::modulus_warning(E, "--E"));
-  s.E = E.si;
+  if (a.E.empty() && a.material.empty()) {
+    throw InvalidInput("give the material: --material NAME (`flexure materials`) or --E");
+  }
+  // --material gives E, S_y, S_ut and S_e'; --E, --yield-strength, --ultimate-strength and
+  // --endurance-limit replace its values (with a warning where they differ).
+  mechanism::MechanismDesign m;
+  if (!a.material.empty()) {
+    const MaterialGrade& g = find_material(a.material);
+    m.material = g.id;
+    m.E = g.E;
+    m.ultimate_strength = g.ultimate_strength;
+    m.endurance_limit = g.fatigue_strength;
+    m.endurance_cycles = g.fatigue_cycles;
+    m.ductile = g.ductile;
+    if (!*a.yield_option && g.static_strength()) s.yield_strength = g.static_strength();
+  }
+  if (!a.E.empty()) {
+    const io::Quantity E = io::parse_quantity(a.E, Dimension::kStress, "--E");
+    warn(io::modulus_warning(E, "--E"));
+    if (m.E > 0.0 && m.E != E.si) {
+      warn(fmt::format(
+          "--E {:.6g} Pa replaces the {:.6g} Pa of material '{}'", E.si, m.E, m.material));
+    }
+    m.E = E.si;
+  }
+  s.E = m.E;
   if (*a.yield_option) {
     s.yield_strength =
         io::parse_quantity(a.yield_strength, Dimension::kStress, "--yield-strength").si;
   }
+  a.fatigue_flags.apply_strengths(m);
+  s.material = m.material;
+  s.ultimate_strength = m.ultimate_strength;
+  s.endurance_limit = m.endurance_limit;
+  s.endurance_cycles = m.endurance_cycles;
+  s.ductile = m.ductile;
+  if (a.fatigue) s.fatigue = a.fatigue_flags.options();
   require_finite_input(a.safety_factor, "--safety-factor");
   s.safety_factor = a.safety_factor;
   s.length = range_of(a.length_range, "--length-range");
@@ -194,6 +229,14 @@ Json design_json(const design::DimensionedDesign& d, double force_factor, double
   j["width_to_thickness"] = d.width_to_thickness;
   j["width_to_length"] = d.width_to_length;
   if (!d.exact_note.empty()) j["exact_note"] = d.exact_note;
+  if (d.fatigue) {
+    const FatigueCheck& f = d.fatigue->critical().check;
+    j["fatigue_safety_factor"] = f.safety_factor;
+    j["alternating_stress"] = f.alternating_stress;
+    j["mean_stress"] = f.mean_stress;
+    j["endurance_limit"] = f.endurance_limit;
+    j["fatigue_critical_pivot"] = d.fatigue->critical_pivot;
+  }
   return j;
 }
 
@@ -314,6 +357,9 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
       {"minimize", args.minimize.empty() ? Json(nullptr) : Json(args.minimize)},
       {"section_bounds", bounds_json(spec.bounds)},
       {"force_tolerance_percent", 100.0 * spec.force_tolerance},
+      {"material", spec.material.empty() ? Json(nullptr) : Json(spec.material)},
+      {"fatigue", spec.fatigue.has_value()},
+      {"sizing_safety_factor", optional_json(r.sizing_safety_factor)},
       {"refined", refined ? refined_json(*refined, factor, spec.force) : Json(nullptr)},
       {"out", args.out.empty() ? Json(nullptr) : Json(args.out)}};
   if (!args.out.empty() && (!refinement_failed || args.allow_infeasible)) {
@@ -373,6 +419,14 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
     print_json(summary);
     return;
   }
+  if (r.sizing_safety_factor) {
+    fmt::print(
+        "sized at static safety factor {:.3g} so that the cycle rest -> full stroke has fatigue "
+        "safety factor {:g} (modified Goodman, S_e of {}; docs/fatigue.md)\n",
+        *r.sizing_safety_factor,
+        spec.safety_factor,
+        spec.material.empty() ? std::string("the given S_e'") : spec.material);
+  }
   fmt::print(
       "{} feasible design{} ({} rejected), {}; forces of {}; safety factor {:g} by the {} "
       "stresses:\n",
@@ -396,7 +450,7 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
     fmt::print(
         "  {:<10} l_tot {:.4g} mm, r2 {:.4g} mm, r3 {:.4g} mm, primary h {:.4g} mm, b {:.4g} mm{}; "
         "SF PRBM {:.3g}, exact {} (S_y {:.4g} MPa; eq. 8.5 alone needs {:.4g}); F {:.4g} N "
-        "(exact {}), Xi' {:.1f} % (exact {})\n",
+        "(exact {}), Xi' {:.1f} % (exact {}){}\n",
         d.subclass,
         d.l_tot * 1e3,
         d.r2 * 1e3,
@@ -412,7 +466,12 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
         d.force_exact ? fmt::format("{:.4g} N", *d.force_exact * factor) : "n/a",
         d.model.percent_constant_force,
         d.percent_constant_force_exact ? fmt::format("{:.1f} %", *d.percent_constant_force_exact)
-                                       : "n/a");
+                                       : "n/a",
+        d.fatigue ? fmt::format("; fatigue SF {:.3g} (pivot {}, S_e {:.4g} MPa)",
+                                d.fatigue->critical().check.safety_factor,
+                                d.fatigue->critical_pivot,
+                                d.fatigue->critical().check.endurance_limit * 1e-6)
+                  : std::string());
   }
   if (refined) {
     const design::DimensionedDesign& x = *refined;
@@ -452,7 +511,15 @@ void register_design_mechanism_command(CLI::App& app) {
   cmd->add_option("--force", a->force, "Mean slider force, e.g. 25lbf or 110N (see --force-of)")
       ->required();
   cmd->add_option("--stroke", a->stroke, "Slider travel, e.g. 4in or 100mm")->required();
-  cmd->add_option("--E", a->E, "Young's modulus, e.g. 30Msi or 200GPa")->required();
+  cmd->add_option("--material",
+                  a->material,
+                  "Material from the library (`flexure materials`): E, S_y, S_ut, S_e'");
+  cmd->add_option("--E", a->E, "Young's modulus, e.g. 30Msi or 200GPa (or from --material)");
+  cmd->add_flag("--fatigue",
+                a->fatigue,
+                "Keep only designs with infinite life at --safety-factor (modified Goodman over "
+                "rest -> full stroke, Howell §3.3; needs S_ut and S_e')");
+  a->fatigue_flags.add_to(*cmd);
   a->yield_option = cmd->add_option(
       "--yield-strength",
       a->yield_strength,

@@ -17,8 +17,10 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/general_mechanism_command.h"
+#include "cli/fatigue_flags.h"
 #include "cli/slow_progress.h"
 #include "flexure/benchmarks/studies/mechanism_method.h"
+#include "flexure/benchmarks/studies/mechanism_tolerance.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/mechanism_toml.h"
 #include "flexure/io/output_path.h"
@@ -31,6 +33,7 @@
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
+#include "flexure/mechanisms/mechanism_fatigue.h"
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/mechanisms/modified_springs.h"
 #include "flexure/solver/common/errors.h"
@@ -383,7 +386,109 @@ void write_design_group(io::Hdf5Group& root, const MechanismDesign& d) {
       "spring_constant", spring, "N m/rad", "PRBM torsional spring constant; 0 for a pin");
 }
 
-void write_hdf5(const std::string& path, const MechanismAnalysis& a, io::AtomicHdf5File& file) {
+// The fatigue check of analyze (mechanism_fatigue.h), or why there is none.
+struct FatigueReport {
+  std::optional<MechanismFatigue> fatigue;
+  std::string note;  // why not checked
+};
+
+Json number_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+
+// The keys beside the static safety factor: fatigue_safety_factor, alternating_stress,
+// mean_stress, endurance_limit (the corrected S_e of the critical pivot), and the details.
+void add_fatigue_json(Json& j, const MechanismAnalysis& a, const FatigueReport& r) {
+  if (!r.fatigue) {
+    for (const char* key :
+         {"fatigue_safety_factor", "alternating_stress", "mean_stress", "endurance_limit"}) {
+      j[key] = nullptr;
+    }
+    j["fatigue"] = nullptr;
+    j["fatigue_note"] = r.note;
+    return;
+  }
+  const MechanismFatigue& f = *r.fatigue;
+  const PivotFatigue& c = f.critical();
+  j["fatigue_safety_factor"] = number_or_null(c.check.safety_factor);
+  j["alternating_stress"] = c.check.alternating_stress;
+  j["mean_stress"] = c.check.mean_stress;
+  j["endurance_limit"] = c.check.endurance_limit;
+  Json pivots = Json::array();
+  for (int p = 1; p <= 3; ++p) {
+    const int stored = described_pivot(a.design, p);
+    const PivotFatigue& x = f.pivots[stored - 1];
+    if (!x.present) {
+      pivots.push_back(nullptr);
+      continue;
+    }
+    pivots.push_back(Json{{"safety_factor", number_or_null(x.check.safety_factor)},
+                          {"alternating_stress", x.check.alternating_stress},
+                          {"mean_stress", x.check.mean_stress},
+                          {"sigma_max", x.check.sigma_max},
+                          {"sigma_min", x.check.sigma_min},
+                          {"endurance_limit", x.check.endurance_limit},
+                          {"equivalent_diameter", x.equivalent_diameter},
+                          {"c_size", x.strength.factors.size},
+                          {"moment_changes_sign", x.moment_changes_sign}});
+  }
+  j["fatigue"] =
+      Json{{"critical_pivot", described_pivot(a.design, f.critical_pivot)},
+           {"cycle", "rest (unstressed) to full stroke and back"},
+           {"criterion", "modified Goodman (Howell eq. 3.110)"},
+           {"infinite_life", c.check.infinite_life && !f.material.fatigue_cycles},
+           {"life_at_least",
+            f.material.fatigue_cycles && c.check.infinite_life ? Json(*f.material.fatigue_cycles)
+                                                               : Json(nullptr)},
+           {"cycles_to_failure", number_or_null(c.check.cycles_to_failure)},
+           {"yield_safety_factor",
+            c.check.yield_safety_factor ? Json(*c.check.yield_safety_factor) : Json(nullptr)},
+           {"ultimate_strength", f.material.ultimate_strength},
+           {"uncorrected_endurance_limit", f.material.uncorrected_strength},
+           {"fatigue_cycles",
+            f.material.fatigue_cycles ? Json(*f.material.fatigue_cycles) : Json(nullptr)},
+           {"endurance_limit_source", f.material.source},
+           {"surface_finish", surface_finish_name(f.options.finish)},
+           {"reliability", f.options.reliability},
+           {"K_f", f.options.K_f},
+           {"c_surf", c.strength.factors.surface},
+           {"c_size", c.strength.factors.size},
+           {"c_load", c.strength.factors.load},
+           {"c_reliab", c.strength.factors.reliability},
+           {"c_misc", c.strength.factors.misc},
+           {"pivots", pivots}};
+  j["fatigue_note"] = nullptr;
+}
+
+std::string fatigue_text(const MechanismAnalysis& a, const FatigueReport& r) {
+  if (!r.fatigue) return fmt::format("  fatigue: not checked: {}\n", r.note);
+  const MechanismFatigue& f = *r.fatigue;
+  const PivotFatigue& c = f.critical();
+  const std::string life =
+      c.check.infinite_life
+          ? (f.material.fatigue_cycles ? fmt::format("life >= {:.3g} cycles (no endurance limit)",
+                                                     *f.material.fatigue_cycles)
+                                       : std::string("infinite life"))
+          : fmt::format("FINITE LIFE, about {:.3g} cycles", c.check.cycles_to_failure);
+  return fmt::format(
+      "  fatigue (rest to full stroke, pivot {}): sigma_a {:.5g} Pa, sigma_m {:.5g} Pa, S_e "
+      "{:.5g} Pa (S_e' {:.5g} Pa x Marin {:.3f}: {}, R {:g}, K_f {:g}); fatigue safety factor "
+      "{:.3f} (modified Goodman), {}\n",
+      described_pivot(a.design, f.critical_pivot),
+      c.check.alternating_stress,
+      c.check.mean_stress,
+      c.check.endurance_limit,
+      f.material.uncorrected_strength,
+      c.strength.factors.product(),
+      surface_finish_name(f.options.finish),
+      f.options.reliability,
+      f.options.K_f,
+      c.check.safety_factor,
+      life);
+}
+
+void write_hdf5(const std::string& path,
+                const MechanismAnalysis& a,
+                io::AtomicHdf5File& file,
+                const FatigueReport& fatigue) {
   auto& root = file.root();
   const bool exact = a.has_exact && a.exact.converged();
   root.set_attribute("mechanism", a.design.name);
@@ -452,6 +557,18 @@ void write_hdf5(const std::string& path, const MechanismAnalysis& a, io::AtomicH
                      "1",
                      "per stroke point: 1 inside Howell Table 5.1 (every fixed-pinned segment), 0 "
                      "outside, -1 no table applies (small-length pivots, fixed-fixed segments)");
+  if (fatigue.fatigue) {
+    const PivotFatigue& c = fatigue.fatigue->critical();
+    root.set_attribute("fatigue_safety_factor", c.check.safety_factor);
+    root.set_attribute("alternating_stress", c.check.alternating_stress);
+    root.set_attribute("mean_stress", c.check.mean_stress);
+    root.set_attribute("endurance_limit", c.check.endurance_limit);
+    root.set_attribute("fatigue_critical_pivot",
+                       std::int64_t{described_pivot(a.design, fatigue.fatigue->critical_pivot)});
+    attribute_units +=
+        "; fatigue_safety_factor: 1 (modified Goodman, Howell eq. 3.110, rest to full stroke); "
+        "alternating_stress: Pa; mean_stress: Pa; endurance_limit: Pa (corrected S_e)";
+  }
   root.set_attribute("attribute_units", attribute_units);
   for (int p = 0; p < 3; ++p) {
     const int described = described_pivot(a.design, p + 1);
@@ -899,6 +1016,8 @@ void register_mechanism_command(CLI::App& app) {
     CLI::Option* force_of_option = nullptr;
     std::string model;        // general mechanism files only
     std::string input_range;  // general mechanism files only
+    std::string material;
+    FatigueFlags fatigue;
   };
   auto args = std::make_shared<AnalyzeArgs>();
   CLI::App* analyze = mech.add_subcommand(
@@ -946,6 +1065,11 @@ void register_mechanism_command(CLI::App& app) {
                       args->input_range,
                       "General mechanism files: the input range START:STOP:COUNT with units "
                       "(\"-5deg:33deg:77\"), replacing the file's [input] range");
+  analyze->add_option("--material",
+                      args->material,
+                      "Material from the library (`flexure materials`): replaces the design's E, "
+                      "S_y and gives S_ut, S_e' for the fatigue check");
+  args->fatigue.add_to(*analyze);
   analyze->callback([args, analyze] {
     require_in_range(args->points, "--points", 2, 100000);
     if (is_general_mechanism_file(args->what)) {
@@ -977,6 +1101,9 @@ void register_mechanism_command(CLI::App& app) {
     if (!args->out.empty()) io::check_output_path(args->out);
     MechanismDesign d = resolve(args->what);
     if (!args->spring_rule.empty()) apply_spring_rule(d, parse_spring_rule(args->spring_rule));
+    if (!args->material.empty()) apply_material_flag(d, args->material);
+    args->fatigue.apply_strengths(d);
+    const FatigueOptions fatigue_options = args->fatigue.options();
     // A design file's force_of (written by `flexure design mechanism`) unless --force-of is given.
     const ForceOf force_of =
         *args->force_of_option || !d.force_of ? parse_force_of(args->force_of) : *d.force_of;
@@ -1016,9 +1143,22 @@ void register_mechanism_command(CLI::App& app) {
     }
     warn(force_vanishing_warnings(a, a.has_exact && o.exact));
     warn(stability_warnings(a));
-    if (file) write_hdf5(args->out, a, *file);
+    FatigueReport fatigue;
+    try {
+      fatigue.fatigue = mechanism_fatigue(a, design_fatigue_material(a.design), fatigue_options);
+    } catch (const InvalidInput& e) {
+      fatigue.note = fmt::format(
+          "{}; give --material NAME (`flexure materials`) or --ultimate-strength and "
+          "--endurance-limit",
+          e.what());
+    }
+    if (fatigue.fatigue && !fatigue.fatigue->critical().check.infinite_life) {
+      warn(fmt::format("{}: {}", d.name, fatigue_text(a, fatigue).substr(2)));
+    }
+    if (file) write_hdf5(args->out, a, *file, fatigue);
     if (args->json) {
       Json j = analysis_json(a);
+      add_fatigue_json(j, a, fatigue);
       j["method"] = choice.method;
       j["method_reason"] = choice.reason;
       print_json(j);
@@ -1059,6 +1199,7 @@ void register_mechanism_command(CLI::App& app) {
                              a.max_stress_all,
                              a.safety_factor,
                              a.yielding_pivots.empty() ? "" : " (YIELDS)");
+    std::cout << fatigue_text(a, fatigue);
     const std::vector<StabilityEntry> entries = stability_entries(a);
     if (!entries.empty()) {
       std::cout << "  stability (margin: the lowest eigenvalue of the second variation of the "
@@ -1066,6 +1207,154 @@ void register_mechanism_command(CLI::App& app) {
       for (const StabilityEntry& e : entries) {
         if (e.stroke != nullptr) std::cout << "    " << e.stroke->summary << "\n";
       }
+    }
+  });
+
+  // `mechanism tolerance`: the sampled study of benchmarks/studies/mechanism_tolerance.h.
+  struct ToleranceArgs {
+    std::string what, thickness, width, length, E, distribution = "normal", method = "exact", out;
+    int samples = 100, points = 50;
+    std::uint64_t seed = 1;
+    bool json = false;
+  };
+  auto targs = std::make_shared<ToleranceArgs>();
+  CLI::App* tolerance = mech.add_subcommand(
+      "tolerance",
+      "Manufacturing tolerances: the force, percent constant force and safety factor over "
+      "sampled thicknesses, widths, lengths and E, with first-order sensitivities");
+  tolerance->add_option("mechanism", targs->what, "Built-in name or FILE.toml (as for analyze)")
+      ->required();
+  tolerance->add_option(
+      "--thickness", targs->thickness, "Spread of every flexure's thickness: 3% or 0.03");
+  tolerance->add_option("--width", targs->width, "Spread of every flexure's width: 1% or 0.01");
+  tolerance->add_option("--length",
+                        targs->length,
+                        "Spread of the links r2, r3 and every small-length flexure's length");
+  tolerance->add_option("--E", targs->E, "Spread of Young's modulus (one draw per sample)");
+  tolerance->add_option("--samples", targs->samples, "Sampled designs (2..100000)")
+      ->default_str("100");
+  tolerance
+      ->add_option("--distribution",
+                   targs->distribution,
+                   "normal (spread = standard deviation, cut at 3.5) or uniform (spread = "
+                   "half-width)")
+      ->default_str("normal");
+  tolerance->add_option("--seed", targs->seed, "Seed of the draws")->default_str("1");
+  tolerance->add_option("--method", targs->method, "exact (PRBM and exact) or prbm")
+      ->default_str("exact")
+      ->transform(CLI::IsMember({"prbm", "exact"}, CLI::ignore_case));
+  tolerance->add_option("--points", targs->points, "Stroke points of each analysis")
+      ->default_str("50");
+  tolerance->add_option("--out", targs->out, "Write the samples and statistics to this HDF5 file");
+  tolerance->add_flag("--json", targs->json, "Print one JSON object");
+  tolerance->callback([targs] {
+    const auto spread = [](const std::string& text, const char* flag) {
+      if (text.empty()) return 0.0;
+      const bool percent = text.back() == '%';
+      double v = 0.0;
+      try {
+        std::size_t used = 0;
+        const std::string number = percent ? text.substr(0, text.size() - 1) : text;
+        v = std::stod(number, &used);
+        if (used != number.size()) throw std::invalid_argument(text);
+      } catch (const std::exception&) {
+        throw InvalidInput(fmt::format("{} '{}' is not a spread: give 3% or 0.03", flag, text));
+      }
+      return percent ? v / 100.0 : v;
+    };
+    ToleranceOptions o;
+    o.spread.thickness = spread(targs->thickness, "--thickness");
+    o.spread.width = spread(targs->width, "--width");
+    o.spread.length = spread(targs->length, "--length");
+    o.spread.E = spread(targs->E, "--E");
+    o.samples = targs->samples;
+    o.points = targs->points;
+    o.seed = targs->seed;
+    o.exact = targs->method == "exact";
+    o.distribution = parse_spread_distribution(targs->distribution);
+    o.validate();
+    if (!targs->out.empty()) io::check_output_path(targs->out);
+    const MechanismDesign d = resolve(targs->what);
+    const ToleranceStudy s = mechanism_tolerance(d, o);
+    if (s.failed_samples > 0) {
+      warn(fmt::format("{} of {} samples could not be analysed and are left out (first: {})",
+                       s.failed_samples,
+                       o.samples,
+                       s.first_failure));
+    }
+    if (!targs->out.empty()) {
+      io::AtomicHdf5File file(targs->out);
+      write_tolerance_file(file.root(), s);
+      file.commit();
+    }
+    if (targs->json) {
+      Json j{{"design", s.design},
+             {"samples", o.samples},
+             {"failed_samples", s.failed_samples},
+             {"distribution", spread_distribution_name(o.distribution)},
+             {"seed", o.seed},
+             {"method", o.exact ? "exact" : "prbm"},
+             {"spread",
+              Json{{"thickness", o.spread.thickness},
+                   {"width", o.spread.width},
+                   {"length", o.spread.length},
+                   {"E", o.spread.E}}},
+             {"parameters", s.parameters},
+             {"out", targs->out.empty() ? Json(nullptr) : Json(targs->out)}};
+      for (const ToleranceStats& q : s.quantities) {
+        j[q.name] = Json{{"unit", q.unit},
+                         {"nominal", q.nominal},
+                         {"mean", q.mean},
+                         {"std", q.std},
+                         {"p05", q.p05},
+                         {"p50", q.p50},
+                         {"p95", q.p95},
+                         {"first_order_std", q.first_order_std},
+                         {"sensitivity",
+                          Json{{"thickness", q.sensitivity[0]},
+                               {"width", q.sensitivity[1]},
+                               {"length", q.sensitivity[2]},
+                               {"E", q.sensitivity[3]}}}};
+      }
+      print_json(j);
+      return;
+    }
+    std::cout << fmt::format(
+        "{}: {} samples ({}), spreads thickness {:g} %, width {:g} %, length {:g} %, E {:g} %{}\n",
+        s.design,
+        o.samples,
+        spread_distribution_name(o.distribution),
+        100 * o.spread.thickness,
+        100 * o.spread.width,
+        100 * o.spread.length,
+        100 * o.spread.E,
+        s.failed_samples > 0 ? fmt::format(" ({} failed)", s.failed_samples) : "");
+    std::cout << fmt::format(
+        "  {:<30} {:>11} {:>11} {:>10} {:>11} {:>11} {:>10}   dQ/d(rel): "
+        "thickness width length E\n",
+        "quantity",
+        "nominal",
+        "mean",
+        "std",
+        "p05",
+        "p95",
+        "1st-order");
+    for (const ToleranceStats& q : s.quantities) {
+      std::cout << fmt::format(
+          "  {:<30} {:>11.5g} {:>11.5g} {:>10.3g} {:>11.5g} {:>11.5g} {:>10.3g}   {:.3g} {:.3g} "
+          "{:.3g} {:.3g} ({})\n",
+          q.name,
+          q.nominal,
+          q.mean,
+          q.std,
+          q.p05,
+          q.p95,
+          q.first_order_std,
+          q.sensitivity[0],
+          q.sensitivity[1],
+          q.sensitivity[2],
+          q.sensitivity[3],
+          q.unit);
     }
   });
 

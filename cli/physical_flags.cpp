@@ -8,6 +8,7 @@
 
 #include "cli/cli_common.h"
 #include "flexure/io/quantity.h"
+#include "flexure/mechanisms/material_library.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {
@@ -32,6 +33,7 @@ double plain_number(const std::string& text, const char* what) {
 }  // namespace
 
 void PhysicalFlags::add_to(CLI::App& command, bool with_yield_strength) {
+  this->with_yield_strength = with_yield_strength;
   CLI::Option_group* group = command.add_option_group(
       "physical beam", "A cantilever in physical units (SI, or with units: 50mm, 200GPa, 5N)");
   const std::pair<const char*, std::string*> flags[] = {
@@ -44,6 +46,7 @@ void PhysicalFlags::add_to(CLI::App& command, bool with_yield_strength) {
       {"--Fy", &Fy},
       {"--M", &M},
       {"--yield-strength", &yield_strength},
+      {"--material", &material},
   };
   const char* help[] = {
       "Beam length L (m, or 50mm, 2in)",
@@ -55,9 +58,10 @@ void PhysicalFlags::add_to(CLI::App& command, bool with_yield_strength) {
       "Tip force perpendicular to the undeformed beam (N, or lbf)",
       "Tip moment, counter-clockwise (N m, or N mm, lbf in)",
       "Yield strength S_y for the safety factor (Pa, or MPa, ksi)",
+      "Material from the library (E and S_y; `flexure materials`), e.g. steel-1095-hr",
   };
-  const std::size_t count = std::size(flags) - (with_yield_strength ? 0 : 1);
-  for (std::size_t i = 0; i < count; ++i) {
+  for (std::size_t i = 0; i < std::size(flags); ++i) {
+    if (!with_yield_strength && flags[i].second == &yield_strength) continue;
     options.push_back(group->add_option(flags[i].first, *flags[i].second, help[i]));
   }
   // Distributed loads and extension (docs/distributed-loads.md, docs/extensible.md).
@@ -97,14 +101,20 @@ bool PhysicalFlags::given() const {
 PhysicalCantilever PhysicalFlags::parse() const {
   using io::Dimension;
   PhysicalCantilever beam;
-  if (length.empty() || E.empty()) {
+  if (length.empty() || (E.empty() && material.empty())) {
     throw InvalidInput(
-        "a physical beam needs --length and --E, a section (--I, or --width and --thickness) and "
-        "its tip loads (--Fx, --Fy, --M; default 0)");
+        "a physical beam needs --length and --E (or --material), a section (--I, or --width and "
+        "--thickness) and its tip loads (--Fx, --Fy, --M; default 0)");
   }
+  const MaterialGrade* grade = material.empty() ? nullptr : &find_material(material);
   beam.length = io::parse_quantity(length, Dimension::kLength, "--length").si;
-  const io::Quantity modulus = io::parse_quantity(E, Dimension::kStress, "--E");
+  const io::Quantity modulus =
+      E.empty() ? io::Quantity{grade->E, ""} : io::parse_quantity(E, Dimension::kStress, "--E");
   beam.E = modulus.si;
+  if (grade != nullptr && !E.empty()) {
+    warn(fmt::format(
+        "--E {:.6g} Pa replaces the {:.6g} Pa of material '{}'", beam.E, grade->E, grade->id));
+  }
   beam.I = quantity_option(I, Dimension::kSecondMoment, "--I");
   beam.width = quantity_option(width, Dimension::kLength, "--width");
   beam.thickness = quantity_option(thickness, Dimension::kLength, "--thickness");
@@ -126,6 +136,20 @@ PhysicalCantilever PhysicalFlags::parse() const {
   if (!shear_coefficient.empty()) {
     if (!extensible) throw InvalidInput("--shear-coefficient is used with --extensible only");
     beam.shear_coefficient = plain_number(shear_coefficient, "--shear-coefficient");
+  }
+  if (grade != nullptr) {
+    const std::optional<double> strength = grade->static_strength();
+    if (beam.yield_strength && strength && *beam.yield_strength != *strength) {
+      warn(fmt::format("--yield-strength {:.6g} Pa replaces the {:.6g} Pa of material '{}'",
+                       *beam.yield_strength,
+                       *strength,
+                       grade->id));
+    }
+    // The material's strength where the command reports a safety factor and the section gives a
+    // stress (a thickness).
+    if (!beam.yield_strength && with_yield_strength && !thickness.empty()) {
+      beam.yield_strength = strength;
+    }
   }
   beam.validate();
   warn(io::modulus_warning(modulus, "--E"));

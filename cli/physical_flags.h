@@ -4,6 +4,7 @@
 // loads --Fx, --Fy, --M, the distributed loads --qx, --qy, --q-follower, the self-weight
 // --density (--g), the extensible beam (--extensible, --nu, --shear-coefficient) and, for `beam`,
 // --yield-strength, as SI numbers or values with units.
+// --material NAME (data/materials.csv) gives E and S_y that --E and --yield-strength override.
 #include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
@@ -13,11 +14,12 @@
 namespace flexure::cli {
 
 struct PhysicalFlags {
-  std::string length, E, I, width, thickness, Fx, Fy, M, yield_strength;
+  std::string length, E, I, width, thickness, Fx, Fy, M, yield_strength, material;
   // Distributed loads, self-weight and extension (docs/cli.md, "Physical beams").
   std::string qx, qy, q_follower, density, g, nu, shear_coefficient;
   bool extensible = false;
   std::vector<CLI::Option*> options;
+  bool with_yield_strength = false;  // add_to's argument: the command reports a safety factor
 
   // Adds the flags to `command` in an option group "physical beam".
   void add_to(CLI::App& command, bool with_yield_strength);

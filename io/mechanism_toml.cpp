@@ -12,6 +12,8 @@
 #include "flexure/elements/fixed_pinned_segment.h"
 #include "flexure/io/quantity.h"
 #include "flexure/io/toml_support.h"
+#include "flexure/mechanisms/material_library.h"
+#include "flexure/mechanisms/mechanism_fatigue.h"
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/solver/common/errors.h"
 
@@ -182,19 +184,93 @@ MechanismFile parse_mechanism_file(const std::string& text, const std::string& s
   d.r2 = positive(root, "r2", "the file", source, 1, io::Dimension::kLength);
   d.r3 = positive(root, "r3", "the file", source, 1, io::Dimension::kLength);
   d.stroke = positive(root, "stroke", "the file", source, 1, io::Dimension::kLength);
+  // The material: material = "NAME" (a data/materials.csv id), or a [material] table with E and
+  // yield_strength, optional fatigue values, and a name that, when the library knows it, supplies
+  // every value the table leaves out (docs/materials.md).
+  std::vector<std::string> material_notes;
   const toml::node* mat = root.get("material");
-  if (mat == nullptr || !mat->is_table()) {
+  if (mat != nullptr && mat->is_string()) {
+    try {
+      apply_material(d, find_material(**mat->as_string()));
+    } catch (const InvalidInput& e) {
+      toml_fail(source, line_of(*mat), fmt::format("material: {}", e.what()));
+    }
+  } else if (mat == nullptr || !mat->is_table()) {
     toml_fail(source,
               mat ? line_of(*mat) : 1,
-              "the file needs a [material] table with E and "
-              "yield_strength");
+              "the file needs material = \"NAME\" (see `flexure materials`) or a [material] "
+              "table with E and yield_strength");
+  } else {
+    const toml::table& m = *mat->as_table();
+    check_toml_keys(
+        m,
+        {"E", "yield_strength", "name", "ultimate_strength", "endurance_limit", "endurance_cycles"},
+        "[material]",
+        source);
+    const std::optional<std::string> name = optional_string(m, "name", "material.name");
+    const MaterialGrade* grade = nullptr;
+    if (name) {
+      try {
+        grade = &find_material(*name);
+      } catch (const InvalidInput& e) {
+        // Without E or S_y the name must supply them; with both it only documents the file.
+        if (m.get("E") == nullptr || m.get("yield_strength") == nullptr) {
+          toml_fail(source, line_of(*m.get("name")), fmt::format("material.name: {}", e.what()));
+        }
+      }
+    }
+    if (grade != nullptr) {
+      try {
+        apply_material(d, *grade);
+      } catch (const InvalidInput& e) {
+        if (m.get("yield_strength") == nullptr) {
+          toml_fail(source, line_of(*m.get("name")), fmt::format("material.name: {}", e.what()));
+        }
+        d.material = grade->id;  // S_y comes from the table below
+        d.E = grade->E;
+        d.ultimate_strength = grade->ultimate_strength;
+        d.endurance_limit = grade->fatigue_strength;
+        d.endurance_cycles = grade->fatigue_cycles;
+        d.ductile = grade->ductile;
+      }
+    }
+    // A value in the table replaces the library's, with a note when it differs.
+    const auto value = [&](const char* key, std::optional<io::Dimension> dim, double library) {
+      const double v = positive(m,
+                                key,
+                                "material",
+                                source,
+                                line_of(m),
+                                dim,
+                                library > 0.0 ? std::optional<double>(library) : std::nullopt);
+      if (grade != nullptr && library > 0.0 && m.get(key) != nullptr && v != library) {
+        material_notes.push_back(
+            fmt::format("material.{} = {:.6g} replaces the {:.6g} of '{}' ({})",
+                        key,
+                        v,
+                        library,
+                        grade->id,
+                        grade->source));
+      }
+      return v;
+    };
+    d.E = value("E", io::Dimension::kStress, grade ? d.E : 0.0);
+    d.yield_strength =
+        value("yield_strength", io::Dimension::kStress, grade ? d.yield_strength : 0.0);
+    if (m.get("ultimate_strength") != nullptr || d.ultimate_strength) {
+      d.ultimate_strength =
+          value("ultimate_strength", io::Dimension::kStress, d.ultimate_strength.value_or(0.0));
+    }
+    if (m.get("endurance_limit") != nullptr || d.endurance_limit) {
+      d.endurance_limit =
+          value("endurance_limit", io::Dimension::kStress, d.endurance_limit.value_or(0.0));
+      if (m.get("endurance_limit") != nullptr) d.endurance_cycles.reset();
+    }
+    if (m.get("endurance_cycles") != nullptr) {
+      d.endurance_cycles =
+          positive(m, "endurance_cycles", "material", source, line_of(m), std::nullopt);
+    }
   }
-  const toml::table& m = *mat->as_table();
-  check_toml_keys(m, {"E", "yield_strength", "name"}, "[material]", source);
-  optional_string(m, "name", "material.name");  // documentation only, but a string
-  d.E = positive(m, "E", "material", source, line_of(m), io::Dimension::kStress);
-  d.yield_strength =
-      positive(m, "yield_strength", "material", source, line_of(m), io::Dimension::kStress);
   std::string pattern;
   for (int p = 1; p <= 3; ++p) {
     const std::string name = kJointTables[p - 1];
@@ -341,6 +417,7 @@ MechanismFile parse_mechanism_file(const std::string& text, const std::string& s
   const auto warn = [&](const std::string& text) {
     if (!text.empty()) file.warnings.push_back(fmt::format("{}: {}", source, text));
   };
+  for (const std::string& n : material_notes) warn(n);
   warn(io::modulus_warning({d.E, ""}, "material.E"));
   for (std::size_t k = 0; k < d.joints.size(); ++k) {
     const JointDesign& j = d.joints[k];
@@ -419,9 +496,25 @@ std::string mechanism_toml(const MechanismDesign& d, const std::string& comment)
   if (fixed_fixed) {
     out += fmt::format("spring_rule = {}\n", toml_string(spring_rule_name(d.spring_rule)));
   }
-  out += fmt::format("\n[material]\nE = {}               # Pa\nyield_strength = {}  # Pa\n",
+  out += "\n[material]\n";
+  if (!d.material.empty()) {
+    out += fmt::format("name = {}  # data/materials.csv (`flexure materials`)\n",
+                       toml_string(d.material));
+  }
+  out += fmt::format("E = {}               # Pa\nyield_strength = {}  # Pa\n",
                      toml_number(d.E),
                      toml_number(d.yield_strength));
+  if (d.ultimate_strength) {
+    out += fmt::format("ultimate_strength = {}  # Pa\n", toml_number(*d.ultimate_strength));
+  }
+  if (d.endurance_limit) {
+    out += fmt::format("endurance_limit = {}  # Pa, uncorrected S_e' (Howell eq. 3.74)\n",
+                       toml_number(*d.endurance_limit));
+  }
+  if (d.endurance_cycles) {
+    out += fmt::format("endurance_cycles = {}  # life of that fatigue strength\n",
+                       toml_number(*d.endurance_cycles));
+  }
   for (int p = 1; p <= 3; ++p) {
     const JointDesign& j = d.joints[p - 1];
     if (j.type == PivotType::kPin) continue;

@@ -62,7 +62,15 @@ struct MechanismDesign {
   std::array<JointDesign, 3> joints;  // pivot 1 (ground), 2 (middle), 3 (slider)
   double E = 0.0;                     // Young's modulus, Pa
   double yield_strength = 0.0;        // Pa
-  double stroke = 0.0;                // slider travel Delta x at the end of the stroke, m
+  // The material beyond E and S_y, for the fatigue check (fatigue.h, docs/fatigue.md): the
+  // data/materials.csv id it was taken from (empty: given by value), S_ut, the uncorrected
+  // endurance limit S_e' (or fatigue strength S_f' at endurance_cycles), brittleness.
+  std::string material;
+  std::optional<double> ultimate_strength;  // Pa
+  std::optional<double> endurance_limit;    // Pa
+  std::optional<double> endurance_cycles;   // life of a fatigue strength; empty: endurance limit
+  bool ductile = true;
+  double stroke = 0.0;  // slider travel Delta x at the end of the stroke, m
   // An inversion (thesis §3.2.4, Fig. 3.2): the slider block is fixed and the ground block
   // slides. The fields above still describe the ORIGINAL orientation (the frame every model
   // computes in; the relative motion is the same); mechanisms/inversion.h gives the mirrored

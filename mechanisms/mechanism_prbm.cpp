@@ -79,7 +79,7 @@ PrbmState prbm_state(const MechanismDesign& design, double displacement) {
       const double K = j.segment == SegmentKind::kFixedFixed
                            ? section.flexural_rigidity() / j.length
                            : design.spring_constant(p);
-      M = K * std::abs(psi);
+      M = K * psi;
     } else {
       // Clamp behind the characteristic pivot: (1 - gamma) l (Howell §5.2).
       const double back = howell_average_fixed_pinned().geometry().pivot_x * j.length;
@@ -91,9 +91,10 @@ PrbmState prbm_state(const MechanismDesign& design, double displacement) {
       } else {  // slp: beam clamped to link 2, pinned at the slider
         cx = p2x - back * e2x, cy = p2y - back * e2y, ex = p3x, ey = p3y;
       }
-      M = std::abs(cross(ex - cx, ey - cy, s.pin_force_x, s.pin_force_y));
+      M = cross(ex - cx, ey - cy, s.pin_force_x, s.pin_force_y);
     }
-    s.stress[p - 1] = M * half_h / I + P / section.area();
+    s.moment[p - 1] = M;
+    s.stress[p - 1] = std::abs(M) * half_h / I + P / section.area();
   }
   return s;
 }

@@ -29,6 +29,10 @@ struct PrbmState {
   double pin_force_x = 0.0;   // force of the coupler on the crank at pivot 2, N
   double pin_force_y = 0.0;
   std::array<double, 3> stress{};  // largest stress of each flexible pivot, Pa (0 for a pin)
+  // The bending moment behind each stress with its sign (K psi at an s pivot, the pin force's
+  // moment about the clamp of an l segment), N m: whether a fibre's stress changes sign over a
+  // stroke (mechanism_fatigue.h).
+  std::array<double, 3> moment{};
 };
 
 // PRBM state at one slider displacement 0 < Delta x <= toggle stroke (design finalised).

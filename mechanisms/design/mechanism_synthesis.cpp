@@ -256,6 +256,42 @@ double round_up_4(double m) {
   return std::ceil(x / p - 1e-9) * p * 1e-3;
 }
 
+// The specification's material onto a design, and with MechanismSpec::fatigue its check: a
+// design below the safety factor in fatigue is rejected (docs/fatigue.md). The fatigue check
+// runs the design's own analysis (exact where spec.exact), as `mechanism analyze` would.
+void apply_spec_material(const MechanismSpec& spec, DimensionedDesign& out) {
+  mechanism::MechanismDesign& d = out.design;
+  d.material = spec.material;
+  d.ultimate_strength = spec.ultimate_strength;
+  d.endurance_limit = spec.endurance_limit;
+  d.endurance_cycles = spec.endurance_cycles;
+  d.ductile = spec.ductile;
+  if (!out.feasible || !spec.fatigue) return;
+  mechanism::AnalysisOptions ao;
+  ao.points = spec.points;
+  ao.exact = spec.exact;
+  ao.stability = false;
+  const mechanism::MechanismAnalysis a = mechanism::analyze_mechanism(d, ao);
+  out.fatigue =
+      mechanism::mechanism_fatigue(a, mechanism::design_fatigue_material(d), *spec.fatigue);
+  const FatigueCheck& f = out.fatigue->critical().check;
+  const double required = spec.fatigue_safety_factor.value_or(spec.safety_factor);
+  if (f.safety_factor < required * (1.0 - 1e-9)) {
+    reject(out,
+           fmt::format("fatigue: pivot {} cycles at sigma_a {:.4g} MPa, sigma_m {:.4g} MPa "
+                       "against S_e {:.4g} MPa (S_ut {:.4g} MPa): modified Goodman safety factor "
+                       "{:.3g} < {:g} (Howell eq. 3.110)",
+                       out.fatigue->critical_pivot,
+                       f.alternating_stress * 1e-6,
+                       f.mean_stress * 1e-6,
+                       f.endurance_limit * 1e-6,
+                       *spec.ultimate_strength * 1e-6,
+                       f.safety_factor,
+                       required),
+           required / f.safety_factor);
+  }
+}
+
 }  // namespace
 
 void MechanismSpec::validate() const {
@@ -296,6 +332,17 @@ void MechanismSpec::validate() const {
     throw InvalidInput(fmt::format("pcf-min = {} must lie in (0, 100)", *pcf_min));
   }
   for (const std::string& c : configs) cfm::find_cfm_configuration(c);  // throws, listing names
+  if (fatigue) {
+    fatigue->validate();
+    if (!ultimate_strength || !endurance_limit) {
+      throw InvalidInput(fmt::format(
+          "the fatigue check needs the material's ultimate strength S_ut and endurance limit S_e'"
+          "{} (Howell eqs. 3.74, 3.110)",
+          material.empty()
+              ? std::string()
+              : fmt::format(" ('{}' lacks {})", material, !ultimate_strength ? "S_ut" : "S_e'")));
+    }
+  }
   if (points < 2 || points > 10000) {
     throw InvalidInput(fmt::format("points = {} must lie in [2, 10000]", points));
   }
@@ -373,6 +420,32 @@ DesignScreens design_screens(const MechanismSpec& spec) {
 
 MechanismDesignReport design_mechanisms(const MechanismSpec& spec) {
   spec.validate();
+  if (spec.fatigue && !spec.fatigue_safety_factor) {
+    // Size for fatigue: a flexure cycling 0 -> sigma_max has sigma_m = sigma_a = sigma_max/2, so
+    // the Goodman line (Howell eq. 3.110) allows sigma_max = 2 S_e S_ut/((S_e + S_ut) SF)
+    // (eq. 3.128 at SF = 1); S_e at c_size = 1 (flexures thinner than 2.8 mm), K_f on the stress
+    // of a brittle material. The static safety factor that keeps sigma_max there sizes the
+    // designs; the check of each design (its own size factor and stresses) decides.
+    MechanismSpec sized = spec;
+    sized.fatigue_safety_factor = spec.safety_factor;
+    std::optional<double> raised;
+    if (spec.yield_strength) {
+      FatigueMaterial m;
+      m.ultimate_strength = *spec.ultimate_strength;
+      m.uncorrected_strength = *spec.endurance_limit;
+      m.fatigue_cycles = spec.endurance_cycles;
+      m.ductile = spec.ductile;
+      const PartFatigueStrength s = part_fatigue_strength(m, *spec.fatigue, 1e-3);
+      const double allowed = 2.0 * s.corrected * m.ultimate_strength /
+                             ((s.corrected + m.ultimate_strength) * spec.safety_factor) /
+                             s.stress_factor;
+      raised = std::max(spec.safety_factor, *spec.yield_strength / allowed);
+      sized.safety_factor = *raised;
+    }
+    MechanismDesignReport r = design_mechanisms(sized);
+    r.sizing_safety_factor = raised;
+    return r;
+  }
   MechanismDesignReport report;
   report.screens = design_screens(spec);
   const RowSelection selection(spec);
@@ -385,6 +458,7 @@ MechanismDesignReport design_mechanisms(const MechanismSpec& spec) {
     DimensionedDesign design = spec.minimize == SizeObjective::kNone
                                    ? size_longest(spec, sizer)
                                    : size_smallest(spec, sizer, selection);
+    apply_spec_material(spec, design);
     (design.feasible ? report.designs : report.rejected).push_back(std::move(design));
   }
   // Nothing feasible: the shortest length at which a sub-class is feasible by the full sizing
@@ -633,6 +707,7 @@ DimensionedDesign refine_design_exact(const MechanismSpec& spec,
     return out;
   }
   out.feasible = true;
+  apply_spec_material(spec, out);
   return out;
 }
 

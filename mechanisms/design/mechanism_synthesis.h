@@ -28,6 +28,7 @@
 #include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/force_of.h"
 #include "flexure/mechanisms/mechanism.h"
+#include "flexure/mechanisms/mechanism_fatigue.h"
 
 namespace flexure::design {
 
@@ -103,6 +104,20 @@ struct MechanismSpec {
   double force_tolerance = 0.10;
   SectionBounds bounds;
   SizeObjective minimize = SizeObjective::kNone;
+  // The material beyond E and S_y (a data/materials.csv id or given values), written onto every
+  // design (MechanismDesign's fields of the same names; mechanism_fatigue.h).
+  std::string material;
+  std::optional<double> ultimate_strength, endurance_limit, endurance_cycles;
+  bool ductile = true;
+  // Set: keep only designs whose modified Goodman safety factor over rest -> full stroke -> rest
+  // (Howell eq. 3.110, mechanism_fatigue.h) is at least safety_factor; the others are rejected
+  // with binding "fatigue: ...". Needs ultimate_strength and endurance_limit. With a fatigue
+  // strength (no endurance limit) that is a life of at least endurance_cycles, not infinite.
+  std::optional<FatigueOptions> fatigue;
+  // Set by design_mechanisms for its sizing pass under `fatigue` (not by callers): the safety
+  // factor the fatigue check asks for, while safety_factor is raised to the static one that gives
+  // the rest -> full stroke cycle that fatigue safety factor (docs/fatigue.md).
+  std::optional<double> fatigue_safety_factor;
 
   // Throws InvalidInput naming the first field outside its range (non-finite, <= 0, a range with
   // lower > upper, an unknown configuration).
@@ -155,9 +170,11 @@ struct DimensionedDesign {
   // segments of both halves, m^3.
   double footprint = 0.0;
   double flexure_volume = 0.0;
-  double width_to_thickness = 0.0;    // largest b/h of any flexure
-  double width_to_length = 0.0;       // largest b/l_tot of any flexure
-  int exact_evaluations = 0;          // refine_design_exact: exact strokes of the optimisation
+  double width_to_thickness = 0.0;  // largest b/h of any flexure
+  double width_to_length = 0.0;     // largest b/l_tot of any flexure
+  int exact_evaluations = 0;        // refine_design_exact: exact strokes of the optimisation
+  // MechanismSpec::fatigue: the check of the design (its critical pivot, stresses, S_e, SF).
+  std::optional<mechanism::MechanismFatigue> fatigue;
   mechanism::MechanismDesign design;  // ready for analyze_mechanism (when feasible)
 };
 
@@ -184,6 +201,10 @@ struct MechanismDesignReport {
   // 1e-4 less was not.
   std::optional<double> length_needed;
   std::string length_needed_subclass;
+  // MechanismSpec::fatigue with a yield strength: the static safety factor the designs were sized
+  // at so that their cycle 0 -> sigma_max meets the fatigue safety factor (c_size = 1); empty
+  // otherwise.
+  std::optional<double> sizing_safety_factor;
 };
 
 // Throws InvalidInput for an invalid specification.

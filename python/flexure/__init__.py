@@ -20,7 +20,23 @@ __version__ = _core.version
 git_commit = _core.git_commit
 
 __all__ = ["beam", "path", "sweep", "cfm", "dynamics", "bench", "validate", "read", "prbm",
-           "mechanism", "design", "map", "InvalidInput", "NoConvergence", "FlexureWarning"]
+           "mechanism", "design", "map", "materials", "InvalidInput", "NoConvergence",
+           "FlexureWarning"]
+
+
+def materials(name=None):
+    """The material library (Howell Appendix C; docs/materials.md): `flexure materials`.
+
+    name: one material (an id or designation, e.g. 'steel-1095-hr' or '1095 HR'); None: all.
+    Returns the dict `flexure materials --json` prints: `materials`, a list of dicts (id, E, nu,
+    yield_strength, ultimate_strength, endurance_limit, density, source, notes; SI, None where
+    the source has no value). An unknown name raises InvalidInput naming the closest ids.
+
+    Example:
+      >>> flexure.materials("1095 HR")["materials"][0]["ultimate_strength"]
+      830000000.0
+    """
+    return _run(["materials"], {}, positional=[] if name is None else [name])
 
 
 def path(*, out, n=None, alpha2=None, mu=None, follower=None, boundary=None, tip_x=None,

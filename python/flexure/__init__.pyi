@@ -60,8 +60,17 @@ def beam(
     yield_strength: Quantity | None = ...,
     stable: bool = ...,
     stability: str | None = ...,
+    material: str | None = ...,
+    cycle: str | None = ...,
+    surface_finish: str | None = ...,
+    reliability: float | None = ...,
+    Kf: float | None = ...,
+    fatigue_factor: float | None = ...,
+    ultimate_strength: Quantity | None = ...,
+    endurance_limit: Quantity | None = ...,
     threads: int | None = ...,
 ) -> Result: ...
+def materials(name: str | None = ...) -> dict[str, Any]: ...
 def path(
     *,
     out: Path,

@@ -23,6 +23,8 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
          elements=None, increments=None, chain_variant=None, integrator=None, chain=None,
          constants=None, slenderness=None, length=None, E=None, I=None, width=None,
          thickness=None, Fx=None, Fy=None, M=None, yield_strength=None, stable=False, stability=None,
+         material=None, cycle=None, surface_finish=None, reliability=None,
+         Kf=None, fatigue_factor=None, ultimate_strength=None, endurance_limit=None,
          threads=None):
     """Solves an initially straight cantilever with an end load: `flexure beam` (docs/cli.md).
 
@@ -56,7 +58,10 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
                   critical, return a stable equilibrium found from it (key stable_search says
                   what was done; NoConvergence when none is found); given loads only
     A physical cantilever (SI numbers, or strings with units: '50mm', '200GPa', '5N'):
-      length, E, I (or width and thickness), Fx, Fy, M, yield_strength
+      length, E, I (or width and thickness), Fx, Fy, M, yield_strength, material (a name of
+      flexure.materials(): E and S_y); cycle 'reversed' | 'repeated' checks the beam in fatigue
+      (surface_finish, reliability, Kf, fatigue_factor, ultimate_strength, endurance_limit;
+      docs/fatigue.md)
 
     Returns the dict `flexure beam --json` prints: method, method_reason, expected_error, n,
     alpha2, mu, a_over_l, b_over_l, theta0 (rad), iterations, converged, branch,
@@ -85,7 +90,11 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
                "integrator": integrator, "chain": chain, "constants": constants,
                "slenderness": slenderness, "length": length, "E": E, "I": I,
                "width": width, "thickness": thickness, "Fx": Fx, "Fy": Fy, "M": M,
-               "yield_strength": yield_strength, "stable": stable, "stability": stability}
+               "yield_strength": yield_strength, "stable": stable, "stability": stability,
+               "material": material, "cycle": cycle,
+               "surface_finish": surface_finish, "reliability": reliability, "Kf": Kf,
+               "fatigue_factor": fatigue_factor, "ultimate_strength": ultimate_strength,
+               "endurance_limit": endurance_limit}
     if threads is not None and (not isinstance(threads, int) or isinstance(threads, bool)
                                 or threads < 1):
         raise _command.InvalidInput(f"threads = {threads!r}: expected an integer >= 1")

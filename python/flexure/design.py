@@ -58,12 +58,14 @@ def _range(keyword, value):
     return value
 
 
-def mechanism(*, force, stroke, E, safety_factor, length_range, width_range=None,
+def mechanism(*, force, stroke, safety_factor, length_range, E=None, width_range=None,
               thickness_range=None, yield_strength=None, in_plane=False, out_of_plane=False,
               pcf_min=None, config=None, rank=None, force_of=None, exact=True, model=None,
               points=None, out=None, stress_rule=None, minimize=None,
               max_width_to_thickness=None, max_width_to_length=None, force_tolerance=None,
-              allow_infeasible=False):
+              allow_infeasible=False, material=None, fatigue=False, surface_finish=None,
+              reliability=None, Kf=None, fatigue_factor=None, ultimate_strength=None,
+              endurance_limit=None):
     """Dimensional design from a specification (thesis ch. 8): `flexure design mechanism`.
 
     force, stroke, E, yield_strength   numbers in SI (N, m, Pa) or strings with units ('25lbf',
@@ -90,6 +92,10 @@ def mechanism(*, force, stroke, E, safety_factor, length_range, width_range=None
     force_tolerance largest difference of the exact mean force from force, in % (default 10)
     allow_infeasible  with model='exact' and out: write the refined design even when it misses
                     the specification (marked NOT FEASIBLE; NoConvergence is still raised)
+    material        a name of flexure.materials() (E, S_y, S_ut, S_e'; E is then optional)
+    fatigue         True: size for and keep only designs with infinite life at safety_factor
+                    (surface_finish, reliability, Kf, fatigue_factor, ultimate_strength,
+                    endurance_limit; docs/fatigue.md)
     Returns the dict `flexure design mechanism --json` prints: designs (best first; each with
     subclass, r2, r3, segment_lengths, width, thicknesses, required_yield_strength, force_prbm,
     force_exact, percent_constant_force_prbm/_exact, safety_factor_prbm/_exact, ...), rejected
@@ -114,5 +120,8 @@ def mechanism(*, force, stroke, E, safety_factor, length_range, width_range=None
              stress_rule=stress_rule, minimize=minimize,
              max_width_to_thickness=max_width_to_thickness,
              max_width_to_length=max_width_to_length, force_tolerance=force_tolerance,
-             allow_infeasible=allow_infeasible),
-        switches=("in_plane", "out_of_plane", "no_exact", "allow_infeasible"))
+             allow_infeasible=allow_infeasible, material=material, fatigue=fatigue,
+             surface_finish=surface_finish, reliability=reliability, Kf=Kf,
+             fatigue_factor=fatigue_factor, ultimate_strength=ultimate_strength,
+             endurance_limit=endurance_limit),
+        switches=("in_plane", "out_of_plane", "no_exact", "allow_infeasible", "fatigue"))

@@ -45,7 +45,9 @@ def _design_argument(design):
 
 
 def analyze(mechanism, *, points=None, method=None, tol=None, out=None, prbm_only=False,
-            spring_rule=None, force_of=None):
+            spring_rule=None, force_of=None, material=None, surface_finish=None,
+            reliability=None, Kf=None, fatigue_factor=None, ultimate_strength=None,
+            endurance_limit=None):
     """Force curve of a constant-force mechanism over its stroke: `flexure mechanism analyze`.
 
     mechanism   a built-in name ('1A-lpp', '2B-lplm', a thesis sub-class 'lpp-b', an inversion
@@ -53,6 +55,10 @@ def analyze(mechanism, *, points=None, method=None, tol=None, out=None, prbm_onl
                 such a file
     points      stroke points (default 50); method 'auto' | 'prbm' | 'exact'; tol for auto
     out         also write the curves to this HDF5 file; spring_rule, force_of ('half' | 'whole')
+    material    a name of flexure.materials(): replaces the design's E and S_y, gives S_ut and
+                S_e' for the fatigue check (surface_finish, reliability, Kf, fatigue_factor,
+                ultimate_strength, endurance_limit; docs/fatigue.md): fatigue_safety_factor,
+                alternating_stress, mean_stress, endurance_limit, fatigue
     Returns the dict `flexure mechanism analyze --json` prints (curves as numpy arrays in N, m),
     with the stability of every stroke point in `stability_displacement_control` and
     `stability_force_control` ({"prbm": ..., "exact": ...}: `stability`, `stability_index`,
@@ -66,7 +72,11 @@ def analyze(mechanism, *, points=None, method=None, tol=None, out=None, prbm_onl
     try:
         return _command.run(["mechanism", "analyze"],
                             dict(points=points, method=method, tol=tol, out=out,
-                                 prbm_only=prbm_only, spring_rule=spring_rule, force_of=force_of),
+                                 prbm_only=prbm_only, spring_rule=spring_rule, force_of=force_of,
+                                 material=material, surface_finish=surface_finish,
+                                 reliability=reliability, Kf=Kf, fatigue_factor=fatigue_factor,
+                                 ultimate_strength=ultimate_strength,
+                                 endurance_limit=endurance_limit),
                             positional=[argument], switches={"prbm_only"})
     finally:
         if temporary:
@@ -88,4 +98,25 @@ def validate(*, designs=None, points=None, toggle_fraction=None, spring_rule=Non
                         switches={"spring_rules"})
 
 
-__all__ = ["list", "analyze", "validate"]
+def tolerance(mechanism, *, thickness=None, width=None, length=None, E=None, samples=None,
+              distribution=None, seed=None, method=None, points=None, out=None):
+    """Manufacturing tolerances: `flexure mechanism tolerance` (docs/tolerance.md).
+
+    mechanism as for analyze; thickness, width, length, E: relative spreads ('3%' or 0.03);
+    samples, distribution ('normal' | 'uniform'), seed, method ('exact' | 'prbm'), points, out.
+    Returns the dict `flexure mechanism tolerance --json` prints: per quantity of analyze
+    (mean_force_exact, ...) {nominal, mean, std, p05, p50, p95, first_order_std, sensitivity}.
+    """
+    argument, temporary = _design_argument(mechanism)
+    try:
+        return _command.run(["mechanism", "tolerance"],
+                            dict(thickness=thickness, width=width, length=length, E=E,
+                                 samples=samples, distribution=distribution, seed=seed,
+                                 method=method, points=points, out=out),
+                            positional=[argument])
+    finally:
+        if temporary:
+            os.unlink(temporary)
+
+
+__all__ = ["list", "analyze", "validate", "tolerance"]

@@ -14,6 +14,27 @@ def analyze(
     prbm_only: bool = ...,
     spring_rule: str | None = ...,
     force_of: str | None = ...,
+    material: str | None = ...,
+    surface_finish: str | None = ...,
+    reliability: float | None = ...,
+    Kf: float | None = ...,
+    fatigue_factor: float | None = ...,
+    ultimate_strength: str | float | None = ...,
+    endurance_limit: str | float | None = ...,
+) -> dict[str, Any]: ...
+def tolerance(
+    mechanism: Design,
+    *,
+    thickness: str | float | None = ...,
+    width: str | float | None = ...,
+    length: str | float | None = ...,
+    E: str | float | None = ...,
+    samples: int | None = ...,
+    distribution: str | None = ...,
+    seed: int | None = ...,
+    method: str | None = ...,
+    points: int | None = ...,
+    out: str | os.PathLike[str] | None = ...,
 ) -> dict[str, Any]: ...
 def validate(
     *,

@@ -152,6 +152,26 @@ def test_mechanism_list_and_analyze(cli):
                 cli.json("mechanism", "analyze", "1A-lpp", "--points", "8", "--method", "exact"))
 
 
+def test_materials_fatigue_and_tolerance(cli):
+    # docs/materials.md, docs/fatigue.md, docs/tolerance.md: the same JSON in-process.
+    assert_same(flexure.materials(), cli.json("materials"))
+    assert_same(flexure.materials("1095 HR"), cli.json("materials", "1095 HR"))
+    assert_same(flexure.mechanism.analyze("1A-lpp", points=8, method="prbm",
+                                          material="polypropylene", Kf=1.2, reliability=0.9),
+                cli.json("mechanism", "analyze", "1A-lpp", "--points", "8", "--method", "prbm",
+                         "--material", "polypropylene", "--Kf", "1.2", "--reliability", "0.9"))
+    assert_same(flexure.beam(length="20in", width="3in", thickness="0.2in", Fy="8lbf",
+                             material="steel-1095-hr", cycle="reversed", Kf=1.4),
+                cli.json("beam", "--length", "20in", "--width", "3in", "--thickness", "0.2in",
+                         "--Fy", "8lbf", "--material", "steel-1095-hr", "--cycle", "reversed",
+                         "--Kf", "1.4"))
+    assert_same(flexure.mechanism.tolerance("1A-lpp", thickness="3%", samples=5, method="prbm"),
+                cli.json("mechanism", "tolerance", "1A-lpp", "--thickness", "3%", "--samples",
+                         "5", "--method", "prbm"))
+    with pytest.raises(flexure.InvalidInput, match="closest: polypropylene"):
+        flexure.materials("polyproplene")
+
+
 def test_mechanism_stability_keys(cli):
     # docs/stability.md "Mechanisms": one verdict per stroke point, per model and control.
     got = flexure.mechanism.analyze("2A-ssp", points=8, method="exact")

@@ -1,0 +1,291 @@
+#include "flexure/benchmarks/studies/mechanism_tolerance.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <random>
+#include <span>
+
+#include "flexure/io/provenance.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
+#include "flexure/solver/common/errors.h"
+
+namespace flexure::mechanism {
+namespace {
+
+// One perturbable parameter: its group (0 thickness, 1 width, 2 length, 3 E) and how to scale it.
+struct Parameter {
+  std::string name;
+  int group = 0;
+  std::function<void(MechanismDesign&, double factor)> scale;
+};
+
+std::vector<Parameter> parameters_of(const MechanismDesign& d) {
+  std::vector<Parameter> out;
+  for (int p = 0; p < 3; ++p) {
+    if (d.joints[p].type == PivotType::kPin) continue;
+    out.push_back({fmt::format("thickness {}", p + 1), 0, [p](MechanismDesign& x, double f) {
+                     x.joints[p].thickness *= f;
+                   }});
+  }
+  for (int p = 0; p < 3; ++p) {
+    if (d.joints[p].type == PivotType::kPin) continue;
+    out.push_back({fmt::format("width {}", p + 1), 1, [p](MechanismDesign& x, double f) {
+                     x.joints[p].width *= f;
+                   }});
+  }
+  out.push_back({"r2", 2, [](MechanismDesign& x, double f) { x.r2 *= f; }});
+  out.push_back({"r3", 2, [](MechanismDesign& x, double f) { x.r3 *= f; }});
+  for (int p = 0; p < 3; ++p) {
+    // A small-length flexure's own length (a long segment's is r/gamma: it follows r2 or r3).
+    if (d.joints[p].type != PivotType::kSmall) continue;
+    out.push_back({fmt::format("length {}", p + 1), 2, [p](MechanismDesign& x, double f) {
+                     x.joints[p].length *= f;
+                   }});
+  }
+  out.push_back({"E", 3, [](MechanismDesign& x, double f) { x.E *= f; }});
+  return out;
+}
+
+double spread_of(const ToleranceSpread& s, int group) {
+  return group == 0 ? s.thickness : group == 1 ? s.width : group == 2 ? s.length : s.E;
+}
+
+struct Values {
+  std::vector<double> q;  // per quantity
+};
+
+// The quantities of one design, in the order of quantity_names.
+Values evaluate(MechanismDesign d, const ToleranceOptions& o) {
+  // Long segments' lengths are re-derived from the (perturbed) links.
+  for (JointDesign& j : d.joints) {
+    if (j.type == PivotType::kLong) j.length = 0.0;
+  }
+  d.finalise();
+  AnalysisOptions ao;
+  ao.points = o.points;
+  ao.exact = o.exact;
+  ao.stability = false;
+  const MechanismAnalysis a = analyze_mechanism(d, ao);
+  Values v;
+  v.q = {a.prbm.mean_force, a.prbm.percent_constant_force, a.safety_factor};
+  if (o.exact) {
+    if (!a.has_exact || !a.exact.converged()) {
+      throw NoConvergence(a.has_exact ? a.exact.message : a.exact_note);
+    }
+    v.q.push_back(a.mean_force_exact);
+    v.q.push_back(a.percent_constant_force_exact);
+  }
+  for (double x : v.q) {
+    if (!std::isfinite(x)) throw NoConvergence("a quantity is not finite");
+  }
+  return v;
+}
+
+// Linear interpolation between order statistics (Hyndman & Fan type 7).
+double percentile(const std::vector<double>& sorted, double p) {
+  const double h = (sorted.size() - 1) * p;
+  const std::size_t lo = static_cast<std::size_t>(std::floor(h));
+  const std::size_t hi = std::min(lo + 1, sorted.size() - 1);
+  return sorted[lo] + (h - lo) * (sorted[hi] - sorted[lo]);
+}
+
+}  // namespace
+
+const char* spread_distribution_name(SpreadDistribution d) {
+  return d == SpreadDistribution::kNormal ? "normal" : "uniform";
+}
+
+SpreadDistribution parse_spread_distribution(const std::string& name) {
+  if (name == "normal") return SpreadDistribution::kNormal;
+  if (name == "uniform") return SpreadDistribution::kUniform;
+  throw InvalidInput(
+      fmt::format("unknown distribution '{}'; allowed: normal (the spread is the standard "
+                  "deviation), uniform (the spread is the half-width)",
+                  name));
+}
+
+void ToleranceOptions::validate() const {
+  for (const auto& [v, what] : {std::pair{spread.thickness, "thickness"},
+                                std::pair{spread.width, "width"},
+                                std::pair{spread.length, "length"},
+                                std::pair{spread.E, "E"}}) {
+    if (!std::isfinite(v) || v < 0.0 || v >= 0.3) {
+      throw InvalidInput(
+          fmt::format("the {} spread must be finite and in [0, 30 %) (got {})", what, v));
+    }
+  }
+  if (samples < 2 || samples > 100000) {
+    throw InvalidInput(fmt::format("samples must be in [2, 100000] (got {})", samples));
+  }
+  if (points < 2 || points > 10000) {
+    throw InvalidInput(fmt::format("points must be in [2, 10000] (got {})", points));
+  }
+}
+
+ToleranceStudy mechanism_tolerance(const MechanismDesign& design, const ToleranceOptions& o) {
+  o.validate();
+  ToleranceStudy study;
+  study.design = design.name;
+  study.options = o;
+  const std::vector<Parameter> params = parameters_of(design);
+  for (const Parameter& p : params) study.parameters.push_back(p.name);
+  std::vector<std::pair<std::string, std::string>> names = {
+      {"mean_force_prbm", "N"}, {"percent_constant_force_prbm", "%"}, {"safety_factor", "1"}};
+  if (o.exact) {
+    names.push_back({"mean_force_exact", "N"});
+    names.push_back({"percent_constant_force_exact", "%"});
+  }
+  const Values nominal = [&] {
+    try {
+      return evaluate(design, o);
+    } catch (const NoConvergence& e) {
+      throw InvalidInput(fmt::format("{}: the nominal design: {}", design.name, e.what()));
+    }
+  }();
+  const std::size_t nq = names.size(), np = params.size();
+  // First-order sensitivities: central differences in each relative change (step 1e-4; the
+  // quantities are smooth in the dimensions, and the exact model's 1e-9 force tolerance leaves
+  // ~1e-5 relative error in the derivative).
+  study.parameter_sensitivity.assign(nq * np, 0.0);
+  constexpr double kStep = 1e-4;
+  for (std::size_t k = 0; k < np; ++k) {
+    MechanismDesign up = design, down = design;
+    params[k].scale(up, 1.0 + kStep);
+    params[k].scale(down, 1.0 - kStep);
+    const Values vu = evaluate(up, o), vd = evaluate(down, o);
+    for (std::size_t i = 0; i < nq; ++i) {
+      study.parameter_sensitivity[i * np + k] = (vu.q[i] - vd.q[i]) / (2.0 * kStep);
+    }
+  }
+  // The samples.
+  std::mt19937_64 rng(o.seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  const auto draw = [&](double spread) {
+    if (spread == 0.0) return 0.0;
+    if (o.distribution == SpreadDistribution::kUniform) return spread * uniform(rng);
+    double z;
+    do {
+      z = normal(rng);
+    } while (std::abs(z) > 3.5);  // no dimension at or below zero (spread < 0.3)
+    return spread * z;
+  };
+  study.quantities.resize(nq);
+  for (std::size_t i = 0; i < nq; ++i) {
+    study.quantities[i].name = names[i].first;
+    study.quantities[i].unit = names[i].second;
+    study.quantities[i].nominal = nominal.q[i];
+  }
+  for (int s = 0; s < o.samples; ++s) {
+    MechanismDesign d = design;
+    std::vector<double> e(np);
+    for (std::size_t k = 0; k < np; ++k) {
+      e[k] = draw(spread_of(o.spread, params[k].group));
+      params[k].scale(d, 1.0 + e[k]);
+    }
+    study.draws.insert(study.draws.end(), e.begin(), e.end());
+    try {
+      const Values v = evaluate(d, o);
+      for (std::size_t i = 0; i < nq; ++i) study.quantities[i].values.push_back(v.q[i]);
+    } catch (const std::exception& ex) {
+      if (study.failed_samples++ == 0)
+        study.first_failure = fmt::format("sample {}: {}", s, ex.what());
+      for (std::size_t i = 0; i < nq; ++i) {
+        study.quantities[i].values.push_back(std::numeric_limits<double>::quiet_NaN());
+      }
+    }
+  }
+  // A uniform draw on [-a, a] has standard deviation a/sqrt(3); the normal one (cut at 3.5
+  // sigma) sigma to 1e-3.
+  const double std_factor =
+      o.distribution == SpreadDistribution::kUniform ? 1.0 / std::sqrt(3.0) : 1.0;
+  for (std::size_t i = 0; i < nq; ++i) {
+    ToleranceStats& q = study.quantities[i];
+    std::vector<double> ok;
+    for (double v : q.values) {
+      if (std::isfinite(v)) ok.push_back(v);
+    }
+    if (ok.size() < 2) {
+      throw NoConvergence(fmt::format(
+          "{}: fewer than two samples could be analysed ({})", design.name, study.first_failure));
+    }
+    double sum = 0.0;
+    for (double v : ok) sum += v;
+    q.mean = sum / ok.size();
+    double ss = 0.0;
+    for (double v : ok) ss += (v - q.mean) * (v - q.mean);
+    q.std = std::sqrt(ss / (ok.size() - 1));
+    std::sort(ok.begin(), ok.end());
+    q.p05 = percentile(ok, 0.05);
+    q.p50 = percentile(ok, 0.50);
+    q.p95 = percentile(ok, 0.95);
+    double var = 0.0;
+    for (std::size_t k = 0; k < np; ++k) {
+      const double dq = study.parameter_sensitivity[i * np + k];
+      q.sensitivity[params[k].group] += dq;
+      const double sigma = spread_of(o.spread, params[k].group) * std_factor;
+      var += dq * dq * sigma * sigma;
+    }
+    q.first_order_std = std::sqrt(var);
+  }
+  return study;
+}
+
+}  // namespace flexure::mechanism
+
+namespace flexure::mechanism {
+
+void write_tolerance_file(io::Hdf5Group& root, const ToleranceStudy& s) {
+  const ToleranceOptions& o = s.options;
+  root.set_attribute("mechanism", s.design);
+  root.set_attribute("distribution", spread_distribution_name(o.distribution));
+  root.set_attribute("samples", static_cast<std::int64_t>(o.samples));
+  root.set_attribute("seed", static_cast<std::int64_t>(o.seed));
+  root.set_attribute("failed_samples", static_cast<std::int64_t>(s.failed_samples));
+  root.set_attribute("spread_thickness", o.spread.thickness);
+  root.set_attribute("spread_width", o.spread.width);
+  root.set_attribute("spread_length", o.spread.length);
+  root.set_attribute("spread_E", o.spread.E);
+  root.set_attribute("attribute_units",
+                     "spread_*: 1 (relative; normal: standard deviation, uniform: half-width)");
+  root.write_dataset("parameters", s.parameters, "text", "the sampled parameters, in column order");
+  root.write_dataset("draws",
+                     std::span<const double>(s.draws),
+                     {static_cast<hsize_t>(o.samples), static_cast<hsize_t>(s.parameters.size())},
+                     "1",
+                     "relative change of each parameter in each sample (samples x parameters)");
+  for (std::size_t i = 0; i < s.quantities.size(); ++i) {
+    const ToleranceStats& q = s.quantities[i];
+    io::Hdf5Group g = root.create_group(q.name);
+    g.write_dataset("values",
+                    std::span<const double>(q.values),
+                    q.unit,
+                    q.name + " of each sample (NaN where its analysis failed)");
+    const std::size_t np = s.parameters.size();
+    g.write_dataset("parameter_sensitivity",
+                    std::span<const double>(s.parameter_sensitivity.data() + i * np, np),
+                    q.unit,
+                    "dQ/d(relative change) of each parameter at the nominal design (central "
+                    "differences)");
+    g.write_dataset("group_sensitivity",
+                    std::span<const double>(q.sensitivity),
+                    q.unit,
+                    "dQ/d(relative change) of all thicknesses, widths, lengths, E together");
+    for (const auto& [name, v] : {std::pair{"nominal", q.nominal},
+                                  std::pair{"mean", q.mean},
+                                  std::pair{"std", q.std},
+                                  std::pair{"p05", q.p05},
+                                  std::pair{"p50", q.p50},
+                                  std::pair{"p95", q.p95},
+                                  std::pair{"first_order_std", q.first_order_std}}) {
+      g.write_scalar(name, v, q.unit, std::string(name) + " of " + q.name + " over the samples");
+    }
+  }
+  io::write_provenance(root, {});
+}
+
+}  // namespace flexure::mechanism
