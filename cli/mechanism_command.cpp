@@ -16,6 +16,7 @@
 #include "cli/beam_methods.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/mechanism_geometry_output.h"
 #include "cli/slow_progress.h"
 #include "flexure/benchmarks/studies/mechanism_method.h"
 #include "flexure/io/hdf5_file.h"
@@ -30,6 +31,7 @@
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
+#include "flexure/mechanisms/mechanism_geometry.h"
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/mechanisms/modified_springs.h"
 #include "flexure/solver/common/errors.h"
@@ -984,6 +986,7 @@ void register_mechanism_command(CLI::App& app) {
       Json j = analysis_json(a);
       j["method"] = choice.method;
       j["method_reason"] = choice.reason;
+      j["geometry"] = geometry_json(mechanism_geometry(d));
       print_json(j);
       return;
     }
@@ -1022,6 +1025,7 @@ void register_mechanism_command(CLI::App& app) {
                              a.max_stress_all,
                              a.safety_factor,
                              a.yielding_pivots.empty() ? "" : " (YIELDS)");
+    std::cout << geometry_text(mechanism_geometry(d), "mm");
     const std::vector<StabilityEntry> entries = stability_entries(a);
     if (!entries.empty()) {
       std::cout << "  stability (margin: the lowest eigenvalue of the second variation of the "
