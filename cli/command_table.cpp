@@ -33,7 +33,7 @@ const std::vector<CommandEntry>& command_table() {
        {register_path_command}},
       {"mechanism",
        "Constant-force slider mechanisms: PRBM and exact model of one design",
-       {register_mechanism_command}},
+       {register_mechanism_command, register_mechanism_draw_command}},
       {"dynamics",
        "Frequency sweep of a constant-force slider mechanism's input force (HDF5)",
        {register_dynamics_command}},

@@ -23,4 +23,7 @@ void register_help_command(CLI::App& app);       // help_command.cpp (register l
 // registering (commands registered as stubs, command_table.h, have none).
 void add_command_examples(CLI::App& app);
 
+// `flexure mechanism draw` (mechanism_draw_command.cpp), registered with the mechanism command.
+void register_mechanism_draw_command(CLI::App& app);
+
 }  // namespace flexure::cli

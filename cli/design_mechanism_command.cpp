@@ -11,6 +11,8 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/fatigue_flags.h"
+#include "cli/mechanism_geometry_output.h"
+#include "flexure/io/mechanism_geometry_toml.h"
 #include "flexure/io/mechanism_toml.h"
 #include "flexure/io/output_path.h"
 #include "flexure/io/quantity.h"
@@ -35,6 +37,7 @@ struct DesignMechanismArgs {
   int points = 50;
   bool json = false;
   std::string out;
+  std::string drawing;  // --drawing FILE.svg|FILE.dxf
   std::string stress_rule = "computed";
   std::string minimize;
   double max_width_to_thickness = design::SectionBounds{}.max_width_to_thickness;
@@ -228,6 +231,7 @@ Json design_json(const design::DimensionedDesign& d, double force_factor, double
   j["flexure_volume"] = d.flexure_volume;
   j["width_to_thickness"] = d.width_to_thickness;
   j["width_to_length"] = d.width_to_length;
+  j["geometry"] = design_geometry_json(d.design);
   if (!d.exact_note.empty()) j["exact_note"] = d.exact_note;
   if (d.fatigue) {
     const FatigueCheck& f = d.fatigue->critical().check;
@@ -300,6 +304,7 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
   const mechanism::ForceOf of = mechanism::parse_force_of(args.force_of);
   const design::MechanismSpec spec = make_spec(args, of);
   if (!args.out.empty()) io::check_output_path(args.out);
+  if (!args.drawing.empty()) check_drawing_path(args.drawing, "--drawing");
   const double factor = mechanism::force_of_factor(mechanism::ForceOf::kOneHalf, of);
   const design::MechanismDesignReport r = design::design_mechanisms(spec);
   Json rejected = Json::array();
@@ -361,7 +366,8 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
       {"fatigue", spec.fatigue.has_value()},
       {"sizing_safety_factor", optional_json(r.sizing_safety_factor)},
       {"refined", refined ? refined_json(*refined, factor, spec.force) : Json(nullptr)},
-      {"out", args.out.empty() ? Json(nullptr) : Json(args.out)}};
+      {"out", args.out.empty() ? Json(nullptr) : Json(args.out)},
+      {"drawing", args.drawing.empty() ? Json(nullptr) : Json(args.drawing)}};
   if (!args.out.empty() && (!refinement_failed || args.allow_infeasible)) {
     // A refinement that failed before dimensioning (the optimisation) leaves the PRBM design,
     // whose exact force misses the specification: that is what --allow-infeasible writes then.
@@ -378,7 +384,14 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
         args.out,
         mechanism::mechanism_toml(
             written.design,
-            toml_comment(written, r.designs.size(), spec, refined.has_value(), args.out)));
+            toml_comment(written, r.designs.size(), spec, refined.has_value(), args.out)) +
+            io::geometry_toml(mechanism::mechanism_geometry(written.design)));
+  }
+  // The drawing of the design that --out writes (the refined one with --model exact).
+  const mechanism::MechanismDesign& drawn = refined ? refined->design : r.designs.front().design;
+  if (!args.drawing.empty() && (!refinement_failed || args.allow_infeasible)) {
+    io::write_mechanism_drawing(
+        args.drawing, mechanism::mechanism_geometry(drawn), io::DrawingOptions{}, "--drawing");
   }
   if (refinement_failed) {
     // The answer asked for (the design refined against the exact model) misses the
@@ -495,7 +508,9 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
         x.design.yield_strength * 1e-6,
         x.exact_evaluations);
   }
+  fmt::print("{}", design_geometry_text(drawn, length_unit_of(args.stroke)));
   if (!args.out.empty()) fmt::print("wrote {}\n", args.out);
+  if (!args.drawing.empty()) fmt::print("wrote {}\n", args.drawing);
 }
 
 }  // namespace
@@ -601,6 +616,10 @@ void register_design_mechanism_command(CLI::App& app) {
                 a->allow_infeasible,
                 "With --model exact and --out: write the refined design even when it misses the "
                 "specification (marked NOT FEASIBLE in the file; the exit code stays 3)");
+  cmd->add_option(
+      "--drawing",
+      a->drawing,
+      "Also draw the design written by --out (the best) to scale: FILE.svg or FILE.dxf");
   cmd->add_flag("--json", a->json, "Print one JSON object");
   cmd->callback([a] { run_design_mechanism(*a); });
 }

@@ -18,6 +18,7 @@
 #include "cli/commands.h"
 #include "cli/general_mechanism_command.h"
 #include "cli/fatigue_flags.h"
+#include "cli/mechanism_geometry_output.h"
 #include "cli/slow_progress.h"
 #include "flexure/benchmarks/studies/mechanism_method.h"
 #include "flexure/benchmarks/studies/mechanism_tolerance.h"
@@ -34,6 +35,7 @@
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/mechanism_fatigue.h"
+#include "flexure/mechanisms/mechanism_geometry.h"
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/mechanisms/modified_springs.h"
 #include "flexure/solver/common/errors.h"
@@ -1161,6 +1163,7 @@ void register_mechanism_command(CLI::App& app) {
       add_fatigue_json(j, a, fatigue);
       j["method"] = choice.method;
       j["method_reason"] = choice.reason;
+      j["geometry"] = geometry_json(mechanism_geometry(d));
       print_json(j);
       return;
     }
@@ -1200,6 +1203,7 @@ void register_mechanism_command(CLI::App& app) {
                              a.safety_factor,
                              a.yielding_pivots.empty() ? "" : " (YIELDS)");
     std::cout << fatigue_text(a, fatigue);
+    std::cout << geometry_text(mechanism_geometry(d), "mm");
     const std::vector<StabilityEntry> entries = stability_entries(a);
     if (!entries.empty()) {
       std::cout << "  stability (margin: the lowest eigenvalue of the second variation of the "

@@ -137,7 +137,10 @@ MechanismFile parse_mechanism_file(const std::string& text, const std::string& s
                    "middle",
                    "slider",
                    "dynamics",
-                   "force_of"},
+                   "force_of",
+                   // Written by design mechanism for the builder (mechanism_geometry_toml.h);
+                   // ignored here: it follows from the keys above.
+                   "geometry"},
                   "the file",
                   source);
   MechanismDesign d;

@@ -63,12 +63,14 @@
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
+#include "flexure/mechanisms/mechanism_geometry.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/mechanisms/modified_designs.h"
 
 // Reading chains and mechanisms from TOML files.
 #include "flexure/io/chain_toml.h"
 #include "flexure/io/general_mechanism_toml.h"
+#include "flexure/io/mechanism_drawing.h"
 #include "flexure/io/mechanism_toml.h"
 
 // Studies: beam problems by any method, method selection for `--method auto`, the reference

@@ -1,0 +1,94 @@
+#pragma once
+// The buildable geometry of a half constant-force slider mechanism (MechanismDesign): where every
+// physical part sits, at rest and at the end of the stroke -- what a drawing, a CAD sketch or a
+// laser cutter needs, as opposed to the PRBM link lengths r2, r3 the models compute with.
+//
+// Frame: PRB pivot 1 at the origin, the slider axis along +x, y up (docs/mechanisms.md). At rest
+// the half mechanism is straight along the x axis; the parts follow thesis Table 8.1 as the exact
+// model's physical chain does (mechanism_exact.h, physical_chain): an s flexure (or a fixed-fixed
+// strip) of length f centred on its PRB pivot; an l segment l = r/gamma long, clamped (1 - gamma) l
+// behind its characteristic pivot and pinned at its far end; rigid links fill the rest of r2, r3.
+//
+// At the end of the stroke (Delta x = stroke) the pivots are placed by the PRBM slider-crank
+// kinematics (thesis eqs. 2.1-2.3, cfm/slider_crank.h): pivot 2 at r2 (cos theta2, sin theta2),
+// pivot 3 at (r2 + r3 - Delta x, 0). Each rigid body moves rigidly (ground fixed, crank turned
+// by theta2 about pivot 1, coupler along theta3 from pivot 2, slider translated by -Delta x). The
+// deformed flexures are drawn in the PRBM's pseudo-rigid approximation: each flexure as the two
+// pseudo-rigid pieces that meet at its characteristic pivot (a polyline of three points), not the
+// exact elastica shape. An inverted design (inversion.h) is drawn in its original orientation.
+// Units: SI (m) throughout; writers convert.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "flexure/mechanisms/mechanism.h"
+
+namespace flexure::mechanism {
+
+struct GeometryPoint {
+  double x = 0.0;  // m
+  double y = 0.0;  // m
+};
+
+// One flexible segment.
+struct FlexureGeometry {
+  int pivot = 0;           // PRB pivot it realises, 1..3
+  std::string kind;        // "small" (s, centred), "long" (l, fixed-pinned), "fixed-fixed"
+  double length = 0.0;     // physical flexible length, m
+  double width = 0.0;      // out-of-plane width b, m
+  double thickness = 0.0;  // in-plane thickness h, m
+  // Centreline at rest: from the end nearer the ground to the end nearer the slider.
+  GeometryPoint rest_start, rest_end;
+  // Pseudo-rigid polyline at the end of the stroke: rest_start's image, the characteristic
+  // pivot, rest_end's image. The two pieces keep their lengths (|pivot - start| + |end - pivot|
+  // = length).
+  std::array<GeometryPoint, 3> stroke_end{};
+};
+
+// One rigid link piece (what remains of r2 or r3 after the flexures; absent when an l segment is
+// the whole link).
+struct RigidLinkGeometry {
+  int link = 0;         // 2 (crank, pivot 1 to 2) or 3 (coupler, pivot 2 to 3)
+  double length = 0.0;  // m
+  GeometryPoint rest_start, rest_end;
+  GeometryPoint stroke_end_start, stroke_end_end;
+};
+
+// One PRB pivot (characteristic pivot of a flexure, or a real pin joint).
+struct PivotGeometry {
+  int pivot = 0;  // 1..3
+  PivotType type = PivotType::kPin;
+  GeometryPoint rest;
+  GeometryPoint stroke_end;
+};
+
+struct MechanismGeometry {
+  std::string name;
+  std::string config;
+  double r2 = 0.0, r3 = 0.0;  // PRBM link lengths, m
+  double stroke = 0.0;        // m
+  double theta2_end = 0.0;    // crank angle at the end of the stroke, rad
+  double theta3_end = 0.0;    // principal coupler angle at the end of the stroke, rad (<= 0)
+  bool inverted = false;      // drawn in the original orientation (slider block fixed in use)
+  std::array<PivotGeometry, 3> pivots{};
+  std::vector<FlexureGeometry> flexures;  // in pivot order
+  std::vector<RigidLinkGeometry> links;   // crank piece first
+  // Where the mechanism attaches to the ground body (the ground clamp of an s or l pivot 1, or
+  // pin 1) and to the slider (the slider clamp of an s pivot 3, or pin 3), on the x axis, m.
+  double ground_attach_x = 0.0;
+  double slider_attach_x_rest = 0.0;
+  double slider_attach_x_end = 0.0;
+  // Overall length at rest, ground attachment to slider attachment, m.
+  double overall_length() const { return slider_attach_x_rest - ground_attach_x; }
+  // The model that placed the deformed flexures (for a drawing's notes).
+  std::string deformed_model;
+};
+
+// The geometry of a finalised design (MechanismDesign::finalise()). Throws InvalidInput for a
+// design whose stroke is past the toggle position or whose lengths are not positive.
+MechanismGeometry mechanism_geometry(const MechanismDesign& design);
+
+// "small", "long" or "fixed-fixed" for pivot `pivot` (1..3) of a design; "" for a pin.
+std::string flexure_kind_name(const MechanismDesign& design, int pivot);
+
+}  // namespace flexure::mechanism
