@@ -1082,7 +1082,21 @@ void register_mechanism_command(CLI::App& app) {
       request.json = args->json;
       request.points = analyze->count("--points") > 0 ? args->points : 0;
       for (const char* flag :
-           {"--out", "--prbm-only", "--method", "--tol", "--spring-rule", "--force-of"}) {
+           {"--out",
+            "--prbm-only",
+            "--method",
+            "--tol",
+            "--spring-rule",
+            "--force-of",
+            // The material and fatigue options of the constant-force designs: a general file
+            // gives its materials per flexure, and has no fatigue check yet.
+            "--material",
+            "--surface-finish",
+            "--reliability",
+            "--Kf",
+            "--fatigue-factor",
+            "--ultimate-strength",
+            "--endurance-limit"}) {
         if (analyze->count(flag) > 0) {
           request.foreign_flag = flag;
           break;

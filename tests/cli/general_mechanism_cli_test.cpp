@@ -54,6 +54,10 @@ TEST(GeneralMechanismCli, Refusals) {
   expect_refused("mechanism analyze " + kSwitch + " --out x.h5", {"--out", "general"});
   expect_refused("mechanism analyze " + kSwitch + " --input '0deg:10mm:3'", {"--input STOP"});
   expect_refused("mechanism analyze 1A-lpp --model prbm", {"--model applies to general"});
+  // The constant-force designs' material and fatigue options are refused, not ignored.
+  expect_refused("mechanism analyze " + kSwitch + " --material polypropylene",
+                 {"--material", "general"});
+  expect_refused("mechanism analyze " + kSwitch + " --Kf 1.2", {"--Kf", "general"});
   const CommandResult r =
       run_flexure("mechanism analyze " + kSwitch + " --model exact --input '0Nm:1Nm:3' --json");
   EXPECT_EQ(r.exit_code, 2);
