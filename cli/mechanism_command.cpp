@@ -1081,25 +1081,23 @@ void register_mechanism_command(CLI::App& app) {
       request.input_range = args->input_range;
       request.json = args->json;
       request.points = analyze->count("--points") > 0 ? args->points : 0;
-      for (const char* flag :
-           {"--out",
-            "--prbm-only",
-            "--method",
-            "--tol",
-            "--spring-rule",
-            "--force-of",
-            // The material and fatigue options of the constant-force designs: a general file
-            // gives its materials per flexure, and has no fatigue check yet.
-            "--material",
-            "--surface-finish",
-            "--reliability",
-            "--Kf",
-            "--fatigue-factor",
-            "--ultimate-strength",
-            "--endurance-limit"}) {
-        if (analyze->count(flag) > 0) {
-          request.foreign_flag = flag;
-          break;
+      // A general file takes only these; every other option of analyze belongs to the
+      // constant-force designs (their method, material, fatigue, output options) and is refused
+      // by name, so an option added to that form later is refused here without being listed.
+      // Option groups (the fatigue options) are nameless sub-apps holding their own options.
+      std::vector<const CLI::App*> holders = {analyze};
+      for (const CLI::App* group :
+           analyze->get_subcommands([](CLI::App* a) { return a->get_name().empty(); })) {
+        holders.push_back(group);
+      }
+      for (const CLI::App* holder : holders) {
+        for (const CLI::Option* option : holder->get_options()) {
+          const std::string name = option->get_name();
+          if (option->count() == 0 || option->get_positional() || name == "--points" ||
+              name == "--json" || name == "--model" || name == "--input" || name == "--help") {
+            continue;
+          }
+          if (request.foreign_flag.empty()) request.foreign_flag = name;
         }
       }
       analyze_general_mechanism(request);
