@@ -406,14 +406,7 @@ BeamSolution solve_numerical(BeamMethod method, const BeamProblem& problem) {
   const TipTargetSolution found = solve_tip_target(target, forward, kNumericalInverseTolerance);
   if (!found.converged()) {
     // What was reached is in the message; no further (possibly slow) solve at that load.
-    BeamSolution missed;
-    missed.method = method;
-    missed.termination = found.termination;
-    missed.alpha2 = found.alpha2;
-    missed.iterations = found.forward_solves;
-    missed.target_residual = found.residual;
-    missed.message = found.message;
-    return missed;
+    return missed_inverse_solution(method, found);  // beam_solution_parts.h
   }
   BeamSolution solution =
       solve_numerical_forward(method, problem, found.alpha2, problem.shape_points);
