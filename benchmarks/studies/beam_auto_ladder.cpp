@@ -152,6 +152,7 @@ LadderAutoOutcome solve_by_ladder(const BeamProblem& problem) {
     out.solution = std::move(s);
     return out;
   }
+  out.judged = true;
   out.verdict = "no model of the ladder meets the tolerance at this load more cheaply: ";
   for (std::size_t i = 0; i < passed.size(); ++i) out.verdict += (i ? ", " : "") + passed[i];
   return out;

@@ -22,10 +22,13 @@ struct LadderAutoOutcome {
   // expected_error_per_length set; empty when no rung cheaper than the elliptic solution meets
   // the tolerance (or the ladder does not apply).
   std::optional<BeamSolution> solution;
-  // Without a solution: why each cheaper rung was passed over, for the exact method's reason;
-  // empty when the ladder does not apply (not a free cantilever with dead loads and a given load,
-  // a stable equilibrium asked for, model settings other than the map's, a load off the map).
+  // Without a solution: why each cheaper rung was passed over, for the exact method's reason
+  // (judged true), or that the load is off the map (judged false: the rungs were not judged, and
+  // the 1R PRBM's own measured map still may be); empty when the ladder does not apply (not a
+  // free cantilever with dead loads and a given load, a stable equilibrium asked for, model
+  // settings other than the map's).
   std::string verdict;
+  bool judged = false;
 };
 
 LadderAutoOutcome solve_by_ladder(const BeamProblem& problem);

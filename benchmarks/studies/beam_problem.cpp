@@ -503,13 +503,16 @@ BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem) {
     }
   }
   // auto: the cheap models of the ladder first (beam_auto_ladder.h), then the exact methods.
-  std::string ladder_verdict;
+  std::string ladder_verdict, off_ladder_map;
   if (method == BeamMethod::kAuto) {
     LadderAutoOutcome ladder = solve_by_ladder(problem);
     if (ladder.solution) return std::move(*ladder.solution);
     ladder_verdict = std::move(ladder.verdict);
+    if (!ladder.judged && !ladder_verdict.empty()) off_ladder_map = ladder_verdict + "; ";
+    if (!ladder.judged) ladder_verdict.clear();
   }
   MethodResolution used = resolve_beam_method(method, problem, ladder_verdict);
+  used.reason = off_ladder_map + used.reason;
   const bool inverse = problem.given != BeamProblem::Given::kAlpha2;
   // auto's fallback answers to the tolerance too: refused (exit code 2) when the shooting method
   // cannot meet it, instead of an answer that misses it.

@@ -175,6 +175,16 @@ TEST(LadderAuto, ToleranceTighterThanEveryCheapModelGoesToTheExactMethods) {
       << loose.method_reason;
 }
 
+// Off the ladder's map (n > 2) the 1R PRBM's own measured map (method_selector.h, to n = 3)
+// still applies, and the reason says the load is off the ladder's map.
+TEST(LadderAuto, OffTheMapThePrbmsOwnMapStillApplies) {
+  const BeamSolution s = solve_beam(BeamMethod::kAuto, cantilever(2.5, 1.0, 0.0, 0.1));
+  EXPECT_EQ(s.method, BeamMethod::kPrbm) << s.method_reason;
+  EXPECT_NE(s.method_reason.find("off the model ladder's map"), std::string::npos)
+      << s.method_reason;
+  EXPECT_NE(s.method_reason.find("Theta_max"), std::string::npos) << s.method_reason;
+}
+
 TEST(LadderAuto, NamedModelsReportTheirMappedError) {
   const BeamProblem p = cantilever(0.0, 3.0, 1.0, 1e-6);
   const BeamSolution s = solve_beam(BeamMethod::kPrbm3r, p);
