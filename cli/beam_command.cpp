@@ -550,6 +550,9 @@ Json to_json(const BeamInput& input,
   // algorithm, the PRBM off its measured map).
   out["expected_error"] =
       std::isfinite(solution.expected_error) ? Json(solution.expected_error) : Json(nullptr);
+  out["expected_error_per_length"] = std::isfinite(solution.expected_error_per_length)
+                                         ? Json(solution.expected_error_per_length)
+                                         : Json(nullptr);
   // Howell's parameters; null for a chain that has none (not one uniform straight beam).
   out["n"] = number_or_null(solution.load_ratio_n);
   out["alpha2"] = number_or_null(solution.alpha2);

@@ -373,6 +373,7 @@ struct Columns {
         Theta(shape, kNaN, used.prbm),
         theta_max(shape, kNaN, used.prbm),
         expected_error(shape, kNaN),
+        expected_error_per_length(shape, kNaN),
         max_element_deflection(shape, kNaN, used.bcm),
         slenderness(shape, kNaN, used.bcm),
         iterations(shape, 0),
@@ -398,7 +399,8 @@ struct Columns {
         special_points(count, workers) {}
   NumpyColumn<double> n, alpha2, mu, a_over_l, b_over_l, theta0, root_moment, target_residual,
       first_limit_load_factor, reaction_Fx, reaction_Fy, reaction_M, stability_index,
-      stability_margin, Theta, theta_max, expected_error, max_element_deflection, slenderness;
+      stability_margin, Theta, theta_max, expected_error, expected_error_per_length,
+      max_element_deflection, slenderness;
   // stability_index is a float column: NaN where not judged, the scalar call's None.
   NumpyColumn<long long> iterations, inflection_points, limit_points, elements, increments, status;
   NumpyColumn<bool> within_validity, converged;
@@ -455,6 +457,7 @@ void solve_one(const cli::BeamCommandProblem& base,
     c.method.set(i, worker, to_string(s.method));
     c.method_reason.set(i, worker, s.method_reason);
     c.expected_error.data[i] = finite_or_nan(s.expected_error);
+    c.expected_error_per_length.data[i] = finite_or_nan(s.expected_error_per_length);
     c.iterations.data[i] = s.iterations;
     if (!s.converged() || !std::isfinite(s.alpha2) || !std::isfinite(s.tip.a_over_l) ||
         !std::isfinite(s.tip.b_over_l) || !std::isfinite(s.tip.theta0)) {
@@ -596,6 +599,7 @@ py::dict beam_many(const std::vector<std::string>& args,
   out["method"] = c.method.to_numpy(shape);
   out["method_reason"] = c.method_reason.to_numpy(shape);
   out["expected_error"] = c.expected_error.array;
+  out["expected_error_per_length"] = c.expected_error_per_length.array;
   out["n"] = c.n.array;
   out["alpha2"] = c.alpha2.array;
   out["mu"] = c.mu.array;

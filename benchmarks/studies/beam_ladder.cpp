@@ -78,16 +78,24 @@ void copy_status(const SolveStatus& from, BeamSolution& to) {
   to.warnings = from.warnings;
 }
 
-BeamSolution solve_linear(const BeamProblem& p, double alpha2, int shape_points) {
-  const CantileverCase c = case_of(p, alpha2);
-  const LinearBeamSolver solver;
-  const LinearBeamResult r = solver.solve(c);
+// The closed forms (linear theory, the BCM of the cantilever): equilibrium of the whole beam under
+// the full tip loads gives the clamp's reactions, and the moment varies linearly along it.
+template <class ClosedFormResult>
+BeamSolution closed_form_solution(const CantileverCase& c, const ClosedFormResult& r) {
   BeamSolution s;
   copy_status(r, s);
   s.tip = r.tip;
   s.root_moment = r.root_moment;
   s.reactions = {-c.load.Fx, -c.load.Fy, -r.root_moment};
   s.inflection_points = linear_moment_inflections(r.root_moment, r.end_moment);
+  return s;
+}
+
+BeamSolution solve_linear(const BeamProblem& p, double alpha2, int shape_points) {
+  const CantileverCase c = case_of(p, alpha2);
+  const LinearBeamSolver solver;
+  const LinearBeamResult r = solver.solve(c);
+  BeamSolution s = closed_form_solution(c, r);
   s.branch = "linear theory (equilibrium in the undeformed beam: the axial load does nothing)";
   if (shape_points > 0) s.shape = solver.shape(c, r, shape_points);
   return s;
@@ -126,12 +134,7 @@ BeamSolution solve_bcm_cantilever(const BeamProblem& p, double alpha2, int shape
   options.slenderness = p.slenderness;
   const BcmSolver solver(options);
   const BcmResult r = solver.solve(c);
-  BeamSolution s;
-  copy_status(r, s);
-  s.tip = r.tip;
-  s.root_moment = r.root_moment;
-  s.reactions = {-c.load.Fx, -c.load.Fy, -r.root_moment};
-  s.inflection_points = linear_moment_inflections(r.root_moment, r.end_moment);
+  BeamSolution s = closed_form_solution(c, r);
   s.elements = 1;
   s.max_element_deflection = std::fabs(r.y);
   s.model_inside_validity = r.inside_validity;
@@ -250,13 +253,7 @@ BeamSolution solve_ladder_model(BeamMethod method, const BeamProblem& problem) {
   };
   const TipTargetSolution found = solve_tip_target(target, forward, kInverseTolerance);
   if (!found.converged()) {
-    BeamSolution missed;
-    missed.method = method;
-    missed.termination = found.termination;
-    missed.alpha2 = found.alpha2;
-    missed.iterations = found.forward_solves;
-    missed.target_residual = found.residual;
-    missed.message = found.message;
+    BeamSolution missed = missed_inverse_solution(method, found);  // beam_solution_parts.h
     missed.family = to_string(method);
     return missed;
   }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "flexure/benchmarks/studies/beam_auto_ladder.h"
 #include "flexure/benchmarks/studies/beam_ladder.h"
 #include "flexure/benchmarks/studies/beam_solution_parts.h"
 #include "flexure/benchmarks/studies/method_selector.h"
@@ -44,7 +45,6 @@ Stability judge(const SegmentChain& chain,
     return not_checked_stability(e.what());
   }
 }
-
 
 // The verdict in words, for messages: "unstable (index 1, stability margin -0.216)".
 std::string verdict_words(const Stability& s) {
@@ -406,14 +406,7 @@ BeamSolution solve_numerical(BeamMethod method, const BeamProblem& problem) {
   const TipTargetSolution found = solve_tip_target(target, forward, kNumericalInverseTolerance);
   if (!found.converged()) {
     // What was reached is in the message; no further (possibly slow) solve at that load.
-    BeamSolution missed;
-    missed.method = method;
-    missed.termination = found.termination;
-    missed.alpha2 = found.alpha2;
-    missed.iterations = found.forward_solves;
-    missed.target_residual = found.residual;
-    missed.message = found.message;
-    return missed;
+    return missed_inverse_solution(method, found);  // beam_solution_parts.h
   }
   BeamSolution solution =
       solve_numerical_forward(method, problem, found.alpha2, problem.shape_points);
@@ -470,7 +463,9 @@ SegmentChain BeamProblem::to_chain(double alpha2) const {
   return c;
 }
 
-MethodResolution resolve_beam_method(BeamMethod method, const BeamProblem& problem) {
+MethodResolution resolve_beam_method(BeamMethod method,
+                                     const BeamProblem& problem,
+                                     const std::string& ladder_verdict) {
   const bool inverse = problem.given != BeamProblem::Given::kAlpha2;
   if (method != BeamMethod::kAuto) {
     return {method,
@@ -483,6 +478,7 @@ MethodResolution resolve_beam_method(BeamMethod method, const BeamProblem& probl
   request.mu = problem.mu;
   request.plain_cantilever = problem.is_plain_cantilever();
   request.tolerance = problem.tolerance;
+  request.ladder_verdict = ladder_verdict;
   const bench::AutoMethodChoice choice = bench::choose_beam_method(request);
   return {choice.method, choice.reason, choice.expected_error};
 }
@@ -506,7 +502,17 @@ BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem) {
           "none (its stability is a dynamic question): the search needs dead loads");
     }
   }
-  MethodResolution used = resolve_beam_method(method, problem);
+  // auto: the cheap models of the ladder first (beam_auto_ladder.h), then the exact methods.
+  std::string ladder_verdict, off_ladder_map;
+  if (method == BeamMethod::kAuto) {
+    LadderAutoOutcome ladder = solve_by_ladder(problem);
+    if (ladder.solution) return std::move(*ladder.solution);
+    ladder_verdict = std::move(ladder.verdict);
+    if (!ladder.judged && !ladder_verdict.empty()) off_ladder_map = ladder_verdict + "; ";
+    if (!ladder.judged) ladder_verdict.clear();
+  }
+  MethodResolution used = resolve_beam_method(method, problem, ladder_verdict);
+  used.reason = off_ladder_map + used.reason;
   const bool inverse = problem.given != BeamProblem::Given::kAlpha2;
   // auto's fallback answers to the tolerance too: refused (exit code 2) when the shooting method
   // cannot meet it, instead of an answer that misses it.
@@ -567,6 +573,7 @@ BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem) {
   }
   solution.method_reason = used.reason;
   solution.expected_error = used.expected_error;
+  if (method != BeamMethod::kAuto) attach_mapped_error(problem, solution);  // beam_auto_ladder.h
   solution.methods_tried = std::move(tried);
   label_unjudged(problem, solution);
   if (problem.stable) {

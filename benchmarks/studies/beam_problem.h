@@ -83,6 +83,10 @@ struct BeamSolution : SolveStatus {
   // The relative tip error the method that answered is known to stay within (MethodResolution);
   // NaN where none is known (chain, PRBM off its measured map).
   double expected_error = std::numeric_limits<double>::quiet_NaN();
+  // The ladder's models (linear, prbm, prbm3r, bcm, cbcm) on a free cantilever the model ladder's
+  // map covers: the mapped bound on |tip - exact tip| per length (beam_auto_ladder.h); NaN
+  // otherwise. expected_error is then the relative bound it gives with the answer's displacement.
+  double expected_error_per_length = std::numeric_limits<double>::quiet_NaN();
   // Every method tried, in order (auto tries a second when the first fails); the last is `method`.
   std::vector<BeamMethod> methods_tried;
   // Howell's load parameters (eqs. 2.67, 2.83). For a chain given as a whole they exist only when
@@ -159,7 +163,11 @@ struct MethodResolution {
   // depends on the discretisation (chain) or is not measured (PRBM off the map).
   double expected_error = std::numeric_limits<double>::quiet_NaN();
 };
-MethodResolution resolve_beam_method(BeamMethod method, const BeamProblem& problem);
+// `ladder_verdict`: why auto's pass over the model ladder (beam_auto_ladder.h) took no cheap
+// model; when given, the 1R PRBM has been judged there and is not considered again.
+MethodResolution resolve_beam_method(BeamMethod method,
+                                     const BeamProblem& problem,
+                                     const std::string& ladder_verdict = {});
 // Without a problem (sweeps over alpha2): auto = elliptic.
 BeamMethod resolve_beam_method(BeamMethod method);
 

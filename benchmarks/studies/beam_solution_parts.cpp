@@ -79,4 +79,15 @@ void describe_chain_loads(const SegmentChain& chain, BeamSolution& s) {
       s.reactions.Fx * force_scale, s.reactions.Fy * force_scale, s.reactions.M * moment_scale};
 }
 
+BeamSolution missed_inverse_solution(BeamMethod method, const TipTargetSolution& found) {
+  BeamSolution missed;
+  missed.method = method;
+  missed.termination = found.termination;
+  missed.alpha2 = found.alpha2;
+  missed.iterations = found.forward_solves;
+  missed.target_residual = found.residual;
+  missed.message = found.message;
+  return missed;
+}
+
 }  // namespace flexure

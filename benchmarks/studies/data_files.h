@@ -6,5 +6,6 @@
 namespace flexure::data {
 
 EmbeddedFile method_auto_error_map();  // PRBM error measured by `flexure bench`, for --method auto
+EmbeddedFile ladder_auto_error_map();  // the model ladder's error and time (ladder_selector.h)
 
 }  // namespace flexure::data

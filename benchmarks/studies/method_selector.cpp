@@ -158,7 +158,9 @@ AutoMethodChoice choose_beam_method(const AutoMethodRequest& r) {
             bound};
   }
   std::string why_not_prbm;
-  if (!std::isfinite(r.alpha2)) {
+  if (!r.ladder_verdict.empty()) {
+    why_not_prbm = r.ladder_verdict;
+  } else if (!std::isfinite(r.alpha2)) {
     why_not_prbm = "the load is not given (inverse problem)";
   } else if (r.mu != 0.0) {
     why_not_prbm = "the fixed-pinned PRBM carries no tip moment";

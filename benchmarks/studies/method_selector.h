@@ -26,6 +26,10 @@ struct AutoMethodRequest {
   double mu = 0.0;
   bool plain_cantilever = true;  // free end, dead loads, uniform straight beam
   double tolerance = 1e-6;       // relative error allowed (tip position error / deflection)
+  // Set when auto's pass over the model ladder (beam_auto_ladder.h) has judged the cheap models,
+  // the 1R PRBM among them, at this load and taken none: why, for the reason; the PRBM is then not
+  // considered again.
+  std::string ladder_verdict;
 };
 
 struct AutoMethodChoice {

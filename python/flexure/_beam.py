@@ -63,7 +63,8 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
       (surface_finish, reliability, Kf, fatigue_factor, ultimate_strength, endurance_limit;
       docs/fatigue.md)
 
-    Returns the dict `flexure beam --json` prints: method, method_reason, expected_error, n,
+    Returns the dict `flexure beam --json` prints: method, method_reason, expected_error,
+    expected_error_per_length (the ladder's models on the map, docs/models.md), n,
     alpha2, mu, a_over_l, b_over_l, theta0 (rad), iterations, converged, branch,
     inflection_points, root_moment, limit_points, target_residual, first_limit_load_factor,
     family, message, termination, boundary, reactions {Fx, Fy, M}, the stability verdict
