@@ -19,7 +19,7 @@
 #include "cli/fatigue_flags.h"
 #include "cli/physical_flags.h"
 #include "cli/warning_output.h"
-#include "flexure/benchmarks/studies/method_selector.h"
+#include "flexure/beam/method_selector.h"
 #include "flexure/benchmarks/studies/physical_beam.h"
 #include "flexure/io/chain_toml.h"
 #include "flexure/io/quantity.h"

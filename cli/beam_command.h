@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/beam/beam_problem.h"
 
 namespace flexure::cli {
 

@@ -8,7 +8,7 @@
 
 set(FLEXURE_BUILD_INCLUDE_DIR ${PROJECT_BINARY_DIR}/include)
 file(MAKE_DIRECTORY ${FLEXURE_BUILD_INCLUDE_DIR}/flexure)
-foreach(folder solver elements mechanisms io benchmarks)
+foreach(folder solver elements beam mechanisms io benchmarks)
   if(NOT EXISTS ${FLEXURE_BUILD_INCLUDE_DIR}/flexure/${folder})
     file(CREATE_LINK ${PROJECT_SOURCE_DIR}/${folder} ${FLEXURE_BUILD_INCLUDE_DIR}/flexure/${folder}
          SYMBOLIC)

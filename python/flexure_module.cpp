@@ -26,7 +26,7 @@
 
 #include "cli/beam_command.h"
 #include "cli/command_runner.h"
-#include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/beam/beam_problem.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/gsl_guard.h"
 #include "flexure/version.h"

@@ -1,5 +1,5 @@
 // What the stability verdict costs a beam answer (issue 27), for docs/performance.md: one
-// iteration = one solve_beam (benchmarks/studies/beam_problem.h), as `flexure beam`, `sweep beam`
+// iteration = one solve_beam (beam/beam_problem.h), as `flexure beam`, `sweep beam`
 // and the Python module call it, with the verdict (BeamProblem::judge_stability, the default) and
 // without (`--stability off`); and one search for a stable equilibrium (BeamProblem::stable,
 // `--stable`). The yardstick, measured in the same run, is the elliptic solve of Howell's
@@ -13,7 +13,7 @@
 // (second mode, index 1).
 #include <benchmark/benchmark.h>
 
-#include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/beam/beam_problem.h"
 
 namespace flexure {
 namespace {

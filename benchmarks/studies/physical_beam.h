@@ -8,7 +8,7 @@
 #include <optional>
 #include <vector>
 
-#include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/beam/beam_problem.h"
 #include "flexure/io/chain_toml.h"
 
 namespace flexure {

@@ -18,7 +18,7 @@
 //     are the neighbour's);
 //   * both loads are a dead tip force alone (mu = 0, Howell's free cantilever) on the same side
 //     of the beam (alpha2 of one sign): such load paths pass no limit point and their answers have
-//     no inflection point (measured: tests/studies/beam_sweep_solver_test.cpp, 19 781 loads by the
+//     no inflection point (measured: tests/beam/beam_sweep_solver_test.cpp, 19 781 loads by the
 //     elliptic solver's own continuation, n in [-20, 45], alpha2 in (0, 150]), and the answer found
 //     from the neighbour must have none either.
 // Every other point is solved from zero load. With an end moment a load path can fold, and a fold
@@ -26,7 +26,7 @@
 // trace at the end point, so no check at the end point can keep a sweep over mu, or over alpha2 or
 // n with mu != 0, on the proportional-loading branch. A warm start that fails a check falls back to
 // the solve from zero. docs/performance.md ("Shooting sweeps") has the measured cost;
-// tests/studies/beam_sweep_solver_test.cpp compares every point with the solve from zero.
+// tests/beam/beam_sweep_solver_test.cpp compares every point with the solve from zero.
 //
 // solve() is safe to call from several threads at once: each thread keeps its own last solutions
 // (the sweep hands each thread runs of consecutive points).
@@ -37,8 +37,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "flexure/benchmarks/studies/beam_problem.h"
-#include "flexure/benchmarks/studies/beam_sweep_grid.h"
+#include "flexure/beam/beam_problem.h"
+#include "flexure/beam/beam_sweep_grid.h"
 
 namespace flexure {
 

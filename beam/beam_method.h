@@ -1,5 +1,5 @@
 #pragma once
-// The methods that solve a beam problem (benchmarks/studies/beam_problem.h): their names as the
+// The methods that solve a beam problem (beam/beam_problem.h): their names as the
 // tool spells them, and the convergence tolerance each one works to.
 #include <array>
 #include <string>

@@ -1,4 +1,4 @@
-#include "flexure/benchmarks/studies/beam_solution_parts.h"
+#include "flexure/beam/beam_solution_parts.h"
 
 #include <cmath>
 #include <limits>

@@ -24,7 +24,7 @@
 #include <sstream>
 #include <string>
 
-#include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/beam/beam_problem.h"
 #include "flexure/solver/chain_model/jacobi_stability.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"

@@ -1,4 +1,4 @@
-#include "flexure/benchmarks/studies/method_selector.h"
+#include "flexure/beam/method_selector.h"
 
 #include <fmt/format.h>
 
@@ -8,13 +8,13 @@
 #include <limits>
 #include <vector>
 
-#include "flexure/benchmarks/studies/data_files.h"
+#include "flexure/beam/data_files.h"
 #include "flexure/elements/prbm_cantilever.h"
 #include "flexure/solver/common/csv_table.h"
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/common/errors.h"
 
-namespace flexure::bench {
+namespace flexure {
 namespace {
 
 // The accuracy map, data/method_auto_error_map.csv: relative tip-position error (|tip - exact
@@ -69,7 +69,7 @@ const ErrorMap& error_map() {
 
 // Between the measured loads the error is not monotone in n (Table 5.1 is interpolated linearly in
 // n): up to 1.27 times the largest neighbour on a 0.25 x 0.25 grid of (n, alpha2)
-// (tests/studies/bench_auto_method_test.cpp). The map is multiplied by this margin.
+// (tests/beam/bench_auto_method_test.cpp). The map is multiplied by this margin.
 constexpr double kBetweenLoadsMargin = 1.5;
 
 // Index range [lo, hi] of the measured values bracketing x (lo == hi on a measured value).
@@ -215,4 +215,4 @@ AutoMethodChoice choose_beam_method(const AutoMethodRequest& r) {
           bound};
 }
 
-}  // namespace flexure::bench
+}  // namespace flexure

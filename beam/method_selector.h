@@ -15,10 +15,10 @@
 #include <string>
 #include <utility>
 
-#include "flexure/benchmarks/studies/beam_method.h"
+#include "flexure/beam/beam_method.h"
 #include "flexure/solver/common/errors.h"
 
-namespace flexure::bench {
+namespace flexure {
 
 struct AutoMethodRequest {
   double load_ratio_n = 0.0;
@@ -77,4 +77,20 @@ AutoMethodChoice choose_beam_method(const AutoMethodRequest& request);
 // (-2 <= n <= 3, 0.5 <= alpha2 <= 20).
 double prbm_measured_error(double load_ratio_n, double alpha2);
 
+}  // namespace flexure
+
+// Compatibility: the method choice was in namespace flexure::bench while it lived in the studies
+// layer (issue 28 moved it to the beam layer). Existing code that names bench:: keeps compiling.
+namespace flexure::bench {
+using flexure::AutoMethodChoice;
+using flexure::AutoMethodRequest;
+using flexure::choose_beam_method;
+using flexure::exact_method_error_bound;
+using flexure::kEllipticErrorBound;
+using flexure::kEllipticInverseErrorBound;
+using flexure::kShootingErrorBound;
+using flexure::kShootingInverseErrorBound;
+using flexure::prbm_measured_error;
+using flexure::require_tolerance_within_reach;
+using flexure::ToleranceBelowReach;
 }  // namespace flexure::bench

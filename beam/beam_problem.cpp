@@ -1,4 +1,4 @@
-#include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/beam/beam_problem.h"
 
 #include <fmt/format.h>
 
@@ -6,9 +6,9 @@
 #include <cmath>
 #include <limits>
 
-#include "flexure/benchmarks/studies/beam_ladder.h"
-#include "flexure/benchmarks/studies/beam_solution_parts.h"
-#include "flexure/benchmarks/studies/method_selector.h"
+#include "flexure/beam/beam_ladder.h"
+#include "flexure/beam/beam_solution_parts.h"
+#include "flexure/beam/method_selector.h"
 #include "flexure/elements/prbm_cantilever.h"
 #include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/common/errors.h"
@@ -44,7 +44,6 @@ Stability judge(const SegmentChain& chain,
     return not_checked_stability(e.what());
   }
 }
-
 
 // The verdict in words, for messages: "unstable (index 1, stability margin -0.216)".
 std::string verdict_words(const Stability& s) {

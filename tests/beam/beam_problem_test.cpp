@@ -1,5 +1,5 @@
 // What is checked against what: beam problems solved through the library (solve_beam,
-// benchmarks/studies/beam_problem.h), without the command-line tool.
+// beam/beam_problem.h), without the command-line tool.
 //  * Seeded random forward loads: elliptic and shooting agree on the tip (1e-8); the method used
 //    is reported as an enum and the status is converged.
 //  * Seeded random inverse problems (theta0 given): every method's load reproduces the target
@@ -11,7 +11,7 @@
 //    3.8 % in the small-deflection limit with gamma = 0.85, K_theta = 2.65).
 //  * The PRBM dispatch (elements/prbm_cantilever.h) picks the element of the end and the load,
 //    and refuses ends no element models with InvalidInput.
-#include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/beam/beam_problem.h"
 
 #include <gtest/gtest.h>
 

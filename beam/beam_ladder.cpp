@@ -1,4 +1,4 @@
-#include "flexure/benchmarks/studies/beam_ladder.h"
+#include "flexure/beam/beam_ladder.h"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <optional>
 
-#include "flexure/benchmarks/studies/beam_solution_parts.h"
+#include "flexure/beam/beam_solution_parts.h"
 #include "flexure/elements/beam_constraint_model.h"
 #include "flexure/elements/cantilever_case.h"
 #include "flexure/elements/chained_bcm.h"

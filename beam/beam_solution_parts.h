@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/beam/beam_problem.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
 

@@ -1,4 +1,4 @@
-#include "flexure/benchmarks/studies/beam_method.h"
+#include "flexure/beam/beam_method.h"
 
 #include <fmt/format.h>
 

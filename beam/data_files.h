@@ -1,5 +1,5 @@
 #pragma once
-// The data tables of the studies layer, compiled in from data/ (cmake/embed_data.cmake; the text
+// The data tables of the beam layer, compiled in from data/ (cmake/embed_data.cmake; the text
 // of each file, unchanged). Parsed with CsvTable where they are used.
 #include "flexure/solver/common/embedded_file.h"
 

@@ -1,4 +1,4 @@
-// What is checked against what: `--method auto` (benchmarks/studies/method_selector.h).
+// What is checked against what: `--method auto` (beam/method_selector.h).
 //  * With a loose tolerance inside the PRBM validity limits it picks the PRBM, and the PRBM's
 //    error at that load, measured here against the INDEPENDENT exact elliptic solution, is
 //    indeed within the tolerance (so the embedded accuracy map does not flatter the PRBM).
@@ -12,12 +12,12 @@
 #include <string>
 #include <utility>
 
-#include "flexure/benchmarks/studies/method_selector.h"
+#include "flexure/beam/method_selector.h"
 #include "flexure/elements/fixed_pinned_segment.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 
-namespace flexure::bench {
+namespace flexure {
 namespace {
 
 // A loose tolerance a designer would accept from a PRBM sketch (1 %).
@@ -116,4 +116,4 @@ TEST(AutoMethod, RefusesAToleranceBelowEveryMethodsError) {
 }
 
 }  // namespace
-}  // namespace flexure::bench
+}  // namespace flexure

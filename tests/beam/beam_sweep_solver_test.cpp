@@ -1,4 +1,4 @@
-// What is checked against what: the sweep solver (benchmarks/studies/beam_sweep_solver.h), which
+// What is checked against what: the sweep solver (beam/beam_sweep_solver.h), which
 // starts shooting points from their neighbours, against solve_beam, which solves every point
 // from zero load (the proportional-loading answer by continuation).
 //  * Seeded random sweeps over alpha2, n and mu and (alpha2, n) grids, with and without end
@@ -11,7 +11,7 @@
 //  * The premise of the dead-force rule: on seeded random loads with mu = 0 (n in [-20, 45],
 //    alpha2 in (0, 150]) the elliptic solver's continuation passes no limit point and its answer
 //    has no inflection point.
-#include "flexure/benchmarks/studies/beam_sweep_solver.h"
+#include "flexure/beam/beam_sweep_solver.h"
 
 #include <gtest/gtest.h>
 

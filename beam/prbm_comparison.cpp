@@ -1,4 +1,4 @@
-#include "flexure/benchmarks/studies/prbm_comparison.h"
+#include "flexure/beam/prbm_comparison.h"
 
 #include <fmt/format.h>
 

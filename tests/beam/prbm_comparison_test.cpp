@@ -1,5 +1,5 @@
 // What is checked against what: the PRBM-vs-exact comparison of a beam through the library
-// (PrbmComparator, benchmarks/studies/prbm_comparison.h), without the command-line tool.
+// (PrbmComparator, beam/prbm_comparison.h), without the command-line tool.
 //  * End moment: the exact tip is the circle a/l = sin(mu)/mu, b/l = (1 - cos mu)/mu, theta0 = mu
 //    (Howell eqs. 2.59, 2.64) and the elliptic solver's tip under the same moment (1e-12).
 //  * Fixed-pinned: the exact tip of Howell's worked example (§2.9.2, n = 0, alpha2 = 3.0870030:
@@ -21,7 +21,7 @@
 //    load_prbm_at_exact reaches Theta_exact (1e-9); the flags follow the limits.
 //  * Invalid input (n outside [-5, 10], non-positive or too large loads, an unknown constants
 //    name) throws InvalidInput naming the quantity, not a command-line flag.
-#include "flexure/benchmarks/studies/prbm_comparison.h"
+#include "flexure/beam/prbm_comparison.h"
 
 #include <gtest/gtest.h>
 

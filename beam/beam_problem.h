@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/benchmarks/studies/beam_method.h"
+#include "flexure/beam/beam_method.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/segment_chain.h"

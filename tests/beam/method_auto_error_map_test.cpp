@@ -7,11 +7,11 @@
 #include <cmath>
 #include <string>
 
-#include "flexure/benchmarks/studies/data_files.h"
-#include "flexure/benchmarks/studies/method_selector.h"
+#include "flexure/beam/data_files.h"
+#include "flexure/beam/method_selector.h"
 #include "tests/support/data_file_support.h"
 
-namespace flexure::bench {
+namespace flexure {
 namespace {
 
 constexpr double kMargin = 1.5;
@@ -46,4 +46,4 @@ TEST(MethodAutoErrorMap, ReasonNamesTheMeasuredRange) {
 }
 
 }  // namespace
-}  // namespace flexure::bench
+}  // namespace flexure

@@ -1,4 +1,4 @@
-#include "flexure/benchmarks/studies/beam_sweep_solver.h"
+#include "flexure/beam/beam_sweep_solver.h"
 
 #include <fmt/format.h>
 

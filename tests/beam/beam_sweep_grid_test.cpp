@@ -1,7 +1,7 @@
-// The sweep grid (benchmarks/studies/beam_sweep_grid.h): row-major order with the second axis
+// The sweep grid (beam/beam_sweep_grid.h): row-major order with the second axis
 // fastest, axis ends exact, each point's problem carries its coordinates in the right field, and
 // invalid grids are refused naming the flag.
-#include "flexure/benchmarks/studies/beam_sweep_grid.h"
+#include "flexure/beam/beam_sweep_grid.h"
 
 #include <gtest/gtest.h>
 
