@@ -20,7 +20,7 @@
 #include "cli/physical_flags.h"
 #include "cli/warning_output.h"
 #include "flexure/beam/method_selector.h"
-#include "flexure/benchmarks/studies/physical_beam.h"
+#include "flexure/beam/physical_beam.h"
 #include "flexure/io/chain_toml.h"
 #include "flexure/io/quantity.h"
 #include "flexure/mechanisms/load_cycle_fatigue.h"

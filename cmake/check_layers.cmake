@@ -25,7 +25,7 @@ set(layer_graph
   "elements:solver/shooting,solver/chain,solver/inverse,solver/ode"
   "beam:elements"
   "mechanisms:elements"
-  "io:mechanisms"
+  "io:mechanisms,beam"
   "benchmarks/studies:io,beam")
 # Headers any file may include: generated, no dependencies.
 set(allowed_everywhere "version.h")

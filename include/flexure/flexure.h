@@ -73,11 +73,10 @@
 #include "flexure/io/mechanism_drawing.h"
 #include "flexure/io/mechanism_toml.h"
 
-// Studies: beam problems by any method, method selection for `--method auto`, the reference
-// problems of `flexure validate`.
-#include "flexure/beam/beam_method.h"
-#include "flexure/beam/beam_problem.h"
-#include "flexure/beam/method_selector.h"
+// The beam API (<flexure/beam.h>: beam problems by any method, the method choice of `--method
+// auto`, physical beams and chains), the PRBM-vs-exact comparison; studies: the mechanisms' method
+// choice and the reference problems of `flexure validate`.
+#include "flexure/beam.h"
 #include "flexure/beam/prbm_comparison.h"
 #include "flexure/benchmarks/studies/mechanism_method.h"
 #include "flexure/benchmarks/studies/validation_checks.h"

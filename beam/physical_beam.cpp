@@ -1,4 +1,4 @@
-#include "flexure/benchmarks/studies/physical_beam.h"
+#include "flexure/beam/physical_beam.h"
 
 #include <fmt/format.h>
 
@@ -489,19 +489,104 @@ PhysicalBeamSolution solve_physical_beam(BeamMethod method,
   return out;
 }
 
+std::optional<double> SegmentProperties::cross_section_area() const {
+  if (area) return area;
+  return section.area();
+}
+
+void PhysicalChain::validate() const {
+  if (segments.size() != chain.segments.size()) {
+    throw InvalidInput(fmt::format(
+        "PhysicalChain::segments has {} entries for a chain of {} segments; give one per segment "
+        "(nullopt where a segment has no section)",
+        segments.size(),
+        chain.segments.size()));
+  }
+  std::optional<double> yield;
+  for (std::size_t k = 0; k < segments.size(); ++k) {
+    if (!segments[k]) continue;
+    const SegmentProperties& p = *segments[k];
+    const auto* flexible = std::get_if<FlexibleSegment>(&chain.segments[k]);
+    if (flexible == nullptr) {
+      throw InvalidInput(fmt::format(
+          "PhysicalChain segment {} is a rigid link; only a flexible segment takes a section and "
+          "a material",
+          k + 1));
+    }
+    try {
+      p.section.validate();
+      p.material.validate();
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(fmt::format("PhysicalChain segment {}: {}", k + 1, e.what()));
+    }
+    if (p.area && !(std::isfinite(*p.area) && *p.area > 0.0)) {
+      throw InvalidInput(fmt::format(
+          "PhysicalChain segment {}: SegmentProperties::area = {} must be finite and > 0",
+          k + 1,
+          *p.area));
+    }
+    if (!flexible->EI_profile.empty()) {
+      throw InvalidInput(fmt::format(
+          "PhysicalChain segment {} gives an EI_profile and a section; give one", k + 1));
+    }
+    // EI of the segment is E I of its section (the reader computes it so; a chain built from
+    // objects must agree, or its stresses would belong to another beam).
+    const double EI = p.material.E * p.section.second_moment();
+    if (!(std::fabs(flexible->EI - EI) <= 1e-12 * EI)) {
+      throw InvalidInput(fmt::format(
+          "PhysicalChain segment {}: EI = {:g} N m^2 is not E I = {:g} N m^2 of its section and "
+          "material",
+          k + 1,
+          flexible->EI,
+          EI));
+    }
+    if (p.material.yield_strength) {
+      if (yield && *yield != *p.material.yield_strength) {
+        throw InvalidInput(fmt::format(
+            "PhysicalChain segment {}: yield strength {:g} Pa differs from another segment's {:g} "
+            "Pa; one yield strength per chain (the safety factor is S_y over the largest stress)",
+            k + 1,
+            *p.material.yield_strength,
+            *yield));
+      }
+      yield = p.material.yield_strength;
+    }
+  }
+  if (yield && yield_strength && *yield != *yield_strength) {
+    throw InvalidInput(
+        fmt::format("PhysicalChain::yield_strength = {:g} Pa differs from the segments' {:g} Pa",
+                    *yield_strength,
+                    *yield));
+  }
+  if (yield_strength && !(std::isfinite(*yield_strength) && *yield_strength > 0.0)) {
+    throw InvalidInput(fmt::format("PhysicalChain::yield_strength = {:g} Pa must be finite and > 0",
+                                   *yield_strength));
+  }
+}
+
+std::optional<double> PhysicalChain::effective_yield_strength() const {
+  for (const std::optional<SegmentProperties>& p : segments) {
+    if (p && p->material.yield_strength) return p->material.yield_strength;
+  }
+  return yield_strength;
+}
+
 PhysicalBeamSolution solve_physical_chain(BeamMethod method,
                                           BeamProblem problem,
-                                          const io::ChainFile& file) {
+                                          const PhysicalChain& physical_chain) {
+  physical_chain.validate();
+  const SegmentChain& chain = physical_chain.chain;
+  problem.chain = chain;
+  problem.boundary = chain.end;
   const int requested = problem.shape_points;
   const auto [dense, step] = dense_shape(requested);
   problem.shape_points = dense;
   PhysicalBeamSolution out;
   out.solution = solve_beam(method, problem);
   if (!out.solution.converged()) return out;
-  const SegmentChain& chain = file.chain;
   Scaling scale;
   scale.length = chain.total_length();
-  scale.lever = scale.length;  // the file's loads are in N and N m, its lengths in m
+  scale.lever = scale.length;  // the chain's loads are in N and N m, its lengths in m
   scale.moment_to_si = 1.0;
   scale.root = out.solution.chain_reactions;
   scale.chain = &chain;
@@ -515,17 +600,20 @@ PhysicalBeamSolution solve_physical_chain(BeamMethod method,
     s += length;
     span.s1 = s / scale.length;
     span.flexible = std::holds_alternative<FlexibleSegment>(chain.segments[k]);
-    const std::optional<io::SegmentSection>& section = file.sections[k];
-    if (section && section->thickness) {
-      span.section_modulus = section->I / (0.5 * *section->thickness);
+    const std::optional<SegmentProperties>& properties = physical_chain.segments[k];
+    if (properties && properties->section.thickness > 0.0) {
+      // I / c with c = h/2 (the section's own second moment: b h^3/12 or the given I).
+      span.section_modulus =
+          properties->section.second_moment() / (0.5 * properties->section.thickness);
     }
     if (const auto* f = std::get_if<FlexibleSegment>(&chain.segments[k]); f && f->extensible()) {
       span.EA = f->EA;
-      if (section) span.area = section->area;
+      if (properties) span.area = properties->cross_section_area();
     }
     spans.push_back(span);
   }
-  out.physical = evaluate(out.solution, scale, spans, file.yield_strength, requested, step);
+  out.physical = evaluate(
+      out.solution, scale, spans, physical_chain.effective_yield_strength(), requested, step);
   thin_shape(out.solution, requested, step);
   return out;
 }

@@ -1,15 +1,16 @@
 #pragma once
 // Beams in physical units (SI): the cantilever a designer describes by its length, modulus,
-// section and tip loads, and segment chains read from a TOML file in SI units. The solvers stay
-// nondimensional (Howell's alpha2 = Fy L^2/EI, n = -Fx/Fy, mu = M L/EI, eqs. 2.67, 2.83); this
-// layer converts in and out, and adds what the nondimensional keys do not say: the tip position in
-// metres, the bending moment along the beam, the largest bending stress M c / I and the safety
-// factor against yield (docs/units.md).
+// section and tip loads, and segment chains in SI units (built from objects or read from TOML).
+// The solvers stay nondimensional (Howell's alpha2 = Fy L^2/EI, n = -Fx/Fy, mu = M L/EI, eqs.
+// 2.67, 2.83); this layer converts in and out, and adds what the nondimensional keys do not say:
+// the tip position in metres, the bending moment along the beam, the largest bending stress
+// M c / I and the safety factor against yield (docs/units.md).
 #include <optional>
 #include <vector>
 
 #include "flexure/beam/beam_problem.h"
-#include "flexure/io/chain_toml.h"
+#include "flexure/solver/chain_model/segment_chain.h"
+#include "flexure/solver/common/section.h"
 
 namespace flexure {
 
@@ -113,10 +114,45 @@ PhysicalBeamSolution solve_physical_beam(BeamMethod method,
                                          const PhysicalCantilever& beam,
                                          BeamProblem settings);
 
-// The same for a chain read in physical units (io::ChainFile::physical): its sections give the
-// stresses, where every flexible segment has one. `problem.chain` must be `file.chain`.
+// A segment chain in physical units (SI: lengths m, loads N and N m, EI N m^2) with what the
+// stresses need: the section and material of each flexible segment that has one. The library's
+// type for a physical chain, built from objects or read from a TOML file (io::read_chain_file
+// returns an io::ChainFile, which is one).
+struct SegmentProperties {
+  Section section;    // the rectangle (width, thickness) or a general I with its thickness
+  Material material;  // E (EI = E I), and S_y for the safety factor
+  // The cross-section area of a general section given with A (docs/chain-toml.md), m^2: the axial
+  // stress N/A of an extensible segment. A rectangle's area is width thickness.
+  std::optional<double> area;
+
+  // `area`, or the rectangle's width thickness; unknown for a general section without A.
+  std::optional<double> cross_section_area() const;
+};
+
+struct PhysicalChain {
+  SegmentChain chain;
+  // One entry per segment of `chain`: the properties of a flexible segment that gives them
+  // (nullopt: a flexible segment given by EI only, or a rigid link).
+  std::vector<std::optional<SegmentProperties>> segments;
+  // The yield strength of the segments whose material gives none, Pa (a chain file's top-level
+  // yield_strength).
+  std::optional<double> yield_strength;
+
+  // Throws InvalidInput naming the segment: one entry per segment, properties only on flexible
+  // segments, each section and material valid, a flexible segment's EI equal to E I (relative
+  // 1e-12; no EI_profile with properties), and one yield strength for the chain (the safety factor
+  // is the yield strength over the largest stress, so segments of different S_y are refused).
+  void validate() const;
+  // The yield strength of the chain: the segments' (all equal, see validate()) or yield_strength.
+  std::optional<double> effective_yield_strength() const;
+};
+
+// The same for a chain in physical units: its sections give the stresses, where every flexible
+// segment has one. `problem` gives the method's settings (tolerance, integrator, shape points); its
+// chain and boundary are replaced by `chain`'s. Throws InvalidInput when chain.validate() does.
+// (An io::ChainFile read from TOML is a PhysicalChain.)
 PhysicalBeamSolution solve_physical_chain(BeamMethod method,
                                           BeamProblem problem,
-                                          const io::ChainFile& file);
+                                          const PhysicalChain& chain);
 
 }  // namespace flexure

@@ -1,4 +1,4 @@
-// Beams in physical units (benchmarks/studies/physical_beam.h), checked against:
+// Beams in physical units (beam/physical_beam.h), checked against:
 //  * the nondimensional solve scaled by hand: alpha2 = Fy L^2/EI, n = -Fx/Fy, mu = M L/EI in
 //    (Howell eqs. 2.67, 2.83); a, b, M(0) times L, L, EI/L out; stress M (h/2)/I with I = b h^3/12,
 //    over seeded random beams;
@@ -8,17 +8,19 @@
 //    solved shape, and the tip moment equals the applied M;
 //  * Howell's worked examples in units: the aluminium rod of sec. 2.9.2 (P = 17.3839 N gives
 //    theta0 = 1 rad, a = 73.8 mm, b = 61.0 mm) and the small-length flexural pivot of sec. 5.1
-//    (polypropylene, 0.096 lb: b = 3 in, sigma = F a c/I = 3900 psi), the latter as a chain file
-//    in inches and pounds.
-#include "flexure/benchmarks/studies/physical_beam.h"
+//    (polypropylene, 0.096 lb: b = 3 in, sigma = F a c/I = 3900 psi), the latter as a chain of
+//    the library's objects (PhysicalChain) in inches and pounds. The chain files: tests/io/
+//    physical_chain_toml_test.cpp.
+#include "flexure/beam/physical_beam.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <random>
+#include <string>
 
-#include "flexure/io/chain_toml.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure {
@@ -136,29 +138,22 @@ TEST(PhysicalBeam, HowellAluminiumRodSection292) {
   EXPECT_FALSE(got.physical.max_stress.has_value());  // a round section given by I: no c
 }
 
-TEST(PhysicalBeam, HowellSmallLengthFlexuralPivotAsAChainInInches) {
+TEST(PhysicalBeam, HowellSmallLengthFlexuralPivotAsAChainOfObjects) {
   // Howell sec. 5.1, eqs. 5.26-5.34: polypropylene E = 2e5 psi, flexible l = 0.5 in of 0.75 x
   // 0.03 in, rigid L = 5 in, vertical tip force 0.096 lb: b = 3 in, a = 4.56 in, sigma_max = F a
-  // c/I = 3900 psi (the PRBM; the exact answer differs by the pivot's small-length error).
-  const io::ChainFile file = io::parse_chain_file(R"(
-yield_strength = "4000 psi"
-[[segment]]
-type = "flexible"
-length = "0.5 in"
-E = "2e5 psi"
-width = "0.75 in"
-thickness = "0.03 in"
-[[segment]]
-type = "rigid"
-length = "5 in"
-[tip_load]
-Fy = "0.096 lbf"
-)",
-                                                  "pivot.toml");
-  ASSERT_TRUE(file.physical);
-  BeamProblem problem;
-  problem.chain = file.chain;
-  const PhysicalBeamSolution got = solve_physical_chain(BeamMethod::kShooting, problem, file);
+  // c/I = 3900 psi (the PRBM; the exact answer differs by the pivot's small-length error). Built
+  // from the library's types, no file (tests/io/physical_chain_toml_test.cpp reads the same chain
+  // from TOML and checks the two give the same answer).
+  const Section section = Section::rectangle(0.75 * kInch, 0.03 * kInch);
+  Material material;
+  material.E = 2e5 * kPsi;
+  material.yield_strength = 4000.0 * kPsi;
+  PhysicalChain pivot;
+  pivot.chain.segments = {FlexibleSegment(0.5 * kInch, material.E * section.second_moment()),
+                          RigidSegment{5.0 * kInch, 0.0}};
+  pivot.chain.tip_load.Fy = 0.096 * kPound;
+  pivot.segments = {SegmentProperties{section, material, std::nullopt}, std::nullopt};
+  const PhysicalBeamSolution got = solve_physical_chain(BeamMethod::kShooting, {}, pivot);
   ASSERT_TRUE(got.solution.converged()) << got.solution.message;
   const PhysicalResults& p = got.physical;
   EXPECT_NEAR(p.tip_y / kInch, 3.0, 0.06);  // 2 %
@@ -166,39 +161,54 @@ Fy = "0.096 lbf"
   // A vertical tip force: the moment is largest at the clamp, F times the tip's x (exact statics).
   const double F = 0.096 * kPound;
   EXPECT_NEAR(p.root_moment, F * p.tip_x, 1e-9 * F * p.tip_x);
-  EXPECT_NEAR(p.max_moment, p.root_moment, 1e-12 * p.max_moment);
   const double I = 0.75 * std::pow(0.03, 3) / 12.0 * std::pow(kInch, 4);
   ASSERT_TRUE(p.max_stress.has_value());
   EXPECT_NEAR(*p.max_stress, F * p.tip_x * 0.015 * kInch / I, 1e-9 * *p.max_stress);
   EXPECT_NEAR(*p.max_stress / kPsi, 3900.0, 0.02 * 3900.0);
+  ASSERT_TRUE(p.yield_strength.has_value());
+  EXPECT_EQ(*p.yield_strength, 4000.0 * kPsi);
   EXPECT_NEAR(*p.safety_factor, 4000.0 * kPsi / *p.max_stress, 1e-12);
 }
 
-TEST(PhysicalBeam, AChainFileAndTheFlagsDescribeOneBeam) {
-  // The steel strip of issue 13 both ways, and by two methods.
-  const io::ChainFile file = io::parse_chain_file(R"(
-[[segment]]
-type = "flexible"
-length = "50 mm"
-E = "200 GPa"
-width = "10 mm"
-thickness = "0.5 mm"
-[tip_load]
-Fx = "-2.5 N"
-Fy = "4.33 N"
-)",
-                                                  "strip.toml");
-  BeamProblem problem;
-  problem.chain = file.chain;
-  const PhysicalBeamSolution chain = solve_physical_chain(BeamMethod::kShooting, problem, file);
-  const PhysicalBeamSolution flags =
-      solve_physical_beam(BeamMethod::kElliptic, strip(-2.5, 4.33, 0.0), {});
-  ASSERT_TRUE(chain.solution.converged() && flags.solution.converged());
-  EXPECT_NEAR(chain.physical.tip_x, flags.physical.tip_x, 1e-12);
-  EXPECT_NEAR(chain.physical.tip_y, flags.physical.tip_y, 1e-12);
-  EXPECT_NEAR(*chain.physical.max_stress, *flags.physical.max_stress, 1e-8 * 5.65e8);
-  // alpha2 = Fy L^2/EI with EI = 200e9 * 0.01 * 0.0005^3 / 12.
-  EXPECT_NEAR(chain.solution.alpha2, 4.33 * 0.0025 / (200e9 * 0.01 * 1.25e-10 / 12.0), 1e-12);
+TEST(PhysicalBeam, PhysicalChainRefusesWhatDoesNotDescribeOneBeam) {
+  // Each refusal names what is wrong (InvalidInput, before any solve).
+  const Section section = Section::rectangle(0.01, 0.0005);
+  Material steel;
+  steel.E = 200e9;
+  const double EI = steel.E * section.second_moment();
+  auto message = [](const PhysicalChain& c) -> std::string {
+    try {
+      c.validate();
+    } catch (const InvalidInput& e) {
+      return e.what();
+    }
+    return "";
+  };
+  PhysicalChain c;
+  c.chain.segments = {FlexibleSegment(0.05, EI), RigidSegment{0.02, 0.0}};
+  c.segments = {SegmentProperties{section, steel, std::nullopt}, std::nullopt};
+  EXPECT_EQ(message(c), "");
+  PhysicalChain wrong = c;
+  wrong.segments.pop_back();  // one entry per segment
+  EXPECT_NE(message(wrong).find("1 entries for a chain of 2 segments"), std::string::npos);
+  wrong = c;
+  wrong.segments[1] = wrong.segments[0];  // a section on the rigid link
+  EXPECT_NE(message(wrong).find("segment 2 is a rigid link"), std::string::npos);
+  wrong = c;
+  std::get<FlexibleSegment>(wrong.chain.segments[0]).EI = 2.0 * EI;  // EI is not E I
+  EXPECT_NE(message(wrong).find("is not E I"), std::string::npos);
+  wrong = c;
+  wrong.segments[0]->material.E = -1.0;
+  EXPECT_NE(message(wrong).find("segment 1: "), std::string::npos);
+  EXPECT_NE(message(wrong).find("Material::E"), std::string::npos);
+  // Two flexures of different yield strengths: the safety factor would need one per segment.
+  wrong = c;
+  wrong.chain.segments.push_back(FlexibleSegment(0.05, EI));
+  wrong.segments.push_back(wrong.segments[0]);
+  wrong.segments[0]->material.yield_strength = 1e9;
+  wrong.segments[2]->material.yield_strength = 2e9;
+  EXPECT_NE(message(wrong).find("differs from another segment"), std::string::npos);
+  EXPECT_THROW(solve_physical_chain(BeamMethod::kShooting, {}, wrong), InvalidInput);
 }
 
 TEST(PhysicalBeam, AxialLoadHasNoLoadRatioAndBadInputNamesTheField) {
