@@ -43,6 +43,20 @@ BENCHMARK(BM_SolveBeam)
     ->ArgsProduct({{0, 1, 2, 3, 4}, {0, 1}})
     ->Unit(benchmark::kMicrosecond);
 
+// The scalar call of the Python module's docs/performance.md table `python_scalar`: `flexure
+// beam --alpha2 2` as solve_beam sees it (method auto, which takes the elliptic solution here),
+// with the verdict (the default) and without.
+void BM_SolveBeamAuto(benchmark::State& state) {
+  BeamProblem p;
+  p.value = 2.0;
+  p.judge_stability = state.range(0) != 0;
+  for (auto _ : state) {
+    const BeamSolution s = solve_beam(BeamMethod::kAuto, p);
+    benchmark::DoNotOptimize(s.tip.theta0);
+  }
+}
+BENCHMARK(BM_SolveBeamAuto)->ArgNames({"verdict"})->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
 void BM_StableSearch(benchmark::State& state) {
   BeamProblem p;
   if (state.range(0) == 0) {
