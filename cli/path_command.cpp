@@ -14,7 +14,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/physical_flags.h"
-#include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/beam/beam_problem.h"
 #include "flexure/benchmarks/studies/load_path_study.h"
 #include "flexure/io/chain_toml.h"
 #include "flexure/io/hdf5_file.h"

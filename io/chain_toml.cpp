@@ -404,6 +404,7 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
                       "(E with width and thickness, or with I and A) in physical units");
       }
       file.sections.emplace_back();
+      file.segments.emplace_back();
       continue;
     }
     const std::string where = fmt::format("segment {}", k + 1);
@@ -471,6 +472,16 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
                 where + ": nu and shear_coefficient are used with extensible = true only");
     }
     file.sections.push_back(section);
+    // The same as the library's types: the rectangle or the general I (with its thickness), and
+    // the material (nu where extensible gives it, else the default; the yield strength below).
+    SegmentProperties properties{keys.width ? Section::rectangle(*keys.width, *keys.thickness)
+                                            : Section::general(*keys.I, keys.thickness),
+                                 Material{},
+                                 keys.width ? std::optional<double>() : keys.area};
+    properties.material.E = keys.E->si;
+    if (keys.nu) properties.material.nu = *keys.nu;
+    properties.material.density = keys.density;
+    file.segments.push_back(properties);
     r.warn(modulus_warning(*keys.E, where + ".E"));
     if (keys.thickness) {
       r.warn(thickness_warning(
@@ -488,6 +499,9 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
       toml_fail(source, line_of(*root.get("yield_strength")), "yield_strength must be > 0");
     }
     file.yield_strength = yield->si;
+    for (std::optional<SegmentProperties>& properties : file.segments) {
+      if (properties) properties->material.yield_strength = yield->si;
+    }
   }
   try {
     chain.validate();

@@ -17,7 +17,8 @@ reference benchmark (REFERENCES below), each row's CPU-time ratio to it measured
 The `startup` table times whole processes: `flexure beam --alpha2 2 --json` against `true` (an
 empty process), the median of alternating runs; the `python_beam` table the vectorised
 flexure.beam (Debian's /usr/bin/python3, the module in BUILD/python) against `flexure sweep beam`
-on the same loads; the `edges` table the commands of issue 27 as a user runs them (a shooting
+on the same loads; the `python_scalar` table one scalar flexure.beam and flexure.solve_beam against
+solve_beam in C++ (beam_stability_bench's BM_SolveBeamAuto) and the command line run in-process; the `edges` table the commands of issue 27 as a user runs them (a shooting
 sweep, the guided chain, the chain's element count), with the GSL + Brent yardstick of
 shooting_sweep_bench measured in the same run, and the same commands of an older build given by
 --baseline BUILD (the before column). No number in a generated table is typed by hand.
@@ -199,6 +200,59 @@ def python_beam_table(build, runs, points=1_000_000):
     return "\n".join(lines)
 
 
+PYTHON_SCALAR = """
+import json, sys, time, timeit, flexure
+from flexure import _command
+number, repeat = int(sys.argv[1]), int(sys.argv[2])
+off = flexure.BeamProblem(alpha2=2.0, judge_stability=False)
+on = flexure.BeamProblem(alpha2=2.0)
+calls = {
+    "beam": lambda: flexure.beam(alpha2=2.0),
+    "beam_off": lambda: flexure.beam(alpha2=2.0, stability="off"),
+    "solve_beam": lambda: flexure.solve_beam(on),
+    "solve_beam_off": lambda: flexure.solve_beam(off),
+    # What flexure.beam did before: the command line run in-process.
+    "cli": lambda: _command.run(["beam"], {"alpha2": 2.0}, switches={"stable"}),
+    "cli_off": lambda: _command.run(["beam"], {"alpha2": 2.0, "stability": "off"},
+                                    switches={"stable"}),
+}
+# CPU time of this process (as the C++ column's), not wall time: the machine is shared.
+best = {name: min(timeit.repeat(f, timer=time.process_time, number=number, repeat=repeat))
+        / number
+        for name, f in calls.items()}
+print(json.dumps(best))
+"""
+
+
+def python_scalar_table(build, repetitions, number=2000, repeat=7):
+    """One scalar beam from Python (issue 28: within 20 us) against solve_beam in C++ (Google
+    benchmark BM_SolveBeamAuto of beam_stability_bench), with and without the stability verdict,
+    in one run: the C++ medians, then each Python call by timeit (best of `repeat` x `number`)."""
+    report = run_program(build, "beam_stability_bench", repetitions, None,
+                         only="BM_SolveBeamAuto")
+    cpp = {name: to_seconds(cpu, unit) for name, (cpu, _wall, unit) in medians(report).items()}
+    env = dict(os.environ, PYTHONPATH=os.path.join(build, "python"))
+    out = subprocess.run(["/usr/bin/python3", "-c", PYTHON_SCALAR, str(number), str(repeat)],
+                         capture_output=True, text=True, check=True, env=env).stdout
+    py = json.loads(out)
+    rows = [("with the verdict (default)", "BM_SolveBeamAuto/verdict:1", ""),
+            ("without (`stability=\"off\"`)", "BM_SolveBeamAuto/verdict:0", "_off")]
+    lines = [f"`flexure beam --alpha2 2` (method auto: the elliptic solution) from Python, each "
+             f"call's CPU time by `timeit` (best of {repeat} x {number}); C++ = `solve_beam` "
+             f"(`BM_SolveBeamAuto`, CPU median of {repetitions}); ratio = Python / C++, all in one "
+             f"run:", "",
+             "| stability verdict | C++ `solve_beam` | `flexure.solve_beam(problem)` | "
+             "`flexure.beam(alpha2=2.0)` | the command line in-process (before) | "
+             "ratio `flexure.beam` | ratio before |",
+             "|---|---|---|---|---|---|---|"]
+    for label, bench, suffix in rows:
+        c = cpp[bench]
+        lines.append(f"| {label} | {pretty(c)} | {pretty(py['solve_beam' + suffix])} | "
+                     f"{pretty(py['beam' + suffix])} | {pretty(py['cli' + suffix])} | "
+                     f"{py['beam' + suffix] / c:.3g} | {py['cli' + suffix] / c:.3g} |")
+    return "\n".join(lines)
+
+
 def child_cpu():
     """CPU seconds (user + system) of the finished child processes so far."""
     import resource
@@ -346,6 +400,8 @@ def main():
             table = startup_table(args.build, args.startup_runs)
         elif name == "python_beam":
             table = python_beam_table(args.build, args.python_runs)
+        elif name == "python_scalar":
+            table = python_scalar_table(args.build, args.repetitions)
         elif name == "edges":
             table = edges_table(args.build, args.baseline, args.edge_runs, args.baseline_label)
         elif args.from_json:

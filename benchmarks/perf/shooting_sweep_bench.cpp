@@ -12,7 +12,7 @@
 // end-moment sweep mu 0:8 at alpha2 = 2, n = 1 (off the ray: every point from zero load).
 #include <benchmark/benchmark.h>
 
-#include "flexure/benchmarks/studies/beam_sweep_solver.h"
+#include "flexure/beam/beam_sweep_solver.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 #include "gsl_brent_reference.h"
 

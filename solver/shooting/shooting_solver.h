@@ -163,7 +163,7 @@ class ShootingSolver {
   // the caller then solves from zero load (solve()). Neighbours with other multiple-shooting cuts
   // lend their root unknowns. Whether that stretch of branch is the proportional-loading answer at
   // this load is the caller's to know (for a load on the same ray from zero, farther out, it is:
-  // benchmarks/studies/beam_sweep_solver.h); limit_points is 0 (the caller knows the path).
+  // beam/beam_sweep_solver.h); limit_points is 0 (the caller knows the path).
   ShootingResult solve_near(const SegmentChain& chain, const ShootingNeighbour& neighbour) const;
 
   // Load path by pseudo-arclength continuation from zero load (all points recorded). A straight
