@@ -246,7 +246,7 @@ def sweep_per_point(build, tmp, runs, threads, n="0", extra=()):
     that start-up and the file cancel) and the wall time per point it reports itself. `n` and
     `extra` (e.g. --stability off) change the command."""
     flexure = os.path.join(build, "flexure")
-    sweep = SWEEP[:4] + [n] + SWEEP[5:]
+    sweep = SWEEP[:5] + [n] + SWEEP[6:]
     cpu, wall = [], []
     for _ in range(runs):
         _, full, rc, out = run_timed([flexure] + sweep + ["0.5:10:500", "--threads", str(threads),
