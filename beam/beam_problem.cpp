@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "flexure/beam/beam_auto_ladder.h"
 #include "flexure/beam/beam_ladder.h"
@@ -18,6 +19,7 @@
 #include "flexure/solver/shooting/shooting_shape.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 #include "flexure/solver/shooting/stable_equilibrium.h"
+#include "flexure/solver/shooting/tension_stability.h"
 
 namespace flexure {
 namespace {
@@ -321,7 +323,12 @@ BeamSolution shooting_solution(const BeamProblem& problem,
     const ShapeAtStations shape = [&](const std::vector<double>& s) {
       return shooting_shape_at(chain, r, s, options);
     };
-    solution.stability = judge(chain, support, shape, problem.stability_options);
+    // A uniform cantilever nowhere compressed: margin 1 from the solve's own moment, no
+    // eigenproblem (tension_stability.h); otherwise the discrete second variation.
+    const std::optional<Stability> tensioned =
+        tensioned_cantilever_stability(chain, r, problem.stability_options);
+    solution.stability =
+        tensioned ? *tensioned : judge(chain, support, shape, problem.stability_options);
     if (wants_stable_search(problem, solution)) {
       seek_stable(problem, chain, shape, support, shape_points, solution);
     }

@@ -97,7 +97,10 @@ CurvatureRecorder* curvature_recorder(const ShootingSolver::Options& options,
 }
 
 void take_count(const CurvatureRecorder& recorder, ShootingResult& result) {
-  if (recorder.has_accepted()) result.inflection_points = recorder.inflection_points();
+  if (recorder.has_accepted()) {
+    result.inflection_points = recorder.inflection_points();
+    result.largest_curvature = recorder.largest_curvature();
+  }
 }
 
 }  // namespace
@@ -191,6 +194,7 @@ ShootingResult ShootingSolver::finish(const ShootingProblem& problem,
       return result;
     }
     result.inflection_points = count.inflection_points;
+    result.largest_curvature = count.largest_curvature;
     known_tip = &count.tip;
   }
   if (known_tip != nullptr && options_.shape_points <= 1) {
