@@ -1086,6 +1086,7 @@ void register_mechanism_command(CLI::App& app) {
       request.points = analyze->count("--points") > 0 ? args->points : 0;
       for (const char* flag :
            {"--out",
+            "--csv",
             "--prbm-only",
             "--method",
             "--tol",

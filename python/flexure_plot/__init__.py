@@ -40,10 +40,11 @@ def default_out(path):
 
 
 def plot_file(path, out=None, animate=None, dump_json=None, no_stress=False, n_value=0.0,
-              extra=()):
+              extra=(), expect_kind=None, label=None):
     """Draws `path` into `out` (default: the file's name with .png); returns
     {file, kind, description, out, animate, written}. `extra`: [(path, label)] of further
-    dynamics files drawn on the same axes (scripts/plot_dynamics.py)."""
+    dynamics files drawn on the same axes, `label` the legend entry of `path` there
+    (scripts/plot_dynamics.py); `expect_kind`: refuse a file of another kind (the scripts)."""
     h5py, plt = _libraries()
     from . import beam, design, mechanism, studies
     from ._common import FORMATS, Recorder, check_output, save_figure, style
@@ -76,6 +77,9 @@ def plot_file(path, out=None, animate=None, dump_json=None, no_stress=False, n_v
                 f"plot: {path} was not written by flexure (no `schema` or `command_line` of a "
                 "known command and none of the datasets of docs/hdf5-schema.md); `flexure plot` "
                 "draws the files of: " + ", ".join(kinds))
+        if expect_kind and kind != expect_kind:
+            raise PlotError(f"plot: {path} is a `{kind}` file, not a `{expect_kind}` file "
+                            f"({DESCRIPTIONS[expect_kind]})")
         if animate and kind != "path":
             raise PlotError(f"plot: --animate needs deformed shapes; {path} ({kind}) holds none "
                             "(write a path with `flexure path ... --shapes K`)")
@@ -98,7 +102,7 @@ def plot_file(path, out=None, animate=None, dump_json=None, no_stress=False, n_v
             elif kind == "mechanism-tolerance":
                 fig = mechanism.draw_tolerance(f, plt, rec)
             elif kind == "dynamics":
-                labels = [os.path.basename(path)] + [lab for _, lab in extra]
+                labels = [label or os.path.basename(path)] + [lab for _, lab in extra]
                 fig = studies.draw_dynamics(list(zip(opened, labels)), plt, rec)
             elif kind == "design-history":
                 fig = design.draw_history(f, plt, rec)

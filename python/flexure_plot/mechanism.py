@@ -33,7 +33,7 @@ def draw_analyze(f, plt, rec, stress=True):
                 if f"stress_{m}_pivot{p}" in f]
     stress_panel = stress and bool(stresses)
     panels = 1 + (exact is not None) + stress_panel
-    fig, axes = plt.subplots(panels, 1, figsize=(8.5, 2.4 + 2.4 * panels), sharex=True,
+    fig, axes = plt.subplots(panels, 1, figsize=(8.5, 2.0 + 3.0 * panels), sharex=True,
                              squeeze=False)
     axes = axes[:, 0]
     ax = axes[0]
@@ -44,7 +44,7 @@ def draw_analyze(f, plt, rec, stress=True):
         rec.line(ax, dx, exact, "s-", ms=3, label="exact (elastica)", x_src=("displacement", k),
                  y_src=("force_exact", k), x_scale=length_scale, y_scale=force_scale,
                  panel="force")
-    ax.set_ylabel(label(f"slider force F,\n{force_of}", force_unit))
+    ax.set_ylabel(label(f"slider force F, {force_of}", force_unit))
     ax.grid(True, alpha=0.3)
     row = 1
     if exact is not None:
@@ -52,7 +52,7 @@ def draw_analyze(f, plt, rec, stress=True):
         rec.line(axes[row], dx, err, "o-", ms=3, color="C2", x_src=("displacement", k),
                  x_scale=length_scale, panel="force_error", label="PRBM - exact")
         axes[row].axhline(0.0, color="0.5", lw=0.8)
-        axes[row].set_ylabel(label("PRBM force\nerror", "%"))
+        axes[row].set_ylabel(label("PRBM force error", "%"))
         axes[row].grid(True, alpha=0.3)
         row += 1
     if stress_panel:
@@ -67,7 +67,7 @@ def draw_analyze(f, plt, rec, stress=True):
         if "design/yield_strength" in f:
             sa.axhline(float(f["design/yield_strength"][()]) * s_scale, color="k", ls=":",
                        lw=1.2, label="yield strength")
-        sa.set_ylabel(label("largest\nstress", s_unit))
+        sa.set_ylabel(label("largest stress", s_unit))
         sa.grid(True, alpha=0.3)
         legend_beside(sa)
     inside = f["prbm_within_validity"][()] if "prbm_within_validity" in f else None

@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 
-from ._common import attr, display, label, legend_beside, unit
+from ._common import PlotError, attr, display, label, legend_beside, unit
 
 LEVELS = (1e-4, 1e-3, 1e-2)
 LEVEL_TEXT = {1e-4: "0.01 %", 1e-3: "0.1 %", 1e-2: "1 %"}
@@ -140,6 +140,11 @@ def draw_dynamics(files, plt, rec):
     """`files`: [(h5py.File, label)] with forces of the same thing (one half or the whole)."""
     f0 = files[0][0]
     force_of = attr(f0, "force_of", "whole symmetric mechanism")
+    for f, _ in files[1:]:  # one force axis: every file's forces of the same thing
+        other = attr(f, "force_of", "whole symmetric mechanism")
+        if other != force_of:
+            raise PlotError(f"plot: {f0.filename} has forces of the {force_of}, {f.filename} of "
+                            f"the {other}: write them with the same --force-of")
     has_history = "history" in f0 and len(f0["history"]) > 0 and len(files) == 1
     fig, axes = plt.subplots(2 if has_history else 1, 3, figsize=(15, 8.5 if has_history else 4.5),
                              squeeze=False)
@@ -154,7 +159,7 @@ def draw_dynamics(files, plt, rec):
                      x_src=("omega", idx), y_src=(key, idx), y_scale=scale, panel=key)
         ax.set_xlabel(label("drive frequency omega", unit(f0["omega"], "rad/s")))
         shown = "%" if key == "percent_constant_force" else fu
-        ax.set_ylabel(label(name if key == "percent_constant_force" else f"{name},\n{force_of}",
+        ax.set_ylabel(label(name if key == "percent_constant_force" else f"{name}, {force_of}",
                             shown))
         ax.grid(True, alpha=0.3)
     if "static_nominal_force" in f0.attrs:
@@ -177,7 +182,7 @@ def draw_dynamics(files, plt, rec):
                      panel="history" + name)
             ax.set_title(f"omega = {float(g.attrs['omega']):.4g} rad/s")
             ax.set_xlabel(label("phase t / period", "1"))
-            ax.set_ylabel(label(f"input force,\n{force_of}", fu))
+            ax.set_ylabel(label(f"input force, {force_of}", fu))
             ax.grid(True, alpha=0.3)
         legend_beside(axes[1, min(2, len(names) - 1)])
         for ax in axes[1, len(names):]:
