@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 
 #include "flexure/io/csv_table.h"
 #include "flexure/io/output_path.h"
@@ -19,6 +21,51 @@ bool ends_with_csv(const std::string& path) {
 }
 
 }  // namespace
+
+std::vector<io::CsvColumn> csv_columns_from_records(
+    const Json& records, const std::map<std::string, std::string>& units) {
+  std::vector<io::CsvColumn> columns;
+  if (!records.is_array() || records.empty()) return columns;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const auto unit_of = [&](const std::string& key) {
+    const auto it = units.find(key);
+    return it == units.end() ? std::string("1") : it->second;
+  };
+  const auto number = [&](const Json& v) {
+    if (v.is_boolean()) return v.get<bool>() ? 1.0 : 0.0;
+    return v.is_number() ? v.get<double>() : nan;
+  };
+  for (const auto& [key, first] : records.front().items()) {
+    if (first.is_object()) continue;
+    if (first.is_string()) {
+      io::CsvColumn c{key, "text", {}, {}};
+      for (const Json& r : records) c.texts.push_back(r.value(key, std::string()));
+      columns.push_back(std::move(c));
+    } else if (first.is_array()) {
+      std::size_t width = 0;
+      bool numeric = true;
+      for (const Json& r : records) {
+        if (!r.contains(key) || !r[key].is_array()) continue;
+        width = std::max(width, r[key].size());
+        for (const Json& v : r[key]) numeric = numeric && (v.is_number() || v.is_null());
+      }
+      if (!numeric) continue;
+      for (std::size_t i = 0; i < width; ++i) {
+        io::CsvColumn c{fmt::format("{}_{}", key, i + 1), unit_of(key), {}, {}};
+        for (const Json& r : records) {
+          const bool has = r.contains(key) && r[key].is_array() && i < r[key].size();
+          c.numbers.push_back(has ? number(r[key][i]) : nan);
+        }
+        columns.push_back(std::move(c));
+      }
+    } else {
+      io::CsvColumn c{key, unit_of(key), {}, {}};
+      for (const Json& r : records) c.numbers.push_back(r.contains(key) ? number(r[key]) : nan);
+      columns.push_back(std::move(c));
+    }
+  }
+  return columns;
+}
 
 void add_csv_option(CLI::App* cmd, std::string& csv) {
   cmd->add_option("--csv",

@@ -4,10 +4,22 @@
 // when --out names a .csv or only --csv is given), then the table of that file is written as CSV by
 // the library (io/csv_table.h). Both paths are checked before any work (exit 2).
 #include <CLI/CLI.hpp>
+#include <map>
 #include <string>
 #include <vector>
 
+#include "cli/cli_common.h"
+#include "flexure/io/csv_table.h"
+
 namespace flexure::cli {
+
+// The columns of a table the command has as JSON records (e.g. the `designs` of `design
+// mechanism`), in the key order of the first record: numbers, booleans (0/1) and strings become
+// columns, an array of numbers one column per entry (`thicknesses_1`, `thicknesses_2`; NaN where
+// a record has fewer), null NaN; nested objects are left out. `units` gives each key's unit
+// (absent: "1").
+std::vector<io::CsvColumn> csv_columns_from_records(
+    const Json& records, const std::map<std::string, std::string>& units);
 
 // Adds `--csv FILE` to `cmd`, storing the path in `csv`.
 void add_csv_option(CLI::App* cmd, std::string& csv);

@@ -19,8 +19,9 @@ def draw_cfm_map(f, plt, rec):
     if "percent_constant_force_exact" in f:
         quantities += [("percent_constant_force_exact", "exact Xi'"),
                        ("max_force_error", "largest PRBM force error")]
-    fig, axes = plt.subplots(1, len(quantities), figsize=(5.4 * len(quantities), 4.6),
-                             squeeze=False)
+    rows = (len(quantities) + 1) // 2
+    fig, axes = plt.subplots(rows, 2, figsize=(11.5, 4.6 * rows), squeeze=False)
+    axes = axes.reshape(1, -1)
     shape = f["Phi"].shape
     status = f["status"][:, :, i1, i2]
     for ax, (q, name) in zip(axes[0], quantities):

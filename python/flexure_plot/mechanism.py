@@ -161,7 +161,7 @@ def draw_tolerance(f, plt, rec):
         bx.set_yticks(np.arange(len(params)))
         bx.set_yticklabels(params if col == 0 else [""] * len(params), fontsize=9)
         bx.invert_yaxis()
-        bx.set_xlabel(label("d/d(relative change)", shown))
+        bx.set_xlabel(label("sensitivity: change per relative change", shown))
         bx.grid(True, alpha=0.3, axis="x")
     legend_beside(axes[0, -1])
     spreads = ", ".join(f"{k[7:]} {100 * float(f.attrs[k]):g} %" for k in

@@ -130,3 +130,25 @@ def test_bad_csv_paths_are_refused_before_any_work(tmp_path):
     p = run(["path", "--alpha2", "3", "--out", "p.csv", "--csv", "q.csv"], tmp_path)
     assert p.returncode == 2 and "CSV file already" in p.stderr
     assert os.listdir(tmp_path) == []
+
+
+def test_design_mechanism_csv_equals_the_json_designs(tmp_path):
+    p = run(["design", "mechanism", "--force", "20N", "--force-of", "whole", "--stroke", "10mm",
+             "--E", "200GPa", "--yield-strength", "1200MPa", "--safety-factor", "1.5",
+             "--length-range", "30mm:150mm", "--csv", "designs.csv", "--json"], tmp_path)
+    assert p.returncode == 0, p.stderr
+    designs = json.loads(p.stdout)["designs"]
+    t = read_csv(tmp_path / "designs.csv")
+    assert t["subclass"][1] == [d["subclass"] for d in designs]
+    for key, unit in (("R", "1"), ("l_tot", "m"), ("r2", "m"), ("force_prbm", "N"),
+                      ("force_exact", "N"), ("yield_strength", "Pa"), ("footprint", "m^2"),
+                      ("safety_factor_exact", "1"), ("percent_constant_force_exact", "%")):
+        assert t[key][0] == unit, key
+        exact_equal(t[key][1], [d[key] for d in designs], key)
+    # Per-flexure arrays: one column per entry, NaN where a design has fewer flexures.
+    width = max(len(d["thicknesses"]) for d in designs)
+    for i in range(width):
+        exact_equal(t[f"thicknesses_{i + 1}"][1],
+                    [d["thicknesses"][i] if i < len(d["thicknesses"]) else None for d in designs],
+                    f"thicknesses_{i + 1}")
+    assert "geometry" not in t
