@@ -175,9 +175,7 @@ void run_plot(const PlotArgs& a) {
 void register_plot_command(CLI::App& app) {
   auto args = std::make_shared<PlotArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "plot",
-      "Plot any HDF5 file flexure writes (sweep, path, shapes, maps, model maps, mechanism "
-      "strokes, benchmarks, dynamics, tolerance, design history); needs matplotlib and h5py");
+      "plot", "Plot any HDF5 file flexure writes (matplotlib and h5py under /usr/bin/python3)");
   cmd->add_option("file", args->file, "HDF5 file written by flexure")->required();
   cmd->add_option("--out",
                   args->out,
