@@ -16,6 +16,7 @@
 #include "cli/beam_methods.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/csv_output.h"
 #include "cli/fatigue_flags.h"
 #include "cli/general_mechanism_command.h"
 #include "cli/mechanism_geometry_output.h"
@@ -1008,6 +1009,7 @@ void register_mechanism_command(CLI::App& app) {
     std::string what;
     int points = 50;
     std::string out;
+    std::string csv;
     bool json = false;
     bool no_exact = false;
     std::string method = "auto";
@@ -1032,6 +1034,7 @@ void register_mechanism_command(CLI::App& app) {
       ->required();
   analyze->add_option("--points", args->points, "Stroke points (2..100000)")->default_str("50");
   analyze->add_option("--out", args->out, "Write the curves to this HDF5 file (atomic)");
+  add_csv_option(analyze, args->csv);
   analyze->add_flag("--json", args->json, "Print one JSON object");
   analyze->add_flag("--prbm-only", args->no_exact, "Skip the exact model (= --method prbm)");
   analyze
@@ -1113,6 +1116,7 @@ void register_mechanism_command(CLI::App& app) {
       throw InvalidInput("--prbm-only (= --method prbm) contradicts --method exact; give one");
     }
     if (!args->out.empty()) io::check_output_path(args->out);
+    const CsvOutput csv(args->out, args->csv);
     MechanismDesign d = resolve(args->what);
     if (!args->spring_rule.empty()) apply_spring_rule(d, parse_spring_rule(args->spring_rule));
     if (!args->material.empty()) apply_material_flag(d, args->material);
@@ -1122,9 +1126,9 @@ void register_mechanism_command(CLI::App& app) {
     const ForceOf force_of =
         *args->force_of_option || !d.force_of ? parse_force_of(args->force_of) : *d.force_of;
     std::optional<io::AtomicHdf5File> file;
-    if (!args->out.empty()) {
+    if (!csv.hdf5_path().empty()) {
       try {
-        file.emplace(args->out);
+        file.emplace(csv.hdf5_path());
       } catch (const io::Hdf5Error& e) {
         throw InvalidInput(fmt::format("--out: {}", e.what()));
       }
@@ -1170,6 +1174,7 @@ void register_mechanism_command(CLI::App& app) {
       warn(fmt::format("{}: {}", d.name, fatigue_text(a, fatigue).substr(2)));
     }
     if (file) write_hdf5(args->out, a, *file, fatigue);
+    csv.write({"displacement"}, {"design"});
     if (args->json) {
       Json j = analysis_json(a);
       add_fatigue_json(j, a, fatigue);

@@ -10,6 +10,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/csv_output.h"
 #include "cli/slow_progress.h"
 #include "flexure/benchmarks/studies/model_map.h"
 #include "flexure/elements/prbm3r.h"
@@ -36,6 +37,7 @@ struct ModelsMapArgs {
   double min_seconds = 2e-4;
   CLI::Option* mu_option = nullptr;
   std::string out;
+  std::string csv;
   bool json = false;
 };
 
@@ -126,10 +128,12 @@ void run_models_map(const ModelsMapArgs& a) {
   spec.min_seconds = a.min_seconds;
   spec.validate();
   io::check_output_path(a.out);  // before the solves: an unwritable path fails fast
+  const CsvOutput csv(a.out, a.csv);
 
   const auto start = std::chrono::steady_clock::now();
   const studies::ModelMap map = studies::compute_model_map(spec, slow_progress("models map"));
-  studies::write_model_map(map, a.out);
+  studies::write_model_map(map, csv.hdf5_path());
+  csv.write({"n", "alpha2", spec.boundary == EndCondition::kGuided ? "tip_angle" : "mu"});
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -250,6 +254,7 @@ void register_models_command(CLI::App& app) {
                   "passed, and the mean taken")
       ->default_str("2e-4");
   map->add_option("--out", a->out, "The HDF5 file of the map (docs/hdf5-schema.md)")->required();
+  add_csv_option(map, a->csv);
   map->add_flag("--json", a->json, "Print a JSON summary");
   map->callback([a] { run_models_map(*a); });
 

@@ -13,6 +13,7 @@
 #include "cli/beam_methods.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/csv_output.h"
 #include "cli/physical_flags.h"
 #include "flexure/beam/beam_problem.h"
 #include "flexure/benchmarks/studies/load_path_study.h"
@@ -59,6 +60,7 @@ struct PathArgs {
   CLI::Option* shapes_option = nullptr;
   std::string stability = "on";  // --stability on|off: the verdict of every point
   std::string out;
+  std::string csv;
   bool json = false;
 };
 
@@ -337,9 +339,10 @@ void run_path(const PathArgs& args) {
   request.validate();
   // Check and open the output first: an unwritable path fails before any solving (exit 2).
   io::check_output_path(args.out);
+  const CsvOutput csv(args.out, args.csv);
   std::unique_ptr<io::AtomicHdf5File> output;
   try {
-    output = std::make_unique<io::AtomicHdf5File>(args.out);
+    output = std::make_unique<io::AtomicHdf5File>(csv.hdf5_path());
   } catch (const io::Hdf5Error& e) {
     throw InvalidInput(fmt::format("--out {}: {}", args.out, e.what()));
   }
@@ -349,6 +352,7 @@ void run_path(const PathArgs& args) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_path_file(output->root(), t);
   output->commit();
+  csv.write({"load_factor"}, {"special_points", "shapes"});
   for (const std::string& w : t.warnings) warn(w);
   if (args.json) {
     Json out{{"out", args.out},
@@ -474,6 +478,7 @@ void register_path_command(CLI::App& app) {
       ->transform(CLI::IsMember({"on", "off"}, CLI::ignore_case));
   args->physical.add_to(*path, false);
   path->add_option("--out", args->out, "Output HDF5 file (written atomically)")->required();
+  add_csv_option(path, args->csv);
   path->add_flag("--json", args->json, "Print one JSON summary object on stdout");
   path->callback([args] { run_path(*args); });
 }
