@@ -88,6 +88,12 @@ struct PathPoint {
   PathStatus status = PathStatus::kAccepted;
   int stage = 1;   // > 1 in later stages of a staged path (shooting_solver.h)
   int branch = 0;  // 0 on the path from zero load; k after switching at the k-th bifurcation
+  // The tip coordinates the path holds at this point (its stage's ShootingProblem::mask()): the
+  // end condition's under proportional loading, without the one released along the tangent in
+  // the first stage of a straight chain with both end coordinates prescribed, with the
+  // controlled coordinate in the moving stage of a displacement-controlled path. The stability
+  // verdict of the point takes them as constraints (path_point_stability.h).
+  PrescribedMask held;
   std::vector<ShapePoint> shape;  // ContinuationOptions::shape_points > 1: the deflected shape
   std::vector<double> moment;     // bending moment at each shape point (statics, same units)
 };
