@@ -61,8 +61,9 @@ struct ContinuationOptions {
                                       // singular value of [dg/dz S, dg/dlambda] below this times
                                       // its size over the step (else: a branch jump)
   // Branch switching: at the switch_at_bifurcation-th bifurcation (counted from 1 along the path;
-  // 0 = never) the path leaves onto the other branch through it, along the null direction of
-  // [dg/dz S, dg/dlambda] orthogonal to the path's tangent, by a first step of branch_switch_step;
+  // 0 = never) the path leaves onto the other branch through it, along that branch's tangent
+  // (the algebraic bifurcation equation in the null space of [dg/dz S, dg/dlambda],
+  // docs/theory-shooting.md "Branch switching"), by a first step of branch_switch_step;
   // branch_side +1 takes the half-branch on which the tip moves to +y (to +theta when the end holds
   // y, the clamp's moment m(0) grows when it holds both), -1 the other.
   int switch_at_bifurcation = 0;
