@@ -236,11 +236,14 @@ std::vector<std::string> stability_warnings(const MechanismAnalysis& a) {
         "{}: the exact model's equilibrium is unstable with the slider held at {} of {} stroke "
         "points (least stability margin {:.3g}): the mechanism cannot hold these shapes and would "
         "buckle into another one, which this force curve does not describe (docs/stability.md "
-        "\"Mechanisms\")",
+        "\"Mechanisms\"){}",
         a.design.name,
         dc.unstable_points,
         dc.points.size(),
-        dc.least_margin));
+        dc.least_margin,
+        a.stable_search.empty() && exact_support(a.design) == ExactSupport::kDirectChain
+            ? "; --stable follows a stable branch instead"
+            : ""));
   }
   if (dc.not_checked_points > 0 || a.stability_exact.force_control.not_checked_points > 0) {
     texts.push_back(fmt::format(
@@ -1022,6 +1025,7 @@ void register_mechanism_command(CLI::App& app) {
     std::string input_range;  // general mechanism files only
     std::string material;
     FatigueFlags fatigue;
+    bool stable = false;
   };
   auto args = std::make_shared<AnalyzeArgs>();
   CLI::App* analyze = mech.add_subcommand(
@@ -1074,6 +1078,11 @@ void register_mechanism_command(CLI::App& app) {
                       args->material,
                       "Material from the library (`flexure materials`): replaces the design's E, "
                       "S_y and gives S_ut, S_e' for the fatigue check");
+  analyze->add_flag("--stable",
+                    args->stable,
+                    "Exact model: where the stroke from the PRBM start is unstable with the "
+                    "slider held, follow a stable branch instead (serial chains; the JSON's "
+                    "stable_search says what was done)");
   args->fatigue.add_to(*analyze);
   analyze->callback([args, analyze] {
     require_in_range(args->points, "--points", 2, 100000);
@@ -1144,6 +1153,7 @@ void register_mechanism_command(CLI::App& app) {
     AnalysisOptions o;
     o.points = args->points;
     o.exact = choice.exact;
+    o.stable = args->stable;
     o.progress = slow_progress(d.name + ": exact model, stroke points and stresses");
     MechanismAnalysis a = analyze_mechanism(d, o);
     report_forces_of(a, force_of);
@@ -1180,6 +1190,11 @@ void register_mechanism_command(CLI::App& app) {
       add_fatigue_json(j, a, fatigue);
       j["method"] = choice.method;
       j["method_reason"] = choice.reason;
+      j["stable"] = args->stable;
+      j["stable_search"] = args->stable && !a.stable_search.empty() ? Json(a.stable_search)
+                           : args->stable && !(a.has_exact && o.exact)
+                               ? Json("not done: the exact model did not run")
+                               : Json(nullptr);
       j["geometry"] = geometry_json(mechanism_geometry(d));
       print_json(j);
       return;
@@ -1190,6 +1205,11 @@ void register_mechanism_command(CLI::App& app) {
                                                     : d.paper_config + ", solved as " + d.config,
                              d.note);
     std::cout << fmt::format("  method: {} ({})\n", choice.method, choice.reason);
+    if (args->stable) {
+      std::cout << fmt::format(
+          "  --stable: {}\n",
+          a.stable_search.empty() ? "not done: the exact model did not run" : a.stable_search);
+    }
     auto note = [](bool vanishes, bool changes_sign) {
       const std::string n = force_sign_note(vanishes, changes_sign);
       return n.empty() ? n : " (" + n + ")";
