@@ -5,13 +5,19 @@
 # and parallel HDF5 in build-mpi/, and its tests under mpirun with 1, 2 and 3 ranks.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Each phase prints its wall time (the suite must stay within CI's 20-minute budget, README).
+phase() { echo "== test.sh: $1 done at ${SECONDS} s"; }
 bash scripts/install-deps.sh
+phase "dependencies"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j "$(nproc)"
+phase "build"
 ctest --test-dir build --output-on-failure -j "$(nproc)"
+phase "ctest"
 
 # The Python module from the build tree (Debian's interpreter: numpy, h5py, matplotlib, pytest).
 PYTHONPATH="$PWD/build/python" FLEXURE_BUILD_DIR="$PWD/build" /usr/bin/python3 -m pytest -q tests/python
+phase "pytest"
 
 # The wheel: pip builds it from this checkout offline (reusing build/), installs it into a venv.
 venv="$(mktemp -d)/venv"
@@ -21,11 +27,14 @@ FLEXURE_CMAKE_BUILD_DIR="$PWD/build" "$venv/bin/pip" install --quiet --no-build-
   --no-index .
 FLEXURE_EXPECT_INSTALLED="$venv" FLEXURE_BUILD_DIR="$PWD/build" \
   "$venv/bin/python" -m pytest -q tests/python/test_installed.py tests/python/test_cli_parity.py
+phase "wheel"
 
 # The MPI variant: only the tool and its MPI tests (the library's own tests ran above). The tests
 # compare every file with the serial run of the same binary and with the serial build's binary,
 # and run one at a time (each starts up to 3 ranks on this machine's cores).
 cmake -S . -B build-mpi -DCMAKE_BUILD_TYPE=Release -DFLEXURE_MPI=ON -DFLEXURE_BUILD_BENCHMARKS=OFF
 cmake --build build-mpi -j "$(nproc)" --target flexure mpi_studies_test
+phase "MPI build"
 FLEXURE_SERIAL_BINARY="$PWD/build/flexure" \
   ctest --test-dir build-mpi -R '^MpiStudies\.' --output-on-failure
+phase "MPI tests"
