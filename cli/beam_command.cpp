@@ -17,6 +17,7 @@
 #include "cli/command_runner.h"
 #include "cli/commands.h"
 #include "cli/fatigue_flags.h"
+#include "cli/modulus_output.h"
 #include "cli/physical_flags.h"
 #include "cli/warning_output.h"
 #include "flexure/benchmarks/studies/method_selector.h"
@@ -248,6 +249,7 @@ void print_physical(const PhysicalResults& r) {
       r.max_moment,
       r.max_moment_at,
       std::string_view(r.max_from) == "ends" ? " (PRBM: the larger end moment)" : "");
+  print_modulus(r.modulus);
   if (r.max_axial_strain) {
     fmt::print("    largest axial force |N| = {:.10g} N; axial strain N/EA up to {:.6g}\n",
                r.max_axial_force,
@@ -465,7 +467,9 @@ void add_physical_json(Json& out, const BeamInput& input, const PhysicalResults&
     const PhysicalCantilever& b = *input.physical;
     out["E_Pa"] = b.E;
     out["I_m4"] = b.second_moment();
-    out["EI_Nm2"] = b.flexural_rigidity();
+    // The rigidity solved with: E I, or E I/(1 - nu^2) with the plate modulus.
+    out["EI_Nm2"] = r.modulus.empty() ? b.flexural_rigidity()
+                                      : r.modulus.front().effective_E * b.second_moment();
     out["Fx_N"] = b.Fx;
     out["Fy_N"] = b.Fy;
     out["M_Nm"] = b.M;
@@ -480,6 +484,7 @@ void add_physical_json(Json& out, const BeamInput& input, const PhysicalResults&
       }
     }
   }
+  add_modulus_json(out, r.modulus);
   out["max_axial_force_N"] = r.max_axial_force;
   out["max_axial_strain"] = r.max_axial_strain ? Json(*r.max_axial_strain) : Json(nullptr);
   out["tip_x"] = r.tip_x;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "flexure/solver/chain_model/segment_chain.h"
+#include "flexure/solver/common/plate_modulus.h"
 
 namespace flexure::io {
 
@@ -24,6 +25,12 @@ struct SegmentSection {
   std::optional<double> thickness;  // m
   std::optional<double> area;       // m^2: width thickness, or A (the axial stress N/A)
   double weight_per_length = 0.0;   // N/m: rho A g where density is given (self-weight)
+  // The bending modulus (segment.plate, docs/plate-modulus.md): with plate = "on" the segment's
+  // EI is already E I/(1 - nu^2); "auto" is decided by solve_physical_chain at the segment's
+  // largest curvature (the segment's EI is E I until then). E above is the modulus as given.
+  PlateRule plate = PlateRule::kOff;
+  std::optional<double> nu;
+  std::optional<double> width;  // m (rectangles: the Searle parameter's b)
 };
 
 struct ChainFile {

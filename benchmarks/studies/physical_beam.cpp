@@ -343,8 +343,24 @@ void PhysicalCantilever::validate() const {
       throw InvalidInput(
           fmt::format("--shear-coefficient must be in (0, 1] (got {:g})", shear_coefficient));
     }
-  } else if (nu) {
-    throw InvalidInput("--nu is used with --extensible only");
+  } else if (nu && !plate_given) {
+    throw InvalidInput("--nu is used with --extensible or --plate on/auto only");
+  }
+  if (plate != PlateRule::kOff) {
+    if (!nu) {
+      throw InvalidInput(fmt::format(
+          "--plate {} needs Poisson's ratio --nu (or a --material whose row gives nu): the "
+          "plate modulus is E/(1 - nu^2)",
+          to_string(plate)));
+    }
+    if (!(*nu > -1.0 && *nu < 0.5)) {
+      throw InvalidInput(fmt::format("--nu must be in (-1, 0.5) (got {:g})", *nu));
+    }
+    if (plate == PlateRule::kAuto && !(width && thickness)) {
+      throw InvalidInput(
+          "--plate auto needs the strip's width and thickness (the Searle parameter b^2/(R h)): "
+          "give the section as --width and --thickness, or choose --plate on or off");
+    }
   }
   const double EI = flexural_rigidity();
   if (!(std::isfinite(EI) && EI > 0.0)) {
@@ -353,6 +369,11 @@ void PhysicalCantilever::validate() const {
                     "finite number; check --E and the section",
                     EI));
   }
+}
+
+double PhysicalCantilever::bending_modulus() const {
+  const bool applied = plate == PlateRule::kOn || (plate == PlateRule::kAuto && plate_applied);
+  return applied && nu ? E / (1.0 - *nu * *nu) : E;
 }
 
 double PhysicalCantilever::second_moment() const {
@@ -441,9 +462,12 @@ SegmentChain PhysicalCantilever::to_chain(EndCondition end,
   return chain;
 }
 
-PhysicalBeamSolution solve_physical_beam(BeamMethod method,
-                                         const PhysicalCantilever& beam,
-                                         BeamProblem problem) {
+namespace {
+
+// One solve of the cantilever with its bending modulus as it stands (plate_applied decided).
+PhysicalBeamSolution solve_cantilever(BeamMethod method,
+                                      const PhysicalCantilever& beam,
+                                      BeamProblem problem) {
   problem = beam.to_problem(problem);
   const int shape_points = problem.shape_points;
   if (problem.chain && beam.beyond_elastica() &&
@@ -489,9 +513,42 @@ PhysicalBeamSolution solve_physical_beam(BeamMethod method,
   return out;
 }
 
-PhysicalBeamSolution solve_physical_chain(BeamMethod method,
-                                          BeamProblem problem,
-                                          const io::ChainFile& file) {
+}  // namespace
+
+PhysicalBeamSolution solve_physical_beam(BeamMethod method,
+                                         const PhysicalCantilever& given,
+                                         BeamProblem problem) {
+  given.validate();
+  PhysicalCantilever beam = given;
+  beam.plate_applied = false;
+  if (beam.plate != PlateRule::kAuto) {
+    PhysicalBeamSolution out = solve_cantilever(method, beam, problem);
+    out.physical.modulus = {
+        choose_modulus(beam.plate, beam.E, beam.nu, beam.width, beam.thickness, {}, "the beam")};
+    return out;
+  }
+  // auto: the Searle parameter at the largest curvature |M|/EI of the beam solved with E decides
+  // (docs/plate-modulus.md); a plate is then solved again with E/(1 - nu^2).
+  PhysicalBeamSolution first = solve_cantilever(method, beam, problem);
+  if (!first.solution.converged()) return first;
+  const double curvature = first.physical.max_moment / beam.flexural_rigidity();
+  const ModulusChoice choice = choose_modulus(
+      PlateRule::kAuto, beam.E, beam.nu, beam.width, beam.thickness, curvature, "the beam");
+  if (!choice.plate) {
+    first.physical.modulus = {choice};
+    return first;
+  }
+  beam.plate_applied = true;
+  PhysicalBeamSolution out = solve_cantilever(method, beam, problem);
+  out.physical.modulus = {choice};
+  return out;
+}
+
+namespace {
+
+PhysicalBeamSolution solve_chain_once(BeamMethod method,
+                                      BeamProblem problem,
+                                      const io::ChainFile& file) {
   const int requested = problem.shape_points;
   const auto [dense, step] = dense_shape(requested);
   problem.shape_points = dense;
@@ -526,7 +583,66 @@ PhysicalBeamSolution solve_physical_chain(BeamMethod method,
     spans.push_back(span);
   }
   out.physical = evaluate(out.solution, scale, spans, file.yield_strength, requested, step);
+  // The largest |m| of each segment, for plate = "auto" (on the dense shape, before thinning).
+  if (std::any_of(file.sections.begin(), file.sections.end(), [](const auto& section) {
+        return section && section->plate == PlateRule::kAuto;
+      })) {
+    const InternalForces forces = forces_along(out.solution.shape, scale);
+    out.segment_max_moment.assign(spans.size(), 0.0);
+    for (std::size_t i = 0; i < out.solution.shape.size(); ++i) {
+      for (std::size_t k = 0; k < spans.size(); ++k) {
+        const double s_i = out.solution.shape[i].s;
+        if (s_i < spans[k].s0 - 1e-12 || s_i > spans[k].s1 + 1e-12) continue;
+        out.segment_max_moment[k] =
+            std::max(out.segment_max_moment[k], std::fabs(forces.moment[i]));
+      }
+    }
+  }
   thin_shape(out.solution, requested, step);
+  return out;
+}
+
+}  // namespace
+
+PhysicalBeamSolution solve_physical_chain(BeamMethod method,
+                                          BeamProblem problem,
+                                          const io::ChainFile& file) {
+  PhysicalBeamSolution out = solve_chain_once(method, problem, file);
+  if (!out.solution.converged()) return out;
+  // The modulus of each flexible segment with a section: on and off as read; auto by the Searle
+  // parameter at the segment's largest curvature |m|/EI of this solve (docs/plate-modulus.md),
+  // and the chain solved again where a segment turns out a plate.
+  std::vector<ModulusChoice> choices;
+  io::ChainFile plated = file;
+  bool again = false;
+  for (std::size_t k = 0; k < file.sections.size(); ++k) {
+    const std::optional<io::SegmentSection>& section = file.sections[k];
+    if (!section) continue;
+    const std::string where = fmt::format("segment {}", k + 1);
+    if (section->plate != PlateRule::kAuto) {
+      choices.push_back(choose_modulus(section->plate, section->E, section->nu, {}, {}, {}, where));
+      continue;
+    }
+    auto& segment = std::get<FlexibleSegment>(plated.chain.segments[k]);
+    const double curvature = out.segment_max_moment[k] / segment.EI;
+    const ModulusChoice choice = choose_modulus(PlateRule::kAuto,
+                                                section->E,
+                                                section->nu,
+                                                section->width,
+                                                section->thickness,
+                                                curvature,
+                                                where);
+    if (choice.plate) {
+      segment.EI = choice.effective_E * section->I;
+      again = true;
+    }
+    choices.push_back(choice);
+  }
+  if (again) {
+    problem.chain = plated.chain;
+    out = solve_chain_once(method, problem, plated);
+  }
+  out.physical.modulus = std::move(choices);
   return out;
 }
 

@@ -10,6 +10,7 @@
 
 #include "flexure/benchmarks/studies/beam_problem.h"
 #include "flexure/io/chain_toml.h"
+#include "flexure/solver/common/plate_modulus.h"
 
 namespace flexure {
 
@@ -34,8 +35,15 @@ struct PhysicalCantilever {
   std::optional<double> density;  // kg/m^3: self-weight rho A g along -y (needs the rectangle)
   double g = 9.80665;             // m/s^2
   bool extensible = false;        // EA = E A, GAs = k E A / (2 (1 + nu)) (needs the rectangle)
-  std::optional<double> nu;       // Poisson's ratio (extensible)
+  std::optional<double> nu;       // Poisson's ratio (extensible, plate on or auto)
   double shear_coefficient = 5.0 / 6.0;  // Timoshenko's k of the rectangle
+  // The bending modulus (docs/plate-modulus.md): off E, on E/(1 - nu^2), auto by the Searle
+  // parameter b^2/(R h) at the beam's largest curvature. plate_applied is the decision the
+  // flexural rigidity uses: on sets it, auto is decided by solve_physical_beam (which sets it on
+  // its copy); the axial and shear rigidities keep E (the plate effect is a bending one).
+  PlateRule plate = PlateRule::kOff;
+  bool plate_given = false;  // --plate was given (then --nu is accepted even with off)
+  bool plate_applied = false;
 
   // Whether any of the above is given.
   bool beyond_elastica() const {
@@ -55,7 +63,9 @@ struct PhysicalCantilever {
   void validate() const;
   // I, or b h^3 / 12 for the rectangle.
   double second_moment() const;
-  double flexural_rigidity() const { return E * second_moment(); }
+  // E, or E/(1 - nu^2) when the plate modulus applies (plate on, or auto decided for it).
+  double bending_modulus() const;
+  double flexural_rigidity() const { return bending_modulus() * second_moment(); }
   // Howell's nondimensional problem of this beam, forward (the load is given). A purely axial load
   // (Fy = 0, Fx != 0) has no Howell's n; it is then a one-segment chain with the same
   // nondimensional loads, which the shooting and chain methods solve. The method settings
@@ -98,6 +108,9 @@ struct PhysicalResults {
   // larger of the root and tip moments).
   const char* max_from = "shape";
   std::vector<PhysicalShapePoint> shape;  // the points the caller asked for
+  // The bending modulus used and why (docs/plate-modulus.md); one per flexible segment of a
+  // chain with a section (empty for segments given by EI), one for a cantilever.
+  std::vector<ModulusChoice> modulus;
 };
 
 // Solves a physical cantilever with `method` (any beam method). `settings` gives the method's
@@ -108,6 +121,7 @@ struct PhysicalResults {
 struct PhysicalBeamSolution {
   BeamSolution solution;
   PhysicalResults physical;
+  std::vector<double> segment_max_moment;  // chains with plate = "auto": largest |m| per segment
 };
 PhysicalBeamSolution solve_physical_beam(BeamMethod method,
                                          const PhysicalCantilever& beam,
