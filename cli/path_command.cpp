@@ -179,6 +179,12 @@ PathRequest make_request(const PathArgs& args) {
 
   if (physical) {
     const PhysicalCantilever beam = args.physical.parse();
+    if (beam.plate == PlateRule::kAuto) {
+      // auto is decided at one solved curvature; a path passes through many (plate-modulus.md).
+      throw InvalidInput(
+          "--plate auto is decided by a solved beam's curvature; a path passes "
+          "through many: choose --plate on or off");
+    }
     request.chain = beam.to_chain(end, tip);
     request.units = PathUnits::si(beam.length, beam.flexural_rigidity());
   } else if (from_file) {
