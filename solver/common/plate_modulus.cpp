@@ -125,6 +125,7 @@ std::string ModulusChoice::modulus_rule() const {
 std::string ModulusChoice::reason() const {
   if (rule == PlateRule::kOff) return "beam modulus E (plate = off)";
   if (rule == PlateRule::kOn) return "plate modulus E/(1 - nu^2) (plate = on)";
+  if (!note.empty()) return note;
   return fmt::format(
       "auto: Searle parameter b^2/(R h) = {:.4g} {} {:.4g} at 1/R = {:.4g} 1/m: {} ({:.0f} % of "
       "the "

@@ -52,6 +52,9 @@ struct ModulusChoice {
   // the plate effect there (plate_fraction).
   std::optional<double> beta, threshold, fraction;
   std::optional<double> curvature;  // 1/R the decision was taken at, 1/m
+  // Set where a caller overrides the parameter's verdict (a mechanism has one modulus for all its
+  // strips): appended to reason().
+  std::string note;
   // "beam modulus E (plate off)", "plate modulus E/(1 - nu^2) (plate on)", "auto: ...".
   std::string reason() const;
   // The rule's name for JSON: "beam" or "plate" plus how ("off", "on", "auto").
