@@ -620,6 +620,19 @@ Json to_json(const BeamInput& input,
         shape[i]["moment_Nm"] = p.moment;
         shape[i]["stress_Pa"] = p.stress ? Json(*p.stress) : Json(nullptr);
         shape[i]["axial_force_N"] = p.axial_force;
+        // Internal forces (docs/units.md "Internal forces"): N, V, m and the fibre stresses
+        // N/A -+ m c/I (null where the section's area or thickness is not given).
+        shape[i]["N_N"] = p.axial_force;
+        shape[i]["V_N"] = p.shear_force;
+        shape[i]["m_Nm"] = p.moment;
+        shape[i]["stress_pos_fibre_Pa"] =
+            p.stress_pos_fibre ? Json(*p.stress_pos_fibre) : Json(nullptr);
+        shape[i]["stress_neg_fibre_Pa"] =
+            p.stress_neg_fibre ? Json(*p.stress_neg_fibre) : Json(nullptr);
+        if (!p.stress_pos_fibre) {
+          shape[i]["stress_note"] =
+              "stress unavailable: the section's area and thickness are not given (EI or I alone)";
+        }
       }
     }
     out["shape"] = std::move(shape);

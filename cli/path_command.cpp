@@ -16,6 +16,7 @@
 #include "cli/physical_flags.h"
 #include "flexure/benchmarks/studies/beam_problem.h"
 #include "flexure/benchmarks/studies/load_path_study.h"
+#include "flexure/benchmarks/studies/path_shapes_xdmf.h"
 #include "flexure/io/chain_toml.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/output_path.h"
@@ -355,9 +356,12 @@ void run_path(const PathArgs& args) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_path_file(output->root(), t);
   output->commit();
+  // With --shapes, the XDMF sidecar that ParaView opens (io/shapes_xdmf.h).
+  const std::string xdmf = write_path_shapes_xdmf(args.out, t);
   for (const std::string& w : t.warnings) warn(w);
   if (args.json) {
     Json out{{"out", args.out},
+             {"xdmf", xdmf.empty() ? Json(nullptr) : Json(xdmf)},
              {"method", args.method},
              {"points", static_cast<long>(t.size())},
              {"completed", t.completed},

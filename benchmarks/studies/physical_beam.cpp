@@ -96,6 +96,7 @@ std::pair<double, double> distributed_force(const Scaling& scale,
 struct InternalForces {
   std::vector<double> moment;  // N m
   std::vector<double> axial;   // N . t, N
+  std::vector<double> shear;   // N . n, N (n = (-sin theta, cos theta))
 };
 
 // Bending moment at each shape point from the statics of the part between the clamp and the
@@ -134,6 +135,7 @@ InternalForces forces_along(const std::vector<ShapePoint>& shape, const Scaling&
     m -= M_acc - cross(x, y, Fx_acc, Fy_acc);
     out.moment.push_back(m * scale.moment_to_si);
     out.axial.push_back((Nx * std::cos(p.theta) + Ny * std::sin(p.theta)) * scale.force_to_si);
+    out.shear.push_back((-Nx * std::sin(p.theta) + Ny * std::cos(p.theta)) * scale.force_to_si);
   }
   return out;
 }
@@ -170,6 +172,8 @@ struct SectionSpan {
   // Extensible segments: the axial stress N/A joins the bending stress, N/EA is the strain.
   std::optional<double> area;  // m^2
   std::optional<double> EA;    // N
+  // The section's area where known (any segment), for the fibre stresses N/A -+ m c/I.
+  std::optional<double> fibre_area;
 };
 
 PhysicalResults evaluate(const BeamSolution& solution,
@@ -255,7 +259,18 @@ PhysicalResults evaluate(const BeamSolution& solution,
       p.theta = shape[i].theta;
       p.moment = moments[i];
       p.axial_force = forces.axial[i];
+      p.shear_force = forces.shear[i];
       if (stresses) p.stress = stress[i];
+      // Fibre stresses where the span holding the point has its area and section modulus.
+      for (const SectionSpan& span : spans) {
+        if (shape[i].s < span.s0 - 1e-12 || shape[i].s > span.s1 + 1e-12) continue;
+        if (!span.flexible || !span.section_modulus || !span.fibre_area) break;
+        const double axial = forces.axial[i] / *span.fibre_area;
+        const double bending = moments[i] / *span.section_modulus;
+        p.stress_pos_fibre = axial - bending;
+        p.stress_neg_fibre = axial + bending;
+        break;
+      }
       out.shape.push_back(p);
     }
   }
@@ -504,6 +519,7 @@ PhysicalBeamSolution solve_cantilever(BeamMethod method,
   span.s0 = 0.0;
   span.s1 = 1.0;
   if (beam.thickness) span.section_modulus = beam.second_moment() / (0.5 * *beam.thickness);
+  span.fibre_area = beam.area();
   if (beam.extensible) {
     span.area = beam.area();
     span.EA = beam.E * beam.area().value_or(0.0);
@@ -576,6 +592,7 @@ PhysicalBeamSolution solve_chain_once(BeamMethod method,
     if (section && section->thickness) {
       span.section_modulus = section->I / (0.5 * *section->thickness);
     }
+    if (section) span.fibre_area = section->area;
     if (const auto* f = std::get_if<FlexibleSegment>(&chain.segments[k]); f && f->extensible()) {
       span.EA = f->EA;
       if (section) span.area = section->area;

@@ -87,6 +87,12 @@ struct PhysicalShapePoint {
   double moment = 0.0;  // bending moment, N m (counter-clockwise on the part nearer the clamp)
   std::optional<double> stress;  // |M| c / I (+ |N_a|/A for an extensible beam), Pa
   double axial_force = 0.0;      // N_a = N . t, N (tension positive)
+  // V = N . n with n = (-sin theta, cos theta) the normal left of the tangent and N the force the
+  // part beyond s exerts on the part before it; dm/ds = -V (docs/units.md "Internal forces").
+  double shear_force = 0.0;
+  // The stress at the fibre h/2 along +n and along -n: N_a/A -+ m c/I (a positive moment
+  // compresses the +n fibre). Empty without the section's area and thickness (EI alone).
+  std::optional<double> stress_pos_fibre, stress_neg_fibre;
 };
 
 struct PhysicalResults {
