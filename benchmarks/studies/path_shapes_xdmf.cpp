@@ -16,6 +16,10 @@ std::string write_path_shapes_xdmf(const std::string& h5_path, const PathTable& 
   x.stations = t.shape_points;
   x.times = t.load_factor;
   x.fields = {"theta", "moment"};  // the [path point, shape point] datasets of write_path_file
+  if (!t.shape_axial.empty()) {
+    x.fields.push_back("axial_force");
+    x.fields.push_back("shear_force");
+  }
   x.station_field = "s";
   const std::string path = io::xdmf_path_for(h5_path);
   io::write_text_file(path, io::shapes_xdmf(x), "--out (XDMF sidecar)");

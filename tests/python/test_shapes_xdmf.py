@@ -1,7 +1,8 @@
 """The XDMF sidecar of `flexure path --shapes K --out FILE.h5` (io/shapes_xdmf.h): well-formed
 XML of XDMF 3, one polyline grid per path point whose declared dimensions match the HDF5
 datasets it references, every referenced dataset present in FILE.h5, and a time per grid equal
-to the path's load factor."""
+to the path's load factor; the stored internal forces N . t and N . n equal the tip load on the
+local frame, and dm/ds = -V by central differences."""
 import os
 import xml.etree.ElementTree as ET
 
@@ -43,4 +44,15 @@ def test_path_shapes_xdmf(cli, tmp_path):
                     assert list(start) == [i, 0] and list(count) == [1, K]
                     assert slab.get("Dimensions") == f"1 {K}"
             names = {a.get("Name") for a in g.findall("Attribute")}
-            assert names == {"s", "theta", "moment"}
+            assert names == {"s", "theta", "moment", "axial_force", "shear_force"}
+        # The internal forces: the tip load on the local frame (1e-12), and dm/ds = -V by
+        # central differences (second order in the station spacing).
+        th, fx, fy = f["/shapes/theta"][()], f["/tip_Fx"][()][:, None], f["/tip_Fy"][()][:, None]
+        scale = max(1.0, float(np.abs(f["/tip_Fy"][()]).max()))
+        assert np.allclose(f["/shapes/axial_force"][()], fx * np.cos(th) + fy * np.sin(th),
+                           rtol=0, atol=1e-12 * scale)
+        V = f["/shapes/shear_force"][()]
+        assert np.allclose(V, -fx * np.sin(th) + fy * np.cos(th), rtol=0, atol=1e-12 * scale)
+        m, s = f["/shapes/moment"][()], f["/shapes/s"][()]
+        dm = (m[:, 2:] - m[:, :-2]) / (s[2:] - s[:-2])
+        assert np.abs(dm + V[:, 1:-1]).max() < 0.05 * scale  # h = 1/8: O(h^2 |V''|)
