@@ -333,7 +333,10 @@ void print_report(const BeamInput& input,
         b.length,
         b.E,
         b.second_moment(),
-        b.flexural_rigidity(),
+        // The rigidity solved with (E I, or E I/(1 - nu^2) with the plate modulus).
+        physical && !physical->modulus.empty()
+            ? physical->modulus.front().effective_E * b.second_moment()
+            : b.flexural_rigidity(),
         b.Fx,
         b.Fy,
         b.M);

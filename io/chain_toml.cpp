@@ -502,7 +502,7 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
         toml_fail(source, keys.line, e.what());
       }
     }
-    if (keys.nu && !keys.extensible && (!keys.plate || section.plate == PlateRule::kOff)) {
+    if (keys.nu && !keys.extensible && !keys.plate) {
       toml_fail(source,
                 keys.line,
                 where + ": nu is used with extensible = true or plate = \"on\"/\"auto\" only");
