@@ -20,8 +20,8 @@
 #include "cli/modulus_output.h"
 #include "cli/physical_flags.h"
 #include "cli/warning_output.h"
-#include "flexure/benchmarks/studies/method_selector.h"
-#include "flexure/benchmarks/studies/physical_beam.h"
+#include "flexure/beam/method_selector.h"
+#include "flexure/beam/physical_beam.h"
 #include "flexure/io/chain_toml.h"
 #include "flexure/io/quantity.h"
 #include "flexure/mechanisms/load_cycle_fatigue.h"
@@ -74,7 +74,32 @@ struct BeamArgs {
   // Fatigue of a load cycle of the physical beam (load_cycle_fatigue.h; docs/fatigue.md).
   std::string cycle;
   FatigueFlags fatigue;
+  // Which options were given (a default is not given): set from the options above after
+  // parsing, or by run_beam_keywords without a command line.
+  struct Given {
+    bool alpha2 = false, theta0 = false, b_over_l = false, shape = false, elements = false,
+         constants = false, slenderness = false, integrator = false, tip_x = false, tip_y = false,
+         tip_angle = false, chain = false;
+  } given;
 };
+
+// The options given on a command line.
+BeamArgs::Given given_options(const BeamArgs& args) {
+  BeamArgs::Given g;
+  g.alpha2 = args.alpha2_option->count() > 0;
+  g.theta0 = args.theta0_option->count() > 0;
+  g.b_over_l = args.b_over_l_option->count() > 0;
+  g.shape = args.shape_option->count() > 0;
+  g.elements = args.elements_option->count() > 0;
+  g.constants = args.constants_option->count() > 0;
+  g.slenderness = args.slenderness_option->count() > 0;
+  g.integrator = args.integrator_option->count() > 0;
+  g.tip_x = args.tip_x_option->count() > 0;
+  g.tip_y = args.tip_y_option->count() > 0;
+  g.tip_angle = args.tip_angle_option->count() > 0;
+  g.chain = args.chain_option->count() > 0;
+  return g;
+}
 
 // What `flexure beam` solves: Howell's nondimensional problem, and the physical beam or chain file
 // it came from, if any.
@@ -98,7 +123,7 @@ constexpr int kMaxShapePoints = 1'000'000;
 // PR-3R, --slenderness of the BCM and CBCM; each refused with a method that does not use it (auto
 // chooses among the models at their defaults, the settings its error map was measured with).
 void add_ladder_options(const BeamArgs& args, BeamProblem& problem) {
-  if (*args.elements_option) {
+  if (args.given.elements) {
     if (same_name(args.method, "bcm")) {
       throw InvalidInput(
           "--elements: the BCM is one element; --method cbcm --elements N chains N of them");
@@ -108,7 +133,7 @@ void add_ladder_options(const BeamArgs& args, BeamProblem& problem) {
       problem.cbcm_elements = args.elements;
     }
   }
-  if (*args.constants_option) {
+  if (args.given.constants) {
     if (!same_name(args.method, "prbm3r")) {
       throw InvalidInput(fmt::format(
           "--constants chooses the PR-3R model's constants; --method {} does not use them",
@@ -116,7 +141,7 @@ void add_ladder_options(const BeamArgs& args, BeamProblem& problem) {
     }
     problem.prbm3r_constants = to_lower(args.constants);
   }
-  if (*args.slenderness_option) {
+  if (args.given.slenderness) {
     if (!same_name(args.method, "bcm") && !same_name(args.method, "cbcm")) {
       throw InvalidInput(fmt::format(
           "--slenderness sets the axial stiffness of the BCM and CBCM (d = 12 (L/t)^2); --method "
@@ -144,8 +169,8 @@ BeamInput make_input(const BeamArgs& args) {
   problem.tolerance = args.tol;
   problem.boundary = end_condition_from_string(args.boundary);
   const PrescribedMask mask = prescribed_mask(problem.boundary);
-  auto prescribe = [&](CLI::Option* option, double value, bool allowed, const char* name) {
-    if (!*option) return std::optional<double>();
+  auto prescribe = [&](bool given, double value, bool allowed, const char* name) {
+    if (!given) return std::optional<double>();
     require_finite_input(value, name);
     if (!allowed) {
       throw InvalidInput(
@@ -158,10 +183,10 @@ BeamInput make_input(const BeamArgs& args) {
     }
     return std::optional<double>(value);
   };
-  problem.prescribed.x = prescribe(args.tip_x_option, args.tip_x, mask.x, "--tip-x");
-  problem.prescribed.y = prescribe(args.tip_y_option, args.tip_y, mask.y, "--tip-y");
-  if (*args.tip_angle_option) {
-    problem.prescribed.theta = prescribe(args.tip_angle_option,
+  problem.prescribed.x = prescribe(args.given.tip_x, args.tip_x, mask.x, "--tip-x");
+  problem.prescribed.y = prescribe(args.given.tip_y, args.tip_y, mask.y, "--tip-y");
+  if (args.given.tip_angle) {
+    problem.prescribed.theta = prescribe(args.given.tip_angle,
                                          angle_option(args.tip_angle, "--tip-angle"),
                                          mask.theta,
                                          "--tip-angle");
@@ -176,22 +201,22 @@ BeamInput make_input(const BeamArgs& args) {
   problem.chain_variant = chain_variant_from_string(args.chain_variant);
   problem.stable = args.stable;
   problem.judge_stability = same_name(args.stability, "on");
-  if (*args.integrator_option && !same_name(args.method, "shooting") &&
+  if (args.given.integrator && !same_name(args.method, "shooting") &&
       !same_name(args.method, "auto")) {
     throw InvalidInput(fmt::format(
         "--integrator chooses the shooting method's integrator; --method {} does not use one",
         args.method));
   }
   problem.integrator = integrator_backend_from_string(args.integrator);
-  if (*args.shape_option) {
+  if (args.given.shape) {
     require_in_range(args.shape_points, "--shape (number of shape points)", 2, kMaxShapePoints);
     problem.shape_points = args.shape_points;
   }
-  const bool any_given = *args.alpha2_option || *args.theta0_option || *args.b_over_l_option;
+  const bool any_given = args.given.alpha2 || args.given.theta0 || args.given.b_over_l;
   const bool nondimensional_loads = any_given || args.load_ratio_n != 0.0 || args.mu != 0.0 ||
                                     args.follower != 0.0 || args.boundary != "free";
   if (args.physical.given()) {
-    if (nondimensional_loads || *args.chain_option) {
+    if (nondimensional_loads || args.given.chain) {
       throw InvalidInput(
           "a physical beam (--length, --E, the section, --Fx, --Fy, --M) is loaded in newtons; "
           "do not combine it with the nondimensional --alpha2, --theta0, --b-over-l, --n, --mu, "
@@ -202,7 +227,7 @@ BeamInput make_input(const BeamArgs& args) {
     problem = input.physical->to_problem(problem);
     return input;
   }
-  if (*args.chain_option) {
+  if (args.given.chain) {
     if (nondimensional_loads) {
       throw InvalidInput(
           "--chain FILE.toml describes the whole problem (segments, loads, boundary); do not "
@@ -219,11 +244,11 @@ BeamInput make_input(const BeamArgs& args) {
         "one of --alpha2, --theta0 or --b-over-l is required (or --chain FILE, or a physical "
         "beam: --length, --E, the section and --Fx, --Fy, --M)");
   }
-  if (*args.alpha2_option) {
+  if (args.given.alpha2) {
     require_finite_input(args.alpha2, "--alpha2 (P l^2/EI)");
     problem.given = BeamProblem::Given::kAlpha2;
     problem.value = args.alpha2;
-  } else if (*args.theta0_option) {
+  } else if (args.given.theta0) {
     problem.given = BeamProblem::Given::kTheta0;
     problem.value = angle_option(args.theta0, "--theta0 (tip angle)");
   } else {
@@ -558,6 +583,9 @@ Json to_json(const BeamInput& input,
   // algorithm, the PRBM off its measured map).
   out["expected_error"] =
       std::isfinite(solution.expected_error) ? Json(solution.expected_error) : Json(nullptr);
+  out["expected_error_per_length"] = std::isfinite(solution.expected_error_per_length)
+                                         ? Json(solution.expected_error_per_length)
+                                         : Json(nullptr);
   // Howell's parameters; null for a chain that has none (not one uniform straight beam).
   out["n"] = number_or_null(solution.load_ratio_n);
   out["alpha2"] = number_or_null(solution.alpha2);
@@ -819,6 +847,46 @@ void run_beam(const BeamArgs& args) {
 
 }  // namespace
 
+CommandOutput run_beam_keywords(const BeamKeywords& k) {
+  BeamArgs args;
+  args.json = true;
+  args.load_ratio_n = k.n.value_or(args.load_ratio_n);
+  args.mu = k.mu.value_or(args.mu);
+  args.given.alpha2 = k.alpha2.has_value();
+  args.alpha2 = k.alpha2.value_or(args.alpha2);
+  args.given.theta0 = k.theta0.has_value();
+  args.theta0 = k.theta0.value_or(args.theta0);
+  args.given.b_over_l = k.b_over_l.has_value();
+  args.b_over_l = k.b_over_l.value_or(args.b_over_l);
+  args.method = k.method.value_or(args.method);
+  args.boundary = k.boundary.value_or(args.boundary);
+  args.given.tip_x = k.tip_x.has_value();
+  args.tip_x = k.tip_x.value_or(args.tip_x);
+  args.given.tip_y = k.tip_y.has_value();
+  args.tip_y = k.tip_y.value_or(args.tip_y);
+  args.given.tip_angle = k.tip_angle.has_value();
+  args.tip_angle = k.tip_angle.value_or(args.tip_angle);
+  args.follower = k.follower.value_or(args.follower);
+  args.given.elements = k.elements.has_value();
+  args.elements = k.elements.value_or(args.elements);
+  args.increments = k.increments.value_or(args.increments);
+  args.chain_variant = k.chain_variant.value_or(args.chain_variant);
+  args.given.integrator = k.integrator.has_value();
+  args.integrator = k.integrator.value_or(args.integrator);
+  args.given.shape = k.shape.has_value();
+  args.shape_points = k.shape.value_or(args.shape_points);
+  args.stable = k.stable;
+  args.stability = k.stability.value_or(args.stability);
+  OutputCapture capture;
+  reset_exit_code();
+  run_beam(args);
+  CommandOutput out;
+  out.json = std::move(capture.json);
+  out.warnings = std::move(capture.warnings);
+  out.exit_code = exit_code();
+  return out;
+}
+
 BeamCommandProblem beam_problem_of(const std::vector<std::string>& args) {
   BeamCommandProblem out;
   struct Scope {
@@ -926,7 +994,10 @@ void register_beam_command(CLI::App& app) {
       ->transform(CLI::IsMember({"reversed", "repeated"}));
   args->fatigue.add_to(*beam);
   beam->add_flag("--json", args->json, "Print one JSON object on stdout");
-  beam->callback([args] { run_beam(*args); });
+  beam->callback([args] {
+    args->given = given_options(*args);
+    run_beam(*args);
+  });
 }
 
 }  // namespace flexure::cli

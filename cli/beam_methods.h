@@ -1,14 +1,14 @@
 #pragma once
 // Command-line options shared by the beam commands (`flexure beam`, `flexure sweep beam`,
 // `flexure path`): --method and --tol, and the hint printed when a method fails. The problem and
-// its solution are the library's (benchmarks/studies/beam_problem.h).
+// its solution are the library's (beam/beam_problem.h).
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "flexure/benchmarks/studies/beam_method.h"
-#include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/beam/beam_method.h"
+#include "flexure/beam/beam_problem.h"
+#include "flexure/beam/method_selector.h"
 #include "flexure/benchmarks/studies/failure_advice.h"
-#include "flexure/benchmarks/studies/method_selector.h"
 
 namespace flexure::cli {
 

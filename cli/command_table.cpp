@@ -52,6 +52,9 @@ const std::vector<CommandEntry>& command_table() {
        "The material library (Howell Appendix C): E, nu, strengths, endurance limit, density, "
        "source",
        {register_materials_command}},
+      {"plot",
+       "Plot any HDF5 file flexure writes (matplotlib and h5py under /usr/bin/python3)",
+       {register_plot_command}},
       {"help", "Help for flexure or one command: flexure help [COMMAND]", {register_help_command}},
   };
   return table;

@@ -17,6 +17,7 @@ void register_design_command(CLI::App& app);     // design_command.cpp
 void register_design_mechanism_command(CLI::App& app);
 void register_models_command(CLI::App& app);     // models_command.cpp
 void register_materials_command(CLI::App& app);  // materials_command.cpp
+void register_plot_command(CLI::App& app);       // plot_command.cpp
 void register_map_command(CLI::App& app);        // map_command.cpp  // design_mechanism_command.cpp
 void register_help_command(CLI::App& app);       // help_command.cpp (register last)
 // Ends every registered command's --help with its examples (command_examples.cpp); call after

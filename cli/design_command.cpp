@@ -11,10 +11,12 @@
 #include "cli/cfm_cli_support.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/csv_output.h"
 #include "cli/slow_progress.h"
 #include "flexure/benchmarks/studies/subclass_table.h"
 #include "flexure/io/design_history_file.h"
 #include "flexure/io/output_path.h"
+#include "flexure/io/parallel/mpi_world.h"
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/design/cfm_exact_refinement.h"
@@ -31,6 +33,7 @@ struct DesignCfmArgs {
   std::string model = "prbm";
   int exact_starts = -1;  // --exact-starts; -1: two per free variable
   std::string out;        // --out run.h5: the convergence history
+  std::string csv;        // --csv FILE: the history (or the table) as CSV
   std::string config;
   double d = 0.0;
   std::string objective;
@@ -300,11 +303,13 @@ void run_all_subclasses(const DesignCfmArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   studies::SubclassTableOptions table;
   table.rederivation = o;
-  table.out = args.out;
+  const CsvOutput csv(args.out, args.csv);
+  table.out = csv.hdf5_path();
   table.seed = args.seed;
   // Under mpirun the rows are divided over the ranks; rank 0 gets them all back and prints.
   const std::vector<design::SubclassRederivation> rows =
       studies::subclass_table(table, slow_progress("design cfm --all-subclasses"));
+  csv.write({"name"});
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   Json list = Json::array();
@@ -374,13 +379,14 @@ void run_design_cfm(const DesignCfmArgs& args) {
   options.scan_points = args.scan_points;
   options.coarse_stride = args.coarse_stride;
   options.seed = args.seed;
-  options.record_history = !args.out.empty();
+  const CsvOutput csv(args.out, args.csv);
+  options.record_history = !csv.hdf5_path().empty();
   // The output file is checked and opened before the search (a wrong path fails at once).
   std::optional<io::DesignHistoryFile> file;
-  if (!args.out.empty()) {
-    io::check_output_path(args.out);
+  if (!csv.hdf5_path().empty()) {
+    io::check_output_path(csv.hdf5_path());
     try {
-      file.emplace(args.out);
+      file.emplace(csv.hdf5_path());
     } catch (const InvalidInput& e) {
       throw InvalidInput(fmt::format("--out: {}", e.what()));
     }
@@ -402,9 +408,11 @@ void run_design_cfm(const DesignCfmArgs& args) {
   }
   if (args.model == "exact") {
     run_exact(args, problem, s, start, file);
+    csv.write({"history/run"}, {"exact_history"});
     return;
   }
   if (file) file->write(problem, s, nullptr, args.seed);
+  csv.write({"history/run"}, {"exact_history"});
   if (args.json) {
     print_json(design_json(problem, s, args.seed, seconds));
     return;
@@ -502,6 +510,7 @@ void register_design_command(CLI::App& app) {
                   args->out,
                   "Write the search's convergence history (every model evaluation; with --model "
                   "exact also every exact stroke) to this HDF5 file");
+  add_csv_option(cfm, args->csv);
   cfm->add_flag("--json", args->json, "Print one JSON object");
   cfm->callback([args] { run_design_cfm(*args); });
 }

@@ -10,6 +10,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/csv_output.h"
 #include "cli/fatigue_flags.h"
 #include "cli/mechanism_geometry_output.h"
 #include "cli/modulus_output.h"
@@ -39,6 +40,7 @@ struct DesignMechanismArgs {
   bool json = false;
   std::string out;
   std::string drawing;  // --drawing FILE.svg|FILE.dxf
+  std::string csv;      // --csv FILE: the table of feasible designs
   std::string stress_rule = "computed";
   std::string minimize;
   double max_width_to_thickness = design::SectionBounds{}.max_width_to_thickness;
@@ -336,6 +338,7 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
   const mechanism::ForceOf of = mechanism::parse_force_of(args.force_of);
   const design::MechanismSpec spec = make_spec(args, of);
   if (!args.out.empty()) io::check_output_path(args.out);
+  if (!args.csv.empty()) io::check_output_path(args.csv, "--csv");
   if (!args.drawing.empty()) check_drawing_path(args.drawing, "--drawing");
   const double factor = mechanism::force_of_factor(mechanism::ForceOf::kOneHalf, of);
   const ModulusChoice modulus =
@@ -479,6 +482,33 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
         r.designs.size(),
         spec.safety_factor,
         fmt::join(short_of, ", ")));
+  }
+  if (!args.csv.empty()) {
+    // One row per feasible design, the JSON `designs` keys as columns (docs/cli.md).
+    static const std::map<std::string, std::string> kUnits = {
+        {"subclass_percent_constant_force", "%"},
+        {"subclass_stroke_percent", "% of r2 + r3"},
+        {"stroke_percent", "% of r2 + r3"},
+        {"l_tot", "m"},
+        {"r2", "m"},
+        {"r3", "m"},
+        {"segment_lengths", "m"},
+        {"thicknesses", "m"},
+        {"widths", "m"},
+        {"width", "m"},
+        {"primary_stress", "Pa"},
+        {"required_yield_strength", "Pa"},
+        {"required_yield_strength_prbm", "Pa"},
+        {"required_yield_strength_exact", "Pa"},
+        {"yield_strength", "Pa"},
+        {"force_prbm", "N"},
+        {"force_exact", "N"},
+        {"percent_constant_force_prbm", "%"},
+        {"percent_constant_force_exact", "%"},
+        {"footprint", "m^2"},
+        {"flexure_volume", "m^3"},
+    };
+    io::write_csv(args.csv, csv_columns_from_records(summary["designs"], kUnits));
   }
   if (args.json) {
     print_json(summary);
@@ -677,6 +707,7 @@ void register_design_mechanism_command(CLI::App& app) {
       "--drawing",
       a->drawing,
       "Also draw the design written by --out (the best) to scale: FILE.svg or FILE.dxf");
+  add_csv_option(cmd, a->csv);
   cmd->add_flag("--json", a->json, "Print one JSON object");
   cmd->callback([a] { run_design_mechanism(*a); });
 }

@@ -18,7 +18,7 @@
 //  5. Output files are written with io::AtomicHdf5File (temp name + rename), opened BEFORE the
 //     solve so that an unwritable path fails fast with exit 2. Every dataset gets units and a
 //     description, and the root io::write_provenance (io/provenance.h; docs/hdf5-schema.md).
-//  6. Beam problems are solved by the library's solve_beam (benchmarks/studies/beam_problem.h); a
+//  6. Beam problems are solved by the library's solve_beam (beam/beam_problem.h); a
 //     new method is plugged in there (docs/architecture.md), not in the commands.
 // Nested commands (`sweep beam`) use get_or_add_subcommand() so that several files can add
 // children to the same parent.

@@ -11,6 +11,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/csv_output.h"
 #include "cli/slow_progress.h"
 #include "flexure/benchmarks/studies/cfm_map.h"
 #include "flexure/io/hdf5_file.h"
@@ -26,6 +27,7 @@ struct MapCfmArgs {
   std::string model = "prbm";
   int points = 50;
   std::string out;
+  std::string csv;
   bool json = false;
 };
 
@@ -58,8 +60,10 @@ void run_map_cfm(const MapCfmArgs& a) {
   }
   spec.exact = a.model == "exact";
   spec.points = a.points;
+  const CsvOutput csv(a.out, a.csv);
   const studies::CfmMapSummary m =
-      studies::write_cfm_map(spec, a.out, slow_progress("map cfm " + spec.config));
+      studies::write_cfm_map(spec, csv.hdf5_path(), slow_progress("map cfm " + spec.config));
+  csv.write({"R", "d", "K1", "K2"});
   if (a.json) {
     print_json(Json{{"out", a.out},
                     {"config", spec.config},
@@ -109,6 +113,7 @@ void register_map_command(CLI::App& app) {
   cfm->add_option("--exact-points", a->points, "Stroke points of the exact model")
       ->default_str("50");
   cfm->add_option("--out", a->out, "The HDF5 file of the map (docs/hdf5-schema.md)")->required();
+  add_csv_option(cfm, a->csv);
   cfm->add_flag("--json", a->json, "Print a JSON summary");
   cfm->callback([a] { run_map_cfm(*a); });
 }

@@ -16,6 +16,7 @@
 #include "cli/beam_methods.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/csv_output.h"
 #include "cli/fatigue_flags.h"
 #include "cli/general_mechanism_command.h"
 #include "cli/mechanism_geometry_output.h"
@@ -255,11 +256,14 @@ std::vector<std::string> stability_warnings(const MechanismAnalysis& a) {
         "{}: the exact model's equilibrium is unstable with the slider held at {} of {} stroke "
         "points (least stability margin {:.3g}): the mechanism cannot hold these shapes and would "
         "buckle into another one, which this force curve does not describe (docs/stability.md "
-        "\"Mechanisms\")",
+        "\"Mechanisms\"){}",
         a.design.name,
         dc.unstable_points,
         dc.points.size(),
-        dc.least_margin));
+        dc.least_margin,
+        a.stable_search.empty() && exact_support(a.design) == ExactSupport::kDirectChain
+            ? "; --stable follows a stable branch instead"
+            : ""));
   }
   if (dc.not_checked_points > 0 || a.stability_exact.force_control.not_checked_points > 0) {
     texts.push_back(fmt::format(
@@ -1030,6 +1034,7 @@ void register_mechanism_command(CLI::App& app) {
     std::string what;
     int points = 50;
     std::string out;
+    std::string csv;
     bool json = false;
     bool no_exact = false;
     std::string method = "auto";
@@ -1043,6 +1048,7 @@ void register_mechanism_command(CLI::App& app) {
     std::string material;
     std::string plate, nu;  // the bending modulus (docs/plate-modulus.md)
     FatigueFlags fatigue;
+    bool stable = false;
   };
   auto args = std::make_shared<AnalyzeArgs>();
   CLI::App* analyze = mech.add_subcommand(
@@ -1055,6 +1061,7 @@ void register_mechanism_command(CLI::App& app) {
       ->required();
   analyze->add_option("--points", args->points, "Stroke points (2..100000)")->default_str("50");
   analyze->add_option("--out", args->out, "Write the curves to this HDF5 file (atomic)");
+  add_csv_option(analyze, args->csv);
   analyze->add_flag("--json", args->json, "Print one JSON object");
   analyze->add_flag("--prbm-only", args->no_exact, "Skip the exact model (= --method prbm)");
   analyze
@@ -1100,6 +1107,11 @@ void register_mechanism_command(CLI::App& app) {
                       "(by the Searle parameter b^2/(R h); docs/plate-modulus.md)");
   analyze->add_option(
       "--nu", args->nu, "Poisson's ratio for --plate (default: the material's, [material].nu)");
+  analyze->add_flag("--stable",
+                    args->stable,
+                    "Exact model: where the stroke from the PRBM start is unstable with the "
+                    "slider held, follow a stable branch instead (serial chains; the JSON's "
+                    "stable_search says what was done)");
   args->fatigue.add_to(*analyze);
   analyze->callback([args, analyze] {
     require_in_range(args->points, "--points", 2, 100000);
@@ -1110,27 +1122,23 @@ void register_mechanism_command(CLI::App& app) {
       request.input_range = args->input_range;
       request.json = args->json;
       request.points = analyze->count("--points") > 0 ? args->points : 0;
-      for (const char* flag :
-           {"--out",
-            "--prbm-only",
-            "--method",
-            "--tol",
-            "--spring-rule",
-            "--force-of",
-            // The material and fatigue options of the constant-force designs: a general file
-            // gives its materials per flexure, and has no fatigue check yet.
-            "--material",
-            "--plate",
-            "--nu",
-            "--surface-finish",
-            "--reliability",
-            "--Kf",
-            "--fatigue-factor",
-            "--ultimate-strength",
-            "--endurance-limit"}) {
-        if (analyze->count(flag) > 0) {
-          request.foreign_flag = flag;
-          break;
+      // A general file takes only these; every other option of analyze belongs to the
+      // constant-force designs (their method, material, fatigue, output options) and is refused
+      // by name, so an option added to that form later is refused here without being listed.
+      // Option groups (the fatigue options) are nameless sub-apps holding their own options.
+      std::vector<const CLI::App*> holders = {analyze};
+      for (const CLI::App* group :
+           analyze->get_subcommands([](CLI::App* a) { return a->get_name().empty(); })) {
+        holders.push_back(group);
+      }
+      for (const CLI::App* holder : holders) {
+        for (const CLI::Option* option : holder->get_options()) {
+          const std::string name = option->get_name();
+          if (option->count() == 0 || option->get_positional() || name == "--points" ||
+              name == "--json" || name == "--model" || name == "--input" || name == "--help") {
+            continue;
+          }
+          if (request.foreign_flag.empty()) request.foreign_flag = name;
         }
       }
       analyze_general_mechanism(request);
@@ -1146,6 +1154,7 @@ void register_mechanism_command(CLI::App& app) {
       throw InvalidInput("--prbm-only (= --method prbm) contradicts --method exact; give one");
     }
     if (!args->out.empty()) io::check_output_path(args->out);
+    const CsvOutput csv(args->out, args->csv);
     MechanismDesign d = resolve(args->what);
     if (!args->spring_rule.empty()) apply_spring_rule(d, parse_spring_rule(args->spring_rule));
     if (!args->material.empty()) apply_material_flag(d, args->material);
@@ -1156,9 +1165,9 @@ void register_mechanism_command(CLI::App& app) {
     const ForceOf force_of =
         *args->force_of_option || !d.force_of ? parse_force_of(args->force_of) : *d.force_of;
     std::optional<io::AtomicHdf5File> file;
-    if (!args->out.empty()) {
+    if (!csv.hdf5_path().empty()) {
       try {
-        file.emplace(args->out);
+        file.emplace(csv.hdf5_path());
       } catch (const io::Hdf5Error& e) {
         throw InvalidInput(fmt::format("--out: {}", e.what()));
       }
@@ -1174,6 +1183,7 @@ void register_mechanism_command(CLI::App& app) {
     AnalysisOptions o;
     o.points = args->points;
     o.exact = choice.exact;
+    o.stable = args->stable;
     o.progress = slow_progress(d.name + ": exact model, stroke points and stresses");
     MechanismAnalysis a = analyze_mechanism_with_modulus(d, o);
     report_forces_of(a, force_of);
@@ -1204,11 +1214,17 @@ void register_mechanism_command(CLI::App& app) {
       warn(fmt::format("{}: {}", d.name, fatigue_text(a, fatigue).substr(2)));
     }
     if (file) write_hdf5(args->out, a, *file, fatigue);
+    csv.write({"displacement"}, {"design"});
     if (args->json) {
       Json j = analysis_json(a);
       add_fatigue_json(j, a, fatigue);
       j["method"] = choice.method;
       j["method_reason"] = choice.reason;
+      j["stable"] = args->stable;
+      j["stable_search"] = args->stable && !a.stable_search.empty() ? Json(a.stable_search)
+                           : args->stable && !(a.has_exact && o.exact)
+                               ? Json("not done: the exact model did not run")
+                               : Json(nullptr);
       j["geometry"] = geometry_json(mechanism_geometry(d));
       print_json(j);
       return;
@@ -1219,6 +1235,11 @@ void register_mechanism_command(CLI::App& app) {
                                                     : d.paper_config + ", solved as " + d.config,
                              d.note);
     std::cout << fmt::format("  method: {} ({})\n", choice.method, choice.reason);
+    if (args->stable) {
+      std::cout << fmt::format(
+          "  --stable: {}\n",
+          a.stable_search.empty() ? "not done: the exact model did not run" : a.stable_search);
+    }
     auto note = [](bool vanishes, bool changes_sign) {
       const std::string n = force_sign_note(vanishes, changes_sign);
       return n.empty() ? n : " (" + n + ")";

@@ -10,6 +10,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/csv_output.h"
 #include "cli/slow_progress.h"
 #include "flexure/benchmarks/studies/model_map.h"
 #include "flexure/elements/prbm3r.h"
@@ -36,19 +37,48 @@ struct ModelsMapArgs {
   double min_seconds = 2e-4;
   CLI::Option* mu_option = nullptr;
   std::string out;
+  std::string csv;
   bool json = false;
 };
 
 Json number_or_null(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
 
-// A value ("2") or a range START:STOP:COUNT.
+// A value ("2"), a list of values ("0,0.05,0.1": a grid finer where a model's error changes
+// fastest, data/ladder_auto_error_map.csv) or a range START:STOP:COUNT.
 std::vector<double> axis_of(const std::string& text, const std::string& what) {
   std::vector<double> v;
+  if (text.find(',') != std::string::npos) {
+    std::size_t start = 0;
+    while (start <= text.size()) {
+      const std::size_t comma = text.find(',', start);
+      const std::string item =
+          text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+      double x = 0.0;
+      if (!parse_double(item, x) || !std::isfinite(x)) {
+        throw InvalidInput(fmt::format(
+            "{} = '{}': '{}' is not a finite number (give a number, a comma-separated list or "
+            "START:STOP:COUNT)",
+            what,
+            text,
+            item));
+      }
+      if (!v.empty() && !(x > v.back())) {
+        throw InvalidInput(
+            fmt::format("{} = '{}': a list of values must be strictly ascending", what, text));
+      }
+      v.push_back(x);
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+    return v;
+  }
   if (text.find(':') == std::string::npos) {
     double x = 0.0;
     if (!parse_double(text, x) || !std::isfinite(x)) {
       throw InvalidInput(
-          fmt::format("{} = '{}': give a finite number or START:STOP:COUNT", what, text));
+          fmt::format("{} = '{}': give a finite number, a comma-separated list or START:STOP:COUNT",
+                      what,
+                      text));
     }
     v.push_back(x);
     return v;
@@ -98,10 +128,12 @@ void run_models_map(const ModelsMapArgs& a) {
   spec.min_seconds = a.min_seconds;
   spec.validate();
   io::check_output_path(a.out);  // before the solves: an unwritable path fails fast
+  const CsvOutput csv(a.out, a.csv);
 
   const auto start = std::chrono::steady_clock::now();
   const studies::ModelMap map = studies::compute_model_map(spec, slow_progress("models map"));
-  studies::write_model_map(map, a.out);
+  studies::write_model_map(map, csv.hdf5_path());
+  csv.write({"n", "alpha2", spec.boundary == EndCondition::kGuided ? "tip_angle" : "mu"});
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -190,15 +222,21 @@ void register_models_command(CLI::App& app) {
       "and record each one's tip error against the exact solution and its time per solve (HDF5)");
   map->add_option("--boundary", a->boundary, "Far end: free (default) or guided")
       ->default_str("free");
-  map->add_option("--n", a->n, "Load ratio n: a value or START:STOP:COUNT")->default_str("0:1:3");
-  map->add_option("--alpha2", a->alpha2, "Transverse load P l^2/EI: a value or START:STOP:COUNT")
+  map->add_option("--n", a->n, "Load ratio n: a value, a list V1,V2,... or START:STOP:COUNT")
+      ->default_str("0:1:3");
+  map->add_option("--alpha2",
+                  a->alpha2,
+                  "Transverse load P l^2/EI: a value, a list V1,V2,... or START:STOP:COUNT")
       ->default_str("0.25:10:40");
   a->mu_option =
-      map->add_option("--mu", a->mu, "End moment M l/EI (free end): a value or START:STOP:COUNT")
+      map->add_option("--mu",
+                      a->mu,
+                      "End moment M l/EI (free end): a value, a list V1,V2,... or START:STOP:COUNT")
           ->default_str("-2:2:9");
-  map->add_option("--tip-angle",
-                  a->tip_angle,
-                  "Prescribed tip angle of a guided end, rad: a value or START:STOP:COUNT")
+  map->add_option(
+         "--tip-angle",
+         a->tip_angle,
+         "Prescribed tip angle of a guided end, rad: a value, a list V1,V2,... or START:STOP:COUNT")
       ->default_str("0");
   map->add_option("--models",
                   a->models,
@@ -216,6 +254,7 @@ void register_models_command(CLI::App& app) {
                   "passed, and the mean taken")
       ->default_str("2e-4");
   map->add_option("--out", a->out, "The HDF5 file of the map (docs/hdf5-schema.md)")->required();
+  add_csv_option(map, a->csv);
   map->add_flag("--json", a->json, "Print a JSON summary");
   map->callback([a] { run_models_map(*a); });
 

@@ -13,8 +13,9 @@
 #include "cli/beam_methods.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/csv_output.h"
 #include "cli/physical_flags.h"
-#include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/beam/beam_problem.h"
 #include "flexure/benchmarks/studies/load_path_study.h"
 #include "flexure/benchmarks/studies/path_shapes_xdmf.h"
 #include "flexure/io/chain_toml.h"
@@ -60,6 +61,7 @@ struct PathArgs {
   CLI::Option* shapes_option = nullptr;
   std::string stability = "on";  // --stability on|off: the verdict of every point
   std::string out;
+  std::string csv;
   bool json = false;
 };
 
@@ -99,7 +101,20 @@ PathRequest make_request(const PathArgs& args) {
   }
   // The file first: its own errors (a missing file, bad TOML) are named before the combination.
   std::optional<SegmentChain> file_chain;
-  if (from_file) file_chain = io::read_chain_toml(args.chain_file);
+  if (from_file) {
+    const io::ChainFile file = io::read_chain_file(args.chain_file);
+    for (std::size_t k = 0; k < file.segments.size(); ++k) {
+      if (file.segments[k] && file.segments[k]->plate == PlateRule::kAuto) {
+        // As --plate auto below: one solved curvature decides, a path passes through many.
+        throw InvalidInput(
+            fmt::format("{}: segment {} has plate = \"auto\", which is decided by a solved beam's "
+                        "curvature; a path passes through many: give plate = \"on\" or \"off\"",
+                        args.chain_file,
+                        k + 1));
+      }
+    }
+    file_chain = file.chain;
+  }
   if (from_file && (howell || args.boundary != "free")) {
     throw InvalidInput(
         "--chain FILE.toml describes the whole problem (segments, loads, boundary); do not "
@@ -344,9 +359,10 @@ void run_path(const PathArgs& args) {
   request.validate();
   // Check and open the output first: an unwritable path fails before any solving (exit 2).
   io::check_output_path(args.out);
+  const CsvOutput csv(args.out, args.csv);
   std::unique_ptr<io::AtomicHdf5File> output;
   try {
-    output = std::make_unique<io::AtomicHdf5File>(args.out);
+    output = std::make_unique<io::AtomicHdf5File>(csv.hdf5_path());
   } catch (const io::Hdf5Error& e) {
     throw InvalidInput(fmt::format("--out {}: {}", args.out, e.what()));
   }
@@ -356,8 +372,11 @@ void run_path(const PathArgs& args) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_path_file(output->root(), t);
   output->commit();
-  // With --shapes, the XDMF sidecar that ParaView opens (io/shapes_xdmf.h).
-  const std::string xdmf = write_path_shapes_xdmf(args.out, t);
+  csv.write({"load_factor"}, {"special_points", "shapes"});
+  // With --shapes, the XDMF sidecar that ParaView opens (io/shapes_xdmf.h); not for a hidden
+  // temporary HDF5 file (--out FILE.csv, or --csv alone), which is removed.
+  const std::string xdmf =
+      csv.hdf5_path() == args.out ? write_path_shapes_xdmf(args.out, t) : std::string();
   for (const std::string& w : t.warnings) warn(w);
   if (args.json) {
     Json out{{"out", args.out},
@@ -484,6 +503,7 @@ void register_path_command(CLI::App& app) {
       ->transform(CLI::IsMember({"on", "off"}, CLI::ignore_case));
   args->physical.add_to(*path, false);
   path->add_option("--out", args->out, "Output HDF5 file (written atomically)")->required();
+  add_csv_option(path, args->csv);
   path->add_flag("--json", args->json, "Print one JSON summary object on stdout");
   path->callback([args] { run_path(*args); });
 }

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/benchmarks/studies/physical_beam.h"
+#include "flexure/beam/physical_beam.h"
 
 namespace flexure::cli {
 

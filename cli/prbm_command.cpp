@@ -1,6 +1,6 @@
 // `flexure prbm`: pseudo-rigid-body constants derived from the exact solution, the book's tables
 // beside them, and PRBM-vs-exact comparisons (docs/prbm.md). The comparison itself is the library's
-// (benchmarks/studies/prbm_comparison.h); this file parses, calls and prints.
+// (beam/prbm_comparison.h); this file parses, calls and prints.
 //
 //   flexure prbm derive  --segment fixed-pinned --n N [--step DEG] [--theta-max-K DEG] [--json]
 //   flexure prbm derive  --segment end-moment [--json]
@@ -19,7 +19,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "flexure/benchmarks/studies/prbm_comparison.h"
+#include "flexure/beam/prbm_comparison.h"
 #include "flexure/elements/initially_curved_cantilever.h"
 #include "flexure/elements/prbm_curve_fits.h"
 #include "flexure/elements/prbm_derivation.h"
@@ -344,7 +344,7 @@ void run_table(const PrbmArgs& args) {
 }
 
 // The fixed-pinned comparison's flags, checked here so that the messages name them (the library
-// checks the same quantities, benchmarks/studies/prbm_comparison.h).
+// checks the same quantities, beam/prbm_comparison.h).
 PrbmComparator fixed_pinned_comparator(const PrbmArgs& args) {
   require_in_range(args.load_ratio_n, "--n (load ratio)", -5.0, 10.0);
   PrbmConstantsSource source = PrbmConstantsSource::kTable;

@@ -11,9 +11,10 @@
 #include "cli/beam_methods.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/csv_output.h"
 #include "cli/slow_progress.h"
-#include "flexure/benchmarks/studies/beam_sweep_grid.h"
-#include "flexure/benchmarks/studies/beam_sweep_solver.h"
+#include "flexure/beam/beam_sweep_grid.h"
+#include "flexure/beam/beam_sweep_solver.h"
 #include "flexure/io/beam_sweep.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/output_path.h"
@@ -34,6 +35,7 @@ struct SweepBeamArgs {
   std::string b_over_l;
   std::string method = "auto";
   std::string out;
+  std::string csv;
   std::optional<int> threads;  // default: 2, or 1 per rank under mpirun
   bool compress = false;
   bool json = false;
@@ -161,6 +163,7 @@ void run_sweep_beam(const SweepBeamArgs& args) {
 
   // Check and open the output first: an unwritable path is reported before minutes of solving.
   io::check_output_path(args.out);
+  const CsvOutput csv(args.out, args.csv);
   // Under mpirun every rank writes its blocks into the one file (docs/scaling.md).
   if (args.compress && parallel::launched_size() > 1) {
     throw InvalidInput(
@@ -170,7 +173,7 @@ void run_sweep_beam(const SweepBeamArgs& args) {
   }
   std::unique_ptr<io::AtomicHdf5File> file;
   try {
-    file = std::make_unique<io::AtomicHdf5File>(args.out, io::Hdf5Access::kCollective);
+    file = std::make_unique<io::AtomicHdf5File>(csv.hdf5_path(), io::Hdf5Access::kCollective);
   } catch (const io::Hdf5Error& e) {
     throw InvalidInput(fmt::format("--out: {}", e.what()));
   }
@@ -222,6 +225,13 @@ void run_sweep_beam(const SweepBeamArgs& args) {
   io::BeamSweepWriter writer(file->root(), count, metadata, layout);
   const io::BeamSweepSummary table = io::stream_beam_sweep(count, solve_point, options, writer);
   file->commit();
+  // The table as CSV (rank 0 writes it): the swept parameters first.
+  std::vector<std::string> csv_axes = {"alpha2"};
+  if (const auto stored = stored_axes(grid); !stored.empty()) {
+    csv_axes.clear();
+    for (const io::BeamSweepAxis& axis : stored) csv_axes.push_back("axes/" + axis.name);
+  }
+  csv.write(csv_axes);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
@@ -295,6 +305,7 @@ void register_sweep_command(CLI::App& app) {
       ->default_str("0");
   add_method_option(*beam, args->method);
   beam->add_option("--out", args->out, "Output HDF5 file (written atomically)")->required();
+  add_csv_option(beam, args->csv);
   beam->add_option(
           "--threads", args->threads, "Worker threads per process (1-64; 1 per rank under mpirun)")
       ->default_str("2");

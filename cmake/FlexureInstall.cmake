@@ -11,7 +11,9 @@ set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${FLEXURE_PUBLIC_
                                                               include/flexure/flexure.h)
 list(REMOVE_ITEM FLEXURE_PUBLIC_HEADERS include/flexure/flexure.h)
 foreach(header ${FLEXURE_PUBLIC_HEADERS})
-  get_filename_component(dir ${header} DIRECTORY)
+  # A module header (include/flexure/beam.h) installs beside flexure.h.
+  string(REGEX REPLACE "^include/flexure/" "" header_in_package "${header}")
+  get_filename_component(dir ${header_in_package} DIRECTORY)
   install(FILES ${PROJECT_SOURCE_DIR}/${header}
           DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/flexure/${dir})
 endforeach()

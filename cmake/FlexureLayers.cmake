@@ -8,16 +8,21 @@
 
 set(FLEXURE_BUILD_INCLUDE_DIR ${PROJECT_BINARY_DIR}/include)
 file(MAKE_DIRECTORY ${FLEXURE_BUILD_INCLUDE_DIR}/flexure)
-foreach(folder solver elements mechanisms io benchmarks)
+foreach(folder solver elements beam mechanisms io benchmarks)
   if(NOT EXISTS ${FLEXURE_BUILD_INCLUDE_DIR}/flexure/${folder})
     file(CREATE_LINK ${PROJECT_SOURCE_DIR}/${folder} ${FLEXURE_BUILD_INCLUDE_DIR}/flexure/${folder}
          SYMBOLIC)
   endif()
 endforeach()
-if(NOT EXISTS ${FLEXURE_BUILD_INCLUDE_DIR}/flexure/flexure.h)
-  file(CREATE_LINK ${PROJECT_SOURCE_DIR}/include/flexure/flexure.h
-       ${FLEXURE_BUILD_INCLUDE_DIR}/flexure/flexure.h SYMBOLIC)
-endif()
+# The umbrella and the module headers (include/flexure/*.h: flexure.h, beam.h, ...).
+file(GLOB FLEXURE_MODULE_HEADERS RELATIVE ${PROJECT_SOURCE_DIR}/include/flexure
+     ${PROJECT_SOURCE_DIR}/include/flexure/*.h)
+foreach(header ${FLEXURE_MODULE_HEADERS})
+  if(NOT EXISTS ${FLEXURE_BUILD_INCLUDE_DIR}/flexure/${header})
+    file(CREATE_LINK ${PROJECT_SOURCE_DIR}/include/flexure/${header}
+         ${FLEXURE_BUILD_INCLUDE_DIR}/flexure/${header} SYMBOLIC)
+  endif()
+endforeach()
 
 set(FLEXURE_WARNINGS -Wall -Wextra -Wpedantic)
 
@@ -86,6 +91,10 @@ function(flexure_header_closure out)
                            included "${line}")
       if(included STREQUAL "version.h" OR included STREQUAL "flexure.h")
         continue()
+      endif()
+      if(NOT included MATCHES "/")
+        # A module header (beam.h): it sits in include/flexure/.
+        set(included include/flexure/${included})
       endif()
       list(APPEND pending ${included})
     endforeach()

@@ -9,7 +9,9 @@
 # no separate cycle finder is needed (scripts/include_graph.py prints cycles for people).
 #
 # The solver's packages are ranked: the models and the closed forms (ode, elliptic, chain_model)
-# below the methods built on them (shooting and chain on chain_model; inverse on elliptic).
+# below the methods built on them (shooting and chain on chain_model; inverse on elliptic). The
+# beam layer (the user-facing beam API: beam problems, the method choice) sits on the elements,
+# beside the mechanisms, and links no file format.
 # mechanisms and io are one node each until their sub-folders lose their cycles (issue 28).
 cmake_minimum_required(VERSION 3.22)  # IN_LIST, list(POP_FRONT)
 set(layer_graph
@@ -21,9 +23,10 @@ set(layer_graph
   "solver/chain:solver/chain_model"
   "solver/inverse:solver/elliptic"
   "elements:solver/shooting,solver/chain,solver/inverse,solver/ode"
+  "beam:elements"
   "mechanisms:elements"
-  "io:mechanisms"
-  "benchmarks/studies:io")
+  "io:mechanisms,beam"
+  "benchmarks/studies:io,beam")
 # Headers any file may include: generated, no dependencies.
 set(allowed_everywhere "version.h")
 # Installed (public) headers must not expose these libraries' types.
@@ -88,6 +91,7 @@ set(include_line "^[ \t]*#[ \t]*include[ \t]*[<\"]")
 file(GLOB_RECURSE sources RELATIVE ${SOURCE_DIR}
   ${SOURCE_DIR}/solver/*.h ${SOURCE_DIR}/solver/*.cpp
   ${SOURCE_DIR}/elements/*.h ${SOURCE_DIR}/elements/*.cpp
+  ${SOURCE_DIR}/beam/*.h ${SOURCE_DIR}/beam/*.cpp
   ${SOURCE_DIR}/mechanisms/*.h ${SOURCE_DIR}/mechanisms/*.cpp
   ${SOURCE_DIR}/io/*.h ${SOURCE_DIR}/io/*.cpp
   ${SOURCE_DIR}/benchmarks/studies/*.h ${SOURCE_DIR}/benchmarks/studies/*.cpp)

@@ -14,6 +14,7 @@
 #include "flexure/io/toml_support.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/solver/common/plate_modulus.h"
 
 namespace flexure::io {
 namespace {
@@ -413,6 +414,7 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
                       "section (E with width and thickness, or with I and A) in physical units");
       }
       file.sections.emplace_back();
+      file.segments.emplace_back();
       continue;
     }
     const std::string where = fmt::format("segment {}", k + 1);
@@ -478,22 +480,24 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
       toml_fail(
           source, keys.line, where + ": shear_coefficient is used with extensible = true only");
     }
-    // The bending modulus (docs/plate-modulus.md): E, or E/(1 - nu^2) for a wide strip.
+    // The bending modulus (docs/plate-modulus.md): E, or E/(1 - nu^2) for a wide strip. With
+    // plate = "on" the segment's EI is E I/(1 - nu^2) (PhysicalChain::validate() expects it so,
+    // and the chain alone then bends as a plate); "auto" keeps E I until solve_physical_chain
+    // decides.
+    PlateRule plate = PlateRule::kOff;
     if (keys.plate) {
       try {
-        section.plate = plate_rule_from_string(*keys.plate, where + ".plate");
-        section.nu = keys.nu;
-        section.width = keys.width;
+        plate = plate_rule_from_string(*keys.plate, where + ".plate");
         const ModulusChoice choice =
-            choose_modulus(section.plate == PlateRule::kAuto ? PlateRule::kOff : section.plate,
+            choose_modulus(plate == PlateRule::kAuto ? PlateRule::kOff : plate,
                            section.E,
                            keys.nu,
                            {},
                            {},
                            {},
                            where);
-        if (section.plate == PlateRule::kAuto) {
-          // Checked now, decided after the solve (solve_physical_chain).
+        if (plate == PlateRule::kAuto) {
+          // Checked now (nu, width and thickness), decided after the solve.
           choose_modulus(
               PlateRule::kAuto, section.E, keys.nu, keys.width, keys.thickness, 0.0, where);
         }
@@ -502,12 +506,26 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
         toml_fail(source, keys.line, e.what());
       }
     }
+    if (keys.nu && !(*keys.nu > -1.0 && *keys.nu < 0.5)) {
+      toml_fail(source, keys.line, where + ".nu must be in (-1, 0.5)");
+    }
     if (keys.nu && !keys.extensible && !keys.plate) {
       toml_fail(source,
                 keys.line,
                 where + ": nu is used with extensible = true or plate = \"on\"/\"auto\" only");
     }
     file.sections.push_back(section);
+    // The same as the library's types: the rectangle or the general I (with its thickness), and
+    // the material (nu where extensible gives it, else the default; the yield strength below).
+    SegmentProperties properties{keys.width ? Section::rectangle(*keys.width, *keys.thickness)
+                                            : Section::general(*keys.I, keys.thickness),
+                                 Material{},
+                                 keys.width ? std::optional<double>() : keys.area};
+    properties.material.E = keys.E->si;
+    if (keys.nu) properties.material.nu = *keys.nu;
+    properties.material.density = keys.density;
+    properties.plate = plate;
+    file.segments.push_back(properties);
     r.warn(modulus_warning(*keys.E, where + ".E"));
     if (keys.thickness) {
       r.warn(thickness_warning(
@@ -525,6 +543,9 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
       toml_fail(source, line_of(*root.get("yield_strength")), "yield_strength must be > 0");
     }
     file.yield_strength = yield->si;
+    for (std::optional<SegmentProperties>& properties : file.segments) {
+      if (properties) properties->material.yield_strength = yield->si;
+    }
   }
   try {
     chain.validate();

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "flexure/beam/physical_beam.h"
 #include "flexure/solver/chain_model/segment_chain.h"
-#include "flexure/solver/common/plate_modulus.h"
 
 namespace flexure::io {
 
@@ -25,21 +25,17 @@ struct SegmentSection {
   std::optional<double> thickness;  // m
   std::optional<double> area;       // m^2: width thickness, or A (the axial stress N/A)
   double weight_per_length = 0.0;   // N/m: rho A g where density is given (self-weight)
-  // The bending modulus (segment.plate, docs/plate-modulus.md): with plate = "on" the segment's
-  // EI is already E I/(1 - nu^2); "auto" is decided by solve_physical_chain at the segment's
-  // largest curvature (the segment's EI is E I until then). E above is the modulus as given.
-  PlateRule plate = PlateRule::kOff;
-  std::optional<double> nu;
-  std::optional<double> width;  // m (rectangles: the Searle parameter's b)
 };
 
-struct ChainFile {
-  SegmentChain chain;
+// A chain file is a PhysicalChain (beam/physical_beam.h: the chain, each flexible segment's
+// Section and Material where it gives one, the file's yield_strength, which the reader also puts
+// into every such segment's Material) and what only a file says.
+struct ChainFile : PhysicalChain {
   bool physical = false;  // SI units (units = "SI" or a value written with a unit)
-  // Per segment: the section of a flexible segment that gives one (nullopt: EI only, or rigid).
+  // Per segment, as PhysicalChain::segments in the reader's earlier form (E, I, thickness, area,
+  // self-weight); kept for existing callers.
   std::vector<std::optional<SegmentSection>> sections;
-  std::optional<double> yield_strength;  // Pa
-  std::vector<std::string> warnings;     // likely unit mistakes, for stderr (io/quantity.h)
+  std::vector<std::string> warnings;  // likely unit mistakes, for stderr (io/quantity.h)
 };
 
 ChainFile read_chain_file(const std::string& path);

@@ -58,9 +58,11 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
     if (options.progress) {
       stroke_progress = [&](std::size_t done, std::size_t) { options.progress(done, total); };
     }
-    a.exact =
-        exact_stroke(d, a.prbm.displacement, ExactMechanismSolver::Options{}, stroke_progress);
+    ExactMechanismSolver::Options exact_options;
+    exact_options.stable_start = options.stable;
+    a.exact = exact_stroke(d, a.prbm.displacement, exact_options, stroke_progress);
     a.exact_note = a.exact.message;
+    if (options.stable) a.stable_search = a.exact.stable_search;
     if (a.exact.converged()) {
       double sum = 0.0;
       for (std::size_t k = 0; k < a.exact.points.size(); ++k) {

@@ -20,8 +20,8 @@
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
-#include "flexure/mechanisms/prbm_validity.h"
 #include "flexure/mechanisms/mechanism_stability.h"
+#include "flexure/mechanisms/prbm_validity.h"
 
 namespace flexure::mechanism {
 
@@ -32,6 +32,12 @@ struct AnalysisOptions {
   // Stability verdicts of every stroke point under displacement and force control of the slider,
   // PRBM and (when it ran) exact (mechanism_stability.h, docs/stability.md "Mechanisms").
   bool stability = true;
+  // Follow a stable branch of the exact model (`mechanism analyze --stable`): where the stroke
+  // from the PRBM start is unstable with the slider held, start on the branch of the straight
+  // chain's lowest buckling mode instead and keep to stable equilibria along the stroke
+  // (ExactMechanismSolver::Options::stable_start; serial chains). MechanismAnalysis::stable_search
+  // says what was done.
+  bool stable = false;
   // Called after each exact stroke point, each exact stress evaluation and each exact stability
   // verdict: (done, total) over the passes (total = points times the passes). Empty: no calls.
   StrokeProgress progress;
@@ -80,6 +86,9 @@ struct MechanismAnalysis {
   ModelStability stability_prbm;
   ModelStability stability_exact;
   bool has_exact_stability = false;
+  // With AnalysisOptions::stable: what the stable search did ("not needed: ...", the branch it
+  // followed, or why it kept the proportional stroke); empty without it.
+  std::string stable_search;
   // What the slider forces prbm.force, prbm.mean_force, force_exact and mean_force_exact are the
   // force of: one half as analyze_mechanism computes them; report_forces_of() rescales them. The
   // solver's own points (exact), pin forces and stresses always belong to one half.

@@ -462,50 +462,6 @@ ExactPoint ExactMechanismSolver::solve_two_force(double displacement,
   return p;
 }
 
-namespace {
-
-// The first point of a serial chain's stroke, checked: an equilibrium that is unstable with the
-// slider held is not where the mechanism goes. The PRBM start (or the thickness homotopy) follows
-// the linkage mode of the PRBM; where a thin flexure has a lower buckling mode of its own
-// (3A-lssm, 3A-lslm: the middle strip sways between its two long links at half the linkage's
-// buckling load) that branch is unstable, and the mechanism leaves the straight position on the
-// branch of the lowest mode instead (docs/stability.md "Mechanisms", docs/mechanisms.md "Exact
-// model: the first stroke point"). Keeps `point` when it is stable, cannot be judged, or no stable
-// point is found on that branch (its verdict then says so in the analysis).
-ExactPoint checked_first_point(const MechanismDesign& design,
-                               ExactPoint point,
-                               const ExactMechanismSolver::Options& options) {
-  if (exact_support(design) != ExactSupport::kDirectChain) return point;
-  Stability held;
-  try {
-    held = exact_point_stability(design, point).displacement_control;
-  } catch (const std::exception&) {
-    return point;
-  }
-  if (held.kind != StabilityKind::kUnstable) return point;
-  ExactPoint lowest = exact_lowest_mode_point(design, point.displacement, options);
-  if (!lowest.converged()) {
-    point.message +=
-        "; unstable with the slider held, and the lowest buckling mode's branch: " + lowest.message;
-    return point;
-  }
-  Stability lowest_held;
-  try {
-    lowest_held = exact_point_stability(design, lowest).displacement_control;
-  } catch (const std::exception&) {
-    return point;
-  }
-  if (lowest_held.kind != StabilityKind::kStable) return point;
-  lowest.iterations += point.iterations;
-  lowest.message += fmt::format(
-      "; the PRBM start's equilibrium (force {:.6g} N) is unstable with the slider held (index {})",
-      point.force,
-      held.index);
-  return lowest;
-}
-
-}  // namespace
-
 ExactStrokeResult exact_stroke(const MechanismDesign& design,
                                const std::vector<double>& displacements) {
   return exact_stroke(design, displacements, ExactMechanismSolver::Options{});
@@ -516,8 +472,7 @@ namespace {
 ExactStrokeResult stroke_from_start(const MechanismDesign& design,
                                     const std::vector<double>& displacements,
                                     const ExactMechanismSolver::Options& options_in,
-                                    const StrokeProgress& progress,
-                                    bool check_first);
+                                    const StrokeProgress& progress);
 
 }  // namespace
 
@@ -525,18 +480,41 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
                                const std::vector<double>& displacements,
                                const ExactMechanismSolver::Options& options,
                                const StrokeProgress& progress) {
-  ExactStrokeResult r =
-      stroke_from_start(design, displacements, options, progress, options.stable_start);
-  if (r.converged() || !r.lowest_mode_start) return r;
-  // The stable branch could not be followed over the whole stroke (3A-lslm at most point counts:
-  // its pitchfork): the stroke from the PRBM start, whose verdicts say it is unstable.
-  ExactStrokeResult fallback = stroke_from_start(design, displacements, options, progress, false);
-  if (!fallback.converged()) return r;
-  fallback.message += fmt::format(
-      " (from the PRBM start: the stable branch of the lowest buckling mode stopped there: {})",
-      r.message);
-  fallback.integrator_steps += r.integrator_steps;
-  return fallback;
+  ExactStrokeResult r = stroke_from_start(design, displacements, options, progress);
+  if (!options.stable_start) return r;
+  if (exact_support(design) != ExactSupport::kDirectChain) {
+    r.stable_search =
+        "not available: the stable search follows serial chains (ssp, slp, sss); the stroke from "
+        "the PRBM start is returned";
+    return r;
+  }
+  if (r.converged()) {
+    // Judged in stroke order up to the first unstable point: on 3A-lssm and 3A-lslm the first.
+    bool unstable = false;
+    for (const ExactPoint& p : r.points) {
+      try {
+        unstable =
+            exact_point_stability(design, p).displacement_control.kind == StabilityKind::kUnstable;
+      } catch (const std::exception&) {
+        unstable = false;
+      }
+      if (unstable) break;
+    }
+    if (!unstable) {
+      r.stable_search =
+          "not needed: no point of the stroke from the PRBM start is unstable with the slider "
+          "held";
+      return r;
+    }
+  }
+  ExactStrokeResult s = exact_stable_stroke(design, displacements, options, progress);
+  if (s.converged()) {
+    s.integrator_steps += r.integrator_steps;
+    return s;
+  }
+  r.stable_search = fmt::format(
+      "no stable stroke found ({}); the stroke from the PRBM start is returned", s.message);
+  return r;
 }
 
 namespace {
@@ -544,8 +522,7 @@ namespace {
 ExactStrokeResult stroke_from_start(const MechanismDesign& design,
                                     const std::vector<double>& displacements,
                                     const ExactMechanismSolver::Options& options_in,
-                                    const StrokeProgress& progress,
-                                    bool check_first) {
+                                    const StrokeProgress& progress) {
   // The work budget runs from here (docs/mechanisms.md "Work budget").
   ExactMechanismSolver::Options options = options_in;
   options.work_spent = std::make_shared<long>(0);
@@ -562,19 +539,6 @@ ExactStrokeResult stroke_from_start(const MechanismDesign& design,
         std::min(first_options.shooting.newton.max_iterations, kFirstTryIterations);
   }
   const ExactMechanismSolver first_try(design, first_options);
-  // With stable_start: a serial chain's point whose shooting Jacobian changed sign from its
-  // neighbour's (same cuts) lies on another branch: Newton from an extrapolated guess can land on a
-  // nearby branch where two branches run close (3A-lssm's stable start, 6-8 % into the stroke, next
-  // to the PRBM's unstable branch). Such a point is refused and the step divided.
-  auto on_branch_of = [&](ExactPoint& q, const ExactPoint& neighbour) {
-    if (check_first && q.converged() && q.jacobian_sign != 0 && neighbour.jacobian_sign != 0 &&
-        q.unknowns.size() == neighbour.unknowns.size() &&
-        q.jacobian_sign != neighbour.jacobian_sign) {
-      q.set_converged(false);
-      q.message = "landed on another branch (the shooting Jacobian changed sign)";
-    }
-    return q.converged();
-  };
   ExactStrokeResult result;
   result.points.reserve(displacements.size());
   const ExactPoint* previous = nullptr;
@@ -624,7 +588,6 @@ ExactStrokeResult stroke_from_start(const MechanismDesign& design,
     // can throw Newton onto another branch), before the serial chain's fall-backs -- the PRBM
     // start and continuation from zero load -- which start far from the path and cost more.
     ExactPoint point = k == 0 ? solver.solve(dx) : first_try.solve(dx, previous, false);
-    if (k >= 1) on_branch_of(point, result.points[k - 1]);
     if (!point.converged() && k == 0) {
       // No neighbour to start from and the PRBM start failed (mechanism_exact_start.cpp).
       ExactPoint started = exact_first_point(design, displacements, options);
@@ -633,11 +596,6 @@ ExactStrokeResult stroke_from_start(const MechanismDesign& design,
       } else {
         point.message += "; start strategies: " + started.message;
       }
-    }
-    if (k == 0 && point.converged() && check_first) {
-      const double force = point.force;
-      point = checked_first_point(design, std::move(point), options);
-      result.lowest_mode_start = point.force != force;
     }
     auto substeps = [&](bool fall_back) {
       const ExactPoint last = result.points[k - 1];
@@ -649,7 +607,7 @@ ExactStrokeResult stroke_from_start(const MechanismDesign& design,
           const double x = last.displacement + (dx - last.displacement) * i / m;
           ExactPoint q = solver.solve(x, &current, fall_back);
           iterations += q.iterations;
-          ok = on_branch_of(q, current);
+          ok = q.converged();
           if (ok) current = std::move(q);
         }
         if (ok) {
@@ -662,20 +620,8 @@ ExactStrokeResult stroke_from_start(const MechanismDesign& design,
       return false;
     };
     if (!point.converged() && k >= 1 && !substeps(false)) {
-      // With stable_start, before the fall-backs that start far from the path: steps adapted to
-      // the branch, which also leave it for a stable one where it turns unstable (a pitchfork).
-      const ExactPoint& last = result.points[k - 1];
-      ExactPoint near;
-      if (check_first) {
-        near = exact_adaptive_walk(design, last, dx, (dx - last.displacement) / 64.0, options);
-      }
-      if (near.converged()) {
-        near.message += " (adaptive steps from the previous point)";
-        point = std::move(near);
-      } else {
-        point = solver.solve(dx, previous);
-        if (!point.converged()) substeps(true);
-      }
+      point = solver.solve(dx, previous);
+      if (!point.converged()) substeps(true);
     }
     result.points.push_back(std::move(point));
     const ExactPoint& p = result.points.back();

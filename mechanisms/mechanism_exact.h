@@ -147,13 +147,13 @@ class ExactMechanismSolver {
     // pinned-ends model of 1B-plp near its toggle tried F L^2/EI = 2e8, one shooting solve
     // there took 21 s.
     double max_load_parameter = 1e4;
-    // exact_stroke of a serial chain: when the first point from the PRBM start is unstable with
-    // the slider held, start instead on the branch of the straight chain's lowest buckling mode
-    // (exact_lowest_mode_point) and follow it, leaving it for a stable neighbour where it turns
-    // unstable (exact_adaptive_walk). Off by default: on 3A-lssm and 3A-lslm at 50 points it gives
-    // strokes stable at every point (forces 11.0-19.5 N and 11.3-43.6 N), but at other point
-    // counts 3A-lslm's pitchfork is not followed (the stroke from the PRBM start is returned) and
-    // 3A-lssm at 5 or 10 points costs 1.9e7 integrator steps (docs/stability.md "Mechanisms").
+    // exact_stroke of a serial chain (`mechanism analyze --stable`): when a point of the stroke
+    // from the PRBM start is unstable with the slider held, return instead the stable stroke of
+    // exact_stable_stroke (from the branch of the straight chain's lowest buckling mode, stable
+    // neighbours taken where it turns unstable); ExactStrokeResult::stable_search says what was
+    // done. Off by default: the documented answer is the proportional one, labelled by its
+    // verdicts. 3A-lssm: 11.03-19.53 N, 3A-lslm: 11.30-43.63 N, stable at every point
+    // (docs/stability.md "Mechanisms").
     bool stable_start = false;
 
     // Throws InvalidInput naming the first field outside its range.
@@ -217,6 +217,10 @@ struct ExactStrokeResult : SolveStatus {
   // (exact_lowest_mode_point). When that branch cannot be followed to the end, exact_stroke
   // returns the stroke from the PRBM start (this flag then false, the message saying so).
   bool lowest_mode_start = false;
+  // With Options::stable_start: what was done, in words (the branch followed and how many stable
+  // neighbours were taken at pitchforks, "not needed: ..." when the PRBM start's stroke is stable,
+  // or why the proportional stroke was kept); empty without it.
+  std::string stable_search;
 };
 ExactStrokeResult exact_stroke(const MechanismDesign& design,
                                const std::vector<double>& displacements);
@@ -227,6 +231,18 @@ ExactStrokeResult exact_stroke(const MechanismDesign& design,
                                const std::vector<double>& displacements,
                                const ExactMechanismSolver::Options& options,
                                const StrokeProgress& progress = nullptr);
+
+// The stable stroke of a serial chain (mechanism_exact_stable.cpp): starts from the PRBM start
+// when its first point is stable with the slider held, else on the branch of the straight chain's
+// lowest buckling mode (exact_lowest_mode_point), and marches over a fixed grid of 128 equal
+// steps plus `displacements`, judging each station where the shooting Jacobian's sign changes and
+// taking the stable neighbour (exact_stable_neighbour) where the branch turns unstable; so the
+// branch followed does not depend on the point count. Converged only when every station was
+// followed; what was done is in stable_search.
+ExactStrokeResult exact_stable_stroke(const MechanismDesign& design,
+                                      const std::vector<double>& displacements,
+                                      const ExactMechanismSolver::Options& options,
+                                      const StrokeProgress& progress = nullptr);
 
 // First point of a stroke when the PRBM start fails (mechanism_exact_start.cpp): near the straight
 // position the PRBM force of a mechanism with long or very unequal flexures can lie below the exact

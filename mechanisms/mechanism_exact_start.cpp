@@ -389,7 +389,7 @@ ExactPoint exact_stable_neighbour(const MechanismDesign& design,
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(e.jacobian, Eigen::ComputeFullV);
   const Eigen::Vector3d v = svd.matrixV().col(2);
   const ExactMechanismSolver solver(design, options);
-  for (double t : {0.05, 0.1, 0.2, 0.4}) {
+  for (double t : {0.01, 0.02, 0.05, 0.1, 0.2, 0.4}) {
     for (double side : {1.0, -1.0}) {
       ExactPoint guess = from;
       const Eigen::Vector3d g = z + side * t * z.norm() * v;

@@ -132,59 +132,6 @@ Grid assemble(const MechanismPath& path, int stride) {
   return g;
 }
 
-// Independent combinations of the raw rows, orthonormal in the lumped L2 metric, keeping those
-// whose root-mean-square over the path exceeds 1e-10 (the chain's rule).
-std::vector<std::vector<double>> independent_combinations(const Grid& g, double total) {
-  const std::size_t m = g.raw_rows.size();
-  std::vector<std::vector<double>> keep;  // coefficient vectors over the raw rows
-  if (m == 0 || g.weight.empty()) return keep;
-  double G[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
-  for (std::size_t a = 0; a < m; ++a) {
-    for (std::size_t b = 0; b < m; ++b) {
-      for (std::size_t i = 0; i < g.weight.size(); ++i) {
-        if (g.weight[i] > 0.0) G[a][b] += g.raw_rows[a][i] * g.raw_rows[b][i] / g.weight[i];
-      }
-    }
-  }
-  const double threshold = 1e-20 * total;
-  if (m == 1) {
-    if (G[0][0] > threshold) keep.push_back({1.0 / std::sqrt(G[0][0])});
-    return keep;
-  }
-  const double mean = 0.5 * (G[0][0] + G[1][1]);
-  const double radius = std::hypot(0.5 * (G[0][0] - G[1][1]), G[0][1]);
-  for (const double mu : {mean + radius, mean - radius}) {
-    if (!(mu > threshold)) continue;
-    double vx = G[0][1], vy = mu - G[0][0];
-    if (std::hypot(mu - G[1][1], G[0][1]) > std::hypot(vx, vy)) {
-      vx = mu - G[1][1];
-      vy = G[0][1];
-    }
-    const double norm = std::hypot(vx, vy);
-    if (!(norm > 0.0)) {
-      vx = keep.empty() ? 1.0 : 0.0;
-      vy = keep.empty() ? 0.0 : 1.0;
-    } else {
-      vx /= norm;
-      vy /= norm;
-    }
-    const double scale = 1.0 / std::sqrt(mu);
-    keep.push_back({vx * scale, vy * scale});
-  }
-  return keep;
-}
-
-void apply_constraints(Grid& g, const std::vector<std::vector<double>>& combinations) {
-  g.q.constraints.clear();
-  for (const std::vector<double>& v : combinations) {
-    std::vector<double> row(g.q.axial.size(), 0.0);
-    for (std::size_t a = 0; a < g.raw_rows.size(); ++a) {
-      for (std::size_t i = 0; i < row.size(); ++i) row[i] += v[a] * g.raw_rows[a][i];
-    }
-    g.q.constraints.push_back(std::move(row));
-  }
-}
-
 double total_length(const MechanismPath& path) {
   double total = 0.0;
   for (const PathPiece& p : path.pieces) total += p.length;
@@ -273,9 +220,10 @@ Grids make_grids(const MechanismPath& path, double eigenvalue_tolerance) {
   const int largest = largest_stride(path);
   std::vector<Grid> raw;
   for (int stride = 1; stride <= largest; stride *= 2) raw.push_back(assemble(path, stride));
-  const auto combinations = independent_combinations(raw.front(), total_length(path));
+  const auto combinations =
+      independent_row_combinations(raw.front().raw_rows, raw.front().weight, total_length(path));
   for (Grid& g : raw) {
-    apply_constraints(g, combinations);
+    g.q.constraints = combine_rows(g.raw_rows, combinations);
     grids.bounded = grids.bounded && bracket_from_below(g.q);
     grids.levels.push_back(std::move(g.q));
   }
@@ -294,9 +242,10 @@ DiscreteSecondVariation path_second_variation(const MechanismPath& path, int str
         "stride {} needs element counts divisible by {} in every flexible piece", stride, stride));
   }
   Grid fine = assemble(path, 1);
-  const auto combinations = independent_combinations(fine, total_length(path));
+  const auto combinations =
+      independent_row_combinations(fine.raw_rows, fine.weight, total_length(path));
   Grid grid = stride == 1 ? std::move(fine) : assemble(path, stride);
-  apply_constraints(grid, combinations);
+  grid.q.constraints = combine_rows(grid.raw_rows, combinations);
   return grid.q;
 }
 

@@ -1,8 +1,11 @@
-// flexure._core: the compiled half of the Python module (docs/python.md). Two entry points:
+// flexure._core: the compiled half of the Python module (docs/python.md). Entry points:
 //  * run(args): one `flexure` command run in-process (cli/command_runner.h) with the lock on the
 //    interpreter released, its JSON object converted to Python (arrays of numbers to numpy);
+//  * beam(**values): `flexure beam --json` for one load from values, without a command line
+//    (cli::run_beam_keywords; the scalar flexure.beam);
 //  * beam_many(args, ...): `flexure beam` at many loads on worker threads, columns written
-//    straight into numpy arrays (the vectorised flexure.beam).
+//    straight into numpy arrays (the vectorised flexure.beam);
+//  * the classes over the library's types (python/objects.cpp).
 // The Python half (python/flexure/*.py) turns keyword arguments into the tool's flags and
 // raises the module's exceptions; nothing here decides anything the tool does not.
 #include <fmt/format.h>
@@ -16,6 +19,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -26,10 +30,11 @@
 
 #include "cli/beam_command.h"
 #include "cli/command_runner.h"
-#include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/beam/beam_problem.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/gsl_guard.h"
 #include "flexure/version.h"
+#include "python/objects.h"
 
 namespace py = pybind11;
 
@@ -154,14 +159,15 @@ py::object to_python(const Json& j) {
 // run(args) -> (kind, payload, warnings, exit_code): kind "ok" (payload: the JSON object),
 // "invalid" (InvalidInput: payload the message), "no_convergence" (payload (message, reached)),
 // "error" (anything else). The Python half raises the matching exception.
-py::tuple run(const std::vector<std::string>& args) {
+template <class Command>
+py::tuple run_released(Command&& command) {
   cli::CommandOutput out;
   std::string kind = "ok", message;
   Json reached = Json::object();
   {
     py::gil_scoped_release release;
     try {
-      out = cli::run_command(args);
+      out = command();
     } catch (const InvalidInput& e) {
       kind = "invalid";
       message = e.what();
@@ -181,6 +187,16 @@ py::tuple run(const std::vector<std::string>& args) {
   for (const std::string& w : out.warnings) warnings.append(w);
   if (kind == "ok") return py::make_tuple(kind, to_python(out.json), warnings, out.exit_code);
   return py::make_tuple(kind, py::make_tuple(message, to_python(reached)), warnings, 0);
+}
+
+py::tuple run(const std::vector<std::string>& args) {
+  return run_released([&] { return cli::run_command(args); });
+}
+
+// beam(...): `flexure beam --json` for keyword values (cli::run_beam_keywords), the same result
+// as run(["beam", ...]) without a command line (python/flexure/_beam.py decides which applies).
+py::tuple beam_keywords(const cli::BeamKeywords& keywords) {
+  return run_released([&] { return cli::run_beam_keywords(keywords); });
 }
 
 // ---- a design given as a dict: TOML text for the tool's file readers ----
@@ -373,6 +389,7 @@ struct Columns {
         Theta(shape, kNaN, used.prbm),
         theta_max(shape, kNaN, used.prbm),
         expected_error(shape, kNaN),
+        expected_error_per_length(shape, kNaN),
         max_element_deflection(shape, kNaN, used.bcm),
         slenderness(shape, kNaN, used.bcm),
         iterations(shape, 0),
@@ -398,7 +415,8 @@ struct Columns {
         special_points(count, workers) {}
   NumpyColumn<double> n, alpha2, mu, a_over_l, b_over_l, theta0, root_moment, target_residual,
       first_limit_load_factor, reaction_Fx, reaction_Fy, reaction_M, stability_index,
-      stability_margin, Theta, theta_max, expected_error, max_element_deflection, slenderness;
+      stability_margin, Theta, theta_max, expected_error, expected_error_per_length,
+      max_element_deflection, slenderness;
   // stability_index is a float column: NaN where not judged, the scalar call's None.
   NumpyColumn<long long> iterations, inflection_points, limit_points, elements, increments, status;
   NumpyColumn<bool> within_validity, converged;
@@ -455,6 +473,7 @@ void solve_one(const cli::BeamCommandProblem& base,
     c.method.set(i, worker, to_string(s.method));
     c.method_reason.set(i, worker, s.method_reason);
     c.expected_error.data[i] = finite_or_nan(s.expected_error);
+    c.expected_error_per_length.data[i] = finite_or_nan(s.expected_error_per_length);
     c.iterations.data[i] = s.iterations;
     if (!s.converged() || !std::isfinite(s.alpha2) || !std::isfinite(s.tip.a_over_l) ||
         !std::isfinite(s.tip.b_over_l) || !std::isfinite(s.tip.theta0)) {
@@ -596,6 +615,7 @@ py::dict beam_many(const std::vector<std::string>& args,
   out["method"] = c.method.to_numpy(shape);
   out["method_reason"] = c.method_reason.to_numpy(shape);
   out["expected_error"] = c.expected_error.array;
+  out["expected_error_per_length"] = c.expected_error_per_length.array;
   out["n"] = c.n.array;
   out["alpha2"] = c.alpha2.array;
   out["mu"] = c.mu.array;
@@ -678,4 +698,68 @@ PYBIND11_MODULE(_core, m) {
         py::arg("shape"),
         py::arg("threads"),
         "flexure beam at many loads (flat float64 arrays) on worker threads.");
+  using flexure::cli::BeamKeywords;
+  m.def(
+      "beam",
+      [](std::optional<double> n,
+         std::optional<double> mu,
+         std::optional<double> alpha2,
+         std::optional<std::string> theta0,
+         std::optional<double> b_over_l,
+         std::optional<std::string> method,
+         std::optional<std::string> boundary,
+         std::optional<double> tip_x,
+         std::optional<double> tip_y,
+         std::optional<std::string> tip_angle,
+         std::optional<double> follower,
+         std::optional<int> shape,
+         std::optional<int> elements,
+         std::optional<int> increments,
+         std::optional<std::string> chain_variant,
+         std::optional<std::string> integrator,
+         std::optional<std::string> stability,
+         bool stable) {
+        BeamKeywords k;
+        k.n = n;
+        k.mu = mu;
+        k.alpha2 = alpha2;
+        k.theta0 = std::move(theta0);
+        k.b_over_l = b_over_l;
+        k.method = std::move(method);
+        k.boundary = std::move(boundary);
+        k.tip_x = tip_x;
+        k.tip_y = tip_y;
+        k.tip_angle = std::move(tip_angle);
+        k.follower = follower;
+        k.shape = shape;
+        k.elements = elements;
+        k.increments = increments;
+        k.chain_variant = std::move(chain_variant);
+        k.integrator = std::move(integrator);
+        k.stability = std::move(stability);
+        k.stable = stable;
+        return flexure::python::beam_keywords(k);
+      },
+      py::kw_only(),
+      py::arg("n") = py::none(),
+      py::arg("mu") = py::none(),
+      py::arg("alpha2") = py::none(),
+      py::arg("theta0") = py::none(),
+      py::arg("b_over_l") = py::none(),
+      py::arg("method") = py::none(),
+      py::arg("boundary") = py::none(),
+      py::arg("tip_x") = py::none(),
+      py::arg("tip_y") = py::none(),
+      py::arg("tip_angle") = py::none(),
+      py::arg("follower") = py::none(),
+      py::arg("shape") = py::none(),
+      py::arg("elements") = py::none(),
+      py::arg("increments") = py::none(),
+      py::arg("chain_variant") = py::none(),
+      py::arg("integrator") = py::none(),
+      py::arg("stability") = py::none(),
+      py::arg("stable") = false,
+      "flexure beam --json for values (no command line): (kind, payload, warnings, exit_code) as "
+      "run().");
+  flexure::python::bind_objects(m);
 }

@@ -3,7 +3,7 @@
 
     python3 scripts/include_graph.py [--edges] [--cycles] [--file-cycles] [--public]
 
-Reads every .h and .cpp of the library folders (solver/, elements/, mechanisms/, io/,
+Reads every .h and .cpp of the library folders (solver/, elements/, beam/, mechanisms/, io/,
 benchmarks/studies/, include/flexure/) and both include styles, "flexure/..." and <flexure/...>.
 A file belongs to the folder it sits in (solver/shooting, mechanisms/cfm, io/parallel, ...).
 
@@ -24,7 +24,7 @@ import re
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-LIBRARY = ["solver", "elements", "mechanisms", "io", "benchmarks/studies", "include/flexure"]
+LIBRARY = ["solver", "elements", "beam", "mechanisms", "io", "benchmarks/studies", "include/flexure"]
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])flexure/([^">]+)[">]')
 # Generated in the build tree, not a source file.
 GENERATED = {"version.h"}

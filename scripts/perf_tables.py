@@ -17,7 +17,9 @@ reference benchmark (REFERENCES below), each row's CPU-time ratio to it measured
 The `startup` table times whole processes: `flexure beam --alpha2 2 --json` against `true` (an
 empty process), the median of alternating runs; the `python_beam` table the vectorised
 flexure.beam (Debian's /usr/bin/python3, the module in BUILD/python) against `flexure sweep beam`
-on the same loads; the `edges` table the commands of issue 27 as a user runs them (a shooting
+on the same loads; the `python_scalar` table one scalar flexure.beam and flexure.solve_beam against
+solve_beam in C++ (beam_stability_bench's BM_SolveBeamAuto) and the command line run in-process; the `sweep_verdict` table the shooting sweep of issue 27 with and without the
+stability verdict (this build and --baseline); the `edges` table the commands of issue 27 as a user runs them (a shooting
 sweep, the guided chain, the chain's element count), with the GSL + Brent yardstick of
 shooting_sweep_bench measured in the same run, and the same commands of an older build given by
 --baseline BUILD (the before column). No number in a generated table is typed by hand.
@@ -199,6 +201,59 @@ def python_beam_table(build, runs, points=1_000_000):
     return "\n".join(lines)
 
 
+PYTHON_SCALAR = """
+import json, sys, time, timeit, flexure
+from flexure import _command
+number, repeat = int(sys.argv[1]), int(sys.argv[2])
+off = flexure.BeamProblem(alpha2=2.0, judge_stability=False)
+on = flexure.BeamProblem(alpha2=2.0)
+calls = {
+    "beam": lambda: flexure.beam(alpha2=2.0),
+    "beam_off": lambda: flexure.beam(alpha2=2.0, stability="off"),
+    "solve_beam": lambda: flexure.solve_beam(on),
+    "solve_beam_off": lambda: flexure.solve_beam(off),
+    # What flexure.beam did before: the command line run in-process.
+    "cli": lambda: _command.run(["beam"], {"alpha2": 2.0}, switches={"stable"}),
+    "cli_off": lambda: _command.run(["beam"], {"alpha2": 2.0, "stability": "off"},
+                                    switches={"stable"}),
+}
+# CPU time of this process (as the C++ column's), not wall time: the machine is shared.
+best = {name: min(timeit.repeat(f, timer=time.process_time, number=number, repeat=repeat))
+        / number
+        for name, f in calls.items()}
+print(json.dumps(best))
+"""
+
+
+def python_scalar_table(build, repetitions, number=2000, repeat=7):
+    """One scalar beam from Python (issue 28: within 20 us) against solve_beam in C++ (Google
+    benchmark BM_SolveBeamAuto of beam_stability_bench), with and without the stability verdict,
+    in one run: the C++ medians, then each Python call by timeit (best of `repeat` x `number`)."""
+    report = run_program(build, "beam_stability_bench", repetitions, None,
+                         only="BM_SolveBeamAuto")
+    cpp = {name: to_seconds(cpu, unit) for name, (cpu, _wall, unit) in medians(report).items()}
+    env = dict(os.environ, PYTHONPATH=os.path.join(build, "python"))
+    out = subprocess.run(["/usr/bin/python3", "-c", PYTHON_SCALAR, str(number), str(repeat)],
+                         capture_output=True, text=True, check=True, env=env).stdout
+    py = json.loads(out)
+    rows = [("with the verdict (default)", "BM_SolveBeamAuto/verdict:1", ""),
+            ("without (`stability=\"off\"`)", "BM_SolveBeamAuto/verdict:0", "_off")]
+    lines = [f"`flexure beam --alpha2 2` (method auto: the elliptic solution) from Python, each "
+             f"call's CPU time by `timeit` (best of {repeat} x {number}); C++ = `solve_beam` "
+             f"(`BM_SolveBeamAuto`, CPU median of {repetitions}); ratio = Python / C++, all in one "
+             f"run:", "",
+             "| stability verdict | C++ `solve_beam` | `flexure.solve_beam(problem)` | "
+             "`flexure.beam(alpha2=2.0)` | the command line in-process (before) | "
+             "ratio `flexure.beam` | ratio before |",
+             "|---|---|---|---|---|---|---|"]
+    for label, bench, suffix in rows:
+        c = cpp[bench]
+        lines.append(f"| {label} | {pretty(c)} | {pretty(py['solve_beam' + suffix])} | "
+                     f"{pretty(py['beam' + suffix])} | {pretty(py['cli' + suffix])} | "
+                     f"{py['beam' + suffix] / c:.3g} | {py['cli' + suffix] / c:.3g} |")
+    return "\n".join(lines)
+
+
 def child_cpu():
     """CPU seconds (user + system) of the finished child processes so far."""
     import resource
@@ -240,17 +295,19 @@ GUIDED = [("3.662974688762594", "12.458088565233949", "-0.42576506449933227"),
           ("4.132632167956947", "14.966530943697453", "0.456109405479435")]
 
 
-def sweep_per_point(build, tmp, runs, threads):
+def sweep_per_point(build, tmp, runs, threads, n="0", extra=()):
     """CPU per point of the issue's sweep (500 points less a 1-point sweep of the same command, so
-    that start-up and the file cancel) and the wall time per point it reports itself."""
+    that start-up and the file cancel) and the wall time per point it reports itself. `n` and
+    `extra` (e.g. --stability off) change the command."""
     flexure = os.path.join(build, "flexure")
+    sweep = SWEEP[:5] + [n] + SWEEP[6:]
     cpu, wall = [], []
     for _ in range(runs):
-        _, full, rc, out = run_timed([flexure] + SWEEP + ["0.5:10:500", "--threads", str(threads),
+        _, full, rc, out = run_timed([flexure] + sweep + ["0.5:10:500", "--threads", str(threads),
                                                           "--out", os.path.join(tmp, "s.h5"),
-                                                          "--json"])
-        _, one, rc1, _ = run_timed([flexure] + SWEEP + ["0.5:10:1", "--threads", "1", "--out",
-                                                        os.path.join(tmp, "1.h5")])
+                                                          "--json"] + list(extra))
+        _, one, rc1, _ = run_timed([flexure] + sweep + ["0.5:10:1", "--threads", "1", "--out",
+                                                        os.path.join(tmp, "1.h5")] + list(extra))
         if rc or rc1:
             sys.exit(f"perf_tables.py: the sweep failed in {build}")
         cpu.append((full - one) / 499)
@@ -324,6 +381,46 @@ def edges_table(build, baseline, runs, baseline_label=None):
     return "\n".join(lines)
 
 
+def sweep_verdict_table(build, baseline, runs, baseline_label=None):
+    """Issue 27's shooting sweep with the stability verdict (the default) and without it
+    (--stability off), n = 0 (the issue's, a beam in tension) and n = 2 (compressed), this build
+    against --baseline (if given), with the GSL + Brent yardstick of shooting_sweep_bench, one run
+    of this script."""
+    import tempfile
+    report = run_program(build, "shooting_sweep_bench", 5, None, "BM_GslBrentReference")
+    cpu, _, unit = medians(report)["BM_GslBrentReference"]
+    reference = to_seconds(cpu, unit)
+    builds = [("this build", build)] + ([("baseline", baseline)] if baseline else [])
+    versions = {label: flexure_version(b) for label, b in builds}
+    if baseline and baseline_label:
+        versions["baseline"] = baseline_label
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for n in ("0", "2"):
+            per_build = []
+            for label, b in builds:
+                on, _ = sweep_per_point(b, tmp, runs, 1, n)
+                off, _ = sweep_per_point(b, tmp, runs, 1, n, ["--stability", "off"])
+                per_build.append((on, off))
+            command = (f"`flexure sweep beam --method shooting --n {n} --alpha2 0.5:10:500 "
+                       f"--threads 1`")
+            rows.append((f"{command}, per point, with the verdict (default)",
+                         [f"{pretty(on)} CPU ({on / reference:.3g}x)" for on, _ in per_build]))
+            rows.append((f"the same with `--stability off`",
+                         [f"{pretty(off)} CPU ({off / reference:.3g}x)" for _, off in per_build]))
+            rows.append(("the verdict's share (difference)",
+                         [f"{pretty(max(on - off, 0.0))} CPU" for on, off in per_build]))
+    header = "| command | " + " | ".join(f"{label} ({versions[label]})" for label, _ in builds)
+    lines = [f"Whole processes, CPU per point = (CPU of the 500-point sweep - CPU of the 1-point "
+             f"sweep) / 499 by the task clock of `perf stat`, medians of {runs} runs; "
+             f"x = CPU per point / `BM_GslBrentReference` ({pretty(reference)}, "
+             f"shooting_sweep_bench in the same run):", "",
+             header + " |", "|---|" + "---|" * len(builds)]
+    for command, cells in rows:
+        lines.append(f"| {command} | " + " | ".join(cells) + " |")
+    return "\n".join(lines)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--build", default=os.path.join(ROOT, "build"))
@@ -346,6 +443,11 @@ def main():
             table = startup_table(args.build, args.startup_runs)
         elif name == "python_beam":
             table = python_beam_table(args.build, args.python_runs)
+        elif name == "python_scalar":
+            table = python_scalar_table(args.build, args.repetitions)
+        elif name == "sweep_verdict":
+            table = sweep_verdict_table(args.build, args.baseline, args.edge_runs,
+                                        args.baseline_label)
         elif name == "edges":
             table = edges_table(args.build, args.baseline, args.edge_runs, args.baseline_label)
         elif args.from_json:

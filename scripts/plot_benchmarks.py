@@ -2,10 +2,11 @@
 """Charts from a `flexure bench` results file (schema: docs/hdf5-schema.md).
 
 Usage (Debian's matplotlib and h5py):
-  /usr/bin/python3 scripts/plot_benchmarks.py FILE.h5 [--out DIR] [--table]
+  /usr/bin/python3 scripts/plot_benchmarks.py FILE.h5 [--out-dir DIR] [--table]
+  /usr/bin/python3 scripts/plot_benchmarks.py FILE.h5 --out FIG.png    # = flexure plot FILE.h5 --out FIG.png
   /usr/bin/python3 scripts/plot_benchmarks.py FILE.h5 --print-prbm-map
 
-Figures written to --out (default: a folder bench_figures beside FILE.h5; the committed figures
+Figures written to --out-dir (default: a folder bench_figures beside FILE.h5; the committed figures
 in docs/figures are replaced only when that folder is named), each path printed:
   bench_pareto.png     accuracy against time per problem, one point per method and resolution
                        (worst relative error over the converged loads against the median time per
@@ -295,16 +296,34 @@ def print_prbm_map(f):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("file")
-    ap.add_argument("--out", default=None,
+    ap.add_argument("--out-dir", default=None,
                     help="folder for the figures (default: bench_figures beside FILE)")
+    ap.add_argument("--out", default=None,
+                    help="one figure file (.png, .pdf, .svg): that of `flexure plot FILE`")
     ap.add_argument("--table", action="store_true")
     ap.add_argument("--print-prbm-map", action="store_true")
     args = ap.parse_args()
+    if args.out:
+        # --out is a figure file, as for every plot script and `flexure plot` (docs/cli.md).
+        if os.path.isdir(args.out):
+            print(f"plot_benchmarks.py: error: --out {args.out} is a folder; --out names one figure "
+                  "file (.png, .pdf, .svg), --out-dir the folder of the figures", file=sys.stderr)
+            return 2
+        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
+                                        "python"))
+        from flexure_plot import PlotError, plot_file
+        try:
+            result = plot_file(args.file, args.out, expect_kind="bench")
+        except PlotError as e:
+            print(f"plot_benchmarks.py: error: {e}", file=sys.stderr)
+            return e.exit_code
+        print(f"wrote {os.path.realpath(result['out'])}")
+        return 0
     with h5py.File(args.file, "r") as f:
         if args.print_prbm_map:
             print_prbm_map(f)
             return 0
-        out = args.out or os.path.join(os.path.dirname(os.path.abspath(args.file)),
+        out = args.out_dir or os.path.join(os.path.dirname(os.path.abspath(args.file)),
                                        "bench_figures")
         os.makedirs(out, exist_ok=True)
         plot_pareto(f, out)

@@ -2,9 +2,10 @@
 """Charts from a `flexure models map` file (schema: docs/hdf5-schema.md "flexure models map").
 
 Usage (Debian's matplotlib and h5py):
-  /usr/bin/python3 scripts/plot_models.py FILE.h5 [--out DIR] [--prefix NAME] [--n N] [--table]
+  /usr/bin/python3 scripts/plot_models.py FILE.h5 [--out-dir DIR] [--prefix NAME] [--n N] [--table]
+  /usr/bin/python3 scripts/plot_models.py FILE.h5 --out FIG.png    # = flexure plot FILE.h5 --out FIG.png
 
-Figures written to --out (default: the folder of FILE.h5), each path printed:
+Figures written to --out-dir (default: the folder of FILE.h5), each path printed:
   <prefix>_error_maps.png   per model, log10 of the tip position error per length over the load
                             plane, with the 1 %, 0.1 % and 0.01 % contours; x marks a point with
                             no answer (status 1 not converged, 2 not representable). The plane is
@@ -156,17 +157,35 @@ def print_table(f):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("file")
-    ap.add_argument("--out", default=None, help="folder for the figures (default: FILE's)")
+    ap.add_argument("--out-dir", default=None, help="folder for the figures (default: FILE's)")
+    ap.add_argument("--out", default=None,
+                    help="one figure file (.png, .pdf, .svg): that of `flexure plot FILE`")
     ap.add_argument("--prefix", default=None, help="figure name prefix (default: FILE's stem)")
     ap.add_argument("--n", type=float, default=0.0, help="the load ratio of the maps' plane")
     ap.add_argument("--table", action="store_true")
     args = ap.parse_args()
+    if args.out:
+        # --out is a figure file, as for every plot script and `flexure plot` (docs/cli.md).
+        if os.path.isdir(args.out):
+            print(f"plot_models.py: error: --out {args.out} is a folder; --out names one figure "
+                  "file (.png, .pdf, .svg), --out-dir the folder of the figures", file=sys.stderr)
+            return 2
+        sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
+                                        "python"))
+        from flexure_plot import PlotError, plot_file
+        try:
+            result = plot_file(args.file, args.out, expect_kind="models-map")
+        except PlotError as e:
+            print(f"plot_models.py: error: {e}", file=sys.stderr)
+            return e.exit_code
+        print(f"wrote {os.path.realpath(result['out'])}")
+        return 0
     with h5py.File(args.file, "r") as f:
         if not str(f.attrs.get("schema", "")).startswith("flexure-models-map"):
             print(f"{args.file}: not a `flexure models map` file (no schema "
                   f"'flexure-models-map')", file=sys.stderr)
             return 2
-        out = args.out or os.path.dirname(os.path.abspath(args.file))
+        out = args.out_dir or os.path.dirname(os.path.abspath(args.file))
         os.makedirs(out, exist_ok=True)
         prefix = args.prefix or os.path.splitext(os.path.basename(args.file))[0]
         maps = os.path.join(out, f"{prefix}_error_maps.png")

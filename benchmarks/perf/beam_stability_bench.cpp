@@ -1,5 +1,5 @@
 // What the stability verdict costs a beam answer (issue 27), for docs/performance.md: one
-// iteration = one solve_beam (benchmarks/studies/beam_problem.h), as `flexure beam`, `sweep beam`
+// iteration = one solve_beam (beam/beam_problem.h), as `flexure beam`, `sweep beam`
 // and the Python module call it, with the verdict (BeamProblem::judge_stability, the default) and
 // without (`--stability off`); and one search for a stable equilibrium (BeamProblem::stable,
 // `--stable`). The yardstick, measured in the same run, is the elliptic solve of Howell's
@@ -13,7 +13,7 @@
 // (second mode, index 1).
 #include <benchmark/benchmark.h>
 
-#include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/beam/beam_problem.h"
 
 namespace flexure {
 namespace {
@@ -42,6 +42,20 @@ BENCHMARK(BM_SolveBeam)
     ->ArgNames({"load", "verdict"})
     ->ArgsProduct({{0, 1, 2, 3, 4}, {0, 1}})
     ->Unit(benchmark::kMicrosecond);
+
+// The scalar call of the Python module's docs/performance.md table `python_scalar`: `flexure
+// beam --alpha2 2` as solve_beam sees it (method auto, which takes the elliptic solution here),
+// with the verdict (the default) and without.
+void BM_SolveBeamAuto(benchmark::State& state) {
+  BeamProblem p;
+  p.value = 2.0;
+  p.judge_stability = state.range(0) != 0;
+  for (auto _ : state) {
+    const BeamSolution s = solve_beam(BeamMethod::kAuto, p);
+    benchmark::DoNotOptimize(s.tip.theta0);
+  }
+}
+BENCHMARK(BM_SolveBeamAuto)->ArgNames({"verdict"})->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 void BM_StableSearch(benchmark::State& state) {
   BeamProblem p;

@@ -10,9 +10,11 @@
 //                            count used to take (the sweep before issue 27)
 // Other sweeps: /case:1 a compressive n = 2 over alpha2 0.5:10 (the load path folds), /case:2 an
 // end-moment sweep mu 0:8 at alpha2 = 2, n = 1 (off the ray: every point from zero load).
+// /verdict:1 with the stability verdict of every point (the default of `sweep beam`), /verdict:0
+// without it (`--stability off`).
 #include <benchmark/benchmark.h>
 
-#include "flexure/benchmarks/studies/beam_sweep_solver.h"
+#include "flexure/beam/beam_sweep_solver.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 #include "gsl_brent_reference.h"
 
@@ -42,7 +44,8 @@ BeamSweepGrid sweep_case(long which) {
 }
 
 void BM_ShootingSweep(benchmark::State& state) {
-  const BeamSweepGrid grid = sweep_case(state.range(1));
+  BeamSweepGrid grid = sweep_case(state.range(1));
+  grid.base.judge_stability = state.range(2) != 0;
   const bool warm = state.range(0) != 0;
   const BeamSweepSolver solver(grid, warm ? BeamMethod::kShooting : BeamMethod::kShooting);
   const long count = grid.size();
@@ -64,14 +67,15 @@ void BM_ShootingSweep(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_ShootingSweep)
-    ->ArgsProduct({{1, 0}, {0, 1, 2}})
-    ->ArgNames({"warm", "case"})
+    ->ArgsProduct({{1, 0}, {0, 1, 2}, {1, 0}})
+    ->ArgNames({"warm", "case", "verdict"})
     ->Unit(benchmark::kMicrosecond);
 
 // The sweep before issue 27: each point from zero load with a 401-point shape for the inflection
 // count (the solver's result converted as solve_beam does).
 void BM_ShootingSweepShape401(benchmark::State& state) {
-  const BeamSweepGrid grid = sweep_case(0);
+  BeamSweepGrid grid = sweep_case(0);
+  grid.base.judge_stability = false;
   const long count = grid.size();
   long i = 0;
   for (auto _ : state) {

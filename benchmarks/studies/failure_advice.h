@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "flexure/benchmarks/studies/beam_method.h"
-#include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/beam/beam_method.h"
+#include "flexure/beam/beam_problem.h"
 
 namespace flexure {
 

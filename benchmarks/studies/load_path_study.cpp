@@ -149,11 +149,7 @@ PathTable shooting_table(const PathRequest& r) {
   for (const PathPoint& p : path.points) {
     t.stability.push_back(
         r.judge_stability
-            ? path_point_stability(r.chain,
-                                   p,
-                                   path_held_coordinates(r.chain, r.control, path, p.stage),
-                                   options,
-                                   r.stability)
+            ? path_point_stability(r.chain, p, p.held, options, r.stability)
             : not_checked_stability("the verdict was switched off (--stability off)"));
   }
   for (const SpecialPoint& sp : path.special_points) t.special_points.push_back(to_table(sp, u));

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <map>
 
-#include "flexure/benchmarks/studies/method_selector.h"
+#include "flexure/beam/method_selector.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/solver/common/errors.h"

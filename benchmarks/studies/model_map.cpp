@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/beam/beam_problem.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::studies {

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/benchmarks/studies/beam_method.h"
+#include "flexure/beam/beam_method.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 
 namespace flexure::studies {

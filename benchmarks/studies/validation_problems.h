@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/benchmarks/studies/beam_problem.h"
+#include "flexure/beam/beam_problem.h"
 
 namespace flexure {
 

@@ -38,12 +38,12 @@
 #include "flexure/elements/initially_curved_cantilever.h"
 #include "flexure/elements/linear_beam.h"
 #include "flexure/elements/pinned_pinned_segment.h"
+#include "flexure/elements/prbm3r.h"
+#include "flexure/elements/prbm3r_derivation.h"
 #include "flexure/elements/prbm_cantilever.h"
 #include "flexure/elements/prbm_derivation.h"
 #include "flexure/elements/prbm_element.h"
 #include "flexure/elements/prbm_tables.h"
-#include "flexure/elements/prbm3r.h"
-#include "flexure/elements/prbm3r_derivation.h"
 #include "flexure/elements/small_length_flexural_pivot.h"
 
 // Mechanisms: designs, PRBM and exact models, constant-force mechanisms, dynamics.
@@ -73,12 +73,11 @@
 #include "flexure/io/mechanism_drawing.h"
 #include "flexure/io/mechanism_toml.h"
 
-// Studies: beam problems by any method, method selection for `--method auto`, the reference
-// problems of `flexure validate`.
-#include "flexure/benchmarks/studies/beam_method.h"
-#include "flexure/benchmarks/studies/beam_problem.h"
+// The beam API (<flexure/beam.h>: beam problems by any method, the method choice of `--method
+// auto`, physical beams and chains), the PRBM-vs-exact comparison; studies: the mechanisms' method
+// choice and the reference problems of `flexure validate`.
+#include "flexure/beam.h"
+#include "flexure/beam/prbm_comparison.h"
 #include "flexure/benchmarks/studies/mechanism_method.h"
-#include "flexure/benchmarks/studies/method_selector.h"
-#include "flexure/benchmarks/studies/prbm_comparison.h"
 #include "flexure/benchmarks/studies/validation_checks.h"
 #include "flexure/benchmarks/studies/validation_problems.h"

@@ -15,13 +15,31 @@ from . import _core, design, map, mechanism, prbm
 from ._beam import beam
 from ._command import FlexureWarning, InvalidInput, NoConvergence, run as _run
 from ._read import read
+# The library's own types (python/objects.cpp; docs/python.md "Objects"): under their C++ names,
+# constructible with keyword arguments; results carry termination, message and warnings.
+from ._core import (BeamMethod, BeamProblem, BeamSolution, ChainAlgorithmSolver, ChainPose,
+                    ChainResult, ChainVariant, EllipticBranch, EllipticResult, EllipticSolver,
+                    EndCondition, EndLoad, FlexibleSegment, Integrator, Material, NodeLoad,
+                    PhysicalBeamSolution, PhysicalChain, PhysicalResults, Reaction, RigidSegment,
+                    Section, SegmentChain, SegmentProperties, Shape, ShootingPath, ShootingResult,
+                    ShootingSolver, ShootingStrategy, SolveStatus, Stability, StabilityKind,
+                    Termination, TipLoad, TipPose, TipPrescription, WarningKind, solve_beam,
+                    solve_physical_chain)
 
 __version__ = _core.version
 git_commit = _core.git_commit
 
 __all__ = ["beam", "path", "sweep", "cfm", "dynamics", "bench", "validate", "read", "prbm",
            "mechanism", "design", "map", "materials", "InvalidInput", "NoConvergence",
-           "FlexureWarning"]
+           "FlexureWarning",
+           "BeamMethod", "BeamProblem", "BeamSolution", "ChainAlgorithmSolver", "ChainPose",
+           "ChainResult", "ChainVariant", "EllipticBranch", "EllipticResult", "EllipticSolver",
+           "EndCondition", "EndLoad", "FlexibleSegment", "Integrator", "Material", "NodeLoad",
+           "PhysicalBeamSolution", "PhysicalChain", "PhysicalResults", "Reaction", "RigidSegment",
+           "Section", "SegmentChain", "SegmentProperties", "Shape", "ShootingPath",
+           "ShootingResult", "ShootingSolver", "ShootingStrategy", "SolveStatus", "Stability",
+           "StabilityKind", "Termination", "TipLoad", "TipPose", "TipPrescription", "WarningKind",
+           "solve_beam", "solve_physical_chain"]
 
 
 def materials(name=None):

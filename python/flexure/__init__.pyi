@@ -163,3 +163,47 @@ def bench(
 ) -> Result: ...
 def validate(*, out: Path | None = ...) -> Result: ...
 def read(path: Path) -> dict[str, Any]: ...
+
+# The library's own types (python/objects.cpp; docs/python.md "Objects"). Their attributes are
+# those of the C++ types of the same names; the stubs name the classes only.
+BeamMethod: Any
+BeamProblem: Any
+BeamSolution: Any
+ChainAlgorithmSolver: Any
+ChainPose: Any
+ChainResult: Any
+ChainVariant: Any
+EllipticBranch: Any
+EllipticResult: Any
+EllipticSolver: Any
+EndCondition: Any
+EndLoad: Any
+FlexibleSegment: Any
+Integrator: Any
+Material: Any
+NodeLoad: Any
+PhysicalBeamSolution: Any
+PhysicalChain: Any
+PhysicalResults: Any
+Reaction: Any
+RigidSegment: Any
+Section: Any
+SegmentChain: Any
+SegmentProperties: Any
+Shape: Any
+ShootingPath: Any
+ShootingResult: Any
+ShootingSolver: Any
+ShootingStrategy: Any
+SolveStatus: Any
+Stability: Any
+StabilityKind: Any
+Termination: Any
+TipLoad: Any
+TipPose: Any
+TipPrescription: Any
+WarningKind: Any
+
+def solve_beam(problem: Any, method: Any = ...) -> Any: ...
+def solve_physical_chain(chain: Any, method: Any = ..., tolerance: float = ...,
+                         shape_points: int = ...) -> Any: ...

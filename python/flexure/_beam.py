@@ -1,4 +1,5 @@
-"""flexure.beam: one load through the tool's `beam` command, or many loads at once."""
+"""flexure.beam: one load by the tool's `beam` command (without a command line where the keywords
+allow), or many loads at once."""
 import os
 
 from . import _command, _core
@@ -10,12 +11,17 @@ _GIVEN = ("alpha2", "theta0", "b_over_l")
 _PLACEHOLDER = {"alpha2": 1.0, "theta0": 0.5, "b_over_l": 0.1}
 
 
+_NOT_ARRAYS = (type(None), float, int, str, bool)
+
+
 def _is_array(value):
+    if type(value) in _NOT_ARRAYS:  # the scalar call, without asking numpy
+        return False
     try:
         import numpy
     except ImportError:
         return False
-    return value is not None and not isinstance(value, str) and numpy.ndim(value) > 0
+    return not isinstance(value, str) and numpy.ndim(value) > 0
 
 
 def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=None, tol=None,
@@ -65,7 +71,8 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
       wide strip with nu Poisson's ratio (default the material's; docs/plate-modulus.md: keys
       modulus_rule, effective_E, modulus)
 
-    Returns the dict `flexure beam --json` prints: method, method_reason, expected_error, n,
+    Returns the dict `flexure beam --json` prints: method, method_reason, expected_error,
+    expected_error_per_length (the ladder's models on the map, docs/models.md), n,
     alpha2, mu, a_over_l, b_over_l, theta0 (rad), iterations, converged, branch,
     inflection_points, root_moment, limit_points, target_residual, first_limit_load_factor,
     family, message, termination, boundary, reactions {Fx, Fy, M}, the stability verdict
@@ -85,6 +92,30 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
       >>> r["theta0"].shape, bool(r["converged"].all())
       ((2, 10), True)
     """
+    if (threads is None and tol is None and chain is None and constants is None
+            and slenderness is None and length is None and E is None and I is None
+            and width is None and thickness is None and Fx is None and Fy is None and M is None
+            and yield_strength is None and material is None and cycle is None
+            and surface_finish is None and reliability is None and Kf is None
+            and fatigue_factor is None and ultimate_strength is None
+            and endurance_limit is None and not _is_array(n) and not _is_array(alpha2)
+            and not _is_array(mu) and not _is_array(theta0) and not _is_array(b_over_l)):
+        values = _fast_values((("n", n), ("alpha2", alpha2), ("mu", mu), ("theta0", theta0),
+                               ("b_over_l", b_over_l), ("method", method), ("shape", shape),
+                               ("boundary", boundary), ("tip_x", tip_x), ("tip_y", tip_y),
+                               ("tip_angle", tip_angle), ("follower", follower),
+                               ("elements", elements), ("increments", increments),
+                               ("chain_variant", chain_variant), ("integrator", integrator),
+                               ("stable", stable), ("stability", stability)))
+        if values is not None:
+            # One load by the command's own checks and JSON object, without a command line
+            # (cli::run_beam_keywords): the same dict, messages and warnings.
+            kind, payload, texts, _ = _core.beam(**values)
+            if texts:
+                _command.emit(texts, stacklevel=2)
+            if kind != "ok":
+                _command.raise_for(kind, payload)
+            return payload
     loads = {"n": n, "alpha2": alpha2, "mu": mu, "theta0": theta0, "b_over_l": b_over_l}
     options = {"method": method, "tol": tol, "shape": shape, "boundary": boundary,
                "tip_x": tip_x, "tip_y": tip_y, "tip_angle": tip_angle, "follower": follower,
@@ -103,6 +134,61 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
     if not any(_is_array(loads[k]) for k in _VECTOR):
         return _command.run(["beam"], {**loads, **options}, switches={"stable"})
     return _beam_many(loads, options, threads or os.cpu_count() or 1)
+
+
+# The keywords _core.beam takes (the rest go through the command line), by kind of value.
+_FAST_FLOAT = frozenset(("n", "mu", "alpha2", "b_over_l", "tip_x", "tip_y", "follower"))
+_FAST_ANGLE = frozenset(("theta0", "tip_angle"))
+_FAST_INT = frozenset(("shape", "elements", "increments"))
+# The names the command's parser accepts (case-insensitively), as it stores them.
+_FAST_NAMES = {
+    "method": frozenset(("auto", "elliptic", "shooting", "chain", "prbm", "linear", "prbm3r",
+                         "bcm", "cbcm")),
+    "boundary": frozenset(("free", "guided", "pinned", "slider", "fixed")),
+    "integrator": frozenset(("rk8pd", "cvodes", "dormand-prince")),
+    "chain_variant": frozenset(("howell", "corrected")),
+    "stability": frozenset(("on", "off")),
+}
+
+
+def _fast_values(pairs):
+    """The keyword values for _core.beam from (keyword, value) pairs, or None where only the
+    command line gives the tool's exact answer (a value of another type, a name the parser would
+    refuse, a switch not a bool): that call then runs the command, whose parser words the
+    refusal."""
+    values = {}
+    for key, value in pairs:
+        if value is None:
+            continue
+        kind = type(value)
+        if key in _FAST_FLOAT:
+            if kind is int and -2**53 <= value <= 2**53:
+                value = float(value)
+            elif not isinstance(value, float):
+                return None
+            values[key] = float(value)
+        elif key in _FAST_ANGLE:
+            if kind is str:
+                values[key] = value
+            elif kind is int or isinstance(value, float):
+                values[key] = _command.flag_value(key, value)
+            else:
+                return None
+        elif key in _FAST_INT:
+            if kind is not int or not -2**31 <= value < 2**31:
+                return None
+            values[key] = value
+        elif key in _FAST_NAMES:
+            if kind is not str or value.lower() not in _FAST_NAMES[key]:
+                return None
+            values[key] = value.lower()
+        elif key == "stable":
+            if kind is not bool:
+                return None
+            values[key] = value
+        else:
+            return None
+    return values
 
 
 def _beam_many(loads, options, threads):

@@ -285,64 +285,6 @@ Grid assemble(const SampledChain& c, int stride) {
   return g;
 }
 
-// Independent combinations of the constraint rows: the eigenvectors of their Gram matrix (in the
-// lumped L2 metric, so |row|^2 ~ int g^2 ds over the movable part) whose eigenvalue exceeds
-// 1e-20 of the chain's length, i.e. whose rms over the chain exceeds 1e-10. A vanishing row (x
-// prescribed on a straight chain along x: int sin(theta) eta = 0 for every eta) constrains
-// nothing at first order; its reaction still acts through N.
-std::vector<std::array<double, 2>> independent_combinations(const Grid& g, double total) {
-  const std::size_t m = g.raw_rows.size();
-  std::vector<std::array<double, 2>> keep;
-  if (m == 0 || g.weight.empty()) return keep;
-  double G[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
-  for (std::size_t a = 0; a < m; ++a) {
-    for (std::size_t b = 0; b < m; ++b) {
-      for (std::size_t i = 0; i < g.weight.size(); ++i) {
-        if (g.weight[i] > 0.0) G[a][b] += g.raw_rows[a][i] * g.raw_rows[b][i] / g.weight[i];
-      }
-    }
-  }
-  const double threshold = 1e-20 * total;
-  if (m == 1) {
-    if (G[0][0] > threshold) keep.push_back({1.0 / std::sqrt(G[0][0]), 0.0});
-    return keep;
-  }
-  // Symmetric 2 x 2 eigenvectors.
-  const double mean = 0.5 * (G[0][0] + G[1][1]);
-  const double radius = std::hypot(0.5 * (G[0][0] - G[1][1]), G[0][1]);
-  for (const double mu : {mean + radius, mean - radius}) {
-    if (!(mu > threshold)) continue;
-    // (G - mu I) v = 0: v = (G01, mu - G00) or (mu - G11, G01), the better conditioned.
-    double vx = G[0][1], vy = mu - G[0][0];
-    if (std::hypot(mu - G[1][1], G[0][1]) > std::hypot(vx, vy)) {
-      vx = mu - G[1][1];
-      vy = G[0][1];
-    }
-    const double norm = std::hypot(vx, vy);
-    if (!(norm > 0.0)) {
-      vx = keep.empty() ? 1.0 : 0.0;
-      vy = keep.empty() ? 0.0 : 1.0;
-    } else {
-      vx /= norm;
-      vy /= norm;
-    }
-    const double scale = 1.0 / std::sqrt(mu);
-    keep.push_back({vx * scale, vy * scale});
-  }
-  return keep;
-}
-
-void apply_constraints(Grid& g, const std::vector<std::array<double, 2>>& combinations) {
-  g.q.constraints.clear();
-  for (const std::array<double, 2>& v : combinations) {
-    std::vector<double> row(g.q.axial.size(), 0.0);
-    for (std::size_t a = 0; a < g.raw_rows.size(); ++a) {
-      for (std::size_t i = 0; i < row.size(); ++i) row[i] += v[a] * g.raw_rows[a][i];
-    }
-    g.q.constraints.push_back(std::move(row));
-  }
-}
-
 }  // namespace
 
 void StabilityOptions::validate() const {
@@ -532,8 +474,9 @@ Grids make_grids(const SegmentChain& chain,
   for (int level = 0; level < sampled.levels; ++level) {
     grids.levels.push_back(assemble(sampled, 1 << level));
   }
-  const auto combinations = independent_combinations(grids.levels.front(), sampled.total);
-  for (Grid& grid : grids.levels) apply_constraints(grid, combinations);
+  const auto combinations = independent_row_combinations(
+      grids.levels.front().raw_rows, grids.levels.front().weight, sampled.total);
+  for (Grid& grid : grids.levels) grid.q.constraints = combine_rows(grid.raw_rows, combinations);
   return grids;
 }
 
@@ -699,9 +642,9 @@ DiscreteSecondVariation discrete_second_variation(const SegmentChain& chain,
         stride));
   }
   Grid fine = assemble(sampled, 1);
-  const auto combinations = independent_combinations(fine, sampled.total);
+  const auto combinations = independent_row_combinations(fine.raw_rows, fine.weight, sampled.total);
   Grid grid = stride == 1 ? std::move(fine) : assemble(sampled, stride);
-  apply_constraints(grid, combinations);
+  grid.q.constraints = combine_rows(grid.raw_rows, combinations);
   return grid.q;
 }
 

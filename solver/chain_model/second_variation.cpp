@@ -351,4 +351,65 @@ std::vector<double> constrained_eigenvector(const DiscreteSecondVariation& q, do
       lambda));
 }
 
+std::vector<std::array<double, 2>> independent_row_combinations(
+    const std::vector<std::vector<double>>& raw_rows,
+    const std::vector<double>& weight,
+    double total) {
+  const std::size_t m = raw_rows.size();
+  std::vector<std::array<double, 2>> keep;
+  if (m == 0 || weight.empty()) return keep;
+  if (m > 2) throw InvalidInput("at most two tip-coordinate constraint rows (x and y)");
+  double G[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
+  for (std::size_t a = 0; a < m; ++a) {
+    for (std::size_t b = 0; b < m; ++b) {
+      for (std::size_t i = 0; i < weight.size(); ++i) {
+        if (weight[i] > 0.0) G[a][b] += raw_rows[a][i] * raw_rows[b][i] / weight[i];
+      }
+    }
+  }
+  const double threshold = 1e-20 * total;
+  if (m == 1) {
+    if (G[0][0] > threshold) keep.push_back({1.0 / std::sqrt(G[0][0]), 0.0});
+    return keep;
+  }
+  // Symmetric 2 x 2 eigenvectors.
+  const double mean = 0.5 * (G[0][0] + G[1][1]);
+  const double radius = std::hypot(0.5 * (G[0][0] - G[1][1]), G[0][1]);
+  for (const double mu : {mean + radius, mean - radius}) {
+    if (!(mu > threshold)) continue;
+    // (G - mu I) v = 0: v = (G01, mu - G00) or (mu - G11, G01), the better conditioned.
+    double vx = G[0][1], vy = mu - G[0][0];
+    if (std::hypot(mu - G[1][1], G[0][1]) > std::hypot(vx, vy)) {
+      vx = mu - G[1][1];
+      vy = G[0][1];
+    }
+    const double norm = std::hypot(vx, vy);
+    if (!(norm > 0.0)) {
+      vx = keep.empty() ? 1.0 : 0.0;
+      vy = keep.empty() ? 0.0 : 1.0;
+    } else {
+      vx /= norm;
+      vy /= norm;
+    }
+    const double scale = 1.0 / std::sqrt(mu);
+    keep.push_back({vx * scale, vy * scale});
+  }
+  return keep;
+}
+
+std::vector<std::vector<double>> combine_rows(
+    const std::vector<std::vector<double>>& raw_rows,
+    const std::vector<std::array<double, 2>>& combinations) {
+  std::vector<std::vector<double>> rows;
+  const std::size_t n = raw_rows.empty() ? 0 : raw_rows.front().size();
+  for (const std::array<double, 2>& v : combinations) {
+    std::vector<double> row(n, 0.0);
+    for (std::size_t a = 0; a < raw_rows.size(); ++a) {
+      for (std::size_t i = 0; i < n; ++i) row[i] += v[a] * raw_rows[a][i];
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
 }  // namespace flexure

@@ -26,6 +26,7 @@
 // det [A C^T; C 0], a polynomial in sigma with only real roots (the constrained eigenvalues), whose
 // logarithmic derivative is tr(A^{-1} W) + tr(S^{-1} dS/dsigma), dS/dsigma = -X^T W X,
 // X = A^{-1} C^T, both O(n), converges quadratically once the bracket holds that one root alone.
+#include <array>
 #include <vector>
 
 namespace flexure {
@@ -95,5 +96,23 @@ bool solve_bordered(const DiscreteSecondVariation& q,
 // equilibrium (solver/shooting/stable_equilibrium.h). Throws NoConvergence when the iteration does
 // not settle (a multiple eigenvalue, or lambda not an eigenvalue), InvalidInput for lambda >= 1.
 std::vector<double> constrained_eigenvector(const DiscreteSecondVariation& q, double lambda);
+
+// Independent combinations of a grid's linearised tip-coordinate rows (at most 2 raw rows:
+// int sin(theta) eta ds if x is held, int cos(theta) eta ds if y is), as coefficient pairs over
+// the raw rows: the eigenvectors of their Gram matrix in the lumped L2 metric (weight = the lumped
+// int eta^2 ds at each dof, so |row|^2 ~ int g^2 ds over the movable part) scaled to unit norm,
+// keeping those whose eigenvalue exceeds 1e-20 of the length `total`, i.e. whose rms over the
+// chain exceeds 1e-10. A vanishing row (x held on a straight chain along x: int sin(theta) eta = 0
+// for every eta) constrains nothing at first order; its reaction still acts through N. Used by the
+// chain's and the mechanism's assembly (equilibrium_stability.cpp, mechanism_second_variation.cpp).
+std::vector<std::array<double, 2>> independent_row_combinations(
+    const std::vector<std::vector<double>>& raw_rows,
+    const std::vector<double>& weight,
+    double total);
+
+// The constraint rows C of DiscreteSecondVariation: each combination applied to the raw rows.
+std::vector<std::vector<double>> combine_rows(
+    const std::vector<std::vector<double>>& raw_rows,
+    const std::vector<std::array<double, 2>>& combinations);
 
 }  // namespace flexure

@@ -188,6 +188,9 @@ class PathTracer {
   // delta on either side (their error stays small, the interpolant's is O(delta^4)), evaluated.
   std::optional<Corrected> bridge(const Corrected& best, double ds);
   std::optional<std::pair<double, Corrected>> locate_fold(double ds, const Corrected& end);
+  // The other branch's tangent at the bifurcation `b` from the algebraic bifurcation equation
+  // (b.t_other when it cannot be formed).
+  Eigen::VectorXd branch_tangent(const Bifurcation& b, double local_step);
   // Leaves the bifurcation `b` onto its other branch; false when no corrector lands there.
   // `local_step`: the step that passed it (the path's own scale there).
   bool switch_branch(const Bifurcation& b, int index_of_special, double local_step);
@@ -208,6 +211,9 @@ class PathTracer {
   int orientation_ = 0;
   double det_ = 0.0;
   int branch_ = 0;
+  double min_step_ = 0.0;             // o_.min_step, lowered after a branch switch (run())
+  double switch_distance_ = 0.0;      // distance of the first point on a switched branch from the
+                                      // bifurcation (scaled)
   double arclength_ = 0.0;            // scaled arclength of the current point
   double quiet_until_ = 0.0;          // no ordinary samples recorded before this arclength
   std::vector<double> arclength_of_;  // of each recorded point
@@ -229,6 +235,7 @@ PathPoint PathTracer::make_point(const ShootingEvaluation& eval,
   p.iterations = iterations;
   p.status = status;
   p.branch = branch_;
+  p.held = problem_.mask();
   if (o_.shape_points > 1) {
     const double total = problem_.chain().total_length();
     std::vector<double> s(o_.shape_points);
@@ -526,6 +533,70 @@ std::optional<Corrected> PathTracer::bridge(const Corrected& best, double ds) {
   return out;
 }
 
+Eigen::VectorXd PathTracer::branch_tangent(const Bifurcation& b, double local_step) {
+  // At a simple bifurcation point u* the tangents of both branches lie in the 2-d null space of
+  // A = [J S, g_lambda], spanned here by the path's own tangent p (b.t_along) and q (b.t_other,
+  // orthogonal to p). A branch through u* with tangent t = alpha p + beta q satisfies, at second
+  // order, the algebraic bifurcation equation psi^T D2G[t, t] = 0 with psi the left null vector
+  // of A (Keller, "Numerical solution of bifurcation and nonlinear eigenvalue problems", 1977,
+  // §5; Govaerts 2000, §5.2): a quadratic form Q = [[a, b], [b, c]] in (alpha, beta) whose two
+  // isotropic directions are the two tangents. q itself is a tangent only when the branches
+  // cross at right angles in the scaled variables; on the clamped-clamped beam's second stage
+  // they meet at 70 deg, so a step along -q leaves the other half-branch at an angle, lands with
+  // lambda the wrong way, and the path stopped there (issue 27). D2G[v, w] = d/de A(u* + e v) w by
+  // central differences of the sensitivity Jacobian.
+  const Eigen::VectorXd& p = b.t_along;
+  const Eigen::VectorXd& q = b.t_other;
+  Eigen::MatrixXd A(nz_, nz_ + 1);
+  A.leftCols(nz_) = b.at.nw.last.jacobian * scale_.asDiagonal();
+  A.col(nz_) = b.at.nw.last.d_lambda;
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullU);
+  const Eigen::VectorXd psi = svd.matrixU().col(nz_ - 1);
+  const Eigen::VectorXd u_star = scaled(b.at.z, b.at.lambda);
+  // The step: small against the unknowns' own scale (1 in scaled variables), large against the
+  // integration noise (rtol 1e-12) of the Jacobian it differences.
+  const double e = std::clamp(1e-3 * local_step, 1e-10, 1e-5);
+  auto jacobian_at = [&](const Eigen::VectorXd& u, Eigen::MatrixXd& out) {
+    ShootingEvaluation ev;
+    if (!problem_.evaluate(u.head(nz_).cwiseProduct(scale_), u[nz_], true, true, integrator_, ev)) {
+      return false;
+    }
+    out.resize(nz_, nz_ + 1);
+    out.leftCols(nz_) = ev.jacobian * scale_.asDiagonal();
+    out.col(nz_) = ev.d_lambda;
+    return true;
+  };
+  Eigen::MatrixXd pp, pm, qp, qm;
+  if (!jacobian_at(u_star + e * p, pp) || !jacobian_at(u_star - e * p, pm) ||
+      !jacobian_at(u_star + e * q, qp) || !jacobian_at(u_star - e * q, qm)) {
+    return q;
+  }
+  const Eigen::MatrixXd Dp = (pp - pm) / (2.0 * e), Dq = (qp - qm) / (2.0 * e);
+  Eigen::Matrix2d Q;
+  Q(0, 0) = psi.dot(Dp * p);
+  Q(0, 1) = Q(1, 0) = 0.5 * (psi.dot(Dp * q) + psi.dot(Dq * p));
+  Q(1, 1) = psi.dot(Dq * q);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(Q);
+  const double lo = eig.eigenvalues()[0], hi = eig.eigenvalues()[1];
+  // A simple bifurcation has an indefinite Q (two real tangents); anything else: keep q.
+  if (!(lo < 0.0 && hi > 0.0) || !(std::min(-lo, hi) > 1e-6 * std::max(-lo, hi))) return q;
+  const Eigen::Vector2d e0 = eig.eigenvectors().col(0), e1 = eig.eigenvectors().col(1);
+  // The two isotropic directions; the path's own is the one nearer (1, 0).
+  Eigen::Vector2d r1 = std::sqrt(hi) * e0 + std::sqrt(-lo) * e1;
+  Eigen::Vector2d r2 = std::sqrt(hi) * e0 - std::sqrt(-lo) * e1;
+  r1.normalize();
+  r2.normalize();
+  const bool first_is_own = std::abs(r1[0]) >= std::abs(r2[0]);
+  const Eigen::Vector2d& own = first_is_own ? r1 : r2;
+  const Eigen::Vector2d& r = first_is_own ? r2 : r1;
+  // Self-check: the path's own tangent p must solve the equation too (within 0.2 rad here);
+  // otherwise the differences did not resolve D2G (keep q).
+  if (std::abs(own[1]) > 0.2 * std::abs(own[0])) return q;
+  Eigen::VectorXd t = r[0] * p + r[1] * q;
+  t.normalize();
+  return t;
+}
+
 bool PathTracer::switch_branch(const Bifurcation& b, int index_of_special, double local_step) {
   const Eigen::VectorXd u_star = scaled(b.at.z, b.at.lambda);
   // Which way the new branch goes: the tip's y, or its angle when the end holds y, or the clamp's
@@ -542,10 +613,11 @@ bool PathTracer::switch_branch(const Bifurcation& b, int index_of_special, doubl
   // its bifurcation in steps of 1e-6); a step that lands nowhere is retried a quarter as long.
   std::optional<Corrected> chosen;
   Eigen::VectorXd direction;
+  const Eigen::VectorXd other = branch_tangent(b, local_step);
   double h = std::min(o_.branch_switch_step, 4.0 * local_step);
   for (int attempt = 0; attempt < 12 && !chosen; ++attempt, h *= 0.25) {
     for (const double sign : {1.0, -1.0}) {
-      const Eigen::VectorXd d = sign * b.t_other;
+      const Eigen::VectorXd d = sign * other;
       Corrected c = correct(u_star, d, h);
       if (!c.ok || c.moved > o_.max_predictor_distance * h) continue;
       if ((side_of(c) > 0.0) == (o_.branch_side > 0)) {
@@ -560,6 +632,7 @@ bool PathTracer::switch_branch(const Bifurcation& b, int index_of_special, doubl
   // the tangent with it): to the noise floor first.
   chosen = polish(*chosen);
   h = (scaled(chosen->z, chosen->lambda) - u_star).norm();
+  switch_distance_ = h;
   // Now on the other branch: continue away from the bifurcation, oriented by continuity.
   ++branch_;
   const Tangent tn = tangent_at(chosen->nw.last, scale_, direction, 0);
@@ -582,6 +655,7 @@ bool PathTracer::switch_branch(const Bifurcation& b, int index_of_special, doubl
 }
 
 LoadPath PathTracer::run(const Eigen::VectorXd* start) {
+  min_step_ = o_.min_step;
   z_ = start != nullptr ? *start : problem_.unloaded_unknowns();
   lambda_ = 0.0;
   path_.z = z_;
@@ -639,7 +713,7 @@ LoadPath PathTracer::run(const Eigen::VectorXd* start) {
   auto reject = [&](double shorter) {
     ++path_.rejected_steps;
     ds = shorter;
-    return ds >= o_.min_step;
+    return ds >= min_step_;
   };
   while (attempts < o_.max_steps) {
     ++attempts;
@@ -775,7 +849,12 @@ LoadPath PathTracer::run(const Eigen::VectorXd* start) {
           path_.lambda = lambda_;
           path_.tip = ChainPose{eval_.tip.x, eval_.tip.y, eval_.tip.theta};
           path_.tip_state = eval_.tip;
-          ds = std::min(ds, 2.0 * o_.branch_switch_step);
+          // The new branch's own scale is the distance of its first point: the first step on it
+          // is at most a few times that, and the path gives up only at steps 1e-3 of it (a
+          // pitchfork on the clamped-clamped beam's second stage bends to the load factor within
+          // 1e-7 of the bifurcation, where min_step = 1e-7 stopped it: issue 27).
+          ds = std::min({ds, 2.0 * o_.branch_switch_step, 4.0 * switch_distance_});
+          min_step_ = std::min(min_step_, 1e-3 * switch_distance_);
           continue;
         }
         path_.message = fmt::format(

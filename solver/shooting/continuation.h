@@ -61,8 +61,9 @@ struct ContinuationOptions {
                                       // singular value of [dg/dz S, dg/dlambda] below this times
                                       // its size over the step (else: a branch jump)
   // Branch switching: at the switch_at_bifurcation-th bifurcation (counted from 1 along the path;
-  // 0 = never) the path leaves onto the other branch through it, along the null direction of
-  // [dg/dz S, dg/dlambda] orthogonal to the path's tangent, by a first step of branch_switch_step;
+  // 0 = never) the path leaves onto the other branch through it, along that branch's tangent
+  // (the algebraic bifurcation equation in the null space of [dg/dz S, dg/dlambda],
+  // docs/theory-shooting.md "Branch switching"), by a first step of branch_switch_step;
   // branch_side +1 takes the half-branch on which the tip moves to +y (to +theta when the end holds
   // y, the clamp's moment m(0) grows when it holds both), -1 the other.
   int switch_at_bifurcation = 0;
@@ -88,6 +89,12 @@ struct PathPoint {
   PathStatus status = PathStatus::kAccepted;
   int stage = 1;   // > 1 in later stages of a staged path (shooting_solver.h)
   int branch = 0;  // 0 on the path from zero load; k after switching at the k-th bifurcation
+  // The tip coordinates the path holds at this point (its stage's ShootingProblem::mask()): the
+  // end condition's under proportional loading, without the one released along the tangent in
+  // the first stage of a straight chain with both end coordinates prescribed, with the
+  // controlled coordinate in the moving stage of a displacement-controlled path. The stability
+  // verdict of the point takes them as constraints (path_point_stability.h).
+  PrescribedMask held;
   std::vector<ShapePoint> shape;  // ContinuationOptions::shape_points > 1: the deflected shape
   std::vector<double> moment;     // bending moment at each shape point (statics, same units)
 };

@@ -36,9 +36,13 @@ void CurvatureRecorder::accepted_step(const ElasticaPieceData& piece,
 }
 
 int CurvatureRecorder::inflection_points() const {
+  return sign_changes(accepted_, 1e-9 * largest_curvature());
+}
+
+double CurvatureRecorder::largest_curvature() const {
   double largest = 0.0;
   for (double v : accepted_) largest = std::max(largest, std::fabs(v));
-  return sign_changes(accepted_, 1e-9 * largest);
+  return largest;
 }
 
 int sign_changes(const std::vector<double>& values, double zero) {
@@ -86,6 +90,7 @@ bool count_inflections(const ShootingProblem& problem,
   if (!problem.integrate_solution(z, lambda, integrator, out.tip, error)) return false;
   recorder.accept_evaluation();
   out.inflection_points = recorder.inflection_points();
+  out.largest_curvature = recorder.largest_curvature();
   return true;
 }
 

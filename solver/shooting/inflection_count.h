@@ -10,6 +10,7 @@
 // without an end moment has m = 0 there, which is not an inflection). Backends without steps to
 // show (CVODES, ARKODE) fall back to the sign changes of theta along a shape of 401 points.
 #include <Eigen/Dense>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,9 @@ namespace flexure {
 
 struct InflectionCount {
   int inflection_points = 0;
+  // The largest |m/EI + kappa0| over the same samples (ShootingResult::largest_curvature); NaN
+  // when the backend shows no steps.
+  double largest_curvature = std::numeric_limits<double>::quiet_NaN();
   TipState tip;  // the tip state of the same integration (no sensitivities)
 };
 
@@ -46,6 +50,9 @@ class CurvatureRecorder : public StepObserver, public NewtonRecorder {
   bool has_accepted() const { return have_accepted_; }
   // The inflection points of the accepted evaluation.
   int inflection_points() const;
+  // The largest |m/EI + kappa0| of the accepted evaluation: at the step ends and the moment's
+  // interior extrema, so the maximum over the chain to the interpolant's accuracy.
+  double largest_curvature() const;
 
  private:
   std::vector<double> current_, accepted_;

@@ -7,7 +7,6 @@
 // along its tangent, shooting_solver.h); under displacement control the moving stage holds the
 // controlled coordinate too, whose conjugate load is then the support's reaction. So one
 // equilibrium can be unstable under load control and stable under displacement control.
-#include <optional>
 
 #include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/segment_chain.h"
@@ -15,14 +14,8 @@
 
 namespace flexure {
 
-// The tip coordinates `path` (traced for `chain`, with `control` when it is a controlled path)
-// holds at a point of stage `stage`.
-PrescribedMask path_held_coordinates(const SegmentChain& chain,
-                                     const std::optional<DisplacementControl>& control,
-                                     const LoadPath& path,
-                                     int stage);
-
-// The verdict of `point` of a path of `chain` with the coordinates `held`: the chain with a free
+// The verdict of `point` of a path of `chain` with the coordinates `held` (the point's own,
+// PathPoint::held, unless a caller asks about another control): the chain with a free
 // end carrying the point's total tip load (given loads and the support's reaction, all dead) and
 // its node loads at the point's load factor (stage 1; full in later stages), its shape from the
 // shooting method's Newton iteration started at the point's clamp moment (`options`; it must end

@@ -9,7 +9,6 @@
 
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/shooting/inflection_count.h"
-#include "flexure/solver/shooting/path_point_stability.h"
 
 namespace flexure {
 
@@ -97,7 +96,10 @@ CurvatureRecorder* curvature_recorder(const ShootingSolver::Options& options,
 }
 
 void take_count(const CurvatureRecorder& recorder, ShootingResult& result) {
-  if (recorder.has_accepted()) result.inflection_points = recorder.inflection_points();
+  if (recorder.has_accepted()) {
+    result.inflection_points = recorder.inflection_points();
+    result.largest_curvature = recorder.largest_curvature();
+  }
 }
 
 }  // namespace
@@ -191,6 +193,7 @@ ShootingResult ShootingSolver::finish(const ShootingProblem& problem,
       return result;
     }
     result.inflection_points = count.inflection_points;
+    result.largest_curvature = count.largest_curvature;
     known_tip = &count.tip;
   }
   if (known_tip != nullptr && options_.shape_points <= 1) {
@@ -734,37 +737,6 @@ LoadPath ShootingSolver::controlled_path(const SegmentChain& chain,
   joined.message =
       fmt::format("stage 1 (the loads) {}; then {}: {}", first_message, what, moved.message);
   return joined;
-}
-
-PrescribedMask path_held_coordinates(const SegmentChain& chain,
-                                     const std::optional<DisplacementControl>& control,
-                                     const LoadPath& path,
-                                     int stage) {
-  PrescribedMask mask = prescribed_mask(chain.end);
-  int last = 1;
-  for (const PathPoint& p : path.points) last = std::max(last, p.stage);
-  // controlled_path: the loads (load_path, one or two stages) and then the moving stage, numbered
-  // after them; without loads the moving stage alone (stage 1). A path that stopped while applying
-  // the loads has no moving stage (its message says so: controlled_path above).
-  bool moving = false;
-  if (control) {
-    const bool stopped_loading = path.message.rfind("stage 1 (the loads applied before", 0) == 0;
-    moving = !stopped_loading && stage == last;
-    if (!stopped_loading) --last;  // the stages of the loads
-  }
-  if (moving) {
-    (control->coordinate == TipCoordinate::kX   ? mask.x
-     : control->coordinate == TipCoordinate::kY ? mask.y
-                                                : mask.theta) = true;
-    return mask;
-  }
-  if (last == 2 && stage == 1) {
-    // run_two_stages: stage 1 releases the coordinate along the unloaded tip tangent.
-    const ChainPose tangent = chain.unloaded_tip();
-    const bool release_x = std::abs(std::cos(tangent.theta)) >= std::abs(std::sin(tangent.theta));
-    (release_x ? mask.x : mask.y) = false;
-  }
-  return mask;
 }
 
 ShootingResult solve_shooting(const SegmentChain& chain, const ShootingSolver::Options& options) {

@@ -18,6 +18,7 @@
 //
 // CLI entry points: solve_shooting(chain, options) and trace_load_path(chain, options).
 #include <Eigen/Dense>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -67,6 +68,11 @@ struct ShootingResult : SolveStatus {
   // On request (Options::count_inflections): interior sign changes of the curvature m/EI + kappa0
   // (inflection_count.h); -1 when not counted.
   int inflection_points = -1;
+  // With the inflection points, from the same samples: the largest |m/EI + kappa0| along the
+  // chain (the step ends and the moment's interior extrema; inflection_count.h). NaN when not
+  // recorded (not counted, or a backend that shows no steps). The fast stability verdict of a
+  // tensioned cantilever uses it (solver/shooting/tension_stability.h).
+  double largest_curvature = std::numeric_limits<double>::quiet_NaN();
   // Sign of det dg/dz at the returned point (0: not known, e.g. a two-stage path); it changes at
   // every limit point and bifurcation point of a branch (solve_near checks it).
   int jacobian_sign = 0;
@@ -163,7 +169,7 @@ class ShootingSolver {
   // the caller then solves from zero load (solve()). Neighbours with other multiple-shooting cuts
   // lend their root unknowns. Whether that stretch of branch is the proportional-loading answer at
   // this load is the caller's to know (for a load on the same ray from zero, farther out, it is:
-  // benchmarks/studies/beam_sweep_solver.h); limit_points is 0 (the caller knows the path).
+  // beam/beam_sweep_solver.h); limit_points is 0 (the caller knows the path).
   ShootingResult solve_near(const SegmentChain& chain, const ShootingNeighbour& neighbour) const;
 
   // Load path by pseudo-arclength continuation from zero load (all points recorded). A straight

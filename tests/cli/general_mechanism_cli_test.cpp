@@ -2,8 +2,12 @@
 // mechanisms"): the shipped bistable switch through the tool, its JSON keys, and the refusals.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <regex>
+#include <set>
+#include <sstream>
 
 #include "tests/support/cli_test_support.h"
 
@@ -63,6 +67,48 @@ TEST(GeneralMechanismCli, Refusals) {
   EXPECT_EQ(r.exit_code, 2);
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["exit_code"], 2);
+}
+
+// Every option of `mechanism analyze` other than the four a general file takes is refused by name
+// (exit 2), read from the command's own help so that an option added later is covered too.
+TEST(GeneralMechanismCli, EveryConstantForceOptionIsRefusedByName) {
+  const CommandResult help = run_flexure("mechanism analyze --help");
+  ASSERT_EQ(help.exit_code, 0) << help.err;
+  const std::set<std::string> general = {"--help", "--points", "--json", "--model", "--input"};
+  // A valid value for the options whose values are checked before the form is known.
+  const std::map<std::string, std::string> value = {{"--method", "prbm"},
+                                                    {"--spring-rule", "table2"},
+                                                    {"--force-of", "whole"},
+                                                    {"--surface-finish", "ground"},
+                                                    {"--material", "polypropylene"},
+                                                    {"--out", "x.h5"},
+                                                    {"--ultimate-strength", "900MPa"},
+                                                    {"--endurance-limit", "400MPa"},
+                                                    {"--reliability", "0.9"},
+                                                    {"--fatigue-factor", "0.9"},
+                                                    {"--Kf", "1.2"},
+                                                    {"--tol", "1e-3"},
+                                                    {"--plate", "on"},
+                                                    {"--nu", "0.3"}};
+  const std::regex line(R"(^\s+(?:-\w,)?(--[A-Za-z-]+)( \S+)?)");
+  std::istringstream in(help.out);
+  std::string text;
+  int checked = 0;
+  while (std::getline(in, text)) {
+    std::smatch m;
+    if (!std::regex_search(text, m, line) || general.count(m[1]) > 0) continue;
+    const std::string name = m[1];
+    const bool takes_value = m[2].matched;
+    const auto given = value.find(name);
+    const std::string arg =
+        name + (takes_value ? " " + (given != value.end() ? given->second : "1") : "");
+    expect_refused("mechanism analyze " + kSwitch + " " + arg,
+                   {name + " belongs to the constant-force designs"});
+    ++checked;
+  }
+  // --out, --prbm-only, --method, --tol, --spring-rule, --force-of, --material and the six
+  // fatigue options today.
+  EXPECT_GE(checked, 13);
 }
 
 TEST(GeneralMechanismCli, BothModels) {

@@ -138,6 +138,51 @@ TEST(MechanismStabilityCli, TextPrintsTheStretchesAndWarnsOfAnUnstableExactStrok
                        "at 10 of 10 stroke points"),
             std::string::npos)
       << b.err;
+  EXPECT_NE(b.err.find("--stable follows a stable branch instead"), std::string::npos) << b.err;
+}
+
+// --stable (docs/cli.md): 3A-lslm's exact stroke, unstable with the slider held at every point by
+// default, is stable at every point with --stable; the JSON says what was done; the first force
+// lies just above the lowest buckling load (10.55 N, docs/stability.md), far below the default
+// stroke's; a design whose default stroke is stable keeps it ("not needed", same forces); a
+// general mechanism file refuses the flag.
+TEST(MechanismStabilityCli, StableFollowsAStableBranch) {
+  const CommandResult a =
+      run_flexure("mechanism analyze 3A-lslm --method exact --points 10 --stable --json");
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  const json j = json::parse(a.out);
+  EXPECT_TRUE(j["stable"].get<bool>());
+  const std::string search = j["stable_search"].get<std::string>();
+  EXPECT_NE(search.find("lowest buckling mode"), std::string::npos) << search;
+  const json& dc = j["stability_displacement_control"]["exact"];
+  EXPECT_EQ(dc["unstable_points"].get<int>(), 0);
+  for (const auto& v : dc["stability"]) EXPECT_EQ(v, "stable");
+  EXPECT_EQ(a.err.find("unstable with the slider held"), std::string::npos) << a.err;
+  const CommandResult d =
+      run_flexure("mechanism analyze 3A-lslm --method exact --points 10 --json");
+  ASSERT_EQ(d.exit_code, 0) << d.err;
+  const json jd = json::parse(d.out);
+  EXPECT_TRUE(jd["stable_search"].is_null());
+  EXPECT_EQ(jd["stability_displacement_control"]["exact"]["unstable_points"].get<int>(), 10);
+  // At 10 % of the stroke the sway branch carries far less than the default (PRBM-like) stroke.
+  const double stable_first = j["force_exact"][0].get<double>();
+  EXPECT_GT(stable_first, 10.55);
+  EXPECT_LT(stable_first, 0.8 * jd["force_exact"][0].get<double>());
+  // 2A-ssp: stable by default, so --stable changes nothing.
+  const CommandResult s =
+      run_flexure("mechanism analyze 2A-ssp --method exact --points 10 --stable --json");
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  const json js = json::parse(s.out);
+  EXPECT_EQ(js["stable_search"].get<std::string>().rfind("not needed", 0), 0u);
+  const CommandResult t = run_flexure("mechanism analyze 2A-ssp --method exact --points 10 --json");
+  ASSERT_EQ(t.exit_code, 0) << t.err;
+  EXPECT_EQ(js["force_exact"], json::parse(t.out)["force_exact"]);
+  // The text output says it on a line of its own.
+  const CommandResult x =
+      run_flexure("mechanism analyze 3A-lslm --method exact --points 5 --stable");
+  ASSERT_EQ(x.exit_code, 0) << x.err;
+  EXPECT_NE(x.out.find("  --stable: the stroke from the PRBM start is unstable"), std::string::npos)
+      << x.out;
 }
 
 TEST(MechanismStabilityCli, ValidateCountsUnstablePoints) {

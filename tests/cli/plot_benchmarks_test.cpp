@@ -42,7 +42,7 @@ TEST(PlotBenchmarks, WritesBesideTheInputAndSaysWhere) {
         << printed;
   }
 
-  ASSERT_EQ(run_plot_script("plot_benchmarks.py", "b.h5 --out labelled", dir, true), 0)
+  ASSERT_EQ(run_plot_script("plot_benchmarks.py", "b.h5 --out-dir labelled", dir, true), 0)
       << read_text(dir / "err.txt");
   const std::vector<std::string> labels = axis_labels(read_text(dir / "out.txt"));
   // Two accuracy charts (x and y), the stability maps and the PRBM map (x, y, colour bar), the

@@ -1,6 +1,6 @@
 // What is checked: scripts/plot_dynamics.py on a small `flexure dynamics --out` file writes one PNG
 // (8-byte signature) where --out says, prints its path, and labels every axis with a unit in
-// parentheses taken from the file (rad/s for omega, N for the forces).
+// brackets taken from the file (rad/s for omega, N for the forces).
 // Skipped (GTEST_SKIP) when /usr/bin/python3 cannot import matplotlib and h5py (the Debian packages
 // python3-matplotlib, python3-h5py).
 #include <gtest/gtest.h>
@@ -36,11 +36,11 @@ TEST(PlotDynamics, WritesThePngItNamesWithUnitsOnEveryAxis) {
   // Three sweep panels and two history panels, each with x and y labels.
   EXPECT_EQ(labels.size(), 10u);
   for (const std::string& label : labels) {
-    EXPECT_TRUE(std::regex_search(label, std::regex(R"(\([^()]+\)$)"))) << label;
+    EXPECT_TRUE(std::regex_search(label, std::regex(R"(\[[^\[\]]+\]$)"))) << label;
   }
-  EXPECT_NE(std::find(labels.begin(), labels.end(), "drive frequency omega (rad/s)"), labels.end());
+  EXPECT_NE(std::find(labels.begin(), labels.end(), "drive frequency omega [rad/s]"), labels.end());
   // The force axes say what the force is the force of (dynamics' default: the whole mechanism).
-  EXPECT_NE(std::find(labels.begin(), labels.end(), "mean force, whole symmetric mechanism (N)"),
+  EXPECT_NE(std::find(labels.begin(), labels.end(), "mean force, whole symmetric mechanism [N]"),
             labels.end());
 }
 

@@ -29,7 +29,7 @@ TEST(PlotModels, WritesTheMapsAndTheChartWithUnitsOnEveryAxis) {
       "--min-seconds 0 --out m.h5",
       dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  ASSERT_EQ(run_plot_script("plot_models.py", "m.h5 --out figs --table", dir, true), 0)
+  ASSERT_EQ(run_plot_script("plot_models.py", "m.h5 --out-dir figs --table", dir, true), 0)
       << read_text(dir / "err.txt");
   EXPECT_TRUE(is_png(dir / "figs" / "m_error_maps.png"));
   EXPECT_TRUE(is_png(dir / "figs" / "m_error_time.png"));

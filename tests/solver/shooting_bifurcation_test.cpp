@@ -16,6 +16,12 @@
 //  * displacement control of a guided beam moved transversely: the support force against the
 //    linear stiffness 12 EI/L^3 at small deflection, and every path point against a force-
 //    controlled shooting solve with the path's force (tip y to 1e-9);
+//  * the clamped-clamped beam's switch on all four combinations of offset sign and branch side
+//    (issue 27: two of them stopped next to the bifurcation): each reaches the first mode, and
+//    the half-branch of one offset is the mirror image (y -> -y) of the opposite half-branch of
+//    the other offset, point by point; every point's stability verdict under its own held
+//    coordinates (PathPoint::held) is stable, critical at the bifurcation, unstable past it on
+//    the second mode;
 //  * step control: no arclength step above max_step, no load-factor step above max_load_step;
 //  * shapes: the path's last shape against ShootingSolver's shape, and its moment from statics
 //    against m = mu (end moment circle) and m(s) = Fy (x_tip - x(s)) (tip force).
@@ -31,6 +37,7 @@
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/gsl_guard.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
+#include "flexure/solver/shooting/path_point_stability.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {
@@ -292,6 +299,97 @@ TEST(ShootingBifurcation, ClampedClampedBeamSwitchesToItsFirstMode) {
   const LoadPath second = ShootingSolver().load_path(chain);
   ASSERT_TRUE(second.converged()) << second.message;
   EXPECT_GT(second.points.back().reaction.Fx, 80.0);
+}
+
+// Issue 27: with the offset y = +1e-3, the half-branch with branch_side -1 (and with y = -1e-3 the
+// one with +1) stopped right after the switch: the first step left the bifurcation along the null
+// vector orthogonal to the path, which meets the other branch at 70 degrees here, and the branch
+// bends to the load factor within 1e-7 of the point. The branch tangent now comes from the
+// algebraic bifurcation equation and the step floor from the switch's own scale.
+LoadPath clamped_clamped_switch(double y, int side) {
+  SegmentChain chain = uniform_cantilever(EndLoad{});
+  chain.end = EndCondition::kFixed;
+  chain.prescribed.x = 0.9;
+  chain.prescribed.y = y;
+  ShootingSolver::Options options;
+  options.continuation.switch_at_bifurcation = 1;
+  options.continuation.branch_side = side;
+  return ShootingSolver(options).load_path(chain);
+}
+
+TEST(ShootingBifurcation, ClampedClampedBeamReachesItsFirstModeOnEitherSide) {
+  disable_gsl_abort();
+  double lo = 0.0, hi = 0.99;  // the first mode at x = 0.9: four quarter waves (test above)
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (E_of(mid) / K_of(mid) > 0.95 ? lo : hi) = mid;
+  }
+  const double k = 0.5 * (lo + hi);
+  const double P = 16.0 * K_of(k) * K_of(k);
+  SegmentChain chain = uniform_cantilever(EndLoad{});
+  chain.end = EndCondition::kFixed;
+  chain.prescribed.x = 0.9;
+  for (const double y : {1e-3, -1e-3}) {
+    chain.prescribed.y = y;
+    for (const int side : {1, -1}) {
+      const LoadPath path = clamped_clamped_switch(y, side);
+      ASSERT_TRUE(path.converged()) << "y = " << y << ", side " << side << ": " << path.message;
+      ASSERT_TRUE(path.switched_branch);
+      const PathPoint& end = path.points.back();
+      EXPECT_NEAR(end.tip.x, 0.9, 1e-9);
+      EXPECT_NEAR(end.reaction.Fx / P, 1.0, 1e-5);
+      EXPECT_NEAR(std::abs(end.reaction.M) / (2.0 * k * std::sqrt(P)), 1.0, 1e-5);
+      // The side: the clamp's moment m(0) (the clamp applies -m(0)) grows for side +1.
+      const double m0_change = -(end.reaction.M - path.special_points.front().reaction.M);
+      EXPECT_GT(m0_change * side, 0.0) << "y = " << y << ", side " << side;
+      // Verdicts under the coordinates each point holds: stage 1 (x released) and the first
+      // mode are stable with x, y and the angle held; the bifurcation itself is critical.
+      for (const PathPoint& p : path.points) {
+        const Stability v = path_point_stability(chain, p, p.held);
+        const StabilityKind expected = p.status == PathStatus::kBifurcation
+                                           ? StabilityKind::kCritical
+                                           : StabilityKind::kStable;
+        EXPECT_EQ(v.kind, expected) << "y = " << y << ", side " << side << ", stage " << p.stage
+                                    << ", load factor " << p.lambda << ": " << v.message;
+        EXPECT_EQ(p.held.x, p.stage == 2);
+        EXPECT_TRUE(p.held.y && p.held.theta);
+      }
+    }
+  }
+  // Mirror images: (y, side -1) against (-y, side +1). The mirror y -> -y maps one problem onto
+  // the other and m(0) onto -m(0); the step control sees the same path up to rounding, so the
+  // points correspond one to one (the load factors drift apart by rounding, measured 4.6e-7).
+  const LoadPath a = clamped_clamped_switch(1e-3, -1);
+  const LoadPath b = clamped_clamped_switch(-1e-3, 1);
+  ASSERT_EQ(a.points.size(), b.points.size());
+  for (std::size_t i = 0; i < a.points.size(); ++i) {
+    const PathPoint& p = a.points[i];
+    const PathPoint& q = b.points[i];
+    EXPECT_EQ(p.stage, q.stage);
+    EXPECT_EQ(p.status, q.status);
+    EXPECT_NEAR(p.lambda, q.lambda, 2e-6) << i;
+    EXPECT_NEAR(p.tip.x, q.tip.x, 2e-7) << i;
+    EXPECT_NEAR(p.tip.y, -q.tip.y, 1e-12) << i;
+    EXPECT_NEAR(p.tip.theta, -q.tip.theta, 1e-12) << i;
+    EXPECT_NEAR(p.reaction.Fx, q.reaction.Fx, 1e-5 * (1.0 + std::abs(p.reaction.Fx))) << i;
+    EXPECT_NEAR(p.reaction.Fy, -q.reaction.Fy, 1e-5 * (1.0 + std::abs(p.reaction.Fy))) << i;
+    EXPECT_NEAR(p.reaction.M, -q.reaction.M, 1e-5 * (1.0 + std::abs(p.reaction.M))) << i;
+  }
+  // The ends, both at load factor 1: to the Newton tolerance.
+  EXPECT_NEAR(a.points.back().reaction.Fx, b.points.back().reaction.Fx, 1e-8);
+  EXPECT_NEAR(a.points.back().reaction.M, -b.points.back().reaction.M, 1e-8);
+  EXPECT_NEAR(a.special_points.front().lambda, b.special_points.front().lambda, 1e-8);
+  // Without switching: past the bifurcation the second mode is unstable (index 1).
+  chain.prescribed.y = 1e-3;
+  const LoadPath second = ShootingSolver().load_path(chain);
+  ASSERT_TRUE(second.converged()) << second.message;
+  const double at = second.special_points.front().lambda;
+  for (const PathPoint& p : second.points) {
+    if (p.stage != 2 || p.lambda <= at) continue;
+    const Stability v = path_point_stability(chain, p, p.held);
+    EXPECT_EQ(v.kind, StabilityKind::kUnstable) << p.lambda << ": " << v.message;
+    EXPECT_EQ(v.index, 1);
+  }
 }
 
 TEST(ShootingBifurcation, NoBranchToSwitchToLeavesThePathAlone) {

@@ -1,0 +1,170 @@
+#include "flexure/beam/beam_auto_ladder.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "flexure/beam/ladder_selector.h"
+#include "flexure/solver/common/errors.h"
+
+namespace flexure {
+namespace {
+
+constexpr double kDeg = 180.0 / 3.14159265358979323846;
+
+// The map describes the PR-3R model with Su's general constants and the CBCM with 6 elements, the
+// inextensible beam (BeamProblem's defaults), under dead loads on a free end.
+bool map_applies(const BeamProblem& p) {
+  return p.is_plain_cantilever() && p.given == BeamProblem::Given::kAlpha2 && !p.stable &&
+         p.cbcm_elements == 6 && p.prbm3r_constants == "su" && p.slenderness == 0.0;
+}
+
+bool mapped_settings(BeamMethod method, const BeamProblem& p) {
+  switch (method) {
+    case BeamMethod::kLinear:
+    case BeamMethod::kPrbm:
+    case BeamMethod::kBcm:
+      return true;
+    case BeamMethod::kPrbm3r:
+      return p.prbm3r_constants == "su";
+    case BeamMethod::kCbcm:
+      return p.cbcm_elements == 6;
+    default:
+      return false;
+  }
+}
+
+double displacement(const TipPose& tip) { return std::hypot(tip.a_over_l - 1.0, tip.b_over_l); }
+
+std::string rung_name(BeamMethod m) {
+  switch (m) {
+    case BeamMethod::kLinear:
+      return "linear theory";
+    case BeamMethod::kPrbm:
+      return "the 1R PRBM";
+    case BeamMethod::kPrbm3r:
+      return "PR-3R (Su)";
+    case BeamMethod::kBcm:
+      return "the BCM";
+    case BeamMethod::kCbcm:
+      return "the CBCM (6 elements)";
+    default:
+      return to_string(m);
+  }
+}
+
+}  // namespace
+
+LadderAutoOutcome solve_by_ladder(const BeamProblem& problem) {
+  LadderAutoOutcome out;
+  if (!map_applies(problem)) return out;
+  const auto rungs = bench::ladder_estimates(problem.load_ratio_n, problem.value, problem.mu);
+  if (!rungs) {
+    const bench::LadderMapRange r = bench::ladder_map_range();
+    out.verdict = fmt::format(
+        "the load is off the model ladder's map ({:g} <= n <= {:g}, {:g} <= alpha2 <= {:g}, {:g} "
+        "<= mu <= {:g}; data/ladder_auto_error_map.csv)",
+        r.n_min,
+        r.n_max,
+        r.alpha2_min,
+        r.alpha2_max,
+        r.mu_min,
+        r.mu_max);
+    return out;
+  }
+  const double T = problem.tolerance;
+  std::vector<std::string> passed;  // why each cheaper rung was not taken
+  for (const bench::LadderEstimate& rung : *rungs) {
+    if (rung.method == BeamMethod::kElliptic) {
+      passed.push_back(
+          fmt::format("every other model costs more than the exact elliptic solution "
+                      "here (mapped {:.2g} us)",
+                      rung.microseconds));
+      break;
+    }
+    const double E = rung.error_per_length;
+    const std::string name = rung_name(rung.method);
+    if (E / 2.0 > T) {
+      passed.push_back(fmt::format("{} (mapped error {:.2g} l)", name, E));
+      continue;
+    }
+    BeamSolution s;
+    try {
+      s = solve_beam(rung.method, problem);
+    } catch (const InvalidInput& e) {
+      passed.push_back(fmt::format("{} (refused: {})", name, e.what()));
+      continue;
+    }
+    if (!s.converged()) {
+      passed.push_back(fmt::format("{} (did not converge)", name));
+      continue;
+    }
+    const double d = displacement(s.tip);
+    const double R = bench::relative_error_bound(E, d);
+    if (!(R <= T)) {
+      passed.push_back(
+          fmt::format("{} (mapped error {:.2g} l, up to {:.2g} of its tip displacement {:.3g} l)",
+                      name,
+                      E,
+                      R,
+                      d));
+      continue;
+    }
+    std::string validity;
+    if (rung.method == BeamMethod::kPrbm) {
+      if (!s.prbm_inside_validity) {
+        passed.push_back(fmt::format(
+            "{} (its PRB angle {:.1f} deg exceeds the validity limit Theta_max = {:.1f} deg, "
+            "Howell eqs. 5.47, 5.63)",
+            name,
+            std::fabs(s.prbm_Theta) * kDeg,
+            s.prbm_theta_max * kDeg));
+        continue;
+      }
+      validity = fmt::format("; Theta = {:.1f} deg is inside Theta_max = {:.1f} deg",
+                             std::fabs(s.prbm_Theta) * kDeg,
+                             s.prbm_theta_max * kDeg);
+    }
+    std::string cheaper;
+    if (!passed.empty()) {
+      cheaper = "; cheaper, but not within it: ";
+      for (std::size_t i = 0; i < passed.size(); ++i) cheaper += (i ? ", " : "") + passed[i];
+    }
+    s.method_reason = fmt::format(
+        "{}, the cheapest model within the tolerance at this load (mapped {:.2g} us per solve): "
+        "its mapped tip error is {:.2g} l ({:g} x the largest measured at the loads around this "
+        "one, data/ladder_auto_error_map.csv), so at most {:.2g} of its tip displacement {:.3g} "
+        "l, within the tolerance {:.2g}{}{}",
+        name,
+        rung.microseconds,
+        E,
+        bench::kBetweenNodesMargin,
+        R,
+        d,
+        T,
+        validity,
+        cheaper);
+    s.expected_error = R;
+    s.expected_error_per_length = E;
+    s.methods_tried = {rung.method};
+    out.solution = std::move(s);
+    return out;
+  }
+  out.judged = true;
+  out.verdict = "no model of the ladder meets the tolerance at this load more cheaply: ";
+  for (std::size_t i = 0; i < passed.size(); ++i) out.verdict += (i ? ", " : "") + passed[i];
+  return out;
+}
+
+void attach_mapped_error(const BeamProblem& problem, BeamSolution& s) {
+  if (!map_applies(problem) || !mapped_settings(s.method, problem) || !s.converged()) return;
+  const double E =
+      bench::ladder_mapped_error(s.method, problem.load_ratio_n, problem.value, problem.mu);
+  if (!std::isfinite(E)) return;
+  s.expected_error_per_length = E;
+  s.expected_error = bench::relative_error_bound(E, displacement(s.tip));
+}
+
+}  // namespace flexure

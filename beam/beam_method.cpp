@@ -1,0 +1,46 @@
+#include "flexure/beam/beam_method.h"
+
+#include <fmt/format.h>
+
+#include "flexure/elements/chained_bcm.h"
+#include "flexure/elements/prbm3r.h"
+#include "flexure/solver/chain/chain_algorithm_solver.h"
+#include "flexure/solver/common/errors.h"
+#include "flexure/solver/elliptic/elliptic_solver.h"
+#include "flexure/solver/shooting/shooting_solver.h"
+
+namespace flexure {
+
+const char* to_string(BeamMethod method) { return kBeamMethodNames[static_cast<int>(method)]; }
+
+BeamMethod beam_method_from_string(std::string_view name) {
+  for (std::size_t i = 0; i < kBeamMethodNames.size(); ++i) {
+    if (name == kBeamMethodNames[i]) return static_cast<BeamMethod>(i);
+  }
+  throw InvalidInput(
+      fmt::format("method '{}' is unknown (allowed: {})", name, fmt::join(kBeamMethodNames, ", ")));
+}
+
+double beam_method_tolerance(BeamMethod method) {
+  switch (method) {
+    case BeamMethod::kAuto:
+    case BeamMethod::kElliptic:
+      return EllipticSolver::Options{}.tolerance;
+    case BeamMethod::kShooting:
+      return ShootingSolver::Options{}.rtol;
+    case BeamMethod::kChain:
+      return ChainAlgorithmSolver::Options{}.tolerance;
+    case BeamMethod::kPrbm:
+      return 1e-13;  // virtual-work residual of PrbmElement::solve
+    case BeamMethod::kLinear:
+    case BeamMethod::kBcm:
+      return 0.0;  // closed forms
+    case BeamMethod::kPrbm3r:
+      return Prbm3rSolver::Options{}.tolerance;
+    case BeamMethod::kCbcm:
+      return ChainedBcmSolver::Options{}.tolerance;
+  }
+  return EllipticSolver::Options{}.tolerance;
+}
+
+}  // namespace flexure

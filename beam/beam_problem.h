@@ -1,0 +1,194 @@
+#pragma once
+// A beam problem solved by any method: the cantilever of Howell ch. 2 with an end load (or any
+// segment chain and end condition), forward (the load is given) or inverse (the tip angle theta0
+// or the deflection b/l is given and the load alpha2 is found), with the method named or chosen by
+// `auto`. This is what `flexure beam`, `flexure sweep beam` and `flexure validate` call.
+//
+// To add a method: a value of BeamMethod (beam_method.h), a branch in solve_beam()
+// (beam_problem.cpp) that fills a BeamSolution from that solver's result, and, if `auto` should
+// consider it, a rule in method_selector.cpp (docs/architecture.md, "Adding a beam method").
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "flexure/beam/beam_method.h"
+#include "flexure/solver/chain/chain_algorithm_solver.h"
+#include "flexure/solver/chain_model/equilibrium_stability.h"
+#include "flexure/solver/chain_model/segment_chain.h"
+#include "flexure/solver/common/end_load.h"
+#include "flexure/solver/common/stability.h"
+#include "flexure/solver/common/status.h"
+#include "flexure/solver/shooting/elastica_integrator.h"
+#include "flexure/solver/shooting/shooting_solver.h"
+
+namespace flexure {
+
+// What the user fixed: the load alpha2, the tip angle theta0 or the tip deflection b/l, with
+// Howell's load ratio n and end moment mu held fixed (Howell eqs. 2.67, 2.83).
+struct BeamProblem {
+  enum class Given { kAlpha2, kTheta0, kBOverL };
+  Given given = Given::kAlpha2;
+  double value = 0.0;         // alpha2, theta0 [rad] or b/l, as selected by `given`
+  double load_ratio_n = 0.0;  // n > 0 compressive
+  double mu = 0.0;            // end moment M l/EI
+  int shape_points = 0;       // 0: no shape; otherwise >= 2 points from s = 0 to s = 1
+  // The far end and the numerical methods (shooting, chain).
+  EndCondition boundary = EndCondition::kFree;
+  TipPrescription prescribed;  // unset = the stress-free tip value (e.g. guided: theta = 0)
+  double follower = 0.0;       // follower tip force F l^2/EI along the tip normal
+  int elements = 100;          // chain algorithm: N elements
+  int increments = 1;          // chain algorithm: load increments to start with (halved on failure)
+  ChainVariant chain_variant = ChainVariant::kCorrected;  // chain algorithm
+  // Shooting method: the integrator of the flexible segments. GSL's Prince-Dormand 8(7) is the
+  // default, 20-35x cheaper per solve than CVODES (the reference) at rtol 1e-9 ... 1e-12 and at
+  // least as accurate for these small non-stiff systems (docs/performance.md, "Shooting").
+  ElasticaIntegrator::Backend integrator = ElasticaIntegrator::Backend::kRk8pd;
+  std::optional<SegmentChain> chain;  // a chain of segments (overrides the loads above)
+  // `auto` picks the cheapest method whose relative error is within this (method_selector.h).
+  double tolerance = 1e-6;
+  // The cheaper models of the ladder (beam_ladder.h): the chained BCM's number of elements N, the
+  // PR-3R model's constants (Prbm3rConstants::by_name: su, su-moment, su-force, flexure), the
+  // slenderness L/t of the BCM and CBCM (d = 12 (L/t)^2; 0: inextensible, the default).
+  int cbcm_elements = 6;
+  std::string prbm3r_constants = "su";
+  double slenderness = 0.0;
+  // The stability verdict of the answer (BeamSolution::stability; docs/stability.md): on by
+  // default; false leaves it not_checked (a sweep that does not want its cost). Its settings:
+  // the defaults judge the margin to 1e-9; a sweep asks for less (margin_accuracy), which only
+  // saves the refinements of margins close to 1 (docs/performance.md, "Stability").
+  bool judge_stability = true;
+  StabilityOptions stability_options;
+  // Return a stable equilibrium: when the one reached by proportional loading is not stable
+  // (unstable or critical), descend the potential energy from it along its unstable direction and
+  // converge by the shooting method's Newton iteration (solver/shooting/stable_equilibrium.h);
+  // the answer is then that equilibrium (method shooting) and stable_search says what was done,
+  // or it is not converged with the reason. For given loads only (not theta0 or b/l), dead
+  // loads only (InvalidInput otherwise).
+  bool stable = false;
+
+  // The segment chain this problem describes (the given chain, or Howell's uniform cantilever with
+  // Fx = -n alpha2, Fy = alpha2, M = mu, the follower force and the end condition). Throws
+  // InvalidInput when a prescribed tip coordinate has a load on it.
+  SegmentChain to_chain(double alpha2) const;
+  bool is_plain_cantilever() const {
+    return !chain && boundary == EndCondition::kFree && follower == 0.0;
+  }
+};
+
+// A method-independent summary of one solve (the keys of `flexure beam --json`).
+struct BeamSolution : SolveStatus {
+  BeamMethod method = BeamMethod::kElliptic;  // the method actually used (what auto resolved to)
+  std::string method_reason;                  // why that method: requested, or auto's reasoning
+  // The relative tip error the method that answered is known to stay within (MethodResolution);
+  // NaN where none is known (chain, PRBM off its measured map).
+  double expected_error = std::numeric_limits<double>::quiet_NaN();
+  // The ladder's models (linear, prbm, prbm3r, bcm, cbcm) on a free cantilever the model ladder's
+  // map covers: the mapped bound on |tip - exact tip| per length (beam_auto_ladder.h); NaN
+  // otherwise. expected_error is then the relative bound it gives with the answer's displacement.
+  double expected_error_per_length = std::numeric_limits<double>::quiet_NaN();
+  // Every method tried, in order (auto tries a second when the first fails); the last is `method`.
+  std::vector<BeamMethod> methods_tried;
+  // Howell's load parameters (eqs. 2.67, 2.83). For a chain given as a whole they exist only when
+  // it is uniform (flexible segments of one constant EI, straight, total length L): alpha2 = Fy
+  // L^2/EI, n = -Fx/Fy, mu = M L/EI; otherwise NaN (no single alpha2), and root_moment and
+  // reactions are NaN too: chain_root_moment and chain_reactions hold them in the chain's own
+  // units.
+  double alpha2 = 0.0;
+  double load_ratio_n = 0.0;
+  double mu = 0.0;
+  TipPose tip;
+  std::string branch;  // the equilibrium returned, in words (for people; code reads the counts)
+  int inflection_points = 0;
+  double root_moment = 0.0;
+  std::string family;
+  double tolerance = 0.0;  // the method's convergence tolerance (recorded in output files)
+  std::vector<ShapePoint> shape;
+  Reaction reactions;        // at the root
+  int elements = 0;          // chain algorithm only (0 otherwise)
+  int increments = 0;        // chain algorithm only: increments taken
+  double load_factor = 1.0;  // load factor reached (1 when converged)
+  // Inverse problems: |tip quantity - target| at the returned load; NaN for a forward problem. A
+  // converged inverse always has it within the method's stated tolerance.
+  double target_residual = std::numeric_limits<double>::quiet_NaN();
+  // Folds of the load factor on the path from the unloaded beam (snap-through under load
+  // control at the first); elliptic and shooting only.
+  int limit_points = 0;
+  double first_limit_load_factor = 0.0;
+  // Shooting only: the limit points and bifurcation points its continuation passed, located on the
+  // path (solver/shooting/continuation.h), in Howell's units (the chain's for a chain file) with
+  // the tip per unit length; `special_points_known` false for the other methods and for answers
+  // whose path is not the shooting method's own (a direct Newton solve of a provably unique
+  // equilibrium passes none, a sweep's neighbour start does not trace it).
+  bool special_points_known = false;
+  std::vector<SpecialPoint> special_points;
+  // Chains given as a whole: the tip load, root moment and clamp reactions in the chain's units.
+  Reaction chain_tip_load;
+  double chain_root_moment = 0.0;
+  Reaction chain_reactions;
+  // PRBM only: the PRB angle (rad), the validity limit it is checked against (rad, the smaller of
+  // Theta_max(gamma) and Theta_max(K_theta), Howell eqs. 5.47 and 5.63), where that limit comes
+  // from, and whether |Theta| is within it.
+  double prbm_Theta = 0.0;
+  double prbm_theta_max = 0.0;
+  std::string prbm_limits_source;
+  bool prbm_inside_validity = false;
+  // The cheaper models of the ladder (beam_ladder.h): the PR-3R constants used; the BCM's and
+  // CBCM's largest element deflection |y|/element length (NaN for the others), whether it is within
+  // the BCM's stated 0.1, and the slenderness L/t used (0: inextensible).
+  std::string model_constants;
+  double max_element_deflection = std::numeric_limits<double>::quiet_NaN();
+  bool model_inside_validity = true;
+  double slenderness = 0.0;
+  // The stability verdict of the returned equilibrium under the problem's loads and supports
+  // (docs/stability.md): the discrete second variation for elliptic, shooting and the chain
+  // algorithm, d^2V/dTheta^2 of the PRBM's energy for the PRBM; not_conservative for a follower
+  // force, not_checked when the solve failed or judge_stability is off. An unstable answer is
+  // still the documented proportional-loading answer, now labelled.
+  Stability stability;
+  // BeamProblem::stable: what the search for a stable equilibrium did (empty when not asked), and
+  // whether its result replaced the proportional-loading answer (the answer is then off the path).
+  std::string stable_search;
+  bool off_path = false;
+};
+
+// The method `auto` resolves to for this problem: the cheapest whose error is within
+// problem.tolerance (PRBM inside its validity limits and measured accuracy, else elliptic for
+// Howell's free cantilever, else shooting), with the reason (method_selector.h). A named method
+// resolves to itself.
+struct MethodResolution {
+  BeamMethod method = BeamMethod::kElliptic;
+  std::string reason;
+  // The relative tip error the method is known to stay within (method_selector.h); NaN where it
+  // depends on the discretisation (chain) or is not measured (PRBM off the map).
+  double expected_error = std::numeric_limits<double>::quiet_NaN();
+};
+// `ladder_verdict`: why auto's pass over the model ladder (beam_auto_ladder.h) took no cheap
+// model; when given, the 1R PRBM has been judged there and is not considered again.
+MethodResolution resolve_beam_method(BeamMethod method,
+                                     const BeamProblem& problem,
+                                     const std::string& ladder_verdict = {});
+// Without a problem (sweeps over alpha2): auto = elliptic.
+BeamMethod resolve_beam_method(BeamMethod method);
+
+// Solves `problem` with `method`. Throws InvalidInput for bad input or a problem the method does
+// not solve (OutsideMethodDomain for a load beyond its range); a failed solve returns converged()
+// false and a message. The answer carries its stability verdict; with problem.stable an answer
+// that is not stable is replaced by a stable equilibrium (or not converged when none is found).
+// With kAuto, a load beyond the elliptic solver's range, or a solve of the chosen method that does
+// not converge, goes to the shooting method (it follows the load path past limit points);
+// method_reason then says which method answered and why.
+BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem);
+
+// The shooting method's part of solve_beam for a forward problem, split so that a sweep can start
+// each point from its neighbour (beam_sweep_solver.h): the solver's options for `problem` (the
+// shape at `shape_points` points, 0 for none; the inflection points counted without a shape),
+// and a result at load alpha2 as the BeamSolution solve_beam returns (with its stability verdict
+// per problem.judge_stability, and with problem.stable a stable equilibrium searched from it).
+ShootingSolver::Options beam_shooting_options(const BeamProblem& problem, int shape_points);
+BeamSolution beam_solution_from_shooting(const BeamProblem& problem,
+                                         double alpha2,
+                                         const ShootingResult& r,
+                                         int shape_points);
+
+}  // namespace flexure

@@ -1,0 +1,133 @@
+#include "flexure/beam/beam_sweep_grid.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/evenly_spaced.h"
+
+namespace flexure {
+namespace {
+
+BeamProblem::Given given_of(SweepParameter p) {
+  switch (p) {
+    case SweepParameter::kTheta0:
+      return BeamProblem::Given::kTheta0;
+    case SweepParameter::kBOverL:
+      return BeamProblem::Given::kBOverL;
+    default:
+      return BeamProblem::Given::kAlpha2;
+  }
+}
+
+bool is_given(SweepParameter p) {
+  return p == SweepParameter::kAlpha2 || p == SweepParameter::kTheta0 ||
+         p == SweepParameter::kBOverL;
+}
+
+void set(BeamProblem& problem, SweepParameter p, double value) {
+  switch (p) {
+    case SweepParameter::kLoadRatioN:
+      problem.load_ratio_n = value;
+      break;
+    case SweepParameter::kMu:
+      problem.mu = value;
+      break;
+    default:
+      problem.value = value;  // alpha2, theta0 or b/l: the problem's `given`
+      break;
+  }
+}
+
+}  // namespace
+
+const char* dataset_name(SweepParameter p) {
+  constexpr const char* kNames[] = {"alpha2", "load_ratio_n", "mu", "theta0", "b_over_l"};
+  return kNames[static_cast<int>(p)];
+}
+
+const char* flag_name(SweepParameter p) {
+  constexpr const char* kFlags[] = {"--alpha2", "--n", "--mu", "--theta0", "--b-over-l"};
+  return kFlags[static_cast<int>(p)];
+}
+
+const char* units_of(SweepParameter p) { return p == SweepParameter::kTheta0 ? "rad" : "1"; }
+
+double SweepAxis::at(long i) const { return evenly_spaced(start, stop, count, i); }
+
+void BeamSweepGrid::validate(long max_points) const {
+  if (axes.empty() || axes.size() > 2) {
+    throw InvalidInput(
+        fmt::format("sweep beam sweeps one or two of --alpha2, --n, --mu, --theta0, --b-over-l as "
+                    "START:STOP:COUNT (got {} ranges)",
+                    axes.size()));
+  }
+  if (axes.size() == 2 && axes[0].parameter == axes[1].parameter) {
+    throw InvalidInput(fmt::format("{} is given as a range twice", flag_name(axes[0].parameter)));
+  }
+  for (const SweepAxis& axis : axes) {
+    if (!(std::isfinite(axis.start) && std::isfinite(axis.stop)) || axis.count < 1) {
+      throw InvalidInput(fmt::format("{}: START and STOP must be finite and COUNT >= 1",
+                                     flag_name(axis.parameter)));
+    }
+    if (is_given(axis.parameter) && given_of(axis.parameter) != base.given) {
+      throw InvalidInput(fmt::format(
+          "{} is a range but the sweep's given quantity is another one: give exactly one of "
+          "--alpha2, --theta0, --b-over-l",
+          flag_name(axis.parameter)));
+    }
+    if (axis.parameter == SweepParameter::kBOverL &&
+        (std::fabs(axis.start) > 1.0 || std::fabs(axis.stop) > 1.0)) {
+      throw InvalidInput("--b-over-l: the tip deflection b/l lies in [-1, 1]");
+    }
+  }
+  // Counts are positive: the product overflows only past max_points, checked step by step.
+  long points = 1;
+  for (const SweepAxis& axis : axes) {
+    if (axis.count > max_points / points) {
+      throw InvalidInput(fmt::format(
+          "the sweep has more than {} points ({}); split it", max_points, axis_names()));
+    }
+    points *= axis.count;
+  }
+}
+
+long BeamSweepGrid::size() const {
+  long n = 1;
+  for (const SweepAxis& axis : axes) n *= axis.count;
+  return n;
+}
+
+std::vector<long> BeamSweepGrid::shape() const {
+  std::vector<long> s;
+  for (const SweepAxis& axis : axes) s.push_back(axis.count);
+  return s;
+}
+
+std::vector<double> BeamSweepGrid::coordinates(long index) const {
+  std::vector<double> c(axes.size());
+  for (std::size_t k = axes.size(); k-- > 0;) {
+    c[k] = axes[k].at(index % axes[k].count);
+    index /= axes[k].count;
+  }
+  return c;
+}
+
+BeamProblem BeamSweepGrid::at(long index) const {
+  BeamProblem problem = base;
+  const std::vector<double> c = coordinates(index);
+  for (std::size_t k = 0; k < axes.size(); ++k) set(problem, axes[k].parameter, c[k]);
+  return problem;
+}
+
+std::string BeamSweepGrid::axis_names() const {
+  std::string names;
+  for (const SweepAxis& axis : axes) {
+    if (!names.empty()) names += ",";
+    names += dataset_name(axis.parameter);
+  }
+  return names;
+}
+
+}  // namespace flexure

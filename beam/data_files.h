@@ -1,0 +1,11 @@
+#pragma once
+// The data tables of the beam layer, compiled in from data/ (cmake/embed_data.cmake; the text
+// of each file, unchanged). Parsed with CsvTable where they are used.
+#include "flexure/solver/common/embedded_file.h"
+
+namespace flexure::data {
+
+EmbeddedFile method_auto_error_map();  // PRBM error measured by `flexure bench`, for --method auto
+EmbeddedFile ladder_auto_error_map();  // the model ladder's error and time (ladder_selector.h)
+
+}  // namespace flexure::data

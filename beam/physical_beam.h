@@ -1,0 +1,191 @@
+#pragma once
+// Beams in physical units (SI): the cantilever a designer describes by its length, modulus,
+// section and tip loads, and segment chains in SI units (built from objects or read from TOML).
+// The solvers stay nondimensional (Howell's alpha2 = Fy L^2/EI, n = -Fx/Fy, mu = M L/EI, eqs.
+// 2.67, 2.83); this layer converts in and out, and adds what the nondimensional keys do not say:
+// the tip position in metres, the bending moment along the beam, the largest bending stress
+// M c / I and the safety factor against yield (docs/units.md).
+#include <optional>
+#include <vector>
+
+#include "flexure/beam/beam_problem.h"
+#include "flexure/solver/chain_model/segment_chain.h"
+#include "flexure/solver/common/plate_modulus.h"
+#include "flexure/solver/common/section.h"
+
+namespace flexure {
+
+// An initially straight cantilever of uniform section, clamped at the origin along +x, loaded at
+// its free end. Fx and Fy are in the beam's frame: +x along the undeformed beam from the clamp, +y
+// perpendicular; M counter-clockwise.
+struct PhysicalCantilever {
+  double length = 0.0;                   // L, m
+  double E = 0.0;                        // Young's modulus, Pa
+  std::optional<double> I;               // m^4 (or width and thickness)
+  std::optional<double> width;           // b, m
+  std::optional<double> thickness;       // h, m (in the plane of bending)
+  double Fx = 0.0;                       // N
+  double Fy = 0.0;                       // N
+  double M = 0.0;                        // N m
+  std::optional<double> yield_strength;  // Pa
+  // Distributed loads and extension (docs/distributed-loads.md, docs/extensible.md); any of them
+  // makes the beam a one-segment chain (shooting or chain method).
+  double qx = 0.0;                // dead load per unit length along the undeformed beam, N/m
+  double qy = 0.0;                // dead load per unit length perpendicular to it, N/m
+  double q_follower = 0.0;        // pressure along the deflected normal, N/m
+  std::optional<double> density;  // kg/m^3: self-weight rho A g along -y (needs the rectangle)
+  double g = 9.80665;             // m/s^2
+  bool extensible = false;        // EA = E A, GAs = k E A / (2 (1 + nu)) (needs the rectangle)
+  std::optional<double> nu;       // Poisson's ratio (extensible, plate on or auto)
+  double shear_coefficient = 5.0 / 6.0;  // Timoshenko's k of the rectangle
+  // The bending modulus (docs/plate-modulus.md): off E, on E/(1 - nu^2), auto by the Searle
+  // parameter b^2/(R h) at the beam's largest curvature. plate_applied is the decision the
+  // flexural rigidity uses: on sets it, auto is decided by solve_physical_beam (which sets it on
+  // its copy); the axial and shear rigidities keep E (the plate effect is a bending one).
+  PlateRule plate = PlateRule::kOff;
+  bool plate_given = false;  // --plate was given (then --nu is accepted even with off)
+  bool plate_applied = false;
+
+  // Whether any of the above is given.
+  bool beyond_elastica() const {
+    return qx != 0.0 || qy != 0.0 || q_follower != 0.0 || density.has_value() || extensible;
+  }
+  // width thickness, where the section is a rectangle.
+  std::optional<double> area() const {
+    if (width && thickness) return *width * *thickness;
+    return std::nullopt;
+  }
+  // The dead load per unit length including the self-weight, N/m.
+  double total_qy() const { return qy - (density ? *density * area().value_or(0.0) * g : 0.0); }
+
+  // Throws InvalidInput naming the bad field: lengths, modulus and section > 0 and finite, I or
+  // (width and thickness) but not both, finite loads, a yield strength > 0 with a section to
+  // compute a stress in.
+  void validate() const;
+  // I, or b h^3 / 12 for the rectangle.
+  double second_moment() const;
+  // E, or E/(1 - nu^2) when the plate modulus applies (plate on, or auto decided for it).
+  double bending_modulus() const;
+  double flexural_rigidity() const { return bending_modulus() * second_moment(); }
+  // Howell's nondimensional problem of this beam, forward (the load is given). A purely axial load
+  // (Fy = 0, Fx != 0) has no Howell's n; it is then a one-segment chain with the same
+  // nondimensional loads, which the shooting and chain methods solve. The method settings
+  // (tolerance, integrator, shape points, ...) are those of `settings`.
+  BeamProblem to_problem(BeamProblem settings = {}) const;
+  // Howell's nondimensional chain of this beam (length 1, EI 1: forces F L^2/EI, moments M L/EI)
+  // with the far end `end` and the prescribed tip values given in metres and radians (`flexure
+  // path`, which takes any end condition). Throws InvalidInput for a load on a prescribed
+  // coordinate (it is the support's reaction) and for loads that overflow.
+  SegmentChain to_chain(EndCondition end, const TipPrescription& prescribed_m = {}) const;
+};
+
+// One point of the deflected shape in SI units.
+struct PhysicalShapePoint {
+  double s = 0.0;       // arc length from the clamp, m
+  double x = 0.0;       // m
+  double y = 0.0;       // m
+  double theta = 0.0;   // rad
+  double moment = 0.0;  // bending moment, N m (counter-clockwise on the part nearer the clamp)
+  std::optional<double> stress;  // |M| c / I (+ |N_a|/A for an extensible beam), Pa
+  double axial_force = 0.0;      // N_a = N . t, N (tension positive)
+  // V = N . n with n = (-sin theta, cos theta) the normal left of the tangent and N the force the
+  // part beyond s exerts on the part before it; dm/ds = -V (docs/units.md "Internal forces").
+  double shear_force = 0.0;
+  // The stress at the fibre h/2 along +n and along -n: N_a/A -+ m c/I (a positive moment
+  // compresses the +n fibre). Empty without the section's area and thickness (EI alone).
+  std::optional<double> stress_pos_fibre, stress_neg_fibre;
+};
+
+struct PhysicalResults {
+  double length = 0.0;                     // total arc length, m
+  double tip_x = 0.0;                      // m
+  double tip_y = 0.0;                      // m
+  double theta0 = 0.0;                     // tip angle, rad
+  double root_moment = 0.0;                // bending moment at the clamp, N m
+  double max_moment = 0.0;                 // largest |bending moment| along the beam, N m
+  double max_moment_at = 0.0;              // arc length where it acts, m
+  std::optional<double> max_stress;        // largest M c / I, Pa (needs every flexible section)
+  std::optional<double> max_stress_at;     // m
+  std::optional<double> safety_factor;     // yield strength / max_stress (null when unloaded)
+  double max_axial_force = 0.0;            // largest |N . t| along the beam, N
+  std::optional<double> max_axial_strain;  // largest |N . t| / EA (extensible segments only)
+  std::optional<double> yield_strength;
+  // How the maximum was found: "shape" (sampled along the solved shape, refined by a parabola
+  // through the largest sample and its neighbours) or "ends" (the PRBM, which has no shape: the
+  // larger of the root and tip moments).
+  const char* max_from = "shape";
+  std::vector<PhysicalShapePoint> shape;  // the points the caller asked for
+  // The bending modulus used and why (docs/plate-modulus.md); one per flexible segment of a
+  // chain with a section (empty for segments given by EI), one for a cantilever.
+  std::vector<ModulusChoice> modulus;
+};
+
+// Solves a physical cantilever with `method` (any beam method). `settings` gives the method's
+// settings (tolerance, integrator, chain elements) and in shape_points (0 or >= 2) the shape points
+// to report; its loads are replaced by the beam's. The moment maximum is searched on a denser
+// shape (>= 2001 points) of which the reported points are a subset. The BeamSolution carries the
+// nondimensional keys (its shape holds the requested points).
+struct PhysicalBeamSolution {
+  BeamSolution solution;
+  PhysicalResults physical;
+  std::vector<double> segment_max_moment;  // chains with plate = "auto": largest |m| per segment
+};
+PhysicalBeamSolution solve_physical_beam(BeamMethod method,
+                                         const PhysicalCantilever& beam,
+                                         BeamProblem settings);
+
+// A segment chain in physical units (SI: lengths m, loads N and N m, EI N m^2) with what the
+// stresses need: the section and material of each flexible segment that has one. The library's
+// type for a physical chain, built from objects or read from a TOML file (io::read_chain_file
+// returns an io::ChainFile, which is one).
+struct SegmentProperties {
+  Section section;    // the rectangle (width, thickness) or a general I with its thickness
+  Material material;  // E (EI = E I), nu (the plate modulus), and S_y for the safety factor
+  // The cross-section area of a general section given with A (docs/chain-toml.md), m^2: the axial
+  // stress N/A of an extensible segment. A rectangle's area is width thickness.
+  std::optional<double> area;
+  // The bending modulus (docs/plate-modulus.md) with material.nu: off E; on E/(1 - nu^2), and the
+  // segment's EI is then that modulus times I (the rigidity the chain is solved with, so the chain
+  // alone, e.g. `path --chain`, bends as a plate too); auto decides by the Searle parameter
+  // b^2/(R h) at the segment's largest curvature (a rectangle section only): the segment's EI is
+  // E I, and solve_physical_chain solves again with E I/(1 - nu^2) where the strip is a plate.
+  PlateRule plate = PlateRule::kOff;
+
+  // E, or E/(1 - nu^2) with plate on: the modulus the segment's EI is made of.
+  double chain_modulus() const;
+
+  // `area`, or the rectangle's width thickness; unknown for a general section without A.
+  std::optional<double> cross_section_area() const;
+};
+
+struct PhysicalChain {
+  SegmentChain chain;
+  // One entry per segment of `chain`: the properties of a flexible segment that gives them
+  // (nullopt: a flexible segment given by EI only, or a rigid link).
+  std::vector<std::optional<SegmentProperties>> segments;
+  // The yield strength of the segments whose material gives none, Pa (a chain file's top-level
+  // yield_strength).
+  std::optional<double> yield_strength;
+
+  // Throws InvalidInput naming the segment: one entry per segment, properties only on flexible
+  // segments, each section and material valid, a flexible segment's EI equal to E I, or to
+  // E I/(1 - nu^2) with plate on (SegmentProperties::chain_modulus(); relative 1e-12; no
+  // EI_profile with properties), plate auto only on a rectangle, and one yield strength for the
+  // chain (the safety factor is the yield strength over the largest stress, so segments of
+  // different S_y are refused).
+  void validate() const;
+  // The yield strength of the chain: the segments' (all equal, see validate()) or yield_strength.
+  std::optional<double> effective_yield_strength() const;
+};
+
+// The same for a chain in physical units: its sections give the stresses, where every flexible
+// segment has one. `problem` gives the method's settings (tolerance, integrator, shape points); its
+// chain and boundary are replaced by `chain`'s. Throws InvalidInput when chain.validate() does.
+// Segments with plate auto are decided after a first solve (each at its own largest curvature
+// |m|/EI) and the chain solved again where one turns out a plate; physical.modulus reports each
+// sectioned segment's choice. (An io::ChainFile read from TOML is a PhysicalChain.)
+PhysicalBeamSolution solve_physical_chain(BeamMethod method,
+                                          BeamProblem problem,
+                                          const PhysicalChain& chain);
+
+}  // namespace flexure

@@ -1,0 +1,181 @@
+"""Mechanism files: `flexure mechanism analyze --out` (the stroke: slider force of the PRBM and of
+the exact model, the PRBM's force error, the stress of every flexure against the yield strength,
+the stretch outside the PRBM's validity shaded), `mechanism validate --out` (the table of designs)
+and `mechanism tolerance --out` (distributions over the sampled designs; docs/tolerance.md)."""
+import math
+
+import numpy as np
+
+from ._common import attr, display, finite, label, legend_beside, unit
+
+
+def _flag(f, name):
+    v = f.attrs.get(name)
+    return v is not None and int(v) != 0
+
+
+def _pcf_note(f, model):
+    if _flag(f, f"force_changes_sign_{model}"):
+        return " (force changes sign)"
+    if _flag(f, f"force_vanishes_{model}"):
+        return " (force vanishes)"
+    return ""
+
+
+def draw_analyze(f, plt, rec, stress=True):
+    dx_ds = f["displacement"]
+    dx = dx_ds[()]
+    length_scale, length_unit = display(dx_ds, "m")
+    force_scale, force_unit = display(f["force_prbm"], "N")
+    force_of = attr(f, "force_of", "one half")  # files before the attribute: one half
+    exact = f["force_exact"][()] if "force_exact" in f else None
+    stresses = [(p, m) for p in (1, 2, 3) for m in ("prbm", "exact")
+                if f"stress_{m}_pivot{p}" in f]
+    stress_panel = stress and bool(stresses)
+    panels = 1 + (exact is not None) + stress_panel
+    fig, axes = plt.subplots(panels, 1, figsize=(8.5, 2.0 + 3.0 * panels), sharex=True,
+                             squeeze=False)
+    axes = axes[:, 0]
+    ax = axes[0]
+    k = np.arange(len(dx))
+    rec.line(ax, dx, f["force_prbm"][()], "o-", ms=3, label="PRBM", x_src=("displacement", k),
+             y_src=("force_prbm", k), x_scale=length_scale, y_scale=force_scale, panel="force")
+    if exact is not None:
+        rec.line(ax, dx, exact, "s-", ms=3, label="exact (elastica)", x_src=("displacement", k),
+                 y_src=("force_exact", k), x_scale=length_scale, y_scale=force_scale,
+                 panel="force")
+    ax.set_ylabel(label(f"slider force F, {force_of}", force_unit))
+    ax.grid(True, alpha=0.3)
+    row = 1
+    if exact is not None:
+        err = 100.0 * (f["force_prbm"][()] - exact) / exact
+        rec.line(axes[row], dx, err, "o-", ms=3, color="C2", x_src=("displacement", k),
+                 x_scale=length_scale, panel="force_error", label="PRBM - exact")
+        axes[row].axhline(0.0, color="0.5", lw=0.8)
+        axes[row].set_ylabel(label("PRBM force error", "%"))
+        axes[row].grid(True, alpha=0.3)
+        row += 1
+    if stress_panel:
+        sa = axes[row]
+        s_scale, s_unit = display(f[f"stress_{stresses[0][1]}_pivot{stresses[0][0]}"], "Pa")
+        for pivot, model in stresses:
+            name = f"stress_{model}_pivot{pivot}"
+            rec.line(sa, dx, f[name][()], "--" if model == "prbm" else "-",
+                     color=f"C{pivot - 1}", label=f"pivot {pivot} {model.upper() if model == 'prbm' else model}",
+                     x_src=("displacement", k), y_src=(name, k), x_scale=length_scale,
+                     y_scale=s_scale, panel="stress")
+        if "design/yield_strength" in f:
+            sa.axhline(float(f["design/yield_strength"][()]) * s_scale, color="k", ls=":",
+                       lw=1.2, label="yield strength")
+        sa.set_ylabel(label("largest stress", s_unit))
+        sa.grid(True, alpha=0.3)
+        legend_beside(sa)
+    inside = f["prbm_within_validity"][()] if "prbm_within_validity" in f else None
+    if inside is not None and (inside == 0).any() and len(dx) > 1:
+        d = dx * length_scale
+        edges = np.concatenate([[d[0] - 0.5 * (d[1] - d[0])], 0.5 * (d[:-1] + d[1:]),
+                                [d[-1] + 0.5 * (d[-1] - d[-2])]])
+        for a in axes:
+            for i, flag in enumerate(inside):
+                if int(flag) == 0:
+                    a.axvspan(edges[i], edges[i + 1], color="C3", alpha=0.12, lw=0)
+        text = "PRBM outside Howell Table 5.1"
+        error = f.attrs.get("prbm_force_error_at_validity_limit")
+        if error is not None and math.isfinite(float(error)):
+            text += f"\n(force error there {100 * float(error):.1f} %)"
+        axes[0].fill_between([], [], color="C3", alpha=0.12, label=text)
+    legend_beside(axes[0])
+    axes[-1].set_xlabel(label("slider displacement Delta x", length_unit))
+    pcf = ""
+    if "percent_constant_force_prbm" in f.attrs:
+        pcf = f"PRBM {float(f.attrs['percent_constant_force_prbm']):.2f} %{_pcf_note(f, 'prbm')}"
+    if "percent_constant_force_exact" in f.attrs:
+        pcf += (f", exact {float(f.attrs['percent_constant_force_exact']):.2f} %"
+                f"{_pcf_note(f, 'exact')}")
+    config = attr(f, "config", "")
+    fig.suptitle(f"{attr(f, 'mechanism', '')}{' (' + config + ')' if config else ''}: "
+                 f"percent constant force {pcf}", fontsize=11)
+    fig.tight_layout()
+    return fig
+
+
+def draw_validate(f, plt, rec):
+    names = [n.decode() if isinstance(n, bytes) else str(n) for n in f["name"][()]]
+    rows = np.arange(len(names))
+    fig, axes = plt.subplots(1, 3, figsize=(15, max(4.0, 0.25 * len(names) + 1.5)), sharey=True)
+    for key, lab, colour in (("percent_constant_force", "PRBM", "C0"),
+                             ("percent_constant_force_exact", "exact", "C1")):
+        rec.line(axes[0], f[key][()], rows, "o", ls="none", color=colour, label=lab,
+                 x_src=(key, rows), panel="pcf")
+    axes[0].set_xlabel(label("percent constant force Xi'", unit(f["percent_constant_force"])))
+    rec.line(axes[1], 100 * f["max_force_error"][()], rows, "o", ls="none", color="C2",
+             label="largest PRBM force error", panel="force_error")
+    axes[1].set_xlabel(label("largest PRBM force error", "%"))
+    rec.line(axes[2], f["safety_factor"][()], rows, "o", ls="none", color="C4",
+             x_src=("safety_factor", rows), panel="safety_factor", label="static")
+    axes[2].axvline(1.0, color="k", ls=":", lw=1)
+    axes[2].set_xlabel(label("safety factor", unit(f["safety_factor"])))
+    axes[0].set_yticks(rows)
+    axes[0].set_yticklabels(names, fontsize=9)
+    axes[0].invert_yaxis()
+    for ax in axes:
+        ax.grid(True, alpha=0.3)
+    legend_beside(axes[0])
+    fig.suptitle(f"mechanism validate ({attr(f, 'designs', '')}, {attr(f, 'points', '')} "
+                 "stroke points)", fontsize=11)
+    fig.tight_layout()
+    return fig
+
+
+def draw_tolerance(f, plt, rec):
+    quantities = [q for q in ("mean_force_prbm", "mean_force_exact", "percent_constant_force_prbm",
+                              "percent_constant_force_exact", "safety_factor")
+                  if q + "/values" in f]
+    params = [p.decode() if isinstance(p, bytes) else str(p) for p in f["parameters"][()]]
+    fig, axes = plt.subplots(2, len(quantities), figsize=(4.2 * len(quantities), 8),
+                             squeeze=False)
+    for col, q in enumerate(quantities):
+        g = f[q]
+        values = g["values"][()]
+        scale, shown = display(g["values"])
+        ax = axes[0, col]
+        ok = finite(values)
+        rec.values(q, values, src=q + "/values", label=q)
+        if len(ok):
+            ax.hist(ok * scale, bins=max(5, min(40, int(math.sqrt(len(ok))) + 1)), color="C0",
+                    alpha=0.7)
+        for stat, colour, ls in (("nominal", "k", "-"), ("mean", "C1", "--"), ("p05", "C2", ":"),
+                                 ("p95", "C2", ":")):
+            if stat in g:
+                ax.axvline(float(g[stat][()]) * scale, color=colour, ls=ls, lw=1.3,
+                           label={"p05": "p05, p95", "p95": None}.get(stat, stat))
+        ax.set_xlabel(label(_quantity_name(f, q), shown))
+        ax.set_ylabel("samples")
+        std = float(g["std"][()]) * scale if "std" in g else float("nan")
+        fo = float(g["first_order_std"][()]) * scale if "first_order_std" in g else float("nan")
+        ax.set_title(f"std {std:.3g}, first order {fo:.3g}", fontsize=9)
+        sens = g["parameter_sensitivity"][()]
+        bx = axes[1, col]
+        rec.values(q + ":sensitivity", sens, src=q + "/parameter_sensitivity")
+        bx.barh(np.arange(len(params)), sens * scale, color="C0")
+        bx.set_yticks(np.arange(len(params)))
+        bx.set_yticklabels(params if col == 0 else [""] * len(params), fontsize=9)
+        bx.invert_yaxis()
+        bx.set_xlabel(label("sensitivity: change per relative change", shown))
+        bx.grid(True, alpha=0.3, axis="x")
+    legend_beside(axes[0, -1])
+    spreads = ", ".join(f"{k[7:]} {100 * float(f.attrs[k]):g} %" for k in
+                        ("spread_thickness", "spread_width", "spread_length", "spread_E")
+                        if k in f.attrs)
+    fig.suptitle(f"tolerance study of {attr(f, 'mechanism', '')}: {attr(f, 'samples', '')} "
+                 f"{attr(f, 'distribution', '')} samples ({spreads}); forces as mechanism "
+                 "analyze reports them", fontsize=11)
+    fig.tight_layout()
+    return fig
+
+
+def _quantity_name(f, q):
+    names = {"mean_force_prbm": "mean force, PRBM", "mean_force_exact": "mean force, exact",
+             "percent_constant_force_prbm": "Xi', PRBM", "percent_constant_force_exact":
+             "Xi', exact", "safety_factor": "safety factor"}
+    return names.get(q, q)

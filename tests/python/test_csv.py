@@ -1,0 +1,154 @@
+"""CSV output (docs/cli.md "CSV output"): `--csv FILE`, or `--out FILE.csv`, writes the table of
+a command's result with a header of names and [units]. Read back, every column equals the same
+command's JSON (exactly: both print the computed doubles to round-trip precision) or, where the
+JSON holds only a summary, the command's HDF5 file read with h5py."""
+import csv
+import json
+import os
+import re
+import subprocess
+
+import numpy as np
+import pytest
+
+from conftest import BINARY
+
+h5py = pytest.importorskip("h5py")
+
+
+def run(args, cwd):
+    p = subprocess.run([BINARY, *args], capture_output=True, text=True, timeout=600, cwd=cwd)
+    return p
+
+
+def read_csv(path):
+    """{name: (unit, values)}: numbers as floats (an empty field is NaN), text as strings."""
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    header, body = rows[0], rows[1:]
+    table = {}
+    for k, field in enumerate(header):
+        m = re.fullmatch(r"(.+) \[(.+)\]", field)
+        assert m, f"header field without a unit: {field!r}"
+        name, unit = m.groups()
+        column = [r[k] for r in body]
+        if unit != "text":
+            column = np.array([float(v) if v != "" else np.nan for v in column])
+        table[name] = (unit, column)
+    return table
+
+
+def exact_equal(a, b, what):
+    a = np.asarray(a, dtype=float)
+    b = np.asarray([np.nan if v is None else v for v in np.ravel(b)], dtype=float)
+    np.testing.assert_allclose(a, b, rtol=1e-12, atol=0, equal_nan=True, err_msg=what)
+
+
+def test_mechanism_stroke_csv_equals_the_json(tmp_path):
+    p = run(["mechanism", "analyze", "1A-lpp", "--points", "8", "--csv", "stroke.csv", "--json"],
+            tmp_path)
+    assert p.returncode == 0, p.stderr
+    j = json.loads(p.stdout)
+    t = read_csv(tmp_path / "stroke.csv")
+    assert t["displacement"][0] == "m" and t["force_prbm"][0] == "N"
+    assert t["stress_exact_pivot1"][0] == "Pa"
+    for key in ("displacement", "force_prbm", "force_exact", "prbm_within_validity"):
+        exact_equal(t[key][1], j[key], key)
+    assert len(t["displacement"][1]) == 8
+    # --csv alone leaves no HDF5 file (nor a temporary) behind.
+    assert sorted(os.listdir(tmp_path)) == ["stroke.csv"]
+
+
+def test_design_table_csv_equals_the_json(tmp_path):
+    p = run(["design", "cfm", "--all-subclasses", "--config", "lpp", "--out", "t.h5", "--csv",
+             "t.csv", "--json"], tmp_path)
+    assert p.returncode == 0, p.stderr
+    rows = json.loads(p.stdout)["subclasses"]
+    t = read_csv(tmp_path / "t.csv")
+    assert t["name"][1] == [r["name"] for r in rows]
+    assert t["objective"][1] == [r["objective"] for r in rows]
+    for key in ("stroke_percent", "R", "K1", "K2", "percent_constant_force", "objective_value",
+                "printed_objective", "evaluations"):
+        exact_equal(t[key][1], [r[key] for r in rows], key)
+    assert t["percent_constant_force"][0] == "%"
+
+
+def test_sweep_grid_csv_is_the_file_row_major(tmp_path):
+    p = run(["sweep", "beam", "--alpha2", "0:5:4", "--n", "-1:1:3", "--out", "s.h5", "--csv",
+             "s.csv"], tmp_path)
+    assert p.returncode == 0, p.stderr
+    t = read_csv(tmp_path / "s.csv")
+    with h5py.File(tmp_path / "s.h5", "r") as f:
+        a, n = f["axes/alpha2"][()], f["axes/load_ratio_n"][()]
+        # The axes expanded over the grid, the last fastest.
+        exact_equal(t["axes/alpha2"][1], np.repeat(a, len(n)), "alpha2 axis")
+        exact_equal(t["axes/load_ratio_n"][1], np.tile(n, len(a)), "n axis")
+        for key in ("a_over_l", "b_over_l", "theta0", "stability_margin", "status"):
+            exact_equal(t[key][1], f[key][()].ravel(), key)
+            assert t[key][0] == f[key].attrs["units"]
+    assert t["theta0"][0] == "rad"
+
+
+def test_path_csv_equals_the_file_and_out_csv_equals_csv(tmp_path):
+    args = ["path", "--alpha2", "10", "--mu", "-6.2832"]
+    assert run([*args, "--out", "p.h5", "--csv", "p.csv"], tmp_path).returncode == 0
+    assert run([*args, "--out", "only.csv"], tmp_path).returncode == 0
+    t = read_csv(tmp_path / "p.csv")
+    with h5py.File(tmp_path / "p.h5", "r") as f:
+        for key in ("load_factor", "tip_x", "tip_y", "tip_theta", "stability", "status"):
+            exact_equal(t[key][1], f[key][()], key)
+        # The limit points are rows of their own (status 2), so they are in the table too.
+        assert np.count_nonzero(t["status"][1] == 2) == len(f["special_points/kind"])
+    assert "shapes/x" not in t and not any(k.startswith("special_points") for k in t)
+    assert (tmp_path / "only.csv").read_text() == (tmp_path / "p.csv").read_text()
+    assert not [f for f in os.listdir(tmp_path) if f.startswith(".")]
+
+
+def test_map_and_models_map_csv(tmp_path):
+    assert run(["map", "cfm", "--config", "lpp", "--R", "0.5:2:3", "--d", "10:40:2", "--out",
+                "m.h5", "--csv", "m.csv"], tmp_path).returncode == 0
+    t = read_csv(tmp_path / "m.csv")
+    with h5py.File(tmp_path / "m.h5", "r") as f:
+        grid = np.meshgrid(f["R"][()], f["d"][()], f["K1"][()], f["K2"][()], indexing="ij")
+        exact_equal(t["R"][1], grid[0].ravel(), "R")
+        exact_equal(t["d"][1], grid[1].ravel(), "d")
+        exact_equal(t["percent_constant_force"][1], f["percent_constant_force"][()].ravel(), "pcf")
+    assert t["d"][0] == "%"
+    assert run(["models", "map", "--n", "0", "--alpha2", "0.5:5:3", "--mu", "-1:1:2",
+                "--min-seconds", "0", "--models", "prbm,cbcm", "--out", "mm.csv"],
+               tmp_path).returncode == 0
+    t = read_csv(tmp_path / "mm.csv")
+    assert len(t["alpha2"][1]) == 6 and t["prbm/angle_error"][0] == "rad"
+    assert "cbcm/position_error" in t and "reference/b_over_l" in t
+
+
+def test_bad_csv_paths_are_refused_before_any_work(tmp_path):
+    p = run(["sweep", "beam", "--alpha2", "0:5:4", "--out", "s.h5", "--csv", "nodir/s.csv"],
+            tmp_path)
+    assert p.returncode == 2 and "--csv 'nodir/s.csv'" in p.stderr
+    assert not (tmp_path / "s.h5").exists()
+    p = run(["path", "--alpha2", "3", "--out", "p.csv", "--csv", "q.csv"], tmp_path)
+    assert p.returncode == 2 and "CSV file already" in p.stderr
+    assert os.listdir(tmp_path) == []
+
+
+def test_design_mechanism_csv_equals_the_json_designs(tmp_path):
+    p = run(["design", "mechanism", "--force", "20N", "--force-of", "whole", "--stroke", "10mm",
+             "--E", "200GPa", "--yield-strength", "1200MPa", "--safety-factor", "1.5",
+             "--length-range", "30mm:150mm", "--csv", "designs.csv", "--json"], tmp_path)
+    assert p.returncode == 0, p.stderr
+    designs = json.loads(p.stdout)["designs"]
+    t = read_csv(tmp_path / "designs.csv")
+    assert t["subclass"][1] == [d["subclass"] for d in designs]
+    for key, unit in (("R", "1"), ("l_tot", "m"), ("r2", "m"), ("force_prbm", "N"),
+                      ("force_exact", "N"), ("yield_strength", "Pa"), ("footprint", "m^2"),
+                      ("safety_factor_exact", "1"), ("percent_constant_force_exact", "%")):
+        assert t[key][0] == unit, key
+        exact_equal(t[key][1], [d[key] for d in designs], key)
+    # Per-flexure arrays: one column per entry, NaN where a design has fewer flexures.
+    width = max(len(d["thicknesses"]) for d in designs)
+    for i in range(width):
+        exact_equal(t[f"thicknesses_{i + 1}"][1],
+                    [d["thicknesses"][i] if i < len(d["thicknesses"]) else None for d in designs],
+                    f"thicknesses_{i + 1}")
+    assert "geometry" not in t

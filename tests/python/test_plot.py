@@ -1,0 +1,236 @@
+"""`flexure plot` (docs/cli.md "flexure plot"): for every kind of HDF5 file the tool writes, a small
+file made by the tool is plotted through the tool; the image must be a valid image and every array
+the figure draws (recorded by --dump-json in the file's units, with the dataset and the indices
+it came from) must equal the file's data, read here independently with h5py. Bad input: exit 2
+naming the file; matplotlib missing: exit 4 with the packages to install."""
+import json
+import os
+import subprocess
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+
+from conftest import BINARY, BUILD
+
+h5py = pytest.importorskip("h5py")
+pytest.importorskip("matplotlib")
+
+# (file, kind, the command that makes it (after `flexure`), datasets the figure must draw)
+CASES = [
+    ("sweep.h5", "sweep", "sweep beam --alpha2 0:5:11", ["a_over_l", "b_over_l", "theta0"]),
+    ("grid.h5", "sweep", "sweep beam --alpha2 0:5:6 --n -1:1:3", ["b_over_l", "axes/alpha2"]),
+    ("path.h5", "path", "path --alpha2 10 --mu -6.2832 --shapes 11",
+     ["load_factor", "tip_x", "tip_y", "tip_theta", "special_points/load_factor", "shapes/x"]),
+    ("validate.h5", "validate", "validate", ["rel_error", "tolerance"]),
+    ("stroke.h5", "mechanism-analyze", "mechanism analyze 1A-lpp --method exact --points 6",
+     ["displacement", "force_prbm", "force_exact", "stress_prbm_pivot1"]),
+    ("designs.h5", "mechanism-validate", "mechanism validate --points 6 --designs howell",
+     ["percent_constant_force", "safety_factor"]),
+    ("tolerance.h5", "mechanism-tolerance",
+     "mechanism tolerance 1A-lpp --method prbm --samples 12 --thickness 3%",
+     ["mean_force_prbm/values", "safety_factor/parameter_sensitivity"]),
+    ("dynamics.h5", "dynamics", "dynamics --mechanism 2B-lplm --omega 1:60:5 --samples 64",
+     ["omega", "mean_force", "history/0/force"]),
+    ("history.h5", "design-history", "design cfm --config lpp --d 40 --objective min-xi",
+     ["history/objective", "history/R"]),
+    ("subclasses.h5", "design-table", "design cfm --all-subclasses --config lpp",
+     ["percent_constant_force", "R"]),
+    ("map.h5", "cfm-map", "map cfm --config lpp --R 0.5:2:5 --d 10:40:4",
+     ["percent_constant_force", "Phi", "R", "d"]),
+    ("models.h5", "models-map",
+     "models map --n 0 --alpha2 0.5:5:4 --mu -1:1:3 --min-seconds 0 --models prbm,bcm",
+     ["prbm/position_error", "bcm/position_error", "alpha2", "mu"]),
+    ("bench.h5", "bench", "bench --quick --problems tip_moment,cfm_stroke --methods prbm,exact",
+     ["cfm_stroke/prbm/force", "cfm_stroke/prbm/displacement"]),
+]
+
+
+def run(args, env=None, cwd=None):
+    return subprocess.run([BINARY, *args], capture_output=True, text=True, timeout=600, env=env,
+                          cwd=cwd)
+
+
+@pytest.fixture(scope="module")
+def files(tmp_path_factory):
+    d = tmp_path_factory.mktemp("plot_files")
+    for name, _, command, _ in CASES:
+        p = run([*command.split(), "--out", str(d / name)], cwd=d)
+        assert p.returncode == 0, (command, p.stderr)
+    return d
+
+
+def as_array(values):
+    return np.array([np.nan if v is None else v for v in values], dtype=float)
+
+
+def source_values(f, source):
+    data = np.asarray(f[source["dataset"]][()], dtype=float).ravel()
+    return data[source["indices"]] if "indices" in source else data
+
+
+def check_series_against_file(dump, path):
+    """Every recorded array equals the file's values at the recorded indices (exactly: the
+    figure draws the file's numbers, scaled for display and scaled back to 1e-12)."""
+    compared = set()
+    with h5py.File(path, "r") as f:
+        for s in dump["series"]:
+            for axis in ("x", "y", "z"):
+                source = s.get(axis + "_source")
+                if not source:
+                    continue
+                drawn = as_array(s[axis])
+                expected = source_values(f, source)
+                assert drawn.shape == expected.shape, (s["panel"], axis, source["dataset"])
+                np.testing.assert_allclose(drawn, expected, rtol=1e-12, atol=0, equal_nan=True,
+                                           err_msg=f"{path}: {s['panel']} {axis}")
+                compared.add(source["dataset"])
+    return compared
+
+
+def assert_valid_png(path):
+    import matplotlib.image
+
+    with open(path, "rb") as fh:
+        assert fh.read(8) == b"\x89PNG\r\n\x1a\n", path
+    image = matplotlib.image.imread(path)
+    assert image.ndim == 3 and image.shape[0] > 200 and image.shape[1] > 300, image.shape
+    assert np.ptp(image[..., :3]) > 0.5  # not blank
+
+
+@pytest.mark.parametrize("name,kind,command,drawn", CASES, ids=[c[0] for c in CASES])
+def test_every_file_kind_is_plotted_from_its_own_data(files, tmp_path, name, kind, command,
+                                                      drawn):
+    out, dump = tmp_path / "fig.png", tmp_path / "plotted.json"
+    p = run(["plot", str(files / name), "--out", str(out), "--dump-json", str(dump), "--json"])
+    assert p.returncode == 0, p.stderr
+    answer = json.loads(p.stdout)
+    assert answer["kind"] == kind and answer["out"] == str(out)
+    assert_valid_png(out)
+    recorded = json.loads(dump.read_text())
+    assert recorded["kind"] == kind
+    compared = check_series_against_file(recorded, files / name)
+    missing = [d for d in drawn if d not in compared]
+    assert not missing, f"not drawn from the file: {missing}; drawn: {sorted(compared)}"
+
+
+def test_path_marks_the_limit_points_and_the_unstable_stretch(files, tmp_path):
+    dump = tmp_path / "p.json"
+    p = run(["plot", str(files / "path.h5"), "--out", str(tmp_path / "p.svg"), "--dump-json",
+             str(dump)])
+    assert p.returncode == 0, p.stderr
+    ET.parse(tmp_path / "p.svg")  # a well-formed SVG
+    series = json.loads(dump.read_text())["series"]
+    with h5py.File(files / "path.h5", "r") as f:
+        kinds = [k.decode() for k in f["special_points/kind"][()]]
+        stability = f["stability"][()]
+        lam_limits = f["special_points/load_factor"][()][[i for i, k in enumerate(kinds)
+                                                          if k == "limit_point"]]
+    assert len(lam_limits) == 2  # the bistable path folds twice (docs/stability.md)
+    marked = [s for s in series if s["panel"] == "tip_y:limit_point"]
+    assert len(marked) == 1
+    np.testing.assert_allclose(as_array(marked[0]["y"]), lam_limits, rtol=1e-12)
+    # The dashed (unstable) stretch covers exactly the rows the file calls unstable.
+    unstable_rows = set()
+    for s in series:
+        if s["panel"] == "tip_y" and s["label"] == "unstable":
+            unstable_rows |= set(s["y_source"]["indices"])
+    assert set(np.flatnonzero(stability == 1)) <= unstable_rows
+    assert not (set(np.flatnonzero(stability == 0)) & unstable_rows - {min(unstable_rows)})
+
+
+def test_animation_has_one_frame_per_path_point(files, tmp_path):
+    from PIL import Image
+
+    gif = tmp_path / "a.gif"
+    p = run(["plot", str(files / "path.h5"), "--out", str(tmp_path / "a.pdf"), "--animate",
+             str(gif)])
+    assert p.returncode == 0, p.stderr
+    assert (tmp_path / "a.pdf").read_bytes()[:5] == b"%PDF-"
+    with h5py.File(files / "path.h5", "r") as f:
+        points = len(f["load_factor"])
+    with Image.open(gif) as im:
+        assert im.format == "GIF" and im.n_frames == points
+
+
+def test_mechanism_force_error_panel_is_the_relative_difference(files, tmp_path):
+    dump = tmp_path / "m.json"
+    assert run(["plot", str(files / "stroke.h5"), "--out", str(tmp_path / "m.png"),
+                "--dump-json", str(dump)]).returncode == 0
+    series = {s["panel"]: s for s in json.loads(dump.read_text())["series"]}
+    with h5py.File(files / "stroke.h5", "r") as f:
+        expected = 100 * (f["force_prbm"][()] - f["force_exact"][()]) / f["force_exact"][()]
+        assert f.attrs["force_of"] in ("one half", b"one half")
+    np.testing.assert_allclose(as_array(series["force_error"]["y"]), expected, rtol=1e-12)
+
+
+def test_default_out_is_the_file_name_with_png(files, tmp_path):
+    src = tmp_path / "s.h5"
+    src.write_bytes((files / "sweep.h5").read_bytes())
+    p = run(["plot", str(src)])
+    assert p.returncode == 0, p.stderr
+    assert f"wrote {tmp_path / 's.png'}" in p.stdout
+    assert_valid_png(tmp_path / "s.png")
+
+
+def test_unknown_and_bad_files_are_refused_naming_the_file(files, tmp_path):
+    foreign = tmp_path / "foreign.h5"
+    with h5py.File(foreign, "w") as f:
+        f["x"] = np.arange(3.0)
+    p = run(["plot", str(foreign), "--out", str(tmp_path / "x.png")])
+    assert p.returncode == 2 and str(foreign) in p.stderr and "not written by flexure" in p.stderr
+    assert not (tmp_path / "x.png").exists()
+    text = tmp_path / "notes.h5"
+    text.write_text("not hdf5")
+    p = run(["plot", str(text), "--json"])
+    assert p.returncode == 2 and str(text) in p.stderr
+    error = json.loads(p.stdout)
+    assert error["exit_code"] == 2 and "not an HDF5 file" in error["error"]
+    p = run(["plot", str(tmp_path / "missing.h5")])
+    assert p.returncode == 2 and "missing.h5: no such file" in p.stderr
+    p = run(["plot", str(files / "sweep.h5"), "--out", str(tmp_path / "x.jpg")])
+    assert p.returncode == 2 and ".png, .pdf, .svg" in p.stderr
+    p = run(["plot", str(files / "sweep.h5"), "--out", str(tmp_path / "x.png"), "--animate",
+             str(tmp_path / "x.gif")])
+    assert p.returncode == 2 and "--animate" in p.stderr
+    assert not (tmp_path / "x.png").exists() and not (tmp_path / "x.gif").exists()
+
+
+def test_missing_matplotlib_is_reported_with_exit_4(files, tmp_path):
+    # An interpreter without site-packages: no numpy, h5py or matplotlib.
+    bare = tmp_path / "bare-python"
+    bare.write_text("#!/bin/sh\nexec /usr/bin/python3 -S \"$@\"\n")
+    bare.chmod(0o755)
+    env = dict(os.environ, FLEXURE_PYTHON=str(bare))
+    p = run(["plot", str(files / "sweep.h5"), "--out", str(tmp_path / "x.png")], env=env)
+    assert p.returncode == 4, p.stderr
+    assert "python3-matplotlib" in p.stderr and "not importable" in p.stderr
+
+
+def test_module_missing_is_reported_with_exit_4(files, tmp_path):
+    # A copy of the tool with no share/ beside it and no install: it says where it looked.
+    lonely = tmp_path / "bin" / "flexure"
+    lonely.parent.mkdir()
+    lonely.write_bytes(open(BINARY, "rb").read())
+    lonely.chmod(0o755)
+    env = {k: v for k, v in os.environ.items() if k != "FLEXURE_PLOT_PATH"}
+    p = subprocess.run([str(lonely), "plot", str(files / "sweep.h5")], capture_output=True,
+                       text=True, env=env, timeout=60)
+    if os.path.isdir(os.path.join("/usr/local/share/flexure/python/flexure_plot")):
+        pytest.skip("a flexure install in /usr/local provides the module")
+    assert p.returncode == 4 and "flexure_plot is not installed" in p.stderr
+    assert BUILD  # the module is found beside the build tree's tool (the other tests)
+
+
+def test_the_installed_tool_finds_the_installed_module(files, tmp_path):
+    # `cmake --install` puts the module in <prefix>/share/flexure/python beside <prefix>/bin.
+    prefix = tmp_path / "prefix"
+    p = subprocess.run(["cmake", "--install", BUILD, "--prefix", str(prefix)], capture_output=True,
+                       text=True, timeout=300)
+    assert p.returncode == 0, p.stderr
+    assert (prefix / "share/flexure/python/flexure_plot/__main__.py").is_file()
+    out = tmp_path / "installed.png"
+    p = subprocess.run([str(prefix / "bin/flexure"), "plot", str(files / "sweep.h5"), "--out",
+                        str(out)], capture_output=True, text=True, timeout=120)
+    assert p.returncode == 0, p.stderr
+    assert_valid_png(out)
