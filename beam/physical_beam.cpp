@@ -96,6 +96,7 @@ std::pair<double, double> distributed_force(const Scaling& scale,
 struct InternalForces {
   std::vector<double> moment;  // N m
   std::vector<double> axial;   // N . t, N
+  std::vector<double> shear;   // N . n, N (n = (-sin theta, cos theta))
 };
 
 // Bending moment at each shape point from the statics of the part between the clamp and the
@@ -134,6 +135,7 @@ InternalForces forces_along(const std::vector<ShapePoint>& shape, const Scaling&
     m -= M_acc - cross(x, y, Fx_acc, Fy_acc);
     out.moment.push_back(m * scale.moment_to_si);
     out.axial.push_back((Nx * std::cos(p.theta) + Ny * std::sin(p.theta)) * scale.force_to_si);
+    out.shear.push_back((-Nx * std::sin(p.theta) + Ny * std::cos(p.theta)) * scale.force_to_si);
   }
   return out;
 }
@@ -170,6 +172,8 @@ struct SectionSpan {
   // Extensible segments: the axial stress N/A joins the bending stress, N/EA is the strain.
   std::optional<double> area;  // m^2
   std::optional<double> EA;    // N
+  // The section's area where known (any segment), for the fibre stresses N/A -+ m c/I.
+  std::optional<double> fibre_area;
 };
 
 PhysicalResults evaluate(const BeamSolution& solution,
@@ -255,7 +259,18 @@ PhysicalResults evaluate(const BeamSolution& solution,
       p.theta = shape[i].theta;
       p.moment = moments[i];
       p.axial_force = forces.axial[i];
+      p.shear_force = forces.shear[i];
       if (stresses) p.stress = stress[i];
+      // Fibre stresses where the span holding the point has its area and section modulus.
+      for (const SectionSpan& span : spans) {
+        if (shape[i].s < span.s0 - 1e-12 || shape[i].s > span.s1 + 1e-12) continue;
+        if (!span.flexible || !span.section_modulus || !span.fibre_area) break;
+        const double axial = forces.axial[i] / *span.fibre_area;
+        const double bending = moments[i] / *span.section_modulus;
+        p.stress_pos_fibre = axial - bending;
+        p.stress_neg_fibre = axial + bending;
+        break;
+      }
       out.shape.push_back(p);
     }
   }
@@ -343,8 +358,24 @@ void PhysicalCantilever::validate() const {
       throw InvalidInput(
           fmt::format("--shear-coefficient must be in (0, 1] (got {:g})", shear_coefficient));
     }
-  } else if (nu) {
-    throw InvalidInput("--nu is used with --extensible only");
+  } else if (nu && !plate_given) {
+    throw InvalidInput("--nu is used with --extensible or --plate on/auto only");
+  }
+  if (plate != PlateRule::kOff) {
+    if (!nu) {
+      throw InvalidInput(fmt::format(
+          "--plate {} needs Poisson's ratio --nu (or a --material whose row gives nu): the "
+          "plate modulus is E/(1 - nu^2)",
+          to_string(plate)));
+    }
+    if (!(*nu > -1.0 && *nu < 0.5)) {
+      throw InvalidInput(fmt::format("--nu must be in (-1, 0.5) (got {:g})", *nu));
+    }
+    if (plate == PlateRule::kAuto && !(width && thickness)) {
+      throw InvalidInput(
+          "--plate auto needs the strip's width and thickness (the Searle parameter b^2/(R h)): "
+          "give the section as --width and --thickness, or choose --plate on or off");
+    }
   }
   const double EI = flexural_rigidity();
   if (!(std::isfinite(EI) && EI > 0.0)) {
@@ -353,6 +384,11 @@ void PhysicalCantilever::validate() const {
                     "finite number; check --E and the section",
                     EI));
   }
+}
+
+double PhysicalCantilever::bending_modulus() const {
+  const bool applied = plate == PlateRule::kOn || (plate == PlateRule::kAuto && plate_applied);
+  return applied && nu ? E / (1.0 - *nu * *nu) : E;
 }
 
 double PhysicalCantilever::second_moment() const {
@@ -441,9 +477,12 @@ SegmentChain PhysicalCantilever::to_chain(EndCondition end,
   return chain;
 }
 
-PhysicalBeamSolution solve_physical_beam(BeamMethod method,
-                                         const PhysicalCantilever& beam,
-                                         BeamProblem problem) {
+namespace {
+
+// One solve of the cantilever with its bending modulus as it stands (plate_applied decided).
+PhysicalBeamSolution solve_cantilever(BeamMethod method,
+                                      const PhysicalCantilever& beam,
+                                      BeamProblem problem) {
   problem = beam.to_problem(problem);
   const int shape_points = problem.shape_points;
   if (problem.chain && beam.beyond_elastica() &&
@@ -480,6 +519,7 @@ PhysicalBeamSolution solve_physical_beam(BeamMethod method,
   span.s0 = 0.0;
   span.s1 = 1.0;
   if (beam.thickness) span.section_modulus = beam.second_moment() / (0.5 * *beam.thickness);
+  span.fibre_area = beam.area();
   if (beam.extensible) {
     span.area = beam.area();
     span.EA = beam.E * beam.area().value_or(0.0);
@@ -489,9 +529,44 @@ PhysicalBeamSolution solve_physical_beam(BeamMethod method,
   return out;
 }
 
+}  // namespace
+
+PhysicalBeamSolution solve_physical_beam(BeamMethod method,
+                                         const PhysicalCantilever& given,
+                                         BeamProblem problem) {
+  given.validate();
+  PhysicalCantilever beam = given;
+  beam.plate_applied = false;
+  if (beam.plate != PlateRule::kAuto) {
+    PhysicalBeamSolution out = solve_cantilever(method, beam, problem);
+    out.physical.modulus = {
+        choose_modulus(beam.plate, beam.E, beam.nu, beam.width, beam.thickness, {}, "the beam")};
+    return out;
+  }
+  // auto: the Searle parameter at the largest curvature |M|/EI of the beam solved with E decides
+  // (docs/plate-modulus.md); a plate is then solved again with E/(1 - nu^2).
+  PhysicalBeamSolution first = solve_cantilever(method, beam, problem);
+  if (!first.solution.converged()) return first;
+  const double curvature = first.physical.max_moment / beam.flexural_rigidity();
+  const ModulusChoice choice = choose_modulus(
+      PlateRule::kAuto, beam.E, beam.nu, beam.width, beam.thickness, curvature, "the beam");
+  if (!choice.plate) {
+    first.physical.modulus = {choice};
+    return first;
+  }
+  beam.plate_applied = true;
+  PhysicalBeamSolution out = solve_cantilever(method, beam, problem);
+  out.physical.modulus = {choice};
+  return out;
+}
+
 std::optional<double> SegmentProperties::cross_section_area() const {
   if (area) return area;
   return section.area();
+}
+
+double SegmentProperties::chain_modulus() const {
+  return plate == PlateRule::kOn ? material.E / (1.0 - material.nu * material.nu) : material.E;
 }
 
 void PhysicalChain::validate() const {
@@ -529,16 +604,24 @@ void PhysicalChain::validate() const {
       throw InvalidInput(fmt::format(
           "PhysicalChain segment {} gives an EI_profile and a section; give one", k + 1));
     }
-    // EI of the segment is E I of its section (the reader computes it so; a chain built from
-    // objects must agree, or its stresses would belong to another beam).
-    const double EI = p.material.E * p.section.second_moment();
+    // EI of the segment is E I of its section, or E I/(1 - nu^2) with plate on (the reader
+    // computes it so; a chain built from objects must agree, or its stresses would belong to
+    // another beam). With plate auto it is E I: the plate modulus is decided when solving.
+    const double EI = p.chain_modulus() * p.section.second_moment();
     if (!(std::fabs(flexible->EI - EI) <= 1e-12 * EI)) {
       throw InvalidInput(fmt::format(
-          "PhysicalChain segment {}: EI = {:g} N m^2 is not E I = {:g} N m^2 of its section and "
+          "PhysicalChain segment {}: EI = {:g} N m^2 is not {} = {:g} N m^2 of its section and "
           "material",
           k + 1,
           flexible->EI,
+          p.plate == PlateRule::kOn ? "E I/(1 - nu^2) (plate on)" : "E I",
           EI));
+    }
+    if (p.plate == PlateRule::kAuto && p.section.shape != Section::Shape::kRectangle) {
+      throw InvalidInput(fmt::format(
+          "PhysicalChain segment {}: plate auto needs a rectangle section (the Searle parameter "
+          "b^2/(R h) needs the width and thickness); choose plate on or off",
+          k + 1));
     }
     if (p.material.yield_strength) {
       if (yield && *yield != *p.material.yield_strength) {
@@ -571,10 +654,11 @@ std::optional<double> PhysicalChain::effective_yield_strength() const {
   return yield_strength;
 }
 
-PhysicalBeamSolution solve_physical_chain(BeamMethod method,
-                                          BeamProblem problem,
-                                          const PhysicalChain& physical_chain) {
-  physical_chain.validate();
+namespace {
+
+PhysicalBeamSolution solve_chain_once(BeamMethod method,
+                                      BeamProblem problem,
+                                      const PhysicalChain& physical_chain) {
   const SegmentChain& chain = physical_chain.chain;
   problem.chain = chain;
   problem.boundary = chain.end;
@@ -606,6 +690,7 @@ PhysicalBeamSolution solve_physical_chain(BeamMethod method,
       span.section_modulus =
           properties->section.second_moment() / (0.5 * properties->section.thickness);
     }
+    if (properties) span.fibre_area = properties->cross_section_area();
     if (const auto* f = std::get_if<FlexibleSegment>(&chain.segments[k]); f && f->extensible()) {
       span.EA = f->EA;
       if (properties) span.area = properties->cross_section_area();
@@ -614,7 +699,72 @@ PhysicalBeamSolution solve_physical_chain(BeamMethod method,
   }
   out.physical = evaluate(
       out.solution, scale, spans, physical_chain.effective_yield_strength(), requested, step);
+  // The largest |m| of each segment, for plate = "auto" (on the dense shape, before thinning).
+  if (std::any_of(physical_chain.segments.begin(),
+                  physical_chain.segments.end(),
+                  [](const auto& properties) {
+                    return properties && properties->plate == PlateRule::kAuto;
+                  })) {
+    const InternalForces forces = forces_along(out.solution.shape, scale);
+    out.segment_max_moment.assign(spans.size(), 0.0);
+    for (std::size_t i = 0; i < out.solution.shape.size(); ++i) {
+      for (std::size_t k = 0; k < spans.size(); ++k) {
+        const double s_i = out.solution.shape[i].s;
+        if (s_i < spans[k].s0 - 1e-12 || s_i > spans[k].s1 + 1e-12) continue;
+        out.segment_max_moment[k] =
+            std::max(out.segment_max_moment[k], std::fabs(forces.moment[i]));
+      }
+    }
+  }
   thin_shape(out.solution, requested, step);
+  return out;
+}
+
+}  // namespace
+
+PhysicalBeamSolution solve_physical_chain(BeamMethod method,
+                                          BeamProblem problem,
+                                          const PhysicalChain& physical_chain) {
+  physical_chain.validate();
+  PhysicalBeamSolution out = solve_chain_once(method, problem, physical_chain);
+  if (!out.solution.converged()) return out;
+  // The modulus of each flexible segment with a section: on and off as given (the chain's EI
+  // already holds on's E I/(1 - nu^2)); auto by the Searle parameter at the segment's largest
+  // curvature |m|/EI of this solve (docs/plate-modulus.md), and the chain solved again where a
+  // segment turns out a plate.
+  std::vector<ModulusChoice> choices;
+  PhysicalChain plated = physical_chain;
+  bool again = false;
+  for (std::size_t k = 0; k < physical_chain.segments.size(); ++k) {
+    const std::optional<SegmentProperties>& properties = physical_chain.segments[k];
+    if (!properties) continue;
+    const std::string where = fmt::format("segment {}", k + 1);
+    const Material& material = properties->material;
+    if (properties->plate != PlateRule::kAuto) {
+      // Material::nu always holds a value (0.3 by default): reported where the rule uses it.
+      const std::optional<double> nu =
+          properties->plate == PlateRule::kOff ? std::nullopt : std::optional<double>(material.nu);
+      choices.push_back(choose_modulus(properties->plate, material.E, nu, {}, {}, {}, where));
+      continue;
+    }
+    auto& segment = std::get<FlexibleSegment>(plated.chain.segments[k]);
+    const double curvature = out.segment_max_moment[k] / segment.EI;
+    const ModulusChoice choice = choose_modulus(PlateRule::kAuto,
+                                                material.E,
+                                                material.nu,
+                                                properties->section.width,
+                                                properties->section.thickness,
+                                                curvature,
+                                                where);
+    if (choice.plate) {
+      segment.EI = choice.effective_E * properties->section.second_moment();
+      again = true;
+    }
+    choices.push_back(choice);
+  }
+  // The re-solve skips validate(): an auto segment's EI is now E I/(1 - nu^2) by decision.
+  if (again) out = solve_chain_once(method, problem, plated);
+  out.physical.modulus = std::move(choices);
   return out;
 }
 

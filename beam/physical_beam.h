@@ -10,6 +10,7 @@
 
 #include "flexure/beam/beam_problem.h"
 #include "flexure/solver/chain_model/segment_chain.h"
+#include "flexure/solver/common/plate_modulus.h"
 #include "flexure/solver/common/section.h"
 
 namespace flexure {
@@ -35,8 +36,15 @@ struct PhysicalCantilever {
   std::optional<double> density;  // kg/m^3: self-weight rho A g along -y (needs the rectangle)
   double g = 9.80665;             // m/s^2
   bool extensible = false;        // EA = E A, GAs = k E A / (2 (1 + nu)) (needs the rectangle)
-  std::optional<double> nu;       // Poisson's ratio (extensible)
+  std::optional<double> nu;       // Poisson's ratio (extensible, plate on or auto)
   double shear_coefficient = 5.0 / 6.0;  // Timoshenko's k of the rectangle
+  // The bending modulus (docs/plate-modulus.md): off E, on E/(1 - nu^2), auto by the Searle
+  // parameter b^2/(R h) at the beam's largest curvature. plate_applied is the decision the
+  // flexural rigidity uses: on sets it, auto is decided by solve_physical_beam (which sets it on
+  // its copy); the axial and shear rigidities keep E (the plate effect is a bending one).
+  PlateRule plate = PlateRule::kOff;
+  bool plate_given = false;  // --plate was given (then --nu is accepted even with off)
+  bool plate_applied = false;
 
   // Whether any of the above is given.
   bool beyond_elastica() const {
@@ -56,7 +64,9 @@ struct PhysicalCantilever {
   void validate() const;
   // I, or b h^3 / 12 for the rectangle.
   double second_moment() const;
-  double flexural_rigidity() const { return E * second_moment(); }
+  // E, or E/(1 - nu^2) when the plate modulus applies (plate on, or auto decided for it).
+  double bending_modulus() const;
+  double flexural_rigidity() const { return bending_modulus() * second_moment(); }
   // Howell's nondimensional problem of this beam, forward (the load is given). A purely axial load
   // (Fy = 0, Fx != 0) has no Howell's n; it is then a one-segment chain with the same
   // nondimensional loads, which the shooting and chain methods solve. The method settings
@@ -78,6 +88,12 @@ struct PhysicalShapePoint {
   double moment = 0.0;  // bending moment, N m (counter-clockwise on the part nearer the clamp)
   std::optional<double> stress;  // |M| c / I (+ |N_a|/A for an extensible beam), Pa
   double axial_force = 0.0;      // N_a = N . t, N (tension positive)
+  // V = N . n with n = (-sin theta, cos theta) the normal left of the tangent and N the force the
+  // part beyond s exerts on the part before it; dm/ds = -V (docs/units.md "Internal forces").
+  double shear_force = 0.0;
+  // The stress at the fibre h/2 along +n and along -n: N_a/A -+ m c/I (a positive moment
+  // compresses the +n fibre). Empty without the section's area and thickness (EI alone).
+  std::optional<double> stress_pos_fibre, stress_neg_fibre;
 };
 
 struct PhysicalResults {
@@ -99,6 +115,9 @@ struct PhysicalResults {
   // larger of the root and tip moments).
   const char* max_from = "shape";
   std::vector<PhysicalShapePoint> shape;  // the points the caller asked for
+  // The bending modulus used and why (docs/plate-modulus.md); one per flexible segment of a
+  // chain with a section (empty for segments given by EI), one for a cantilever.
+  std::vector<ModulusChoice> modulus;
 };
 
 // Solves a physical cantilever with `method` (any beam method). `settings` gives the method's
@@ -109,6 +128,7 @@ struct PhysicalResults {
 struct PhysicalBeamSolution {
   BeamSolution solution;
   PhysicalResults physical;
+  std::vector<double> segment_max_moment;  // chains with plate = "auto": largest |m| per segment
 };
 PhysicalBeamSolution solve_physical_beam(BeamMethod method,
                                          const PhysicalCantilever& beam,
@@ -120,10 +140,19 @@ PhysicalBeamSolution solve_physical_beam(BeamMethod method,
 // returns an io::ChainFile, which is one).
 struct SegmentProperties {
   Section section;    // the rectangle (width, thickness) or a general I with its thickness
-  Material material;  // E (EI = E I), and S_y for the safety factor
+  Material material;  // E (EI = E I), nu (the plate modulus), and S_y for the safety factor
   // The cross-section area of a general section given with A (docs/chain-toml.md), m^2: the axial
   // stress N/A of an extensible segment. A rectangle's area is width thickness.
   std::optional<double> area;
+  // The bending modulus (docs/plate-modulus.md) with material.nu: off E; on E/(1 - nu^2), and the
+  // segment's EI is then that modulus times I (the rigidity the chain is solved with, so the chain
+  // alone, e.g. `path --chain`, bends as a plate too); auto decides by the Searle parameter
+  // b^2/(R h) at the segment's largest curvature (a rectangle section only): the segment's EI is
+  // E I, and solve_physical_chain solves again with E I/(1 - nu^2) where the strip is a plate.
+  PlateRule plate = PlateRule::kOff;
+
+  // E, or E/(1 - nu^2) with plate on: the modulus the segment's EI is made of.
+  double chain_modulus() const;
 
   // `area`, or the rectangle's width thickness; unknown for a general section without A.
   std::optional<double> cross_section_area() const;
@@ -139,9 +168,11 @@ struct PhysicalChain {
   std::optional<double> yield_strength;
 
   // Throws InvalidInput naming the segment: one entry per segment, properties only on flexible
-  // segments, each section and material valid, a flexible segment's EI equal to E I (relative
-  // 1e-12; no EI_profile with properties), and one yield strength for the chain (the safety factor
-  // is the yield strength over the largest stress, so segments of different S_y are refused).
+  // segments, each section and material valid, a flexible segment's EI equal to E I, or to
+  // E I/(1 - nu^2) with plate on (SegmentProperties::chain_modulus(); relative 1e-12; no
+  // EI_profile with properties), plate auto only on a rectangle, and one yield strength for the
+  // chain (the safety factor is the yield strength over the largest stress, so segments of
+  // different S_y are refused).
   void validate() const;
   // The yield strength of the chain: the segments' (all equal, see validate()) or yield_strength.
   std::optional<double> effective_yield_strength() const;
@@ -150,7 +181,9 @@ struct PhysicalChain {
 // The same for a chain in physical units: its sections give the stresses, where every flexible
 // segment has one. `problem` gives the method's settings (tolerance, integrator, shape points); its
 // chain and boundary are replaced by `chain`'s. Throws InvalidInput when chain.validate() does.
-// (An io::ChainFile read from TOML is a PhysicalChain.)
+// Segments with plate auto are decided after a first solve (each at its own largest curvature
+// |m|/EI) and the chain solved again where one turns out a plate; physical.modulus reports each
+// sectioned segment's choice. (An io::ChainFile read from TOML is a PhysicalChain.)
 PhysicalBeamSolution solve_physical_chain(BeamMethod method,
                                           BeamProblem problem,
                                           const PhysicalChain& chain);

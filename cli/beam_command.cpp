@@ -17,6 +17,7 @@
 #include "cli/command_runner.h"
 #include "cli/commands.h"
 #include "cli/fatigue_flags.h"
+#include "cli/modulus_output.h"
 #include "cli/physical_flags.h"
 #include "cli/warning_output.h"
 #include "flexure/beam/method_selector.h"
@@ -273,6 +274,7 @@ void print_physical(const PhysicalResults& r) {
       r.max_moment,
       r.max_moment_at,
       std::string_view(r.max_from) == "ends" ? " (PRBM: the larger end moment)" : "");
+  print_modulus(r.modulus);
   if (r.max_axial_strain) {
     fmt::print("    largest axial force |N| = {:.10g} N; axial strain N/EA up to {:.6g}\n",
                r.max_axial_force,
@@ -356,7 +358,10 @@ void print_report(const BeamInput& input,
         b.length,
         b.E,
         b.second_moment(),
-        b.flexural_rigidity(),
+        // The rigidity solved with (E I, or E I/(1 - nu^2) with the plate modulus).
+        physical && !physical->modulus.empty()
+            ? physical->modulus.front().effective_E * b.second_moment()
+            : b.flexural_rigidity(),
         b.Fx,
         b.Fy,
         b.M);
@@ -490,7 +495,9 @@ void add_physical_json(Json& out, const BeamInput& input, const PhysicalResults&
     const PhysicalCantilever& b = *input.physical;
     out["E_Pa"] = b.E;
     out["I_m4"] = b.second_moment();
-    out["EI_Nm2"] = b.flexural_rigidity();
+    // The rigidity solved with: E I, or E I/(1 - nu^2) with the plate modulus.
+    out["EI_Nm2"] = r.modulus.empty() ? b.flexural_rigidity()
+                                      : r.modulus.front().effective_E * b.second_moment();
     out["Fx_N"] = b.Fx;
     out["Fy_N"] = b.Fy;
     out["M_Nm"] = b.M;
@@ -505,6 +512,7 @@ void add_physical_json(Json& out, const BeamInput& input, const PhysicalResults&
       }
     }
   }
+  add_modulus_json(out, r.modulus);
   out["max_axial_force_N"] = r.max_axial_force;
   out["max_axial_strain"] = r.max_axial_strain ? Json(*r.max_axial_strain) : Json(nullptr);
   out["tip_x"] = r.tip_x;
@@ -643,6 +651,19 @@ Json to_json(const BeamInput& input,
         shape[i]["moment_Nm"] = p.moment;
         shape[i]["stress_Pa"] = p.stress ? Json(*p.stress) : Json(nullptr);
         shape[i]["axial_force_N"] = p.axial_force;
+        // Internal forces (docs/units.md "Internal forces"): N, V, m and the fibre stresses
+        // N/A -+ m c/I (null where the section's area or thickness is not given).
+        shape[i]["N_N"] = p.axial_force;
+        shape[i]["V_N"] = p.shear_force;
+        shape[i]["m_Nm"] = p.moment;
+        shape[i]["stress_pos_fibre_Pa"] =
+            p.stress_pos_fibre ? Json(*p.stress_pos_fibre) : Json(nullptr);
+        shape[i]["stress_neg_fibre_Pa"] =
+            p.stress_neg_fibre ? Json(*p.stress_neg_fibre) : Json(nullptr);
+        if (!p.stress_pos_fibre) {
+          shape[i]["stress_note"] =
+              "stress unavailable: the section's area and thickness are not given (EI or I alone)";
+        }
       }
     }
     out["shape"] = std::move(shape);

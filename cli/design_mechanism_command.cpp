@@ -13,6 +13,7 @@
 #include "cli/csv_output.h"
 #include "cli/fatigue_flags.h"
 #include "cli/mechanism_geometry_output.h"
+#include "cli/modulus_output.h"
 #include "flexure/io/mechanism_geometry_toml.h"
 #include "flexure/io/mechanism_toml.h"
 #include "flexure/io/output_path.h"
@@ -49,6 +50,7 @@ struct DesignMechanismArgs {
   CLI::Option* yield_option = nullptr;
   CLI::Option* pcf_min_option = nullptr;
   std::string material;
+  std::string plate, nu;  // the bending modulus (docs/plate-modulus.md)
   bool fatigue = false;
   FatigueFlags fatigue_flags;
 };
@@ -74,6 +76,35 @@ design::SizeObjective parse_minimize(const std::string& text) {
 design::LengthRange range_of(const std::string& text, const char* what) {
   const io::QuantityRange r = io::parse_quantity_range(text, io::Dimension::kLength, what);
   return {r.lower.si, r.upper.si};
+}
+
+// The bending modulus of --plate and --nu (or the material's nu). auto is refused: the widths
+// that decide it are the design's outputs.
+ModulusChoice plate_choice(const DesignMechanismArgs& a, const std::string& material_id) {
+  const PlateRule rule =
+      a.plate.empty() ? PlateRule::kOff : plate_rule_from_string(a.plate, "--plate");
+  if (rule == PlateRule::kAuto) {
+    throw InvalidInput(
+        "design mechanism --plate auto: the strip widths that decide it are what the design "
+        "chooses; design with --plate on or off and check with `flexure mechanism analyze "
+        "FILE --plate auto`");
+  }
+  std::optional<double> nu;
+  if (!a.nu.empty()) {
+    const io::Quantity q = io::parse_quantity(a.nu, io::Dimension::kAngle, "--nu");
+    if (q.has_unit()) throw InvalidInput("--nu is a plain number without a unit");
+    nu = q.si;
+  } else if (!material_id.empty()) {
+    nu = find_material(material_id).nu;
+  }
+  double E = 0.0;
+  if (!a.E.empty()) {
+    E = io::parse_quantity(a.E, io::Dimension::kStress, "--E").si;
+  } else {
+    E = find_material(a.material).E;
+  }
+  if (rule == PlateRule::kOff) nu.reset();
+  return choose_modulus(rule, E, nu, {}, {}, {}, "design mechanism");
 }
 
 design::MechanismSpec make_spec(const DesignMechanismArgs& a, mechanism::ForceOf of) {
@@ -109,7 +140,8 @@ design::MechanismSpec make_spec(const DesignMechanismArgs& a, mechanism::ForceOf
     }
     m.E = E.si;
   }
-  s.E = m.E;
+  // The plate modulus (docs/plate-modulus.md): the strips are sized with E/(1 - nu^2).
+  s.E = plate_choice(a, m.material).effective_E;
   if (*a.yield_option) {
     s.yield_strength =
         io::parse_quantity(a.yield_strength, Dimension::kStress, "--yield-strength").si;
@@ -309,7 +341,19 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
   if (!args.csv.empty()) io::check_output_path(args.csv, "--csv");
   if (!args.drawing.empty()) check_drawing_path(args.drawing, "--drawing");
   const double factor = mechanism::force_of_factor(mechanism::ForceOf::kOneHalf, of);
-  const design::MechanismDesignReport r = design::design_mechanisms(spec);
+  const ModulusChoice modulus =
+      plate_choice(args, args.material.empty() ? "" : find_material(args.material).id);
+  // The designs carry the modulus as given, the rule and nu: a written file reads back to the
+  // same strips (plate = "on" and [material].nu; mechanism analyze applies it).
+  const auto as_given = [&](mechanism::MechanismDesign& d) {
+    if (!modulus.plate) return;
+    d.E = modulus.E;
+    d.plate = modulus.rule;
+    d.nu = modulus.nu;
+  };
+  design::MechanismDesignReport r = design::design_mechanisms(spec);
+  for (auto& d : r.designs) as_given(d.design);
+  for (auto& d : r.rejected) as_given(d.design);
   Json rejected = Json::array();
   for (const auto& d : r.rejected) rejected.push_back(design_json(d, factor, spec.force));
   const auto mm_hint = [](double l) {
@@ -344,7 +388,12 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
   }
   // --model exact: the best design refined against the exact model (R, K1, K2 and sizes).
   std::optional<design::DimensionedDesign> refined;
-  if (args.model == "exact") refined = design::refine_design_exact(spec, r.designs.front());
+  if (args.model == "exact") {
+    design::DimensionedDesign start = r.designs.front();
+    start.design.E = spec.E;  // the refinement solves with the effective modulus
+    refined = design::refine_design_exact(spec, start);
+    as_given(refined->design);
+  }
   const bool refinement_failed = refined && !refined->feasible;
   const Json designs_json = [&] {
     Json a = Json::array();
@@ -366,6 +415,9 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
       {"section_bounds", bounds_json(spec.bounds)},
       {"force_tolerance_percent", 100.0 * spec.force_tolerance},
       {"material", spec.material.empty() ? Json(nullptr) : Json(spec.material)},
+      {"modulus_rule", modulus.modulus_rule()},
+      {"effective_E", modulus.effective_E},
+      {"modulus", Json::array({modulus_choice_json(modulus)})},
       {"fatigue", spec.fatigue.has_value()},
       {"sizing_safety_factor", optional_json(r.sizing_safety_factor)},
       {"refined", refined ? refined_json(*refined, factor, spec.force) : Json(nullptr)},
@@ -560,6 +612,11 @@ void register_design_mechanism_command(CLI::App& app) {
                   a->material,
                   "Material from the library (`flexure materials`): E, S_y, S_ut, S_e'");
   cmd->add_option("--E", a->E, "Young's modulus, e.g. 30Msi or 200GPa (or from --material)");
+  cmd->add_option("--plate",
+                  a->plate,
+                  "Bending modulus of the strips: off (E, default) or on (E/(1 - nu^2), wide "
+                  "strips; docs/plate-modulus.md)");
+  cmd->add_option("--nu", a->nu, "Poisson's ratio for --plate on (default: the material's)");
   cmd->add_flag("--fatigue",
                 a->fatigue,
                 "Keep only designs with infinite life at --safety-factor (modified Goodman over "

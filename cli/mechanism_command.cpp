@@ -20,6 +20,7 @@
 #include "cli/fatigue_flags.h"
 #include "cli/general_mechanism_command.h"
 #include "cli/mechanism_geometry_output.h"
+#include "cli/modulus_output.h"
 #include "cli/slow_progress.h"
 #include "flexure/benchmarks/studies/mechanism_method.h"
 #include "flexure/benchmarks/studies/mechanism_tolerance.h"
@@ -29,6 +30,7 @@
 #include "flexure/io/parallel/mpi_world.h"
 #include "flexure/io/parallel/work_distribution.h"
 #include "flexure/io/provenance.h"
+#include "flexure/io/quantity.h"
 #include "flexure/mechanisms/constant_force.h"
 #include "flexure/mechanisms/howell_designs.h"
 #include "flexure/mechanisms/inversion.h"
@@ -37,6 +39,7 @@
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/mechanism_fatigue.h"
 #include "flexure/mechanisms/mechanism_geometry.h"
+#include "flexure/mechanisms/mechanism_plate.h"
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/mechanisms/modified_springs.h"
 #include "flexure/solver/common/errors.h"
@@ -59,6 +62,23 @@ MechanismDesign resolve(const std::string& what) {
 }
 
 Json or_null(bool present, double value) { return present ? Json(value) : Json(nullptr); }
+
+// --plate and --nu of mechanism analyze over the design's own (file or material) values.
+void apply_plate_flags(MechanismDesign& d, const std::string& plate, const std::string& nu) {
+  if (!nu.empty()) {
+    const io::Quantity q = io::parse_quantity(nu, io::Dimension::kAngle, "--nu");
+    if (q.has_unit()) throw InvalidInput("--nu is a plain number without a unit");
+    d.nu = q.si;
+  }
+  if (!plate.empty()) d.plate = plate_rule_from_string(plate, "--plate");
+  if (d.plate != PlateRule::kOff && !d.nu) {
+    throw InvalidInput(
+        fmt::format("--plate {} needs Poisson's ratio: give --nu (the design '{}' has none{})",
+                    to_string(d.plate),
+                    d.name,
+                    d.material.empty() ? "" : ", nor has its material row"));
+  }
+}
 
 // Per-pivot values in the DESCRIBED pivot order (inversions: pivot 1 at the fixed slider block).
 Json pivot_array(const MechanismDesign& d, const std::array<double, 3>& v, bool present = true) {
@@ -134,7 +154,7 @@ Json design_json(const MechanismDesign& d) {
       {"class", d.configuration().class_name},
       {"r2", m.r2},
       {"r3", m.r3},
-      {"E", d.E},
+      {"E", d.modulus.empty() ? d.E : d.modulus.front().E},
       {"yield_strength", d.yield_strength},
       {"stroke", d.stroke},
       {"toggle_stroke", d.toggle_stroke()},
@@ -260,6 +280,8 @@ Json analysis_json(const MechanismAnalysis& a) {
   Json j;
   j["design"] = design_json(a.design);
   j["units"] = "SI: m, N, Pa";
+  // The bending modulus solved with (docs/plate-modulus.md); design.E is the modulus as given.
+  if (!a.design.modulus.empty()) add_modulus_json(j, a.design.modulus);
   // What force_prbm, force_exact and the mean forces are the force of (force_of.h).
   j["force_of"] = force_of_label(a.force_of);
   j["spring_rule"] =
@@ -1024,6 +1046,7 @@ void register_mechanism_command(CLI::App& app) {
     std::string model;        // general mechanism files only
     std::string input_range;  // general mechanism files only
     std::string material;
+    std::string plate, nu;  // the bending modulus (docs/plate-modulus.md)
     FatigueFlags fatigue;
     bool stable = false;
   };
@@ -1078,6 +1101,12 @@ void register_mechanism_command(CLI::App& app) {
                       args->material,
                       "Material from the library (`flexure materials`): replaces the design's E, "
                       "S_y and gives S_ut, S_e' for the fatigue check");
+  analyze->add_option("--plate",
+                      args->plate,
+                      "Bending modulus of the strips: off (E, default), on (E/(1 - nu^2)), auto "
+                      "(by the Searle parameter b^2/(R h); docs/plate-modulus.md)");
+  analyze->add_option(
+      "--nu", args->nu, "Poisson's ratio for --plate (default: the material's, [material].nu)");
   analyze->add_flag("--stable",
                     args->stable,
                     "Exact model: where the stroke from the PRBM start is unstable with the "
@@ -1129,6 +1158,7 @@ void register_mechanism_command(CLI::App& app) {
     MechanismDesign d = resolve(args->what);
     if (!args->spring_rule.empty()) apply_spring_rule(d, parse_spring_rule(args->spring_rule));
     if (!args->material.empty()) apply_material_flag(d, args->material);
+    apply_plate_flags(d, args->plate, args->nu);
     args->fatigue.apply_strengths(d);
     const FatigueOptions fatigue_options = args->fatigue.options();
     // A design file's force_of (written by `flexure design mechanism`) unless --force-of is given.
@@ -1155,7 +1185,7 @@ void register_mechanism_command(CLI::App& app) {
     o.exact = choice.exact;
     o.stable = args->stable;
     o.progress = slow_progress(d.name + ": exact model, stroke points and stresses");
-    MechanismAnalysis a = analyze_mechanism(d, o);
+    MechanismAnalysis a = analyze_mechanism_with_modulus(d, o);
     report_forces_of(a, force_of);
     if (a.has_exact && o.exact && !a.exact.converged()) {
       throw NoConvergence(fmt::format("{}: {}", d.name, a.exact.message));

@@ -17,6 +17,7 @@
 #include "cli/physical_flags.h"
 #include "flexure/beam/beam_problem.h"
 #include "flexure/benchmarks/studies/load_path_study.h"
+#include "flexure/benchmarks/studies/path_shapes_xdmf.h"
 #include "flexure/io/chain_toml.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/output_path.h"
@@ -100,7 +101,20 @@ PathRequest make_request(const PathArgs& args) {
   }
   // The file first: its own errors (a missing file, bad TOML) are named before the combination.
   std::optional<SegmentChain> file_chain;
-  if (from_file) file_chain = io::read_chain_toml(args.chain_file);
+  if (from_file) {
+    const io::ChainFile file = io::read_chain_file(args.chain_file);
+    for (std::size_t k = 0; k < file.segments.size(); ++k) {
+      if (file.segments[k] && file.segments[k]->plate == PlateRule::kAuto) {
+        // As --plate auto below: one solved curvature decides, a path passes through many.
+        throw InvalidInput(
+            fmt::format("{}: segment {} has plate = \"auto\", which is decided by a solved beam's "
+                        "curvature; a path passes through many: give plate = \"on\" or \"off\"",
+                        args.chain_file,
+                        k + 1));
+      }
+    }
+    file_chain = file.chain;
+  }
   if (from_file && (howell || args.boundary != "free")) {
     throw InvalidInput(
         "--chain FILE.toml describes the whole problem (segments, loads, boundary); do not "
@@ -181,6 +195,12 @@ PathRequest make_request(const PathArgs& args) {
 
   if (physical) {
     const PhysicalCantilever beam = args.physical.parse();
+    if (beam.plate == PlateRule::kAuto) {
+      // auto is decided at one solved curvature; a path passes through many (plate-modulus.md).
+      throw InvalidInput(
+          "--plate auto is decided by a solved beam's curvature; a path passes "
+          "through many: choose --plate on or off");
+    }
     request.chain = beam.to_chain(end, tip);
     request.units = PathUnits::si(beam.length, beam.flexural_rigidity());
   } else if (from_file) {
@@ -353,9 +373,14 @@ void run_path(const PathArgs& args) {
   write_path_file(output->root(), t);
   output->commit();
   csv.write({"load_factor"}, {"special_points", "shapes"});
+  // With --shapes, the XDMF sidecar that ParaView opens (io/shapes_xdmf.h); not for a hidden
+  // temporary HDF5 file (--out FILE.csv, or --csv alone), which is removed.
+  const std::string xdmf =
+      csv.hdf5_path() == args.out ? write_path_shapes_xdmf(args.out, t) : std::string();
   for (const std::string& w : t.warnings) warn(w);
   if (args.json) {
     Json out{{"out", args.out},
+             {"xdmf", xdmf.empty() ? Json(nullptr) : Json(xdmf)},
              {"method", args.method},
              {"points", static_cast<long>(t.size())},
              {"completed", t.completed},

@@ -88,6 +88,12 @@ void PhysicalFlags::add_to(CLI::App& command, bool with_yield_strength) {
   for (std::size_t i = 0; i < std::size(more); ++i) {
     options.push_back(group->add_option(more[i].first, *more[i].second, more_help[i]));
   }
+  options.push_back(group->add_option(
+      "--plate",
+      plate,
+      "Bending modulus of a wide strip: off (E, default), on (plate modulus E/(1 - nu^2)), auto "
+      "(plate where the Searle parameter b^2/(R h) >= about 6.3; docs/plate-modulus.md); on and "
+      "auto need --nu or a --material with nu"));
   options.push_back(group->add_flag(
       "--extensible",
       extensible,
@@ -133,6 +139,12 @@ PhysicalCantilever PhysicalFlags::parse() const {
   }
   beam.extensible = extensible;
   if (!nu.empty()) beam.nu = plain_number(nu, "--nu");
+  if (!plate.empty()) {
+    beam.plate = plate_rule_from_string(plate, "--plate");
+    beam.plate_given = true;
+  }
+  // The material's Poisson's ratio where the plate modulus needs one and --nu is not given.
+  if (beam.plate != PlateRule::kOff && !beam.nu && grade != nullptr) beam.nu = grade->nu;
   if (!shear_coefficient.empty()) {
     if (!extensible) throw InvalidInput("--shear-coefficient is used with --extensible only");
     beam.shear_coefficient = plain_number(shear_coefficient, "--shear-coefficient");

@@ -14,6 +14,7 @@
 #include "flexure/io/toml_support.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/solver/common/plate_modulus.h"
 
 namespace flexure::io {
 namespace {
@@ -106,6 +107,7 @@ struct SectionKeys {
   std::optional<Quantity> E;
   std::optional<double> I, width, thickness, area;
   std::optional<double> density, g, nu, shear_coefficient;
+  std::optional<std::string> plate;
   bool extensible = false;
   int line = 0;
 };
@@ -149,13 +151,14 @@ Segment read_segment(const toml::table& t, int index, Reader& r, SectionKeys& se
   }
   const std::string type = **type_node->as_string();
   if (type == "flexible") {
-    check_toml_keys(
-        t,
-        {"type",      "length",     "EI", "EI_profile",       "kappa0",     "E",       "I", "width",
-         "thickness", "A",          "q",  "q_profile",        "q_follower", "density", "g", "EA",
-         "GAs",       "extensible", "nu", "shear_coefficient"},
-        where,
-        r.source);
+    check_toml_keys(t,
+                    {"type", "length",    "EI",         "EI_profile", "kappa0",
+                     "E",    "I",         "width",      "thickness",  "A",
+                     "q",    "q_profile", "q_follower", "density",    "g",
+                     "EA",   "GAs",       "extensible", "nu",         "shear_coefficient",
+                     "plate"},
+                    where,
+                    r.source);
     FlexibleSegment s;
     s.length = r.required(t, "length", where, line_of(t), Dimension::kLength);
     s.kappa0 = r.number(t, "kappa0", where).value_or(0.0);
@@ -168,6 +171,12 @@ Segment read_segment(const toml::table& t, int index, Reader& r, SectionKeys& se
     section.g = r.number(t, "g", where, Dimension::kAcceleration);
     section.nu = r.number(t, "nu", where);
     section.shear_coefficient = r.number(t, "shear_coefficient", where);
+    if (const toml::node* p = t.get("plate")) {
+      if (!p->is_string()) {
+        toml_fail(r.source, line_of(*p), where + ".plate must be \"off\", \"on\" or \"auto\"");
+      }
+      section.plate = **p->as_string();
+    }
     if (const toml::node* e = t.get("extensible")) {
       if (!e->is_boolean())
         toml_fail(r.source, line_of(*e), where + ".extensible must be true or false");
@@ -396,12 +405,13 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
     const SectionKeys& keys = sections[k];
     if (!keys.E) {
       const std::string where = fmt::format("segment {}", k + 1);
-      if (keys.density || keys.extensible || keys.nu || keys.shear_coefficient || keys.g) {
+      if (keys.density || keys.extensible || keys.nu || keys.shear_coefficient || keys.g ||
+          keys.plate) {
         toml_fail(source,
                   keys.line,
                   where +
-                      ": density, g, extensible, nu and shear_coefficient need the section "
-                      "(E with width and thickness, or with I and A) in physical units");
+                      ": density, g, extensible, nu, shear_coefficient and plate need the "
+                      "section (E with width and thickness, or with I and A) in physical units");
       }
       file.sections.emplace_back();
       file.segments.emplace_back();
@@ -466,10 +476,43 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
       }
       segment.EA = section.E * *section.area;
       segment.GAs = kappa * section.E / (2.0 * (1.0 + *keys.nu)) * *section.area;
-    } else if (keys.nu || keys.shear_coefficient) {
+    } else if (keys.shear_coefficient) {
+      toml_fail(
+          source, keys.line, where + ": shear_coefficient is used with extensible = true only");
+    }
+    // The bending modulus (docs/plate-modulus.md): E, or E/(1 - nu^2) for a wide strip. With
+    // plate = "on" the segment's EI is E I/(1 - nu^2) (PhysicalChain::validate() expects it so,
+    // and the chain alone then bends as a plate); "auto" keeps E I until solve_physical_chain
+    // decides.
+    PlateRule plate = PlateRule::kOff;
+    if (keys.plate) {
+      try {
+        plate = plate_rule_from_string(*keys.plate, where + ".plate");
+        const ModulusChoice choice =
+            choose_modulus(plate == PlateRule::kAuto ? PlateRule::kOff : plate,
+                           section.E,
+                           keys.nu,
+                           {},
+                           {},
+                           {},
+                           where);
+        if (plate == PlateRule::kAuto) {
+          // Checked now (nu, width and thickness), decided after the solve.
+          choose_modulus(
+              PlateRule::kAuto, section.E, keys.nu, keys.width, keys.thickness, 0.0, where);
+        }
+        segment.EI = choice.effective_E * section.I;
+      } catch (const InvalidInput& e) {
+        toml_fail(source, keys.line, e.what());
+      }
+    }
+    if (keys.nu && !(*keys.nu > -1.0 && *keys.nu < 0.5)) {
+      toml_fail(source, keys.line, where + ".nu must be in (-1, 0.5)");
+    }
+    if (keys.nu && !keys.extensible && !keys.plate) {
       toml_fail(source,
                 keys.line,
-                where + ": nu and shear_coefficient are used with extensible = true only");
+                where + ": nu is used with extensible = true or plate = \"on\"/\"auto\" only");
     }
     file.sections.push_back(section);
     // The same as the library's types: the rectangle or the general I (with its thickness), and
@@ -481,6 +524,7 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
     properties.material.E = keys.E->si;
     if (keys.nu) properties.material.nu = *keys.nu;
     properties.material.density = keys.density;
+    properties.plate = plate;
     file.segments.push_back(properties);
     r.warn(modulus_warning(*keys.E, where + ".E"));
     if (keys.thickness) {

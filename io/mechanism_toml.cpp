@@ -138,6 +138,7 @@ MechanismFile parse_mechanism_file(const std::string& text, const std::string& s
                    "slider",
                    "dynamics",
                    "force_of",
+                   "plate",
                    // Written by design mechanism for the builder (mechanism_geometry_toml.h);
                    // ignored here: it follows from the keys above.
                    "geometry"},
@@ -205,11 +206,16 @@ MechanismFile parse_mechanism_file(const std::string& text, const std::string& s
               "table with E and yield_strength");
   } else {
     const toml::table& m = *mat->as_table();
-    check_toml_keys(
-        m,
-        {"E", "yield_strength", "name", "ultimate_strength", "endurance_limit", "endurance_cycles"},
-        "[material]",
-        source);
+    check_toml_keys(m,
+                    {"E",
+                     "yield_strength",
+                     "name",
+                     "ultimate_strength",
+                     "endurance_limit",
+                     "endurance_cycles",
+                     "nu"},
+                    "[material]",
+                    source);
     const std::optional<std::string> name = optional_string(m, "name", "material.name");
     const MaterialGrade* grade = nullptr;
     if (name) {
@@ -269,9 +275,34 @@ MechanismFile parse_mechanism_file(const std::string& text, const std::string& s
           value("endurance_limit", io::Dimension::kStress, d.endurance_limit.value_or(0.0));
       if (m.get("endurance_limit") != nullptr) d.endurance_cycles.reset();
     }
+    if (const toml::node* nu = m.get("nu")) {
+      const std::optional<double> v = nu->value<double>();
+      if (!v || !(*v > -1.0 && *v < 0.5)) {
+        toml_fail(source, line_of(*nu), "material.nu must be a number in (-1, 0.5)");
+      }
+      d.nu = *v;
+    }
     if (m.get("endurance_cycles") != nullptr) {
       d.endurance_cycles =
           positive(m, "endurance_cycles", "material", source, line_of(m), std::nullopt);
+    }
+  }
+  // The bending modulus of the strips (docs/plate-modulus.md).
+  if (const toml::node* plate = root.get("plate")) {
+    if (!plate->is_string()) {
+      toml_fail(source, line_of(*plate), "plate must be \"off\", \"on\" or \"auto\"");
+    }
+    try {
+      d.plate = plate_rule_from_string(**plate->as_string(), "plate");
+    } catch (const InvalidInput& e) {
+      toml_fail(source, line_of(*plate), e.what());
+    }
+    if (d.plate != PlateRule::kOff && !d.nu) {
+      toml_fail(source,
+                line_of(*plate),
+                fmt::format("plate = \"{}\" needs Poisson's ratio: give [material].nu (or a "
+                            "library material with nu)",
+                            to_string(d.plate)));
     }
   }
   std::string pattern;
@@ -494,6 +525,11 @@ std::string mechanism_toml(const MechanismDesign& d, const std::string& comment)
                        toml_string(*d.force_of == ForceOf::kOneHalf ? "half" : "whole"),
                        force_of_label(*d.force_of));
   }
+  if (d.plate != PlateRule::kOff) {
+    out +=
+        fmt::format("plate = {}          # bending modulus E/(1 - nu^2) (docs/plate-modulus.md)\n",
+                    toml_string(to_string(d.plate)));
+  }
   bool fixed_fixed = false;
   for (const JointDesign& j : d.joints) fixed_fixed |= j.segment == SegmentKind::kFixedFixed;
   if (fixed_fixed) {
@@ -504,6 +540,7 @@ std::string mechanism_toml(const MechanismDesign& d, const std::string& comment)
     out += fmt::format("name = {}  # data/materials.csv (`flexure materials`)\n",
                        toml_string(d.material));
   }
+  if (d.plate != PlateRule::kOff && d.nu) out += fmt::format("nu = {}\n", toml_number(*d.nu));
   out += fmt::format("E = {}               # Pa\nyield_strength = {}  # Pa\n",
                      toml_number(d.E),
                      toml_number(d.yield_strength));

@@ -19,6 +19,7 @@
 #include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
 #include "flexure/mechanisms/force_of.h"
+#include "flexure/solver/common/plate_modulus.h"
 
 namespace flexure::mechanism {
 
@@ -62,6 +63,13 @@ struct MechanismDesign {
   std::array<JointDesign, 3> joints;  // pivot 1 (ground), 2 (middle), 3 (slider)
   double E = 0.0;                     // Young's modulus, Pa
   double yield_strength = 0.0;        // Pa
+  // The bending modulus of the strips (docs/plate-modulus.md): off E, on E/(1 - nu^2), auto by
+  // the Searle parameter. nu from the material (library row, [material].nu, --nu). Applied by
+  // analyze_mechanism_with_modulus (mechanism_plate.h), which replaces E by the effective modulus
+  // and records the choice (and the E as given) in `modulus`.
+  PlateRule plate = PlateRule::kOff;
+  std::optional<double> nu;
+  std::vector<ModulusChoice> modulus;
   // The material beyond E and S_y, for the fatigue check (fatigue.h, docs/fatigue.md): the
   // data/materials.csv id it was taken from (empty: given by value), S_ut, the uncorrected
   // endurance limit S_e' (or fatigue strength S_f' at endurance_cycles), brittleness.

@@ -98,6 +98,7 @@ void apply_material(MechanismDesign& design, const MaterialGrade& grade) {
   }
   design.material = grade.id;
   design.E = grade.E;
+  design.nu = grade.nu;
   design.yield_strength = *strength;
   design.ultimate_strength = grade.ultimate_strength;
   design.endurance_limit = grade.fatigue_strength;

@@ -25,6 +25,7 @@
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/plate_modulus.h"
 #include "flexure/solver/common/section.h"
 #include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"
@@ -680,16 +681,30 @@ void bind_beam(py::module_& m) {
 void bind_physical(py::module_& m) {
   py::class_<SegmentProperties>(
       m, "SegmentProperties", "The section and material of a flexible segment in SI units.")
-      .def(py::init([](Section section, Material material, std::optional<double> area) {
-             return SegmentProperties{section, material, area};
+      .def(py::init([](Section section,
+                       Material material,
+                       std::optional<double> area,
+                       const std::string& plate) {
+             SegmentProperties out{section, material, area};
+             out.plate = plate_rule_from_string(plate, "plate");
+             return out;
            }),
            py::kw_only(),
            py::arg("section"),
            py::arg("material"),
-           py::arg("area") = std::optional<double>())
+           py::arg("area") = std::optional<double>(),
+           py::arg("plate") = "off",
+           "plate: the bending modulus (docs/plate-modulus.md): \"off\" (E), \"on\" "
+           "(E/(1 - nu^2) with material.nu; the segment's EI must then be E I/(1 - nu^2)) or "
+           "\"auto\" (EI = E I, decided by the Searle parameter when solving; rectangles only)")
       .def_readonly("section", &SegmentProperties::section)
       .def_readonly("material", &SegmentProperties::material)
-      .def_readonly("area", &SegmentProperties::area);
+      .def_readonly("area", &SegmentProperties::area)
+      .def_property_readonly(
+          "plate", [](const SegmentProperties& p) { return std::string(to_string(p.plate)); })
+      .def("chain_modulus",
+           &SegmentProperties::chain_modulus,
+           "E, or E/(1 - nu^2) with plate \"on\": the modulus the segment's EI is made of.");
   py::class_<PhysicalChain>(m, "PhysicalChain", "A segment chain in SI units with its sections.")
       .def(py::init([](SegmentChain chain,
                        std::vector<std::optional<SegmentProperties>> segments,

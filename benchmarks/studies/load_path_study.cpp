@@ -132,6 +132,18 @@ PathTable shooting_table(const PathRequest& r) {
     for (int k = 0; k < r.shape_points; ++k) {
       t.shape_s.push_back(total * k / (r.shape_points - 1) * u.length);
     }
+    if (!r.chain.has_distributed_loads() && r.chain.node_loads.empty()) {
+      // Tip loads only: N(s) is the total tip load at every s (statics of the part beyond s).
+      for (std::size_t i = 0; i < path.points.size(); ++i) {
+        const PathPoint& p = path.points[i];
+        for (int k = 0; k < r.shape_points; ++k) {
+          const double Nx = p.tip_load.Fx, Ny = p.tip_load.Fy;
+          const double theta = t.shape_theta[i * r.shape_points + k];
+          t.shape_axial.push_back((Nx * std::cos(theta) + Ny * std::sin(theta)) * u.force);
+          t.shape_shear.push_back((-Nx * std::sin(theta) + Ny * std::cos(theta)) * u.force);
+        }
+      }
+    }
   }
   // The verdict of every point under the path's control there (path_point_stability.h).
   for (const PathPoint& p : path.points) {
@@ -521,6 +533,21 @@ void write_path_file(io::Hdf5Group& root, const PathTable& t) {
                          "bending moment m = EI (theta' - kappa0) [path point, shape point], "
                          "counter-clockwise on the part nearer the clamp" +
                              scaled);
+    if (!t.shape_axial.empty()) {
+      shapes.write_dataset(
+          "axial_force",
+          t.shape_axial,
+          dims,
+          u.force_unit,
+          "internal force N . t (tension positive) [path point, shape point]" + scaled);
+      shapes.write_dataset("shear_force",
+                           t.shape_shear,
+                           dims,
+                           u.force_unit,
+                           "internal force N . n, n left of the tangent (dm/ds = -V) [path "
+                           "point, shape point]" +
+                               scaled);
+    }
   }
 
   root.set_attribute("method", t.method == PathMethod::kChain ? "chain" : "shooting");

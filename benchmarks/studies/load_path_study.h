@@ -101,6 +101,10 @@ struct PathTable {
   // Shapes (shape_points > 0): rows = path points, columns = shape points, row-major.
   int shape_points = 0;
   std::vector<double> shape_s, shape_x, shape_y, shape_theta, shape_moment;
+  // The internal force N (the part beyond s on the part before it) on the tangent and on the
+  // normal left of it, N . t and N . n (dm/ds = -V; docs/units.md "Internal forces"): the total
+  // tip load at every s. Empty for a chain with distributed or joint loads (not computed here).
+  std::vector<double> shape_axial, shape_shear;
 
   PathMethod method = PathMethod::kShooting;
   PathUnits units;

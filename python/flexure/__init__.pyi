@@ -69,6 +69,8 @@ def beam(
     ultimate_strength: Quantity | None = ...,
     endurance_limit: Quantity | None = ...,
     threads: int | None = ...,
+    plate: str | None = ...,
+    nu: float | None = ...,
 ) -> Result: ...
 def materials(name: str | None = ...) -> dict[str, Any]: ...
 def path(

@@ -31,7 +31,7 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
          thickness=None, Fx=None, Fy=None, M=None, yield_strength=None, stable=False, stability=None,
          material=None, cycle=None, surface_finish=None, reliability=None,
          Kf=None, fatigue_factor=None, ultimate_strength=None, endurance_limit=None,
-         threads=None):
+         threads=None, plate=None, nu=None):
     """Solves an initially straight cantilever with an end load: `flexure beam` (docs/cli.md).
 
     Howell's nondimensional loads (give exactly one of alpha2, theta0, b_over_l):
@@ -67,7 +67,9 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
       length, E, I (or width and thickness), Fx, Fy, M, yield_strength, material (a name of
       flexure.materials(): E and S_y); cycle 'reversed' | 'repeated' checks the beam in fatigue
       (surface_finish, reliability, Kf, fatigue_factor, ultimate_strength, endurance_limit;
-      docs/fatigue.md)
+      docs/fatigue.md); plate 'off' | 'on' | 'auto' the bending modulus E or E/(1 - nu^2) of a
+      wide strip with nu Poisson's ratio (default the material's; docs/plate-modulus.md: keys
+      modulus_rule, effective_E, modulus)
 
     Returns the dict `flexure beam --json` prints: method, method_reason, expected_error,
     expected_error_per_length (the ladder's models on the map, docs/models.md), n,
@@ -125,7 +127,7 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
                "material": material, "cycle": cycle,
                "surface_finish": surface_finish, "reliability": reliability, "Kf": Kf,
                "fatigue_factor": fatigue_factor, "ultimate_strength": ultimate_strength,
-               "endurance_limit": endurance_limit}
+               "endurance_limit": endurance_limit, "plate": plate, "nu": nu}
     if threads is not None and (not isinstance(threads, int) or isinstance(threads, bool)
                                 or threads < 1):
         raise _command.InvalidInput(f"threads = {threads!r}: expected an integer >= 1")

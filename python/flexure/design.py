@@ -65,7 +65,7 @@ def mechanism(*, force, stroke, safety_factor, length_range, E=None, width_range
               max_width_to_thickness=None, max_width_to_length=None, force_tolerance=None,
               allow_infeasible=False, material=None, fatigue=False, surface_finish=None,
               reliability=None, Kf=None, fatigue_factor=None, ultimate_strength=None,
-              endurance_limit=None):
+              endurance_limit=None, plate=None, nu=None):
     """Dimensional design from a specification (thesis ch. 8): `flexure design mechanism`.
 
     force, stroke, E, yield_strength   numbers in SI (N, m, Pa) or strings with units ('25lbf',
@@ -96,6 +96,8 @@ def mechanism(*, force, stroke, safety_factor, length_range, E=None, width_range
     fatigue         True: size for and keep only designs with infinite life at safety_factor
                     (surface_finish, reliability, Kf, fatigue_factor, ultimate_strength,
                     endurance_limit; docs/fatigue.md)
+    plate           'off' or 'on': size the strips with E or E/(1 - nu^2) (nu: Poisson's ratio,
+                    default the material's; docs/plate-modulus.md)
     Returns the dict `flexure design mechanism --json` prints: designs (best first; each with
     subclass, r2, r3, segment_lengths, width, thicknesses, required_yield_strength, force_prbm,
     force_exact, percent_constant_force_prbm/_exact, safety_factor_prbm/_exact, ...), rejected
@@ -123,5 +125,5 @@ def mechanism(*, force, stroke, safety_factor, length_range, E=None, width_range
              allow_infeasible=allow_infeasible, material=material, fatigue=fatigue,
              surface_finish=surface_finish, reliability=reliability, Kf=Kf,
              fatigue_factor=fatigue_factor, ultimate_strength=ultimate_strength,
-             endurance_limit=endurance_limit),
+             endurance_limit=endurance_limit, plate=plate, nu=nu),
         switches=("in_plane", "out_of_plane", "no_exact", "allow_infeasible", "fatigue"))

@@ -57,4 +57,6 @@ def mechanism(
     fatigue_factor: float | None = ...,
     ultimate_strength: float | str | None = ...,
     endurance_limit: float | str | None = ...,
+    plate: str | None = ...,
+    nu: float | None = ...,
 ) -> dict[str, Any]: ...

@@ -21,6 +21,8 @@ def analyze(
     fatigue_factor: float | None = ...,
     ultimate_strength: str | float | None = ...,
     endurance_limit: str | float | None = ...,
+    plate: str | None = ...,
+    nu: float | None = ...,
 ) -> dict[str, Any]: ...
 def tolerance(
     mechanism: Design,

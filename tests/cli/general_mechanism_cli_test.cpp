@@ -87,7 +87,9 @@ TEST(GeneralMechanismCli, EveryConstantForceOptionIsRefusedByName) {
                                                     {"--reliability", "0.9"},
                                                     {"--fatigue-factor", "0.9"},
                                                     {"--Kf", "1.2"},
-                                                    {"--tol", "1e-3"}};
+                                                    {"--tol", "1e-3"},
+                                                    {"--plate", "on"},
+                                                    {"--nu", "0.3"}};
   const std::regex line(R"(^\s+(?:-\w,)?(--[A-Za-z-]+)( \S+)?)");
   std::istringstream in(help.out);
   std::string text;

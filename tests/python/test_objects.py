@@ -125,6 +125,29 @@ def test_physical_chain_of_objects_gives_howell_pivot():
                 section=section, material=flexure.Material(E=1e9)), None])
 
 
+def test_physical_chain_plate_on_bends_with_the_plate_modulus():
+    # Pure bending by an end moment: theta0 = M L (1 - nu^2)/(E I) with plate "on" (by hand); the
+    # segment's EI must be E I/(1 - nu^2) (chain_modulus), E I is refused naming the rule.
+    section = flexure.Section.rectangle(width=0.127, thickness=0.00131)
+    material = flexure.Material(E=200e9, nu=0.3)
+    props = flexure.SegmentProperties(section=section, material=material, plate="on")
+    assert props.plate == "on"
+    assert props.chain_modulus() == pytest.approx(200e9 / 0.91, rel=1e-15)
+    I = section.second_moment()
+    chain = flexure.SegmentChain(
+        segments=[flexure.FlexibleSegment(length=0.1, EI=props.chain_modulus() * I)],
+        tip_load=flexure.TipLoad(M=10.0))
+    got = flexure.solve_physical_chain(flexure.PhysicalChain(chain=chain, segments=[props]),
+                                       method=flexure.BeamMethod.shooting)
+    assert got.solution.converged()
+    assert got.solution.tip.theta0 == pytest.approx(10.0 * 0.1 * 0.91 / (200e9 * I), rel=1e-9)
+    beam_chain = flexure.SegmentChain(
+        segments=[flexure.FlexibleSegment(length=0.1, EI=200e9 * I)],
+        tip_load=flexure.TipLoad(M=10.0))
+    with pytest.raises(flexure.InvalidInput, match="plate on"):
+        flexure.PhysicalChain(chain=beam_chain, segments=[props])
+
+
 def test_solve_beam_object_path_matches_the_tool():
     tool = flexure.beam(alpha2=2.0)
     s = flexure.solve_beam(flexure.BeamProblem(alpha2=2.0))
