@@ -13,25 +13,15 @@
 #include "flexure/beam/physical_beam.h"
 #include "flexure/io/chain_toml.h"
 #include "flexure/solver/common/errors.h"
+#include "tests/support/physical_beam_support.h"
 
 namespace flexure {
 namespace {
 
-constexpr double kInch = 0.0254;
-constexpr double kPound = 4.4482216152605;
-constexpr double kPsi = kPound / (kInch * kInch);
-
-PhysicalCantilever strip(double Fx, double Fy, double M) {
-  PhysicalCantilever b;
-  b.length = 0.05;
-  b.E = 200e9;
-  b.width = 0.01;
-  b.thickness = 0.0005;
-  b.Fx = Fx;
-  b.Fy = Fy;
-  b.M = M;
-  return b;
-}
+using test::kInch;
+using test::kPound;
+using test::kPsi;
+using test::strip;
 
 TEST(PhysicalBeam, HowellSmallLengthFlexuralPivotAsAChainInInches) {
   // Howell sec. 5.1, eqs. 5.26-5.34: polypropylene E = 2e5 psi, flexible l = 0.5 in of 0.75 x
