@@ -850,33 +850,30 @@ void run_beam(const BeamArgs& args) {
 CommandOutput run_beam_keywords(const BeamKeywords& k) {
   BeamArgs args;
   args.json = true;
-  args.load_ratio_n = k.n.value_or(args.load_ratio_n);
-  args.mu = k.mu.value_or(args.mu);
-  args.given.alpha2 = k.alpha2.has_value();
-  args.alpha2 = k.alpha2.value_or(args.alpha2);
-  args.given.theta0 = k.theta0.has_value();
-  args.theta0 = k.theta0.value_or(args.theta0);
-  args.given.b_over_l = k.b_over_l.has_value();
-  args.b_over_l = k.b_over_l.value_or(args.b_over_l);
-  args.method = k.method.value_or(args.method);
-  args.boundary = k.boundary.value_or(args.boundary);
-  args.given.tip_x = k.tip_x.has_value();
-  args.tip_x = k.tip_x.value_or(args.tip_x);
-  args.given.tip_y = k.tip_y.has_value();
-  args.tip_y = k.tip_y.value_or(args.tip_y);
-  args.given.tip_angle = k.tip_angle.has_value();
-  args.tip_angle = k.tip_angle.value_or(args.tip_angle);
-  args.follower = k.follower.value_or(args.follower);
-  args.given.elements = k.elements.has_value();
-  args.elements = k.elements.value_or(args.elements);
-  args.increments = k.increments.value_or(args.increments);
-  args.chain_variant = k.chain_variant.value_or(args.chain_variant);
-  args.given.integrator = k.integrator.has_value();
-  args.integrator = k.integrator.value_or(args.integrator);
-  args.given.shape = k.shape.has_value();
-  args.shape_points = k.shape.value_or(args.shape_points);
+  // A keyword left out keeps the command's default; `given` records the ones the flags' count()
+  // would (the checks that tell a default from a value the user gave read it).
+  const auto take = [](const auto& keyword, auto& field, bool* given = nullptr) {
+    if (given != nullptr) *given = keyword.has_value();
+    if (keyword) field = *keyword;
+  };
+  take(k.n, args.load_ratio_n);
+  take(k.mu, args.mu);
+  take(k.alpha2, args.alpha2, &args.given.alpha2);
+  take(k.theta0, args.theta0, &args.given.theta0);
+  take(k.b_over_l, args.b_over_l, &args.given.b_over_l);
+  take(k.method, args.method);
+  take(k.boundary, args.boundary);
+  take(k.tip_x, args.tip_x, &args.given.tip_x);
+  take(k.tip_y, args.tip_y, &args.given.tip_y);
+  take(k.tip_angle, args.tip_angle, &args.given.tip_angle);
+  take(k.follower, args.follower);
+  take(k.elements, args.elements, &args.given.elements);
+  take(k.increments, args.increments);
+  take(k.chain_variant, args.chain_variant);
+  take(k.integrator, args.integrator, &args.given.integrator);
+  take(k.shape, args.shape_points, &args.given.shape);
   args.stable = k.stable;
-  args.stability = k.stability.value_or(args.stability);
+  take(k.stability, args.stability);
   OutputCapture capture;
   reset_exit_code();
   run_beam(args);
