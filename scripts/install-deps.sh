@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config git
+  ccache  # scripts/test.sh: the MPI build reuses the serial build's objects of the layers below io
   libeigen3-dev libgsl-dev libhdf5-dev hdf5-tools libsundials-dev
   libaec-dev zlib1g-dev  # the static libhdf5.a needs szip (libaec) and zlib at link time
   libcli11-dev nlohmann-json3-dev libfmt-dev libtomlplusplus-dev
