@@ -19,9 +19,9 @@
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/output_path.h"
 #include "flexure/io/parallel/mpi_world.h"
-#include "flexure/io/quantity.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/solver/common/quantity.h"
 
 namespace flexure::cli {
 namespace {
