@@ -30,5 +30,7 @@
 // The beam layer: problems by any method, the method choice, physical beams and chains.
 #include "flexure/beam/beam_method.h"
 #include "flexure/beam/beam_problem.h"
+#include "flexure/beam/beam_request.h"
+#include "flexure/beam/beam_solver.h"
 #include "flexure/beam/method_selector.h"
 #include "flexure/beam/physical_beam.h"
