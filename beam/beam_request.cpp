@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <numbers>
 #include <utility>
 
 #include "flexure/solver/chain/chain_algorithm_solver.h"
@@ -109,6 +110,7 @@ BeamRequestNames BeamRequestNames::command_line() {
   n.constants = "--constants";
   n.slenderness = "--slenderness";
   n.chain = "--chain";
+  n.stable = "--stable";
   n.length = "--length";
   n.E = "--E";
   n.Fx = "--Fx";
@@ -276,6 +278,45 @@ void add_chain(BeamInput& input, PhysicalChain chain, bool in_si) {
   input.problem.boundary = chain.chain.end;
   input.chain = std::move(chain);
   input.chain_in_si = in_si;
+}
+
+std::vector<Warning> beam_answer_warnings(const BeamProblem& problem,
+                                          const BeamSolution& solution,
+                                          const BeamRequestNames& names) {
+  std::vector<Warning> out = solution.warnings;
+  if (solution.method == BeamMethod::kPrbm && !solution.prbm_inside_validity) {
+    // The validity limit: the smaller of Theta_max(gamma) and Theta_max(K_theta) (Howell eqs.
+    // 5.47, 5.63). The elliptic solver takes only the free cantilever with dead loads.
+    out.push_back(
+        {WarningKind::kOutsideValidity,
+         fmt::format("the PRB angle Theta = {:.1f} deg is outside the validity limit {:.1f} "
+                     "deg ({}); the PRBM tip and force are not trusted here ({} exact)",
+                     std::fabs(solution.prbm_Theta) * 180.0 / std::numbers::pi,
+                     solution.prbm_theta_max * 180.0 / std::numbers::pi,
+                     solution.prbm_limits_source,
+                     problem.is_plain_cantilever() ? names.method + " elliptic or shooting is"
+                                                   : names.method + " shooting is")});
+  }
+  const Stability& s = solution.stability;
+  if (s.kind == StabilityKind::kUnstable) {
+    out.push_back(
+        {WarningKind::kOther,
+         fmt::format("the returned equilibrium is UNSTABLE (index {}, stability margin {:.6g}): it "
+                     "is the equilibrium reached by proportional loading, but the beam cannot stay "
+                     "there under these loads and supports (a small disturbance makes it buckle or "
+                     "snap away); {} returns a stable equilibrium",
+                     s.index,
+                     s.margin,
+                     names.stable)});
+  } else if (s.kind == StabilityKind::kCritical) {
+    out.push_back(
+        {WarningKind::kOther,
+         fmt::format("the returned equilibrium is CRITICAL (stability margin {:.3g}): a buckling "
+                     "or limit point, where the slightest further load makes the beam buckle or "
+                     "snap",
+                     s.margin)});
+  }
+  return out;
 }
 
 }  // namespace flexure

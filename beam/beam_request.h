@@ -76,6 +76,7 @@ struct BeamRequestNames {
   std::string constants = "constants";
   std::string slenderness = "slenderness";
   std::string chain = "chain";
+  std::string stable = "stable";
   // The values of a beam given in SI units (its section is named in words).
   std::string length = "length";
   std::string E = "E";
@@ -106,5 +107,14 @@ BeamInput make_beam_input(const BeamRequest& request, const BeamRequestNames& na
 // (in SI units when `in_si`; its end condition becomes the problem's).
 void add_physical_beam(BeamInput& input, PhysicalCantilever beam);
 void add_chain(BeamInput& input, PhysicalChain chain, bool in_si);
+
+// The warnings of an answer, as every front end reports them (stderr and the JSON key `warnings`
+// of `flexure beam`, FlexureWarning in Python), in this order: the solver's own (e.g. the BCM
+// beyond its stated deflection range), a PRBM outside its validity limits (kOutsideValidity,
+// pointing to the exact methods by `names.method`), an equilibrium that is unstable or critical
+// (kOther, pointing to `names.stable`).
+std::vector<Warning> beam_answer_warnings(const BeamProblem& problem,
+                                          const BeamSolution& solution,
+                                          const BeamRequestNames& names = {});
 
 }  // namespace flexure

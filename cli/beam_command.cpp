@@ -178,27 +178,6 @@ std::string stability_line(const Stability& s) {
                      s.message);
 }
 
-// The warning an answer that is not stable gets (stderr, and the JSON key `warnings`); empty for
-// a stable one or one the energy cannot judge.
-std::string stability_warning(const Stability& s) {
-  if (s.kind == StabilityKind::kUnstable) {
-    return fmt::format(
-        "the returned equilibrium is UNSTABLE (index {}, stability margin {:.6g}): it is the "
-        "equilibrium reached by proportional loading, but the beam cannot stay there under "
-        "these loads and supports (a small disturbance makes it buckle or snap away); --stable "
-        "returns a stable equilibrium",
-        s.index,
-        s.margin);
-  }
-  if (s.kind == StabilityKind::kCritical) {
-    return fmt::format(
-        "the returned equilibrium is CRITICAL (stability margin {:.3g}): a buckling or limit "
-        "point, where the slightest further load makes the beam buckle or snap",
-        s.margin);
-  }
-  return {};
-}
-
 // The stability keys (docs/cli.md): index and margin null unless the energy judged it.
 void add_stability_json(Json& out, const Stability& s) {
   out["stability"] = std::string(stability_name(s.kind));
@@ -416,21 +395,9 @@ Json special_points_json(const BeamProblem& problem, const BeamSolution& solutio
 
 std::vector<std::string> beam_warnings(const BeamProblem& problem, const BeamSolution& solution) {
   std::vector<std::string> out;
-  // The solver's own warnings, e.g. the BCM beyond its stated deflection range.
-  for (const Warning& w : solution.warnings) out.push_back(w.text);
-  if (solution.method == BeamMethod::kPrbm && !solution.prbm_inside_validity) {
-    out.push_back(
-        fmt::format("the PRB angle Theta = {:.1f} deg is outside the validity limit {:.1f} "
-                    "deg ({}); the PRBM tip and force are not trusted here ({} exact)",
-                    std::fabs(solution.prbm_Theta) * 180.0 / std::numbers::pi,
-                    solution.prbm_theta_max * 180.0 / std::numbers::pi,
-                    solution.prbm_limits_source,
-                    // The elliptic solver takes only the free cantilever with dead loads.
-                    problem.is_plain_cantilever() ? "--method elliptic or shooting is"
-                                                  : "--method shooting is"));
+  for (Warning& w : beam_answer_warnings(problem, solution, BeamRequestNames::command_line())) {
+    out.push_back(std::move(w.text));
   }
-  const std::string stability = stability_warning(solution.stability);
-  if (!stability.empty()) out.push_back(stability);
   return out;
 }
 

@@ -7,6 +7,10 @@
 //  * What a request builds: the problem given by alpha2, theta0 in degrees (exact conversion) and
 //    b/l, the prescribed tip, the settings, the method; an angle in radians above a full turn is a
 //    units warning, not an error; a physical cantilever and a chain given whole.
+//  * The warnings of an answer: a PRBM solve past its validity limit (alpha2 = 30, Theta far past
+//    Howell's Theta_max) warns with kind outside_validity and points to the exact methods by the
+//    caller's name; an unstable or critical verdict warns with the tool's text; a stable PRBM
+//    answer inside its limits has none.
 #include "flexure/beam/beam_request.h"
 
 #include <gtest/gtest.h>
@@ -217,6 +221,43 @@ TEST(BeamRequest, ABeamGivenWholeKeepsTheSettings) {
   EXPECT_FALSE(chained.is_physical());
   EXPECT_EQ(chained.problem.boundary, EndCondition::kGuided);
   ASSERT_TRUE(chained.problem.chain.has_value());
+}
+
+TEST(BeamRequest, AnswerWarningsNameTheCallersOptions) {
+  BeamProblem p;
+  p.value = 30.0;
+  const BeamSolution prbm = solve_beam(BeamMethod::kPrbm, p);
+  ASSERT_FALSE(prbm.prbm_inside_validity);
+  const std::vector<Warning> cli = beam_answer_warnings(p, prbm, BeamRequestNames::command_line());
+  ASSERT_FALSE(cli.empty());
+  EXPECT_EQ(cli[0].kind, WarningKind::kOutsideValidity);
+  EXPECT_EQ(cli[0].text.rfind("the PRB angle Theta = ", 0), 0u) << cli[0].text;
+  EXPECT_NE(cli[0].text.find("(--method elliptic or shooting is exact)"), std::string::npos);
+  const std::vector<Warning> lib = beam_answer_warnings(p, prbm);
+  EXPECT_NE(lib[0].text.find("(method elliptic or shooting is exact)"), std::string::npos);
+
+  p.value = 0.5;
+  const BeamSolution inside = solve_beam(BeamMethod::kPrbm, p);
+  ASSERT_TRUE(inside.prbm_inside_validity);
+  EXPECT_TRUE(beam_answer_warnings(p, inside).empty());
+
+  BeamSolution unstable;
+  unstable.stability.kind = StabilityKind::kUnstable;
+  unstable.stability.index = 1;
+  unstable.stability.margin = -0.25;
+  const std::vector<Warning> u =
+      beam_answer_warnings(p, unstable, BeamRequestNames::command_line());
+  ASSERT_EQ(u.size(), 1u);
+  EXPECT_EQ(u[0].text,
+            "the returned equilibrium is UNSTABLE (index 1, stability margin -0.25): it is the "
+            "equilibrium reached by proportional loading, but the beam cannot stay there under "
+            "these loads and supports (a small disturbance makes it buckle or snap away); --stable "
+            "returns a stable equilibrium");
+  unstable.stability.kind = StabilityKind::kCritical;
+  unstable.stability.margin = 1e-12;
+  EXPECT_EQ(beam_answer_warnings(p, unstable)[0].text,
+            "the returned equilibrium is CRITICAL (stability margin 1e-12): a buckling or limit "
+            "point, where the slightest further load makes the beam buckle or snap");
 }
 
 }  // namespace
