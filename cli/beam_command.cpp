@@ -23,10 +23,10 @@
 #include "flexure/beam/method_selector.h"
 #include "flexure/beam/physical_beam.h"
 #include "flexure/io/chain_toml.h"
-#include "flexure/io/quantity.h"
 #include "flexure/mechanisms/load_cycle_fatigue.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/solver/common/quantity.h"
 
 namespace flexure::cli {
 namespace {
@@ -69,192 +69,56 @@ struct BeamArgs {
   CLI::Option* tip_y_option = nullptr;
   CLI::Option* tip_angle_option = nullptr;
   CLI::Option* chain_option = nullptr;
-  // A physical cantilever (SI, or values with units: 50mm, 200GPa, 5N; io/quantity.h).
+  // A physical cantilever (SI, or values with units: 50mm, 200GPa, 5N; solver/common/quantity.h).
   PhysicalFlags physical;
   // Fatigue of a load cycle of the physical beam (load_cycle_fatigue.h; docs/fatigue.md).
   std::string cycle;
   FatigueFlags fatigue;
-  // Which options were given (a default is not given): set from the options above after
-  // parsing, or by run_beam_keywords without a command line.
-  struct Given {
-    bool alpha2 = false, theta0 = false, b_over_l = false, shape = false, elements = false,
-         constants = false, slenderness = false, integrator = false, tip_x = false, tip_y = false,
-         tip_angle = false, chain = false;
-  } given;
 };
 
-// The options given on a command line.
-BeamArgs::Given given_options(const BeamArgs& args) {
-  BeamArgs::Given g;
-  g.alpha2 = args.alpha2_option->count() > 0;
-  g.theta0 = args.theta0_option->count() > 0;
-  g.b_over_l = args.b_over_l_option->count() > 0;
-  g.shape = args.shape_option->count() > 0;
-  g.elements = args.elements_option->count() > 0;
-  g.constants = args.constants_option->count() > 0;
-  g.slenderness = args.slenderness_option->count() > 0;
-  g.integrator = args.integrator_option->count() > 0;
-  g.tip_x = args.tip_x_option->count() > 0;
-  g.tip_y = args.tip_y_option->count() > 0;
-  g.tip_angle = args.tip_angle_option->count() > 0;
-  g.chain = args.chain_option->count() > 0;
-  return g;
+// The request the flags make (beam/beam_request.h): a value is given when its flag is, so the
+// library tells a default from a value the user gave.
+BeamRequest request_of(const BeamArgs& args) {
+  const auto given = [](const CLI::Option* option) { return option->count() > 0; };
+  BeamRequest r;
+  if (given(args.alpha2_option)) r.alpha2 = args.alpha2;
+  if (given(args.theta0_option)) r.theta0 = args.theta0;
+  if (given(args.b_over_l_option)) r.b_over_l = args.b_over_l;
+  r.load_ratio_n = args.load_ratio_n;
+  r.mu = args.mu;
+  r.boundary = args.boundary;
+  if (given(args.tip_x_option)) r.tip_x = args.tip_x;
+  if (given(args.tip_y_option)) r.tip_y = args.tip_y;
+  if (given(args.tip_angle_option)) r.tip_angle = args.tip_angle;
+  r.follower = args.follower;
+  r.method = args.method;
+  if (given(args.tol_option)) r.tolerance = args.tol;
+  if (given(args.elements_option)) r.elements = args.elements;
+  r.increments = args.increments;
+  r.chain_variant = args.chain_variant;
+  if (given(args.integrator_option)) r.integrator = args.integrator;
+  if (given(args.shape_option)) r.shape_points = args.shape_points;
+  if (given(args.constants_option)) r.constants = args.constants;
+  if (given(args.slenderness_option)) r.slenderness = args.slenderness;
+  r.stable = args.stable;
+  r.judge_stability = same_name(args.stability, "on");
+  r.physical = args.physical.given();
+  r.chain = given(args.chain_option);
+  return r;
 }
 
-// What `flexure beam` solves: Howell's nondimensional problem, and the physical beam or chain file
-// it came from, if any.
-struct BeamInput {
-  BeamProblem problem;
-  std::optional<PhysicalCantilever> physical;
-  std::optional<io::ChainFile> chain_file;
-  bool is_physical() const { return physical || (chain_file && chain_file->physical); }
-};
-
-// An angle option: radians, or with a unit; a plain value above a full turn is probably degrees.
-double angle_option(const std::string& text, const char* what) {
-  const io::Quantity q = io::parse_quantity(text, io::Dimension::kAngle, what);
-  warn(io::angle_warning(q, what));
-  return q.si;
-}
-
-constexpr int kMaxShapePoints = 1'000'000;
-
-// The options of the cheaper models (docs/models.md): --elements of the chained BCM, --constants of
-// PR-3R, --slenderness of the BCM and CBCM; each refused with a method that does not use it (auto
-// chooses among the models at their defaults, the settings its error map was measured with).
-void add_ladder_options(const BeamArgs& args, BeamProblem& problem) {
-  if (args.given.elements) {
-    if (same_name(args.method, "bcm")) {
-      throw InvalidInput(
-          "--elements: the BCM is one element; --method cbcm --elements N chains N of them");
-    }
-    if (same_name(args.method, "cbcm")) {
-      require_in_range(args.elements, "--elements (chained BCM elements N)", 1, 2000);
-      problem.cbcm_elements = args.elements;
-    }
-  }
-  if (args.given.constants) {
-    if (!same_name(args.method, "prbm3r")) {
-      throw InvalidInput(fmt::format(
-          "--constants chooses the PR-3R model's constants; --method {} does not use them",
-          args.method));
-    }
-    problem.prbm3r_constants = to_lower(args.constants);
-  }
-  if (args.given.slenderness) {
-    if (!same_name(args.method, "bcm") && !same_name(args.method, "cbcm")) {
-      throw InvalidInput(fmt::format(
-          "--slenderness sets the axial stiffness of the BCM and CBCM (d = 12 (L/t)^2); --method "
-          "{} is inextensible",
-          args.method));
-    }
-    require_finite_input(args.slenderness, "--slenderness (L/t)");
-    if (!(args.slenderness > 0.0)) {
-      throw InvalidInput(fmt::format(
-          "--slenderness L/t must be > 0 (got {:g}); leave it out for the inextensible beam",
-          args.slenderness));
-    }
-    problem.slenderness = args.slenderness;
-  }
-}
-
-BeamInput make_input(const BeamArgs& args) {
-  refuse_tol_with_named_method(args.tol_option, args.method);
-  BeamInput input;
-  BeamProblem& problem = input.problem;
-  require_finite_input(args.load_ratio_n, "--n (load ratio n)");
-  require_finite_input(args.mu, "--mu (end moment M l/EI)");
-  problem.load_ratio_n = args.load_ratio_n;
-  problem.mu = args.mu;
-  problem.tolerance = args.tol;
-  problem.boundary = end_condition_from_string(args.boundary);
-  const PrescribedMask mask = prescribed_mask(problem.boundary);
-  auto prescribe = [&](bool given, double value, bool allowed, const char* name) {
-    if (!given) return std::optional<double>();
-    require_finite_input(value, name);
-    if (!allowed) {
-      throw InvalidInput(
-          fmt::format("{} is not prescribed by --boundary {} (it prescribes{}{}{})",
-                      name,
-                      args.boundary,
-                      mask.x ? " tip x" : "",
-                      mask.y ? " tip y" : "",
-                      mask.theta ? " tip angle" : (mask.x || mask.y ? "" : " nothing")));
-    }
-    return std::optional<double>(value);
-  };
-  problem.prescribed.x = prescribe(args.given.tip_x, args.tip_x, mask.x, "--tip-x");
-  problem.prescribed.y = prescribe(args.given.tip_y, args.tip_y, mask.y, "--tip-y");
-  if (args.given.tip_angle) {
-    problem.prescribed.theta = prescribe(args.given.tip_angle,
-                                         angle_option(args.tip_angle, "--tip-angle"),
-                                         mask.theta,
-                                         "--tip-angle");
-  }
-  require_finite_input(args.follower, "--follower (follower force F l^2/EI)");
-  problem.follower = args.follower;
-  require_in_range(args.elements, "--elements (chain algorithm elements N)", 1, 1'000'000);
-  require_in_range(args.increments, "--increments (load increments)", 1, 1'000'000);
-  problem.elements = args.elements;
-  problem.increments = args.increments;
-  add_ladder_options(args, problem);
-  problem.chain_variant = chain_variant_from_string(args.chain_variant);
-  problem.stable = args.stable;
-  problem.judge_stability = same_name(args.stability, "on");
-  if (args.given.integrator && !same_name(args.method, "shooting") &&
-      !same_name(args.method, "auto")) {
-    throw InvalidInput(fmt::format(
-        "--integrator chooses the shooting method's integrator; --method {} does not use one",
-        args.method));
-  }
-  problem.integrator = integrator_backend_from_string(args.integrator);
-  if (args.given.shape) {
-    require_in_range(args.shape_points, "--shape (number of shape points)", 2, kMaxShapePoints);
-    problem.shape_points = args.shape_points;
-  }
-  const bool any_given = args.given.alpha2 || args.given.theta0 || args.given.b_over_l;
-  const bool nondimensional_loads = any_given || args.load_ratio_n != 0.0 || args.mu != 0.0 ||
-                                    args.follower != 0.0 || args.boundary != "free";
-  if (args.physical.given()) {
-    if (nondimensional_loads || args.given.chain) {
-      throw InvalidInput(
-          "a physical beam (--length, --E, the section, --Fx, --Fy, --M) is loaded in newtons; "
-          "do not combine it with the nondimensional --alpha2, --theta0, --b-over-l, --n, --mu, "
-          "--follower, --boundary or with --chain (a chain file can be in SI units itself: "
-          "docs/chain-toml.md)");
-    }
-    input.physical = args.physical.parse();
-    problem = input.physical->to_problem(problem);
-    return input;
-  }
-  if (args.given.chain) {
-    if (nondimensional_loads) {
-      throw InvalidInput(
-          "--chain FILE.toml describes the whole problem (segments, loads, boundary); do not "
-          "combine it with --alpha2, --theta0, --b-over-l, --n, --mu, --follower or --boundary");
-    }
-    input.chain_file = io::read_chain_file(args.chain_file);
-    warn(input.chain_file->warnings);
-    problem.chain = input.chain_file->chain;
-    problem.boundary = problem.chain->end;
-    return input;
-  }
-  if (!any_given) {
-    throw InvalidInput(
-        "one of --alpha2, --theta0 or --b-over-l is required (or --chain FILE, or a physical "
-        "beam: --length, --E, the section and --Fx, --Fy, --M)");
-  }
-  if (args.given.alpha2) {
-    require_finite_input(args.alpha2, "--alpha2 (P l^2/EI)");
-    problem.given = BeamProblem::Given::kAlpha2;
-    problem.value = args.alpha2;
-  } else if (args.given.theta0) {
-    problem.given = BeamProblem::Given::kTheta0;
-    problem.value = angle_option(args.theta0, "--theta0 (tip angle)");
-  } else {
-    require_in_range(args.b_over_l, "--b-over-l (tip deflection b/l)", -1.0, 1.0);
-    problem.given = BeamProblem::Given::kBOverL;
-    problem.value = args.b_over_l;
+// What `flexure beam` solves: the library's checks of the request with the flags' names, then the
+// beam given whole (a physical cantilever or a chain file), read only once the combination passed.
+BeamInput make_input(const BeamArgs& args, const BeamRequest& request) {
+  BeamInput input = make_beam_input(request, BeamRequestNames::command_line());
+  warn(input.warnings);
+  if (request.physical) {
+    add_physical_beam(input, args.physical.parse());
+  } else if (request.chain) {
+    io::ChainFile file = io::read_chain_file(args.chain_file);
+    warn(file.warnings);
+    const bool in_si = file.physical;
+    add_chain(input, std::move(file), in_si);
   }
   return input;
 }
@@ -312,27 +176,6 @@ std::string stability_line(const Stability& s) {
                      s.index,
                      s.margin,
                      s.message);
-}
-
-// The warning an answer that is not stable gets (stderr, and the JSON key `warnings`); empty for
-// a stable one or one the energy cannot judge.
-std::string stability_warning(const Stability& s) {
-  if (s.kind == StabilityKind::kUnstable) {
-    return fmt::format(
-        "the returned equilibrium is UNSTABLE (index {}, stability margin {:.6g}): it is the "
-        "equilibrium reached by proportional loading, but the beam cannot stay there under "
-        "these loads and supports (a small disturbance makes it buckle or snap away); --stable "
-        "returns a stable equilibrium",
-        s.index,
-        s.margin);
-  }
-  if (s.kind == StabilityKind::kCritical) {
-    return fmt::format(
-        "the returned equilibrium is CRITICAL (stability margin {:.3g}): a buckling or limit "
-        "point, where the slightest further load makes the beam buckle or snap",
-        s.margin);
-  }
-  return {};
 }
 
 // The stability keys (docs/cli.md): index and margin null unless the energy judged it.
@@ -408,7 +251,7 @@ void print_report(const BeamInput& input,
         solution.reactions.Fy,
         solution.reactions.M);
   }
-  if (input.chain_file) {
+  if (input.chain) {
     fmt::print(
         "  root moment M(0) = {:.10g}; reactions at the clamp: Fx = {:.10g}, Fy = {:.10g}, "
         "M = {:.10g} {}\n",
@@ -552,21 +395,9 @@ Json special_points_json(const BeamProblem& problem, const BeamSolution& solutio
 
 std::vector<std::string> beam_warnings(const BeamProblem& problem, const BeamSolution& solution) {
   std::vector<std::string> out;
-  // The solver's own warnings, e.g. the BCM beyond its stated deflection range.
-  for (const Warning& w : solution.warnings) out.push_back(w.text);
-  if (solution.method == BeamMethod::kPrbm && !solution.prbm_inside_validity) {
-    out.push_back(
-        fmt::format("the PRB angle Theta = {:.1f} deg is outside the validity limit {:.1f} "
-                    "deg ({}); the PRBM tip and force are not trusted here ({} exact)",
-                    std::fabs(solution.prbm_Theta) * 180.0 / std::numbers::pi,
-                    solution.prbm_theta_max * 180.0 / std::numbers::pi,
-                    solution.prbm_limits_source,
-                    // The elliptic solver takes only the free cantilever with dead loads.
-                    problem.is_plain_cantilever() ? "--method elliptic or shooting is"
-                                                  : "--method shooting is"));
+  for (Warning& w : beam_answer_warnings(problem, solution, BeamRequestNames::command_line())) {
+    out.push_back(std::move(w.text));
   }
-  const std::string stability = stability_warning(solution.stability);
-  if (!stability.empty()) out.push_back(stability);
   return out;
 }
 
@@ -611,7 +442,7 @@ Json to_json(const BeamInput& input,
   out["reactions"] = reaction_json(solution.reactions);
   add_stability_json(out, solution.stability);
   out["stable_search"] = problem.stable ? Json(solution.stable_search) : Json(nullptr);
-  if (input.chain_file) {
+  if (input.chain) {
     // The chain's loads in the file's own units, whether or not it has Howell's parameters.
     out["tip_load_chain_units"] = reaction_json(solution.chain_tip_load);
     out["root_moment_chain_units"] = solution.chain_root_moment;
@@ -723,8 +554,8 @@ void add_fatigue_json(Json& out, const BeamFatigue& f) {
                         {"c_misc", f.strength.factors.misc}};
 }
 
-void run_beam(const BeamArgs& args) {
-  const BeamInput input = make_input(args);
+void run_beam(const BeamArgs& args, const BeamRequest& request) {
+  const BeamInput input = make_input(args, request);
   if (!args.cycle.empty()) {
     if (!input.physical || !input.physical->thickness) {
       throw InvalidInput(
@@ -734,7 +565,7 @@ void run_beam(const BeamArgs& args) {
     args.fatigue.options();  // a bad --reliability, --Kf or --surface-finish before solving
   }
   const BeamProblem& problem = input.problem;
-  const BeamMethod method = beam_method_from_string(args.method);
+  const BeamMethod method = input.method;
   if (t_problem_only != nullptr) {
     *t_problem_only = BeamCommandProblem{problem, method, input.is_physical(), args.json};
     return;
@@ -745,7 +576,7 @@ void run_beam(const BeamArgs& args) {
     if (input.is_physical()) {
       PhysicalBeamSolution solved = input.physical
                                         ? solve_physical_beam(method, *input.physical, problem)
-                                        : solve_physical_chain(method, problem, *input.chain_file);
+                                        : solve_physical_chain(method, problem, *input.chain);
       solution = std::move(solved.solution);
       if (solution.converged()) physical = std::move(solved.physical);
     } else {
@@ -847,36 +678,12 @@ void run_beam(const BeamArgs& args) {
 
 }  // namespace
 
-CommandOutput run_beam_keywords(const BeamKeywords& k) {
+CommandOutput run_beam_request(const BeamRequest& request) {
   BeamArgs args;
   args.json = true;
-  // A keyword left out keeps the command's default; `given` records the ones the flags' count()
-  // would (the checks that tell a default from a value the user gave read it).
-  const auto take = [](const auto& keyword, auto& field, bool* given = nullptr) {
-    if (given != nullptr) *given = keyword.has_value();
-    if (keyword) field = *keyword;
-  };
-  take(k.n, args.load_ratio_n);
-  take(k.mu, args.mu);
-  take(k.alpha2, args.alpha2, &args.given.alpha2);
-  take(k.theta0, args.theta0, &args.given.theta0);
-  take(k.b_over_l, args.b_over_l, &args.given.b_over_l);
-  take(k.method, args.method);
-  take(k.boundary, args.boundary);
-  take(k.tip_x, args.tip_x, &args.given.tip_x);
-  take(k.tip_y, args.tip_y, &args.given.tip_y);
-  take(k.tip_angle, args.tip_angle, &args.given.tip_angle);
-  take(k.follower, args.follower);
-  take(k.elements, args.elements, &args.given.elements);
-  take(k.increments, args.increments);
-  take(k.chain_variant, args.chain_variant);
-  take(k.integrator, args.integrator, &args.given.integrator);
-  take(k.shape, args.shape_points, &args.given.shape);
-  args.stable = k.stable;
-  take(k.stability, args.stability);
   OutputCapture capture;
   reset_exit_code();
-  run_beam(args);
+  run_beam(args, request);
   CommandOutput out;
   out.json = std::move(capture.json);
   out.warnings = std::move(capture.warnings);
@@ -991,10 +798,7 @@ void register_beam_command(CLI::App& app) {
       ->transform(CLI::IsMember({"reversed", "repeated"}));
   args->fatigue.add_to(*beam);
   beam->add_flag("--json", args->json, "Print one JSON object on stdout");
-  beam->callback([args] {
-    args->given = given_options(*args);
-    run_beam(*args);
-  });
+  beam->callback([args] { run_beam(*args, request_of(*args)); });
 }
 
 }  // namespace flexure::cli

@@ -9,6 +9,7 @@
 
 #include "cli/command_runner.h"
 #include "flexure/beam/beam_problem.h"
+#include "flexure/beam/beam_request.h"
 
 namespace flexure::cli {
 
@@ -19,21 +20,12 @@ struct BeamCommandProblem {
   bool json = false;
 };
 
-// `flexure beam ... --json` for values already parsed (the Python module's scalar flexure.beam):
-// the same checks, messages, warnings and JSON object as the command, without a command line to
-// parse or commands to register. Each field is the flag of that name, unset when not given; the
-// string values of --method, --boundary, --integrator, --chain-variant and --stability must be
-// the canonical lower-case names (the command's own parser maps other spellings to them). The
-// options not listed here (--tol, --chain, a physical beam, fatigue, the ladder's settings) go
+// `flexure beam ... --json` for a request already made of values (the Python module's scalar
+// flexure.beam): the library's checks of the request (beam/beam_request.h) with the command's
+// names, then the same solve, warnings and JSON object as the command, without a command line to
+// parse or commands to register. A physical beam or a chain file (request.physical, .chain) goes
 // through run_command.
-struct BeamKeywords {
-  std::optional<double> n, mu, alpha2, b_over_l, tip_x, tip_y, follower;
-  std::optional<std::string> theta0, tip_angle;  // radians, or text with a unit ("30deg")
-  std::optional<std::string> method, boundary, integrator, chain_variant, stability;
-  std::optional<int> shape, elements, increments;
-  bool stable = false;
-};
-CommandOutput run_beam_keywords(const BeamKeywords& keywords);
+CommandOutput run_beam_request(const BeamRequest& request);
 
 // `args` are those of `flexure beam` (without "beam"). Throws InvalidInput with the tool's message
 // for anything the tool refuses.

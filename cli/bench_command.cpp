@@ -12,8 +12,6 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "flexure/benchmarks/studies/bench_run.h"
-#include "flexure/io/hdf5_file.h"
-#include "flexure/io/output_path.h"
 #include "flexure/io/temp_file_cleanup.h"
 #include "flexure/solver/common/errors.h"
 
@@ -52,13 +50,7 @@ void run_bench(BenchArgs& args) {
   bench::BenchOptions options = args.options;
   // Fail fast (exit 2) on an unwritable path, before minutes of solving; the checkpoint is
   // written next to it after every finished group.
-  io::check_output_path(options.out);
-  io::check_output_path(bench::checkpoint_path(options.out), "--out (its checkpoint)");
-  try {
-    io::AtomicHdf5File probe(options.out);
-  } catch (const io::Hdf5Error& e) {
-    throw InvalidInput(fmt::format("--out {}: {}", options.out, e.what()));
-  }
+  bench::check_bench_outputs(options);
   // Interrupted (Ctrl-C, SIGTERM, SIGHUP): the checkpoint of the finished groups stays; say how to
   // continue. Before the first group has finished there is no checkpoint yet.
   const std::string checkpoint = bench::checkpoint_path(options.out);
@@ -81,14 +73,8 @@ void run_bench(BenchArgs& args) {
   io::set_interrupt_note({});
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  int points = 0;
-  int failed = 0;
-  for (const bench::MethodRun& run : summary.runs) {
-    for (int s : run.status) {
-      ++points;
-      failed += s == bench::kStatusNotConverged || s == bench::kStatusError ? 1 : 0;
-    }
-  }
+  const int points = summary.solves();
+  const int failed = summary.failed_solves();
   const std::string written = summary.complete ? options.out : bench::checkpoint_path(options.out);
   if (args.json) {
     Json out;

@@ -17,11 +17,11 @@
 #include "flexure/io/mechanism_geometry_toml.h"
 #include "flexure/io/mechanism_toml.h"
 #include "flexure/io/output_path.h"
-#include "flexure/io/quantity.h"
 #include "flexure/mechanisms/design/mechanism_synthesis.h"
 #include "flexure/mechanisms/force_of.h"
 #include "flexure/mechanisms/material_library.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/quantity.h"
 
 namespace flexure::cli {
 namespace {

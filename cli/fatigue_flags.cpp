@@ -3,10 +3,10 @@
 #include <fmt/format.h>
 
 #include "cli/cli_common.h"
-#include "flexure/io/quantity.h"
 #include "flexure/mechanisms/material_library.h"
 #include "flexure/mechanisms/mechanism_fatigue.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/quantity.h"
 
 namespace flexure::cli {
 

@@ -6,11 +6,11 @@
 
 #include "cli/cli_common.h"
 #include "flexure/io/general_mechanism_toml.h"
-#include "flexure/io/quantity.h"
 #include "flexure/io/toml_support.h"
 #include "flexure/mechanisms/general/general_exact.h"
 #include "flexure/mechanisms/general/general_prbm.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/quantity.h"
 
 namespace flexure::cli {
 namespace {

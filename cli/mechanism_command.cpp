@@ -30,7 +30,6 @@
 #include "flexure/io/parallel/mpi_world.h"
 #include "flexure/io/parallel/work_distribution.h"
 #include "flexure/io/provenance.h"
-#include "flexure/io/quantity.h"
 #include "flexure/mechanisms/constant_force.h"
 #include "flexure/mechanisms/howell_designs.h"
 #include "flexure/mechanisms/inversion.h"
@@ -43,6 +42,7 @@
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/mechanisms/modified_springs.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/quantity.h"
 
 namespace flexure::cli {
 namespace {

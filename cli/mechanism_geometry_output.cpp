@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 
 #include "flexure/io/output_path.h"
-#include "flexure/io/quantity.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/quantity.h"
 
 namespace flexure::cli {
 namespace {

@@ -21,9 +21,9 @@
 #include "flexure/io/chain_toml.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/output_path.h"
-#include "flexure/io/quantity.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/solver/common/quantity.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure::cli {

@@ -7,9 +7,9 @@
 #include <utility>
 
 #include "cli/cli_common.h"
-#include "flexure/io/quantity.h"
 #include "flexure/mechanisms/material_library.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/quantity.h"
 
 namespace flexure::cli {
 namespace {

@@ -14,14 +14,12 @@
 #include "cli/csv_output.h"
 #include "cli/slow_progress.h"
 #include "flexure/beam/beam_sweep_grid.h"
-#include "flexure/beam/beam_sweep_solver.h"
-#include "flexure/io/beam_sweep.h"
-#include "flexure/io/hdf5_file.h"
+#include "flexure/benchmarks/studies/beam_sweep_run.h"
 #include "flexure/io/output_path.h"
 #include "flexure/io/parallel/mpi_world.h"
-#include "flexure/io/quantity.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/solver/common/quantity.h"
 
 namespace flexure::cli {
 namespace {
@@ -42,10 +40,6 @@ struct SweepBeamArgs {
   std::string stability = "on";  // the verdict per point (docs/stability.md), or off
 };
 
-// At most 10^7 points (a file of about 400 MB); under mpirun 10^10, the studies of docs/scaling.md
-// (10^9 points: 40 GB). The sweep streams, so memory stays flat either way.
-long max_sweep_count() { return parallel::launched_size() > 1 ? 10'000'000'000L : 10'000'000L; }
-
 // One of the parameters: a fixed value, or an axis when the text has a ':'.
 void add_parameter(BeamSweepGrid& grid, SweepParameter p, const std::string& text) {
   const std::string what = flag_name(p);
@@ -54,7 +48,7 @@ void add_parameter(BeamSweepGrid& grid, SweepParameter p, const std::string& tex
     if (p == SweepParameter::kTheta0) warn(io::angle_warning({value, ""}, what));
   };
   if (text.find(':') != std::string::npos) {
-    const Range r = parse_range(text, what, max_sweep_count());
+    const Range r = parse_range(text, what, max_beam_sweep_points());
     grid.axes.push_back({p, r.start, r.stop, r.count});
     check_angle(std::fabs(r.start) > std::fabs(r.stop) ? r.start : r.stop);
     return;
@@ -97,60 +91,13 @@ BeamSweepGrid make_grid(const SweepBeamArgs& args) {
   }
   add_parameter(grid, SweepParameter::kLoadRatioN, args.load_ratio_n);
   add_parameter(grid, SweepParameter::kMu, args.mu);
-  grid.validate(max_sweep_count());
+  grid.validate(max_beam_sweep_points());
   return grid;
-}
-
-std::string describe_point(const BeamSweepGrid& grid, long index) {
-  std::string text;
-  const std::vector<double> c = grid.coordinates(index);
-  for (std::size_t k = 0; k < c.size(); ++k) {
-    text += fmt::format("{}{} = {}", k ? ", " : "", dataset_name(grid.axes[k].parameter), c[k]);
-  }
-  return text;
-}
-
-// The axes to store: none for the plain sweep over alpha2 (its /alpha2 is the axis, the layout
-// of a 1-D sweep), else every axis.
-std::vector<io::BeamSweepAxis> stored_axes(const BeamSweepGrid& grid) {
-  std::vector<io::BeamSweepAxis> axes;
-  if (grid.axes.size() == 1 && grid.axes[0].parameter == SweepParameter::kAlpha2) return axes;
-  for (const SweepAxis& axis : grid.axes) {
-    const char* what = axis.parameter == SweepParameter::kAlpha2       ? "load alpha2 = P l^2/EI"
-                       : axis.parameter == SweepParameter::kLoadRatioN ? "load ratio n (n > 0 "
-                                                                         "compressive)"
-                       : axis.parameter == SweepParameter::kMu         ? "end moment mu = M l/EI"
-                       : axis.parameter == SweepParameter::kTheta0
-                           ? "given tip angle theta0 (the load alpha2 is found)"
-                           : "given tip deflection b/l (the load alpha2 is found)";
-    axes.push_back({dataset_name(axis.parameter),
-                    axis.start,
-                    axis.stop,
-                    axis.count,
-                    units_of(axis.parameter),
-                    fmt::format("{}: axis {} of the datasets, {} equally spaced values",
-                                what,
-                                axes.size() + 1,
-                                axis.count)});
-  }
-  return axes;
-}
-
-const char* given_name(const BeamProblem& problem) {
-  switch (problem.given) {
-    case BeamProblem::Given::kTheta0:
-      return "theta0";
-    case BeamProblem::Given::kBOverL:
-      return "b_over_l";
-    default:
-      return "alpha2";
-  }
 }
 
 void run_sweep_beam(const SweepBeamArgs& args) {
   const auto started = std::chrono::steady_clock::now();
-  // Under mpirun the ranks are the parallelism: one thread each unless asked otherwise.
-  const int threads = args.threads.value_or(parallel::launched_size() > 1 ? 1 : 2);
+  const int threads = args.threads.value_or(default_beam_sweep_threads());
   require_in_range(threads, "--threads", 1, 64);
   BeamSweepGrid grid = make_grid(args);
   // The verdict per point, as `flexure beam` gives it (docs/stability.md; its cost:
@@ -159,7 +106,6 @@ void run_sweep_beam(const SweepBeamArgs& args) {
   const long count = grid.size();
   // Fails (exit 2) for a method not in this build, before any file is touched.
   const BeamMethod method = resolve_beam_method(beam_method_from_string(args.method));
-  const double tolerance = beam_method_tolerance(method);
 
   // Check and open the output first: an unwritable path is reported before minutes of solving.
   io::check_output_path(args.out);
@@ -171,39 +117,9 @@ void run_sweep_beam(const SweepBeamArgs& args) {
         "compressed datasets only collectively; compress the file afterwards (h5repack -f "
         "SHUF -f GZIP=4)");
   }
-  std::unique_ptr<io::AtomicHdf5File> file;
-  try {
-    file = std::make_unique<io::AtomicHdf5File>(csv.hdf5_path(), io::Hdf5Access::kCollective);
-  } catch (const io::Hdf5Error& e) {
-    throw InvalidInput(fmt::format("--out: {}", e.what()));
-  }
-
-  // Shooting sweeps start each point from its neighbour where that gives the same answer.
-  const BeamSweepSolver sweep_solver(grid, method);
-  const io::BeamIndexSolver solve_point = [&](long index) {
-    BeamSolution solution = sweep_solver.solve(index);
-    io::BeamSweepPoint point;
-    point.set_converged(solution.converged());
-    point.tip = solution.tip;
-    point.alpha2 = solution.alpha2;
-    if (solution.method == BeamMethod::kPrbm) point.within_validity = solution.prbm_inside_validity;
-    point.stability = solution.stability.kind;
-    point.stability_index = solution.stability.index;
-    point.stability_margin = solution.stability.margin;
-    if (!solution.converged()) point.message = std::move(solution.message);
-    return point;
-  };
-  io::BeamSweepOptions options;
+  BeamSweepFile file(csv.hdf5_path(), args.compress);
+  BeamSweepRunOptions options;
   options.threads = threads;
-  options.describe = [&](long index) { return describe_point(grid, index); };
-  // Chunks of about 1/64 of each thread's share, so that progress moves steadily on slow methods;
-  // at most 2048 points, which amortises the hand-out on fast ones.
-  options.chunk = std::clamp(count / (64L * threads), 1L, 2048L);
-  // Under mpirun: the elliptic solve and the PRBM take about a microsecond per load, so that a
-  // rank's block holds at least 1024 (a message and a write worth their cost), or half a rank's
-  // share in a smaller sweep (every rank gets work); the other methods take milliseconds, and their
-  // blocks shrink to single loads at the end (docs/scaling.md).
-  options.min_block = method == BeamMethod::kElliptic || method == BeamMethod::kPrbm ? 1024 : 1;
   // By elapsed time, not by count: silent for the first second, then "sweep beam: k/n (t s)" on a
   // terminal (a shooting sweep of 2000 loads takes about 40 s).
   if (auto progress = slow_progress("sweep beam")) {
@@ -211,25 +127,12 @@ void run_sweep_beam(const SweepBeamArgs& args) {
       progress(static_cast<std::size_t>(done), static_cast<std::size_t>(total));
     };
   }
-  io::BeamSweepMetadata metadata;
-  metadata.method = to_string(method);
-  metadata.load_ratio_n = grid.base.load_ratio_n;
-  metadata.mu = grid.base.mu;
-  metadata.tolerance = tolerance;
-  metadata.axes = stored_axes(grid);
-  metadata.given = given_name(grid.base);
-  metadata.given_value = grid.base.value;
-  io::Hdf5DatasetOptions layout;
-  layout.compress = args.compress;
-  // Streamed: each block of points is written before the next is solved (flat memory).
-  io::BeamSweepWriter writer(file->root(), count, metadata, layout);
-  const io::BeamSweepSummary table = io::stream_beam_sweep(count, solve_point, options, writer);
-  file->commit();
+  const BeamSweepRun table = file.run(grid, method, options);
   // The table as CSV (rank 0 writes it): the swept parameters first.
   std::vector<std::string> csv_axes = {"alpha2"};
-  if (const auto stored = stored_axes(grid); !stored.empty()) {
+  if (!table.stored_axes.empty()) {
     csv_axes.clear();
-    for (const io::BeamSweepAxis& axis : stored) csv_axes.push_back("axes/" + axis.name);
+    for (const std::string& axis : table.stored_axes) csv_axes.push_back("axes/" + axis);
   }
   csv.write(csv_axes);
   const double seconds =
@@ -269,7 +172,7 @@ void run_sweep_beam(const SweepBeamArgs& args) {
         count - table.converged_count,
         count,
         args.out,
-        describe_point(grid, table.first_failure),
+        describe_sweep_point(grid, table.first_failure),
         table.first_failure_message,
         failure_hint(grid.at(table.first_failure), failed)));
   }

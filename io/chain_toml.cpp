@@ -10,11 +10,11 @@
 #include <set>
 #include <utility>
 
-#include "flexure/io/quantity.h"
 #include "flexure/io/toml_support.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
 #include "flexure/solver/common/plate_modulus.h"
+#include "flexure/solver/common/quantity.h"
 
 namespace flexure::io {
 namespace {

@@ -5,9 +5,9 @@
 // InvalidInput errors that name the file, the key and its line.
 //
 // A file is in physical units (SI) when it says units = "SI" or writes any value with a unit
-// ("50 mm", "200 GPa", "4.33 N"; io/quantity.h). Only then may a flexible segment give its
-// section (E with I, or E with width and thickness) and the file a yield_strength, and only then
-// are results reported in metres, newtons and pascals.
+// ("50 mm", "200 GPa", "4.33 N"; solver/common/quantity.h). Only then may a flexible segment give
+// its section (E with I, or E with width and thickness) and the file a yield_strength, and only
+// then are results reported in metres, newtons and pascals.
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,7 +35,7 @@ struct ChainFile : PhysicalChain {
   // Per segment, as PhysicalChain::segments in the reader's earlier form (E, I, thickness, area,
   // self-weight); kept for existing callers.
   std::vector<std::optional<SegmentSection>> sections;
-  std::vector<std::string> warnings;  // likely unit mistakes, for stderr (io/quantity.h)
+  std::vector<std::string> warnings;  // likely unit mistakes, for stderr (solver/common/quantity.h)
 };
 
 ChainFile read_chain_file(const std::string& path);

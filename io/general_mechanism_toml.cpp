@@ -6,9 +6,9 @@
 #include <cmath>
 #include <optional>
 
-#include "flexure/io/quantity.h"
 #include "flexure/io/toml_support.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/quantity.h"
 
 namespace flexure::mechanism::general {
 namespace {

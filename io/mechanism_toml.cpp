@@ -10,12 +10,12 @@
 #include <sstream>
 
 #include "flexure/elements/fixed_pinned_segment.h"
-#include "flexure/io/quantity.h"
 #include "flexure/io/toml_support.h"
 #include "flexure/mechanisms/material_library.h"
 #include "flexure/mechanisms/mechanism_fatigue.h"
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/quantity.h"
 
 namespace flexure::mechanism {
 namespace {
@@ -25,7 +25,8 @@ using io::line_of;
 using io::toml_fail;
 
 // A positive finite number at `key` (required unless `fallback` is given); a quantity of
-// `dimension` may also be written with a unit, "50 mm" (io/quantity.h). Plain numbers are SI.
+// `dimension` may also be written with a unit, "50 mm" (solver/common/quantity.h). Plain numbers
+// are SI.
 double positive(const toml::table& t,
                 const std::string& key,
                 const std::string& where,

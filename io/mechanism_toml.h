@@ -18,8 +18,8 @@ MechanismDesign load_mechanism_toml(const std::string& path);
 struct MechanismFile {
   MechanismDesign design;
   dynamics::DynamicsData dynamics;
-  // Likely unit mistakes, for stderr (io/quantity.h): a modulus below 1e6 Pa (lengths are in
-  // metres), a flexure thicker than a tenth of its length.
+  // Likely unit mistakes, for stderr (solver/common/quantity.h): a modulus below 1e6 Pa (lengths
+  // are in metres), a flexure thicker than a tenth of its length.
   std::vector<std::string> warnings;
 };
 MechanismFile parse_mechanism_file(const std::string& text, const std::string& source);

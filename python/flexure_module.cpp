@@ -2,7 +2,7 @@
 //  * run(args): one `flexure` command run in-process (cli/command_runner.h) with the lock on the
 //    interpreter released, its JSON object converted to Python (arrays of numbers to numpy);
 //  * beam(**values): `flexure beam --json` for one load from values, without a command line
-//    (cli::run_beam_keywords; the scalar flexure.beam);
+//    (cli::run_beam_request over the library's BeamRequest; the scalar flexure.beam);
 //  * beam_many(args, ...): `flexure beam` at many loads on worker threads, columns written
 //    straight into numpy arrays (the vectorised flexure.beam);
 //  * the classes over the library's types (python/objects.cpp).
@@ -31,8 +31,10 @@
 #include "cli/beam_command.h"
 #include "cli/command_runner.h"
 #include "flexure/beam/beam_problem.h"
+#include "flexure/beam/beam_request.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/gsl_guard.h"
+#include "flexure/solver/common/names.h"
 #include "flexure/version.h"
 #include "python/objects.h"
 
@@ -193,10 +195,11 @@ py::tuple run(const std::vector<std::string>& args) {
   return run_released([&] { return cli::run_command(args); });
 }
 
-// beam(...): `flexure beam --json` for keyword values (cli::run_beam_keywords), the same result
-// as run(["beam", ...]) without a command line (python/flexure/_beam.py decides which applies).
-py::tuple beam_keywords(const cli::BeamKeywords& keywords) {
-  return run_released([&] { return cli::run_beam_keywords(keywords); });
+// beam(...): `flexure beam --json` for keyword values (cli::run_beam_request on the library's
+// BeamRequest), the same result as run(["beam", ...]) without a command line
+// (python/flexure/_beam.py decides which applies).
+py::tuple beam_request(const BeamRequest& request) {
+  return run_released([&] { return cli::run_beam_request(request); });
 }
 
 // ---- a design given as a dict: TOML text for the tool's file readers ----
@@ -698,7 +701,6 @@ PYBIND11_MODULE(_core, m) {
         py::arg("shape"),
         py::arg("threads"),
         "flexure beam at many loads (flat float64 arrays) on worker threads.");
-  using flexure::cli::BeamKeywords;
   m.def(
       "beam",
       [](std::optional<double> n,
@@ -719,26 +721,28 @@ PYBIND11_MODULE(_core, m) {
          std::optional<std::string> integrator,
          std::optional<std::string> stability,
          bool stable) {
-        BeamKeywords k;
-        k.n = n;
-        k.mu = mu;
-        k.alpha2 = alpha2;
-        k.theta0 = std::move(theta0);
-        k.b_over_l = b_over_l;
-        k.method = std::move(method);
-        k.boundary = std::move(boundary);
-        k.tip_x = tip_x;
-        k.tip_y = tip_y;
-        k.tip_angle = std::move(tip_angle);
-        k.follower = follower;
-        k.shape = shape;
-        k.elements = elements;
-        k.increments = increments;
-        k.chain_variant = std::move(chain_variant);
-        k.integrator = std::move(integrator);
-        k.stability = std::move(stability);
-        k.stable = stable;
-        return flexure::python::beam_keywords(k);
+        // The keywords as the library's beam request (beam/beam_request.h); one left out keeps
+        // the command's default, and a value given is one the checks see as given.
+        flexure::BeamRequest r;
+        r.load_ratio_n = n.value_or(0.0);
+        r.mu = mu.value_or(0.0);
+        r.alpha2 = alpha2;
+        r.theta0 = std::move(theta0);
+        r.b_over_l = b_over_l;
+        if (method) r.method = std::move(*method);
+        if (boundary) r.boundary = std::move(*boundary);
+        r.tip_x = tip_x;
+        r.tip_y = tip_y;
+        r.tip_angle = std::move(tip_angle);
+        r.follower = follower.value_or(0.0);
+        r.shape_points = shape;
+        r.elements = elements;
+        r.increments = increments.value_or(1);
+        if (chain_variant) r.chain_variant = std::move(*chain_variant);
+        r.integrator = std::move(integrator);
+        r.judge_stability = !stability || flexure::same_name(*stability, "on");
+        r.stable = stable;
+        return flexure::python::beam_request(r);
       },
       py::kw_only(),
       py::arg("n") = py::none(),

@@ -11,6 +11,8 @@
 #include "flexure/benchmarks/studies/bench_hdf5.h"
 #include "flexure/benchmarks/studies/bench_problems.h"
 #include "flexure/benchmarks/studies/bench_solve.h"
+#include "flexure/io/hdf5_file.h"
+#include "flexure/io/output_path.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/solver/common/errors.h"
 
@@ -379,6 +381,30 @@ BenchSummary run_benchmark(const BenchOptions& options) {
   std::filesystem::remove(checkpoint, ignored);
   summary.complete = true;
   return summary;
+}
+
+int BenchSummary::solves() const {
+  int count = 0;
+  for (const MethodRun& run : runs) count += static_cast<int>(run.status.size());
+  return count;
+}
+
+int BenchSummary::failed_solves() const {
+  int count = 0;
+  for (const MethodRun& run : runs) {
+    for (int s : run.status) count += s == kStatusNotConverged || s == kStatusError ? 1 : 0;
+  }
+  return count;
+}
+
+void check_bench_outputs(const BenchOptions& options, const std::string& option) {
+  io::check_output_path(options.out, option);
+  io::check_output_path(checkpoint_path(options.out), option + " (its checkpoint)");
+  try {
+    io::AtomicHdf5File probe(options.out);
+  } catch (const io::Hdf5Error& e) {
+    throw InvalidInput(fmt::format("{} {}: {}", option, options.out, e.what()));
+  }
 }
 
 }  // namespace flexure::bench

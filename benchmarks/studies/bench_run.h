@@ -33,9 +33,18 @@ struct BenchSummary {
   int groups_computed = 0;
   int groups_reused = 0;
   std::vector<MethodRun> runs;  // every group, reference groups included
+  // Over every load point of every group: the solves, and those that did not converge or threw
+  // (status kStatusNotConverged or kStatusError, as the file's status datasets record them).
+  int solves() const;
+  int failed_solves() const;
 };
 
 std::string checkpoint_path(const std::string& out);
+
+// Before minutes of solving: the output file and its checkpoint can be written. Throws
+// InvalidInput "OPTION PATH: reason" naming `option` (the caller's name for options.out, "--out"
+// for the tool) for a path that cannot be written or a file HDF5 cannot create there.
+void check_bench_outputs(const BenchOptions& options, const std::string& option = "--out");
 
 // Throws InvalidInput for unknown problem or method names or an incompatible resume file;
 // io::Hdf5Error when a file cannot be written.

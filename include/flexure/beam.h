@@ -13,6 +13,7 @@
 // Core: errors, results' status and warnings, end loads, sections and materials, stability.
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/quantity.h"
 #include "flexure/solver/common/section.h"
 #include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"
@@ -29,5 +30,7 @@
 // The beam layer: problems by any method, the method choice, physical beams and chains.
 #include "flexure/beam/beam_method.h"
 #include "flexure/beam/beam_problem.h"
+#include "flexure/beam/beam_request.h"
+#include "flexure/beam/beam_solver.h"
 #include "flexure/beam/method_selector.h"
 #include "flexure/beam/physical_beam.h"

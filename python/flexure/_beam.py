@@ -109,7 +109,8 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
                                ("stable", stable), ("stability", stability)))
         if values is not None:
             # One load by the command's own checks and JSON object, without a command line
-            # (cli::run_beam_keywords): the same dict, messages and warnings.
+            # (the library's BeamRequest, cli::run_beam_request): the same dict, messages and
+            # warnings.
             kind, payload, texts, _ = _core.beam(**values)
             if texts:
                 _command.emit(texts, stacklevel=2)

@@ -34,7 +34,7 @@ std::string limit_points_note(int limit_points, double first_limit_load_factor);
 
 // What a warning is about, for code that filters them (the text is for people).
 enum class WarningKind {
-  kUnits,            // a quantity whose unit looks mistaken (io/quantity.h)
+  kUnits,            // a quantity whose unit looks mistaken (solver/common/quantity.h)
   kOutsideValidity,  // a model used outside the range its source validated
   kStrokeClamped,    // a requested stroke past the toggle position, clamped (docs/cfm.md §1.3)
   kForceVanishes,    // a force that is zero or changes sign within the stroke (Xi' is 0)

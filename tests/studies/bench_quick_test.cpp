@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "flexure/benchmarks/studies/bench_run.h"
+#include "flexure/solver/common/errors.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "tests/support/cli_test_support.h"
 
@@ -402,6 +403,35 @@ TEST(BenchStatisticsTest, NothingConvergedHasNoErrorStatistic) {
   EXPECT_NE(bench::summarize(run).find("1/3 converged, max relative error 0.00e+00"),
             std::string::npos)
       << bench::summarize(run);
+}
+
+// The summary's counts over every group (the JSON keys solves and failed_solves): a status of 1
+// (not converged) or 2 (threw) is a failed solve; 0 and 3 (converged, with or without a
+// reference) are not. Counted by hand: 6 solves, 2 failed.
+TEST(BenchStatisticsTest, SummaryCountsSolvesAndFailures) {
+  bench::BenchSummary summary;
+  bench::MethodRun a;
+  a.status = {bench::kStatusConverged, bench::kStatusNotConverged, bench::kStatusError, 3};
+  bench::MethodRun b;
+  b.status = {bench::kStatusConverged, bench::kStatusConverged};
+  summary.runs = {a, b};
+  EXPECT_EQ(summary.solves(), 6);
+  EXPECT_EQ(summary.failed_solves(), 2);
+  EXPECT_EQ(bench::BenchSummary{}.solves(), 0);
+}
+
+// An output that cannot be written is refused before any solve, naming the caller's option.
+TEST(BenchInputTest, OutputsAreCheckedBeforeSolving) {
+  bench::BenchOptions options;
+  options.out = "/nonexistent-directory/bench.h5";
+  try {
+    bench::check_bench_outputs(options, "out");
+    FAIL() << "accepted an unwritable path";
+  } catch (const InvalidInput& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind("out '/nonexistent-directory/bench.h5': ", 0), 0u) << message;
+    EXPECT_NE(message.find("does not exist"), std::string::npos) << message;
+  }
 }
 
 // The JSON summary carries the same statistics per group, null where they cover no point.

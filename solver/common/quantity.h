@@ -66,3 +66,13 @@ std::string thickness_warning(double thickness, double length, std::string_view 
 std::string modulus_warning(const Quantity& modulus, std::string_view what);
 
 }  // namespace flexure::io
+
+namespace flexure {
+// The parser lives in core so that the beam layer and the Python module can read "50mm" without
+// linking the I/O layer; its names stay in flexure::io for existing callers.
+using io::Dimension;
+using io::parse_quantity;
+using io::parse_quantity_range;
+using io::Quantity;
+using io::QuantityRange;
+}  // namespace flexure

@@ -1,4 +1,4 @@
-#include "flexure/io/quantity.h"
+#include "flexure/solver/common/quantity.h"
 
 #include <fmt/format.h>
 

@@ -1,9 +1,9 @@
-// Unit suffixes (io/quantity.h) against the exact definitions: 1 in = 0.0254 m and 1 lbf =
-// 4.4482216152605 N exactly (NIST SP 811, appendix B), so 1 psi = 6894.757293168361 Pa; SI
+// Unit suffixes (solver/common/quantity.h) against the exact definitions: 1 in = 0.0254 m and 1 lbf
+// = 4.4482216152605 N exactly (NIST SP 811, appendix B), so 1 psi = 6894.757293168361 Pa; SI
 // prefixes are powers of ten. Plain numbers are SI. Wrong dimensions, unknown units and near misses
 // are errors naming the option; the three unit-mistake warnings fire on the documented thresholds
 // only.
-#include "flexure/io/quantity.h"
+#include "flexure/solver/common/quantity.h"
 
 #include <gtest/gtest.h>
 
