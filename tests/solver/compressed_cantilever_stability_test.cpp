@@ -5,11 +5,13 @@
 //     forces in every direction with and without an end moment, Howell's (n, alpha2, mu) loads with
 //     compressive n, nearly straight and straight columns past the Euler loads, loads whose
 //     proportional path passes limit points and other (unstable) equilibria of the same loads
-//     found by Newton from spread root moments. Kind and index equal on every one; margin within
-//     kMarginTolerance; the same message wherever the margin's printed digits agree;
+//     found by Newton from spread root moments. Kind and index equal on every one it answers;
+//     margin within kMarginTolerance, and within 1e-10 of the general verdict refined to
+//     margin_accuracy 1e-12 wherever the default one differs by more than its stated 1e-9; it
+//     declines only beams whose general margin is above 0.999;
 //   * the closed forms of the straight column: index = the number of Euler loads
-//     (2k - 1)^2 pi^2 / 4 below P, margin 1 - P / (pi^2 / 4); at P exactly the k-th Euler load the
-//     k-th eigenvalue is 0 (the lowest of a column just below P_1 is within 1e-9 of the formula);
+//     (2k - 1)^2 pi^2 / 4 below P, margin 1 - P / (pi^2 / 4); the index changes at each P_k; the
+//     column at P_1 is critical;
 //   * chains and ends it does not cover are declined.
 #include "flexure/solver/shooting/compressed_cantilever_stability.h"
 
@@ -59,7 +61,8 @@ Stability general_verdict(const SegmentChain& chain, const ShootingResult& r) {
 }
 
 struct Tally {
-  int solved = 0, answered = 0, declined = 0, unstable = 0, index2 = 0, with_limit_points = 0;
+  int solved = 0, answered = 0, declined = 0, refined = 0, unstable = 0, index2 = 0,
+      with_limit_points = 0;
   double worst = 0.0;
 };
 
@@ -82,6 +85,19 @@ void check_result(const EndLoad& load, const ShootingResult& r, Tally& tally) {
   EXPECT_EQ(fast->kind, general.kind) << describe(load);
   EXPECT_EQ(fast->index, general.index) << describe(load);
   EXPECT_NEAR(fast->margin, general.margin, kMarginTolerance) << describe(load);
+  if (std::fabs(fast->margin - general.margin) > 1e-9) {
+    // Beyond the general verdict's stated accuracy (weakly compressed beams, margins close to 1):
+    // refined to margin_accuracy 1e-12 it must meet the Jacobi margin closely.
+    StabilityOptions fine;
+    fine.margin_accuracy = 1e-12;
+    const Stability refined = equilibrium_stability(
+        chain,
+        Reaction{},
+        [&](const std::vector<double>& s) { return shooting_shape_at(chain, r, s); },
+        fine);
+    EXPECT_NEAR(fast->margin, refined.margin, 1e-10) << describe(load);
+    ++tally.refined;
+  }
   tally.worst = std::max(tally.worst, std::fabs(fast->margin - general.margin));
 }
 
@@ -133,11 +149,13 @@ TEST(CompressedCantileverStability, RandomLoadsAgreeWithTheGeneralVerdict) {
       check_result(load, newton.solve_from(uniform_cantilever(load), {3.0 * k}), tally);
     }
   }
-  std::cout << "solved " << tally.solved << ": answered " << tally.answered << ", unstable "
-            << tally.unstable << " (index >= 2: " << tally.index2 << "), "
+  std::cout << "solved " << tally.solved << ": answered " << tally.answered << " (declined "
+            << tally.declined << ", compared with the refined general verdict " << tally.refined
+            << "), unstable " << tally.unstable << " (index >= 2: " << tally.index2 << "), "
             << tally.with_limit_points << " paths with limit points; largest margin difference "
             << tally.worst << "\n";
   EXPECT_GE(tally.solved, 200);
+  EXPECT_GE(tally.answered, 180);
   EXPECT_GE(tally.unstable, 30);
   EXPECT_GE(tally.index2, 3);
   EXPECT_GE(tally.with_limit_points, 6);
@@ -157,9 +175,7 @@ TEST(CompressedCantileverStability, StraightColumnsMatchTheirClosedForms) {
     EXPECT_EQ(v->index, below) << P;
     EXPECT_NEAR(v->margin, 1.0 - P / euler, 1e-10 * std::max(1.0, P / euler)) << P;
   }
-  // At the k-th Euler load the count changes: just below it k - 1 eigenvalues are negative,
-  // just above k (the eigenvalue there is 1 - P_k / P_1 relative to the first... the count is
-  // what is checked, at P_k (1 -+ 1e-4)).
+  // The index changes at the k-th Euler load: k - 1 at P_k (1 - 1e-4), k at P_k (1 + 1e-4).
   for (int k = 1; k <= 3; ++k) {
     const double Pk = (2 * k - 1) * (2 * k - 1) * euler;
     for (const double side : {-1.0, 1.0}) {
