@@ -16,6 +16,7 @@
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/inverse/tip_target.h"
+#include "flexure/solver/shooting/compressed_cantilever_stability.h"
 #include "flexure/solver/shooting/shooting_shape.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 #include "flexure/solver/shooting/stable_equilibrium.h"
@@ -324,11 +325,12 @@ BeamSolution shooting_solution(const BeamProblem& problem,
       return shooting_shape_at(chain, r, s, options);
     };
     // A uniform cantilever nowhere compressed: margin 1 from the solve's own moment, no
-    // eigenproblem (tension_stability.h); otherwise the discrete second variation.
-    const std::optional<Stability> tensioned =
+    // eigenproblem (tension_stability.h); compressed, the Jacobi equation along the solution
+    // (compressed_cantilever_stability.h); other chains the discrete second variation.
+    std::optional<Stability> fast =
         tensioned_cantilever_stability(chain, r, problem.stability_options);
-    solution.stability =
-        tensioned ? *tensioned : judge(chain, support, shape, problem.stability_options);
+    if (!fast) fast = compressed_cantilever_stability(chain, r, problem.stability_options);
+    solution.stability = fast ? *fast : judge(chain, support, shape, problem.stability_options);
     if (wants_stable_search(problem, solution)) {
       seek_stable(problem, chain, shape, support, shape_points, solution);
     }

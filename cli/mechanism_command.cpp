@@ -516,8 +516,13 @@ std::string fatigue_text(const MechanismAnalysis& a, const FatigueReport& r) {
 void write_hdf5(const std::string& path,
                 const MechanismAnalysis& a,
                 io::AtomicHdf5File& file,
-                const FatigueReport& fatigue) {
+                const FatigueReport& fatigue,
+                bool stable,
+                const std::string& stable_search) {
   auto& root = file.root();
+  // --stable and what it did: the JSON keys `stable` and `stable_search` (absent where null).
+  root.set_attribute("stable", std::int64_t{stable ? 1 : 0});
+  if (!stable_search.empty()) root.set_attribute("stable_search", stable_search);
   const bool exact = a.has_exact && a.exact.converged();
   root.set_attribute("mechanism", a.design.name);
   root.set_attribute("config", described_form(a.design).config);
@@ -1213,7 +1218,13 @@ void register_mechanism_command(CLI::App& app) {
     if (fatigue.fatigue && !fatigue.fatigue->critical().check.infinite_life) {
       warn(fmt::format("{}: {}", d.name, fatigue_text(a, fatigue).substr(2)));
     }
-    if (file) write_hdf5(args->out, a, *file, fatigue);
+    // What --stable did (JSON `stable_search`, HDF5 attribute); empty without --stable.
+    const std::string stable_search = !args->stable              ? std::string()
+                                      : !a.stable_search.empty() ? a.stable_search
+                                      : !(a.has_exact && o.exact)
+                                          ? std::string("not done: the exact model did not run")
+                                          : std::string();
+    if (file) write_hdf5(args->out, a, *file, fatigue, args->stable, stable_search);
     csv.write({"displacement"}, {"design"});
     if (args->json) {
       Json j = analysis_json(a);
@@ -1221,10 +1232,7 @@ void register_mechanism_command(CLI::App& app) {
       j["method"] = choice.method;
       j["method_reason"] = choice.reason;
       j["stable"] = args->stable;
-      j["stable_search"] = args->stable && !a.stable_search.empty() ? Json(a.stable_search)
-                           : args->stable && !(a.has_exact && o.exact)
-                               ? Json("not done: the exact model did not run")
-                               : Json(nullptr);
+      j["stable_search"] = !stable_search.empty() ? Json(stable_search) : Json(nullptr);
       j["geometry"] = geometry_json(mechanism_geometry(d));
       print_json(j);
       return;

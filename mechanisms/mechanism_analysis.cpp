@@ -52,11 +52,22 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
     a.exact_note = exact_support_reason(d);
   } else if (options.exact) {
     const std::size_t n = a.prbm.displacement.size();
-    const std::size_t passes = 1 + (options.exact_stress ? 1 : 0) + (options.stability ? 1 : 0);
+    // With --stable the stroke can be solved twice: from the PRBM start, then (where that one is
+    // unstable) on the stable branch. Each run reports its points from 1 to n, so the second
+    // continues the count from n instead of counting the same points again; it has a pass of its
+    // own in the total, which the counter skips when the stable stroke is not needed.
+    const std::size_t stroke_passes = options.stable ? 2 : 1;
+    const std::size_t passes =
+        stroke_passes + (options.exact_stress ? 1 : 0) + (options.stability ? 1 : 0);
     const std::size_t total = passes * n;
     StrokeProgress stroke_progress;
     if (options.progress) {
-      stroke_progress = [&](std::size_t done, std::size_t) { options.progress(done, total); };
+      stroke_progress = [&, last = std::size_t{0}, offset = std::size_t{0}](std::size_t done,
+                                                                            std::size_t) mutable {
+        if (done < last && offset + n < stroke_passes * n) offset += n;  // a new run
+        last = done;
+        options.progress(std::min(offset + done, stroke_passes * n), total);
+      };
     }
     ExactMechanismSolver::Options exact_options;
     exact_options.stable_start = options.stable;
@@ -79,7 +90,7 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
         if (options.exact_stress) {
           // From the stroke's solution: one integration, no re-solve.
           const ExactSegmentState st = exact_segment_state(d, p);
-          if (options.progress) options.progress(n + k + 1, total);
+          if (options.progress) options.progress(stroke_passes * n + k + 1, total);
           for (int i = 0; i < 3; ++i) {
             a.max_stress_exact[i] = std::max(a.max_stress_exact[i], st.max_stress[i]);
             if (d.joints[i].type != PivotType::kPin) a.stress_exact[i].push_back(st.max_stress[i]);

@@ -39,7 +39,9 @@ struct AnalysisOptions {
   // says what was done.
   bool stable = false;
   // Called after each exact stroke point, each exact stress evaluation and each exact stability
-  // verdict: (done, total) over the passes (total = points times the passes). Empty: no calls.
+  // verdict: (done, total) over the passes (total = points times the passes; with `stable` the
+  // stable stroke is a pass of its own, skipped when not needed), done never decreasing. Empty:
+  // no calls.
   StrokeProgress progress;
 
   // Throws InvalidInput naming the first field outside its range.

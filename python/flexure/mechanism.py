@@ -47,7 +47,7 @@ def _design_argument(design):
 def analyze(mechanism, *, points=None, method=None, tol=None, out=None, prbm_only=False,
             spring_rule=None, force_of=None, material=None, surface_finish=None,
             reliability=None, Kf=None, fatigue_factor=None, ultimate_strength=None,
-            endurance_limit=None, plate=None, nu=None):
+            endurance_limit=None, plate=None, nu=None, stable=False):
     """Force curve of a constant-force mechanism over its stroke: `flexure mechanism analyze`.
 
     mechanism   a built-in name ('1A-lpp', '2B-lplm', a thesis sub-class 'lpp-b', an inversion
@@ -61,6 +61,9 @@ def analyze(mechanism, *, points=None, method=None, tol=None, out=None, prbm_onl
                 alternating_stress, mean_stress, endurance_limit, fatigue
     plate       'off' | 'on' | 'auto': the strips' bending modulus E or E/(1 - nu^2), nu
                 Poisson's ratio (default the design's or material's; docs/plate-modulus.md)
+    stable      True (`--stable`): where the exact stroke from the PRBM start is unstable with the
+                slider held, follow a stable branch instead (serial chains; key `stable_search`
+                says what was done; docs/stability.md "Mechanisms")
     Returns the dict `flexure mechanism analyze --json` prints (curves as numpy arrays in N, m),
     with the stability of every stroke point in `stability_displacement_control` and
     `stability_force_control` ({"prbm": ..., "exact": ...}: `stability`, `stability_index`,
@@ -78,8 +81,9 @@ def analyze(mechanism, *, points=None, method=None, tol=None, out=None, prbm_onl
                                  material=material, surface_finish=surface_finish,
                                  reliability=reliability, Kf=Kf, fatigue_factor=fatigue_factor,
                                  ultimate_strength=ultimate_strength,
-                                 endurance_limit=endurance_limit, plate=plate, nu=nu),
-                            positional=[argument], switches={"prbm_only"})
+                                 endurance_limit=endurance_limit, plate=plate, nu=nu,
+                                 stable=stable),
+                            positional=[argument], switches={"prbm_only", "stable"})
     finally:
         if temporary:
             os.unlink(temporary)

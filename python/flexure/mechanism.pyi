@@ -23,6 +23,7 @@ def analyze(
     endurance_limit: str | float | None = ...,
     plate: str | None = ...,
     nu: float | None = ...,
+    stable: bool = ...,
 ) -> dict[str, Any]: ...
 def tolerance(
     mechanism: Design,

@@ -185,6 +185,40 @@ TEST(MechanismStabilityCli, StableFollowsAStableBranch) {
       << x.out;
 }
 
+// --stable in --out (issue 27): the root attributes `stable` (1/0) and `stable_search` equal the
+// JSON keys of the same run; without --stable, stable = 0 and no stable_search (JSON null); the
+// stored exact verdicts are the stable branch's (0 unstable points where the default has 10).
+TEST(MechanismStabilityCli, Hdf5SaysWhatStableDid) {
+  ScratchDir dir;
+  const CommandResult a =
+      run_flexure("mechanism analyze 3A-lslm --method exact --points 10 --stable --json --out s.h5",
+                  dir.path());
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  const json j = json::parse(a.out);
+  const hid_t file = open_read_only(dir / "s.h5");
+  ASSERT_GE(file, 0);
+  EXPECT_EQ(read_int_attribute(file, "/", "stable"), 1);
+  EXPECT_EQ(read_string_attribute(file, "/", "stable_search"), j["stable_search"]);
+  const std::vector<int> codes = read_ints(file, "/stability_displacement_control/exact/stability");
+  ASSERT_EQ(codes.size(), 10u);
+  for (const int c : codes) EXPECT_EQ(c, 0);  // stable
+  H5Fclose(file);
+  const CommandResult d = run_flexure(
+      "mechanism analyze 3A-lslm --method exact --points 10 --json --out d.h5", dir.path());
+  ASSERT_EQ(d.exit_code, 0) << d.err;
+  EXPECT_TRUE(json::parse(d.out)["stable_search"].is_null());
+  const hid_t plain = open_read_only(dir / "d.h5");
+  ASSERT_GE(plain, 0);
+  EXPECT_EQ(read_int_attribute(plain, "/", "stable"), 0);
+  EXPECT_LT(H5Aexists_by_name(plain, "/", "stable_search", H5P_DEFAULT), 1);
+  int unstable = 0;
+  for (const int c : read_ints(plain, "/stability_displacement_control/exact/stability")) {
+    unstable += c == 1 ? 1 : 0;
+  }
+  EXPECT_EQ(unstable, 10);
+  H5Fclose(plain);
+}
+
 TEST(MechanismStabilityCli, ValidateCountsUnstablePoints) {
   ScratchDir dir;
   const CommandResult r =

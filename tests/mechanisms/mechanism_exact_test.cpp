@@ -23,6 +23,9 @@
 
 #include <chrono>
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
@@ -280,6 +283,43 @@ TEST(MechanismExact, ReportedErrorIsTheArrayError) {
   // must merely be a sane number (docs/validation.md reports it).
   EXPECT_GT(a.max_force_error, 0.0);
   EXPECT_LT(a.max_force_error, 0.5);
+}
+
+// The progress of `mechanism analyze` (AnalysisOptions::progress, the stderr counter): each stroke
+// point, stress and verdict counted once, the count never decreasing and ending at the total.
+// With --stable on 3A-lslm the stroke runs twice (from the PRBM start, unstable, then on the
+// stable branch): the second run continues from n instead of counting points 1..n again, as it
+// did before; without the stable stroke (2A-ssp, default) its pass is skipped.
+TEST(MechanismExact, ProgressCountsEachPointOnce) {
+  struct Case {
+    const char* name;
+    bool stable;
+    std::size_t passes;
+  };
+  for (const Case c : {Case{"3A-lslm", true, 4}, Case{"2A-ssp", false, 3}}) {
+    AnalysisOptions o;
+    o.points = 6;
+    o.stable = c.stable;
+    std::vector<std::pair<std::size_t, std::size_t>> calls;
+    o.progress = [&](std::size_t done, std::size_t total) { calls.emplace_back(done, total); };
+    const MechanismAnalysis a = analyze_mechanism(find_builtin_mechanism(c.name), o);
+    ASSERT_TRUE(a.exact.converged()) << c.name;
+    if (c.stable) {
+      ASSERT_NE(a.stable_search.find("lowest buckling mode"), std::string::npos) << a.stable_search;
+    }
+    ASSERT_FALSE(calls.empty());
+    const std::size_t total = c.passes * 6;
+    std::size_t previous = 0, in_stable_pass = 0;
+    for (const auto& [done, reported_total] : calls) {
+      EXPECT_EQ(reported_total, total) << c.name;
+      EXPECT_GE(done, previous) << c.name;
+      EXPECT_LE(done, total) << c.name;
+      if (c.stable && done > 6 && done <= 12) ++in_stable_pass;
+      previous = done;
+    }
+    EXPECT_EQ(calls.back().first, total) << c.name;
+    if (c.stable) EXPECT_EQ(in_stable_pass, 6u);  // the stable stroke's 6 points, from 7 to 12
+  }
 }
 
 // Work budget (ExactMechanismSolver::Options, docs/mechanisms.md "Work budget"): a stroke whose

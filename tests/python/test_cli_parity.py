@@ -186,6 +186,19 @@ def test_mechanism_stability_keys(cli):
     assert list(got["stability_displacement_control"]["prbm"]["stability_margin"]) == [1.0] * 8
 
 
+def test_mechanism_stable(cli):
+    # --stable (docs/stability.md "Mechanisms"): the same JSON as the command line; 3A-lslm's exact
+    # stroke, unstable with the slider held at every point by default, is stable at every point.
+    got = flexure.mechanism.analyze("3A-lslm", points=6, method="exact", stable=True)
+    assert_same(got, cli.json("mechanism", "analyze", "3A-lslm", "--points", "6", "--method",
+                              "exact", "--stable"))
+    assert got["stable"] is True and "lowest buckling mode" in got["stable_search"]
+    assert list(got["stability_displacement_control"]["exact"]["stability"]) == ["stable"] * 6
+    default = flexure.mechanism.analyze("3A-lslm", points=6, method="exact")
+    assert default["stable"] is False and default["stable_search"] is None
+    assert default["stability_displacement_control"]["exact"]["unstable_points"] == 6
+
+
 def test_mechanism_from_file_and_dict(cli):
     toml = os.path.join(EXAMPLES, "mechanism_lpp.toml")
     expected = cli.json("mechanism", "analyze", toml, "--points", "6", "--method", "prbm")
