@@ -40,8 +40,8 @@ void add_axis_value(std::vector<double>& axis, double x) {
   if (std::find(axis.begin(), axis.end(), x) == axis.end()) axis.push_back(x);
 }
 
-LadderMap read_map() {
-  const CsvTable t = CsvTable::parse(data::ladder_auto_error_map());
+LadderMap read_map(const EmbeddedFile& file) {
+  const CsvTable t = CsvTable::parse(file);
   LadderMap map;
   for (std::size_t r = 0; r < t.row_count(); ++r) {
     add_axis_value(map.n, t.number(r, "n"));
@@ -90,7 +90,12 @@ LadderMap read_map() {
 }
 
 const LadderMap& ladder_map() {
-  static const LadderMap map = read_map();
+  static const LadderMap map = read_map(data::ladder_auto_error_map());
+  return map;
+}
+
+const LadderMap& axial_map() {
+  static const LadderMap map = read_map(data::ladder_auto_error_map_axial());
   return map;
 }
 
@@ -114,10 +119,12 @@ LadderMapRange ladder_map_range() {
   return {m.n.front(), m.n.back(), m.alpha2.front(), m.alpha2.back(), m.mu.front(), m.mu.back()};
 }
 
-std::optional<std::vector<LadderEstimate>> ladder_estimates(double load_ratio_n,
-                                                            double alpha2,
-                                                            double mu) {
-  const LadderMap& map = ladder_map();
+namespace {
+
+std::optional<std::vector<LadderEstimate>> estimates_in(const LadderMap& map,
+                                                        double load_ratio_n,
+                                                        double alpha2,
+                                                        double mu) {
   std::array<std::size_t, 2> ni{}, ai{}, mi{};
   if (!bracket(map.n, load_ratio_n, ni[0], ni[1]) || !bracket(map.alpha2, alpha2, ai[0], ai[1]) ||
       !bracket(map.mu, mu, mi[0], mi[1])) {
@@ -147,9 +154,29 @@ std::optional<std::vector<LadderEstimate>> ladder_estimates(double load_ratio_n,
   return out;
 }
 
+}  // namespace
+
+std::optional<std::vector<LadderEstimate>> ladder_estimates(double load_ratio_n,
+                                                            double alpha2,
+                                                            double mu) {
+  return estimates_in(ladder_map(), load_ratio_n, alpha2, mu);
+}
+
 double ladder_mapped_error(BeamMethod method, double load_ratio_n, double alpha2, double mu) {
   if (rung_index(method) >= kModels) return kNaN;
   const auto all = ladder_estimates(load_ratio_n, alpha2, mu);
+  if (!all) return kNaN;
+  for (const LadderEstimate& e : *all) {
+    if (e.method == method) return e.error_per_length;
+  }
+  return kNaN;
+}
+
+double ladder_mapped_error_any_n(BeamMethod method, double load_ratio_n, double alpha2, double mu) {
+  if (rung_index(method) >= kModels) return kNaN;
+  const LadderMap& main = ladder_map();
+  const bool in_main = load_ratio_n >= main.n.front() && load_ratio_n <= main.n.back();
+  const auto all = estimates_in(in_main ? main : axial_map(), load_ratio_n, alpha2, mu);
   if (!all) return kNaN;
   for (const LadderEstimate& e : *all) {
     if (e.method == method) return e.error_per_length;

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "flexure/mechanisms/general/flexure_models.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
 #include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"
@@ -66,6 +67,9 @@ struct GeneralPrbmResult : SolveStatus {
   std::vector<double> limit_inputs;
   std::vector<double> limit_loads;
   int degrees_of_freedom = 0;  // of the PRB linkage with the input free
+  // The mixed model (solve_general_mixed): per flexure, the model used, why, and its expected
+  // error; empty for the PRBM and the all-exact model.
+  std::vector<FlexureModelReport> flexure_models;
 };
 
 // The structural checks both models make before solving, on the PRB linkage in the described
