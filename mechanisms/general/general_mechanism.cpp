@@ -76,6 +76,27 @@ FlexureModel parse_flexure_model(std::string_view name) {
                      "' is not one of prbm, exact, linear, bcm, prbm3r, cbcm, auto");
 }
 
+void set_flexure_model(GeneralMechanism& mechanism,
+                       const std::string& flexure,
+                       FlexureModel model,
+                       double tolerance,
+                       int elements) {
+  bool found = false;
+  std::string names;
+  for (Flexure& f : mechanism.flexures) {
+    names += (names.empty() ? "" : ", ") + f.name;
+    if (!flexure.empty() && f.name != flexure) continue;
+    found = true;
+    f.model = model;
+    if (tolerance != 0.0) f.tolerance = tolerance;
+    if (elements != 0) f.elements = elements;
+  }
+  if (!found) {
+    throw InvalidInput("no flexure named '" + flexure + "' in " + mechanism.name +
+                       " (its flexures: " + (names.empty() ? std::string("none") : names) + ")");
+  }
+}
+
 std::string_view joint_kind_name(JointKind kind) {
   switch (kind) {
     case JointKind::kPin:

@@ -226,6 +226,15 @@ struct GeneralMechanism {
   std::string where(int line) const;
 };
 
+// Sets the model of the flexure named `flexure` (every flexure when empty) of `mechanism`, with
+// auto's tolerance (per length; kept when 0) and the CBCM's elements (kept when 0). Throws
+// InvalidInput for an unknown flexure, listing the mechanism's.
+void set_flexure_model(GeneralMechanism& mechanism,
+                       const std::string& flexure,
+                       FlexureModel model,
+                       double tolerance = 0.0,
+                       int elements = 0);
+
 // "body.point" split at the first dot; throws InvalidInput naming `what` when malformed.
 PointRef parse_point_ref(const std::string& text, const std::string& what);
 
