@@ -48,6 +48,81 @@ TEST(LadderAutoMap, EmbeddedCopyEqualsTheFile) {
   test::expect_embedded_equals_file(data::ladder_auto_error_map());
 }
 
+TEST(LadderAutoMap, AxialEmbeddedCopyEqualsTheFile) {
+  test::expect_embedded_equals_file(data::ladder_auto_error_map_axial());
+}
+
+// Inverse problems (a given theta0 or b/l) by auto: where a rung of the ladder answers, the exact
+// elastica under the load it found has its tip within the tolerance (relative to its displacement)
+// of the rung's tip, on seeded random targets; the rest go to the exact methods and meet the
+// target.
+TEST(LadderAuto, InverseProblemsChooseARungWithinTheTolerance) {
+  std::mt19937 rng(3031);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::map<BeamMethod, int> chosen;
+  int checked = 0;
+  for (int trial = 0; trial < 80; ++trial) {
+    BeamProblem p;
+    p.load_ratio_n = -1.5 + 3.0 * u(rng);
+    p.mu = trial % 3 == 0 ? 0.0 : (u(rng) - 0.5) * 0.6;
+    p.tolerance = std::pow(10.0, -4.0 + 3.0 * u(rng));
+    const bool theta = trial % 2 == 0;
+    p.given = theta ? BeamProblem::Given::kTheta0 : BeamProblem::Given::kBOverL;
+    // Weighted toward small deflections, where the cheap rungs are accurate.
+    p.value = (theta ? 1.2 : 0.6) * std::pow(u(rng), 2.0) + 0.005;
+    BeamSolution s;
+    try {
+      s = solve_beam(BeamMethod::kAuto, p);
+    } catch (const InvalidInput&) {
+      continue;  // a target no load reaches (e.g. against the end moment)
+    }
+    if (!s.converged()) continue;
+    ++checked;
+    ++chosen[s.method];
+    const std::string where = fmt::format("n = {}, mu = {}, {} = {}, tol = {}: {}",
+                                          p.load_ratio_n,
+                                          p.mu,
+                                          theta ? "theta0" : "b/l",
+                                          p.value,
+                                          p.tolerance,
+                                          s.method_reason);
+    const double reached = theta ? s.tip.theta0 : s.tip.b_over_l;
+    EXPECT_NEAR(reached, p.value, 1e-8 * std::max(1.0, std::fabs(p.value))) << where;
+    if (s.method == BeamMethod::kElliptic || s.method == BeamMethod::kShooting) continue;
+    const BeamSolution exact =
+        solve_beam(BeamMethod::kElliptic, cantilever(p.load_ratio_n, s.alpha2, p.mu, 1e-6));
+    ASSERT_TRUE(exact.converged()) << where;
+    const double error = distance(s.tip, exact.tip);
+    EXPECT_LE(error / displacement(exact.tip), p.tolerance) << where;
+    EXPECT_LE(error / displacement(exact.tip), s.expected_error) << where;
+    EXPECT_LE(error, s.expected_error_per_length) << where;
+  }
+  EXPECT_GE(checked, 60);
+  const int exact = chosen[BeamMethod::kElliptic] + chosen[BeamMethod::kShooting];
+  EXPECT_GE(checked - exact, 10) << "rungs chosen: linear " << chosen[BeamMethod::kLinear]
+                                 << ", bcm " << chosen[BeamMethod::kBcm] << ", prbm3r "
+                                 << chosen[BeamMethod::kPrbm3r] << ", cbcm "
+                                 << chosen[BeamMethod::kCbcm];
+  std::cout << "inverse auto: " << checked << " problems; linear " << chosen[BeamMethod::kLinear]
+            << ", bcm " << chosen[BeamMethod::kBcm] << ", prbm3r " << chosen[BeamMethod::kPrbm3r]
+            << ", cbcm " << chosen[BeamMethod::kCbcm] << ", exact " << exact << "\n";
+}
+
+// Where the ladder's maps do not apply, auto says why in its reason.
+TEST(LadderAuto, GuidedEndsAndFollowerForcesSayWhyTheLadderIsNotTried) {
+  BeamProblem guided = cantilever(0.0, 2.0, 0.0, 1e-2);
+  guided.boundary = EndCondition::kGuided;
+  const BeamSolution g = solve_beam(BeamMethod::kAuto, guided);
+  ASSERT_TRUE(g.converged()) << g.message;
+  EXPECT_NE(g.method_reason.find("not tried for a guided end"), std::string::npos)
+      << g.method_reason;
+  BeamProblem follower = cantilever(0.0, 0.0, 0.0, 1e-2);
+  follower.follower = 1.0;
+  const BeamSolution f = solve_beam(BeamMethod::kAuto, follower);
+  EXPECT_NE(f.method_reason.find("not tried for a follower force"), std::string::npos)
+      << f.method_reason;
+}
+
 TEST(LadderAutoMap, ValueIsLinearTheorysErrorAgainstTheEllipticSolution) {
   // The file's row n = 0, alpha2 = 0.1, mu = 0: linear_error 0.00067. Linear theory: a = 1,
   // b = alpha2/3 (docs/models.md).
