@@ -56,6 +56,13 @@ std::string rung_name(BeamMethod m) {
   }
 }
 
+// A guided end under dead loads with a given load and the map's settings (the guided map's).
+bool guided_map_applies(const BeamProblem& p) {
+  return !p.chain && p.boundary == EndCondition::kGuided && p.follower == 0.0 &&
+         p.given == BeamProblem::Given::kAlpha2 && !p.stable && p.mu == 0.0 &&
+         p.cbcm_elements == 6 && p.prbm3r_constants == "su" && p.slenderness == 0.0;
+}
+
 // An inverse problem (a given theta0 or b/l) on a free cantilever with the map's settings.
 bool inverse_map_applies(const BeamProblem& p) {
   return p.is_plain_cantilever() && p.given != BeamProblem::Given::kAlpha2 && !p.stable &&
@@ -74,10 +81,9 @@ std::string excluded_reason(const BeamProblem& p) {
     return "the model ladder is not tried for a follower force: its models and maps take dead "
            "loads";
   }
-  if (p.boundary == EndCondition::kGuided) {
-    return "the model ladder is not tried for a guided end: its maps are of the free end, "
-           "whose measured tip error does not bound a guided beam's (the guide's reaction "
-           "differs between a model and the elastica)";
+  if (p.boundary == EndCondition::kGuided && p.given != BeamProblem::Given::kAlpha2) {
+    return "the model ladder is not tried for a guided end with a given tip quantity: the "
+           "ladder's models find the load of a free cantilever only";
   }
   if (p.boundary != EndCondition::kFree) {
     return fmt::format("the model ladder is not tried for a {} end: its maps are of the free end",
@@ -182,34 +188,23 @@ LadderAutoOutcome solve_inverse_by_ladder(const BeamProblem& problem) {
 
 }  // namespace
 
-LadderAutoOutcome solve_by_ladder(const BeamProblem& problem) {
+namespace {
+
+// The cheapest rung of `rungs` (cheapest first, the reference `exact` among them) within the
+// tolerance at the problem's load, as described in the header; `map_file` names the data.
+LadderAutoOutcome choose_rung(const BeamProblem& problem,
+                              const std::vector<bench::LadderEstimate>& rungs,
+                              BeamMethod exact,
+                              const char* map_file) {
   LadderAutoOutcome out;
-  if (inverse_map_applies(problem)) return solve_inverse_by_ladder(problem);
-  if (!map_applies(problem)) {
-    out.verdict = excluded_reason(problem);
-    return out;
-  }
-  const auto rungs = bench::ladder_estimates(problem.load_ratio_n, problem.value, problem.mu);
-  if (!rungs) {
-    const bench::LadderMapRange r = bench::ladder_map_range();
-    out.verdict = fmt::format(
-        "the load is off the model ladder's map ({:g} <= n <= {:g}, {:g} <= alpha2 <= {:g}, {:g} "
-        "<= mu <= {:g}; data/ladder_auto_error_map.csv)",
-        r.n_min,
-        r.n_max,
-        r.alpha2_min,
-        r.alpha2_max,
-        r.mu_min,
-        r.mu_max);
-    return out;
-  }
   const double T = problem.tolerance;
   std::vector<std::string> passed;  // why each cheaper rung was not taken
-  for (const bench::LadderEstimate& rung : *rungs) {
-    if (rung.method == BeamMethod::kElliptic) {
+  for (const bench::LadderEstimate& rung : rungs) {
+    if (rung.method == exact) {
       passed.push_back(
-          fmt::format("every other model costs more than the exact elliptic solution "
+          fmt::format("every other model costs more than the exact {} solution "
                       "here (mapped {:.2g} us)",
+                      to_string(exact),
                       rung.microseconds));
       break;
     }
@@ -264,12 +259,13 @@ LadderAutoOutcome solve_by_ladder(const BeamProblem& problem) {
     s.method_reason = fmt::format(
         "{}, the cheapest model within the tolerance at this load (mapped {:.2g} us per solve): "
         "its mapped tip error is {:.2g} l ({:g} x the largest measured at the loads around this "
-        "one, data/ladder_auto_error_map.csv), so at most {:.2g} of its tip displacement {:.3g} "
+        "one, {}), so at most {:.2g} of its tip displacement {:.3g} "
         "l, within the tolerance {:.2g}{}{}",
         name,
         rung.microseconds,
         E,
         bench::kBetweenNodesMargin,
+        map_file,
         R,
         d,
         T,
@@ -285,6 +281,52 @@ LadderAutoOutcome solve_by_ladder(const BeamProblem& problem) {
   out.verdict = "no model of the ladder meets the tolerance at this load more cheaply: ";
   for (std::size_t i = 0; i < passed.size(); ++i) out.verdict += (i ? ", " : "") + passed[i];
   return out;
+}
+
+}  // namespace
+
+LadderAutoOutcome solve_by_ladder(const BeamProblem& problem) {
+  LadderAutoOutcome out;
+  if (inverse_map_applies(problem)) return solve_inverse_by_ladder(problem);
+  if (guided_map_applies(problem)) {
+    const double tip_angle = problem.prescribed.theta.value_or(0.0);
+    const auto rungs =
+        bench::ladder_estimates_guided(problem.load_ratio_n, problem.value, tip_angle);
+    if (!rungs) {
+      const bench::LadderMapRange r = bench::ladder_guided_map_range();
+      out.verdict = fmt::format(
+          "the load is off the model ladder's map of the guided end ({:g} <= n <= {:g}, {:g} <= "
+          "alpha2 <= {:g}, {:g} <= tip angle <= {:g} rad; data/ladder_auto_error_map_guided.csv)",
+          r.n_min,
+          r.n_max,
+          r.alpha2_min,
+          r.alpha2_max,
+          r.mu_min,
+          r.mu_max);
+      return out;
+    }
+    return choose_rung(
+        problem, *rungs, BeamMethod::kShooting, "data/ladder_auto_error_map_guided.csv");
+  }
+  if (!map_applies(problem)) {
+    out.verdict = excluded_reason(problem);
+    return out;
+  }
+  const auto rungs = bench::ladder_estimates(problem.load_ratio_n, problem.value, problem.mu);
+  if (!rungs) {
+    const bench::LadderMapRange r = bench::ladder_map_range();
+    out.verdict = fmt::format(
+        "the load is off the model ladder's map ({:g} <= n <= {:g}, {:g} <= alpha2 <= {:g}, {:g} "
+        "<= mu <= {:g}; data/ladder_auto_error_map.csv)",
+        r.n_min,
+        r.n_max,
+        r.alpha2_min,
+        r.alpha2_max,
+        r.mu_min,
+        r.mu_max);
+    return out;
+  }
+  return choose_rung(problem, *rungs, BeamMethod::kElliptic, "data/ladder_auto_error_map.csv");
 }
 
 void attach_mapped_error(const BeamProblem& problem, BeamSolution& s) {

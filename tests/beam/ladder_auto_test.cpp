@@ -109,18 +109,62 @@ TEST(LadderAuto, InverseProblemsChooseARungWithinTheTolerance) {
 }
 
 // Where the ladder's maps do not apply, auto says why in its reason.
-TEST(LadderAuto, GuidedEndsAndFollowerForcesSayWhyTheLadderIsNotTried) {
-  BeamProblem guided = cantilever(0.0, 2.0, 0.0, 1e-2);
-  guided.boundary = EndCondition::kGuided;
-  const BeamSolution g = solve_beam(BeamMethod::kAuto, guided);
-  ASSERT_TRUE(g.converged()) << g.message;
-  EXPECT_NE(g.method_reason.find("not tried for a guided end"), std::string::npos)
-      << g.method_reason;
+TEST(LadderAuto, FollowerForcesSayWhyTheLadderIsNotTried) {
   BeamProblem follower = cantilever(0.0, 0.0, 0.0, 1e-2);
   follower.follower = 1.0;
   const BeamSolution f = solve_beam(BeamMethod::kAuto, follower);
+  ASSERT_TRUE(f.converged()) << f.message;
   EXPECT_NE(f.method_reason.find("not tried for a follower force"), std::string::npos)
       << f.method_reason;
+}
+
+TEST(LadderAutoMap, GuidedEmbeddedCopyEqualsTheFile) {
+  test::expect_embedded_equals_file(data::ladder_auto_error_map_guided());
+}
+
+// The guided end (data/ladder_auto_error_map_guided.csv): on seeded random loads and tip angles
+// the chosen rung's tip is within the tolerance (relative to the exact displacement) of the
+// shooting method's, and within its expected error.
+TEST(LadderAuto, GuidedEndChoosesARungWithinTheTolerance) {
+  std::mt19937 rng(3032);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::map<BeamMethod, int> chosen;
+  int checked = 0;
+  for (int trial = 0; trial < 150; ++trial) {
+    BeamProblem p = cantilever(-2.0 + 4.0 * u(rng), 40.0 * std::pow(u(rng), 3.0), 0.0, 0.0);
+    p.tolerance = std::pow(10.0, -5.0 + 4.0 * u(rng));
+    p.boundary = EndCondition::kGuided;
+    if (trial % 3 != 0) p.prescribed.theta = (u(rng) - 0.5) * 2.0 * std::pow(u(rng), 2.0);
+    const BeamSolution exact = solve_beam(BeamMethod::kShooting, p);
+    if (!exact.converged() || exact.limit_points > 0) continue;
+    const BeamSolution s = solve_beam(BeamMethod::kAuto, p);
+    ASSERT_TRUE(s.converged()) << s.message;
+    ++checked;
+    ++chosen[s.method];
+    if (s.method == BeamMethod::kShooting || s.method == BeamMethod::kElliptic) continue;
+    const std::string where = fmt::format("n = {}, alpha2 = {}, tip angle = {}, tol = {}: {}",
+                                          p.load_ratio_n,
+                                          p.value,
+                                          p.prescribed.theta.value_or(0.0),
+                                          p.tolerance,
+                                          s.method_reason);
+    const double error = distance(s.tip, exact.tip);
+    EXPECT_LE(error / displacement(exact.tip), p.tolerance) << where;
+    EXPECT_LE(error / displacement(exact.tip), s.expected_error) << where;
+    EXPECT_LE(error, s.expected_error_per_length) << where;
+    EXPECT_NE(s.method_reason.find("ladder_auto_error_map_guided.csv"), std::string::npos);
+  }
+  EXPECT_GE(checked, 120);
+  int rungs = 0;
+  for (const auto& [m, count] : chosen) {
+    if (m != BeamMethod::kShooting && m != BeamMethod::kElliptic) rungs += count;
+  }
+  std::cout << "guided auto: " << checked << " loads; linear " << chosen[BeamMethod::kLinear]
+            << ", prbm " << chosen[BeamMethod::kPrbm] << ", bcm " << chosen[BeamMethod::kBcm]
+            << ", prbm3r " << chosen[BeamMethod::kPrbm3r] << ", cbcm " << chosen[BeamMethod::kCbcm]
+            << ", shooting " << chosen[BeamMethod::kShooting] << ", elliptic "
+            << chosen[BeamMethod::kElliptic] << "\n";
+  EXPECT_GE(rungs, 20);
 }
 
 TEST(LadderAutoMap, ValueIsLinearTheorysErrorAgainstTheEllipticSolution) {
