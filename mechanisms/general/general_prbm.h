@@ -82,9 +82,9 @@ int check_general_mechanism(const GeneralMechanism& mechanism);
 // Solves the PRBM of `mechanism` over its input range. Throws InvalidInput for a bad description
 // (GeneralMechanism::validate), for redundant constraints, for a body or direction that moves with
 // no stiffness while the input is held (naming the body), and for a flexure whose model is
-// "exact" (not assembled yet). A path that cannot be followed ends with kNoConvergence or, when it
-// turns back at a limit point and never reaches the range's end, kLimitPoint; the points reached
-// are returned.
+// not prbm (a model per flexure is solve_general_mixed's). A path that cannot be followed ends with
+// kNoConvergence or, when it turns back at a limit point and never reaches the range's end,
+// kLimitPoint; the points reached are returned.
 GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
                                      const GeneralPrbmOptions& options = {});
 

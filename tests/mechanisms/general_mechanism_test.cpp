@@ -570,7 +570,7 @@ TEST(GeneralMechanismDescription, BadDescriptionsAreNamedErrors) {
   {
     GeneralMechanism m = bistable_switch(0, 10, 3);
     m.flexures[0].model = FlexureModel::kExact;
-    EXPECT_NE(message(m).find("a model per flexure is not supported yet"), std::string::npos);
+    EXPECT_NE(message(m).find("asks for a model per flexure: --model mixed"), std::string::npos);
   }
 }
 
