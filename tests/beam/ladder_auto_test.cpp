@@ -65,11 +65,11 @@ TEST(LadderAuto, InverseProblemsChooseARungWithinTheTolerance) {
     BeamProblem p;
     p.load_ratio_n = -1.5 + 3.0 * u(rng);
     p.mu = trial % 3 == 0 ? 0.0 : (u(rng) - 0.5) * 0.6;
-    p.tolerance = std::pow(10.0, -4.0 + 3.0 * u(rng));
+    p.tolerance = std::pow(10.0, -3.0 + 2.5 * u(rng));
     const bool theta = trial % 2 == 0;
     p.given = theta ? BeamProblem::Given::kTheta0 : BeamProblem::Given::kBOverL;
     // Weighted toward small deflections, where the cheap rungs are accurate.
-    p.value = (theta ? 1.2 : 0.6) * std::pow(u(rng), 2.0) + 0.005;
+    p.value = (theta ? 1.2 : 0.6) * std::pow(u(rng), 3.0) + 0.002;
     BeamSolution s;
     try {
       s = solve_beam(BeamMethod::kAuto, p);
