@@ -28,7 +28,8 @@ constexpr std::size_t kModels = kRungs.size() - 1;
 
 // data/ladder_auto_error_map.csv: a full grid of (n, alpha2, mu), mu fastest.
 struct LadderMap {
-  std::vector<double> n, alpha2, mu;  // ascending
+  std::vector<double> n, alpha2, mu;         // ascending; mu: the tip angle of a guided map
+  BeamMethod exact = BeamMethod::kElliptic;  // the reference (the last rung): shooting if guided
   // error[r][i] (per length; NaN: no answer) and micros[r][i] of rung r at grid index i.
   std::array<std::vector<double>, kRungs.size()> error, micros;
   std::size_t index(std::size_t i, std::size_t j, std::size_t k) const {
@@ -40,13 +41,17 @@ void add_axis_value(std::vector<double>& axis, double x) {
   if (std::find(axis.begin(), axis.end(), x) == axis.end()) axis.push_back(x);
 }
 
-LadderMap read_map() {
-  const CsvTable t = CsvTable::parse(data::ladder_auto_error_map());
+// `third`: the third axis's column (mu, or tip_angle for a guided map); `exact`: the reference.
+LadderMap read_map(const EmbeddedFile& file,
+                   const std::string& third = "mu",
+                   BeamMethod exact = BeamMethod::kElliptic) {
+  const CsvTable t = CsvTable::parse(file);
   LadderMap map;
+  map.exact = exact;
   for (std::size_t r = 0; r < t.row_count(); ++r) {
     add_axis_value(map.n, t.number(r, "n"));
     add_axis_value(map.alpha2, t.number(r, "alpha2"));
-    add_axis_value(map.mu, t.number(r, "mu"));
+    add_axis_value(map.mu, t.number(r, third));
   }
   const auto ascending = [](const std::vector<double>& v) {
     return std::adjacent_find(v.begin(), v.end(), std::greater_equal<double>()) == v.end();
@@ -55,8 +60,10 @@ LadderMap read_map() {
       t.row_count() != map.n.size() * map.alpha2.size() * map.mu.size() || !ascending(map.n) ||
       !ascending(map.alpha2) || !ascending(map.mu)) {
     throw InvalidInput(fmt::format(
-        "{}: the rows must form a full grid of loads, n, alpha2 and mu ascending, mu fastest",
-        t.source()));
+        "{}: the rows must form a full grid of loads, n, alpha2 and {} ascending, {} fastest",
+        t.source(),
+        third,
+        third));
   }
   for (auto& v : map.error) v.resize(t.row_count());
   for (auto& v : map.micros) v.resize(t.row_count());
@@ -65,11 +72,11 @@ LadderMap read_map() {
     const std::size_t j = (r / map.mu.size()) % map.alpha2.size();
     const std::size_t k = r % map.mu.size();
     if (t.number(r, "n") != map.n[i] || t.number(r, "alpha2") != map.alpha2[j] ||
-        t.number(r, "mu") != map.mu[k]) {
+        t.number(r, third) != map.mu[k]) {
       throw t.cell_error(r, "n", "the row is out of the grid's order (n, alpha2, mu; mu fastest)");
     }
     for (std::size_t m = 0; m < kRungs.size(); ++m) {
-      const std::string name = to_string(kRungs[m]);
+      const std::string name = to_string(m < kModels ? kRungs[m] : exact);
       const std::string us = name + "_us";
       if (m < kModels) {
         const std::string err = name + "_error";
@@ -90,7 +97,18 @@ LadderMap read_map() {
 }
 
 const LadderMap& ladder_map() {
-  static const LadderMap map = read_map();
+  static const LadderMap map = read_map(data::ladder_auto_error_map());
+  return map;
+}
+
+const LadderMap& guided_map() {
+  static const LadderMap map =
+      read_map(data::ladder_auto_error_map_guided(), "tip_angle", BeamMethod::kShooting);
+  return map;
+}
+
+const LadderMap& axial_map() {
+  static const LadderMap map = read_map(data::ladder_auto_error_map_axial());
   return map;
 }
 
@@ -114,10 +132,12 @@ LadderMapRange ladder_map_range() {
   return {m.n.front(), m.n.back(), m.alpha2.front(), m.alpha2.back(), m.mu.front(), m.mu.back()};
 }
 
-std::optional<std::vector<LadderEstimate>> ladder_estimates(double load_ratio_n,
-                                                            double alpha2,
-                                                            double mu) {
-  const LadderMap& map = ladder_map();
+namespace {
+
+std::optional<std::vector<LadderEstimate>> estimates_in(const LadderMap& map,
+                                                        double load_ratio_n,
+                                                        double alpha2,
+                                                        double mu) {
   std::array<std::size_t, 2> ni{}, ai{}, mi{};
   if (!bracket(map.n, load_ratio_n, ni[0], ni[1]) || !bracket(map.alpha2, alpha2, ai[0], ai[1]) ||
       !bracket(map.mu, mu, mi[0], mi[1])) {
@@ -139,7 +159,8 @@ std::optional<std::vector<LadderEstimate>> ladder_estimates(double load_ratio_n,
       }
     }
     if (std::isnan(largest)) continue;  // no answer at a corner: not mapped here
-    out.push_back({kRungs[r], kBetweenNodesMargin * largest, time / corners});
+    out.push_back(
+        {r < kModels ? kRungs[r] : map.exact, kBetweenNodesMargin * largest, time / corners});
   }
   std::stable_sort(out.begin(), out.end(), [](const LadderEstimate& a, const LadderEstimate& b) {
     return a.microseconds < b.microseconds;
@@ -147,9 +168,53 @@ std::optional<std::vector<LadderEstimate>> ladder_estimates(double load_ratio_n,
   return out;
 }
 
+}  // namespace
+
+std::optional<std::vector<LadderEstimate>> ladder_estimates(double load_ratio_n,
+                                                            double alpha2,
+                                                            double mu) {
+  return estimates_in(ladder_map(), load_ratio_n, alpha2, mu);
+}
+
 double ladder_mapped_error(BeamMethod method, double load_ratio_n, double alpha2, double mu) {
   if (rung_index(method) >= kModels) return kNaN;
   const auto all = ladder_estimates(load_ratio_n, alpha2, mu);
+  if (!all) return kNaN;
+  for (const LadderEstimate& e : *all) {
+    if (e.method == method) return e.error_per_length;
+  }
+  return kNaN;
+}
+
+LadderMapRange ladder_guided_map_range() {
+  const LadderMap& m = guided_map();
+  return {m.n.front(), m.n.back(), m.alpha2.front(), m.alpha2.back(), m.mu.front(), m.mu.back()};
+}
+
+std::optional<std::vector<LadderEstimate>> ladder_estimates_guided(double load_ratio_n,
+                                                                   double alpha2,
+                                                                   double tip_angle) {
+  return estimates_in(guided_map(), load_ratio_n, alpha2, tip_angle);
+}
+
+double ladder_mapped_error_guided(BeamMethod method,
+                                  double load_ratio_n,
+                                  double alpha2,
+                                  double tip_angle) {
+  if (rung_index(method) >= kModels) return kNaN;
+  const auto all = ladder_estimates_guided(load_ratio_n, alpha2, tip_angle);
+  if (!all) return kNaN;
+  for (const LadderEstimate& e : *all) {
+    if (e.method == method) return e.error_per_length;
+  }
+  return kNaN;
+}
+
+double ladder_mapped_error_any_n(BeamMethod method, double load_ratio_n, double alpha2, double mu) {
+  if (rung_index(method) >= kModels) return kNaN;
+  const LadderMap& main = ladder_map();
+  const bool in_main = load_ratio_n >= main.n.front() && load_ratio_n <= main.n.back();
+  const auto all = estimates_in(in_main ? main : axial_map(), load_ratio_n, alpha2, mu);
   if (!all) return kNaN;
   for (const LadderEstimate& e : *all) {
     if (e.method == method) return e.error_per_length;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <iostream>
 
 #include "cli/cli_common.h"
@@ -49,6 +50,76 @@ std::string_view load_unit(const Input& in) {
   return in.coordinate == InputCoordinate::kAngle ? "N m" : "N";
 }
 
+Json number_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+
+// --flexure-model SPEC: "MODEL" (every flexure) or "NAME=MODEL,NAME=MODEL"; with --flexure-tol.
+void apply_flexure_models(GeneralMechanism& m, const std::string& spec, double tol) {
+  if (spec.empty()) {
+    if (tol != 0.0) {
+      for (Flexure& f : m.flexures) {
+        if (f.model == FlexureModel::kAuto) f.tolerance = tol;
+      }
+    }
+    return;
+  }
+  std::size_t start = 0;
+  while (start <= spec.size()) {
+    const std::size_t comma = spec.find(',', start);
+    const std::string item =
+        spec.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const std::size_t eq = item.find('=');
+    const std::string name = eq == std::string::npos ? std::string() : item.substr(0, eq);
+    const std::string model = eq == std::string::npos ? item : item.substr(eq + 1);
+    FlexureModel parsed;
+    try {
+      parsed = parse_flexure_model(model);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(std::string("--flexure-model: ") + e.what());
+    }
+    if (parsed == FlexureModel::kAuto && tol == 0.0) {
+      throw InvalidInput(
+          "--flexure-model auto needs --flexure-tol T (the largest mapped tip error per length "
+          "of each flexure, e.g. 1e-3)");
+    }
+    set_flexure_model(m, name, parsed, parsed == FlexureModel::kAuto ? tol : 0.0);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+}
+
+Json flexure_models_json(const std::vector<FlexureModelReport>& reports, bool checked) {
+  Json out = Json::array();
+  for (const FlexureModelReport& r : reports) {
+    Json Fx = Json::array(), Fy = Json::array(), mu = Json::array(), mapped = Json::array();
+    for (std::size_t k = 0; k < r.loads.size(); ++k) {
+      Fx.push_back(number_or_null(r.loads[k].Fx));
+      Fy.push_back(number_or_null(r.loads[k].Fy));
+      mu.push_back(number_or_null(r.loads[k].mu));
+      mapped.push_back(number_or_null(r.mapped_error[k]));
+    }
+    Json j{{"name", r.name},
+           {"requested", flexure_model_name(r.requested)},
+           {"model", flexure_model_name(r.model)},
+           {"tolerance", r.requested == FlexureModel::kAuto ? Json(r.tolerance) : Json(nullptr)},
+           {"elements", r.model == FlexureModel::kCbcm ? Json(r.elements) : Json(nullptr)},
+           {"method_reason", r.reason},
+           {"expected_error_per_length", number_or_null(r.expected_error_per_length)},
+           {"unmapped_points", r.unmapped_points},
+           {"tip_load_Fx", Fx},
+           {"tip_load_Fy", Fy},
+           {"tip_load_mu", mu},
+           {"mapped_error_per_length", mapped}};
+    if (checked) {
+      Json measured = Json::array();
+      for (double e : r.measured_error) measured.push_back(number_or_null(e));
+      j["measured_error_per_length"] = number_or_null(r.measured_error_per_length);
+      j["measured_error"] = measured;
+    }
+    out.push_back(j);
+  }
+  return out;
+}
+
 Json stability_json(const Stability& s) {
   return Json{{"stability", stability_name(s.kind)}, {"index", s.index}, {"margin", s.margin}};
 }
@@ -72,7 +143,7 @@ Json model_json(const GeneralPrbmResult& r) {
   for (const GeneralPrbmPoint& p : r.points) {
     input.push_back(p.input);
     load.push_back(p.input_load);
-    energy.push_back(p.energy);
+    energy.push_back(number_or_null(p.energy));  // null: a model flexure has no shape energy
     dc.push_back(stability_name(p.displacement_control.kind));
     fc.push_back(stability_name(p.force_control.kind));
     dc_margin.push_back(p.displacement_control.margin);
@@ -80,7 +151,7 @@ Json model_json(const GeneralPrbmResult& r) {
   }
   Json equilibria = Json::array();
   for (const GeneralEquilibrium& e : r.equilibria) {
-    Json j{{"input", e.input}, {"energy", e.energy}};
+    Json j{{"input", e.input}, {"energy", number_or_null(e.energy)}};
     j.update(stability_json(e.stability));
     equilibria.push_back(j);
   }
@@ -141,11 +212,28 @@ void print_model(const std::string& title, const GeneralPrbmResult& r, const Inp
 void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
   if (!request.foreign_flag.empty()) {
     throw InvalidInput(request.foreign_flag +
-                       " belongs to the constant-force designs; a general mechanism file takes "
-                       "--model, --input, --points and --json");
+                       (request.mechanism
+                            ? " does not apply to --model mixed on a constant-force design, which "
+                              "takes --flexure-model, --flexure-tol, --check-flexures, --points "
+                              "and --json"
+                            : " belongs to the constant-force designs; a general mechanism file "
+                              "takes --model, --input, --points, --json and, with --model mixed, "
+                              "--flexure-model, --flexure-tol and --check-flexures"));
   }
   const std::string model = request.model.empty() ? "prbm" : request.model;
-  GeneralMechanism m = load_general_mechanism_toml(request.file);
+  if (model != "mixed" &&
+      (!request.flexure_models.empty() || request.flexure_tol != 0.0 || request.check_flexures)) {
+    throw InvalidInput(
+        "--flexure-model, --flexure-tol and --check-flexures apply to --model mixed (a model "
+        "per flexure)");
+  }
+  if (request.flexure_tol != 0.0 && !(request.flexure_tol > 0.0 && request.flexure_tol < 1.0)) {
+    throw InvalidInput(
+        fmt::format("--flexure-tol must be in (0, 1), got {:g}", request.flexure_tol));
+  }
+  GeneralMechanism m =
+      request.mechanism ? *request.mechanism : load_general_mechanism_toml(request.file);
+  apply_flexure_models(m, request.flexure_models, request.flexure_tol);
   if (!request.input_range.empty()) {
     apply_input_range(request.input_range, m.input);
   }
@@ -161,6 +249,11 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
   if (model == "exact" || model == "both") {
     results.emplace_back("exact", solve_general_exact(m));
   }
+  if (model == "mixed") {
+    GeneralExactOptions o;
+    o.measure_flexure_errors = request.check_flexures;
+    results.emplace_back("mixed", solve_general_mixed(m, o));
+  }
   for (const auto& [name, r] : results) {
     for (const Warning& w : r.warnings) {
       warn(w.text);
@@ -174,6 +267,10 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
     Json models = Json::object();
     for (const auto& [name, r] : results) {
       models[name] = model_json(r);
+      if (name == "mixed") {
+        models[name]["flexure_models"] =
+            flexure_models_json(r.flexure_models, request.check_flexures);
+      }
     }
     // The top-level arrays are the first model's (the PRBM's for "both").
     const Json& top = models[results.front().first];
@@ -193,6 +290,21 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
              {"equilibria", top["equilibria"]},
              {"limit_points", top["limit_points"]},
              {"models", models}};
+    if (model == "mixed") {
+      out["flexure_models"] = models["mixed"]["flexure_models"];
+    }
+    if (request.mechanism) {
+      // A constant-force design: the stroke Delta x and the slider force of one half as
+      // `mechanism analyze` reports them (the input load holds x; the force pushes inwards).
+      Json dx = Json::array(), force = Json::array();
+      for (const GeneralPrbmPoint& p : first.points) {
+        dx.push_back(request.design_x0 - p.input);
+        force.push_back(-p.input_load);
+      }
+      out["displacement"] = dx;
+      out["force"] = force;
+      out["force_of"] = "half";
+    }
     print_json(out);
     return;
   }
@@ -202,7 +314,22 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
                            in.body,
                            input_control_name(in.control));
   for (const auto& [name, r] : results) {
-    print_model(name == "prbm" ? "PRBM" : "exact", r, in);
+    print_model(name == "prbm" ? "PRBM" : name, r, in);
+    for (const FlexureModelReport& f : r.flexure_models) {
+      std::cout << fmt::format(
+          "    flexure {}: {}{}; expected tip error {}{}\n      {}\n",
+          f.name,
+          flexure_model_name(f.model),
+          f.requested == FlexureModel::kAuto ? fmt::format(" (auto, tol {:g})", f.tolerance)
+                                             : std::string(),
+          std::isfinite(f.expected_error_per_length)
+              ? fmt::format("{:.2g} of its length", f.expected_error_per_length)
+              : std::string("not mapped"),
+          request.check_flexures && std::isfinite(f.measured_error_per_length)
+              ? fmt::format(", measured {:.2g}", f.measured_error_per_length)
+              : std::string(),
+          f.reason);
+    }
   }
 }
 

@@ -1,13 +1,26 @@
 #pragma once
 // `flexure mechanism analyze FILE.toml` for the general form of a mechanism ([[body]] tables,
 // io/general_mechanism_toml.h; docs/mechanisms.md "General mechanisms"): parse, solve, print.
+#include <optional>
 #include <string>
+
+#include "flexure/mechanisms/general/general_mechanism.h"
 
 namespace flexure::cli {
 
 struct GeneralAnalyzeRequest {
   std::string file;
-  std::string model;        // "prbm" (default), "exact", "both"; empty when --model is not given
+  std::string model;  // "prbm" (default), "exact", "both", "mixed"; empty when --model is not given
+  // --model mixed: --flexure-model SPEC ("MODEL" for every flexure, or "NAME=MODEL,..."), empty
+  // when not given; --flexure-tol (auto's tolerance per length, 0 when not given);
+  // --check-flexures (measure each flexure's model against the elastica under its loads).
+  std::string flexure_models;
+  double flexure_tol = 0.0;
+  bool check_flexures = false;
+  // A built-in design (or design file) in its general form (catalogue_general.h), analysed
+  // instead of `file`; design_x0 is its slider's undeflected x (m), for the stroke Delta x.
+  std::optional<mechanism::general::GeneralMechanism> mechanism;
+  double design_x0 = 0.0;
   std::string input_range;  // --input START:STOP:COUNT, empty when not given
   bool json = false;
   int points = 0;  // --points when given, else 0

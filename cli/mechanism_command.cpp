@@ -31,6 +31,7 @@
 #include "flexure/io/parallel/work_distribution.h"
 #include "flexure/io/provenance.h"
 #include "flexure/mechanisms/constant_force.h"
+#include "flexure/mechanisms/general/catalogue_general.h"
 #include "flexure/mechanisms/howell_designs.h"
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/mechanism.h"
@@ -1048,8 +1049,11 @@ void register_mechanism_command(CLI::App& app) {
     std::string spring_rule;
     std::string force_of = "half";
     CLI::Option* force_of_option = nullptr;
-    std::string model;        // general mechanism files only
-    std::string input_range;  // general mechanism files only
+    std::string model;           // general mechanism files only
+    std::string input_range;     // general mechanism files only
+    std::string flexure_models;  // --model mixed
+    double flexure_tol = 0.0;
+    bool check_flexures = false;
     std::string material;
     std::string plate, nu;  // the bending modulus (docs/plate-modulus.md)
     FatigueFlags fatigue;
@@ -1096,8 +1100,22 @@ void register_mechanism_command(CLI::App& app) {
           "--model",
           args->model,
           "General mechanism files ([[body]] form): prbm (default), exact (each flexure an "
-          "elastica) or both")
-      ->transform(CLI::IsMember({"prbm", "exact", "both"}, CLI::ignore_case));
+          "elastica), both, or mixed (each flexure its own model: the file's model keys, "
+          "--flexure-model); mixed also takes a built-in design (its general form)")
+      ->transform(CLI::IsMember({"prbm", "exact", "both", "mixed"}, CLI::ignore_case));
+  analyze->add_option("--flexure-model",
+                      args->flexure_models,
+                      "--model mixed: the model of every flexure (exact, prbm, linear, bcm, "
+                      "prbm3r, cbcm, auto) or of named ones, NAME=MODEL,... (built-in designs: "
+                      "f1, f2, f3 by pivot)");
+  analyze->add_option("--flexure-tol",
+                      args->flexure_tol,
+                      "--model mixed: auto's tolerance, the largest mapped tip error per length "
+                      "of a flexure (e.g. 1e-3)");
+  analyze->add_flag("--check-flexures",
+                    args->check_flexures,
+                    "--model mixed: measure each flexure's model against the exact elastica "
+                    "under the loads it carries (measured_error_per_length)");
   analyze->add_option("--input",
                       args->input_range,
                       "General mechanism files: the input range START:STOP:COUNT with units "
@@ -1120,13 +1138,25 @@ void register_mechanism_command(CLI::App& app) {
   args->fatigue.add_to(*analyze);
   analyze->callback([args, analyze] {
     require_in_range(args->points, "--points", 2, 100000);
-    if (is_general_mechanism_file(args->what)) {
+    const bool general_file = is_general_mechanism_file(args->what);
+    if (general_file || args->model == "mixed") {
       GeneralAnalyzeRequest request;
       request.file = args->what;
       request.model = args->model;
       request.input_range = args->input_range;
       request.json = args->json;
       request.points = analyze->count("--points") > 0 ? args->points : 0;
+      request.flexure_models = args->flexure_models;
+      request.flexure_tol = args->flexure_tol;
+      request.check_flexures = args->check_flexures;
+      if (!general_file) {
+        // A constant-force design in its general form (catalogue_general.h).
+        const MechanismDesign d = resolve(args->what);
+        request.mechanism = mechanism::general::general_from_design(d, args->points);
+        request.design_x0 =
+            request.mechanism->input.start + stroke_displacements(d, args->points).front();
+        request.points = 0;
+      }
       // A general file takes only these; every other option of analyze belongs to the
       // constant-force designs (their method, material, fatigue, output options) and is refused
       // by name, so an option added to that form later is refused here without being listed.
@@ -1140,7 +1170,9 @@ void register_mechanism_command(CLI::App& app) {
         for (const CLI::Option* option : holder->get_options()) {
           const std::string name = option->get_name();
           if (option->count() == 0 || option->get_positional() || name == "--points" ||
-              name == "--json" || name == "--model" || name == "--input" || name == "--help") {
+              name == "--json" || name == "--model" || (general_file && name == "--input") ||
+              name == "--flexure-model" || name == "--flexure-tol" || name == "--check-flexures" ||
+              name == "--help") {
             continue;
           }
           if (request.foreign_flag.empty()) request.foreign_flag = name;
@@ -1152,8 +1184,13 @@ void register_mechanism_command(CLI::App& app) {
     if (!args->model.empty() || !args->input_range.empty()) {
       throw InvalidInput(std::string(args->model.empty() ? "--input" : "--model") +
                          " applies to general mechanism files ([[body]] form, docs/mechanisms.md "
-                         "\"General mechanisms\"); the constant-force designs take --method and "
-                         "--points");
+                         "\"General mechanisms\") and, as --model mixed, to a design in its "
+                         "general form; the constant-force designs take --method and --points");
+    }
+    if (!args->flexure_models.empty() || args->flexure_tol != 0.0 || args->check_flexures) {
+      throw InvalidInput(
+          "--flexure-model, --flexure-tol and --check-flexures apply to --model mixed (a model "
+          "per flexure)");
     }
     if (args->no_exact && args->method == "exact") {
       throw InvalidInput("--prbm-only (= --method prbm) contradicts --method exact; give one");

@@ -11,7 +11,8 @@
 # The solver's packages are ranked: the models and the closed forms (ode, elliptic, chain_model)
 # below the methods built on them (shooting and chain on chain_model; inverse on elliptic). The
 # beam layer (the user-facing beam API: beam problems, the method choice) sits on the elements,
-# beside the mechanisms, and links no file format.
+# below the mechanisms (a flexure of a mechanism may use the beam's model ladder and its error
+# map), and links no file format.
 # mechanisms and io are one node each until their sub-folders lose their cycles (issue 28).
 cmake_minimum_required(VERSION 3.22)  # IN_LIST, list(POP_FRONT)
 set(layer_graph
@@ -24,7 +25,7 @@ set(layer_graph
   "solver/inverse:solver/elliptic"
   "elements:solver/shooting,solver/chain,solver/inverse,solver/ode"
   "beam:elements"
-  "mechanisms:elements"
+  "mechanisms:elements,beam"
   "io:mechanisms,beam"
   "benchmarks/studies:io,beam")
 # Headers any file may include: generated, no dependencies.

@@ -222,7 +222,17 @@ GeneralMechanism parse_general_mechanism_toml(const std::string& text, const std
   for (const toml::table* t : tables(root, "flexure", source)) {
     const Reader r(*t, named("flexure", Reader(*t, "", source)), source);
     check_toml_keys(*t,
-                    {"name", "a", "b", "width", "thickness", "E", "length", "prbm", "model"},
+                    {"name",
+                     "a",
+                     "b",
+                     "width",
+                     "thickness",
+                     "E",
+                     "length",
+                     "prbm",
+                     "model",
+                     "tolerance",
+                     "elements"},
                     r.item(),
                     source);
     Flexure f;
@@ -247,12 +257,31 @@ GeneralMechanism parse_general_mechanism_toml(const std::string& text, const std
              "prbm '" + prbm + "' is not one of small-length, fixed-pinned, fixed-guided");
     }
     const std::string model = r.string("model", false).value_or("prbm");
-    if (model == "prbm") {
-      f.model = FlexureModel::kPrbm;
-    } else if (model == "exact") {
-      f.model = FlexureModel::kExact;
-    } else {
-      r.fail(t->get("model"), "model '" + model + "' is not one of prbm, exact");
+    try {
+      f.model = parse_flexure_model(model);
+    } catch (const InvalidInput& e) {
+      r.fail(t->get("model"), e.what());
+    }
+    // auto's tolerance (per length of the flexure) and the CBCM's elements (--model mixed).
+    if (t->get("tolerance") != nullptr) {
+      if (f.model != FlexureModel::kAuto) {
+        r.fail(t->get("tolerance"), "tolerance belongs to model = \"auto\"");
+      }
+      f.tolerance = *r.number("tolerance", std::nullopt, true);
+    } else if (f.model == FlexureModel::kAuto) {
+      r.fail(t->get("model"),
+             "model = \"auto\" needs a tolerance (the largest mapped tip "
+             "error per length of the flexure, e.g. tolerance = 1e-3)");
+    }
+    if (t->get("elements") != nullptr) {
+      if (f.model != FlexureModel::kCbcm) {
+        r.fail(t->get("elements"), "elements belongs to model = \"cbcm\"");
+      }
+      const double n = *r.number("elements", std::nullopt, true);
+      if (n != std::floor(n) || n < 1 || n > 2000) {
+        r.fail(t->get("elements"), "elements must be a whole number in [1, 2000]");
+      }
+      f.elements = static_cast<int>(n);
     }
     m.flexures.push_back(f);
   }

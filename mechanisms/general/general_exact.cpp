@@ -1,10 +1,14 @@
 #include "flexure/mechanisms/general/general_exact.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <sstream>
 
+#include "flexure/mechanisms/general/flexure_models.h"
 #include "flexure/mechanisms/general/prbm_assembly.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/shooting/elastica_integrator.h"
@@ -37,6 +41,10 @@ struct FlexureBeam {
   double EI = 0.0;         // scaled
   double direction = 0.0;  // rest angle of the flexure from a to b, rad
   bool pinned_tip = false;
+  // kExact: an elastica with unknowns w = its root loads (m0, Nx, Ny). Any other model (mixed):
+  // a cantilever under its tip loads, unknowns w = (M_tip, Nx, Ny) (flexure_models.h).
+  FlexureModel model = FlexureModel::kExact;
+  int elements = 6;
 };
 
 // The tip state of a beam integrated from its root loads: x, y, theta, m in the root frame.
@@ -52,11 +60,16 @@ struct BeamTip {
 // regular at a straight flexure, whose axial force is then a multiplier of its inextensibility.
 class ExactSystem {
  public:
-  ExactSystem(const GeneralMechanism& m, const PrbmAssembly& a)
+  // `models` (one per flexure; empty: every one exact) and `elements` (cbcm) from the mixed model.
+  ExactSystem(const GeneralMechanism& m,
+              const PrbmAssembly& a,
+              const std::vector<FlexureModel>& models = {},
+              const std::vector<int>& elements = {})
       : a_(a),
         N_(a.coordinate_count()),
         m_(a.constraint_count()),
-        integrator_(ElasticaIntegrator::Options{}) {
+        integrator_(ElasticaIntegrator::Options{}),
+        report_integrator_(ElasticaIntegrator::Options{}) {
     const double L = a.length_scale();
     for (const Flexure& f : m.flexures) {
       FlexureBeam b;
@@ -68,6 +81,10 @@ class ExactSystem {
       b.direction = std::atan2(pb.y - pa.y, pb.x - pa.x);
       b.pinned_tip = f.prbm == PrbmKind::kFixedPinned;
       b.chain.segments.push_back(FlexibleSegment{b.length, b.EI, {}, 0.0});
+      if (!models.empty()) {
+        b.model = models[beams_.size()];
+        b.elements = elements[beams_.size()];
+      }
       beams_.push_back(b);
     }
   }
@@ -80,7 +97,8 @@ class ExactSystem {
                  const Eigen::Vector3d& w,
                  BeamTip& tip,
                  std::vector<ShapePoint>* shape = nullptr,
-                 int samples = 0) {
+                 int samples = 0,
+                 ElasticaIntegrator* with = nullptr) {
     ChainForces forces;
     forces.m0 = w[0];
     forces.N = {Eigen::Vector2d(w[1], w[2])};
@@ -93,21 +111,60 @@ class ExactSystem {
     TipState end;
     std::string error;
     const Eigen::Matrix<double, 4, Eigen::Dynamic> no_sensitivity(4, 0);
-    if (!integrator_.integrate(b.chain,
-                               pieces,
-                               forces,
-                               {},
-                               Eigen::Vector4d(0, 0, 0, w[0]),
-                               no_sensitivity,
-                               end,
-                               error,
-                               shape != nullptr ? &stations : nullptr,
-                               shape)) {
+    if (!(with != nullptr ? *with : integrator_)
+             .integrate(b.chain,
+                        pieces,
+                        forces,
+                        {},
+                        Eigen::Vector4d(0, 0, 0, w[0]),
+                        no_sensitivity,
+                        end,
+                        error,
+                        shape != nullptr ? &stations : nullptr,
+                        shape)) {
       return false;
     }
     tip = {end.x, end.y, end.theta, end.m};
     return true;
   }
+
+  // A model flexure's tip under its tip loads w = (M_tip, Nx, Ny) (scaled): the tip state in the
+  // root frame (scaled), its tip moment, and the nondimensional loads and tip.
+  bool model_state(const FlexureBeam& b,
+                   const Eigen::Vector3d& w,
+                   BeamTip& tip,
+                   FlexureTipLoad* load_out = nullptr,
+                   FlexureTip* tip_out = nullptr) const {
+    const double l2 = b.length * b.length / b.EI;
+    const FlexureTipLoad load{w[1] * l2, w[2] * l2, w[0] * b.length / b.EI};
+    FlexureTip t;
+    if (!model_tip(b.model, b.flexure->prbm, b.elements, load, t)) {
+      return false;
+    }
+    tip = {t.x * b.length, t.y * b.length, t.theta, w[0]};
+    if (load_out != nullptr) *load_out = load;
+    if (tip_out != nullptr) *tip_out = t;
+    return true;
+  }
+
+  // The nondimensional tip loads and tip of flexure i at z (any model); false if not computable.
+  bool flexure_state(const VectorXd& z, std::size_t i, FlexureTipLoad& load, FlexureTip& t) {
+    const FlexureBeam& b = beams_[i];
+    const Eigen::Vector3d w = z.segment<3>(flexure_offset() + 3 * static_cast<int>(i));
+    BeamTip tip;
+    if (b.model != FlexureModel::kExact) {
+      return model_state(b, w, tip, &load, &t);
+    }
+    if (!integrate(b, w, tip, nullptr, 0, &report_integrator_)) {
+      return false;
+    }
+    const double l2 = b.length * b.length / b.EI;
+    load = {w[1] * l2, w[2] * l2, tip.m * b.length / b.EI};
+    t = {tip.x / b.length, tip.y / b.length, tip.theta};
+    return true;
+  }
+
+  std::size_t flexure_count() const { return beams_.size(); }
 
   // Residual at z = (q, mu, lambda, w...) and input s; false when an integration fails.
   bool residual(const VectorXd& z, double s, VectorXd& F) {
@@ -120,20 +177,27 @@ class ExactSystem {
       const int o = flexure_offset() + 3 * static_cast<int>(i);
       const Eigen::Vector3d w = z.segment<3>(o);
       BeamTip tip;
-      if (!integrate(b, w, tip)) {
+      double m0 = w[0];
+      if (b.model != FlexureModel::kExact) {
+        if (!model_state(b, w, tip)) {
+          return false;
+        }
+        // m(s) = m0 + Nx y(s) - Ny x(s): the root moment of the tip loads.
+        m0 = w[0] - w[1] * tip.y + w[2] * tip.x;
+      } else if (!integrate(b, w, tip)) {
         return false;
       }
       const double beta = b.direction + a_.body_rotation(q, f.a.body);
       const double c = std::cos(beta), sn = std::sin(beta);
       const Eigen::Vector2d N(c * w[1] - sn * w[2], sn * w[1] + c * w[2]);  // global
       // The beam pushes its root body with +N, +m0 and its tip body with -N, -m(tip).
-      a_.add_wrench(q, f.a, N, w[0], Q);
+      a_.add_wrench(q, f.a, N, m0, Q);
       a_.add_wrench(q, f.b, -N, -tip.m, Q);
       const Eigen::Vector2d d = a_.point_scaled(q, f.b) - a_.point_scaled(q, f.a);
       F[o] = tip.x - (c * d.x() + sn * d.y());
       F[o + 1] = tip.y - (-sn * d.x() + c * d.y());
       F[o + 2] = b.pinned_tip
-                     ? tip.m
+                     ? tip.m  // a model flexure's tip.m is its unknown M_tip
                      : tip.theta - (a_.body_rotation(q, f.b.body) - a_.body_rotation(q, f.a.body));
     }
     F.head(N_) = a_.lagrangian_gradient(q, z.segment(N_, m_), z[N_ + m_]) - Q;
@@ -198,6 +262,10 @@ class ExactSystem {
     double U = 0.0;
     for (std::size_t i = 0; i < beams_.size(); ++i) {
       const FlexureBeam& b = beams_[i];
+      if (b.model != FlexureModel::kExact) {
+        // The ladder's models here give a tip, not a shape: no strain energy (docs).
+        return std::numeric_limits<double>::quiet_NaN();
+      }
       const Eigen::Vector3d w = z.segment<3>(flexure_offset() + 3 * static_cast<int>(i));
       std::vector<ShapePoint> shape;
       BeamTip tip;
@@ -223,6 +291,9 @@ class ExactSystem {
   int N_, m_;
   std::vector<FlexureBeam> beams_;
   ElasticaIntegrator integrator_;
+  // For flexure_state: the integrator keeps state between calls (its step size), so the reports
+  // use their own and leave the Newton iteration's numbers exactly those of the exact model.
+  ElasticaIntegrator report_integrator_;
   double residual_ = 0.0;
 };
 
@@ -243,8 +314,16 @@ void GeneralExactOptions::validate() const {
   }
 }
 
-GeneralPrbmResult solve_general_exact(const GeneralMechanism& mechanism,
-                                      const GeneralExactOptions& options) {
+namespace {
+
+// The exact system with each flexure's model (`models`, `elements`: one per flexure, or empty for
+// every flexure exact); `reports` (if given, one per flexure) get each recorded point's tip loads
+// and tips.
+GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
+                                     const GeneralExactOptions& options,
+                                     const std::vector<FlexureModel>& models,
+                                     const std::vector<int>& elements,
+                                     std::vector<FlexureModelReport>* reports) {
   options.validate();
   mechanism.validate();
   if (mechanism.input.control != InputControl::kDisplacement) {
@@ -254,7 +333,7 @@ GeneralPrbmResult solve_general_exact(const GeneralMechanism& mechanism,
   }
   const int dof = check_general_mechanism(mechanism);
   const PrbmAssembly A(mechanism, /*assemble_flexures=*/false);
-  ExactSystem S(mechanism, A);
+  ExactSystem S(mechanism, A, models, elements);
   const int N = A.coordinate_count();
   const int m = A.constraint_count();
   GeneralPrbmResult result;
@@ -335,6 +414,19 @@ GeneralPrbmResult solve_general_exact(const GeneralMechanism& mechanism,
       pt.body_y.push_back(q[3 * b + 1] * A.length_scale());
       pt.body_phi.push_back(q[3 * b + 2]);
     }
+    if (reports != nullptr) {
+      for (std::size_t i = 0; i < S.flexure_count(); ++i) {
+        FlexureTipLoad load;
+        FlexureTip tip;
+        if (!S.flexure_state(z, i, load, tip)) {
+          const double nan = std::numeric_limits<double>::quiet_NaN();
+          load = {nan, nan, nan};
+          tip = {nan, nan, nan};
+        }
+        (*reports)[i].loads.push_back(load);
+        (*reports)[i].tips.push_back(tip);
+      }
+    }
     result.points.push_back(std::move(pt));
   };
 
@@ -394,6 +486,203 @@ GeneralPrbmResult solve_general_exact(const GeneralMechanism& mechanism,
   result.iterations = iterations;
   result.residual = S.residual();
   result.termination = Termination::kConverged;
+  return result;
+}
+
+}  // namespace
+
+GeneralPrbmResult solve_general_exact(const GeneralMechanism& mechanism,
+                                      const GeneralExactOptions& options) {
+  return solve_exact_system(mechanism, options, {}, {}, nullptr);
+}
+
+namespace {
+
+std::string rung_title(FlexureModel m, int elements) {
+  switch (m) {
+    case FlexureModel::kLinear:
+      return "linear theory";
+    case FlexureModel::kBcm:
+      return "the BCM";
+    case FlexureModel::kPrbm3r:
+      return "PR-3R (Su)";
+    case FlexureModel::kCbcm:
+      return fmt::format("the CBCM ({} elements)", elements);
+    case FlexureModel::kPrbm:
+      return "its PRBM element";
+    case FlexureModel::kExact:
+      return "the exact elastica";
+    default:
+      return std::string(flexure_model_name(m));
+  }
+}
+
+// The largest mapped error of `model` over the loads of a report (infinite where one is missing);
+// `unmapped` gets how many points have none.
+double worst_mapped(FlexureModel model,
+                    int elements,
+                    const FlexureModelReport& r,
+                    int* unmapped = nullptr) {
+  double worst = 0.0;
+  int missing = 0;
+  for (const FlexureTipLoad& load : r.loads) {
+    const double e = mapped_flexure_error(model, elements, load);
+    if (std::isnan(e)) {
+      ++missing;
+    } else {
+      worst = std::max(worst, e);
+    }
+  }
+  if (unmapped != nullptr) *unmapped = missing;
+  return missing > 0 ? std::numeric_limits<double>::infinity() : worst;
+}
+
+std::string passed_over(FlexureModel model, const FlexureModelReport& r) {
+  int missing = 0;
+  const double worst = worst_mapped(model, 6, r, &missing);
+  if (missing > 0) {
+    return fmt::format("{} (no mapped error at {} of {} points: a load off the map)",
+                       rung_title(model, 6),
+                       missing,
+                       r.loads.size());
+  }
+  return fmt::format("{} (mapped error up to {:.2g} l)", rung_title(model, 6), worst);
+}
+
+std::string joined(const std::vector<std::string>& parts) {
+  std::string out;
+  for (std::size_t i = 0; i < parts.size(); ++i) out += (i ? ", " : "") + parts[i];
+  return out;
+}
+
+}  // namespace
+
+GeneralPrbmResult solve_general_mixed(const GeneralMechanism& mechanism,
+                                      const GeneralExactOptions& options) {
+  mechanism.validate();
+  const std::size_t F = mechanism.flexures.size();
+  const std::vector<FlexureModel>& ladder = auto_ladder();
+  std::vector<FlexureModel> models(F);
+  std::vector<int> elements(F, 6);
+  std::vector<std::size_t> rung(F, 0);  // auto: index into the ladder (its size: exact)
+  std::vector<std::vector<std::string>> passed(F);
+  for (std::size_t i = 0; i < F; ++i) {
+    const Flexure& f = mechanism.flexures[i];
+    if (f.model == FlexureModel::kPrbm && f.prbm == PrbmKind::kFixedGuided) {
+      throw InvalidInput(mechanism.where(f.line) + "flexure '" + f.name +
+                         "': model 'prbm' in the mixed model needs a cantilever PRBM element "
+                         "(small-length or fixed-pinned); the fixed-guided element has two "
+                         "pivots: choose exact, linear, bcm, prbm3r, cbcm or auto for it");
+    }
+    if (f.model == FlexureModel::kCbcm) elements[i] = f.elements;
+    models[i] = f.model == FlexureModel::kAuto ? ladder.front() : f.model;
+  }
+  GeneralPrbmResult result;
+  std::vector<FlexureModelReport> reports;
+  // Each pass with a change moves at least one auto flexure up a rung: at most
+  // F (ladder size) passes change something, and one more confirms.
+  const std::size_t max_passes = F * ladder.size() + 1;
+  for (std::size_t pass = 0; pass < max_passes; ++pass) {
+    reports.assign(F, FlexureModelReport{});
+    result = solve_exact_system(mechanism, options, models, elements, &reports);
+    bool changed = false;
+    for (std::size_t i = 0; i < F; ++i) {
+      const Flexure& f = mechanism.flexures[i];
+      if (f.model != FlexureModel::kAuto || rung[i] >= ladder.size()) continue;
+      if (!result.converged()) {
+        // Some cheaper model has no answer along the path; which one is not known.
+        passed[i].push_back(fmt::format("{} (the mechanism did not solve with it: {})",
+                                        rung_title(models[i], 6),
+                                        result.message));
+        ++rung[i];
+      } else {
+        if (worst_mapped(models[i], 6, reports[i]) <= f.tolerance) continue;
+        passed[i].push_back(passed_over(models[i], reports[i]));
+        ++rung[i];
+        // The cheapest higher rung within the tolerance at these loads.
+        while (rung[i] < ladder.size() &&
+               !(worst_mapped(ladder[rung[i]], 6, reports[i]) <= f.tolerance)) {
+          passed[i].push_back(passed_over(ladder[rung[i]], reports[i]));
+          ++rung[i];
+        }
+      }
+      models[i] = rung[i] < ladder.size() ? ladder[rung[i]] : FlexureModel::kExact;
+      changed = true;
+    }
+    if (!changed) break;
+  }
+
+  for (std::size_t i = 0; i < F; ++i) {
+    const Flexure& f = mechanism.flexures[i];
+    FlexureModelReport& r = reports[i];
+    r.name = f.name;
+    r.requested = f.model;
+    r.model = models[i];
+    r.elements = elements[i];
+    r.tolerance = f.model == FlexureModel::kAuto ? f.tolerance : 0.0;
+    double worst = 0.0;
+    r.unmapped_points = 0;
+    for (const FlexureTipLoad& load : r.loads) {
+      const double e = mapped_flexure_error(r.model, r.elements, load);
+      r.mapped_error.push_back(e);
+      if (std::isnan(e)) {
+        ++r.unmapped_points;
+      } else {
+        worst = std::max(worst, e);
+      }
+    }
+    r.expected_error_per_length =
+        r.unmapped_points > 0 ? std::numeric_limits<double>::quiet_NaN() : worst;
+    if (options.measure_flexure_errors) {
+      double largest = 0.0;
+      bool all = !r.loads.empty();
+      for (std::size_t k = 0; k < r.loads.size(); ++k) {
+        const double e = measured_tip_error(r.loads[k], r.tips[k]);
+        r.measured_error.push_back(e);
+        if (std::isnan(e)) {
+          all = false;
+        } else {
+          largest = std::max(largest, e);
+        }
+      }
+      r.measured_error_per_length = all ? largest : std::numeric_limits<double>::quiet_NaN();
+    }
+    const std::size_t points = r.loads.size();
+    const std::string mapped =
+        r.model == FlexureModel::kExact ? std::string("expected error 0")
+        : r.unmapped_points > 0
+            ? fmt::format(
+                  "no mapped error at {} of {} points (a load off the model ladder's map, or a "
+                  "model the map does not describe)",
+                  r.unmapped_points,
+                  points)
+            : fmt::format(
+                  "its mapped tip error at the loads it carries is at most {:.2g} l over "
+                  "the {} points (data/ladder_auto_error_map*.csv)",
+                  worst,
+                  points);
+    if (f.model != FlexureModel::kAuto) {
+      r.reason = fmt::format("{} as requested; {}", rung_title(r.model, r.elements), mapped);
+      if (r.model == FlexureModel::kPrbm) {
+        r.reason += " (Howell's average constants are not the map's 1R model)";
+      }
+    } else if (r.model == FlexureModel::kExact) {
+      r.reason = fmt::format(
+          "auto (tolerance {:.2g} of its length): the exact elastica, as no cheaper model of the "
+          "ladder is within it at every point: {}",
+          f.tolerance,
+          joined(passed[i]));
+    } else {
+      r.reason = fmt::format(
+          "auto (tolerance {:.2g} of its length): {}, the cheapest model of the ladder within it: "
+          "{}{}",
+          f.tolerance,
+          rung_title(r.model, 6),
+          mapped,
+          passed[i].empty() ? std::string() : "; cheaper, but not within it: " + joined(passed[i]));
+    }
+  }
+  result.flexure_models = std::move(reports);
   return result;
 }
 

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "flexure/mechanisms/general/flexure_models.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
 #include "flexure/mechanisms/general/general_prbm.h"
 
@@ -26,6 +27,9 @@ struct GeneralExactOptions {
   double tolerance = 1e-10;  // Newton: max residual of the scaled equations
   int max_newton_iterations = 40;
   int max_step_halvings = 12;  // of the input step when Newton fails
+  // solve_general_mixed: measure each flexure's model against the exact elastica under the loads
+  // it carries at every point (FlexureModelReport::measured_error; an elliptic solve each).
+  bool measure_flexure_errors = false;
   // Throws InvalidInput naming the field.
   void validate() const;
 };
@@ -35,6 +39,19 @@ struct GeneralExactOptions {
 // not_checked), no limit points. iterations: Newton iterations in all; residual: the largest
 // scaled residual of the recorded points.
 GeneralPrbmResult solve_general_exact(const GeneralMechanism& mechanism,
+                                      const GeneralExactOptions& options = {});
+
+// The mixed model (`mechanism analyze --model mixed`, docs/mechanisms.md "A model per flexure"):
+// the exact system above with each flexure under its own Flexure::model (flexure_models.h). A
+// flexure set to `auto` starts on the cheapest rung of auto_ladder(); after each solve every auto
+// flexure whose rung's mapped tip error at the loads it carries exceeds its tolerance at some
+// point (or is not mapped there) moves to the cheapest higher rung within it at those loads (the
+// exact elastica when none is), and the mechanism is solved again, until a solve changes no
+// choice; a solve that fails moves every auto flexure below exact one rung up. The result's
+// flexure_models say, per flexure, the model used, why, and its expected (mapped) error per
+// length. Every flexure set to exact gives solve_general_exact's numbers exactly. Throws
+// InvalidInput as solve_general_exact does, and for a fixed-guided flexure set to prbm.
+GeneralPrbmResult solve_general_mixed(const GeneralMechanism& mechanism,
                                       const GeneralExactOptions& options = {});
 
 }  // namespace flexure::mechanism::general

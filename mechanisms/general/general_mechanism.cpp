@@ -40,6 +40,63 @@ std::string_view prbm_kind_name(PrbmKind kind) {
   return "?";
 }
 
+std::string_view flexure_model_name(FlexureModel model) {
+  switch (model) {
+    case FlexureModel::kPrbm:
+      return "prbm";
+    case FlexureModel::kExact:
+      return "exact";
+    case FlexureModel::kLinear:
+      return "linear";
+    case FlexureModel::kBcm:
+      return "bcm";
+    case FlexureModel::kPrbm3r:
+      return "prbm3r";
+    case FlexureModel::kCbcm:
+      return "cbcm";
+    case FlexureModel::kAuto:
+      return "auto";
+  }
+  return "?";
+}
+
+FlexureModel parse_flexure_model(std::string_view name) {
+  for (FlexureModel m : {FlexureModel::kPrbm,
+                         FlexureModel::kExact,
+                         FlexureModel::kLinear,
+                         FlexureModel::kBcm,
+                         FlexureModel::kPrbm3r,
+                         FlexureModel::kCbcm,
+                         FlexureModel::kAuto}) {
+    if (flexure_model_name(m) == name) {
+      return m;
+    }
+  }
+  throw InvalidInput("model '" + std::string(name) +
+                     "' is not one of prbm, exact, linear, bcm, prbm3r, cbcm, auto");
+}
+
+void set_flexure_model(GeneralMechanism& mechanism,
+                       const std::string& flexure,
+                       FlexureModel model,
+                       double tolerance,
+                       int elements) {
+  bool found = false;
+  std::string names;
+  for (Flexure& f : mechanism.flexures) {
+    names += (names.empty() ? "" : ", ") + f.name;
+    if (!flexure.empty() && f.name != flexure) continue;
+    found = true;
+    f.model = model;
+    if (tolerance != 0.0) f.tolerance = tolerance;
+    if (elements != 0) f.elements = elements;
+  }
+  if (!found) {
+    throw InvalidInput("no flexure named '" + flexure + "' in " + mechanism.name +
+                       " (its flexures: " + (names.empty() ? std::string("none") : names) + ")");
+  }
+}
+
 std::string_view joint_kind_name(JointKind kind) {
   switch (kind) {
     case JointKind::kPin:
@@ -373,6 +430,15 @@ void GeneralMechanism::validate() const {
     if (f.thickness > distance) {
       throw InvalidInput(item + ": thickness/length = " + fmt(f.thickness / distance) +
                          " > 1: a block, not a flexure (docs/mechanisms.md, geometry limits)");
+    }
+    if (f.model == FlexureModel::kAuto &&
+        (!(f.tolerance > 0.0) || !(f.tolerance < 1.0) || !std::isfinite(f.tolerance))) {
+      throw InvalidInput(item + ": model 'auto' needs a tolerance in (0, 1), the largest mapped " +
+                         "tip error per length of the flexure (got " + fmt(f.tolerance) + ")");
+    }
+    if (f.model == FlexureModel::kCbcm && (f.elements < 1 || f.elements > 2000)) {
+      throw InvalidInput(item + ": model 'cbcm' needs elements in [1, 2000] (got " +
+                         std::to_string(f.elements) + ")");
     }
     links[f.a.body].insert(f.b.body);
     links[f.b.body].insert(f.a.body);

@@ -69,8 +69,14 @@ enum class PrbmKind {
                       // K = 2 gamma K_Theta EI/l (eq. 5.105), Table 5.1 n = 0
 };
 
-// The flexure's model (only the PRBM is assembled so far; "exact" is refused by the solver).
-enum class FlexureModel { kPrbm, kExact };
+// The flexure's model. `--model prbm` assembles every flexure as its PRBM element and `--model
+// exact` solves every one as an elastica, whatever this says; `--model mixed`
+// (solve_general_mixed, general_exact.h) gives each flexure the model named here: the exact
+// elastica, its PRBM element (small-length or fixed-pinned), a rung of the model ladder
+// (elements/: linear theory, the BCM, Su's PR-3R, the chained BCM) as a cantilever under the end
+// loads its far body puts on it, or `auto`: the cheapest rung whose mapped tip error at the loads
+// it carries is within `tolerance` of its length (docs/mechanisms.md "A model per flexure").
+enum class FlexureModel { kPrbm, kExact, kLinear, kBcm, kPrbm3r, kCbcm, kAuto };
 
 // A straight flexure from point a (on one body) to point b (on another) in the described
 // configuration; its length is their distance (a given length must agree to 1e-6).
@@ -84,6 +90,9 @@ struct Flexure {
   double length = 0.0;          // l, m; 0: the distance from a to b
   PrbmKind prbm = PrbmKind::kSmallLengthPivot;
   FlexureModel model = FlexureModel::kPrbm;
+  // auto: the largest mapped tip position error allowed, per length of the flexure (> 0).
+  double tolerance = 0.0;
+  int elements = 6;  // cbcm: BCM elements (the error map's CBCM has 6)
   int line = 0;
 
   double flexural_rigidity() const {
@@ -145,6 +154,10 @@ struct Input {
 
 std::string_view prbm_kind_name(PrbmKind kind);    // "small-length", "fixed-pinned", "fixed-guided"
 std::string_view joint_kind_name(JointKind kind);  // "pin", "slider", "weld"
+// "prbm", "exact", "linear", "bcm", "prbm3r", "cbcm", "auto" (the beam's --method names).
+std::string_view flexure_model_name(FlexureModel model);
+// The model of that name; throws InvalidInput listing the names.
+FlexureModel parse_flexure_model(std::string_view name);
 std::string_view input_coordinate_name(InputCoordinate c);  // "x", "y", "angle"
 std::string_view input_control_name(InputControl c);        // "displacement", "force"
 
@@ -212,6 +225,15 @@ struct GeneralMechanism {
   // "FILE:LINE: " when the item has a line in a file, else "".
   std::string where(int line) const;
 };
+
+// Sets the model of the flexure named `flexure` (every flexure when empty) of `mechanism`, with
+// auto's tolerance (per length; kept when 0) and the CBCM's elements (kept when 0). Throws
+// InvalidInput for an unknown flexure, listing the mechanism's.
+void set_flexure_model(GeneralMechanism& mechanism,
+                       const std::string& flexure,
+                       FlexureModel model,
+                       double tolerance = 0.0,
+                       int elements = 0);
 
 // "body.point" split at the first dot; throws InvalidInput naming `what` when malformed.
 PointRef parse_point_ref(const std::string& text, const std::string& what);

@@ -299,9 +299,11 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
                                      const GeneralPrbmOptions& options) {
   options.validate();
   for (const Flexure& f : mechanism.flexures) {
-    if (f.model == FlexureModel::kExact) {
-      throw InvalidInput(mechanism.where(f.line) + "flexure '" + f.name +
-                         "': a model per flexure is not supported yet: the PRBM solves every "
+    if (f.model != FlexureModel::kPrbm) {
+      throw InvalidInput(mechanism.where(f.line) + "flexure '" + f.name + "': model '" +
+                         std::string(flexure_model_name(f.model)) +
+                         "' asks for a model per flexure: --model mixed "
+                         "(solve_general_mixed) gives each flexure its own; the PRBM solves every "
                          "flexure as a PRBM element (solve_general_exact every one exactly)");
     }
   }

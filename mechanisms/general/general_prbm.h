@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "flexure/mechanisms/general/flexure_models.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
 #include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"
@@ -66,6 +67,9 @@ struct GeneralPrbmResult : SolveStatus {
   std::vector<double> limit_inputs;
   std::vector<double> limit_loads;
   int degrees_of_freedom = 0;  // of the PRB linkage with the input free
+  // The mixed model (solve_general_mixed): per flexure, the model used, why, and its expected
+  // error; empty for the PRBM and the all-exact model.
+  std::vector<FlexureModelReport> flexure_models;
 };
 
 // The structural checks both models make before solving, on the PRB linkage in the described
@@ -78,9 +82,9 @@ int check_general_mechanism(const GeneralMechanism& mechanism);
 // Solves the PRBM of `mechanism` over its input range. Throws InvalidInput for a bad description
 // (GeneralMechanism::validate), for redundant constraints, for a body or direction that moves with
 // no stiffness while the input is held (naming the body), and for a flexure whose model is
-// "exact" (not assembled yet). A path that cannot be followed ends with kNoConvergence or, when it
-// turns back at a limit point and never reaches the range's end, kLimitPoint; the points reached
-// are returned.
+// not prbm (a model per flexure is solve_general_mixed's). A path that cannot be followed ends with
+// kNoConvergence or, when it turns back at a limit point and never reaches the range's end,
+// kLimitPoint; the points reached are returned.
 GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
                                      const GeneralPrbmOptions& options = {});
 

@@ -48,6 +48,125 @@ TEST(LadderAutoMap, EmbeddedCopyEqualsTheFile) {
   test::expect_embedded_equals_file(data::ladder_auto_error_map());
 }
 
+TEST(LadderAutoMap, AxialEmbeddedCopyEqualsTheFile) {
+  test::expect_embedded_equals_file(data::ladder_auto_error_map_axial());
+}
+
+// Inverse problems (a given theta0 or b/l) by auto: where a rung of the ladder answers, the exact
+// elastica under the load it found has its tip within the tolerance (relative to its displacement)
+// of the rung's tip, on seeded random targets; the rest go to the exact methods and meet the
+// target.
+TEST(LadderAuto, InverseProblemsChooseARungWithinTheTolerance) {
+  std::mt19937 rng(3031);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::map<BeamMethod, int> chosen;
+  int checked = 0;
+  for (int trial = 0; trial < 80; ++trial) {
+    BeamProblem p;
+    p.load_ratio_n = -1.5 + 3.0 * u(rng);
+    p.mu = trial % 3 == 0 ? 0.0 : (u(rng) - 0.5) * 0.6;
+    p.tolerance = std::pow(10.0, -3.0 + 2.5 * u(rng));
+    const bool theta = trial % 2 == 0;
+    p.given = theta ? BeamProblem::Given::kTheta0 : BeamProblem::Given::kBOverL;
+    // Weighted toward small deflections, where the cheap rungs are accurate.
+    p.value = (theta ? 1.2 : 0.6) * std::pow(u(rng), 3.0) + 0.002;
+    BeamSolution s;
+    try {
+      s = solve_beam(BeamMethod::kAuto, p);
+    } catch (const InvalidInput&) {
+      continue;  // a target no load reaches (e.g. against the end moment)
+    }
+    if (!s.converged()) continue;
+    ++checked;
+    ++chosen[s.method];
+    const std::string where = fmt::format("n = {}, mu = {}, {} = {}, tol = {}: {}",
+                                          p.load_ratio_n,
+                                          p.mu,
+                                          theta ? "theta0" : "b/l",
+                                          p.value,
+                                          p.tolerance,
+                                          s.method_reason);
+    const double reached = theta ? s.tip.theta0 : s.tip.b_over_l;
+    EXPECT_NEAR(reached, p.value, 1e-8 * std::max(1.0, std::fabs(p.value))) << where;
+    if (s.method == BeamMethod::kElliptic || s.method == BeamMethod::kShooting) continue;
+    const BeamSolution exact =
+        solve_beam(BeamMethod::kElliptic, cantilever(p.load_ratio_n, s.alpha2, p.mu, 1e-6));
+    ASSERT_TRUE(exact.converged()) << where;
+    const double error = distance(s.tip, exact.tip);
+    EXPECT_LE(error / displacement(exact.tip), p.tolerance) << where;
+    EXPECT_LE(error / displacement(exact.tip), s.expected_error) << where;
+    EXPECT_LE(error, s.expected_error_per_length) << where;
+  }
+  EXPECT_GE(checked, 60);
+  const int exact = chosen[BeamMethod::kElliptic] + chosen[BeamMethod::kShooting];
+  EXPECT_GE(checked - exact, 10) << "rungs chosen: linear " << chosen[BeamMethod::kLinear]
+                                 << ", bcm " << chosen[BeamMethod::kBcm] << ", prbm3r "
+                                 << chosen[BeamMethod::kPrbm3r] << ", cbcm "
+                                 << chosen[BeamMethod::kCbcm];
+  std::cout << "inverse auto: " << checked << " problems; linear " << chosen[BeamMethod::kLinear]
+            << ", bcm " << chosen[BeamMethod::kBcm] << ", prbm3r " << chosen[BeamMethod::kPrbm3r]
+            << ", cbcm " << chosen[BeamMethod::kCbcm] << ", exact " << exact << "\n";
+}
+
+// Where the ladder's maps do not apply, auto says why in its reason.
+TEST(LadderAuto, FollowerForcesSayWhyTheLadderIsNotTried) {
+  BeamProblem follower = cantilever(0.0, 0.0, 0.0, 1e-2);
+  follower.follower = 1.0;
+  const BeamSolution f = solve_beam(BeamMethod::kAuto, follower);
+  ASSERT_TRUE(f.converged()) << f.message;
+  EXPECT_NE(f.method_reason.find("not tried for a follower force"), std::string::npos)
+      << f.method_reason;
+}
+
+TEST(LadderAutoMap, GuidedEmbeddedCopyEqualsTheFile) {
+  test::expect_embedded_equals_file(data::ladder_auto_error_map_guided());
+}
+
+// The guided end (data/ladder_auto_error_map_guided.csv): on seeded random loads and tip angles
+// the chosen rung's tip is within the tolerance (relative to the exact displacement) of the
+// shooting method's, and within its expected error.
+TEST(LadderAuto, GuidedEndChoosesARungWithinTheTolerance) {
+  std::mt19937 rng(3032);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::map<BeamMethod, int> chosen;
+  int checked = 0;
+  for (int trial = 0; trial < 150; ++trial) {
+    BeamProblem p = cantilever(-2.0 + 4.0 * u(rng), 40.0 * std::pow(u(rng), 3.0), 0.0, 0.0);
+    p.tolerance = std::pow(10.0, -5.0 + 4.0 * u(rng));
+    p.boundary = EndCondition::kGuided;
+    if (trial % 3 != 0) p.prescribed.theta = (u(rng) - 0.5) * 2.0 * std::pow(u(rng), 2.0);
+    const BeamSolution exact = solve_beam(BeamMethod::kShooting, p);
+    if (!exact.converged() || exact.limit_points > 0) continue;
+    const BeamSolution s = solve_beam(BeamMethod::kAuto, p);
+    ASSERT_TRUE(s.converged()) << s.message;
+    ++checked;
+    ++chosen[s.method];
+    if (s.method == BeamMethod::kShooting || s.method == BeamMethod::kElliptic) continue;
+    const std::string where = fmt::format("n = {}, alpha2 = {}, tip angle = {}, tol = {}: {}",
+                                          p.load_ratio_n,
+                                          p.value,
+                                          p.prescribed.theta.value_or(0.0),
+                                          p.tolerance,
+                                          s.method_reason);
+    const double error = distance(s.tip, exact.tip);
+    EXPECT_LE(error / displacement(exact.tip), p.tolerance) << where;
+    EXPECT_LE(error / displacement(exact.tip), s.expected_error) << where;
+    EXPECT_LE(error, s.expected_error_per_length) << where;
+    EXPECT_NE(s.method_reason.find("ladder_auto_error_map_guided.csv"), std::string::npos);
+  }
+  EXPECT_GE(checked, 120);
+  int rungs = 0;
+  for (const auto& [m, count] : chosen) {
+    if (m != BeamMethod::kShooting && m != BeamMethod::kElliptic) rungs += count;
+  }
+  std::cout << "guided auto: " << checked << " loads; linear " << chosen[BeamMethod::kLinear]
+            << ", prbm " << chosen[BeamMethod::kPrbm] << ", bcm " << chosen[BeamMethod::kBcm]
+            << ", prbm3r " << chosen[BeamMethod::kPrbm3r] << ", cbcm " << chosen[BeamMethod::kCbcm]
+            << ", shooting " << chosen[BeamMethod::kShooting] << ", elliptic "
+            << chosen[BeamMethod::kElliptic] << "\n";
+  EXPECT_GE(rungs, 20);
+}
+
 TEST(LadderAutoMap, ValueIsLinearTheorysErrorAgainstTheEllipticSolution) {
   // The file's row n = 0, alpha2 = 0.1, mu = 0: linear_error 0.00067. Linear theory: a = 1,
   // b = alpha2/3 (docs/models.md).

@@ -38,7 +38,20 @@ TEST(AutoMethodCli, LooseToleranceInsideValidityPicksPrbm) {
 
 TEST(AutoMethodCli, DefaultToleranceAndOtherBoundariesPickExactMethods) {
   EXPECT_EQ(beam_json("--alpha2 3").value("method", ""), "elliptic");
-  EXPECT_EQ(beam_json("--alpha2 3 --tol 1e-2 --boundary guided").value("method", ""), "shooting");
+  EXPECT_EQ(beam_json("--alpha2 3 --boundary guided").value("method", ""), "shooting");
+  // A guided end with a loose tolerance takes a rung of the ladder by the guided map
+  // (docs/models.md "auto across the ladder"): within the tolerance of the shooting method.
+  const nlohmann::json guided = beam_json("--alpha2 3 --tol 1e-2 --boundary guided");
+  const nlohmann::json shooting = beam_json("--alpha2 3 --boundary guided --method shooting");
+  EXPECT_NE(guided.value("method_reason", "").find("ladder_auto_error_map_guided.csv"),
+            std::string::npos)
+      << guided.dump();
+  const double travel =
+      std::hypot(shooting["a_over_l"].get<double>() - 1.0, shooting["b_over_l"].get<double>());
+  EXPECT_LE(std::hypot(guided["a_over_l"].get<double>() - shooting["a_over_l"].get<double>(),
+                       guided["b_over_l"].get<double>() - shooting["b_over_l"].get<double>()) /
+                travel,
+            1e-2);
   const CommandResult zero = run_flexure("beam --alpha2 3 --tol 0");
   EXPECT_EQ(zero.exit_code, 2);
   EXPECT_NE(zero.err.find("--tol must be a finite relative error > 0"), std::string::npos)

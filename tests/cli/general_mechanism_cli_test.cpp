@@ -2,6 +2,9 @@
 // mechanisms"): the shipped bistable switch through the tool, its JSON keys, and the refusals.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -74,7 +77,14 @@ TEST(GeneralMechanismCli, Refusals) {
 TEST(GeneralMechanismCli, EveryConstantForceOptionIsRefusedByName) {
   const CommandResult help = run_flexure("mechanism analyze --help");
   ASSERT_EQ(help.exit_code, 0) << help.err;
-  const std::set<std::string> general = {"--help", "--points", "--json", "--model", "--input"};
+  const std::set<std::string> general = {"--help",
+                                         "--points",
+                                         "--json",
+                                         "--model",
+                                         "--input",
+                                         "--flexure-model",
+                                         "--flexure-tol",
+                                         "--check-flexures"};
   // A valid value for the options whose values are checked before the form is known.
   const std::map<std::string, std::string> value = {{"--method", "prbm"},
                                                     {"--spring-rule", "table2"},
@@ -129,6 +139,103 @@ TEST(GeneralMechanismCli, BothModels) {
   }
   EXPECT_EQ(exact["equilibria"][1]["stability"], "not_checked");
   EXPECT_EQ(exact["stability"]["force_control"][0], "not_checked");
+}
+
+// --model mixed on a built-in design (its general form): every flexure exact gives the catalogue's
+// exact force; auto within its tolerance; each flexure's report (docs/mechanisms.md "A model per
+// flexure").
+TEST(GeneralMechanismCli, MixedModelOnABuiltInDesign) {
+  const CommandResult catalogue =
+      run_flexure("mechanism analyze 3A-sss --method exact --points 10 --json");
+  ASSERT_EQ(catalogue.exit_code, 0) << catalogue.err;
+  const auto c = nlohmann::json::parse(catalogue.out);
+  std::vector<double> exact = c["force_exact"].get<std::vector<double>>();
+  double largest = 0.0;
+  for (double f : exact) largest = std::max(largest, std::fabs(f));
+
+  const CommandResult all_exact = run_flexure(
+      "mechanism analyze 3A-sss --model mixed --flexure-model exact --points 10 --json");
+  ASSERT_EQ(all_exact.exit_code, 0) << all_exact.err;
+  const auto e = nlohmann::json::parse(all_exact.out);
+  ASSERT_EQ(e["force"].size(), 10u);
+  for (std::size_t i = 0; i < exact.size(); ++i) {
+    EXPECT_NEAR(e["force"][i].get<double>(), exact[i], 1e-8 * largest) << i;
+    EXPECT_NEAR(e["displacement"][i].get<double>(),
+                c["displacement"][i].get<double>(),
+                1e-15 + 1e-12 * c["displacement"][i].get<double>());
+  }
+  ASSERT_EQ(e["flexure_models"].size(), 3u);
+  EXPECT_EQ(e["flexure_models"][0]["model"], "exact");
+  EXPECT_EQ(e["flexure_models"][0]["expected_error_per_length"], 0.0);
+
+  const CommandResult automatic = run_flexure(
+      "mechanism analyze 3A-sss --model mixed --flexure-model auto --flexure-tol 1e-3 "
+      "--check-flexures --points 10 --json");
+  ASSERT_EQ(automatic.exit_code, 0) << automatic.err;
+  const auto a = nlohmann::json::parse(automatic.out);
+  for (std::size_t i = 0; i < exact.size(); ++i) {
+    EXPECT_NEAR(a["force"][i].get<double>(), exact[i], 1e-3 * largest) << i;
+  }
+  int cheaper = 0;
+  for (const auto& f : a["flexure_models"]) {
+    EXPECT_EQ(f["requested"], "auto");
+    EXPECT_EQ(f["tolerance"], 1e-3);
+    EXPECT_FALSE(f["method_reason"].get<std::string>().empty());
+    EXPECT_LE(f["expected_error_per_length"].get<double>(), 1e-3);
+    // Exact flexures: 0 expected, 1e-13 measured (the shooting integrator against the elliptic
+    // solution).
+    EXPECT_LE(f["measured_error_per_length"].get<double>(),
+              f["expected_error_per_length"].get<double>() + 1e-9);
+    if (f["model"] != "exact") ++cheaper;
+  }
+  EXPECT_GE(cheaper, 1);  // measured: f3 takes the CBCM at 1e-3
+}
+
+TEST(GeneralMechanismCli, MixedModelKeysAndRefusals) {
+  ScratchDir dir;
+  std::string text =
+      read_text(std::string(FLEXURE_SOURCE_DIR) + "/docs/examples/howell_bistable_switch.toml");
+  const std::string key = "prbm = \"small-length\"";
+  const auto at = text.find(key);
+  ASSERT_NE(at, std::string::npos);
+  auto with = [&](const std::string& extra) {
+    std::string t = text;
+    t.insert(at + key.size(), "\n" + extra);
+    const auto path = dir / "switch.toml";
+    std::ofstream(path) << t;
+    return "'" + path.string() + "'";
+  };
+  expect_refused("mechanism analyze " + with("model = \"auto\"") + " --model mixed",
+                 {"switch.toml:", "needs a tolerance"});
+  expect_refused("mechanism analyze " + with("model = \"fem\"") + " --model mixed",
+                 {"switch.toml:", "not one of prbm, exact, linear, bcm, prbm3r, cbcm, auto"});
+  expect_refused("mechanism analyze " + with("model = \"bcm\"\nelements = 4") + " --model mixed",
+                 {"elements belongs to model = \"cbcm\""});
+  const CommandResult r =
+      run_flexure("mechanism analyze " + with("model = \"cbcm\"\nelements = 12") +
+                  " --model mixed --input '-5deg:33deg:39' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["flexure_models"][0]["model"], "cbcm");
+  EXPECT_EQ(j["flexure_models"][0]["elements"], 12);
+  // A CBCM of 12 elements is not on the map: no expected error, said so.
+  EXPECT_TRUE(j["flexure_models"][0]["expected_error_per_length"].is_null());
+  // The stable positions are where the flexure is unstressed: those of the exact model.
+  const CommandResult ex = run_flexure("mechanism analyze " + kSwitch +
+                                       " --model exact --input '-5deg:33deg:39' --json");
+  const auto x = nlohmann::json::parse(ex.out);
+  ASSERT_EQ(j["equilibria"].size(), 3u);
+  for (int i : {0, 2}) {
+    EXPECT_NEAR(
+        j["equilibria"][i]["input"].get<double>(), x["equilibria"][i]["input"].get<double>(), 1e-8);
+  }
+  expect_refused("mechanism analyze 3A-sss --model mixed --flexure-model f7=bcm",
+                 {"f7", "f1, f2, f3"});
+  expect_refused("mechanism analyze 3A-sss --model mixed --flexure-model auto", {"--flexure-tol"});
+  expect_refused("mechanism analyze 3A-sss --flexure-model bcm", {"--model mixed"});
+  expect_refused("mechanism analyze 3A-sss --model mixed --material polypropylene",
+                 {"--material", "--model mixed"});
+  expect_refused("mechanism analyze 1B-plp --model mixed", {"pivot 2", "no general form"});
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <random>
 
 #include "flexure/elements/fixed_guided_segment.h"
+#include "flexure/mechanisms/general/catalogue_general.h"
 #include "flexure/mechanisms/general/general_exact.h"
 #include "flexure/mechanisms/general/general_prbm.h"
 #include "flexure/mechanisms/mechanism.h"
@@ -328,116 +329,12 @@ TEST(GeneralMechanismPrbm, DisplacementControlVerdictIsTheClosedForm) {
   }
 }
 
-// A built-in constant-force slider design (half mechanism; docs/mechanisms.md) rebuilt as a
-// general mechanism from Table 8.1 here: pivot 1 at the ground (s: a flexure from the ground clamp
-// at x = 0, its pivot at f1/2; l: a fixed-pinned segment r2/gamma long clamped at 0 and pinned to
-// the coupler; p: a pin at 0), pivot 2 r2 further, pivot 3 r3 further, the slider on the x axis
-// carrying pivot 3's far end. Its input is the slider's x, moved inwards by the catalogue's stroke
-// points; the straight position is a dead point, so the crank's start rotation picks the branch
-// with pivot 2 above the axis.
-GeneralMechanism from_catalogue(const MechanismDesign& d, int points) {
-  const auto& j = d.joints;
-  const bool long_crank = j[0].type == PivotType::kLong;
-  GeneralMechanism m;
-  std::vector<NamedPoint> ground, crank, coupler, slider;
-  auto section = [&](int i) { return std::array<double, 2>{j[i].width, j[i].thickness}; };
-  double x1 = 0.0;
-  if (j[0].type == PivotType::kSmall) {
-    x1 = j[0].length / 2;
-    ground.push_back({"c1", {0, 0}});
-    crank.push_back({"c1", {j[0].length, 0}});
-  } else if (long_crank) {
-    x1 = (1.0 - 0.85) * j[0].length;
-    ground.push_back({"c1", {0, 0}});
-  } else {
-    ground.push_back({"p1", {0, 0}});
-    crank.push_back({"p1", {0, 0}});
-  }
-  const double x2 = long_crank ? j[0].length : x1 + d.r2;
-  if (j[1].type == PivotType::kSmall) {
-    crank.push_back({"c2", {x2 - j[1].length / 2, 0}});
-    coupler.push_back({"c2", {x2 + j[1].length / 2, 0}});
-  } else {
-    if (!long_crank) {
-      crank.push_back({"p2", {x2, 0}});
-    }
-    coupler.push_back({"p2", {x2, 0}});
-  }
-  const double x3 = x2 + d.r3;
-  double xs = x3;
-  if (j[2].type == PivotType::kSmall) {
-    coupler.push_back({"c3", {x3 - j[2].length / 2, 0}});
-    xs = x3 + j[2].length / 2;
-  } else {
-    coupler.push_back({"p3", {x3, 0}});
-  }
-  slider.push_back({"S", {xs, 0}});
-  ground.push_back({"S", {xs, 0}});
-  m.body("ground", ground);
-  if (!long_crank) {
-    m.body("crank", crank);
-  }
-  m.body("coupler", coupler).body("slider", slider);
-  if (j[0].type == PivotType::kSmall) {
-    m.flexure("f1",
-              "ground.c1",
-              "crank.c1",
-              section(0)[0],
-              section(0)[1],
-              d.E,
-              PrbmKind::kSmallLengthPivot);
-  } else if (long_crank) {
-    m.flexure(
-        "f1", "ground.c1", "coupler.p2", section(0)[0], section(0)[1], d.E, PrbmKind::kFixedPinned);
-  } else {
-    m.pin("p1", "ground.p1", "crank.p1");
-  }
-  if (j[1].type == PivotType::kSmall) {
-    m.flexure("f2",
-              "crank.c2",
-              "coupler.c2",
-              section(1)[0],
-              section(1)[1],
-              d.E,
-              PrbmKind::kSmallLengthPivot);
-  } else if (!long_crank) {
-    m.pin("p2", "crank.p2", "coupler.p2");
-  }
-  if (j[2].type == PivotType::kSmall) {
-    m.flexure("f3",
-              "coupler.c3",
-              "slider.S",
-              section(2)[0],
-              section(2)[1],
-              d.E,
-              PrbmKind::kSmallLengthPivot);
-  } else {
-    m.pin("p3", "coupler.p3", "slider.S");
-  }
-  m.slider("guide", "ground.S", "slider.S", 0.0);
-  const std::vector<double> dx = stroke_displacements(d, points);
-  m.input_coordinate(InputCoordinate::kX,
-                     "slider.S",
-                     "",
-                     InputControl::kDisplacement,
-                     xs - dx.front(),
-                     xs - dx.back(),
-                     points);
-  // Small-angle guess of the first point: Delta x = theta2^2 r2 (1 + r2/r3)/2.
-  const double theta2 = std::sqrt(2 * dx.front() / (d.r2 * (1 + d.r2 / d.r3)));
-  if (!long_crank) {
-    m.input.start_rotation.push_back({"crank", theta2});
-  }
-  m.input.start_rotation.push_back({"coupler", -theta2 * d.r2 / d.r3});
-  return m;
-}
-
 TEST(GeneralMechanismPrbm, CatalogueDesignsRebuiltGiveTheCataloguePrbmForce) {
   for (const char* name :
        {"1A-spp", "1A-lpp", "1B-psp", "2A-ssp", "2B-sps", "2B-lps", "3A-sss", "howell-3A-sss-a"}) {
     const MechanismDesign d = find_builtin_mechanism(name);
     const int points = 40;
-    const GeneralPrbmResult r = solve_general_prbm(from_catalogue(d, points));
+    const GeneralPrbmResult r = solve_general_prbm(general_from_design(d, points));
     ASSERT_TRUE(r.converged()) << name << ": " << r.message;
     ASSERT_EQ(r.points.size(), static_cast<std::size_t>(points)) << name;
     const std::vector<double> dx = stroke_displacements(d, points);
@@ -599,7 +496,7 @@ TEST(GeneralMechanismExact, CatalogueDesignsMatchTheCatalogueExactModel) {
   for (const char* name : {"3A-sss", "2A-ssp", "1A-spp", "1A-lpp", "2B-sps"}) {
     const MechanismDesign d = find_builtin_mechanism(name);
     const int points = 10;
-    const GeneralPrbmResult r = solve_general_exact(from_catalogue(d, points));
+    const GeneralPrbmResult r = solve_general_exact(general_from_design(d, points));
     ASSERT_TRUE(r.converged()) << name << ": " << r.message;
     const std::vector<double> dx = stroke_displacements(d, points);
     const ExactStrokeResult c = exact_stroke(d, dx);
@@ -673,7 +570,7 @@ TEST(GeneralMechanismDescription, BadDescriptionsAreNamedErrors) {
   {
     GeneralMechanism m = bistable_switch(0, 10, 3);
     m.flexures[0].model = FlexureModel::kExact;
-    EXPECT_NE(message(m).find("a model per flexure is not supported yet"), std::string::npos);
+    EXPECT_NE(message(m).find("asks for a model per flexure: --model mixed"), std::string::npos);
   }
 }
 
