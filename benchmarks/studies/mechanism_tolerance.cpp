@@ -118,18 +118,20 @@ struct ItemResults {
   std::vector<std::string> failures;  // per item
 };
 
-ItemResults analyse_items(const std::vector<MechanismDesign>& designs,
-                          const std::vector<std::string>& descriptions,
+// `design_of(i)` makes item i's design (called on any thread: it reads shared data only), and
+// `describe(i)` names it in a failure message.
+ItemResults analyse_items(long total,
+                          const std::function<MechanismDesign(long)>& design_of,
+                          const std::function<std::string(long)>& describe,
                           std::size_t nq,
                           const ToleranceOptions& o) {
-  const long total = static_cast<long>(designs.size());
   const double nan = std::numeric_limits<double>::quiet_NaN();
   // This rank's items: index, then its nq quantities; failures as (index, reason) pairs.
   std::vector<double> mine;
   std::vector<std::string> my_failures;
   parallel::DistributionOptions distribution;
   distribution.max_block = 1;
-  distribution.describe = [&](long i) { return descriptions[static_cast<std::size_t>(i)]; };
+  distribution.describe = describe;
   parallel::distribute(
       total,
       [&](long begin, long end) -> parallel::BlockWriter {
@@ -138,7 +140,7 @@ ItemResults analyse_items(const std::vector<MechanismDesign>& designs,
         for (long i = begin; i < end; ++i) {
           block->push_back(static_cast<double>(i));
           try {
-            const Values v = evaluate(designs[static_cast<std::size_t>(i)], o);
+            const Values v = evaluate(design_of(i), o);
             block->insert(block->end(), v.q.begin(), v.q.end());
           } catch (const std::exception& e) {
             block->insert(block->end(), nq, nan);
@@ -244,27 +246,29 @@ ToleranceStudy mechanism_tolerance(const MechanismDesign& design, const Toleranc
   // quantities are smooth in the dimensions, and the exact model's 1e-9 force tolerance leaves
   // ~1e-5 relative error in the derivative). Items 2k, 2k + 1; the samples follow.
   constexpr double kStep = 1e-4;
-  std::vector<MechanismDesign> designs;
-  std::vector<std::string> descriptions;
-  for (std::size_t k = 0; k < np; ++k) {
-    for (const double sign : {1.0, -1.0}) {
-      MechanismDesign x = design;
-      params[k].scale(x, 1.0 + sign * kStep);
-      designs.push_back(std::move(x));
-      descriptions.push_back(fmt::format("{} {} 1e-4", params[k].name, sign > 0 ? "+" : "-"));
-    }
-  }
   for (int s = 0; s < o.samples; ++s) {
-    MechanismDesign d = design;
     for (std::size_t k = 0; k < np; ++k) {
-      const double e = draw(spread_of(o.spread, params[k].group));
-      params[k].scale(d, 1.0 + e);
-      study.draws.push_back(e);
+      study.draws.push_back(draw(spread_of(o.spread, params[k].group)));
     }
-    designs.push_back(std::move(d));
-    descriptions.push_back(fmt::format("sample {}", s));
   }
-  const ItemResults items = analyse_items(designs, descriptions, nq, o);
+  const long sensitivity_items = 2 * static_cast<long>(np);
+  const auto design_of = [&](long i) {
+    MechanismDesign x = design;
+    if (i < sensitivity_items) {
+      params[i / 2].scale(x, i % 2 == 0 ? 1.0 + kStep : 1.0 - kStep);
+      return x;
+    }
+    const std::size_t row = static_cast<std::size_t>(i - sensitivity_items) * np;
+    for (std::size_t k = 0; k < np; ++k) params[k].scale(x, 1.0 + study.draws[row + k]);
+    return x;
+  };
+  const auto describe = [&](long i) {
+    return i < sensitivity_items
+               ? fmt::format("{} {} 1e-4", params[i / 2].name, i % 2 == 0 ? "+" : "-")
+               : fmt::format("sample {}", i - sensitivity_items);
+  };
+  const ItemResults items =
+      analyse_items(sensitivity_items + o.samples, design_of, describe, nq, o);
   study.mpi_ranks = parallel::world().size();
   study.parameter_sensitivity.assign(nq * np, 0.0);
   for (std::size_t k = 0; k < np; ++k) {
