@@ -15,8 +15,9 @@
 // by theta2 about pivot 1, coupler along theta3 from pivot 2, slider translated by -Delta x). The
 // deformed flexures are drawn in the PRBM's pseudo-rigid approximation: each flexure as the two
 // pseudo-rigid pieces that meet at its characteristic pivot (a polyline of three points); the
-// exact elastica shapes are added on request by mechanism_exact_geometry.h (drawings). An inverted design (inversion.h) is drawn in its original orientation.
-// Units: SI (m) throughout; writers convert.
+// exact elastica shapes are added on request by mechanism_exact_geometry.h (drawings). An inverted
+// design (inversion.h) is drawn in its original orientation. Units: SI (m) throughout; writers
+// convert.
 #include <array>
 #include <string>
 #include <vector>
