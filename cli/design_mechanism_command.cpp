@@ -20,6 +20,7 @@
 #include "flexure/mechanisms/design/mechanism_synthesis.h"
 #include "flexure/mechanisms/force_of.h"
 #include "flexure/mechanisms/material_library.h"
+#include "flexure/mechanisms/mechanism_exact_geometry.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/quantity.h"
 
@@ -445,8 +446,16 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
   // The drawing of the design that --out writes (the refined one with --model exact).
   const mechanism::MechanismDesign& drawn = refined ? refined->design : r.designs.front().design;
   if (!args.drawing.empty() && (!refinement_failed || args.allow_infeasible)) {
-    io::write_mechanism_drawing(
-        args.drawing, mechanism::mechanism_geometry(drawn), io::DrawingOptions{}, "--drawing");
+    // The end of the stroke with the exact model's bent flexures, as `mechanism draw` draws it.
+    mechanism::MechanismGeometry g = mechanism::mechanism_geometry(drawn);
+    const std::string why_not = mechanism::add_exact_stroke_end(g, drawn);
+    if (!why_not.empty()) {
+      warn(
+          fmt::format("--drawing: the end of the stroke is drawn with the PRBM's pseudo-rigid "
+                      "flexures ({})",
+                      why_not));
+    }
+    io::write_mechanism_drawing(args.drawing, g, io::DrawingOptions{}, "--drawing");
   }
   if (refinement_failed) {
     // The answer asked for (the design refined against the exact model) misses the

@@ -5,7 +5,8 @@
 //                    [--stroke-percent 40] [--preload-percent 1] [--samples 1024]
 //                    [--friction C1,C2,C3] [--axial-alpha RAD] [--spring-rule RULE]
 //                    [--force-of whole|half]
-//                    [--zero-slider-mass | --zero-inertia] [--history W1,W2,...] [--json]
+//                    [--zero-slider-mass | --zero-inertia] [--history W1,W2,...]
+//                    [--csv FILE.csv] [--json]
 //   flexure dynamics --list [--json]
 //
 // Per frequency: mean, median, min, max and peak-to-peak input force (N; of the whole symmetric
@@ -22,6 +23,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/csv_output.h"
 #include "cli/slow_progress.h"
 #include "flexure/benchmarks/studies/dynamics_study.h"
 #include "flexure/benchmarks/studies/dynamics_study_file.h"
@@ -46,6 +48,7 @@ struct DynamicsArgs {
   std::string mechanism;
   std::string omega;
   std::string out;
+  std::string csv;
   double stroke_percent = 40.0;
   CLI::Option* stroke_option = nullptr;
   std::string spring_rule;
@@ -110,8 +113,10 @@ void run_dynamics(const DynamicsArgs& args) {
   }
   if (args.mechanism.empty()) throw InvalidInput("--mechanism is required (see --list)");
   if (args.omega.empty()) throw InvalidInput("--omega START:STOP:COUNT is required");
-  // Without --out nothing is written: the results are printed (all of them with --json).
+  // Without --out (or --csv) nothing is written: the results are printed (all of them with
+  // --json). --out FILE.csv, or --csv without --out, writes the frequency table as CSV only.
   if (!args.out.empty()) io::check_output_path(args.out);
+  const CsvOutput csv(args.out, args.csv);
   const Range range = parse_range(args.omega, "--omega (rad/s)", 1'000'000);
   require_in_range(range.start, "--omega START (rad/s)", 0.0, 1e6);
   require_in_range(range.stop, "--omega STOP (rad/s)", 0.0, 1e6);
@@ -151,13 +156,15 @@ void run_dynamics(const DynamicsArgs& args) {
   // Open the output first: an unwritable path fails before any work (exit 2).
   std::optional<DynamicsStudyFile> output;
   try {
-    if (!args.out.empty()) output.emplace(args.out);
+    if (!csv.hdf5_path().empty()) output.emplace(csv.hdf5_path());
   } catch (const InvalidInput& e) {
     throw InvalidInput(fmt::format("--out {}: {}", args.out, e.what()));
   }
   const DynamicsStudy study = run_dynamics_study(d, o);
   if (!study.converged()) throw NoConvergence(study.message);
   if (output) output->write(study);
+  // The frequency table: one row per omega (the force histories of /history are left out).
+  csv.write({"omega"}, {"history"});
 
   const double F_nom = study.static_nominal_force;
   const double F_nom_paper = study.paper_nominal_force.value_or(0.0);
@@ -187,6 +194,7 @@ void run_dynamics(const DynamicsArgs& args) {
     print_json(
         Json{{"mechanism", d.name},
              {"out", args.out.empty() ? Json(nullptr) : Json(args.out)},
+             {"csv", csv.wanted() ? Json(csv.csv_path()) : Json(nullptr)},
              {"force_of", force_of_label},
              {"spring_rule", d.spring_rule ? Json(*d.spring_rule) : Json(nullptr)},
              {"spring_constants", d.k},
@@ -232,7 +240,8 @@ void run_dynamics(const DynamicsArgs& args) {
                  s.peak_to_peak,
                  s.percent_constant_force);
     }
-    if (output) fmt::print("written to {}\n", args.out);
+    if (output && csv.hdf5_path() == args.out) fmt::print("written to {}\n", args.out);
+    if (csv.wanted()) fmt::print("table written to {}\n", csv.csv_path());
   }
 }
 
@@ -248,7 +257,11 @@ void register_dynamics_command(CLI::App& app) {
                   "with a [dynamics] table (masses)");
   cmd->add_option("--omega", args->omega, "Drive frequencies START:STOP:COUNT, rad/s");
   cmd->add_option(
-      "--out", args->out, "Output HDF5 file (written atomically); without it nothing is written");
+      "--out",
+      args->out,
+      "Output HDF5 file (written atomically), or FILE.csv for the frequency table as CSV only; "
+      "without it (and --csv) nothing is written");
+  add_csv_option(cmd, args->csv);
   args->stroke_option =
       cmd->add_option("--stroke-percent",
                       args->stroke_percent,

@@ -845,7 +845,8 @@ void print_validation(int points,
                       bool json,
                       const std::string& set,
                       const std::string& spring_rule,
-                      const std::string& out) {
+                      const std::string& out,
+                      const std::string& csv_path) {
   std::string table =
       "| Mechanism | Exact model | Xi' PRBM % | Xi' exact % | Xi' error (points) | max force "
       "error % | at Delta x / stroke % | PRBM validity limit (Delta x / stroke %) | SF | chain "
@@ -855,13 +856,15 @@ void print_validation(int points,
   const auto n = static_cast<hsize_t>(designs.size());
   // --out: created before any design is analysed (a wrong path fails at once); under mpirun every
   // rank writes the designs it analysed into the one file (docs/scaling.md).
+  // --csv (or --out FILE.csv): the table of the file as CSV, one row per design (cli/csv_output.h).
   std::unique_ptr<io::AtomicHdf5File> file;
   std::vector<io::Hdf5Dataset> columns;
   std::optional<io::Hdf5Dataset> status;
-  if (!out.empty()) {
-    io::check_output_path(out);
+  if (!out.empty()) io::check_output_path(out);
+  const CsvOutput csv(out, csv_path);
+  if (!csv.hdf5_path().empty()) {
     try {
-      file = std::make_unique<io::AtomicHdf5File>(out, io::Hdf5Access::kCollective);
+      file = std::make_unique<io::AtomicHdf5File>(csv.hdf5_path(), io::Hdf5Access::kCollective);
     } catch (const io::Hdf5Error& e) {
       throw InvalidInput(fmt::format("--out: {}", e.what()));
     }
@@ -941,6 +944,7 @@ void print_validation(int points,
     columns.clear();
     status.reset();
     file->commit();
+    csv.write({"name"});
   }
   if (!parallel::world().root()) return;
   if (json) {
@@ -1329,6 +1333,8 @@ void register_mechanism_command(CLI::App& app) {
   // `mechanism tolerance`: the sampled study of benchmarks/studies/mechanism_tolerance.h.
   struct ToleranceArgs {
     std::string what, thickness, width, length, E, distribution = "normal", method = "exact", out;
+    std::string force_of = "half";
+    CLI::Option* force_of_option = nullptr;
     int samples = 100, points = 50;
     std::uint64_t seed = 1;
     bool json = false;
@@ -1361,7 +1367,18 @@ void register_mechanism_command(CLI::App& app) {
       ->transform(CLI::IsMember({"prbm", "exact"}, CLI::ignore_case));
   tolerance->add_option("--points", targs->points, "Stroke points of each analysis")
       ->default_str("50");
-  tolerance->add_option("--out", targs->out, "Write the samples and statistics to this HDF5 file");
+  targs->force_of_option =
+      tolerance
+          ->add_option("--force-of",
+                       targs->force_of,
+                       "Mean forces of one half of the symmetric mechanism or of the whole (= 2 x "
+                       "half), as mechanism analyze reports; default half, or the design file's "
+                       "force_of")
+          ->default_str("half");
+  tolerance->add_option("--out",
+                        targs->out,
+                        "Write the samples and statistics to this HDF5 file (one file under "
+                        "mpirun)");
   tolerance->add_flag("--json", targs->json, "Print one JSON object");
   tolerance->callback([targs] {
     const auto spread = [](const std::string& text, const char* flag) {
@@ -1391,6 +1408,9 @@ void register_mechanism_command(CLI::App& app) {
     o.validate();
     if (!targs->out.empty()) io::check_output_path(targs->out);
     const MechanismDesign d = resolve(targs->what);
+    // A design file's force_of (written by `flexure design mechanism`) unless --force-of is given.
+    o.force_of =
+        *targs->force_of_option || !d.force_of ? parse_force_of(targs->force_of) : *d.force_of;
     const ToleranceStudy s = mechanism_tolerance(d, o);
     if (s.failed_samples > 0) {
       warn(fmt::format("{} of {} samples could not be analysed and are left out (first: {})",
@@ -1398,7 +1418,8 @@ void register_mechanism_command(CLI::App& app) {
                        o.samples,
                        s.first_failure));
     }
-    if (!targs->out.empty()) {
+    // Every rank holds the whole study (mechanism_tolerance.h); rank 0 writes the file.
+    if (!targs->out.empty() && parallel::world().root()) {
       io::AtomicHdf5File file(targs->out);
       write_tolerance_file(file.root(), s);
       file.commit();
@@ -1410,6 +1431,7 @@ void register_mechanism_command(CLI::App& app) {
              {"distribution", spread_distribution_name(o.distribution)},
              {"seed", o.seed},
              {"method", o.exact ? "exact" : "prbm"},
+             {"force_of", force_of_label(o.force_of)},
              {"spread",
               Json{{"thickness", o.spread.thickness},
                    {"width", o.spread.width},
@@ -1436,7 +1458,8 @@ void register_mechanism_command(CLI::App& app) {
       return;
     }
     std::cout << fmt::format(
-        "{}: {} samples ({}), spreads thickness {:g} %, width {:g} %, length {:g} %, E {:g} %{}\n",
+        "{}: {} samples ({}), spreads thickness {:g} %, width {:g} %, length {:g} %, E {:g} "
+        "%{}; forces of {}\n",
         s.design,
         o.samples,
         spread_distribution_name(o.distribution),
@@ -1444,7 +1467,8 @@ void register_mechanism_command(CLI::App& app) {
         100 * o.spread.width,
         100 * o.spread.length,
         100 * o.spread.E,
-        s.failed_samples > 0 ? fmt::format(" ({} failed)", s.failed_samples) : "");
+        s.failed_samples > 0 ? fmt::format(" ({} failed)", s.failed_samples) : "",
+        force_of_label(o.force_of));
     std::cout << fmt::format(
         "  {:<30} {:>11} {:>11} {:>10} {:>11} {:>11} {:>10}   dQ/d(rel): "
         "thickness width length E\n",
@@ -1483,6 +1507,7 @@ void register_mechanism_command(CLI::App& app) {
     std::string spring_rule;
     bool spring_rules = false;
     std::string out;
+    std::string csv;
   };
   auto vargs = std::make_shared<ValidateArgs>();
   CLI::App* validate = mech.add_subcommand(
@@ -1506,7 +1531,13 @@ void register_mechanism_command(CLI::App& app) {
   CLI::Option* out_opt = validate->add_option(
       "--out",
       vargs->out,
-      "Also write the table to this HDF5 file (docs/hdf5-schema.md; one file under mpirun)");
+      "Also write the table to this HDF5 file (docs/hdf5-schema.md; one file under mpirun), or "
+      "to FILE.csv as CSV only");
+  CLI::Option* csv_opt = validate->add_option(
+      "--csv",
+      vargs->csv,
+      "Also write the table as CSV, one row per design (a header line of names and [units]; "
+      "docs/cli.md \"CSV output\")");
   CLI::Option* designs_opt =
       validate
           ->add_option("--designs",
@@ -1522,7 +1553,8 @@ void register_mechanism_command(CLI::App& app) {
   spring_rules_opt->excludes(toggle_opt)
       ->excludes(spring_rule_opt)
       ->excludes(designs_opt)
-      ->excludes(out_opt);
+      ->excludes(out_opt)
+      ->excludes(csv_opt);
   validate->callback([vargs] {
     require_in_range(vargs->points, "--points", 2, 100000);
     if (vargs->toggle_fraction) {
@@ -1549,7 +1581,8 @@ void register_mechanism_command(CLI::App& app) {
                      vargs->json,
                      vargs->designs,
                      vargs->spring_rule,
-                     vargs->out);
+                     vargs->out,
+                     vargs->csv);
   });
 }
 

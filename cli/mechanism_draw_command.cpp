@@ -13,6 +13,7 @@
 #include "flexure/io/mechanism_toml.h"
 #include "flexure/io/output_path.h"
 #include "flexure/mechanisms/mechanism.h"
+#include "flexure/mechanisms/mechanism_exact_geometry.h"
 #include "flexure/mechanisms/mechanism_geometry.h"
 
 namespace flexure::cli {
@@ -24,6 +25,7 @@ void register_mechanism_draw_command(CLI::App& app) {
     std::string what;
     std::string out;
     std::string stroke_end = "on";
+    std::string deformed = "exact";
     std::string unit = "mm";
     bool json = false;
   };
@@ -40,6 +42,12 @@ void register_mechanism_draw_command(CLI::App& app) {
   draw->add_option("--stroke-end", args->stroke_end, "Draw the end of the stroke too: on or off")
       ->default_str("on")
       ->transform(CLI::IsMember({"on", "off"}, CLI::ignore_case));
+  draw->add_option("--deformed",
+                   args->deformed,
+                   "Shapes at the end of the stroke: exact (the exact model's bent flexures; PRBM "
+                   "where the configuration has no exact model) or prbm (pseudo-rigid polylines)")
+      ->default_str("exact")
+      ->transform(CLI::IsMember({"exact", "prbm"}, CLI::ignore_case));
   draw->add_option("--unit", args->unit, "Length unit of the text output (mm, in, ...)")
       ->default_str("mm");
   draw->add_flag("--json", args->json, "Print one JSON object");
@@ -55,10 +63,20 @@ void register_mechanism_draw_command(CLI::App& app) {
     } else {
       d = mechanism::find_builtin_mechanism(args->what);
     }
-    const mechanism::MechanismGeometry g = mechanism::mechanism_geometry(d);
+    mechanism::MechanismGeometry g = mechanism::mechanism_geometry(d);
     const std::string text = geometry_text(g, args->unit);  // checks --unit before writing
     io::DrawingOptions options;
     options.stroke_end = args->stroke_end == "on";
+    if (options.stroke_end && args->deformed == "exact") {
+      const std::string why_not = mechanism::add_exact_stroke_end(g, d);
+      if (!why_not.empty()) {
+        warn(
+            fmt::format("{}: the end of the stroke is drawn with the PRBM's pseudo-rigid "
+                        "flexures ({})",
+                        d.name,
+                        why_not));
+      }
+    }
     io::write_mechanism_drawing(args->out, g, options);
     const auto dims = io::principal_dimensions(g);
     if (args->json) {
@@ -68,6 +86,8 @@ void register_mechanism_draw_command(CLI::App& app) {
                {"out", args->out},
                {"format", io::drawing_format(args->out) == io::DrawingFormat::kSvg ? "svg" : "dxf"},
                {"stroke_end", options.stroke_end},
+               {"deformed_model",
+                !options.stroke_end ? Json(nullptr) : Json(g.exact_stroke_end ? "exact" : "prbm")},
                {"units", "SI: m, rad"},
                {"dimensions", dimensions_json(dims)},
                {"geometry", geometry_json(g)}});

@@ -46,12 +46,13 @@ void check_mpi_launch(int argc, char** argv) {
   const std::string command = words.size() > 1 ? words[0] + " " + words[1] : words[0];
   const bool divides = command == "sweep beam" || command == "map cfm" ||
                        (command == "design cfm" && all_subclasses) ||
-                       (command == "mechanism validate" && !spring_rules);
+                       (command == "mechanism validate" && !spring_rules) ||
+                       command == "mechanism tolerance";
   if (!divides) {
     throw InvalidInput(fmt::format(
         "'flexure {}{}' does not divide its work over MPI ranks, and mpirun started {} copies; run "
         "it without mpirun. Under mpirun: sweep beam, map cfm, design cfm --all-subclasses, "
-        "mechanism validate without --spring-rules (docs/scaling.md)",
+        "mechanism validate without --spring-rules, mechanism tolerance (docs/scaling.md)",
         command,
         spring_rules && command == "mechanism validate" ? " --spring-rules" : "",
         ranks));

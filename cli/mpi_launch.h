@@ -5,7 +5,7 @@ namespace flexure::cli {
 
 // Throws InvalidInput when mpirun started several copies of a command that does not divide its
 // work (each copy would run it whole), or of a tool built without MPI. The commands that do:
-// sweep beam, map cfm, design cfm --all-subclasses, mechanism validate.
+// sweep beam, map cfm, design cfm --all-subclasses, mechanism validate, mechanism tolerance.
 void check_mpi_launch(int argc, char** argv);
 
 // Ranks other than 0 print nothing on stdout (rank 0 prints the run's report); their stderr stays

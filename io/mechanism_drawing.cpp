@@ -101,19 +101,30 @@ Drawing build_drawing(const MechanismGeometry& g, const DrawingOptions& options)
     d.lines.push_back({"SLIDER", {{guide_from, y}, {guide_to, y}}, false, "guide", 0.0});
   }
   if (options.stroke_end) {
+    // The exact model's bent shapes where they were added (mechanism_exact_geometry.h), else the
+    // PRBM's pseudo-rigid polylines.
+    const bool exact = g.exact_stroke_end;
     for (const auto& link : g.links) {
-      d.lines.push_back(
-          {"DEFORMED", {link.stroke_end_start, link.stroke_end_end}, false, "deformed", 0.0});
+      d.lines.push_back({"DEFORMED",
+                         {exact ? link.exact_end_start : link.stroke_end_start,
+                          exact ? link.exact_end_end : link.stroke_end_end},
+                         false,
+                         "deformed",
+                         0.0});
     }
     for (const auto& f : g.flexures) {
       d.lines.push_back({"DEFORMED",
-                         {f.stroke_end.begin(), f.stroke_end.end()},
+                         exact
+                             ? f.stroke_end_exact
+                             : std::vector<GeometryPoint>(f.stroke_end.begin(), f.stroke_end.end()),
                          false,
                          "deformed-flexure",
                          f.thickness});
     }
     for (const auto& p : g.pivots) {
-      if (p.type == PivotType::kPin) d.circles.push_back({"DEFORMED", p.stroke_end, pin_radius});
+      if (p.type == PivotType::kPin) {
+        d.circles.push_back({"DEFORMED", exact ? p.exact_end : p.stroke_end, pin_radius});
+      }
     }
     d.lines.push_back({"DEFORMED", slider_block(xe), true, "deformed", 0.0});
   }
@@ -185,9 +196,10 @@ std::vector<std::string> notes(const MechanismGeometry& g, const DrawingOptions&
       "flexures: outline = real length x real thickness h (b = out-of-plane width); rigid links "
       "drawn as centrelines (their section is the designer's choice, stiff against the flexures)"};
   if (options.stroke_end) {
-    n.push_back(fmt::format("end of stroke (dashed): theta2 = {} deg; {}",
-                            num(g.theta2_end * 180.0 / M_PI),
-                            g.deformed_model));
+    n.push_back(g.exact_stroke_end ? fmt::format("end of stroke (dashed): {}", g.exact_model)
+                                   : fmt::format("end of stroke (dashed): theta2 = {} deg; {}",
+                                                 num(g.theta2_end * 180.0 / M_PI),
+                                                 g.deformed_model));
   }
   if (g.inverted) {
     n.push_back(

@@ -5,8 +5,9 @@
 // cutters. Layers: LINKS (rigid link centrelines), FLEXURES (each flexure's outline, its real
 // length by its real thickness, at rest), PINS (pin joints as circles), SLIDER (slider block and
 // its guide), GROUND (the ground body's face), DIMENSIONS (principal dimensions: dimension lines
-// and text), DEFORMED (the end of the stroke: flexures as PRBM pseudo-rigid polylines, links,
-// slider) and, in the SVG, NOTES. docs/drawings.md.
+// and text), DEFORMED (the end of the stroke: the exact model's bent flexures and its links where
+// MechanismGeometry::exact_stroke_end (mechanisms/mechanism_exact_geometry.h), else the flexures
+// as PRBM pseudo-rigid polylines; the slider) and, in the SVG, NOTES. docs/drawings.md.
 #include <string>
 #include <vector>
 

@@ -14,9 +14,10 @@
 // pivot 3 at (r2 + r3 - Delta x, 0). Each rigid body moves rigidly (ground fixed, crank turned
 // by theta2 about pivot 1, coupler along theta3 from pivot 2, slider translated by -Delta x). The
 // deformed flexures are drawn in the PRBM's pseudo-rigid approximation: each flexure as the two
-// pseudo-rigid pieces that meet at its characteristic pivot (a polyline of three points), not the
-// exact elastica shape. An inverted design (inversion.h) is drawn in its original orientation.
-// Units: SI (m) throughout; writers convert.
+// pseudo-rigid pieces that meet at its characteristic pivot (a polyline of three points); the
+// exact elastica shapes are added on request by mechanism_exact_geometry.h (drawings). An inverted
+// design (inversion.h) is drawn in its original orientation. Units: SI (m) throughout; writers
+// convert.
 #include <array>
 #include <string>
 #include <vector>
@@ -43,6 +44,9 @@ struct FlexureGeometry {
   // pivot, rest_end's image. The two pieces keep their lengths (|pivot - start| + |end - pivot|
   // = length).
   std::array<GeometryPoint, 3> stroke_end{};
+  // The exact model's bent centreline at the end of the stroke (mechanism_exact_geometry.h), from
+  // rest_start's image to rest_end's image; empty where it was not computed.
+  std::vector<GeometryPoint> stroke_end_exact;
 };
 
 // One rigid link piece (what remains of r2 or r3 after the flexures; absent when an l segment is
@@ -52,6 +56,8 @@ struct RigidLinkGeometry {
   double length = 0.0;  // m
   GeometryPoint rest_start, rest_end;
   GeometryPoint stroke_end_start, stroke_end_end;
+  // The exact model's position of the same ends (valid when MechanismGeometry::exact_stroke_end).
+  GeometryPoint exact_end_start, exact_end_end;
 };
 
 // One PRB pivot (characteristic pivot of a flexure, or a real pin joint).
@@ -60,6 +66,7 @@ struct PivotGeometry {
   PivotType type = PivotType::kPin;
   GeometryPoint rest;
   GeometryPoint stroke_end;
+  GeometryPoint exact_end;  // the exact model's (valid when MechanismGeometry::exact_stroke_end)
 };
 
 struct MechanismGeometry {
@@ -82,6 +89,10 @@ struct MechanismGeometry {
   double overall_length() const { return slider_attach_x_rest - ground_attach_x; }
   // The model that placed the deformed flexures (for a drawing's notes).
   std::string deformed_model;
+  // Whether the exact model's shapes at the end of the stroke were added (the fields *_exact,
+  // exact_end_*; mechanism_exact_geometry.h); the drawing then draws those.
+  bool exact_stroke_end = false;
+  std::string exact_model;  // what placed them (for a drawing's notes)
 };
 
 // The geometry of a finalised design (MechanismDesign::finalise()). Throws InvalidInput for a

@@ -4,11 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <random>
 #include <span>
 
+#include "flexure/io/parallel/mpi_world.h"
+#include "flexure/io/parallel/work_distribution.h"
 #include "flexure/io/provenance.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/errors.h"
@@ -69,7 +73,8 @@ Values evaluate(MechanismDesign d, const ToleranceOptions& o) {
   ao.points = o.points;
   ao.exact = o.exact;
   ao.stability = false;
-  const MechanismAnalysis a = analyze_mechanism(d, ao);
+  MechanismAnalysis a = analyze_mechanism(d, ao);
+  report_forces_of(a, o.force_of);
   Values v;
   v.q = {a.prbm.mean_force, a.prbm.percent_constant_force, a.safety_factor};
   if (o.exact) {
@@ -91,6 +96,82 @@ double percentile(const std::vector<double>& sorted, double p) {
   const std::size_t lo = static_cast<std::size_t>(std::floor(h));
   const std::size_t hi = std::min(lo + 1, sorted.size() - 1);
   return sorted[lo] + (h - lo) * (sorted[hi] - sorted[lo]);
+}
+
+// Every rank gets rank 0's `values` (the same size on every rank), bit for bit.
+void broadcast_values(std::vector<double>& values) {
+  const parallel::World& world = parallel::world();
+  if (!world.parallel()) return;
+  std::string bytes(values.size() * sizeof(double), '\0');
+  if (world.root()) std::memcpy(bytes.data(), values.data(), bytes.size());
+  bytes = world.broadcast(bytes);
+  std::memcpy(values.data(), bytes.data(), bytes.size());
+}
+
+// The analyses of the study, items [0, total): item 2k and 2k + 1 the design with parameter k
+// scaled by 1 + step and 1 - step (the central differences), item 2 np + s sample s. Divided over
+// the MPI ranks (one item per block: each is a whole mechanism analysis, like a design of
+// `mechanism validate`); on return every rank holds every item's quantities (NaN where it failed)
+// and reason of failure ("" where it did not), in item order.
+struct ItemResults {
+  std::vector<double> values;         // total x nq, row-major
+  std::vector<std::string> failures;  // per item
+};
+
+// `design_of(i)` makes item i's design (called on any thread: it reads shared data only), and
+// `describe(i)` names it in a failure message.
+ItemResults analyse_items(long total,
+                          const std::function<MechanismDesign(long)>& design_of,
+                          const std::function<std::string(long)>& describe,
+                          std::size_t nq,
+                          const ToleranceOptions& o) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // This rank's items: index, then its nq quantities; failures as (index, reason) pairs.
+  std::vector<double> mine;
+  std::vector<std::string> my_failures;
+  parallel::DistributionOptions distribution;
+  distribution.max_block = 1;
+  distribution.describe = describe;
+  parallel::distribute(
+      total,
+      [&](long begin, long end) -> parallel::BlockWriter {
+        auto block = std::make_shared<std::vector<double>>();
+        auto failed = std::make_shared<std::vector<std::string>>();
+        for (long i = begin; i < end; ++i) {
+          block->push_back(static_cast<double>(i));
+          try {
+            const Values v = evaluate(design_of(i), o);
+            block->insert(block->end(), v.q.begin(), v.q.end());
+          } catch (const std::exception& e) {
+            block->insert(block->end(), nq, nan);
+            failed->insert(failed->end(), {std::to_string(i), e.what()});
+          }
+        }
+        return [&, block, failed] {
+          mine.insert(mine.end(), block->begin(), block->end());
+          my_failures.insert(my_failures.end(), failed->begin(), failed->end());
+        };
+      },
+      distribution);
+  const parallel::World& world = parallel::world();
+  const std::vector<double> all = world.gather(mine);
+  const std::vector<std::string> all_failures = world.gather(my_failures);
+  ItemResults r;
+  r.values.assign(static_cast<std::size_t>(total) * nq, nan);
+  r.failures.assign(static_cast<std::size_t>(total), std::string());
+  for (std::size_t k = 0; k + nq < all.size(); k += nq + 1) {
+    const auto i = static_cast<std::size_t>(all[k]);
+    std::copy(all.begin() + k + 1, all.begin() + k + 1 + nq, r.values.begin() + i * nq);
+  }
+  for (std::size_t k = 0; k + 1 < all_failures.size(); k += 2) {
+    r.failures[std::stoul(all_failures[k])] = all_failures[k + 1];
+  }
+  broadcast_values(r.values);
+  // The reasons (few: one per failed analysis), in item order.
+  if (world.parallel()) {
+    for (std::string& reason : r.failures) reason = world.broadcast(reason);
+  }
+  return r;
 }
 
 }  // namespace
@@ -147,21 +228,8 @@ ToleranceStudy mechanism_tolerance(const MechanismDesign& design, const Toleranc
     }
   }();
   const std::size_t nq = names.size(), np = params.size();
-  // First-order sensitivities: central differences in each relative change (step 1e-4; the
-  // quantities are smooth in the dimensions, and the exact model's 1e-9 force tolerance leaves
-  // ~1e-5 relative error in the derivative).
-  study.parameter_sensitivity.assign(nq * np, 0.0);
-  constexpr double kStep = 1e-4;
-  for (std::size_t k = 0; k < np; ++k) {
-    MechanismDesign up = design, down = design;
-    params[k].scale(up, 1.0 + kStep);
-    params[k].scale(down, 1.0 - kStep);
-    const Values vu = evaluate(up, o), vd = evaluate(down, o);
-    for (std::size_t i = 0; i < nq; ++i) {
-      study.parameter_sensitivity[i * np + k] = (vu.q[i] - vd.q[i]) / (2.0 * kStep);
-    }
-  }
-  // The samples.
+  // The draws, all made up front from the one seeded stream (sample by sample, parameter by
+  // parameter), so that a sample's design does not depend on which rank analyses it.
   std::mt19937_64 rng(o.seed);
   std::normal_distribution<double> normal(0.0, 1.0);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
@@ -174,6 +242,51 @@ ToleranceStudy mechanism_tolerance(const MechanismDesign& design, const Toleranc
     } while (std::abs(z) > 3.5);  // no dimension at or below zero (spread < 0.3)
     return spread * z;
   };
+  // First-order sensitivities: central differences in each relative change (step 1e-4; the
+  // quantities are smooth in the dimensions, and the exact model's 1e-9 force tolerance leaves
+  // ~1e-5 relative error in the derivative). Items 2k, 2k + 1; the samples follow.
+  constexpr double kStep = 1e-4;
+  for (int s = 0; s < o.samples; ++s) {
+    for (std::size_t k = 0; k < np; ++k) {
+      study.draws.push_back(draw(spread_of(o.spread, params[k].group)));
+    }
+  }
+  const long sensitivity_items = 2 * static_cast<long>(np);
+  const auto design_of = [&](long i) {
+    MechanismDesign x = design;
+    if (i < sensitivity_items) {
+      params[i / 2].scale(x, i % 2 == 0 ? 1.0 + kStep : 1.0 - kStep);
+      return x;
+    }
+    const std::size_t row = static_cast<std::size_t>(i - sensitivity_items) * np;
+    for (std::size_t k = 0; k < np; ++k) params[k].scale(x, 1.0 + study.draws[row + k]);
+    return x;
+  };
+  const auto describe = [&](long i) {
+    return i < sensitivity_items
+               ? fmt::format("{} {} 1e-4", params[i / 2].name, i % 2 == 0 ? "+" : "-")
+               : fmt::format("sample {}", i - sensitivity_items);
+  };
+  const ItemResults items =
+      analyse_items(sensitivity_items + o.samples, design_of, describe, nq, o);
+  study.mpi_ranks = parallel::world().size();
+  study.parameter_sensitivity.assign(nq * np, 0.0);
+  for (std::size_t k = 0; k < np; ++k) {
+    for (const std::size_t item : {2 * k, 2 * k + 1}) {
+      if (!items.failures[item].empty()) {
+        throw NoConvergence(
+            fmt::format("{}: the design with {} {} 1e-4 (for the sensitivities): {}",
+                        design.name,
+                        params[k].name,
+                        item == 2 * k ? "+" : "-",
+                        items.failures[item]));
+      }
+    }
+    for (std::size_t i = 0; i < nq; ++i) {
+      study.parameter_sensitivity[i * np + k] =
+          (items.values[2 * k * nq + i] - items.values[(2 * k + 1) * nq + i]) / (2.0 * kStep);
+    }
+  }
   study.quantities.resize(nq);
   for (std::size_t i = 0; i < nq; ++i) {
     study.quantities[i].name = names[i].first;
@@ -181,22 +294,12 @@ ToleranceStudy mechanism_tolerance(const MechanismDesign& design, const Toleranc
     study.quantities[i].nominal = nominal.q[i];
   }
   for (int s = 0; s < o.samples; ++s) {
-    MechanismDesign d = design;
-    std::vector<double> e(np);
-    for (std::size_t k = 0; k < np; ++k) {
-      e[k] = draw(spread_of(o.spread, params[k].group));
-      params[k].scale(d, 1.0 + e[k]);
+    const std::size_t item = 2 * np + static_cast<std::size_t>(s);
+    if (!items.failures[item].empty() && study.failed_samples++ == 0) {
+      study.first_failure = fmt::format("sample {}: {}", s, items.failures[item]);
     }
-    study.draws.insert(study.draws.end(), e.begin(), e.end());
-    try {
-      const Values v = evaluate(d, o);
-      for (std::size_t i = 0; i < nq; ++i) study.quantities[i].values.push_back(v.q[i]);
-    } catch (const std::exception& ex) {
-      if (study.failed_samples++ == 0)
-        study.first_failure = fmt::format("sample {}: {}", s, ex.what());
-      for (std::size_t i = 0; i < nq; ++i) {
-        study.quantities[i].values.push_back(std::numeric_limits<double>::quiet_NaN());
-      }
+    for (std::size_t i = 0; i < nq; ++i) {
+      study.quantities[i].values.push_back(items.values[item * nq + i]);
     }
   }
   // A uniform draw on [-a, a] has standard deviation a/sqrt(3); the normal one (cut at 3.5
@@ -246,6 +349,9 @@ void write_tolerance_file(io::Hdf5Group& root, const ToleranceStudy& s) {
   root.set_attribute("samples", static_cast<std::int64_t>(o.samples));
   root.set_attribute("seed", static_cast<std::int64_t>(o.seed));
   root.set_attribute("failed_samples", static_cast<std::int64_t>(s.failed_samples));
+  // What mean_force_prbm and mean_force_exact are the force of (force_of.h), as in the JSON.
+  root.set_attribute("force_of", force_of_label(o.force_of));
+  root.set_attribute("mpi_ranks", static_cast<std::int64_t>(s.mpi_ranks));
   root.set_attribute("spread_thickness", o.spread.thickness);
   root.set_attribute("spread_width", o.spread.width);
   root.set_attribute("spread_length", o.spread.length);

@@ -8,12 +8,19 @@
 // sensitivities come from central differences at the nominal design, and with them the
 // first-order standard deviation sqrt(sum (dQ/de_k sigma_k)^2) that the sampled one approaches
 // for small spreads.
+//
+// Under mpirun (docs/scaling.md) the analyses -- the 2 x parameters of the central differences and
+// the samples, one item each -- are divided over the ranks (io/parallel/work_distribution.h); the
+// draws are made up front from the one seeded stream, every item is computed alone from the same
+// input, and the results come back to every rank in item order, so that any number of ranks gives
+// the serial study bit for bit.
 #include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "flexure/io/hdf5_file.h"
+#include "flexure/mechanisms/force_of.h"
 #include "flexure/mechanisms/mechanism.h"
 
 namespace flexure::mechanism {
@@ -36,6 +43,9 @@ struct ToleranceOptions {
   std::uint64_t seed = 1;
   bool exact = true;  // also the exact model (else PRBM only)
   int points = 50;    // stroke points of each analysis
+  // What the mean forces are the force of (force_of.h): one half, as `mechanism analyze` reports
+  // by default, or the whole symmetric mechanism (= 2 x half).
+  ForceOf force_of = ForceOf::kOneHalf;
   // Throws InvalidInput naming the field: spreads finite in [0, 0.3) (a normal draw is cut at
   // 3.5 sigma, and no dimension may go to zero), samples in [2, 100000], points in [2, 10000].
   void validate() const;
@@ -66,14 +76,15 @@ struct ToleranceStudy {
   std::vector<ToleranceStats> quantities;
   int failed_samples = 0;     // samples whose design or analysis failed (left out)
   std::string first_failure;  // the first one's reason
+  int mpi_ranks = 1;          // the ranks the analyses were divided over
 };
 
 // Throws InvalidInput for bad options or a design that cannot be analysed at its nominal values.
 ToleranceStudy mechanism_tolerance(const MechanismDesign& design, const ToleranceOptions& options);
 
 // The study as an HDF5 file (docs/hdf5-schema.md "flexure mechanism tolerance"): root attributes
-// (design, distribution, samples, seed, spreads), /parameters, /draws, and per quantity a group
-// with its values, sensitivities and statistics.
+// (design, distribution, samples, seed, spreads, force_of, mpi_ranks), /parameters, /draws, and per
+// quantity a group with its values, sensitivities and statistics.
 void write_tolerance_file(io::Hdf5Group& root, const ToleranceStudy& study);
 
 }  // namespace flexure::mechanism

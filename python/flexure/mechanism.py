@@ -105,11 +105,12 @@ def validate(*, designs=None, points=None, toggle_fraction=None, spring_rule=Non
 
 
 def tolerance(mechanism, *, thickness=None, width=None, length=None, E=None, samples=None,
-              distribution=None, seed=None, method=None, points=None, out=None):
+              distribution=None, seed=None, method=None, points=None, force_of=None, out=None):
     """Manufacturing tolerances: `flexure mechanism tolerance` (docs/tolerance.md).
 
     mechanism as for analyze; thickness, width, length, E: relative spreads ('3%' or 0.03);
-    samples, distribution ('normal' | 'uniform'), seed, method ('exact' | 'prbm'), points, out.
+    samples, distribution ('normal' | 'uniform'), seed, method ('exact' | 'prbm'), points,
+    force_of ('half' | 'whole': what the mean forces are the force of), out.
     Returns the dict `flexure mechanism tolerance --json` prints: per quantity of analyze
     (mean_force_exact, ...) {nominal, mean, std, p05, p50, p95, first_order_std, sensitivity}.
     """
@@ -118,7 +119,7 @@ def tolerance(mechanism, *, thickness=None, width=None, length=None, E=None, sam
         return _command.run(["mechanism", "tolerance"],
                             dict(thickness=thickness, width=width, length=length, E=E,
                                  samples=samples, distribution=distribution, seed=seed,
-                                 method=method, points=points, out=out),
+                                 method=method, points=points, force_of=force_of, out=out),
                             positional=[argument])
     finally:
         if temporary:

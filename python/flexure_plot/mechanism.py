@@ -132,6 +132,9 @@ def draw_tolerance(f, plt, rec):
                               "percent_constant_force_exact", "safety_factor")
                   if q + "/values" in f]
     params = [p.decode() if isinstance(p, bytes) else str(p) for p in f["parameters"][()]]
+    # Which force the mean forces are (one half or the whole symmetric mechanism); files before
+    # the attribute: one half, as mechanism analyze reported then.
+    force_of = attr(f, "force_of", "one half")
     fig, axes = plt.subplots(2, len(quantities), figsize=(4.2 * len(quantities), 8),
                              squeeze=False)
     for col, q in enumerate(quantities):
@@ -140,7 +143,10 @@ def draw_tolerance(f, plt, rec):
         scale, shown = display(g["values"])
         ax = axes[0, col]
         ok = finite(values)
-        rec.values(q, values, src=q + "/values", label=q)
+        name = _quantity_name(f, q)
+        if q.startswith("mean_force"):
+            name += f" ({force_of})"
+        rec.values(q, values, src=q + "/values", label=name)
         if len(ok):
             ax.hist(ok * scale, bins=max(5, min(40, int(math.sqrt(len(ok))) + 1)), color="C0",
                     alpha=0.7)
@@ -149,7 +155,7 @@ def draw_tolerance(f, plt, rec):
             if stat in g:
                 ax.axvline(float(g[stat][()]) * scale, color=colour, ls=ls, lw=1.3,
                            label={"p05": "p05, p95", "p95": None}.get(stat, stat))
-        ax.set_xlabel(label(_quantity_name(f, q), shown))
+        ax.set_xlabel(label(name, shown))
         ax.set_ylabel("samples")
         std = float(g["std"][()]) * scale if "std" in g else float("nan")
         fo = float(g["first_order_std"][()]) * scale if "first_order_std" in g else float("nan")
@@ -168,8 +174,8 @@ def draw_tolerance(f, plt, rec):
                         ("spread_thickness", "spread_width", "spread_length", "spread_E")
                         if k in f.attrs)
     fig.suptitle(f"tolerance study of {attr(f, 'mechanism', '')}: {attr(f, 'samples', '')} "
-                 f"{attr(f, 'distribution', '')} samples ({spreads}); forces as mechanism "
-                 "analyze reports them", fontsize=11)
+                 f"{attr(f, 'distribution', '')} samples ({spreads}); forces of {force_of}",
+                 fontsize=11)
     fig.tight_layout()
     return fig
 

@@ -17,6 +17,8 @@
 #include <vector>
 
 #include "flexure/mechanisms/mechanism.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
+#include "flexure/mechanisms/mechanism_exact_geometry.h"
 #include "flexure/mechanisms/mechanism_geometry.h"
 #include "flexure/solver/common/errors.h"
 
@@ -193,8 +195,11 @@ dims = [{'name': t.get('data-name'), 'value': float(t.get('data-value-mm')), 'te
         for t in groups['DIMENSIONS'].iter(ns + 'text')]
 polys = [[[float(v) for v in p.split(',')] for p in e.get('points').split()]
          for e in groups['FLEXURES'].iter(ns + 'polygon')]
+deformed = {c: [[[float(v) for v in p.split(',')] for p in e.get('points').split()]
+                for e in groups['DEFORMED'].iter(ns + 'polyline') if e.get('class') == c]
+            for c in ('deformed-flexure', 'deformed')} if 'DEFORMED' in groups else {}
 print(json.dumps({'root': root.tag, 'viewBox': root.get('viewBox'), 'groups': sorted(groups),
-                  'dimensions': dims, 'flexures': polys}))
+                  'dimensions': dims, 'flexures': polys, 'deformed': deformed}))
 )PY";
 
 nlohmann::json parse_svg(const fs::path& svg, const fs::path& dir) {
@@ -253,6 +258,81 @@ TEST_P(Drawings, StrokeEndOffLeavesOutTheDeformedLayer) {
   off.stroke_end = false;
   EXPECT_EQ(mechanism_svg(g, off).find("id=\"DEFORMED\""), std::string::npos);
   EXPECT_NE(mechanism_svg(g, DrawingOptions{}).find("id=\"DEFORMED\""), std::string::npos);
+}
+
+// The end of the stroke drawn with the exact model's bent flexures (mechanisms/
+// mechanism_exact_geometry.h), parsed back from the SVG (y is down there): the drawn centrelines
+// end where the exact model's chains end -- their tips as the shooting solver's own integration of
+// the solved point gives them (not the re-integration at the drawing's stations), to 1e-9 mm --
+// and start at the ground attachment; a serial chain closes on the slider joint (to the solver's
+// closure tolerance); every drawn flexure keeps its real length (a polyline of 101 points on a
+// smooth curve: shorter by O(h^2), < 1e-4).
+TEST_P(Drawings, ExactStrokeEndShapesMatchTheExactModelsTips) {
+  const MechanismDesign d = mechanism::find_builtin_mechanism(GetParam());
+  mechanism::AnalysisOptions o;
+  o.points = 50;
+  o.stability = false;
+  o.exact_stress = false;
+  const mechanism::MechanismAnalysis a = mechanism::analyze_mechanism(d, o);
+  ASSERT_TRUE(a.has_exact && a.exact.converged()) << a.exact.message;
+  const mechanism::ExactPoint& end = a.exact.points.back();
+  auto g = mechanism::mechanism_geometry(d);
+  mechanism::add_exact_stroke_end(g, d, end);
+  ASSERT_TRUE(g.exact_stroke_end);
+  Scratch s;
+  const fs::path path = s.dir / "exact.svg";
+  write_mechanism_drawing(path.string(), g, DrawingOptions{});
+  const nlohmann::json j = parse_svg(path, s.dir);
+  const auto& drawn = j["deformed"]["deformed-flexure"];
+  ASSERT_EQ(drawn.size(), g.flexures.size());
+  // Every end point of a drawn flexure or link, mm, y up.
+  std::vector<std::pair<double, double>> ends;
+  for (const char* cls : {"deformed-flexure", "deformed"}) {
+    for (const auto& line : j["deformed"][cls]) {
+      ends.push_back({line.front()[0].get<double>(), -line.front()[1].get<double>()});
+      ends.push_back({line.back()[0].get<double>(), -line.back()[1].get<double>()});
+    }
+  }
+  const auto nearest = [&](double x, double y) {
+    double best = 1e300;
+    for (const auto& [ex, ey] : ends) best = std::min(best, std::hypot(ex - x, ey - y));
+    return best;
+  };
+  const double L = end.length_scale * 1e3;  // mm
+  const mechanism::PhysicalChain pc = mechanism::physical_chain(d);
+  const double slider_x = (g.ground_attach_x + pc.slider_x0 - d.stroke) * 1e3;
+  const ShootingSolver solver(mechanism::ExactMechanismSolver::Options{}.shooting);
+  const ShootingResult crank = solver.solve_from(end.chain, end.unknowns);
+  ASSERT_TRUE(crank.converged()) << crank.message;
+  const double tip_x = g.ground_attach_x * 1e3 + L * crank.tip.x, tip_y = L * crank.tip.y;
+  EXPECT_LT(nearest(tip_x, tip_y), 1e-9) << "chain tip (" << tip_x << ", " << tip_y << ") mm";
+  EXPECT_LT(nearest(g.ground_attach_x * 1e3, 0.0), 1e-12) << "ground attachment";
+  if (!end.coupler_chain.segments.empty()) {
+    // The middle-pin coupler chain, rooted at the displaced slider clamp, turned by pi.
+    const ShootingResult coupler = solver.solve_from(end.coupler_chain, end.coupler_unknowns);
+    ASSERT_TRUE(coupler.converged()) << coupler.message;
+    const double cx = slider_x - L * coupler.tip.x, cy = -L * coupler.tip.y;
+    EXPECT_LT(nearest(cx, cy), 1e-9) << "coupler chain tip";
+    EXPECT_LT(nearest(slider_x, 0.0), 1e-12) << "slider clamp";
+    EXPECT_LT(std::hypot(cx - tip_x, cy - tip_y), 1e-6) << "the pin closes";
+  }
+  if (mechanism::exact_support(d) == mechanism::ExactSupport::kDirectChain) {
+    EXPECT_LT(std::hypot(tip_x - slider_x, tip_y), 1e-6) << "the chain closes on the slider";
+    const auto& last = drawn.back().back();
+    EXPECT_LT(std::hypot(last[0].get<double>() - tip_x, -last[1].get<double>() - tip_y), 1e-9);
+  }
+  for (std::size_t i = 0; i < g.flexures.size(); ++i) {
+    double length = 0.0;
+    for (std::size_t k = 1; k < drawn[i].size(); ++k) {
+      length += std::hypot(drawn[i][k][0].get<double>() - drawn[i][k - 1][0].get<double>(),
+                           drawn[i][k][1].get<double>() - drawn[i][k - 1][1].get<double>());
+    }
+    const double real = g.flexures[i].length * 1e3;
+    EXPECT_LE(length, real * (1 + 1e-12)) << "flexure " << g.flexures[i].pivot;
+    EXPECT_GT(length, real * (1 - 1e-4)) << "flexure " << g.flexures[i].pivot;
+    // Bent: the exact shape is not the PRBM's three-point polyline.
+    EXPECT_GT(drawn[i].size(), 3u);
+  }
 }
 
 // One design of each kind of pivot layout: s everywhere, an l at the ground, an l in the middle

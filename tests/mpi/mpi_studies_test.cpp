@@ -231,6 +231,19 @@ TEST(MpiStudies, MechanismValidateAllIsTheSerialTableAndReport) {
   expect_ranks_agree("mechanism validate --designs all --json", 0, {}, true);
 }
 
+TEST(MpiStudies, MechanismToleranceIsTheSerialFile) {
+  // The central differences and the samples divided over the ranks (one analysis per item); the
+  // draws made up front from the one seed: the file and the JSON report of 2 and 3 ranks are the
+  // serial ones, bit for bit. 2 x 5 + 12 = 22 items, every rank computing some.
+  expect_ranks_agree(
+      "mechanism tolerance 1A-lpp --samples 12 --thickness 3% --E 2% --force-of whole --json",
+      0,
+      {},
+      true,
+      22,
+      {2, 3});
+}
+
 TEST(MpiStudies, FailingRankEndsTheRunWithItsItemAndNoFile) {
   ScratchDir dir;
   const CommandResult r = run_flexure(

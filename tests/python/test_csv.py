@@ -152,3 +152,49 @@ def test_design_mechanism_csv_equals_the_json_designs(tmp_path):
                     [d["thicknesses"][i] if i < len(d["thicknesses"]) else None for d in designs],
                     f"thicknesses_{i + 1}")
     assert "geometry" not in t
+
+
+def test_dynamics_csv_equals_the_json(tmp_path):
+    # The frequency table, one row per omega; --csv alone writes no HDF5 file.
+    p = run(["dynamics", "--mechanism", "2B-lplm", "--omega", "1:60:5", "--samples", "64",
+             "--csv", "d.csv", "--json"], tmp_path)
+    assert p.returncode == 0, p.stderr
+    j = json.loads(p.stdout)
+    t = read_csv(tmp_path / "d.csv")
+    assert t["omega"][0] == "rad/s" and t["mean_force"][0] == "N"
+    assert t["percent_constant_force"][0] == "%"
+    for key in ("omega", "mean_force", "median_force", "min_force", "max_force",
+                "peak_to_peak_force", "percent_constant_force"):
+        exact_equal(t[key][1], j[key], key)
+    assert j["csv"] == "d.csv"
+    assert sorted(os.listdir(tmp_path)) == ["d.csv"]
+    # --out FILE.csv: the same table.
+    p = run(["dynamics", "--mechanism", "2B-lplm", "--omega", "1:60:5", "--samples", "64",
+             "--out", "o.csv"], tmp_path)
+    assert p.returncode == 0, p.stderr
+    assert (tmp_path / "o.csv").read_text() == (tmp_path / "d.csv").read_text()
+
+
+def test_mechanism_validate_csv_equals_the_json(tmp_path):
+    p = run(["mechanism", "validate", "--points", "6", "--designs", "howell", "--out", "v.h5",
+             "--csv", "v.csv", "--json"], tmp_path)
+    assert p.returncode == 0, p.stderr
+    rows = json.loads(p.stdout)["mechanisms"]
+    t = read_csv(tmp_path / "v.csv")
+    assert t["name"][1] == [r["design"]["name"] for r in rows]
+    assert t["safety_factor"][0] == "1" and t["stroke"][0] == "m"
+    exact_equal(t["percent_constant_force"][1], [r["percent_constant_force_prbm"] for r in rows],
+                "percent_constant_force")
+    exact_equal(t["safety_factor"][1], [r["safety_factor"] for r in rows], "safety_factor")
+    exact_equal(t["percent_constant_force_exact"][1],
+                [r["percent_constant_force_exact"] for r in rows], "percent_constant_force_exact")
+    # The table's tip error is relative to r2 (docs/hdf5-schema.md); the JSON's in m.
+    np.testing.assert_allclose(
+        t["chain_check_tip_error"][1],
+        [r["chain_check_tip_error"] / r["design"]["r2"] for r in rows], rtol=1e-14)
+    with h5py.File(tmp_path / "v.h5", "r") as f:
+        for key in ("percent_constant_force", "max_force_error", "stroke", "status"):
+            exact_equal(t[key][1], f[key][()], key)
+    # --spring-rules has no table file: --csv with it is refused.
+    p = run(["mechanism", "validate", "--spring-rules", "--csv", "x.csv"], tmp_path)
+    assert p.returncode == 2 and not (tmp_path / "x.csv").exists()

@@ -234,3 +234,27 @@ def test_the_installed_tool_finds_the_installed_module(files, tmp_path):
                         str(out)], capture_output=True, text=True, timeout=120)
     assert p.returncode == 0, p.stderr
     assert_valid_png(out)
+
+
+def test_tolerance_plot_states_which_force(files, tmp_path):
+    # The file says which force its mean forces are (force_of), and the figure's label says it.
+    p = run(["mechanism", "tolerance", "1A-lpp", "--method", "prbm", "--samples", "12",
+             "--thickness", "3%", "--force-of", "whole", "--out", str(tmp_path / "w.h5")])
+    assert p.returncode == 0, p.stderr
+    dump = tmp_path / "w.json"
+    assert run(["plot", str(tmp_path / "w.h5"), "--out", str(tmp_path / "w.png"),
+                "--dump-json", str(dump)]).returncode == 0
+    series = {s["panel"]: s for s in json.loads(dump.read_text())["series"]}
+    assert "whole symmetric mechanism" in series["mean_force_prbm"]["label"]
+    assert "mechanism" not in series["safety_factor"]["label"]
+    with h5py.File(tmp_path / "w.h5", "r") as w, h5py.File(files / "tolerance.h5", "r") as h:
+        assert w.attrs["force_of"] in ("whole symmetric mechanism", b"whole symmetric mechanism")
+        assert h.attrs["force_of"] in ("one half", b"one half")
+        # The same seeded samples: the whole mechanism's forces are twice the half's, exactly.
+        np.testing.assert_array_equal(w["mean_force_prbm/values"][()],
+                                      2 * h["mean_force_prbm/values"][()])
+    dump = tmp_path / "h.json"
+    assert run(["plot", str(files / "tolerance.h5"), "--out", str(tmp_path / "h.png"),
+                "--dump-json", str(dump)]).returncode == 0
+    series = {s["panel"]: s for s in json.loads(dump.read_text())["series"]}
+    assert "one half" in series["mean_force_prbm"]["label"]

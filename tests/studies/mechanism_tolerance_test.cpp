@@ -125,3 +125,42 @@ TEST(MechanismTolerance, SeedReproducesAndBadOptionsAreRefused) {
 
 }  // namespace
 }  // namespace flexure::mechanism
+
+namespace flexure::mechanism {
+namespace {
+
+// force_of: the whole symmetric mechanism is two halves in parallel (force_of.h), so every sampled
+// mean force, its statistics and sensitivities are exactly twice the half's (a factor of 2 is
+// exact in floating point); the percent constant force and the safety factor do not change. The
+// nominal half force is the one `mechanism analyze` reports, computed here independently.
+TEST(MechanismTolerance, WholeMechanismForcesAreTwiceTheHalfAndRatiosUnchanged) {
+  const MechanismDesign d = find_builtin_mechanism("1A-lpp");
+  ToleranceOptions o = small(0.02);
+  o.samples = 8;
+  o.exact = true;
+  const ToleranceStudy half = mechanism_tolerance(d, o);
+  o.force_of = ForceOf::kWholeMechanism;
+  const ToleranceStudy whole = mechanism_tolerance(d, o);
+  AnalysisOptions ao;
+  ao.points = o.points;
+  ao.stability = false;
+  const MechanismAnalysis a = analyze_mechanism(d, ao);
+  ASSERT_EQ(half.quantities.size(), 5u);
+  for (std::size_t i = 0; i < half.quantities.size(); ++i) {
+    const ToleranceStats& h = half.quantities[i];
+    const ToleranceStats& w = whole.quantities[i];
+    const double factor = h.name.rfind("mean_force", 0) == 0 ? 2.0 : 1.0;
+    EXPECT_EQ(w.nominal, factor * h.nominal) << h.name;
+    EXPECT_EQ(w.mean, factor * h.mean) << h.name;
+    EXPECT_EQ(w.std, factor * h.std) << h.name;
+    EXPECT_EQ(w.p95, factor * h.p95) << h.name;
+    for (std::size_t k = 0; k < h.values.size(); ++k) {
+      EXPECT_EQ(w.values[k], factor * h.values[k]) << h.name << " sample " << k;
+    }
+    if (h.name == "mean_force_prbm") EXPECT_EQ(h.nominal, a.prbm.mean_force);
+    if (h.name == "mean_force_exact") EXPECT_EQ(h.nominal, a.mean_force_exact);
+  }
+}
+
+}  // namespace
+}  // namespace flexure::mechanism
