@@ -87,7 +87,7 @@ MechanismGeometry mechanism_geometry(const MechanismDesign& d) {
 
   const std::array<double, 3> X{0.0, d.r2, r_tot};
   const std::array<GeometryPoint, 3> P_end{GeometryPoint{0.0, 0.0}, pl.p2, {r_tot - d.stroke, 0.0}};
-  for (int p = 0; p < 3; ++p) g.pivots[p] = {p + 1, j[p].type, {X[p], 0.0}, P_end[p]};
+  for (int p = 0; p < 3; ++p) g.pivots[p] = {p + 1, j[p].type, {X[p], 0.0}, P_end[p], {}};
 
   // Each flexure as (start x, start body, end x, end body) along the rest line.
   const double back = long_segment_pivot();
@@ -162,7 +162,9 @@ MechanismGeometry mechanism_geometry(const MechanismDesign& d) {
                        {crank_a, 0.0},
                        {crank_b, 0.0},
                        pl.map(Body::kCrank, crank_a),
-                       pl.map(Body::kCrank, crank_b)});
+                       pl.map(Body::kCrank, crank_b),
+                       {},
+                       {}});
   }
   if (coupler_rigid && coupler_b > coupler_a) {
     g.links.push_back({3,
@@ -170,7 +172,9 @@ MechanismGeometry mechanism_geometry(const MechanismDesign& d) {
                        {coupler_a, 0.0},
                        {coupler_b, 0.0},
                        pl.map(Body::kCoupler, coupler_a),
-                       pl.map(Body::kCoupler, coupler_b)});
+                       pl.map(Body::kCoupler, coupler_b),
+                       {},
+                       {}});
   }
   return g;
 }

@@ -68,8 +68,8 @@ double boundary_residual(const ChainGeometry& g, const ConstrainedTip& tip, doub
 
 // One constrained iteration (the header's formulas). Returns false when an element buckled.
 struct Step {
-  ChainGeometry image;  // x'
-  Eigen::Vector3d z;    // z'
+  ChainGeometry image;                          // x'
+  Eigen::Vector3d z = Eigen::Vector3d::Zero();  // z'
   int failed_element = -1;
   int passes = 0;
 };
