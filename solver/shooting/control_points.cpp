@@ -246,8 +246,12 @@ std::vector<ForcePoint> locate_force_points(const ShootingProblem& problem,
     if (!maximum && !minimum) continue;
     const ForcePointKind kind = maximum ? ForcePointKind::kMaximum : ForcePointKind::kMinimum;
     if (pts[i - 1].branch != pts[i + 1].branch) {
-      // The path switched branch at point i (a bifurcation): the force has a corner there.
-      found.push_back({static_cast<double>(i), from_sample(kind, pts[i], i, coordinate, true)});
+      // The path switched branch at point i (a bifurcation): the force has a corner there. A
+      // one-way restart past a fold (shooting_solver.cpp) joins two parts at a point just apart
+      // (1e-6 of the travel or more): no extremum is read from that junction.
+      if (pts[i].status == PathStatus::kBifurcation) {
+        found.push_back({static_cast<double>(i), from_sample(kind, pts[i], i, coordinate, true)});
+      }
       continue;
     }
     const double sign = maximum ? 1.0 : -1.0;

@@ -500,8 +500,13 @@ void ShootingSolver::go_on_past_folds(const SegmentChain& chain,
     }
     moved.special_points = std::move(specials);
     std::vector<ForcePoint> forces;
+    // An extremum read from the chords at the fold was made with the samples after it (the path
+    // going back): only those wholly before the fold's last chord stay.
     for (const ForcePoint& f : moved.force_points) {
-      if (f.index_before + 1 < keep) forces.push_back(f);
+      if (f.index_before + 1 < at.index ||
+          (f.kind == ForcePointKind::kZero && f.index_before + 1 == at.index)) {
+        forces.push_back(f);
+      }
     }
     moved.force_points = std::move(forces);
     for (SpecialPoint& sp : moved.special_points) sp.switched = sp.switched || sp.index == at.index;

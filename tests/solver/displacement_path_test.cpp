@@ -135,6 +135,9 @@ TEST(DisplacementPath, InclinedBistableBeamForceChangesSignTwice) {
   }
   // The pushed shuttle (moved to -y): the pushing force -Fy is positive, then negative between
   // the zeros (it pulls: the beam snaps on its own), then positive past the second stable state.
+  // The first zero: both ends at the same height (y = 0), where the beam is point-symmetric
+  // about its midpoint and the transverse force vanishes exactly.
+  EXPECT_NEAR(zeros[0]->coordinate, 0.0, 1e-12);
   // slope = dFy/dy = d(-Fy)/d(push): negative at the first zero (unstable when released), positive
   // at the second (the second stable position).
   EXPECT_LT(zeros[0]->slope, 0.0);
