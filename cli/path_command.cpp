@@ -420,7 +420,7 @@ void run_path(const PathArgs& args) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_path_file(output->root(), t);
   output->commit();
-  csv.write({"load_factor"}, {"special_points", "shapes"});
+  csv.write({"load_factor"}, {"special_points", "force_points", "shapes"});
   // With --shapes, the XDMF sidecar that ParaView opens (io/shapes_xdmf.h); not for a hidden
   // temporary HDF5 file (--out FILE.csv, or --csv alone), which is removed.
   const std::string xdmf =
