@@ -57,6 +57,7 @@ struct PathArgs {
   int branch = 0;
   std::string branch_side = "positive";
   std::string control = "load";
+  bool one_way = false;  // --one-way: go on past a fold of the moved coordinate
   int shapes = 0;
   CLI::Option* shapes_option = nullptr;
   std::string stability = "on";  // --stability on|off: the verdict of every point
@@ -224,6 +225,11 @@ PathRequest make_request(const PathArgs& args) {
     const double scale =
         coordinate == TipCoordinate::kTheta || !physical ? 1.0 : 1.0 / request.units.length;
     request.control = DisplacementControl{coordinate, *target * scale};
+    request.control->one_way = args.one_way;
+  } else if (args.one_way) {
+    throw InvalidInput(
+        "--one-way moves a tip coordinate one way (displacement control): give --control "
+        "tip-x|tip-y|tip-angle");
   }
 
   request.method = args.method == "chain" ? PathMethod::kChain : PathMethod::kShooting;
@@ -269,6 +275,27 @@ Json special_point_json(const PathSpecialPoint& p) {
               {"branch", p.branch},
               {"located", p.located},
               {"switched", p.switched}};
+}
+
+Json force_point_json(const PathForcePoint& p) {
+  return Json{{"kind", p.kind},
+              {"load_factor", p.load_factor},
+              {"coordinate", p.coordinate},
+              {"force", p.force},
+              {"slope", std::isfinite(p.slope) ? Json(p.slope) : Json(nullptr)},
+              {"index_before", maybe_index(p.index_before)},
+              {"tip_x", p.tip_x},
+              {"tip_y", p.tip_y},
+              {"tip_theta", p.tip_theta},
+              {"reaction_Fx", p.reaction_Fx},
+              {"reaction_Fy", p.reaction_Fy},
+              {"reaction_M", p.reaction_M},
+              {"tip_Fx", p.tip_Fx},
+              {"tip_Fy", p.tip_Fy},
+              {"tip_M", p.tip_M},
+              {"stage", p.stage},
+              {"branch", p.branch},
+              {"located", p.located}};
 }
 
 // The verdict of every point as columns (null where not judged) and its stretches.
@@ -346,6 +373,27 @@ void print_text(const PathTable& t, const PathArgs& args) {
         Nm,
         p.switched ? "; the path left here onto the other branch" : "");
   }
+  const bool angle = t.control == "tip-angle";
+  for (const PathForcePoint& p : t.force_points) {
+    const char* cu = angle ? " rad" : m;
+    const char* fu = angle ? Nm : N;
+    fmt::print("  {} of the {} load at {} = {:.10g}{} (load factor {:.10g}{}): {} = {:.8g}{}{}\n",
+               p.kind == "force_zero"      ? "zero crossing"
+               : p.kind == "force_maximum" ? "maximum"
+                                           : "minimum",
+               angle ? "tip-angle" : t.control,
+               t.control,
+               p.coordinate + 0.0,
+               cu,
+               p.load_factor,
+               p.located ? "" : ", not located",
+               angle ? "tip M" : (t.control == "tip-x" ? "tip Fx" : "tip Fy"),
+               p.force + 0.0,
+               fu,
+               p.kind == "force_zero" && std::isfinite(p.slope)
+                   ? fmt::format(", slope {:.6g}", p.slope)
+                   : std::string());
+  }
   const std::vector<StabilityStretch> stretches = t.stability_stretches();
   if (!stretches.empty()) {
     fmt::print("  stability {}:\n", stability_control_words(t));
@@ -372,7 +420,7 @@ void run_path(const PathArgs& args) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_path_file(output->root(), t);
   output->commit();
-  csv.write({"load_factor"}, {"special_points", "shapes"});
+  csv.write({"load_factor"}, {"special_points", "force_points", "shapes"});
   // With --shapes, the XDMF sidecar that ParaView opens (io/shapes_xdmf.h); not for a hidden
   // temporary HDF5 file (--out FILE.csv, or --csv alone), which is removed.
   const std::string xdmf =
@@ -397,6 +445,21 @@ void run_path(const PathArgs& args) {
     out["bifurcation_points"] = t.bifurcation_points;
     out["bifurcations"] = special_points_json(t, "bifurcation");
     out["limit_point_list"] = special_points_json(t, "limit_point");
+    // Displacement control: the force-displacement curve's zeros and extrema (null under load
+    // control).
+    if (t.control == "load") {
+      out["force_points"] = nullptr;
+      out["force_zero_crossings"] = nullptr;
+    } else {
+      Json list = Json::array();
+      int zeros = 0;
+      for (const PathForcePoint& p : t.force_points) {
+        list.push_back(force_point_json(p));
+        zeros += p.kind == "force_zero" ? 1 : 0;
+      }
+      out["force_points"] = std::move(list);
+      out["force_zero_crossings"] = zeros;
+    }
     out["branch"] = args.branch;
     out["switched_branch"] = t.switched_branch;
     out["steps"] = t.steps;
@@ -490,6 +553,11 @@ void register_path_command(CLI::App& app) {
                    "control), the loads applied first")
       ->default_str("load")
       ->transform(CLI::IsMember({"load", "tip-x", "tip-y", "tip-angle"}, CLI::ignore_case));
+  path->add_flag("--one-way",
+                 args->one_way,
+                 "With --control: move the coordinate one way, as an experiment does: where the "
+                 "path folds back at a point where another equilibrium goes on (a buckled branch "
+                 "rejoining the unbuckled one), go on along that one to the target");
   args->shapes_option =
       path->add_option("--shapes",
                        args->shapes,

@@ -46,6 +46,30 @@ PathSpecialPoint to_table(const SpecialPoint& sp, const PathUnits& u) {
   return out;
 }
 
+PathForcePoint to_table(const ForcePoint& f, const PathUnits& u, TipCoordinate coordinate) {
+  const bool angle = coordinate == TipCoordinate::kTheta;
+  PathForcePoint out;
+  out.kind = to_string(f.kind);
+  out.load_factor = f.lambda;
+  out.coordinate = f.coordinate * (angle ? 1.0 : u.length);
+  out.force = f.force * (angle ? u.moment : u.force);
+  out.slope = f.slope * (angle ? u.moment : u.force / u.length);
+  out.tip_x = f.tip.x * u.length;
+  out.tip_y = f.tip.y * u.length;
+  out.tip_theta = f.tip.theta;
+  out.reaction_Fx = f.reaction.Fx * u.force;
+  out.reaction_Fy = f.reaction.Fy * u.force;
+  out.reaction_M = f.reaction.M * u.moment;
+  out.tip_Fx = f.tip_load.Fx * u.force;
+  out.tip_Fy = f.tip_load.Fy * u.force;
+  out.tip_M = f.tip_load.M * u.moment;
+  out.index_before = f.index_before;
+  out.stage = f.stage;
+  out.branch = f.branch;
+  out.located = f.located;
+  return out;
+}
+
 // What a bifurcation passed means for the state on the path. Under dead loads the unloaded chain
 // is stable and each simple bifurcation crossed changes the number of unstable directions of the
 // state on the path (negative eigenvalues of the second variation) by one, as det(dg/dz) changes
@@ -153,6 +177,11 @@ PathTable shooting_table(const PathRequest& r) {
             : not_checked_stability("the verdict was switched off (--stability off)"));
   }
   for (const SpecialPoint& sp : path.special_points) t.special_points.push_back(to_table(sp, u));
+  if (r.control) {
+    for (const ForcePoint& f : path.force_points) {
+      t.force_points.push_back(to_table(f, u, r.control->coordinate));
+    }
+  }
   t.completed = path.converged();
   t.lambda_reached = path.lambda_reached;
   t.limit_points = path.limit_points;
@@ -388,6 +417,76 @@ const std::vector<io::CodeMeaning>& path_code_meanings() {
   return codes;
 }
 
+namespace {
+
+// /force_points of a displacement-controlled path (docs/hdf5-schema.md "flexure path").
+void write_force_points(io::Hdf5Group& root, const PathTable& t) {
+  const PathUnits& u = t.units;
+  const bool angle = t.control == "tip-angle";
+  const std::string scaled = u.system == "nondimensional" ? " (nondimensional: l = 1, EI = 1)" : "";
+  const std::string coordinate_unit = angle ? "rad" : u.length_unit;
+  const std::string force_unit = angle ? u.moment_unit : u.force_unit;
+  io::Hdf5Group g = root.create_group("force_points");
+  std::vector<std::string> kind;
+  std::vector<double> lambda, c, f, slope, x, y, theta, rfx, rfy, rm, tfx, tfy, tm;
+  std::vector<int> index, stage, branch, located;
+  for (const PathForcePoint& p : t.force_points) {
+    kind.push_back(p.kind);
+    lambda.push_back(p.load_factor);
+    c.push_back(p.coordinate);
+    f.push_back(p.force);
+    slope.push_back(p.slope);
+    x.push_back(p.tip_x);
+    y.push_back(p.tip_y);
+    theta.push_back(p.tip_theta);
+    rfx.push_back(p.reaction_Fx);
+    rfy.push_back(p.reaction_Fy);
+    rm.push_back(p.reaction_M);
+    tfx.push_back(p.tip_Fx);
+    tfy.push_back(p.tip_Fy);
+    tm.push_back(p.tip_M);
+    index.push_back(p.index_before);
+    stage.push_back(p.stage);
+    branch.push_back(p.branch);
+    located.push_back(p.located ? 1 : 0);
+  }
+  g.write_dataset("kind",
+                  kind,
+                  "text",
+                  "force_zero (the support's load on the moved coordinate crosses zero: an "
+                  "equilibrium with that coordinate free), force_maximum or force_minimum (a "
+                  "local extremum along the path: a limit point under force control)");
+  g.write_dataset("load_factor", lambda, "1", "path parameter (fraction of the travel moved)");
+  g.write_dataset("coordinate", c, coordinate_unit, "the moved coordinate (" + t.control + ")");
+  g.write_dataset(
+      "force", f, force_unit, "the support's load on the moved coordinate (0 at a zero)" + scaled);
+  g.write_dataset("slope",
+                  slope,
+                  force_unit + " / " + coordinate_unit,
+                  "at a zero: d force / d coordinate along the path (> 0 with a stable "
+                  "displacement-controlled state: a stable equilibrium with the coordinate "
+                  "free); 0 at an extremum; NaN not computed");
+  g.write_dataset("tip_x", x, u.length_unit, "tip x at the point" + scaled);
+  g.write_dataset("tip_y", y, u.length_unit, "tip y at the point" + scaled);
+  g.write_dataset("tip_theta", theta, "rad", "tip angle at the point");
+  g.write_dataset("reaction_Fx", rfx, u.force_unit, "x force the clamp exerts" + scaled);
+  g.write_dataset("reaction_Fy", rfy, u.force_unit, "y force the clamp exerts" + scaled);
+  g.write_dataset("reaction_M", rm, u.moment_unit, "moment the clamp exerts" + scaled);
+  g.write_dataset("tip_Fx", tfx, u.force_unit, "total x force on the tip" + scaled);
+  g.write_dataset("tip_Fy", tfy, u.force_unit, "total y force on the tip" + scaled);
+  g.write_dataset("tip_M", tm, u.moment_unit, "total moment on the tip" + scaled);
+  g.write_dataset("index_before", index, "1", "row of the path datasets before the point");
+  g.write_dataset("stage", stage, "1", "stage of the path (dataset /stage)");
+  g.write_dataset("branch", branch, "1", "branch on which it lies (dataset /branch)");
+  g.write_dataset("located",
+                  located,
+                  "1",
+                  "1 located on the path (or a sampled corner at a bifurcation), 0 the refinement "
+                  "failed: the nearest path point");
+}
+
+}  // namespace
+
 void write_path_file(io::Hdf5Group& root, const PathTable& t) {
   const PathUnits& u = t.units;
   const bool nondimensional = u.system == "nondimensional";
@@ -513,6 +612,8 @@ void write_path_file(io::Hdf5Group& root, const PathTable& t) {
   sp.write_dataset("located", located, "1", "1 located, 0 not refined (root status_meanings)");
   sp.write_dataset(
       "switched", switched, "1", "1 where the path left onto the other branch (--branch)");
+
+  if (t.control != "load") write_force_points(root, t);
 
   if (t.shape_points > 0) {
     io::Hdf5Group shapes = root.create_group("shapes");

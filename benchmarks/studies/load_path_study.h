@@ -77,6 +77,23 @@ struct PathSpecialPoint {
   bool switched = false;  // the path left here onto the other branch
 };
 
+// A zero or extremum of the support's force on the moved coordinate of a displacement-controlled
+// path (ForcePoint, control_points.h), in the units of the table.
+struct PathForcePoint {
+  std::string kind;          // "force_zero", "force_maximum" or "force_minimum"
+  double load_factor = 0.0;  // path parameter (fraction moved)
+  double coordinate = 0.0;   // the moved coordinate (length unit, or rad)
+  double force = 0.0;        // the support's load on it (force unit, or moment unit)
+  double slope = 0.0;        // at a zero: d force / d coordinate (NaN: not computed); else 0
+  double tip_x = 0.0, tip_y = 0.0, tip_theta = 0.0;
+  double reaction_Fx = 0.0, reaction_Fy = 0.0, reaction_M = 0.0;
+  double tip_Fx = 0.0, tip_Fy = 0.0, tip_M = 0.0;
+  int index_before = -1;  // the path row before it
+  int stage = 1;
+  int branch = 0;
+  bool located = true;
+};
+
 // Consecutive path points with one verdict (the same kind and index): where the state on the
 // path is stable, unstable, critical (a located limit or bifurcation point) or not judged.
 struct StabilityStretch {
@@ -96,6 +113,8 @@ struct PathTable {
   std::vector<int> stage;   // 1, or the stage of a staged path
   std::vector<int> branch;  // 0 on the path from zero load; k after switching
   std::vector<PathSpecialPoint> special_points;
+  // Displacement control: zeros and extrema of the force on the moved coordinate, in path order.
+  std::vector<PathForcePoint> force_points;
   // The verdict of each point under the path's control (PathRequest::judge_stability).
   std::vector<Stability> stability;
   // Shapes (shape_points > 0): rows = path points, columns = shape points, row-major.

@@ -236,6 +236,7 @@ PathPoint PathTracer::make_point(const ShootingEvaluation& eval,
   p.status = status;
   p.branch = branch_;
   p.held = problem_.mask();
+  p.z = z;
   if (o_.shape_points > 1) {
     const double total = problem_.chain().total_length();
     std::vector<double> s(o_.shape_points);

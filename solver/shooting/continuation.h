@@ -97,6 +97,8 @@ struct PathPoint {
   PrescribedMask held;
   std::vector<ShapePoint> shape;  // ContinuationOptions::shape_points > 1: the deflected shape
   std::vector<double> moment;     // bending moment at each shape point (statics, same units)
+  Eigen::VectorXd z;  // unknowns at the point (of its stage's ShootingProblem); the force points
+                      // of a displacement-controlled path are located from them (control_points.h)
 };
 
 // A located fold of the load factor (limit point) or simple bifurcation point on the path.
@@ -119,6 +121,33 @@ struct SpecialPoint {
   Eigen::VectorXd z;      // unknowns at the point (of the stage's ShootingProblem)
 };
 
+// A point of the force-displacement curve of a displacement-controlled path (control_points.h):
+// where the support's load conjugate to the moved coordinate (the force on tip-x or tip-y, the
+// moment on tip-angle) crosses zero (an equilibrium of the structure with that coordinate free and
+// unloaded) or has a local extremum along the path (a limit point under force control: a
+// force-controlled experiment snaps there).
+enum class ForcePointKind { kZero, kMaximum, kMinimum };
+const char* to_string(ForcePointKind kind);  // "force_zero", "force_maximum", "force_minimum"
+
+struct ForcePoint {
+  ForcePointKind kind = ForcePointKind::kZero;
+  double lambda = 0.0;      // path parameter (fraction moved in the moving stage)
+  double coordinate = 0.0;  // the moved coordinate (root frame; rad for tip-angle)
+  double force = 0.0;       // the support's load on it (tip load component; 0 at a zero)
+  // At a zero: d force / d coordinate along the path (the stiffness the free coordinate sees;
+  // > 0 with a stable displacement-controlled state: a stable equilibrium of the free structure);
+  // at an extremum: 0 by definition (reported as 0).
+  double slope = 0.0;
+  ChainPose tip;
+  Reaction reaction;      // loads the clamp applies to the chain
+  Reaction tip_load;      // total load on the tip
+  int index_before = -1;  // the path point before it (LoadPath::points); at a sampled corner
+                          // (a bifurcation or fold point that is itself the extremum) that point
+  int stage = 1;
+  int branch = 0;
+  bool located = true;  // false: the refinement failed; the nearest path point is reported
+};
+
 struct LoadPath : SolveStatus {
   // converged(): reached lambda = 1
   bool singular_start = false;  // dg/dz singular at lambda = 0: the path starts at a bifurcation
@@ -133,7 +162,10 @@ struct LoadPath : SolveStatus {
   double first_limit_load_factor = 0.0;      // load factor at the first turning point (located)
   int bifurcation_points = 0;                // simple bifurcation points crossed (or switched at)
   std::vector<SpecialPoint> special_points;  // in path order, folds and bifurcations
-  bool switched_branch = false;              // the path left onto a bifurcated branch
+  // Displacement control only (ShootingSolver::controlled_path): the zero crossings and the
+  // extrema of the support's force on the moved coordinate, located (control_points.h).
+  std::vector<ForcePoint> force_points;
+  bool switched_branch = false;  // the path left onto a bifurcated branch
   std::vector<PathPoint> points;
   Eigen::VectorXd z;    // unknowns at the last accepted point
   double lambda = 0.0;  // load factor at the last accepted point

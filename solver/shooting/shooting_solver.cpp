@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/shooting/control_points.h"
 #include "flexure/solver/shooting/inflection_count.h"
 
 namespace flexure {
@@ -396,6 +397,182 @@ void require_controlled_reach(const SegmentChain& chain,
 
 }  // namespace
 
+// One-way displacement control (DisplacementControl::one_way; docs/paths.md): where the moving
+// stage's path folds back (a located limit point of the path parameter, the largest reached so
+// far), an experiment cannot follow it; if an equilibrium lies next to the fold just beyond it
+// (the buckled branch rejoining the unbuckled one at a bifurcation, where the fold and the
+// bifurcation coincide), the path goes on from there to the target: the part after the fold is
+// dropped and a new continuation, from that equilibrium at lambda_f + 1e-6, appended with its
+// parameter mapped back onto the travel. Otherwise the path stops at the fold (a snap to an
+// equilibrium not connected to it), saying so.
+void ShootingSolver::go_on_past_folds(const SegmentChain& chain,
+                                      const Homotopy& moving,
+                                      const ShootingProblem& problem,
+                                      ElasticaIntegrator& integrator,
+                                      const ContinuationOptions& copt,
+                                      TipCoordinate coordinate,
+                                      LoadPath& moved) const {
+  constexpr double kBeyond = 1e-6;  // of the travel, past the fold
+  const ChainPose start = *moving.tip_start, target = *moving.tip_target;
+  auto pose_at = [&](double lambda) {
+    return ChainPose{start.x + lambda * (target.x - start.x),
+                     start.y + lambda * (target.y - start.y),
+                     start.theta + lambda * (target.theta - start.theta)};
+  };
+  std::optional<ShootingProblem> current;  // the problem of the last part (problem at first)
+  double offset = 0.0;                     // the last part's lambda = offset + (1 - offset) lambda'
+  for (int restart = 0; restart < 8 && !moved.converged(); ++restart) {
+    // The first located fold at the largest lambda reached before it.
+    const SpecialPoint* fold = nullptr;
+    for (const SpecialPoint& sp : moved.special_points) {
+      if (sp.kind != SpecialPointKind::kLimitPoint || !sp.located || sp.index < 0) continue;
+      double before = 0.0;
+      for (int i = 0; i < sp.index; ++i) before = std::max(before, moved.points[i].lambda);
+      if (sp.lambda >= before) {
+        fold = &sp;
+        break;
+      }
+    }
+    // Or, where the path stopped short of a fold it could not pass (steps shrinking at a
+    // pitchfork met from its bifurcated side), its point farthest along.
+    struct Turn {
+      double lambda = 0.0;
+      Eigen::VectorXd z;
+      ChainPose tip;
+      int index = -1;
+    } at;
+    if (fold != nullptr) {
+      at = Turn{fold->lambda, fold->z, fold->tip, fold->index};
+    } else {
+      for (int i = 0; i < static_cast<int>(moved.points.size()); ++i) {
+        const PathPoint& q = moved.points[i];
+        if (q.lambda >= at.lambda && q.z.size() > 0) at = Turn{q.lambda, q.z, q.tip, i};
+      }
+      if (at.index <= 0) return;
+    }
+    const ShootingProblem& p = current ? *current : problem;
+    // lambda of the part's own problem at the turn; Newton at fixed lambda just beyond it (a
+    // little farther when the turn is a stop short of the fold).
+    const double own = (at.lambda - offset) / (1.0 - offset);
+    Eigen::VectorXd z;
+    double lambda1 = own;
+    NewtonOutcome nw;
+    bool near = false;
+    // From the turn itself, or (a located fold is a singular point, where Newton's first step
+    // is ill-determined) from the path point before it.
+    std::vector<const Eigen::VectorXd*> starts = {&at.z};
+    if (at.index > 0 && moved.points[at.index - 1].z.size() == at.z.size()) {
+      starts.push_back(&moved.points[at.index - 1].z);
+    }
+    for (double beyond = kBeyond; beyond <= 1e-3 && !near; beyond *= 10.0) {
+      for (const Eigen::VectorXd* from : starts) {
+        if (near) break;
+        z = *from;
+        lambda1 = own + beyond / (1.0 - offset);
+        nw = newton_solve(p, integrator, options_.newton, z, lambda1);
+        near = nw.converged() &&
+               std::hypot(nw.last.tip.x - at.tip.x, nw.last.tip.y - at.tip.y) <=
+                   options_.max_neighbour_jump * chain.total_length() &&
+               std::fabs(nw.last.tip.theta - at.tip.theta) <= options_.max_neighbour_jump;
+      }
+    }
+    const std::string where = fmt::format("the path {} at {} = {:.9g} (load factor {:.9g})",
+                                          fold != nullptr ? "folds back" : "stopped",
+                                          to_string(coordinate),
+                                          coordinate_value(at.tip, coordinate),
+                                          at.lambda);
+    if (!near) {
+      moved.message = fmt::format(
+          "{}; {}: no equilibrium next to it beyond the fold (under displacement control the "
+          "structure snaps there to an equilibrium not connected to this path)",
+          moved.message,
+          where);
+      return;
+    }
+    // Drop what follows the fold.
+    const int keep = at.index + 1;
+    moved.points.resize(keep);
+    std::vector<SpecialPoint> specials;
+    for (SpecialPoint sp : moved.special_points) {
+      if (sp.index >= keep || (sp.index < 0 && sp.index_after > keep)) continue;
+      if (sp.index_after >= keep) sp.index_after = -1;
+      specials.push_back(std::move(sp));
+    }
+    moved.special_points = std::move(specials);
+    std::vector<ForcePoint> forces;
+    // An extremum read from the chords at the fold was made with the samples after it (the path
+    // going back): only those wholly before the fold's last chord stay.
+    for (const ForcePoint& f : moved.force_points) {
+      if (f.index_before + 1 < at.index ||
+          (f.kind == ForcePointKind::kZero && f.index_before + 1 == at.index)) {
+        forces.push_back(f);
+      }
+    }
+    moved.force_points = std::move(forces);
+    for (SpecialPoint& sp : moved.special_points) sp.switched = sp.switched || sp.index == at.index;
+    // The new part: from the equilibrium beyond the fold to the target.
+    const double lambda_new = offset + (1.0 - offset) * lambda1;
+    Homotopy next = moving;
+    next.tip_start = pose_at(lambda_new);
+    const ShootingProblem p2(chain, options_.multiple_shooting, next);
+    const Eigen::VectorXd z0 = z.size() == p2.size() ? z : carry_unknowns(p, z, lambda1, p2);
+    ContinuationOptions c2 = copt;
+    c2.switch_at_bifurcation = 0;
+    LoadPath part = continue_load_path(p2, integrator, c2, options_.newton, &z0);
+    int corrections = 0;
+    std::vector<ForcePoint> part_forces =
+        locate_force_points(p2, integrator, options_.newton, part, coordinate, corrections);
+    int branch = 0;
+    for (const PathPoint& q : moved.points) branch = std::max(branch, q.branch);
+    const int stage = moved.points.back().stage;
+    const int base = static_cast<int>(moved.points.size());
+    auto map = [&](double l) { return lambda_new + (1.0 - lambda_new) * l; };
+    for (PathPoint q : part.points) {
+      q.lambda = map(q.lambda);
+      q.branch = branch + 1;
+      q.stage = stage;
+      if (q.status == PathStatus::kStart) q.status = PathStatus::kAccepted;
+      moved.points.push_back(std::move(q));
+    }
+    for (SpecialPoint sp : part.special_points) {
+      sp.lambda = map(sp.lambda);
+      sp.branch = branch + 1;
+      sp.stage = stage;
+      if (sp.index >= 0) sp.index += base;
+      if (sp.index_after >= 0) sp.index_after += base;
+      moved.special_points.push_back(std::move(sp));
+    }
+    for (ForcePoint f : part_forces) {
+      f.lambda = map(f.lambda);
+      f.branch = branch + 1;
+      f.stage = stage;
+      if (f.index_before >= 0) f.index_before += base;
+      moved.force_points.push_back(std::move(f));
+    }
+    moved.limit_points = 0;
+    moved.bifurcation_points = 0;
+    for (const SpecialPoint& sp : moved.special_points) {
+      (sp.kind == SpecialPointKind::kLimitPoint ? moved.limit_points : moved.bifurcation_points)++;
+    }
+    moved.set_converged(part.converged());
+    moved.steps += part.steps;
+    moved.rejected_steps += part.rejected_steps;
+    moved.newton_iterations += part.newton_iterations + nw.iterations;
+    moved.location_corrections += part.location_corrections + corrections;
+    moved.integrator_steps += part.integrator_steps;
+    moved.z = part.z;
+    moved.residual = part.residual;
+    moved.tip = part.tip;
+    moved.tip_state = part.tip_state;
+    moved.lambda = map(part.lambda);
+    moved.lambda_reached = map(part.lambda_reached);
+    moved.message = fmt::format(
+        "{}; went on along the equilibrium next to it (one way): {}", where, part.message);
+    current.emplace(p2);
+    offset = lambda_new;
+  }
+}
+
 ShootingSolver::TwoStageRun ShootingSolver::run_two_stages(const SegmentChain& chain,
                                                            ElasticaIntegrator& integrator,
                                                            bool record_path) const {
@@ -718,6 +895,14 @@ LoadPath ShootingSolver::controlled_path(const SegmentChain& chain,
   copt.switch_at_bifurcation = remaining_switch(copt, joined);
   LoadPath moved =
       continue_load_path(problem, integrator, copt, options_.newton, loaded ? &z0 : nullptr);
+  // The zeros and extrema of the support's force on the moved coordinate (control_points.h).
+  int corrections = 0;
+  moved.force_points = locate_force_points(
+      problem, integrator, options_.newton, moved, control.coordinate, corrections);
+  moved.location_corrections += corrections;
+  if (control.one_way) {
+    go_on_past_folds(chain, moving, problem, integrator, copt, control.coordinate, moved);
+  }
   const double from = control.coordinate == TipCoordinate::kX   ? start.x
                       : control.coordinate == TipCoordinate::kY ? start.y
                                                                 : start.theta;
@@ -731,7 +916,14 @@ LoadPath ShootingSolver::controlled_path(const SegmentChain& chain,
   }
   int stage = 1;
   for (const PathPoint& p : joined.points) stage = std::max(stage, p.stage);
+  // append_stage drops the moving stage's start (stage 1's last point): indices shift by size - 1.
+  const int offset = static_cast<int>(joined.points.size()) - 1;
   append_stage(joined, moved, stage + 1);
+  joined.force_points = moved.force_points;
+  for (ForcePoint& f : joined.force_points) {
+    f.stage = stage + 1;
+    if (f.index_before >= 0) f.index_before += offset;
+  }
   joined.lambda = moved.lambda;
   joined.lambda_reached = moved.lambda_reached;
   joined.message =

@@ -92,6 +92,11 @@ const char* to_string(TipCoordinate coordinate);  // "tip-x", "tip-y", "tip-angl
 struct DisplacementControl {
   TipCoordinate coordinate = TipCoordinate::kY;
   double target = 0.0;  // the coordinate's value at the end of the path (root frame; rad)
+  // One way, as an experiment moves it: where the path folds back (a limit point of the moved
+  // coordinate) and an equilibrium lies next to the fold just beyond it (a buckled branch
+  // rejoining the unbuckled one), go on from there to the target instead of following the fold
+  // back (docs/paths.md). `flexure path --one-way`.
+  bool one_way = false;
 };
 
 // A solution at a neighbouring load to start from (ShootingSolver::solve_near): the next point of
@@ -206,6 +211,13 @@ class ShootingSolver {
   TwoStageRun run_two_stages(const SegmentChain& chain,
                              ElasticaIntegrator& integrator,
                              bool record_path) const;
+  void go_on_past_folds(const SegmentChain& chain,
+                        const Homotopy& moving,
+                        const ShootingProblem& problem,
+                        ElasticaIntegrator& integrator,
+                        const ContinuationOptions& copt,
+                        TipCoordinate coordinate,
+                        LoadPath& moved) const;
   ShootingResult solve_in_two_stages(const SegmentChain& chain,
                                      ElasticaIntegrator& integrator,
                                      ShootingResult result) const;

@@ -9,6 +9,8 @@
 //    sqrt(3), y = 2k/K: the digits below come from GSL's K and E, 1e-8);
 //  * --control tip-y on a guided end: the support force against `beam --boundary guided` at that
 //    force (tip y to 1e-9);
+//  * the inclined bistable beam (docs/examples/inclined_bistable_path.toml) with --one-way: two
+//    force zeros, the first at y = 0 (point symmetry) to 1e-12, /force_points equal to the JSON;
 //  * --shapes: the stored shape of the last point against `beam --shape`;
 //  * --min-points and --max-step; invalid input (exit 2) and a --branch that finds no
 //    bifurcation (exit 3, the file still written).
@@ -161,6 +163,47 @@ TEST(CliPath, DisplacementControlOfAGuidedEndTracesItsForce) {
   }
   // The linear stiffness 12 EI/L^3 at the first point (y ~ 0.02: relative O(y^2) below it).
   EXPECT_NEAR(Fy[1] / (12.0 * y[1]), 1.0, 2e-3);
+}
+
+TEST(CliPath, InclinedBistableBeamForcePointsInJsonAndFile) {
+  // docs/examples/inclined_bistable_path.toml moved 12 mm down, one way past the buckled
+  // branch's return: two zeros of the shuttle force; the first where both ends are level (y = 0,
+  // point symmetry: the transverse force vanishes exactly); JSON and /force_points agree.
+  test::ScratchDir dir;
+  const std::string out = (dir / "inclined.h5").string();
+  const std::string toml =
+      std::string(FLEXURE_SOURCE_DIR) + "/docs/examples/inclined_bistable_path.toml";
+  const Json j = run_json(
+      fmt::format("path --chain {} --control tip-y --tip-y -0.0052907973 --branch 1 --one-way "
+                  "--min-points 61 --out {}",
+                  toml,
+                  out));
+  EXPECT_TRUE(j["completed"].get<bool>());
+  EXPECT_EQ(j["force_zero_crossings"], 2);
+  std::vector<double> zeros;
+  for (const Json& p : j["force_points"]) {
+    EXPECT_TRUE(p["located"].get<bool>());
+    if (p["kind"] == "force_zero") zeros.push_back(p["coordinate"].get<double>());
+  }
+  ASSERT_EQ(zeros.size(), 2u);
+  EXPECT_NEAR(zeros[0], 0.0, 1e-12);
+  EXPECT_LT(zeros[1], 0.0);
+  const hid_t file = test::open_read_only(out);
+  const std::vector<double> stored = test::read_doubles(file, "force_points/coordinate");
+  const std::vector<double> force = test::read_doubles(file, "force_points/force");
+  H5Fclose(file);
+  ASSERT_EQ(stored.size(), j["force_points"].size());
+  for (std::size_t i = 0; i < stored.size(); ++i) {
+    EXPECT_EQ(stored[i], j["force_points"][i]["coordinate"].get<double>());
+    EXPECT_EQ(force[i], j["force_points"][i]["force"].get<double>());
+  }
+  // Under load control there are none; --one-way needs --control.
+  const Json load = run_json("path --alpha2 1 --out " + (dir / "load.h5").string());
+  EXPECT_TRUE(load["force_points"].is_null());
+  const test::CommandResult bad =
+      run_flexure("path --alpha2 1 --one-way --out " + (dir / "bad.h5").string());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--one-way"), std::string::npos) << bad.err;
 }
 
 TEST(CliPath, ShapesAreStoredForEveryPoint) {
