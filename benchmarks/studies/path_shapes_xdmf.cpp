@@ -20,7 +20,9 @@ std::string write_path_shapes_xdmf(const std::string& h5_path, const PathTable& 
     x.fields.push_back("axial_force");
     x.fields.push_back("shear_force");
   }
-  x.station_field = "s";
+  // Constructed, not assigned: GCC 12 warns falsely (-Wrestrict) on assigning a one-character
+  // literal.
+  x.station_field = std::string(1, 's');
   const std::string path = io::xdmf_path_for(h5_path);
   io::write_text_file(path, io::shapes_xdmf(x), "--out (XDMF sidecar)");
   return path;

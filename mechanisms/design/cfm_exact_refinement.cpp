@@ -7,6 +7,7 @@
 #include <nlopt.hpp>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "flexure/mechanisms/cfm/cfm_exact.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
@@ -31,6 +32,12 @@ struct ExactSearch {
   std::optional<CfmDesignEvaluation> last_prbm;
   int run = 0;  // the local run under way
   std::vector<SynthesisEvaluation> history;
+
+  ExactSearch(const CfmDesignProblem& p,
+              CfmDesignProblem constraints,
+              const ExactRefinementOptions& o,
+              cfm::CfmModel m)
+      : problem(p), constraints_problem(std::move(constraints)), options(o), model(std::move(m)) {}
 
   void evaluate(const std::vector<double>& y) {
     if (y == last_y) return;
@@ -234,7 +241,7 @@ CfmExactRefinement refine_cfm_exact(const CfmDesignProblem& problem,
   }
   CfmDesignProblem prbm_constraints = problem;
   prbm_constraints.pcf_min.reset();
-  ExactSearch s{problem, prbm_constraints, options, cfm::CfmModel(problem.model)};
+  ExactSearch s(problem, prbm_constraints, options, cfm::CfmModel(problem.model));
   const auto feasible_at = [&](const std::vector<double>& x, double pcf) {
     try {
       const CfmDesignEvaluation e = evaluate_design(prbm_constraints, s.model, x);
