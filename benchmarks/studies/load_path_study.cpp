@@ -5,6 +5,9 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <string>
+#include <type_traits>
+#include <vector>
 
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/common/errors.h"
@@ -420,6 +423,43 @@ const std::vector<io::CodeMeaning>& path_code_meanings() {
 namespace {
 
 // /force_points of a displacement-controlled path (docs/hdf5-schema.md "flexure path").
+// The columns a special point and a force point share (the fields of the same names): where the
+// tip is, what holds it, and on which stage and branch of the path it lies.
+template <class Point>
+void write_point_state(io::Hdf5Group& g,
+                       const std::vector<Point>& points,
+                       const PathUnits& u,
+                       const std::string& scaled) {
+  const auto column = [&points](auto field) {
+    std::vector<std::decay_t<decltype(Point{}.*field)>> values;
+    values.reserve(points.size());
+    for (const Point& p : points) values.push_back(p.*field);
+    return values;
+  };
+  g.write_dataset("tip_x", column(&Point::tip_x), u.length_unit, "tip x at the point" + scaled);
+  g.write_dataset("tip_y", column(&Point::tip_y), u.length_unit, "tip y at the point" + scaled);
+  g.write_dataset("tip_theta", column(&Point::tip_theta), "rad", "tip angle at the point");
+  g.write_dataset("reaction_Fx",
+                  column(&Point::reaction_Fx),
+                  u.force_unit,
+                  "x force the clamp exerts" + scaled);
+  g.write_dataset("reaction_Fy",
+                  column(&Point::reaction_Fy),
+                  u.force_unit,
+                  "y force the clamp exerts" + scaled);
+  g.write_dataset(
+      "reaction_M", column(&Point::reaction_M), u.moment_unit, "moment the clamp exerts" + scaled);
+  g.write_dataset(
+      "tip_Fx", column(&Point::tip_Fx), u.force_unit, "total x force on the tip" + scaled);
+  g.write_dataset(
+      "tip_Fy", column(&Point::tip_Fy), u.force_unit, "total y force on the tip" + scaled);
+  g.write_dataset(
+      "tip_M", column(&Point::tip_M), u.moment_unit, "total moment on the tip" + scaled);
+  g.write_dataset("stage", column(&Point::stage), "1", "stage of the path (dataset /stage)");
+  g.write_dataset(
+      "branch", column(&Point::branch), "1", "branch on which it lies (dataset /branch)");
+}
+
 void write_force_points(io::Hdf5Group& root, const PathTable& t) {
   const PathUnits& u = t.units;
   const bool angle = t.control == "tip-angle";
@@ -428,26 +468,15 @@ void write_force_points(io::Hdf5Group& root, const PathTable& t) {
   const std::string force_unit = angle ? u.moment_unit : u.force_unit;
   io::Hdf5Group g = root.create_group("force_points");
   std::vector<std::string> kind;
-  std::vector<double> lambda, c, f, slope, x, y, theta, rfx, rfy, rm, tfx, tfy, tm;
-  std::vector<int> index, stage, branch, located;
+  std::vector<double> lambda, c, f, slope;
+  std::vector<int> index, located;
   for (const PathForcePoint& p : t.force_points) {
     kind.push_back(p.kind);
     lambda.push_back(p.load_factor);
     c.push_back(p.coordinate);
     f.push_back(p.force);
     slope.push_back(p.slope);
-    x.push_back(p.tip_x);
-    y.push_back(p.tip_y);
-    theta.push_back(p.tip_theta);
-    rfx.push_back(p.reaction_Fx);
-    rfy.push_back(p.reaction_Fy);
-    rm.push_back(p.reaction_M);
-    tfx.push_back(p.tip_Fx);
-    tfy.push_back(p.tip_Fy);
-    tm.push_back(p.tip_M);
     index.push_back(p.index_before);
-    stage.push_back(p.stage);
-    branch.push_back(p.branch);
     located.push_back(p.located ? 1 : 0);
   }
   g.write_dataset("kind",
@@ -466,18 +495,8 @@ void write_force_points(io::Hdf5Group& root, const PathTable& t) {
                   "at a zero: d force / d coordinate along the path (> 0 with a stable "
                   "displacement-controlled state: a stable equilibrium with the coordinate "
                   "free); 0 at an extremum; NaN not computed");
-  g.write_dataset("tip_x", x, u.length_unit, "tip x at the point" + scaled);
-  g.write_dataset("tip_y", y, u.length_unit, "tip y at the point" + scaled);
-  g.write_dataset("tip_theta", theta, "rad", "tip angle at the point");
-  g.write_dataset("reaction_Fx", rfx, u.force_unit, "x force the clamp exerts" + scaled);
-  g.write_dataset("reaction_Fy", rfy, u.force_unit, "y force the clamp exerts" + scaled);
-  g.write_dataset("reaction_M", rm, u.moment_unit, "moment the clamp exerts" + scaled);
-  g.write_dataset("tip_Fx", tfx, u.force_unit, "total x force on the tip" + scaled);
-  g.write_dataset("tip_Fy", tfy, u.force_unit, "total y force on the tip" + scaled);
-  g.write_dataset("tip_M", tm, u.moment_unit, "total moment on the tip" + scaled);
+  write_point_state(g, t.force_points, u, scaled);
   g.write_dataset("index_before", index, "1", "row of the path datasets before the point");
-  g.write_dataset("stage", stage, "1", "stage of the path (dataset /stage)");
-  g.write_dataset("branch", branch, "1", "branch on which it lies (dataset /branch)");
   g.write_dataset("located",
                   located,
                   "1",
@@ -565,24 +584,13 @@ void write_path_file(io::Hdf5Group& root, const PathTable& t) {
   // The special points, exactly (the rows `index` of the path datasets hold them too).
   io::Hdf5Group sp = root.create_group("special_points");
   std::vector<std::string> kind;
-  std::vector<double> lambda, x, y, theta, rfx, rfy, rm, tfx, tfy, tm;
-  std::vector<int> index, after, stage, branch, located, switched;
+  std::vector<double> lambda;
+  std::vector<int> index, after, located, switched;
   for (const PathSpecialPoint& p : t.special_points) {
     kind.push_back(p.kind);
     lambda.push_back(p.load_factor);
-    x.push_back(p.tip_x);
-    y.push_back(p.tip_y);
-    theta.push_back(p.tip_theta);
-    rfx.push_back(p.reaction_Fx);
-    rfy.push_back(p.reaction_Fy);
-    rm.push_back(p.reaction_M);
-    tfx.push_back(p.tip_Fx);
-    tfy.push_back(p.tip_Fy);
-    tm.push_back(p.tip_M);
     index.push_back(p.index);
     after.push_back(p.index_after);
-    stage.push_back(p.stage);
-    branch.push_back(p.branch);
     located.push_back(p.located ? 1 : 0);
     switched.push_back(p.switched ? 1 : 0);
   }
@@ -598,17 +606,7 @@ void write_path_file(io::Hdf5Group& root, const PathTable& t) {
                    after,
                    "1",
                    "first row of the path datasets after the point (-1: the path stopped there)");
-  sp.write_dataset("tip_x", x, u.length_unit, "tip x at the point" + scaled);
-  sp.write_dataset("tip_y", y, u.length_unit, "tip y at the point" + scaled);
-  sp.write_dataset("tip_theta", theta, "rad", "tip angle at the point");
-  sp.write_dataset("reaction_Fx", rfx, u.force_unit, "x force the clamp exerts" + scaled);
-  sp.write_dataset("reaction_Fy", rfy, u.force_unit, "y force the clamp exerts" + scaled);
-  sp.write_dataset("reaction_M", rm, u.moment_unit, "moment the clamp exerts" + scaled);
-  sp.write_dataset("tip_Fx", tfx, u.force_unit, "total x force on the tip" + scaled);
-  sp.write_dataset("tip_Fy", tfy, u.force_unit, "total y force on the tip" + scaled);
-  sp.write_dataset("tip_M", tm, u.moment_unit, "total moment on the tip" + scaled);
-  sp.write_dataset("stage", stage, "1", "stage of the path (dataset /stage)");
-  sp.write_dataset("branch", branch, "1", "branch on which it lies (dataset /branch)");
+  write_point_state(sp, t.special_points, u, scaled);
   sp.write_dataset("located", located, "1", "1 located, 0 not refined (root status_meanings)");
   sp.write_dataset(
       "switched", switched, "1", "1 where the path left onto the other branch (--branch)");
