@@ -257,34 +257,11 @@ PathRequest make_request(const PathArgs& args) {
 
 Json maybe_index(int index) { return index >= 0 ? Json(index) : Json(nullptr); }
 
-Json special_point_json(const PathSpecialPoint& p) {
-  return Json{{"kind", p.kind},
-              {"load_factor", p.load_factor},
-              {"index", maybe_index(p.index)},
-              {"index_after", maybe_index(p.index_after)},
-              {"tip_x", p.tip_x},
-              {"tip_y", p.tip_y},
-              {"tip_theta", p.tip_theta},
-              {"reaction_Fx", p.reaction_Fx},
-              {"reaction_Fy", p.reaction_Fy},
-              {"reaction_M", p.reaction_M},
-              {"tip_Fx", p.tip_Fx},
-              {"tip_Fy", p.tip_Fy},
-              {"tip_M", p.tip_M},
-              {"stage", p.stage},
-              {"branch", p.branch},
-              {"located", p.located},
-              {"switched", p.switched}};
-}
-
-Json force_point_json(const PathForcePoint& p) {
-  return Json{{"kind", p.kind},
-              {"load_factor", p.load_factor},
-              {"coordinate", p.coordinate},
-              {"force", p.force},
-              {"slope", std::isfinite(p.slope) ? Json(p.slope) : Json(nullptr)},
-              {"index_before", maybe_index(p.index_before)},
-              {"tip_x", p.tip_x},
+// The keys a special point and a force point share (the fields of the same names), in the order
+// both objects list them.
+template <class Point>
+Json point_state_json(const Point& p) {
+  return Json{{"tip_x", p.tip_x},
               {"tip_y", p.tip_y},
               {"tip_theta", p.tip_theta},
               {"reaction_Fx", p.reaction_Fx},
@@ -296,6 +273,27 @@ Json force_point_json(const PathForcePoint& p) {
               {"stage", p.stage},
               {"branch", p.branch},
               {"located", p.located}};
+}
+
+Json special_point_json(const PathSpecialPoint& p) {
+  Json j{{"kind", p.kind},
+         {"load_factor", p.load_factor},
+         {"index", maybe_index(p.index)},
+         {"index_after", maybe_index(p.index_after)}};
+  j.update(point_state_json(p));
+  j["switched"] = p.switched;
+  return j;
+}
+
+Json force_point_json(const PathForcePoint& p) {
+  Json j{{"kind", p.kind},
+         {"load_factor", p.load_factor},
+         {"coordinate", p.coordinate},
+         {"force", p.force},
+         {"slope", std::isfinite(p.slope) ? Json(p.slope) : Json(nullptr)},
+         {"index_before", maybe_index(p.index_before)}};
+  j.update(point_state_json(p));
+  return j;
 }
 
 // The verdict of every point as columns (null where not judged) and its stretches.
