@@ -285,6 +285,28 @@ LadderAutoOutcome choose_rung(const BeamProblem& problem,
   return out;
 }
 
+// Why auto did not use the ladder: the load lies outside the map `file` covers. `third` names the
+// map's third axis (mu for the free end, the tip angle for the guided end), `unit` its unit.
+std::string off_map_verdict(const bench::LadderMapRange& r,
+                            const std::string& map,
+                            const std::string& third,
+                            const std::string& unit,
+                            const std::string& file) {
+  return fmt::format(
+      "the load is off the model ladder's {} ({:g} <= n <= {:g}, {:g} <= alpha2 <= {:g}, {:g} <= "
+      "{} <= {:g}{}; {})",
+      map,
+      r.n_min,
+      r.n_max,
+      r.alpha2_min,
+      r.alpha2_max,
+      r.mu_min,
+      third,
+      r.mu_max,
+      unit,
+      file);
+}
+
 }  // namespace
 
 LadderAutoOutcome solve_by_ladder(const BeamProblem& problem) {
@@ -295,16 +317,11 @@ LadderAutoOutcome solve_by_ladder(const BeamProblem& problem) {
     const auto rungs =
         bench::ladder_estimates_guided(problem.load_ratio_n, problem.value, tip_angle);
     if (!rungs) {
-      const bench::LadderMapRange r = bench::ladder_guided_map_range();
-      out.verdict = fmt::format(
-          "the load is off the model ladder's map of the guided end ({:g} <= n <= {:g}, {:g} <= "
-          "alpha2 <= {:g}, {:g} <= tip angle <= {:g} rad; data/ladder_auto_error_map_guided.csv)",
-          r.n_min,
-          r.n_max,
-          r.alpha2_min,
-          r.alpha2_max,
-          r.mu_min,
-          r.mu_max);
+      out.verdict = off_map_verdict(bench::ladder_guided_map_range(),
+                                    "map of the guided end",
+                                    "tip angle",
+                                    " rad",
+                                    "data/ladder_auto_error_map_guided.csv");
       return out;
     }
     return choose_rung(
@@ -316,16 +333,8 @@ LadderAutoOutcome solve_by_ladder(const BeamProblem& problem) {
   }
   const auto rungs = bench::ladder_estimates(problem.load_ratio_n, problem.value, problem.mu);
   if (!rungs) {
-    const bench::LadderMapRange r = bench::ladder_map_range();
-    out.verdict = fmt::format(
-        "the load is off the model ladder's map ({:g} <= n <= {:g}, {:g} <= alpha2 <= {:g}, {:g} "
-        "<= mu <= {:g}; data/ladder_auto_error_map.csv)",
-        r.n_min,
-        r.n_max,
-        r.alpha2_min,
-        r.alpha2_max,
-        r.mu_min,
-        r.mu_max);
+    out.verdict = off_map_verdict(
+        bench::ladder_map_range(), "map", "mu", "", "data/ladder_auto_error_map.csv");
     return out;
   }
   return choose_rung(problem, *rungs, BeamMethod::kElliptic, "data/ladder_auto_error_map.csv");
