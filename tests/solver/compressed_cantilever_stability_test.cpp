@@ -29,9 +29,13 @@
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/shooting/shooting_shape.h"
 #include "flexure/solver/shooting/shooting_solver.h"
+#include "tests/support/cantilever_load_families.h"
 
 namespace flexure {
 namespace {
+
+using test::CantileverLoadFamilies;
+using test::for_each_cantilever_load;
 
 constexpr double kPi = std::numbers::pi;
 // The general verdict's margin is accurate to about 1e-9 (docs/stability.md, "Accuracy"), the
@@ -107,48 +111,27 @@ void check_load(const EndLoad& load, Tally& tally) {
 
 TEST(CompressedCantileverStability, RandomLoadsAgreeWithTheGeneralVerdict) {
   std::mt19937_64 rng(2727);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
   Tally tally;
-  // Forces in every direction, magnitude up to 40 (past the second Euler load, 22.2), with an end
-  // moment in half of them.
-  for (int i = 0; i < 60; ++i) {
-    const double P = 40.0 * unit(rng), psi = 2.0 * kPi * unit(rng);
-    const double mu = unit(rng) < 0.5 ? 0.0 : 6.0 * (unit(rng) - 0.5);
-    check_load(EndLoad{P * std::cos(psi), P * std::sin(psi), mu}, tally);
-  }
-  // Howell's loads Fx = -n alpha2, Fy = alpha2: compressive n (the sweep of docs/performance.md
-  // has n = 2), end moments in some.
-  for (int i = 0; i < 60; ++i) {
-    const double n = 10.0 * unit(rng), alpha2 = 0.1 + 20.0 * unit(rng);
-    const double mu = unit(rng) < 0.5 ? 0.0 : -8.0 + 16.0 * unit(rng);
-    check_load(EndLoad{-n * alpha2, alpha2, mu}, tally);
-  }
-  // Nearly straight and straight columns past the Euler loads 2.47, 22.2, 61.7.
-  for (int i = 0; i < 20; ++i) {
-    const double P = 70.0 * unit(rng);
-    check_load(EndLoad{-P, 1e-3 * P * (unit(rng) - 0.5), 0.0}, tally);
-  }
-  for (int i = 0; i < 10; ++i) check_load(EndLoad{-70.0 * unit(rng), 0.0, 0.0}, tally);
-  // Loads whose proportional path passes limit points.
-  int folding = 0;
-  for (int attempt = 0; attempt < 20000 && folding < 6; ++attempt) {
-    const EndLoad load = EndLoad::howell(
-        -8.0 + 23.0 * unit(rng), 60.0 * unit(rng), (2.0 * unit(rng) - 1.0) * 2.0 * kPi);
-    if (EllipticSolver().solve(load).limit_points < 1) continue;
-    ++folding;
-    check_load(load, tally);
-  }
-  EXPECT_EQ(folding, 6);
-  // Other equilibria of the same loads, unstable ones among them.
+  // Compressive Howell loads (the sweep of docs/performance.md has n = 2), straight and nearly
+  // straight columns past the Euler loads, folding paths, and other equilibria found by Newton
+  // from spread root moments (unstable ones among them).
+  CantileverLoadFamilies families;
+  families.any_direction = 60;
+  families.howell = 60;
+  families.howell_n_min = 0.0;
+  families.howell_without_moment = 0.5;
+  families.near_straight = 20;
+  families.straight = 10;
+  families.folding = 6;
+  families.with_other_equilibria = 12;
   const ShootingSolver newton(solve_options());
-  for (int i = 0; i < 12; ++i) {
-    const EndLoad load = EndLoad::howell(-4.0 + 12.0 * unit(rng),
-                                         2.0 + 18.0 * unit(rng),
-                                         unit(rng) < 0.5 ? 0.0 : 4.0 * unit(rng) - 2.0);
-    for (int k = -4; k <= 4; ++k) {
-      check_result(load, newton.solve_from(uniform_cantilever(load), {3.0 * k}), tally);
-    }
-  }
+  for_each_cantilever_load(
+      rng,
+      families,
+      [&](const EndLoad& load) { check_load(load, tally); },
+      [&](const EndLoad& load, double m0) {
+        check_result(load, newton.solve_from(uniform_cantilever(load), {m0}), tally);
+      });
   std::cout << "solved " << tally.solved << ": answered " << tally.answered << " (declined "
             << tally.declined << ", compared with the refined general verdict " << tally.refined
             << "), unstable " << tally.unstable << " (index >= 2: " << tally.index2 << "), "

@@ -28,9 +28,13 @@
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/shooting/shooting_shape.h"
 #include "flexure/solver/shooting/shooting_solver.h"
+#include "tests/support/cantilever_load_families.h"
 
 namespace flexure {
 namespace {
+
+using test::CantileverLoadFamilies;
+using test::for_each_cantilever_load;
 
 constexpr double kPi = std::numbers::pi;
 
@@ -111,49 +115,18 @@ TEST(TensionStability, RandomLoadsAgreeWithTheGeneralVerdict) {
   std::mt19937_64 rng(27027);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   Tally tally;
-  // Forces in every direction, magnitude up to 40 (past the second Euler load, 22.2), with an end
-  // moment in half of them.
-  for (int i = 0; i < 120; ++i) {
-    const double P = 40.0 * unit(rng), psi = 2.0 * kPi * unit(rng);
-    const double mu = unit(rng) < 0.5 ? 0.0 : 6.0 * (unit(rng) - 0.5);
-    check_load(EndLoad{P * std::cos(psi), P * std::sin(psi), mu}, tally);
-  }
-  // Howell's loads Fx = -n alpha2, Fy = alpha2, mu: compressive n up to 10 and end moments, whose
-  // proportional paths fold.
-  for (int i = 0; i < 120; ++i) {
-    const double n = -5.0 + 15.0 * unit(rng), alpha2 = 0.1 + 20.0 * unit(rng);
-    const double mu = unit(rng) < 0.3 ? 0.0 : -8.0 + 16.0 * unit(rng);
-    check_load(EndLoad{-n * alpha2, alpha2, mu}, tally);
-  }
-  // Nearly straight columns past the Euler loads (2k - 1)^2 pi^2 / 4: 2.47, 22.2, 61.7.
-  for (int i = 0; i < 30; ++i) {
-    const double P = 70.0 * unit(rng);
-    check_load(EndLoad{-P, 1e-3 * P * (unit(rng) - 0.5), 0.0}, tally);
-  }
-  // Exactly straight columns: unstable past the first Euler load (index 2 past the second).
-  for (int i = 0; i < 15; ++i) check_load(EndLoad{-70.0 * unit(rng), 0.0, 0.0}, tally);
-  // Loads whose proportional path passes limit points (about 1 in 200 of this region; the
-  // elliptic solver's count picks them).
-  int folding = 0;
-  for (int attempt = 0; attempt < 20000 && folding < 8; ++attempt) {
-    const EndLoad load = EndLoad::howell(
-        -8.0 + 23.0 * unit(rng), 60.0 * unit(rng), (2.0 * unit(rng) - 1.0) * 2.0 * kPi);
-    if (EllipticSolver().solve(load).limit_points < 1) continue;
-    ++folding;
-    check_load(load, tally);
-  }
-  EXPECT_EQ(folding, 8);
-  // Other equilibria of the same loads, unstable ones among them: Newton from root moments
-  // spread over [-12, 12].
+  // Forces in every direction, Howell's loads with compressive n up to 10 and end moments (whose
+  // proportional paths fold), straight and nearly straight columns past the Euler loads, folding
+  // paths, and other equilibria found by Newton from spread root moments (unstable ones among
+  // them).
   const ShootingSolver newton(solve_options());
-  for (int i = 0; i < 25; ++i) {
-    const EndLoad load = EndLoad::howell(-4.0 + 12.0 * unit(rng),
-                                         2.0 + 18.0 * unit(rng),
-                                         unit(rng) < 0.5 ? 0.0 : 4.0 * unit(rng) - 2.0);
-    for (int k = -4; k <= 4; ++k) {
-      check_result(load, newton.solve_from(uniform_cantilever(load), {3.0 * k}), tally, false);
-    }
-  }
+  for_each_cantilever_load(
+      rng,
+      CantileverLoadFamilies{},
+      [&](const EndLoad& load) { check_load(load, tally); },
+      [&](const EndLoad& load, double m0) {
+        check_result(load, newton.solve_from(uniform_cantilever(load), {m0}), tally, false);
+      });
   // The sweep's loads (n = 0) and tension with a transverse force (n < 0), mu = 0: all answered.
   for (int i = 0; i < 40; ++i) {
     const double n = i < 20 ? 0.0 : -20.0 * unit(rng), alpha2 = 0.5 + 40.0 * unit(rng);
