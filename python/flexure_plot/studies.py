@@ -76,6 +76,36 @@ def draw_models(f, plt, rec, n_value=0.0):
     return fig
 
 
+
+def draw_models_error_time(f, plt, rec):
+    """Every model's tip error against its time per solve: a small point per load, a large marker
+    at each model's medians (docs/models.md; scripts/plot_models.py writes it beside the maps)."""
+    names = _model_groups(f)
+    fig, ax = plt.subplots(figsize=(7, 5))
+    for k, name in enumerate(names):
+        g = f[name]
+        ok = g["status"][()].ravel() == 0
+        error = np.maximum(g["position_error"][()].ravel()[ok], 1e-16)
+        seconds = g["seconds"][()].ravel()[ok]
+        if not len(error):
+            continue
+        colour = f"C{k % 10}"
+        ax.scatter(seconds, error, s=3, alpha=0.25, color=colour)
+        medians = [float(np.median(seconds)), float(np.median(error))]
+        ax.scatter([medians[0]], [medians[1]], s=80, color=colour, edgecolor="black", label=name,
+                   zorder=3)
+        rec.values(name, medians, label="median time per solve, median tip error per length")
+    for v in LEVELS:
+        ax.axhline(v, color="grey", linewidth=0.6, linestyle=":")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel(label("time per solve", unit(f[names[0] + "/seconds"])))
+    ax.set_ylabel(label("tip position error per length", "1"))
+    ax.set_title(f"error against time ({attr(f, 'boundary', '')} end; large markers: medians)")
+    legend_beside(ax)
+    fig.tight_layout()
+    return fig
+
 def _family_colour(method):
     for k, fam in enumerate(("elliptic", "shooting_rk8pd", "shooting_cvodes", "shooting_dopri",
                              "chain", "prbm", "exact", "calculix")):
