@@ -106,6 +106,7 @@ def draw_models_error_time(f, plt, rec):
     fig.tight_layout()
     return fig
 
+
 def _family_colour(method):
     for k, fam in enumerate(("elliptic", "shooting_rk8pd", "shooting_cvodes", "shooting_dopri",
                              "chain", "prbm", "exact", "calculix")):
