@@ -148,6 +148,15 @@ BeamInput checked_input(const BeamRequest& r, const BeamRequestNames& names) {
                              const std::string& name) -> std::optional<double> {
     if (!value) return std::nullopt;
     require_finite_value(*value, name);
+    if (r.chain) {
+      // The file's own end condition and [tip] table hold the tip; checking the flag against the
+      // default boundary would blame a boundary the user never chose.
+      throw InvalidInput(
+          fmt::format("{} FILE.toml prescribes the tip itself (its boundary and [tip] table: "
+                      "docs/chain-toml.md); do not combine it with {}",
+                      names.chain,
+                      name));
+    }
     if (!allowed) {
       throw InvalidInput(
           fmt::format("{} is not prescribed by {} {} (it prescribes{}{}{})",

@@ -223,6 +223,23 @@ TEST(BeamRequest, ABeamGivenWholeKeepsTheSettings) {
   ASSERT_TRUE(chained.problem.chain.has_value());
 }
 
+// A chain file holds its own end condition and tip: a tip flag beside it is refused naming the file
+// option and the flag, not the default boundary (which used to be blamed: "--tip-y is not
+// prescribed by --boundary free" for a fixed chain).
+TEST(BeamRequest, ATipValueBesideAChainFileNamesTheFile) {
+  BeamRequest r;
+  r.chain = true;
+  r.tip_y = 0.2;
+  const std::string message = refusal(r, BeamRequestNames::command_line());
+  EXPECT_NE(message.find("--chain FILE.toml prescribes the tip itself"), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("--tip-y"), std::string::npos) << message;
+  EXPECT_EQ(message.find("--boundary free"), std::string::npos) << message;
+  r.tip_y.reset();
+  r.tip_angle = "0.1";
+  EXPECT_NE(refusal(r, BeamRequestNames::command_line()).find("--tip-angle"), std::string::npos);
+}
+
 TEST(BeamRequest, AnswerWarningsNameTheCallersOptions) {
   BeamProblem p;
   p.value = 30.0;
