@@ -152,6 +152,22 @@ def test_design_mechanism_csv_equals_the_json_designs(tmp_path):
                     [d["thicknesses"][i] if i < len(d["thicknesses"]) else None for d in designs],
                     f"thicknesses_{i + 1}")
     assert "geometry" not in t
+    # --fatigue adds the critical pivot's Goodman check; its stresses are in Pa like the JSON's.
+    p = run(["design", "mechanism", "--force", "20N", "--stroke", "10mm", "--material",
+             "ss-301-cr", "--safety-factor", "1.5", "--length-range", "60mm:100mm", "--no-exact",
+             "--fatigue", "--Kf", "1.2", "--csv", "fatigue.csv", "--json"], tmp_path)
+    assert p.returncode == 0, p.stderr
+    designs = json.loads(p.stdout)["designs"]
+    assert designs
+    t = read_csv(tmp_path / "fatigue.csv")
+    for key, unit in (("alternating_stress", "Pa"), ("mean_stress", "Pa"),
+                      ("endurance_limit", "Pa"), ("fatigue_safety_factor", "1"),
+                      ("fatigue_critical_pivot", "1")):
+        assert t[key][0] == unit, key
+        exact_equal(t[key][1], [d[key] for d in designs], key)
+    # S_e of 301 cold-rolled (S_e' 689.5 MPa, Howell Table C.6) after its Marin factors: a few
+    # hundred MPa, so a value in MPa or a unitless ratio would fail here.
+    assert np.all((t["endurance_limit"][1] > 1e8) & (t["endurance_limit"][1] < 689.5e6))
 
 
 def test_dynamics_csv_equals_the_json(tmp_path):
