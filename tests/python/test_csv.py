@@ -214,3 +214,93 @@ def test_mechanism_validate_csv_equals_the_json(tmp_path):
     # --spring-rules has no table file: --csv with it is refused.
     p = run(["mechanism", "validate", "--spring-rules", "--csv", "x.csv"], tmp_path)
     assert p.returncode == 2 and not (tmp_path / "x.csv").exists()
+
+
+def test_mechanism_tolerance_csv_is_the_samples_of_the_file(tmp_path):
+    # One row per sample: its relative draws and its quantities, equal to the HDF5 file's.
+    args = ["mechanism", "tolerance", "1A-lpp", "--thickness", "3%", "--samples", "7",
+            "--method", "prbm", "--points", "12", "--seed", "5"]
+    p = run([*args, "--out", "t.h5", "--csv", "t.csv", "--json"], tmp_path)
+    assert p.returncode == 0, p.stderr
+    j = json.loads(p.stdout)
+    assert j["out"] == "t.h5" and j["csv"] == "t.csv"
+    t = read_csv(tmp_path / "t.csv")
+    with h5py.File(tmp_path / "t.h5", "r") as f:
+        names = [n.decode() if isinstance(n, bytes) else n for n in f["parameters"][()]]
+        draws = f["draws"][()]
+        assert draws.shape == (7, len(names))
+        exact_equal(t["sample"][1], np.arange(7), "sample")
+        for k, name in enumerate(names):
+            column = "draws/" + name.replace(" ", "_")
+            assert t[column][0] == "1"
+            exact_equal(t[column][1], draws[:, k], column)
+        for q in ("mean_force_prbm", "percent_constant_force_prbm", "safety_factor"):
+            assert t[q][0] == f[q]["values"].attrs["units"], q
+            exact_equal(t[q][1], f[q]["values"][()], q)
+    assert t["mean_force_prbm"][0] == "N" and t["percent_constant_force_prbm"][0] == "%"
+    # Only the thicknesses were spread: their draws are within the normal cut (3.5 sigma), the
+    # widths' and lengths' are exactly 0.
+    for name, (unit, values) in t.items():
+        if name.startswith("draws/thickness"):
+            assert np.all(np.abs(values) <= 3.5 * 0.03) and np.any(values != 0)
+        elif name.startswith("draws/"):
+            assert np.all(values == 0), name
+    # The statistics of the JSON are those of the CSV's column.
+    np.testing.assert_allclose(np.mean(t["mean_force_prbm"][1]), j["mean_force_prbm"]["mean"],
+                               rtol=1e-12)
+    # --out FILE.csv: the same table and no HDF5 file (nor a temporary).
+    p = run([*args, "--out", "only.csv"], tmp_path)
+    assert p.returncode == 0, p.stderr
+    assert (tmp_path / "only.csv").read_text() == (tmp_path / "t.csv").read_text()
+    assert sorted(os.listdir(tmp_path)) == ["only.csv", "t.csv", "t.h5"]
+    p = run([*args, "--out", "x.csv", "--csv", "y.csv"], tmp_path)
+    assert p.returncode == 2 and "CSV file already" in p.stderr
+
+
+def test_validate_and_bench_refuse_a_csv_out(tmp_path):
+    # Their files have no one table: an --out FILE.csv would be HDF5 under a CSV name.
+    p = run(["validate", "--out", "v.csv"], tmp_path)
+    assert p.returncode == 2, p.stderr
+    assert "--out 'v.csv' names a CSV file, but this command writes HDF5 only" in p.stderr
+    p = run(["bench", "--quick", "--out", "b.CSV", "--json"], tmp_path)
+    assert p.returncode == 2, p.stderr
+    error = json.loads(p.stdout)
+    assert error["exit_code"] == 2 and "--out 'b.CSV' names a CSV file" in error["error"]
+    assert os.listdir(tmp_path) == []
+
+
+def test_csv_alone_is_enough_and_no_output_is_refused(tmp_path):
+    # --csv without --out: only the CSV is written, the same table as with --out.
+    commands = {
+        "sweep": ["sweep", "beam", "--alpha2", "0:5:4", "--n", "-1:1:3"],
+        "path": ["path", "--alpha2", "10", "--mu", "-6.2832"],
+        "map": ["map", "cfm", "--config", "lpp", "--R", "0.5:2:3", "--d", "10:40:2"],
+        "models": ["models", "map", "--n", "0", "--alpha2", "0.5:5:3", "--mu", "-1:1:2",
+                   "--min-seconds", "0", "--models", "prbm"],
+    }
+    for name, args in commands.items():
+        d = tmp_path / name
+        d.mkdir()
+        p = run([*args, "--csv", "alone.csv", "--json"], d)
+        assert p.returncode == 0, (name, p.stderr)
+        j = json.loads(p.stdout)
+        assert j["out"] is None and j["csv"] == "alone.csv", name
+        assert sorted(os.listdir(d)) == ["alone.csv"], name
+        p = run([*args, "--out", "both.h5", "--csv", "both.csv"], d)
+        assert p.returncode == 0, (name, p.stderr)
+        both, alone = read_csv(d / "both.csv"), read_csv(d / "alone.csv")
+        assert both.keys() == alone.keys(), name
+        for key in both:
+            if key == "prbm/seconds" or key.endswith("/seconds"):
+                continue  # a timing
+            assert both[key][0] == alone[key][0], (name, key)
+            if both[key][0] == "text":
+                assert both[key][1] == alone[key][1], (name, key)
+            else:
+                exact_equal(alone[key][1], both[key][1], f"{name} {key}")
+        # Neither --out nor --csv: exit 2 before any work, naming both.
+        p = run(args, d)
+        assert p.returncode == 2, (name, p.stderr)
+        assert "no output file: give --out FILE.h5" in p.stderr and "--csv" in p.stderr, name
+        assert sorted(os.listdir(d)) == ["alone.csv", "both.csv", "both.h5"], name
+
