@@ -304,3 +304,30 @@ def test_csv_alone_is_enough_and_no_output_is_refused(tmp_path):
         assert "no output file: give --out FILE.h5" in p.stderr and "--csv" in p.stderr, name
         assert sorted(os.listdir(d)) == ["alone.csv", "both.csv", "both.h5"], name
 
+
+def test_a_chain_file_in_si_labels_the_path_in_newtons_and_metres(tmp_path):
+    # The same numbers with and without units = "SI": equal values; the SI file's are labelled
+    # m, N, N m, the other's in the chain file's own units.
+    chain = """
+[[segment]]
+type = "flexible"
+length = 0.05
+EI = 0.02
+[tip_load]
+Fy = 20.0
+"""
+    (tmp_path / "si.toml").write_text('units = "SI"\n' + chain)
+    (tmp_path / "own.toml").write_text(chain)
+    for name in ("si", "own"):
+        p = run(["path", "--chain", f"{name}.toml", "--out", f"{name}.h5", "--csv", f"{name}.csv",
+                 "--json"], tmp_path)
+        assert p.returncode == 0, p.stderr
+        assert json.loads(p.stdout)["units"] == ("SI" if name == "si" else "chain file")
+    si, own = read_csv(tmp_path / "si.csv"), read_csv(tmp_path / "own.csv")
+    assert si["tip_x"][0] == "m" and si["reaction_Fy"][0] == "N" and si["reaction_M"][0] == "N m"
+    assert own["tip_x"][0] == "length unit of the chain file"
+    for key in ("load_factor", "tip_x", "tip_y", "tip_theta"):
+        exact_equal(si[key][1], own[key][1], key)
+    with h5py.File(tmp_path / "si.h5", "r") as f:
+        assert f.attrs["units"] == "SI"
+        assert f["tip_y"].attrs["units"] == "m" and f["reaction_Fy"].attrs["units"] == "N"
