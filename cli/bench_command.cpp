@@ -11,6 +11,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/csv_output.h"
 #include "flexure/benchmarks/studies/bench_run.h"
 #include "flexure/io/temp_file_cleanup.h"
 #include "flexure/solver/common/errors.h"
@@ -48,6 +49,9 @@ std::string resume_command(const BenchArgs& args) {
 
 void run_bench(BenchArgs& args) {
   bench::BenchOptions options = args.options;
+  refuse_csv_out(options.out,
+                 "a group per problem and method, with a checkpoint for --resume; --json prints "
+                 "a summary");
   // Fail fast (exit 2) on an unwritable path, before minutes of solving; the checkpoint is
   // written next to it after every finished group.
   bench::check_bench_outputs(options);

@@ -13,14 +13,19 @@
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {
-namespace {
-
-bool ends_with_csv(const std::string& path) {
+bool is_csv_path(const std::string& path) {
   const std::string ext = std::filesystem::path(path).extension().string();
   return ext == ".csv" || ext == ".CSV";
 }
 
-}  // namespace
+void refuse_csv_out(const std::string& out, const std::string& why) {
+  if (!is_csv_path(out)) return;
+  throw InvalidInput(
+      fmt::format("--out '{}' names a CSV file, but this command writes HDF5 only ({}); give "
+                  "--out FILE.h5",
+                  out,
+                  why));
+}
 
 std::vector<io::CsvColumn> csv_columns_from_records(
     const Json& records, const std::map<std::string, std::string>& units) {
@@ -67,6 +72,14 @@ std::vector<io::CsvColumn> csv_columns_from_records(
   return columns;
 }
 
+void require_out_or_csv(const std::string& out, const std::string& csv) {
+  if (out.empty() && csv.empty()) {
+    throw InvalidInput(
+        "no output file: give --out FILE.h5 (HDF5), --out FILE.csv or --csv FILE.csv (the table "
+        "as CSV), or --out and --csv both");
+  }
+}
+
 void add_csv_option(CLI::App* cmd, std::string& csv) {
   cmd->add_option("--csv",
                   csv,
@@ -74,8 +87,9 @@ void add_csv_option(CLI::App* cmd, std::string& csv) {
                   "point; docs/cli.md \"CSV output\")");
 }
 
-CsvOutput::CsvOutput(const std::string& out, const std::string& csv) : hdf5_(out), csv_(csv) {
-  if (ends_with_csv(out)) {
+CsvOutput::CsvOutput(const std::string& out, const std::string& csv)
+    : out_(out), hdf5_(out), csv_(csv) {
+  if (is_csv_path(out)) {
     if (!csv.empty()) {
       throw InvalidInput(
           fmt::format("--out {} is a CSV file already; give --csv only with an "

@@ -21,6 +21,19 @@ namespace flexure::cli {
 std::vector<io::CsvColumn> csv_columns_from_records(
     const Json& records, const std::map<std::string, std::string>& units);
 
+// True for a path whose extension is .csv (or .CSV): --out FILE.csv asks for a CSV table.
+bool is_csv_path(const std::string& path);
+
+// For the commands whose --out file has no one table (`validate`, `bench`): a FILE.csv --out would
+// be an HDF5 file under a CSV name, so it is refused before any work (InvalidInput, exit 2) with
+// `why` saying what the file holds.
+void refuse_csv_out(const std::string& out, const std::string& why);
+
+// For the commands that always write a file (`sweep beam`, `path`, `map cfm`, `models map`): the
+// HDF5 --out, a CSV (--out FILE.csv or --csv FILE) or both; neither is refused before any work
+// (InvalidInput, exit 2).
+void require_out_or_csv(const std::string& out, const std::string& csv);
+
 // Adds `--csv FILE` to `cmd`, storing the path in `csv`.
 void add_csv_option(CLI::App* cmd, std::string& csv);
 
@@ -37,10 +50,17 @@ class CsvOutput {
   const std::string& hdf5_path() const { return hdf5_; }
   // The CSV path ("" when none is wanted).
   const std::string& csv_path() const { return csv_; }
+  // The file the user asked for, for messages: the HDF5 --out, or the CSV when there is none.
+  const std::string& written_path() const { return temporary_ ? csv_ : hdf5_; }
+  // The JSON keys "out" (the --out given, HDF5 or CSV; null without one) and "csv" (the CSV
+  // written, or null).
+  Json out_json() const { return out_.empty() ? Json(nullptr) : Json(out_); }
+  Json csv_json() const { return csv_.empty() ? Json(nullptr) : Json(csv_); }
   // After the HDF5 file is complete: writes the CSV of its table (io::csv_columns_from_hdf5).
   void write(const std::vector<std::string>& axes, const std::vector<std::string>& skip = {}) const;
 
  private:
+  std::string out_;
   std::string hdf5_;
   std::string csv_;
   bool temporary_ = false;

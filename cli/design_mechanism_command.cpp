@@ -516,6 +516,11 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
         {"percent_constant_force_exact", "%"},
         {"footprint", "m^2"},
         {"flexure_volume", "m^3"},
+        // --fatigue: the critical pivot's Goodman check (docs/fatigue.md).
+        {"alternating_stress", "Pa"},
+        {"mean_stress", "Pa"},
+        {"endurance_limit", "Pa"},
+        {"length_needed", "m"},
     };
     io::write_csv(args.csv, csv_columns_from_records(summary["designs"], kUnits));
   }

@@ -60,12 +60,14 @@ void run_map_cfm(const MapCfmArgs& a) {
   }
   spec.exact = a.model == "exact";
   spec.points = a.points;
+  require_out_or_csv(a.out, a.csv);
   const CsvOutput csv(a.out, a.csv);
   const studies::CfmMapSummary m =
       studies::write_cfm_map(spec, csv.hdf5_path(), slow_progress("map cfm " + spec.config));
   csv.write({"R", "d", "K1", "K2"});
   if (a.json) {
-    print_json(Json{{"out", a.out},
+    print_json(Json{{"out", csv.out_json()},
+                    {"csv", csv.csv_json()},
                     {"config", spec.config},
                     {"model", a.model},
                     {"dims", m.dims},
@@ -80,7 +82,7 @@ void run_map_cfm(const MapCfmArgs& a) {
   fmt::print(
       "wrote {}: {} points ({} x {} x {} x {}), {} ok, {} exact not converged, {} refused; "
       "best {} Xi' {:.2f} %\n",
-      a.out,
+      csv.written_path(),
       m.points,
       m.dims[0],
       m.dims[1],
@@ -112,7 +114,10 @@ void register_map_command(CLI::App& app) {
       ->default_str("prbm");
   cfm->add_option("--exact-points", a->points, "Stroke points of the exact model")
       ->default_str("50");
-  cfm->add_option("--out", a->out, "The HDF5 file of the map (docs/hdf5-schema.md)")->required();
+  cfm->add_option("--out",
+                  a->out,
+                  "The HDF5 file of the map (docs/hdf5-schema.md), or FILE.csv for the table as "
+                  "CSV only; --out, --csv or both");
   add_csv_option(cfm, a->csv);
   cfm->add_flag("--json", a->json, "Print a JSON summary");
   cfm->callback([a] { run_map_cfm(*a); });

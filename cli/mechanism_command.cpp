@@ -1333,6 +1333,7 @@ void register_mechanism_command(CLI::App& app) {
   // `mechanism tolerance`: the sampled study of benchmarks/studies/mechanism_tolerance.h.
   struct ToleranceArgs {
     std::string what, thickness, width, length, E, distribution = "normal", method = "exact", out;
+    std::string csv;
     std::string force_of = "half";
     CLI::Option* force_of_option = nullptr;
     int samples = 100, points = 50;
@@ -1378,7 +1379,8 @@ void register_mechanism_command(CLI::App& app) {
   tolerance->add_option("--out",
                         targs->out,
                         "Write the samples and statistics to this HDF5 file (one file under "
-                        "mpirun)");
+                        "mpirun), or FILE.csv for the samples as CSV only");
+  add_csv_option(tolerance, targs->csv);
   tolerance->add_flag("--json", targs->json, "Print one JSON object");
   tolerance->callback([targs] {
     const auto spread = [](const std::string& text, const char* flag) {
@@ -1406,7 +1408,18 @@ void register_mechanism_command(CLI::App& app) {
     o.exact = targs->method == "exact";
     o.distribution = parse_spread_distribution(targs->distribution);
     o.validate();
-    if (!targs->out.empty()) io::check_output_path(targs->out);
+    // --out FILE.csv: the samples table only (no HDF5 file); --csv FILE: the table as well.
+    std::string hdf5_out = targs->out, csv_out = targs->csv;
+    if (is_csv_path(targs->out)) {
+      if (!targs->csv.empty()) {
+        throw InvalidInput(fmt::format(
+            "--out {} is a CSV file already; give --csv only with an HDF5 --out", targs->out));
+      }
+      csv_out = targs->out;
+      hdf5_out.clear();
+    }
+    if (!hdf5_out.empty()) io::check_output_path(hdf5_out);
+    if (!csv_out.empty()) io::check_output_path(csv_out, targs->csv.empty() ? "--out" : "--csv");
     const MechanismDesign d = resolve(targs->what);
     // A design file's force_of (written by `flexure design mechanism`) unless --force-of is given.
     o.force_of =
@@ -1419,10 +1432,13 @@ void register_mechanism_command(CLI::App& app) {
                        s.first_failure));
     }
     // Every rank holds the whole study (mechanism_tolerance.h); rank 0 writes the file.
-    if (!targs->out.empty() && parallel::world().root()) {
-      io::AtomicHdf5File file(targs->out);
+    if (!hdf5_out.empty() && parallel::world().root()) {
+      io::AtomicHdf5File file(hdf5_out);
       write_tolerance_file(file.root(), s);
       file.commit();
+    }
+    if (!csv_out.empty() && parallel::world().root()) {
+      io::write_csv(csv_out, tolerance_csv_columns(s), targs->csv.empty() ? "--out" : "--csv");
     }
     if (targs->json) {
       Json j{{"design", s.design},
@@ -1438,7 +1454,8 @@ void register_mechanism_command(CLI::App& app) {
                    {"length", o.spread.length},
                    {"E", o.spread.E}}},
              {"parameters", s.parameters},
-             {"out", targs->out.empty() ? Json(nullptr) : Json(targs->out)}};
+             {"out", targs->out.empty() ? Json(nullptr) : Json(targs->out)},
+             {"csv", csv_out.empty() ? Json(nullptr) : Json(csv_out)}};
       for (const ToleranceStats& q : s.quantities) {
         j[q.name] = Json{{"unit", q.unit},
                          {"nominal", q.nominal},

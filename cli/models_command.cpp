@@ -127,7 +127,8 @@ void run_models_map(const ModelsMapArgs& a) {
   (void)Prbm3rConstants::by_name(spec.prbm3r_constants);  // InvalidInput naming the sets
   spec.min_seconds = a.min_seconds;
   spec.validate();
-  io::check_output_path(a.out);  // before the solves: an unwritable path fails fast
+  require_out_or_csv(a.out, a.csv);
+  if (!a.out.empty()) io::check_output_path(a.out);  // before the solves: fail fast
   const CsvOutput csv(a.out, a.csv);
 
   const auto start = std::chrono::steady_clock::now();
@@ -147,7 +148,8 @@ void run_models_map(const ModelsMapArgs& a) {
                             {"median_position_error", number_or_null(m.median_position_error)},
                             {"median_seconds", number_or_null(m.median_seconds)}});
     }
-    print_json(Json{{"out", a.out},
+    print_json(Json{{"out", csv.out_json()},
+                    {"csv", csv.csv_json()},
                     {"boundary", to_string(spec.boundary)},
                     {"reference", to_string(spec.reference())},
                     {"dims", {spec.n.size(), spec.alpha2.size(), spec.third_axis().size()}},
@@ -157,7 +159,7 @@ void run_models_map(const ModelsMapArgs& a) {
     return;
   }
   fmt::print("wrote {}: {} points (n x alpha2 x {}: {} x {} x {}), reference {}, {:.1f} s\n",
-             a.out,
+             csv.written_path(),
              spec.point_count(),
              spec.third_axis_name(),
              spec.n.size(),
@@ -253,7 +255,10 @@ void register_models_command(CLI::App& app) {
                   "Timing: each model's solve is repeated at each point until this much time has "
                   "passed, and the mean taken")
       ->default_str("2e-4");
-  map->add_option("--out", a->out, "The HDF5 file of the map (docs/hdf5-schema.md)")->required();
+  map->add_option("--out",
+                  a->out,
+                  "The HDF5 file of the map (docs/hdf5-schema.md), or FILE.csv for the table as "
+                  "CSV only; --out, --csv or both");
   add_csv_option(map, a->csv);
   map->add_flag("--json", a->json, "Print a JSON summary");
   map->callback([a] { run_models_map(*a); });

@@ -102,6 +102,7 @@ PathRequest make_request(const PathArgs& args) {
   }
   // The file first: its own errors (a missing file, bad TOML) are named before the combination.
   std::optional<SegmentChain> file_chain;
+  bool file_physical = false;  // units = "SI" (or a value with a unit): results in m, N, N m
   if (from_file) {
     const io::ChainFile file = io::read_chain_file(args.chain_file);
     for (std::size_t k = 0; k < file.segments.size(); ++k) {
@@ -115,6 +116,7 @@ PathRequest make_request(const PathArgs& args) {
       }
     }
     file_chain = file.chain;
+    file_physical = file.physical;
   }
   if (from_file && (howell || args.boundary != "free")) {
     throw InvalidInput(
@@ -206,7 +208,7 @@ PathRequest make_request(const PathArgs& args) {
     request.units = PathUnits::si(beam.length, beam.flexural_rigidity());
   } else if (from_file) {
     request.chain = *file_chain;
-    request.units = PathUnits::chain_file();
+    request.units = PathUnits::chain_file(file_physical);
   } else {
     require_finite_input(args.load_ratio_n, "--n (load ratio n)");
     require_finite_input(args.alpha2, "--alpha2 (P l^2/EI)");
@@ -334,7 +336,7 @@ Json special_points_json(const PathTable& t, const char* kind) {
   return list;
 }
 
-void print_text(const PathTable& t, const PathArgs& args) {
+void print_text(const PathTable& t, const PathArgs& args, const std::string& written) {
   fmt::print("{} load path: {} points, load factor reached {:.6g}, {} limit point(s){}; {}\n",
              args.method,
              t.size(),
@@ -397,20 +399,21 @@ void print_text(const PathTable& t, const PathArgs& args) {
     fmt::print("  stability {}:\n", stability_control_words(t));
     for (const StabilityStretch& s : stretches) fmt::print("    {}\n", describe(s));
   }
-  fmt::print("written to {}\n", args.out);
+  fmt::print("written to {}\n", written);
 }
 
 void run_path(const PathArgs& args) {
   const PathRequest request = make_request(args);
   request.validate();
   // Check and open the output first: an unwritable path fails before any solving (exit 2).
-  io::check_output_path(args.out);
+  require_out_or_csv(args.out, args.csv);
+  if (!args.out.empty()) io::check_output_path(args.out);
   const CsvOutput csv(args.out, args.csv);
   std::unique_ptr<io::AtomicHdf5File> output;
   try {
     output = std::make_unique<io::AtomicHdf5File>(csv.hdf5_path());
   } catch (const io::Hdf5Error& e) {
-    throw InvalidInput(fmt::format("--out {}: {}", args.out, e.what()));
+    throw InvalidInput(fmt::format("--out {}: {}", csv.written_path(), e.what()));
   }
   const auto start = std::chrono::steady_clock::now();
   const PathTable t = run_load_path(request);
@@ -425,7 +428,8 @@ void run_path(const PathArgs& args) {
       csv.hdf5_path() == args.out ? write_path_shapes_xdmf(args.out, t) : std::string();
   for (const std::string& w : t.warnings) warn(w);
   if (args.json) {
-    Json out{{"out", args.out},
+    Json out{{"out", csv.out_json()},
+             {"csv", csv.csv_json()},
              {"xdmf", xdmf.empty() ? Json(nullptr) : Json(xdmf)},
              {"method", args.method},
              {"points", static_cast<long>(t.size())},
@@ -467,7 +471,7 @@ void run_path(const PathArgs& args) {
     add_stability_json(out, t);
     print_json(out);
   } else {
-    print_text(t, args);
+    print_text(t, args, csv.written_path());
   }
   if (!t.completed) {
     throw NoConvergence(fmt::format(
@@ -475,7 +479,7 @@ void run_path(const PathArgs& args) {
         args.method,
         t.lambda_reached,
         t.message,
-        args.out));
+        csv.written_path()));
   }
   if (args.branch > 0 && !t.switched_branch) {
     throw NoConvergence(fmt::format(
@@ -483,7 +487,7 @@ void run_path(const PathArgs& args) {
         "branch to follow; the path from zero load is in {}",
         args.branch,
         t.bifurcation_points,
-        args.out));
+        csv.written_path()));
   }
 }
 
@@ -568,7 +572,10 @@ void register_path_command(CLI::App& app) {
       ->default_str("on")
       ->transform(CLI::IsMember({"on", "off"}, CLI::ignore_case));
   args->physical.add_to(*path, false);
-  path->add_option("--out", args->out, "Output HDF5 file (written atomically)")->required();
+  path->add_option("--out",
+                   args->out,
+                   "Output HDF5 file (written atomically), or FILE.csv for the table as CSV only; "
+                   "--out, --csv or both");
   add_csv_option(path, args->csv);
   path->add_flag("--json", args->json, "Print one JSON summary object on stdout");
   path->callback([args] { run_path(*args); });

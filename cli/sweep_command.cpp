@@ -108,7 +108,8 @@ void run_sweep_beam(const SweepBeamArgs& args) {
   const BeamMethod method = resolve_beam_method(beam_method_from_string(args.method));
 
   // Check and open the output first: an unwritable path is reported before minutes of solving.
-  io::check_output_path(args.out);
+  require_out_or_csv(args.out, args.csv);
+  if (!args.out.empty()) io::check_output_path(args.out);
   const CsvOutput csv(args.out, args.csv);
   // Under mpirun every rank writes its blocks into the one file (docs/scaling.md).
   if (args.compress && parallel::launched_size() > 1) {
@@ -149,7 +150,8 @@ void run_sweep_beam(const SweepBeamArgs& args) {
   }
   if (args.json) {
     Json summary;
-    summary["out"] = args.out;
+    summary["out"] = csv.out_json();
+    summary["csv"] = csv.csv_json();
     summary["count"] = count;
     summary["converged_count"] = table.converged_count;
     summary["axes"] = grid.axis_names();
@@ -157,8 +159,14 @@ void run_sweep_beam(const SweepBeamArgs& args) {
     summary["seconds"] = seconds;
     print_json(summary);
   } else {
-    fmt::print(
-        "Wrote {} points ({}; method {}) to {}\n", count, ranges, to_string(method), args.out);
+    fmt::print("Wrote {} points ({}; method {}) to {}\n",
+               count,
+               ranges,
+               to_string(method),
+               csv.written_path());
+    if (csv.wanted() && csv.csv_path() != csv.written_path()) {
+      fmt::print("  table written to {}\n", csv.csv_path());
+    }
     fmt::print("  converged: {} of {}; {:.3f} s\n", table.converged_count, count, seconds);
   }
   if (table.first_failure >= 0) {
@@ -171,7 +179,7 @@ void run_sweep_beam(const SweepBeamArgs& args) {
         "first is {}: {}. {}",
         count - table.converged_count,
         count,
-        args.out,
+        csv.written_path(),
         describe_sweep_point(grid, table.first_failure),
         table.first_failure_message,
         failure_hint(grid.at(table.first_failure), failed)));
@@ -207,7 +215,10 @@ void register_sweep_command(CLI::App& app) {
   beam->add_option("--mu", args->mu, "End moment mu = M l/EI: a value or START:STOP:COUNT")
       ->default_str("0");
   add_method_option(*beam, args->method);
-  beam->add_option("--out", args->out, "Output HDF5 file (written atomically)")->required();
+  beam->add_option("--out",
+                   args->out,
+                   "Output HDF5 file (written atomically), or FILE.csv for the table as CSV only; "
+                   "--out, --csv or both");
   add_csv_option(beam, args->csv);
   beam->add_option(
           "--threads", args->threads, "Worker threads per process (1-64; 1 per rank under mpirun)")

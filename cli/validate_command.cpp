@@ -10,6 +10,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/csv_output.h"
 #include "flexure/benchmarks/studies/validation_checks.h"
 #include "flexure/benchmarks/studies/validation_file.h"
 #include "flexure/io/output_path.h"
@@ -83,6 +84,7 @@ Json to_json(const std::vector<ValidationCheck>& checks, const std::string& out,
 }
 
 void run_validate(const ValidateArgs& args) {
+  refuse_csv_out(args.out, "the checks with their attributes; --json prints them");
   io::check_output_path(args.out);
   std::optional<ValidationFile> file;
   try {

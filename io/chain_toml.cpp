@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "flexure/io/toml_support.h"
+#include "flexure/mechanisms/material_library.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
 #include "flexure/solver/common/plate_modulus.h"
@@ -105,12 +106,32 @@ const toml::table& as_table(const toml::node& node,
 // physical units; checked against the units once the whole file is read.
 struct SectionKeys {
   std::optional<Quantity> E;
+  // The segment's material (its own `material`, or the file's for a segment with a section):
+  // E where the segment gives none, nu where plate or extensible needs one (docs/chain-toml.md).
+  const MaterialGrade* material = nullptr;
+  bool own_material = false;
   std::optional<double> I, width, thickness, area;
   std::optional<double> density, g, nu, shear_coefficient;
   std::optional<std::string> plate;
   bool extensible = false;
   int line = 0;
 };
+
+// material = "NAME": a row of data/materials.csv (`flexure materials`).
+const MaterialGrade& material_of(const toml::node& node,
+                                 const std::string& where,
+                                 const std::string& source) {
+  if (!node.is_string()) {
+    toml_fail(source,
+              line_of(node),
+              where + " must be a material name, e.g. \"steel-1095-hr\" (see `flexure materials`)");
+  }
+  try {
+    return find_material(**node.as_string());
+  } catch (const InvalidInput& e) {
+    toml_fail(source, line_of(node), fmt::format("{}: {}", where, e.what()));
+  }
+}
 
 // A pair [x, y] of numbers or strings with a unit of force per length.
 std::array<double, 2> read_pair(const toml::node& node, const std::string& what, Reader& r) {
@@ -141,7 +162,11 @@ std::array<double, 2> read_pair(const toml::node& node, const std::string& what,
   return out;
 }
 
-Segment read_segment(const toml::table& t, int index, Reader& r, SectionKeys& section) {
+Segment read_segment(const toml::table& t,
+                     int index,
+                     Reader& r,
+                     SectionKeys& section,
+                     const MaterialGrade* file_material) {
   const std::string where = fmt::format("segment {}", index + 1);
   const toml::node* type_node = t.get("type");
   if (type_node == nullptr || !type_node->is_string()) {
@@ -152,11 +177,11 @@ Segment read_segment(const toml::table& t, int index, Reader& r, SectionKeys& se
   const std::string type = **type_node->as_string();
   if (type == "flexible") {
     check_toml_keys(t,
-                    {"type", "length",    "EI",         "EI_profile", "kappa0",
-                     "E",    "I",         "width",      "thickness",  "A",
-                     "q",    "q_profile", "q_follower", "density",    "g",
-                     "EA",   "GAs",       "extensible", "nu",         "shear_coefficient",
-                     "plate"},
+                    {"type",  "length",    "EI",         "EI_profile", "kappa0",
+                     "E",     "I",         "width",      "thickness",  "A",
+                     "q",     "q_profile", "q_follower", "density",    "g",
+                     "EA",    "GAs",       "extensible", "nu",         "shear_coefficient",
+                     "plate", "material"},
                     where,
                     r.source);
     FlexibleSegment s;
@@ -218,16 +243,36 @@ Segment read_segment(const toml::table& t, int index, Reader& r, SectionKeys& se
                     "EA and GAs from the section, E and nu)");
     }
     const std::optional<double> EI = r.number(t, "EI", where, Dimension::kRigidity);
-    const bool has_section =
-        section.E || section.I || section.width || section.thickness || section.area;
+    if (const toml::node* m = t.get("material")) {
+      section.material = &material_of(*m, where + ".material", r.source);
+      section.own_material = true;
+    }
+    const bool has_section = section.E || section.I || section.width || section.thickness ||
+                             section.area || section.own_material;
     if (has_section) {
       if (EI || t.get("EI_profile") != nullptr) {
         toml_fail(r.source,
                   line_of(t),
-                  where + " gives both EI and a section (E, I, width, thickness); give one");
+                  where + " gives both EI and a section (E or material, I, width, thickness); " +
+                      "give one");
       }
+      // The file's material applies to the segments that give a section (not to those of EI).
+      if (!section.material) section.material = file_material;
       if (!section.E) {
-        toml_fail(r.source, line_of(t), where + ": a section needs the modulus E");
+        if (!section.material) {
+          toml_fail(r.source,
+                    line_of(t),
+                    where + ": a section needs the modulus E (or material = \"NAME\")");
+        }
+        section.E = Quantity{section.material->E, ""};
+      } else if (section.material && section.E->si != section.material->E) {
+        // An explicit value replaces the library's, with a note (as --E with --material does).
+        r.warn(fmt::format("{}.E = {:.6g} Pa replaces the {:.6g} Pa of material '{}' ({})",
+                           where,
+                           section.E->si,
+                           section.material->E,
+                           section.material->id,
+                           section.material->source));
       }
       if (section.area && (section.width || section.thickness)) {
         toml_fail(r.source,
@@ -324,11 +369,17 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
     throw InvalidInput(fmt::format(
         "{}:{}: TOML syntax error: {}", source, e.source().begin.line, e.description()));
   }
-  check_toml_keys(
-      root,
-      {"boundary", "units", "yield_strength", "segment", "tip_load", "tip", "node_load"},
-      "the file",
-      source);
+  check_toml_keys(root,
+                  {"boundary",
+                   "units",
+                   "yield_strength",
+                   "material",
+                   "segment",
+                   "tip_load",
+                   "tip",
+                   "node_load"},
+                  "the file",
+                  source);
   Reader r;
   r.source = source;
   ChainFile file;
@@ -351,6 +402,11 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
       toml_fail(source, line_of(*b), e.what());
     }
   }
+  // material = "NAME": E (and nu, S_y) of every segment that gives a section without its own E or
+  // material (docs/chain-toml.md).
+  const MaterialGrade* file_material = nullptr;
+  if (const toml::node* m = root.get("material"))
+    file_material = &material_of(*m, "material", source);
   const toml::node* segments = root.get("segment");
   if (segments == nullptr) {
     toml_fail(source, 1, "no [[segment]] tables: a chain needs at least one segment");
@@ -361,8 +417,12 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
   int index = 0;
   for (const toml::node& node : *list) {
     sections.emplace_back();
-    chain.segments.push_back(read_segment(
-        as_table(node, fmt::format("segment {}", index + 1), source), index, r, sections.back()));
+    chain.segments.push_back(
+        read_segment(as_table(node, fmt::format("segment {}", index + 1), source),
+                     index,
+                     r,
+                     sections.back(),
+                     file_material));
     ++index;
   }
   if (const toml::node* node = root.get("tip_load")) {
@@ -422,9 +482,23 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
       toml_fail(source,
                 keys.line,
                 where +
-                    " gives a section (E, I, width, thickness), which needs physical units: "
-                    "add units = \"SI\" at the top of the file (or write values with units, "
-                    "e.g. E = \"200 GPa\")");
+                    " gives a section (E or material, I, width, thickness), which needs physical "
+                    "units: add units = \"SI\" at the top of the file (or write values with "
+                    "units, e.g. E = \"200 GPa\")");
+    }
+    // Poisson's ratio: the segment's nu, else its material's where extensible or plate needs one.
+    std::optional<double> nu = keys.nu;
+    if (keys.material && keys.material->nu && (keys.extensible || keys.plate)) {
+      if (!nu) {
+        nu = keys.material->nu;
+      } else if (*nu != *keys.material->nu) {
+        r.warn(fmt::format("{}.nu = {:g} replaces the {:g} of material '{}' ({})",
+                           where,
+                           *nu,
+                           *keys.material->nu,
+                           keys.material->id,
+                           keys.material->source));
+      }
     }
     SegmentSection section;
     section.E = keys.E->si;
@@ -455,10 +529,12 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
       section.weight_per_length = weight;
     }
     if (keys.extensible) {
-      if (!keys.nu) {
-        toml_fail(source, keys.line, where + ": extensible = true needs Poisson's ratio nu");
+      if (!nu) {
+        toml_fail(source,
+                  keys.line,
+                  where + ": extensible = true needs Poisson's ratio nu (or a material with nu)");
       }
-      if (!(*keys.nu > -1.0 && *keys.nu < 0.5)) {
+      if (!(*nu > -1.0 && *nu < 0.5)) {
         toml_fail(source, keys.line, where + ".nu must be in (-1, 0.5)");
       }
       // Timoshenko's shear coefficient: 5/6 for a rectangle (Cowper 1966 gives 10(1+nu)/(12+11nu);
@@ -475,7 +551,7 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
         toml_fail(source, keys.line, where + ".shear_coefficient must be in (0, 1]");
       }
       segment.EA = section.E * *section.area;
-      segment.GAs = kappa * section.E / (2.0 * (1.0 + *keys.nu)) * *section.area;
+      segment.GAs = kappa * section.E / (2.0 * (1.0 + *nu)) * *section.area;
     } else if (keys.shear_coefficient) {
       toml_fail(
           source, keys.line, where + ": shear_coefficient is used with extensible = true only");
@@ -488,25 +564,18 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
     if (keys.plate) {
       try {
         plate = plate_rule_from_string(*keys.plate, where + ".plate");
-        const ModulusChoice choice =
-            choose_modulus(plate == PlateRule::kAuto ? PlateRule::kOff : plate,
-                           section.E,
-                           keys.nu,
-                           {},
-                           {},
-                           {},
-                           where);
+        const ModulusChoice choice = choose_modulus(
+            plate == PlateRule::kAuto ? PlateRule::kOff : plate, section.E, nu, {}, {}, {}, where);
         if (plate == PlateRule::kAuto) {
           // Checked now (nu, width and thickness), decided after the solve.
-          choose_modulus(
-              PlateRule::kAuto, section.E, keys.nu, keys.width, keys.thickness, 0.0, where);
+          choose_modulus(PlateRule::kAuto, section.E, nu, keys.width, keys.thickness, 0.0, where);
         }
         segment.EI = choice.effective_E * section.I;
       } catch (const InvalidInput& e) {
         toml_fail(source, keys.line, e.what());
       }
     }
-    if (keys.nu && !(*keys.nu > -1.0 && *keys.nu < 0.5)) {
+    if (nu && !(*nu > -1.0 && *nu < 0.5)) {
       toml_fail(source, keys.line, where + ".nu must be in (-1, 0.5)");
     }
     if (keys.nu && !keys.extensible && !keys.plate) {
@@ -522,7 +591,7 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
                                  Material{},
                                  keys.width ? std::optional<double>() : keys.area};
     properties.material.E = keys.E->si;
-    if (keys.nu) properties.material.nu = *keys.nu;
+    if (nu) properties.material.nu = *nu;
     properties.material.density = keys.density;
     properties.plate = plate;
     file.segments.push_back(properties);
@@ -532,6 +601,16 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
           *keys.thickness, std::get<FlexibleSegment>(chain.segments[k]).length, where));
     }
   }
+  if (file_material && !file.physical) {
+    toml_fail(source,
+              line_of(*root.get("material")),
+              "material needs physical units (its values are SI): add units = \"SI\" at the top "
+              "of the file (or write values with units, e.g. width = \"10 mm\")");
+  }
+  // The strength of the safety factor: yield_strength, else the materials' (S_y, or S_ut of a
+  // brittle one: MaterialGrade::static_strength), one for the whole chain (PhysicalChain::validate:
+  // the safety factor is that strength over the chain's largest stress).
+  std::optional<double> strength;
   if (yield) {
     if (!file.physical) {
       toml_fail(source,
@@ -542,9 +621,49 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
     if (!(yield->si > 0.0)) {
       toml_fail(source, line_of(*root.get("yield_strength")), "yield_strength must be > 0");
     }
-    file.yield_strength = yield->si;
+    strength = yield->si;
+  }
+  std::string strength_from;  // the material and where it is named, for messages
+  std::set<std::string> noted;
+  const auto material_strength = [&](const MaterialGrade* m, const std::string& where, int line) {
+    if (m == nullptr) return;
+    const std::optional<double> s = m->static_strength();
+    if (!s) return;
+    const std::string what = fmt::format("material '{}' of {}", m->id, where);
+    if (yield) {
+      if (*s != yield->si && noted.insert(m->id).second) {
+        r.warn(
+            fmt::format("yield_strength = {:.6g} Pa replaces the {:.6g} Pa of material '{}' ({})",
+                        yield->si,
+                        *s,
+                        m->id,
+                        m->source));
+      }
+    } else if (strength && *strength != *s) {
+      toml_fail(source,
+                line,
+                fmt::format("{} has strength {:.6g} Pa, {} {:.6g} Pa: one yield strength per chain "
+                            "(the safety factor is it over the largest stress); give "
+                            "yield_strength at the top of the file",
+                            what,
+                            *s,
+                            strength_from,
+                            *strength));
+    } else {
+      strength = s;
+      strength_from = what;
+    }
+  };
+  if (file_material) material_strength(file_material, "the file", line_of(*root.get("material")));
+  for (std::size_t k = 0; k < sections.size(); ++k) {
+    if (sections[k].own_material) {
+      material_strength(sections[k].material, fmt::format("segment {}", k + 1), sections[k].line);
+    }
+  }
+  if (strength) {
+    file.yield_strength = *strength;
     for (std::optional<SegmentProperties>& properties : file.segments) {
-      if (properties) properties->material.yield_strength = yield->si;
+      if (properties) properties->material.yield_strength = *strength;
     }
   }
   try {

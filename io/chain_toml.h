@@ -7,7 +7,9 @@
 // A file is in physical units (SI) when it says units = "SI" or writes any value with a unit
 // ("50 mm", "200 GPa", "4.33 N"; solver/common/quantity.h). Only then may a flexible segment give
 // its section (E with I, or E with width and thickness) and the file a yield_strength, and only
-// then are results reported in metres, newtons and pascals.
+// then are results reported in metres, newtons and pascals. `material = "NAME"` (the file's, or a
+// segment's own) supplies E, nu and the yield strength from data/materials.csv
+// (mechanisms/material_library.h); explicit values replace it with a warning.
 #include <optional>
 #include <string>
 #include <vector>

@@ -267,7 +267,9 @@ PathUnits PathUnits::si(double length_m, double EI_Nm2) {
                    std::string("N m")};
 }
 
-PathUnits PathUnits::chain_file() {
+PathUnits PathUnits::chain_file(bool physical) {
+  // A physical file's values are SI already (io/chain_toml.h): factors 1, units m, N, N m.
+  if (physical) return si(1.0, 1.0);
   return PathUnits{std::string("chain file"),
                    1.0,
                    1.0,

@@ -394,4 +394,23 @@ void write_tolerance_file(io::Hdf5Group& root, const ToleranceStudy& s) {
   io::write_provenance(root, {});
 }
 
+std::vector<io::CsvColumn> tolerance_csv_columns(const ToleranceStudy& s) {
+  const std::size_t samples = static_cast<std::size_t>(s.options.samples);
+  const std::size_t np = s.parameters.size();
+  std::vector<io::CsvColumn> columns;
+  io::CsvColumn index{"sample", "1", {}, {}};
+  for (std::size_t k = 0; k < samples; ++k) index.numbers.push_back(static_cast<double>(k));
+  columns.push_back(std::move(index));
+  for (std::size_t p = 0; p < np; ++p) {
+    // "thickness 1" -> "draws/thickness_1": a header name without spaces.
+    std::string name = s.parameters[p];
+    std::replace(name.begin(), name.end(), ' ', '_');
+    io::CsvColumn c{"draws/" + name, "1", {}, {}};
+    for (std::size_t k = 0; k < samples; ++k) c.numbers.push_back(s.draws[k * np + p]);
+    columns.push_back(std::move(c));
+  }
+  for (const ToleranceStats& q : s.quantities) columns.push_back({q.name, q.unit, q.values, {}});
+  return columns;
+}
+
 }  // namespace flexure::mechanism

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "flexure/io/csv_table.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/mechanisms/force_of.h"
 #include "flexure/mechanisms/mechanism.h"
@@ -86,5 +87,11 @@ ToleranceStudy mechanism_tolerance(const MechanismDesign& design, const Toleranc
 // (design, distribution, samples, seed, spreads, force_of, mpi_ranks), /parameters, /draws, and per
 // quantity a group with its values, sensitivities and statistics.
 void write_tolerance_file(io::Hdf5Group& root, const ToleranceStudy& study);
+
+// The samples as a CSV table (docs/cli.md "CSV output"), one row per sample: `sample` (0-based, as
+// the failure messages count), the relative change of each parameter (`draws/thickness_1`, ...,
+// `draws/E`, unit 1: the rows of /draws) and each quantity's value (`mean_force_prbm [N]`, ...;
+// empty where the sample's analysis failed: the /<quantity>/values of the HDF5 file).
+std::vector<io::CsvColumn> tolerance_csv_columns(const ToleranceStudy& study);
 
 }  // namespace flexure::mechanism

@@ -152,6 +152,22 @@ def test_design_mechanism_csv_equals_the_json_designs(tmp_path):
                     [d["thicknesses"][i] if i < len(d["thicknesses"]) else None for d in designs],
                     f"thicknesses_{i + 1}")
     assert "geometry" not in t
+    # --fatigue adds the critical pivot's Goodman check; its stresses are in Pa like the JSON's.
+    p = run(["design", "mechanism", "--force", "20N", "--stroke", "10mm", "--material",
+             "ss-301-cr", "--safety-factor", "1.5", "--length-range", "60mm:100mm", "--no-exact",
+             "--fatigue", "--Kf", "1.2", "--csv", "fatigue.csv", "--json"], tmp_path)
+    assert p.returncode == 0, p.stderr
+    designs = json.loads(p.stdout)["designs"]
+    assert designs
+    t = read_csv(tmp_path / "fatigue.csv")
+    for key, unit in (("alternating_stress", "Pa"), ("mean_stress", "Pa"),
+                      ("endurance_limit", "Pa"), ("fatigue_safety_factor", "1"),
+                      ("fatigue_critical_pivot", "1")):
+        assert t[key][0] == unit, key
+        exact_equal(t[key][1], [d[key] for d in designs], key)
+    # S_e of 301 cold-rolled (S_e' 689.5 MPa, Howell Table C.6) after its Marin factors: a few
+    # hundred MPa, so a value in MPa or a unitless ratio would fail here.
+    assert np.all((t["endurance_limit"][1] > 1e8) & (t["endurance_limit"][1] < 689.5e6))
 
 
 def test_dynamics_csv_equals_the_json(tmp_path):
@@ -198,3 +214,120 @@ def test_mechanism_validate_csv_equals_the_json(tmp_path):
     # --spring-rules has no table file: --csv with it is refused.
     p = run(["mechanism", "validate", "--spring-rules", "--csv", "x.csv"], tmp_path)
     assert p.returncode == 2 and not (tmp_path / "x.csv").exists()
+
+
+def test_mechanism_tolerance_csv_is_the_samples_of_the_file(tmp_path):
+    # One row per sample: its relative draws and its quantities, equal to the HDF5 file's.
+    args = ["mechanism", "tolerance", "1A-lpp", "--thickness", "3%", "--samples", "7",
+            "--method", "prbm", "--points", "12", "--seed", "5"]
+    p = run([*args, "--out", "t.h5", "--csv", "t.csv", "--json"], tmp_path)
+    assert p.returncode == 0, p.stderr
+    j = json.loads(p.stdout)
+    assert j["out"] == "t.h5" and j["csv"] == "t.csv"
+    t = read_csv(tmp_path / "t.csv")
+    with h5py.File(tmp_path / "t.h5", "r") as f:
+        names = [n.decode() if isinstance(n, bytes) else n for n in f["parameters"][()]]
+        draws = f["draws"][()]
+        assert draws.shape == (7, len(names))
+        exact_equal(t["sample"][1], np.arange(7), "sample")
+        for k, name in enumerate(names):
+            column = "draws/" + name.replace(" ", "_")
+            assert t[column][0] == "1"
+            exact_equal(t[column][1], draws[:, k], column)
+        for q in ("mean_force_prbm", "percent_constant_force_prbm", "safety_factor"):
+            assert t[q][0] == f[q]["values"].attrs["units"], q
+            exact_equal(t[q][1], f[q]["values"][()], q)
+    assert t["mean_force_prbm"][0] == "N" and t["percent_constant_force_prbm"][0] == "%"
+    # Only the thicknesses were spread: their draws are within the normal cut (3.5 sigma), the
+    # widths' and lengths' are exactly 0.
+    for name, (unit, values) in t.items():
+        if name.startswith("draws/thickness"):
+            assert np.all(np.abs(values) <= 3.5 * 0.03) and np.any(values != 0)
+        elif name.startswith("draws/"):
+            assert np.all(values == 0), name
+    # The statistics of the JSON are those of the CSV's column.
+    np.testing.assert_allclose(np.mean(t["mean_force_prbm"][1]), j["mean_force_prbm"]["mean"],
+                               rtol=1e-12)
+    # --out FILE.csv: the same table and no HDF5 file (nor a temporary).
+    p = run([*args, "--out", "only.csv"], tmp_path)
+    assert p.returncode == 0, p.stderr
+    assert (tmp_path / "only.csv").read_text() == (tmp_path / "t.csv").read_text()
+    assert sorted(os.listdir(tmp_path)) == ["only.csv", "t.csv", "t.h5"]
+    p = run([*args, "--out", "x.csv", "--csv", "y.csv"], tmp_path)
+    assert p.returncode == 2 and "CSV file already" in p.stderr
+
+
+def test_validate_and_bench_refuse_a_csv_out(tmp_path):
+    # Their files have no one table: an --out FILE.csv would be HDF5 under a CSV name.
+    p = run(["validate", "--out", "v.csv"], tmp_path)
+    assert p.returncode == 2, p.stderr
+    assert "--out 'v.csv' names a CSV file, but this command writes HDF5 only" in p.stderr
+    p = run(["bench", "--quick", "--out", "b.CSV", "--json"], tmp_path)
+    assert p.returncode == 2, p.stderr
+    error = json.loads(p.stdout)
+    assert error["exit_code"] == 2 and "--out 'b.CSV' names a CSV file" in error["error"]
+    assert os.listdir(tmp_path) == []
+
+
+def test_csv_alone_is_enough_and_no_output_is_refused(tmp_path):
+    # --csv without --out: only the CSV is written, the same table as with --out.
+    commands = {
+        "sweep": ["sweep", "beam", "--alpha2", "0:5:4", "--n", "-1:1:3"],
+        "path": ["path", "--alpha2", "10", "--mu", "-6.2832"],
+        "map": ["map", "cfm", "--config", "lpp", "--R", "0.5:2:3", "--d", "10:40:2"],
+        "models": ["models", "map", "--n", "0", "--alpha2", "0.5:5:3", "--mu", "-1:1:2",
+                   "--min-seconds", "0", "--models", "prbm"],
+    }
+    for name, args in commands.items():
+        d = tmp_path / name
+        d.mkdir()
+        p = run([*args, "--csv", "alone.csv", "--json"], d)
+        assert p.returncode == 0, (name, p.stderr)
+        j = json.loads(p.stdout)
+        assert j["out"] is None and j["csv"] == "alone.csv", name
+        assert sorted(os.listdir(d)) == ["alone.csv"], name
+        p = run([*args, "--out", "both.h5", "--csv", "both.csv"], d)
+        assert p.returncode == 0, (name, p.stderr)
+        both, alone = read_csv(d / "both.csv"), read_csv(d / "alone.csv")
+        assert both.keys() == alone.keys(), name
+        for key in both:
+            if key == "prbm/seconds" or key.endswith("/seconds"):
+                continue  # a timing
+            assert both[key][0] == alone[key][0], (name, key)
+            if both[key][0] == "text":
+                assert both[key][1] == alone[key][1], (name, key)
+            else:
+                exact_equal(alone[key][1], both[key][1], f"{name} {key}")
+        # Neither --out nor --csv: exit 2 before any work, naming both.
+        p = run(args, d)
+        assert p.returncode == 2, (name, p.stderr)
+        assert "no output file: give --out FILE.h5" in p.stderr and "--csv" in p.stderr, name
+        assert sorted(os.listdir(d)) == ["alone.csv", "both.csv", "both.h5"], name
+
+
+def test_a_chain_file_in_si_labels_the_path_in_newtons_and_metres(tmp_path):
+    # The same numbers with and without units = "SI": equal values; the SI file's are labelled
+    # m, N, N m, the other's in the chain file's own units.
+    chain = """
+[[segment]]
+type = "flexible"
+length = 0.05
+EI = 0.02
+[tip_load]
+Fy = 20.0
+"""
+    (tmp_path / "si.toml").write_text('units = "SI"\n' + chain)
+    (tmp_path / "own.toml").write_text(chain)
+    for name in ("si", "own"):
+        p = run(["path", "--chain", f"{name}.toml", "--out", f"{name}.h5", "--csv", f"{name}.csv",
+                 "--json"], tmp_path)
+        assert p.returncode == 0, p.stderr
+        assert json.loads(p.stdout)["units"] == ("SI" if name == "si" else "chain file")
+    si, own = read_csv(tmp_path / "si.csv"), read_csv(tmp_path / "own.csv")
+    assert si["tip_x"][0] == "m" and si["reaction_Fy"][0] == "N" and si["reaction_M"][0] == "N m"
+    assert own["tip_x"][0] == "length unit of the chain file"
+    for key in ("load_factor", "tip_x", "tip_y", "tip_theta"):
+        exact_equal(si[key][1], own[key][1], key)
+    with h5py.File(tmp_path / "si.h5", "r") as f:
+        assert f.attrs["units"] == "SI"
+        assert f["tip_y"].attrs["units"] == "m" and f["reaction_Fy"].attrs["units"] == "N"
