@@ -102,6 +102,7 @@ PathRequest make_request(const PathArgs& args) {
   }
   // The file first: its own errors (a missing file, bad TOML) are named before the combination.
   std::optional<SegmentChain> file_chain;
+  bool file_physical = false;  // a chain file in SI: the path file says m, N (not "chain file")
   if (from_file) {
     const io::ChainFile file = io::read_chain_file(args.chain_file);
     for (std::size_t k = 0; k < file.segments.size(); ++k) {
@@ -115,6 +116,7 @@ PathRequest make_request(const PathArgs& args) {
       }
     }
     file_chain = file.chain;
+    file_physical = file.physical;
   }
   if (from_file && (howell || args.boundary != "free")) {
     throw InvalidInput(
@@ -206,7 +208,7 @@ PathRequest make_request(const PathArgs& args) {
     request.units = PathUnits::si(beam.length, beam.flexural_rigidity());
   } else if (from_file) {
     request.chain = *file_chain;
-    request.units = PathUnits::chain_file();
+    request.units = PathUnits::chain_file(file_physical);
   } else {
     require_finite_input(args.load_ratio_n, "--n (load ratio n)");
     require_finite_input(args.alpha2, "--alpha2 (P l^2/EI)");

@@ -264,7 +264,8 @@ PathUnits PathUnits::si(double length_m, double EI_Nm2) {
                    std::string("N m")};
 }
 
-PathUnits PathUnits::chain_file() {
+PathUnits PathUnits::chain_file(bool physical) {
+  if (physical) return si(1.0, 1.0);  // the chain is in metres and newtons already
   return PathUnits{std::string("chain file"),
                    1.0,
                    1.0,

@@ -28,10 +28,11 @@ struct PathUnits {
   std::string force_unit = "1";
   std::string moment_unit = "1";
   // Howell's nondimensional beam; a physical beam of length L and rigidity EI in SI (m, N, N m);
-  // a chain file in its own units.
+  // a chain file in its own units, or in SI (m, N, N m) where the file is in physical units
+  // (units = "SI" or a value with a unit: the reader converts every value to SI).
   static PathUnits nondimensional() { return {}; }
   static PathUnits si(double length_m, double EI_Nm2);
-  static PathUnits chain_file();
+  static PathUnits chain_file(bool physical = false);
 };
 
 enum class PathMethod { kShooting, kChain };
