@@ -238,7 +238,7 @@ def draw_controlled_path(f, plt, rec):
     ax.set_ylabel(label(f"support's {f_label} on the tip ({f_name})", f_shown))
     ax.grid(True, alpha=0.3)
     _travel_axis(f, ax, coordinate, c_scale, c_shown)
-    legend_beside(ax)
+    legend_beside(ax, markerscale=0.7)
     if has_shapes:
         _draw_shapes(f, plt, rec, axes[0, 1],
                      lambda r: f"{c_label} = {coordinate[r] * c_scale:.4g} {c_shown}")
@@ -312,9 +312,18 @@ def animate_path(f, plt, out):
     (line,) = ax.plot([], [], "-", color="C0", lw=2)
     title = ax.set_title("")
 
+    moved = CONTROLLED.get(attr(f, "control", "load"))
+    c_scale, c_shown = display(f[moved[0]]) if moved else (1.0, "")
+
     def frame(k):
         line.set_data(x[k] * scale, y[k] * scale)
-        title.set_text(f"load factor lambda = {lam[k]:.4g} (point {k + 1} of {len(lam)})")
+        if moved:  # displacement control: the moved coordinate and the support's load
+            c = f[moved[0]][k] * c_scale
+            load = f[moved[1]][k] * display(f[moved[1]])[0]
+            title.set_text(f"{moved[2]} = {c:.4g} {c_shown}, {moved[3]} = {load:.4g} "
+                           f"{display(f[moved[1]])[1]} (point {k + 1} of {len(lam)})")
+        else:
+            title.set_text(f"load factor lambda = {lam[k]:.4g} (point {k + 1} of {len(lam)})")
         return line, title
 
     anim = animation.FuncAnimation(fig, frame, frames=len(lam), blit=False)
