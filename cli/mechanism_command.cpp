@@ -25,6 +25,7 @@
 #include "flexure/benchmarks/studies/mechanism_method.h"
 #include "flexure/benchmarks/studies/mechanism_tolerance.h"
 #include "flexure/io/hdf5_file.h"
+#include "flexure/io/mechanism_stroke_shapes.h"
 #include "flexure/io/mechanism_toml.h"
 #include "flexure/io/output_path.h"
 #include "flexure/io/parallel/mpi_world.h"
@@ -670,6 +671,7 @@ void write_hdf5(const std::string& path,
     }
   }
   write_design_group(root, a.design);
+  io::write_stroke_shapes(root, a);  // /shapes: the deformed shapes of the exact stroke
   io::write_provenance(root, codes);
   file.commit();
   (void)path;

@@ -62,7 +62,7 @@ std::vector<PlacedSegment> place(const PlacedChain& c, double L, int samples) {
   ShootingSolver::Options o = ExactMechanismSolver::Options{}.shooting;
   const ShootingResult r = ShootingSolver(o).solve_from(c.chain, c.unknowns);
   if (!r.converged()) {
-    throw NoConvergence("re-solving the exact point at the end of the stroke failed: " + r.message);
+    throw NoConvergence("re-solving an exact stroke point for its shapes failed: " + r.message);
   }
   const std::vector<ShapePoint> shape = shooting_shape_at(c.chain, r, s, o);
   const double sign = c.reversed ? -1.0 : 1.0;
@@ -83,20 +83,15 @@ std::vector<PlacedSegment> place(const PlacedChain& c, double L, int samples) {
   return out;
 }
 
-}  // namespace
-
-void add_exact_stroke_end(MechanismGeometry& g,
-                          const MechanismDesign& design,
-                          const ExactPoint& end,
-                          int samples) {
+// Fills the exact fields of `g` from the converged exact point `end`, at any Delta x (the
+// slider placed at its rest position minus end.displacement).
+void fill_exact(MechanismGeometry& g,
+                const MechanismDesign& design,
+                const ExactPoint& end,
+                int samples) {
   if (samples < 2) throw InvalidInput(fmt::format("samples must be >= 2 (got {})", samples));
   if (!end.converged()) {
-    throw InvalidInput("the exact shapes at the end of the stroke need a converged exact point");
-  }
-  if (std::abs(end.displacement - design.stroke) > 1e-12 * (design.r2 + design.r3)) {
-    throw InvalidInput(fmt::format("the exact point is at Delta x = {} m, not at the stroke {} m",
-                                   end.displacement,
-                                   design.stroke));
+    throw InvalidInput("the exact shapes of a stroke point need a converged exact point");
   }
   const PhysicalChain pc = physical_chain(design);
   const ExactSupport support = exact_support(design);
@@ -168,11 +163,37 @@ void add_exact_stroke_end(MechanismGeometry& g,
     }
   }
   g.exact_stroke_end = true;
+}
+
+}  // namespace
+
+void add_exact_stroke_end(MechanismGeometry& g,
+                          const MechanismDesign& design,
+                          const ExactPoint& end,
+                          int samples) {
+  if (std::abs(end.displacement - design.stroke) > 1e-12 * (design.r2 + design.r3)) {
+    throw InvalidInput(fmt::format("the exact point is at Delta x = {} m, not at the stroke {} m",
+                                   end.displacement,
+                                   design.stroke));
+  }
+  fill_exact(g, design, end, samples);
   g.exact_model = fmt::format(
       "exact model (elastica, shooting): every flexure's bent centreline ({} points) and the "
       "links at Delta x = stroke, as mechanism analyze solves it (input force {:.6g} N, one half)",
       samples,
       end.force);
+}
+
+MechanismGeometry exact_geometry_at(const MechanismDesign& design,
+                                    const ExactPoint& point,
+                                    int samples) {
+  MechanismGeometry g = mechanism_geometry(design);
+  fill_exact(g, design, point, samples);
+  g.exact_model = fmt::format(
+      "exact model (elastica, shooting) at Delta x = {:.6g} m (input force {:.6g} N, one half)",
+      point.displacement,
+      point.force);
+  return g;
 }
 
 std::string add_exact_stroke_end(MechanismGeometry& g,

@@ -29,6 +29,15 @@ void add_exact_stroke_end(MechanismGeometry& g,
                           const ExactPoint& end,
                           int samples = 101);
 
+// The geometry of `design` (mechanism_geometry) with the exact fields filled, as above, for
+// `point`, a converged exact point at any Delta x of the stroke (the fields named stroke_end*
+// and exact_end* then hold that point's shapes): a stroke's deformed shapes point by point
+// (io/mechanism_stroke_shapes.h). Throws InvalidInput for a point that is not converged,
+// NoConvergence when the re-integration fails.
+MechanismGeometry exact_geometry_at(const MechanismDesign& design,
+                                    const ExactPoint& point,
+                                    int samples = 101);
+
 // Solves the exact model's stroke as `mechanism analyze` does (`points` stroke points) and adds its
 // last point's shapes to `g`. Returns "" when added, else why not (a PRBM-only configuration, a
 // stroke the exact model did not finish): the drawing then keeps the PRBM pseudo-rigid shapes.

@@ -80,9 +80,13 @@ def plot_file(path, out=None, animate=None, dump_json=None, no_stress=False, n_v
         if expect_kind and kind != expect_kind:
             raise PlotError(f"plot: {path} is a `{kind}` file, not a `{expect_kind}` file "
                             f"({DESCRIPTIONS[expect_kind]})")
-        if animate and kind != "path":
+        if animate and kind == "mechanism-analyze":
+            if "shapes/x" not in f:
+                mechanism.animate_analyze(f, plt, animate)  # raises, naming what is missing
+        elif animate and kind != "path":
             raise PlotError(f"plot: --animate needs deformed shapes; {path} ({kind}) holds none "
-                            "(write a path with `flexure path ... --shapes K`)")
+                            "(write a path with `flexure path ... --shapes K`, or a stroke with "
+                            "`flexure mechanism analyze --out`)")
         for other, _ in extra:
             g = h5py.File(other, "r")
             opened.append(g)
@@ -120,8 +124,12 @@ def plot_file(path, out=None, animate=None, dump_json=None, no_stress=False, n_v
         try:
             save_figure(fig, out)
             written.append(os.path.abspath(out))
+            rec.figure(fig)
             plt.close(fig)
-            if animate:
+            if animate and kind == "mechanism-analyze":
+                mechanism.animate_analyze(f, plt, animate)
+                written.append(os.path.abspath(animate))
+            elif animate:
                 beam.animate_path(f, plt, animate)
                 written.append(os.path.abspath(animate))
             if dump_json:

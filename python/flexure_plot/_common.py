@@ -56,6 +56,9 @@ def style(plt):
         "ytick.labelsize": 9,
         "legend.fontsize": 9,
         "figure.titlesize": 11,
+        # No offset text ("1e-11+6.96e-2") beside an axis: on a nearly constant quantity it
+        # overlaps the axis label and hides the value; the ticks show the numbers themselves.
+        "axes.formatter.useoffset": False,
     })
 
 
@@ -79,6 +82,22 @@ class Recorder:
 
     def __init__(self):
         self.series = []
+        self.axes = []
+
+    def figure(self, fig):
+        """The text of every axes as drawn (call after saving: the offset texts exist only once
+        the figure is drawn): labels, title and any offset text beside the ticks."""
+        def entry(ax, index, parent=None):
+            return {"index": index, "secondary_of": parent, "xlabel": ax.get_xlabel(),
+                    "ylabel": ax.get_ylabel(),
+                    "title": ax.get_title() if hasattr(ax, "get_title") else "",
+                    "x_offset": ax.xaxis.get_offset_text().get_text(),
+                    "y_offset": ax.yaxis.get_offset_text().get_text()}
+
+        for k, ax in enumerate(fig.axes):
+            self.axes.append(entry(ax, k))
+            for child in getattr(ax, "child_axes", []):
+                self.axes.append(entry(child, len(self.axes), k))
 
     def _source(self, source):
         if source is None:
@@ -118,7 +137,7 @@ class Recorder:
                             "y": _json_list(v), "y_source": self._source(src)})
 
     def dump(self, path, kind, file):
-        payload = {"file": file, "kind": kind, "series": self.series}
+        payload = {"file": file, "kind": kind, "series": self.series, "axes": self.axes}
         write_atomically(path, lambda tmp: _write_text(tmp, json.dumps(payload)))
 
 

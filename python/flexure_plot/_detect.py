@@ -26,7 +26,8 @@ KINDS = (
 
 DESCRIPTIONS = {
     "sweep": "flexure sweep beam: tip quantities against the load",
-    "path": "flexure path: equilibrium path (load factor against the tip)",
+    "path": "flexure path: equilibrium path (load factor against the tip; under --control the "
+            "support's force against the moved coordinate)",
     "validate": "flexure validate: relative error of every check",
     "mechanism-analyze": "flexure mechanism analyze: one stroke (force, PRBM error, stress)",
     "mechanism-validate": "flexure mechanism validate: the table of designs",

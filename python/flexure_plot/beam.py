@@ -1,6 +1,8 @@
 """Beam files: `flexure sweep beam` (tip quantities against the load), `flexure path` (load factor
 against the tip, stable and unstable stretches, limit and bifurcation points; the deformed shapes
-at several load levels and their animation) and `flexure validate` (docs/hdf5-schema.md)."""
+at several load levels and their animation; under displacement control the support's force
+against the moved coordinate with its zeros and extrema, docs/paths.md) and `flexure validate`
+(docs/hdf5-schema.md)."""
 import numpy as np
 
 from ._common import PlotError, attr, display, label, legend_beside, unit
@@ -89,10 +91,10 @@ STYLE = {0: ("-", "C0", "stable"), 1: ("--", "C3", "unstable"), 2: (":", "0.4", 
 
 
 def draw_path(f, plt, rec):
+    if attr(f, "control", "load") in CONTROLLED:
+        return draw_controlled_path(f, plt, rec)
     lam = f["load_factor"][()]
     codes = f["stability"][()] if "stability" in f else np.full(len(lam), 4)
-    branch = f["branch"][()] if "branch" in f else np.zeros(len(lam), dtype=int)
-    has_shapes = "shapes/x" in f
     fig, axes = plt.subplots(2, 2, figsize=(12, 8.5))
     axes = axes.ravel()
     tips = ("tip_y", "tip_x", "tip_theta")
@@ -123,27 +125,7 @@ def draw_path(f, plt, rec):
         ax.set_ylabel(label("load factor lambda", unit(f["load_factor"])))
         ax.grid(True, alpha=0.3)
     legend_beside(axes[0])
-    shape_ax = axes[3]
-    if has_shapes:
-        x, y = f["shapes/x"][()], f["shapes/y"][()]
-        scale, shown = display(f["shapes/x"])
-        rows = _shape_rows(len(lam))
-        cmap = plt.get_cmap("viridis")
-        for r in rows:
-            flat = r * x.shape[1] + np.arange(x.shape[1])
-            rec.line(shape_ax, x[r], y[r], "-", color=cmap(r / max(1, len(lam) - 1)),
-                     label=f"lambda = {lam[r]:.3g}" + (f" (branch {branch[r]})" if branch[r] else ""),
-                     x_src=("shapes/x", flat), y_src=("shapes/y", flat), x_scale=scale,
-                     y_scale=scale, panel="shapes")
-        shape_ax.set_aspect("equal", adjustable="datalim")
-        shape_ax.set_xlabel(label("x", shown))
-        shape_ax.set_ylabel(label("y", shown))
-        shape_ax.set_title("deformed shapes")
-        shape_ax.grid(True, alpha=0.3)
-        legend_beside(shape_ax)
-    else:
-        shape_ax.axis("off")
-        shape_ax.text(0.0, 0.5, "no shapes stored (flexure path --shapes K)", fontsize=10)
+    _draw_shapes(f, plt, rec, axes[3], lambda r: f"lambda = {lam[r]:.3g}")
     units = attr(f, "units", "")
     loads = _full_load(f)
     fig.suptitle(f"path ({attr(f, 'method', '')}, {attr(f, 'boundary', '')} end, {units} units)"
@@ -151,6 +133,141 @@ def draw_path(f, plt, rec):
                  f"{attr(f, 'bifurcation_points', 0)} bifurcation(s)", fontsize=11)
     fig.tight_layout()
     return fig
+
+
+def _draw_shapes(f, plt, rec, shape_ax, level):
+    """The deformed shapes at six path points (`level(row)` names each), or a note."""
+    if "shapes/x" not in f:
+        shape_ax.axis("off")
+        shape_ax.text(0.0, 0.5, "no shapes stored (flexure path --shapes K)", fontsize=10)
+        return
+    lam = f["load_factor"][()]
+    branch = f["branch"][()] if "branch" in f else np.zeros(len(lam), dtype=int)
+    x, y = f["shapes/x"][()], f["shapes/y"][()]
+    scale, shown = display(f["shapes/x"])
+    cmap = plt.get_cmap("viridis")
+    for r in _shape_rows(len(lam)):
+        flat = r * x.shape[1] + np.arange(x.shape[1])
+        rec.line(shape_ax, x[r], y[r], "-", color=cmap(r / max(1, len(lam) - 1)),
+                 label=level(r) + (f" (branch {branch[r]})" if branch[r] else ""),
+                 x_src=("shapes/x", flat), y_src=("shapes/y", flat), x_scale=scale,
+                 y_scale=scale, panel="shapes")
+    shape_ax.set_aspect("equal", adjustable="datalim")
+    shape_ax.set_xlabel(label("x", shown))
+    shape_ax.set_ylabel(label("y", shown))
+    shape_ax.set_title("deformed shapes")
+    shape_ax.grid(True, alpha=0.3)
+    legend_beside(shape_ax)
+
+
+# --control: the moved coordinate and the support's load conjugate to it (docs/paths.md).
+CONTROLLED = {"tip-x": ("tip_x", "tip_Fx", "tip x", "Fx"),
+              "tip-y": ("tip_y", "tip_Fy", "tip y", "Fy"),
+              "tip-angle": ("tip_theta", "tip_M", "tip angle", "M")}
+
+# Markers of /force_points: a zero of the force is an equilibrium with the coordinate released,
+# stable where the force restores (df/dc > 0 with a stable displacement-controlled state,
+# docs/paths.md "Force points"); an extremum is a limit point under force control.
+FORCE_MARKS = (
+    ("force_zero", lambda s: s > 0, "o", "C2", "force zero, df/dc > 0: stable when released"),
+    ("force_zero", lambda s: s < 0, "o", "C3", "force zero, df/dc < 0: unstable when released"),
+    ("force_zero", lambda s: ~np.isfinite(s) | (s == 0), "o", "0.5",
+     "force zero, slope not computed"),
+    ("force_maximum", None, "^", "C1", "force maximum (limit under force control)"),
+    ("force_minimum", None, "v", "C1", "force minimum (limit under force control)"),
+)
+
+
+def draw_controlled_path(f, plt, rec):
+    """A displacement-controlled path (`flexure path --control`): the support's load on the moved
+    coordinate against that coordinate, the force points of /force_points marked, the located
+    limit and bifurcation points of /special_points, and the deformed shapes where stored."""
+    control = attr(f, "control")
+    c_name, f_name, c_label, f_label = CONTROLLED[control]
+    c_ds, f_ds = f[c_name], f[f_name]
+    coordinate, force = c_ds[()], f_ds[()]
+    lam = f["load_factor"][()]
+    codes = f["stability"][()] if "stability" in f else np.full(len(lam), 4)
+    has_shapes = "shapes/x" in f
+    fig, axes = plt.subplots(1, 2 if has_shapes else 1, figsize=(15 if has_shapes else 9, 5.5),
+                             squeeze=False)
+    ax = axes[0, 0]
+    c_scale, c_shown = display(c_ds)
+    f_scale, f_shown = display(f_ds)
+    seen = set()
+    for cls, a, b in _runs(codes):
+        line, colour, lab = STYLE[cls]
+        if cls == 2:  # nothing judged (extensible chains): the curve itself, solid
+            line, colour, lab = "-", "C0", "path (stability not checked)"
+        idx = np.arange(a, b)
+        rec.line(ax, coordinate[idx], force[idx], line, color=colour, lw=1.8,
+                 label=lab if cls not in seen else None, x_src=(c_name, idx), y_src=(f_name, idx),
+                 x_scale=c_scale, y_scale=f_scale, panel="force")
+        seen.add(cls)
+    ax.axhline(0.0, color="0.5", lw=0.8)
+    sp = f["special_points"]
+    sp_kinds = [k.decode() if isinstance(k, bytes) else str(k) for k in sp["kind"][()]] \
+        if "kind" in sp else []
+    # Drawn first, large and hollow: a force point at the same place (the force's corner at a
+    # bifurcation where the path switched branch) stays visible inside.
+    for kind, marker, colour, lab in (("limit_point", "s", "C4", "fold of the travel (limit point)"),
+                                      ("bifurcation", "D", "C9", "bifurcation")):
+        pick = np.array([i for i, k in enumerate(sp_kinds) if k == kind], dtype=int)
+        if len(pick):
+            rec.line(ax, sp[c_name][()][pick], sp[f_name][()][pick], marker, color=colour, ms=15,
+                     mfc="none", mew=2.0, ls="none", label=lab,
+                     x_src=("special_points/" + c_name, pick),
+                     y_src=("special_points/" + f_name, pick), x_scale=c_scale, y_scale=f_scale,
+                     panel="special_points:" + kind)
+    fp = f["force_points"] if "force_points" in f else None
+    if fp is not None and len(fp["kind"]):
+        kinds = [k.decode() if isinstance(k, bytes) else str(k) for k in fp["kind"][()]]
+        slope = fp["slope"][()]
+        for kind, chooses, marker, colour, lab in FORCE_MARKS:
+            ok = np.array([k == kind for k in kinds])
+            if chooses is not None:
+                ok &= chooses(slope)
+            pick = np.flatnonzero(ok)
+            if len(pick):
+                rec.line(ax, fp["coordinate"][()][pick], fp["force"][()][pick], marker,
+                         color=colour, ms=9, ls="none", mec="k", mew=0.8, label=lab,
+                         x_src=("force_points/coordinate", pick),
+                         y_src=("force_points/force", pick), x_scale=c_scale, y_scale=f_scale,
+                         panel="force_points:" + kind)
+    ax.set_xlabel(label(f"{c_label}, prescribed ({c_name})", c_shown))
+    ax.set_ylabel(label(f"support's {f_label} on the tip ({f_name})", f_shown))
+    ax.grid(True, alpha=0.3)
+    _travel_axis(f, ax, coordinate, c_scale, c_shown)
+    legend_beside(ax, markerscale=0.7)
+    if has_shapes:
+        _draw_shapes(f, plt, rec, axes[0, 1],
+                     lambda r: f"{c_label} = {coordinate[r] * c_scale:.4g} {c_shown}")
+    target = attr(f, "control_target")
+    to = f" to {float(target) * c_scale:.4g} {c_shown}" if target is not None else ""
+    zeros = sum(1 for k in (fp["kind"][()] if fp is not None else []) if
+                (k.decode() if isinstance(k, bytes) else str(k)) == "force_zero")
+    fig.suptitle(f"path under displacement control ({attr(f, 'method', '')}, "
+                 f"{attr(f, 'boundary', '')} end): {c_label} moved{to}; the force changes sign "
+                 f"{zeros} time(s)", fontsize=11)
+    fig.tight_layout()
+    return fig
+
+
+def _travel_axis(f, ax, coordinate, scale, shown):
+    """A second x axis on top: the travel d from the start of the moving stage toward the target
+    (d = (c - c0) sign(c1 - c0)), the displacement a designer reads."""
+    target = attr(f, "control_target")
+    stage = f["stage"][()] if "stage" in f else np.ones(len(coordinate), dtype=int)
+    moving = np.flatnonzero(stage == stage.max()) if len(stage) else []
+    if target is None or not len(moving):
+        return
+    c0 = float(coordinate[moving[0]])
+    sign = 1.0 if float(target) >= c0 else -1.0
+    if sign < 0:
+        ax.invert_xaxis()  # the travel grows to the right
+    top = ax.secondary_xaxis("top", functions=(lambda c: sign * (c - c0 * scale),
+                                               lambda d: c0 * scale + sign * d))
+    top.set_xlabel(label("travel d from the start toward the target", shown))
 
 
 def _full_load(f):
@@ -195,9 +312,18 @@ def animate_path(f, plt, out):
     (line,) = ax.plot([], [], "-", color="C0", lw=2)
     title = ax.set_title("")
 
+    moved = CONTROLLED.get(attr(f, "control", "load"))
+    c_scale, c_shown = display(f[moved[0]]) if moved else (1.0, "")
+
     def frame(k):
         line.set_data(x[k] * scale, y[k] * scale)
-        title.set_text(f"load factor lambda = {lam[k]:.4g} (point {k + 1} of {len(lam)})")
+        if moved:  # displacement control: the moved coordinate and the support's load
+            c = f[moved[0]][k] * c_scale
+            load = f[moved[1]][k] * display(f[moved[1]])[0]
+            title.set_text(f"{moved[2]} = {c:.4g} {c_shown}, {moved[3]} = {load:.4g} "
+                           f"{display(f[moved[1]])[1]} (point {k + 1} of {len(lam)})")
+        else:
+            title.set_text(f"load factor lambda = {lam[k]:.4g} (point {k + 1} of {len(lam)})")
         return line, title
 
     anim = animation.FuncAnimation(fig, frame, frames=len(lam), blit=False)

@@ -1,12 +1,14 @@
 """Mechanism files: `flexure mechanism analyze --out` (the stroke: slider force of the PRBM and of
 the exact model, the PRBM's force error, the stress of every flexure against the yield strength,
-the stretch outside the PRBM's validity shaded), `mechanism validate --out` (the table of designs)
+the stretch outside the PRBM's validity shaded; the deformed half mechanism at rest and at several
+stroke points where the file holds the exact model's shapes, /shapes, and their animation),
+`mechanism validate --out` (the table of designs)
 and `mechanism tolerance --out` (distributions over the sampled designs; docs/tolerance.md)."""
 import math
 
 import numpy as np
 
-from ._common import attr, display, finite, label, legend_beside, unit
+from ._common import PlotError, attr, display, finite, label, legend_beside, unit
 
 
 def _flag(f, name):
@@ -33,9 +35,16 @@ def draw_analyze(f, plt, rec, stress=True):
                 if f"stress_{m}_pivot{p}" in f]
     stress_panel = stress and bool(stresses)
     panels = 1 + (exact is not None) + stress_panel
-    fig, axes = plt.subplots(panels, 1, figsize=(8.5, 2.0 + 3.0 * panels), sharex=True,
-                             squeeze=False)
-    axes = axes[:, 0]
+    has_shapes = "shapes/x" in f
+    fig = plt.figure(figsize=(16.5 if has_shapes else 8.5, 2.0 + 3.0 * max(panels, 2 if has_shapes
+                                                                          else 1)))
+    grid = fig.add_gridspec(panels, 2 if has_shapes else 1,
+                            width_ratios=(1.0, 0.9) if has_shapes else None)
+    axes = [fig.add_subplot(grid[0, 0])]
+    for r in range(1, panels):
+        axes.append(fig.add_subplot(grid[r, 0], sharex=axes[0]))
+    for a in axes[:-1]:
+        a.tick_params(labelbottom=False)
     ax = axes[0]
     k = np.arange(len(dx))
     rec.line(ax, dx, f["force_prbm"][()], "o-", ms=3, label="PRBM", x_src=("displacement", k),
@@ -86,6 +95,8 @@ def draw_analyze(f, plt, rec, stress=True):
         axes[0].fill_between([], [], color="C3", alpha=0.12, label=text)
     legend_beside(axes[0])
     axes[-1].set_xlabel(label("slider displacement Delta x", length_unit))
+    if has_shapes:
+        _draw_shapes(f, plt, rec, fig.add_subplot(grid[:min(panels, 2), 1]), force_of)
     pcf = ""
     if "percent_constant_force_prbm" in f.attrs:
         pcf = f"PRBM {float(f.attrs['percent_constant_force_prbm']):.2f} %{_pcf_note(f, 'prbm')}"
@@ -97,6 +108,96 @@ def draw_analyze(f, plt, rec, stress=True):
                  f"percent constant force {pcf}", fontsize=11)
     fig.tight_layout()
     return fig
+
+
+def _shape_rows(count, wanted=5):
+    return np.unique(np.linspace(0, count - 1, min(count, wanted)).round().astype(int))
+
+
+def _draw_shapes(f, plt, rec, ax, force_of):
+    """The half mechanism at rest and at up to five stored stroke points (the last: the end of
+    the stroke), each the exact model's centreline from the ground to the slider (/shapes)."""
+    x, y = f["shapes/x"][()], f["shapes/y"][()]
+    dx = f["shapes/displacement"][()]
+    rows = f["shapes/point_index"][()]
+    scale, shown = display(f["shapes/x"], "m")
+    k = np.arange(x.shape[1])
+    rec.line(ax, f["shapes/rest_x"][()], f["shapes/rest_y"][()], "-", color="0.6", lw=1.5,
+             label="at rest", x_src=("shapes/rest_x", k), y_src=("shapes/rest_y", k),
+             x_scale=scale, y_scale=scale, panel="shapes:rest")
+    force = f["force_exact"][()] if "force_exact" in f else None
+    f_scale, f_unit = display(f["force_exact"], "N") if force is not None else (1.0, "N")
+    cmap = plt.get_cmap("viridis")
+    picks = _shape_rows(len(dx))
+    for n, r in enumerate(picks):
+        flat = r * x.shape[1] + k
+        text = f"Delta x = {dx[r] * scale:.4g} {shown}"
+        if force is not None:
+            text += f", F = {force[rows[r]] * f_scale:.4g} {f_unit}"
+        rec.line(ax, x[r], y[r], "-", lw=2.0, color=cmap(n / max(1, len(picks) - 1)),
+                 label=text, x_src=("shapes/x", flat), y_src=("shapes/y", flat), x_scale=scale,
+                 y_scale=scale, panel="shapes")
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel(label("x along the slider axis", shown))
+    ax.set_ylabel(label("y", shown))
+    ax.set_title(f"half mechanism, exact model (F of {force_of})")
+    ax.grid(True, alpha=0.3)
+    legend_beside(ax)
+
+
+def animate_analyze(f, plt, out):
+    """One frame at rest and one per stored stroke point: the half mechanism's exact shapes."""
+    if "shapes/x" not in f:
+        why = ("it holds no exact model (written with --method prbm, --method auto chose the "
+               "PRBM alone, or the configuration has none): run `flexure mechanism analyze ... "
+               "--method exact --out FILE.h5`") if "force_exact" not in f else (
+            "it was written by a flexure older than /shapes, or the exact stroke converged at "
+            "no point: write it again with `flexure mechanism analyze ... --out FILE.h5`")
+        note = attr(f, "shapes_note")
+        if note:
+            why = note
+        raise PlotError(f"plot: --animate needs deformed shapes; {f.filename} (mechanism "
+                        f"analyze) has no /shapes group (the exact model's shape at every "
+                        f"stroke point): {why}")
+    from matplotlib import animation
+
+    x, y = f["shapes/x"][()], f["shapes/y"][()]
+    rest_x, rest_y = f["shapes/rest_x"][()], f["shapes/rest_y"][()]
+    dx = f["shapes/displacement"][()]
+    rows = f["shapes/point_index"][()]
+    force = f["force_exact"][()] if "force_exact" in f else None
+    scale, shown = display(f["shapes/x"], "m")
+    frames_x = np.vstack([rest_x[None, :], x]) * scale
+    frames_y = np.vstack([rest_y[None, :], y]) * scale
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    ok = np.isfinite(frames_x) & np.isfinite(frames_y)
+    pad = 0.05 * (np.ptp(frames_x[ok]) + 1e-12)
+    ax.set_xlim(frames_x[ok].min() - pad, frames_x[ok].max() + pad)
+    ax.set_ylim(frames_y[ok].min() - pad, frames_y[ok].max() + pad)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel(label("x along the slider axis", shown))
+    ax.set_ylabel(label("y", shown))
+    ax.grid(True, alpha=0.3)
+    ax.plot(rest_x * scale, rest_y * scale, "-", color="0.75", lw=1.2)
+    (line,) = ax.plot([], [], "-", color="C0", lw=2)
+    title = ax.set_title("")
+    f_scale, f_unit = display(f["force_exact"], "N") if force is not None else (1.0, "N")
+
+    def frame(k):
+        line.set_data(frames_x[k], frames_y[k])
+        if k == 0:
+            title.set_text("at rest")
+        else:
+            text = f"Delta x = {dx[k - 1] * scale:.4g} {shown} (point {k} of {len(dx)})"
+            if force is not None:
+                text += f", exact F = {force[rows[k - 1]] * f_scale:.4g} {f_unit}"
+            title.set_text(text)
+        return line, title
+
+    anim = animation.FuncAnimation(fig, frame, frames=len(dx) + 1, blit=False)
+    anim.save(out, writer=animation.PillowWriter(fps=6))
+    plt.close(fig)
+    return len(dx) + 1
 
 
 def draw_validate(f, plt, rec):

@@ -11,7 +11,7 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
-from conftest import BINARY, BUILD
+from conftest import BINARY, BUILD, ROOT
 
 h5py = pytest.importorskip("h5py")
 pytest.importorskip("matplotlib")
@@ -24,7 +24,8 @@ CASES = [
      ["load_factor", "tip_x", "tip_y", "tip_theta", "special_points/load_factor", "shapes/x"]),
     ("validate.h5", "validate", "validate", ["rel_error", "tolerance"]),
     ("stroke.h5", "mechanism-analyze", "mechanism analyze 1A-lpp --method exact --points 6",
-     ["displacement", "force_prbm", "force_exact", "stress_prbm_pivot1"]),
+     ["displacement", "force_prbm", "force_exact", "stress_prbm_pivot1", "shapes/x",
+      "shapes/rest_x"]),
     ("designs.h5", "mechanism-validate", "mechanism validate --points 6 --designs howell",
      ["percent_constant_force", "safety_factor"]),
     ("tolerance.h5", "mechanism-tolerance",
@@ -139,6 +140,56 @@ def test_path_marks_the_limit_points_and_the_unstable_stretch(files, tmp_path):
     assert not (set(np.flatnonzero(stability == 0)) & unstable_rows - {min(unstable_rows)})
 
 
+def test_displacement_controlled_path_is_force_against_displacement(tmp_path):
+    # The inclined bistable beam of docs/paths.md: tip y moved 12 mm down. The figure is the
+    # support's force against the prescribed coordinate, in the file's SI units shown as mm and
+    # N, with every force point of /force_points marked at its stored value, zeros split by the
+    # sign of the stored slope; nothing is drawn against the load factor.
+    h5 = tmp_path / "inclined.h5"
+    p = run(["path", "--chain", os.path.join(ROOT, "docs/examples/inclined_bistable_path.toml"),
+             "--control", "tip-y", "--tip-y", "-0.0052907973", "--branch", "1", "--one-way",
+             "--min-points", "121", "--out", str(h5)])
+    assert p.returncode == 0, p.stderr
+    dump = tmp_path / "inclined.json"
+    p = run(["plot", str(h5), "--out", str(tmp_path / "inclined.png"), "--dump-json", str(dump)])
+    assert p.returncode == 0, p.stderr
+    assert_valid_png(tmp_path / "inclined.png")
+    recorded = json.loads(dump.read_text())
+    compared = check_series_against_file(recorded, h5)
+    assert {"tip_y", "tip_Fy", "force_points/coordinate", "force_points/force"} <= compared
+    assert "load_factor" not in compared
+    main = recorded["axes"][0]
+    assert main["xlabel"].startswith("tip y") and main["xlabel"].endswith("[mm]"), main
+    assert "Fy" in main["ylabel"] and main["ylabel"].endswith("[N]"), main
+    # No offset text ("1e-11+6.96e-2") on any axes: it overlapped the labels.
+    assert all(a["x_offset"] == "" and a["y_offset"] == "" for a in recorded["axes"])
+    with h5py.File(h5, "r") as f:
+        assert f["tip_y"].attrs["units"] in ("m", b"m")
+        kinds = [k.decode() for k in f["force_points/kind"][()]]
+        slope = f["force_points/slope"][()]
+        y, fy = f["tip_y"][()], f["tip_Fy"][()]
+        zeros_c = f["force_points/coordinate"][()][[k == "force_zero" for k in kinds]]
+    assert kinds.count("force_zero") == 2  # bistable: the force changes sign twice
+    marks = [s for s in recorded["series"] if s["panel"].startswith("force_points:")]
+    marked = sorted(i for s in marks for i in s["y_source"]["indices"])
+    assert marked == list(range(len(kinds)))  # every force point once
+    for s in marks:
+        for i in s["y_source"]["indices"]:
+            assert s["panel"] == "force_points:" + kinds[i]
+            if kinds[i] == "force_zero":
+                assert s["label"].endswith(": stable when released") == (slope[i] > 0)
+                assert s["label"].endswith(": unstable when released") == (slope[i] < 0)
+    # Independently of /force_points: the drawn curve changes sign between rows k and k + 1
+    # exactly where a marked zero lies (on the chord's coordinate span, to 1e-9 m).
+    curve = [s for s in recorded["series"] if s["panel"] == "force"]
+    rows = sorted({i for s in curve for i in s["y_source"]["indices"]})
+    assert rows == list(range(len(y)))
+    crossings = [k for k in range(len(y) - 1) if fy[k] * fy[k + 1] < 0]
+    assert len(crossings) == len(zeros_c)
+    for k, c in zip(crossings, sorted(zeros_c, key=lambda c: -c)):
+        assert min(y[k], y[k + 1]) - 1e-9 <= c <= max(y[k], y[k + 1]) + 1e-9, (k, c)
+
+
 def test_animation_has_one_frame_per_path_point(files, tmp_path):
     from PIL import Image
 
@@ -151,6 +202,58 @@ def test_animation_has_one_frame_per_path_point(files, tmp_path):
         points = len(f["load_factor"])
     with Image.open(gif) as im:
         assert im.format == "GIF" and im.n_frames == points
+
+
+def test_mechanism_stroke_shapes_are_drawn_and_animated(files, tmp_path):
+    # /shapes of `mechanism analyze`: one exact shape per solved stroke point. Independent checks
+    # of the stored geometry: the ground end stays where it is at rest, the slider end moves by
+    # -Delta x along the axis (y = 0), and every flexure keeps its length (the polyline through 41
+    # stations is shorter than the arc by O(h^2): 1e-3 relative).
+    from PIL import Image
+
+    with h5py.File(files / "stroke.h5", "r") as f:
+        x, y = f["shapes/x"][()], f["shapes/y"][()]
+        rx, ry = f["shapes/rest_x"][()], f["shapes/rest_y"][()]
+        part = f["shapes/part"][()]
+        dx = f["shapes/displacement"][()]
+        rows = f["shapes/point_index"][()]
+        np.testing.assert_array_equal(dx, f["displacement"][()][rows])
+        assert len(dx) == len(f["displacement"])  # the exact model solved every point
+        pivots = f["design/joints/length"][()]
+    span = np.ptp(rx)
+    np.testing.assert_allclose(x[:, 0], rx[0], atol=1e-9 * span)
+    np.testing.assert_allclose(y[:, 0], ry[0], atol=1e-9 * span)
+    np.testing.assert_allclose(x[:, -1], rx[-1] - dx, atol=1e-9 * span)
+    np.testing.assert_allclose(y[:, -1], 0.0, atol=1e-9 * span)
+    flexures = sorted(set(part) - {0})
+    assert flexures
+    for p in flexures:
+        on = np.flatnonzero(part == p)
+        rest_length = np.hypot(np.diff(rx[on]), np.diff(ry[on])).sum()
+        assert rest_length == pytest.approx(pivots[p - 1], rel=1e-9)
+        bent = np.hypot(np.diff(x[:, on], axis=1), np.diff(y[:, on], axis=1)).sum(axis=1)
+        np.testing.assert_allclose(bent, rest_length, rtol=1e-3)
+        assert np.all(bent <= rest_length * (1 + 1e-9))
+    gif = tmp_path / "stroke.gif"
+    p = run(["plot", str(files / "stroke.h5"), "--out", str(tmp_path / "s.png"), "--animate",
+             str(gif)])
+    assert p.returncode == 0, p.stderr
+    with Image.open(gif) as im:
+        assert im.format == "GIF" and im.n_frames == len(dx) + 1  # at rest, then every point
+
+
+def test_mechanism_without_shapes_refuses_to_animate(tmp_path):
+    # A PRBM-only analysis (no exact model): no /shapes, and --animate says what is missing.
+    h5 = tmp_path / "prbm.h5"
+    p = run(["mechanism", "analyze", "1A-lpp", "--method", "prbm", "--points", "6", "--out",
+             str(h5)])
+    assert p.returncode == 0, p.stderr
+    with h5py.File(h5, "r") as f:
+        assert "shapes" not in f
+    p = run(["plot", str(h5), "--out", str(tmp_path / "m.png"), "--animate",
+             str(tmp_path / "m.gif")])
+    assert p.returncode == 2 and "/shapes" in p.stderr, p.stderr
+    assert not (tmp_path / "m.png").exists() and not (tmp_path / "m.gif").exists()
 
 
 def test_mechanism_force_error_panel_is_the_relative_difference(files, tmp_path):
