@@ -361,11 +361,19 @@ CbcmResult ChainedBcmSolver::solve(const SegmentChain& chain) const {
   if (!outcome.converged && inverse_d == 0.0 && prepared.prescribed > 0) {
     // The inextensible segment shortens only by bending: a prescribed tip that pushes it along
     // its axis has no equilibrium near the straight segment (docs/extensible.md).
-    out.message += fmt::format(
-        "; the flexible segment is inextensible (no EA) and its tip coordinates are prescribed: "
+    // The generic message's guess (a fold, a load the model cannot carry) is replaced: here the
+    // likelier cause is the missing axial compliance.
+    const std::string hint = fmt::format(
+        "the flexible segment is inextensible (no EA) and its tip coordinates are prescribed: "
         "where they compress it along its axis the {} model has no equilibrium near the straight "
         "segment; give the segment's EA (docs/extensible.md) or a slenderness L/t",
         model_name());
+    out.message =
+        out.message.rfind("the load path could not be followed", 0) == 0
+            ? fmt::format("the load path could not be followed past load factor {:.6g}: {}",
+                          outcome.load_factor,
+                          hint)
+            : out.message + "; " + hint;
   }
   out.axial_stiffness = d;
   const double lambda = outcome.load_factor;
