@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
+#include <string>
 
 #include "flexure/beam/beam_solution_parts.h"
 #include "flexure/elements/beam_constraint_model.h"
@@ -139,6 +141,8 @@ BeamSolution solve_bcm_cantilever(const BeamProblem& p, double alpha2, int shape
   s.max_element_deflection = std::fabs(r.y);
   s.model_inside_validity = r.inside_validity;
   s.slenderness = p.slenderness;
+  s.axial_stiffness_d = p.slenderness > 0.0 ? 12.0 * p.slenderness * p.slenderness
+                                            : std::numeric_limits<double>::infinity();
   s.branch = fmt::format(
       "one BCM element in closed form (axial load p = {:.6g}, |y| = {:.4g} l, {} its stated range "
       "0.1 l)",
@@ -171,16 +175,26 @@ BeamSolution solve_chained(BeamMethod method,
   s.max_element_deflection = r.max_element_deflection;
   s.model_inside_validity = r.inside_validity;
   s.slenderness = p.slenderness;
+  s.axial_stiffness_d = r.axial_stiffness;
   s.inflection_points = count_curvature_sign_changes(r.nodes);
+  // The axial stiffness is named where it is finite: a chain segment's EA sets it without any
+  // option, so the answer says which beam was solved.
+  const std::string axial =
+      std::isfinite(r.axial_stiffness)
+          ? fmt::format(", axial stiffness d = EA L^2/EI = {:.6g}{}",
+                        r.axial_stiffness,
+                        p.slenderness > 0.0 ? " (the slenderness)" : " (the segment's EA)")
+          : "";
   s.branch = fmt::format(
       "proportional loading ({} step{}), {} BCM element{} in deflected frames (largest element "
-      "|y| = {:.3g} of its length, {} the BCM's stated 0.1)",
+      "|y| = {:.3g} of its length, {} the BCM's stated 0.1){}",
       r.load_steps,
       r.load_steps == 1 ? "" : "s",
       r.elements,
       r.elements == 1 ? "" : "s",
       r.max_element_deflection,
-      r.inside_validity ? "inside" : "OUTSIDE");
+      r.inside_validity ? "inside" : "OUTSIDE",
+      axial);
   if (r.converged() && shape_points > 0) {
     s.shape = resample(r.nodes, shape_points);
     for (ShapePoint& q : s.shape) {

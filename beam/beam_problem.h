@@ -135,11 +135,14 @@ struct BeamSolution : SolveStatus {
   bool prbm_inside_validity = false;
   // The cheaper models of the ladder (beam_ladder.h): the PR-3R constants used; the BCM's and
   // CBCM's largest element deflection |y|/element length (NaN for the others), whether it is within
-  // the BCM's stated 0.1, and the slenderness L/t used (0: inextensible).
+  // the BCM's stated 0.1, the slenderness L/t given (0: none) and the axial stiffness
+  // d = EA L^2/EI solved with (from the slenderness or a chain segment's EA; infinity: the
+  // inextensible beam, NaN: not a BCM).
   std::string model_constants;
   double max_element_deflection = std::numeric_limits<double>::quiet_NaN();
   bool model_inside_validity = true;
   double slenderness = 0.0;
+  double axial_stiffness_d = std::numeric_limits<double>::quiet_NaN();
   // The stability verdict of the returned equilibrium under the problem's loads and supports
   // (docs/stability.md): the discrete second variation for elliptic, shooting and the chain
   // algorithm, d^2V/dTheta^2 of the PRBM's energy for the PRBM; not_conservative for a follower

@@ -71,7 +71,8 @@ void add_ladder_settings(const BeamRequest& r,
     if (!same_name(r.method, "bcm") && !same_name(r.method, "cbcm")) {
       throw InvalidInput(
           fmt::format("{} sets the axial stiffness of the BCM and CBCM (d = 12 (L/t)^2); {} "
-                      "{} is inextensible",
+                      "{} does not take it (the exact methods are inextensible; a chain "
+                      "segment's EA makes the shooting method extensible, docs/extensible.md)",
                       names.slenderness,
                       names.method,
                       r.method));

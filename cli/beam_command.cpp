@@ -466,6 +466,10 @@ Json to_json(const BeamInput& input,
     out["max_element_deflection"] = solution.max_element_deflection;
     out["within_validity"] = solution.model_inside_validity;
     out["slenderness"] = solution.slenderness > 0.0 ? Json(solution.slenderness) : Json(nullptr);
+    // d = EA L^2/EI solved with (a chain segment's EA or the slenderness); null: inextensible.
+    out["axial_stiffness_d"] = std::isfinite(solution.axial_stiffness_d)
+                                   ? Json(solution.axial_stiffness_d)
+                                   : Json(nullptr);
   }
   if (problem.shape_points > 0) {
     Json shape = Json::array();
@@ -755,7 +759,7 @@ void register_beam_command(CLI::App& app) {
       "--slenderness",
       args->slenderness,
       "BCM and chained BCM: slenderness L/t of the flexible segment, axial stiffness d = 12 "
-      "(L/t)^2 (default: inextensible, d -> infinity)");
+      "(L/t)^2 (default: a --chain segment's EA, else inextensible, d -> infinity)");
   beam->add_option("--increments",
                    args->increments,
                    "Chain algorithm: load increments to start with (default 1: the whole load; a "

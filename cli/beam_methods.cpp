@@ -14,11 +14,13 @@ namespace flexure::cli {
 
 void add_method_option(CLI::App& command, std::string& method) {
   command
-      .add_option("--method",
-                  method,
-                  "Solution method: auto (the cheapest within --tol: PRBM, elliptic or shooting), "
-                  "elliptic, shooting, chain, prbm; the cheaper models linear, prbm3r, bcm, cbcm "
-                  "(docs/models.md)")
+      .add_option(
+          "--method",
+          method,
+          "Solution method: auto (the cheapest within --tol: a model of the ladder, the PRBM, "
+          "elliptic or shooting), "
+          "elliptic, shooting, chain, prbm; the cheaper models linear, prbm3r, bcm, cbcm "
+          "(docs/models.md)")
       ->default_str("auto")
       ->transform(
           CLI::IsMember(std::vector<std::string>(kBeamMethodNames.begin(), kBeamMethodNames.end()),

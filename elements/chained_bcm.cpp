@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "flexure/elements/beam_constraint_model.h"
 #include "flexure/elements/load_path_newton.h"
@@ -21,6 +22,8 @@ struct PointLoad {
 // The chain in the flexible segment's units (length L = 1, EI = 1): what the residual needs.
 struct Prepared {
   double L = 1.0, EI = 1.0;
+  double EA = std::numeric_limits<double>::infinity();   // the segment's (docs/extensible.md)
+  double GAs = std::numeric_limits<double>::infinity();  // not modelled: the BCM is shear-rigid
   ChainPose root;                       // the segment's root (placed by the rigid links before it)
   std::vector<RigidSegment> tip_links;  // after the segment, lengths per L
   // Loads on the distal part: [0] at the segment's tip, [i] at the far end of tip link i-1 (the
@@ -62,6 +65,12 @@ Prepared prepare(const SegmentChain& chain, const std::string& model) {
         model,
         flexible.kappa0 != 0.0 ? "an initial curvature kappa0" : "an EI profile"));
   }
+  if (flexible.has_distributed_load()) {
+    throw InvalidInput(fmt::format(
+        "the {} model's elements carry end loads only: the flexible segment has a distributed "
+        "load (qx, qy, q_profile or q_follower); the shooting method solves it",
+        model));
+  }
   if (chain.tip_load.follower != 0.0) {
     throw InvalidInput(fmt::format(
         "the {} model takes dead loads; the shooting method solves a follower force", model));
@@ -70,6 +79,8 @@ Prepared prepare(const SegmentChain& chain, const std::string& model) {
   Prepared p;
   p.L = flexible.length;
   p.EI = flexible.EI;
+  p.EA = flexible.EA;
+  p.GAs = flexible.GAs;
   const double force_scale = p.L * p.L / p.EI, moment_scale = p.L / p.EI;
   const std::vector<ChainPose> unloaded = chain.unloaded_nodes();
   const ChainPose& root = unloaded[static_cast<std::size_t>(flexible_index)];
@@ -217,6 +228,29 @@ class Discretisation {
   double inverse_de_;  // 1/d of one element: N^2/d
 };
 
+// The segment's axial stiffness d = EA L^2/EI (12 (L/t)^2 for a rectangle): its own EA, else the
+// slenderness option's, else infinity (the inextensible elastica).
+double axial_stiffness(const Prepared& p, double slenderness, const std::string& model) {
+  if (std::isfinite(p.EA)) {
+    const double d = p.EA * p.L * p.L / p.EI;
+    if (slenderness > 0.0) {
+      throw InvalidInput(fmt::format(
+          "the {} model takes its axial stiffness from the flexible segment's EA = {:g} (d = EA "
+          "L^2/EI = {:g}) and from a slenderness L/t = {:g} (d = 12 (L/t)^2 = {:g}): give one "
+          "(leave "
+          "out the slenderness to use EA)",
+          model,
+          p.EA,
+          d,
+          slenderness,
+          12.0 * slenderness * slenderness));
+    }
+    return d;
+  }
+  if (slenderness > 0.0) return 12.0 * slenderness * slenderness;
+  return std::numeric_limits<double>::infinity();
+}
+
 }  // namespace
 
 void ChainedBcmSolver::Options::validate() const {
@@ -250,8 +284,8 @@ CbcmResult ChainedBcmSolver::solve(const CantileverCase& problem) const {
 
 CbcmResult ChainedBcmSolver::solve(const SegmentChain& chain) const {
   const Prepared prepared = prepare(chain, model_name());
-  const double inverse_d =
-      options_.slenderness > 0.0 ? 1.0 / (12.0 * options_.slenderness * options_.slenderness) : 0.0;
+  const double d = axial_stiffness(prepared, options_.slenderness, model_name());
+  const double inverse_d = 1.0 / d;  // 0 for the inextensible segment
   Discretisation model(prepared, options_.elements, inverse_d);
   Evaluation scratch;
   const auto residual = [&](const Eigen::VectorXd& z, double lambda, Eigen::VectorXd& r) {
@@ -324,6 +358,24 @@ CbcmResult ChainedBcmSolver::solve(const SegmentChain& chain) const {
                                   n,
                                   n == 1 ? "" : "s")
                     : outcome.message;
+  if (!outcome.converged && inverse_d == 0.0 && prepared.prescribed > 0) {
+    // The inextensible segment shortens only by bending: a prescribed tip that pushes it along
+    // its axis has no equilibrium near the straight segment (docs/extensible.md).
+    // The generic message's guess (a fold, a load the model cannot carry) is replaced: here the
+    // likelier cause is the missing axial compliance.
+    const std::string hint = fmt::format(
+        "the flexible segment is inextensible (no EA) and its tip coordinates are prescribed: "
+        "where they compress it along its axis the {} model has no equilibrium near the straight "
+        "segment; give the segment's EA (docs/extensible.md) or a slenderness L/t",
+        model_name());
+    out.message =
+        out.message.rfind("the load path could not be followed", 0) == 0
+            ? fmt::format("the load path could not be followed past load factor {:.6g}: {}",
+                          outcome.load_factor,
+                          hint)
+            : out.message + "; " + hint;
+  }
+  out.axial_stiffness = d;
   const double lambda = outcome.load_factor;
   Evaluation e;
   model.evaluate(z, lambda, e);
@@ -368,6 +420,17 @@ CbcmResult ChainedBcmSolver::solve(const SegmentChain& chain) const {
     out.max_element_deflection = std::max(out.max_element_deflection, std::fabs(z[2 * j]));
   }
   out.inside_validity = out.max_element_deflection <= bcm::kValidDeflection;
+  if (std::isfinite(prepared.GAs)) {
+    // Shear adds P L/GAs to a cantilever's tip against the bending P L^3/(3 EI)
+    // (docs/extensible.md): the ratio 3 EI/(GAs L^2) says what the BCM leaves out.
+    out.warn(WarningKind::kOutsideValidity,
+             fmt::format("the {} model is shear-rigid: the flexible segment's GAs = {:g} is not "
+                         "modelled (shear adds about 3 EI/(GAs L^2) = {:.3g} of a cantilever's "
+                         "bending tip deflection); the shooting method models it",
+                         model_name(),
+                         prepared.GAs,
+                         3.0 * prepared.EI / (prepared.GAs * prepared.L * prepared.L)));
+  }
   // The BCM alone (one element) is used beyond its range only with a warning; a chain of them is
   // judged by its measured error against N (docs/models.md), not by each element's deflection.
   if (out.converged() && !out.inside_validity && n == 1) {

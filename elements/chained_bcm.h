@@ -22,13 +22,18 @@
 // is correct to second order in its displacements, which are O(h) (theta_j) and O(h^2) (y_j).
 //
 // Axial stiffness: the segment's d = E A L^2/EI = 12 (L/t)^2 for a rectangle; element j's is
-// d h^2/L^2 = d/N^2. The default is the inextensible limit d -> infinity, which the exact
-// elastica describes; `slenderness` (L/t) makes it extensible.
+// d h^2/L^2 = d/N^2. It comes from the segment's own EA (FlexibleSegment::EA, set in a chain file
+// by `EA` or by `extensible = true` with a section; docs/extensible.md) or, for a segment without
+// one, from `slenderness` (L/t); without either it is the inextensible limit d -> infinity, which
+// the exact elastica describes. A segment with EA and a slenderness is refused (two values for one
+// stiffness). The BCM has no shear deformation: a segment's GAs is not modelled (a warning says
+// so).
 //
 // Chains: one flexible segment (straight, constant EI) with rigid links and kinks before it (they
 // only place its root) and after it (they carry the tip), any end condition (segment_chain.h),
 // dead node loads on the rigid parts. Not: several flexible segments, an initial curvature, an EI
 // profile, a follower force (the shooting method solves those).
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -57,6 +62,8 @@ struct CbcmResult : SolveStatus {
   // is about 0.1.
   double max_element_deflection = 0.0;
   bool inside_validity = false;
+  // The axial stiffness d = EA L^2/EI solved with (infinity: the inextensible segment).
+  double axial_stiffness = std::numeric_limits<double>::infinity();
   // The tip of the cantilever as Howell writes it (a/l, b/l per `length`, theta0).
   TipPose tip_pose(double length = 1.0) const {
     return {tip.x / length, tip.y / length, tip.theta};
@@ -68,7 +75,8 @@ class ChainedBcmSolver {
   struct Options {
     int elements = 6;  // N equal BCM elements (1: the BCM)
     // Slenderness L/t of the flexible segment (rectangle): d = 12 (L/t)^2. 0 (the default): the
-    // inextensible limit d -> infinity.
+    // segment's own EA when it has one, else the inextensible limit d -> infinity. A chain whose
+    // flexible segment has EA refuses a slenderness > 0 (InvalidInput): give one of them.
     double slenderness = 0.0;
     double tolerance = 1e-12;  // max |residual|, relative to max(1, |loads|)
     int max_iterations = 30;   // Newton iterations per load step
@@ -85,7 +93,9 @@ class ChainedBcmSolver {
   // CantileverCase::validate refuses.
   CbcmResult solve(const CantileverCase& problem) const;
   // A chain of one flexible segment with rigid links at either end (see above). Throws
-  // InvalidInput for a chain outside that class, naming the method that solves it.
+  // InvalidInput for a chain outside that class (several flexible segments, a curved or tapered
+  // one, a distributed or follower load), naming the method that solves it, and for a segment with
+  // EA given a slenderness too.
   CbcmResult solve(const SegmentChain& chain) const;
 
   // "bcm" for one element, else "cbcm": the name messages use.

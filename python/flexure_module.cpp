@@ -369,7 +369,8 @@ struct UsedKeys {
   bool prbm = false;    // within_validity, Theta, theta_max, validity_source
   bool chain = false;   // elements, increments
   bool prbm3r = false;  // constants
-  bool bcm = false;     // bcm, cbcm: elements, max_element_deflection, within_validity, slenderness
+  bool bcm = false;  // bcm, cbcm: elements, max_element_deflection, within_validity, slenderness,
+                     // axial_stiffness_d
 };
 
 // The keys of `flexure beam --json` (cli/beam_command.cpp to_json) as columns.
@@ -395,6 +396,7 @@ struct Columns {
         expected_error_per_length(shape, kNaN),
         max_element_deflection(shape, kNaN, used.bcm),
         slenderness(shape, kNaN, used.bcm),
+        axial_stiffness_d(shape, kNaN, used.bcm),
         iterations(shape, 0),
         inflection_points(shape, 0),
         limit_points(shape, 0),
@@ -419,7 +421,7 @@ struct Columns {
   NumpyColumn<double> n, alpha2, mu, a_over_l, b_over_l, theta0, root_moment, target_residual,
       first_limit_load_factor, reaction_Fx, reaction_Fy, reaction_M, stability_index,
       stability_margin, Theta, theta_max, expected_error, expected_error_per_length,
-      max_element_deflection, slenderness;
+      max_element_deflection, slenderness, axial_stiffness_d;
   // stability_index is a float column: NaN where not judged, the scalar call's None.
   NumpyColumn<long long> iterations, inflection_points, limit_points, elements, increments, status;
   NumpyColumn<bool> within_validity, converged;
@@ -541,6 +543,8 @@ void solve_one(const cli::BeamCommandProblem& base,
       c.max_element_deflection.data[i] = s.max_element_deflection;
       c.within_validity.data[i] = s.model_inside_validity;
       c.slenderness.data[i] = s.slenderness > 0.0 ? s.slenderness : kNaN;  // the tool's null
+      c.axial_stiffness_d.data[i] =
+          std::isfinite(s.axial_stiffness_d) ? s.axial_stiffness_d : kNaN;  // the tool's null
     }
   } catch (const InvalidInput& e) {
     fail_point(c, i, worker, kInvalid, e.what());
@@ -669,6 +673,7 @@ py::dict beam_many(const std::vector<std::string>& args,
     out["max_element_deflection"] = c.max_element_deflection.array;
     out["within_validity"] = c.within_validity.array;
     out["slenderness"] = c.slenderness.array;
+    out["axial_stiffness_d"] = c.axial_stiffness_d.array;
   }
   out["warnings"] = c.warnings.to_numpy_lists(shape);
   out["status"] = c.status.array;

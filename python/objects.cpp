@@ -1,5 +1,6 @@
 // flexure._core's classes over the library's own types (docs/python.md "Objects"; issue 28): end
-// loads, segments and chains, the elliptic, shooting and chain-algorithm solvers with their
+// loads, segments and chains, the elliptic, shooting and chain-algorithm solvers (and the ladder's
+// models, python/ladder_objects.cpp) with their
 // validated Options, their results (SolveStatus: termination, message, warnings), beam problems
 // and solve_beam. Under the C++ names, constructible with keyword arguments (an unknown keyword is
 // a TypeError that names it), results read-only. The library's exceptions become the module's
@@ -31,45 +32,12 @@
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/shooting/shooting_solver.h"
+#include "python/object_support.h"
 
 namespace py = pybind11;
 
 namespace flexure::python {
 namespace {
-
-// The Python half's classes (python/flexure/_command.py), looked up when first needed: _core is
-// imported by that module, so they do not exist yet when _core initialises.
-py::object module_class(const char* name) {
-  return py::module_::import("flexure._command").attr(name);
-}
-
-// A result's warnings as FlexureWarning, after the solve (the interpreter lock held).
-void emit_warnings(const SolveStatus& status) {
-  if (status.warnings.empty()) return;
-  const py::object category = module_class("FlexureWarning");
-  for (const Warning& w : status.warnings) {
-    if (PyErr_WarnEx(category.ptr(), w.text.c_str(), 2) != 0) throw py::error_already_set();
-  }
-}
-
-// Calls `solve` without the interpreter lock (other Python threads run during a long solve), then
-// emits the result's warnings.
-template <class Result, class Solve>
-Result solve_released(Solve&& solve) {
-  std::optional<Result> result;
-  {
-    py::gil_scoped_release release;
-    result.emplace(solve());
-  }
-  emit_warnings(*result);
-  return std::move(*result);
-}
-
-// A deflected shape: the columns s, x, y, theta as float64 arrays; numpy.asarray(shape) is the
-// (N, 4) array of the same columns.
-struct Shape {
-  std::vector<ShapePoint> points;
-};
 
 py::array_t<double> shape_column(const Shape& shape, double ShapePoint::*member) {
   py::array_t<double> out(static_cast<py::ssize_t>(shape.points.size()));
@@ -778,6 +746,7 @@ void bind_objects(py::module_& m) {
   bind_chain_algorithm(m);
   bind_beam(m);
   bind_physical(m);
+  bind_ladder_objects(m);
 }
 
 }  // namespace flexure::python

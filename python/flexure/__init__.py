@@ -25,6 +25,10 @@ from ._core import (BeamMethod, BeamProblem, BeamSolution, ChainAlgorithmSolver,
                     ShootingSolver, ShootingStrategy, SolveStatus, Stability, StabilityKind,
                     Termination, TipLoad, TipPose, TipPrescription, WarningKind, solve_beam,
                     solve_physical_chain)
+# The cheaper models of the ladder (python/ladder_objects.cpp; docs/models.md).
+from ._core import (BcmResult, BcmSolver, CantileverCase, CbcmResult, ChainedBcmSolver,
+                    LinearBeamResult, LinearBeamSolver, Prbm3rConstants, Prbm3rResult,
+                    Prbm3rSolver)
 
 __version__ = _core.version
 git_commit = _core.git_commit
@@ -39,7 +43,10 @@ __all__ = ["beam", "path", "sweep", "cfm", "dynamics", "bench", "validate", "rea
            "Section", "SegmentChain", "SegmentProperties", "Shape", "ShootingPath",
            "ShootingResult", "ShootingSolver", "ShootingStrategy", "SolveStatus", "Stability",
            "StabilityKind", "Termination", "TipLoad", "TipPose", "TipPrescription", "WarningKind",
-           "solve_beam", "solve_physical_chain"]
+           "solve_beam", "solve_physical_chain",
+           "BcmResult", "BcmSolver", "CantileverCase", "CbcmResult", "ChainedBcmSolver",
+           "LinearBeamResult", "LinearBeamSolver", "Prbm3rConstants", "Prbm3rResult",
+           "Prbm3rSolver"]
 
 
 def materials(name=None):

@@ -204,6 +204,19 @@ TipPose: Any
 TipPrescription: Any
 WarningKind: Any
 
+# The cheaper models of the ladder (python/ladder_objects.cpp; docs/models.md): solve(problem:
+# CantileverCase | EndLoad), ChainedBcmSolver also solve(chain: SegmentChain); Options by keyword.
+BcmResult: Any
+BcmSolver: Any
+CantileverCase: Any
+CbcmResult: Any
+ChainedBcmSolver: Any
+LinearBeamResult: Any
+LinearBeamSolver: Any
+Prbm3rConstants: Any
+Prbm3rResult: Any
+Prbm3rSolver: Any
+
 def solve_beam(problem: Any, method: Any = ...) -> Any: ...
 def solve_physical_chain(chain: Any, method: Any = ..., tolerance: float = ...,
                          shape_points: int = ...) -> Any: ...

@@ -56,7 +56,8 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
       elements, increments, chain_variant: the chain algorithm; integrator: shooting's
                   ('rk8pd', 'cvodes', 'dormand-prince'); elements is also the chained BCM's N
       constants   prbm3r: 'su' (default) | 'su-moment' | 'su-force' | 'flexure'
-      slenderness bcm, cbcm: L/t of the segment, axial stiffness 12 (L/t)^2 (default inextensible)
+      slenderness bcm, cbcm: L/t of the segment, axial stiffness 12 (L/t)^2 (default: a chain
+                  segment's EA, else inextensible)
       chain       a segment chain TOML file (docs/chain-toml.md)
       stability   'on' (default) or 'off': the stability verdict of every answer (off: faster,
                   stability 'not_checked')

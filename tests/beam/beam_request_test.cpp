@@ -77,7 +77,8 @@ std::vector<Refused> refused_requests() {
   r.method = "shooting";
   out.push_back({r,
                  "--slenderness sets the axial stiffness of the BCM and CBCM (d = 12 (L/t)^2); "
-                 "--method shooting is inextensible"});
+                 "--method shooting does not take it (the exact methods are inextensible; a "
+                 "chain segment's EA makes the shooting method extensible, docs/extensible.md)"});
   r = alpha2(1.0);
   r.slenderness = -2.0;
   r.method = "bcm";

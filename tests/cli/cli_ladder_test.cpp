@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -144,6 +145,38 @@ TEST(CliLadder, SlendernessMakesTheBcmExtensible) {
   EXPECT_EQ(pulled["slenderness"], 10.0);
 }
 
+TEST(CliLadder, ChainSegmentsEAMakesTheChainedBcmExtensible) {
+  // docs/examples/inclined_bistable_path.toml (EA given) with its shuttle moved from 6.709 mm to
+  // 2 mm, past the beam's buckling: the CBCM (24 elements) against the shooting method's
+  // extensible beam; the reactions converge as the elements' h^2 or faster (ladder_models_test).
+  std::string text = test::read_text(kExamples + "inclined_bistable_path.toml");
+  text += "\n[tip]\ny = \"2 mm\"\n";
+  const test::ScratchDir dir;
+  const std::string file = (dir / "inclined_2mm.toml").string();
+  {
+    std::ofstream out(file);
+    out << text;
+  }
+  const std::string chain = "beam --chain " + file;
+  const Json exact = run_json(chain + " --method shooting");
+  const Json cbcm = run_json(chain + " --method cbcm --elements 24");
+  EXPECT_EQ(cbcm["termination"], "converged");
+  // d = EA L^2/EI with the file's EA = 25960.2 N and EI = E b h^3/12.
+  const double EI = 1.379e9 * 12.55e-3 * std::pow(1.5e-3, 3) / 12.0;
+  EXPECT_NEAR(cbcm["axial_stiffness_d"].get<double>(), 25960.2 * 0.07 * 0.07 / EI, 1e-8);
+  EXPECT_TRUE(cbcm["slenderness"].is_null());
+  for (const char* r : {"Fx", "Fy"}) {
+    const double e = exact["reactions_chain_units"][r].get<double>();
+    EXPECT_NEAR(cbcm["reactions_chain_units"][r].get<double>(), e, 2e-4 * 52.66) << r;
+  }
+  // EA and --slenderness both set d: refused, naming both.
+  expect_refused(chain + " --method cbcm --slenderness 46.667", {"EA = 25960.2", "slenderness"});
+  // An inextensible chain's JSON says so.
+  EXPECT_TRUE(run_json("beam --chain " + kExamples +
+                       "fixed_guided_beam.toml --method cbcm")["axial_stiffness_d"]
+                  .is_null());
+}
+
 TEST(CliLadder, RefusalsNameTheReasonAndTheModelThatCan) {
   expect_refused("beam --method prbm --alpha2 2 --mu 1", {"not both", "prbm3r", "cbcm"});
   expect_refused("beam --method linear --boundary pinned --tip-y 0.1 --alpha2 0",
@@ -155,6 +188,9 @@ TEST(CliLadder, RefusalsNameTheReasonAndTheModelThatCan) {
                  {"segment chain", "cbcm"});
   expect_refused("beam --method cbcm --chain " + kExamples + "two_flexures_rigid_link.toml",
                  {"2 flexible segments", "shooting"});
+  // A distributed load (self-weight) is not an end load: refused, not dropped.
+  expect_refused("beam --method cbcm --chain " + kExamples + "self_weight_cantilever.toml",
+                 {"distributed", "shooting"});
   expect_refused("beam --method bcm --alpha2 1 --elements 4", {"--elements", "cbcm"});
   expect_refused("beam --method cbcm --alpha2 1 --elements 0", {"--elements"});
   expect_refused("beam --method cbcm --alpha2 1 --constants flexure", {"--constants", "PR-3R"});

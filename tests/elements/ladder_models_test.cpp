@@ -18,6 +18,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <string>
@@ -476,6 +477,90 @@ TEST(LadderRefusals, EndsOtherThanFreeOrGuidedNameTheModelsThatSolveThem) {
   EXPECT_THROW(LinearBeamSolver().solve(guided), InvalidInput);
 }
 
+// The inclined bistable beam of docs/examples/inclined_bistable_path.toml (SI): 70 mm at 5.5 deg,
+// 12.55 x 1.5 mm, E = 1.379 GPa, EA = E b h; its far end fixed at its stress-free x and angle and
+// moved to y (the unloaded tip is at y = 6.709 mm).
+SegmentChain inclined_bistable_beam(double tip_y) {
+  const double E = 1.379e9, b = 12.55e-3, h = 1.5e-3, L = 70e-3;
+  FlexibleSegment beam{L, E * b * h * h * h / 12.0};
+  beam.EA = E * b * h;
+  SegmentChain c;
+  c.segments = {RigidSegment{0.0, 5.5 * kPi / 180.0}, beam};
+  c.end = EndCondition::kFixed;
+  c.prescribed.y = tip_y;
+  return c;
+}
+
+TEST(Cbcm, TakesTheAxialStiffnessFromTheSegmentsEA) {
+  // Against the shooting method (Reissner's extensible beam, docs/extensible.md) past the
+  // buckling of the beam (1.29 mm of travel) to beyond the flat position. The chained BCM
+  // converges to it as N grows (the clamp's force at second order in h: measured at y = 2 mm,
+  // 6/12/24/48/96 elements off by +1.0e-2, -1.6e-3, -6.1e-4, -1.6e-4, -4e-5 N of 52.663 N);
+  // the bounds are the largest measured relative force errors over the five positions with a
+  // margin (6: 3.1e-4, 24: 1.2e-5), and from 24 to 48 elements the error halves or is below 1e-6
+  // (at -2 mm it is 7.7e-7 at 24, 4.4e-7 at 48: near a change of sign).
+  for (double tip_y : {6e-3, 4e-3, 2e-3, 0.0, -2e-3}) {
+    SCOPED_TRACE(::testing::Message() << "tip y " << tip_y);
+    const SegmentChain chain = inclined_bistable_beam(tip_y);
+    const ShootingResult s = solve_shooting(chain, ShootingSolver::Options{});
+    ASSERT_TRUE(s.converged()) << s.message;
+    const double scale = std::hypot(s.reaction.Fx, s.reaction.Fy);
+    const auto error = [&](int N) {
+      const CbcmResult r = cbcm(N).solve(chain);
+      EXPECT_TRUE(r.converged()) << r.message;
+      EXPECT_NEAR(r.tip.y, tip_y, 1e-12);
+      const double d = 12.0 * (70.0 / 1.5) * (70.0 / 1.5);  // EA L^2/EI of the rectangle
+      EXPECT_NEAR(r.axial_stiffness, d, 1e-9 * d);
+      return std::max(std::fabs(r.reaction.Fx - s.reaction.Fx),
+                      std::fabs(r.reaction.Fy - s.reaction.Fy)) /
+             scale;
+    };
+    const double e6 = error(6), e24 = error(24), e48 = error(48);
+    EXPECT_LT(e6, 5e-4);
+    EXPECT_LT(e24, 3e-5);
+    EXPECT_LT(e48, std::max(0.5 * e24, 1e-6));
+  }
+}
+
+TEST(Cbcm, AxialStiffnessIsGivenOnceAndShearIsNamed) {
+  const SegmentChain chain = inclined_bistable_beam(4e-3);
+  ChainedBcmSolver::Options o;
+  o.slenderness = 46.667;
+  try {
+    ChainedBcmSolver(o).solve(chain);
+    FAIL() << "EA and a slenderness together";
+  } catch (const InvalidInput& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("EA = 25959.7"), std::string::npos) << what;
+    EXPECT_NE(what.find("slenderness L/t = 46.667"), std::string::npos) << what;
+  }
+  // Without EA the slenderness sets d: the same beam, the same answer.
+  SegmentChain inextensible = chain;
+  std::get<FlexibleSegment>(inextensible.segments[1]).EA = std::numeric_limits<double>::infinity();
+  o.slenderness = 70.0 / 1.5;
+  const CbcmResult by_slenderness = ChainedBcmSolver(o).solve(inextensible);
+  const CbcmResult by_EA = cbcm(6).solve(chain);
+  ASSERT_TRUE(by_slenderness.converged()) << by_slenderness.message;
+  EXPECT_NEAR(by_slenderness.reaction.Fx, by_EA.reaction.Fx, 1e-9 * std::fabs(by_EA.reaction.Fx));
+  EXPECT_NEAR(by_slenderness.reaction.M, by_EA.reaction.M, 1e-9 * std::fabs(by_EA.reaction.M));
+  // The BCM is shear-rigid: a segment's GAs is named in a warning, not silently dropped.
+  SegmentChain shear = chain;
+  std::get<FlexibleSegment>(shear.segments[1]).GAs = 1e4;
+  const CbcmResult w = cbcm(6).solve(shear);
+  ASSERT_FALSE(w.warnings.empty());
+  EXPECT_NE(w.warnings.back().text.find("GAs"), std::string::npos);
+}
+
+TEST(Cbcm, InextensibleSegmentCompressedBetweenFixedEndsSaysSo) {
+  // Without EA the beam cannot shorten along its axis; the message names the missing EA instead
+  // of leaving a fold of the load path as the likeliest cause.
+  SegmentChain chain = inclined_bistable_beam(2e-3);
+  std::get<FlexibleSegment>(chain.segments[1]).EA = std::numeric_limits<double>::infinity();
+  const CbcmResult r = cbcm(6).solve(chain);
+  ASSERT_FALSE(r.converged());
+  EXPECT_NE(r.message.find("inextensible (no EA)"), std::string::npos) << r.message;
+}
+
 TEST(LadderRefusals, ChainsOutsideTheChainedBcmsClass) {
   SegmentChain two;
   two.segments = {FlexibleSegment{0.5, 1.0}, FlexibleSegment{0.5, 1.0}};
@@ -483,6 +568,9 @@ TEST(LadderRefusals, ChainsOutsideTheChainedBcmsClass) {
   SegmentChain curved = uniform_cantilever(EndLoad{0, 1, 0});
   std::get<FlexibleSegment>(curved.segments[0]).kappa0 = 1.0;
   EXPECT_THROW(cbcm(4).solve(curved), InvalidInput);
+  SegmentChain loaded = uniform_cantilever(EndLoad{0, 1, 0});
+  std::get<FlexibleSegment>(loaded.segments[0]).qy = -1.0;  // a distributed load
+  EXPECT_THROW(cbcm(4).solve(loaded), InvalidInput);
   SegmentChain follower = uniform_cantilever(EndLoad{0, 1, 0});
   follower.tip_load.follower = 1.0;
   try {

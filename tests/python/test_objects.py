@@ -214,3 +214,89 @@ def test_scalar_beam_without_a_command_line_equals_the_command(keywords):
     fast = _outcome(lambda: flexure.beam(**keywords))
     slow = _outcome(lambda: _command.run(["beam"], keywords, switches={"stable"}))
     assert _same(fast, slow), (fast, slow)
+
+
+# --- The ladder's models (python/ladder_objects.cpp) -----------------------------------------------
+# Each object gives the tool's own answer for the same load (flexure.beam(method=...) runs the same
+# library through the command; an independent path through the bindings), and refuses a bad option
+# naming it.
+
+LADDER_LOAD = dict(n=0.4, alpha2=1.5, mu=0.3)
+
+
+def _ladder_objects():
+    return {
+        "linear": flexure.LinearBeamSolver(),
+        "prbm3r": flexure.Prbm3rSolver(flexure.Prbm3rSolver.Options(constants="su")),
+        "bcm": flexure.BcmSolver(flexure.BcmSolver.Options(slenderness=0.0)),
+        "cbcm": flexure.ChainedBcmSolver(flexure.ChainedBcmSolver.Options(elements=6)),
+    }
+
+
+@pytest.mark.filterwarnings("ignore::flexure.FlexureWarning")  # the BCM beyond |y| = 0.1
+@pytest.mark.parametrize("method", ["linear", "prbm3r", "bcm", "cbcm"])
+def test_ladder_objects_give_the_tools_answer(method):
+    load = flexure.EndLoad.howell(LADDER_LOAD["n"], LADDER_LOAD["alpha2"], LADDER_LOAD["mu"])
+    r = _ladder_objects()[method].solve(flexure.CantileverCase(load=load))
+    assert r.converged(), r.message
+    assert isinstance(r, flexure.SolveStatus)
+    tip = r.tip_pose() if method == "cbcm" else r.tip
+    tool = flexure.beam(method=method, **LADDER_LOAD)
+    assert abs(tip.a_over_l - tool["a_over_l"]) < 1e-12
+    assert abs(tip.b_over_l - tool["b_over_l"]) < 1e-12
+    assert abs(tip.theta0 - tool["theta0"]) < 1e-12
+    # The same solve from the EndLoad alone (the free cantilever).
+    again = _ladder_objects()[method].solve(load)
+    again_tip = again.tip_pose() if method == "cbcm" else again.tip
+    assert again_tip.b_over_l == tip.b_over_l
+
+
+@pytest.mark.filterwarnings("ignore::flexure.FlexureWarning")  # the BCM beyond |y| = 0.1
+def test_ladder_objects_on_a_guided_end_and_a_chain():
+    load = flexure.EndLoad.howell(0.5, 8.0)
+    guided = flexure.CantileverCase(load=load, end=flexure.EndCondition.guided)
+    tool = flexure.beam(method="bcm", n=0.5, alpha2=8.0, boundary="guided")
+    r = flexure.BcmSolver().solve(guided)
+    assert abs(r.tip.b_over_l - tool["b_over_l"]) < 1e-12
+    # The chained BCM of the chain equals that of the cantilever it is made from.
+    cbcm = flexure.ChainedBcmSolver(flexure.ChainedBcmSolver.Options(elements=8))
+    a = cbcm.solve(guided)
+    b = cbcm.solve(guided.to_chain())
+    assert a.tip.y == b.tip.y
+    assert math.isinf(a.axial_stiffness)
+    assert cbcm.model_name() == "cbcm"
+    assert len(numpy.asarray(a.nodes)) == 9
+
+
+@pytest.mark.parametrize("make, field", [
+    (lambda: flexure.ChainedBcmSolver.Options(elements=0), "elements"),
+    (lambda: flexure.ChainedBcmSolver.Options(slenderness=-1.0), "slenderness"),
+    (lambda: flexure.ChainedBcmSolver.Options(tolerance=float("nan")), "tolerance"),
+    (lambda: flexure.BcmSolver.Options(slenderness=float("inf")), "slenderness"),
+    (lambda: flexure.Prbm3rSolver.Options(tolerance=0.0), "tolerance"),
+    (lambda: flexure.Prbm3rSolver.Options(max_load_steps=0), "max_load_steps"),
+    (lambda: flexure.Prbm3rSolver.Options(constants="howell"), "su-moment"),
+])
+def test_ladder_options_raise_invalid_input_naming_the_field(make, field):
+    with pytest.raises(flexure.InvalidInput, match=field):
+        make()
+
+
+def test_ladder_keyword_typo_is_a_type_error():
+    with pytest.raises(TypeError, match="element"):
+        flexure.ChainedBcmSolver.Options(element=4)
+
+
+def test_chained_bcm_object_takes_the_segments_ea():
+    # The inclined bistable beam (docs/examples/inclined_bistable_path.toml) moved to y = 2 mm:
+    # the object's d is the segment's EA L^2/EI = 12 (L/t)^2.
+    E, b, h, L = 1.379e9, 12.55e-3, 1.5e-3, 70e-3
+    beam = flexure.FlexibleSegment(length=L, EI=E * b * h**3 / 12, EA=E * b * h)
+    chain = flexure.SegmentChain(
+        segments=[flexure.RigidSegment(length=0.0, angle_offset=math.radians(5.5)), beam],
+        end=flexure.EndCondition.fixed, prescribed=flexure.TipPrescription(y=2e-3))
+    r = flexure.ChainedBcmSolver().solve(chain)
+    assert r.converged(), r.message
+    assert abs(r.axial_stiffness / (12 * (L / h) ** 2) - 1) < 1e-9
+    with pytest.raises(flexure.InvalidInput, match="EA"):
+        flexure.ChainedBcmSolver(flexure.ChainedBcmSolver.Options(slenderness=46.667)).solve(chain)
