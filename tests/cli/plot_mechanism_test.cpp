@@ -49,8 +49,9 @@ TEST(PlotMechanism, LabelsEveryAxisWithUnitsAndDrawsExactStressesAndTheYieldLimi
   ASSERT_EQ(r.exit_code, 0) << r.err;
   ASSERT_EQ(run_script("s.h5 --out s.png", dir, true), 0) << read_text(dir / "err.txt");
   const std::vector<std::string> labels = axis_labels(read_text(dir / "out.txt"));
-  // Force, force error and stress panels (shared x axis: one x label).
-  EXPECT_EQ(labels.size(), 4u);
+  // Force, force error and stress panels (shared x axis: one x label), and the panel of the
+  // exact stroke's shapes (x and y).
+  EXPECT_EQ(labels.size(), 6u);
   for (const std::string& label : labels) {
     EXPECT_TRUE(std::regex_search(label, std::regex(R"(\[[^\[\]]+\]$)"))) << label;
   }
