@@ -45,6 +45,27 @@ void bind_cantilever_case(py::module_& m) {
       });
 }
 
+// What every ladder solver offers: construction from its validated Options, the options, and a
+// solve of a CantileverCase or of a bare tip load (a free cantilever).
+template <class Solver, class Result>
+void def_cantilever_solver(py::class_<Solver>& solver) {
+  using Options = typename Solver::Options;
+  solver.def(py::init([](const Options& o) { return Solver(o); }), py::arg("options") = Options{})
+      .def_property_readonly("options", &Solver::options)
+      .def(
+          "solve",
+          [](const Solver& s, const CantileverCase& c) {
+            return solve_released<Result>([&] { return s.solve(c); });
+          },
+          py::arg("problem"))
+      .def(
+          "solve",
+          [](const Solver& s, const EndLoad& load) {
+            return solve_released<Result>([&] { return s.solve(CantileverCase{load}); });
+          },
+          py::arg("load"));
+}
+
 void bind_linear(py::module_& m) {
   py::class_<LinearBeamResult, SolveStatus>(m, "LinearBeamResult")
       .def_readonly("tip", &LinearBeamResult::tip)
@@ -54,31 +75,15 @@ void bind_linear(py::module_& m) {
       m, "LinearBeamSolver", "Linear (small-deflection) theory of the cantilever, closed form.");
   py::class_<LinearBeamSolver::Options>(solver, "Options", "Nothing to choose (closed form).")
       .def(py::init([]() { return LinearBeamSolver::Options{}; }));
-  solver
-      .def(py::init([](const LinearBeamSolver::Options& o) { return LinearBeamSolver(o); }),
-           py::arg("options") = LinearBeamSolver::Options{})
-      .def_property_readonly("options", &LinearBeamSolver::options)
-      .def(
-          "solve",
-          [](const LinearBeamSolver& s, const CantileverCase& c) {
-            return solve_released<LinearBeamResult>([&] { return s.solve(c); });
-          },
-          py::arg("problem"))
-      .def(
-          "solve",
-          [](const LinearBeamSolver& s, const EndLoad& load) {
-            return solve_released<LinearBeamResult>([&] { return s.solve(CantileverCase{load}); });
-          },
-          py::arg("load"))
-      .def(
-          "shape",
-          [](const LinearBeamSolver& s,
-             const CantileverCase& c,
-             const LinearBeamResult& r,
-             int count) { return Shape{s.shape(c, r, count)}; },
-          py::arg("problem"),
-          py::arg("result"),
-          py::arg("count"));
+  def_cantilever_solver<LinearBeamSolver, LinearBeamResult>(solver);
+  solver.def(
+      "shape",
+      [](const LinearBeamSolver& s, const CantileverCase& c, const LinearBeamResult& r, int count) {
+        return Shape{s.shape(c, r, count)};
+      },
+      py::arg("problem"),
+      py::arg("result"),
+      py::arg("count"));
 }
 
 void bind_prbm3r(py::module_& m) {
@@ -125,29 +130,14 @@ void bind_prbm3r(py::module_& m) {
       .def_readonly("tolerance", &Options::tolerance)
       .def_readonly("max_iterations", &Options::max_iterations)
       .def_readonly("max_load_steps", &Options::max_load_steps);
-  solver
-      .def(py::init([](const Options& o) { return Prbm3rSolver(o); }),
-           py::arg("options") = Options{})
-      .def_property_readonly("options", &Prbm3rSolver::options)
-      .def(
-          "solve",
-          [](const Prbm3rSolver& s, const CantileverCase& c) {
-            return solve_released<Prbm3rResult>([&] { return s.solve(c); });
-          },
-          py::arg("problem"))
-      .def(
-          "solve",
-          [](const Prbm3rSolver& s, const EndLoad& load) {
-            return solve_released<Prbm3rResult>([&] { return s.solve(CantileverCase{load}); });
-          },
-          py::arg("load"))
-      .def(
-          "shape",
-          [](const Prbm3rSolver& s, const Prbm3rResult& r, int count) {
-            return Shape{s.shape(r, count)};
-          },
-          py::arg("result"),
-          py::arg("count"));
+  def_cantilever_solver<Prbm3rSolver, Prbm3rResult>(solver);
+  solver.def(
+      "shape",
+      [](const Prbm3rSolver& s, const Prbm3rResult& r, int count) {
+        return Shape{s.shape(r, count)};
+      },
+      py::arg("result"),
+      py::arg("count"));
 }
 
 void bind_bcm(py::module_& m) {
@@ -177,28 +167,12 @@ void bind_bcm(py::module_& m) {
            py::kw_only(),
            py::arg("slenderness") = Options{}.slenderness)
       .def_readonly("slenderness", &Options::slenderness);
-  solver
-      .def(py::init([](const Options& o) { return BcmSolver(o); }), py::arg("options") = Options{})
-      .def_property_readonly("options", &BcmSolver::options)
-      .def(
-          "solve",
-          [](const BcmSolver& s, const CantileverCase& c) {
-            return solve_released<BcmResult>([&] { return s.solve(c); });
-          },
-          py::arg("problem"))
-      .def(
-          "solve",
-          [](const BcmSolver& s, const EndLoad& load) {
-            return solve_released<BcmResult>([&] { return s.solve(CantileverCase{load}); });
-          },
-          py::arg("load"))
-      .def(
-          "shape",
-          [](const BcmSolver& s, const BcmResult& r, int count) {
-            return Shape{s.shape(r, count)};
-          },
-          py::arg("result"),
-          py::arg("count"));
+  def_cantilever_solver<BcmSolver, BcmResult>(solver);
+  solver.def(
+      "shape",
+      [](const BcmSolver& s, const BcmResult& r, int count) { return Shape{s.shape(r, count)}; },
+      py::arg("result"),
+      py::arg("count"));
 }
 
 void bind_chained_bcm(py::module_& m) {
@@ -246,29 +220,14 @@ void bind_chained_bcm(py::module_& m) {
       .def_readonly("tolerance", &Options::tolerance)
       .def_readonly("max_iterations", &Options::max_iterations)
       .def_readonly("max_load_steps", &Options::max_load_steps);
-  solver
-      .def(py::init([](const Options& o) { return ChainedBcmSolver(o); }),
-           py::arg("options") = Options{})
-      .def_property_readonly("options", &ChainedBcmSolver::options)
-      .def("model_name", &ChainedBcmSolver::model_name)
+  def_cantilever_solver<ChainedBcmSolver, CbcmResult>(solver);
+  solver.def("model_name", &ChainedBcmSolver::model_name)
       .def(
           "solve",
           [](const ChainedBcmSolver& s, const SegmentChain& chain) {
             return solve_released<CbcmResult>([&] { return s.solve(chain); });
           },
-          py::arg("chain"))
-      .def(
-          "solve",
-          [](const ChainedBcmSolver& s, const CantileverCase& c) {
-            return solve_released<CbcmResult>([&] { return s.solve(c); });
-          },
-          py::arg("problem"))
-      .def(
-          "solve",
-          [](const ChainedBcmSolver& s, const EndLoad& load) {
-            return solve_released<CbcmResult>([&] { return s.solve(CantileverCase{load}); });
-          },
-          py::arg("load"));
+          py::arg("chain"));
 }
 
 }  // namespace
