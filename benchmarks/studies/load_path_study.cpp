@@ -27,24 +27,31 @@ void require_in_range(int value, const char* what, int lo, int hi) {
   }
 }
 
+// The state a special point and a force point share, in the table's units: the tip, the clamp's
+// reaction, the tip load, and where on the path the point lies.
+template <class Point, class Row>
+void scale_point_state(const Point& p, const PathUnits& u, Row& out) {
+  out.tip_x = p.tip.x * u.length;
+  out.tip_y = p.tip.y * u.length;
+  out.tip_theta = p.tip.theta;
+  out.reaction_Fx = p.reaction.Fx * u.force;
+  out.reaction_Fy = p.reaction.Fy * u.force;
+  out.reaction_M = p.reaction.M * u.moment;
+  out.tip_Fx = p.tip_load.Fx * u.force;
+  out.tip_Fy = p.tip_load.Fy * u.force;
+  out.tip_M = p.tip_load.M * u.moment;
+  out.stage = p.stage;
+  out.branch = p.branch;
+  out.located = p.located;
+}
+
 PathSpecialPoint to_table(const SpecialPoint& sp, const PathUnits& u) {
   PathSpecialPoint out;
   out.kind = to_string(sp.kind);
   out.load_factor = sp.lambda;
   out.index = sp.index;
   out.index_after = sp.index_after;
-  out.tip_x = sp.tip.x * u.length;
-  out.tip_y = sp.tip.y * u.length;
-  out.tip_theta = sp.tip.theta;
-  out.reaction_Fx = sp.reaction.Fx * u.force;
-  out.reaction_Fy = sp.reaction.Fy * u.force;
-  out.reaction_M = sp.reaction.M * u.moment;
-  out.tip_Fx = sp.tip_load.Fx * u.force;
-  out.tip_Fy = sp.tip_load.Fy * u.force;
-  out.tip_M = sp.tip_load.M * u.moment;
-  out.stage = sp.stage;
-  out.branch = sp.branch;
-  out.located = sp.located;
+  scale_point_state(sp, u, out);
   out.switched = sp.switched;
   return out;
 }
@@ -57,19 +64,8 @@ PathForcePoint to_table(const ForcePoint& f, const PathUnits& u, TipCoordinate c
   out.coordinate = f.coordinate * (angle ? 1.0 : u.length);
   out.force = f.force * (angle ? u.moment : u.force);
   out.slope = f.slope * (angle ? u.moment : u.force / u.length);
-  out.tip_x = f.tip.x * u.length;
-  out.tip_y = f.tip.y * u.length;
-  out.tip_theta = f.tip.theta;
-  out.reaction_Fx = f.reaction.Fx * u.force;
-  out.reaction_Fy = f.reaction.Fy * u.force;
-  out.reaction_M = f.reaction.M * u.moment;
-  out.tip_Fx = f.tip_load.Fx * u.force;
-  out.tip_Fy = f.tip_load.Fy * u.force;
-  out.tip_M = f.tip_load.M * u.moment;
   out.index_before = f.index_before;
-  out.stage = f.stage;
-  out.branch = f.branch;
-  out.located = f.located;
+  scale_point_state(f, u, out);
   return out;
 }
 
