@@ -35,7 +35,9 @@ namespace flexure {
 namespace {
 
 using test::CantileverLoadFamilies;
+using test::describe;
 using test::for_each_cantilever_load;
+using test::general_verdict;
 
 constexpr double kPi = std::numbers::pi;
 // The general verdict's margin is accurate to about 1e-9 (docs/stability.md, "Accuracy"), the
@@ -45,24 +47,7 @@ constexpr double kMarginTolerance = 1e-8;
 // general verdict.
 constexpr double kDeclinedAbove = 0.999;
 
-ShootingSolver::Options solve_options() {
-  ShootingSolver::Options o;
-  o.count_inflections = true;  // as solve_beam does
-  return o;
-}
-
-std::string describe(const EndLoad& load) {
-  std::ostringstream out;
-  out.precision(17);
-  out << "Fx = " << load.Fx << ", Fy = " << load.Fy << ", mu = " << load.mu;
-  return out.str();
-}
-
-Stability general_verdict(const SegmentChain& chain, const ShootingResult& r) {
-  return equilibrium_stability(chain, Reaction{}, [&](const std::vector<double>& s) {
-    return shooting_shape_at(chain, r, s);
-  });
-}
+ShootingSolver::Options solve_options() { return test::fast_verdict_solve_options(); }
 
 struct Tally {
   int solved = 0, answered = 0, declined = 0, refined = 0, unstable = 0, index2 = 0,

@@ -34,29 +34,13 @@ namespace flexure {
 namespace {
 
 using test::CantileverLoadFamilies;
+using test::describe;
 using test::for_each_cantilever_load;
+using test::general_verdict;
 
 constexpr double kPi = std::numbers::pi;
 
-ShootingSolver::Options solve_options() {
-  ShootingSolver::Options o;
-  o.count_inflections = true;  // records ShootingResult::largest_curvature, as solve_beam does
-  return o;
-}
-
-std::string describe(const EndLoad& load) {
-  std::ostringstream out;
-  out.precision(17);
-  out << "Fx = " << load.Fx << ", Fy = " << load.Fy << ", mu = " << load.mu;
-  return out.str();
-}
-
-// The general verdict of a free cantilever's shooting solution (no support reaction).
-Stability general_verdict(const SegmentChain& chain, const ShootingResult& r) {
-  return equilibrium_stability(chain, Reaction{}, [&](const std::vector<double>& s) {
-    return shooting_shape_at(chain, r, s);
-  });
-}
+ShootingSolver::Options solve_options() { return test::fast_verdict_solve_options(); }
 
 // The least F . t over 2001 equally spaced points of the shape (ends included), independent of
 // the first integral.

@@ -9,11 +9,40 @@
 #include <functional>
 #include <numbers>
 #include <random>
+#include <sstream>
+#include <string>
+#include <vector>
 
+#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
+#include "flexure/solver/shooting/shooting_shape.h"
+#include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure::test {
+
+// The shooting settings of both cross-checks: inflections counted, which records
+// ShootingResult::largest_curvature, as solve_beam does.
+inline ShootingSolver::Options fast_verdict_solve_options() {
+  ShootingSolver::Options o;
+  o.count_inflections = true;
+  return o;
+}
+
+// A load in full precision, for failure messages.
+inline std::string describe(const EndLoad& load) {
+  std::ostringstream out;
+  out.precision(17);
+  out << "Fx = " << load.Fx << ", Fy = " << load.Fy << ", mu = " << load.mu;
+  return out.str();
+}
+
+// The general verdict of a free cantilever's shooting solution (no support reaction).
+inline Stability general_verdict(const SegmentChain& chain, const ShootingResult& r) {
+  return equilibrium_stability(chain, Reaction{}, [&](const std::vector<double>& s) {
+    return shooting_shape_at(chain, r, s);
+  });
+}
 
 // How many loads of each family, and the range of Howell's n (Fx = -n alpha2, Fy = alpha2).
 struct CantileverLoadFamilies {
