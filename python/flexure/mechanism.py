@@ -44,10 +44,33 @@ def _design_argument(design):
         f"{type(design).__name__}")
 
 
+def _flexure_model_text(flexure_models):
+    """`--flexure-model`'s text for analyze's flexure_models: a model name or 'NAME=MODEL,...' as
+    is, a dict {name: model} joined in its order."""
+    if flexure_models is None or isinstance(flexure_models, str):
+        return flexure_models
+    if isinstance(flexure_models, dict):
+        parts = []
+        for name, model in flexure_models.items():
+            if not isinstance(name, str) or not isinstance(model, str) or not name or not model:
+                raise _command.InvalidInput(
+                    f"flexure_models: expected {{flexure name: model name}} with text keys and "
+                    f"values, got {name!r}: {model!r}")
+            parts.append(f"{name}={model}")
+        if not parts:
+            raise _command.InvalidInput("flexure_models: the dict is empty; name a flexure's "
+                                        "model, or give one model name for every flexure")
+        return ",".join(parts)
+    raise _command.InvalidInput(
+        f"flexure_models: expected a model name, 'NAME=MODEL,...' or a dict, got "
+        f"{type(flexure_models).__name__}")
+
+
 def analyze(mechanism, *, points=None, method=None, tol=None, out=None, prbm_only=False,
             spring_rule=None, force_of=None, material=None, surface_finish=None,
             reliability=None, Kf=None, fatigue_factor=None, ultimate_strength=None,
-            endurance_limit=None, plate=None, nu=None, stable=False):
+            endurance_limit=None, plate=None, nu=None, stable=False, model=None,
+            flexure_models=None, flexure_tol=None, check_flexures=False, input=None):  # noqa: A002
     """Force curve of a constant-force mechanism over its stroke: `flexure mechanism analyze`.
 
     mechanism   a built-in name ('1A-lpp', '2B-lplm', a thesis sub-class 'lpp-b', an inversion
@@ -69,11 +92,26 @@ def analyze(mechanism, *, points=None, method=None, tol=None, out=None, prbm_onl
     `stability_force_control` ({"prbm": ..., "exact": ...}: `stability`, `stability_index`,
     `stability_margin` per point; docs/stability.md "Mechanisms").
 
+    General mechanisms ([[body]] files, docs/general-mechanisms.md) and the mixed model:
+    model       'prbm' | 'exact' | 'both' | 'mixed' (`--model`; mixed: each flexure its own model
+                of the ladder, docs/models.md; mixed also takes a built-in design)
+    flexure_models  with model='mixed' (`--flexure-model`): one model for every flexure ('exact',
+                'prbm', 'linear', 'bcm', 'prbm3r', 'cbcm', 'auto'), or a dict {flexure name:
+                model} (built-in designs: 'f1', 'f2', 'f3' by pivot), or the CLI's text
+                'NAME=MODEL,...'
+    flexure_tol auto's tolerance, the largest mapped tip error per length (`--flexure-tol`)
+    check_flexures  True (`--check-flexures`): measure each flexure's model against the exact
+                elastica under its loads (measured_error_per_length)
+    input       the input range 'START:STOP:COUNT' with units ('-5deg:33deg:77'; `--input`)
+
     Example:
       >>> r = flexure.mechanism.analyze("1A-lpp", points=20, method="exact")   # doctest: +SKIP
+      >>> r = flexure.mechanism.analyze("3A-sss", model="mixed",                # doctest: +SKIP
+      ...                               flexure_models={"f1": "cbcm", "f2": "exact"})
       >>> r["percent_constant_force_exact"]                                     # doctest: +SKIP
     """
     argument, temporary = _design_argument(mechanism)
+    flexure_model = _flexure_model_text(flexure_models)
     try:
         return _command.run(["mechanism", "analyze"],
                             dict(points=points, method=method, tol=tol, out=out,
@@ -82,8 +120,11 @@ def analyze(mechanism, *, points=None, method=None, tol=None, out=None, prbm_onl
                                  reliability=reliability, Kf=Kf, fatigue_factor=fatigue_factor,
                                  ultimate_strength=ultimate_strength,
                                  endurance_limit=endurance_limit, plate=plate, nu=nu,
-                                 stable=stable),
-                            positional=[argument], switches={"prbm_only", "stable"})
+                                 stable=stable, model=model, flexure_model=flexure_model,
+                                 flexure_tol=flexure_tol, check_flexures=check_flexures,
+                                 input=input),
+                            positional=[argument],
+                            switches={"prbm_only", "stable", "check_flexures"})
     finally:
         if temporary:
             os.unlink(temporary)

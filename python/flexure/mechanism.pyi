@@ -24,6 +24,11 @@ def analyze(
     plate: str | None = ...,
     nu: float | None = ...,
     stable: bool = ...,
+    model: str | None = ...,
+    flexure_models: str | dict[str, str] | None = ...,
+    flexure_tol: float | None = ...,
+    check_flexures: bool = ...,
+    input: str | None = ...,
 ) -> dict[str, Any]: ...
 def tolerance(
     mechanism: Design,

@@ -367,3 +367,29 @@ def test_path_stability_per_point(cli, tmp_path):
         [k for k, c in zip(kinds, critical) if not c]
     off = flexure.path(alpha2=3.0, stability="off", out=a)
     assert set(off["stability"]) == {"not_checked"}
+
+
+def test_mechanism_mixed_model(cli):
+    # --model mixed with per-flexure models (docs/models.md "A model per flexure"): the keywords
+    # model=, flexure_models= (a dict or the CLI's text), flexure_tol=, check_flexures= give the
+    # command line's JSON.
+    expected = cli.json("mechanism", "analyze", "3A-sss", "--model", "mixed", "--flexure-model",
+                        "f1=cbcm,f2=exact,f3=bcm", "--points", "6")
+    got = flexure.mechanism.analyze("3A-sss", model="mixed", points=6,
+                                    flexure_models={"f1": "cbcm", "f2": "exact", "f3": "bcm"})
+    assert_same(got, expected)
+    assert [f["model"] for f in got["flexure_models"]] == ["cbcm", "exact", "bcm"]
+    assert_same(flexure.mechanism.analyze("3A-sss", model="mixed", points=6,
+                                          flexure_models="f1=cbcm,f2=exact,f3=bcm"), expected)
+    automatic = flexure.mechanism.analyze("3A-sss", model="mixed", points=6,
+                                          flexure_models="auto", flexure_tol=1e-3,
+                                          check_flexures=True)
+    assert_same(automatic, cli.json("mechanism", "analyze", "3A-sss", "--model", "mixed",
+                                    "--flexure-model", "auto", "--flexure-tol", "1e-3",
+                                    "--check-flexures", "--points", "6"))
+    for f in automatic["flexure_models"]:
+        assert f["requested"] == "auto" and f["expected_error_per_length"] <= 1e-3
+    with pytest.raises(flexure.InvalidInput, match="flexure_models"):
+        flexure.mechanism.analyze("3A-sss", model="mixed", flexure_models={})
+    with pytest.raises(flexure.InvalidInput, match="f7"):
+        flexure.mechanism.analyze("3A-sss", model="mixed", flexure_models={"f7": "bcm"})
