@@ -45,6 +45,7 @@ struct PathArgs {
   CLI::Option* follower_option = nullptr;
   std::string method = "shooting";
   int elements = 100;
+  CLI::Option* elements_option = nullptr;
   int increments = 10;
   std::string chain_file;
   CLI::Option* chain_option = nullptr;
@@ -234,10 +235,19 @@ PathRequest make_request(const PathArgs& args) {
         "tip-x|tip-y|tip-angle");
   }
 
-  request.method = args.method == "chain" ? PathMethod::kChain : PathMethod::kShooting;
+  request.method = args.method == "chain"  ? PathMethod::kChain
+                   : args.method == "bcm"  ? PathMethod::kBcm
+                   : args.method == "cbcm" ? PathMethod::kCbcm
+                                           : PathMethod::kShooting;
+  if (request.method == PathMethod::kBcm && *args.elements_option) {
+    throw InvalidInput("--method bcm is one BCM element; --elements N belongs to --method cbcm");
+  }
   require_in_range(args.elements, "--elements (chain algorithm elements N)", 1, 1'000'000);
   require_in_range(args.increments, "--increments (load increments)", 1, 1'000'000);
   request.elements = args.elements;
+  // The CBCM's default: 20 elements (docs/models.md: tip error about 1e-4 L on the reference
+  // inclined beam), not the chain algorithm's 100.
+  if (request.method == PathMethod::kCbcm && !*args.elements_option) request.elements = 20;
   request.increments = args.increments;
   if (*args.max_step_option) {
     require_in_range(args.max_step, "--max-step (largest arclength step)", 1e-6, 10.0);
@@ -468,10 +478,23 @@ void run_path(const PathArgs& args) {
     out["rejected_steps"] = t.rejected_steps;
     out["location_corrections"] = t.location_corrections;
     out["shape_points"] = t.shape_points;
+    if (t.method == PathMethod::kBcm || t.method == PathMethod::kCbcm) {
+      out["elements"] = t.elements;
+      out["left_domain"] = t.left_domain;
+    }
     add_stability_json(out, t);
     print_json(out);
   } else {
     print_text(t, args, csv.written_path());
+  }
+  if (t.left_domain) {
+    // The BCM answers within its range only: the path up to there is written, exit code 2.
+    throw OutsideMethodDomain(
+        fmt::format("the bcm load path stopped at load factor {:.6g}: {} (the "
+                    "path up to there is in {})",
+                    t.lambda_reached,
+                    t.message,
+                    csv.written_path()));
   }
   if (!t.completed) {
     throw NoConvergence(fmt::format(
@@ -519,10 +542,16 @@ void register_path_command(CLI::App& app) {
       "--tip-y", args->tip_y, "Prescribed tip y (y/l; metres or with a unit for a physical beam)");
   args->tip_angle_option =
       path->add_option("--tip-angle", args->tip_angle, "Prescribed tip angle (rad, or 30deg)");
-  path->add_option("--method", args->method, "shooting (arc-length continuation) | chain")
+  path->add_option("--method",
+                   args->method,
+                   "shooting (arc-length continuation) | chain | bcm | cbcm (the beam-constraint "
+                   "models under --control; docs/models.md)")
       ->default_str("shooting")
-      ->transform(CLI::IsMember({"shooting", "chain"}, CLI::ignore_case));
-  path->add_option("--elements", args->elements, "Chain algorithm: elements N")->default_str("100");
+      ->transform(CLI::IsMember({"shooting", "chain", "bcm", "cbcm"}, CLI::ignore_case));
+  args->elements_option = path->add_option("--elements",
+                                           args->elements,
+                                           "Chain algorithm (default 100) or CBCM "
+                                           "(default 20): elements N");
   path->add_option("--increments", args->increments, "Chain algorithm: load increments")
       ->default_str("10");
   args->chain_option =

@@ -9,6 +9,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "flexure/elements/cbcm_path.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/shooting/path_point_stability.h"
@@ -204,6 +205,97 @@ PathTable shooting_table(const PathRequest& r) {
   return t;
 }
 
+// The ladder's BCM and CBCM under displacement control (cbcm_path.h).
+PathTable cbcm_table(const PathRequest& r) {
+  CbcmPathOptions options;
+  options.elements = r.method == PathMethod::kBcm ? 1 : r.elements;
+  if (r.min_points >= 2) options.max_load_step = 1.0 / (r.min_points - 1);
+  options.branch = r.branch;
+  options.branch_side = r.branch_side;
+  const CbcmPathResult path = trace_cbcm_controlled_path(r.chain, *r.control, options);
+  const PathUnits& u = r.units;
+  PathTable t;
+  struct Scaled {
+    ChainPose tip;
+    Reaction reaction, tip_load;
+    int stage = 1, branch = 0;
+    bool located = true;
+  };
+  const auto scaled = [](const CbcmPathPoint& p, bool located) {
+    return Scaled{p.tip, p.reaction, p.tip_load, p.stage, p.branch, located};
+  };
+  for (const CbcmPathPoint& p : path.points) {
+    t.load_factor.push_back(p.lambda);
+    t.tip_x.push_back(p.tip.x * u.length);
+    t.tip_y.push_back(p.tip.y * u.length);
+    t.tip_theta.push_back(p.tip.theta);
+    t.reaction_Fx.push_back(p.reaction.Fx * u.force);
+    t.reaction_Fy.push_back(p.reaction.Fy * u.force);
+    t.reaction_M.push_back(p.reaction.M * u.moment);
+    t.tip_Fx.push_back(p.tip_load.Fx * u.force);
+    t.tip_Fy.push_back(p.tip_load.Fy * u.force);
+    t.tip_M.push_back(p.tip_load.M * u.moment);
+    t.status.push_back(p.status);
+    t.stage.push_back(p.stage);
+    t.branch.push_back(p.branch);
+  }
+  t.stability.assign(t.size(),
+                     not_checked_stability("the BCM and CBCM paths are not judged (their "
+                                           "discrete energy is not assembled); --method shooting "
+                                           "judges every point"));
+  for (const CbcmSpecialPoint& sp : path.special_points) {
+    PathSpecialPoint out;
+    out.kind = sp.kind;
+    out.load_factor = sp.point.lambda;
+    out.index = sp.index;
+    out.index_after = sp.index_after;
+    scale_point_state(scaled(sp.point, sp.located), u, out);
+    out.switched = sp.switched;
+    t.special_points.push_back(out);
+  }
+  const bool angle = r.control->coordinate == TipCoordinate::kTheta;
+  for (const CbcmForcePoint& f : path.force_points) {
+    PathForcePoint out;
+    out.kind = f.kind;
+    out.load_factor = f.point.lambda;
+    out.coordinate = f.coordinate * (angle ? 1.0 : u.length);
+    out.force = f.force * (angle ? u.moment : u.force);
+    out.slope = f.slope * (angle ? u.moment : u.force / u.length);
+    out.index_before = f.index_before;
+    scale_point_state(scaled(f.point, f.located), u, out);
+    t.force_points.push_back(out);
+  }
+  t.completed = path.converged();
+  t.left_domain = path.left_domain;
+  t.elements = path.elements;
+  t.lambda_reached = path.lambda_reached;
+  t.limit_points = path.limit_points;
+  t.bifurcation_points = path.bifurcation_points;
+  if (path.limit_points > 0) {
+    for (const CbcmSpecialPoint& sp : path.special_points) {
+      if (sp.kind == "limit_point") {
+        t.first_limit_load_factor = sp.point.lambda;
+        break;
+      }
+    }
+  }
+  t.switched_branch = path.switched_branch;
+  t.steps = path.steps;
+  t.rejected_steps = path.rejected_steps;
+  t.newton_iterations = path.newton_iterations;
+  t.location_corrections = path.location_corrections;
+  t.message = path.message;
+  for (const Warning& w : path.warnings) t.warnings.push_back(w.text);
+  int number = 0;
+  for (const PathSpecialPoint& b : t.special_points) {
+    if (b.kind != "bifurcation") continue;
+    ++number;
+    if (b.switched) continue;
+    t.warnings.push_back(bifurcation_warning(b, number, false, false, true));
+  }
+  return t;
+}
+
 PathTable chain_table(const PathRequest& r) {
   ChainAlgorithmSolver::Options options;
   options.elements = r.elements;
@@ -251,6 +343,20 @@ PathTable chain_table(const PathRequest& r) {
 
 }  // namespace
 
+const char* to_string(PathMethod method) {
+  switch (method) {
+    case PathMethod::kChain:
+      return "chain";
+    case PathMethod::kBcm:
+      return "bcm";
+    case PathMethod::kCbcm:
+      return "cbcm";
+    case PathMethod::kShooting:
+      break;
+  }
+  return "shooting";
+}
+
 // (Built whole: assigning short literals to the members trips GCC 12's -Wrestrict.)
 PathUnits PathUnits::si(double length_m, double EI_Nm2) {
   // F = (F l^2/EI) EI / l^2, M = (M l/EI) EI / l.
@@ -292,6 +398,37 @@ void PathRequest::validate() const {
           "{} belongs to the continuation of --method shooting; the chain algorithm takes load "
           "increments (--increments) and records the tip only",
           shooting_only));
+    }
+    return;
+  }
+  if (method == PathMethod::kBcm || method == PathMethod::kCbcm) {
+    const char* name = to_string(method);
+    if (!control) {
+      throw InvalidInput(fmt::format(
+          "the {} path is a displacement-controlled one (the problem the beam-constraint models "
+          "were made for): give --control tip-x|tip-y|tip-angle with its target; --method "
+          "shooting follows proportional loading",
+          name));
+    }
+    if (method == PathMethod::kCbcm) {
+      require_in_range(elements, "--elements (CBCM elements N)", 1, 2000);
+    }
+    const char* shooting_only = max_step > 0.0     ? "--max-step"
+                                : shape_points > 0 ? "--shapes"
+                                                   : nullptr;
+    if (shooting_only != nullptr) {
+      throw InvalidInput(fmt::format(
+          "{} belongs to the shooting method's continuation; the {} path takes --min-points, "
+          "--branch, --branch-side and (cbcm) --elements",
+          shooting_only,
+          name));
+    }
+    if (branch < 0) {
+      throw InvalidInput(
+          fmt::format("--branch counts the bifurcations along the path from 1 (got {})", branch));
+    }
+    if (min_points != 0) {
+      require_in_range(min_points, "--min-points (points from zero to full load)", 2, 1'000'000);
     }
     return;
   }
@@ -360,8 +497,9 @@ std::string describe(const StabilityStretch& s) {
 
 PathTable run_load_path(const PathRequest& request) {
   request.validate();
-  PathTable t =
-      request.method == PathMethod::kChain ? chain_table(request) : shooting_table(request);
+  PathTable t = request.method == PathMethod::kChain      ? chain_table(request)
+                : request.method == PathMethod::kShooting ? shooting_table(request)
+                                                          : cbcm_table(request);
   t.method = request.method;
   t.units = request.units;
   t.boundary = to_string(request.chain.end);
@@ -647,7 +785,11 @@ void write_path_file(io::Hdf5Group& root, const PathTable& t) {
     }
   }
 
-  root.set_attribute("method", t.method == PathMethod::kChain ? "chain" : "shooting");
+  root.set_attribute("method", to_string(t.method));
+  if (t.method == PathMethod::kBcm || t.method == PathMethod::kCbcm) {
+    root.set_attribute("elements", static_cast<std::int64_t>(t.elements));
+    root.set_attribute("left_domain", static_cast<std::int64_t>(t.left_domain ? 1 : 0));
+  }
   root.set_attribute("boundary", t.boundary);
   root.set_attribute("units", t.units.system);
   root.set_attribute("control", t.control);

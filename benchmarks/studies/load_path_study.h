@@ -35,13 +35,17 @@ struct PathUnits {
   static PathUnits chain_file(bool physical = false);
 };
 
-enum class PathMethod { kShooting, kChain };
+// kBcm, kCbcm: the ladder's beam-constraint models under displacement control (cbcm_path.h; kBcm
+// is one element, valid to a transverse deflection of about 0.1 L).
+enum class PathMethod { kShooting, kChain, kBcm, kCbcm };
+// "shooting", "chain", "bcm", "cbcm" (the --method name, the file's method attribute).
+const char* to_string(PathMethod method);
 
 struct PathRequest {
   SegmentChain chain;  // the full-load problem (lambda = 1)
   PathMethod method = PathMethod::kShooting;
   PathUnits units;
-  // Chain algorithm: elements and load increments.
+  // Chain algorithm: elements and load increments; the CBCM: elements (the BCM: 1).
   int elements = 100;
   int increments = 10;
   // Shooting (continuation.h): 0 = the defaults.
@@ -142,6 +146,10 @@ struct PathTable {
   int newton_iterations = 0;
   int location_corrections = 0;
   std::string message;
+  // The BCM's path stopped where its element left the BCM's stated range (|y| > 0.1 of its
+  // length): the points up to there are within it (the CLI's exit code 2, OutsideMethodDomain).
+  bool left_domain = false;
+  int elements = 0;  // bcm, cbcm: the elements N
   // One line per bifurcation passed (not switched at): where, and what it means for the state on
   // the path (for the text output and stderr).
   std::vector<std::string> warnings;
