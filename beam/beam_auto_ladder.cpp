@@ -4,7 +4,9 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "flexure/beam/ladder_selector.h"
@@ -67,6 +69,84 @@ bool guided_map_applies(const BeamProblem& p) {
 bool inverse_map_applies(const BeamProblem& p) {
   return p.is_plain_cantilever() && p.given != BeamProblem::Given::kAlpha2 && !p.stable &&
          p.cbcm_elements == 6 && p.prbm3r_constants == "su" && p.slenderness == 0.0;
+}
+
+// A chain the ladder's maps describe: one straight, uniform, inextensible and shear-rigid flexible
+// segment whose root is placed by rigid links and kinks before it (loads on those pass to the
+// clamp; there are none here), nothing after it, dead tip loads only, a free or guided end. Its
+// loads turned into the segment's frame (angle phi at the root) and made nondimensional by the
+// segment's L and EI are Howell's (n, alpha2, mu): Fy' L^2/EI = alpha2, Fx' L^2/EI = -n alpha2,
+// M L/EI = mu. Returns that cantilever, or nothing with `why` saying what the map does not cover.
+std::optional<BeamProblem> mapped_chain(const BeamProblem& p, std::string& why) {
+  const SegmentChain& c = *p.chain;
+  int flexible_index = -1, flexible_count = 0;
+  for (int i = 0; i < c.segment_count(); ++i) {
+    if (std::holds_alternative<FlexibleSegment>(c.segments[static_cast<std::size_t>(i)])) {
+      ++flexible_count;
+      flexible_index = i;
+    }
+  }
+  if (flexible_count != 1) {
+    why = fmt::format("the chain has {} flexible segments; the ladder's maps are of one",
+                      flexible_count);
+    return std::nullopt;
+  }
+  const auto& f = std::get<FlexibleSegment>(c.segments[static_cast<std::size_t>(flexible_index)]);
+  if (flexible_index + 1 != c.segment_count()) {
+    why =
+        "rigid links or kinks after the flexible segment turn with its tip and change the "
+        "moment it carries as it deflects; the maps describe loads at the segment's own end";
+  } else if (f.kappa0 != 0.0 || !f.EI_profile.empty()) {
+    why =
+        "the flexible segment is curved or has an EI profile; the maps are of a straight "
+        "uniform segment";
+  } else if (f.has_distributed_load()) {
+    why = "the flexible segment carries a distributed load; the maps are of end loads";
+  } else if (f.extensible() || f.shear_flexible()) {
+    why =
+        "the flexible segment is extensible or shear-flexible (EA or GAs); the maps are of the "
+        "inextensible, shear-rigid segment";
+  } else if (!c.node_loads.empty()) {
+    why = "the chain has joint loads; the maps are of loads at the segment's end";
+  } else if (c.tip_load.follower != 0.0) {
+    why = "a follower force; the maps are of dead loads";
+  } else if (c.end != EndCondition::kFree && c.end != EndCondition::kGuided) {
+    why = fmt::format("a {} end; the maps are of the free and the guided end", to_string(c.end));
+  } else if (!(p.given == BeamProblem::Given::kAlpha2 && !p.stable && p.cbcm_elements == 6 &&
+               p.prbm3r_constants == "su" && p.slenderness == 0.0)) {
+    why =
+        "the maps are of the default model settings (CBCM 6 elements, Su's PR-3R constants, "
+        "no slenderness) and of the proportional-loading answer";
+  }
+  if (!why.empty()) return std::nullopt;
+  const double phi = c.unloaded_nodes()[static_cast<std::size_t>(flexible_index)].theta;
+  const double cs = std::cos(phi), sn = std::sin(phi);
+  const double force = f.length * f.length / f.EI;
+  const double Fx = (c.tip_load.Fx * cs + c.tip_load.Fy * sn) * force;
+  const double Fy = (-c.tip_load.Fx * sn + c.tip_load.Fy * cs) * force;
+  BeamProblem q = p;
+  q.chain.reset();
+  q.boundary = c.end;
+  q.follower = 0.0;
+  q.mu = c.tip_load.M * f.length / f.EI;
+  q.prescribed = {};
+  if (c.end == EndCondition::kGuided) {
+    // The guided end holds the tip angle; in the segment's frame it is the prescribed one less phi.
+    q.prescribed.theta = c.prescribed_tip().theta - phi;
+  }
+  if (Fy != 0.0) {
+    q.value = Fy;
+    q.load_ratio_n = -Fx / Fy;
+  } else if (Fx == 0.0) {
+    q.value = 0.0;
+    q.load_ratio_n = 0.0;
+  } else {
+    why =
+        "the tip force lies along the segment's axis (alpha2 = 0 with n alpha2 != 0): the maps "
+        "are over (n, alpha2)";
+    return std::nullopt;
+  }
+  return q;
 }
 
 // Why the ladder is not tried for a problem outside the map (empty where no reason is worth
@@ -202,6 +282,9 @@ LadderAutoOutcome choose_rung(const BeamProblem& problem,
   const double T = problem.tolerance;
   std::vector<std::string> passed;  // why each cheaper rung was not taken
   for (const bench::LadderEstimate& rung : rungs) {
+    // A chain's exact method is the shooting method (the elliptic solution solves no chain): the
+    // map's elliptic rung is no model for it, and the rungs after it are still tried.
+    if (rung.method == BeamMethod::kElliptic && exact != BeamMethod::kElliptic) continue;
     if (rung.method == exact) {
       passed.push_back(
           fmt::format("every other model costs more than the exact {} solution "
@@ -309,8 +392,68 @@ std::string off_map_verdict(const bench::LadderMapRange& r,
 
 }  // namespace
 
+namespace {
+LadderAutoOutcome solve_by_ladder(const BeamProblem& problem, bool for_chain);
+}  // namespace
+
 LadderAutoOutcome solve_by_ladder(const BeamProblem& problem) {
+  return solve_by_ladder(problem, false);
+}
+
+namespace {
+
+LadderAutoOutcome solve_by_ladder(const BeamProblem& problem, bool for_chain) {
   LadderAutoOutcome out;
+  if (problem.chain) {
+    // A chain that is one segment loaded at its end: the map of that cantilever chooses the
+    // model, which then solves the chain itself (its answer in the chain's units and frame).
+    std::string why;
+    const std::optional<BeamProblem> cantilever = mapped_chain(problem, why);
+    if (!cantilever) {
+      out.verdict = "the model ladder's maps do not cover this chain (" + why + ")";
+      return out;
+    }
+    LadderAutoOutcome mapped = solve_by_ladder(*cantilever, true);
+    const std::string equivalent = fmt::format(
+        "the chain is one uniform segment loaded at its end: in the segment's frame Howell's "
+        "cantilever with n = {:.6g}, alpha2 = {:.6g}, mu = {:.6g}{}",
+        cantilever->load_ratio_n,
+        cantilever->value,
+        cantilever->mu,
+        cantilever->boundary == EndCondition::kGuided
+            ? fmt::format(" and a guided tip angle {:.6g} rad", *cantilever->prescribed.theta)
+            : std::string());
+    if (!mapped.solution) {
+      // (judged false: the verdict leads the exact method's reason.)
+      out.verdict = equivalent + "; " +
+                    (mapped.verdict.empty() ? std::string("the ladder's maps do not apply to it")
+                                            : mapped.verdict);
+      return out;
+    }
+    const BeamMethod method = mapped.solution->method;
+    BeamSolution s;
+    try {
+      s = solve_beam(method, problem);
+    } catch (const InvalidInput& e) {
+      out.verdict = fmt::format("{}; {} was chosen by the map but refused the chain: {}",
+                                equivalent,
+                                rung_name(method),
+                                e.what());
+      return out;
+    }
+    if (!s.converged()) {
+      out.verdict = fmt::format("{}; {} was chosen by the map but did not converge on the chain",
+                                equivalent,
+                                rung_name(method));
+      return out;
+    }
+    s.method_reason = equivalent + "; " + mapped.solution->method_reason;
+    s.expected_error = mapped.solution->expected_error;
+    s.expected_error_per_length = mapped.solution->expected_error_per_length;
+    s.methods_tried = {method};
+    out.solution = std::move(s);
+    return out;
+  }
   if (inverse_map_applies(problem)) return solve_inverse_by_ladder(problem);
   if (guided_map_applies(problem)) {
     const double tip_angle = problem.prescribed.theta.value_or(0.0);
@@ -337,8 +480,13 @@ LadderAutoOutcome solve_by_ladder(const BeamProblem& problem) {
         bench::ladder_map_range(), "map", "mu", "", "data/ladder_auto_error_map.csv");
     return out;
   }
-  return choose_rung(problem, *rungs, BeamMethod::kElliptic, "data/ladder_auto_error_map.csv");
+  return choose_rung(problem,
+                     *rungs,
+                     for_chain ? BeamMethod::kShooting : BeamMethod::kElliptic,
+                     "data/ladder_auto_error_map.csv");
 }
+
+}  // namespace
 
 void attach_mapped_error(const BeamProblem& problem, BeamSolution& s) {
   if (!map_applies(problem) || !mapped_settings(s.method, problem) || !s.converged()) return;
