@@ -6,7 +6,7 @@
 // the end of the travel the support's reaction, the clamp's reactions and the tip of the CBCM with
 // 32 elements agree with the shooting method's (its controlled path for the guided end; its solve
 // with y prescribed at the target for the fixed end, as its controlled path does not always finish
-// there) to 2e-3 (relative to the largest load, and per L; measured 7.6e-5 and 1.7e-7, printed).
+// there) to 5e-4 (relative to the largest load, and per L; measured 7.6e-5 and 1.7e-7, printed).
 // And the path is a path: every point's moved coordinate is start + lambda (target - start) to 1e-9
 // L.
 #include "flexure/elements/cbcm_path.h"
