@@ -2,10 +2,10 @@
 // mapped_chain; docs/models.md "auto across the ladder"). What is checked against what:
 //  * On 32 seeded random chains that are one uniform segment (random L, EI) placed by a rigid link
 //    and a kink at its root (random length and angle) and loaded at its tip (random loads inside
-//    the map's (n, alpha2, mu) range, turned into the root frame), with tolerances 1e-1, 3e-2, 1e-2, 1e-3: the
-//    model auto chooses has its tip, measured here against the shooting method on the same chain,
-//    within the tolerance (relative to the exact tip displacement, the measure of --tol). The
-//    sample must choose cheaper models than the exact methods in several cases.
+//    the map's (n, alpha2, mu) range, turned into the root frame), with tolerances 1e-1, 3e-2,
+//    1e-2, 1e-3: the model auto chooses has its tip, measured here against the shooting method on
+//    the same chain, within the tolerance (relative to the exact tip displacement, the measure of
+//    --tol). The sample must choose cheaper models than the exact methods in several cases.
 //  * Chains the map does not cover (a rigid link after the segment, two flexible segments, a
 //    fixed end, an extensible segment) go to an exact method and say why in method_reason.
 #include <fmt/format.h>
@@ -95,6 +95,48 @@ TEST(LadderAutoChain, RandomChainsChooseAModelWithinTheTolerance) {
   }
   EXPECT_GE(cheaper, 6) << "the sample must exercise the ladder's cheap models";
   EXPECT_GE(chosen.size(), 2u);
+}
+
+// Guided ends (the guided map): the same chains with the tip angle held at its stress-free value
+// and no end moment (the guide's reaction); loads inside the guided map.
+TEST(LadderAutoChain, RandomGuidedChainsChooseAModelWithinTheTolerance) {
+  std::mt19937 rng(3033);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const bench::LadderMapRange range = bench::ladder_guided_map_range();
+  int cheaper = 0;
+  for (int k = 0; k < 16; ++k) {
+    const double L = 0.5 + 1.5 * u(rng), EI = 0.5 + 4.5 * u(rng);
+    const double phi = -1.0 + 2.0 * u(rng), link = 0.5 * u(rng);
+    const double n = range.n_min + (range.n_max - range.n_min) * (0.05 + 0.9 * u(rng));
+    const double alpha2 =
+        range.alpha2_min + (range.alpha2_max - range.alpha2_min) * (0.02 + 0.3 * u(rng));
+    const double force = EI / (L * L);
+    const double Fx = -n * alpha2 * force, Fy = alpha2 * force;
+    SegmentChain chain;
+    chain.segments.push_back(RigidSegment{link, phi});
+    chain.segments.push_back(FlexibleSegment(L, EI));
+    chain.end = EndCondition::kGuided;
+    chain.tip_load.Fx = Fx * std::cos(phi) - Fy * std::sin(phi);
+    chain.tip_load.Fy = Fx * std::sin(phi) + Fy * std::cos(phi);
+    const double T = k % 2 == 0 ? 3e-2 : 3e-3;
+    const BeamSolution s = solve_beam(BeamMethod::kAuto, chain_problem(chain, T));
+    ASSERT_TRUE(s.converged()) << k << ": " << s.message;
+    const BeamSolution exact = solve_beam(BeamMethod::kShooting, chain_problem(chain, 1e-9));
+    ASSERT_TRUE(exact.converged()) << k;
+    const double total = chain.total_length();
+    const ChainPose rest = chain.unloaded_tip();
+    const double d =
+        std::hypot(exact.tip.a_over_l - rest.x / total, exact.tip.b_over_l - rest.y / total);
+    const double error =
+        std::hypot(s.tip.a_over_l - exact.tip.a_over_l, s.tip.b_over_l - exact.tip.b_over_l);
+    EXPECT_LE(error, T * d) << k << ": " << to_string(s.method) << ", " << s.method_reason;
+    if (s.method != BeamMethod::kShooting) {
+      ++cheaper;
+      EXPECT_NE(s.method_reason.find("guided tip angle"), std::string::npos) << s.method_reason;
+    }
+  }
+  std::cout << "guided: " << cheaper << " of 16 by a cheaper model\n";
+  EXPECT_GE(cheaper, 4);
 }
 
 TEST(LadderAutoChain, ChainsOutsideTheMapFallBackToAnExactMethodAndSayWhy) {
