@@ -74,7 +74,8 @@ def path(*, out, n=None, alpha2=None, mu=None, follower=None, boundary=None, tip
     The loads and end conditions of flexure.beam (n, alpha2, mu, follower, boundary, tip_x,
     tip_y, tip_angle, chain), or a physical beam (length, E, I or width and thickness, Fx, Fy, M;
     any boundary); method 'shooting' (continuation, the default) or 'chain' (load increments:
-    elements, increments); out: the HDF5 file the path is written to (required). Continuation:
+    elements, increments), or with control the ladder's 'cbcm' (elements, default 20) or 'bcm'
+    (docs/models.md); out: the HDF5 file the path is written to (required). Continuation:
     max_step, min_points, branch (follow the other branch at the N-th bifurcation; branch_side
     'positive' or 'negative'), control ('tip-x', 'tip-y', 'tip-angle': move that coordinate to
     its tip_... value as the path parameter), shapes (K shape points at every path point).

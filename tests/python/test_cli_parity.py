@@ -393,3 +393,21 @@ def test_mechanism_mixed_model(cli):
         flexure.mechanism.analyze("3A-sss", model="mixed", flexure_models={})
     with pytest.raises(flexure.InvalidInput, match="f7"):
         flexure.mechanism.analyze("3A-sss", model="mixed", flexure_models={"f7": "bcm"})
+
+
+def test_path_cbcm(cli, tmp_path):
+    """path(method='cbcm', elements=N) (docs/models.md "Paths under displacement control"): the
+    CLI's JSON, and at the end of the travel the support's force within 1e-4 of shooting's."""
+    a, b, c = tmp_path / "a.h5", tmp_path / "b.h5", tmp_path / "c.h5"
+    got = flexure.path(boundary="guided", control="tip-y", tip_y=0.3, method="cbcm", elements=12,
+                       out=a)
+    assert_same(got, cli.json("path", "--boundary", "guided", "--control", "tip-y", "--tip-y",
+                              "0.3", "--method", "cbcm", "--elements", "12", "--out", b),
+                skip=("seconds", "out"))
+    assert got["method"] == "cbcm" and got["elements"] == 12 and got["completed"] is True
+    flexure.path(boundary="guided", control="tip-y", tip_y=0.3, out=c)
+    cbcm, shooting = flexure.read(a), flexure.read(c)
+    assert cbcm["tip_y"][-1] == pytest.approx(0.3, abs=1e-12)
+    assert cbcm["tip_Fy"][-1] == pytest.approx(shooting["tip_Fy"][-1], rel=1e-4)
+    with pytest.raises(flexure.InvalidInput, match="--control"):
+        flexure.path(alpha2=1.0, method="cbcm", out=a)
