@@ -104,14 +104,16 @@ void print_text(const ContactResult& r, bool physical) {
         L,
         r.separation_points[0].theta);
     fmt::print(
-        "  point force at separation {:.10g}{}, line pressure {:.10g}, wrap tension "
-        "{:.10g}{}; curvature condition m(s_c) - sigma EI/R = {:.3g}\n",
+        "  point force at separation {:.10g}{}, line pressure {:.10g}{}, wrap tension "
+        "{:.10g}{}; curvature condition m(s_c) - sigma EI/R = {:.3g}{}\n",
         r.point_force_normal,
         F,
         r.line_pressure,
+        P,
         r.wrap_tension,
         F,
-        r.curvature_condition);
+        r.curvature_condition,
+        M);
   } else {
     fmt::print("  tip on the stop: normal reaction {:.10g}{}\n", r.point_force_normal, F);
   }
