@@ -13,6 +13,7 @@
 
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/scalar_root.h"
+#include "flexure/solver/shooting/shooting_shape.h"
 
 namespace flexure {
 
@@ -54,6 +55,8 @@ struct ContactFailure : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+enum class ContactMode { kNone, kWrap, kTip, kPoint };
+
 class ContactRun {
  public:
   ContactRun(const SegmentChain& chain,
@@ -90,6 +93,17 @@ class ContactRun {
   double tip_gap(const SegmentChain& chain, double Rn);
   double solve_tip_reaction(const SegmentChain& chain, double guess);
 
+  // Interior point contact: the chain cut at s with the contact force P grad g there, and the
+  // residuals (gap, tangency) at the contact point.
+  V2 gap_gradient(const V2& r) const;
+  SegmentChain split_chain(const SegmentChain& chain, double s, const V2& force) const;
+  Eigen::Vector3d point_residual(const SegmentChain& chain,
+                                 const Eigen::Vector3d& z,
+                                 ChainPose* pose);
+  void solve_point(const SegmentChain& chain);
+  // The mode of a contact that begins at load factor lambda (free solution penetrating there).
+  ContactMode landing_mode(double lambda);
+
   void fill(double lambda, bool contact, double variable, ContactResult& out);
 
   const SegmentChain& full_;
@@ -104,10 +118,20 @@ class ContactRun {
   double radius_ = 1.0;
   double EI_ = 1.0;
   double L1_ = 1.0;
+  bool wrap_ = false;  // a circle tangent at the clamp: the wrap model
   // line
   V2 point_ = V2::Zero();
   V2 normal_ = V2(0, 1);
   long solves_ = 0;
+  // The free solution's smallest interior gap and where it is (set by indicator()).
+  double free_tip_gap_ = 0.0;
+  double free_interior_gap_ = 0.0;
+  double free_interior_s_ = 0.0;
+  // Point contact at an interior point: the contact point and its normal force.
+  ContactMode mode_ = ContactMode::kNone;
+  double point_s_ = 0.0;
+  double point_P_ = 0.0;
+  double point_phi_ = 0.0;
 };
 
 void ContactRun::validate() {
@@ -130,15 +154,26 @@ void ContactRun::validate() {
     if (!std::isfinite(cx) || !std::isfinite(cy)) {
       throw InvalidInput("contact circle: center must be finite");
     }
-    // Tangent at the clamp: the centre lies on the clamp's normal at distance R.
-    if (std::abs(cx) > 1e-9 * R || std::abs(std::abs(cy) - R) > 1e-9 * R) {
-      throw InvalidInput(fmt::format(
-          "contact circle: center ({:g}, {:g}) with radius {:g} does not touch the beam at the "
-          "clamp; the wrap model needs the circle tangent to the beam at the root, centre (0, "
-          "+R) or (0, -R) in the root frame (a circle elsewhere is not implemented)",
-          cx,
-          cy,
-          R));
+    // Tangent at the clamp (the centre on the clamp's normal at distance R): the wrap. Otherwise
+    // the circle must be clear of the unloaded beam: point contact at an interior point.
+    radius_ = R;
+    wrap_ = std::abs(cx) <= 1e-9 * R && std::abs(std::abs(cy) - R) <= 1e-9 * R;
+    if (!wrap_) {
+      SegmentChain unloaded = full_.at_load_factor(0.0);
+      unloaded.tip_load = TipLoad{};
+      const ShootingResult r = ShootingSolver(sampled_options_).solve(unloaded);
+      if (!r.converged() || gap_of(V2::Zero()) <= 0.0 ||
+          min_gap(r.shape, false, false) <= options_.gap_tolerance * length_) {
+        throw InvalidInput(fmt::format(
+            "contact circle: center ({:g}, {:g}) with radius {:g} neither touches the beam "
+            "tangent at the clamp (the wrap: centre (0, +R) or (0, -R)) nor stays clear of the "
+            "unloaded beam (point contact); a circle that cuts or touches the unloaded beam "
+            "elsewhere is not implemented",
+            cx,
+            cy,
+            R));
+      }
+      return;
     }
     sigma_ = cy > 0.0 ? 1 : -1;
     radius_ = R;
@@ -228,14 +263,166 @@ double ContactRun::min_gap(const std::vector<ShapePoint>& shape,
 
 double ContactRun::indicator(double lambda, double* interior_gap) {
   const SegmentChain c = chain_at(lambda);
-  const ShootingResult r = shoot(c, interior_gap != nullptr);
-  if (surface_.type == ContactSurfaceType::kCircle) {
+  if (wrap_) {
+    const ShootingResult r = shoot(c, interior_gap != nullptr);
     const double m0 = -r.reaction.M;
     if (interior_gap) *interior_gap = min_gap(r.shape, false, true);
     return EI_ / radius_ - sigma_ * m0;
   }
-  if (interior_gap) *interior_gap = min_gap(r.shape, true, false);
-  return gap_of(V2(r.tip.x, r.tip.y));
+  // The smallest gap of the free beam: at the tip, or at an interior sample refined by the
+  // parabola through it and its neighbours (the gap is smooth in s; error O(h^4)).
+  const ShootingResult r = shoot(c, true);
+  const std::size_t n = r.shape.size();
+  std::vector<double> g(n);
+  for (std::size_t i = 0; i < n; ++i) g[i] = gap_of(V2(r.shape[i].x, r.shape[i].y));
+  std::size_t k = 1;
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    if (g[i] < g[k]) k = i;
+  }
+  double gi = g[k], si = r.shape[k].s;
+  if (k >= 1 && k + 1 < n) {
+    const double curvature = g[k - 1] - 2.0 * g[k] + g[k + 1];
+    if (curvature > 0.0) {
+      const double delta = 0.5 * (g[k - 1] - g[k + 1]) / curvature;
+      if (std::abs(delta) <= 1.0) {
+        gi = g[k] - 0.25 * (g[k - 1] - g[k + 1]) * delta;
+        si = r.shape[k].s + delta * (r.shape[k + 1].s - r.shape[k].s);
+      }
+    }
+  }
+  free_tip_gap_ = gap_of(V2(r.tip.x, r.tip.y));
+  free_interior_gap_ = gi;
+  free_interior_s_ = si;
+  if (interior_gap) *interior_gap = gi;
+  return std::min(free_tip_gap_, gi);
+}
+
+V2 ContactRun::gap_gradient(const V2& r) const {
+  if (surface_.type == ContactSurfaceType::kLine) return normal_;
+  const V2 d = r - V2(surface_.center[0], surface_.center[1]);
+  return d / d.norm();
+}
+
+SegmentChain ContactRun::split_chain(const SegmentChain& chain, double s, const V2& force) const {
+  SegmentChain out = chain;
+  double start = 0.0;
+  for (int j = 0; j < chain.segment_count(); ++j) {
+    const Segment& seg = chain.segments[j];
+    const double len = std::visit([](const auto& x) { return x.length; }, seg);
+    if (s < start + len || j + 1 == chain.segment_count()) {
+      const auto* f = std::get_if<FlexibleSegment>(&seg);
+      if (f == nullptr) throw ContactFailure("contact on a rigid link is not implemented");
+      if (!f->EI_profile.empty() || !f->q_profile.empty()) {
+        throw ContactFailure(
+            "point contact on a segment with a tabulated EI or load is not implemented");
+      }
+      const double a = s - start, b = start + len - s;
+      if (a < 1e-9 * length_ || b < 1e-9 * length_) {
+        throw ContactFailure("point contact at a joint of the chain is not implemented");
+      }
+      FlexibleSegment near = *f, far = *f;
+      near.length = a;
+      far.length = b;
+      out.segments[j] = near;
+      out.segments.insert(out.segments.begin() + j + 1, far);
+      for (NodeLoad& load : out.node_loads) {
+        if (load.node >= j + 1) ++load.node;
+      }
+      out.node_loads.push_back(NodeLoad{j + 1, force.x(), force.y(), 0.0});
+      return out;
+    }
+    start += len;
+  }
+  throw ContactFailure("the contact point lies outside the chain");
+}
+
+Eigen::Vector3d ContactRun::point_residual(const SegmentChain& chain,
+                                           const Eigen::Vector3d& z,
+                                           ChainPose* pose) {
+  // z = (s, P, phi): contact point, normal force and its direction angle. Residuals: the gap at
+  // the point (in lengths), the tangency t . grad g, and the direction against grad g there.
+  const double s = z[0], P = z[1], phi = z[2];
+  const V2 direction(std::cos(phi), std::sin(phi));
+  const SegmentChain split = split_chain(chain, s, P * direction);
+  const ShootingResult r = shoot(split, false);
+  const std::vector<ShapePoint> at = shooting_shape_at(split, r, {s}, plain_options_);
+  const V2 rp(at[0].x, at[0].y);
+  const V2 t(std::cos(at[0].theta), std::sin(at[0].theta));
+  const V2 grad = gap_gradient(rp);
+  if (pose) *pose = ChainPose{at[0].x, at[0].y, at[0].theta};
+  return Eigen::Vector3d(
+      gap_of(rp) / length_, t.dot(grad), direction.x() * grad.y() - direction.y() * grad.x());
+}
+
+void ContactRun::solve_point(const SegmentChain& chain) {
+  // Newton's method on (s, P, phi) with a forward-difference Jacobian (each column a shooting
+  // solve) and backtracking on |g|; from the previous contact state (or the landing point).
+  double EI_min = std::numeric_limits<double>::infinity();
+  for (const Segment& seg : full_.segments) {
+    if (const auto* f = std::get_if<FlexibleSegment>(&seg)) EI_min = std::min(EI_min, f->EI);
+  }
+  const double force_scale = EI_min / (length_ * length_);
+  Eigen::Vector3d z(point_s_, point_P_, point_phi_);
+  Eigen::Vector3d g = point_residual(chain, z, nullptr);
+  for (int it = 0; it < 60; ++it) {
+    if (std::abs(g[0]) < 1e-13 && std::abs(g[1]) < 1e-12 && std::abs(g[2]) < 1e-12) {
+      point_s_ = z[0];
+      point_P_ = z[1];
+      point_phi_ = z[2];
+      return;
+    }
+    const Eigen::Vector3d h(1e-7 * length_, 1e-7 * std::max(std::abs(z[1]), force_scale), 1e-7);
+    Eigen::Matrix3d J;
+    for (int c = 0; c < 3; ++c) {
+      Eigen::Vector3d zc = z;
+      zc[c] += h[c];
+      J.col(c) = (point_residual(chain, zc, nullptr) - g) / h[c];
+    }
+    const Eigen::Vector3d dz = J.fullPivLu().solve(-g);
+    if (!dz.allFinite()) throw ContactFailure("the point contact's Newton step is singular");
+    double step = 1.0;
+    bool accepted = false;
+    for (int ls = 0; ls < 30; ++ls, step *= 0.5) {
+      Eigen::Vector3d trial = z + step * dz;
+      trial[0] = std::clamp(trial[0], 1e-6 * length_, length_ * (1.0 - 1e-6));
+      Eigen::Vector3d gt;
+      try {
+        gt = point_residual(chain, trial, nullptr);
+      } catch (const ContactFailure&) {
+        continue;
+      }
+      if (gt.norm() < (1.0 - 1e-4 * step) * g.norm()) {
+        z = trial;
+        g = gt;
+        accepted = true;
+        break;
+      }
+    }
+    if (!accepted) break;
+  }
+  throw ContactFailure(
+      fmt::format("the interior point contact did not converge (residual {:.3g})", g.norm()));
+}
+
+ContactMode ContactRun::landing_mode(double lambda) {
+  if (wrap_) return ContactMode::kWrap;
+  indicator(lambda);
+  if (free_tip_gap_ <= free_interior_gap_) {
+    if (surface_.type == ContactSurfaceType::kCircle) {
+      throw ContactFailure(
+          "the tip lands on the circle: tip contact with a circle is not implemented");
+    }
+    return ContactMode::kTip;
+  }
+  // Start Newton at the free beam's closest point with no force, along the surface normal there.
+  const SegmentChain c = chain_at(lambda);
+  const ShootingResult r = shoot(c, false);
+  const std::vector<ShapePoint> at = shooting_shape_at(c, r, {free_interior_s_}, plain_options_);
+  const V2 grad = gap_gradient(V2(at[0].x, at[0].y));
+  point_s_ = free_interior_s_;
+  point_P_ = 0.0;
+  point_phi_ = std::atan2(grad.y(), grad.x());
+  return ContactMode::kPoint;
 }
 
 ChainPose ContactRun::wrap_pose(double s) const {
@@ -376,6 +563,30 @@ void ContactRun::fill(double lambda, bool contact, double variable, ContactResul
   out.point_force_normal = out.line_pressure = out.wrap_tension = 0.0;
   out.separation_moment = out.curvature_condition = 0.0;
   const int n_shape = options_.shape_points;
+  if (contact && mode_ == ContactMode::kPoint) {
+    const V2 direction(std::cos(point_phi_), std::sin(point_phi_));
+    const SegmentChain split = split_chain(chain, point_s_, point_P_ * direction);
+    const ShootingResult r = shoot(split, true);
+    const std::vector<ShapePoint> at = shooting_shape_at(split, r, {point_s_}, plain_options_);
+    const ChainPose pose{at[0].x, at[0].y, at[0].theta};
+    out.tip = r.tip;
+    out.reaction = r.reaction;
+    out.min_gap = min_gap(r.shape, false, false);
+    out.tip_gap = gap_of(V2(r.tip.x, r.tip.y));
+    out.residual = std::abs(gap_of(V2(pose.x, pose.y)));
+    out.s_start = out.s_end = point_s_;
+    out.separation_s = {point_s_};
+    out.separation_points = {pose};
+    out.point_force = {point_P_ * direction.x(), point_P_ * direction.y()};
+    out.point_force_normal = point_P_;
+    out.contact_force = out.point_force;
+    if (n_shape > 1) {
+      ShootingSolver::Options os = plain_options_;
+      os.shape_points = n_shape;
+      out.shape = ShootingSolver(os).solve(split).shape;
+    }
+    return;
+  }
   if (surface_.type == ContactSurfaceType::kCircle) {
     if (!contact) {
       ShootingSolver::Options o = sampled_options_;
@@ -485,31 +696,51 @@ ContactResult ContactRun::run() {
   ContactResult out;
   out.surface = surface_.type;
   out.steps = options_.steps;
-  const bool circle = surface_.type == ContactSurfaceType::kCircle;
   double lambda_prev = 0.0;
   double interior = 0.0;
-  double variable = 0.0;  // s_c or R_n of the last contact state
+  double variable = 0.0;  // s_c, R_n or s_p of the last contact state
   try {
-    double psi_prev = indicator(0.0, &interior);
-    bool contact = psi_prev < 0.0;
-    auto solve_contact = [&](double lambda, double guess) {
+    auto solve_contact = [&](double lambda, double guess) -> double {
       const SegmentChain c = chain_at(lambda);
-      return circle ? solve_wrap(c, guess) : solve_tip_reaction(c, guess);
-    };
-    auto check_free = [&](double lambda, double gap) {
-      if (gap < -options_.gap_tolerance * length_) {
-        throw ContactFailure(fmt::format(
-            "at load factor {:.6g} the beam would cross the {} {} (gap {:.3g}): contact of an "
-            "interior point is not implemented",
-            lambda,
-            to_string(surface_.type),
-            circle ? "away from the clamp" : "before its tip",
-            gap));
+      switch (mode_) {
+        case ContactMode::kWrap:
+          return solve_wrap(c, guess);
+        case ContactMode::kTip:
+          return solve_tip_reaction(c, guess);
+        case ContactMode::kPoint:
+          solve_point(c);
+          return point_s_;
+        default:
+          throw ContactFailure("no contact mode");
       }
     };
-    if (!contact) check_free(0.0, interior);
-    if (contact) variable = solve_contact(0.0, 0.0);
-    out.path.push_back(ContactPathPoint{0.0, contact, circle ? variable : 0.0, 0.0, psi_prev, {}});
+    // The wrap's free state may still cross the circle away from the clamp (its indicator is the
+    // root curvature); a contact state must not cross the surface anywhere else.
+    auto check_gap = [&](double lambda, double gap, bool contact) {
+      if (gap < -options_.gap_tolerance * length_) {
+        throw ContactFailure(fmt::format(
+            "at load factor {:.6g} the beam would cross the {} at a second place (gap {:.3g}): "
+            "{} is not implemented",
+            lambda,
+            to_string(surface_.type),
+            gap,
+            contact ? "more than one contact" : "contact of an interior point with this circle"));
+      }
+    };
+    auto separation = [&](bool contact, double v) {
+      if (!contact) return 0.0;
+      return mode_ == ContactMode::kTip ? length_ : v;
+    };
+    double psi_prev = indicator(0.0, &interior);
+    bool contact = psi_prev < 0.0;
+    if (contact) {
+      mode_ = landing_mode(0.0);
+      variable = solve_contact(0.0, 0.0);
+    } else if (wrap_) {
+      check_gap(0.0, interior, false);
+    }
+    out.path.push_back(
+        ContactPathPoint{0.0, contact, separation(contact, variable), 0.0, psi_prev, {}});
     for (int k = 1; k <= options_.steps; ++k) {
       const double lambda = static_cast<double>(k) / options_.steps;
       const double psi = indicator(lambda, &interior);
@@ -523,24 +754,33 @@ ContactResult ContactRun::run() {
                                                  ScalarRootOptions{options_.event_tolerance, 200});
         if (!root.converged()) throw ContactFailure("a landing or lift-off point did not converge");
         out.events.push_back(ContactEvent{now ? "landing" : "lift-off", root.x});
-        if (now) variable = 0.0;
+        if (now) {
+          variable = 0.0;
+          mode_ = landing_mode(lambda);
+        } else {
+          mode_ = ContactMode::kNone;
+        }
       }
       contact = now;
       if (!contact) {
-        check_free(lambda, interior);
+        if (wrap_) check_gap(lambda, interior, false);
         variable = 0.0;
       } else {
         variable = solve_contact(lambda, variable);
       }
       ContactResult step;
       fill(lambda, contact, variable, step);
-      if (contact) check_free(lambda, step.min_gap);
-      out.path.push_back(ContactPathPoint{lambda,
-                                          contact,
-                                          contact ? (circle ? variable : length_) : 0.0,
-                                          step.point_force_normal,
-                                          psi,
-                                          step.tip});
+      if (contact) {
+        check_gap(lambda, step.min_gap, true);
+        if (step.point_force_normal < -1e-9 * std::max(1.0, std::abs(step.point_force_normal))) {
+          throw ContactFailure(
+              fmt::format("at load factor {:.6g} the contact force would pull ({:.3g})",
+                          lambda,
+                          step.point_force_normal));
+        }
+      }
+      out.path.push_back(ContactPathPoint{
+          lambda, contact, separation(contact, variable), step.point_force_normal, psi, step.tip});
       lambda_prev = lambda;
       psi_prev = psi;
       out.load_factor = lambda;

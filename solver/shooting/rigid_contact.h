@@ -17,16 +17,21 @@
 // tangent force. Contact is admissible while p >= 0 and P_c >= 0; both are checked.
 //
 // Line (a straight stop through `point` with unit `normal` toward the beam's side): the gap
-// g = normal . (r - point) >= 0. The tip is the contact point: a normal reaction R_n >= 0 at the
-// tip with R_n g = 0 (complementarity); R_n is found by Brent's method on the tip gap. Contact of
-// an interior point with the line is detected and refused (not implemented).
+// g = normal . (r - point) >= 0. Tip contact: a normal reaction R_n >= 0 at the tip with
+// R_n g = 0 (complementarity); R_n is found by Brent's method on the tip gap.
+//
+// Point contact (a circle clear of the unloaded beam, e.g. a pin the beam is pressed over, or a
+// stop met mid-span while the tip is free): the beam touches at one interior point s_p, tangent to
+// the surface, with a force P along the surface normal grad g; the chain is cut at s_p and
+// (s_p, P, phi) solve g(r(s_p)) = 0, t(s_p) . grad g = 0, (cos phi, sin phi) x grad g = 0 by
+// Newton's method (forward-difference Jacobian). One contact point only: a second one is refused.
 //
 // Continuation: the loads follow load(lambda) = start + lambda (chain - start) (start: zero, or a
 // given start tip load), in `steps` equal steps; at each step the previous contact variable
 // brackets the next. Landing and lift-off are the zeros of one function of the free (contact-less)
-// equilibrium, psi(lambda) = EI/R - sigma m(0) (circle) or the free tip gap (line): contact holds
-// where psi < 0. Every sign change of psi between two steps is located by Brent's method and
-// reported as an event.
+// equilibrium, psi(lambda) = EI/R - sigma m(0) (wrap) or the free beam's smallest gap (tip or
+// interior point): contact holds where psi < 0. Every sign change of psi between two steps is
+// located by Brent's method and reported as an event.
 #include <array>
 #include <string>
 #include <vector>
