@@ -19,8 +19,11 @@ Json pose_json(const ChainPose& p) { return Json{{"x", p.x}, {"y", p.y}, {"theta
 Json result_json(const ContactResult& r, bool physical) {
   Json out;
   out["method"] = "shooting";
-  out["contact_model"] =
-      r.surface == ContactSurfaceType::kCircle ? "wrap from the clamp" : "tip contact with a line";
+  out["contact_model"] = r.kind == "wrap"    ? "wrap from the clamp"
+                         : r.kind == "tip"   ? "tip on the stop"
+                         : r.kind == "point" ? "one interior point, tangent"
+                                             : "no contact";
+  out["contact_kind"] = r.kind;
   out["units"] = physical ? "SI" : "consistent";
   out["termination"] = std::string(termination_name(r.termination));
   out["surface"] = to_string(r.surface);
@@ -93,7 +96,20 @@ void print_text(const ContactResult& r, bool physical) {
                to_string(r.surface),
                r.min_gap,
                L);
-  } else if (r.surface == ContactSurfaceType::kCircle) {
+  } else if (r.kind == "point") {
+    const ChainPose& p = r.separation_points[0];
+    fmt::print(
+        "  touching at one point s = {:.10g}{} ({:.10g}, {:.10g}){}, tangent, angle {:.10g} "
+        "rad; contact force {:.10g}{} along the surface normal\n",
+        r.s_end,
+        L,
+        p.x,
+        p.y,
+        L,
+        p.theta,
+        r.point_force_normal,
+        F);
+  } else if (r.kind == "wrap") {
     fmt::print(
         "  wrapped over s = 0 .. {:.10g}{}; separation point ({:.10g}, {:.10g}){}, angle "
         "{:.10g} rad\n",

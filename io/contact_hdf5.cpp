@@ -19,6 +19,7 @@ void write_contact_hdf5(const std::string& path, const ContactResult& r, bool ph
                     {"path/in_contact", 1, "in contact with the surface"}});
   root.set_attribute("surface", to_string(r.surface));
   root.set_attribute("in_contact", static_cast<std::int64_t>(r.in_contact ? 1 : 0));
+  root.set_attribute("contact_kind", r.kind);
   root.set_attribute("load_factor", r.load_factor);
 
   Hdf5Group contact = root.create_group("contact");

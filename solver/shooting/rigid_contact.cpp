@@ -786,6 +786,10 @@ ContactResult ContactRun::run() {
       out.load_factor = lambda;
     }
     fill(1.0, contact, variable, out);
+    out.kind = !contact                      ? "none"
+               : mode_ == ContactMode::kWrap ? "wrap"
+               : mode_ == ContactMode::kTip  ? "tip"
+                                             : "point";
     out.set_converged(true);
     out.message = contact ? fmt::format("in contact with the {}", to_string(surface_.type))
                           : fmt::format("free of the {}", to_string(surface_.type));

@@ -74,6 +74,9 @@ struct ContactResult : SolveStatus {
   // residual: |m(s_c) - sigma EI/R| (circle) or |gap at the tip| (line) at the returned point
   ContactSurfaceType surface = ContactSurfaceType::kCircle;
   bool in_contact = false;
+  // How the beam touches at the returned point: "none", "wrap" (a circle wrapped from the
+  // clamp), "tip" (the tip on a stop) or "point" (one interior point, tangent).
+  std::string kind = "none";
   double load_factor = 0.0;  // reached (1 when converged)
   // Contact region on the beam (arc lengths from the root); equal ends for point contact, both 0
   // without contact.

@@ -89,6 +89,29 @@ TEST(CliContact, AStopLeftAlongTheContinuationReportsLiftOff) {
   EXPECT_GT(j["contact"]["tip_gap"].get<double>(), 0.0);
 }
 
+TEST(CliContact, APinTouchedAtOnePoint) {
+  // A pin of radius 0.1 under the beam: one interior contact point, tangent, the force along the
+  // pin's radius; clamp reaction + tip load + contact force = 0 and the moments about the clamp.
+  test::ScratchDir dir;
+  const std::string file = (dir / "pin.toml").string();
+  std::ofstream(file) << "[[segment]]\ntype = \"flexible\"\nlength = 1.0\nEI = 1.0\n"
+                         "[tip_load]\nFx = 0.5\nFy = -3.0\n[[contact]]\ntype = \"circle\"\n"
+                         "center = [0.5, -0.15]\nradius = 0.1\n";
+  const Json j = run_json("beam --chain " + file);
+  ASSERT_FALSE(j.empty());
+  EXPECT_EQ(j["contact_kind"], "point");
+  const Json& p = j["contact"]["separation_points"][0];
+  const double x = p["x"], y = p["y"], theta = p["theta"];
+  EXPECT_NEAR(std::hypot(x - 0.5, y + 0.15), 0.1, 1e-12);
+  EXPECT_NEAR(std::cos(theta) * (x - 0.5) + std::sin(theta) * (y + 0.15), 0.0, 1e-11);
+  const double fx = j["contact"]["contact_force"]["Fx"], fy = j["contact"]["contact_force"]["Fy"];
+  EXPECT_NEAR(j["reaction"]["Fx"].get<double>() + 0.5 + fx, 0.0, 1e-10);
+  EXPECT_NEAR(j["reaction"]["Fy"].get<double>() - 3.0 + fy, 0.0, 1e-10);
+  const double tx = j["tip"]["x"], ty = j["tip"]["y"];
+  EXPECT_NEAR(
+      j["reaction"]["M"].get<double>() + (tx * -3.0 - ty * 0.5) + (x * fy - y * fx), 0.0, 1e-10);
+}
+
 TEST(CliContact, UnsupportedCombinationsAreRefused) {
   test::ScratchDir dir;
   auto write = [&](const std::string& name, const std::string& contact) {
