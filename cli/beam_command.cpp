@@ -12,6 +12,7 @@
 #include <string_view>
 #include <utility>
 
+#include "cli/beam_contact_command.h"
 #include "cli/beam_methods.h"
 #include "cli/cli_common.h"
 #include "cli/command_runner.h"
@@ -74,6 +75,7 @@ struct BeamArgs {
   // Fatigue of a load cycle of the physical beam (load_cycle_fatigue.h; docs/fatigue.md).
   std::string cycle;
   FatigueFlags fatigue;
+  std::string out;  // --out: the HDF5 file of a contact solution (docs/contact.md)
 };
 
 // The request the flags make (beam/beam_request.h): a value is given when its flag is, so the
@@ -116,6 +118,9 @@ BeamInput make_input(const BeamArgs& args, const BeamRequest& request) {
     add_physical_beam(input, args.physical.parse());
   } else if (request.chain) {
     io::ChainFile file = io::read_chain_file(args.chain_file);
+    if (!file.contacts.empty()) {
+      throw InvalidInput("a [[contact]] is solved by `flexure beam --chain FILE` alone");
+    }
     warn(file.warnings);
     const bool in_si = file.physical;
     add_chain(input, std::move(file), in_si);
@@ -558,7 +563,38 @@ void add_fatigue_json(Json& out, const BeamFatigue& f) {
                         {"c_misc", f.strength.factors.misc}};
 }
 
+// A chain file with a [[contact]] (docs/contact.md): the flags that have a meaning there, and
+// the first given one that has none.
+BeamContactArgs contact_args(const BeamArgs& args) {
+  BeamContactArgs c;
+  c.chain_file = args.chain_file;
+  c.method = args.method;
+  if (args.integrator_option->count() > 0) c.integrator = args.integrator;
+  c.shape_points = args.shape_points;
+  c.json = args.json;
+  c.out = args.out;
+  if (args.stable) c.refused_flag = "--stable";
+  if (!args.cycle.empty()) c.refused_flag = "--cycle";
+  if (args.follower != 0.0) c.refused_flag = "--follower (give the follower force in the file)";
+  if (!same_name(args.boundary, "free")) c.refused_flag = "--boundary (contact needs a free end)";
+  if (args.tip_x_option->count() + args.tip_y_option->count() + args.tip_angle_option->count() >
+      0) {
+    c.refused_flag = "a prescribed tip (--tip-x, --tip-y, --tip-angle)";
+  }
+  return c;
+}
+
 void run_beam(const BeamArgs& args, const BeamRequest& request) {
+  if (t_problem_only == nullptr && (request.chain || !args.out.empty())) {
+    if (!request.chain) {
+      throw InvalidInput(
+          "--out writes the HDF5 file of a contact solution: give --chain FILE with a [[contact]] "
+          "(docs/contact.md)");
+    }
+    // The library's checks of the flags first (e.g. --alpha2 with --chain), then contact.
+    (void)make_beam_input(request, BeamRequestNames::command_line());
+    if (run_beam_contact(contact_args(args))) return;
+  }
   const BeamInput input = make_input(args, request);
   if (!args.cycle.empty()) {
     if (!input.physical || !input.physical->thickness) {
@@ -802,6 +838,10 @@ void register_beam_command(CLI::App& app) {
       ->transform(CLI::IsMember({"reversed", "repeated"}));
   args->fatigue.add_to(*beam);
   beam->add_flag("--json", args->json, "Print one JSON object on stdout");
+  beam->add_option("--out",
+                   args->out,
+                   "HDF5 file of a contact solution (--chain FILE with a [[contact]]; "
+                   "docs/contact.md)");
   beam->callback([args] { run_beam(*args, request_of(*args)); });
 }
 

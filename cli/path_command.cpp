@@ -106,6 +106,11 @@ PathRequest make_request(const PathArgs& args) {
   bool file_physical = false;  // units = "SI" (or a value with a unit): results in m, N, N m
   if (from_file) {
     const io::ChainFile file = io::read_chain_file(args.chain_file);
+    if (!file.contacts.empty()) {
+      throw InvalidInput(
+          "path --chain: a [[contact]] is solved by `flexure beam --chain FILE` only (its load "
+          "continuation reports landing and lift-off; docs/contact.md)");
+    }
     for (std::size_t k = 0; k < file.segments.size(); ++k) {
       if (file.segments[k] && file.segments[k]->plate == PlateRule::kAuto) {
         // As --plate auto below: one solved curvature decides, a path passes through many.

@@ -358,6 +358,115 @@ int joint_index(const toml::table& t, const std::string& where, Reader& r, int j
   return static_cast<int>(value);
 }
 
+// A point [x, y] of lengths (numbers or strings with a unit).
+std::array<double, 2> read_point(const toml::node& node, const std::string& what, Reader& r) {
+  const toml::array* a = node.as_array();
+  if (a == nullptr || a->size() != 2) {
+    toml_fail(r.source, line_of(node), what + " must be an array of two values [x, y]");
+  }
+  std::array<double, 2> out{};
+  for (std::size_t c = 0; c < 2; ++c) {
+    const toml::node& v = *a->get(c);
+    if (const std::optional<double> x = toml_number(v)) {
+      if (!std::isfinite(*x)) toml_fail(r.source, line_of(v), what + " must be finite numbers");
+      out[c] = *x;
+    } else if (v.is_string()) {
+      try {
+        const Quantity q = parse_quantity(**v.as_string(), Dimension::kLength, what);
+        r.any_unit = r.any_unit || q.has_unit();
+        out[c] = q.si;
+      } catch (const InvalidInput& e) {
+        toml_fail(r.source, line_of(v), e.what());
+      }
+    } else {
+      toml_fail(r.source,
+                line_of(v),
+                what + " must contain numbers or strings with a unit (e.g. \"10 mm\")");
+    }
+  }
+  return out;
+}
+
+// [[contact]]: one rigid surface (docs/contact.md).
+void read_contacts(const toml::node& node, Reader& r, ChainFile& file) {
+  const std::string& source = r.source;
+  const toml::array* list = node.as_array();
+  if (list == nullptr) toml_fail(source, line_of(node), "contact must be an array of tables");
+  int i = 0;
+  for (const toml::node& n : *list) {
+    const std::string where = fmt::format("contact {}", ++i);
+    const toml::table& t = as_table(n, where, source);
+    ChainFile::Contact contact;
+    contact.line = line_of(n);
+    const toml::node* type = t.get("type");
+    if (type == nullptr || !type->is_string()) {
+      toml_fail(source, contact.line, where + " needs type = \"circle\" or \"line\"");
+    }
+    const std::string name = **type->as_string();
+    if (same_name(name, "circle")) {
+      check_toml_keys(t, {"type", "center", "radius", "start_tip_load", "steps"}, where, source);
+      contact.surface.type = ContactSurfaceType::kCircle;
+      const toml::node* c = t.get("center");
+      if (c == nullptr)
+        toml_fail(source, contact.line, where + " is missing the required key 'center'");
+      contact.surface.center = read_point(*c, where + ".center", r);
+      contact.surface.radius = r.required(t, "radius", where, contact.line, Dimension::kLength);
+    } else if (same_name(name, "line")) {
+      check_toml_keys(t, {"type", "point", "normal", "start_tip_load", "steps"}, where, source);
+      contact.surface.type = ContactSurfaceType::kLine;
+      const toml::node* p = t.get("point");
+      if (p == nullptr)
+        toml_fail(source, contact.line, where + " is missing the required key 'point'");
+      contact.surface.point = read_point(*p, where + ".point", r);
+      const toml::node* nn = t.get("normal");
+      if (nn == nullptr)
+        toml_fail(source, contact.line, where + " is missing the required key 'normal'");
+      const toml::array* a = nn->as_array();
+      std::array<double, 2> normal{};
+      for (std::size_t k = 0; a != nullptr && a->size() == 2 && k < 2; ++k) {
+        const std::optional<double> v = toml_number(*a->get(k));
+        if (!v || !std::isfinite(*v))
+          a = nullptr;
+        else
+          normal[k] = *v;
+      }
+      if (a == nullptr || a->size() != 2 || std::hypot(normal[0], normal[1]) == 0.0) {
+        toml_fail(source,
+                  line_of(*nn),
+                  where +
+                      ".normal must be two numbers [nx, ny], not both zero, pointing from the "
+                      "stop toward the beam");
+      }
+      contact.surface.normal = normal;
+    } else {
+      toml_fail(source,
+                line_of(*type),
+                fmt::format("{}: type '{}' is unknown (allowed: circle, line)", where, name));
+    }
+    if (const toml::node* s = t.get("start_tip_load")) {
+      const std::string w = where + ".start_tip_load";
+      const toml::table& st = as_table(*s, w, source);
+      check_toml_keys(st, {"Fx", "Fy", "M"}, w, source);
+      contact.start_tip_load.Fx = r.number(st, "Fx", w, Dimension::kForce).value_or(0.0);
+      contact.start_tip_load.Fy = r.number(st, "Fy", w, Dimension::kForce).value_or(0.0);
+      contact.start_tip_load.M = r.number(st, "M", w, Dimension::kMoment).value_or(0.0);
+    }
+    if (const toml::node* s = t.get("steps")) {
+      const std::optional<int64_t> v = s->value<int64_t>();
+      if (!s->is_integer() || !v || *v < 1 || *v > 100000) {
+        toml_fail(source, line_of(*s), where + ".steps must be an integer in [1, 100000]");
+      }
+      contact.steps = static_cast<int>(*v);
+    }
+    file.contacts.push_back(contact);
+  }
+  if (file.contacts.size() > 1) {
+    toml_fail(source,
+              file.contacts[1].line,
+              "only one [[contact]] is implemented (several surfaces at once are not)");
+  }
+}
+
 }  // namespace
 
 ChainFile parse_chain_file(const std::string& text, const std::string& source) {
@@ -377,7 +486,8 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
                    "segment",
                    "tip_load",
                    "tip",
-                   "node_load"},
+                   "node_load",
+                   "contact"},
                   "the file",
                   source);
   Reader r;
@@ -456,6 +566,7 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
       chain.node_loads.push_back(load);
     }
   }
+  if (const toml::node* node = root.get("contact")) read_contacts(*node, r, file);
   const std::optional<Quantity> yield =
       r.quantity(root, "yield_strength", "the file", Dimension::kStress);
   file.physical = units_si || r.any_unit;
@@ -680,9 +791,17 @@ ChainFile read_chain_file(const std::string& path) {
 }
 
 SegmentChain parse_chain_toml(const std::string& text, const std::string& source) {
-  return parse_chain_file(text, source).chain;
+  ChainFile file = parse_chain_file(text, source);
+  if (!file.contacts.empty()) {
+    toml_fail(source,
+              file.contacts.front().line,
+              "a [[contact]] is solved by `flexure beam --chain FILE` only (docs/contact.md)");
+  }
+  return std::move(file.chain);
 }
 
-SegmentChain read_chain_toml(const std::string& path) { return read_chain_file(path).chain; }
+SegmentChain read_chain_toml(const std::string& path) {
+  return parse_chain_toml(read_toml_file(path, "--chain file"), path);
+}
 
 }  // namespace flexure::io

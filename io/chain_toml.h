@@ -16,6 +16,7 @@
 
 #include "flexure/beam/physical_beam.h"
 #include "flexure/solver/chain_model/segment_chain.h"
+#include "flexure/solver/shooting/rigid_contact.h"
 
 namespace flexure::io {
 
@@ -38,6 +39,15 @@ struct ChainFile : PhysicalChain {
   // self-weight); kept for existing callers.
   std::vector<std::optional<SegmentSection>> sections;
   std::vector<std::string> warnings;  // likely unit mistakes, for stderr (solver/common/quantity.h)
+  // [[contact]] tables (docs/contact.md): a rigid circle or straight stop, the tip load the
+  // continuation starts from and its step count. Empty: no contact.
+  struct Contact {
+    RigidSurface surface;
+    TipLoad start_tip_load;
+    std::optional<int> steps;
+    int line = 0;  // of the [[contact]] table, for messages
+  };
+  std::vector<Contact> contacts;
 };
 
 ChainFile read_chain_file(const std::string& path);

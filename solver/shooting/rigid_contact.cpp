@@ -1,0 +1,818 @@
+// Frictionless contact with a rigid circle (wrap from the clamp) or a straight stop (tip contact):
+// see rigid_contact.h and docs/contact.md for the equations.
+#include "flexure/solver/shooting/rigid_contact.h"
+
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <variant>
+
+#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/scalar_root.h"
+#include "flexure/solver/shooting/shooting_shape.h"
+
+namespace flexure {
+
+const char* to_string(ContactSurfaceType type) {
+  return type == ContactSurfaceType::kCircle ? "circle" : "line";
+}
+
+void RigidContactSolver::Options::validate() const {
+  shooting.validate();
+  if (steps < 1 || steps > 100000) {
+    throw InvalidInput(fmt::format("contact steps must be in [1, 100000] (got {})", steps));
+  }
+  auto positive = [](double v, const char* name) {
+    if (!(v > 0.0) || !std::isfinite(v)) {
+      throw InvalidInput(fmt::format("contact option {} must be positive and finite", name));
+    }
+  };
+  positive(event_tolerance, "event_tolerance");
+  positive(contact_tolerance, "contact_tolerance");
+  positive(gap_tolerance, "gap_tolerance");
+  if (gap_samples < 3) throw InvalidInput("contact option gap_samples must be at least 3");
+  if (shape_points < 0 || shape_points == 1) {
+    throw InvalidInput("contact option shape_points must be 0 or at least 2");
+  }
+}
+
+namespace {
+
+using V2 = Eigen::Vector2d;
+
+V2 rotate(double angle, const V2& v) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return V2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
+}
+
+// A solve that the contact model cannot complete (non-convergence of a free-span solve, no
+// separation point): reported as the result's message.
+struct ContactFailure : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+enum class ContactMode { kNone, kWrap, kTip, kPoint };
+
+class ContactRun {
+ public:
+  ContactRun(const SegmentChain& chain,
+             const RigidSurface& surface,
+             const TipLoad& start,
+             const RigidContactSolver::Options& options)
+      : full_(chain), surface_(surface), start_(start), options_(options) {
+    plain_options_ = options.shooting;
+    plain_options_.shape_points = 0;
+    sampled_options_ = options.shooting;
+    sampled_options_.shape_points = options.gap_samples;
+    length_ = chain.total_length();
+    validate();
+  }
+
+  ContactResult run();
+
+ private:
+  void validate();
+  SegmentChain chain_at(double lambda) const;
+  ShootingResult shoot(const SegmentChain& chain, bool sampled);
+  // psi(lambda) < 0 where contact holds (rigid_contact.h); also the free solution's minimum gap.
+  double indicator(double lambda, double* interior_gap = nullptr);
+  double gap_of(const V2& r) const;
+  double min_gap(const std::vector<ShapePoint>& shape, bool skip_last, bool skip_root) const;
+
+  // Circle: the wrap pose at s, the free span solved from s, its curvature residual.
+  ChainPose wrap_pose(double s) const;
+  SegmentChain span_chain(const SegmentChain& chain, double s_c) const;
+  double curvature_residual(const SegmentChain& chain, double s_c);
+  double solve_wrap(const SegmentChain& chain, double guess);
+  // Line: the tip gap with a normal reaction R_n at the tip.
+  SegmentChain with_reaction(const SegmentChain& chain, double Rn) const;
+  double tip_gap(const SegmentChain& chain, double Rn);
+  double solve_tip_reaction(const SegmentChain& chain, double guess);
+
+  // Interior point contact: the chain cut at s with the contact force P grad g there, and the
+  // residuals (gap, tangency) at the contact point.
+  V2 gap_gradient(const V2& r) const;
+  SegmentChain split_chain(const SegmentChain& chain, double s, const V2& force) const;
+  Eigen::Vector3d point_residual(const SegmentChain& chain,
+                                 const Eigen::Vector3d& z,
+                                 ChainPose* pose);
+  void solve_point(const SegmentChain& chain);
+  // The mode of a contact that begins at load factor lambda (free solution penetrating there).
+  ContactMode landing_mode(double lambda);
+
+  void fill(double lambda, bool contact, double variable, ContactResult& out);
+
+  const SegmentChain& full_;
+  RigidSurface surface_;
+  TipLoad start_;
+  RigidContactSolver::Options options_;
+  ShootingSolver::Options plain_options_;
+  ShootingSolver::Options sampled_options_;
+  double length_ = 1.0;
+  // circle
+  int sigma_ = 1;
+  double radius_ = 1.0;
+  double EI_ = 1.0;
+  double L1_ = 1.0;
+  bool wrap_ = false;  // a circle tangent at the clamp: the wrap model
+  // line
+  V2 point_ = V2::Zero();
+  V2 normal_ = V2(0, 1);
+  long solves_ = 0;
+  // The free solution's smallest interior gap and where it is (set by indicator()).
+  double free_tip_gap_ = 0.0;
+  double free_interior_gap_ = 0.0;
+  double free_interior_s_ = 0.0;
+  // Point contact at an interior point: the contact point and its normal force.
+  ContactMode mode_ = ContactMode::kNone;
+  double point_s_ = 0.0;
+  double point_P_ = 0.0;
+  double point_phi_ = 0.0;
+};
+
+void ContactRun::validate() {
+  full_.validate();
+  if (full_.end != EndCondition::kFree) {
+    throw InvalidInput(fmt::format(
+        "contact with a rigid surface needs a free end (boundary 'free'); got '{}': contact with "
+        "a prescribed end is not implemented",
+        to_string(full_.end)));
+  }
+  for (double v : {start_.Fx, start_.Fy, start_.M, start_.follower}) {
+    if (!std::isfinite(v)) throw InvalidInput("contact: the start tip load must be finite");
+  }
+  if (surface_.type == ContactSurfaceType::kCircle) {
+    const double R = surface_.radius;
+    if (!(R > 0.0) || !std::isfinite(R)) {
+      throw InvalidInput(fmt::format("contact circle: radius must be positive (got {})", R));
+    }
+    const double cx = surface_.center[0], cy = surface_.center[1];
+    if (!std::isfinite(cx) || !std::isfinite(cy)) {
+      throw InvalidInput("contact circle: center must be finite");
+    }
+    // Tangent at the clamp (the centre on the clamp's normal at distance R): the wrap. Otherwise
+    // the circle must be clear of the unloaded beam: point contact at an interior point.
+    radius_ = R;
+    wrap_ = std::abs(cx) <= 1e-9 * R && std::abs(std::abs(cy) - R) <= 1e-9 * R;
+    if (!wrap_) {
+      SegmentChain unloaded = full_.at_load_factor(0.0);
+      unloaded.tip_load = TipLoad{};
+      const ShootingResult r = ShootingSolver(sampled_options_).solve(unloaded);
+      if (!r.converged() || gap_of(V2::Zero()) <= 0.0 ||
+          min_gap(r.shape, false, false) <= options_.gap_tolerance * length_) {
+        throw InvalidInput(fmt::format(
+            "contact circle: center ({:g}, {:g}) with radius {:g} neither touches the beam "
+            "tangent at the clamp (the wrap: centre (0, +R) or (0, -R)) nor stays clear of the "
+            "unloaded beam (point contact); a circle that cuts or touches the unloaded beam "
+            "elsewhere is not implemented",
+            cx,
+            cy,
+            R));
+      }
+      return;
+    }
+    sigma_ = cy > 0.0 ? 1 : -1;
+    radius_ = R;
+    const auto* first = std::get_if<FlexibleSegment>(&full_.segments.front());
+    if (first == nullptr) {
+      throw InvalidInput(
+          "contact circle: the first segment must be flexible (it wraps the circle)");
+    }
+    if (!first->EI_profile.empty() || first->kappa0 != 0.0) {
+      throw InvalidInput(
+          "contact circle: the wrapped first segment must be straight with a constant EI "
+          "(EI_profile and kappa0 are not implemented with contact)");
+    }
+    if (full_.has_distributed_loads() || full_.has_extensible_segments()) {
+      throw InvalidInput(
+          "contact circle: distributed loads and extensible segments are not implemented with a "
+          "circle (the wrap statics assume no load between the clamp and the separation point)");
+    }
+    EI_ = first->EI;
+    L1_ = first->length;
+  } else {
+    const V2 n(surface_.normal[0], surface_.normal[1]);
+    const V2 p(surface_.point[0], surface_.point[1]);
+    if (!std::isfinite(n.x()) || !std::isfinite(n.y()) || !std::isfinite(p.x()) ||
+        !std::isfinite(p.y())) {
+      throw InvalidInput("contact line: point and normal must be finite");
+    }
+    if (!(n.norm() > 0.0)) throw InvalidInput("contact line: normal must not be zero");
+    normal_ = n / n.norm();
+    point_ = p;
+    if (gap_of(V2::Zero()) <= 0.0) {
+      throw InvalidInput(fmt::format(
+          "contact line: the clamp lies on or behind the stop (gap {:g}); the normal must point "
+          "from the stop toward the beam",
+          gap_of(V2::Zero())));
+    }
+    // The unloaded chain must not cross the stop.
+    ShootingSolver::Options o = sampled_options_;
+    SegmentChain unloaded = full_.at_load_factor(0.0);
+    unloaded.tip_load = TipLoad{};
+    const ShootingResult r = ShootingSolver(o).solve(unloaded);
+    if (r.converged() && min_gap(r.shape, false, false) < -options_.gap_tolerance * length_) {
+      throw InvalidInput(
+          "contact line: the unloaded beam already crosses the stop; move the stop or flip its "
+          "normal");
+    }
+  }
+}
+
+SegmentChain ContactRun::chain_at(double lambda) const {
+  SegmentChain c = full_.at_load_factor(lambda);
+  const TipLoad& f = full_.tip_load;
+  c.tip_load.Fx = start_.Fx + lambda * (f.Fx - start_.Fx);
+  c.tip_load.Fy = start_.Fy + lambda * (f.Fy - start_.Fy);
+  c.tip_load.M = start_.M + lambda * (f.M - start_.M);
+  c.tip_load.follower = start_.follower + lambda * (f.follower - start_.follower);
+  return c;
+}
+
+ShootingResult ContactRun::shoot(const SegmentChain& chain, bool sampled) {
+  ++solves_;
+  ShootingResult r = ShootingSolver(sampled ? sampled_options_ : plain_options_).solve(chain);
+  if (!r.converged()) {
+    throw ContactFailure(fmt::format("a shooting solve did not converge: {}", r.message));
+  }
+  return r;
+}
+
+double ContactRun::gap_of(const V2& r) const {
+  if (surface_.type == ContactSurfaceType::kCircle) {
+    const V2 c(surface_.center[0], surface_.center[1]);
+    return (r - c).norm() - surface_.radius;
+  }
+  return normal_.dot(r - point_);
+}
+
+double ContactRun::min_gap(const std::vector<ShapePoint>& shape,
+                           bool skip_last,
+                           bool skip_root) const {
+  double g = std::numeric_limits<double>::infinity();
+  const std::size_t n = shape.size();
+  for (std::size_t i = skip_root ? 1 : 0; i + (skip_last ? 1 : 0) < n; ++i) {
+    g = std::min(g, gap_of(V2(shape[i].x, shape[i].y)));
+  }
+  return g;
+}
+
+double ContactRun::indicator(double lambda, double* interior_gap) {
+  const SegmentChain c = chain_at(lambda);
+  if (wrap_) {
+    const ShootingResult r = shoot(c, interior_gap != nullptr);
+    const double m0 = -r.reaction.M;
+    if (interior_gap) *interior_gap = min_gap(r.shape, false, true);
+    return EI_ / radius_ - sigma_ * m0;
+  }
+  // The smallest gap of the free beam: at the tip, or at an interior sample refined by the
+  // parabola through it and its neighbours (the gap is smooth in s; error O(h^4)).
+  const ShootingResult r = shoot(c, true);
+  const std::size_t n = r.shape.size();
+  std::vector<double> g(n);
+  for (std::size_t i = 0; i < n; ++i) g[i] = gap_of(V2(r.shape[i].x, r.shape[i].y));
+  std::size_t k = 1;
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    if (g[i] < g[k]) k = i;
+  }
+  double gi = g[k], si = r.shape[k].s;
+  if (k >= 1 && k + 1 < n) {
+    const double curvature = g[k - 1] - 2.0 * g[k] + g[k + 1];
+    if (curvature > 0.0) {
+      const double delta = 0.5 * (g[k - 1] - g[k + 1]) / curvature;
+      if (std::abs(delta) <= 1.0) {
+        gi = g[k] - 0.25 * (g[k - 1] - g[k + 1]) * delta;
+        si = r.shape[k].s + delta * (r.shape[k + 1].s - r.shape[k].s);
+      }
+    }
+  }
+  free_tip_gap_ = gap_of(V2(r.tip.x, r.tip.y));
+  free_interior_gap_ = gi;
+  free_interior_s_ = si;
+  if (interior_gap) *interior_gap = gi;
+  return std::min(free_tip_gap_, gi);
+}
+
+V2 ContactRun::gap_gradient(const V2& r) const {
+  if (surface_.type == ContactSurfaceType::kLine) return normal_;
+  const V2 d = r - V2(surface_.center[0], surface_.center[1]);
+  return d / d.norm();
+}
+
+SegmentChain ContactRun::split_chain(const SegmentChain& chain, double s, const V2& force) const {
+  SegmentChain out = chain;
+  double start = 0.0;
+  for (int j = 0; j < chain.segment_count(); ++j) {
+    const Segment& seg = chain.segments[j];
+    const double len = std::visit([](const auto& x) { return x.length; }, seg);
+    if (s < start + len || j + 1 == chain.segment_count()) {
+      const auto* f = std::get_if<FlexibleSegment>(&seg);
+      if (f == nullptr) throw ContactFailure("contact on a rigid link is not implemented");
+      if (!f->EI_profile.empty() || !f->q_profile.empty()) {
+        throw ContactFailure(
+            "point contact on a segment with a tabulated EI or load is not implemented");
+      }
+      const double a = s - start, b = start + len - s;
+      if (a < 1e-9 * length_ || b < 1e-9 * length_) {
+        throw ContactFailure("point contact at a joint of the chain is not implemented");
+      }
+      FlexibleSegment near = *f, far = *f;
+      near.length = a;
+      far.length = b;
+      out.segments[j] = near;
+      out.segments.insert(out.segments.begin() + j + 1, far);
+      for (NodeLoad& load : out.node_loads) {
+        if (load.node >= j + 1) ++load.node;
+      }
+      out.node_loads.push_back(NodeLoad{j + 1, force.x(), force.y(), 0.0});
+      return out;
+    }
+    start += len;
+  }
+  throw ContactFailure("the contact point lies outside the chain");
+}
+
+Eigen::Vector3d ContactRun::point_residual(const SegmentChain& chain,
+                                           const Eigen::Vector3d& z,
+                                           ChainPose* pose) {
+  // z = (s, P, phi): contact point, normal force and its direction angle. Residuals: the gap at
+  // the point (in lengths), the tangency t . grad g, and the direction against grad g there.
+  const double s = z[0], P = z[1], phi = z[2];
+  const V2 direction(std::cos(phi), std::sin(phi));
+  const SegmentChain split = split_chain(chain, s, P * direction);
+  const ShootingResult r = shoot(split, false);
+  const std::vector<ShapePoint> at = shooting_shape_at(split, r, {s}, plain_options_);
+  const V2 rp(at[0].x, at[0].y);
+  const V2 t(std::cos(at[0].theta), std::sin(at[0].theta));
+  const V2 grad = gap_gradient(rp);
+  if (pose) *pose = ChainPose{at[0].x, at[0].y, at[0].theta};
+  return Eigen::Vector3d(
+      gap_of(rp) / length_, t.dot(grad), direction.x() * grad.y() - direction.y() * grad.x());
+}
+
+void ContactRun::solve_point(const SegmentChain& chain) {
+  // Newton's method on (s, P, phi) with a forward-difference Jacobian (each column a shooting
+  // solve) and backtracking on |g|; from the previous contact state (or the landing point).
+  double EI_min = std::numeric_limits<double>::infinity();
+  for (const Segment& seg : full_.segments) {
+    if (const auto* f = std::get_if<FlexibleSegment>(&seg)) EI_min = std::min(EI_min, f->EI);
+  }
+  const double force_scale = EI_min / (length_ * length_);
+  Eigen::Vector3d z(point_s_, point_P_, point_phi_);
+  Eigen::Vector3d g = point_residual(chain, z, nullptr);
+  for (int it = 0; it < 60; ++it) {
+    if (std::abs(g[0]) < 1e-13 && std::abs(g[1]) < 1e-12 && std::abs(g[2]) < 1e-12) {
+      point_s_ = z[0];
+      point_P_ = z[1];
+      point_phi_ = z[2];
+      return;
+    }
+    const Eigen::Vector3d h(1e-7 * length_, 1e-7 * std::max(std::abs(z[1]), force_scale), 1e-7);
+    Eigen::Matrix3d J;
+    for (int c = 0; c < 3; ++c) {
+      Eigen::Vector3d zc = z;
+      zc[c] += h[c];
+      J.col(c) = (point_residual(chain, zc, nullptr) - g) / h[c];
+    }
+    const Eigen::Vector3d dz = J.fullPivLu().solve(-g);
+    if (!dz.allFinite()) throw ContactFailure("the point contact's Newton step is singular");
+    double step = 1.0;
+    bool accepted = false;
+    for (int ls = 0; ls < 30; ++ls, step *= 0.5) {
+      Eigen::Vector3d trial = z + step * dz;
+      trial[0] = std::clamp(trial[0], 1e-6 * length_, length_ * (1.0 - 1e-6));
+      Eigen::Vector3d gt;
+      try {
+        gt = point_residual(chain, trial, nullptr);
+      } catch (const ContactFailure&) {
+        continue;
+      }
+      if (gt.norm() < (1.0 - 1e-4 * step) * g.norm()) {
+        z = trial;
+        g = gt;
+        accepted = true;
+        break;
+      }
+    }
+    if (!accepted) break;
+  }
+  throw ContactFailure(
+      fmt::format("the interior point contact did not converge (residual {:.3g})", g.norm()));
+}
+
+ContactMode ContactRun::landing_mode(double lambda) {
+  if (wrap_) return ContactMode::kWrap;
+  indicator(lambda);
+  if (free_tip_gap_ <= free_interior_gap_) {
+    if (surface_.type == ContactSurfaceType::kCircle) {
+      throw ContactFailure(
+          "the tip lands on the circle: tip contact with a circle is not implemented");
+    }
+    return ContactMode::kTip;
+  }
+  // Start Newton at the free beam's closest point with no force, along the surface normal there.
+  const SegmentChain c = chain_at(lambda);
+  const ShootingResult r = shoot(c, false);
+  const std::vector<ShapePoint> at = shooting_shape_at(c, r, {free_interior_s_}, plain_options_);
+  const V2 grad = gap_gradient(V2(at[0].x, at[0].y));
+  point_s_ = free_interior_s_;
+  point_P_ = 0.0;
+  point_phi_ = std::atan2(grad.y(), grad.x());
+  return ContactMode::kPoint;
+}
+
+ChainPose ContactRun::wrap_pose(double s) const {
+  const double phi = s / radius_;
+  return ChainPose{radius_ * std::sin(phi), sigma_ * radius_ * (1.0 - std::cos(phi)), sigma_ * phi};
+}
+
+SegmentChain ContactRun::span_chain(const SegmentChain& chain, double s_c) const {
+  // The free span in the frame of its root (the circle's pose at s_c): dead forces rotated by
+  // -theta_c, moments and the follower force unchanged.
+  const double theta_c = wrap_pose(s_c).theta;
+  SegmentChain span = chain;
+  std::get<FlexibleSegment>(span.segments.front()).length = L1_ - s_c;
+  const V2 f = rotate(-theta_c, V2(chain.tip_load.Fx, chain.tip_load.Fy));
+  span.tip_load.Fx = f.x();
+  span.tip_load.Fy = f.y();
+  for (NodeLoad& load : span.node_loads) {
+    const V2 g = rotate(-theta_c, V2(load.Fx, load.Fy));
+    load.Fx = g.x();
+    load.Fy = g.y();
+  }
+  return span;
+}
+
+double ContactRun::curvature_residual(const SegmentChain& chain, double s_c) {
+  const ShootingResult r = shoot(span_chain(chain, s_c), false);
+  return sigma_ * (-r.reaction.M) - EI_ / radius_;
+}
+
+double ContactRun::solve_wrap(const SegmentChain& chain, double guess) {
+  // f(0) > 0 where contact holds; f decreases as the free span shortens. Bracket from the last
+  // point known positive toward the end of the first segment.
+  double a = 0.0;
+  double fa = curvature_residual(chain, 0.0);
+  if (fa <= 0.0) return 0.0;
+  if (guess > 0.0 && guess < L1_) {
+    const double fg = curvature_residual(chain, guess);
+    if (fg > 0.0) {
+      a = guess;
+      fa = fg;
+    } else {
+      const ScalarRootResult root =
+          brent_root([&](double s) { return curvature_residual(chain, s); },
+                     0.0,
+                     guess,
+                     fa,
+                     fg,
+                     ScalarRootOptions{options_.contact_tolerance * L1_, 200});
+      if (!root.converged()) throw ContactFailure("the separation point did not converge");
+      return root.x;
+    }
+  }
+  for (int k = 1; k <= 80; ++k) {
+    const double b = a + 0.25 * (L1_ - a);
+    double fb = 0.0;
+    try {
+      fb = curvature_residual(chain, b);
+    } catch (const ContactFailure&) {
+      fb = std::numeric_limits<double>::quiet_NaN();
+    }
+    if (std::isfinite(fb) && fb <= 0.0) {
+      const ScalarRootResult root =
+          brent_root([&](double s) { return curvature_residual(chain, s); },
+                     a,
+                     b,
+                     fa,
+                     fb,
+                     ScalarRootOptions{options_.contact_tolerance * L1_, 200});
+      if (!root.converged()) throw ContactFailure("the separation point did not converge");
+      return root.x;
+    }
+    if (!std::isfinite(fb) || L1_ - b < 1e-9 * L1_) break;
+    a = b;
+    fa = fb;
+  }
+  throw ContactFailure(
+      "no separation point on the first segment: the free span stays curved tighter than the "
+      "circle up to the end of the segment (a segment wrapped whole is not implemented)");
+}
+
+SegmentChain ContactRun::with_reaction(const SegmentChain& chain, double Rn) const {
+  SegmentChain c = chain;
+  c.tip_load.Fx += Rn * normal_.x();
+  c.tip_load.Fy += Rn * normal_.y();
+  return c;
+}
+
+double ContactRun::tip_gap(const SegmentChain& chain, double Rn) {
+  const ShootingResult r = shoot(with_reaction(chain, Rn), false);
+  return gap_of(V2(r.tip.x, r.tip.y));
+}
+
+double ContactRun::solve_tip_reaction(const SegmentChain& chain, double guess) {
+  double a = 0.0;
+  double ga = tip_gap(chain, 0.0);
+  if (ga >= 0.0) return 0.0;
+  // A scale of the reaction: the force that moves the tip by a length's tenth, EI/L^2.
+  double EI_min = std::numeric_limits<double>::infinity();
+  for (const Segment& s : full_.segments) {
+    if (const auto* f = std::get_if<FlexibleSegment>(&s)) {
+      EI_min = std::min(EI_min,
+                        f->EI_profile.empty()
+                            ? f->EI
+                            : *std::min_element(f->EI_profile.begin(), f->EI_profile.end()));
+    }
+  }
+  double b = guess > 0.0 ? 1.25 * guess : 0.1 * EI_min / (length_ * length_);
+  for (int k = 0; k < 200; ++k) {
+    const double gb = tip_gap(chain, b);
+    if (gb >= 0.0) {
+      const ScalarRootResult root =
+          brent_root([&](double Rn) { return tip_gap(chain, Rn); },
+                     a,
+                     b,
+                     ga,
+                     gb,
+                     ScalarRootOptions{options_.contact_tolerance * b, 200});
+      if (!root.converged()) throw ContactFailure("the tip reaction did not converge");
+      return root.x;
+    }
+    a = b;
+    ga = gb;
+    b *= 2.0;
+  }
+  throw ContactFailure("no tip reaction brings the tip back to the stop");
+}
+
+void ContactRun::fill(double lambda, bool contact, double variable, ContactResult& out) {
+  const SegmentChain chain = chain_at(lambda);
+  out.load_factor = lambda;
+  out.in_contact = contact;
+  out.tip_load = Reaction{chain.tip_load.Fx, chain.tip_load.Fy, chain.tip_load.M};
+  out.separation_s.clear();
+  out.separation_points.clear();
+  out.shape.clear();
+  out.s_start = out.s_end = 0.0;
+  out.contact_force = out.point_force = {0.0, 0.0};
+  out.point_force_normal = out.line_pressure = out.wrap_tension = 0.0;
+  out.separation_moment = out.curvature_condition = 0.0;
+  const int n_shape = options_.shape_points;
+  if (contact && mode_ == ContactMode::kPoint) {
+    const V2 direction(std::cos(point_phi_), std::sin(point_phi_));
+    const SegmentChain split = split_chain(chain, point_s_, point_P_ * direction);
+    const ShootingResult r = shoot(split, true);
+    const std::vector<ShapePoint> at = shooting_shape_at(split, r, {point_s_}, plain_options_);
+    const ChainPose pose{at[0].x, at[0].y, at[0].theta};
+    out.tip = r.tip;
+    out.reaction = r.reaction;
+    out.min_gap = min_gap(r.shape, false, false);
+    out.tip_gap = gap_of(V2(r.tip.x, r.tip.y));
+    out.residual = std::abs(gap_of(V2(pose.x, pose.y)));
+    out.s_start = out.s_end = point_s_;
+    out.separation_s = {point_s_};
+    out.separation_points = {pose};
+    out.point_force = {point_P_ * direction.x(), point_P_ * direction.y()};
+    out.point_force_normal = point_P_;
+    out.contact_force = out.point_force;
+    if (n_shape > 1) {
+      ShootingSolver::Options os = plain_options_;
+      os.shape_points = n_shape;
+      out.shape = ShootingSolver(os).solve(split).shape;
+    }
+    return;
+  }
+  if (surface_.type == ContactSurfaceType::kCircle) {
+    if (!contact) {
+      ShootingSolver::Options o = sampled_options_;
+      const ShootingResult r = ShootingSolver(o).solve(chain);
+      ++solves_;
+      if (!r.converged()) throw ContactFailure("the free beam did not converge: " + r.message);
+      out.tip = r.tip;
+      out.reaction = r.reaction;
+      out.min_gap = min_gap(r.shape, false, true);
+      out.tip_gap = gap_of(V2(r.tip.x, r.tip.y));
+      out.residual = 0.0;
+      if (n_shape > 1) {
+        ShootingSolver::Options os = plain_options_;
+        os.shape_points = n_shape;
+        out.shape = ShootingSolver(os).solve(chain).shape;
+      }
+      return;
+    }
+    const double s_c = variable;
+    const ChainPose pc = wrap_pose(s_c);
+    const SegmentChain span = span_chain(chain, s_c);
+    const ShootingResult r = shoot(span, true);
+    const V2 rc(pc.x, pc.y);
+    auto to_root = [&](const ShapePoint& p, double s0) {
+      const V2 g = rc + rotate(pc.theta, V2(p.x, p.y));
+      return ShapePoint{s0 + p.s, g.x(), g.y(), pc.theta + p.theta};
+    };
+    // Tip and the free span's gaps, root frame.
+    std::vector<ShapePoint> span_shape;
+    for (const ShapePoint& p : r.shape) span_shape.push_back(to_root(p, s_c));
+    const ShapePoint tip = to_root(ShapePoint{length_ - s_c, r.tip.x, r.tip.y, r.tip.theta}, 0.0);
+    out.tip = ChainPose{tip.x, tip.y, tip.theta};
+    out.min_gap = min_gap(span_shape, false, true);
+    out.tip_gap = gap_of(V2(tip.x, tip.y));
+    // Statics of the wrap (rigid_contact.h): N(s_c+) from the free span, rotated back.
+    const V2 N = rotate(pc.theta, V2(-r.reaction.Fx, -r.reaction.Fy));
+    const V2 t(std::cos(pc.theta), std::sin(pc.theta));
+    const V2 nrm(-std::sin(pc.theta), std::cos(pc.theta));
+    const double T = N.dot(t);
+    const double Pc = sigma_ * N.dot(nrm);
+    const V2 e_c = -sigma_ * nrm;  // the circle's outward normal at s_c
+    const double phi = s_c / radius_;
+    const V2 pressure_resultant = T * V2(1.0 - std::cos(phi), -sigma_ * std::sin(phi));
+    const V2 total = Pc * e_c + pressure_resultant;
+    out.s_start = 0.0;
+    out.s_end = s_c;
+    out.separation_s = {s_c};
+    out.separation_points = {pc};
+    out.point_force = {Pc * e_c.x(), Pc * e_c.y()};
+    out.point_force_normal = Pc;
+    out.line_pressure = T / radius_;
+    out.wrap_tension = T;
+    out.contact_force = {total.x(), total.y()};
+    out.separation_moment = -r.reaction.M;
+    out.curvature_condition = out.separation_moment - sigma_ * EI_ / radius_;
+    out.residual = std::abs(out.curvature_condition);
+    // The wrap carries N = T t, m = sigma EI/R to the clamp (t(0) = +x).
+    out.reaction = Reaction{-T, 0.0, -sigma_ * EI_ / radius_};
+    if (T < -1e-9 * std::abs(N.norm()) || Pc < -1e-9 * std::abs(N.norm())) {
+      throw ContactFailure(fmt::format(
+          "the wrap would need a circle that pulls (line pressure T/R = {:g}, point force {:g}): "
+          "with the wrap compressed the beam lifts off between the clamp and an interior contact "
+          "point, which is not implemented",
+          T / radius_,
+          Pc));
+    }
+    if (n_shape > 1) {
+      const int wrap_points =
+          std::clamp(static_cast<int>(std::lround(n_shape * s_c / length_)), 1, n_shape - 2);
+      for (int i = 0; i < wrap_points; ++i) {
+        const double s = s_c * i / wrap_points;
+        const ChainPose p = wrap_pose(s);
+        out.shape.push_back(ShapePoint{s, p.x, p.y, p.theta});
+      }
+      ShootingSolver::Options os = plain_options_;
+      os.shape_points = n_shape - wrap_points;
+      const ShootingResult rs = ShootingSolver(os).solve(span);
+      for (const ShapePoint& p : rs.shape) out.shape.push_back(to_root(p, s_c));
+    }
+    return;
+  }
+  // Line.
+  const double Rn = contact ? variable : 0.0;
+  const SegmentChain loaded = with_reaction(chain, Rn);
+  const ShootingResult r = shoot(loaded, true);
+  out.tip = r.tip;
+  out.reaction = r.reaction;
+  out.min_gap = min_gap(r.shape, contact, false);
+  out.tip_gap = gap_of(V2(r.tip.x, r.tip.y));
+  out.residual = contact ? std::abs(out.tip_gap) : 0.0;
+  if (contact) {
+    out.s_start = out.s_end = length_;
+    out.separation_s = {length_};
+    out.separation_points = {r.tip};
+    out.point_force = {Rn * normal_.x(), Rn * normal_.y()};
+    out.point_force_normal = Rn;
+    out.contact_force = out.point_force;
+  }
+  if (n_shape > 1) {
+    ShootingSolver::Options os = plain_options_;
+    os.shape_points = n_shape;
+    out.shape = ShootingSolver(os).solve(loaded).shape;
+  }
+}
+
+ContactResult ContactRun::run() {
+  ContactResult out;
+  out.surface = surface_.type;
+  out.steps = options_.steps;
+  double lambda_prev = 0.0;
+  double interior = 0.0;
+  double variable = 0.0;  // s_c, R_n or s_p of the last contact state
+  try {
+    auto solve_contact = [&](double lambda, double guess) -> double {
+      const SegmentChain c = chain_at(lambda);
+      switch (mode_) {
+        case ContactMode::kWrap:
+          return solve_wrap(c, guess);
+        case ContactMode::kTip:
+          return solve_tip_reaction(c, guess);
+        case ContactMode::kPoint:
+          solve_point(c);
+          return point_s_;
+        default:
+          throw ContactFailure("no contact mode");
+      }
+    };
+    // The wrap's free state may still cross the circle away from the clamp (its indicator is the
+    // root curvature); a contact state must not cross the surface anywhere else.
+    auto check_gap = [&](double lambda, double gap, bool contact) {
+      if (gap < -options_.gap_tolerance * length_) {
+        throw ContactFailure(fmt::format(
+            "at load factor {:.6g} the beam would cross the {} at a second place (gap {:.3g}): "
+            "{} is not implemented",
+            lambda,
+            to_string(surface_.type),
+            gap,
+            contact ? "more than one contact" : "contact of an interior point with this circle"));
+      }
+    };
+    auto separation = [&](bool contact, double v) {
+      if (!contact) return 0.0;
+      return mode_ == ContactMode::kTip ? length_ : v;
+    };
+    double psi_prev = indicator(0.0, &interior);
+    bool contact = psi_prev < 0.0;
+    if (contact) {
+      mode_ = landing_mode(0.0);
+      variable = solve_contact(0.0, 0.0);
+    } else if (wrap_) {
+      check_gap(0.0, interior, false);
+    }
+    out.path.push_back(
+        ContactPathPoint{0.0, contact, separation(contact, variable), 0.0, psi_prev, {}});
+    for (int k = 1; k <= options_.steps; ++k) {
+      const double lambda = static_cast<double>(k) / options_.steps;
+      const double psi = indicator(lambda, &interior);
+      const bool now = psi < 0.0;
+      if (now != contact) {
+        const ScalarRootResult root = brent_root([&](double l) { return indicator(l); },
+                                                 lambda_prev,
+                                                 lambda,
+                                                 psi_prev,
+                                                 psi,
+                                                 ScalarRootOptions{options_.event_tolerance, 200});
+        if (!root.converged()) throw ContactFailure("a landing or lift-off point did not converge");
+        out.events.push_back(ContactEvent{now ? "landing" : "lift-off", root.x});
+        if (now) {
+          variable = 0.0;
+          mode_ = landing_mode(lambda);
+        } else {
+          mode_ = ContactMode::kNone;
+        }
+      }
+      contact = now;
+      if (!contact) {
+        if (wrap_) check_gap(lambda, interior, false);
+        variable = 0.0;
+      } else {
+        variable = solve_contact(lambda, variable);
+      }
+      ContactResult step;
+      fill(lambda, contact, variable, step);
+      if (contact) {
+        check_gap(lambda, step.min_gap, true);
+        if (step.point_force_normal < -1e-9 * std::max(1.0, std::abs(step.point_force_normal))) {
+          throw ContactFailure(
+              fmt::format("at load factor {:.6g} the contact force would pull ({:.3g})",
+                          lambda,
+                          step.point_force_normal));
+        }
+      }
+      out.path.push_back(ContactPathPoint{
+          lambda, contact, separation(contact, variable), step.point_force_normal, psi, step.tip});
+      lambda_prev = lambda;
+      psi_prev = psi;
+      out.load_factor = lambda;
+    }
+    fill(1.0, contact, variable, out);
+    out.kind = !contact                      ? "none"
+               : mode_ == ContactMode::kWrap ? "wrap"
+               : mode_ == ContactMode::kTip  ? "tip"
+                                             : "point";
+    out.set_converged(true);
+    out.message = contact ? fmt::format("in contact with the {}", to_string(surface_.type))
+                          : fmt::format("free of the {}", to_string(surface_.type));
+  } catch (const ContactFailure& e) {
+    out.termination = Termination::kNoConvergence;
+    out.load_factor = lambda_prev;
+    out.message = fmt::format("contact with the {} stopped after load factor {:.6g}: {}",
+                              to_string(surface_.type),
+                              lambda_prev,
+                              e.what());
+  }
+  out.shooting_solves = solves_;
+  return out;
+}
+
+}  // namespace
+
+ContactResult RigidContactSolver::solve(const SegmentChain& chain,
+                                        const RigidSurface& surface,
+                                        const TipLoad& start_tip_load) const {
+  options_.validate();
+  ContactRun run(chain, surface, start_tip_load, options_);
+  return run.run();
+}
+
+}  // namespace flexure
