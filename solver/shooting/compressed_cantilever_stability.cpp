@@ -36,7 +36,10 @@ constexpr int kMaxIterations = 60;
 // integration stiff, and such margins are rare in practice (docs/stability.md).
 constexpr double kMaxSigma = 1e4;
 
-enum : int { kTheta = 0, kM, kU, kV, kUs, kVs, kSize };
+// The tangent (cos theta, sin theta) is integrated instead of theta: the right-hand side is then
+// polynomial (t' = kappa R90 t, EI kappa = m), without a sine and cosine per evaluation, which
+// were a third of a pass's time (docs/stability.md, "Cost").
+enum : int { kCos = 0, kSin, kM, kU, kV, kUs, kVs, kSize };
 
 struct Jacobi {
   double fx = 0.0, fy = 0.0;  // F L^2 / EI
@@ -45,9 +48,10 @@ struct Jacobi {
 
 int rhs(double, const double y[], double dydt[], void* params) {
   const Jacobi& p = *static_cast<const Jacobi*>(params);
-  const double sn = std::sin(y[kTheta]), cs = std::cos(y[kTheta]);
+  const double cs = y[kCos], sn = y[kSin];
   const double w = p.fx * cs + p.fy * sn;  // F . t
-  dydt[kTheta] = y[kM];
+  dydt[kCos] = -sn * y[kM];
+  dydt[kSin] = cs * y[kM];
   dydt[kM] = p.fx * sn - p.fy * cs;
   dydt[kU] = y[kV];
   dydt[kV] = p.sigma * w * y[kU];
@@ -63,9 +67,10 @@ struct Pass {
   double f = 0.0;
   double df = 0.0;  // d f / d sigma
   int count = 0;
-  double end_theta = 0.0;  // theta where the integration ended (the tip, or the clamp)
-  double end_m = 0.0;      // m there
-  double gamma = 0.0;      // int sqrt(max(0, -F . t)) ds (scaled), the straight column's guess
+  double end_cos = 1.0;  // the tangent where the integration ended (the tip, or the clamp)
+  double end_sin = 0.0;
+  double end_m = 0.0;  // m there
+  double gamma = 0.0;  // int sqrt(max(0, -F . t)) ds (scaled), the straight column's guess
   bool ok = false;
 };
 
@@ -96,9 +101,10 @@ class JacobiPasses {
     gsl_odeiv2_step_reset(step_.get());
     gsl_odeiv2_evolve_reset(evolve_.get());
     // Forward: u(0) = 0, EI u'(0) = 1. Backward: u(L) = 1, EI u'(L) = 0.
-    double y[kSize] = {0.0, m0_, 0.0, 1.0, 0.0, 0.0};
+    double y[kSize] = {1.0, 0.0, m0_, 0.0, 1.0, 0.0, 0.0};
     if (backward_) {
-      y[kTheta] = theta_tip_;
+      y[kCos] = std::cos(theta_tip_);
+      y[kSin] = std::sin(theta_tip_);
       y[kM] = m_tip_;
       y[kU] = 1.0;
       y[kV] = 0.0;
@@ -110,11 +116,10 @@ class JacobiPasses {
     double t = backward_ ? 1.0 : 0.0, h = direction * std::min(1e-2, h_max);
     double angle = std::atan2(y[kU], y[kV]);  // before the step
     double phi = angle;                       // unwrapped
-    const auto compression = [&](double theta) {
-      return std::sqrt(
-          std::max(0.0, -(params_.fx * std::cos(theta) + params_.fy * std::sin(theta))));
+    const auto compression = [&](const double* state) {
+      return std::sqrt(std::max(0.0, -(params_.fx * state[kCos] + params_.fy * state[kSin])));
     };
-    double g_before = compression(y[kTheta]);
+    double g_before = compression(y);
     for (int steps = 0; direction * (t_end - t) > 0.0; ++steps) {
       if (steps > 100000) return out;
       h = direction * std::min(std::fabs(h), h_max);
@@ -128,7 +133,7 @@ class JacobiPasses {
       if (turn <= -kPi) turn += 2.0 * kPi;
       phi += turn;
       angle = now;
-      const double g_after = compression(y[kTheta]);
+      const double g_after = compression(y);
       out.gamma += 0.5 * std::fabs(t - t_before) * (g_before + g_after);
       g_before = g_after;
       // Keep the linear solution of order one (it grows exponentially in tension): the angle
@@ -144,7 +149,7 @@ class JacobiPasses {
     // pi/2 where the plain one does (S > 0) and, as a function of sigma, is nearly linear in
     // sqrt(sigma) where the end is compressed (a straight column: S u / v = tan(sqrt(sigma P) L)),
     // so Newton's method converges from further away.
-    const double w_end = params_.fx * std::cos(y[kTheta]) + params_.fy * std::sin(y[kTheta]);
+    const double w_end = params_.fx * y[kCos] + params_.fy * y[kSin];
     const double A = 1.0 + sigma * sigma * w_end * w_end;
     const double S = std::sqrt(std::sqrt(A));
     const double dS = sigma * w_end * w_end / (2.0 * S * S * S);
@@ -162,7 +167,8 @@ class JacobiPasses {
       out.df = -d_modified;
       out.count = static_cast<int>(std::floor((phi + 0.5 * kPi) / kPi));
     }
-    out.end_theta = y[kTheta];
+    out.end_cos = y[kCos];
+    out.end_sin = y[kSin];
     out.end_m = y[kM];
     out.ok = std::isfinite(out.f) && std::isfinite(out.df) && out.count >= 0;
     return out;
@@ -177,11 +183,11 @@ class JacobiPasses {
   std::unique_ptr<gsl_odeiv2_evolve, GslFree> evolve_;
 };
 
-}  // namespace
-
-std::optional<Stability> compressed_cantilever_stability(const SegmentChain& chain,
-                                                         const ShootingResult& result,
-                                                         const StabilityOptions& options) {
+// compressed_cantilever_stability() with or without the guess (no fallback).
+std::optional<Stability> jacobi_verdict(const SegmentChain& chain,
+                                        const ShootingResult& result,
+                                        const StabilityOptions& options,
+                                        std::optional<double> margin_guess) {
   if (!tension_verdict_applies(chain) || !result.converged()) return std::nullopt;
   options.validate();
   const auto& segment = std::get<FlexibleSegment>(chain.segments.front());
@@ -207,37 +213,58 @@ std::optional<Stability> compressed_cantilever_stability(const SegmentChain& cha
   JacobiPasses passes(fx, fy, m0, result.tip.theta, m_tip, backward);
   if (!passes.ready()) return std::nullopt;
 
+  // The re-integrated elastica must end where the solution does (the tip angle, or the clamp's
+  // angle 0 and moment), compared on the tangent (the angle modulo 2 pi: the pass integrates
+  // cos theta and sin theta).
+  const auto meets = [&](const Pass& p) {
+    if (backward) {
+      return std::fabs(std::atan2(p.end_sin, p.end_cos)) <= kTipAngleCheck &&
+             std::fabs(p.end_m - m0) <= kTipAngleCheck * std::max(1.0, std::fabs(m0));
+    }
+    const double c = std::cos(result.tip.theta), s = std::sin(result.tip.theta);
+    // The angle from the solution's tangent to the pass's.
+    return std::fabs(std::atan2(c * p.end_sin - s * p.end_cos, c * p.end_cos + s * p.end_sin)) <=
+           kTipAngleCheck;
+  };
   // The index: eigenvalues below -tolerance, i.e. the count at sigma_t = 1 / (1 + tolerance).
   const double sigma_t = 1.0 / (1.0 + tolerance);
-  const Pass first = passes.run(sigma_t);
-  if (!first.ok) return std::nullopt;
-  // The re-integrated elastica must end where the solution does (the tip angle, or the clamp's
-  // angle 0 and moment).
-  const bool meets =
-      backward ? std::fabs(first.end_theta) <= kTipAngleCheck &&
-                     std::fabs(first.end_m - m0) <= kTipAngleCheck * std::max(1.0, std::fabs(m0))
-               : std::fabs(first.end_theta - result.tip.theta) <= kTipAngleCheck;
-  if (!meets) return std::nullopt;
-  const int index = first.count;
-
+  const double q_max = std::sqrt(kMaxSigma);
   // The lowest eigenvalue: f(sigma) = 0, sigma = q^2; f > 0 exactly below sigma_1 (the count is
   // nondecreasing in sigma), so its sign brackets q_1.
-  double q_lo = index == 0 ? std::sqrt(sigma_t) : 0.0;
-  double q_hi = index == 0 ? HUGE_VAL : std::sqrt(sigma_t);
-  const double q_max = std::sqrt(kMaxSigma);
-  // No compression at the first pass's steps: the shape is in tension nearly everywhere, its margin
-  // close to 1, which the general verdict resolves.
-  if (!(first.gamma > 0.0)) return std::nullopt;
-  // The straight column's guess: q int sqrt(max(0, -F . t)) ds = pi/2.
-  double q = 0.5 * kPi / first.gamma;
-  if (!(q > q_lo && q < q_hi)) {
-    q = std::isfinite(q_hi) ? 0.5 * (q_lo + q_hi) : std::min(2.0 * q_lo, q_max);
+  double q_lo = 0.0, q_hi = HUGE_VAL;
+  double q = 0.0;
+  std::optional<int> index;
+  const bool guessed = margin_guess && std::isfinite(*margin_guess) && *margin_guess < 1.0;
+  if (guessed) {
+    // A sweep's prediction from its neighbours' margins (beam_sweep_solver.h): Newton's method
+    // starts there, the index pass is left out unless sigma_1 turns out below sigma_t (an index
+    // of 0 follows from sigma_1 >= sigma_t alone: sigma_1 is the lowest eigenvalue's).
+    q = std::sqrt(1.0 / (1.0 - *margin_guess));
+    if (!(q < q_max)) q = 0.5 * q_max;
+  } else {
+    const Pass first = passes.run(sigma_t);
+    if (!first.ok || !meets(first)) return std::nullopt;
+    index = first.count;
+    if (*index == 0) {
+      q_lo = std::sqrt(sigma_t);
+    } else {
+      q_hi = std::sqrt(sigma_t);
+    }
+    // No compression at the first pass's steps: the shape is in tension nearly everywhere, its
+    // margin close to 1, which the general verdict resolves.
+    if (!(first.gamma > 0.0)) return std::nullopt;
+    // The straight column's guess: q int sqrt(max(0, -F . t)) ds = pi/2.
+    q = 0.5 * kPi / first.gamma;
+    if (!(q > q_lo && q < q_hi)) {
+      q = std::isfinite(q_hi) ? 0.5 * (q_lo + q_hi) : std::min(2.0 * q_lo, q_max);
+    }
   }
   for (int iteration = 0;; ++iteration) {
     if (iteration >= kMaxIterations) return std::nullopt;
     if (q_lo >= q_max) return std::nullopt;
     const Pass p = passes.run(q * q);
     if (!p.ok) return std::nullopt;
+    if (iteration == 0 && guessed && (!meets(p) || !(p.gamma > 0.0))) return std::nullopt;
     (p.f > 0.0 ? q_lo : q_hi) = q;
     const double slope = 2.0 * q * p.df;
     double next = slope < 0.0 ? q - p.f / slope : HUGE_VAL;
@@ -245,7 +272,9 @@ std::optional<Stability> compressed_cantilever_stability(const SegmentChain& cha
       q = next;
       break;
     }
-    if (!(next > q_lo && next < q_hi)) {
+    // From a guess the iterates may start far above sigma_1, where a step can overshoot past
+    // q_max (passes there fail as the Jacobi solutions grow by e^300): kept below it.
+    if (!(next > q_lo && next < q_hi) || (guessed && next >= q_max)) {
       next = std::isfinite(q_hi) ? 0.5 * (q_lo + q_hi) : std::min(2.0 * q, q_max);
     }
     if (std::isfinite(q_hi) && q_hi - q_lo <= 1e-15 * q_hi) {
@@ -256,9 +285,34 @@ std::optional<Stability> compressed_cantilever_stability(const SegmentChain& cha
   }
   // The bracket holds the answer exactly; the last Newton step may overshoot it by rounding.
   q = std::clamp(q, q_lo, q_hi);
+  if (!index) {
+    // sigma_1 clearly above sigma_t: no eigenvalue below -tolerance. Else (unstable or close to
+    // critical) the count at sigma_t, as without a guess.
+    if (q * q > sigma_t * (1.0 + 1e-8)) {
+      index = 0;
+    } else {
+      const Pass at_t = passes.run(sigma_t);
+      if (!at_t.ok) return std::nullopt;
+      index = at_t.count;
+    }
+  }
   const double sigma_1 = q * q;
   const double margin = 1.0 - 1.0 / sigma_1;
-  return verdict(index, margin);
+  return verdict(*index, margin);
+}
+
+}  // namespace
+
+std::optional<Stability> compressed_cantilever_stability(const SegmentChain& chain,
+                                                         const ShootingResult& result,
+                                                         const StabilityOptions& options,
+                                                         std::optional<double> margin_guess) {
+  if (margin_guess) {
+    // Where the search from the guess does not settle (a pass fails far from sigma_1, or any
+    // other reason to decline), the verdict is the one without it: a guess never changes it.
+    if (std::optional<Stability> v = jacobi_verdict(chain, result, options, margin_guess)) return v;
+  }
+  return jacobi_verdict(chain, result, options, std::nullopt);
 }
 
 }  // namespace flexure

@@ -55,9 +55,13 @@ namespace flexure {
 // The verdict of `result` (a converged shooting solution of `chain` at its full loads) from the
 // Jacobi equation, or nullopt when `chain` is not a uniform free cantilever under dead tip loads
 // or the re-integration does not reproduce the solution's tip. `options`: critical_tolerance
-// (validated like equilibrium_stability() does).
-std::optional<Stability> compressed_cantilever_stability(const SegmentChain& chain,
-                                                         const ShootingResult& result,
-                                                         const StabilityOptions& options = {});
+// (validated like equilibrium_stability() does). `margin_guess`: a prediction of the margin (a
+// sweep's, from its neighbours' margins): Newton's method starts there and the index pass is left
+// out where the margin found is above -critical_tolerance (see above); the verdict is the same.
+std::optional<Stability> compressed_cantilever_stability(
+    const SegmentChain& chain,
+    const ShootingResult& result,
+    const StabilityOptions& options = {},
+    std::optional<double> margin_guess = std::nullopt);
 
 }  // namespace flexure
