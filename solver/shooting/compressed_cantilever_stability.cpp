@@ -1,8 +1,5 @@
 #include "flexure/solver/shooting/compressed_cantilever_stability.h"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_odeiv2.h>
-
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -10,18 +7,19 @@
 #include <variant>
 
 #include "flexure/solver/chain_model/equilibrium_stability.h"
-#include "flexure/solver/common/gsl_guard.h"
 #include "flexure/solver/shooting/tension_stability.h"
 
 namespace flexure {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-// The elastica and the Jacobi system on the beam scaled to length 1 and EI 1 (compressed_
-// cantilever_stability.h): 1e-10 keeps the margin within about 1e-12 of the general verdict's
-// refined value (tests) at a third of the steps of the solve's 1e-12.
-constexpr double kRtol = 1e-10;
-constexpr double kAtol = 1e-12;
+// The Taylor series of each step (below) has this order; a step is as long as the last two
+// terms allow for kTruncation relative to each group of the state (Jorba & Zou, Experimental
+// Mathematics 14 (2005) 99, sec. 3.2): about ten steps along the beam where an eighth-order
+// Runge-Kutta method needed fifty, at a truncation error far below the margin's 1e-12.
+constexpr int kOrder = 24;
+constexpr double kTruncation = 1e-16;
+constexpr int kMaxSteps = 100000;
 // The re-integrated far end must meet the solution within this (rad; relative for the moment): the
 // solve converges to about 1e-11; a larger gap means the result is not this chain's equilibrium.
 constexpr double kTipAngleCheck = 1e-8;
@@ -46,19 +44,70 @@ struct Jacobi {
   double sigma = 1.0;
 };
 
-int rhs(double, const double y[], double dydt[], void* params) {
-  const Jacobi& p = *static_cast<const Jacobi*>(params);
-  const double cs = y[kCos], sn = y[kSin];
-  const double w = p.fx * cs + p.fy * sn;  // F . t
-  dydt[kCos] = -sn * y[kM];
-  dydt[kSin] = cs * y[kM];
-  dydt[kM] = p.fx * sn - p.fy * cs;
-  dydt[kU] = y[kV];
-  dydt[kV] = p.sigma * w * y[kU];
-  dydt[kUs] = y[kVs];
-  dydt[kVs] = w * y[kU] + p.sigma * w * y[kUs];
-  return GSL_SUCCESS;
-}
+// The Taylor series at one point of the elastica and Jacobi system on the scaled beam:
+//   c' = -s m, s' = c m, m' = f_x s - f_y c                      (t = (c, s), EI theta' = m),
+//   u' = v, v' = sigma w u, u_s' = v_s, v_s' = w u + sigma w u_s  (w = F . t = f_x c + f_y s),
+// polynomial, so its coefficients follow from the products' (Cauchy) recurrences (automatic
+// differentiation; Jorba & Zou 2005): a_{k+1} = (the right-hand side)_k / (k + 1).
+class TaylorStep {
+ public:
+  void expand(const double y[kSize], double fx, double fy, double sigma) {
+    for (int i = 0; i < kSize; ++i) a_[i][0] = y[i];
+    double* c = a_[kCos];
+    double* sn = a_[kSin];
+    double* m = a_[kM];
+    double* u = a_[kU];
+    double* v = a_[kV];
+    double* us = a_[kUs];
+    double* vs = a_[kVs];
+    for (int k = 0; k < kOrder; ++k) {
+      w_[k] = fx * c[k] + fy * sn[k];
+      double sm = 0.0, cm = 0.0, wu = 0.0, wus = 0.0;
+      for (int j = 0; j <= k; ++j) {
+        sm += sn[j] * m[k - j];
+        cm += c[j] * m[k - j];
+        wu += w_[j] * u[k - j];
+        wus += w_[j] * us[k - j];
+      }
+      const double inv = 1.0 / (k + 1);
+      c[k + 1] = -sm * inv;
+      sn[k + 1] = cm * inv;
+      m[k + 1] = (fx * sn[k] - fy * c[k]) * inv;
+      u[k + 1] = v[k] * inv;
+      v[k + 1] = sigma * wu * inv;
+      us[k + 1] = vs[k] * inv;
+      vs[k + 1] = (wu + sigma * wus) * inv;
+    }
+  }
+  // The step length: the last two terms of each group (elastica; u and EI u'; their sigma-
+  // derivatives) at most kTruncation times the group's size.
+  double step() const {
+    double h = HUGE_VAL;
+    const auto group = [&](int first, int last, double size) {
+      if (!(size > 0.0)) return;
+      for (const int k : {kOrder - 1, kOrder}) {
+        double largest = 0.0;
+        for (int i = first; i <= last; ++i) largest = std::max(largest, std::fabs(a_[i][k]));
+        if (largest > 0.0) h = std::min(h, std::pow(kTruncation * size / largest, 1.0 / k));
+      }
+    };
+    group(kCos, kM, std::max(1.0, std::fabs(a_[kM][0])));
+    const double uv = std::hypot(a_[kU][0], a_[kV][0]);
+    group(kU, kV, uv);
+    group(kUs, kVs, std::hypot(a_[kUs][0], a_[kVs][0]) + uv);
+    return h;
+  }
+  // Component i of the series at distance d (Horner).
+  double at(int i, double d) const {
+    double r = a_[i][kOrder];
+    for (int k = kOrder - 1; k >= 0; --k) r = r * d + a_[i][k];
+    return r;
+  }
+
+ private:
+  double a_[kSize][kOrder + 1] = {};
+  double w_[kOrder + 1] = {};
+};
 
 // One integration at sigma. `f` is the eigen-condition, decreasing through 0 at every eigenvalue:
 // forward (from the clamp, u(0) = 0) pi/2 - phi(L), backward (from the tip, EI u'(L) = 0) the
@@ -74,12 +123,6 @@ struct Pass {
   bool ok = false;
 };
 
-struct GslFree {
-  void operator()(gsl_odeiv2_step* s) const { gsl_odeiv2_step_free(s); }
-  void operator()(gsl_odeiv2_control* c) const { gsl_odeiv2_control_free(c); }
-  void operator()(gsl_odeiv2_evolve* e) const { gsl_odeiv2_evolve_free(e); }
-};
-
 class JacobiPasses {
  public:
   // From the clamp (theta 0, moment m0) or, `backward`, from the tip (theta_tip, m_tip).
@@ -88,18 +131,11 @@ class JacobiPasses {
     params_.fx = fx;
     params_.fy = fy;
     force_ = std::hypot(fx, fy);
-    step_.reset(gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, kSize));
-    control_.reset(gsl_odeiv2_control_y_new(kAtol, kRtol));
-    evolve_.reset(gsl_odeiv2_evolve_alloc(kSize));
   }
-  bool ready() const { return step_ && control_ && evolve_; }
 
   Pass run(double sigma) {
     Pass out;
     params_.sigma = sigma;
-    gsl_odeiv2_system system{rhs, nullptr, kSize, &params_};
-    gsl_odeiv2_step_reset(step_.get());
-    gsl_odeiv2_evolve_reset(evolve_.get());
     // Forward: u(0) = 0, EI u'(0) = 1. Backward: u(L) = 1, EI u'(L) = 0.
     double y[kSize] = {1.0, 0.0, m0_, 0.0, 1.0, 0.0, 0.0};
     if (backward_) {
@@ -111,36 +147,48 @@ class JacobiPasses {
     }
     const double t_end = backward_ ? 0.0 : 1.0;
     const double direction = backward_ ? -1.0 : 1.0;
-    // At most one radian of the Pruefer angle per step (see the header).
-    const double h_max = 1.0 / std::max(1.0, std::sqrt(sigma * force_));
-    double t = backward_ ? 1.0 : 0.0, h = direction * std::min(1e-2, h_max);
-    double angle = std::atan2(y[kU], y[kV]);  // before the step
+    // The Pruefer angle turns by at most about one radian over this length (see the header): the
+    // angle is unwrapped on sub-points this far apart, read off each step's Taylor polynomial.
+    const double h_turn = 1.0 / std::max(1.0, std::sqrt(sigma * force_));
+    double t = backward_ ? 1.0 : 0.0;
+    double angle = std::atan2(y[kU], y[kV]);  // at the last sub-point
     double phi = angle;                       // unwrapped
-    const auto compression = [&](const double* state) {
-      return std::sqrt(std::max(0.0, -(params_.fx * state[kCos] + params_.fy * state[kSin])));
+    const auto compression = [&](double c, double sn) {
+      return std::sqrt(std::max(0.0, -(params_.fx * c + params_.fy * sn)));
     };
-    double g_before = compression(y);
+    double g_before = compression(y[kCos], y[kSin]);
     for (int steps = 0; direction * (t_end - t) > 0.0; ++steps) {
-      if (steps > 100000) return out;
-      h = direction * std::min(std::fabs(h), h_max);
-      const double t_before = t;
-      const int status = gsl_odeiv2_evolve_apply(
-          evolve_.get(), control_.get(), step_.get(), &system, &t, t_end, &h, y);
-      if (status != GSL_SUCCESS || !std::isfinite(y[kU]) || !std::isfinite(y[kV])) return out;
-      const double now = std::atan2(y[kU], y[kV]);
-      double turn = now - angle;
-      if (turn > kPi) turn -= 2.0 * kPi;
-      if (turn <= -kPi) turn += 2.0 * kPi;
-      phi += turn;
-      angle = now;
-      const double g_after = compression(y);
-      out.gamma += 0.5 * std::fabs(t - t_before) * (g_before + g_after);
-      g_before = g_after;
+      if (steps > kMaxSteps) return out;
+      taylor_.expand(y, params_.fx, params_.fy, sigma);
+      double h = direction * std::min(taylor_.step(), direction * (t_end - t));
+      const bool last = std::fabs(h) >= direction * (t_end - t);
+      if (last) h = t_end - t;
+      // Sub-points for the angle (and the compression integral of the straight column's guess).
+      const int sub = std::max(1, static_cast<int>(std::ceil(std::fabs(h) / h_turn)));
+      for (int k = 1; k <= sub; ++k) {
+        const double d = h * k / sub;
+        const double now = std::atan2(taylor_.at(kU, d), taylor_.at(kV, d));
+        double turn = now - angle;
+        if (turn > kPi) turn -= 2.0 * kPi;
+        if (turn <= -kPi) turn += 2.0 * kPi;
+        phi += turn;
+        angle = now;
+        const double g_after = compression(taylor_.at(kCos, d), taylor_.at(kSin, d));
+        out.gamma += 0.5 * std::fabs(h) / sub * (g_before + g_after);
+        g_before = g_after;
+      }
+      for (int i = 0; i < kSize; ++i) y[i] = taylor_.at(i, h);
+      t = last ? t_end : t + h;
+      if (!std::isfinite(y[kU]) || !std::isfinite(y[kV]) || !std::isfinite(y[kUs]) ||
+          !std::isfinite(y[kVs]) || !std::isfinite(y[kM])) {
+        return out;
+      }
       // Keep the linear solution of order one (it grows exponentially in tension): the angle
       // and its derivative are invariant under scaling u, v, u_sigma, v_sigma together.
       const double r = std::hypot(y[kU], y[kV]);
       if (r > 1e100 || r < 1e-100) {
         for (int k = kU; k < kSize; ++k) y[k] /= r;
+        angle = std::atan2(y[kU], y[kV]);
       }
     }
     // The count from the unwrapped angle; the eigen-condition from the modified angle
@@ -178,9 +226,7 @@ class JacobiPasses {
   Jacobi params_;
   double m0_ = 0.0, theta_tip_ = 0.0, m_tip_ = 0.0, force_ = 0.0;
   bool backward_ = false;
-  std::unique_ptr<gsl_odeiv2_step, GslFree> step_;
-  std::unique_ptr<gsl_odeiv2_control, GslFree> control_;
-  std::unique_ptr<gsl_odeiv2_evolve, GslFree> evolve_;
+  TaylorStep taylor_;
 };
 
 // compressed_cantilever_stability() with or without the guess (no fallback).
@@ -204,14 +250,12 @@ std::optional<Stability> jacobi_verdict(const SegmentChain& chain,
   };
   // No force: W = 0, every eigenvalue is 1 (the unloaded beam).
   if (fx == 0.0 && fy == 0.0) return verdict(0, 1.0);
-  disable_gsl_abort();
   // The direction in which the eigen-condition is well conditioned: into the clamp when the beam
   // is compressed there (the Jacobi solutions oscillate there and grow, if at all, towards the
   // tip, where the backward integration starts on its natural condition), else from it.
   const bool backward = fx < 0.0;
   const double m_tip = chain.tip_load.M * L / EI;
   JacobiPasses passes(fx, fy, m0, result.tip.theta, m_tip, backward);
-  if (!passes.ready()) return std::nullopt;
 
   // The re-integrated elastica must end where the solution does (the tip angle, or the clamp's
   // angle 0 and moment), compared on the tangent (the angle modulo 2 pi: the pass integrates
