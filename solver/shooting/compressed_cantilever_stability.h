@@ -2,7 +2,7 @@
 // The stability verdict of a uniform cantilever under a dead tip load from the continuous Jacobi
 // (accessory) equation of its second variation, integrated along the equilibrium from the clamp:
 // the fast verdict of compressed cantilevers (docs/stability.md, "A compressed cantilever: the
-// Jacobi equation along the solve").
+// Jacobi equation along the solution").
 //
 // The second variation Q[eta] = int EI eta'^2 + (F . t) eta^2 ds (eta(0) = 0, free tip angle;
 // equilibrium_stability.h) has, relative to B[eta] = int EI eta'^2 ds, an eigenvalue lambda < 1
