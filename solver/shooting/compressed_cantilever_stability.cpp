@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <numbers>
 #include <variant>
 
@@ -15,8 +14,9 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 // The Taylor series of each step (below) has this order; a step is as long as the last two
 // terms allow for kTruncation relative to each group of the state (Jorba & Zou, Experimental
-// Mathematics 14 (2005) 99, sec. 3.2): about ten steps along the beam where an eighth-order
-// Runge-Kutta method needed fifty, at a truncation error far below the margin's 1e-12.
+// Mathematics 14 (2005) 99, sec. 3.2): 12 steps along the beam on the n = 2 sweep of
+// docs/performance.md where GSL's Prince-Dormand 8(7) at rtol 1e-10 took 52, at a truncation
+// error far below the margin's 1e-12.
 constexpr int kOrder = 24;
 constexpr double kTruncation = 1e-16;
 constexpr int kMaxSteps = 100000;
@@ -35,8 +35,8 @@ constexpr int kMaxIterations = 60;
 constexpr double kMaxSigma = 1e4;
 
 // The tangent (cos theta, sin theta) is integrated instead of theta: the right-hand side is then
-// polynomial (t' = kappa R90 t, EI kappa = m), without a sine and cosine per evaluation, which
-// were a third of a pass's time (docs/stability.md, "Cost").
+// polynomial (t' = kappa R90 t, EI kappa = m): no sine and cosine per evaluation, and its Taylor
+// coefficients follow from products alone (TaylorStep).
 enum : int { kCos = 0, kSin, kM, kU, kV, kUs, kVs, kSize };
 
 struct Jacobi {
