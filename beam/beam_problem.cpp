@@ -262,12 +262,14 @@ ShootingSolver::Options beam_shooting_options(const BeamProblem& problem, int sh
 namespace {
 
 // beam_solution_from_shooting; `final_answer` false for the forward solves of an inverse
-// problem's search, which are not judged (only the answer is).
+// problem's search, which are not judged (only the answer is); `margin_guess` the sweep's
+// prediction of the stability margin (compressed_cantilever_stability.h).
 BeamSolution shooting_solution(const BeamProblem& problem,
                                double alpha2,
                                const ShootingResult& r,
                                int shape_points,
-                               bool final_answer) {
+                               bool final_answer,
+                               std::optional<double> margin_guess = std::nullopt) {
   const SegmentChain chain = problem.to_chain(alpha2);
   BeamSolution solution;
   solution.method = BeamMethod::kShooting;
@@ -329,7 +331,9 @@ BeamSolution shooting_solution(const BeamProblem& problem,
     // (compressed_cantilever_stability.h); other chains the discrete second variation.
     std::optional<Stability> fast =
         tensioned_cantilever_stability(chain, r, problem.stability_options);
-    if (!fast) fast = compressed_cantilever_stability(chain, r, problem.stability_options);
+    if (!fast) {
+      fast = compressed_cantilever_stability(chain, r, problem.stability_options, margin_guess);
+    }
     solution.stability = fast ? *fast : judge(chain, support, shape, problem.stability_options);
     if (wants_stable_search(problem, solution)) {
       seek_stable(problem, chain, shape, support, shape_points, solution);
@@ -439,8 +443,9 @@ BeamSolution solve_numerical(BeamMethod method, const BeamProblem& problem) {
 BeamSolution beam_solution_from_shooting(const BeamProblem& problem,
                                          double alpha2,
                                          const ShootingResult& r,
-                                         int shape_points) {
-  return shooting_solution(problem, alpha2, r, shape_points, true);
+                                         int shape_points,
+                                         std::optional<double> margin_guess) {
+  return shooting_solution(problem, alpha2, r, shape_points, true, margin_guess);
 }
 
 SegmentChain BeamProblem::to_chain(double alpha2) const {

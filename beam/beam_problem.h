@@ -188,10 +188,14 @@ BeamSolution solve_beam(BeamMethod method, const BeamProblem& problem);
 // shape at `shape_points` points, 0 for none; the inflection points counted without a shape),
 // and a result at load alpha2 as the BeamSolution solve_beam returns (with its stability verdict
 // per problem.judge_stability, and with problem.stable a stable equilibrium searched from it).
+// `margin_guess`: the sweep's prediction of the stability margin from its neighbours', where the
+// compressed cantilever's Jacobi verdict starts its search (compressed_cantilever_stability.h;
+// the same verdict, fewer integrations).
 ShootingSolver::Options beam_shooting_options(const BeamProblem& problem, int shape_points);
 BeamSolution beam_solution_from_shooting(const BeamProblem& problem,
                                          double alpha2,
                                          const ShootingResult& r,
-                                         int shape_points);
+                                         int shape_points,
+                                         std::optional<double> margin_guess = std::nullopt);
 
 }  // namespace flexure

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace flexure {
 
@@ -47,7 +48,8 @@ bool BeamSweepSolver::warm_candidate() const {
 void BeamSweepSolver::remember(Memory& m,
                                long index,
                                const SegmentChain& chain,
-                               const ShootingResult& r) const {
+                               const ShootingResult& r,
+                               const BeamSolution& solution) const {
   if (!r.converged() || r.jacobian_sign == 0) {
     m.last.clear();
     return;
@@ -59,7 +61,8 @@ void BeamSweepSolver::remember(Memory& m,
   s.Fy = chain.tip_load.Fy;
   s.M = chain.tip_load.M;
   s.result = r;
-  if (m.last.size() == 3) m.last.erase(m.last.begin());
+  s.margin = solution.stability.judged() ? solution.stability.margin : std::nan("");
+  if (m.last.size() == 4) m.last.erase(m.last.begin());
   m.last.push_back(std::move(s));
 }
 
@@ -88,8 +91,32 @@ BeamSolution BeamSweepSolver::solve_shooting_point(long index, const BeamProblem
     }
     return true;
   };
+  // The margin predicted along the line: the Lagrange polynomial through the last (up to four)
+  // consecutive judged points on it; a guess only (compressed_cantilever_stability.h).
+  const auto margin_guess = [&]() -> std::optional<double> {
+    std::vector<const Solved*> basis;
+    for (auto it = m.last.rbegin(); it != m.last.rend(); ++it) {
+      if (!on_line(*it) || !std::isfinite(it->margin)) break;
+      basis.push_back(&*it);
+    }
+    if (basis.empty()) return std::nullopt;
+    const double x = here[last_axis];
+    double guess = 0.0;
+    for (std::size_t a = 0; a < basis.size(); ++a) {
+      double weight = 1.0;
+      for (std::size_t b = 0; b < basis.size(); ++b) {
+        const double xa = basis[a]->coordinates[last_axis];
+        const double xb = basis[b]->coordinates[last_axis];
+        if (a == b) continue;
+        if (xa == xb) return basis.front()->margin;
+        weight *= (x - xb) / (xa - xb);
+      }
+      guess += weight * basis[a]->margin;
+    }
+    return guess;
+  };
   const auto finish = [&](const ShootingResult& r, std::string branch) {
-    BeamSolution s = beam_solution_from_shooting(problem, problem.value, r, 0);
+    BeamSolution s = beam_solution_from_shooting(problem, problem.value, r, 0, margin_guess());
     if (!branch.empty())
       s.branch = std::move(branch) + limit_points_note(s.limit_points, s.first_limit_load_factor);
     s.method_reason = resolve_beam_method(method_, problem).reason;
@@ -126,7 +153,7 @@ BeamSolution BeamSweepSolver::solve_shooting_point(long index, const BeamProblem
       // solutions on it (quadratic: an error of O(h^3), so that one Newton step usually reaches
       // the tolerance).
       std::vector<const Solved*> basis;
-      for (auto it = m.last.rbegin(); it != m.last.rend(); ++it) {
+      for (auto it = m.last.rbegin(); it != m.last.rend() && basis.size() < 3; ++it) {
         if (!on_line(*it) || it->result.unknowns.size() != q->result.unknowns.size()) break;
         basis.push_back(&*it);
       }
@@ -181,16 +208,18 @@ BeamSolution BeamSweepSolver::solve_shooting_point(long index, const BeamProblem
               from);
         }
         ++from_neighbour_;
-        remember(m, index, chain, r);
-        return finish(r, branch);
+        BeamSolution solution = finish(r, branch);
+        remember(m, index, chain, r, solution);
+        return solution;
       }
       ++refused_;
     }
   }
   ++from_zero_;
   const ShootingResult r = solver.solve(chain);
-  remember(m, index, chain, r);
-  return finish(r, {});
+  BeamSolution solution = finish(r, {});
+  remember(m, index, chain, r, solution);
+  return solution;
 }
 
 }  // namespace flexure

@@ -28,6 +28,11 @@
 // the solve from zero. docs/performance.md ("Shooting sweeps") has the measured cost;
 // tests/beam/beam_sweep_solver_test.cpp compares every point with the solve from zero.
 //
+// The stability verdict of a compressed cantilever (compressed_cantilever_stability.h) starts its
+// search for the margin from the margin extrapolated along the line (cubic, from the last four
+// judged points): one integration of the Jacobi equation per point instead of four to seven,
+// the same verdict (tests/beam/beam_sweep_solver_test.cpp).
+//
 // solve() is safe to call from several threads at once: each thread keeps its own last solutions
 // (the sweep hands each thread runs of consecutive points).
 #include <atomic>
@@ -68,14 +73,19 @@ class BeamSweepSolver {
     std::vector<double> coordinates;
     double Fx = 0.0, Fy = 0.0, M = 0.0;  // the chain's tip load
     ShootingResult result;
+    double margin = 0.0;  // its stability margin (NaN when not judged)
   };
   struct Memory {
-    std::vector<Solved> last;  // the thread's last solutions (up to three), oldest first
+    std::vector<Solved> last;  // the thread's last solutions (up to four), oldest first
   };
   Memory& memory() const;
   bool warm_candidate() const;
   BeamSolution solve_shooting_point(long index, const BeamProblem& problem) const;
-  void remember(Memory& m, long index, const SegmentChain& chain, const ShootingResult& r) const;
+  void remember(Memory& m,
+                long index,
+                const SegmentChain& chain,
+                const ShootingResult& r,
+                const BeamSolution& solution) const;
 
   BeamSweepGrid grid_;
   BeamMethod method_;

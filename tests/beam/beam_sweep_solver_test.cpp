@@ -29,8 +29,10 @@ struct Compared {
   long from_neighbour = 0;
 };
 
-// Solves every point of `grid` by the sweep solver, in order, and by solve_beam alone.
-Compared compare_with_cold(const BeamSweepGrid& grid) {
+// Solves every point of `grid` by the sweep solver, in order, and by solve_beam alone. Margins
+// within `margin_tolerance`: the discrete verdict's accuracy (1e-9, docs/stability.md) where a
+// sweep may take it.
+Compared compare_with_cold(const BeamSweepGrid& grid, double margin_tolerance = 1e-9) {
   const BeamSweepSolver sweep(grid, BeamMethod::kShooting);
   for (long i = 0; i < grid.size(); ++i) {
     const BeamProblem p = grid.at(i);
@@ -48,6 +50,11 @@ Compared compare_with_cold(const BeamSweepGrid& grid) {
     EXPECT_EQ(warm.inflection_points, cold.inflection_points);
     EXPECT_EQ(warm.method, BeamMethod::kShooting);
     EXPECT_EQ(warm.method_reason, cold.method_reason);
+    // The stability verdict: a compressed cantilever's starts from the margin extrapolated from
+    // the neighbours' (compressed_cantilever_stability.h) and must come out the same.
+    EXPECT_EQ(warm.stability.kind, cold.stability.kind) << warm.stability.message;
+    EXPECT_EQ(warm.stability.index, cold.stability.index);
+    EXPECT_NEAR(warm.stability.margin, cold.stability.margin, margin_tolerance);
   }
   const BeamSweepSolver::Counts c = sweep.counts();
   EXPECT_EQ(c.from_neighbour + c.from_zero, grid.size());
@@ -94,6 +101,19 @@ TEST(BeamSweepSolver, DeadForceSweepsStartFromNeighboursAndEqualTheColdSolve) {
   grid.validate(1000);
   const Compared c = compare_with_cold(grid);
   EXPECT_GE(c.from_neighbour, 3 * 56 * 9 / 10);
+}
+
+// The issue's compressed sweep (n = 2, docs/performance.md "The edges of issue 27"): every point a
+// uniform compressed cantilever, judged by the Jacobi verdict from the extrapolated margin; the
+// same kind and index as the point solved and judged alone, margins within 1e-10 (both about
+// 1e-12 from the exact root: tests/solver/compressed_cantilever_stability_test.cpp).
+TEST(BeamSweepSolver, CompressedSweepKeepsTheVerdictOfEachPointAlone) {
+  BeamSweepGrid grid = one_axis(SweepParameter::kAlpha2, 0.5, 10.0, 500, 2.0, 0.0, 0.0);
+  const Compared c = compare_with_cold(grid, 1e-10);
+  EXPECT_GE(c.from_neighbour, 490);
+  // Inward, from the large loads down: the same.
+  grid = one_axis(SweepParameter::kAlpha2, 10.0, 0.5, 100, 2.0, 0.0, 0.0);
+  compare_with_cold(grid, 1e-10);
 }
 
 TEST(BeamSweepSolver, SweepsPastLimitPointsGiveTheProportionalLoadingAnswer) {

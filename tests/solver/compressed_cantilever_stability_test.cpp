@@ -43,6 +43,9 @@ constexpr double kPi = std::numbers::pi;
 // The general verdict's margin is accurate to about 1e-9 (docs/stability.md, "Accuracy"), the
 // Jacobi margin to about 1e-12: they must agree within a few times the former.
 constexpr double kMarginTolerance = 1e-8;
+// A guessed start changes only the Newton iterates: the margin is the same root of the same
+// eigen-condition, to about the integration's 1e-12.
+constexpr double kGuessedMarginTolerance = 1e-10;
 // The verdict leaves margins above 1 - 1e-4 (and beams it finds nowhere compressed) to the
 // general verdict.
 constexpr double kDeclinedAbove = 0.999;
@@ -53,6 +56,7 @@ struct Tally {
   int solved = 0, answered = 0, declined = 0, refined = 0, unstable = 0, index2 = 0,
       with_limit_points = 0;
   double worst = 0.0;
+  double worst_guessed = 0.0;
 };
 
 void check_result(const EndLoad& load, const ShootingResult& r, Tally& tally) {
@@ -71,6 +75,24 @@ void check_result(const EndLoad& load, const ShootingResult& r, Tally& tally) {
     return;
   }
   ++tally.answered;
+  // Started from a guessed margin (a sweep's prediction from its neighbours), near the answer or
+  // far from it, the verdict is the same: kind and index equal, the margin the same root.
+  for (const double guess : {fast->margin,
+                             fast->margin + 1e-4 * (1.0 - fast->margin),
+                             0.5 * (1.0 + fast->margin),
+                             fast->margin - 0.3,
+                             -4.0,
+                             0.0,
+                             0.999}) {
+    const std::optional<Stability> guessed =
+        compressed_cantilever_stability(chain, r, StabilityOptions{}, guess);
+    ASSERT_TRUE(guessed.has_value()) << describe(load) << " guess " << guess;
+    EXPECT_EQ(guessed->kind, fast->kind) << describe(load) << " guess " << guess;
+    EXPECT_EQ(guessed->index, fast->index) << describe(load) << " guess " << guess;
+    EXPECT_NEAR(guessed->margin, fast->margin, kGuessedMarginTolerance)
+        << describe(load) << " guess " << guess;
+    tally.worst_guessed = std::max(tally.worst_guessed, std::fabs(guessed->margin - fast->margin));
+  }
   EXPECT_EQ(fast->kind, general.kind) << describe(load);
   EXPECT_EQ(fast->index, general.index) << describe(load);
   EXPECT_NEAR(fast->margin, general.margin, kMarginTolerance) << describe(load);
@@ -121,7 +143,8 @@ TEST(CompressedCantileverStability, RandomLoadsAgreeWithTheGeneralVerdict) {
             << tally.declined << ", compared with the refined general verdict " << tally.refined
             << "), unstable " << tally.unstable << " (index >= 2: " << tally.index2 << "), "
             << tally.with_limit_points << " paths with limit points; largest margin difference "
-            << tally.worst << "\n";
+            << tally.worst << "; from guessed margins at most " << tally.worst_guessed
+            << " from the unguessed\n";
   EXPECT_GE(tally.solved, 200);
   EXPECT_GE(tally.answered, 180);
   EXPECT_GE(tally.unstable, 30);
@@ -142,6 +165,12 @@ TEST(CompressedCantileverStability, StraightColumnsMatchTheirClosedForms) {
     for (int k = 1; (2 * k - 1) * (2 * k - 1) * euler < P; ++k) ++below;
     EXPECT_EQ(v->index, below) << P;
     EXPECT_NEAR(v->margin, 1.0 - P / euler, 1e-10 * std::max(1.0, P / euler)) << P;
+    // The same from a guess 1e-3 off (a sweep's start).
+    const std::optional<Stability> g =
+        compressed_cantilever_stability(chain, r, StabilityOptions{}, v->margin + 1e-3);
+    ASSERT_TRUE(g.has_value()) << P;
+    EXPECT_EQ(g->index, below) << P;
+    EXPECT_NEAR(g->margin, 1.0 - P / euler, 1e-10 * std::max(1.0, P / euler)) << P;
   }
   // The index changes at the k-th Euler load: k - 1 at P_k (1 - 1e-4), k at P_k (1 + 1e-4).
   for (int k = 1; k <= 3; ++k) {
@@ -154,6 +183,10 @@ TEST(CompressedCantileverStability, StraightColumnsMatchTheirClosedForms) {
       const std::optional<Stability> v = compressed_cantilever_stability(chain, r);
       ASSERT_TRUE(v.has_value());
       EXPECT_EQ(v->index, side < 0.0 ? k - 1 : k) << "P_" << k << " " << side;
+      const std::optional<Stability> g =
+          compressed_cantilever_stability(chain, r, StabilityOptions{}, v->margin - 1e-3);
+      ASSERT_TRUE(g.has_value());
+      EXPECT_EQ(g->index, side < 0.0 ? k - 1 : k) << "P_" << k << " " << side << " guessed";
     }
   }
   // Critical within the tolerance at the first Euler load itself.
@@ -164,6 +197,14 @@ TEST(CompressedCantileverStability, StraightColumnsMatchTheirClosedForms) {
   ASSERT_TRUE(v.has_value());
   EXPECT_EQ(v->kind, StabilityKind::kCritical);
   EXPECT_NEAR(v->margin, 0.0, 1e-10);
+  for (const double guess : {-1e-3, 1e-3}) {
+    const std::optional<Stability> g =
+        compressed_cantilever_stability(chain, r, StabilityOptions{}, guess);
+    ASSERT_TRUE(g.has_value());
+    EXPECT_EQ(g->kind, StabilityKind::kCritical) << guess;
+    EXPECT_EQ(g->index, 0) << guess;
+    EXPECT_NEAR(g->margin, 0.0, 1e-10) << guess;
+  }
 }
 
 TEST(CompressedCantileverStability, OtherChainsAndEndsAreDeclined) {
