@@ -1150,6 +1150,8 @@ void register_mechanism_command(CLI::App& app) {
       request.file = args->what;
       request.model = args->model;
       request.input_range = args->input_range;
+      request.out = args->out;
+      request.csv = args->csv;
       request.json = args->json;
       request.points = analyze->count("--points") > 0 ? args->points : 0;
       request.flexure_models = args->flexure_models;
@@ -1177,8 +1179,8 @@ void register_mechanism_command(CLI::App& app) {
           const std::string name = option->get_name();
           if (option->count() == 0 || option->get_positional() || name == "--points" ||
               name == "--json" || name == "--model" || (general_file && name == "--input") ||
-              name == "--flexure-model" || name == "--flexure-tol" || name == "--check-flexures" ||
-              name == "--help") {
+              name == "--out" || name == "--csv" || name == "--flexure-model" ||
+              name == "--flexure-tol" || name == "--check-flexures" || name == "--help") {
             continue;
           }
           if (request.foreign_flag.empty()) request.foreign_flag = name;
