@@ -1338,6 +1338,7 @@ void register_mechanism_command(CLI::App& app) {
   struct ToleranceArgs {
     std::string what, thickness, width, length, E, distribution = "normal", method = "exact", out;
     std::string csv;
+    std::string material;  // --material NAME: the nominal design's E and S_y
     std::string force_of = "half";
     CLI::Option* force_of_option = nullptr;
     int samples = 100, points = 50;
@@ -1358,6 +1359,10 @@ void register_mechanism_command(CLI::App& app) {
                         targs->length,
                         "Spread of the links r2, r3 and every small-length flexure's length");
   tolerance->add_option("--E", targs->E, "Spread of Young's modulus (one draw per sample)");
+  tolerance->add_option("--material",
+                        targs->material,
+                        "Material from the library (`flexure materials`): the nominal design's E "
+                        "and S_y (replacing the design's), about which --E spreads");
   tolerance->add_option("--samples", targs->samples, "Sampled designs (2..100000)")
       ->default_str("100");
   tolerance
@@ -1424,7 +1429,8 @@ void register_mechanism_command(CLI::App& app) {
     }
     if (!hdf5_out.empty()) io::check_output_path(hdf5_out);
     if (!csv_out.empty()) io::check_output_path(csv_out, targs->csv.empty() ? "--out" : "--csv");
-    const MechanismDesign d = resolve(targs->what);
+    MechanismDesign d = resolve(targs->what);
+    if (!targs->material.empty()) apply_material_flag(d, targs->material);
     // A design file's force_of (written by `flexure design mechanism`) unless --force-of is given.
     o.force_of =
         *targs->force_of_option || !d.force_of ? parse_force_of(targs->force_of) : *d.force_of;
@@ -1452,6 +1458,7 @@ void register_mechanism_command(CLI::App& app) {
              {"seed", o.seed},
              {"method", o.exact ? "exact" : "prbm"},
              {"force_of", force_of_label(o.force_of)},
+             {"material", d.material.empty() ? Json(nullptr) : Json(d.material)},
              {"spread",
               Json{{"thickness", o.spread.thickness},
                    {"width", o.spread.width},
