@@ -408,3 +408,35 @@ def test_no_stress_and_n_are_forwarded_and_refused_for_other_files(files, tmp_pa
                 "--min-seconds", "0", "--models", "prbm", "--out", str(single)]).returncode == 0
     p = run(["plot", str(single), "--out", str(tmp_path / "z.png"), "--n", "1"])
     assert p.returncode == 2 and "every n at once" in p.stderr, p.stderr
+
+
+def test_benchmark_charts_are_drawn_from_the_file(files, tmp_path):
+    # scripts/plot_benchmarks.py draws through the package (flexure_plot/bench.py): each method's
+    # point of the accuracy chart is its worst converged error and median time in the file.
+    import sys
+    sys.path.insert(0, os.path.join(ROOT, "python"))
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from flexure_plot import bench
+    from flexure_plot._common import Recorder
+    rec = Recorder()
+    with h5py.File(files / "bench.h5", "r") as f:
+        fig = bench.draw_pareto(f, plt, rec)
+        assert bench.draw_stability(f, plt, Recorder()) is None  # no cantilever_force in it
+        points = {s["panel"]: s["y"] for s in rec.series}
+        checked = 0
+        for problem in f:
+            for method in f[problem]:
+                g = f[problem][method]
+                ok = g["status"][()] == 0
+                if method == "reference" or not ok.any():
+                    continue
+                worst = max(float(np.max(g["error_relative"][()][ok])), 1e-16)
+                assert points[f"pareto:{problem}:{method}"] == pytest.approx(
+                    [float(np.median(g["seconds"][()])), worst], rel=1e-12)
+                checked += 1
+        assert checked >= 2
+    texts = [t for ax in fig.axes for t in ax.texts]
+    assert all(t.get_fontsize() >= 9 for t in texts)
+    plt.close(fig)
