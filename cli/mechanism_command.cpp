@@ -1270,7 +1270,7 @@ void register_mechanism_command(CLI::App& app) {
                                           ? std::string("not done: the exact model did not run")
                                           : std::string();
     if (file) write_hdf5(args->out, a, *file, fatigue, args->stable, stable_search);
-    csv.write({"displacement"}, {"design"});
+    csv.write({"displacement"}, {"design", "shapes"});  // /shapes: per stored shape, not per point
     if (args->json) {
       Json j = analysis_json(a);
       add_fatigue_json(j, a, fatigue);

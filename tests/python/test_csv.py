@@ -57,6 +57,8 @@ def test_mechanism_stroke_csv_equals_the_json(tmp_path):
     assert j["force_of"] == "one half"
     assert t["force_prbm"][2] == "half" and t["force_exact"][2] == "half"
     assert t["displacement"][2] is None and t["stress_exact_pivot1"][2] is None
+    # The stored shapes (/shapes, one row per converged exact point) are not the stroke's table.
+    assert not any(k.startswith("shapes/") for k in t)
     for key in ("displacement", "force_prbm", "force_exact", "prbm_within_validity"):
         exact_equal(t[key][1], j[key], key)
     assert len(t["displacement"][1]) == 8
