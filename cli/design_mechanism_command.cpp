@@ -522,7 +522,9 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
         {"endurance_limit", "Pa"},
         {"length_needed", "m"},
     };
-    io::write_csv(args.csv, csv_columns_from_records(summary["designs"], kUnits));
+    std::vector<io::CsvColumn> columns = csv_columns_from_records(summary["designs"], kUnits);
+    io::mark_force_columns(columns, mechanism::force_of_label(of));  // N (half) or N (whole)
+    io::write_csv(args.csv, columns);
   }
   if (args.json) {
     print_json(summary);

@@ -32,6 +32,7 @@
 #include "flexure/mechanisms/dynamics/cfsm_designs.h"
 #include "flexure/mechanisms/dynamics/dynamics_design.h"
 #include "flexure/mechanisms/force_of.h"
+#include "flexure/mechanisms/material_library.h"
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/solver/common/errors.h"
 
@@ -52,6 +53,7 @@ struct DynamicsArgs {
   double stroke_percent = 40.0;
   CLI::Option* stroke_option = nullptr;
   std::string spring_rule;
+  std::string material;  // --material NAME: E of the springs computed from the strips
   std::string force_of = "whole";
   double preload_percent = 1.0;
   int samples = 1024;
@@ -89,6 +91,7 @@ DynamicsDesign resolve_design(const DynamicsArgs& args) {
   std::optional<mechanism::SpringRule> rule;
   if (!args.spring_rule.empty()) rule = mechanism::parse_spring_rule(args.spring_rule);
   const std::string& what = args.mechanism;
+  const MaterialGrade* material = args.material.empty() ? nullptr : &find_material(args.material);
   if (what.size() > 5 && what.substr(what.size() - 5) == ".toml") {
     const mechanism::MechanismFile file = mechanism::load_mechanism_file(what);
     warn(file.warnings);
@@ -96,14 +99,25 @@ DynamicsDesign resolve_design(const DynamicsArgs& args) {
                                           : args.zero_slider_mass
                                               ? dynamics::MassesNeeded::kLinksOnly
                                               : dynamics::MassesNeeded::kAll;
-    return dynamics::dynamics_design(file.design, file.dynamics, needed, rule);
+    DynamicsDesign d =
+        dynamics::dynamics_design(file.design, file.dynamics, needed, rule, material);
+    if (material != nullptr && file.design.E > 0.0 && file.design.E != material->E) {
+      warn(fmt::format("--material {}: E {:.6g} Pa replaces the file's {:.6g} Pa in the springs",
+                       material->id,
+                       material->E,
+                       file.design.E));
+    }
+    return d;
   }
+  // A name is looked up first, so that an unknown one is reported as such, not as a material
+  // the printed springs cannot take.
   try {
-    return dynamics::builtin_dynamics_design(what, rule);
+    dynamics::builtin_dynamics_design(what, rule);
   } catch (const InvalidInput& e) {
     throw InvalidInput(fmt::format(
         "--mechanism: {}; or FILE.toml, a mechanism file with a [dynamics] table", e.what()));
   }
+  return dynamics::builtin_dynamics_design(what, rule, material);
 }
 
 void run_dynamics(const DynamicsArgs& args) {
@@ -197,6 +211,7 @@ void run_dynamics(const DynamicsArgs& args) {
              {"csv", csv.wanted() ? Json(csv.csv_path()) : Json(nullptr)},
              {"force_of", force_of_label},
              {"spring_rule", d.spring_rule ? Json(*d.spring_rule) : Json(nullptr)},
+             {"material", d.material ? Json(*d.material) : Json(nullptr)},
              {"spring_constants", d.k},
              {"stroke", motion.stroke},
              {"preload", motion.preload},
@@ -273,6 +288,10 @@ void register_dynamics_command(CLI::App& app) {
                   "Springs from the strips' b, h, L, E by the rule of mechanism analyze: "
                   "pure-bending (k = EI/L), table2, table5 (default: the paper's printed Table 5 "
                   "constants, table5-printed; a FILE.toml's own rule)");
+  cmd->add_option("--material",
+                  args->material,
+                  "Material of the strips (`flexure materials`): its E sets the springs computed "
+                  "from the strips (with --spring-rule, or a FILE.toml without spring_constants)");
   cmd->add_option("--force-of",
                   args->force_of,
                   "Forces of the whole symmetric mechanism (two halves, one slider) or of one "

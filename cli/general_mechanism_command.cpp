@@ -6,7 +6,11 @@
 #include <iostream>
 
 #include "cli/cli_common.h"
+#include "cli/csv_output.h"
+#include "flexure/io/general_mechanism_file.h"
 #include "flexure/io/general_mechanism_toml.h"
+#include "flexure/io/hdf5_file.h"
+#include "flexure/io/output_path.h"
 #include "flexure/io/toml_support.h"
 #include "flexure/mechanisms/general/general_exact.h"
 #include "flexure/mechanisms/general/general_prbm.h"
@@ -214,11 +218,12 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
     throw InvalidInput(request.foreign_flag +
                        (request.mechanism
                             ? " does not apply to --model mixed on a constant-force design, which "
-                              "takes --flexure-model, --flexure-tol, --check-flexures, --points "
-                              "and --json"
+                              "takes --flexure-model, --flexure-tol, --check-flexures, --points, "
+                              "--out, --csv and --json"
                             : " belongs to the constant-force designs; a general mechanism file "
-                              "takes --model, --input, --points, --json and, with --model mixed, "
-                              "--flexure-model, --flexure-tol and --check-flexures"));
+                              "takes --model, --input, --points, --out, --csv, --json and, with "
+                              "--model mixed, --flexure-model, --flexure-tol and "
+                              "--check-flexures"));
   }
   const std::string model = request.model.empty() ? "prbm" : request.model;
   if (model != "mixed" &&
@@ -231,6 +236,18 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
     throw InvalidInput(
         fmt::format("--flexure-tol must be in (0, 1), got {:g}", request.flexure_tol));
   }
+  // --out FILE.h5 | FILE.csv and --csv FILE, checked before any work (exit 2).
+  std::string hdf5_out = request.out, csv_out = request.csv;
+  if (is_csv_path(request.out)) {
+    if (!request.csv.empty()) {
+      throw InvalidInput(fmt::format(
+          "--out {} is a CSV file already; give --csv only with an HDF5 --out", request.out));
+    }
+    csv_out = request.out;
+    hdf5_out.clear();
+  }
+  if (!hdf5_out.empty()) io::check_output_path(hdf5_out, "--out");
+  if (!csv_out.empty()) io::check_output_path(csv_out, request.csv.empty() ? "--out" : "--csv");
   GeneralMechanism m =
       request.mechanism ? *request.mechanism : load_general_mechanism_toml(request.file);
   apply_flexure_models(m, request.flexure_models, request.flexure_tol);
@@ -263,6 +280,27 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
     }
   }
   const GeneralPrbmResult& first = results.front().second;
+  io::GeneralAnalysisOutput output;
+  output.mechanism = &m;
+  output.model = model;
+  for (const auto& [name, r] : results) output.results.emplace_back(name, &r);
+  if (request.mechanism) output.design_x0 = request.design_x0;
+  output.checked_flexures = request.check_flexures;
+  if (!hdf5_out.empty()) {
+    try {
+      io::AtomicHdf5File file(hdf5_out);
+      io::write_general_mechanism(file.root(), output);
+      file.commit();
+    } catch (const io::Hdf5Error& e) {
+      throw InvalidInput(fmt::format("--out: {}", e.what()));
+    }
+  }
+  if (!csv_out.empty()) {
+    std::string note;
+    const auto columns = io::general_mechanism_csv_columns(output, &note);
+    if (!note.empty()) warn(note);
+    io::write_csv(csv_out, columns, request.csv.empty() ? "--out" : "--csv");
+  }
   if (request.json) {
     Json models = Json::object();
     for (const auto& [name, r] : results) {
@@ -296,15 +334,12 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
     if (request.mechanism) {
       // A constant-force design: the stroke Delta x and the slider force of one half as
       // `mechanism analyze` reports them (the input load holds x; the force pushes inwards).
-      Json dx = Json::array(), force = Json::array();
-      for (const GeneralPrbmPoint& p : first.points) {
-        dx.push_back(request.design_x0 - p.input);
-        force.push_back(-p.input_load);
-      }
-      out["displacement"] = dx;
-      out["force"] = force;
+      out["displacement"] = io::design_stroke_displacement(first, request.design_x0);
+      out["force"] = io::design_stroke_force(first);
       out["force_of"] = "half";
     }
+    out["out"] = hdf5_out.empty() ? Json(nullptr) : Json(hdf5_out);
+    out["csv"] = csv_out.empty() ? Json(nullptr) : Json(csv_out);
     print_json(out);
     return;
   }

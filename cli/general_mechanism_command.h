@@ -22,10 +22,14 @@ struct GeneralAnalyzeRequest {
   std::optional<mechanism::general::GeneralMechanism> mechanism;
   double design_x0 = 0.0;
   std::string input_range;  // --input START:STOP:COUNT, empty when not given
+  // --out FILE.h5 (io/general_mechanism_file.h) or FILE.csv (the table only); --csv FILE (the
+  // table beside an HDF5 --out, or alone). Empty when not given.
+  std::string out;
+  std::string csv;
   bool json = false;
   int points = 0;  // --points when given, else 0
-  // The first flag of the constant-force analysis given on the command line (--method, --out,
-  // ...), empty when none: refused for the general form, which does not use it.
+  // The first flag of the constant-force analysis given on the command line (--method,
+  // --material, ...), empty when none: refused for the general form, which does not use it.
   std::string foreign_flag;
 };
 

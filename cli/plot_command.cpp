@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -34,6 +35,9 @@ struct PlotArgs {
   std::string animate;
   std::string dump_json;
   bool json = false;
+  bool no_stress = false;  // mechanism analyze files: no stress panel
+  double n = 0.0;          // models map files: the plane's load ratio, when --n is given
+  CLI::Option* n_option = nullptr;
 };
 
 // Folders that may hold the package flexure_plot, in the order searched: $FLEXURE_PLOT_PATH, the
@@ -142,6 +146,12 @@ void run_plot(const PlotArgs& a) {
   if (!a.out.empty()) args.insert(args.end(), {"--out", a.out});
   if (!a.animate.empty()) args.insert(args.end(), {"--animate", a.animate});
   if (!a.dump_json.empty()) args.insert(args.end(), {"--dump-json", a.dump_json});
+  // The module refuses either for a file of another kind (exit 2), naming the kind.
+  if (a.no_stress) args.emplace_back("--no-stress");
+  if (a.n_option != nullptr && a.n_option->count() > 0) {
+    if (!std::isfinite(a.n)) throw InvalidInput(fmt::format("--n must be finite, got {}", a.n));
+    args.insert(args.end(), {"--n", fmt::format("{:.17g}", a.n)});
+  }
   std::string output;
   const int code = run_module(dir, args, output);
   Json answer;
@@ -187,6 +197,13 @@ void register_plot_command(CLI::App& app) {
   cmd->add_option("--dump-json",
                   args->dump_json,
                   "Write the plotted arrays (in the file's units) as JSON, for checks");
+  cmd->add_flag("--no-stress",
+                args->no_stress,
+                "Mechanism strokes (`mechanism analyze --out`): leave out the stress panel");
+  args->n_option = cmd->add_option("--n",
+                                   args->n,
+                                   "Models maps (`models map --out`): the load ratio n of the "
+                                   "plane drawn, one of the file's n (default: the n nearest 0)");
   cmd->add_flag("--json",
                 args->json,
                 "Print one JSON object: {file, kind, description, out, animate, written}");

@@ -66,17 +66,18 @@ DatasetInfo describe(hid_t file, const std::string& name, const std::string& whe
   return info;
 }
 
-std::string units_of(hid_t file, const std::string& name) {
-  const Id set(H5Dopen2(file, name.c_str(), H5P_DEFAULT), H5Dclose, "dataset " + name);
-  if (H5Aexists(set.get(), "units") <= 0) return "1";
-  const Id attr(H5Aopen(set.get(), "units", H5P_DEFAULT), H5Aclose, name + ": units");
-  const Id type(H5Aget_type(attr.get()), H5Tclose, name + ": units type");
+// The string attribute `attribute` of object `object` ("" when it has none).
+std::string string_attribute(hid_t object, const std::string& name, const char* attribute) {
+  if (H5Aexists(object, attribute) <= 0) return "";
+  const Id attr(H5Aopen(object, attribute, H5P_DEFAULT), H5Aclose, name + ": " + attribute);
+  const Id type(H5Aget_type(attr.get()), H5Tclose, name + ": " + attribute + " type");
+  if (H5Tget_class(type.get()) != H5T_STRING) return "";
   if (H5Tis_variable_str(type.get()) > 0) {
     char* value = nullptr;
     const Id mem(H5Tcopy(H5T_C_S1), H5Tclose, "string type");
     H5Tset_size(mem.get(), H5T_VARIABLE);
     H5Tset_cset(mem.get(), H5Tget_cset(type.get()));
-    if (H5Aread(attr.get(), mem.get(), &value) < 0 || value == nullptr) return "1";
+    if (H5Aread(attr.get(), mem.get(), &value) < 0 || value == nullptr) return "";
     std::string out(value);
     H5free_memory(value);
     return out;
@@ -84,6 +85,12 @@ std::string units_of(hid_t file, const std::string& name) {
   std::string out(H5Tget_size(type.get()), '\0');
   H5Aread(attr.get(), type.get(), out.data());
   return out.substr(0, out.find('\0'));
+}
+
+std::string units_of(hid_t file, const std::string& name) {
+  const Id set(H5Dopen2(file, name.c_str(), H5P_DEFAULT), H5Dclose, "dataset " + name);
+  const std::string units = string_attribute(set.get(), name, "units");
+  return units.empty() ? "1" : units;
 }
 
 std::vector<double> read_numbers(hid_t file, const std::string& name) {
@@ -123,6 +130,19 @@ bool skipped(const std::string& name, const std::vector<std::string>& skip) {
 }
 
 }  // namespace
+
+std::string force_unit(const std::string& force_of) {
+  if (force_of == "one half" || force_of == "half") return "N (half)";
+  if (force_of == "whole symmetric mechanism" || force_of == "whole") return "N (whole)";
+  throw std::invalid_argument("force_unit: unknown force_of '" + force_of + "'");
+}
+
+void mark_force_columns(std::vector<CsvColumn>& columns, const std::string& force_of) {
+  const std::string unit = force_unit(force_of);
+  for (CsvColumn& c : columns) {
+    if (c.unit == "N") c.unit = unit;
+  }
+}
 
 std::string csv_text(const std::vector<CsvColumn>& columns) {
   const std::size_t rows = columns.empty() ? 0 : columns.front().size();
@@ -213,6 +233,10 @@ std::vector<CsvColumn> csv_columns_from_hdf5(const std::string& hdf5_path,
       column.numbers = read_numbers(file.get(), name);
     }
     columns.push_back(std::move(column));
+  }
+  const std::string force_of = string_attribute(file.get(), hdf5_path, "force_of");
+  if (force_of == "one half" || force_of == "whole symmetric mechanism") {
+    mark_force_columns(columns, force_of);
   }
   return columns;
 }

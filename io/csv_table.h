@@ -19,6 +19,15 @@ struct CsvColumn {
   std::size_t size() const { return is_text() ? texts.size() : numbers.size(); }
 };
 
+// A force's unit that says whose force it is, for the force columns of a symmetric mechanism
+// (mechanisms/force_of.h): "N (half)" for one half, "N (whole)" for the whole mechanism.
+// `force_of` is the output key's value ("one half", "whole symmetric mechanism") or the option's
+// ("half", "whole"); throws std::invalid_argument for anything else.
+std::string force_unit(const std::string& force_of);
+
+// Gives every column of unit "N" the unit force_unit(force_of) (the other columns unchanged).
+void mark_force_columns(std::vector<CsvColumn>& columns, const std::string& force_of);
+
 // The CSV text of `columns` (all of one length; throws std::invalid_argument otherwise).
 std::string csv_text(const std::vector<CsvColumn>& columns);
 
@@ -33,8 +42,10 @@ void write_csv(const std::string& path,
 // [|axis 0|, |axis 1|, ...]; each row is one grid point (row-major, the last axis fastest) with
 // the axes' values first, then every other dataset of the file whose shape is that grid, in name
 // order (a dataset in a group is named by its path, `prbm/position_error`), with the `units`
-// attribute of each. Groups named in `skip` (e.g. "design", "special_points") are left out.
-// Throws Hdf5Error when the file cannot be read or an axis is missing or not 1-D.
+// attribute of each. In a file whose root has the attribute `force_of` (a mechanism's forces: one
+// half or the whole), the columns in N say whose force they are (mark_force_columns). Groups named
+// in `skip` (e.g. "design", "special_points") are left out. Throws Hdf5Error when the file cannot
+// be read or an axis is missing or not 1-D.
 std::vector<CsvColumn> csv_columns_from_hdf5(const std::string& hdf5_path,
                                              const std::vector<std::string>& axes,
                                              const std::vector<std::string>& skip = {});

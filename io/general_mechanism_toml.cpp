@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "flexure/io/toml_support.h"
+#include "flexure/mechanisms/material_library.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/quantity.h"
 
@@ -147,10 +148,28 @@ bool is_general_mechanism_toml(const std::string& text, const std::string& sourc
 
 GeneralMechanism parse_general_mechanism_toml(const std::string& text, const std::string& source) {
   const toml::table root = parse_root(text, source);
-  check_toml_keys(root,
-                  {"name", "note", "body", "joint", "flexure", "spring", "load", "input"},
-                  "the file",
-                  source);
+  check_toml_keys(
+      root,
+      {"name", "note", "material", "body", "joint", "flexure", "spring", "load", "input"},
+      "the file",
+      source);
+  // material = "NAME" (data/materials.csv, `flexure materials`): at the top of the file, the
+  // modulus of every flexure that gives neither its own E nor its own material.
+  const auto material_of = [&](const toml::node& node, const std::string& where) {
+    if (!node.is_string()) {
+      toml_fail(
+          source,
+          line_of(node),
+          where + " must be a material name, e.g. \"polypropylene\" (see `flexure materials`)");
+    }
+    try {
+      return &find_material(**node.as_string());
+    } catch (const InvalidInput& e) {
+      toml_fail(source, line_of(node), where + ": " + e.what());
+    }
+  };
+  const MaterialGrade* file_material = nullptr;
+  if (const toml::node* n = root.get("material")) file_material = material_of(*n, "material");
   GeneralMechanism m;
   m.source = source;
   m.name = source;
@@ -228,6 +247,7 @@ GeneralMechanism parse_general_mechanism_toml(const std::string& text, const std
                      "width",
                      "thickness",
                      "E",
+                     "material",
                      "length",
                      "prbm",
                      "model",
@@ -244,6 +264,19 @@ GeneralMechanism parse_general_mechanism_toml(const std::string& text, const std
     f.width = r.number("width", Dimension::kLength, false).value_or(0.0);
     f.thickness = r.number("thickness", Dimension::kLength, false).value_or(0.0);
     f.youngs_modulus = r.number("E", Dimension::kStress, false).value_or(0.0);
+    // E from the flexure's material, else the file's; a flexure's own E replaces the file's
+    // material (a flexure of another stock), but not its own material (give one of the two).
+    const MaterialGrade* material = file_material;
+    if (const toml::node* n = t->get("material")) {
+      if (t->get("E") != nullptr) {
+        r.fail(n, "gives both E and material; give one (material = \"NAME\" sets E)");
+      }
+      material = material_of(*n, r.item() + ".material");
+    }
+    if (material != nullptr && t->get("E") == nullptr) {
+      f.youngs_modulus = material->E;
+      f.material = material->id;
+    }
     f.length = r.number("length", Dimension::kLength, false).value_or(0.0);
     const std::string prbm = r.string("prbm", false).value_or("small-length");
     if (prbm == "small-length") {

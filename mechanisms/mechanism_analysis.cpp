@@ -154,4 +154,16 @@ void report_forces_of(MechanismAnalysis& a, ForceOf of) {
   a.force_of = of;
 }
 
+std::vector<StrokeStabilityEntry> stroke_stability_entries(const MechanismAnalysis& a) {
+  std::vector<StrokeStabilityEntry> out;
+  if (a.stability_prbm.displacement_control.points.empty()) return out;
+  const bool exact = a.has_exact && a.exact.converged() && a.has_exact_stability;
+  out.push_back({"displacement_control", "prbm", &a.stability_prbm.displacement_control});
+  out.push_back(
+      {"displacement_control", "exact", exact ? &a.stability_exact.displacement_control : nullptr});
+  out.push_back({"force_control", "prbm", &a.stability_prbm.force_control});
+  out.push_back({"force_control", "exact", exact ? &a.stability_exact.force_control : nullptr});
+  return out;
+}
+
 }  // namespace flexure::mechanism

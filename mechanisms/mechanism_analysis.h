@@ -104,4 +104,15 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
 // and stresses do not change.
 void report_forces_of(MechanismAnalysis& analysis, ForceOf of);
 
+// The four stroke verdicts (control x model) an analysis computed, in output order (the JSON's
+// and the HDF5 file's): displacement control PRBM, exact; force control PRBM, exact. `stroke` is
+// null for the exact model where it did not run (or converge, or its stability was not judged);
+// the list is empty where the PRBM's stability was not computed.
+struct StrokeStabilityEntry {
+  const char* control;  // JSON/HDF5 name: "displacement_control" or "force_control"
+  const char* model;    // "prbm" or "exact"
+  const StrokeStability* stroke;
+};
+std::vector<StrokeStabilityEntry> stroke_stability_entries(const MechanismAnalysis& analysis);
+
 }  // namespace flexure::mechanism

@@ -68,7 +68,8 @@ def main():
     ap.add_argument("--out", default=None,
                     help="one figure file (.png, .pdf, .svg): that of `flexure plot FILE`")
     ap.add_argument("--prefix", default=None, help="figure name prefix (default: FILE's stem)")
-    ap.add_argument("--n", type=float, default=0.0, help="the load ratio of the maps' plane")
+    ap.add_argument("--n", type=float, default=None,
+                    help="the load ratio of the maps' plane (default: the file's n nearest 0)")
     ap.add_argument("--table", action="store_true")
     args = ap.parse_args()
     if args.out:
@@ -79,7 +80,7 @@ def main():
             return 2
         from flexure_plot import PlotError, plot_file
         try:
-            result = plot_file(args.file, args.out, expect_kind="models-map")
+            result = plot_file(args.file, args.out, n_value=args.n, expect_kind="models-map")
         except PlotError as e:
             print(f"plot_models.py: error: {e}", file=sys.stderr)
             return e.exit_code
@@ -96,7 +97,12 @@ def main():
         maps = os.path.join(out, f"{prefix}_error_maps.png")
         chart = os.path.join(out, f"{prefix}_error_time.png")
         style(plt)
-        save_figure(studies.draw_models(f, plt, Recorder(), args.n), maps)
+        try:
+            maps_figure = studies.draw_models(f, plt, Recorder(), args.n)
+        except studies.PlotError as e:
+            print(f"plot_models.py: error: {e}", file=sys.stderr)
+            return e.exit_code
+        save_figure(maps_figure, maps)
         save_figure(studies.draw_models_error_time(f, plt, Recorder()), chart)
         plt.close("all")
         print(f"wrote {maps}")

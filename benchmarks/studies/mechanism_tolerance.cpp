@@ -410,6 +410,8 @@ std::vector<io::CsvColumn> tolerance_csv_columns(const ToleranceStudy& s) {
     columns.push_back(std::move(c));
   }
   for (const ToleranceStats& q : s.quantities) columns.push_back({q.name, q.unit, q.values, {}});
+  // The mean forces' unit says whose force they are: N (half) or N (whole).
+  io::mark_force_columns(columns, force_of_label(s.options.force_of));
   return columns;
 }
 

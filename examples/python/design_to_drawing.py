@@ -34,7 +34,9 @@ def main():
     flexure("plot", out("stroke.h5"), "--out", out("design_force_curve.png"))
     with open(out("stroke.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
-    mean = {m: sum(float(r[f"force_{m} [N]"]) for r in rows) / len(rows) for m in ("prbm", "exact")}
+    # The header says whose force: [N (whole)], the whole mechanism (--force-of whole).
+    mean = {m: sum(float(r[f"force_{m} [N (whole)]"]) for r in rows) / len(rows)
+            for m in ("prbm", "exact")}
     print(f"design.svg, design_force_curve.png written; mean force of the whole mechanism over "
           f"{len(rows)} stroke points: {mean['prbm']:.3f} N (PRBM, the model the design is sized "
           f"with; asked: 20 N), {mean['exact']:.3f} N (exact)")

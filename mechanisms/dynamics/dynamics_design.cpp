@@ -24,8 +24,19 @@ std::optional<std::string> rule_name(const MechanismDesign& d) {
 
 }  // namespace
 
-DynamicsDesign builtin_dynamics_design(const std::string& name, std::optional<SpringRule> rule) {
+DynamicsDesign builtin_dynamics_design(const std::string& name,
+                                       std::optional<SpringRule> rule,
+                                       const MaterialGrade* material) {
   const CfsmDesign& t = find_cfsm_design(name);
+  if (material != nullptr && !rule) {
+    throw InvalidInput(fmt::format(
+        "{}: material '{}' sets the modulus of springs computed from the strips, but the printed "
+        "Table 5 springs of {} are constants; give --spring-rule pure-bending, table2 or table5 "
+        "to compute them from the strips with the material's E",
+        t.name,
+        material->id,
+        t.name));
+  }
   DynamicsDesign d;
   d.name = t.name;
   d.r2 = t.r2;
@@ -36,8 +47,13 @@ DynamicsDesign builtin_dynamics_design(const std::string& name, std::optional<Sp
   d.F_nom_paper = t.F_nom_paper;
   if (rule) {
     // The same strips as `mechanism analyze NAME` (its Table 5 column), springs by `rule`.
-    const MechanismDesign m =
+    MechanismDesign m =
         mechanism::modified_design(mechanism::find_modified_configuration(t.name), *rule);
+    if (material != nullptr) {
+      m.E = material->E;  // k = EI/L and its factors (modified_springs.h) scale with E
+      d.material = material->id;
+      d.E = material->E;
+    }
     d.k = spring_constants(m);
     d.spring_rule = mechanism::spring_rule_name(*rule);
   } else {
@@ -50,7 +66,8 @@ DynamicsDesign builtin_dynamics_design(const std::string& name, std::optional<Sp
 DynamicsDesign dynamics_design(MechanismDesign design,
                                const DynamicsData& data,
                                MassesNeeded needed,
-                               std::optional<SpringRule> rule) {
+                               std::optional<SpringRule> rule,
+                               const MaterialGrade* material) {
   const std::string where =
       data.line > 0 ? fmt::format("{}:{}", data.source, data.line) : data.source;
   if (design.inverted) {
@@ -91,6 +108,19 @@ DynamicsDesign dynamics_design(MechanismDesign design,
                     "m_slider",
                     "mass of the slider both halves share",
                     needed == MassesNeeded::kAll);
+  if (material != nullptr) {
+    if (data.spring_constants) {
+      throw InvalidInput(fmt::format(
+          "{}: material '{}' sets the modulus of springs computed from the strips, but [dynamics] "
+          "spring_constants give the springs; remove one",
+          where,
+          material->id));
+    }
+    design.E = material->E;
+    design.material = material->id;
+    d.material = material->id;
+    d.E = material->E;
+  }
   if (data.spring_constants) {
     if (rule) {
       throw InvalidInput(fmt::format(

@@ -18,6 +18,7 @@
 #include <optional>
 #include <string>
 
+#include "flexure/mechanisms/material_library.h"
 #include "flexure/mechanisms/mechanism.h"
 
 namespace flexure::dynamics {
@@ -36,6 +37,8 @@ struct DynamicsDesign {
   std::optional<std::string> spring_rule;  // see above
   double F_nom_paper = 0.0;                // Table 6 F_Nom of the whole mechanism, N (0: none)
   std::optional<double> stroke;            // the design's own stroke, m (a TOML file's)
+  std::optional<std::string> material;     // the material whose E set the springs (--material)
+  double E = 0.0;                          // that modulus, Pa (0: no material given)
 };
 
 // The optional [dynamics] table of a mechanism TOML file (io/mechanism_toml.h): what a dimensional
@@ -54,18 +57,23 @@ enum class MassesNeeded { kAll, kLinksOnly, kNone };
 
 // Built-in design `name` of the paper's Table 5 (case-insensitive) with the printed springs, or
 // with those of `rule` computed from the printed strip dimensions (modified_designs.h). Throws
-// InvalidInput for an unknown name, listing the nine.
+// InvalidInput for an unknown name, listing the nine. `material` (a row of data/materials.csv)
+// replaces the strips' E for the springs of `rule`; with the printed springs (no rule), which are
+// constants, it is refused (InvalidInput).
 DynamicsDesign builtin_dynamics_design(const std::string& name,
-                                       std::optional<mechanism::SpringRule> rule);
+                                       std::optional<mechanism::SpringRule> rule,
+                                       const MaterialGrade* material = nullptr);
 
 // A dimensional design with the masses and optional springs of `data`. Springs: data's
 // spring_constants if given ("given"), else the design's spring rule (`rule` replaces it, as
 // `mechanism analyze --spring-rule` does). Throws InvalidInput "SOURCE[:LINE]: ..." naming the
 // field: a mass `needed` but missing, spring_constants with a spring at a pin or none at a flexure,
-// or `rule` together with spring_constants.
+// or `rule` together with spring_constants. `material` replaces the design's E for the springs
+// computed from its strips; refused together with spring_constants (which do not depend on E).
 DynamicsDesign dynamics_design(mechanism::MechanismDesign design,
                                const DynamicsData& data,
                                MassesNeeded needed,
-                               std::optional<mechanism::SpringRule> rule);
+                               std::optional<mechanism::SpringRule> rule,
+                               const MaterialGrade* material = nullptr);
 
 }  // namespace flexure::dynamics

@@ -87,6 +87,7 @@ struct Flexure {
   double width = 0.0;           // b, out of the plane, m
   double thickness = 0.0;       // h, in the plane, m
   double youngs_modulus = 0.0;  // E, Pa
+  std::string material;         // the material E came from (data/materials.csv id), or empty
   double length = 0.0;          // l, m; 0: the distance from a to b
   PrbmKind prbm = PrbmKind::kSmallLengthPivot;
   FlexureModel model = FlexureModel::kPrbm;

@@ -39,10 +39,13 @@ def default_out(path):
     return (stem if ext.lower() in (".h5", ".hdf5") else path) + ".png"
 
 
-def plot_file(path, out=None, animate=None, dump_json=None, no_stress=False, n_value=0.0,
+def plot_file(path, out=None, animate=None, dump_json=None, no_stress=False, n_value=None,
               extra=(), expect_kind=None, label=None):
     """Draws `path` into `out` (default: the file's name with .png); returns
-    {file, kind, description, out, animate, written}. `extra`: [(path, label)] of further
+    {file, kind, description, out, animate, written}. `no_stress`: a mechanism stroke without
+    its stress panel (mechanism analyze files only); `n_value`: the load ratio n of a models map's
+    plane (models map files with several n and several mu or tip angles only; None: the n nearest
+    0). Either given for another kind of file is refused (exit 2). `extra`: [(path, label)] of further
     dynamics files drawn on the same axes, `label` the legend entry of `path` there
     (scripts/plot_dynamics.py); `expect_kind`: refuse a file of another kind (the scripts)."""
     h5py, plt = _libraries()
@@ -80,6 +83,12 @@ def plot_file(path, out=None, animate=None, dump_json=None, no_stress=False, n_v
         if expect_kind and kind != expect_kind:
             raise PlotError(f"plot: {path} is a `{kind}` file, not a `{expect_kind}` file "
                             f"({DESCRIPTIONS[expect_kind]})")
+        if no_stress and kind != "mechanism-analyze":
+            raise PlotError(f"plot: --no-stress leaves out the stress panel of a mechanism stroke "
+                            f"(`flexure mechanism analyze --out`); {path} is a `{kind}` file")
+        if n_value is not None and kind != "models-map":
+            raise PlotError(f"plot: --n picks the load ratio of a `flexure models map` file's "
+                            f"plane; {path} is a `{kind}` file")
         if animate and kind == "mechanism-analyze":
             if "shapes/x" not in f:
                 mechanism.animate_analyze(f, plt, animate)  # raises, naming what is missing
@@ -101,6 +110,8 @@ def plot_file(path, out=None, animate=None, dump_json=None, no_stress=False, n_v
                 fig = beam.draw_validate(f, plt, rec)
             elif kind == "mechanism-analyze":
                 fig = mechanism.draw_analyze(f, plt, rec, stress=not no_stress)
+            elif kind == "mechanism-general":
+                fig = mechanism.draw_general(f, plt, rec)
             elif kind == "mechanism-validate":
                 fig = mechanism.draw_validate(f, plt, rec)
             elif kind == "mechanism-tolerance":
@@ -152,8 +163,11 @@ def main(argv=None):
     parser.add_argument("--out", help="figure (.png, .pdf, .svg; default FILE with .png)")
     parser.add_argument("--animate", help="animation of the deformed shapes (.gif)")
     parser.add_argument("--dump-json", help="write the plotted arrays (file units) as JSON")
-    parser.add_argument("--no-stress", action="store_true", help="mechanism: no stress panel")
-    parser.add_argument("--n", type=float, default=0.0, help="models map: the plane's load ratio")
+    parser.add_argument("--no-stress", action="store_true",
+                        help="mechanism analyze files: leave out the stress panel")
+    parser.add_argument("--n", type=float, default=None,
+                        help="models map files: the load ratio n of the plane drawn (one of the "
+                             "file's n; default the n nearest 0)")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     # Used by the tool's `flexure plot` (cli/plot_command.cpp): the answer or the error as one
     # JSON object on stdout, which the tool prints or turns into its own error and exit code.

@@ -13,6 +13,8 @@ KINDS = (
     ("validate", ("validate",), lambda f: "rel_error" in f and "problem" in f),
     ("mechanism-analyze", ("mechanism", "analyze"),
      lambda f: "displacement" in f and "force_prbm" in f),
+    ("mechanism-general", ("mechanism", "analyze"),
+     lambda f: "input" in f and "input_load" in f and "models" in f),
     ("mechanism-validate", ("mechanism", "validate"),
      lambda f: "name" in f and "percent_constant_force_exact" in f and "safety_factor" in f),
     ("mechanism-tolerance", ("mechanism", "tolerance"), lambda f: "draws" in f and "parameters" in f),
@@ -30,6 +32,8 @@ DESCRIPTIONS = {
             "support's force against the moved coordinate)",
     "validate": "flexure validate: relative error of every check",
     "mechanism-analyze": "flexure mechanism analyze: one stroke (force, PRBM error, stress)",
+    "mechanism-general": "flexure mechanism analyze (general form or --model mixed): input load "
+                         "against the input, equilibria and limit points",
     "mechanism-validate": "flexure mechanism validate: the table of designs",
     "mechanism-tolerance": "flexure mechanism tolerance: distributions over the sampled designs",
     "dynamics": "flexure dynamics: input force against the drive frequency",

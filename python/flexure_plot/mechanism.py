@@ -286,3 +286,104 @@ def _quantity_name(f, q):
              "percent_constant_force_prbm": "Xi', PRBM", "percent_constant_force_exact":
              "Xi', exact", "safety_factor": "safety factor"}
     return names.get(q, q)
+
+
+def _general_scale(unit_name):
+    """Display scale and unit of a general mechanism's input or load: degrees for rad, mm for m,
+    N mm for N m."""
+    return {"rad": (180.0 / math.pi, "deg"), "m": (1e3, "mm")}.get(unit_name, (1.0, unit_name))
+
+
+def draw_general(f, plt, rec):
+    """`mechanism analyze FILE.toml --out` (general form, io/general_mechanism_file.h): the input
+    load against the input for every model solved (points unstable with the input held drawn
+    hollow, limit points x), the unloaded mechanism's equilibria on the zero line (filled: stable,
+    hollow: unstable), and for a built-in design in its general form the slider force against the
+    stroke, as `mechanism analyze` reports it."""
+    design = "displacement" in f and "force" in f
+    models = [m for m in f["models"]]
+    first = attr(f, "first_model", models[0])
+    models.sort(key=lambda m: m != first)
+    has_energy = any(np.isfinite(f[f"models/{m}/energy"][()]).any() for m in models)
+    panels = 1 + design + has_energy
+    fig, axes = plt.subplots(panels, 1, figsize=(8.5, 2.2 + 3.0 * panels), squeeze=False)
+    axes = list(axes[:, 0])
+    ax = axes[0]
+    xs, xu = _general_scale(unit(f["input"]))
+    ys, yu = _general_scale(unit(f["input_load"]))
+    if yu == "N m":
+        ys, yu = 1e3, "N mm"
+    coordinate = attr(f, "input_coordinate", "x")
+    body = attr(f, "input_body", "")
+    for k, m in enumerate(models):
+        g = f["models"][m]
+        x, y = g["input"][()], g["input_load"][()]
+        idx = np.arange(len(x))
+        colour = f"C{k}"
+        rec.line(ax, x, y, "-", color=colour, label=m if m != "prbm" else "PRBM",
+                 x_src=(f"models/{m}/input", idx), y_src=(f"models/{m}/input_load", idx),
+                 x_scale=xs, y_scale=ys, panel="input_load:" + m)
+        unstable = g["stability_displacement_control"][()] == 1
+        if unstable.any():
+            rec.line(ax, x[unstable], y[unstable], "o", ms=4, mfc="none", color=colour, ls="none",
+                     label=f"{m}: unstable, input held", x_src=(f"models/{m}/input",
+                                                                idx[unstable]),
+                     y_src=(f"models/{m}/input_load", idx[unstable]), x_scale=xs, y_scale=ys,
+                     panel="unstable:" + m)
+        lim = g["limit_points"]
+        if len(lim["input"]):
+            n = np.arange(len(lim["input"]))
+            rec.line(ax, lim["input"][()], lim["input_load"][()], "x", ms=8, mew=2, color=colour,
+                     ls="none", label=f"{m}: limit points",
+                     x_src=(f"models/{m}/limit_points/input", n),
+                     y_src=(f"models/{m}/limit_points/input_load", n), x_scale=xs, y_scale=ys,
+                     panel="limit:" + m)
+        eq = g["equilibria"]
+        if len(eq["input"]):
+            code = eq["stability_force_control"][()]
+            e = eq["input"][()]
+            # 0 stable, 1 unstable, 2 critical, 4 not checked (the exact model judges none).
+            for mask, fill, word in ((code == 0, colour, "stable"),
+                                     ((code == 1) | (code == 2), "none", "unstable"),
+                                     (code >= 3, "0.6", "not judged")):
+                if mask.any():
+                    rec.line(ax, e[mask], np.zeros(int(mask.sum())), "D", ms=6, mfc=fill,
+                             color=colour, ls="none", label=f"{m}: {word} equilibrium",
+                             x_src=(f"models/{m}/equilibria/input", np.arange(len(e))[mask]),
+                             x_scale=xs, panel=f"equilibria:{m}:{word}")
+    ax.axhline(0.0, color="0.5", lw=0.8)
+    what = "angle" if coordinate == "angle" else coordinate
+    ax.set_xlabel(label(f"input {what} of {body}", xu))
+    ax.set_ylabel(label("input " + ("moment" if coordinate == "angle" else "force")
+                        + f" ({attr(f, 'control', 'displacement')} control)", yu))
+    ax.set_title(f"{attr(f, 'mechanism', '')}: model {attr(f, 'model', '')}")
+    ax.grid(True, alpha=0.3)
+    legend_beside(ax)
+    row = 1
+    if design:
+        da = axes[row]
+        ls_, lu = display(f["displacement"], "m")
+        fs_, fu = display(f["force"], "N")
+        idx = np.arange(len(f["displacement"]))
+        rec.line(da, f["displacement"][()], f["force"][()], "o-", ms=3, color="C0",
+                 label=first, x_src=("displacement", idx), y_src=("force", idx), x_scale=ls_,
+                 y_scale=fs_, panel="force")
+        da.set_xlabel(label("slider displacement Delta x", lu))
+        da.set_ylabel(label(f"slider force F, {attr(f, 'force_of', 'one half')}", fu))
+        da.grid(True, alpha=0.3)
+        legend_beside(da)
+        row += 1
+    if has_energy:
+        ea = axes[row]
+        for k, m in enumerate(models):
+            g = f["models"][m]
+            idx = np.arange(len(g["input"]))
+            rec.line(ea, g["input"][()], g["energy"][()], "-", color=f"C{k}", label=m,
+                     x_src=(f"models/{m}/input", idx), y_src=(f"models/{m}/energy", idx),
+                     x_scale=xs, panel="energy:" + m)
+        ea.set_xlabel(label(f"input {what} of {body}", xu))
+        ea.set_ylabel(label("potential energy", "J"))
+        ea.grid(True, alpha=0.3)
+        legend_beside(ea)
+    fig.tight_layout()
+    return fig

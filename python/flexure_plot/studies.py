@@ -18,17 +18,29 @@ def _model_groups(f):
     return sorted(names, key=lambda n: LADDER.index(n) if n in LADDER else len(LADDER))
 
 
-def draw_models(f, plt, rec, n_value=0.0):
+def draw_models(f, plt, rec, n_value=None):
+    """The maps over alpha2 x mu (free end) or alpha2 x tip_angle (guided) at the load ratio
+    `n_value` (one of the file's n; None: the n nearest 0), or over alpha2 x n when the file has
+    one mu or tip angle (then `n_value` is refused: the plane has every n)."""
     names = _model_groups(f)
     third = "tip_angle" if "tip_angle" in f else "mu"
     n = f["n"][()]
     shape = f[names[0] + "/position_error"].shape
+    if n_value is not None and not np.isfinite(n_value):
+        raise PlotError(f"plot: --n must be a finite number, got {n_value}")
     if len(f[third]) > 1 or len(n) == 1:
-        i = int(np.argmin(np.abs(n - n_value)))
+        i = int(np.argmin(np.abs(n - (0.0 if n_value is None else n_value))))
+        if n_value is not None and abs(n[i] - n_value) > 1e-9 * max(1.0, abs(n_value)):
+            raise PlotError(f"plot: --n {n_value:g} is not a load ratio of the map; its n: "
+                            + ", ".join(f"{v:g}" for v in n))
         xname, yname = "alpha2", third
         flat = i * shape[1] * shape[2] + np.arange(shape[1])[None, :] * shape[2] \
             + np.arange(shape[2])[:, None]  # [y = third, x = alpha2]
         fixed = f"n = {n[i]:g}"
+    elif n_value is not None:
+        raise PlotError(f"plot: --n {n_value:g}: this map has one {third} ({f[third][0]:g}) and "
+                        f"is drawn over alpha2 x n, every n at once; --n picks a plane only in a "
+                        f"map with several {third} values")
     else:
         xname, yname = "alpha2", "n"
         flat = np.arange(shape[0])[:, None] * shape[1] * shape[2] \

@@ -64,5 +64,37 @@ TEST(CsvTable, TableOfAnHdf5GridExpandsTheAxesRowMajor) {
   EXPECT_EQ(c[2].numbers, (std::vector<double>{0, 1, 2, 3, 4, 5}));
 }
 
+// A mechanism's force columns say whose force they are (docs/cli.md "CSV output"): the unit N
+// becomes "N (half)" or "N (whole)" by the file's root attribute force_of; other units stay.
+TEST(CsvTable, ForceColumnsSayWhoseForce) {
+  EXPECT_EQ(force_unit("one half"), "N (half)");
+  EXPECT_EQ(force_unit("whole"), "N (whole)");
+  EXPECT_THROW(force_unit("both halves"), std::invalid_argument);
+  std::vector<CsvColumn> columns = {{"force_prbm", "N", {1.0}, {}}, {"stress", "Pa", {2.0}, {}}};
+  mark_force_columns(columns, "whole symmetric mechanism");
+  EXPECT_EQ(csv_text(columns), "force_prbm [N (whole)],stress [Pa]\n1,2\n");
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / "flexure_csv_writer_force_of_test.h5";
+  for (const char* of : {"one half", "whole symmetric mechanism", ""}) {
+    {
+      AtomicHdf5File file(path.string());
+      Hdf5Group& root = file.root();
+      if (*of != '\0') root.set_attribute("force_of", of);
+      root.write_dataset("displacement", std::vector<double>{1.0, 2.0}, "m", "axis");
+      root.write_dataset("force_exact", std::vector<double>{3.0, 4.0}, "N", "a force");
+      write_provenance(root, {});
+      file.commit();
+    }
+    const std::vector<CsvColumn> c = csv_columns_from_hdf5(path.string(), {"displacement"});
+    std::filesystem::remove(path);
+    ASSERT_EQ(c.size(), 2u);
+    EXPECT_EQ(c[0].unit, "m");
+    EXPECT_EQ(c[1].unit,
+              std::string(of) == "one half" ? "N (half)"
+              : *of != '\0'                 ? "N (whole)"
+                                            : "N");
+  }
+}
+
 }  // namespace
 }  // namespace flexure::io

@@ -22,19 +22,20 @@ def run(args, cwd):
 
 
 def read_csv(path):
-    """{name: (unit, values)}: numbers as floats (an empty field is NaN), text as strings."""
+    """{name: (unit, values, of)}: numbers as floats (an empty field is NaN), text as strings;
+    `of` is a force's "half" or "whole" (the unit `N (half)`), else None."""
     with open(path, newline="") as f:
         rows = list(csv.reader(f))
     header, body = rows[0], rows[1:]
     table = {}
     for k, field in enumerate(header):
-        m = re.fullmatch(r"(.+) \[(.+)\]", field)
+        m = re.fullmatch(r"(.+) \[(.+?)(?: \((half|whole)\))?\]", field)
         assert m, f"header field without a unit: {field!r}"
-        name, unit = m.groups()
+        name, unit, of = m.groups()
         column = [r[k] for r in body]
         if unit != "text":
             column = np.array([float(v) if v != "" else np.nan for v in column])
-        table[name] = (unit, column)
+        table[name] = (unit, column, of)
     return table
 
 
@@ -52,6 +53,12 @@ def test_mechanism_stroke_csv_equals_the_json(tmp_path):
     t = read_csv(tmp_path / "stroke.csv")
     assert t["displacement"][0] == "m" and t["force_prbm"][0] == "N"
     assert t["stress_exact_pivot1"][0] == "Pa"
+    # Whose force: the header's unit says "N (half)", as the JSON's force_of says one half.
+    assert j["force_of"] == "one half"
+    assert t["force_prbm"][2] == "half" and t["force_exact"][2] == "half"
+    assert t["displacement"][2] is None and t["stress_exact_pivot1"][2] is None
+    # The stored shapes (/shapes, one row per converged exact point) are not the stroke's table.
+    assert not any(k.startswith("shapes/") for k in t)
     for key in ("displacement", "force_prbm", "force_exact", "prbm_within_validity"):
         exact_equal(t[key][1], j[key], key)
     assert len(t["displacement"][1]) == 8
@@ -145,6 +152,10 @@ def test_design_mechanism_csv_equals_the_json_designs(tmp_path):
                       ("safety_factor_exact", "1"), ("percent_constant_force_exact", "%")):
         assert t[key][0] == unit, key
         exact_equal(t[key][1], [d[key] for d in designs], key)
+    # --force-of whole: the forces' unit says so, as the JSON's force_of does.
+    assert json.loads(p.stdout)["force_of"] == "whole symmetric mechanism"
+    assert t["force_prbm"][2] == "whole" and t["force_exact"][2] == "whole"
+    assert t["yield_strength"][2] is None
     # Per-flexure arrays: one column per entry, NaN where a design has fewer flexures.
     width = max(len(d["thicknesses"]) for d in designs)
     for i in range(width):
@@ -179,6 +190,9 @@ def test_dynamics_csv_equals_the_json(tmp_path):
     t = read_csv(tmp_path / "d.csv")
     assert t["omega"][0] == "rad/s" and t["mean_force"][0] == "N"
     assert t["percent_constant_force"][0] == "%"
+    # dynamics reports the whole mechanism's forces by default, and the header says so.
+    assert j["force_of"] == "whole symmetric mechanism"
+    assert t["mean_force"][2] == "whole" and t["peak_to_peak_force"][2] == "whole"
     for key in ("omega", "mean_force", "median_force", "min_force", "max_force",
                 "peak_to_peak_force", "percent_constant_force"):
         exact_equal(t[key][1], j[key], key)
@@ -240,7 +254,7 @@ def test_mechanism_tolerance_csv_is_the_samples_of_the_file(tmp_path):
     assert t["mean_force_prbm"][0] == "N" and t["percent_constant_force_prbm"][0] == "%"
     # Only the thicknesses were spread: their draws are within the normal cut (3.5 sigma), the
     # widths' and lengths' are exactly 0.
-    for name, (unit, values) in t.items():
+    for name, (unit, values, _) in t.items():
         if name.startswith("draws/thickness"):
             assert np.all(np.abs(values) <= 3.5 * 0.03) and np.any(values != 0)
         elif name.startswith("draws/"):
@@ -331,3 +345,65 @@ Fy = 20.0
     with h5py.File(tmp_path / "si.h5", "r") as f:
         assert f.attrs["units"] == "SI"
         assert f["tip_y"].attrs["units"] == "m" and f["reaction_Fy"].attrs["units"] == "N"
+
+
+SWITCH = os.path.join(os.path.dirname(__file__), "..", "..", "docs", "examples",
+                      "howell_bistable_switch.toml")
+
+
+def test_general_mechanism_out_and_csv_equal_the_json(tmp_path):
+    # A general mechanism file, both models: the HDF5 file and the CSV hold the JSON's numbers.
+    p = run(["mechanism", "analyze", SWITCH, "--model", "both", "--input", "-5deg:33deg:20",
+             "--out", "g.h5", "--csv", "g.csv", "--json"], tmp_path)
+    assert p.returncode == 0, p.stderr
+    j = json.loads(p.stdout)
+    assert j["out"] == "g.h5" and j["csv"] == "g.csv"
+    t = read_csv(tmp_path / "g.csv")
+    assert t["input"][0] == "rad" and t["input_load"][0] == "N m" and t["energy"][0] == "J"
+    for key in ("input", "input_load", "energy"):
+        exact_equal(t[key][1], j[key], key)
+    exact_equal(t["stability_displacement_control_margin"][1],
+                j["stability"]["displacement_control_margin"], "margin")
+    assert t["stability_force_control"][1] == j["stability"]["force_control"]
+    exact_equal(t["exact/input_load"][1], j["models"]["exact"]["input_load"], "exact load")
+    with h5py.File(tmp_path / "g.h5", "r") as f:
+        assert f.attrs["model"] in ("both", b"both") and f.attrs["input_unit"] in ("rad", b"rad")
+        for name in ("prbm", "exact"):
+            m, g = j["models"][name], f["models"][name]
+            for key in ("input", "input_load", "energy"):
+                exact_equal(g[key][()], m[key], f"{name}/{key}")
+            exact_equal(g["equilibria/input"][()], [e["input"] for e in m["equilibria"]],
+                        f"{name} equilibria")
+            kinds = ["stable", "unstable", "critical", "not_conservative", "not_checked"]
+            assert [kinds[c] for c in g["equilibria/stability_force_control"][()]] == \
+                [e["stability"] for e in m["equilibria"]]
+            exact_equal(g["limit_points/input"][()], [e["input"] for e in m["limit_points"]],
+                        f"{name} limit points")
+        exact_equal(f["input_load"][()], j["input_load"], "root = first model")
+    # --out FILE.csv alone: the same table, no HDF5 file.
+    p = run(["mechanism", "analyze", SWITCH, "--model", "both", "--input", "-5deg:33deg:20",
+             "--out", "only.csv"], tmp_path)
+    assert p.returncode == 0, p.stderr
+    assert (tmp_path / "only.csv").read_text() == (tmp_path / "g.csv").read_text()
+
+
+def test_mixed_model_of_a_design_csv_has_the_stroke_and_says_half(tmp_path):
+    p = run(["mechanism", "analyze", "3A-sss", "--model", "mixed", "--flexure-model", "exact",
+             "--points", "6", "--out", "d.csv", "--json"], tmp_path)
+    assert p.returncode == 0, p.stderr
+    j = json.loads(p.stdout)
+    t = read_csv(tmp_path / "d.csv")
+    assert t["displacement"][0] == "m" and t["force"][0] == "N"
+    assert t["force"][2] == "half" and j["force_of"] == "half"
+    exact_equal(t["displacement"][1], j["displacement"], "displacement")
+    exact_equal(t["force"][1], j["force"], "force")
+    exact_equal(t["input_load"][1], [-v for v in j["force"]], "input load = -force")
+    assert sorted(os.listdir(tmp_path)) == ["d.csv"]
+
+
+def test_general_mechanism_bad_outputs_are_refused_before_solving(tmp_path):
+    p = run(["mechanism", "analyze", SWITCH, "--out", "nodir/g.h5"], tmp_path)
+    assert p.returncode == 2 and "nodir/g.h5" in p.stderr
+    p = run(["mechanism", "analyze", SWITCH, "--out", "g.csv", "--csv", "h.csv"], tmp_path)
+    assert p.returncode == 2 and "CSV file already" in p.stderr
+    assert os.listdir(tmp_path) == []

@@ -26,6 +26,14 @@ CASES = [
     ("stroke.h5", "mechanism-analyze", "mechanism analyze 1A-lpp --method exact --points 6",
      ["displacement", "force_prbm", "force_exact", "stress_prbm_pivot1", "shapes/x",
       "shapes/rest_x"]),
+    ("general.h5", "mechanism-general",
+     f"mechanism analyze {ROOT}/docs/examples/howell_bistable_switch.toml --model both "
+     "--input -5deg:33deg:20",
+     ["models/prbm/input", "models/prbm/input_load", "models/exact/input_load",
+      "models/prbm/equilibria/input", "models/exact/energy"]),
+    ("mixed.h5", "mechanism-general",
+     "mechanism analyze 3A-sss --model mixed --flexure-model exact --points 6",
+     ["displacement", "force", "models/mixed/input_load"]),
     ("designs.h5", "mechanism-validate", "mechanism validate --points 6 --designs howell",
      ["percent_constant_force", "safety_factor"]),
     ("tolerance.h5", "mechanism-tolerance",
@@ -361,3 +369,74 @@ def test_tolerance_plot_states_which_force(files, tmp_path):
                 "--dump-json", str(dump)]).returncode == 0
     series = {s["panel"]: s for s in json.loads(dump.read_text())["series"]}
     assert "one half" in series["mean_force_prbm"]["label"]
+
+
+def test_no_stress_and_n_are_forwarded_and_refused_for_other_files(files, tmp_path):
+    # --no-stress: the stroke's figure without its stress panel (with it by default).
+    for extra, has_stress in (([], True), (["--no-stress"], False)):
+        dump = tmp_path / "s.json"
+        p = run(["plot", str(files / "stroke.h5"), "--out", str(tmp_path / "s.png"),
+                 "--dump-json", str(dump), *extra])
+        assert p.returncode == 0, p.stderr
+        panels = {s["panel"] for s in json.loads(dump.read_text())["series"]}
+        assert ("stress" in panels) == has_stress and "force" in panels
+    # --n picks the plane of a map with two load ratios: the drawn errors are the file's at n = 1.
+    maps = tmp_path / "two_n.h5"
+    assert run(["models", "map", "--n", "0:1:2", "--alpha2", "0.5:5:3", "--mu", "-1:1:3",
+                "--min-seconds", "0", "--models", "prbm", "--out", str(maps)]).returncode == 0
+    for n, index in ((None, 0), (1.0, 1)):
+        dump = tmp_path / "m.json"
+        p = run(["plot", str(maps), "--out", str(tmp_path / "m.png"), "--dump-json", str(dump),
+                 *([] if n is None else ["--n", str(n)])])
+        assert p.returncode == 0, p.stderr
+        [series] = [s for s in json.loads(dump.read_text())["series"] if s["panel"] == "prbm"]
+        with h5py.File(maps, "r") as f:
+            expected = f["prbm/position_error"][()][index]  # [alpha2, mu] at this n
+        np.testing.assert_array_equal(as_array(series["z"]), expected.T.ravel())
+    # Refusals (exit 2, nothing written): an n not in the file, --n or --no-stress on another kind.
+    for args, words in ((["--n", "0.5"], "not a load ratio of the map; its n: 0, 1"),):
+        p = run(["plot", str(maps), "--out", str(tmp_path / "x.png"), *args])
+        assert p.returncode == 2 and words in p.stderr, p.stderr
+    p = run(["plot", str(files / "models.h5"), "--out", str(tmp_path / "x.png"), "--n", "0"])
+    assert p.returncode == 0, p.stderr  # its one n
+    for args, words in ((["--no-stress"], "--no-stress"), (["--n", "0"], "--n picks")):
+        p = run(["plot", str(files / "sweep.h5"), "--out", str(tmp_path / "y.png"), *args])
+        assert p.returncode == 2 and words in p.stderr and "`sweep` file" in p.stderr, p.stderr
+        assert not (tmp_path / "y.png").exists()
+    single = tmp_path / "single_mu.h5"
+    assert run(["models", "map", "--n", "0:1:2", "--alpha2", "0.5:5:3", "--mu", "0",
+                "--min-seconds", "0", "--models", "prbm", "--out", str(single)]).returncode == 0
+    p = run(["plot", str(single), "--out", str(tmp_path / "z.png"), "--n", "1"])
+    assert p.returncode == 2 and "every n at once" in p.stderr, p.stderr
+
+
+def test_benchmark_charts_are_drawn_from_the_file(files, tmp_path):
+    # scripts/plot_benchmarks.py draws through the package (flexure_plot/bench.py): each method's
+    # point of the accuracy chart is its worst converged error and median time in the file.
+    import sys
+    sys.path.insert(0, os.path.join(ROOT, "python"))
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from flexure_plot import bench
+    from flexure_plot._common import Recorder
+    rec = Recorder()
+    with h5py.File(files / "bench.h5", "r") as f:
+        fig = bench.draw_pareto(f, plt, rec)
+        assert bench.draw_stability(f, plt, Recorder()) is None  # no cantilever_force in it
+        points = {s["panel"]: s["y"] for s in rec.series}
+        checked = 0
+        for problem in f:
+            for method in f[problem]:
+                g = f[problem][method]
+                ok = g["status"][()] == 0
+                if method == "reference" or not ok.any():
+                    continue
+                worst = max(float(np.max(g["error_relative"][()][ok])), 1e-16)
+                assert points[f"pareto:{problem}:{method}"] == pytest.approx(
+                    [float(np.median(g["seconds"][()])), worst], rel=1e-12)
+                checked += 1
+        assert checked >= 2
+    texts = [t for ax in fig.axes for t in ax.texts]
+    assert all(t.get_fontsize() >= 9 for t in texts)
+    plt.close(fig)

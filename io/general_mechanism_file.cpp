@@ -1,0 +1,352 @@
+#include "flexure/io/general_mechanism_file.h"
+
+#include <fmt/format.h>
+
+#include <cstdint>
+#include <limits>
+#include <span>
+
+#include "flexure/io/provenance.h"
+#include "flexure/solver/common/errors.h"
+
+namespace flexure::io {
+namespace {
+
+using mechanism::general::FlexureModelReport;
+using mechanism::general::GeneralPrbmPoint;
+using mechanism::general::GeneralPrbmResult;
+using mechanism::general::Input;
+using mechanism::general::InputCoordinate;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+template <typename F>
+std::vector<double> per_point(const GeneralPrbmResult& r, F value) {
+  std::vector<double> out;
+  out.reserve(r.points.size());
+  for (const GeneralPrbmPoint& p : r.points) out.push_back(value(p));
+  return out;
+}
+
+template <typename F>
+std::vector<int> codes_per_point(const GeneralPrbmResult& r, F value) {
+  std::vector<int> out;
+  out.reserve(r.points.size());
+  for (const GeneralPrbmPoint& p : r.points) out.push_back(static_cast<int>(value(p).kind));
+  return out;
+}
+
+// The meanings of the `stability` codes (StabilityKind in its enum order), as the constant-force
+// stroke's file gives them.
+std::vector<CodeMeaning> stability_code_meanings() {
+  std::vector<CodeMeaning> codes;
+  for (const char* name : {"stability_displacement_control", "stability_force_control"}) {
+    codes.push_back({name, 0, "stable: the potential energy has a strict minimum"});
+    codes.push_back({name, 1, "unstable: some direction in which the energy decreases"});
+    codes.push_back(
+        {name, 2, "critical: the lowest eigenvalue is zero within 1e-6 (a limit point)"});
+    codes.push_back({name, 3, "not_conservative: never for a mechanism"});
+    codes.push_back({name, 4, "not_checked: no verdict at this point"});
+  }
+  return codes;
+}
+
+// input, input_load, energy and the stability of every point of one model into `g`.
+void write_path(Hdf5Group& g, const GeneralPrbmResult& r, const Input& in, const std::string& who) {
+  const std::string unit = general_input_unit(in), load_unit = general_input_load_unit(in);
+  const std::vector<double> input = per_point(r, [](const auto& p) { return p.input; });
+  const std::vector<double> load = per_point(r, [](const auto& p) { return p.input_load; });
+  const std::vector<double> energy = per_point(r, [](const auto& p) { return p.energy; });
+  g.write_dataset("input",
+                  std::span<const double>(input),
+                  unit,
+                  fmt::format("{}: the input coordinate ({} of body {}) at each point, in path "
+                              "order",
+                              who,
+                              input_coordinate_name(in.coordinate),
+                              in.body));
+  g.write_dataset("input_load",
+                  std::span<const double>(load),
+                  load_unit,
+                  fmt::format("{}: the {} that holds the input there (dV/ds, virtual work)",
+                              who,
+                              in.coordinate == InputCoordinate::kAngle ? "moment" : "force"));
+  g.write_dataset("energy",
+                  std::span<const double>(energy),
+                  "J",
+                  who +
+                      ": potential energy (springs minus the dead loads' work); NaN where a "
+                      "flexure's model has no shape energy");
+  for (const char* control : {"displacement_control", "force_control"}) {
+    const bool dc = std::string(control) == "displacement_control";
+    auto pick = [dc](const GeneralPrbmPoint& p) -> const Stability& {
+      return dc ? p.displacement_control : p.force_control;
+    };
+    const std::vector<int> kind = codes_per_point(r, pick);
+    const std::vector<double> margin = per_point(r, [&](const auto& p) { return pick(p).margin; });
+    const std::string held = dc ? "with the input held"
+                                : "under a dead input load equal to its "
+                                  "load there";
+    g.write_dataset(std::string("stability_") + control,
+                    std::span<const int>(kind),
+                    "1",
+                    fmt::format("{}: verdict per point {}: 0 stable, 1 unstable, 2 critical, 4 not "
+                                "checked (root status_meanings)",
+                                who,
+                                held));
+    g.write_dataset(std::string("stability_") + control + "_margin",
+                    std::span<const double>(margin),
+                    "1",
+                    who +
+                        ": lowest eigenvalue of the energy's Hessian on the constraint manifold "
+                        "relative to the springs' unloaded stiffness (1 unloaded, 0 critical)");
+  }
+}
+
+void write_equilibria_and_limits(Hdf5Group& g, const GeneralPrbmResult& r, const Input& in) {
+  const std::string unit = general_input_unit(in), load_unit = general_input_load_unit(in);
+  Hdf5Group eq = g.create_group("equilibria");
+  std::vector<double> input, energy, margin;
+  std::vector<int> kind;
+  for (const auto& e : r.equilibria) {
+    input.push_back(e.input);
+    energy.push_back(e.energy);
+    kind.push_back(static_cast<int>(e.stability.kind));
+    margin.push_back(e.stability.margin);
+  }
+  eq.write_dataset("input",
+                   std::span<const double>(input),
+                   unit,
+                   "the input at each equilibrium of the unloaded mechanism (zero input load)");
+  eq.write_dataset("energy", std::span<const double>(energy), "J", "its potential energy");
+  eq.write_dataset("stability_force_control",
+                   std::span<const int>(kind),
+                   "1",
+                   "its verdict with the input free: 0 stable, 1 unstable, 2 critical");
+  eq.write_dataset("stability_force_control_margin",
+                   std::span<const double>(margin),
+                   "1",
+                   "its lowest eigenvalue relative to the springs' unloaded stiffness");
+  Hdf5Group lim = g.create_group("limit_points");
+  lim.write_dataset("input",
+                    std::span<const double>(r.limit_inputs),
+                    unit,
+                    "the input at each limit point of the controlled quantity along the path");
+  lim.write_dataset(
+      "input_load", std::span<const double>(r.limit_loads), load_unit, "the input load there");
+}
+
+void write_bodies(Hdf5Group& g, const GeneralPrbmResult& r) {
+  if (r.body_names.empty() || r.points.empty()) return;
+  Hdf5Group b = g.create_group("bodies");
+  const std::size_t n = r.points.size(), m = r.body_names.size();
+  b.write_dataset("name", r.body_names, "text", "the described moving bodies, in column order");
+  for (const char* which : {"x", "y", "phi"}) {
+    std::vector<double> values;
+    values.reserve(n * m);
+    for (const GeneralPrbmPoint& p : r.points) {
+      const std::vector<double>& v = std::string(which) == "x"   ? p.body_x
+                                     : std::string(which) == "y" ? p.body_y
+                                                                 : p.body_phi;
+      for (std::size_t k = 0; k < m; ++k) values.push_back(k < v.size() ? v[k] : kNaN);
+    }
+    const bool angle = std::string(which) == "phi";
+    b.write_dataset(which,
+                    std::span<const double>(values),
+                    {static_cast<hsize_t>(n), static_cast<hsize_t>(m)},
+                    angle ? "rad" : "m",
+                    fmt::format("[point, body]: each body's {} from the described configuration",
+                                angle ? "rotation" : std::string(which) + " displacement"));
+  }
+}
+
+void write_flexure_models(Hdf5Group& g,
+                          const std::vector<FlexureModelReport>& reports,
+                          bool checked) {
+  if (reports.empty()) return;
+  Hdf5Group all = g.create_group("flexure_models");
+  for (const FlexureModelReport& r : reports) {
+    Hdf5Group f = all.create_group(r.name);
+    f.set_attribute("requested", std::string(flexure_model_name(r.requested)));
+    f.set_attribute("model", std::string(flexure_model_name(r.model)));
+    f.set_attribute("method_reason", r.reason);
+    f.set_attribute("expected_error_per_length", r.expected_error_per_length);
+    f.set_attribute("unmapped_points", static_cast<std::int64_t>(r.unmapped_points));
+    if (r.requested == mechanism::general::FlexureModel::kAuto) {
+      f.set_attribute("tolerance", r.tolerance);
+    }
+    std::vector<double> fx, fy, mu;
+    for (const auto& l : r.loads) {
+      fx.push_back(l.Fx);
+      fy.push_back(l.Fy);
+      mu.push_back(l.mu);
+    }
+    f.write_dataset("tip_load_Fx",
+                    std::span<const double>(fx),
+                    "1",
+                    "tip force along the flexure's chord per point, F l^2/EI");
+    f.write_dataset("tip_load_Fy",
+                    std::span<const double>(fy),
+                    "1",
+                    "tip force across the flexure per point, F l^2/EI");
+    f.write_dataset(
+        "tip_load_mu", std::span<const double>(mu), "1", "tip moment per point, M l/EI");
+    f.write_dataset("mapped_error_per_length",
+                    std::span<const double>(r.mapped_error),
+                    "1",
+                    "the model's mapped tip error per length at each point (NaN: not mapped)");
+    if (checked) {
+      f.set_attribute("measured_error_per_length", r.measured_error_per_length);
+      f.write_dataset("measured_error_per_length",
+                      std::span<const double>(r.measured_error),
+                      "1",
+                      "|model tip - elastica tip| per length under the same loads, per point");
+    }
+  }
+}
+
+CsvColumn numbers(std::string name, std::string unit, std::vector<double> values) {
+  CsvColumn c{std::move(name), std::move(unit), std::move(values), {}};
+  return c;
+}
+
+CsvColumn texts(std::string name, std::vector<std::string> values) {
+  CsvColumn c{std::move(name), "text", {}, std::move(values)};
+  return c;
+}
+
+// The columns of one model's path, prefixed by `prefix` ("" or "exact/").
+void add_path_columns(std::vector<CsvColumn>& columns,
+                      const GeneralPrbmResult& r,
+                      const Input& in,
+                      const std::string& prefix,
+                      bool with_input) {
+  if (with_input) {
+    columns.push_back(numbers(prefix + "input",
+                              general_input_unit(in),
+                              per_point(r, [](const auto& p) { return p.input; })));
+  }
+  columns.push_back(numbers(prefix + "input_load",
+                            general_input_load_unit(in),
+                            per_point(r, [](const auto& p) { return p.input_load; })));
+  columns.push_back(
+      numbers(prefix + "energy", "J", per_point(r, [](const auto& p) { return p.energy; })));
+  for (const char* control : {"displacement_control", "force_control"}) {
+    const bool dc = std::string(control) == "displacement_control";
+    std::vector<std::string> kind;
+    std::vector<double> margin;
+    for (const GeneralPrbmPoint& p : r.points) {
+      const Stability& s = dc ? p.displacement_control : p.force_control;
+      kind.emplace_back(stability_name(s.kind));
+      margin.push_back(s.margin);
+    }
+    columns.push_back(texts(prefix + "stability_" + control, std::move(kind)));
+    columns.push_back(numbers(prefix + "stability_" + control + "_margin", "1", std::move(margin)));
+  }
+}
+
+void check(const GeneralAnalysisOutput& out) {
+  if (out.mechanism == nullptr || out.results.empty()) {
+    throw std::invalid_argument("general mechanism output: no mechanism or no model solved");
+  }
+}
+
+}  // namespace
+
+std::vector<double> design_stroke_displacement(const GeneralPrbmResult& r, double x0) {
+  return per_point(r, [x0](const GeneralPrbmPoint& p) { return x0 - p.input; });
+}
+
+std::vector<double> design_stroke_force(const GeneralPrbmResult& r) {
+  return per_point(r, [](const GeneralPrbmPoint& p) { return -p.input_load; });
+}
+
+std::string general_input_unit(const Input& input) {
+  return input.coordinate == InputCoordinate::kAngle ? "rad" : "m";
+}
+
+std::string general_input_load_unit(const Input& input) {
+  return input.coordinate == InputCoordinate::kAngle ? "N m" : "N";
+}
+
+void write_general_mechanism(Hdf5Group& root, const GeneralAnalysisOutput& out) {
+  check(out);
+  const mechanism::general::GeneralMechanism& m = *out.mechanism;
+  const Input& in = m.input;
+  const GeneralPrbmResult& first = *out.results.front().second;
+  root.set_attribute("mechanism", m.name);
+  root.set_attribute("form", "general");
+  root.set_attribute("model", out.model);
+  root.set_attribute("first_model", out.results.front().first);
+  root.set_attribute("input_body", in.body);
+  root.set_attribute("input_coordinate", std::string(input_coordinate_name(in.coordinate)));
+  root.set_attribute("control", std::string(input_control_name(in.control)));
+  root.set_attribute("input_unit", general_input_unit(in));
+  root.set_attribute("input_load_unit", general_input_load_unit(in));
+  root.set_attribute("degrees_of_freedom", static_cast<std::int64_t>(first.degrees_of_freedom));
+  if (out.design_x0) {
+    // The slider force of one half, as `mechanism analyze` reports a built-in design.
+    root.set_attribute("force_of", "one half");
+    const std::vector<double> dx = design_stroke_displacement(first, *out.design_x0);
+    const std::vector<double> force = design_stroke_force(first);
+    root.write_dataset("displacement",
+                       std::span<const double>(dx),
+                       "m",
+                       "slider displacement Delta x (inwards) at each point of the first model");
+    root.write_dataset("force",
+                       std::span<const double>(force),
+                       "N",
+                       "slider input force of one half (positive pushes the slider inward), the "
+                       "first model's");
+  }
+  write_path(root, first, in, out.results.front().first);
+  Hdf5Group models = root.create_group("models");
+  for (const auto& [name, r] : out.results) {
+    Hdf5Group g = models.create_group(name);
+    g.set_attribute("termination", std::string(termination_name(r->termination)));
+    g.set_attribute("steps", static_cast<std::int64_t>(r->iterations));
+    write_path(g, *r, in, name);
+    write_equilibria_and_limits(g, *r, in);
+    write_bodies(g, *r);
+    write_flexure_models(g, r->flexure_models, out.checked_flexures);
+  }
+  write_provenance(root, stability_code_meanings());
+}
+
+std::vector<CsvColumn> general_mechanism_csv_columns(const GeneralAnalysisOutput& out,
+                                                     std::string* note) {
+  check(out);
+  const Input& in = out.mechanism->input;
+  const GeneralPrbmResult& first = *out.results.front().second;
+  std::vector<CsvColumn> columns;
+  if (out.design_x0) {
+    columns.push_back(
+        numbers("displacement", "m", design_stroke_displacement(first, *out.design_x0)));
+    // The unit says whose force it is (docs/cli.md "CSV output").
+    columns.push_back(numbers("force", force_unit("half"), design_stroke_force(first)));
+  }
+  add_path_columns(columns, first, in, "", true);
+  for (std::size_t k = 1; k < out.results.size(); ++k) {
+    const auto& [name, r] = out.results[k];
+    bool same = r->points.size() == first.points.size();
+    for (std::size_t i = 0; same && i < first.points.size(); ++i) {
+      same = r->points[i].input == first.points[i].input;
+    }
+    if (!same) {
+      if (note != nullptr) {
+        *note += fmt::format(
+            "the CSV holds the {} model only: the {} model's {} points do not lie at its {} "
+            "inputs (a limit point crossed); the --out HDF5 file holds both",
+            out.results.front().first,
+            name,
+            r->points.size(),
+            first.points.size());
+      }
+      continue;
+    }
+    add_path_columns(columns, *r, in, name + "/", false);
+  }
+  return columns;
+}
+
+}  // namespace flexure::io
