@@ -19,13 +19,20 @@ The tables:
 Every error is |(a, b) - (a, b)_exact| / l against the elliptic solution (the shooting method for
 the guided end). Numbers are printed to two significant digits (scientific below 0.1), orders to
 two decimals. tests/elements/ladder_convergence_test.cpp checks the same tables' claims in C++.
+
+--check also reruns the three `flexure models map` commands of docs/models.md "The map" (with
+--flexure, default build/flexure; about 5 s) and compares the document's map tables with
+scripts/plot_models.py's table of each file: every column but the median time (a timing of one
+machine), the shares and counts exactly, the errors to their two printed digits.
 """
 import argparse
 import difflib
 import math
 import os
 import re
+import subprocess
 import sys
+import tempfile
 import warnings
 
 import numpy as np
@@ -154,6 +161,78 @@ def blocks_of(path):
     return {m.group(1): m.group(2) for m in re.finditer(pattern, doc, re.S)}
 
 
+# The maps of docs/models.md "The map": the heading of each table and its command's arguments.
+MAPS = [
+    ("### Large loads, free end", ["models", "map"]),
+    ("### Small loads, free end",
+     ["models", "map", "--n", "0", "--alpha2", "0.02:1:50", "--mu=-0.5:0.5:11"]),
+    ("### Guided end", ["models", "map", "--boundary", "guided", "--n=-0.5:1:4",
+                        "--alpha2", "0.5:20:20", "--tip-angle=-0.3:0.3:3"]),
+]
+
+
+def table_rows(lines):
+    """The body rows of the first Markdown table in `lines`, by model name (first cell)."""
+    rows, inside = {}, False
+    for line in lines:
+        if line.startswith("|---"):
+            inside = True
+        elif inside and line.startswith("|"):
+            cells = [c.strip() for c in line.strip().strip("|").split("|")]
+            rows[cells[0]] = cells
+        elif inside:
+            break
+    return rows
+
+
+def same_number(documented, measured):
+    """`documented` is `measured` printed to two significant digits (any format)."""
+    try:
+        d, m = float(documented), float(measured)
+    except ValueError:
+        return documented == measured
+    if m == 0.0:
+        return d == 0.0
+    return abs(d - m) <= 0.51 * 10.0 ** (math.floor(math.log10(abs(m))) - 1)
+
+
+def check_maps(doc_path, flexure_binary):
+    """Differences between the document's map tables and the maps computed now (list of text)."""
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import contextlib
+    import io
+
+    import h5py
+    import plot_models
+    with open(doc_path, encoding="utf-8") as f:
+        doc = f.read().split("\n")
+    problems = []
+    with tempfile.TemporaryDirectory() as folder:
+        for heading, args in MAPS:
+            start = [i for i, line in enumerate(doc) if line.startswith(heading)]
+            if not start:
+                problems.append(f"no heading '{heading}'")
+                continue
+            documented = table_rows(doc[start[0]:])
+            out = os.path.join(folder, "map.h5")
+            subprocess.run([flexure_binary] + args + ["--out", out], check=True,
+                           stdout=subprocess.DEVNULL)
+            text = io.StringIO()
+            with h5py.File(out, "r") as f, contextlib.redirect_stdout(text):
+                plot_models.print_table(f)
+            measured = table_rows(text.getvalue().split("\n"))
+            if set(documented) != set(measured):
+                problems.append(f"{heading}: models {sorted(documented)} in the document, "
+                                f"{sorted(measured)} in the map")
+            for name in sorted(set(documented) & set(measured)):
+                d, m = documented[name], measured[name]
+                # settings, answered, the three shares exactly; largest and median error.
+                same = d[1:6] == m[1:6] and all(same_number(a, b) for a, b in zip(d[6:8], m[6:8]))
+                if not same:
+                    problems.append(f"{heading}, {name}: document {d[1:8]}, now {m[1:8]}")
+    return problems
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     group = parser.add_mutually_exclusive_group()
@@ -161,6 +240,9 @@ def main():
     group.add_argument("--check", action="store_true",
                        help="exit 1 if a block of --doc differs from what the library gives")
     parser.add_argument("--doc", default=DOC)
+    parser.add_argument("--flexure", default=os.path.join(os.path.dirname(DOC), "..", "build",
+                                                          "flexure"),
+                        help="the tool that --check runs for the map tables")
     args = parser.parse_args()
     tables = {name: make() for name, make in TABLES.items()}
     if args.write:
@@ -178,6 +260,10 @@ def main():
                 sys.stderr.writelines(difflib.unified_diff(
                     found[name].splitlines(True), text.splitlines(True), lineterm="\n"))
                 print(file=sys.stderr)
+                stale = True
+        if args.check:
+            for problem in check_maps(args.doc, args.flexure):
+                print(f"{args.doc}: map table stale: {problem}", file=sys.stderr)
                 stale = True
         return 1 if stale else 0
     for name, text in tables.items():
