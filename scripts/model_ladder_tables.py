@@ -23,7 +23,8 @@ two decimals. tests/elements/ladder_convergence_test.cpp checks the same tables'
 --check also reruns the three `flexure models map` commands of docs/models.md "The map" (with
 --flexure, default build/flexure; about 5 s) and compares the document's map tables with
 scripts/plot_models.py's table of each file: every column but the median time (a timing of one
-machine), the shares and counts exactly, the errors to their two printed digits.
+machine), the shares and counts exactly, the errors to their two printed digits; and the median
+errors quoted in the page's first table (one row per rung) against the default free-end map.
 """
 import argparse
 import difflib
@@ -178,7 +179,7 @@ def table_rows(lines):
         if line.startswith("|---"):
             inside = True
         elif inside and line.startswith("|"):
-            cells = [c.strip() for c in line.strip().strip("|").split("|")]
+            cells = [c.strip() for c in re.split(r"(?<!\\)\|", line.strip().strip("|"))]
             rows[cells[0]] = cells
         elif inside:
             break
@@ -194,6 +195,23 @@ def same_number(documented, measured):
     if m == 0.0:
         return d == 0.0
     return abs(d - m) <= 0.51 * 10.0 ** (math.floor(math.log10(abs(m))) - 1)
+
+
+def check_rung_table(doc, free_map):
+    """The page's first table (one row per rung) quotes each model's median error on the default
+    free-end map: its column "median error/l" against the map's (the number leading the cell)."""
+    start = [i for i, line in enumerate(doc) if line.startswith("| rung |")]
+    if not start:
+        return ["no table '| rung |'"]
+    problems = []
+    for cells in table_rows(doc[start[0]:]).values():
+        name, quoted = cells[1].strip("`"), cells[4].split(" ")[0]
+        if name not in free_map:
+            continue  # the elliptic solution: the map's reference
+        if not same_number(quoted, free_map[name][7]):
+            problems.append(f"rung table, {name}: median error {quoted} in the document, "
+                            f"{free_map[name][7]} in the map")
+    return problems
 
 
 def check_maps(doc_path, flexure_binary):
@@ -224,6 +242,8 @@ def check_maps(doc_path, flexure_binary):
             if set(documented) != set(measured):
                 problems.append(f"{heading}: models {sorted(documented)} in the document, "
                                 f"{sorted(measured)} in the map")
+            if heading == MAPS[0][0]:
+                problems += check_rung_table(doc, measured)
             for name in sorted(set(documented) & set(measured)):
                 d, m = documented[name], measured[name]
                 # settings, answered, the three shares exactly; largest and median error.
