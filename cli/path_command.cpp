@@ -153,8 +153,9 @@ PathRequest make_request(const PathArgs& args) {
   };
   TipPrescription tip;
   auto length_value = [&](const std::string& text, const char* flag) {
-    return physical ? io::parse_quantity(text, io::Dimension::kLength, flag).si
-                    : plain_length(text, flag);
+    // A chain file in SI units takes metres too (plain, or with a unit: 5mm).
+    return physical || file_physical ? io::parse_quantity(text, io::Dimension::kLength, flag).si
+                                     : plain_length(text, flag);
   };
   if (*args.tip_x_option) {
     allowed(mask.x, TipCoordinate::kX, "--tip-x");

@@ -68,7 +68,10 @@ def path(*, out, n=None, alpha2=None, mu=None, follower=None, boundary=None, tip
          tip_y=None, tip_angle=None, method=None, elements=None, increments=None, chain=None,
          length=None, E=None, I=None, width=None, thickness=None, Fx=None, Fy=None, M=None,
          max_step=None, min_points=None, branch=None, branch_side=None, control=None,
-         shapes=None, stability=None):  # noqa: E741 - the tool's flag --I
+         shapes=None, stability=None, one_way=False, material=None, plate=None, nu=None,
+         qx=None, qy=None, q_follower=None, density=None, g=None, extensible=False,
+         shear_coefficient=None, curvature=None, width_tip=None,
+         thickness_tip=None):  # noqa: E741 - the tool's flag --I
     """The equilibrium path from the unloaded beam to a load, step by step: `flexure path`.
 
     The loads and end conditions of flexure.beam (n, alpha2, mu, follower, boundary, tip_x,
@@ -79,6 +82,12 @@ def path(*, out, n=None, alpha2=None, mu=None, follower=None, boundary=None, tip
     'positive' or 'negative'), control ('tip-x', 'tip-y', 'tip-angle': move that coordinate to
     its tip_... value as the path parameter), shapes (K shape points at every path point).
     stability: 'on' (default) or 'off', the verdict of every point under the path's control.
+    one_way=True (with control): move the coordinate one way past a fold, as an experiment does.
+    The physical beam takes material, plate and nu, the distributed loads qx, qy, q_follower,
+    density and g, extensible=True (with nu, shear_coefficient), curvature (1/m) and a taper
+    (width_tip, thickness_tip) as flexure.beam does. Under control the force-displacement curve
+    is in the file: flexure.read(out)["tip_y"] against ["tip_Fy"] (or x, theta), and its zeros and
+    extrema in the returned `force_points`.
     Returns the dict `flexure path --json` prints: the counts, the located `bifurcations` and
     `limit_point_list` (lists of dicts with load_factor, index, index_after, tip and reactions),
     and per point `stability` (list of str), `stability_index` and `stability_margin` (arrays,
@@ -94,7 +103,13 @@ def path(*, out, n=None, alpha2=None, mu=None, follower=None, boundary=None, tip
                                length=length, E=E, I=I, width=width, thickness=thickness, Fx=Fx,
                                Fy=Fy, M=M, max_step=max_step, min_points=min_points,
                                branch=branch, branch_side=branch_side, control=control,
-                               shapes=shapes, stability=stability, out=out))
+                               shapes=shapes, stability=stability, out=out,
+                               one_way=one_way, material=material, plate=plate, nu=nu, qx=qx,
+                               qy=qy, q_follower=q_follower, density=density, g=g,
+                               extensible=extensible, shear_coefficient=shear_coefficient,
+                               curvature=curvature, width_tip=width_tip,
+                               thickness_tip=thickness_tip),
+                switches={"one_way", "extensible"})
 
 
 def sweep(*, out, alpha2=None, theta0=None, b_over_l=None, n=None, mu=None, method=None,

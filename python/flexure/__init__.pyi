@@ -17,6 +17,9 @@ Number = Union[int, float]
 Quantity = Union[int, float, str]  # a number in SI units, or a string with a unit ('50mm')
 Loads = Union[Number, npt.ArrayLike]  # a scalar, or an array: the result has its shape
 Path = Union[str, os.PathLike[str]]
+# A physical value of flexure.beam: SI number or text with a unit, or an array of SI numbers (the
+# beam is then solved at every entry; a list or array is never read as text).
+PhysicalValues = Union[Quantity, npt.ArrayLike]
 Result = dict[str, Any]
 
 class InvalidInput(ValueError): ...
@@ -38,8 +41,8 @@ def beam(
     tol: float | None = ...,
     shape: int | None = ...,
     boundary: str | None = ...,
-    tip_x: float | None = ...,
-    tip_y: float | None = ...,
+    tip_x: PhysicalValues | None = ...,
+    tip_y: PhysicalValues | None = ...,
     tip_angle: Quantity | None = ...,
     follower: float | None = ...,
     elements: int | None = ...,
@@ -49,15 +52,15 @@ def beam(
     chain: Path | None = ...,
     constants: str | None = ...,
     slenderness: float | None = ...,
-    length: Quantity | None = ...,
-    E: Quantity | None = ...,
-    I: Quantity | None = ...,
-    width: Quantity | None = ...,
-    thickness: Quantity | None = ...,
-    Fx: Quantity | None = ...,
-    Fy: Quantity | None = ...,
-    M: Quantity | None = ...,
-    yield_strength: Quantity | None = ...,
+    length: PhysicalValues | None = ...,
+    E: PhysicalValues | None = ...,
+    I: PhysicalValues | None = ...,
+    width: PhysicalValues | None = ...,
+    thickness: PhysicalValues | None = ...,
+    Fx: PhysicalValues | None = ...,
+    Fy: PhysicalValues | None = ...,
+    M: PhysicalValues | None = ...,
+    yield_strength: PhysicalValues | None = ...,
     stable: bool = ...,
     stability: str | None = ...,
     material: str | None = ...,
@@ -71,6 +74,16 @@ def beam(
     threads: int | None = ...,
     plate: str | None = ...,
     nu: float | None = ...,
+    qx: PhysicalValues | None = ...,
+    qy: PhysicalValues | None = ...,
+    q_follower: PhysicalValues | None = ...,
+    density: PhysicalValues | None = ...,
+    g: PhysicalValues | None = ...,
+    extensible: bool = ...,
+    shear_coefficient: float | None = ...,
+    curvature: PhysicalValues | None = ...,
+    width_tip: PhysicalValues | None = ...,
+    thickness_tip: PhysicalValues | None = ...,
 ) -> Result: ...
 def materials(name: str | None = ...) -> dict[str, Any]: ...
 def path(
@@ -103,6 +116,20 @@ def path(
     control: str | None = ...,
     shapes: int | None = ...,
     stability: str | None = ...,
+    one_way: bool = ...,
+    material: str | None = ...,
+    plate: str | None = ...,
+    nu: float | None = ...,
+    qx: Quantity | None = ...,
+    qy: Quantity | None = ...,
+    q_follower: Quantity | None = ...,
+    density: Quantity | None = ...,
+    g: Quantity | None = ...,
+    extensible: bool = ...,
+    shear_coefficient: float | None = ...,
+    curvature: Quantity | None = ...,
+    width_tip: Quantity | None = ...,
+    thickness_tip: Quantity | None = ...,
 ) -> Result: ...
 def sweep(
     *,

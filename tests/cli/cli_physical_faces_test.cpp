@@ -1,0 +1,189 @@
+// What is checked against what: the features of a one-segment beam reachable from `flexure beam`
+// with units (docs/cli.md, "Physical beams"; issue 29 item 5):
+//  * --curvature K: the identity m = EI (theta' - kappa0): a curved beam under a tip force has the
+//    tip of the straight beam under the same force plus the end moment EI K (solved by another
+//    method, the elliptic integrals), to 1e-9 of L; its shape's moment is the straight beam's
+//    minus EI K at every point; and the same beam from a TOML chain file in SI gives the same tip
+//    bit for bit;
+//  * --width-tip / --thickness-tip: a tapered cantilever under a small tip force against linear
+//    theory, delta = F int_0^L (L - s)^2 / (E I(s)) ds (Simpson's rule on 20 000 intervals), to
+//    1e-5; the fibre stresses at each shape point against N/A(s) -+ m c(s)/I(s) with the local
+//    section, and m against the statics of the part beyond the point (tip force times lever);
+//  * --boundary with a physical beam: guided and pinned ends (tip in mm) against the same beam in
+//    Howell's nondimensional form (alpha2 = F L^2/EI, x/l), tip and reactions scaled by EI/L^2;
+//  * path --chain FILE in SI with --tip-y given with a unit: the same path as in plain metres;
+//  * refusals: a taper with --I, an extensible taper, an elliptic method for a curved beam.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/cli_test_support.h"
+
+namespace flexure {
+namespace {
+
+using test::run_flexure;
+using Json = nlohmann::json;
+
+Json run_json(const std::string& args) {
+  const test::CommandResult r = run_flexure(args + " --json");
+  EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
+  return Json::parse(r.out.empty() ? "{}" : r.out);
+}
+
+// A steel strip 50 mm long, 10 mm wide, 0.5 mm thick: EI = 200e9 * 0.01 * 0.5e-3^3 / 12.
+constexpr double kL = 0.05, kE = 200e9, kB = 0.01, kH = 0.5e-3;
+const double kEI = kE * kB * kH * kH * kH / 12.0;
+const char* kStrip = "--length 50mm --E 200GPa --width 10mm --thickness 0.5mm";
+
+TEST(CliPhysicalFaces, CurvatureIsAnEndMomentOnTheStraightBeam) {
+  const double kappa = 8.0;  // 1/m: kappa0 L = 0.4
+  const Json curved = run_json(
+      fmt::format("beam {} --Fy 0.3N --Fx -0.2N --curvature {} --shape 11", kStrip, kappa));
+  const Json straight =
+      run_json(fmt::format("beam {} --Fy 0.3N --Fx -0.2N --M {:.17g} --method elliptic --shape 11",
+                           kStrip,
+                           kEI * kappa));
+  EXPECT_EQ(curved["method"], "shooting");
+  EXPECT_NEAR(curved["tip_x"].get<double>(), straight["tip_x"].get<double>(), 1e-9 * kL);
+  EXPECT_NEAR(curved["tip_y"].get<double>(), straight["tip_y"].get<double>(), 1e-9 * kL);
+  EXPECT_NEAR(curved["theta0"].get<double>(), straight["theta0"].get<double>(), 1e-9);
+  ASSERT_EQ(curved["shape"].size(), 11u);
+  for (std::size_t i = 0; i < 11; ++i) {
+    const Json& c = curved["shape"][i];
+    const Json& s = straight["shape"][i];
+    EXPECT_NEAR(c["m_Nm"].get<double>(), s["m_Nm"].get<double>() - kEI * kappa, 1e-9 * kEI * kappa)
+        << i;
+    EXPECT_NEAR(c["y_m"].get<double>(), s["y_m"].get<double>(), 1e-9 * kL) << i;
+  }
+  // The same beam from a chain file in SI units.
+  test::ScratchDir dir;
+  const std::string toml = (dir / "curved.toml").string();
+  std::ofstream(toml) << fmt::format(
+      "units = \"SI\"\n[[segment]]\ntype = \"flexible\"\nlength = \"50 mm\"\nE = \"200 GPa\"\n"
+      "width = \"10 mm\"\nthickness = \"0.5 mm\"\nkappa0 = {:.17g}\n[tip_load]\nFx = -0.2\n"
+      "Fy = 0.3\n",
+      kappa);  // 1/m: the file's units are SI
+  const Json file = run_json(fmt::format("beam --chain {}", toml));
+  EXPECT_NEAR(file["tip_x"].get<double>(), curved["tip_x"].get<double>(), 1e-14);
+  EXPECT_NEAR(file["tip_y"].get<double>(), curved["tip_y"].get<double>(), 1e-14);
+}
+
+// Linear theory of a cantilever with I(s): the tip deflection under a tip force F.
+double linear_tip_deflection(double F, double b_tip, double h_tip) {
+  const int n = 20000;  // Simpson's rule, even n
+  double sum = 0.0;
+  for (int k = 0; k <= n; ++k) {
+    const double s = kL * k / n, t = s / kL;
+    const double b = kB + t * (b_tip - kB), h = kH + t * (h_tip - kH);
+    const double f = (kL - s) * (kL - s) / (kE * b * h * h * h / 12.0);
+    sum += f * (k == 0 || k == n ? 1.0 : k % 2 == 1 ? 4.0 : 2.0);
+  }
+  return F * sum * kL / n / 3.0;
+}
+
+TEST(CliPhysicalFaces, TaperedBeamAgainstLinearTheoryAndLocalFibreStresses) {
+  const double F = 1e-4;  // N: tip deflection ~ 1e-4 L, geometric nonlinearity ~ 1e-8
+  for (const auto& [b_tip, h_tip] :
+       {std::pair{0.005, kH}, std::pair{kB, 0.3e-3}, std::pair{0.006, 0.8e-3}}) {
+    const Json j = run_json(fmt::format(
+        "beam {} --Fy {} --width-tip {} --thickness-tip {} --shape 21", kStrip, F, b_tip, h_tip));
+    const double expected = linear_tip_deflection(F, b_tip, h_tip);
+    EXPECT_NEAR(j["tip_y"].get<double>() / expected, 1.0, 1e-5) << b_tip << " " << h_tip;
+    const double tip_x = j["tip_x"].get<double>(), tip_y = j["tip_y"].get<double>();
+    for (const Json& p : j["shape"]) {
+      const double s = p["s_m"].get<double>(), t = s / kL;
+      const double b = kB + t * (b_tip - kB), h = kH + t * (h_tip - kH);
+      // Statics of the part beyond s: only the tip force acts on it.
+      const double m = F * (tip_x - p["x_m"].get<double>());
+      EXPECT_NEAR(p["m_Nm"].get<double>(), m, 1e-9 * F * kL) << s;
+      const double N = F * std::sin(p["theta"].get<double>());
+      const double c_over_I = 6.0 / (b * h * h);
+      const double scale = F * kL * 6.0 / (kB * kH * kH);
+      EXPECT_NEAR(p["stress_pos_fibre_Pa"].get<double>(), N / (b * h) - m * c_over_I, 1e-7 * scale);
+      EXPECT_NEAR(p["stress_neg_fibre_Pa"].get<double>(), N / (b * h) + m * c_over_I, 1e-7 * scale);
+    }
+    (void)tip_y;
+  }
+  // The largest stress of a width taper (b falls to half at the tip) under a tip force:
+  // sigma(s) = 6 F (L - s) / (b(s) h^2) is largest at the clamp.
+  const Json w = run_json(fmt::format("beam {} --Fy {} --width-tip 5mm", kStrip, F));
+  EXPECT_NEAR(w["max_stress"].get<double>() / (6.0 * F * kL / (kB * kH * kH)), 1.0, 1e-6);
+}
+
+TEST(CliPhysicalFaces, BoundaryOfAPhysicalBeamEqualsHowellsForm) {
+  // Guided: the tip angle held at 0, Fy = 2 N; alpha2 = Fy L^2/EI.
+  const double Fy = 2.0;
+  const Json g = run_json(fmt::format("beam {} --Fy {} --boundary guided", kStrip, Fy));
+  const Json h = run_json(
+      fmt::format("beam --alpha2 {:.17g} --boundary guided --method shooting", Fy * kL * kL / kEI));
+  EXPECT_EQ(g["boundary"], "guided");
+  EXPECT_NEAR(g["tip_y"].get<double>() / kL, h["b_over_l"].get<double>(), 1e-9);
+  EXPECT_NEAR(g["tip_x"].get<double>() / kL, h["a_over_l"].get<double>(), 1e-9);
+  EXPECT_NEAR(g["theta0"].get<double>(), 0.0, 1e-12);
+  EXPECT_NEAR(g["reactions"]["M"].get<double>(), h["reactions"]["M"].get<double>(), 1e-8);
+  // Pinned: the tip held at (45 mm, 5 mm), no moment.
+  const Json p =
+      run_json(fmt::format("beam {} --boundary pinned --tip-x 45mm --tip-y 5mm", kStrip));
+  const Json q = run_json("beam --alpha2 0 --boundary pinned --tip-x 0.9 --tip-y 0.1");
+  EXPECT_NEAR(p["tip_x"].get<double>(), 0.045, 1e-12);
+  EXPECT_NEAR(p["tip_y"].get<double>(), 0.005, 1e-12);
+  EXPECT_NEAR(p["theta0"].get<double>(), q["theta0"].get<double>(), 1e-9);
+  EXPECT_NEAR(p["root_moment_Nm"].get<double>(),
+              -q["reactions"]["M"].get<double>() * kEI / kL,
+              1e-8 * kEI / kL);
+  // A load on a prescribed coordinate is the support's reaction: refused.
+  const test::CommandResult bad =
+      run_flexure(fmt::format("beam {} --Fy 1N --boundary pinned --tip-x 45mm", kStrip));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--Fy must be 0"), std::string::npos) << bad.err;
+}
+
+TEST(CliPhysicalFaces, PathTipWithAUnitOnAnSiChainFile) {
+  const std::string toml =
+      std::string(FLEXURE_SOURCE_DIR) + "/docs/examples/inclined_bistable_path.toml";
+  test::ScratchDir dir;
+  const std::string a = (dir / "a.h5").string(), b = (dir / "b.h5").string();
+  const Json ja = run_json(fmt::format(
+      "path --chain {} --control tip-y --tip-y 5.2mm --min-points 11 --out {}", toml, a));
+  const Json jb = run_json(fmt::format(
+      "path --chain {} --control tip-y --tip-y 0.0052 --min-points 11 --out {}", toml, b));
+  EXPECT_NEAR(ja["control_target"].get<double>(), 0.0052, 1e-17);
+  EXPECT_EQ(ja["points"], jb["points"]);
+  const hid_t fa = test::open_read_only(a), fb = test::open_read_only(b);
+  const std::vector<double> ya = test::read_doubles(fa, "tip_y");
+  const std::vector<double> yb = test::read_doubles(fb, "tip_y");
+  H5Fclose(fa);
+  H5Fclose(fb);
+  ASSERT_EQ(ya.size(), yb.size());
+  EXPECT_NEAR(ya.back(), 0.0052, 1e-12);
+  for (std::size_t i = 0; i < ya.size(); ++i) EXPECT_NEAR(ya[i], yb[i], 1e-12);
+}
+
+TEST(CliPhysicalFaces, RefusalsNameTheFlag) {
+  for (const auto& [args, needle] :
+       {std::pair{"beam --length 50mm --E 200GPa --I 1e-13 --Fy 1 --width-tip 5mm", "--width"},
+        std::pair{"beam --length 50mm --E 200GPa --width 10mm --thickness 0.5mm --Fy 1 "
+                  "--thickness-tip 0.3mm --extensible --nu 0.3",
+                  "--extensible with a taper"},
+        std::pair{"beam --length 50mm --E 200GPa --width 10mm --thickness 0.5mm --Fy 1 "
+                  "--curvature 5 --method elliptic",
+                  "curved or tapered"},
+        std::pair{"beam --length 50mm --E 200GPa --width 10mm --thickness 0.5mm --Fy 1 "
+                  "--curvature 5N",
+                  "--curvature"},
+        std::pair{"beam --alpha2 1 --boundary pinned --tip-x 45mm", "plain number"},
+        std::pair{"beam --length 50mm --E 200GPa --width 10mm --thickness 0.5mm --Fy 1 "
+                  "--width-tip -1mm",
+                  "--width-tip"}}) {
+    const test::CommandResult r = run_flexure(args);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_NE(r.err.find(needle), std::string::npos) << args << "\n" << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace flexure

@@ -1,0 +1,84 @@
+"""flexure.beam and flexure.path with physical values (issue 29 item 5): arrays of SI numbers
+solved at every entry, checked against Howell's nondimensional beam scaled (alpha2 = Fy L^2/EI,
+b/l = y/L) and against linear theory (a uniform load: q L^4/(8 EI)); a list is the same as an
+array and never read as text; curvature, taper and boundary keywords give the command line's
+answer; a displacement-controlled path of an SI chain file with a target in mm."""
+import os
+
+import numpy as np
+import pytest
+
+import flexure
+
+L, E, B, H = 0.05, 200e9, 0.01, 0.5e-3
+EI = E * B * H ** 3 / 12
+STRIP = dict(length=L, E=E, width=B, thickness=H)
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def test_array_of_forces_is_the_nondimensional_sweep_scaled():
+    Fy = np.linspace(0.0, 5.0, 11)
+    many = flexure.beam(**STRIP, Fy=Fy, Fx=-0.5)
+    assert many["tip_y"].shape == (11,) and many["converged"].all()
+    # Howell's beam: alpha2 = Fy L^2/EI, n = -Fx/Fy (Fy = 0 is the column below its Euler load).
+    howell = flexure.beam(alpha2=Fy[1:] * L * L / EI, n=0.5 / Fy[1:], method="elliptic")
+    np.testing.assert_allclose(many["tip_y"][1:] / L, howell["b_over_l"], rtol=0, atol=1e-9)
+    np.testing.assert_allclose(many["tip_x"][1:] / L, howell["a_over_l"], rtol=0, atol=1e-9)
+    np.testing.assert_allclose(many["theta0"][1:], howell["theta0"], rtol=0, atol=1e-9)
+    assert many["tip_y"][0] == 0.0
+    # A list is many values (never one text), and each entry is the scalar call's.
+    listed = flexure.beam(**STRIP, Fy=list(Fy[:3]), Fx=-0.5)
+    np.testing.assert_array_equal(listed["tip_y"], many["tip_y"][:3])
+    one = flexure.beam(**STRIP, Fy=float(Fy[2]), Fx=-0.5)
+    assert one["tip_y"] == many["tip_y"][2]
+
+
+def test_arrays_broadcast_and_a_bad_entry_does_not_raise():
+    r = flexure.beam(**STRIP, Fy=np.array([[0.1], [0.2]]), M=np.array([0.0, 1e-3, np.nan]))
+    assert r["tip_y"].shape == (2, 3)
+    assert list(r["status"][:, 2]) == [2, 2] and r["converged"][:, :2].all()
+    assert "--M" in r["message"][0, 2]
+    with pytest.raises(flexure.InvalidInput, match="do not broadcast"):
+        flexure.beam(**STRIP, Fy=[1.0, 2.0], M=[0.0, 1.0, 2.0])
+    with pytest.raises(flexure.InvalidInput, match="cannot be mixed"):
+        flexure.beam(alpha2=[1.0, 2.0], length=[1.0, 2.0], E=1.0, I=1.0)
+
+
+def test_uniform_load_array_against_linear_theory():
+    # Small uniform loads: tip deflection q L^4/(8 EI) (nonlinearity ~ (y/L)^2 ~ 1e-8).
+    q = np.array([1e-3, 2e-3, -3e-3])
+    r = flexure.beam(**STRIP, qy=q)
+    np.testing.assert_allclose(r["tip_y"], q * L ** 4 / (8 * EI), rtol=1e-6)
+    np.testing.assert_array_equal(r["qy_N_per_m"], q)
+
+
+def test_curvature_taper_and_boundary_keywords_equal_the_tool(cli):
+    for keywords, flags in [
+        (dict(curvature=8.0, Fy=0.3), ["--curvature", "8", "--Fy", "0.3"]),
+        (dict(width_tip="5mm", thickness_tip=0.4e-3, Fy=0.5),
+         ["--width-tip", "5mm", "--thickness-tip", "0.0004", "--Fy", "0.5"]),
+        (dict(boundary="pinned", tip_x="45mm", tip_y=0.005),
+         ["--boundary", "pinned", "--tip-x", "45mm", "--tip-y", "0.005"]),
+    ]:
+        r = flexure.beam(**STRIP, **keywords)
+        expected = cli.json("beam", "--length", L, "--E", E, "--width", B, "--thickness", H,
+                            *flags)
+        for key in ("tip_x", "tip_y", "theta0", "root_moment_Nm", "max_stress"):
+            assert r[key] == expected[key], (keywords, key)
+    # The identity kappa0 <-> end moment EI kappa0 (another method: the elliptic integrals).
+    curved = flexure.beam(**STRIP, curvature=np.array([4.0, 8.0]), Fy=0.3)
+    for k, kappa in enumerate((4.0, 8.0)):
+        straight = flexure.beam(**STRIP, Fy=0.3, M=EI * kappa, method="elliptic")
+        assert abs(curved["tip_y"][k] - straight["tip_y"]) < 1e-9 * L
+
+
+def test_displacement_controlled_path_of_an_si_chain_file(tmp_path):
+    toml = os.path.join(ROOT, "docs", "examples", "inclined_bistable_path.toml")
+    out = tmp_path / "inclined.h5"
+    r = flexure.path(chain=toml, control="tip-y", tip_y="-5.2907973mm", branch=1, one_way=True,
+                     min_points=61, out=str(out))
+    assert r["completed"] and r["force_zero_crossings"] == 2
+    data = flexure.read(str(out))
+    assert abs(data["tip_y"][-1] + 0.0052907973) < 1e-12
+    zeros = [p["coordinate"] for p in r["force_points"] if p["kind"] == "force_zero"]
+    assert abs(zeros[0]) < 1e-12  # the level position (point symmetry)
