@@ -622,6 +622,34 @@ PhysicalBeamSolution solve_cantilever(BeamMethod method,
 
 }  // namespace
 
+ShapeInternalForces shape_internal_forces(const SegmentChain& chain,
+                                          const std::vector<ShapePoint>& shape,
+                                          const Reaction& root) {
+  // forces_along takes arc lengths per unit length and positions in lever units.
+  const double total = chain.total_length();
+  std::vector<ShapePoint> unit = shape;
+  for (ShapePoint& p : unit) p.s /= total;
+  Scaling scale;
+  scale.length = total;
+  scale.root = root;
+  scale.chain = &chain;
+  InternalForces f = forces_along(unit, scale);
+  return {std::move(f.moment), std::move(f.axial), std::move(f.shear)};
+}
+
+void PhysicalCantilever::fibre_sections(int points,
+                                        std::vector<double>& modulus,
+                                        std::vector<double>& area) const {
+  modulus.clear();
+  area.clear();
+  if (!width || !thickness || points < 2) return;
+  for (int k = 0; k < points; ++k) {
+    const double at = length * k / (points - 1);
+    modulus.push_back(second_moment_at(at) / (0.5 * *thickness_at(at)));
+    area.push_back(*width_at(at) * *thickness_at(at));
+  }
+}
+
 PhysicalBeamSolution solve_physical_beam(BeamMethod method,
                                          const PhysicalCantilever& given,
                                          BeamProblem problem) {

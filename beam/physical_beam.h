@@ -45,10 +45,11 @@ struct PhysicalCantilever {
   PlateRule plate = PlateRule::kOff;
   bool plate_given = false;  // --plate was given (then --nu is accepted even with off)
   bool plate_applied = false;
-  // The shape of the beam (docs/cli.md "Curved, tapered and supported physical beams"): the stress-free curvature
-  // kappa0 (1/m, positive bends toward +y: m = EI (theta' - kappa0)), and a linear taper of the
-  // rectangle from (width, thickness) at the clamp to (width_tip, thickness_tip) at the tip (either
-  // or both; the other keeps its root value). Any of them makes the beam a one-segment chain.
+  // The shape of the beam (docs/cli.md "Curved, tapered and supported physical beams"): the
+  // stress-free curvature kappa0 (1/m, positive bends toward +y: m = EI (theta' - kappa0)), and a
+  // linear taper of the rectangle from (width, thickness) at the clamp to (width_tip,
+  // thickness_tip) at the tip (either or both; the other keeps its root value). Any of them makes
+  // the beam a one-segment chain.
   double curvature = 0.0;
   std::optional<double> width_tip;      // m
   std::optional<double> thickness_tip;  // m
@@ -104,12 +105,30 @@ struct PhysicalCantilever {
   SegmentChain to_chain(EndCondition end, const TipPrescription& prescribed_m = {}) const;
   // The same with the beam's own `end` and `prescribed`.
   SegmentChain to_chain() const { return to_chain(end, prescribed); }
+  // The section modulus I/c (m^3) and area (m^2) at `points` equally spaced arc lengths from the
+  // clamp to the tip (the section there, for a taper): the fibre stresses N/A -+ m c/I of shapes
+  // (`flexure path --shapes`). Both empty without the rectangle (a section given by I).
+  void fibre_sections(int points, std::vector<double>& modulus, std::vector<double>& area) const;
   // Stations of a taper's EI_profile (and self-weight profile): a width taper makes EI linear in s
   // (exact with any count); a thickness taper cubic, whose linear interpolation between 1025
   // stations departs from b h(s)^3/12 by at most (1/1024)^2/8 max|EI''|/EI, below 1e-6 for a tip
   // thickness from 1/2 to 2 times the root's.
   static constexpr int kTaperStations = 1025;
 };
+
+// The internal forces at the points of a solved shape of `chain` (the chain's own units: the
+// shape's s, x, y as the solver returns them), from the statics of the part between the clamp and
+// each point, with `root` the clamp's reaction on the chain (docs/units.md "Internal forces"):
+// the bending moment m, N . t and N . n (N the force the part beyond s exerts on the part before
+// it, n the normal left of the tangent; dm/ds = -V). Joint loads and the distributed loads of
+// `chain` (a dead load by the midpoint rule over the shape's intervals, a follower pressure exact
+// for each chord) enter as in solve_physical_beam.
+struct ShapeInternalForces {
+  std::vector<double> moment, axial, shear;
+};
+ShapeInternalForces shape_internal_forces(const SegmentChain& chain,
+                                          const std::vector<ShapePoint>& shape,
+                                          const Reaction& root);
 
 // One point of the deflected shape in SI units.
 struct PhysicalShapePoint {

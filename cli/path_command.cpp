@@ -207,6 +207,10 @@ PathRequest make_request(const PathArgs& args) {
     }
     request.chain = beam.to_chain(end, tip);
     request.units = PathUnits::si(beam.length, beam.flexural_rigidity());
+    // The section at each shape point: the fibre stresses of /shapes.
+    if (args.shapes >= 2 && args.shapes <= 1'000'000) {  // else refused below
+      beam.fibre_sections(args.shapes, request.shape_section_modulus, request.shape_area);
+    }
   } else if (from_file) {
     request.chain = *file_chain;
     request.units = PathUnits::chain_file(file_physical);

@@ -40,6 +40,22 @@ struct SweepBeamArgs {
   std::string stability = "on";  // the verdict per point (docs/stability.md), or off
 };
 
+// An angle range: START and STOP in rad, or each with a unit (30deg:60deg:4); COUNT as in
+// parse_range, whose messages it keeps.
+Range parse_angle_range(const std::string& text, const std::string& what) {
+  const auto first = text.find(':');
+  const auto second = first == std::string::npos ? std::string::npos : text.find(':', first + 1);
+  if (second == std::string::npos) return parse_range(text, what, max_beam_sweep_points());
+  const auto angle = [&](const std::string& part, const char* end) {
+    return io::parse_quantity(part, io::Dimension::kAngle, fmt::format("{} {}", what, end)).si;
+  };
+  const double start = angle(text.substr(0, first), "START");
+  const double stop = angle(text.substr(first + 1, second - first - 1), "STOP");
+  return parse_range(fmt::format("{:.17g}:{:.17g}:{}", start, stop, text.substr(second + 1)),
+                     what,
+                     max_beam_sweep_points());
+}
+
 // One of the parameters: a fixed value, or an axis when the text has a ':'.
 void add_parameter(BeamSweepGrid& grid, SweepParameter p, const std::string& text) {
   const std::string what = flag_name(p);
@@ -48,13 +64,16 @@ void add_parameter(BeamSweepGrid& grid, SweepParameter p, const std::string& tex
     if (p == SweepParameter::kTheta0) warn(io::angle_warning({value, ""}, what));
   };
   if (text.find(':') != std::string::npos) {
-    const Range r = parse_range(text, what, max_beam_sweep_points());
+    const Range r = p == SweepParameter::kTheta0 ? parse_angle_range(text, what)
+                                                 : parse_range(text, what, max_beam_sweep_points());
     grid.axes.push_back({p, r.start, r.stop, r.count});
     check_angle(std::fabs(r.start) > std::fabs(r.stop) ? r.start : r.stop);
     return;
   }
   double value = 0.0;
-  if (!parse_double(text, value) || !std::isfinite(value)) {
+  if (p == SweepParameter::kTheta0 && !parse_double(text, value)) {
+    value = io::parse_quantity(text, io::Dimension::kAngle, what).si;  // 30deg
+  } else if (!parse_double(text, value) || !std::isfinite(value)) {
     throw InvalidInput(fmt::format(
         "{} = '{}' is neither a finite number nor a range START:STOP:COUNT", what, text));
   }
@@ -202,7 +221,8 @@ void register_sweep_command(CLI::App& app) {
   beam->add_option(
       "--theta0",
       args->theta0,
-      "Inverse: tip angle theta0 (rad), a value or START:STOP:COUNT; the load is found");
+      "Inverse: tip angle theta0 (rad, or with a unit: 30deg), a value or START:STOP:COUNT "
+      "(30deg:60deg:4); the load is found");
   beam->add_option(
       "--b-over-l",
       args->b_over_l,

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 
 #include "tests/support/cli_test_support.h"
 
@@ -161,6 +162,32 @@ TEST(CliPhysicalFaces, PathTipWithAUnitOnAnSiChainFile) {
   ASSERT_EQ(ya.size(), yb.size());
   EXPECT_NEAR(ya.back(), 0.0052, 1e-12);
   for (std::size_t i = 0; i < ya.size(); ++i) EXPECT_NEAR(ya[i], yb[i], 1e-12);
+}
+
+TEST(CliPhysicalFaces, SweepTakesAnglesWithUnits) {
+  // --theta0 30deg:60deg:4 is the radian range pi/6 .. pi/3: the same axis and loads.
+  test::ScratchDir dir;
+  const std::string a = (dir / "deg.h5").string(), b = (dir / "rad.h5").string();
+  run_json(fmt::format("sweep beam --theta0 30deg:60deg:4 --n 1 --out {}", a));
+  run_json(fmt::format("sweep beam --theta0 {:.17g}:{:.17g}:4 --n 1 --out {}",
+                       std::numbers::pi / 6.0,
+                       std::numbers::pi / 3.0,
+                       b));
+  const hid_t fa = test::open_read_only(a), fb = test::open_read_only(b);
+  const std::vector<double> axis = test::read_doubles(fa, "axes/theta0");
+  const std::vector<double> alpha2_a = test::read_doubles(fa, "alpha2");
+  const std::vector<double> alpha2_b = test::read_doubles(fb, "alpha2");
+  H5Fclose(fa);
+  H5Fclose(fb);
+  ASSERT_EQ(axis.size(), 4u);
+  EXPECT_NEAR(axis[1], 40.0 * std::numbers::pi / 180.0, 1e-15);
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(alpha2_a[i], alpha2_b[i], 1e-12 * alpha2_b[i]);
+  // A fixed angle with a unit, and a unit of another quantity refused naming the end.
+  run_json(fmt::format("sweep beam --theta0 30deg --n 0:1:3 --out {}", (dir / "c.h5").string()));
+  const test::CommandResult bad =
+      run_flexure(fmt::format("sweep beam --theta0 30N:60deg:4 --out {}", (dir / "d.h5").string()));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--theta0 START"), std::string::npos) << bad.err;
 }
 
 TEST(CliPhysicalFaces, RefusalsNameTheFlag) {

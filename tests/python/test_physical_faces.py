@@ -82,3 +82,45 @@ def test_displacement_controlled_path_of_an_si_chain_file(tmp_path):
     assert abs(data["tip_y"][-1] + 0.0052907973) < 1e-12
     zeros = [p["coordinate"] for p in r["force_points"] if p["kind"] == "force_zero"]
     assert abs(zeros[0]) < 1e-12  # the level position (point symmetry)
+
+
+def test_path_shapes_carry_internal_forces_and_fibre_stresses(tmp_path):
+    """A tapered strip under a tip force and a uniform dead load: at every stored point N . t and
+    N . n against the statics of the part beyond s (lambda (F + q (L - s)) in the root frame, an
+    independent sum), the moment zero at the free tip, the fibre stresses against N/A -+ m c/I
+    with the section at s, and the XDMF sidecar naming every dataset with its shape."""
+    import xml.etree.ElementTree as ET
+    out = tmp_path / "loaded.h5"
+    Fx, Fy, q, h_tip, K = -0.3, 1.0, 10.0, 0.3e-3, 21
+    r = flexure.path(**STRIP, Fx=Fx, Fy=Fy, qy=q, thickness_tip=h_tip, shapes=K, out=str(out))
+    assert r["completed"]
+    d = flexure.read(str(out))
+    sh = d["shapes"]
+    lam, s, theta = d["load_factor"], sh["s"], sh["theta"]
+    assert sh["axial_force"].shape == (len(lam), K)
+    Nx = lam[:, None] * Fx + 0 * s
+    Ny = lam[:, None] * (Fy + q * (L - s))
+    c, n = np.cos(theta), np.sin(theta)
+    np.testing.assert_allclose(sh["axial_force"], Nx * c + Ny * n, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(sh["shear_force"], -Nx * n + Ny * c, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(sh["moment"][:, -1], 0.0, atol=1e-8 * np.abs(sh["moment"]).max())
+    h = H + (s / L) * (h_tip - H)
+    A, Z = B * h, B * h * h / 6
+    np.testing.assert_allclose(sh["stress_pos_fibre"], sh["axial_force"] / A - sh["moment"] / Z,
+                               rtol=1e-12, atol=1e-3)
+    np.testing.assert_allclose(sh["stress_neg_fibre"], sh["axial_force"] / A + sh["moment"] / Z,
+                               rtol=1e-12, atol=1e-3)
+    assert sh["units"]["stress_pos_fibre"] == "Pa"
+    root = ET.parse(tmp_path / "loaded.xdmf").getroot()
+    names = set()
+    import h5py
+    with h5py.File(out, "r") as f:
+        for item in root.iter("DataItem"):
+            if item.get("Format") != "HDF":
+                continue
+            path = item.text.strip().split(":")[1]
+            dims = tuple(int(x) for x in item.get("Dimensions").split())
+            assert path in f and f[path].shape == dims, (path, dims)
+            names.add(path)
+    assert {"/shapes/stress_pos_fibre", "/shapes/stress_neg_fibre", "/shapes/axial_force",
+            "/shapes/shear_force"} <= names
