@@ -113,13 +113,21 @@ def path(*, out, n=None, alpha2=None, mu=None, follower=None, boundary=None, tip
 
 
 def sweep(*, out, alpha2=None, theta0=None, b_over_l=None, n=None, mu=None, method=None,
-          threads=None, compress=False, stability=None):
+          threads=None, compress=False, stability=None, boundary=None, tip_x=None, tip_y=None,
+          tip_angle=None, length=None, E=None, I=None, width=None, thickness=None, Fx=None,
+          Fy=None, M=None, material=None, plate=None, nu=None, qx=None, qy=None,
+          q_follower=None, density=None, g=None, extensible=False, shear_coefficient=None,
+          curvature=None, width_tip=None, thickness_tip=None):  # noqa: E741 - the tool's --I
     """A beam sweep written to HDF5: `flexure sweep beam` (docs/hdf5-schema.md).
 
     alpha2, theta0, b_over_l, n, mu: a value or 'START:STOP:COUNT' (one or two axes); method;
     threads; compress; stability: 'on' (default: a verdict per point in /stability,
     /stability_index, /stability_margin) or 'off'; out: the HDF5 file (required). Returns the summary `--json` prints; read
     the file with flexure.read(out). For arrays in memory use flexure.beam with numpy arrays.
+    boundary, tip_x, tip_y, tip_angle: a held end as in flexure.beam. A physical beam (length,
+    E, I or width and thickness, and the keywords of flexure.beam) is swept over one or two of
+    its tip loads Fx, Fy, M given as 'START:STOP:COUNT' with units ('0N:5N:51'); the file then
+    has /axes/Fy (N) and the root attributes units 'SI', length_m, EI_Nm2.
 
     Example:
       >>> flexure.sweep(alpha2="0:20:1001", n="0:2:3", out="sweep.h5")     # doctest: +SKIP
@@ -128,8 +136,17 @@ def sweep(*, out, alpha2=None, theta0=None, b_over_l=None, n=None, mu=None, meth
     """
     return _run(["sweep", "beam"], dict(alpha2=alpha2, theta0=theta0, b_over_l=b_over_l, n=n,
                                         mu=mu, method=method, out=out, threads=threads,
-                                        compress=compress, stability=stability),
-                switches={"compress"})
+                                        compress=compress, stability=stability,
+                                        boundary=boundary, tip_x=tip_x, tip_y=tip_y,
+                                        tip_angle=tip_angle, length=length, E=E, I=I,
+                                        width=width, thickness=thickness, Fx=Fx, Fy=Fy, M=M,
+                                        material=material, plate=plate, nu=nu, qx=qx, qy=qy,
+                                        q_follower=q_follower, density=density, g=g,
+                                        extensible=extensible,
+                                        shear_coefficient=shear_coefficient,
+                                        curvature=curvature, width_tip=width_tip,
+                                        thickness_tip=thickness_tip),
+                switches={"compress", "extensible"})
 
 
 def cfm(*, config=None, R=None, K1=None, K2=None, d=None, subclass=None, sampling=None,

@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -188,6 +189,82 @@ TEST(CliPhysicalFaces, SweepTakesAnglesWithUnits) {
       run_flexure(fmt::format("sweep beam --theta0 30N:60deg:4 --out {}", (dir / "d.h5").string()));
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("--theta0 START"), std::string::npos) << bad.err;
+}
+
+double read_attribute(hid_t file, const char* name) {
+  const hid_t a = H5Aopen(file, name, H5P_DEFAULT);
+  double value = std::nan("");
+  H5Aread(a, H5T_NATIVE_DOUBLE, &value);
+  H5Aclose(a);
+  return value;
+}
+
+TEST(CliPhysicalFaces, PhysicalSweepIsHowellsSweepScaled) {
+  // --Fy 0N:5N:11 on the strip is --alpha2 0:5 L^2/EI:11: the same tips per unit length.
+  test::ScratchDir dir;
+  const std::string a = (dir / "si.h5").string(), b = (dir / "howell.h5").string();
+  const Json j = run_json(fmt::format("sweep beam {} --Fy 0N:5N:11 --out {}", kStrip, a));
+  EXPECT_EQ(j["axes"], "Fy");
+  run_json(fmt::format("sweep beam --alpha2 0:{:.17g}:11 --out {}", 5.0 * kL * kL / kEI, b));
+  const hid_t fa = test::open_read_only(a), fb = test::open_read_only(b);
+  const std::vector<double> Fy = test::read_doubles(fa, "axes/Fy");
+  const std::vector<double> alpha2 = test::read_doubles(fa, "alpha2");
+  const std::vector<double> ya = test::read_doubles(fa, "b_over_l");
+  const std::vector<double> yb = test::read_doubles(fb, "b_over_l");
+  EXPECT_NEAR(read_attribute(fa, "length_m"), kL, 1e-18);
+  EXPECT_NEAR(read_attribute(fa, "EI_Nm2") / kEI, 1.0, 1e-14);
+  H5Fclose(fa);
+  H5Fclose(fb);
+  ASSERT_EQ(Fy.size(), 11u);
+  for (int i = 0; i < 11; ++i) {
+    EXPECT_NEAR(Fy[i], 0.5 * i, 1e-15);
+    EXPECT_NEAR(alpha2[i], Fy[i] * kL * kL / kEI, 1e-12 * (1.0 + alpha2[i]));
+    EXPECT_NEAR(ya[i], yb[i], 1e-12);
+  }
+}
+
+TEST(CliPhysicalFaces, PhysicalSweepPointsEqualTheBeamCommand) {
+  // A grid Fx x Fy holding the axial-only point Fy = 0 (auto takes the shooting method), a guided
+  // end, and a curved strip under a uniform load: every point against `flexure beam` alone.
+  test::ScratchDir dir;
+  struct Case {
+    std::string sweep, beam;
+    std::vector<std::pair<double, double>> loads;  // (Fx, Fy) of each point, row-major
+  };
+  const std::vector<Case> cases = {
+      {"--Fx -1N:1N:3 --Fy 0N:2N:3",
+       "",
+       {{-1, 0}, {-1, 1}, {-1, 2}, {0, 0}, {0, 1}, {0, 2}, {1, 0}, {1, 1}, {1, 2}}},
+      {"--Fy 1N:3N:3 --boundary guided", "--boundary guided", {{0, 1}, {0, 2}, {0, 3}}},
+      {"--Fy 0N:2N:3 --curvature 4 --qy 1", "--curvature 4 --qy 1", {{0, 0}, {0, 1}, {0, 2}}}};
+  for (const Case& c : cases) {
+    const std::string out = (dir / "grid.h5").string();
+    std::filesystem::remove(out);
+    run_json(fmt::format("sweep beam {} {} --out {}", kStrip, c.sweep, out));
+    const hid_t f = test::open_read_only(out);
+    const std::vector<double> x = test::read_doubles(f, "a_over_l");
+    const std::vector<double> y = test::read_doubles(f, "b_over_l");
+    H5Fclose(f);
+    ASSERT_EQ(x.size(), c.loads.size()) << c.sweep;
+    for (std::size_t i = 0; i < c.loads.size(); ++i) {
+      const Json one = run_json(fmt::format("beam {} --Fx {} --Fy {} {} --method shooting",
+                                            kStrip,
+                                            c.loads[i].first,
+                                            c.loads[i].second,
+                                            c.beam));
+      EXPECT_NEAR(x[i], one["tip_x"].get<double>() / kL, 1e-9) << c.sweep << " " << i;
+      EXPECT_NEAR(y[i], one["tip_y"].get<double>() / kL, 1e-9) << c.sweep << " " << i;
+    }
+  }
+  // Refused: a range in newtons without a physical beam, Howell's loads with one.
+  const test::CommandResult r1 = run_flexure(fmt::format(
+      "sweep beam {} --Fy 0N:1N:3 --alpha2 1 --out {}", kStrip, (dir / "x.h5").string()));
+  EXPECT_EQ(r1.exit_code, 2);
+  EXPECT_NE(r1.err.find("do not combine it with --alpha2"), std::string::npos) << r1.err;
+  const test::CommandResult r2 =
+      run_flexure(fmt::format("sweep beam {} --Fy 1N --out {}", kStrip, (dir / "y.h5").string()));
+  EXPECT_EQ(r2.exit_code, 2);
+  EXPECT_NE(r2.err.find("--Fx, --Fy, --M"), std::string::npos) << r2.err;
 }
 
 TEST(CliPhysicalFaces, RefusalsNameTheFlag) {

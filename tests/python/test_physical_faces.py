@@ -124,3 +124,19 @@ def test_path_shapes_carry_internal_forces_and_fibre_stresses(tmp_path):
             names.add(path)
     assert {"/shapes/stress_pos_fibre", "/shapes/stress_neg_fibre", "/shapes/axial_force",
             "/shapes/shear_force"} <= names
+
+
+def test_physical_sweep_from_python_equals_the_array_call(tmp_path):
+    """flexure.sweep over Fy with units: its tips (a_over_l length_m) equal flexure.beam with the
+    same forces as an array, and its axis is stored in newtons."""
+    out = tmp_path / "strip.h5"
+    r = flexure.sweep(**STRIP, Fy="0N:2N:5", Fx="-0.5 N", out=str(out))
+    assert r["axes"] == "Fy" and r["converged_count"] == 5
+    d = flexure.read(str(out))
+    assert d["axes"]["units"]["Fy"] == "N"
+    np.testing.assert_array_equal(d["axes"]["Fy"], np.linspace(0.0, 2.0, 5))
+    attributes = d["attributes"]
+    assert attributes["units"] == "SI" and attributes["length_m"] == L
+    many = flexure.beam(**STRIP, Fy=np.linspace(0.0, 2.0, 5), Fx=-0.5, method="shooting")
+    np.testing.assert_allclose(d["b_over_l"] * attributes["length_m"], many["tip_y"], rtol=0,
+                               atol=1e-9 * L)
