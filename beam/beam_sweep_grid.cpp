@@ -78,15 +78,15 @@ void BeamSweepGrid::validate(long max_points) const {
   if (axes.empty() || axes.size() > 2) {
     throw InvalidInput(
         fmt::format("sweep beam sweeps one or two of {} as START:STOP:COUNT (got {} ranges)",
-                    physical ? "the physical beam's --Fx, --Fy, --M"
-                             : "--alpha2, --n, --mu, --theta0, --b-over-l",
+                    physical || chain ? "the tip loads --Fx, --Fy, --M"
+                                      : "--alpha2, --n, --mu, --theta0, --b-over-l",
                     axes.size()));
   }
   if (axes.size() == 2 && axes[0].parameter == axes[1].parameter) {
     throw InvalidInput(fmt::format("{} is given as a range twice", flag_name(axes[0].parameter)));
   }
   for (const SweepAxis& axis : axes) {
-    if (is_physical(axis.parameter) != physical.has_value()) {
+    if (is_physical(axis.parameter) != (physical.has_value() || chain.has_value())) {
       throw InvalidInput(fmt::format(
           "{} is a range of {}: a physical sweep (--length, --E, the section) sweeps --Fx, --Fy, "
           "--M, Howell's sweep --alpha2, --n, --mu, --theta0, --b-over-l",
@@ -144,6 +144,17 @@ std::vector<double> BeamSweepGrid::coordinates(long index) const {
 BeamProblem BeamSweepGrid::at(long index) const {
   BeamProblem problem = base;
   const std::vector<double> c = coordinates(index);
+  if (chain) {
+    problem.chain = *chain;
+    TipLoad& load = problem.chain->tip_load;
+    for (std::size_t k = 0; k < axes.size(); ++k) {
+      (axes[k].parameter == SweepParameter::kFx   ? load.Fx
+       : axes[k].parameter == SweepParameter::kFy ? load.Fy
+                                                  : load.M) = c[k];
+    }
+    problem.boundary = chain->end;
+    return problem;
+  }
   if (physical) {
     PhysicalCantilever beam = *physical;
     for (std::size_t k = 0; k < axes.size(); ++k) {
@@ -158,7 +169,7 @@ BeamProblem BeamSweepGrid::at(long index) const {
 }
 
 bool BeamSweepGrid::needs_shooting() const {
-  if (base.boundary != EndCondition::kFree || base.follower != 0.0) return true;
+  if (base.boundary != EndCondition::kFree || base.follower != 0.0 || chain) return true;
   if (!physical) return false;
   const PhysicalCantilever& b = *physical;
   if (b.beyond_elastica() || b.shaped() || b.end != EndCondition::kFree) return true;

@@ -42,6 +42,11 @@ struct BeamSweepGrid {
   // to_problem, with base's settings), so its results are per unit length and in Howell's
   // nondimensional loads (length_m, EI_Nm2 scale them). Only physical axes then.
   std::optional<PhysicalCantilever> physical;
+  // A chain (`sweep beam --chain FILE`): the tip load of this chain is what the axes kFx, kFy,
+  // kM set (in the chain's units: N and N m where chain_in_si), each point that chain with its
+  // own end condition. Only physical axes then; results per unit total length.
+  std::optional<SegmentChain> chain;
+  bool chain_in_si = false;
 
   // Throws InvalidInput naming the flag: one or two axes, not the same parameter twice, an axis of
   // theta0 or b/l only for that inverse problem (the given quantity is one of alpha2, theta0,

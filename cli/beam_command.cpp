@@ -510,6 +510,17 @@ Json to_json(const BeamInput& input,
     for (const ShapePoint& p : solution.shape) {
       shape.push_back(Json{{"s", p.s}, {"x", p.x}, {"y", p.y}, {"theta", p.theta}});
     }
+    if (!physical && !problem.chain && solution.shape.size() >= 2) {
+      // Howell's beam: the internal forces per unit EI/l^2 (N, V) and EI/l (m) from the statics
+      // of the part before each point (the clamp's reaction), as for a physical beam.
+      const ShapeInternalForces f = shape_internal_forces(
+          uniform_cantilever(EndLoad{0.0, 0.0, 0.0}), solution.shape, solution.reactions);
+      for (std::size_t i = 0; i < f.moment.size() && i < shape.size(); ++i) {
+        shape[i]["N"] = f.axial[i];
+        shape[i]["V"] = f.shear[i];
+        shape[i]["m"] = f.moment[i];
+      }
+    }
     if (physical) {
       // The same points in SI: s, x, y in metres, the bending moment and stress.
       for (std::size_t i = 0; i < physical->shape.size() && i < shape.size(); ++i) {

@@ -17,6 +17,7 @@
 #include "cli/slow_progress.h"
 #include "flexure/beam/beam_sweep_grid.h"
 #include "flexure/benchmarks/studies/beam_sweep_run.h"
+#include "flexure/io/chain_toml.h"
 #include "flexure/io/output_path.h"
 #include "flexure/io/parallel/mpi_world.h"
 #include "flexure/solver/common/errors.h"
@@ -45,6 +46,7 @@ struct SweepBeamArgs {
   std::string tip_x, tip_y, tip_angle;
   // A physical beam (SI, or with units); its --Fx, --Fy, --M may be ranges (0N:5N:51).
   PhysicalFlags physical;
+  std::string chain_file;  // --chain FILE.toml: its tip load swept by --Fx, --Fy, --M
 };
 
 // A tip load of a physical sweep: a range START:STOP:COUNT whose ends are forces (moments for
@@ -93,6 +95,77 @@ TipPrescription sweep_tip(const SweepBeamArgs& args, bool physical) {
     tip.theta = io::parse_quantity(args.tip_angle, io::Dimension::kAngle, "--tip-angle").si;
   }
   return tip;
+}
+
+// A chain file's sweep: its tip load set by --Fx, --Fy, --M (ranges or values; with units when
+// the file is in SI, else plain numbers in the file's units); the file holds the rest.
+BeamSweepGrid make_chain_grid(const SweepBeamArgs& args) {
+  const io::ChainFile file = io::read_chain_file(args.chain_file);
+  warn(file.warnings);
+  const PhysicalFlags& f = args.physical;
+  for (const std::string* other : {&f.length,
+                                   &f.E,
+                                   &f.I,
+                                   &f.width,
+                                   &f.thickness,
+                                   &f.material,
+                                   &f.qx,
+                                   &f.qy,
+                                   &f.q_follower,
+                                   &f.density,
+                                   &f.g,
+                                   &f.nu,
+                                   &f.shear_coefficient,
+                                   &f.plate,
+                                   &f.curvature,
+                                   &f.width_tip,
+                                   &f.thickness_tip,
+                                   &args.alpha2,
+                                   &args.theta0,
+                                   &args.b_over_l,
+                                   &args.tip_x,
+                                   &args.tip_y,
+                                   &args.tip_angle}) {
+    if (!other->empty()) {
+      throw InvalidInput(
+          "--chain FILE.toml describes the whole beam (segments, sections, distributed loads, "
+          "boundary and tip); sweep its tip load with --Fx, --Fy, --M only");
+    }
+  }
+  if (f.extensible || args.load_ratio_n != "0" || args.mu != "0" || args.boundary != "free") {
+    throw InvalidInput(
+        "--chain FILE.toml describes the whole beam; do not combine it with --n, --mu, "
+        "--boundary or --extensible");
+  }
+  BeamSweepGrid grid;
+  SegmentChain chain = file.chain;
+  const std::tuple<SweepParameter, const std::string*, io::Dimension, double*> loads[] = {
+      {SweepParameter::kFx, &f.Fx, io::Dimension::kForce, &chain.tip_load.Fx},
+      {SweepParameter::kFy, &f.Fy, io::Dimension::kForce, &chain.tip_load.Fy},
+      {SweepParameter::kM, &f.M, io::Dimension::kMoment, &chain.tip_load.M}};
+  for (const auto& [p, text, dimension, value] : loads) {
+    if (text->empty()) continue;
+    const char* flag = flag_name(p);
+    if (text->find(':') != std::string::npos) {
+      const Range r = file.physical ? parse_load_range(*text, flag, dimension)
+                                    : parse_range(*text, flag, max_beam_sweep_points());
+      grid.axes.push_back({p, r.start, r.stop, r.count});
+    } else if (file.physical) {
+      *value = io::parse_quantity(*text, dimension, flag).si;
+    } else if (!parse_double(*text, *value) || !std::isfinite(*value)) {
+      throw InvalidInput(fmt::format(
+          "{} = '{}': the chain file is in its own units, so the load is a plain number",
+          flag,
+          *text));
+    }
+  }
+  grid.chain = chain;
+  grid.chain_in_si = file.physical;
+  grid.base.given = BeamProblem::Given::kAlpha2;
+  grid.validate(max_beam_sweep_points());
+  // Every point must be a chain the solvers take (a load on a held coordinate is refused here).
+  for (long index : {0L, grid.size() - 1}) grid.at(index).chain->validate();
+  return grid;
 }
 
 // A physical sweep: the beam of the flags with one or two of --Fx, --Fy, --M as ranges.
@@ -218,7 +291,9 @@ void run_sweep_beam(const SweepBeamArgs& args) {
   const int threads = args.threads.value_or(default_beam_sweep_threads());
   require_in_range(threads, "--threads", 1, 64);
   const bool physical = args.physical.given();
-  BeamSweepGrid grid = physical ? make_physical_grid(args) : make_grid(args);
+  BeamSweepGrid grid = !args.chain_file.empty() ? make_chain_grid(args)
+                       : physical               ? make_physical_grid(args)
+                                                : make_grid(args);
   // The verdict per point, as `flexure beam` gives it (docs/stability.md; its cost:
   // docs/performance.md, "Stability verdict"), also at the points started from a neighbour.
   grid.base.judge_stability = same_name(args.stability, "on");
@@ -375,6 +450,10 @@ void register_sweep_command(CLI::App& app) {
       "--tip-angle", args->tip_angle, "Prescribed tip angle, rad or with a unit (guided, fixed)");
   // The physical beam; its --Fx, --Fy, --M may be ranges with units (0N:5N:51).
   args->physical.add_to(*beam, false);
+  beam->add_option("--chain",
+                   args->chain_file,
+                   "Segment chain TOML file (docs/chain-toml.md) whose tip load --Fx, --Fy, --M "
+                   "sweeps (ranges with units for a file in SI)");
   beam->callback([args] { run_sweep_beam(*args); });
 }
 

@@ -36,11 +36,16 @@ std::vector<io::BeamSweepAxis> stored_axes(const BeamSweepGrid& grid) {
                        : axis.parameter == SweepParameter::kFy
                            ? "tip force Fy across the undeformed beam of the physical beam"
                            : "tip moment M of the physical beam";
+    // A chain file in its own units: its force and moment units.
+    const bool file_units = grid.chain && !grid.chain_in_si && is_physical(axis.parameter);
     axes.push_back({dataset_name(axis.parameter),
                     axis.start,
                     axis.stop,
                     axis.count,
-                    units_of(axis.parameter),
+                    file_units
+                        ? (axis.parameter == SweepParameter::kM ? "moment unit of the chain file"
+                                                                : "force unit of the chain file")
+                        : units_of(axis.parameter),
                     fmt::format("{}: axis {} of the datasets, {} equally spaced values",
                                 what,
                                 axes.size() + 1,
@@ -126,7 +131,7 @@ BeamSweepRun BeamSweepFile::run(const BeamSweepGrid& grid,
     point.set_converged(solution.converged());
     point.tip = solution.tip;
     point.alpha2 = solution.alpha2;
-    if (grid.physical && !std::isfinite(point.alpha2)) {
+    if ((grid.physical || grid.chain) && !std::isfinite(point.alpha2)) {
       // A physical point solved as a chain (distributed loads, a curvature, a held end...) has
       // no Howell's alpha2: its nondimensional Fy L^2/EI stands there.
       const BeamProblem problem = grid.at(index);
@@ -159,6 +164,11 @@ BeamSweepRun BeamSweepFile::run(const BeamSweepGrid& grid,
   // Streamed: each block of points is written before the next is solved (flat memory).
   io::BeamSweepWriter writer(file_->root(), out.count, metadata, layout);
   const io::BeamSweepSummary table = io::stream_beam_sweep(out.count, solve_point, sweep, writer);
+  if (grid.chain) {
+    io::Hdf5Group& root = file_->root();
+    root.set_attribute("units", grid.chain_in_si ? "SI" : "chain file");
+    root.set_attribute("length", grid.chain->total_length());
+  }
   if (grid.physical) {
     // The physical beam: its results are per unit length and in Howell's loads; these scale them
     // (tip x = a_over_l length_m; Fy = alpha2 EI_Nm2 / length_m^2).

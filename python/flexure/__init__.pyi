@@ -168,6 +168,7 @@ def sweep(
     curvature: Quantity | None = ...,
     width_tip: Quantity | None = ...,
     thickness_tip: Quantity | None = ...,
+    chain: Path | None = ...,
 ) -> Result: ...
 def cfm(
     *,

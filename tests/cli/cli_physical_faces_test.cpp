@@ -267,6 +267,53 @@ TEST(CliPhysicalFaces, PhysicalSweepPointsEqualTheBeamCommand) {
   EXPECT_NE(r2.err.find("--Fx, --Fy, --M"), std::string::npos) << r2.err;
 }
 
+TEST(CliPhysicalFaces, ChainSweepEqualsThePhysicalSweep) {
+  // The curved strip as a chain file in SI, its tip force swept by --Fy with units, against the
+  // same strip from the flags (--curvature): the same tips at every point.
+  test::ScratchDir dir;
+  const std::string toml = (dir / "curved.toml").string();
+  std::ofstream(toml) << "units = \"SI\"\n[[segment]]\ntype = \"flexible\"\nlength = \"50 mm\"\n"
+                         "E = \"200 GPa\"\nwidth = \"10 mm\"\nthickness = \"0.5 mm\"\n"
+                         "kappa0 = 8\n[tip_load]\nFx = -0.2\n";
+  const std::string a = (dir / "chain.h5").string(), b = (dir / "flags.h5").string();
+  const Json j = run_json(fmt::format("sweep beam --chain {} --Fy 0N:600mN:4 --out {}", toml, a));
+  EXPECT_EQ(j["axes"], "Fy");
+  run_json(fmt::format("sweep beam {} --curvature 8 --Fx -0.2 --Fy 0:0.6:4 --out {}", kStrip, b));
+  const hid_t fa = test::open_read_only(a), fb = test::open_read_only(b);
+  const std::vector<double> ya = test::read_doubles(fa, "b_over_l");
+  const std::vector<double> yb = test::read_doubles(fb, "b_over_l");
+  const std::vector<double> Fy = test::read_doubles(fa, "axes/Fy");
+  H5Fclose(fa);
+  H5Fclose(fb);
+  ASSERT_EQ(ya.size(), 4u);
+  EXPECT_NEAR(Fy[3], 0.6, 1e-15);
+  // Two scalings of one problem (SI against l = 1, EI = 1): equal to the solver tolerance.
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(ya[i], yb[i], 1e-9) << i;
+  // The file holds the beam: other beam flags are refused.
+  const test::CommandResult bad = run_flexure(fmt::format(
+      "sweep beam --chain {} --Fy 0:1:3 --length 1 --out {}", toml, (dir / "c.h5").string()));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--Fx, --Fy, --M only"), std::string::npos) << bad.err;
+}
+
+TEST(CliPhysicalFaces, HowellShapePointsCarryInternalForces) {
+  // alpha2 = 2, n = 1, mu = 0.5: the tip load (Fx, Fy) = (-n alpha2, alpha2) is N everywhere;
+  // m(s) = Fy (x_tip - x) - Fx (y_tip - y) + mu, the statics of the part beyond s.
+  for (const char* method : {"elliptic", "shooting"}) {
+    const Json j =
+        run_json(fmt::format("beam --alpha2 2 --n 1 --mu 0.5 --shape 11 --method {}", method));
+    const double Fx = -2.0, Fy = 2.0, mu = 0.5;
+    const double xt = j["a_over_l"].get<double>(), yt = j["b_over_l"].get<double>();
+    for (const Json& p : j["shape"]) {
+      const double t = p["theta"].get<double>();
+      EXPECT_NEAR(p["N"].get<double>(), Fx * std::cos(t) + Fy * std::sin(t), 1e-9) << method;
+      EXPECT_NEAR(p["V"].get<double>(), -Fx * std::sin(t) + Fy * std::cos(t), 1e-9) << method;
+      const double m = Fy * (xt - p["x"].get<double>()) - Fx * (yt - p["y"].get<double>()) + mu;
+      EXPECT_NEAR(p["m"].get<double>(), m, 1e-9) << method;
+    }
+  }
+}
+
 TEST(CliPhysicalFaces, RefusalsNameTheFlag) {
   for (const auto& [args, needle] :
        {std::pair{"beam --length 50mm --E 200GPa --I 1e-13 --Fy 1 --width-tip 5mm", "--width"},

@@ -140,3 +140,10 @@ def test_physical_sweep_from_python_equals_the_array_call(tmp_path):
     many = flexure.beam(**STRIP, Fy=np.linspace(0.0, 2.0, 5), Fx=-0.5, method="shooting")
     np.testing.assert_allclose(d["b_over_l"] * attributes["length_m"], many["tip_y"], rtol=0,
                                atol=1e-9 * L)
+
+
+def test_path_and_sweep_refuse_lists(tmp_path):
+    with pytest.raises(flexure.InvalidInput, match="one value per keyword"):
+        flexure.path(**STRIP, Fy=[1.0, 2.0], out=str(tmp_path / "p.h5"))
+    with pytest.raises(flexure.InvalidInput, match="one value per keyword"):
+        flexure.sweep(**STRIP, Fy=np.array([1.0, 2.0]), out=str(tmp_path / "s.h5"))
