@@ -204,10 +204,11 @@ BeamInput checked_input(const BeamRequest& r, const BeamRequestNames& names) {
   const bool nondimensional_loads = any_given || r.load_ratio_n != 0.0 || r.mu != 0.0 ||
                                     r.follower != 0.0 || r.boundary != "free";
   if (r.physical) {
-    if (nondimensional_loads || r.chain) {
+    // A physical beam takes any end condition; its prescribed tip x, y are then metres.
+    if (any_given || r.load_ratio_n != 0.0 || r.mu != 0.0 || r.follower != 0.0 || r.chain) {
       throw InvalidInput(fmt::format(
           "a physical beam ({}, {}, the section, {}, {}, {}) is loaded in newtons; do not "
-          "combine it with the nondimensional {}, {}, {}, {}, {}, {}, {} or with {} (a chain file "
+          "combine it with the nondimensional {}, {}, {}, {}, {}, {} or with {} (a chain file "
           "can be in SI units itself: docs/chain-toml.md)",
           names.length,
           names.E,
@@ -220,7 +221,6 @@ BeamInput checked_input(const BeamRequest& r, const BeamRequestNames& names) {
           names.load_ratio_n,
           names.mu,
           names.follower,
-          names.boundary,
           names.chain));
     }
     return input;
@@ -279,6 +279,9 @@ BeamInput make_beam_input(const BeamRequest& request, const BeamRequestNames& na
 }
 
 void add_physical_beam(BeamInput& input, PhysicalCantilever beam) {
+  // The request's end condition and prescribed tip (metres and radians) belong to the beam.
+  beam.end = input.problem.boundary;
+  beam.prescribed = input.problem.prescribed;
   input.problem = beam.to_problem(input.problem);
   input.physical = std::move(beam);
 }

@@ -28,7 +28,8 @@ struct BeamRequest {
   double load_ratio_n = 0.0;  // Howell's n (eq. 2.67), n > 0 compressive
   double mu = 0.0;            // end moment M l/EI (eq. 2.83)
   // The far end: free, guided, pinned, slider or fixed, and its prescribed tip values (x/l, y/l,
-  // the angle as text like theta0); each only where the end prescribes it.
+  // or metres for a physical beam; the angle as text like theta0); each only where the end
+  // prescribes it.
   std::string boundary = "free";
   std::optional<double> tip_x;
   std::optional<double> tip_y;

@@ -41,8 +41,10 @@ bool BeamSweepSolver::warm_candidate() const {
   const BeamProblem& b = grid_.base;
   // Forward shooting problems of the free cantilever with dead loads: the ones whose load path
   // is known from the loads alone (the sweep's own problems).
-  return method_ == BeamMethod::kShooting && b.given == BeamProblem::Given::kAlpha2 && !b.chain &&
-         b.boundary == EndCondition::kFree && b.follower == 0.0 && b.shape_points == 0;
+  // (A physical sweep's points may be chains, e.g. an axial load alone: each from zero.)
+  return method_ == BeamMethod::kShooting && !grid_.physical && !grid_.chain &&
+         b.given == BeamProblem::Given::kAlpha2 && !b.chain && b.boundary == EndCondition::kFree &&
+         b.follower == 0.0 && b.shape_points == 0;
 }
 
 void BeamSweepSolver::remember(Memory& m,

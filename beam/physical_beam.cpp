@@ -174,6 +174,21 @@ struct SectionSpan {
   std::optional<double> EA;    // N
   // The section's area where known (any segment), for the fibre stresses N/A -+ m c/I.
   std::optional<double> fibre_area;
+  // A tapered cantilever (one span over the whole beam): the section at each point is the
+  // beam's there, b(s) h(s)^2/6 and b(s) h(s), instead of the constants above.
+  const PhysicalCantilever* tapered = nullptr;
+
+  // I/c and the area at arc length s (per unit length).
+  std::optional<double> modulus_at(double s) const {
+    if (tapered == nullptr || !section_modulus) return section_modulus;
+    const double at = s * tapered->length;
+    return tapered->second_moment_at(at) / (0.5 * tapered->thickness_at(at).value_or(0.0));
+  }
+  std::optional<double> area_at(double s) const {
+    if (tapered == nullptr || !fibre_area) return fibre_area;
+    const double at = s * tapered->length;
+    return tapered->width_at(at).value_or(0.0) * tapered->thickness_at(at).value_or(0.0);
+  }
 };
 
 PhysicalResults evaluate(const BeamSolution& solution,
@@ -229,7 +244,7 @@ PhysicalResults evaluate(const BeamSolution& solution,
           out.max_axial_strain = std::max(out.max_axial_strain.value_or(0.0), strain);
         }
         if (spans[k].section_modulus) {
-          double sigma = magnitude[i] / *spans[k].section_modulus;
+          double sigma = magnitude[i] / *spans[k].modulus_at(shape[i].s);
           if (spans[k].EA && spans[k].area) sigma += std::fabs(forces.axial[i]) / *spans[k].area;
           if (sigma >= stress[i]) {
             stress[i] = sigma;
@@ -265,8 +280,8 @@ PhysicalResults evaluate(const BeamSolution& solution,
       for (const SectionSpan& span : spans) {
         if (shape[i].s < span.s0 - 1e-12 || shape[i].s > span.s1 + 1e-12) continue;
         if (!span.flexible || !span.section_modulus || !span.fibre_area) break;
-        const double axial = forces.axial[i] / *span.fibre_area;
-        const double bending = moments[i] / *span.section_modulus;
+        const double axial = forces.axial[i] / *span.area_at(shape[i].s);
+        const double bending = moments[i] / *span.modulus_at(shape[i].s);
         p.stress_pos_fibre = axial - bending;
         p.stress_neg_fibre = axial + bending;
         break;
@@ -377,6 +392,33 @@ void PhysicalCantilever::validate() const {
           "give the section as --width and --thickness, or choose --plate on or off");
     }
   }
+  require_finite(curvature, "--curvature (stress-free curvature, 1/m)");
+  if (tapered()) {
+    if (!width || !thickness) {
+      throw InvalidInput(
+          "a taper (--width-tip, --thickness-tip) varies the rectangle: give the section as "
+          "--width and --thickness");
+    }
+    if (width_tip) require_positive(*width_tip, "--width-tip (section width at the tip, m)");
+    if (thickness_tip) {
+      require_positive(*thickness_tip, "--thickness-tip (section thickness at the tip, m)");
+    }
+    if (extensible) {
+      throw InvalidInput(
+          "--extensible with a taper: the extensible segment has one axial and shear rigidity "
+          "(EA, GAs), a taper varies them; give a chain file of several segments instead");
+    }
+    if (plate == PlateRule::kAuto) {
+      throw InvalidInput(
+          "--plate auto with a taper: the Searle parameter b^2/(R h) varies along the strip; "
+          "choose --plate on or off");
+    }
+  }
+  for (const auto& [value, what] : {std::pair{prescribed.x, "--tip-x (m)"},
+                                    std::pair{prescribed.y, "--tip-y (m)"},
+                                    std::pair{prescribed.theta, "--tip-angle (rad)"}}) {
+    if (value) require_finite(*value, what);
+  }
   const double EI = flexural_rigidity();
   if (!(std::isfinite(EI) && EI > 0.0)) {
     throw InvalidInput(
@@ -384,6 +426,23 @@ void PhysicalCantilever::validate() const {
                     "finite number; check --E and the section",
                     EI));
   }
+}
+
+std::optional<double> PhysicalCantilever::width_at(double s) const {
+  if (!width) return std::nullopt;
+  const double t = std::clamp(s / length, 0.0, 1.0);
+  return width_tip ? *width + t * (*width_tip - *width) : *width;
+}
+
+std::optional<double> PhysicalCantilever::thickness_at(double s) const {
+  if (!thickness) return std::nullopt;
+  const double t = std::clamp(s / length, 0.0, 1.0);
+  return thickness_tip ? *thickness + t * (*thickness_tip - *thickness) : *thickness;
+}
+
+double PhysicalCantilever::second_moment_at(double s) const {
+  if (I) return *I;
+  return width_at(s).value_or(0.0) * std::pow(thickness_at(s).value_or(0.0), 3) / 12.0;
 }
 
 double PhysicalCantilever::bending_modulus() const {
@@ -406,9 +465,11 @@ BeamProblem PhysicalCantilever::to_problem(BeamProblem problem) const {
   problem.mu = mu;
   problem.chain.reset();
   problem.boundary = EndCondition::kFree;
-  if (beyond_elastica()) {
-    // Distributed loads or extension: the one-segment chain (l = 1, EI = 1) carries them.
-    problem.chain = to_chain(EndCondition::kFree);
+  if (beyond_elastica() || shaped() || end != EndCondition::kFree) {
+    // Distributed loads, extension, a curvature, a taper or a prescribed tip: the one-segment
+    // chain (l = 1, EI = 1 at the clamp) carries them.
+    problem.chain = to_chain();
+    problem.boundary = end;
     return problem;
   }
   for (const auto& [value, name] : {std::pair{alpha2, "alpha2 = Fy L^2/EI"},
@@ -441,6 +502,22 @@ SegmentChain PhysicalCantilever::to_chain(EndCondition end,
   segment.qx = qx * force_scale * length;
   segment.qy = total_qy() * force_scale * length;
   segment.q_follower = q_follower * force_scale * length;
+  segment.kappa0 = curvature * length;  // kappa0 L
+  if (tapered()) {
+    // EI(s)/EI(0) at equally spaced stations, interpolated linearly by the solvers; the
+    // self-weight rho b(s) h(s) g with it.
+    const int n = kTaperStations;
+    const double root_I = second_moment_at(0.0);
+    for (int k = 0; k < n; ++k) {
+      const double at = length * k / (n - 1);
+      segment.EI_profile.push_back(second_moment_at(at) / root_I);
+      if (density) {
+        const double weight = *density * *width_at(at) * *thickness_at(at) * g;
+        segment.q_profile.push_back(
+            {qx * force_scale * length, (qy - weight) * force_scale * length});
+      }
+    }
+  }
   if (extensible) {
     const double A = area().value_or(0.0);
     segment.EA = E * A * force_scale;
@@ -470,6 +547,11 @@ SegmentChain PhysicalCantilever::to_chain(EndCondition end,
           load));
     }
   }
+  for (const auto& [value, what] : {std::pair{prescribed_m.x, "--tip-x (m)"},
+                                    std::pair{prescribed_m.y, "--tip-y (m)"},
+                                    std::pair{prescribed_m.theta, "--tip-angle (rad)"}}) {
+    if (value) require_finite(*value, what);
+  }
   if (prescribed_m.x) chain.prescribed.x = *prescribed_m.x / length;
   if (prescribed_m.y) chain.prescribed.y = *prescribed_m.y / length;
   chain.prescribed.theta = prescribed_m.theta;
@@ -490,6 +572,14 @@ PhysicalBeamSolution solve_cantilever(BeamMethod method,
     throw InvalidInput(fmt::format(
         "a distributed load, self-weight or an extensible beam is solved by the shooting method "
         "(auto chooses it; the chain method takes dead loads), not by the {} method",
+        to_string(method)));
+  }
+  if (problem.chain && (beam.shaped() || beam.end != EndCondition::kFree) &&
+      (method == BeamMethod::kElliptic || method == BeamMethod::kPrbm)) {
+    throw InvalidInput(fmt::format(
+        "a curved or tapered beam, or one with a prescribed tip (--boundary {}), is solved by the "
+        "shooting or chain method (auto chooses shooting), not by the {} method",
+        to_string(beam.end),
         to_string(method)));
   }
   if (problem.chain && (method == BeamMethod::kElliptic || method == BeamMethod::kPrbm)) {
@@ -520,6 +610,7 @@ PhysicalBeamSolution solve_cantilever(BeamMethod method,
   span.s1 = 1.0;
   if (beam.thickness) span.section_modulus = beam.second_moment() / (0.5 * *beam.thickness);
   span.fibre_area = beam.area();
+  if (beam.tapered()) span.tapered = &beam;
   if (beam.extensible) {
     span.area = beam.area();
     span.EA = beam.E * beam.area().value_or(0.0);
@@ -530,6 +621,34 @@ PhysicalBeamSolution solve_cantilever(BeamMethod method,
 }
 
 }  // namespace
+
+ShapeInternalForces shape_internal_forces(const SegmentChain& chain,
+                                          const std::vector<ShapePoint>& shape,
+                                          const Reaction& root) {
+  // forces_along takes arc lengths per unit length and positions in lever units.
+  const double total = chain.total_length();
+  std::vector<ShapePoint> unit = shape;
+  for (ShapePoint& p : unit) p.s /= total;
+  Scaling scale;
+  scale.length = total;
+  scale.root = root;
+  scale.chain = &chain;
+  InternalForces f = forces_along(unit, scale);
+  return {std::move(f.moment), std::move(f.axial), std::move(f.shear)};
+}
+
+void PhysicalCantilever::fibre_sections(int points,
+                                        std::vector<double>& modulus,
+                                        std::vector<double>& area) const {
+  modulus.clear();
+  area.clear();
+  if (!width || !thickness || points < 2) return;
+  for (int k = 0; k < points; ++k) {
+    const double at = length * k / (points - 1);
+    modulus.push_back(second_moment_at(at) / (0.5 * *thickness_at(at)));
+    area.push_back(*width_at(at) * *thickness_at(at));
+  }
+}
 
 PhysicalBeamSolution solve_physical_beam(BeamMethod method,
                                          const PhysicalCantilever& given,

@@ -45,17 +45,41 @@ struct PhysicalCantilever {
   PlateRule plate = PlateRule::kOff;
   bool plate_given = false;  // --plate was given (then --nu is accepted even with off)
   bool plate_applied = false;
+  // The shape of the beam (docs/cli.md "Curved, tapered and supported physical beams"): the
+  // stress-free curvature kappa0 (1/m, positive bends toward +y: m = EI (theta' - kappa0)), and a
+  // linear taper of the rectangle from (width, thickness) at the clamp to (width_tip,
+  // thickness_tip) at the tip (either or both; the other keeps its root value). Any of them makes
+  // the beam a one-segment chain.
+  double curvature = 0.0;
+  std::optional<double> width_tip;      // m
+  std::optional<double> thickness_tip;  // m
+  // The far end (`flexure beam --boundary`, `path --boundary`): free (the default, loads given)
+  // or a prescribed tip, in metres and radians (unset: the stress-free tip value). A load
+  // conjugate to a prescribed coordinate must be 0 (it is the support's reaction).
+  EndCondition end = EndCondition::kFree;
+  TipPrescription prescribed;
 
   // Whether any of the above is given.
   bool beyond_elastica() const {
     return qx != 0.0 || qy != 0.0 || q_follower != 0.0 || density.has_value() || extensible;
   }
-  // width thickness, where the section is a rectangle.
+  // A stress-free curvature or a taper: not Howell's straight uniform beam (a one-segment chain,
+  // solved by the shooting or chain method).
+  bool shaped() const { return curvature != 0.0 || tapered(); }
+  bool tapered() const { return width_tip.has_value() || thickness_tip.has_value(); }
+  // width thickness, where the section is a rectangle (at the clamp, for a tapered beam).
   std::optional<double> area() const {
     if (width && thickness) return *width * *thickness;
     return std::nullopt;
   }
-  // The dead load per unit length including the self-weight, N/m.
+  // The rectangle at arc length s (m) of a tapered beam, linear from the clamp to the tip; the
+  // root's for a beam without a taper. Width and thickness as given (nullopt with --I).
+  std::optional<double> width_at(double s) const;
+  std::optional<double> thickness_at(double s) const;
+  // b h^3/12 at s (I for a section given by I).
+  double second_moment_at(double s) const;
+  // The dead load per unit length including the self-weight, N/m (at the clamp for a taper, whose
+  // self-weight varies along it: self_weight_profile()).
   double total_qy() const { return qy - (density ? *density * area().value_or(0.0) * g : 0.0); }
 
   // Throws InvalidInput naming the bad field: lengths, modulus and section > 0 and finite, I or
@@ -69,15 +93,42 @@ struct PhysicalCantilever {
   double flexural_rigidity() const { return bending_modulus() * second_moment(); }
   // Howell's nondimensional problem of this beam, forward (the load is given). A purely axial load
   // (Fy = 0, Fx != 0) has no Howell's n; it is then a one-segment chain with the same
-  // nondimensional loads, which the shooting and chain methods solve. The method settings
-  // (tolerance, integrator, shape points, ...) are those of `settings`.
+  // nondimensional loads, which the shooting and chain methods solve; so is a curved or tapered
+  // beam, one with distributed loads or extension, and any end but free (`end`, `prescribed`). The
+  // method settings (tolerance, integrator, shape points, ...) are those of `settings`.
   BeamProblem to_problem(BeamProblem settings = {}) const;
-  // Howell's nondimensional chain of this beam (length 1, EI 1: forces F L^2/EI, moments M L/EI)
-  // with the far end `end` and the prescribed tip values given in metres and radians (`flexure
-  // path`, which takes any end condition). Throws InvalidInput for a load on a prescribed
-  // coordinate (it is the support's reaction) and for loads that overflow.
+  // Howell's nondimensional chain of this beam (length 1, EI 1 at the clamp: forces F L^2/EI,
+  // moments M L/EI, kappa0 L; a taper as EI_profile relative to the clamp's EI at
+  // kTaperStations stations) with the far end `end` and the prescribed tip values given in metres
+  // and radians (`flexure path`, which takes any end condition). Throws InvalidInput for a load on
+  // a prescribed coordinate (it is the support's reaction) and for loads that overflow.
   SegmentChain to_chain(EndCondition end, const TipPrescription& prescribed_m = {}) const;
+  // The same with the beam's own `end` and `prescribed`.
+  SegmentChain to_chain() const { return to_chain(end, prescribed); }
+  // The section modulus I/c (m^3) and area (m^2) at `points` equally spaced arc lengths from the
+  // clamp to the tip (the section there, for a taper): the fibre stresses N/A -+ m c/I of shapes
+  // (`flexure path --shapes`). Both empty without the rectangle (a section given by I).
+  void fibre_sections(int points, std::vector<double>& modulus, std::vector<double>& area) const;
+  // Stations of a taper's EI_profile (and self-weight profile): a width taper makes EI linear in s
+  // (exact with any count); a thickness taper cubic, whose linear interpolation between 1025
+  // stations departs from b h(s)^3/12 by at most (1/1024)^2/8 max|EI''|/EI, below 1e-6 for a tip
+  // thickness from 1/2 to 2 times the root's.
+  static constexpr int kTaperStations = 1025;
 };
+
+// The internal forces at the points of a solved shape of `chain` (the chain's own units: the
+// shape's s, x, y as the solver returns them), from the statics of the part between the clamp and
+// each point, with `root` the clamp's reaction on the chain (docs/units.md "Internal forces"):
+// the bending moment m, N . t and N . n (N the force the part beyond s exerts on the part before
+// it, n the normal left of the tangent; dm/ds = -V). Joint loads and the distributed loads of
+// `chain` (a dead load by the midpoint rule over the shape's intervals, a follower pressure exact
+// for each chord) enter as in solve_physical_beam.
+struct ShapeInternalForces {
+  std::vector<double> moment, axial, shear;
+};
+ShapeInternalForces shape_internal_forces(const SegmentChain& chain,
+                                          const std::vector<ShapePoint>& shape,
+                                          const Reaction& root);
 
 // One point of the deflected shape in SI units.
 struct PhysicalShapePoint {

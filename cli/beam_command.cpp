@@ -49,8 +49,9 @@ struct BeamArgs {
   CLI::Option* shape_option = nullptr;
   // End conditions and the numerical methods (docs/cli.md).
   std::string boundary = "free";
-  double tip_x = 0.0;
-  double tip_y = 0.0;
+  // x/l, y/l; a physical beam's in metres, or with a unit (45mm).
+  std::string tip_x;
+  std::string tip_y;
   std::string tip_angle;  // an angle, radians or with a unit
   double follower = 0.0;
   int elements = 100;
@@ -78,6 +79,21 @@ struct BeamArgs {
   std::string out;  // --out: the HDF5 file of a contact solution (docs/contact.md)
 };
 
+// A prescribed tip coordinate: x/l or y/l, a plain number; a physical beam's in metres (plain, or
+// with a unit: 45mm).
+double tip_length(const std::string& text, const char* flag, bool physical) {
+  if (physical) return io::parse_quantity(text, io::Dimension::kLength, flag).si;
+  double value = 0.0;
+  if (!parse_double(text, value)) {
+    throw InvalidInput(fmt::format(
+        "{} = '{}': a tip coordinate of Howell's nondimensional beam is a plain number (x/l, "
+        "y/l); a length with a unit needs a physical beam (--length, --E, the section)",
+        flag,
+        text));
+  }
+  return value;
+}
+
 // The request the flags make (beam/beam_request.h): a value is given when its flag is, so the
 // library tells a default from a value the user gave.
 BeamRequest request_of(const BeamArgs& args) {
@@ -89,8 +105,9 @@ BeamRequest request_of(const BeamArgs& args) {
   r.load_ratio_n = args.load_ratio_n;
   r.mu = args.mu;
   r.boundary = args.boundary;
-  if (given(args.tip_x_option)) r.tip_x = args.tip_x;
-  if (given(args.tip_y_option)) r.tip_y = args.tip_y;
+  r.physical = args.physical.given();
+  if (given(args.tip_x_option)) r.tip_x = tip_length(args.tip_x, "--tip-x", r.physical);
+  if (given(args.tip_y_option)) r.tip_y = tip_length(args.tip_y, "--tip-y", r.physical);
   if (given(args.tip_angle_option)) r.tip_angle = args.tip_angle;
   r.follower = args.follower;
   r.method = args.method;
@@ -104,7 +121,6 @@ BeamRequest request_of(const BeamArgs& args) {
   if (given(args.slenderness_option)) r.slenderness = args.slenderness;
   r.stable = args.stable;
   r.judge_stability = same_name(args.stability, "on");
-  r.physical = args.physical.given();
   r.chain = given(args.chain_option);
   return r;
 }
@@ -213,6 +229,18 @@ void print_report(const BeamInput& input,
         b.Fx,
         b.Fy,
         b.M);
+    if (b.shaped() || b.end != EndCondition::kFree) {
+      fmt::print(
+          "  {} end{}{}{}\n",
+          to_string(b.end),
+          b.curvature != 0.0 ? fmt::format("; stress-free curvature {:g} 1/m", b.curvature)
+                             : std::string(),
+          b.width_tip ? fmt::format("; width {:g} m at the tip", *b.width_tip) : std::string(),
+          b.thickness_tip
+              ? fmt::format("; thickness {:g} m at the tip (EI and I above: at the clamp)",
+                            *b.thickness_tip)
+              : std::string());
+    }
   } else if (problem.chain) {
     const Reaction& tip = solution.chain_tip_load;
     fmt::print(
@@ -349,6 +377,12 @@ void add_physical_json(Json& out, const BeamInput& input, const PhysicalResults&
     out["Fx_N"] = b.Fx;
     out["Fy_N"] = b.Fy;
     out["M_Nm"] = b.M;
+    if (b.shaped()) {
+      // A curved or tapered beam (EI_Nm2 and I_m4 above are the clamp's).
+      out["curvature_per_m"] = b.curvature;
+      out["width_tip_m"] = b.width_tip ? Json(*b.width_tip) : Json(nullptr);
+      out["thickness_tip_m"] = b.thickness_tip ? Json(*b.thickness_tip) : Json(nullptr);
+    }
     if (b.beyond_elastica()) {
       out["qx_N_per_m"] = b.qx;
       out["qy_N_per_m"] = b.total_qy();  // including the self-weight
@@ -480,6 +514,17 @@ Json to_json(const BeamInput& input,
     Json shape = Json::array();
     for (const ShapePoint& p : solution.shape) {
       shape.push_back(Json{{"s", p.s}, {"x", p.x}, {"y", p.y}, {"theta", p.theta}});
+    }
+    if (!physical && !problem.chain && solution.shape.size() >= 2) {
+      // Howell's beam: the internal forces per unit EI/l^2 (N, V) and EI/l (m) from the statics
+      // of the part before each point (the clamp's reaction), as for a physical beam.
+      const ShapeInternalForces f = shape_internal_forces(
+          uniform_cantilever(EndLoad{0.0, 0.0, 0.0}), solution.shape, solution.reactions);
+      for (std::size_t i = 0; i < f.moment.size() && i < shape.size(); ++i) {
+        shape[i]["N"] = f.axial[i];
+        shape[i]["V"] = f.shear[i];
+        shape[i]["m"] = f.moment[i];
+      }
     }
     if (physical) {
       // The same points in SI: s, x, y in metres, the bending moment and stress.
@@ -768,9 +813,15 @@ void register_beam_command(CLI::App& app) {
       ->default_str("free")
       ->transform(CLI::IsMember({"free", "guided", "pinned", "slider", "fixed"}, CLI::ignore_case));
   args->tip_x_option = beam->add_option(
-      "--tip-x", args->tip_x, "Prescribed tip x/l (pinned, fixed; default: unloaded tip)");
+      "--tip-x",
+      args->tip_x,
+      "Prescribed tip x/l (pinned, fixed; default: unloaded tip); metres or with a unit for a "
+      "physical beam");
   args->tip_y_option = beam->add_option(
-      "--tip-y", args->tip_y, "Prescribed tip y/l (pinned, slider, fixed; default 0)");
+      "--tip-y",
+      args->tip_y,
+      "Prescribed tip y/l (pinned, slider, fixed; default 0); metres or with a unit for a "
+      "physical beam");
   args->tip_angle_option =
       beam->add_option("--tip-angle",
                        args->tip_angle,

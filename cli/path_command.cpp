@@ -159,8 +159,9 @@ PathRequest make_request(const PathArgs& args) {
   };
   TipPrescription tip;
   auto length_value = [&](const std::string& text, const char* flag) {
-    return physical ? io::parse_quantity(text, io::Dimension::kLength, flag).si
-                    : plain_length(text, flag);
+    // A chain file in SI units takes metres too (plain, or with a unit: 5mm).
+    return physical || file_physical ? io::parse_quantity(text, io::Dimension::kLength, flag).si
+                                     : plain_length(text, flag);
   };
   if (*args.tip_x_option) {
     allowed(mask.x, TipCoordinate::kX, "--tip-x");
@@ -212,6 +213,10 @@ PathRequest make_request(const PathArgs& args) {
     }
     request.chain = beam.to_chain(end, tip);
     request.units = PathUnits::si(beam.length, beam.flexural_rigidity());
+    // The section at each shape point: the fibre stresses of /shapes.
+    if (args.shapes >= 2 && args.shapes <= 1'000'000) {  // else refused below
+      beam.fibre_sections(args.shapes, request.shape_section_modulus, request.shape_area);
+    }
   } else if (from_file) {
     request.chain = *file_chain;
     request.units = PathUnits::chain_file(file_physical);

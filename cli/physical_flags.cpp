@@ -73,6 +73,9 @@ void PhysicalFlags::add_to(CLI::App& command, bool with_yield_strength) {
       {"--g", &g},
       {"--nu", &nu},
       {"--shear-coefficient", &shear_coefficient},
+      {"--curvature", &curvature},
+      {"--width-tip", &width_tip},
+      {"--thickness-tip", &thickness_tip},
   };
   const char* more_help[] = {
       "Dead load per unit length along the undeformed beam (N/m, or N/mm, lbf/in)",
@@ -84,6 +87,10 @@ void PhysicalFlags::add_to(CLI::App& command, bool with_yield_strength) {
       "Gravity of the self-weight (m/s^2; default 9.80665)",
       "Poisson's ratio (with --extensible: G = E / (2 (1 + nu)))",
       "Timoshenko's shear coefficient k (with --extensible; default 5/6, the rectangle)",
+      "Stress-free curvature kappa0 (1/m, or 1/mm, 1/in; positive bends toward +y): m = EI "
+      "(theta' - kappa0)",
+      "Taper: section width at the tip (m, or mm, in), linear from --width at the clamp",
+      "Taper: section thickness at the tip (m, or mm, in), linear from --thickness at the clamp",
   };
   for (std::size_t i = 0; i < std::size(more); ++i) {
     options.push_back(group->add_option(more[i].first, *more[i].second, more_help[i]));
@@ -138,6 +145,9 @@ PhysicalCantilever PhysicalFlags::parse() const {
     beam.g = io::parse_quantity(g, Dimension::kAcceleration, "--g").si;
   }
   beam.extensible = extensible;
+  beam.curvature = quantity_option(curvature, Dimension::kCurvature, "--curvature").value_or(0.0);
+  beam.width_tip = quantity_option(width_tip, Dimension::kLength, "--width-tip");
+  beam.thickness_tip = quantity_option(thickness_tip, Dimension::kLength, "--thickness-tip");
   if (!nu.empty()) beam.nu = plain_number(nu, "--nu");
   if (!plate.empty()) {
     beam.plate = plate_rule_from_string(plate, "--plate");

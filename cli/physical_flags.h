@@ -17,6 +17,8 @@ struct PhysicalFlags {
   std::string length, E, I, width, thickness, Fx, Fy, M, yield_strength, material;
   // Distributed loads, self-weight and extension (docs/cli.md, "Physical beams").
   std::string qx, qy, q_follower, density, g, nu, shear_coefficient;
+  // A curved or tapered beam: the stress-free curvature and the section at the tip.
+  std::string curvature, width_tip, thickness_tip;
   // The bending modulus: off (E), on (E/(1 - nu^2)), auto (docs/plate-modulus.md).
   std::string plate;
   bool extensible = false;

@@ -7,14 +7,17 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <tuple>
 
 #include "cli/beam_methods.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/csv_output.h"
+#include "cli/physical_flags.h"
 #include "cli/slow_progress.h"
 #include "flexure/beam/beam_sweep_grid.h"
 #include "flexure/benchmarks/studies/beam_sweep_run.h"
+#include "flexure/io/chain_toml.h"
 #include "flexure/io/output_path.h"
 #include "flexure/io/parallel/mpi_world.h"
 #include "flexure/solver/common/errors.h"
@@ -38,7 +41,190 @@ struct SweepBeamArgs {
   bool compress = false;
   bool json = false;
   std::string stability = "on";  // the verdict per point (docs/stability.md), or off
+  // The far end and its prescribed tip (x/l, y/l; metres or with a unit for a physical beam).
+  std::string boundary = "free";
+  std::string tip_x, tip_y, tip_angle;
+  // A physical beam (SI, or with units); its --Fx, --Fy, --M may be ranges (0N:5N:51).
+  PhysicalFlags physical;
+  std::string chain_file;  // --chain FILE.toml: its tip load swept by --Fx, --Fy, --M
 };
+
+// A tip load of a physical sweep: a range START:STOP:COUNT whose ends are forces (moments for
+// --M), each plain SI or with a unit (0N:5N:51).
+Range parse_load_range(const std::string& text, const char* what, io::Dimension dimension) {
+  const auto first = text.find(':');
+  const auto second = first == std::string::npos ? std::string::npos : text.find(':', first + 1);
+  if (second == std::string::npos) return parse_range(text, what, max_beam_sweep_points());
+  const auto value = [&](const std::string& part, const char* end) {
+    return io::parse_quantity(part, dimension, fmt::format("{} {}", what, end)).si;
+  };
+  const double start = value(text.substr(0, first), "START");
+  const double stop = value(text.substr(first + 1, second - first - 1), "STOP");
+  return parse_range(fmt::format("{:.17g}:{:.17g}:{}", start, stop, text.substr(second + 1)),
+                     what,
+                     max_beam_sweep_points());
+}
+
+// The prescribed tip of --boundary: x/l, y/l (plain), or metres for a physical beam.
+TipPrescription sweep_tip(const SweepBeamArgs& args, bool physical) {
+  const EndCondition end = end_condition_from_string(args.boundary);
+  const PrescribedMask mask = prescribed_mask(end);
+  TipPrescription tip;
+  const auto length = [&](const std::string& text, bool allowed, const char* flag) {
+    if (!allowed) {
+      throw InvalidInput(fmt::format("{} is not prescribed by --boundary {}", flag, args.boundary));
+    }
+    double value = 0.0;
+    if (physical) return io::parse_quantity(text, io::Dimension::kLength, flag).si;
+    if (!parse_double(text, value) || !std::isfinite(value)) {
+      throw InvalidInput(fmt::format(
+          "{} = '{}': a tip coordinate of Howell's nondimensional beam is a finite plain number "
+          "(x/l, y/l); a length with a unit needs a physical beam (--length, --E, the section)",
+          flag,
+          text));
+    }
+    return value;
+  };
+  if (!args.tip_x.empty()) tip.x = length(args.tip_x, mask.x, "--tip-x");
+  if (!args.tip_y.empty()) tip.y = length(args.tip_y, mask.y, "--tip-y");
+  if (!args.tip_angle.empty()) {
+    if (!mask.theta) {
+      throw InvalidInput(
+          fmt::format("--tip-angle is not prescribed by --boundary {}", args.boundary));
+    }
+    tip.theta = io::parse_quantity(args.tip_angle, io::Dimension::kAngle, "--tip-angle").si;
+  }
+  return tip;
+}
+
+// A chain file's sweep: its tip load set by --Fx, --Fy, --M (ranges or values; with units when
+// the file is in SI, else plain numbers in the file's units); the file holds the rest.
+BeamSweepGrid make_chain_grid(const SweepBeamArgs& args) {
+  const io::ChainFile file = io::read_chain_file(args.chain_file);
+  warn(file.warnings);
+  const PhysicalFlags& f = args.physical;
+  for (const std::string* other : {&f.length,
+                                   &f.E,
+                                   &f.I,
+                                   &f.width,
+                                   &f.thickness,
+                                   &f.material,
+                                   &f.qx,
+                                   &f.qy,
+                                   &f.q_follower,
+                                   &f.density,
+                                   &f.g,
+                                   &f.nu,
+                                   &f.shear_coefficient,
+                                   &f.plate,
+                                   &f.curvature,
+                                   &f.width_tip,
+                                   &f.thickness_tip,
+                                   &args.alpha2,
+                                   &args.theta0,
+                                   &args.b_over_l,
+                                   &args.tip_x,
+                                   &args.tip_y,
+                                   &args.tip_angle}) {
+    if (!other->empty()) {
+      throw InvalidInput(
+          "--chain FILE.toml describes the whole beam (segments, sections, distributed loads, "
+          "boundary and tip); sweep its tip load with --Fx, --Fy, --M only");
+    }
+  }
+  if (f.extensible || args.load_ratio_n != "0" || args.mu != "0" || args.boundary != "free") {
+    throw InvalidInput(
+        "--chain FILE.toml describes the whole beam; do not combine it with --n, --mu, "
+        "--boundary or --extensible");
+  }
+  BeamSweepGrid grid;
+  SegmentChain chain = file.chain;
+  const std::tuple<SweepParameter, const std::string*, io::Dimension, double*> loads[] = {
+      {SweepParameter::kFx, &f.Fx, io::Dimension::kForce, &chain.tip_load.Fx},
+      {SweepParameter::kFy, &f.Fy, io::Dimension::kForce, &chain.tip_load.Fy},
+      {SweepParameter::kM, &f.M, io::Dimension::kMoment, &chain.tip_load.M}};
+  for (const auto& [p, text, dimension, value] : loads) {
+    if (text->empty()) continue;
+    const char* flag = flag_name(p);
+    if (text->find(':') != std::string::npos) {
+      const Range r = file.physical ? parse_load_range(*text, flag, dimension)
+                                    : parse_range(*text, flag, max_beam_sweep_points());
+      grid.axes.push_back({p, r.start, r.stop, r.count});
+    } else if (file.physical) {
+      *value = io::parse_quantity(*text, dimension, flag).si;
+    } else if (!parse_double(*text, *value) || !std::isfinite(*value)) {
+      throw InvalidInput(fmt::format(
+          "{} = '{}': the chain file is in its own units, so the load is a plain number",
+          flag,
+          *text));
+    }
+  }
+  grid.chain = chain;
+  grid.chain_in_si = file.physical;
+  grid.base.given = BeamProblem::Given::kAlpha2;
+  grid.validate(max_beam_sweep_points());
+  // Every point must be a chain the solvers take (a load on a held coordinate is refused here).
+  for (long index : {0L, grid.size() - 1}) grid.at(index).chain->validate();
+  return grid;
+}
+
+// A physical sweep: the beam of the flags with one or two of --Fx, --Fy, --M as ranges.
+BeamSweepGrid make_physical_grid(const SweepBeamArgs& args) {
+  for (const std::string* given : {&args.alpha2, &args.theta0, &args.b_over_l}) {
+    if (!given->empty()) {
+      throw InvalidInput(
+          "a physical beam (--length, --E, the section) is swept over its tip loads --Fx, --Fy, "
+          "--M in newtons; do not combine it with --alpha2, --theta0 or --b-over-l");
+    }
+  }
+  if (args.load_ratio_n != "0" || args.mu != "0") {
+    throw InvalidInput(
+        "a physical beam is loaded by --Fx, --Fy, --M in newtons; do not combine it with --n or "
+        "--mu");
+  }
+  PhysicalFlags flags = args.physical;
+  BeamSweepGrid grid;
+  const std::tuple<SweepParameter, std::string*, io::Dimension> loads[] = {
+      {SweepParameter::kFx, &flags.Fx, io::Dimension::kForce},
+      {SweepParameter::kFy, &flags.Fy, io::Dimension::kForce},
+      {SweepParameter::kM, &flags.M, io::Dimension::kMoment}};
+  for (const auto& [p, text, dimension] : loads) {
+    if (text->find(':') == std::string::npos) continue;
+    const Range r = parse_load_range(*text, flag_name(p), dimension);
+    grid.axes.push_back({p, r.start, r.stop, r.count});
+    text->clear();  // the beam's own value is set per point
+  }
+  PhysicalCantilever beam = flags.parse();
+  beam.end = end_condition_from_string(args.boundary);
+  beam.prescribed = sweep_tip(args, true);
+  if (beam.plate == PlateRule::kAuto) {
+    throw InvalidInput(
+        "--plate auto is decided by one solved beam's curvature; a sweep passes through many: "
+        "choose --plate on or off");
+  }
+  grid.physical = beam;
+  grid.base.given = BeamProblem::Given::kAlpha2;
+  grid.validate(max_beam_sweep_points());
+  // Every point must be a beam the flags allow (a load on a held coordinate is refused here).
+  (void)grid.at(0);
+  return grid;
+}
+
+// An angle range: START and STOP in rad, or each with a unit (30deg:60deg:4); COUNT as in
+// parse_range, whose messages it keeps.
+Range parse_angle_range(const std::string& text, const std::string& what) {
+  const auto first = text.find(':');
+  const auto second = first == std::string::npos ? std::string::npos : text.find(':', first + 1);
+  if (second == std::string::npos) return parse_range(text, what, max_beam_sweep_points());
+  const auto angle = [&](const std::string& part, const char* end) {
+    return io::parse_quantity(part, io::Dimension::kAngle, fmt::format("{} {}", what, end)).si;
+  };
+  const double start = angle(text.substr(0, first), "START");
+  const double stop = angle(text.substr(first + 1, second - first - 1), "STOP");
+  return parse_range(fmt::format("{:.17g}:{:.17g}:{}", start, stop, text.substr(second + 1)),
+                     what,
+                     max_beam_sweep_points());
+}
 
 // One of the parameters: a fixed value, or an axis when the text has a ':'.
 void add_parameter(BeamSweepGrid& grid, SweepParameter p, const std::string& text) {
@@ -48,13 +234,16 @@ void add_parameter(BeamSweepGrid& grid, SweepParameter p, const std::string& tex
     if (p == SweepParameter::kTheta0) warn(io::angle_warning({value, ""}, what));
   };
   if (text.find(':') != std::string::npos) {
-    const Range r = parse_range(text, what, max_beam_sweep_points());
+    const Range r = p == SweepParameter::kTheta0 ? parse_angle_range(text, what)
+                                                 : parse_range(text, what, max_beam_sweep_points());
     grid.axes.push_back({p, r.start, r.stop, r.count});
     check_angle(std::fabs(r.start) > std::fabs(r.stop) ? r.start : r.stop);
     return;
   }
   double value = 0.0;
-  if (!parse_double(text, value) || !std::isfinite(value)) {
+  if (p == SweepParameter::kTheta0 && !parse_double(text, value)) {
+    value = io::parse_quantity(text, io::Dimension::kAngle, what).si;  // 30deg
+  } else if (!parse_double(text, value) || !std::isfinite(value)) {
     throw InvalidInput(fmt::format(
         "{} = '{}' is neither a finite number nor a range START:STOP:COUNT", what, text));
   }
@@ -91,6 +280,8 @@ BeamSweepGrid make_grid(const SweepBeamArgs& args) {
   }
   add_parameter(grid, SweepParameter::kLoadRatioN, args.load_ratio_n);
   add_parameter(grid, SweepParameter::kMu, args.mu);
+  grid.base.boundary = end_condition_from_string(args.boundary);
+  grid.base.prescribed = sweep_tip(args, false);
   grid.validate(max_beam_sweep_points());
   return grid;
 }
@@ -99,13 +290,20 @@ void run_sweep_beam(const SweepBeamArgs& args) {
   const auto started = std::chrono::steady_clock::now();
   const int threads = args.threads.value_or(default_beam_sweep_threads());
   require_in_range(threads, "--threads", 1, 64);
-  BeamSweepGrid grid = make_grid(args);
+  const bool physical = args.physical.given();
+  BeamSweepGrid grid = !args.chain_file.empty() ? make_chain_grid(args)
+                       : physical               ? make_physical_grid(args)
+                                                : make_grid(args);
   // The verdict per point, as `flexure beam` gives it (docs/stability.md; its cost:
   // docs/performance.md, "Stability verdict"), also at the points started from a neighbour.
   grid.base.judge_stability = same_name(args.stability, "on");
   const long count = grid.size();
   // Fails (exit 2) for a method not in this build, before any file is touched.
-  const BeamMethod method = resolve_beam_method(beam_method_from_string(args.method));
+  BeamMethod requested = beam_method_from_string(args.method);
+  // auto: the shooting method where some point is one the elliptic solution of a sweep's auto
+  // does not take (BeamSweepGrid::needs_shooting).
+  if (requested == BeamMethod::kAuto && grid.needs_shooting()) requested = BeamMethod::kShooting;
+  const BeamMethod method = resolve_beam_method(requested);
 
   // Check and open the output first: an unwritable path is reported before minutes of solving.
   require_out_or_csv(args.out, args.csv);
@@ -202,7 +400,8 @@ void register_sweep_command(CLI::App& app) {
   beam->add_option(
       "--theta0",
       args->theta0,
-      "Inverse: tip angle theta0 (rad), a value or START:STOP:COUNT; the load is found");
+      "Inverse: tip angle theta0 (rad, or with a unit: 30deg), a value or START:STOP:COUNT "
+      "(30deg:60deg:4); the load is found");
   beam->add_option(
       "--b-over-l",
       args->b_over_l,
@@ -234,6 +433,27 @@ void register_sweep_command(CLI::App& app) {
                  args->compress,
                  "Compress the datasets (shuffle + deflate, chunks of 64 Ki points)");
   beam->add_flag("--json", args->json, "Print one JSON summary object on stdout");
+  beam->add_option("--boundary",
+                   args->boundary,
+                   "Far end: free (loads given), guided (tip angle prescribed), pinned (tip x, y), "
+                   "slider (tip y), fixed (all); default free")
+      ->default_str("free")
+      ->transform(CLI::IsMember({"free", "guided", "pinned", "slider", "fixed"}, CLI::ignore_case));
+  beam->add_option("--tip-x",
+                   args->tip_x,
+                   "Prescribed tip x/l (pinned, fixed); metres or with a unit for a physical beam");
+  beam->add_option(
+      "--tip-y",
+      args->tip_y,
+      "Prescribed tip y/l (pinned, slider, fixed); metres or with a unit for a physical beam");
+  beam->add_option(
+      "--tip-angle", args->tip_angle, "Prescribed tip angle, rad or with a unit (guided, fixed)");
+  // The physical beam; its --Fx, --Fy, --M may be ranges with units (0N:5N:51).
+  args->physical.add_to(*beam, false);
+  beam->add_option("--chain",
+                   args->chain_file,
+                   "Segment chain TOML file (docs/chain-toml.md) whose tip load --Fx, --Fy, --M "
+                   "sweeps (ranges with units for a file in SI)");
   beam->callback([args] { run_sweep_beam(*args); });
 }
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <utility>
 
@@ -28,12 +29,23 @@ std::vector<io::BeamSweepAxis> stored_axes(const BeamSweepGrid& grid) {
                        : axis.parameter == SweepParameter::kMu         ? "end moment mu = M l/EI"
                        : axis.parameter == SweepParameter::kTheta0
                            ? "given tip angle theta0 (the load alpha2 is found)"
-                           : "given tip deflection b/l (the load alpha2 is found)";
+                       : axis.parameter == SweepParameter::kBOverL
+                           ? "given tip deflection b/l (the load alpha2 is found)"
+                       : axis.parameter == SweepParameter::kFx
+                           ? "tip force Fx along the undeformed beam of the physical beam"
+                       : axis.parameter == SweepParameter::kFy
+                           ? "tip force Fy across the undeformed beam of the physical beam"
+                           : "tip moment M of the physical beam";
+    // A chain file in its own units: its force and moment units.
+    const bool file_units = grid.chain && !grid.chain_in_si && is_physical(axis.parameter);
     axes.push_back({dataset_name(axis.parameter),
                     axis.start,
                     axis.stop,
                     axis.count,
-                    units_of(axis.parameter),
+                    file_units
+                        ? (axis.parameter == SweepParameter::kM ? "moment unit of the chain file"
+                                                                : "force unit of the chain file")
+                        : units_of(axis.parameter),
                     fmt::format("{}: axis {} of the datasets, {} equally spaced values",
                                 what,
                                 axes.size() + 1,
@@ -119,6 +131,12 @@ BeamSweepRun BeamSweepFile::run(const BeamSweepGrid& grid,
     point.set_converged(solution.converged());
     point.tip = solution.tip;
     point.alpha2 = solution.alpha2;
+    if ((grid.physical || grid.chain) && !std::isfinite(point.alpha2)) {
+      // A physical point solved as a chain (distributed loads, a curvature, a held end...) has
+      // no Howell's alpha2: its nondimensional Fy L^2/EI stands there.
+      const BeamProblem problem = grid.at(index);
+      if (problem.chain) point.alpha2 = problem.chain->tip_load.Fy;
+    }
     if (solution.method == BeamMethod::kPrbm) point.within_validity = solution.prbm_inside_validity;
     point.stability = solution.stability.kind;
     point.stability_index = solution.stability.index;
@@ -146,6 +164,23 @@ BeamSweepRun BeamSweepFile::run(const BeamSweepGrid& grid,
   // Streamed: each block of points is written before the next is solved (flat memory).
   io::BeamSweepWriter writer(file_->root(), out.count, metadata, layout);
   const io::BeamSweepSummary table = io::stream_beam_sweep(out.count, solve_point, sweep, writer);
+  if (grid.chain) {
+    io::Hdf5Group& root = file_->root();
+    root.set_attribute("units", grid.chain_in_si ? "SI" : "chain file");
+    root.set_attribute("length", grid.chain->total_length());
+  }
+  if (grid.physical) {
+    // The physical beam: its results are per unit length and in Howell's loads; these scale them
+    // (tip x = a_over_l length_m; Fy = alpha2 EI_Nm2 / length_m^2).
+    const PhysicalCantilever& b = *grid.physical;
+    io::Hdf5Group& root = file_->root();
+    root.set_attribute("units", "SI");
+    root.set_attribute("length_m", b.length);
+    root.set_attribute("EI_Nm2", b.flexural_rigidity());
+    root.set_attribute("Fx_N", b.Fx);
+    root.set_attribute("Fy_N", b.Fy);
+    root.set_attribute("M_Nm", b.M);
+  }
   file_->commit();
   out.converged_count = table.converged_count;
   out.first_failure = table.first_failure;

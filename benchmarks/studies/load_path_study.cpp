@@ -9,6 +9,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "flexure/beam/physical_beam.h"
 #include "flexure/elements/cbcm_path.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/common/errors.h"
@@ -105,6 +106,48 @@ std::string bifurcation_warning(const PathSpecialPoint& b,
       follow);
 }
 
+// N . t and N . n at the shape points of a path whose chain carries distributed or joint loads:
+// the statics of the part before each point from the clamp's reaction (shape_internal_forces).
+// The loads of a point are those of the chain at its load factor, or at full load in a later
+// stage (displacement control moves the tip with the loads applied); whichever carries the force
+// integrated from the clamp's reaction to the tip's own total load (to 1e-9 of the loads) is
+// taken. Where neither does (a point without a reaction), nothing is stored. (The force is exact
+// for dead loads linear along a segment and for follower pressures; the moment of a dead load by
+// the midpoint rule is not, so the solver's moment stays the stored one.)
+void store_loaded_internal_forces(const PathRequest& r, const LoadPath& path, PathTable& t) {
+  std::vector<double> axial, shear;
+  for (const PathPoint& p : path.points) {
+    if (static_cast<int>(p.shape.size()) != r.shape_points || p.moment.size() != p.shape.size()) {
+      return;
+    }
+    const ShapePoint& end = p.shape.back();
+    const double tip_axial =
+        p.tip_load.Fx * std::cos(end.theta) + p.tip_load.Fy * std::sin(end.theta);
+    const double tip_shear =
+        -p.tip_load.Fx * std::sin(end.theta) + p.tip_load.Fy * std::cos(end.theta);
+    const double size = 1e-300 + std::fabs(p.reaction.Fx) + std::fabs(p.reaction.Fy) +
+                        std::fabs(p.tip_load.Fx) + std::fabs(p.tip_load.Fy);
+    bool matched = false;
+    for (double lambda : {p.lambda, 1.0}) {
+      const ShapeInternalForces f =
+          shape_internal_forces(r.chain.at_load_factor(lambda), p.shape, p.reaction);
+      // The force integrated from the clamp arrives at the tip as the tip's own load.
+      const bool same = std::fabs(f.axial.back() - tip_axial) <= 1e-9 * size &&
+                        std::fabs(f.shear.back() - tip_shear) <= 1e-9 * size;
+      if (!same) continue;
+      for (std::size_t k = 0; k < f.axial.size(); ++k) {
+        axial.push_back(f.axial[k] * r.units.force);
+        shear.push_back(f.shear[k] * r.units.force);
+      }
+      matched = true;
+      break;
+    }
+    if (!matched) return;
+  }
+  t.shape_axial = std::move(axial);
+  t.shape_shear = std::move(shear);
+}
+
 PathTable shooting_table(const PathRequest& r) {
   ShootingSolver::Options options;
   ContinuationOptions& c = options.continuation;
@@ -166,6 +209,20 @@ PathTable shooting_table(const PathRequest& r) {
           t.shape_axial.push_back((Nx * std::cos(theta) + Ny * std::sin(theta)) * u.force);
           t.shape_shear.push_back((-Nx * std::sin(theta) + Ny * std::cos(theta)) * u.force);
         }
+      }
+    } else {
+      store_loaded_internal_forces(r, path, t);
+    }
+    if (!t.shape_axial.empty() &&
+        static_cast<int>(r.shape_section_modulus.size()) == r.shape_points &&
+        r.shape_area.size() == r.shape_section_modulus.size()) {
+      // N/A -+ m c/I: a positive moment compresses the +n fibre (docs/units.md).
+      for (std::size_t i = 0; i < t.shape_axial.size(); ++i) {
+        const std::size_t k = i % static_cast<std::size_t>(r.shape_points);
+        const double axial = t.shape_axial[i] / r.shape_area[k];
+        const double bending = t.shape_moment[i] / r.shape_section_modulus[k];
+        t.shape_stress_pos.push_back(axial - bending);
+        t.shape_stress_neg.push_back(axial + bending);
       }
     }
   }
@@ -782,6 +839,20 @@ void write_path_file(io::Hdf5Group& root, const PathTable& t) {
                            "internal force N . n, n left of the tangent (dm/ds = -V) [path "
                            "point, shape point]" +
                                scaled);
+    }
+    if (!t.shape_stress_pos.empty()) {
+      shapes.write_dataset("stress_pos_fibre",
+                           t.shape_stress_pos,
+                           dims,
+                           "Pa",
+                           "stress N/A - m c/I at the fibre h/2 along the normal left of the "
+                           "tangent [path point, shape point]");
+      shapes.write_dataset("stress_neg_fibre",
+                           t.shape_stress_neg,
+                           dims,
+                           "Pa",
+                           "stress N/A + m c/I at the fibre h/2 along the normal right of the "
+                           "tangent [path point, shape point]");
     }
   }
 

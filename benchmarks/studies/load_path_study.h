@@ -56,6 +56,10 @@ struct PathRequest {
   int branch_side = 1;    // +1: the half-branch on which the tip moves to +y (+theta), -1: -y
   std::optional<DisplacementControl> control;  // a tip coordinate as the path parameter
   int shape_points = 0;  // >= 2: the shape at every point of the path, at this many points
+  // The section at each shape point (shape_points entries, SI: I/c in m^3, area in m^2) for the
+  // fibre stresses N/A -+ m c/I stored in /shapes; empty where the section is not known
+  // (PhysicalCantilever::fibre_sections).
+  std::vector<double> shape_section_modulus, shape_area;
   // The stability verdict of every point under the path's control (docs/stability.md, "Points
   // of a path"): shooting only; the chain algorithm's path records tips only, and only its last
   // point (its answer) is judged.
@@ -127,8 +131,12 @@ struct PathTable {
   std::vector<double> shape_s, shape_x, shape_y, shape_theta, shape_moment;
   // The internal force N (the part beyond s on the part before it) on the tangent and on the
   // normal left of it, N . t and N . n (dm/ds = -V; docs/units.md "Internal forces"): the total
-  // tip load at every s. Empty for a chain with distributed or joint loads (not computed here).
+  // tip load at every s; with distributed or joint loads from the statics of the part before s
+  // (shape_internal_forces), stored where its moment equals the solver's at every point.
   std::vector<double> shape_axial, shape_shear;
+  // The fibre stresses N/A -+ m c/I at the fibres h/2 along +n and -n (Pa), where the section is
+  // known (PathRequest::shape_section_modulus) and the internal forces are stored.
+  std::vector<double> shape_stress_pos, shape_stress_neg;
 
   PathMethod method = PathMethod::kShooting;
   PathUnits units;

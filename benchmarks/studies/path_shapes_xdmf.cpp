@@ -20,6 +20,10 @@ std::string write_path_shapes_xdmf(const std::string& h5_path, const PathTable& 
     x.fields.push_back("axial_force");
     x.fields.push_back("shear_force");
   }
+  if (!t.shape_stress_pos.empty()) {
+    x.fields.push_back("stress_pos_fibre");
+    x.fields.push_back("stress_neg_fibre");
+  }
   // Constructed, not assigned: GCC 12 warns falsely (-Wrestrict) on assigning a one-character
   // literal.
   x.station_field = std::string(1, 's');

@@ -49,6 +49,17 @@ __all__ = ["beam", "path", "sweep", "cfm", "dynamics", "bench", "validate", "rea
            "Prbm3rSolver"]
 
 
+def _one_value_each(command, options):
+    """Refuses a list, tuple or array for a keyword of `command` (one value each): the tool
+    would read it as one text. Many loads: flexure.beam with arrays, or a sweep's ranges."""
+    for key, value in options.items():
+        if isinstance(value, (list, tuple)) or (hasattr(value, "ndim") and value.ndim > 0):
+            raise InvalidInput(
+                f"{key}={value!r:.60}: flexure.{command} takes one value per keyword; for many "
+                f"values call flexure.beam with arrays, or flexure.sweep with a range "
+                f"'START:STOP:COUNT' (units allowed: '0N:5N:51')")
+
+
 def materials(name=None):
     """The material library (Howell Appendix C; docs/materials.md): `flexure materials`.
 
@@ -68,7 +79,10 @@ def path(*, out, n=None, alpha2=None, mu=None, follower=None, boundary=None, tip
          tip_y=None, tip_angle=None, method=None, elements=None, increments=None, chain=None,
          length=None, E=None, I=None, width=None, thickness=None, Fx=None, Fy=None, M=None,
          max_step=None, min_points=None, branch=None, branch_side=None, control=None,
-         shapes=None, stability=None):  # noqa: E741 - the tool's flag --I
+         shapes=None, stability=None, one_way=False, material=None, plate=None, nu=None,
+         qx=None, qy=None, q_follower=None, density=None, g=None, extensible=False,
+         shear_coefficient=None, curvature=None, width_tip=None,
+         thickness_tip=None):  # noqa: E741 - the tool's flag --I
     """The equilibrium path from the unloaded beam to a load, step by step: `flexure path`.
 
     The loads and end conditions of flexure.beam (n, alpha2, mu, follower, boundary, tip_x,
@@ -80,6 +94,12 @@ def path(*, out, n=None, alpha2=None, mu=None, follower=None, boundary=None, tip
     'positive' or 'negative'), control ('tip-x', 'tip-y', 'tip-angle': move that coordinate to
     its tip_... value as the path parameter), shapes (K shape points at every path point).
     stability: 'on' (default) or 'off', the verdict of every point under the path's control.
+    one_way=True (with control): move the coordinate one way past a fold, as an experiment does.
+    The physical beam takes material, plate and nu, the distributed loads qx, qy, q_follower,
+    density and g, extensible=True (with nu, shear_coefficient), curvature (1/m) and a taper
+    (width_tip, thickness_tip) as flexure.beam does. Under control the force-displacement curve
+    is in the file: flexure.read(out)["tip_y"] against ["tip_Fy"] (or x, theta), and its zeros and
+    extrema in the returned `force_points`.
     Returns the dict `flexure path --json` prints: the counts, the located `bifurcations` and
     `limit_point_list` (lists of dicts with load_factor, index, index_after, tip and reactions),
     and per point `stability` (list of str), `stability_index` and `stability_margin` (arrays,
@@ -89,33 +109,60 @@ def path(*, out, n=None, alpha2=None, mu=None, follower=None, boundary=None, tip
       >>> flexure.path(length=1, E=1, I=1, Fx=-30, out="column.h5")["bifurcations"][0]["load_factor"]  # doctest: +SKIP
       0.0822467033...
     """
-    return _run(["path"], dict(n=n, alpha2=alpha2, mu=mu, follower=follower, boundary=boundary,
-                               tip_x=tip_x, tip_y=tip_y, tip_angle=tip_angle, method=method,
-                               elements=elements, increments=increments, chain=chain,
-                               length=length, E=E, I=I, width=width, thickness=thickness, Fx=Fx,
-                               Fy=Fy, M=M, max_step=max_step, min_points=min_points,
-                               branch=branch, branch_side=branch_side, control=control,
-                               shapes=shapes, stability=stability, out=out))
+    options = dict(n=n, alpha2=alpha2, mu=mu, follower=follower, boundary=boundary,
+                   tip_x=tip_x, tip_y=tip_y, tip_angle=tip_angle, method=method,
+                   elements=elements, increments=increments, chain=chain,
+                   length=length, E=E, I=I, width=width, thickness=thickness, Fx=Fx,
+                   Fy=Fy, M=M, max_step=max_step, min_points=min_points,
+                   branch=branch, branch_side=branch_side, control=control,
+                   shapes=shapes, stability=stability, out=out,
+                   one_way=one_way, material=material, plate=plate, nu=nu, qx=qx,
+                   qy=qy, q_follower=q_follower, density=density, g=g,
+                   extensible=extensible, shear_coefficient=shear_coefficient,
+                   curvature=curvature, width_tip=width_tip,
+                   thickness_tip=thickness_tip)
+    _one_value_each("path", options)
+    return _run(["path"], options, switches={"one_way", "extensible"})
 
 
 def sweep(*, out, alpha2=None, theta0=None, b_over_l=None, n=None, mu=None, method=None,
-          threads=None, compress=False, stability=None):
+          threads=None, compress=False, stability=None, boundary=None, tip_x=None, tip_y=None,
+          tip_angle=None, length=None, E=None, I=None, width=None, thickness=None, Fx=None,
+          Fy=None, M=None, material=None, plate=None, nu=None, qx=None, qy=None,
+          q_follower=None, density=None, g=None, extensible=False, shear_coefficient=None,
+          curvature=None, width_tip=None, thickness_tip=None,
+          chain=None):  # noqa: E741 - the tool's --I
     """A beam sweep written to HDF5: `flexure sweep beam` (docs/hdf5-schema.md).
 
     alpha2, theta0, b_over_l, n, mu: a value or 'START:STOP:COUNT' (one or two axes); method;
     threads; compress; stability: 'on' (default: a verdict per point in /stability,
     /stability_index, /stability_margin) or 'off'; out: the HDF5 file (required). Returns the summary `--json` prints; read
     the file with flexure.read(out). For arrays in memory use flexure.beam with numpy arrays.
+    boundary, tip_x, tip_y, tip_angle: a held end as in flexure.beam. A physical beam (length,
+    E, I or width and thickness, and the keywords of flexure.beam) is swept over one or two of
+    its tip loads Fx, Fy, M given as 'START:STOP:COUNT' with units ('0N:5N:51'); the file then
+    has /axes/Fy (N) and the root attributes units 'SI', length_m, EI_Nm2. chain: a segment
+    chain TOML file whose tip load Fx, Fy, M (ranges) is swept.
 
     Example:
       >>> flexure.sweep(alpha2="0:20:1001", n="0:2:3", out="sweep.h5")     # doctest: +SKIP
       >>> flexure.read("sweep.h5")["theta0"].shape                          # doctest: +SKIP
       (1001, 3)
     """
-    return _run(["sweep", "beam"], dict(alpha2=alpha2, theta0=theta0, b_over_l=b_over_l, n=n,
-                                        mu=mu, method=method, out=out, threads=threads,
-                                        compress=compress, stability=stability),
-                switches={"compress"})
+    options = dict(alpha2=alpha2, theta0=theta0, b_over_l=b_over_l, n=n,
+                   mu=mu, method=method, out=out, threads=threads,
+                   compress=compress, stability=stability,
+                   boundary=boundary, tip_x=tip_x, tip_y=tip_y,
+                   tip_angle=tip_angle, length=length, E=E, I=I,
+                   width=width, thickness=thickness, Fx=Fx, Fy=Fy, M=M,
+                   material=material, plate=plate, nu=nu, qx=qx, qy=qy,
+                   q_follower=q_follower, density=density, g=g,
+                   extensible=extensible,
+                   shear_coefficient=shear_coefficient,
+                   curvature=curvature, width_tip=width_tip,
+                   thickness_tip=thickness_tip, chain=chain)
+    _one_value_each("sweep", options)
+    return _run(["sweep", "beam"], options, switches={"compress", "extensible"})
 
 
 def cfm(*, config=None, R=None, K1=None, K2=None, d=None, subclass=None, sampling=None,

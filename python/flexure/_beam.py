@@ -31,7 +31,9 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
          thickness=None, Fx=None, Fy=None, M=None, yield_strength=None, stable=False, stability=None,
          material=None, cycle=None, surface_finish=None, reliability=None,
          Kf=None, fatigue_factor=None, ultimate_strength=None, endurance_limit=None,
-         threads=None, plate=None, nu=None):
+         threads=None, plate=None, nu=None, qx=None, qy=None, q_follower=None, density=None,
+         g=None, extensible=False, shear_coefficient=None, curvature=None, width_tip=None,
+         thickness_tip=None):
     """Solves an initially straight cantilever with an end load: `flexure beam` (docs/cli.md).
 
     Howell's nondimensional loads (give exactly one of alpha2, theta0, b_over_l):
@@ -70,7 +72,16 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
       (surface_finish, reliability, Kf, fatigue_factor, ultimate_strength, endurance_limit;
       docs/fatigue.md); plate 'off' | 'on' | 'auto' the bending modulus E or E/(1 - nu^2) of a
       wide strip with nu Poisson's ratio (default the material's; docs/plate-modulus.md: keys
-      modulus_rule, effective_E, modulus)
+      modulus_rule, effective_E, modulus); qx, qy (dead load per unit length, N/m), q_follower
+      (pressure along the deflected normal, N/m), density and g (self-weight), extensible=True
+      with nu and shear_coefficient (Reissner's beam), curvature (stress-free, 1/m), width_tip
+      and thickness_tip (a linear taper from the clamp's width and thickness); boundary with
+      tip_x, tip_y in metres (docs/cli.md, "Physical beams")
+      Any of these physical values may be a numpy array (or a list: SI numbers, never text):
+      they broadcast, the beam is solved at every entry, and the result holds an array of the
+      broadcast shape for every numeric key, plus `status`, `converged` and `message` as for
+      arrays of Howell's loads (one failed entry never raises). Each entry is one in-process run
+      of the command (about 0.1-10 ms), not the threaded solve of Howell's loads.
 
     Returns the dict `flexure beam --json` prints: method, method_reason, expected_error,
     expected_error_per_length (the ladder's models on the map, docs/models.md), n,
@@ -93,7 +104,15 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
       >>> r["theta0"].shape, bool(r["converged"].all())
       ((2, 10), True)
     """
+    # Physical values, any of which may be an array (solved entry by entry).
+    physical = {"length": length, "E": E, "I": I, "width": width, "thickness": thickness,
+                "Fx": Fx, "Fy": Fy, "M": M, "yield_strength": yield_strength, "nu": nu,
+                "qx": qx, "qy": qy, "q_follower": q_follower, "density": density, "g": g,
+                "shear_coefficient": shear_coefficient, "curvature": curvature,
+                "width_tip": width_tip, "thickness_tip": thickness_tip}
     if (threads is None and tol is None and chain is None and constants is None
+            and all(v is None for v in physical.values()) and extensible is False
+            and plate is None
             and slenderness is None and length is None and E is None and I is None
             and width is None and thickness is None and Fx is None and Fy is None and M is None
             and yield_strength is None and material is None and cycle is None
@@ -129,12 +148,23 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
                "material": material, "cycle": cycle,
                "surface_finish": surface_finish, "reliability": reliability, "Kf": Kf,
                "fatigue_factor": fatigue_factor, "ultimate_strength": ultimate_strength,
-               "endurance_limit": endurance_limit, "plate": plate, "nu": nu}
+               "endurance_limit": endurance_limit, "plate": plate, "nu": nu, "qx": qx,
+               "qy": qy, "q_follower": q_follower, "density": density, "g": g,
+               "extensible": extensible or None, "shear_coefficient": shear_coefficient,
+               "curvature": curvature, "width_tip": width_tip, "thickness_tip": thickness_tip}
+    many_physical = [k for k, v in {**physical, "tip_x": tip_x, "tip_y": tip_y}.items()
+                     if _is_sequence(v)]
+    if many_physical:
+        if any(_is_array(loads[k]) for k in _VECTOR):
+            raise _command.InvalidInput(
+                f"arrays of physical values ({', '.join(many_physical)}) and of Howell's loads "
+                f"(n, alpha2, mu, theta0, b_over_l) cannot be mixed in one call")
+        return _physical_many(options, many_physical)
     if threads is not None and (not isinstance(threads, int) or isinstance(threads, bool)
                                 or threads < 1):
         raise _command.InvalidInput(f"threads = {threads!r}: expected an integer >= 1")
     if not any(_is_array(loads[k]) for k in _VECTOR):
-        return _command.run(["beam"], {**loads, **options}, switches={"stable"})
+        return _command.run(["beam"], {**loads, **options}, switches={"stable", "extensible"})
     return _beam_many(loads, options, threads or os.cpu_count() or 1)
 
 
@@ -216,7 +246,7 @@ def _beam_many(loads, options, threads):
     # The options are checked once by the tool itself, with a valid placeholder load.
     # (Two given quantities are refused by the tool, naming them.)
     scalar = {k: _PLACEHOLDER[k] for k in given}
-    args = ["beam"] + _command.to_flags({**scalar, **options}, switches={"stable"})
+    args = ["beam"] + _command.to_flags({**scalar, **options}, switches={"stable", "extensible"})
     size = int(numpy.prod(shape)) if shape else 1
     zeros = numpy.zeros(size)
 
@@ -252,3 +282,85 @@ def _beam_many(loads, options, threads):
                            f"(max_element_deflection): method='cbcm' follows larger "
                            f"deflections"], stacklevel=3)
     return result
+
+
+def _is_sequence(value):
+    """A list, tuple or numpy array (of any dimension but 0): many values, never one text."""
+    if type(value) in _NOT_ARRAYS:
+        return False
+    if isinstance(value, (list, tuple)):
+        return True
+    return _is_array(value)
+
+
+def _physical_many(options, keys):
+    """The physical beam at every entry of the broadcast arrays `keys` of `options` (SI numbers):
+    one run of the command per entry; numeric keys become arrays of the broadcast shape, with
+    status (0 converged, 1 no converged solution, 2 invalid input), converged and message."""
+    import math
+    import numpy
+    arrays = {}
+    for k in keys:
+        try:
+            arrays[k] = numpy.asarray(options[k], dtype=numpy.float64)
+        except (TypeError, ValueError) as e:
+            raise _command.InvalidInput(
+                f"{k}: an array of physical values holds SI numbers (float64), got "
+                f"{options[k]!r:.60}: {e}") from None
+    try:
+        broadcast = numpy.broadcast_arrays(*arrays.values())
+    except ValueError:
+        shapes = ", ".join(f"{k} {a.shape}" for k, a in arrays.items())
+        raise _command.InvalidInput(
+            f"the physical arrays do not broadcast to one shape: {shapes}") from None
+    shape = broadcast[0].shape
+    flat = {k: a.reshape(-1) for k, a in zip(arrays, broadcast)}
+    size = int(numpy.prod(shape)) if shape else 1
+    if options.get("shape") is not None:
+        raise _command.InvalidInput("shape: the deflected shape is returned for one beam at a "
+                                    "time (call flexure.beam per entry)")
+    results, status, messages = [], numpy.zeros(size, dtype=numpy.int32), []
+    import warnings
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        for i in range(size):
+            one = dict(options)
+            for k in keys:
+                one[k] = float(flat[k][i])
+            try:
+                results.append(_command.run(["beam"], one, switches={"stable", "extensible"}))
+                messages.append(results[-1].get("message", ""))
+            except _command.NoConvergence as e:
+                status[i] = 1
+                results.append(None)
+                messages.append(str(e))
+            except _command.InvalidInput as e:
+                status[i] = 2
+                results.append(None)
+                messages.append(str(e))
+    texts = sorted({str(w.message) for w in caught})
+    if texts:
+        _command.emit(texts, stacklevel=3)
+    out = {}
+    names = []
+    for r in results:
+        if r is not None:
+            names = [k for k, v in r.items()
+                     if v is None or (isinstance(v, (int, float)) and not isinstance(v, bool))]
+            break
+    for name in names:
+        column = numpy.full(size, math.nan)
+        for i, r in enumerate(results):
+            v = None if r is None else r.get(name)
+            if isinstance(v, (int, float)) and not isinstance(v, bool):
+                column[i] = v
+        out[name] = column.reshape(shape)
+    for name in ("method", "stability", "units", "boundary"):
+        out[name] = numpy.array([("" if r is None else str(r.get(name))) for r in results],
+                                dtype=object).reshape(shape)
+    out["status"] = status.reshape(shape)
+    out["converged"] = (status == 0).reshape(shape)
+    out["message"] = numpy.array(messages, dtype=object).reshape(shape)
+    for k in keys:
+        out.setdefault(k, flat[k].reshape(shape))
+    return out

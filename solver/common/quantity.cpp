@@ -85,6 +85,9 @@ constexpr std::array kUnits{
     Unit{Dimension::kArea, "mm^2", 1e-6},
     Unit{Dimension::kArea, "cm^2", 1e-4},
     Unit{Dimension::kArea, "in^2", kInch* kInch},
+    Unit{Dimension::kCurvature, "1/m", 1.0},
+    Unit{Dimension::kCurvature, "1/mm", 1e3},
+    Unit{Dimension::kCurvature, "1/in", 1.0 / kInch},
 };
 
 // What each dimension is called in messages, and its SI unit.
@@ -94,7 +97,7 @@ struct DimensionInfo {
 };
 
 DimensionInfo info(Dimension dimension) {
-  constexpr std::array<DimensionInfo, 11> kInfo{{
+  constexpr std::array<DimensionInfo, 12> kInfo{{
       {"a length", "m"},
       {"a force", "N"},
       {"a moment", "N m"},
@@ -106,6 +109,7 @@ DimensionInfo info(Dimension dimension) {
       {"a density", "kg/m^3"},
       {"an acceleration", "m/s^2"},
       {"an area", "m^2"},
+      {"a curvature", "1/m"},
   }};
   return kInfo[static_cast<std::size_t>(dimension)];
 }

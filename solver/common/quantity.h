@@ -23,6 +23,7 @@ enum class Dimension {
   kDensity,         // kg/m^3
   kAcceleration,    // m/s^2 (gravity)
   kArea,            // m^2 (cross-section area)
+  kCurvature,       // 1/m (a stress-free curvature)
 };
 
 // The SI unit of a dimension, e.g. "N m".

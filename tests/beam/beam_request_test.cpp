@@ -107,7 +107,7 @@ std::vector<Refused> refused_requests() {
   out.push_back({r,
                  "a physical beam (--length, --E, the section, --Fx, --Fy, --M) is loaded in "
                  "newtons; do not combine it with the nondimensional --alpha2, --theta0, "
-                 "--b-over-l, --n, --mu, --follower, --boundary or with --chain (a chain file can "
+                 "--b-over-l, --n, --mu, --follower or with --chain (a chain file can "
                  "be in SI units itself: docs/chain-toml.md)"});
   r = BeamRequest{};
   r.mu = 0.5;
