@@ -100,13 +100,13 @@ py::object numeric_array(const Json& j, const std::vector<py::ssize_t>& shape) {
     py::array_t<long long> a(shape);
     long long* p = a.mutable_data();
     for (std::size_t i = 0; i < values.size(); ++i) p[i] = static_cast<long long>(values[i]);
-    return std::move(a);
+    return a;
   }
   std::vector<double> values;
   flatten(j, values);
   py::array_t<double> a(shape);
   std::copy(values.begin(), values.end(), a.mutable_data());
-  return std::move(a);
+  return a;
 }
 
 // JSON -> Python: objects to dicts (key order kept), arrays of numbers (nested to any uniform
@@ -129,7 +129,7 @@ py::object to_python(const Json& j) {
     case Json::value_t::object: {
       py::dict d;
       for (const auto& [key, value] : j.items()) d[py::str(key)] = to_python(value);
-      return std::move(d);
+      return d;
     }
     case Json::value_t::array: {
       std::vector<py::ssize_t> shape;
@@ -138,7 +138,7 @@ py::object to_python(const Json& j) {
           std::all_of(j.begin(), j.end(), [](const Json& e) { return e.is_boolean(); })) {
         py::array_t<bool> a(static_cast<py::ssize_t>(j.size()));
         for (std::size_t i = 0; i < j.size(); ++i) a.mutable_data()[i] = j[i].get<bool>();
-        return std::move(a);
+        return a;
       }
       if (is_record_array(j)) {
         py::dict columns;
@@ -147,11 +147,11 @@ py::object to_python(const Json& j) {
           for (const Json& e : j) column.push_back(e.at(key));
           columns[py::str(key)] = to_python(column);
         }
-        return std::move(columns);
+        return columns;
       }
       py::list l;
       for (const Json& e : j) l.append(to_python(e));
-      return std::move(l);
+      return l;
     }
     default:
       return py::none();
