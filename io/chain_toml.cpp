@@ -133,11 +133,18 @@ const MaterialGrade& material_of(const toml::node& node,
   }
 }
 
-// A pair [x, y] of numbers or strings with a unit of force per length.
-std::array<double, 2> read_pair(const toml::node& node, const std::string& what, Reader& r) {
+// A pair of numbers or strings with a unit of `dimension`: a distributed load [qx, qy] (force
+// per length) or a point [x, y] (length). `form` names the pair and `example` shows one value
+// with its unit in the messages.
+std::array<double, 2> read_pair(const toml::node& node,
+                                const std::string& what,
+                                Reader& r,
+                                Dimension dimension,
+                                const std::string& form,
+                                const std::string& example) {
   const toml::array* a = node.as_array();
   if (a == nullptr || a->size() != 2) {
-    toml_fail(r.source, line_of(node), what + " must be an array of two values [qx, qy]");
+    toml_fail(r.source, line_of(node), what + " must be an array of two values " + form);
   }
   std::array<double, 2> out{};
   for (std::size_t c = 0; c < 2; ++c) {
@@ -147,7 +154,7 @@ std::array<double, 2> read_pair(const toml::node& node, const std::string& what,
       out[c] = *x;
     } else if (v.is_string()) {
       try {
-        const Quantity q = parse_quantity(**v.as_string(), Dimension::kForcePerLength, what);
+        const Quantity q = parse_quantity(**v.as_string(), dimension, what);
         r.any_unit = r.any_unit || q.has_unit();
         out[c] = q.si;
       } catch (const InvalidInput& e) {
@@ -156,7 +163,7 @@ std::array<double, 2> read_pair(const toml::node& node, const std::string& what,
     } else {
       toml_fail(r.source,
                 line_of(v),
-                what + " must contain numbers or strings with a unit (e.g. \"-2 N/m\")");
+                what + " must contain numbers or strings with a unit (e.g. " + example + ")");
     }
   }
   return out;
@@ -210,7 +217,8 @@ Segment read_segment(const toml::table& t,
     section.line = line_of(t);
     // Distributed loads (docs/distributed-loads.md) and axial/shear rigidity (docs/extensible.md).
     if (const toml::node* q = t.get("q")) {
-      const std::array<double, 2> v = read_pair(*q, where + ".q", r);
+      const std::array<double, 2> v =
+          read_pair(*q, where + ".q", r, Dimension::kForcePerLength, "[qx, qy]", "\"-2 N/m\"");
       s.qx = v[0];
       s.qy = v[1];
     }
@@ -223,7 +231,8 @@ Segment read_segment(const toml::table& t,
         toml_fail(r.source, line_of(*profile), where + " gives both q and q_profile; give one");
       }
       for (const toml::node& v : *a) {
-        s.q_profile.push_back(read_pair(v, where + ".q_profile[]", r));
+        s.q_profile.push_back(read_pair(
+            v, where + ".q_profile[]", r, Dimension::kForcePerLength, "[qx, qy]", "\"-2 N/m\""));
       }
     }
     s.q_follower = r.number(t, "q_follower", where, Dimension::kForcePerLength).value_or(0.0);
@@ -358,35 +367,6 @@ int joint_index(const toml::table& t, const std::string& where, Reader& r, int j
   return static_cast<int>(value);
 }
 
-// A point [x, y] of lengths (numbers or strings with a unit).
-std::array<double, 2> read_point(const toml::node& node, const std::string& what, Reader& r) {
-  const toml::array* a = node.as_array();
-  if (a == nullptr || a->size() != 2) {
-    toml_fail(r.source, line_of(node), what + " must be an array of two values [x, y]");
-  }
-  std::array<double, 2> out{};
-  for (std::size_t c = 0; c < 2; ++c) {
-    const toml::node& v = *a->get(c);
-    if (const std::optional<double> x = toml_number(v)) {
-      if (!std::isfinite(*x)) toml_fail(r.source, line_of(v), what + " must be finite numbers");
-      out[c] = *x;
-    } else if (v.is_string()) {
-      try {
-        const Quantity q = parse_quantity(**v.as_string(), Dimension::kLength, what);
-        r.any_unit = r.any_unit || q.has_unit();
-        out[c] = q.si;
-      } catch (const InvalidInput& e) {
-        toml_fail(r.source, line_of(v), e.what());
-      }
-    } else {
-      toml_fail(r.source,
-                line_of(v),
-                what + " must contain numbers or strings with a unit (e.g. \"10 mm\")");
-    }
-  }
-  return out;
-}
-
 // [[contact]]: one rigid surface (docs/contact.md).
 void read_contacts(const toml::node& node, Reader& r, ChainFile& file) {
   const std::string& source = r.source;
@@ -409,7 +389,8 @@ void read_contacts(const toml::node& node, Reader& r, ChainFile& file) {
       const toml::node* c = t.get("center");
       if (c == nullptr)
         toml_fail(source, contact.line, where + " is missing the required key 'center'");
-      contact.surface.center = read_point(*c, where + ".center", r);
+      contact.surface.center =
+          read_pair(*c, where + ".center", r, Dimension::kLength, "[x, y]", "\"10 mm\"");
       contact.surface.radius = r.required(t, "radius", where, contact.line, Dimension::kLength);
     } else if (same_name(name, "line")) {
       check_toml_keys(t, {"type", "point", "normal", "start_tip_load", "steps"}, where, source);
@@ -417,7 +398,8 @@ void read_contacts(const toml::node& node, Reader& r, ChainFile& file) {
       const toml::node* p = t.get("point");
       if (p == nullptr)
         toml_fail(source, contact.line, where + " is missing the required key 'point'");
-      contact.surface.point = read_point(*p, where + ".point", r);
+      contact.surface.point =
+          read_pair(*p, where + ".point", r, Dimension::kLength, "[x, y]", "\"10 mm\"");
       const toml::node* nn = t.get("normal");
       if (nn == nullptr)
         toml_fail(source, contact.line, where + " is missing the required key 'normal'");
