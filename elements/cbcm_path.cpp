@@ -176,17 +176,10 @@ CbcmPathPoint state_of(const Prepared& p,
   CbcmPathPoint out;
   out.lambda = lambda;
   out.tip = {e.tip.x * L, e.tip.y * L, e.tip.theta};
-  double Fx = e.Fx, Fy = e.Fy, M = e.moment_about_origin;
-  for (const auto& [at, l] : p.root_loads) {
-    Fx += load_factor * l.Fx;
-    Fy += load_factor * l.Fy;
-    M += load_factor * (l.M + at.x * l.Fy - at.y * l.Fx);
-  }
-  out.reaction = {-Fx * force_unit, -Fy * force_unit, -M * moment_unit};
-  const detail::cbcm::PointLoad& given = p.distal_loads.back();
-  out.tip_load = {(load_factor * given.Fx + e.Rx) * force_unit,
-                  (load_factor * given.Fy + e.Ry) * force_unit,
-                  (load_factor * given.M + e.Rm) * moment_unit};
+  const detail::cbcm::EndLoads loads = detail::cbcm::end_loads(p, e, load_factor);
+  out.reaction = {
+      -loads.clamp.Fx * force_unit, -loads.clamp.Fy * force_unit, -loads.clamp.M * moment_unit};
+  out.tip_load = {loads.tip.Fx * force_unit, loads.tip.Fy * force_unit, loads.tip.M * moment_unit};
   for (int j = 0; j < model.elements(); ++j) {
     out.max_element_deflection = std::max(out.max_element_deflection, std::fabs(X[2 * j]));
   }

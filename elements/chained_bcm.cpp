@@ -147,18 +147,11 @@ CbcmResult ChainedBcmSolver::solve(const SegmentChain& chain) const {
   const double force_unit = prepared.EI / (L * L), moment_unit = prepared.EI / L;
   out.tip = {e.tip.x * L, e.tip.y * L, e.tip.theta};
   // The clamp holds everything: the distal loads and the loads on the clamped links.
-  double Fx = e.Fx, Fy = e.Fy, M = e.moment_about_origin;
-  for (const auto& [at, l] : prepared.root_loads) {
-    Fx += lambda * l.Fx;
-    Fy += lambda * l.Fy;
-    M += lambda * (l.M + at.x * l.Fy - at.y * l.Fx);
-  }
-  out.reaction = {-Fx * force_unit, -Fy * force_unit, -M * moment_unit};
-  out.root_moment = M * moment_unit;
-  const PointLoad& given = prepared.distal_loads.back();
-  out.tip_load = {(lambda * given.Fx + e.Rx) * force_unit,
-                  (lambda * given.Fy + e.Ry) * force_unit,
-                  (lambda * given.M + e.Rm) * moment_unit};
+  const EndLoads loads = end_loads(prepared, e, lambda);
+  out.reaction = {
+      -loads.clamp.Fx * force_unit, -loads.clamp.Fy * force_unit, -loads.clamp.M * moment_unit};
+  out.root_moment = loads.clamp.M * moment_unit;
+  out.tip_load = {loads.tip.Fx * force_unit, loads.tip.Fy * force_unit, loads.tip.M * moment_unit};
   // The shape: clamped links, element nodes, tip links.
   const std::vector<ChainPose> unloaded = chain.unloaded_nodes();
   double s = 0.0;

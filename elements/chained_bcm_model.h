@@ -52,6 +52,25 @@ struct Evaluation {
   ChainPose tip;
 };
 
+// What the clamp holds and the chain's tip load at load factor lambda, per EI/L^2 and EI/L: the
+// clamp holds the distal loads (reactions included) and the loads on the links before the segment
+// (its reaction is the negative); the tip load is the given load plus the end's reactions.
+struct EndLoads {
+  PointLoad clamp, tip;
+};
+inline EndLoads end_loads(const Prepared& p, const Evaluation& e, double lambda) {
+  EndLoads out;
+  out.clamp = {e.Fx, e.Fy, e.moment_about_origin};
+  for (const auto& [at, l] : p.root_loads) {
+    out.clamp.Fx += lambda * l.Fx;
+    out.clamp.Fy += lambda * l.Fy;
+    out.clamp.M += lambda * (l.M + at.x * l.Fy - at.y * l.Fx);
+  }
+  const PointLoad& given = p.distal_loads.back();
+  out.tip = {lambda * given.Fx + e.Rx, lambda * given.Fy + e.Ry, lambda * given.M + e.Rm};
+  return out;
+}
+
 class Discretisation {
  public:
   Discretisation(const Prepared& prepared, int elements, double inverse_d)

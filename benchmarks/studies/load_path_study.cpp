@@ -47,6 +47,25 @@ void scale_point_state(const Point& p, const PathUnits& u, Row& out) {
   out.located = p.located;
 }
 
+// One path point appended to the table's columns in its units (shooting and CBCM points
+// carry the same state under the same names).
+template <class Point>
+void append_path_row(const Point& p, const PathUnits& u, PathTable& t) {
+  t.load_factor.push_back(p.lambda);
+  t.tip_x.push_back(p.tip.x * u.length);
+  t.tip_y.push_back(p.tip.y * u.length);
+  t.tip_theta.push_back(p.tip.theta);
+  t.reaction_Fx.push_back(p.reaction.Fx * u.force);
+  t.reaction_Fy.push_back(p.reaction.Fy * u.force);
+  t.reaction_M.push_back(p.reaction.M * u.moment);
+  t.tip_Fx.push_back(p.tip_load.Fx * u.force);
+  t.tip_Fy.push_back(p.tip_load.Fy * u.force);
+  t.tip_M.push_back(p.tip_load.M * u.moment);
+  t.status.push_back(static_cast<int>(p.status));
+  t.stage.push_back(p.stage);
+  t.branch.push_back(p.branch);
+}
+
 PathSpecialPoint to_table(const SpecialPoint& sp, const PathUnits& u) {
   PathSpecialPoint out;
   out.kind = to_string(sp.kind);
@@ -165,19 +184,7 @@ PathTable shooting_table(const PathRequest& r) {
   PathTable t;
   t.shape_points = r.shape_points;
   for (const PathPoint& p : path.points) {
-    t.load_factor.push_back(p.lambda);
-    t.tip_x.push_back(p.tip.x * u.length);
-    t.tip_y.push_back(p.tip.y * u.length);
-    t.tip_theta.push_back(p.tip.theta);
-    t.reaction_Fx.push_back(p.reaction.Fx * u.force);
-    t.reaction_Fy.push_back(p.reaction.Fy * u.force);
-    t.reaction_M.push_back(p.reaction.M * u.moment);
-    t.tip_Fx.push_back(p.tip_load.Fx * u.force);
-    t.tip_Fy.push_back(p.tip_load.Fy * u.force);
-    t.tip_M.push_back(p.tip_load.M * u.moment);
-    t.status.push_back(static_cast<int>(p.status));
-    t.stage.push_back(p.stage);
-    t.branch.push_back(p.branch);
+    append_path_row(p, u, t);
     if (r.shape_points > 0) {
       const bool have = static_cast<int>(p.shape.size()) == r.shape_points;
       for (int k = 0; k < r.shape_points; ++k) {
@@ -281,21 +288,7 @@ PathTable cbcm_table(const PathRequest& r) {
   const auto scaled = [](const CbcmPathPoint& p, bool located) {
     return Scaled{p.tip, p.reaction, p.tip_load, p.stage, p.branch, located};
   };
-  for (const CbcmPathPoint& p : path.points) {
-    t.load_factor.push_back(p.lambda);
-    t.tip_x.push_back(p.tip.x * u.length);
-    t.tip_y.push_back(p.tip.y * u.length);
-    t.tip_theta.push_back(p.tip.theta);
-    t.reaction_Fx.push_back(p.reaction.Fx * u.force);
-    t.reaction_Fy.push_back(p.reaction.Fy * u.force);
-    t.reaction_M.push_back(p.reaction.M * u.moment);
-    t.tip_Fx.push_back(p.tip_load.Fx * u.force);
-    t.tip_Fy.push_back(p.tip_load.Fy * u.force);
-    t.tip_M.push_back(p.tip_load.M * u.moment);
-    t.status.push_back(p.status);
-    t.stage.push_back(p.stage);
-    t.branch.push_back(p.branch);
-  }
+  for (const CbcmPathPoint& p : path.points) append_path_row(p, u, t);
   t.stability.assign(t.size(),
                      not_checked_stability("the BCM and CBCM paths are not judged (their "
                                            "discrete energy is not assembled); --method shooting "
