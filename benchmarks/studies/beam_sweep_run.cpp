@@ -86,21 +86,31 @@ struct SweepShapes {
     // N . t, N . n and m from the statics of the part before each point (the clamp's reaction;
     // docs/units.md "Internal forces"), exact for tip and joint loads. With a distributed load the
     // moment would need the midpoint rule over the shape's intervals: not stored (NaN).
+    // A chain's solution holds its shape per unit total length (the tips a/l, b/l), its reactions
+    // in the chain's own units: the shape in those units first (a physical beam's chain has
+    // length 1).
+    std::vector<ShapePoint> shape = solution.shape;
+    const double chain_length = problem.chain ? problem.chain->total_length() : 1.0;
+    for (ShapePoint& p : shape) {
+      p.s *= chain_length;
+      p.x *= chain_length;
+      p.y *= chain_length;
+    }
     ShapeInternalForces f;
     if (have) {
       if (!problem.chain) {
         f = shape_internal_forces(
-            uniform_cantilever(EndLoad{0.0, 0.0, 0.0}), solution.shape, solution.reactions);
+            uniform_cantilever(EndLoad{0.0, 0.0, 0.0}), shape, solution.reactions);
       } else if (!problem.chain->has_distributed_loads() && problem.chain->node_loads.empty()) {
-        f = shape_internal_forces(*problem.chain, solution.shape, solution.chain_reactions);
+        f = shape_internal_forces(*problem.chain, shape, solution.chain_reactions);
       }
     }
     const bool known = f.moment.size() == static_cast<std::size_t>(points);
     for (int k = 0; k < points; ++k) {
       const std::size_t i = row + k;
-      x[i] = have ? solution.shape[k].x * length : kNaN;
-      y[i] = have ? solution.shape[k].y * length : kNaN;
-      theta[i] = have ? solution.shape[k].theta : kNaN;
+      x[i] = have ? shape[k].x * length : kNaN;
+      y[i] = have ? shape[k].y * length : kNaN;
+      theta[i] = have ? shape[k].theta : kNaN;
       moment[i] = known ? f.moment[k] * moment_scale : kNaN;
       axial[i] = known ? f.axial[k] * force : kNaN;
       shear[i] = known ? f.shear[k] * force : kNaN;

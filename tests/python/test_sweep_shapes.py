@@ -103,3 +103,28 @@ def test_sweep_shapes_refusals(cli, tmp_path):
                  tmp_path / "one.h5", expect=2)
     assert "[2, 100000]" in err
     assert os.listdir(tmp_path) == []
+
+
+def test_chain_file_sweep_shapes_in_the_files_units(cli, tmp_path):
+    # docs/examples/steel_strip.toml: 50 mm, SI, Fx = -2.5 N fixed; Fy swept. The shape is in m
+    # (the tip: a/l times the root attribute length); the clamp moment is x_tip Fy - y_tip Fx.
+    here = os.path.dirname(os.path.abspath(__file__))
+    strip = os.path.join(here, "..", "..", "docs", "examples", "steel_strip.toml")
+    out = tmp_path / "strip.h5"
+    cli.json("sweep", "beam", "--chain", strip, "--Fy", "0N:2N:5", "--shapes", 9, "--out", out)
+    with h5py.File(out, "r") as f:
+        L, sh = f.attrs["length"], f["shapes"]
+        assert abs(L - 0.05) < 1e-15 and abs(sh["s"][-1] - L) < 1e-15
+        a, b, Fy = f["a_over_l"][()], f["b_over_l"][()], f["axes/Fy"][()]
+        xt, yt = sh["x"][:, -1], sh["y"][:, -1]
+        assert np.abs(xt - a * L).max() <= 1e-9 * L and np.abs(yt - b * L).max() <= 1e-9 * L
+        m_clamp = xt * Fy - yt * -2.5
+        assert np.abs(sh["moment"][:, 0] - m_clamp).max() <= 1e-9 * np.abs(m_clamp).max()
+        assert np.abs(sh["moment"][:, -1]).max() <= 1e-9 * np.abs(m_clamp).max()
+    # A distributed load (self-weight): the internal forces are not stored (NaN), the shape is.
+    out = tmp_path / "weight.h5"
+    weight = os.path.join(here, "..", "..", "docs", "examples", "self_weight_cantilever.toml")
+    cli.json("sweep", "beam", "--chain", weight, "--Fy", "0N:0.2N:3", "--shapes", 5, "--out", out)
+    with h5py.File(out, "r") as f:
+        assert np.isnan(f["shapes/moment"][()]).all()
+        assert np.abs(f["shapes/x"][:, -1] - f["a_over_l"][()] * f.attrs["length"]).max() <= 1e-9
