@@ -128,3 +128,14 @@ def test_chain_file_sweep_shapes_in_the_files_units(cli, tmp_path):
     with h5py.File(out, "r") as f:
         assert np.isnan(f["shapes/moment"][()]).all()
         assert np.abs(f["shapes/x"][:, -1] - f["a_over_l"][()] * f.attrs["length"]).max() <= 1e-9
+
+
+def test_python_sweep_takes_shapes(tmp_path):
+    import flexure
+    out = tmp_path / "py.h5"
+    r = flexure.sweep(alpha2="1:4:4", shapes=6, out=str(out))
+    assert r["shape_points"] == 6 and r["xdmf"] == str(tmp_path / "py.xdmf")
+    d = flexure.read(str(out))
+    with h5py.File(out, "r") as f:
+        assert f["shapes/x"].shape == (4, 6)
+        assert np.abs(f["shapes/theta"][:, -1] - d["theta0"]).max() <= 1e-9
