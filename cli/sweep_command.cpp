@@ -47,6 +47,7 @@ struct SweepBeamArgs {
   // A physical beam (SI, or with units); its --Fx, --Fy, --M may be ranges (0N:5N:51).
   PhysicalFlags physical;
   std::string chain_file;  // --chain FILE.toml: its tip load swept by --Fx, --Fy, --M
+  int shapes = 0;          // --shapes K: the shape of every point at K points, in /shapes
 };
 
 // A tip load of a physical sweep: a range START:STOP:COUNT whose ends are forces (moments for
@@ -309,6 +310,14 @@ void run_sweep_beam(const SweepBeamArgs& args) {
   require_out_or_csv(args.out, args.csv);
   if (!args.out.empty()) io::check_output_path(args.out);
   const CsvOutput csv(args.out, args.csv);
+  if (args.shapes != 0) {
+    // The shapes live in the HDF5 file (its /shapes group and the XDMF sidecar), not in a CSV.
+    if (args.out.empty() || csv.hdf5_path() != args.out) {
+      throw InvalidInput(
+          "--shapes needs --out FILE.h5: the shapes are stored in its /shapes group");
+    }
+    check_beam_sweep_shapes(count, args.shapes);
+  }
   // Under mpirun every rank writes its blocks into the one file (docs/scaling.md).
   if (args.compress && parallel::launched_size() > 1) {
     throw InvalidInput(
@@ -319,6 +328,7 @@ void run_sweep_beam(const SweepBeamArgs& args) {
   BeamSweepFile file(csv.hdf5_path(), args.compress);
   BeamSweepRunOptions options;
   options.threads = threads;
+  options.shape_points = args.shapes;
   // By elapsed time, not by count: silent for the first second, then "sweep beam: k/n (t s)" on a
   // terminal (a shooting sweep of 2000 loads takes about 40 s).
   if (auto progress = slow_progress("sweep beam")) {
@@ -333,7 +343,7 @@ void run_sweep_beam(const SweepBeamArgs& args) {
     csv_axes.clear();
     for (const std::string& axis : table.stored_axes) csv_axes.push_back("axes/" + axis);
   }
-  csv.write(csv_axes);
+  csv.write(csv_axes, {"shapes"});
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
@@ -355,6 +365,10 @@ void run_sweep_beam(const SweepBeamArgs& args) {
     summary["axes"] = grid.axis_names();
     summary["shape"] = grid.shape();
     summary["seconds"] = seconds;
+    if (args.shapes > 0) {
+      summary["shape_points"] = args.shapes;
+      summary["xdmf"] = table.xdmf;
+    }
     print_json(summary);
   } else {
     fmt::print("Wrote {} points ({}; method {}) to {}\n",
@@ -366,6 +380,10 @@ void run_sweep_beam(const SweepBeamArgs& args) {
       fmt::print("  table written to {}\n", csv.csv_path());
     }
     fmt::print("  converged: {} of {}; {:.3f} s\n", table.converged_count, count, seconds);
+    if (!table.xdmf.empty()) {
+      fmt::print(
+          "  shapes ({} points each) in /shapes; XDMF sidecar {}\n", args.shapes, table.xdmf);
+    }
   }
   if (table.first_failure >= 0) {
     BeamSolution failed;
@@ -419,6 +437,11 @@ void register_sweep_command(CLI::App& app) {
                    "Output HDF5 file (written atomically), or FILE.csv for the table as CSV only; "
                    "--out, --csv or both");
   add_csv_option(beam, args->csv);
+  beam->add_option("--shapes",
+                   args->shapes,
+                   "Store the deformed shape (x, y, angle, N, V, m; fibre stresses of a physical "
+                   "beam with a rectangle) at K points of every sweep point in /shapes of --out, "
+                   "with an XDMF sidecar; points x K at most 5e6");
   beam->add_option(
           "--threads", args->threads, "Worker threads per process (1-64; 1 per rank under mpirun)")
       ->default_str("2");

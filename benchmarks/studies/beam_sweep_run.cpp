@@ -4,11 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
 #include "flexure/beam/beam_problem.h"
 #include "flexure/beam/beam_sweep_solver.h"
+#include "flexure/beam/physical_beam.h"
+#include "flexure/benchmarks/studies/shapes_group.h"
 #include "flexure/io/beam_sweep.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/parallel/mpi_world.h"
@@ -65,7 +69,89 @@ const char* given_name(const BeamProblem& problem) {
   }
 }
 
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The shapes of a sweep, gathered point by point (each thread writes its own rows).
+struct SweepShapes {
+  int points = 0;  // shape points per sweep point
+  std::vector<double> s, x, y, theta, moment, axial, shear, stress_pos, stress_neg;
+  bool forces = true;                         // N, V, m known at every point (see store)
+  std::vector<double> section_modulus, area;  // a physical beam with a rectangle (SI)
+  // Scales from the solution's units (per unit length, Howell's loads) to the stored ones.
+  double length = 1.0, force = 1.0, moment_scale = 1.0;
+
+  void store(long index, const BeamProblem& problem, const BeamSolution& solution) {
+    const std::size_t row = static_cast<std::size_t>(index) * points;
+    const bool have = solution.converged() && static_cast<int>(solution.shape.size()) == points;
+    // N . t, N . n and m from the statics of the part before each point (the clamp's reaction;
+    // docs/units.md "Internal forces"), exact for tip and joint loads. With a distributed load the
+    // moment would need the midpoint rule over the shape's intervals: not stored (NaN).
+    // A chain's solution holds its shape per unit total length (the tips a/l, b/l), its reactions
+    // in the chain's own units: the shape in those units first (a physical beam's chain has
+    // length 1).
+    std::vector<ShapePoint> shape = solution.shape;
+    const double chain_length = problem.chain ? problem.chain->total_length() : 1.0;
+    for (ShapePoint& p : shape) {
+      p.s *= chain_length;
+      p.x *= chain_length;
+      p.y *= chain_length;
+    }
+    ShapeInternalForces f;
+    if (have) {
+      if (!problem.chain) {
+        f = shape_internal_forces(
+            uniform_cantilever(EndLoad{0.0, 0.0, 0.0}), shape, solution.reactions);
+      } else if (!problem.chain->has_distributed_loads() && problem.chain->node_loads.empty()) {
+        f = shape_internal_forces(*problem.chain, shape, solution.chain_reactions);
+      }
+    }
+    const bool known = f.moment.size() == static_cast<std::size_t>(points);
+    for (int k = 0; k < points; ++k) {
+      const std::size_t i = row + k;
+      x[i] = have ? shape[k].x * length : kNaN;
+      y[i] = have ? shape[k].y * length : kNaN;
+      theta[i] = have ? shape[k].theta : kNaN;
+      moment[i] = known ? f.moment[k] * moment_scale : kNaN;
+      axial[i] = known ? f.axial[k] * force : kNaN;
+      shear[i] = known ? f.shear[k] * force : kNaN;
+      if (!section_modulus.empty()) {
+        // N/A -+ m c/I: a positive moment compresses the +n fibre (docs/units.md).
+        stress_pos[i] = axial[i] / area[k] - moment[i] / section_modulus[k];
+        stress_neg[i] = axial[i] / area[k] + moment[i] / section_modulus[k];
+      }
+    }
+  }
+};
+
 }  // namespace
+
+long max_beam_sweep_shape_values() { return 5'000'000L; }
+
+void check_beam_sweep_shapes(long count, int shape_points) {
+  if (shape_points == 0) return;
+  if (shape_points < 2 || shape_points > 100'000) {
+    throw InvalidInput(fmt::format(
+        "--shapes = {} is outside the allowed range [2, 100000] (shape points per sweep point)",
+        shape_points));
+  }
+  if (static_cast<double>(count) * shape_points >
+      static_cast<double>(max_beam_sweep_shape_values())) {
+    throw InvalidInput(fmt::format(
+        "--shapes {}: {} sweep points x {} shape points = {:.0f} values exceeds the {} a sweep "
+        "stores (the shapes are held in memory until the sweep ends); ask for fewer shape points "
+        "or fewer sweep points",
+        shape_points,
+        count,
+        shape_points,
+        static_cast<double>(count) * shape_points,
+        max_beam_sweep_shape_values()));
+  }
+  if (parallel::launched_size() > 1) {
+    throw InvalidInput(
+        "--shapes is not available under mpirun with several ranks: the shapes are gathered in "
+        "one process; run the sweep with shapes on one rank");
+  }
+}
 
 long max_beam_sweep_points() {
   return parallel::launched_size() > 1 ? 10'000'000'000L : 10'000'000L;
@@ -123,10 +209,40 @@ BeamSweepRun BeamSweepFile::run(const BeamSweepGrid& grid,
   BeamSweepRun out;
   out.method = resolve_beam_method(requested);
   out.count = grid.size();
+  const int K = options.shape_points;
+  check_beam_sweep_shapes(out.count, K);
+  SweepShapes shapes;
+  BeamSweepGrid solved_grid = grid;
+  if (K > 0) {
+    // The solver returns the shape at K points (and then solves every point from zero load:
+    // BeamSweepSolver's warm start is for sweeps without shapes).
+    solved_grid.base.shape_points = K;
+    shapes.points = K;
+    const std::size_t n = static_cast<std::size_t>(out.count) * K;
+    for (std::vector<double>* v :
+         {&shapes.x, &shapes.y, &shapes.theta, &shapes.moment, &shapes.axial, &shapes.shear}) {
+      v->assign(n, kNaN);
+    }
+    const double total = grid.chain ? grid.chain->total_length() : 1.0;
+    if (grid.physical) {
+      // Howell's units per unit length -> SI: x L, F EI/L^2, M EI/L.
+      const PhysicalCantilever& b = *grid.physical;
+      shapes.length = b.length;
+      shapes.force = b.flexural_rigidity() / (b.length * b.length);
+      shapes.moment_scale = b.flexural_rigidity() / b.length;
+      b.fibre_sections(K, shapes.section_modulus, shapes.area);
+      if (!shapes.section_modulus.empty()) {
+        shapes.stress_pos.assign(n, kNaN);
+        shapes.stress_neg.assign(n, kNaN);
+      }
+    }
+    for (int k = 0; k < K; ++k) shapes.s.push_back(total * k / (K - 1) * shapes.length);
+  }
   // Shooting sweeps start each point from its neighbour where that gives the same answer.
-  const BeamSweepSolver sweep_solver(grid, out.method);
+  const BeamSweepSolver sweep_solver(solved_grid, out.method);
   const io::BeamIndexSolver solve_point = [&](long index) {
     BeamSolution solution = sweep_solver.solve(index);
+    if (K > 0) shapes.store(index, solved_grid.at(index), solution);
     io::BeamSweepPoint point;
     point.set_converged(solution.converged());
     point.tip = solution.tip;
@@ -181,7 +297,41 @@ BeamSweepRun BeamSweepFile::run(const BeamSweepGrid& grid,
     root.set_attribute("Fy_N", b.Fy);
     root.set_attribute("M_Nm", b.M);
   }
+  ShapesView view;
+  std::vector<double> times;
+  if (K > 0) {
+    view.rows = out.count;
+    view.shape_points = K;
+    view.s = shapes.s;
+    view.x = shapes.x;
+    view.y = shapes.y;
+    view.theta = shapes.theta;
+    view.moment = shapes.moment;
+    view.axial = shapes.axial;
+    view.shear = shapes.shear;
+    view.stress_pos = shapes.stress_pos;
+    view.stress_neg = shapes.stress_neg;
+    view.row_name = "sweep point";
+    if (grid.physical) {
+      view.length_unit = "m";
+      view.force_unit = "N";
+      view.moment_unit = "N m";
+    } else if (grid.chain) {
+      view.length_unit = grid.chain_in_si ? "m" : "length unit of the chain file";
+      view.force_unit = grid.chain_in_si ? "N" : "force unit of the chain file";
+      view.moment_unit = grid.chain_in_si ? "N m" : "moment unit of the chain file";
+    } else {
+      view.scaled = " (nondimensional: l = 1, EI = 1)";
+    }
+    write_shapes_group(file_->root(), view);
+    file_->root().set_attribute("shape_points", static_cast<std::int64_t>(K));
+    // The XDMF time of a row: the swept value of a sweep along one axis, else the point's index.
+    for (long i = 0; i < out.count; ++i) {
+      times.push_back(grid.axes.size() == 1 ? grid.coordinates(i)[0] : static_cast<double>(i));
+    }
+  }
   file_->commit();
+  if (K > 0) out.xdmf = write_shapes_xdmf(path_, view, times);
   out.converged_count = table.converged_count;
   out.first_failure = table.first_failure;
   out.first_failure_message = table.first_failure_message;

@@ -42,8 +42,21 @@ long beam_sweep_min_block(BeamMethod method);
 // "alpha2 = 2.5, load_ratio_n = 1": point `index` of the grid, for messages.
 std::string describe_sweep_point(const BeamSweepGrid& grid, long index);
 
+// The most values (points x shape points) the shapes of a sweep may hold: 5 * 10^6. The shapes are
+// kept in memory until the sweep ends (up to nine datasets of 8-byte values: about 360 MB).
+long max_beam_sweep_shape_values();
+
+// Throws InvalidInput when `shape_points` shape points at each of `count` points is not a request
+// a sweep takes: shape_points outside [2, 100000], more values than max_beam_sweep_shape_values(),
+// or under mpirun with several ranks (the shapes are gathered in one process). 0: no shapes, fine.
+void check_beam_sweep_shapes(long count, int shape_points);
+
 struct BeamSweepRunOptions {
   int threads = 0;  // 0: default_beam_sweep_threads(); else 1..64
+  // >= 2: the deformed shape of every point at this many equally spaced arc lengths, stored in
+  // /shapes with the internal forces (docs/hdf5-schema.md "flexure sweep beam"), and the XDMF
+  // sidecar next to the file. 0: none. Every point is then solved from zero load (no warm start).
+  int shape_points = 0;
   // Called on the calling thread with the points done so far (may be null).
   std::function<void(long done, long total)> progress;
 };
@@ -57,6 +70,7 @@ struct BeamSweepRun {
   long first_failure = -1;                    // index of the first point not converged, or -1
   std::string first_failure_message;          // the method's message for that point
   std::vector<std::string> stored_axes;       // names under /axes, in the datasets' axis order
+  std::string xdmf;                           // the XDMF sidecar of the shapes (empty: none)
 };
 
 class BeamSweepFile {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "flexure/beam/physical_beam.h"
+#include "flexure/benchmarks/studies/shapes_group.h"
 #include "flexure/elements/cbcm_path.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/common/errors.h"
@@ -692,6 +693,27 @@ void write_force_points(io::Hdf5Group& root, const PathTable& t) {
 
 }  // namespace
 
+ShapesView path_shapes_view(const PathTable& t) {
+  ShapesView v;
+  v.rows = static_cast<long>(t.size());
+  v.shape_points = t.shape_points;
+  v.s = t.shape_s;
+  v.x = t.shape_x;
+  v.y = t.shape_y;
+  v.theta = t.shape_theta;
+  v.moment = t.shape_moment;
+  v.axial = t.shape_axial;
+  v.shear = t.shape_shear;
+  v.stress_pos = t.shape_stress_pos;
+  v.stress_neg = t.shape_stress_neg;
+  v.row_name = "path point";
+  v.length_unit = t.units.length_unit;
+  v.force_unit = t.units.force_unit;
+  v.moment_unit = t.units.moment_unit;
+  v.scaled = t.units.system == "nondimensional" ? " (nondimensional: l = 1, EI = 1)" : "";
+  return v;
+}
+
 void write_path_file(io::Hdf5Group& root, const PathTable& t) {
   const PathUnits& u = t.units;
   const bool nondimensional = u.system == "nondimensional";
@@ -799,55 +821,7 @@ void write_path_file(io::Hdf5Group& root, const PathTable& t) {
 
   if (t.control != "load") write_force_points(root, t);
 
-  if (t.shape_points > 0) {
-    io::Hdf5Group shapes = root.create_group("shapes");
-    const std::vector<hsize_t> dims = {static_cast<hsize_t>(t.size()),
-                                       static_cast<hsize_t>(t.shape_points)};
-    shapes.write_dataset(
-        "s", t.shape_s, u.length_unit, "arc length from the clamp of each shape column" + scaled);
-    shapes.write_dataset(
-        "x", t.shape_x, dims, u.length_unit, "x of the shape [path point, shape point]" + scaled);
-    shapes.write_dataset(
-        "y", t.shape_y, dims, u.length_unit, "y of the shape [path point, shape point]" + scaled);
-    shapes.write_dataset(
-        "theta", t.shape_theta, dims, "rad", "tangent angle [path point, shape point]");
-    shapes.write_dataset("moment",
-                         t.shape_moment,
-                         dims,
-                         u.moment_unit,
-                         "bending moment m = EI (theta' - kappa0) [path point, shape point], "
-                         "counter-clockwise on the part nearer the clamp" +
-                             scaled);
-    if (!t.shape_axial.empty()) {
-      shapes.write_dataset(
-          "axial_force",
-          t.shape_axial,
-          dims,
-          u.force_unit,
-          "internal force N . t (tension positive) [path point, shape point]" + scaled);
-      shapes.write_dataset("shear_force",
-                           t.shape_shear,
-                           dims,
-                           u.force_unit,
-                           "internal force N . n, n left of the tangent (dm/ds = -V) [path "
-                           "point, shape point]" +
-                               scaled);
-    }
-    if (!t.shape_stress_pos.empty()) {
-      shapes.write_dataset("stress_pos_fibre",
-                           t.shape_stress_pos,
-                           dims,
-                           "Pa",
-                           "stress N/A - m c/I at the fibre h/2 along the normal left of the "
-                           "tangent [path point, shape point]");
-      shapes.write_dataset("stress_neg_fibre",
-                           t.shape_stress_neg,
-                           dims,
-                           "Pa",
-                           "stress N/A + m c/I at the fibre h/2 along the normal right of the "
-                           "tangent [path point, shape point]");
-    }
-  }
+  if (t.shape_points > 0) write_shapes_group(root, path_shapes_view(t));
 
   root.set_attribute("method", to_string(t.method));
   if (t.method == PathMethod::kBcm || t.method == PathMethod::kCbcm) {

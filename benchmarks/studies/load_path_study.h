@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "flexure/benchmarks/studies/shapes_group.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/provenance.h"
 #include "flexure/solver/chain_model/equilibrium_stability.h"
@@ -178,6 +179,9 @@ PathTable run_load_path(const PathRequest& request);
 // The codes of the `status`, `special_points/located` and `special_points/switched` datasets (root
 // attribute status_meanings).
 const std::vector<io::CodeMeaning>& path_code_meanings();
+
+// The table's shapes as the shared /shapes writer takes them (shapes_group.h); views into `table`.
+ShapesView path_shapes_view(const PathTable& table);
 
 // Writes the table to `root` (datasets, /special_points, /shapes, attributes and provenance;
 // docs/hdf5-schema.md "flexure path").

@@ -131,7 +131,7 @@ def sweep(*, out, alpha2=None, theta0=None, b_over_l=None, n=None, mu=None, meth
           Fy=None, M=None, material=None, plate=None, nu=None, qx=None, qy=None,
           q_follower=None, density=None, g=None, extensible=False, shear_coefficient=None,
           curvature=None, width_tip=None, thickness_tip=None,
-          chain=None):  # noqa: E741 - the tool's --I
+          chain=None, shapes=None):  # noqa: E741 - the tool's --I
     """A beam sweep written to HDF5: `flexure sweep beam` (docs/hdf5-schema.md).
 
     alpha2, theta0, b_over_l, n, mu: a value or 'START:STOP:COUNT' (one or two axes); method;
@@ -142,7 +142,9 @@ def sweep(*, out, alpha2=None, theta0=None, b_over_l=None, n=None, mu=None, meth
     E, I or width and thickness, and the keywords of flexure.beam) is swept over one or two of
     its tip loads Fx, Fy, M given as 'START:STOP:COUNT' with units ('0N:5N:51'); the file then
     has /axes/Fy (N) and the root attributes units 'SI', length_m, EI_Nm2. chain: a segment
-    chain TOML file whose tip load Fx, Fy, M (ranges) is swept.
+    chain TOML file whose tip load Fx, Fy, M (ranges) is swept. shapes: K shape points at every
+    sweep point, stored in /shapes of out with internal forces (and fibre stresses of a physical
+    rectangle) and an XDMF sidecar (the summary's 'xdmf'); points x K at most 5e6.
 
     Example:
       >>> flexure.sweep(alpha2="0:20:1001", n="0:2:3", out="sweep.h5")     # doctest: +SKIP
@@ -160,7 +162,7 @@ def sweep(*, out, alpha2=None, theta0=None, b_over_l=None, n=None, mu=None, meth
                    extensible=extensible,
                    shear_coefficient=shear_coefficient,
                    curvature=curvature, width_tip=width_tip,
-                   thickness_tip=thickness_tip, chain=chain)
+                   thickness_tip=thickness_tip, chain=chain, shapes=shapes)
     _one_value_each("sweep", options)
     return _run(["sweep", "beam"], options, switches={"compress", "extensible"})
 

@@ -169,6 +169,7 @@ def sweep(
     width_tip: Quantity | None = ...,
     thickness_tip: Quantity | None = ...,
     chain: Path | None = ...,
+    shapes: int | None = ...,
 ) -> Result: ...
 def cfm(
     *,
