@@ -4,6 +4,7 @@ the figure draws (recorded by --dump-json in the file's units, with the dataset 
 it came from) must equal the file's data, read here independently with h5py. Bad input: exit 2
 naming the file; matplotlib missing: exit 4 with the packages to install."""
 import json
+import math
 import os
 import subprocess
 import xml.etree.ElementTree as ET
@@ -440,3 +441,74 @@ def test_benchmark_charts_are_drawn_from_the_file(files, tmp_path):
     texts = [t for ax in fig.axes for t in ax.texts]
     assert all(t.get_fontsize() >= 9 for t in texts)
     plt.close(fig)
+
+
+def _bilinear(x, y, z, px, py):
+    # z[j, i] on the grid x[i], y[j]: bilinear interpolation at (px, py) (on a cell edge, where
+    # matplotlib's contour vertices lie, it is the linear interpolation along that edge).
+    i = int(np.clip(np.searchsorted(x, px) - 1, 0, len(x) - 2))
+    j = int(np.clip(np.searchsorted(y, py) - 1, 0, len(y) - 2))
+    u = (px - x[i]) / (x[i + 1] - x[i])
+    v = (py - y[j]) / (y[j + 1] - y[j])
+    return ((1 - u) * (1 - v) * z[j, i] + u * (1 - v) * z[j, i + 1] + (1 - u) * v * z[j + 1, i]
+            + u * v * z[j + 1, i + 1])
+
+
+def test_models_map_contours_lie_on_the_errors_they_name(tmp_path):
+    # docs/models.md: each model's map carries the 1 %, 0.1 % and 0.01 % contours. Every level
+    # inside a model's error range must be drawn, and every vertex of a level's lines must lie
+    # where the file's error (read here with h5py, interpolated on the grid) equals that level.
+    import sys
+    sys.path.insert(0, os.path.join(ROOT, "python"))
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.axes import Axes
+    from flexure_plot import studies
+    from flexure_plot._common import Recorder
+    out = tmp_path / "m.h5"
+    assert run(["models", "map", "--n", "0", "--alpha2", "0.2:8:14", "--mu", "-2:2:9",
+                "--min-seconds", "0", "--models", "linear,bcm,prbm3r", "--out",
+                str(out)]).returncode == 0
+    # The contour sets as drawn (matplotlib before 3.8 does not keep them among the axes'
+    # children): Axes.contour wrapped to note what it returns, per axes.
+    drawn_sets = {}
+    contour = Axes.contour
+
+    def noting_contour(ax, *args, **kwargs):
+        c = contour(ax, *args, **kwargs)
+        drawn_sets.setdefault(id(ax), []).append(c)
+        return c
+
+    Axes.contour = noting_contour
+    try:
+        with h5py.File(out, "r") as f:
+            fig = studies.draw_models(f, plt, Recorder())
+    finally:
+        Axes.contour = contour
+    with h5py.File(out, "r") as f:
+        x, y = f["alpha2"][()], f["mu"][()]
+        levels_seen = 0
+        for ax in fig.axes:
+            name = ax.get_title().split(" ")[0]
+            if name not in ("linear", "bcm", "prbm3r"):
+                continue  # colour bars
+            error = f[name + "/position_error"][()][0].T  # [mu, alpha2]
+            ok = f[name + "/status"][()][0].T == 0
+            logged = np.where(ok, np.log10(np.maximum(error, 1e-16)), 1.0)
+            expected = [math.log10(v) for v in (1e-4, 1e-3, 1e-2)
+                        if np.log10(error[ok]).min() < math.log10(v) < np.log10(error[ok]).max()]
+            sets = drawn_sets.get(id(ax), [])
+            drawn = sorted(float(v) for c in sets for v in c.levels)
+            assert drawn == pytest.approx(sorted(expected), abs=1e-12), name
+            for c in sets:
+                for level, segments in zip(c.levels, c.allsegs):
+                    assert sum(len(seg) for seg in segments) > 0, (name, level)
+                    for seg in segments:
+                        for px, py in seg:
+                            assert _bilinear(x, y, logged, px, py) == pytest.approx(level,
+                                                                                    abs=1e-9)
+                    levels_seen += 1
+        # linear theory crosses 1 % and 0.1 % on this grid, the BCM all three, PR-3R 1 % and 0.1 %
+        assert levels_seen >= 5
+    plt.close("all")
