@@ -424,18 +424,8 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
       {"refined", refined ? refined_json(*refined, factor, spec.force) : Json(nullptr)},
       {"out", args.out.empty() ? Json(nullptr) : Json(args.out)},
       {"drawing", args.drawing.empty() ? Json(nullptr) : Json(args.drawing)}};
+  const design::DimensionedDesign written = design::design_for_output(r, refined);
   if (!args.out.empty() && (!refinement_failed || args.allow_infeasible)) {
-    // A refinement that failed before dimensioning (the optimisation) leaves the PRBM design,
-    // whose exact force misses the specification: that is what --allow-infeasible writes then.
-    design::DimensionedDesign written = refined ? *refined : r.designs.front();
-    if (refinement_failed) {
-      const bool prbm_design = refined->design.r2 == r.designs.front().design.r2;
-      written.feasible = false;
-      written.binding = fmt::format("the refinement against the exact model failed: {}{}",
-                                    refined->binding,
-                                    prbm_design ? "; this is the PRBM design" : "");
-      written.design.note = "NOT FEASIBLE: " + written.binding + ". " + written.design.note;
-    }
     io::write_text_file(
         args.out,
         mechanism::mechanism_toml(
@@ -444,7 +434,7 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
             io::geometry_toml(mechanism::mechanism_geometry(written.design)));
   }
   // The drawing of the design that --out writes (the refined one with --model exact).
-  const mechanism::MechanismDesign& drawn = refined ? refined->design : r.designs.front().design;
+  const mechanism::MechanismDesign& drawn = written.design;
   if (!args.drawing.empty() && (!refinement_failed || args.allow_infeasible)) {
     // The end of the stroke with the exact model's bent flexures, as `mechanism draw` draws it.
     mechanism::MechanismGeometry g = mechanism::mechanism_geometry(drawn);
@@ -477,11 +467,9 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
   }
   // The thesis's rule lists designs that its own stresses would not pass: say which.
   std::vector<std::string> short_of;
-  for (const auto& d : r.designs) {
-    const double sf = std::min(d.safety_factor_prbm, d.safety_factor_exact.value_or(1e300));
-    if (sf < spec.safety_factor * (1.0 - 1e-9)) {
-      short_of.push_back(fmt::format("{} {:.3g}", d.subclass, sf));
-    }
+  for (const design::SafetyShortfall& s :
+       design::designs_short_of_safety_factor(r, spec.safety_factor)) {
+    short_of.push_back(fmt::format("{} {:.3g}", s.subclass, s.safety_factor));
   }
   if (!short_of.empty()) {
     warn(fmt::format(

@@ -8,6 +8,7 @@
 #include <limits>
 #include <memory>
 #include <set>
+#include <stdexcept>
 #include <string_view>
 
 #include "flexure/mechanisms/cfm/cfm_comparison.h"
@@ -708,6 +709,36 @@ DimensionedDesign refine_design_exact(const MechanismSpec& spec,
   }
   out.feasible = true;
   apply_spec_material(spec, out);
+  return out;
+}
+
+std::vector<SafetyShortfall> designs_short_of_safety_factor(const MechanismDesignReport& report,
+                                                            double safety_factor) {
+  std::vector<SafetyShortfall> out;
+  for (const DimensionedDesign& d : report.designs) {
+    const double sf = std::min(d.safety_factor_prbm,
+                               d.safety_factor_exact.value_or(std::numeric_limits<double>::max()));
+    if (sf < safety_factor * (1.0 - 1e-9)) out.push_back({d.subclass, sf});
+  }
+  return out;
+}
+
+DimensionedDesign design_for_output(const MechanismDesignReport& report,
+                                    const std::optional<DimensionedDesign>& refined) {
+  if (report.designs.empty()) {
+    throw std::logic_error("design_for_output: the report has no feasible design");
+  }
+  if (!refined) return report.designs.front();
+  DimensionedDesign out = *refined;
+  if (!refined->feasible) {
+    // A refinement that failed before dimensioning (the optimisation) leaves the PRBM design,
+    // whose exact force misses the specification.
+    const bool prbm_design = refined->design.r2 == report.designs.front().design.r2;
+    out.binding = fmt::format("the refinement against the exact model failed: {}{}",
+                              refined->binding,
+                              prbm_design ? "; this is the PRBM design" : "");
+    out.design.note = "NOT FEASIBLE: " + out.binding + ". " + out.design.note;
+  }
   return out;
 }
 

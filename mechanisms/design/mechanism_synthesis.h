@@ -223,6 +223,26 @@ MechanismDesignReport design_mechanisms(const MechanismSpec& spec);
 DimensionedDesign refine_design_exact(const MechanismSpec& spec,
                                       const DimensionedDesign& prbm_design);
 
+// A feasible design whose safety factor by its PRBM or exact stresses falls below the one
+// specified: possible under StressRule::kThesis, whose eq. 8.5 leaves out the axial stress and
+// the clamp moment (docs/errata.md). The smaller of the two safety factors.
+struct SafetyShortfall {
+  std::string subclass;
+  double safety_factor = 0.0;
+};
+// The report's feasible designs short of `safety_factor` (a relative allowance of 1e-9), in the
+// report's order.
+std::vector<SafetyShortfall> designs_short_of_safety_factor(const MechanismDesignReport& report,
+                                                            double safety_factor);
+
+// The design `design mechanism` writes (--out, --drawing): the refinement against the exact
+// model where there is one, else the best feasible design. A refinement that is not feasible
+// comes back marked so (feasible = false, binding and the design's note saying why, and whether
+// it is still the PRBM design): it is written only on request (--allow-infeasible).
+// Precondition: the report has a feasible design.
+DimensionedDesign design_for_output(const MechanismDesignReport& report,
+                                    const std::optional<DimensionedDesign>& refined);
+
 // Table 8.2's screens on their own (DesignScreens), for the specification.
 DesignScreens design_screens(const MechanismSpec& spec);
 

@@ -378,5 +378,55 @@ TEST(MechanismSynthesis, RefusesInconsistentSpecifications) {
       << r.rejected.front().binding;
 }
 
+// Issue 27's silent answer: under eq. 8.5 (StressRule::kThesis) a design is sized to the yield
+// strength by the primary flexure's bending stress alone, so with S_y just above example 1's
+// 167 ksi the thesis's lpp-b is feasible while its PRBM stresses need 190 ksi and its exact
+// stresses 186 ksi at SF 1.2 (Weight §8.5.1; docs/errata.md). The library names it short of the
+// safety factor with the smaller of the two: 1.2 * 170 / 190 = 1.074 (the printed 190 ksi is
+// rounded: 1 %).
+TEST(MechanismSynthesis, ThesisRuleDesignsShortOfTheSafetyFactorAreNamed) {
+  MechanismSpec spec = example_1();
+  spec.yield_strength = 170.0 * kKsi;
+  const MechanismDesignReport r = design_mechanisms(spec);
+  ASSERT_FALSE(r.designs.empty());
+  const std::vector<SafetyShortfall> short_of = designs_short_of_safety_factor(r, 1.2);
+  const auto lpp_b = std::find_if(short_of.begin(), short_of.end(), [](const SafetyShortfall& s) {
+    return s.subclass == "lpp-b";
+  });
+  ASSERT_NE(lpp_b, short_of.end());
+  EXPECT_NEAR(lpp_b->safety_factor, 1.2 * 170.0 / 190.0, 0.01 * 1.2 * 170.0 / 190.0);
+  // Every design not named meets SF 1.2 by both its PRBM and exact stresses; at SF 0.5 none is
+  // short.
+  for (const DimensionedDesign& d : r.designs) {
+    const bool named = std::any_of(short_of.begin(), short_of.end(), [&](const SafetyShortfall& s) {
+      return s.subclass == d.subclass;
+    });
+    if (!named) {
+      EXPECT_GE(d.safety_factor_prbm, 1.2 * (1.0 - 1e-9)) << d.subclass;
+      if (d.safety_factor_exact) EXPECT_GE(*d.safety_factor_exact, 1.2 * (1.0 - 1e-9));
+    }
+  }
+  EXPECT_TRUE(designs_short_of_safety_factor(r, 0.5).empty());
+}
+
+// What `design mechanism --out` writes: the best design, or the refinement; a refinement that
+// failed is marked NOT FEASIBLE, saying whether it is still the PRBM design.
+TEST(MechanismSynthesis, DesignForOutputMarksAFailedRefinement) {
+  MechanismSpec spec = example_1();
+  const MechanismDesignReport r = design_mechanisms(spec);
+  ASSERT_FALSE(r.designs.empty());
+  EXPECT_EQ(design_for_output(r, std::nullopt).design.r2, r.designs.front().design.r2);
+  DimensionedDesign failed = r.designs.front();
+  failed.feasible = false;
+  failed.binding = "the Xi' floor";
+  const DimensionedDesign written = design_for_output(r, failed);
+  EXPECT_FALSE(written.feasible);
+  EXPECT_EQ(written.binding,
+            "the refinement against the exact model failed: the Xi' floor; this is the PRBM "
+            "design");
+  EXPECT_EQ(written.design.note.rfind("NOT FEASIBLE: " + written.binding, 0), 0u);
+  EXPECT_THROW(design_for_output(MechanismDesignReport{}, std::nullopt), std::logic_error);
+}
+
 }  // namespace
 }  // namespace flexure::design
