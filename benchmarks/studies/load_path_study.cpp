@@ -67,6 +67,17 @@ void append_path_row(const Point& p, const PathUnits& u, PathTable& t) {
   t.branch.push_back(p.branch);
 }
 
+// The continuation's counts and message, the same members in the shooting and CBCM paths.
+template <class Path>
+void copy_path_counts(const Path& path, PathTable& t) {
+  t.switched_branch = path.switched_branch;
+  t.steps = path.steps;
+  t.rejected_steps = path.rejected_steps;
+  t.newton_iterations = path.newton_iterations;
+  t.location_corrections = path.location_corrections;
+  t.message = path.message;
+}
+
 PathSpecialPoint to_table(const SpecialPoint& sp, const PathUnits& u) {
   PathSpecialPoint out;
   out.kind = to_string(sp.kind);
@@ -252,12 +263,7 @@ PathTable shooting_table(const PathRequest& r) {
   t.limit_points = path.limit_points;
   t.bifurcation_points = path.bifurcation_points;
   if (path.limit_points > 0) t.first_limit_load_factor = path.first_limit_load_factor;
-  t.switched_branch = path.switched_branch;
-  t.steps = path.steps;
-  t.rejected_steps = path.rejected_steps;
-  t.newton_iterations = path.newton_iterations;
-  t.location_corrections = path.location_corrections;
-  t.message = path.message;
+  copy_path_counts(path, t);
   int number = 0;
   for (std::size_t i = 0; i < t.special_points.size(); ++i) {
     const PathSpecialPoint& b = t.special_points[i];
@@ -330,12 +336,7 @@ PathTable cbcm_table(const PathRequest& r) {
       }
     }
   }
-  t.switched_branch = path.switched_branch;
-  t.steps = path.steps;
-  t.rejected_steps = path.rejected_steps;
-  t.newton_iterations = path.newton_iterations;
-  t.location_corrections = path.location_corrections;
-  t.message = path.message;
+  copy_path_counts(path, t);
   for (const Warning& w : path.warnings) t.warnings.push_back(w.text);
   int number = 0;
   for (const PathSpecialPoint& b : t.special_points) {
