@@ -1,15 +1,18 @@
 #include "flexure/io/parallel/work_distribution.h"
 
 #include <fmt/format.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <future>
+#include <mutex>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -35,10 +38,37 @@ struct Held {
 std::atomic<Held*> held{nullptr};
 std::atomic<int> held_count{0};
 std::atomic<bool> tracking{false};
+std::atomic<bool> blocks_written{false};  // once per distribution (SIGCONT, then SIGTERM)
 
 std::vector<long> balance;  // items_per_rank()
 
 #ifdef FLEXURE_WITH_MPI
+// Open MPI's mpirun stops a job (Ctrl-C, a rank that died, MPI_Abort) by sending each rank SIGCONT,
+// waiting odls_base_sigkill_timeout (1 s by default), then SIGTERM and SIGKILL a few milliseconds
+// later (measured: 2.4 ms). A SIGTERM handler on a loaded machine is not always scheduled in that
+// window: the blocks were then never named (about 1 run in 15). The SIGCONT that opens the
+// sequence leaves a second: rank 0 names the blocks when the process that started it (mpirun or
+// its daemon) sends one. Nothing is removed here: a SIGCONT that resumes a job stopped by job
+// control (mpirun forwards those only with orte_forward_job_control set) must not cost the output
+// file; the temporary files are removed on SIGTERM as before (io/temp_file_cleanup.cpp).
+extern "C" void name_blocks_on_launcher_sigcont(int, siginfo_t* info, void*) {
+  if (info == nullptr || info->si_code != SI_USER || info->si_pid != ::getppid()) return;
+  const int saved_errno = errno;
+  write_blocks_in_progress(STDERR_FILENO);
+  errno = saved_errno;
+}
+
+void install_sigcont_handler_once() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    struct sigaction action = {};
+    action.sa_sigaction = name_blocks_on_launcher_sigcont;
+    action.sa_flags = SA_SIGINFO | SA_RESTART;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGCONT, &action, nullptr);
+  });
+}
+
 void start_tracking(int ranks) {
   if (held_count.load() < ranks) {
     held.store(new Held[static_cast<std::size_t>(ranks)]);  // an older, smaller table is kept
@@ -48,7 +78,9 @@ void start_tracking(int ranks) {
   for (int r = 0; r < ranks; ++r) {
     h[r].begin = h[r].end = h[r].next_begin = h[r].next_end = -1;
   }
+  blocks_written.store(false);
   tracking.store(true);
+  install_sigcont_handler_once();
   // Ctrl-C or mpirun's SIGTERM then names the blocks even where no temporary file was registered
   // (a command without --out).
   io::install_interrupt_handlers();
@@ -381,6 +413,8 @@ std::vector<long> items_per_rank() { return balance; }
 
 void write_blocks_in_progress(int fd) {
   if (!tracking.load()) return;
+  // Once: on mpirun's SIGCONT and again on its SIGTERM would print the line twice.
+  if (blocks_written.exchange(true)) return;
   // The count first: start_tracking publishes a larger table before its count.
   const int ranks = held_count.load();
   const Held* h = held.load();
