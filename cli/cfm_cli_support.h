@@ -6,8 +6,8 @@
 #include <string>
 
 #include "cli/cli_common.h"
-#include "flexure/mechanisms/cfm/cfm_exact.h"
 #include "flexure/mechanisms/cfm/cfm_model.h"
+#include "flexure/mechanisms/cfm_exact.h"
 
 namespace flexure::cli {
 

@@ -10,8 +10,8 @@
 
 #include "cli/cfm_cli_support.h"
 #include "cli/slow_progress.h"
-#include "flexure/mechanisms/cfm/cfm_comparison.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm_comparison.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {

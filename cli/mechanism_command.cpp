@@ -31,7 +31,7 @@
 #include "flexure/io/parallel/mpi_world.h"
 #include "flexure/io/parallel/work_distribution.h"
 #include "flexure/io/provenance.h"
-#include "flexure/mechanisms/constant_force.h"
+#include "flexure/mechanisms/cfm/constant_force.h"
 #include "flexure/mechanisms/general/catalogue_general.h"
 #include "flexure/mechanisms/howell_designs.h"
 #include "flexure/mechanisms/inversion.h"

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "flexure/mechanisms/constant_force.h"
+#include "flexure/mechanisms/cfm/constant_force.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {

@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/mechanisms/cfm/constant_force.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
-#include "flexure/mechanisms/constant_force.h"
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/solver/common/errors.h"
 

@@ -8,8 +8,8 @@
 #include <cmath>
 
 #include "flexure/elements/fixed_pinned_segment.h"
-#include "flexure/mechanisms/data_files.h"
-#include "flexure/mechanisms/dynamics/cfsm_designs.h"
+#include "flexure/mechanisms/cfsm_designs.h"
+#include "flexure/mechanisms/data/data_files.h"
 #include "flexure/solver/common/csv_table.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"

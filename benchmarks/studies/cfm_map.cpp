@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
-#include "flexure/mechanisms/cfm/cfm_exact.h"
+#include "flexure/mechanisms/cfm_exact.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::studies {

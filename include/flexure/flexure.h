@@ -47,13 +47,13 @@
 #include "flexure/elements/small_length_flexural_pivot.h"
 
 // Mechanisms: designs, PRBM and exact models, constant-force mechanisms, dynamics.
-#include "flexure/mechanisms/cfm/cfm_comparison.h"
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
-#include "flexure/mechanisms/cfm/cfm_exact.h"
 #include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
-#include "flexure/mechanisms/constant_force.h"
-#include "flexure/mechanisms/dynamics/cfsm_designs.h"
+#include "flexure/mechanisms/cfm/constant_force.h"
+#include "flexure/mechanisms/cfm_comparison.h"
+#include "flexure/mechanisms/cfm_exact.h"
+#include "flexure/mechanisms/cfsm_designs.h"
 #include "flexure/mechanisms/dynamics/forward_dynamics.h"
 #include "flexure/mechanisms/dynamics/inverse_dynamics.h"
 #include "flexure/mechanisms/general/general_exact.h"

@@ -79,9 +79,9 @@ struct CfmResult : SolveStatus {
   double Phi_min = 0.0;  // smallest sampled Phi
   double Phi_max = 0.0;  // largest sampled Phi
   double Xi = 0.0;       // Phi_max/Phi_min (eq. 2.17); unbounded when force_vanishes
-  // Phi_min <= kForceVanishesRelative |Phi_max| (mechanisms/constant_force.h): the force is zero
-  // within the stroke to rounding (a class 1A mechanism at its toggle position, where the crank
-  // spring's moment has no lever along the slider) or changes sign; Xi is then meaningless.
+  // Phi_min <= kForceVanishesRelative |Phi_max| (mechanisms/cfm/constant_force.h): the force is
+  // zero within the stroke to rounding (a class 1A mechanism at its toggle position, where the
+  // crank spring's moment has no lever along the slider) or changes sign; Xi is then meaningless.
   bool force_vanishes = false;
   double percent_constant_force = 0.0;  // Xi' = 100 Phi_min/Phi_max (eq. 5.22)
   double lambda = 0.0;                  // l_tot/r_tot, length parameter (thesis Table 5.1)

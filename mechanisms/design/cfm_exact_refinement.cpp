@@ -9,8 +9,8 @@
 #include <string>
 #include <utility>
 
-#include "flexure/mechanisms/cfm/cfm_exact.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm_exact.h"
 #include "flexure/mechanisms/design/halton.h"
 #include "flexure/solver/common/errors.h"
 

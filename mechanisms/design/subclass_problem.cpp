@@ -2,8 +2,8 @@
 
 #include <cctype>
 
-#include "flexure/mechanisms/cfm/cfm_comparison.h"
 #include "flexure/mechanisms/cfm/cfm_model.h"
+#include "flexure/mechanisms/cfm_comparison.h"
 
 namespace flexure::design {
 

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <limits>
 
-#include "flexure/mechanisms/cfm/cfm_comparison.h"
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
+#include "flexure/mechanisms/cfm_comparison.h"
 #include "flexure/mechanisms/design/feasibility.h"
 #include "flexure/mechanisms/design/subclass_problem.h"
 #include "flexure/mechanisms/mechanism_prbm.h"

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "flexure/mechanisms/dynamics/cfsm_designs.h"
+#include "flexure/mechanisms/cfsm_designs.h"
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/solver/common/errors.h"
 

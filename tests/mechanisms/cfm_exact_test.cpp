@@ -47,7 +47,7 @@ char pivot(const Case& c, int p) { return c.config[p - 1]; }
 // middle s pivot.
 double link(double r2, double r3, int p) { return p == 1 ? r2 : p == 3 ? r3 : 0.5 * (r2 + r3); }
 
-// The equivalent design sized here, independently of mechanisms/cfm/cfm_exact.cpp: unit widths,
+// The equivalent design sized here, independently of mechanisms/cfm_exact.cpp: unit widths,
 // the reference flexure 0.002 thick (a different choice than the CLI's: forces depend on EI
 // ratios only; 0.02 made the sss ground flexure 0.73 times as thick as long, which the mechanism
 // model now refuses as outside slender-beam theory, docs/mechanisms.md "Geometry limits"), the

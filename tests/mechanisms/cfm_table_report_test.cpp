@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/mechanisms/cfm/cfm_comparison.h"
+#include "flexure/mechanisms/cfm_comparison.h"
 
 namespace flexure::test {
 namespace {

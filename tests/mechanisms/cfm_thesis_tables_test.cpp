@@ -18,9 +18,9 @@
 #include <set>
 #include <string>
 
-#include "flexure/mechanisms/cfm/cfm_comparison.h"
 #include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm_comparison.h"
 #include "flexure/solver/common/errors.h"
 #include "tests/support/cfm_test_support.h"
 

@@ -19,7 +19,7 @@
 #include <numbers>
 
 #include "flexure/mechanisms/cfm/slider_crank.h"
-#include "flexure/mechanisms/dynamics/cfsm_designs.h"
+#include "flexure/mechanisms/cfsm_designs.h"
 #include "flexure/mechanisms/dynamics/inverse_dynamics.h"
 #include "flexure/solver/common/errors.h"
 

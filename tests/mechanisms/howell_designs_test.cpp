@@ -17,9 +17,9 @@
 #include <cmath>
 #include <string>
 
-#include "flexure/mechanisms/cfm/cfm_comparison.h"
 #include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm_comparison.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_prbm.h"

@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "flexure/mechanisms/data_files.h"
+#include "flexure/mechanisms/data/data_files.h"
 #include "flexure/solver/common/csv_table.h"
 #include "flexure/solver/common/errors.h"
 #include "tests/support/data_file_support.h"

@@ -14,8 +14,8 @@
 #include <set>
 #include <string>
 
-#include "flexure/mechanisms/cfm/cfm_comparison.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm_comparison.h"
 #include "flexure/mechanisms/design/feasibility.h"
 #include "flexure/mechanisms/design/mechanism_synthesis.h"
 #include "flexure/mechanisms/mechanism.h"

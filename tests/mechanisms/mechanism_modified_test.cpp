@@ -25,7 +25,7 @@
 #include <nlohmann/json.hpp>
 
 #include "flexure/io/mechanism_toml.h"
-#include "flexure/mechanisms/dynamics/cfsm_designs.h"
+#include "flexure/mechanisms/cfsm_designs.h"
 #include "flexure/mechanisms/dynamics/inverse_dynamics.h"
 #include "flexure/mechanisms/dynamics/slider_crank_dynamics.h"
 #include "flexure/mechanisms/mechanism.h"

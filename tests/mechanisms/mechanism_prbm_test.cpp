@@ -15,10 +15,10 @@
 #include <string>
 
 #include "flexure/io/mechanism_toml.h"
-#include "flexure/mechanisms/cfm/cfm_comparison.h"
 #include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
-#include "flexure/mechanisms/constant_force.h"
+#include "flexure/mechanisms/cfm/constant_force.h"
+#include "flexure/mechanisms/cfm_comparison.h"
 #include "flexure/mechanisms/howell_designs.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/solver/common/errors.h"

@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "flexure/mechanisms/cfm/cfm_exact.h"
 #include "flexure/mechanisms/cfm/cfm_model.h"
+#include "flexure/mechanisms/cfm_exact.h"
 #include "flexure/mechanisms/dynamics/forward_dynamics.h"
 #include "flexure/mechanisms/dynamics/inverse_dynamics.h"
 #include "flexure/mechanisms/mechanism_analysis.h"

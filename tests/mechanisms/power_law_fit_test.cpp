@@ -8,8 +8,8 @@
 #include <cmath>
 #include <string>
 
-#include "flexure/mechanisms/cfm/cfm_comparison.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm_comparison.h"
 
 namespace flexure::cfm {
 namespace {

@@ -1,7 +1,7 @@
 #pragma once
 // Shared by the CFM table tests: how far a computed quantity may move when the printed inputs
 // (R, K1, K2 with 4 decimals) move by half a unit of their last digit. Written independently of
-// mechanisms/cfm/cfm_comparison.cpp so that the tests do not judge the library with its own rule.
+// mechanisms/cfm_comparison.cpp so that the tests do not judge the library with its own rule.
 #include <algorithm>
 #include <cmath>
 #include <functional>

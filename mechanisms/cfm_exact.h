@@ -45,7 +45,7 @@ struct CfmExactResult : SolveStatus {
   std::vector<double> Phi_exact_curve;  // exact F r2/k_ref per point
   double Phi_prbm_mean = 0.0;           // mean of Phi_prbm (equals CfmModel with kUniform)
   // 100 min/max of Phi_prbm and of Phi_exact_curve; 0 where that force vanishes or changes sign
-  // within the stroke (mechanisms/constant_force.h; the exact force of a class 1A mechanism
+  // within the stroke (mechanisms/cfm/constant_force.h; the exact force of a class 1A mechanism
   // clamped at the toggle turns negative before it: -5.33 % for lpp, R = 0.8853).
   double percent_constant_force_prbm = 0.0;
   double Phi_exact = 0.0;  // mean of Phi_exact_curve

@@ -1,11 +1,11 @@
-#include "flexure/mechanisms/cfm/cfm_exact.h"
+#include "flexure/mechanisms/cfm_exact.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "flexure/mechanisms/constant_force.h"
+#include "flexure/mechanisms/cfm/constant_force.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/solver/common/errors.h"
 

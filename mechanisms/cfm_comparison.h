@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "flexure/mechanisms/cfm/cfm_exact.h"
 #include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm_exact.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::cfm {

@@ -1,4 +1,4 @@
-#include "flexure/mechanisms/cfm/cfm_comparison.h"
+#include "flexure/mechanisms/cfm_comparison.h"
 
 #include <fmt/format.h>
 

@@ -1,8 +1,8 @@
-#include "flexure/mechanisms/dynamics/cfsm_designs.h"
+#include "flexure/mechanisms/cfsm_designs.h"
 
 #include <fmt/format.h>
 
-#include "flexure/mechanisms/data_files.h"
+#include "flexure/mechanisms/data/data_files.h"
 #include "flexure/solver/common/csv_table.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"

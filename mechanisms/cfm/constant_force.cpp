@@ -1,4 +1,4 @@
-#include "flexure/mechanisms/constant_force.h"
+#include "flexure/mechanisms/cfm/constant_force.h"
 
 #include <algorithm>
 #include <cmath>
