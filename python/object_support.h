@@ -49,5 +49,7 @@ struct Shape {
 
 // The cheaper models of the ladder (python/ladder_objects.cpp).
 void bind_ladder_objects(pybind11::module_& m);
+// General planar mechanisms (python/mechanism_objects.cpp).
+void bind_mechanism_objects(pybind11::module_& m);
 
 }  // namespace flexure::python

@@ -29,6 +29,13 @@ from ._core import (BeamMethod, BeamProblem, BeamSolution, ChainAlgorithmSolver,
 from ._core import (BcmResult, BcmSolver, CantileverCase, CbcmResult, ChainedBcmSolver,
                     LinearBeamResult, LinearBeamSolver, Prbm3rConstants, Prbm3rResult,
                     Prbm3rSolver)
+# General planar mechanisms (python/mechanism_objects.cpp; docs/mechanisms.md "General
+# mechanisms"): the description, its two models' options and results, the solves.
+from ._core import (FlexureModel, FlexureModelReport, FlexureTipLoad, GeneralEquilibrium,
+                    GeneralExactOptions, GeneralMechanism, GeneralMechanismPoint,
+                    GeneralMechanismResult, GeneralPrbmOptions, InputControl, InputCoordinate,
+                    JointKind, PrbmKind, check_general_mechanism, solve_general_exact,
+                    solve_general_mixed, solve_general_prbm)
 
 __version__ = _core.version
 git_commit = _core.git_commit
@@ -46,7 +53,12 @@ __all__ = ["beam", "path", "sweep", "cfm", "dynamics", "bench", "validate", "rea
            "solve_beam", "solve_physical_chain",
            "BcmResult", "BcmSolver", "CantileverCase", "CbcmResult", "ChainedBcmSolver",
            "LinearBeamResult", "LinearBeamSolver", "Prbm3rConstants", "Prbm3rResult",
-           "Prbm3rSolver"]
+           "Prbm3rSolver",
+           "FlexureModel", "FlexureModelReport", "FlexureTipLoad", "GeneralEquilibrium",
+           "GeneralExactOptions", "GeneralMechanism", "GeneralMechanismPoint",
+           "GeneralMechanismResult", "GeneralPrbmOptions", "InputControl", "InputCoordinate",
+           "JointKind", "PrbmKind", "check_general_mechanism", "solve_general_exact",
+           "solve_general_mixed", "solve_general_prbm"]
 
 
 def _one_value_each(command, options):

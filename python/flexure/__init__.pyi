@@ -271,6 +271,27 @@ Prbm3rConstants: Any
 Prbm3rResult: Any
 Prbm3rSolver: Any
 
+# General planar mechanisms (python/mechanism_objects.cpp; docs/mechanisms.md): build with
+# GeneralMechanism(name).body(...).pin(...).flexure(...).input(...), or GeneralMechanism.from_toml.
+FlexureModel: Any
+FlexureModelReport: Any
+FlexureTipLoad: Any
+GeneralEquilibrium: Any
+GeneralExactOptions: Any
+GeneralMechanism: Any
+GeneralMechanismPoint: Any
+GeneralMechanismResult: Any
+GeneralPrbmOptions: Any
+InputControl: Any
+InputCoordinate: Any
+JointKind: Any
+PrbmKind: Any
+
+def solve_general_prbm(mechanism: Any, options: Any = ...) -> Any: ...
+def solve_general_exact(mechanism: Any, options: Any = ...) -> Any: ...
+def solve_general_mixed(mechanism: Any, options: Any = ...) -> Any: ...
+def check_general_mechanism(mechanism: Any) -> int: ...
+
 def solve_beam(problem: Any, method: Any = ...) -> Any: ...
 def solve_physical_chain(chain: Any, method: Any = ..., tolerance: float = ...,
                          shape_points: int = ...) -> Any: ...

@@ -1,0 +1,116 @@
+"""General planar mechanisms as Python objects (python/mechanism_objects.cpp): the description
+built with the builder's calls gives the numbers of the same description read from TOML and of
+the command line, and the solves meet independent values (Howell Table 11.2; the parallel
+guide's small-displacement stiffness 24 EI/L^3)."""
+import math
+import pathlib
+import warnings
+
+import pytest
+
+import flexure
+
+EXAMPLES = pathlib.Path(__file__).resolve().parents[2] / "docs" / "examples"
+MM = 1e-3
+
+
+def howell_switch():
+    """docs/examples/howell_bistable_switch.toml, built with the builder's calls."""
+    deg = math.pi / 180
+    return (flexure.GeneralMechanism("howell-bistable-switch")
+            .body("ground", {"O2": (0.0, 0.0), "F": (37.754823 * MM, -1.292889 * MM)})
+            .body("crank", {"O2": (0.0, 0.0), "A": (19.999726 * MM, -0.104658 * MM)})
+            .body("coupler", {"A": (19.999726 * MM, -0.104658 * MM),
+                              "B": (26.407468 * MM, 7.572636 * MM)})
+            .body("rocker", {"B": (26.407468 * MM, 7.572636 * MM),
+                             "F": (34.445177 * MM, 1.292889 * MM)})
+            .pin("O2", "ground.O2", "crank.O2")
+            .pin("A", "crank.A", "coupler.A")
+            .pin("B", "coupler.B", "rocker.B")
+            .flexure("pivot4", "ground.F", "rocker.F", width=6.3 * MM, thickness=2.3 * MM,
+                     E=1.4e9, prbm=flexure.PrbmKind.small_length)
+            .input(flexure.InputCoordinate.angle, "crank.O2", "crank.A", start=-5 * deg,
+                   stop=33 * deg, count=77))
+
+
+def quiet(solve, *args):
+    # The switch's pivot is thick for its length (h/l = 0.55): a FlexureWarning says so.
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", flexure.FlexureWarning)
+        return solve(*args)
+
+
+def test_builder_and_toml_give_the_same_switch():
+    built = quiet(flexure.solve_general_prbm, howell_switch())
+    read = quiet(flexure.solve_general_prbm,
+                 flexure.GeneralMechanism.from_toml(str(EXAMPLES / "howell_bistable_switch.toml")))
+    assert built.converged() and read.converged()
+    assert len(built.points) == len(read.points) == 77
+    for a, b in zip(built.input_load, read.input_load):
+        assert a == pytest.approx(b, rel=1e-12, abs=1e-15)
+
+
+def test_switch_equilibria_match_howell_table_11_2():
+    # Howell Table 11.2: stable at theta2 = 0 and 32 deg, unstable at 18.7 deg (printed to 0.1
+    # deg for the unstable one, to the degree for the stable ones).
+    r = quiet(flexure.solve_general_prbm, howell_switch())
+    found = [(math.degrees(e.input), e.stability.kind) for e in r.equilibria]
+    assert len(found) == 3
+    stable = flexure.StabilityKind.stable
+    unstable = flexure.StabilityKind.unstable
+    assert found[0][0] == pytest.approx(0.0, abs=0.5) and found[0][1] == stable
+    assert found[1][0] == pytest.approx(18.7, abs=0.05) and found[1][1] == unstable
+    assert found[2][0] == pytest.approx(32.0, abs=0.5) and found[2][1] == stable
+    # The input load vanishes at each equilibrium and changes sign between them.
+    loads = r.input_load
+    assert min(loads) < 0 < max(loads)
+
+
+def test_switch_objects_agree_with_the_command_line():
+    r = quiet(flexure.solve_general_prbm, howell_switch())
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", flexure.FlexureWarning)
+        cli = flexure.mechanism.analyze(str(EXAMPLES / "howell_bistable_switch.toml"),
+                                        model="prbm")
+    prbm = cli["prbm"] if "prbm" in cli else cli
+    assert len(prbm["input_load"]) == len(r.points)
+    for a, b in zip(r.input_load, prbm["input_load"]):
+        assert a == pytest.approx(b, rel=1e-9, abs=1e-12)
+
+
+def parallel_guide(length, gap, width, thickness, E, stop):
+    return (flexure.GeneralMechanism("parallel-guide")
+            .body("ground", {"L": (0.0, 0.0), "R": (gap, 0.0)})
+            .body("shuttle", {"L": (0.0, length), "R": (gap, length)})
+            .flexure("left", "ground.L", "shuttle.L", width=width, thickness=thickness, E=E,
+                     prbm=flexure.PrbmKind.fixed_guided)
+            .flexure("right", "ground.R", "shuttle.R", width=width, thickness=thickness, E=E,
+                     prbm=flexure.PrbmKind.fixed_guided)
+            .input(flexure.InputCoordinate.x, "shuttle.L", start=0.0, stop=stop, count=5))
+
+
+def test_parallel_guide_exact_stiffness_is_24_EI_over_L_cubed():
+    # Two fixed-guided flexures in parallel, each 12 EI/L^3 for a small sideways motion (Howell
+    # ch. 5); at 1e-3 L the large-deflection correction is of order 1e-6.
+    L, b, h, E = 50 * MM, 10 * MM, 0.5 * MM, 200e9
+    EI = E * b * h**3 / 12
+    r = flexure.solve_general_exact(parallel_guide(L, 20 * MM, b, h, E, 1e-3 * L))
+    assert r.converged()
+    x, F = r.input[-1], r.input_load[-1]
+    assert x == pytest.approx(1e-3 * L, rel=1e-12)
+    assert F / x == pytest.approx(24 * EI / L**3, rel=1e-4)
+
+
+def test_bad_descriptions_raise_invalid_input_naming_the_item():
+    g = (flexure.GeneralMechanism("bad")
+         .body("ground", {"O": (0.0, 0.0)})
+         .body("link", {"O": (0.0, 0.0), "P": (0.0, 0.0), "Q": (0.01, 0.0)})
+         .pin("O", "ground.O", "link.O")
+         .flexure("f", "link.P", "link.Q", width=1e-3, thickness=1e-4, E=2e11)
+         .input(flexure.InputCoordinate.x, "link.Q", start=0.0, stop=1e-3, count=3))
+    with pytest.raises(flexure.InvalidInput, match="'f'"):
+        g.validate()
+    with pytest.raises(flexure.InvalidInput, match="'nobody'"):
+        flexure.GeneralMechanism().body("a", {"P": (0.0, 0.0)}).point("nobody.P")
+    with pytest.raises(flexure.InvalidInput, match="tolerance"):
+        flexure.GeneralPrbmOptions(tolerance=-1.0)
