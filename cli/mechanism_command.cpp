@@ -987,9 +987,7 @@ void register_mechanism_command(CLI::App& app) {
     o.progress = slow_progress(d.name + ": exact model, stroke points and stresses");
     MechanismAnalysis a = analyze_mechanism_with_modulus(d, o);
     report_forces_of(a, force_of);
-    if (a.has_exact && o.exact && !a.exact.converged()) {
-      throw NoConvergence(fmt::format("{}: {}", d.name, a.exact.message));
-    }
+    if (!a.converged()) throw NoConvergence(a.message);
     for (int p : a.yielding_pivots) {
       warn(
           fmt::format("pivot {} of {} yields: max stress {:.4g} Pa >= yield strength "

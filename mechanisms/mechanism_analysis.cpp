@@ -142,6 +142,12 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
     }
   }
   a.safety_factor = d.yield_strength / a.max_stress_all;
+  const bool exact_ran = a.has_exact && options.exact;
+  const SolveStatus& last = exact_ran ? static_cast<const SolveStatus&>(a.exact) : a.prbm;
+  a.termination = last.termination;
+  a.iterations = last.iterations;
+  a.residual = last.residual;
+  if (!a.converged()) a.message = fmt::format("{}: {}", d.name, last.message);
   return a;
 }
 

@@ -22,6 +22,7 @@
 #include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/mechanisms/mechanism_stability.h"
 #include "flexure/mechanisms/prbm_validity.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 
@@ -48,7 +49,12 @@ struct AnalysisOptions {
   void validate() const;
 };
 
-struct MechanismAnalysis {
+// A SolveStatus (solver/common/status.h): converged when the PRBM stroke is (it always is when
+// the analysis returns: a non-finite PRBM force throws NoConvergence) and, where the exact model
+// was asked for and exists, the exact stroke converged; otherwise the exact stroke's termination
+// with the message "<design>: <solver message>". iterations and residual are the exact stroke's
+// (Newton iterations in all, its largest residual), the PRBM's where no exact stroke ran.
+struct MechanismAnalysis : SolveStatus {
   MechanismDesign design;
   PrbmStrokeResult prbm;
   bool has_exact = false;  // the configuration has an exact model (exact_support)

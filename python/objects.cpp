@@ -748,6 +748,7 @@ void bind_objects(py::module_& m) {
   bind_physical(m);
   bind_ladder_objects(m);
   bind_mechanism_objects(m);
+  bind_catalogue_objects(m);
 }
 
 }  // namespace flexure::python

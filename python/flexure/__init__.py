@@ -36,6 +36,9 @@ from ._core import (FlexureModel, FlexureModelReport, FlexureTipLoad, GeneralEqu
                     GeneralMechanismResult, GeneralPrbmOptions, InputControl, InputCoordinate,
                     JointKind, PrbmKind, check_general_mechanism, solve_general_exact,
                     solve_general_mixed, solve_general_prbm)
+# The constant-force slider mechanisms (python/catalogue_objects.cpp; docs/mechanisms.md).
+from ._core import (AnalysisOptions, MechanismAnalysis, MechanismDesign, StrokeStability,
+                    analyze_mechanism)
 
 __version__ = _core.version
 git_commit = _core.git_commit
@@ -58,7 +61,9 @@ __all__ = ["beam", "path", "sweep", "cfm", "dynamics", "bench", "validate", "rea
            "GeneralExactOptions", "GeneralMechanism", "GeneralMechanismPoint",
            "GeneralMechanismResult", "GeneralPrbmOptions", "InputControl", "InputCoordinate",
            "JointKind", "PrbmKind", "check_general_mechanism", "solve_general_exact",
-           "solve_general_mixed", "solve_general_prbm"]
+           "solve_general_mixed", "solve_general_prbm",
+           "AnalysisOptions", "MechanismAnalysis", "MechanismDesign", "StrokeStability",
+           "analyze_mechanism"]
 
 
 def _one_value_each(command, options):
