@@ -22,7 +22,6 @@
 #include "cli/mechanism_geometry_output.h"
 #include "cli/modulus_output.h"
 #include "cli/slow_progress.h"
-#include "flexure/benchmarks/studies/mechanism_method.h"
 #include "flexure/benchmarks/studies/mechanism_tolerance.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/mechanism_stroke_file.h"
@@ -40,6 +39,7 @@
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/mechanism_fatigue.h"
 #include "flexure/mechanisms/mechanism_geometry.h"
+#include "flexure/mechanisms/mechanism_method.h"
 #include "flexure/mechanisms/mechanism_plate.h"
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/mechanisms/modified_springs.h"
@@ -975,7 +975,10 @@ void register_mechanism_command(CLI::App& app) {
     refuse_tol_with_named_method(args->tol_option, args->no_exact ? "prbm" : args->method);
     const MechanismMethodChoice choice = [&] {
       try {
-        return choose_mechanism_method(d, args->no_exact ? "prbm" : args->method, args->tol);
+        return choose_mechanism_method(
+            d,
+            args->no_exact ? MechanismMethod::kPrbm : mechanism_method_from_string(args->method),
+            args->tol);
       } catch (const bench::ToleranceBelowReach& e) {
         refuse_tolerance_below_reach(e, args->tol);
       }
@@ -1029,7 +1032,7 @@ void register_mechanism_command(CLI::App& app) {
     if (args->json) {
       Json j = analysis_json(a);
       add_fatigue_json(j, a, fatigue);
-      j["method"] = choice.method;
+      j["method"] = to_string(choice.method);
       j["method_reason"] = choice.reason;
       j["stable"] = args->stable;
       j["stable_search"] = !stable_search.empty() ? Json(stable_search) : Json(nullptr);
@@ -1042,7 +1045,7 @@ void register_mechanism_command(CLI::App& app) {
                              d.paper_config.empty() ? described_form(d).config
                                                     : d.paper_config + ", solved as " + d.config,
                              d.note);
-    std::cout << fmt::format("  method: {} ({})\n", choice.method, choice.reason);
+    std::cout << fmt::format("  method: {} ({})\n", to_string(choice.method), choice.reason);
     if (args->stable) {
       std::cout << fmt::format(
           "  --stable: {}\n",

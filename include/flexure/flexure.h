@@ -78,6 +78,6 @@
 // choice and the reference problems of `flexure validate`.
 #include "flexure/beam.h"
 #include "flexure/beam/prbm_comparison.h"
-#include "flexure/benchmarks/studies/mechanism_method.h"
+#include "flexure/mechanisms/mechanism_method.h"
 #include "flexure/benchmarks/studies/validation_checks.h"
 #include "flexure/benchmarks/studies/validation_problems.h"

@@ -3,6 +3,7 @@
 // stroke costs microseconds, the exact stroke tens of milliseconds; auto uses the PRBM alone when
 // its measured force error for this configuration, with a safety margin, is within the tolerance.
 #include <string>
+#include <string_view>
 
 #include "flexure/mechanisms/mechanism.h"
 
@@ -26,17 +27,30 @@ inline constexpr double kExactForceErrorBound = 1e-9;
 // Margin applied to the measured error: other dimensions of the same configuration move the error.
 inline constexpr double kPrbmErrorMargin = 1.5;
 
+// The models `mechanism analyze --method` chooses from.
+enum class MechanismMethod { kAuto, kPrbm, kExact };
+// "auto", "prbm", "exact" (the --method names and the JSON key "method").
+std::string_view to_string(MechanismMethod method);
+// The method of that name; throws InvalidInput listing the names.
+MechanismMethod mechanism_method_from_string(std::string_view name);
+
 struct MechanismMethodChoice {
-  bool exact = true;   // run the exact model (the PRBM always runs: it is the cheap part)
-  std::string method;  // "prbm" or "exact"
-  std::string reason;  // why, with the numbers
+  bool exact = true;                                 // run the exact model (the PRBM always runs)
+  MechanismMethod method = MechanismMethod::kExact;  // kPrbm or kExact
+  std::string reason;                                // why, with the numbers
 };
 
-// `method` is "auto", "prbm" or "exact"; `tolerance` the relative force error allowed. With "auto",
-// a tolerance below kExactForceErrorBound (when the PRBM does not meet it either) throws
-// bench::ToleranceBelowReach (method_selector.h): no model meets it.
+// `tolerance` is the relative force error allowed. With kAuto, a tolerance below
+// kExactForceErrorBound (when the PRBM does not meet it either) throws bench::ToleranceBelowReach
+// (method_selector.h): no model meets it.
 MechanismMethodChoice choose_mechanism_method(const MechanismDesign& design,
-                                              const std::string& method,
+                                              MechanismMethod method,
                                               double tolerance);
+// deprecated: use MechanismMethod (the name as `mechanism_method_from_string` reads it).
+inline MechanismMethodChoice choose_mechanism_method(const MechanismDesign& design,
+                                                     const std::string& method,
+                                                     double tolerance) {
+  return choose_mechanism_method(design, mechanism_method_from_string(method), tolerance);
+}
 
 }  // namespace flexure::mechanism

@@ -1,4 +1,4 @@
-#include "flexure/benchmarks/studies/mechanism_method.h"
+#include "flexure/mechanisms/mechanism_method.h"
 
 #include <fmt/format.h>
 
@@ -66,19 +66,37 @@ double measured_prbm_force_error(const MechanismDesign& design) {
   return it->second;
 }
 
+std::string_view to_string(MechanismMethod method) {
+  switch (method) {
+    case MechanismMethod::kAuto:
+      return "auto";
+    case MechanismMethod::kPrbm:
+      return "prbm";
+    case MechanismMethod::kExact:
+      return "exact";
+  }
+  return "exact";
+}
+
+MechanismMethod mechanism_method_from_string(std::string_view name) {
+  for (MechanismMethod m :
+       {MechanismMethod::kAuto, MechanismMethod::kPrbm, MechanismMethod::kExact}) {
+    if (name == to_string(m)) return m;
+  }
+  throw InvalidInput(fmt::format("method '{}' is unknown (allowed: auto, prbm, exact)", name));
+}
+
 MechanismMethodChoice choose_mechanism_method(const MechanismDesign& design,
-                                              const std::string& method,
+                                              MechanismMethod method,
                                               double tolerance) {
   if (!(tolerance > 0.0) || !std::isfinite(tolerance)) {
     throw InvalidInput(fmt::format("the tolerance must be finite and > 0 (got {})", tolerance));
   }
   MechanismMethodChoice c;
-  if (method == "prbm") {
-    c = {false, "prbm", "requested: prbm"};
-  } else if (method == "exact") {
-    c = {true, "exact", "requested: exact"};
-  } else if (method != "auto") {
-    throw InvalidInput(fmt::format("method '{}' is unknown (allowed: auto, prbm, exact)", method));
+  if (method == MechanismMethod::kPrbm) {
+    c = {false, MechanismMethod::kPrbm, "requested: prbm"};
+  } else if (method == MechanismMethod::kExact) {
+    c = {true, MechanismMethod::kExact, "requested: exact"};
   } else {
     // A fixed-fixed pattern outside the paper's eleven has no measured error: exact.
     double measured = INFINITY;
@@ -105,7 +123,7 @@ MechanismMethodChoice choose_mechanism_method(const MechanismDesign& design,
           "exact");
     }
     c = {!prbm_suffices,
-         prbm_suffices ? "prbm" : "exact",
+         prbm_suffices ? MechanismMethod::kPrbm : MechanismMethod::kExact,
          fmt::format("auto: PRBM force error measured {:.3g} for {} designs, x{} margin = {:.3g} "
                      "{} tol {:.3g}",
                      measured,
@@ -118,7 +136,9 @@ MechanismMethodChoice choose_mechanism_method(const MechanismDesign& design,
                      tolerance)};
   }
   if (c.exact && exact_support(design) == ExactSupport::kPrbmOnly) {
-    c = {false, "prbm", c.reason + "; but this design has no exact model, so the PRBM is used"};
+    c = {false,
+         MechanismMethod::kPrbm,
+         c.reason + "; but this design has no exact model, so the PRBM is used"};
   }
   return c;
 }

@@ -2,7 +2,7 @@
 // `flexure mechanism analyze --method auto` against freshly computed PRBM-vs-exact strokes of the
 // built-in designs (the exact model is the independent reference); the choice of auto at loose and
 // tight tolerances; the CLI keys `method` and `method_reason`.
-#include "flexure/benchmarks/studies/mechanism_method.h"
+#include "flexure/mechanisms/mechanism_method.h"
 
 #include <gtest/gtest.h>
 
@@ -29,12 +29,12 @@ TEST(MechanismMethod, MeasuredErrorTableMatchesTheExactModel) {
 
 TEST(MechanismMethod, AutoUsesThePrbmOnlyWhenItsErrorFitsTheTolerance) {
   const MechanismDesign spp = find_builtin_mechanism("1A-spp");  // measured 0.70 %
-  EXPECT_EQ(choose_mechanism_method(spp, "auto", 0.02).method, "prbm");
-  EXPECT_EQ(choose_mechanism_method(spp, "auto", 0.005).method, "exact");
-  EXPECT_EQ(choose_mechanism_method(spp, "auto", 1e-6).method, "exact");
+  EXPECT_EQ(choose_mechanism_method(spp, "auto", 0.02).method, MechanismMethod::kPrbm);
+  EXPECT_EQ(choose_mechanism_method(spp, "auto", 0.005).method, MechanismMethod::kExact);
+  EXPECT_EQ(choose_mechanism_method(spp, "auto", 1e-6).method, MechanismMethod::kExact);
   const MechanismDesign plp = find_builtin_mechanism("1B-plp");  // measured 13.8 %
-  EXPECT_EQ(choose_mechanism_method(plp, "auto", 0.1).method, "exact");
-  EXPECT_EQ(choose_mechanism_method(plp, "prbm", 1e-6).method, "prbm");
+  EXPECT_EQ(choose_mechanism_method(plp, "auto", 0.1).method, MechanismMethod::kExact);
+  EXPECT_EQ(choose_mechanism_method(plp, "prbm", 1e-6).method, MechanismMethod::kPrbm);
   EXPECT_THROW(choose_mechanism_method(plp, "auto", 0.0), InvalidInput);
 }
 
