@@ -524,8 +524,8 @@ def test_general_mechanism_draws_its_bodies_and_flexures_at_their_poses(tmp_path
     # coordinate: an independent value), each flexure's curve ends on its bodies' posed ends and
     # leaves a clamp along the body's rotated rest direction.
     h5 = tmp_path / "stage.h5"
-    p = run(["mechanism", "analyze", os.path.join(ROOT, "docs/examples/double_parallelogram_stage.toml"),
-             "--model", "both", "--out", str(h5)])
+    example = os.path.join(ROOT, "docs/examples/double_parallelogram_stage.toml")
+    p = run(["mechanism", "analyze", example, "--model", "both", "--out", str(h5)])
     assert p.returncode == 0, p.stderr
     dump = tmp_path / "stage.json"
     p = run(["plot", str(h5), "--out", str(tmp_path / "stage.png"), "--dump-json", str(dump)])
