@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -160,6 +161,74 @@ void write_bodies(Hdf5Group& g, const GeneralPrbmResult& r) {
   }
 }
 
+// The described configuration, for drawing the mechanism at any point: every named point of every
+// body (the ground's too), each moving body's pose reference (the centroid of its points, as the
+// assembly's: prbm_assembly.cpp) and each flexure's ends and end conditions. A point q of body B
+// sits at reference + (x, y) + R(phi) (q - reference) at a point whose pose of B is (x, y, phi).
+void write_geometry(Hdf5Group& root, const mechanism::general::GeneralMechanism& m) {
+  Hdf5Group geo = root.create_group("geometry");
+  geo.set_attribute("description",
+                    "the described (as-made) configuration: bodies' named points, pose "
+                    "references and flexure ends; docs/hdf5-schema.md");
+  std::vector<std::string> point_body, point_name, body_name;
+  std::vector<double> px, py, rx, ry;
+  for (const mechanism::general::Body& b : m.bodies) {
+    double cx = 0.0, cy = 0.0;
+    for (const mechanism::general::NamedPoint& q : b.points) {
+      point_body.push_back(b.name);
+      point_name.push_back(q.name);
+      px.push_back(q.position.x);
+      py.push_back(q.position.y);
+      cx += q.position.x;
+      cy += q.position.y;
+    }
+    if (b.name == "ground") continue;
+    const double n = b.points.empty() ? 1.0 : static_cast<double>(b.points.size());
+    body_name.push_back(b.name);
+    rx.push_back(cx / n);
+    ry.push_back(cy / n);
+  }
+  Hdf5Group points = geo.create_group("points");
+  points.write_dataset("body", point_body, "text", "the body of each named point");
+  points.write_dataset("name", point_name, "text", "the point's name");
+  points.write_dataset("x", std::span<const double>(px), "m", "x in the described configuration");
+  points.write_dataset("y", std::span<const double>(py), "m", "y in the described configuration");
+  Hdf5Group bodies = geo.create_group("bodies");
+  bodies.write_dataset("name", body_name, "text", "the described moving bodies");
+  bodies.write_dataset("reference_x",
+                       std::span<const double>(rx),
+                       "m",
+                       "x of the point whose displacement the pose gives (the centroid of the "
+                       "body's points), described configuration");
+  bodies.write_dataset(
+      "reference_y", std::span<const double>(ry), "m", "y of that point, described configuration");
+  std::vector<std::string> f_name, f_a, f_b, f_end;
+  std::vector<double> ax, ay, bx, by, length;
+  for (const mechanism::general::Flexure& f : m.flexures) {
+    const mechanism::general::Vec2 a = m.point(f.a), b = m.point(f.b);
+    f_name.push_back(f.name);
+    f_a.push_back(f.a.body);
+    f_b.push_back(f.b.body);
+    // The far end is a pin for a fixed-pinned flexure in both models (general_exact.h).
+    f_end.emplace_back(f.prbm == mechanism::general::PrbmKind::kFixedPinned ? "pinned" : "clamped");
+    ax.push_back(a.x);
+    ay.push_back(a.y);
+    bx.push_back(b.x);
+    by.push_back(b.y);
+    length.push_back(std::hypot(b.x - a.x, b.y - a.y));
+  }
+  Hdf5Group flexures = geo.create_group("flexures");
+  flexures.write_dataset("name", f_name, "text", "each flexure");
+  flexures.write_dataset("body_a", f_a, "text", "the body its root (end a) is clamped into");
+  flexures.write_dataset("body_b", f_b, "text", "the body of its far end (end b)");
+  flexures.write_dataset("end_b", f_end, "text", "clamped or pinned into body b");
+  flexures.write_dataset("a_x", std::span<const double>(ax), "m", "end a, described");
+  flexures.write_dataset("a_y", std::span<const double>(ay), "m", "end a, described");
+  flexures.write_dataset("b_x", std::span<const double>(bx), "m", "end b, described");
+  flexures.write_dataset("b_y", std::span<const double>(by), "m", "end b, described");
+  flexures.write_dataset("length", std::span<const double>(length), "m", "its length");
+}
+
 void write_flexure_models(Hdf5Group& g,
                           const std::vector<FlexureModelReport>& reports,
                           bool checked) {
@@ -300,6 +369,7 @@ void write_general_mechanism(Hdf5Group& root, const GeneralAnalysisOutput& out) 
                        "first model's");
   }
   write_path(root, first, in, out.results.front().first);
+  write_geometry(root, m);
   Hdf5Group models = root.create_group("models");
   for (const auto& [name, r] : out.results) {
     Hdf5Group g = models.create_group(name);

@@ -305,8 +305,10 @@ def draw_general(f, plt, rec):
     first = attr(f, "first_model", models[0])
     models.sort(key=lambda m: m != first)
     has_energy = any(np.isfinite(f[f"models/{m}/energy"][()]).any() for m in models)
-    panels = 1 + design + has_energy
-    fig, axes = plt.subplots(panels, 1, figsize=(8.5, 2.2 + 3.0 * panels), squeeze=False)
+    has_shapes = "geometry" in f and any("bodies" in f["models"][m] for m in models)
+    panels = 1 + design + has_energy + has_shapes
+    fig, axes = plt.subplots(panels, 1, figsize=(8.5, 2.2 + 3.0 * panels + 2.0 * has_shapes),
+                             squeeze=False)
     axes = list(axes[:, 0])
     ax = axes[0]
     xs, xu = _general_scale(unit(f["input"]))
@@ -385,5 +387,117 @@ def draw_general(f, plt, rec):
         ea.set_ylabel(label("potential energy", "J"))
         ea.grid(True, alpha=0.3)
         legend_beside(ea)
+        row += 1
+    if has_shapes:
+        _draw_general_shapes(axes[row], f, models, rec, xs, xu)
     fig.tight_layout()
     return fig
+
+
+def shape_points(n, count=5):
+    """The point indices whose shapes are drawn: `count` spread evenly over the path."""
+    return sorted(set(int(round(v)) for v in np.linspace(0, n - 1, min(count, n))))
+
+
+def general_geometry(f):
+    """The described configuration of a general mechanism's file (/geometry): for each body its
+    named points (k x 2, in the order drawn: by angle about their centroid, so that the outline
+    does not cross itself), each moving body's pose reference, and the flexures' ends."""
+    g = f["geometry"]
+    text = lambda d: [v.decode() if isinstance(v, bytes) else str(v) for v in d[()]]
+    body_of, xy = text(g["points/body"]), np.column_stack([g["points/x"][()], g["points/y"][()]])
+    bodies = {}
+    for name in dict.fromkeys(body_of):
+        pts = xy[[k for k, b in enumerate(body_of) if b == name]]
+        c = pts.mean(axis=0)
+        bodies[name] = pts[np.argsort(np.arctan2(pts[:, 1] - c[1], pts[:, 0] - c[0]))]
+    refs = {n: np.array([x, y]) for n, x, y in zip(text(g["bodies/name"]),
+                                                   g["bodies/reference_x"][()],
+                                                   g["bodies/reference_y"][()])}
+    fl = g["flexures"]
+    flexures = [dict(name=n, a=a, b=b, end=e, pa=np.array(p), pb=np.array(q), length=l)
+                for n, a, b, e, p, q, l in zip(
+                    text(fl["name"]), text(fl["body_a"]), text(fl["body_b"]), text(fl["end_b"]),
+                    zip(fl["a_x"][()], fl["a_y"][()]), zip(fl["b_x"][()], fl["b_y"][()]),
+                    fl["length"][()])]
+    return bodies, refs, flexures
+
+
+def posed(points, ref, pose):
+    """Points of a body moved by its pose (x, y, phi) about its reference point."""
+    x, y, phi = pose
+    c, s = math.cos(phi), math.sin(phi)
+    d = np.atleast_2d(points) - ref
+    return ref + np.array([x, y]) + np.column_stack([c * d[:, 0] - s * d[:, 1],
+                                                     s * d[:, 0] + c * d[:, 1]])
+
+
+def flexure_curve(pa, pb, ta, tb, length, samples=41):
+    """A flexure drawn between its posed ends: the cubic of linear beam theory (a beam loaded at
+    its ends only bends into a cubic) as a Hermite curve with the end tangents of the bodies it is
+    clamped into (length `length`); a pinned far end takes no moment, so its curvature vanishes
+    there and its tangent follows (P''(1) = 0). Not the elastica's shape: the file holds the bodies'
+    poses, and the flexure's own shape is the model's."""
+    t = np.linspace(0.0, 1.0, samples)[:, None]
+    m0 = length * ta
+    m1 = length * tb if tb is not None else 1.5 * (pb - pa) - 0.5 * m0
+    h00, h10, h01, h11 = 2 * t**3 - 3 * t**2 + 1, t**3 - 2 * t**2 + t, -2 * t**3 + 3 * t**2, \
+        t**3 - t**2
+    return h00 * pa + h10 * m0 + h01 * pb + h11 * m1
+
+
+def _draw_general_shapes(ax, f, models, rec, xs, xu):
+    """The mechanism at a few inputs: every body as the outline through its named points (the
+    ground grey, at rest), every flexure as the curve of flexure_curve; one colour per input, the
+    first model solid, a further model dashed."""
+    bodies, refs, flexures = general_geometry(f)
+    ls_, lu = 1e3, "mm"
+    cmap = __import__("matplotlib").colormaps["viridis"]
+
+    def outline(pts):
+        return np.vstack([pts, pts[:1]]) if len(pts) > 2 else pts
+
+    if "ground" in bodies:
+        g = outline(bodies["ground"])
+        rec.line(ax, g[:, 0], g[:, 1], "s-", color="0.5", lw=2.5, ms=4, x_scale=ls_,
+                 y_scale=ls_, label="ground", panel="shape:ground")
+    for k, m in enumerate(models):
+        gm = f["models"][m]
+        if "bodies" not in gm:
+            continue
+        names = [v.decode() if isinstance(v, bytes) else str(v) for v in gm["bodies/name"][()]]
+        bx, by, bphi = gm["bodies/x"][()], gm["bodies/y"][()], gm["bodies/phi"][()]
+        picks = shape_points(len(bx))
+        for j, i in enumerate(picks):
+            colour = cmap(j / max(1, len(picks) - 1))
+            style = "-" if k == 0 else "--"
+            pose = {n: (bx[i, c], by[i, c], bphi[i, c]) for c, n in enumerate(names)}
+            tag = (f"{m}, input {gm['input'][i] * xs:.4g} {xu}" if k == 0 or j == 0 else None)
+            for name, pts in bodies.items():
+                if name == "ground" or name not in pose:
+                    continue
+                q = outline(posed(pts, refs[name], pose[name]))
+                rec.line(ax, q[:, 0], q[:, 1], "o" + style, color=colour, ms=3, lw=1.5,
+                         x_scale=ls_, y_scale=ls_, label=tag or "_nolegend_",
+                         panel=f"shape:{m}:{i}:body:{name}")
+                tag = None
+            for fx in flexures:
+                ends = []
+                for body, p in ((fx["a"], fx["pa"]), (fx["b"], fx["pb"])):
+                    pz = pose.get(body, (0.0, 0.0, 0.0))
+                    ends.append((posed(p, refs.get(body, p), pz)[0], pz[2]))
+                u = (fx["pb"] - fx["pa"]) / fx["length"]
+                rot = lambda phi: np.array([math.cos(phi) * u[0] - math.sin(phi) * u[1],
+                                            math.sin(phi) * u[0] + math.cos(phi) * u[1]])
+                tb = rot(ends[1][1]) if fx["end"] == "clamped" else None
+                curve = flexure_curve(ends[0][0], ends[1][0], rot(ends[0][1]), tb, fx["length"])
+                rec.line(ax, curve[:, 0], curve[:, 1], style, color=colour, lw=1.0,
+                         x_scale=ls_, y_scale=ls_, label="_nolegend_",
+                         panel=f"shape:{m}:{i}:flexure:{fx['name']}")
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel(label("x", lu))
+    ax.set_ylabel(label("y", lu))
+    ax.set_title("bodies through their named points and flexures (cubic between the bodies' "
+                 "poses) at a few inputs", fontsize=9)
+    ax.grid(True, alpha=0.3)
+    legend_beside(ax)
