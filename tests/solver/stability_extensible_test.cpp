@@ -267,6 +267,7 @@ double hessian_margin(const SegmentChain& chain, const ShootingResult& r, int n)
 struct Deflected {
   EndCondition end;
   double EA, GAs, Fx, Fy, M, qx, qy;
+  double tip_x = std::numeric_limits<double>::quiet_NaN();  // prescribed tip x (NaN: L)
 };
 
 TEST(StabilityExtensible, DeflectedEquilibriaAgainstTheDiscreteHessian) {
@@ -283,6 +284,9 @@ TEST(StabilityExtensible, DeflectedEquilibriaAgainstTheDiscreteHessian) {
       {EndCondition::kSlider, 60.0, 25.0, -4.0, 0.0, 0.5, 0.0, 0.0},
       {EndCondition::kPinned, 100.0, 40.0, 0.0, 0.0, 0.0, 0.0, 6.0},
       {EndCondition::kFixed, 120.0, 50.0, 0.0, 0.0, 0.0, 0.0, 20.0},
+      // Pushed in: compressed and bent (the held x's compliance D enters).
+      {EndCondition::kPinned, 200.0, 80.0, 0.0, 0.0, 1.0, 0.0, 2.0, 0.97},
+      {EndCondition::kFixed, 300.0, 100.0, 0.0, 0.0, 0.0, 0.0, 10.0, 0.99},
   };
   for (const Deflected& c : cases) {
     SegmentChain chain = column_chain(c.EA, c.GAs, c.end);
@@ -291,6 +295,7 @@ TEST(StabilityExtensible, DeflectedEquilibriaAgainstTheDiscreteHessian) {
     auto& f = std::get<FlexibleSegment>(chain.segments[0]);
     f.qx = c.qx;
     f.qy = c.qy;
+    if (!std::isnan(c.tip_x)) chain.prescribed.x = c.tip_x;
     const ShootingSolver solver;
     const ShootingResult r = solver.solve(chain);
     ASSERT_TRUE(r.converged()) << r.message;
