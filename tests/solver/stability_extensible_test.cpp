@@ -124,6 +124,31 @@ TEST(StabilityExtensible, CantileverColumnCriticalLoads) {
   }
 }
 
+// A second, independent location of the critical load: the shooting solver's continuation of the
+// straight column finds the bifurcation where its Jacobian changes sign (continuation.h); there
+// the verdict must be critical, and that load is the closed form's.
+TEST(StabilityExtensible, ShootingBifurcationIsWhereTheVerdictIsCritical) {
+  const double inf = std::numeric_limits<double>::infinity();
+  struct Case {
+    double EA, GAs;
+  };
+  for (const Case c : {Case{500.0, 200.0}, Case{50.0, inf}, Case{inf, 10.0}}) {
+    SegmentChain chain = column_chain(c.EA, c.GAs, EndCondition::kFree);
+    chain.tip_load.Fx = -3.0;
+    const ShootingResult r = ShootingSolver().solve(chain);
+    ASSERT_TRUE(r.converged()) << r.message;
+    const SpecialPoint* bifurcation = nullptr;
+    for (const SpecialPoint& sp : r.special_points) {
+      if (sp.kind == SpecialPointKind::kBifurcation && sp.located) bifurcation = &sp;
+    }
+    ASSERT_NE(bifurcation, nullptr) << r.message;
+    const double P = 3.0 * bifurcation->lambda;
+    EXPECT_NEAR(P, critical_from_PE(kPi * kPi / 4.0, delta_of(c.EA, c.GAs)), 1e-8);
+    const Stability v = straight_verdict(c.EA, c.GAs, EndCondition::kFree, P);
+    EXPECT_EQ(v.kind, StabilityKind::kCritical) << v.message;
+  }
+}
+
 TEST(StabilityExtensible, ClampedClampedSymmetricMode) {
   const double inf = std::numeric_limits<double>::infinity();
   for (double EA : {200.0, 1000.0}) {
@@ -310,6 +335,44 @@ TEST(StabilityExtensible, DeflectedEquilibriaAgainstTheDiscreteHessian) {
     EXPECT_NEAR(v.margin, reference, 2e-5 + 0.1 * std::fabs(m400 - m200))
         << to_string(c.end) << " EA " << c.EA << " GAs " << c.GAs << " Fx " << c.Fx;
     EXPECT_EQ(v.stable(), reference > 1e-4) << to_string(c.end) << " " << v.message;
+  }
+}
+
+// The same beam cut into two segments (0.4 + 0.6, each with the EA, GAs and distributed load) is
+// the same equilibrium: the verdict's node between segments, its per-segment forces and the
+// distributed loads beyond a segment must give the same margin (to its accuracy).
+TEST(StabilityExtensible, ASegmentCutInTwoGivesTheSameVerdict) {
+  const std::vector<Deflected> cases = {
+      {EndCondition::kFree, 50.0, 20.0, -3.0, 0.6, 0.0, 0.0, 0.0},
+      {EndCondition::kFree, 5e3, 30.0, 0.0, 2.0, 0.0, -1.0, 0.0},
+      {EndCondition::kGuided, 100.0, 40.0, -2.0, 3.0, 0.0, 0.0, 0.0},
+      {EndCondition::kPinned, 200.0, 80.0, 0.0, 0.0, 1.0, 0.0, 2.0, 0.97},
+  };
+  for (const Deflected& c : cases) {
+    SegmentChain one = column_chain(c.EA, c.GAs, c.end);
+    const PrescribedMask mask = prescribed_mask(c.end);
+    one.tip_load = TipLoad{mask.x ? 0.0 : c.Fx, mask.y ? 0.0 : c.Fy, mask.theta ? 0.0 : c.M, 0.0};
+    auto& f = std::get<FlexibleSegment>(one.segments[0]);
+    f.qx = c.qx;
+    f.qy = c.qy;
+    if (!std::isnan(c.tip_x)) one.prescribed.x = c.tip_x;
+    SegmentChain two = one;
+    FlexibleSegment a = f, b = f;
+    a.length = 0.4;
+    b.length = 0.6;
+    two.segments = {a, b};
+    const ShootingSolver solver;
+    auto verdict = [&](const SegmentChain& chain) {
+      const ShootingResult r = solver.solve(chain);
+      EXPECT_TRUE(r.converged()) << r.message;
+      const Reaction support = tip_support_reaction(chain, r.tip_load);
+      return equilibrium_stability(chain, support, [&](const std::vector<double>& s) {
+        return shooting_shape_at(chain, r, s, solver.options());
+      });
+    };
+    const Stability v1 = verdict(one), v2 = verdict(two);
+    EXPECT_EQ(v1.kind, v2.kind) << to_string(c.end);
+    EXPECT_NEAR(v1.margin, v2.margin, 1e-8) << to_string(c.end);
   }
 }
 
