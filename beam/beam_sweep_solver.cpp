@@ -41,10 +41,12 @@ bool BeamSweepSolver::warm_candidate() const {
   const BeamProblem& b = grid_.base;
   // Forward shooting problems of the free cantilever with dead loads: the ones whose load path
   // is known from the loads alone (the sweep's own problems).
-  // (A physical sweep's points may be chains, e.g. an axial load alone: each from zero.)
+  // (A physical sweep's points may be chains, e.g. an axial load alone: each from zero.) With
+  // shapes (`--shapes`) the warm-started solve integrates them too (ShootingSolver::Options::
+  // shape_points), as the solve from zero does.
   return method_ == BeamMethod::kShooting && !grid_.physical && !grid_.chain &&
          b.given == BeamProblem::Given::kAlpha2 && !b.chain && b.boundary == EndCondition::kFree &&
-         b.follower == 0.0 && b.shape_points == 0;
+         b.follower == 0.0;
 }
 
 void BeamSweepSolver::remember(Memory& m,
@@ -80,7 +82,7 @@ BeamSolution BeamSweepSolver::solve(long index) const {
 BeamSolution BeamSweepSolver::solve_shooting_point(long index, const BeamProblem& problem) const {
   Memory& m = memory();
   const SegmentChain chain = problem.to_chain(problem.value);
-  const ShootingSolver solver(beam_shooting_options(problem, 0));
+  const ShootingSolver solver(beam_shooting_options(problem, problem.shape_points));
   const std::vector<double> here = grid_.coordinates(index);
   const std::size_t last_axis = here.size() - 1;
   // A neighbour on the same line of the grid (every coordinate but the fastest axis's equal),
@@ -118,7 +120,8 @@ BeamSolution BeamSweepSolver::solve_shooting_point(long index, const BeamProblem
     return guess;
   };
   const auto finish = [&](const ShootingResult& r, std::string branch) {
-    BeamSolution s = beam_solution_from_shooting(problem, problem.value, r, 0, margin_guess());
+    BeamSolution s = beam_solution_from_shooting(
+        problem, problem.value, r, problem.shape_points, margin_guess());
     if (!branch.empty())
       s.branch = std::move(branch) + limit_points_note(s.limit_points, s.first_limit_load_factor);
     s.method_reason = resolve_beam_method(method_, problem).reason;

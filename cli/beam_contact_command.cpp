@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "cli/cli_common.h"
 #include "flexure/io/chain_toml.h"
 #include "flexure/io/contact_hdf5.h"
@@ -70,6 +72,13 @@ Json result_json(const ContactResult& r, bool physical) {
   out["steps"] = r.steps;
   out["shooting_solves"] = r.shooting_solves;
   out["residual"] = r.residual;
+  // The stability keys of `flexure beam` (docs/cli.md): index and margin null unless judged.
+  out["stability"] = std::string(stability_name(r.stability.kind));
+  out["stability_index"] = r.stability.judged() ? Json(r.stability.index) : Json(nullptr);
+  out["stability_margin"] = r.stability.judged() && std::isfinite(r.stability.margin)
+                                ? Json(r.stability.margin)
+                                : Json(nullptr);
+  out["stability_message"] = r.stability.message;
   if (!r.shape.empty()) {
     Json shape = Json::array();
     for (const ShapePoint& p : r.shape) {
@@ -143,6 +152,15 @@ void print_text(const ContactResult& r, bool physical) {
              F,
              r.reaction.M + 0.0,
              M);
+  if (r.stability.judged()) {
+    fmt::print("  stability: {}, index {}, stability margin {:.6g} ({})\n",
+               stability_name(r.stability.kind),
+               r.stability.index,
+               r.stability.margin,
+               r.stability.message);
+  } else {
+    fmt::print("  stability: {} ({})\n", stability_name(r.stability.kind), r.stability.message);
+  }
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "flexure/io/contact_hdf5.h"
 
+#include <limits>
 #include <vector>
 
 #include "flexure/io/hdf5_file.h"
@@ -21,6 +22,15 @@ void write_contact_hdf5(const std::string& path, const ContactResult& r, bool ph
   root.set_attribute("in_contact", static_cast<std::int64_t>(r.in_contact ? 1 : 0));
   root.set_attribute("contact_kind", r.kind);
   root.set_attribute("load_factor", r.load_factor);
+  // The stability verdict (docs/contact.md "Stability"): its name, the count of negative
+  // directions (-1 where not judged) and the margin (NaN where not judged).
+  root.set_attribute("stability", std::string(stability_name(r.stability.kind)));
+  root.set_attribute("stability_index",
+                     static_cast<std::int64_t>(r.stability.judged() ? r.stability.index : -1));
+  root.set_attribute(
+      "stability_margin",
+      r.stability.judged() ? r.stability.margin : std::numeric_limits<double>::quiet_NaN());
+  root.set_attribute("stability_message", r.stability.message);
 
   Hdf5Group contact = root.create_group("contact");
   contact.write_scalar("s_start", r.s_start, length, "arc length where the contact region begins");

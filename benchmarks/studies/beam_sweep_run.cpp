@@ -84,11 +84,11 @@ struct SweepShapes {
     const std::size_t row = static_cast<std::size_t>(index) * points;
     const bool have = solution.converged() && static_cast<int>(solution.shape.size()) == points;
     // N . t, N . n and m from the statics of the part before each point (the clamp's reaction;
-    // docs/units.md "Internal forces"), exact for tip and joint loads. With a distributed load the
-    // moment would need the midpoint rule over the shape's intervals: not stored (NaN).
-    // A chain's solution holds its shape per unit total length (the tips a/l, b/l), its reactions
-    // in the chain's own units: the shape in those units first (a physical beam's chain has
-    // length 1).
+    // docs/units.md "Internal forces"), exact for tip and joint loads; a distributed load by the
+    // midpoint rule over the shape's intervals, as the single solve's shapes
+    // (shape_internal_forces). A chain's solution holds its shape per unit total length (the tips
+    // a/l, b/l), its reactions in the chain's own units: the shape in those units first (a physical
+    // beam's chain has length 1).
     std::vector<ShapePoint> shape = solution.shape;
     const double chain_length = problem.chain ? problem.chain->total_length() : 1.0;
     for (ShapePoint& p : shape) {
@@ -101,7 +101,7 @@ struct SweepShapes {
       if (!problem.chain) {
         f = shape_internal_forces(
             uniform_cantilever(EndLoad{0.0, 0.0, 0.0}), shape, solution.reactions);
-      } else if (!problem.chain->has_distributed_loads() && problem.chain->node_loads.empty()) {
+      } else {
         f = shape_internal_forces(*problem.chain, shape, solution.chain_reactions);
       }
     }
@@ -214,8 +214,8 @@ BeamSweepRun BeamSweepFile::run(const BeamSweepGrid& grid,
   SweepShapes shapes;
   BeamSweepGrid solved_grid = grid;
   if (K > 0) {
-    // The solver returns the shape at K points (and then solves every point from zero load:
-    // BeamSweepSolver's warm start is for sweeps without shapes).
+    // The solver returns the shape at K points (a shooting sweep's points still start from their
+    // neighbours: BeamSweepSolver integrates the shape with the warm-started solve).
     solved_grid.base.shape_points = K;
     shapes.points = K;
     const std::size_t n = static_cast<std::size_t>(out.count) * K;

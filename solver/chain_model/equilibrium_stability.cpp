@@ -56,6 +56,31 @@ std::vector<std::pair<double, double>> segment_forces(const SegmentChain& chain,
   return N;
 }
 
+// The resultant of the dead distributed loads on the segments beyond each segment.
+std::vector<std::pair<double, double>> distributed_beyond(const SegmentChain& chain) {
+  const std::size_t n = chain.segments.size();
+  std::vector<std::pair<double, double>> out(n, {0.0, 0.0});
+  double qx = 0.0, qy = 0.0;
+  for (std::size_t j = n; j-- > 0;) {
+    out[j] = {qx, qy};
+    if (const auto* f = std::get_if<FlexibleSegment>(&chain.segments[j])) {
+      const std::array<double, 2> q = f->q_resultant(f->length);
+      qx += q[0];
+      qy += q[1];
+    }
+  }
+  return out;
+}
+
+// Whether the verdict takes Reissner's terms (docs/extensible.md, "Stability"): a flexible segment
+// with a finite EA or GAs, or a dead distributed load (its internal force varies along s).
+bool needs_reissner_terms(const SegmentChain& chain) {
+  return std::any_of(chain.segments.begin(), chain.segments.end(), [](const Segment& seg) {
+    const auto* f = std::get_if<FlexibleSegment>(&seg);
+    return f != nullptr && f->beyond_elastica();
+  });
+}
+
 // The coordinates the verdict holds: `held` (held_stability.h), else the end condition's.
 using Held = std::optional<PrescribedMask>;
 PrescribedMask held_mask(const SegmentChain& chain, const Held& held) {
@@ -96,6 +121,11 @@ struct SampledChain {
   PrescribedMask mask;  // the tip coordinates held
   const std::vector<ShapePoint>* shape = nullptr;
   std::vector<std::pair<double, double>> N;
+  // The resultant of the dead distributed loads beyond each segment (on segments j+1 .. n-1).
+  std::vector<std::pair<double, double>> distributed_beyond;
+  // Some flexible segment is extensible, shear-flexible or carries a dead distributed load: the
+  // second variation of Reissner's beam on the sampled angles (reissner_terms() below).
+  bool reissner = false;
   std::vector<std::size_t> first, last;  // per segment (unused for zero-length kinks)
   double total = 0.0;
   // Grids available for extrapolation: 1 + the largest L <= 2 such that every flexible segment has
@@ -113,6 +143,8 @@ SampledChain sample_chain(const SegmentChain& chain,
   c.shape = &shape;
   c.N = segment_forces(chain, support);
   c.total = chain.total_length();
+  c.distributed_beyond = distributed_beyond(chain);
+  c.reissner = needs_reissner_terms(chain);
   const double tol = 1e-9 * c.total;
   for (std::size_t i = 0; i < shape.size(); ++i) {
     const ShapePoint& p = shape[i];
@@ -189,7 +221,9 @@ struct Grid {
   DiscreteSecondVariation q;
   std::vector<double> weight;                 // lumped weight of int eta^2 at each dof
   std::vector<std::vector<double>> raw_rows;  // sin(theta) row if x prescribed, cos if y
-  std::vector<double> flexibility;            // G_i: sum of 1 / B_e from the clamp to dof i
+  // The compliance of the raw rows (Reissner's terms; zero otherwise): D00, D01, D11.
+  std::array<double, 3> raw_compliance{0.0, 0.0, 0.0};
+  std::vector<double> flexibility;  // G_i: sum of 1 / B_e from the clamp to dof i
 };
 
 Grid assemble(const SampledChain& c, int stride) {
@@ -213,13 +247,64 @@ Grid assemble(const SampledChain& c, int stride) {
   // (dx, dy), lumped onto dof d.
   auto lump = [&](int d, double h, double tx, double ty, std::size_t segment) {
     if (d < 0) return;
-    const auto [Nx, Ny] = c.N[segment];
+    const double Nx = c.N[segment].first + c.distributed_beyond[segment].first;
+    const double Ny = c.N[segment].second + c.distributed_beyond[segment].second;
     const std::size_t i = static_cast<std::size_t>(d);
     g.q.axial[i] += h * (Nx * tx + Ny * ty);
     g.weight[i] += h;
     std::size_t r = 0;
     if (mask.x) g.raw_rows[r++][i] += h * ty;  // int sin(theta) eta ds
     if (mask.y) g.raw_rows[r++][i] += h * tx;  // int cos(theta) eta ds
+  };
+  // Reissner's beam (docs/extensible.md, "Stability"): the second variation in (u, eta), u the
+  // displacement, minimised over u' pointwise, leaves
+  //     Q[eta] = int EI eta'^2 + (N_a + (N_a^2 - V^2) delta) eta^2 ds + c^T D^{-1} c,
+  //     delta = 1/EA - 1/GAs,  N_a = N . t,  V = N . n  (t = (cos theta, sin theta)),
+  // c = int (a t + b n) eta ds the tip's displacement, a = V delta, b = 1 + N_a delta, and
+  // D = int (t t^T / EA + n n^T / GAs) ds the compliance of the held tip coordinates; delta = 0
+  // (EA = GAs = infinity) is the elastica's Q with its rigid constraints int n eta ds = 0. Each
+  // node of a flexible segment's element gets half the element's length of these (trapezoid, on
+  // the sampled angle theta and the internal force N(s) there).
+  auto lump_reissner = [&](int d,
+                           double h,
+                           std::size_t sample,
+                           const FlexibleSegment& f,
+                           std::size_t segment,
+                           double segment_start) {
+    const ShapePoint& p = shape[sample];
+    const double s_local = p.s - segment_start;
+    const std::array<double, 2> q_before = f.q_resultant(s_local);
+    const std::array<double, 2> q_all = f.q_resultant(f.length);
+    const double Nx =
+        c.N[segment].first + c.distributed_beyond[segment].first + q_all[0] - q_before[0];
+    const double Ny =
+        c.N[segment].second + c.distributed_beyond[segment].second + q_all[1] - q_before[1];
+    const double tx = std::cos(p.theta), ty = std::sin(p.theta);
+    const double Na = Nx * tx + Ny * ty, V = -Nx * ty + Ny * tx;
+    const double inv_EA = 1.0 / f.EA, inv_GAs = 1.0 / f.GAs;
+    const double delta = inv_EA - inv_GAs;
+    // The displacement per unit eta, a t + b n; the rows keep the elastica's sign (sin, cos).
+    const double a = V * delta, b = 1.0 + Na * delta;
+    const double gx = a * tx - b * ty, gy = a * ty + b * tx;
+    std::size_t r = 0;
+    const double dxx = h * (tx * tx * inv_EA + ty * ty * inv_GAs);
+    const double dxy = h * tx * ty * (inv_EA - inv_GAs);
+    const double dyy = h * (ty * ty * inv_EA + tx * tx * inv_GAs);
+    if (mask.x && mask.y) {
+      g.raw_compliance[0] += dxx;
+      g.raw_compliance[1] += -dxy;  // the x row is -c_x
+      g.raw_compliance[2] += dyy;
+    } else if (mask.x) {
+      g.raw_compliance[0] += dxx;
+    } else if (mask.y) {
+      g.raw_compliance[0] += dyy;
+    }
+    if (d < 0) return;
+    const std::size_t i = static_cast<std::size_t>(d);
+    g.q.axial[i] += h * (Na + (Na * Na - V * V) * delta);
+    g.weight[i] += h;
+    if (mask.x) g.raw_rows[r++][i] -= h * gx;
+    if (mask.y) g.raw_rows[r++][i] += h * gy;
   };
   auto chord = [&](std::size_t a, std::size_t b, double h, std::size_t segment) {
     const double dx = shape[b].x - shape[a].x, dy = shape[b].y - shape[a].y;
@@ -249,7 +334,6 @@ Grid assemble(const SampledChain& c, int stride) {
           const double h = shape[b].s - shape[a].s;
           const double EI = EI_integral(*f, shape[a].s - start, shape[b].s - start);
           const double k = EI / (h * h);  // int EI eta'^2 with eta' = (eta_b - eta_a) / h
-          const auto [tx, ty] = chord(a, b, h, j);
           const int near = dof;
           add_dof();
           const std::size_t far = static_cast<std::size_t>(dof);
@@ -259,8 +343,14 @@ Grid assemble(const SampledChain& c, int stride) {
             g.q.bending_diag[static_cast<std::size_t>(near)] += k;
             g.q.bending_off[static_cast<std::size_t>(near)] -= k;
           }
-          lump(near, 0.5 * h, tx, ty, j);
-          lump(dof, 0.5 * h, tx, ty, j);
+          if (c.reissner) {
+            lump_reissner(near, 0.5 * h, a, *f, j, start);
+            lump_reissner(dof, 0.5 * h, b, *f, j, start);
+          } else {
+            const auto [tx, ty] = chord(a, b, h, j);
+            lump(near, 0.5 * h, tx, ty, j);
+            lump(dof, 0.5 * h, tx, ty, j);
+          }
         }
       } else {
         // A rigid link: eta constant along it, the axial term and constraints exact.
@@ -342,10 +432,28 @@ std::vector<double> stations_held(const SegmentChain& chain,
                                   const Held& held) {
   options.validate();
   chain.validate();
-  chain.require_elastica_only("the stability analysis");
   check_support_reaction(chain, support_reaction, held);
   const std::size_t n = chain.segments.size();
-  const auto N = segment_forces(chain, support_reaction);
+  auto N = segment_forces(chain, support_reaction);
+  // Distributed loads: |N| on a segment is at most the node loads' and tip's plus every
+  // distributed load beyond its near end.
+  const auto beyond = distributed_beyond(chain);
+  for (std::size_t j = 0; j < n; ++j) {
+    double qx = beyond[j].first, qy = beyond[j].second, extra = 0.0;
+    if (const auto* f = std::get_if<FlexibleSegment>(&chain.segments[j])) {
+      const std::array<double, 2> q = f->q_resultant(f->length);
+      extra = std::hypot(q[0], q[1]);
+      if (!f->q_profile.empty()) {
+        extra = 0.0;  // a varying profile: the sum of |q| over its stations' intervals
+        for (std::size_t i = 0; i < f->q_profile.size(); ++i) {
+          extra += std::hypot(f->q_profile[i][0], f->q_profile[i][1]) * f->length /
+                   std::max<std::size_t>(1, f->q_profile.size() - 1);
+        }
+      }
+    }
+    N[j].first = std::hypot(N[j].first, N[j].second) + std::hypot(qx, qy) + extra;
+    N[j].second = 0.0;
+  }
   // A bound on |m| over every segment, from the tip towards the root: across a segment |m| grows
   // by at most |N| times its length (|m'| = |t x N| <= |N|); on a uniform straight segment
   // also m^2 / (2 EI) + N . t is constant, so m^2 <= m_far^2 + 4 EI |N| (often far smaller).
@@ -356,7 +464,7 @@ std::vector<double> stations_held(const SegmentChain& chain,
     const double length = segment_length(chain.segments[j]);
     double m_near = m_far + force * length;
     if (const auto* f = std::get_if<FlexibleSegment>(&chain.segments[j])) {
-      if (f->EI_profile.empty() && f->kappa0 == 0.0) {
+      if (f->EI_profile.empty() && f->kappa0 == 0.0 && !f->beyond_elastica()) {
         m_near = std::min(m_near, std::sqrt(m_far * m_far + 4.0 * f->EI * force));
       }
     }
@@ -474,9 +582,63 @@ Grids make_grids(const SegmentChain& chain,
   for (int level = 0; level < sampled.levels; ++level) {
     grids.levels.push_back(assemble(sampled, 1 << level));
   }
-  const auto combinations = independent_row_combinations(
-      grids.levels.front().raw_rows, grids.levels.front().weight, sampled.total);
-  for (Grid& grid : grids.levels) grid.q.constraints = combine_rows(grid.raw_rows, combinations);
+  const Grid& fine = grids.levels.front();
+  const std::array<double, 3>& D = fine.raw_compliance;
+  if (D[0] == 0.0 && D[1] == 0.0 && D[2] == 0.0) {
+    const auto combinations =
+        independent_row_combinations(fine.raw_rows, fine.weight, sampled.total);
+    for (Grid& grid : grids.levels) grid.q.constraints = combine_rows(grid.raw_rows, combinations);
+    return grids;
+  }
+  // Compliant constraints (an extensible or shear-flexible chain): the rows along D's principal
+  // directions. A direction with compliance keeps its row even where the row vanishes (S + D /
+  // sigma is positive there, second_variation.h); one without (D's null direction: a beam rigid
+  // along it) is a rigid constraint, dropped where its row vanishes like the elastica's.
+  std::vector<std::array<double, 2>> combinations;
+  std::vector<double> compliance;
+  if (fine.raw_rows.size() == 1) {
+    combinations.push_back({1.0, 0.0});
+  } else {
+    const double mean = 0.5 * (D[0] + D[2]);
+    const double radius = std::hypot(0.5 * (D[0] - D[2]), D[1]);
+    const double largest = mean + radius;
+    for (const double d : {mean + radius, mean - radius}) {
+      double vx = D[1], vy = d - D[0];
+      if (std::hypot(d - D[2], D[1]) > std::hypot(vx, vy)) {
+        vx = d - D[2];
+        vy = D[1];
+      }
+      const double norm = std::hypot(vx, vy);
+      if (!(norm > 0.0)) {  // D diagonal with this eigenvalue on the axis not yet taken
+        vx = combinations.empty() ? (D[0] >= D[2] ? 1.0 : 0.0) : -combinations[0][1];
+        vy = combinations.empty() ? (D[0] >= D[2] ? 0.0 : 1.0) : combinations[0][0];
+      } else {
+        vx /= norm;
+        vy /= norm;
+      }
+      if (d <= 1e-12 * largest) {
+        // Rigid along this direction: kept where its row constrains (rms above 1e-10).
+        const auto rigid = independent_row_combinations(
+            combine_rows(fine.raw_rows, {{vx, vy}}), fine.weight, sampled.total);
+        if (rigid.empty()) continue;
+      }
+      combinations.push_back({vx, vy});
+    }
+  }
+  for (Grid& grid : grids.levels) {
+    grid.q.constraints = combine_rows(grid.raw_rows, combinations);
+    // D' = K D K^T over the kept combinations K.
+    const std::array<double, 3>& Dg = grid.raw_compliance;
+    auto quad = [&](const std::array<double, 2>& u, const std::array<double, 2>& v) {
+      return u[0] * (Dg[0] * v[0] + Dg[1] * v[1]) + u[1] * (Dg[1] * v[0] + Dg[2] * v[1]);
+    };
+    grid.q.compliance = {0.0, 0.0, 0.0};
+    if (!combinations.empty()) grid.q.compliance[0] = quad(combinations[0], combinations[0]);
+    if (combinations.size() > 1) {
+      grid.q.compliance[1] = quad(combinations[0], combinations[1]);
+      grid.q.compliance[2] = quad(combinations[1], combinations[1]);
+    }
+  }
   return grids;
 }
 
@@ -486,6 +648,11 @@ void require_conservative_and_flexible(const SegmentChain& chain) {
     throw InvalidInput(
         "a follower tip force is not conservative: the second variation of a "
         "potential energy does not describe it");
+  }
+  if (chain.has_follower_pressure()) {
+    throw InvalidInput(
+        "a follower pressure is not conservative: the second variation of a potential energy "
+        "does not describe it");
   }
   if (!has_flexible_segment(chain)) {
     throw InvalidInput("the chain has no flexible segment, so it has no second variation");
@@ -510,6 +677,11 @@ Verdict judge(const SegmentChain& chain,
   if (chain.tip_load.follower != 0.0) {
     v.stability = not_conservative_stability(
         fmt::format("a follower force of {:.6g} acts at the tip", chain.tip_load.follower));
+    return v;
+  }
+  if (chain.has_follower_pressure()) {
+    v.stability = not_conservative_stability(
+        "a follower pressure acts on the beam (it has no potential energy)");
     return v;
   }
   if (!has_flexible_segment(chain)) {
@@ -552,7 +724,6 @@ Stability equilibrium_stability(const SegmentChain& chain,
                                 const StabilityOptions& options) {
   options.validate();
   chain.validate();
-  chain.require_elastica_only("the stability analysis");
   check_support_reaction(chain, support_reaction);
   return judge(chain, support_reaction, shape, options).stability;
 }
@@ -566,7 +737,6 @@ Stability stability_from_shape_function(const SegmentChain& chain,
                                         const Held& held) {
   options.validate();
   chain.validate();
-  chain.require_elastica_only("the stability analysis");
   check_support_reaction(chain, support_reaction, held);
   StabilityOptions o = options;
   for (;;) {
@@ -613,7 +783,6 @@ std::vector<double> second_variation_eigenvalues(const SegmentChain& chain,
                                                  const StabilityOptions& options) {
   options.validate();
   chain.validate();
-  chain.require_elastica_only("the stability analysis");
   check_support_reaction(chain, support_reaction);
   require_conservative_and_flexible(chain);
   if (count < 0) throw InvalidInput(fmt::format("eigenvalue count must be >= 0 (got {})", count));
@@ -628,7 +797,6 @@ DiscreteSecondVariation discrete_second_variation(const SegmentChain& chain,
                                                   const std::vector<ShapePoint>& shape,
                                                   int stride) {
   chain.validate();
-  chain.require_elastica_only("the stability analysis");
   check_support_reaction(chain, support_reaction);
   require_conservative_and_flexible(chain);
   if (stride != 1 && stride != 2 && stride != 4) {

@@ -95,7 +95,13 @@ class InertiaEvaluator {
       x0[i] = x0[i] * inv_d_[i] - l_[i] * x0[i + 1];
       x1[i] = x1[i] * inv_d_[i] - l_[i] * x1[i + 1];
     }
-    double s00 = 0.0, s01 = 0.0, s11 = 0.0, d00 = 0.0, d01 = 0.0, d11 = 0.0;
+    // The compliance of an extensible chain's constraints (second_variation.h): S + D / sigma,
+    // whose sigma-derivative adds -D / sigma^2.
+    const std::array<double, 3>& D = q_.compliance;
+    const double inv_sigma = 1.0 / sigma;
+    double s00 = D[0] * inv_sigma, s01 = D[1] * inv_sigma, s11 = D[2] * inv_sigma;
+    double d00 = -D[0] * inv_sigma * inv_sigma, d01 = -D[1] * inv_sigma * inv_sigma,
+           d11 = -D[2] * inv_sigma * inv_sigma;
     for (std::size_t i = 0; i < n; ++i) {
       s00 += c0[i] * x0[i];
       s01 += c0[i] * x1[i];
@@ -273,6 +279,18 @@ bool solve_bordered(const DiscreteSecondVariation& q,
       if (c == 0.0) continue;
       entries.emplace_back(n + a, i, c);
       entries.emplace_back(i, n + a, c);
+    }
+  }
+  // An extensible chain's compliant constraints (second_variation.h): the axial factor scales the
+  // condensed term C^T D^{-1} C with W, so the border's block is -D / axial_factor.
+  const std::array<double, 3>& D = q.compliance;
+  if (m > 0 && (D[0] != 0.0 || D[1] != 0.0 || D[2] != 0.0)) {
+    if (axial_factor == 0.0) return false;
+    entries.emplace_back(n, n, -D[0] / axial_factor);
+    if (m > 1) {
+      entries.emplace_back(n, n + 1, -D[1] / axial_factor);
+      entries.emplace_back(n + 1, n, -D[1] / axial_factor);
+      entries.emplace_back(n + 1, n + 1, -D[2] / axial_factor);
     }
   }
   Eigen::SparseMatrix<double> K(n + m, n + m);

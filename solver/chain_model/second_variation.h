@@ -38,6 +38,15 @@ struct DiscreteSecondVariation {
   // Rows of C (each of size n, at most 2), linearly independent (dependent or vanishing rows
   // removed).
   std::vector<std::vector<double>> constraints;
+  // The constraints' compliance D (symmetric, over the rows of `constraints`: D00, D01, D11),
+  // zero for an inextensible chain. An extensible or shear-flexible chain (docs/extensible.md,
+  // "Stability") does not hold its tip coordinates rigidly against a bending direction: its
+  // second variation condensed on eta is Q[eta] + (C eta)^T D^{-1} (C eta) (the stretch and
+  // shear that keep the tip in place cost that energy), which the bordered inertia counts with
+  // S = C A^{-1} C^T + D / sigma (the bordered matrix [A C^T; C -D/sigma]; D = 0 is the rigid
+  // constraint C eta = 0). D need not be regular; a direction with D = 0 must have a nonvanishing
+  // row.
+  std::array<double, 3> compliance{0.0, 0.0, 0.0};
   // Gamma >= 0 with lambda_1 >= 1 - Gamma for every constrained eigenvalue (0: no compressed
   // direction, no eigenvalue below 1). From eta_i^2 <= G_i B[eta], G_i the sum of 1/B_e over the
   // elements between the clamp and node i (Cauchy-Schwarz): Gamma = sum_i max(0, -W_ii) G_i.

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <variant>
 
+#include "flexure/solver/chain_model/held_stability.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/scalar_root.h"
 #include "flexure/solver/shooting/shooting_shape.h"
@@ -105,6 +106,8 @@ class ContactRun {
   ContactMode landing_mode(double lambda);
 
   void fill(double lambda, bool contact, double variable, ContactResult& out);
+  // The stability verdict of the state at full load (ContactResult::stability).
+  Stability verdict(bool contact, double variable);
 
   const SegmentChain& full_;
   RigidSurface surface_;
@@ -692,6 +695,84 @@ void ContactRun::fill(double lambda, bool contact, double variable, ContactResul
   }
 }
 
+// The verdict (docs/contact.md, "Stability"). Frictionless contact with a positive contact force
+// restricts the admissible variations to those that keep the contact (a variation that lifts
+// the beam off against a positive pressure raises the energy at first order, so only the
+// variations tangent to the surface there are left to the second variation): the wrap's pressure
+// T/R and point force P_c are positive (fill() refuses them negative), so the wrap stays on the
+// circle and the free span is a cantilever clamped at s_c with its own loads; the tip on a stop
+// keeps its normal coordinate, a constraint normal . delta r(L) = 0 with the reaction R_n as its
+// multiplier (held_stability.h, in a frame turned so that the normal is +y).
+Stability ContactRun::verdict(bool contact, double variable) {
+  const SegmentChain chain = chain_at(1.0);
+  const StabilityOptions& so = options_.stability;
+  auto shape_of = [&](const SegmentChain& c, const ShootingResult& r) {
+    return ShapeAtStations([&c, r, this](const std::vector<double>& s) {
+      return shooting_shape_at(c, r, s, plain_options_);
+    });
+  };
+  if (!contact) {
+    const ShootingResult r = shoot(chain, false);
+    return equilibrium_stability(chain, Reaction{}, shape_of(chain, r), so);
+  }
+  switch (mode_) {
+    case ContactMode::kWrap: {
+      const SegmentChain span = span_chain(chain, variable);
+      const ShootingResult r = shoot(span, false);
+      Stability v = equilibrium_stability(span, Reaction{}, shape_of(span, r), so);
+      if (v.judged()) {
+        v.message = fmt::format(
+            "{} (the free span, clamped at the separation point s = {:.9g}: the wrap is pressed "
+            "onto the circle)",
+            v.message,
+            variable);
+      }
+      return v;
+    }
+    case ContactMode::kTip: {
+      const SegmentChain loaded = with_reaction(chain, variable);
+      const ShootingResult r = shoot(loaded, false);
+      // The frame turned by -psi, the stop's normal along +y there: a zero-length rigid kink at
+      // the root turns the clamp, the loads turn with it (node k becomes k + 1).
+      const double psi = std::atan2(normal_.y(), normal_.x()) - 0.5 * std::acos(-1.0);
+      SegmentChain turned = chain;
+      turned.segments.insert(turned.segments.begin(), RigidSegment{0.0, -psi});
+      const V2 tip = rotate(-psi, V2(chain.tip_load.Fx, chain.tip_load.Fy));
+      turned.tip_load.Fx = tip.x();
+      turned.tip_load.Fy = tip.y();
+      for (NodeLoad& load : turned.node_loads) {
+        const V2 f = rotate(-psi, V2(load.Fx, load.Fy));
+        load.Fx = f.x();
+        load.Fy = f.y();
+        ++load.node;
+      }
+      const ShapeAtStations shape = [&](const std::vector<double>& s) {
+        std::vector<ShapePoint> out = shooting_shape_at(loaded, r, s, plain_options_);
+        for (ShapePoint& p : out) {
+          const V2 q = rotate(-psi, V2(p.x, p.y));
+          p = ShapePoint{p.s, q.x(), q.y(), p.theta - psi};
+        }
+        return out;
+      };
+      PrescribedMask held;
+      held.y = true;
+      Stability v =
+          equilibrium_stability_held(turned, Reaction{0.0, variable, 0.0}, shape, held, so);
+      if (v.judged()) {
+        v.message =
+            fmt::format("{} (the tip held on the stop along its normal by the reaction {:.6g})",
+                        v.message,
+                        variable);
+      }
+      return v;
+    }
+    default:
+      return not_checked_stability(
+          "the verdict of an interior point contact is not implemented (the contact point rolls "
+          "along the beam and the surface's curvature enters the second variation)");
+  }
+}
+
 ContactResult ContactRun::run() {
   ContactResult out;
   out.surface = surface_.type;
@@ -786,6 +867,17 @@ ContactResult ContactRun::run() {
       out.load_factor = lambda;
     }
     fill(1.0, contact, variable, out);
+    if (options_.judge_stability) {
+      try {
+        out.stability = verdict(contact, variable);
+      } catch (const InvalidInput& e) {
+        out.stability = not_checked_stability(e.what());
+      } catch (const NoConvergence& e) {
+        out.stability = not_checked_stability(e.what());
+      }
+    } else {
+      out.stability = not_checked_stability("the verdict was switched off");
+    }
     out.kind = !contact                      ? "none"
                : mode_ == ContactMode::kWrap ? "wrap"
                : mode_ == ContactMode::kTip  ? "tip"

@@ -36,8 +36,10 @@
 #include <string>
 #include <vector>
 
+#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
+#include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
@@ -103,6 +105,13 @@ struct ContactResult : SolveStatus {
   std::vector<ContactPathPoint> path;  // one point per continuation step (and per event)
   int steps = 0;
   long shooting_solves = 0;
+  // The stability verdict of the returned equilibrium (docs/contact.md, "Stability"): the second
+  // variation on the variations the contact admits. A contact with positive pressure holds the
+  // beam to the surface there (bilateral to second order): the wrap is held to the circle, so the
+  // free span is judged as a cantilever clamped at the separation point; a tip on a stop has its
+  // normal coordinate held. Without contact, the free beam's verdict. An interior point contact
+  // is not judged (not_checked, the message says why); nor is an unconverged result.
+  Stability stability;
 };
 
 class RigidContactSolver {
@@ -115,6 +124,8 @@ class RigidContactSolver {
     double gap_tolerance = 1e-9;       // penetration accepted in the free part (in lengths)
     int gap_samples = 401;             // shape samples for the penetration check
     int shape_points = 0;              // > 1: return the shape at this many points
+    bool judge_stability = true;       // ContactResult::stability (false: not_checked)
+    StabilityOptions stability;        // its accuracy (equilibrium_stability.h)
     // Throws InvalidInput naming the first field outside its range.
     void validate() const;
   };

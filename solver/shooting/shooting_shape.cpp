@@ -79,6 +79,8 @@ Stability path_point_stability(const SegmentChain& chain,
     load.Fy *= factor;
     load.M *= factor;
   }
+  // The distributed loads at the point's load factor too (SegmentChain::at_load_factor).
+  free.segments = chain.at_load_factor(factor).segments;
   ShootingSolver::Options o = options;
   o.shape_points = 0;
   o.count_inflections = false;

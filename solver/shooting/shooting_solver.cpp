@@ -489,6 +489,24 @@ void ShootingSolver::go_on_past_folds(const SegmentChain& chain,
           where);
       return;
     }
+    if (fold == nullptr) {
+      // The path stopped short of the rejoining bifurcation and goes on from the equilibrium just
+      // beyond it: the bifurcation lies between the stop (lambda at.lambda) and that equilibrium
+      // (lambda_new below), within 1e-3 of the travel. Stored as an unlocated bifurcation at the
+      // stop (SpecialPoint::located false: lambda is the nearer end), where the path switched.
+      SpecialPoint rejoin;
+      rejoin.kind = SpecialPointKind::kBifurcation;
+      rejoin.lambda = at.lambda;
+      rejoin.tip = at.tip;
+      rejoin.reaction = moved.points[at.index].reaction;
+      rejoin.tip_load = moved.points[at.index].tip_load;
+      rejoin.index = at.index;
+      rejoin.stage = moved.points[at.index].stage;
+      rejoin.branch = moved.points[at.index].branch;
+      rejoin.located = false;
+      rejoin.z = at.z;
+      moved.special_points.push_back(std::move(rejoin));
+    }
     // Drop what follows the fold.
     const int keep = at.index + 1;
     moved.points.resize(keep);

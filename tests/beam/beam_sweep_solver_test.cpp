@@ -186,5 +186,63 @@ TEST(BeamSweepSolver, DeadTipForceAnswersPassNoLimitPointAndHaveNoInflection) {
   }
 }
 
+// Issue 29 item 4: a sweep with shapes (`sweep beam --shapes K`) starts its points from their
+// neighbours too, and its tips and shapes are those of the cold solve with the same shape points
+// (1e-9; every point of the shape, not only the tip). Outward and inward along alpha2 with n and
+// mu (a path with limit points for the compressive n), and along n.
+TEST(BeamSweepSolver, SweepsWithShapesStartFromNeighboursWithTheColdShapes) {
+  struct Line {
+    SweepParameter p;
+    double start, stop, n, alpha2, mu;
+  };
+  for (const Line& l : {Line{SweepParameter::kAlpha2, 0.5, 10.0, 0.0, 1.0, 0.0},
+                        Line{SweepParameter::kAlpha2, 10.0, 0.5, -0.5, 1.0, 0.3},
+                        Line{SweepParameter::kLoadRatioN, -2.0, 6.0, 0.0, 3.0, 0.0}}) {
+    BeamSweepGrid grid = one_axis(l.p, l.start, l.stop, 40, l.n, l.alpha2, l.mu);
+    grid.base.shape_points = 21;
+    const BeamSweepSolver sweep(grid, BeamMethod::kShooting);
+    std::vector<TipPose> tips(static_cast<std::size_t>(grid.size()));
+    for (long i = 0; i < grid.size(); ++i) {
+      const BeamProblem p = grid.at(i);
+      const BeamSolution warm = sweep.solve(i);
+      tips[static_cast<std::size_t>(i)] = warm.tip;
+      const BeamSolution cold = solve_beam(BeamMethod::kShooting, p);
+      ASSERT_EQ(warm.converged(), cold.converged()) << warm.message << " / " << cold.message;
+      if (!cold.converged()) continue;
+      EXPECT_NEAR(warm.tip.a_over_l, cold.tip.a_over_l, 1e-9) << "point " << i;
+      EXPECT_NEAR(warm.tip.b_over_l, cold.tip.b_over_l, 1e-9) << "point " << i;
+      EXPECT_NEAR(warm.tip.theta0, cold.tip.theta0, 1e-9) << "point " << i;
+      ASSERT_EQ(warm.shape.size(), 21u);
+      ASSERT_EQ(cold.shape.size(), 21u);
+      for (std::size_t k = 0; k < 21; ++k) {
+        EXPECT_EQ(warm.shape[k].s, cold.shape[k].s);
+        EXPECT_NEAR(warm.shape[k].x, cold.shape[k].x, 1e-9) << "point " << i << " shape " << k;
+        EXPECT_NEAR(warm.shape[k].y, cold.shape[k].y, 1e-9) << "point " << i << " shape " << k;
+        EXPECT_NEAR(warm.shape[k].theta, cold.shape[k].theta, 1e-9);
+      }
+      // The shape's last point is the solver's tip.
+      EXPECT_NEAR(warm.shape.back().x, warm.tip.a_over_l, 1e-12);
+      EXPECT_NEAR(warm.shape.back().y, warm.tip.b_over_l, 1e-12);
+    }
+    const BeamSweepSolver::Counts c = sweep.counts();
+    // Warm-started exactly as the same sweep without shapes (the plain sweep's own fallbacks:
+    // inward and along n most points are solved from zero there too), and outward along alpha2
+    // nearly every point.
+    BeamSweepGrid plain_grid = grid;
+    plain_grid.base.shape_points = 0;
+    const BeamSweepSolver plain(plain_grid, BeamMethod::kShooting);
+    for (long i = 0; i < grid.size(); ++i) {
+      // The tips unchanged by the shapes.
+      const BeamSolution p = plain.solve(i);
+      EXPECT_NEAR(p.tip.a_over_l, tips[i].a_over_l, 1e-12) << "point " << i;
+      EXPECT_NEAR(p.tip.b_over_l, tips[i].b_over_l, 1e-12) << "point " << i;
+      EXPECT_NEAR(p.tip.theta0, tips[i].theta0, 1e-12) << "point " << i;
+    }
+    const BeamSweepSolver::Counts cp = plain.counts();
+    EXPECT_EQ(c.from_neighbour, cp.from_neighbour) << "from zero " << c.from_zero;
+    if (l.p == SweepParameter::kAlpha2 && l.start < l.stop) EXPECT_GE(c.from_neighbour, 35);
+  }
+}
+
 }  // namespace
 }  // namespace flexure

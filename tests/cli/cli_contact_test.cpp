@@ -60,6 +60,12 @@ TEST(CliContact, FlexureOnACylinderMeetsTheCurvatureConditionAndBalances) {
   EXPECT_EQ(j["events"][0]["kind"], "landing");
   EXPECT_EQ(j["shape"].size(), 51u);
   EXPECT_EQ(j["path"].size(), 21u);  // steps = 20 in the file, and lambda = 0
+  // The verdict (docs/contact.md "Stability"): the free span clamped at s_c, pulled by a tip
+  // force that it turns toward, is nowhere compressed: stable with margin 1 (the energy check of
+  // contact verdicts is tests/solver/contact_stability_test.cpp).
+  EXPECT_EQ(j["stability"], "stable");
+  EXPECT_EQ(j["stability_index"], 0);
+  EXPECT_NEAR(j["stability_margin"].get<double>(), 1.0, 1e-9);
   // The HDF5 file: the same numbers.
   const hid_t f = test::open_read_only(h5);
   ASSERT_GE(f, 0);
@@ -70,6 +76,7 @@ TEST(CliContact, FlexureOnACylinderMeetsTheCurvatureConditionAndBalances) {
   EXPECT_EQ(test::read_doubles(f, "/shape/x").size(), 51u);
   EXPECT_EQ(test::read_ints(f, "/path/in_contact").size(), 21u);
   EXPECT_EQ(test::read_string_attribute(f, "/", "surface"), "circle");
+  EXPECT_EQ(test::read_string_attribute(f, "/", "stability"), "stable");
   H5Fclose(f);
 }
 
@@ -100,6 +107,11 @@ TEST(CliContact, APinTouchedAtOnePoint) {
   const Json j = run_json("beam --chain " + file);
   ASSERT_FALSE(j.empty());
   EXPECT_EQ(j["contact_kind"], "point");
+  // An interior point contact is not judged: not_checked, saying why.
+  EXPECT_EQ(j["stability"], "not_checked");
+  EXPECT_TRUE(j["stability_index"].is_null());
+  EXPECT_NE(j["stability_message"].get<std::string>().find("interior point contact"),
+            std::string::npos);
   const Json& p = j["contact"]["separation_points"][0];
   const double x = p["x"], y = p["y"], theta = p["theta"];
   EXPECT_NEAR(std::hypot(x - 0.5, y + 0.15), 0.1, 1e-12);

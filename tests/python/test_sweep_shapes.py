@@ -121,13 +121,46 @@ def test_chain_file_sweep_shapes_in_the_files_units(cli, tmp_path):
         m_clamp = xt * Fy - yt * -2.5
         assert np.abs(sh["moment"][:, 0] - m_clamp).max() <= 1e-9 * np.abs(m_clamp).max()
         assert np.abs(sh["moment"][:, -1]).max() <= 1e-9 * np.abs(m_clamp).max()
-    # A distributed load (self-weight): the internal forces are not stored (NaN), the shape is.
+    # A distributed load (self-weight, q L^3/EI = 2.31: large deflection): the internal forces
+    # integrated from the clamp's reaction (midpoint rule over the shape's intervals) must close at
+    # the free tip: m = 0 there and V = the tip force on the tip normal (1e-3 of the largest m, V
+    # on 41 points: the rule's O(h^2)).
     out = tmp_path / "weight.h5"
     weight = os.path.join(here, "..", "..", "docs", "examples", "self_weight_cantilever.toml")
-    cli.json("sweep", "beam", "--chain", weight, "--Fy", "0N:0.2N:3", "--shapes", 5, "--out", out)
+    cli.json("sweep", "beam", "--chain", weight, "--Fy", "0N:0.2N:3", "--shapes", 41, "--out", out)
     with h5py.File(out, "r") as f:
-        assert np.isnan(f["shapes/moment"][()]).all()
+        sh = f["shapes"]
+        m, V, t = sh["moment"][()], sh["shear_force"][()], sh["theta"][()]
+        assert np.isfinite(m).all() and np.isfinite(V).all()
+        assert np.abs(m[:, -1]).max() <= 1e-3 * np.abs(m).max()
+        Fy = f["axes/Fy"][()]
+        assert np.abs(V[:, -1] - Fy * np.cos(t[:, -1])).max() <= 1e-3 * np.abs(V).max()
         assert np.abs(f["shapes/x"][:, -1] - f["a_over_l"][()] * f.attrs["length"]).max() <= 1e-9
+
+
+def test_sweep_shapes_of_a_uniformly_loaded_cantilever(cli, tmp_path):
+    # L = 1, EI = 1, q = 1e-3 along y, a tip force Fy from 0 to 1e-3: linear theory's
+    # V(s) = Fy + q (L - s), m(s) = Fy (L - s) + q (L - s)^2 / 2 (1e-5 of the largest values: the
+    # nonlinear remainder is O(theta^2) ~ 1e-7 and the rule's error smaller).
+    toml = tmp_path / "q.toml"
+    toml.write_text('[[segment]]\ntype = "flexible"\nlength = 1.0\nEI = 1.0\n'
+                    'q = [0.0, 1e-3]\n')
+    out = tmp_path / "q.h5"
+    q, K = 1e-3, 41
+    cli.json("sweep", "beam", "--chain", toml, "--Fy", "0:1e-3:3", "--shapes", K, "--out", out)
+    with h5py.File(out, "r") as f:
+        sh = f["shapes"]
+        s = sh["s"][()]
+        Fy = f["axes/Fy"][()][:, None]
+        m_lin = Fy * (1 - s) + q * (1 - s) ** 2 / 2
+        V_lin = Fy + q * (1 - s)
+        scale = np.abs(m_lin).max()
+        assert np.abs(sh["moment"][()] - m_lin).max() <= 1e-5 * scale
+        assert np.abs(sh["shear_force"][()] - V_lin).max() <= 1e-5 * np.abs(V_lin).max()
+        # N = (0, Fy + q (L - s)) exactly (a dead load per undeformed length), so N . t is
+        # (Fy + q (L - s)) sin(theta), about 7e-7 here.
+        N_t = V_lin * np.sin(sh["theta"][()])
+        assert np.abs(sh["axial_force"][()] - N_t).max() <= 1e-12 * np.abs(V_lin).max()
 
 
 def test_python_sweep_takes_shapes(tmp_path):
