@@ -114,9 +114,13 @@ inline double moment_second_derivative(const ElasticaPieceData& piece,
                                        double s,
                                        const double* y,
                                        const double* f) {
+  // On the elastica x' = cos theta and y' = sin theta: the derivative f holds the tangent, no
+  // sine and cosine needed (two per accepted step of a sweep's inflection count).
+  if (!piece.extended) {
+    return (piece.Nx * f[kElasticaX] + piece.Ny * f[kElasticaY]) * f[kElasticaTheta];
+  }
   const double th = y[kElasticaTheta];
   const double c = std::cos(th), sn = std::sin(th);
-  if (!piece.extended) return (piece.Nx * c + piece.Ny * sn) * f[kElasticaTheta];
   const FlexibleSegment& seg = *piece.segment;
   const double lf = piece.load_factor;
   const Eigen::Vector2d N = reissner_force(piece, s, y);
