@@ -8,8 +8,10 @@
 #include <optional>
 #include <sstream>
 
+#include "flexure/mechanisms/general/exact_stability.h"
 #include "flexure/mechanisms/general/flexure_models.h"
 #include "flexure/mechanisms/general/prbm_assembly.h"
+#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/shooting/elastica_integrator.h"
 
@@ -24,6 +26,9 @@ using Eigen::VectorXd;
 constexpr int kEnergySamples = 257;
 // Forward-difference step of the Jacobian, scaled coordinates (lengths / size, rad).
 constexpr double kJacobianStep = 1e-7;
+// Central-difference step of the linearised Jacobian (the flexures' tips linear in their loads,
+// from the integrator's sensitivities: no integration noise; error about h^2 = 1e-12).
+constexpr double kLinearisedStep = 1e-6;
 
 std::string fmt(double v) {
   std::ostringstream out;
@@ -40,6 +45,7 @@ struct FlexureBeam {
   double length = 0.0;     // scaled
   double EI = 0.0;         // scaled
   double direction = 0.0;  // rest angle of the flexure from a to b, rad
+  double thickness = 0.0;  // scaled, for the reference axial stiffness EA/l of the verdict
   bool pinned_tip = false;
   // kExact: an elastica with unknowns w = its root loads (m0, Nx, Ny). Any other model (mixed):
   // a cantilever under its tip loads, unknowns w = (M_tip, Nx, Ny) (flexure_models.h).
@@ -50,6 +56,23 @@ struct FlexureBeam {
 // The tip state of a beam integrated from its root loads: x, y, theta, m in the root frame.
 struct BeamTip {
   double x = 0.0, y = 0.0, theta = 0.0, m = 0.0;
+};
+
+// An exact flexure's tip linearised in its root loads at w0 (the integrator's sensitivities).
+struct TipLinearisation {
+  Eigen::Vector3d w0;
+  Eigen::Vector4d tip0;
+  Eigen::Matrix<double, 4, 3> S;
+  BeamTip at(const Eigen::Vector3d& w) const {
+    const Eigen::Vector4d t = tip0 + S * (w - w0);
+    return {t[0], t[1], t[2], t[3]};
+  }
+};
+
+// The verdicts of one equilibrium (exact_stability.h).
+struct PointVerdicts {
+  Stability displacement_control;
+  Stability force_control;
 };
 
 // Mixed formulation: the unknowns are the bodies' coordinates q, the joints' multipliers mu, the
@@ -69,7 +92,9 @@ class ExactSystem {
         N_(a.coordinate_count()),
         m_(a.constraint_count()),
         integrator_(ElasticaIntegrator::Options{}),
-        report_integrator_(ElasticaIntegrator::Options{}) {
+        report_integrator_(ElasticaIntegrator::Options{}),
+        sensitivity_integrator_(ElasticaIntegrator::Options{}),
+        shape_integrator_(ElasticaIntegrator::Options{}) {
     const double L = a.length_scale();
     for (const Flexure& f : m.flexures) {
       FlexureBeam b;
@@ -79,6 +104,7 @@ class ExactSystem {
       b.length = std::hypot(pb.x - pa.x, pb.y - pa.y) / L;
       b.EI = f.flexural_rigidity() / (a.energy_scale() * L);
       b.direction = std::atan2(pb.y - pa.y, pb.x - pa.x);
+      b.thickness = f.thickness / L;
       b.pinned_tip = f.prbm == PrbmKind::kFixedPinned;
       b.chain.segments.push_back(FlexibleSegment{b.length, b.EI, {}, 0.0});
       if (!models.empty()) {
@@ -184,6 +210,8 @@ class ExactSystem {
         }
         // m(s) = m0 + Nx y(s) - Ny x(s): the root moment of the tip loads.
         m0 = w[0] - w[1] * tip.y + w[2] * tip.x;
+      } else if (!linear_.empty()) {
+        tip = linear_[i].at(w);
       } else if (!integrate(b, w, tip)) {
         return false;
       }
@@ -284,6 +312,200 @@ class ExactSystem {
     return U;
   }
 
+  // Linearises every exact flexure's tip in its root loads at z (sensitivity integration).
+  bool linearise(const VectorXd& z) {
+    linear_.clear();
+    std::vector<TipLinearisation> lin(beams_.size());
+    for (std::size_t i = 0; i < beams_.size(); ++i) {
+      const FlexureBeam& b = beams_[i];
+      if (b.model != FlexureModel::kExact) continue;
+      const Eigen::Vector3d w = z.segment<3>(flexure_offset() + 3 * static_cast<int>(i));
+      ChainForces forces;
+      forces.m0 = w[0];
+      forces.N = {Eigen::Vector2d(w[1], w[2])};
+      forces.moment_drop = {0.0, 0.0};
+      // Parameters m0, Nx, Ny: m0 enters the start state, N the segment's force.
+      std::vector<ForceDerivative> d(3);
+      d[0].dN = {Eigen::Vector2d(0.0, 0.0)};
+      d[1].dN = {Eigen::Vector2d(1.0, 0.0)};
+      d[2].dN = {Eigen::Vector2d(0.0, 1.0)};
+      Eigen::Matrix<double, 4, Eigen::Dynamic> start = Eigen::Matrix<double, 4, 3>::Zero();
+      start(3, 0) = 1.0;
+      const std::vector<IntegrationPiece> pieces{IntegrationPiece{0, 0.0, b.length, 0.0, false}};
+      TipState end;
+      std::string error;
+      if (!sensitivity_integrator_.integrate(
+              b.chain, pieces, forces, d, Eigen::Vector4d(0, 0, 0, w[0]), start, end, error)) {
+        return false;
+      }
+      lin[i].w0 = w;
+      lin[i].tip0 = Eigen::Vector4d(end.x, end.y, end.theta, end.m);
+      lin[i].S = end.sensitivity.leftCols(3);
+    }
+    linear_ = std::move(lin);
+    return true;
+  }
+
+  // The Jacobian of the residual in z at (z, s), and its column in s (-e at the input's row):
+  // central differences with every exact flexure's tip linearised in its loads.
+  bool linearised_jacobian(const VectorXd& z, double s, MatrixXd& J) {
+    if (!linearise(z)) {
+      return false;
+    }
+    J.resize(size(), size());
+    bool ok = true;
+    for (int j = 0; j < size() && ok; ++j) {
+      const double h = kLinearisedStep * std::max(1.0, std::fabs(z[j]));
+      VectorXd zp = z, zm = z;
+      zp[j] += h;
+      zm[j] -= h;
+      VectorXd Fp, Fm;
+      ok = residual(zp, s, Fp) && residual(zm, s, Fm);
+      if (ok) J.col(j) = (Fp - Fm) / (2.0 * h);
+    }
+    linear_.clear();
+    return ok;
+  }
+
+  // Flexure i's shape at the arc lengths `stations` (scaled) from its root loads w.
+  std::vector<ShapePoint> shape_at(std::size_t i,
+                                   const Eigen::Vector3d& w,
+                                   const std::vector<double>& stations) {
+    const FlexureBeam& b = beams_[i];
+    ChainForces forces;
+    forces.m0 = w[0];
+    forces.N = {Eigen::Vector2d(w[1], w[2])};
+    forces.moment_drop = {0.0, 0.0};
+    const std::vector<IntegrationPiece> pieces{IntegrationPiece{0, 0.0, b.length, 0.0, false}};
+    TipState end;
+    std::string error;
+    std::vector<ShapePoint> shape;
+    const Eigen::Matrix<double, 4, Eigen::Dynamic> none(4, 0);
+    if (!shape_integrator_.integrate(b.chain,
+                                     pieces,
+                                     forces,
+                                     {},
+                                     Eigen::Vector4d(0, 0, 0, w[0]),
+                                     none,
+                                     end,
+                                     error,
+                                     &stations,
+                                     &shape)) {
+      throw NoConvergence("flexure '" + b.flexure->name + "': its shape could not be integrated (" +
+                          error + ")");
+    }
+    return shape;
+  }
+
+  // The verdicts of the equilibrium z at input s (exact_stability.h): each exact flexure's own
+  // second variation with its ends held, plus the condensed stiffness of the mechanism's free
+  // directions with the input held (displacement control) or free under its dead load (force
+  // control).
+  PointVerdicts judge(const VectorXd& z, double s, double critical_tolerance) {
+    PointVerdicts v;
+    MatrixXd J;
+    if (!linearised_jacobian(z, s, J)) {
+      v.displacement_control = not_checked_stability(
+          "the exact model's linearisation failed at this point (an integration did not finish)");
+      v.force_control = v.displacement_control;
+      return v;
+    }
+    const VectorXd q = z.head(N_);
+    const int n = size();
+    // Reference stiffness: the springs' unloaded stiffness and every flexure's linear stiffness
+    // in its current root frame (EA/l along it, 12 EI/l^3, -6 EI/l^2, 4 EI/l across and in
+    // rotation, Euler-Bernoulli; 3 EI/l^3 across a pinned tip), on the tip's motion dq.
+    MatrixXd B = a_.unloaded_stiffness(q);
+    int flexures_judged = 0;
+    int index_flexures = 0;
+    double margin_flexures = 1.0;
+    std::string flexure_notes;
+    for (std::size_t i = 0; i < beams_.size(); ++i) {
+      const FlexureBeam& b = beams_[i];
+      const int o = flexure_offset() + 3 * static_cast<int>(i);
+      const double l = b.length, EI = b.EI;
+      const double EA_l = 12.0 * EI / (b.thickness * b.thickness * l);
+      const int rows = b.pinned_tip ? 2 : 3;
+      const MatrixXd T = -J.block(o, 0, rows, N_);  // d(tip pose in the root frame)/dq
+      MatrixXd K = MatrixXd::Zero(rows, rows);
+      K(0, 0) = EA_l;
+      if (b.pinned_tip) {
+        K(1, 1) = 3.0 * EI / (l * l * l);
+      } else {
+        K(1, 1) = 12.0 * EI / (l * l * l);
+        K(1, 2) = K(2, 1) = -6.0 * EI / (l * l);
+        K(2, 2) = 4.0 * EI / l;
+      }
+      B += T.transpose() * K * T;
+      if (b.model != FlexureModel::kExact) {
+        flexure_notes += "; flexure '" + b.flexure->name + "' (" +
+                         std::string(flexure_model_name(b.model)) +
+                         ") judged by its tip relation only";
+        continue;
+      }
+      // The flexure with both ends held: a clamped-clamped (or clamped-pinned) chain under the
+      // end force its far body puts on its tip, which acts like a dead load in the second
+      // variation (docs/stability.md "What is computed").
+      const Eigen::Vector3d w = z.segment<3>(o);
+      SegmentChain chain = b.chain;
+      chain.end = b.pinned_tip ? EndCondition::kPinned : EndCondition::kFixed;
+      StabilityOptions so;
+      so.critical_tolerance = critical_tolerance;
+      const Stability fv = equilibrium_stability(
+          chain,
+          Reaction{w[1], w[2], 0.0},
+          [&](const std::vector<double>& st) { return shape_at(i, w, st); },
+          so);
+      if (!fv.judged()) {
+        flexure_notes += "; flexure '" + b.flexure->name + "' not judged: " + fv.message;
+        continue;
+      }
+      ++flexures_judged;
+      index_flexures += fv.index;
+      margin_flexures = std::min(margin_flexures, fv.margin);
+      if (fv.index > 0) {
+        flexure_notes += "; flexure '" + b.flexure->name + "' unstable with its ends held (index " +
+                         std::to_string(fv.index) + ")";
+      }
+    }
+    const MatrixXd Jg = a_.constraint_jacobian(q);
+    auto condensed = [&](const MatrixXd& Jsys, const MatrixXd& Z, const std::string& control) {
+      CondensedVerdict c;
+      if (Z.cols() > 0) {
+        MatrixXd rhs = MatrixXd::Zero(n, Z.cols());
+        rhs.topRows(N_) = Z;
+        const MatrixXd X = Jsys.fullPivLu().solve(rhs);
+        c = condensed_verdict(Z.transpose() * X.topRows(N_), Z.transpose() * B * Z);
+      }
+      const int index = c.index + index_flexures;
+      const double margin = std::min(c.margin, margin_flexures);
+      Stability st = classify_stability(index, margin, critical_tolerance, "the mechanism");
+      st.message += fmt::format(
+          " under {} control (exact model: {} free direction(s) of the bodies, condensed "
+          "stiffness index {} and margin {:.6g} against the unloaded flexures and springs; {} "
+          "flexure(s) with their ends held, index {}, lowest margin {:.6g}{})",
+          control,
+          Z.cols(),
+          c.index,
+          c.margin,
+          flexures_judged,
+          index_flexures,
+          margin_flexures,
+          flexure_notes);
+      return st;
+    };
+    MatrixXd Jd(Jg.rows() + 1, N_);
+    Jd << Jg, a_.input_gradient(q).transpose();
+    v.displacement_control = condensed(J, exact_null_space(Jd, N_), "displacement");
+    // Force control: the input coordinate free, its load lambda given: the column of lambda
+    // becomes the column of s.
+    MatrixXd Jf = J;
+    Jf.col(N_ + m_).setZero();
+    Jf(N_ + m_, N_ + m_) = -1.0;
+    v.force_control = condensed(Jf, exact_null_space(Jg, N_), "force");
+    return v;
+  }
+
   double residual() const { return residual_; }
 
  private:
@@ -294,12 +516,15 @@ class ExactSystem {
   // For flexure_state: the integrator keeps state between calls (its step size), so the reports
   // use their own and leave the Newton iteration's numbers exactly those of the exact model.
   ElasticaIntegrator report_integrator_;
+  // The verdicts' own integrators (sensitivities; shapes), for the same reason.
+  ElasticaIntegrator sensitivity_integrator_;
+  ElasticaIntegrator shape_integrator_;
+  std::vector<TipLinearisation> linear_;  // non-empty: residual() uses these tips
   double residual_ = 0.0;
 };
 
 Stability exact_not_checked() {
-  return not_checked_stability(
-      "the exact model of a general mechanism does not judge stability yet");
+  return not_checked_stability("not judged (GeneralExactOptions::judge_stability is off)");
 }
 
 }  // namespace
@@ -307,6 +532,9 @@ Stability exact_not_checked() {
 void GeneralExactOptions::validate() const {
   if (!(tolerance > 0.0) || !(tolerance < 1e-3)) {
     throw InvalidInput("GeneralExactOptions.tolerance must be in (0, 1e-3)");
+  }
+  if (!(critical_tolerance >= 0.0) || !std::isfinite(critical_tolerance)) {
+    throw InvalidInput("GeneralExactOptions.critical_tolerance must be finite and >= 0");
   }
   if (max_newton_iterations < 1 || max_step_halvings < 0) {
     throw InvalidInput(
@@ -407,8 +635,14 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
     const double strain = S.strain_energy(z);
     pt.spring_energy = A.energy_si(A.spring_energy(q) + strain);
     pt.energy = A.energy_si(A.energy(q) + strain);
-    pt.displacement_control = exact_not_checked();
-    pt.force_control = exact_not_checked();
+    if (options.judge_stability) {
+      PointVerdicts v = S.judge(z, s, options.critical_tolerance);
+      pt.displacement_control = std::move(v.displacement_control);
+      pt.force_control = std::move(v.force_control);
+    } else {
+      pt.displacement_control = exact_not_checked();
+      pt.force_control = exact_not_checked();
+    }
     for (int b = 0; b < A.described_body_count(); ++b) {
       pt.body_x.push_back(q[3 * b] * A.length_scale());
       pt.body_y.push_back(q[3 * b + 1] * A.length_scale());
@@ -480,7 +714,8 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
     GeneralEquilibrium e;
     e.input = A.input_si(s);
     e.energy = A.energy_si(A.energy(z.head(N)) + S.strain_energy(z));
-    e.stability = exact_not_checked();
+    e.stability = options.judge_stability ? S.judge(z, s, options.critical_tolerance).force_control
+                                          : exact_not_checked();
     result.equilibria.push_back(std::move(e));
   }
   result.iterations = iterations;

@@ -30,6 +30,10 @@ struct GeneralExactOptions {
   // solve_general_mixed: measure each flexure's model against the exact elastica under the loads
   // it carries at every point (FlexureModelReport::measured_error; an elliptic solve each).
   bool measure_flexure_errors = false;
+  // Judge every recorded point and equilibrium (exact_stability.h): on by default; |margin| <=
+  // critical_tolerance is critical.
+  bool judge_stability = true;
+  double critical_tolerance = kCriticalMarginTolerance;
   // Throws InvalidInput naming the field.
   void validate() const;
 };

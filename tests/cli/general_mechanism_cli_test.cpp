@@ -138,8 +138,17 @@ TEST(GeneralMechanismCli, BothModels) {
                 j["models"]["prbm"]["equilibria"][i]["input"].get<double>(),
                 1e-8);
   }
-  EXPECT_EQ(exact["equilibria"][1]["stability"], "not_checked");
-  EXPECT_EQ(exact["stability"]["force_control"][0], "not_checked");
+  // The exact model's own verdicts (exact_stability.h): the PRBM's classification of the
+  // equilibria (Table 11.2), and its verdicts at the points where both models' torques slope the
+  // same way (before 8.6 deg both rise: stable under a dead torque).
+  for (int i : {0, 1, 2}) {
+    EXPECT_EQ(exact["equilibria"][i]["stability"],
+              j["models"]["prbm"]["equilibria"][i]["stability"]);
+  }
+  EXPECT_EQ(exact["equilibria"][1]["stability"], "unstable");
+  EXPECT_EQ(exact["equilibria"][1]["index"], 1);
+  EXPECT_EQ(exact["stability"]["force_control"][0], "stable");
+  EXPECT_EQ(exact["stability"]["displacement_control"][20], "stable");
 }
 
 // --model mixed on a built-in design (its general form): every flexure exact gives the catalogue's
