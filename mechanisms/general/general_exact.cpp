@@ -540,6 +540,9 @@ void GeneralExactOptions::validate() const {
     throw InvalidInput(
         "GeneralExactOptions.max_newton_iterations must be >= 1, max_step_halvings >= 0");
   }
+  if (max_steps < 1 || !(max_step > 0.0) || !(max_step <= 1.0)) {
+    throw InvalidInput("GeneralExactOptions.max_steps must be >= 1 and max_step in (0, 1]");
+  }
 }
 
 namespace {
@@ -554,11 +557,6 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
                                      std::vector<FlexureModelReport>* reports) {
   options.validate();
   mechanism.validate();
-  if (mechanism.input.control != InputControl::kDisplacement) {
-    throw InvalidInput(mechanism.where(mechanism.input.line) +
-                       "input: the exact model of a general mechanism follows displacement "
-                       "control only so far");
-  }
   const int dof = check_general_mechanism(mechanism);
   const PrbmAssembly A(mechanism, /*assemble_flexures=*/false);
   ExactSystem S(mechanism, A, models, elements);
@@ -590,7 +588,9 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
       const auto it = std::find(names.begin(), names.end(), body);
       z[3 * (it - names.begin()) + 2] = angle;
     }
-    s = grid.front();
+    // Displacement control: the first grid value; force control: the input where the rotations
+    // put it, from which the path follows the load.
+    s = in.control == InputControl::kDisplacement ? grid.front() : A.input(z.head(N));
     if (!S.newton(z, s, options.tolerance, options.max_newton_iterations, &iterations)) {
       return fail(
           "Newton did not converge at the first input value from the given "
@@ -663,6 +663,230 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
     }
     result.points.push_back(std::move(pt));
   };
+
+  if (in.control == InputControl::kForce) {
+    // Force control: pseudo-arclength continuation of (z, s) through the limit points of the
+    // input load (where a dead load makes the mechanism snap), as the PRBM's path
+    // (general_prbm.cpp): the curve F(z, s) = 0, the grid values of lambda recorded where the path
+    // crosses them, limit points located by bisection on the tangent's lambda component. The
+    // Jacobian is the linearised one (ExactSystem::linearised_jacobian); the arclength is
+    // measured on the bodies' coordinates, lambda and s only (the joints' multipliers and the
+    // flexures' loads follow them and are on other scales).
+    const int n = S.size();
+    const int p = N + m;  // lambda in y = (z, s)
+    VectorXd weight = VectorXd::Zero(n + 1);
+    weight.head(N).setOnes();
+    weight[p] = 1.0;
+    weight[n] = 1.0;
+    auto F_of = [&](const VectorXd& y, VectorXd& F) { return S.residual(y.head(n), y[n], F); };
+    auto J_of = [&](const VectorXd& y, MatrixXd& J) {
+      MatrixXd Jz;
+      if (!S.linearised_jacobian(y.head(n), y[n], Jz)) return false;
+      J = MatrixXd::Zero(n, n + 1);
+      J.leftCols(n) = Jz;
+      J(N + m, n) = -1.0;
+      return true;
+    };
+    double worst = 0.0;
+    auto newton_fixed = [&](VectorXd& y, int fixed) {
+      for (int it = 0; it <= options.max_newton_iterations; ++it) {
+        VectorXd F;
+        if (!F_of(y, F)) return false;
+        const double r = F.lpNorm<Eigen::Infinity>();
+        if (r < options.tolerance) {
+          worst = std::max(worst, r);
+          return true;
+        }
+        MatrixXd J;
+        if (!J_of(y, J)) return false;
+        ++iterations;
+        MatrixXd Js(n, n);
+        Js << J.leftCols(fixed), J.rightCols(n - fixed);
+        const VectorXd dx = Js.fullPivLu().solve(-F);
+        if (!dx.allFinite()) return false;
+        for (int i = 0, k = 0; i <= n; ++i) {
+          if (i != fixed) y[i] += dx[k++];
+        }
+      }
+      return false;
+    };
+    // Unit tangent in the weighted norm, oriented along `orient` (weighted).
+    auto tangent = [&](const VectorXd& y, const VectorXd& orient, VectorXd& t) {
+      MatrixXd J;
+      if (!J_of(y, J)) return false;
+      MatrixXd M(n + 1, n + 1);
+      M.topRows(n) = J;
+      M.row(n) = orient.cwiseProduct(weight).transpose();
+      VectorXd rhs = VectorXd::Zero(n + 1);
+      rhs[n] = 1.0;
+      t = M.fullPivLu().solve(rhs);
+      const double norm = t.cwiseProduct(weight).norm();
+      if (!t.allFinite() || !(norm > 0.0)) return false;
+      t /= norm;
+      if (t.cwiseProduct(weight).dot(orient) < 0.0) t = -t;
+      return true;
+    };
+    auto corrector = [&](VectorXd& y, const VectorXd& base, const VectorXd& t, double h) {
+      const VectorXd tw = t.cwiseProduct(weight);
+      for (int it = 0; it <= options.max_newton_iterations; ++it) {
+        VectorXd F;
+        if (!F_of(y, F)) return -1;
+        VectorXd f(n + 1);
+        f.head(n) = F;
+        f[n] = tw.dot(y - base) - h;
+        if (f.lpNorm<Eigen::Infinity>() < options.tolerance) return it;
+        MatrixXd J;
+        if (!J_of(y, J)) return -1;
+        ++iterations;
+        MatrixXd M(n + 1, n + 1);
+        M.topRows(n) = J;
+        M.row(n) = tw.transpose();
+        const VectorXd dx = M.fullPivLu().solve(-f);
+        if (!dx.allFinite()) return -1;
+        y += dx;
+      }
+      return -1;
+    };
+    std::vector<double> loads(static_cast<std::size_t>(in.count));
+    for (int i = 0; i < in.count; ++i) {
+      loads[static_cast<std::size_t>(i)] =
+          A.load_scaled(in.start + (in.stop - in.start) * i / (in.count - 1));
+    }
+    std::vector<VectorXd> dense;
+    int steps = 0;
+    auto record_y = [&](const VectorXd& y) {
+      z = y.head(n);
+      s = y[n];
+      record();
+    };
+    auto follow = [&](VectorXd& yc, double target, bool recording) -> Termination {
+      VectorXd orient = VectorXd::Zero(n + 1);
+      orient[p] = target >= yc[p] ? 1.0 : -1.0;
+      VectorXd t;
+      if (!tangent(yc, orient, t)) return Termination::kNoConvergence;
+      double h = options.max_step;
+      if (recording) dense.push_back(yc);
+      while (steps < options.max_steps) {
+        VectorXd yn = yc + h * t;
+        const int its = corrector(yn, yc, t, h);
+        VectorXd tn;
+        bool ok = its >= 0 && tangent(yn, t, tn) &&
+                  t.cwiseProduct(weight).dot(tn.cwiseProduct(weight)) > 0.9;
+        if (!ok) {
+          h *= 0.5;
+          if (h < 1e-10) return Termination::kNoConvergence;
+          continue;
+        }
+        ++steps;
+        if (t[p] * tn[p] < 0.0) {
+          // A limit point of the load inside this step: bisect the arclength on the sign of the
+          // tangent's lambda component.
+          double lo = 0.0, hi = h;
+          VectorXd yl = yn;
+          for (int k = 0; k < 60 && hi - lo > 1e-13; ++k) {
+            const double mid = 0.5 * (lo + hi);
+            VectorXd ym = yc + mid * t;
+            VectorXd tm;
+            if (corrector(ym, yc, t, mid) < 0 || !tangent(ym, t, tm)) break;
+            (tm[p] * t[p] > 0.0 ? lo : hi) = mid;
+            yl = ym;
+          }
+          result.limit_inputs.push_back(A.input_si(yl[n]));
+          result.limit_loads.push_back(A.load_si(yl[p]));
+        }
+        const double from = yc[p], to = yn[p];
+        auto crossed = [&](double v) { return (v - from) * (v - to) <= 0.0 && v != from; };
+        auto solve_at = [&](double v, VectorXd& out) {
+          out = yc + ((v - from) / (to - from)) * (yn - yc);
+          out[p] = v;
+          return newton_fixed(out, p);
+        };
+        if (recording) {
+          std::vector<double> hits;
+          for (double v : loads) {
+            if (crossed(v)) hits.push_back(v);
+          }
+          std::sort(hits.begin(), hits.end(), [&](double x, double y) {
+            return to > from ? x < y : x > y;
+          });
+          for (double v : hits) {
+            VectorXd yg;
+            if (!solve_at(v, yg)) return Termination::kNoConvergence;
+            record_y(yg);
+          }
+          dense.push_back(yn);
+        }
+        if (crossed(target)) {
+          VectorXd yt;
+          if (!solve_at(target, yt)) return Termination::kNoConvergence;
+          yc = yt;
+          return Termination::kConverged;
+        }
+        yc = yn;
+        t = tn;
+        if (its <= 3) h = std::min(1.5 * h, options.max_step);
+      }
+      return Termination::kLimitPoint;
+    };
+    VectorXd y(n + 1);
+    y << z, s;
+    Termination end = Termination::kConverged;
+    if (y[p] != loads.front()) {
+      end = follow(y, loads.front(), false);
+    } else {
+      worst = std::max(worst, S.residual());
+    }
+    if (end == Termination::kConverged) {
+      record_y(y);
+      result.limit_inputs.clear();
+      result.limit_loads.clear();
+      end = follow(y, loads.back(), true);
+    }
+    result.iterations = iterations;
+    result.termination = end;
+    if (end == Termination::kLimitPoint) {
+      result.message =
+          "the exact model's path did not reach the end of the load range after " +
+          std::to_string(steps) + " steps" +
+          (result.limit_inputs.empty()
+               ? std::string()
+               : "; it turned back at a limit point at input " + fmt(result.limit_inputs.front()));
+    } else if (end == Termination::kNoConvergence) {
+      result.message = "the exact model's continuation failed after " + std::to_string(steps) +
+                       " steps (" + std::to_string(result.points.size()) + " of " +
+                       std::to_string(in.count) + " points)";
+    }
+    // Equilibria of the unloaded mechanism: sign changes of lambda along the path, by Newton
+    // with lambda = 0.
+    for (std::size_t i = 0; i + 1 < dense.size(); ++i) {
+      const double l0 = dense[i][p], l1 = dense[i + 1][p];
+      if (!(l0 * l1 <= 0.0)) continue;
+      VectorXd ye =
+          l0 == l1 ? dense[i] : VectorXd(dense[i] + (l0 / (l0 - l1)) * (dense[i + 1] - dense[i]));
+      ye[p] = 0.0;
+      if (!newton_fixed(ye, p)) {
+        result.warn(WarningKind::kOther,
+                    "an exact equilibrium near input " + fmt(A.input_si(dense[i][n])) +
+                        " was bracketed but Newton did not converge");
+        continue;
+      }
+      const double se = A.input_si(ye[n]);
+      if (!result.equilibria.empty() &&
+          std::fabs(result.equilibria.back().input - se) <
+              1e-9 * std::max(1.0, std::fabs(se)) * (A.input_is_angle() ? 1.0 : A.length_scale())) {
+        continue;
+      }
+      GeneralEquilibrium e;
+      e.input = se;
+      e.energy = A.energy_si(A.energy(ye.head(N)) + S.strain_energy(ye.head(n)));
+      e.stability = options.judge_stability
+                        ? S.judge(ye.head(n), ye[n], options.critical_tolerance).force_control
+                        : exact_not_checked();
+      result.equilibria.push_back(std::move(e));
+    }
+    result.residual = std::max(worst, S.residual());
+    return result;
+  }
 
   std::vector<std::pair<double, VectorXd>> path;  // (s, z) at the grid points
   for (std::size_t i = 0; i < grid.size(); ++i) {

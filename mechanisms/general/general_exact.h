@@ -27,6 +27,10 @@ struct GeneralExactOptions {
   double tolerance = 1e-10;  // Newton: max residual of the scaled equations
   int max_newton_iterations = 40;
   int max_step_halvings = 12;  // of the input step when Newton fails
+  // Force control (pseudo-arclength continuation): steps before giving up, and the largest step
+  // (scaled: the bodies' coordinates in lengths / size and rad, the input load, the input).
+  int max_steps = 20000;
+  double max_step = 0.05;
   // solve_general_mixed: measure each flexure's model against the exact elastica under the loads
   // it carries at every point (FlexureModelReport::measured_error; an elliptic solve each).
   bool measure_flexure_errors = false;

@@ -202,3 +202,61 @@ TEST(GeneralExactStability, ColumnPushedThroughAMechanismBucklesAtTheEulerLoad) 
 
 }  // namespace
 }  // namespace flexure::mechanism::general
+
+namespace flexure::mechanism::general {
+namespace {
+
+// Under torque control (a dead crank torque from 0 to 1.2 N m) the exact switch snaps where its
+// torque curve under displacement control peaks: the limit points are the extremes of the
+// displacement-controlled torque (a parabola through a 0.01 deg grid about each), the path turns
+// back there and reaches the range's end on the far stable branch; its points' verdicts are those
+// of the displacement-controlled curve's slope, and its unloaded equilibria are the displacement
+// path's.
+TEST(GeneralExactStability, SwitchUnderTorqueControlPassesItsLimitPoints) {
+  GeneralMechanism m = bistable_switch(-5.0, 33.0, 77);
+  const GeneralPrbmResult held = solve_general_exact(m);
+  ASSERT_TRUE(held.converged()) << held.message;
+  m.input.control = InputControl::kForce;
+  m.input.start = 0.0;
+  m.input.stop = 1.2;
+  m.input.count = 19;
+  const GeneralPrbmResult r = solve_general_exact(m);
+  ASSERT_TRUE(r.converged()) << r.message;
+  ASSERT_EQ(r.limit_inputs.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const double h = 0.01 * kDeg;
+    GeneralMechanism fine = bistable_switch(0, 1, 5);
+    fine.input.start = r.limit_inputs[k] - 2 * h;
+    fine.input.stop = r.limit_inputs[k] + 2 * h;
+    const GeneralPrbmResult f = solve_general_exact(fine);
+    ASSERT_TRUE(f.converged()) << f.message;
+    const double tm = f.points[1].input_load, t0 = f.points[2].input_load,
+                 tp = f.points[3].input_load;
+    const double vertex = f.points[2].input - h * (tp - tm) / (2.0 * (tp - 2.0 * t0 + tm));
+    const double extreme = t0 - (tp - tm) * (tp - tm) / (8.0 * (tp - 2.0 * t0 + tm));
+    // Measured: 1e-5 deg and 1e-10 N m.
+    EXPECT_NEAR(r.limit_inputs[k], vertex, 1e-4 * kDeg);
+    EXPECT_NEAR(r.limit_loads[k], extreme, 1e-8);
+  }
+  EXPECT_GT(r.limit_loads[0], 0.26);   // the snap-through torque
+  EXPECT_LT(r.limit_loads[1], -0.39);  // the snap back
+  // Points in path order: up the first stable branch to the limit, down the unstable one, then
+  // (past the second limit, below zero torque) up the second stable branch to 1.2 N m.
+  ASSERT_EQ(r.points.size(), 4u + 4u + 19u);
+  for (const GeneralPrbmPoint& p : r.points) {
+    const bool unstable_branch = p.input > r.limit_inputs[0] && p.input < r.limit_inputs[1];
+    EXPECT_EQ(p.force_control.kind,
+              unstable_branch ? StabilityKind::kUnstable : StabilityKind::kStable)
+        << p.input / kDeg;
+    EXPECT_EQ(p.displacement_control.kind, StabilityKind::kStable) << p.input / kDeg;
+  }
+  EXPECT_NEAR(r.points.back().input_load, 1.2, 1e-12);
+  ASSERT_EQ(r.equilibria.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_NEAR(r.equilibria[i].input, held.equilibria[i].input, 1e-8);
+    EXPECT_EQ(r.equilibria[i].stability.kind, held.equilibria[i].stability.kind);
+  }
+}
+
+}  // namespace
+}  // namespace flexure::mechanism::general
