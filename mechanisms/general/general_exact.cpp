@@ -664,7 +664,9 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
     result.points.push_back(std::move(pt));
   };
 
-  if (in.control == InputControl::kForce) {
+  // The pseudo-arclength path from (z_start, s_start): force control, and displacement control
+  // where the natural-parameter continuation below fails (a limit point of the input).
+  auto arclength_path = [&](const VectorXd& z_start, double s_start, bool force) {
     // Force control: pseudo-arclength continuation of (z, s) through the limit points of the
     // input load (where a dead load makes the mechanism snap), as the PRBM's path
     // (general_prbm.cpp): the curve F(z, s) = 0, the grid values of lambda recorded where the path
@@ -673,7 +675,8 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
     // measured on the bodies' coordinates, lambda and s only (the joints' multipliers and the
     // flexures' loads follow them and are on other scales).
     const int n = S.size();
-    const int p = N + m;  // lambda in y = (z, s)
+    // The controlled quantity in y = (z, s): lambda (force control) or s.
+    const int p = force ? N + m : n;
     VectorXd weight = VectorXd::Zero(n + 1);
     weight.head(N).setOnes();
     weight[p] = 1.0;
@@ -747,10 +750,12 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
       }
       return -1;
     };
-    std::vector<double> loads(static_cast<std::size_t>(in.count));
-    for (int i = 0; i < in.count; ++i) {
-      loads[static_cast<std::size_t>(i)] =
-          A.load_scaled(in.start + (in.stop - in.start) * i / (in.count - 1));
+    std::vector<double> loads = grid;  // the controlled quantity's grid values, scaled
+    if (force) {
+      for (int i = 0; i < in.count; ++i) {
+        loads[static_cast<std::size_t>(i)] =
+            A.load_scaled(in.start + (in.stop - in.start) * i / (in.count - 1));
+      }
     }
     std::vector<VectorXd> dense;
     int steps = 0;
@@ -815,6 +820,11 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
             record_y(yg);
           }
           dense.push_back(yn);
+          // A path that keeps crossing the grid (a closed curve of a linkage driven past the end
+          // of its travel) has turned back for good: stop rather than go round it.
+          if (result.points.size() > 4 * static_cast<std::size_t>(in.count)) {
+            return Termination::kLimitPoint;
+          }
         }
         if (crossed(target)) {
           VectorXd yt;
@@ -829,7 +839,7 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
       return Termination::kLimitPoint;
     };
     VectorXd y(n + 1);
-    y << z, s;
+    y << z_start, s_start;
     Termination end = Termination::kConverged;
     if (y[p] != loads.front()) {
       end = follow(y, loads.front(), false);
@@ -846,8 +856,8 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
     result.termination = end;
     if (end == Termination::kLimitPoint) {
       result.message =
-          "the exact model's path did not reach the end of the load range after " +
-          std::to_string(steps) + " steps" +
+          std::string("the exact model's path did not reach the end of the ") +
+          (force ? "load" : "input") + " range after " + std::to_string(steps) + " steps" +
           (result.limit_inputs.empty()
                ? std::string()
                : "; it turned back at a limit point at input " + fmt(result.limit_inputs.front()));
@@ -886,11 +896,40 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
     }
     result.residual = std::max(worst, S.residual());
     return result;
+  };
+  if (in.control == InputControl::kForce) {
+    return arclength_path(z, s, true);
   }
+  const VectorXd z_start = z;
+  const double s_start = s;
 
   std::vector<std::pair<double, VectorXd>> path;  // (s, z) at the grid points
   for (std::size_t i = 0; i < grid.size(); ++i) {
     if (!advance(grid[i])) {
+      // A limit point of the input (or a step Newton cannot make): the whole path again by
+      // arclength, which passes limit points and records the grid values where it crosses them.
+      GeneralPrbmResult natural = result;
+      std::vector<FlexureModelReport> natural_reports;
+      if (reports != nullptr) {
+        natural_reports = *reports;
+        for (FlexureModelReport& rep : *reports) {
+          rep.loads.clear();
+          rep.tips.clear();
+        }
+      }
+      result.points.clear();
+      GeneralPrbmResult again = arclength_path(z_start, s_start, false);
+      if (again.converged() || again.points.size() > natural.points.size()) {
+        if (again.converged()) {
+          again.warn(WarningKind::kOther,
+                     "the exact model's natural-parameter continuation stopped before input " +
+                         fmt(A.input_si(grid[i])) +
+                         "; the path was followed by arclength instead (through limit points)");
+        }
+        return again;
+      }
+      result = std::move(natural);
+      if (reports != nullptr) *reports = std::move(natural_reports);
       result.iterations = iterations;
       result.termination = Termination::kNoConvergence;
       result.message = "the exact model's continuation failed before input " +

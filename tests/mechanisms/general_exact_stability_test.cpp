@@ -258,5 +258,27 @@ TEST(GeneralExactStability, SwitchUnderTorqueControlPassesItsLimitPoints) {
   }
 }
 
+// Driven past the end of its travel (the coupler and rocker aligned), the exact switch's crank
+// angle has a limit point: the natural-parameter continuation stops there and the path is
+// followed by arclength, which records the points it reaches (the natural path's, to 1e-9) and
+// reports the limit: the rigid four-bar's travel limit |A - O4| = r3 + r4, theta2 = 33.376 deg,
+// within 0.02 deg (the flexure's centre moves a little; measured 33.372 deg).
+TEST(GeneralExactStability, CrankDrivenPastItsTravelStopsAtTheLimitPoint) {
+  const GeneralPrbmResult below = solve_general_exact(bistable_switch(-5.0, 33.0, 20));
+  ASSERT_TRUE(below.converged()) << below.message;
+  const GeneralPrbmResult r = solve_general_exact(bistable_switch(-5.0, 35.0, 21));
+  EXPECT_EQ(r.termination, Termination::kLimitPoint) << r.message;
+  ASSERT_GE(r.limit_inputs.size(), 1u);
+  const double r1 = 0.0361, r2 = 0.020, r3 = 0.010, r4 = 0.0123;
+  const double travel = std::acos((r2 * r2 + r1 * r1 - (r3 + r4) * (r3 + r4)) / (2 * r1 * r2));
+  EXPECT_NEAR(r.limit_inputs[0], travel, 0.02 * kDeg);
+  // The grid points before the limit (every 2 deg from -5 to 33) are the natural path's.
+  ASSERT_GE(r.points.size(), 20u);
+  for (std::size_t i = 0; i < 20; ++i) {
+    EXPECT_NEAR(r.points[i].input, below.points[i].input, 1e-12);
+    EXPECT_NEAR(r.points[i].input_load, below.points[i].input_load, 1e-9) << i;
+  }
+}
+
 }  // namespace
 }  // namespace flexure::mechanism::general
