@@ -45,7 +45,6 @@ struct FlexureBeam {
   double length = 0.0;     // scaled
   double EI = 0.0;         // scaled
   double direction = 0.0;  // rest angle of the flexure from a to b, rad
-  double thickness = 0.0;  // scaled, for the reference axial stiffness EA/l of the verdict
   bool pinned_tip = false;
   // kExact: an elastica with unknowns w = its root loads (m0, Nx, Ny). Any other model (mixed):
   // a cantilever under its tip loads, unknowns w = (M_tip, Nx, Ny) (flexure_models.h).
@@ -104,7 +103,6 @@ class ExactSystem {
       b.length = std::hypot(pb.x - pa.x, pb.y - pa.y) / L;
       b.EI = f.flexural_rigidity() / (a.energy_scale() * L);
       b.direction = std::atan2(pb.y - pa.y, pb.x - pa.x);
-      b.thickness = f.thickness / L;
       b.pinned_tip = f.prbm == PrbmKind::kFixedPinned;
       b.chain.segments.push_back(FlexibleSegment{b.length, b.EI, {}, 0.0});
       if (!models.empty()) {
@@ -412,9 +410,11 @@ class ExactSystem {
     }
     const VectorXd q = z.head(N_);
     const int n = size();
-    // Reference stiffness: the springs' unloaded stiffness and every flexure's linear stiffness
-    // in its current root frame (EA/l along it, 12 EI/l^3, -6 EI/l^2, 4 EI/l across and in
-    // rotation, Euler-Bernoulli; 3 EI/l^3 across a pinned tip), on the tip's motion dq.
+    // Reference stiffness: the springs' unloaded stiffness and every flexure's linear bending
+    // stiffness in its current root frame (12 EI/l^3, -6 EI/l^2, 4 EI/l across and in rotation,
+    // Euler-Bernoulli; 3 EI/l^3 across a pinned tip), on the tip's motion dq. Along the flexure
+    // it counts the transverse value: an inextensible flexure's axial stiffness is infinite, and
+    // even EA/l would dwarf the bending and leave every bending direction's margin near 0.
     MatrixXd B = a_.unloaded_stiffness(q);
     int flexures_judged = 0;
     int index_flexures = 0;
@@ -424,11 +424,10 @@ class ExactSystem {
       const FlexureBeam& b = beams_[i];
       const int o = flexure_offset() + 3 * static_cast<int>(i);
       const double l = b.length, EI = b.EI;
-      const double EA_l = 12.0 * EI / (b.thickness * b.thickness * l);
       const int rows = b.pinned_tip ? 2 : 3;
       const MatrixXd T = -J.block(o, 0, rows, N_);  // d(tip pose in the root frame)/dq
       MatrixXd K = MatrixXd::Zero(rows, rows);
-      K(0, 0) = EA_l;
+      K(0, 0) = (b.pinned_tip ? 3.0 : 12.0) * EI / (l * l * l);
       if (b.pinned_tip) {
         K(1, 1) = 3.0 * EI / (l * l * l);
       } else {
