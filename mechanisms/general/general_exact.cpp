@@ -41,9 +41,10 @@ std::string fmt(double v) {
 // assembly's energy scale K: forces F L/K, moments M/K, EI/(K L)).
 struct FlexureBeam {
   const Flexure* flexure = nullptr;
-  SegmentChain chain;      // one flexible segment (scaled), for the integrator
-  double length = 0.0;     // scaled
-  double EI = 0.0;         // scaled
+  SegmentChain chain;   // one flexible segment (scaled), for the integrator
+  double length = 0.0;  // scaled
+  double EI = 0.0;      // scaled
+  double EA = std::numeric_limits<double>::infinity();  // scaled; infinite: inextensible
   double direction = 0.0;  // rest angle of the flexure from a to b, rad
   bool pinned_tip = false;
   // kExact: an elastica with unknowns w = its root loads (m0, Nx, Ny). Any other model (mixed):
@@ -105,6 +106,11 @@ class ExactSystem {
       b.direction = std::atan2(pb.y - pa.y, pb.x - pa.x);
       b.pinned_tip = f.prbm == PrbmKind::kFixedPinned;
       b.chain.segments.push_back(FlexibleSegment{b.length, b.EI, {}, 0.0});
+      if (f.extensible) {
+        // EA scaled as a force (F L/K): the strain N/EA is the same in both units.
+        b.EA = f.axial_rigidity() * L / a.energy_scale();
+        std::get<FlexibleSegment>(b.chain.segments.back()).EA = b.EA;
+      }
       if (!models.empty()) {
         b.model = models[beams_.size()];
         b.elements = elements[beams_.size()];
@@ -305,6 +311,12 @@ class ExactSystem {
         const double ma = w[0] + w[1] * p0.y - w[2] * p0.x;
         const double mb = w[0] + w[1] * p1.y - w[2] * p1.x;
         U += 0.5 * (ma * ma + mb * mb) / (2.0 * b.EI) * (p1.s - p0.s);
+        if (std::isfinite(b.EA)) {
+          // The axial strain energy N_a^2/(2 EA), N_a = N . t (Reissner; docs/extensible.md).
+          const double na = w[1] * std::cos(p0.theta) + w[2] * std::sin(p0.theta);
+          const double nb = w[1] * std::cos(p1.theta) + w[2] * std::sin(p1.theta);
+          U += 0.5 * (na * na + nb * nb) / (2.0 * b.EA) * (p1.s - p0.s);
+        }
       }
     }
     return U;
@@ -417,6 +429,7 @@ class ExactSystem {
     // even EA/l would dwarf the bending and leave every bending direction's margin near 0.
     MatrixXd B = a_.unloaded_stiffness(q);
     int flexures_judged = 0;
+    int flexures_unjudged = 0;
     int index_flexures = 0;
     double margin_flexures = 1.0;
     std::string flexure_notes;
@@ -442,6 +455,13 @@ class ExactSystem {
                          ") judged by its tip relation only";
         continue;
       }
+      if (std::isfinite(b.EA)) {
+        ++flexures_unjudged;
+        flexure_notes += "; flexure '" + b.flexure->name +
+                         "' (extensible) not judged with its ends held: the second variation of "
+                         "extensible chains is not computed (docs/extensible.md)";
+        continue;
+      }
       // The flexure with both ends held: a clamped-clamped (or clamped-pinned) chain under the
       // end force its far body puts on its tip, which acts like a dead load in the second
       // variation (docs/stability.md "What is computed").
@@ -456,6 +476,7 @@ class ExactSystem {
           [&](const std::vector<double>& st) { return shape_at(i, w, st); },
           so);
       if (!fv.judged()) {
+        ++flexures_unjudged;
         flexure_notes += "; flexure '" + b.flexure->name + "' not judged: " + fv.message;
         continue;
       }
@@ -478,7 +499,13 @@ class ExactSystem {
       }
       const int index = c.index + index_flexures;
       const double margin = std::min(c.margin, margin_flexures);
-      Stability st = classify_stability(index, margin, critical_tolerance, "the mechanism");
+      // An unjudged flexure leaves the index a lower bound (the inertia adds up): unstable is
+      // still a verdict, stable is not.
+      Stability st = flexures_unjudged > 0 && index == 0
+                         ? not_checked_stability(
+                               "no negative direction found, but not every flexure could be "
+                               "judged with its ends held")
+                         : classify_stability(index, margin, critical_tolerance, "the mechanism");
       st.message += fmt::format(
           " under {} control (exact model: {} free direction(s) of the bodies, condensed "
           "stiffness index {} and margin {:.6g} against the unloaded flexures and springs; {} "
@@ -528,6 +555,42 @@ Stability exact_not_checked() {
 
 }  // namespace
 
+// The joints' structure without the flexures (a mechanism with an extensible flexure): independent
+// joints, a freedom to move, an input that moves to first order (or a start_rotation). Returns
+// the degrees of freedom with the input free.
+int check_joints(const GeneralMechanism& mechanism, const PrbmAssembly& A) {
+  const int N = A.coordinate_count();
+  const VectorXd q0 = VectorXd::Zero(N);
+  const MatrixXd Jg = A.constraint_jacobian(q0);
+  auto rank = [](const MatrixXd& M) {
+    if (M.rows() == 0) return 0;
+    Eigen::JacobiSVD<MatrixXd> svd(M);
+    const VectorXd& sv = svd.singularValues();
+    int r = 0;
+    for (int i = 0; i < sv.size(); ++i) r += sv[i] > 1e-9 * std::max(1.0, sv[0]) ? 1 : 0;
+    return r;
+  };
+  const int rg = rank(Jg);
+  if (rg < Jg.rows()) {
+    throw InvalidInput(mechanism.where(0) +
+                       "the joints are redundant in the described "
+                       "configuration (over-constrained mechanisms are not supported)");
+  }
+  const int dof = N - rg;
+  MatrixXd Jd(Jg.rows() + 1, N);
+  Jd << Jg, A.input_gradient(q0).transpose();
+  if (dof == 0) {
+    throw InvalidInput(mechanism.where(mechanism.input.line) +
+                       "input: the joints leave the mechanism no freedom to move");
+  }
+  if (rank(Jd) == rg && mechanism.input.start_rotation.empty()) {
+    throw InvalidInput(mechanism.where(mechanism.input.line) +
+                       "input: the input coordinate cannot move to first order in the described "
+                       "configuration (a dead point); give the input a start_rotation");
+  }
+  return dof;
+}
+
 void GeneralExactOptions::validate() const {
   if (!(tolerance > 0.0) || !(tolerance < 1e-3)) {
     throw InvalidInput("GeneralExactOptions.tolerance must be in (0, 1e-3)");
@@ -556,8 +619,14 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
                                      std::vector<FlexureModelReport>* reports) {
   options.validate();
   mechanism.validate();
-  const int dof = check_general_mechanism(mechanism);
   const PrbmAssembly A(mechanism, /*assemble_flexures=*/false);
+  const bool extensible = std::any_of(mechanism.flexures.begin(),
+                                      mechanism.flexures.end(),
+                                      [](const Flexure& f) { return f.extensible; });
+  // The structural checks on the PRB linkage, unless a flexure is extensible: its PRBM element is
+  // inextensible and may lock a linkage that the extensible beam lets move (a beam between two
+  // bodies whose distance the joints fix), so the joints alone are checked then.
+  const int dof = extensible ? check_joints(mechanism, A) : check_general_mechanism(mechanism);
   ExactSystem S(mechanism, A, models, elements);
   const int N = A.coordinate_count();
   const int m = A.constraint_count();

@@ -317,5 +317,79 @@ TEST(GeneralExactStability, CatalogueDesignsVerdictsMatchTheCatalogueExactModel)
   EXPECT_EQ(unstable, 10);
 }
 
+// The inclined bistable beam (issue 31; docs/examples/inclined_bistable_beam.toml): a beam
+// 70 mm long clamped at 5.5 deg, 12.55 mm x 1.5 mm, E = 1.379 GPa, clamped into a shuttle guided
+// along y, moved 12 mm down. `axial` sets EA through the flexure's E b h.
+GeneralMechanism inclined_beam(double start_travel, double stop_travel, int count) {
+  const double L = 0.070, alpha = 5.5 * kDeg;
+  const Vec2 tip{L * std::cos(alpha), L * std::sin(alpha)};
+  GeneralMechanism m;
+  m.name = "inclined-bistable-beam";
+  m.body("ground", {{"C", {0, 0}}, {"G", tip}})
+      .body("shuttle", {{"P", tip}})
+      .slider("guide", "ground.G", "shuttle.P", 90.0 * kDeg)
+      .flexure("beam", "ground.C", "shuttle.P", 12.55e-3, 1.5e-3, 1.379e9, PrbmKind::kFixedGuided)
+      .input_coordinate(InputCoordinate::kY,
+                        "shuttle.P",
+                        "",
+                        InputControl::kDisplacement,
+                        tip.y - start_travel,
+                        tip.y - stop_travel,
+                        count);
+  m.flexures[0].extensible = true;
+  return m;
+}
+
+// The extensible exact model against the beam path of the same beam (docs/paths.md, `flexure path`
+// on docs/examples/inclined_bistable_path.toml, another code path: one chain with its tip
+// prescribed): where the path's unbuckled branch is the mechanism's (before the first bifurcation
+// at a travel of 1.289335 mm, pushing force 3.045964 N; after the buckled branch rejoins at
+// 7.661836 mm: the largest pull -0.562133 N at 8.046632 mm, the stable zero at 9.696201 mm).
+// Measured: the forces 1.6e-5 and 2.5e-5 below the path's relative, the zero 1.8e-5 mm early (an
+// offset of about 2e-5 of the force that tighter Newton tolerances do not change; not explained,
+// docs/mechanisms.md). The verdicts: the extensible flexure is not judged with its ends held, so
+// displacement control is not_checked; under force control the shuttle's condensed stiffness
+// makes the points where the force falls unstable (and leaves the others not_checked).
+TEST(GeneralExactStability, InclinedBistableBeamMatchesTheBeamPath) {
+  const double y0 = 0.070 * std::sin(5.5 * kDeg);
+  const GeneralPrbmResult r = solve_general_exact(inclined_beam(0.0, 12e-3, 121));
+  ASSERT_TRUE(r.converged()) << r.message;
+  ASSERT_EQ(r.points.size(), 121u);
+  const GeneralPrbmResult b =
+      solve_general_exact(inclined_beam(1.289335e-3, 1.289335e-3 + 1e-9, 2));
+  ASSERT_TRUE(b.converged()) << b.message;
+  EXPECT_NEAR(-b.points[0].input_load, 3.045964, 1e-4 * 3.045964);
+  // The largest pull: a parabola through a 0.01 mm grid about it.
+  const double h = 1e-5;
+  const GeneralPrbmResult c =
+      solve_general_exact(inclined_beam(8.046632e-3 - 2 * h, 8.046632e-3 + 2 * h, 5));
+  ASSERT_TRUE(c.converged()) << c.message;
+  const double fm = -c.points[1].input_load, f0 = -c.points[2].input_load,
+               fp = -c.points[3].input_load;
+  const double travel = 8.046632e-3 + h * (fp - fm) / (2.0 * (fp - 2.0 * f0 + fm));
+  const double pull = f0 - (fp - fm) * (fp - fm) / (8.0 * (fp - 2.0 * f0 + fm));
+  EXPECT_NEAR(pull, -0.562133, 5e-5);
+  EXPECT_NEAR(travel, 8.046632e-3, 1e-6);
+  // The stable zero (the last equilibrium) and the sign changes of the force along the range.
+  ASSERT_FALSE(r.equilibria.empty());
+  EXPECT_NEAR(y0 - r.equilibria.back().input, 9.696201e-3, 5e-8);
+  int sign_changes = 0;
+  for (std::size_t i = 2; i < r.points.size(); ++i) {
+    sign_changes += r.points[i].input_load * r.points[i - 1].input_load < 0.0 ? 1 : 0;
+  }
+  EXPECT_EQ(sign_changes, 2);
+  // Verdicts.
+  for (std::size_t i = 1; i + 1 < r.points.size(); ++i) {
+    const GeneralPrbmPoint& p = r.points[i];
+    EXPECT_EQ(p.displacement_control.kind, StabilityKind::kNotChecked);
+    // The pushing force -lambda against the travel y0 - y: it falls where d(lambda)/dy < 0 ...
+    const double slope = (r.points[i + 1].input_load - r.points[i - 1].input_load) /
+                         (r.points[i + 1].input - r.points[i - 1].input);
+    EXPECT_EQ(p.force_control.kind,
+              slope < 0.0 ? StabilityKind::kUnstable : StabilityKind::kNotChecked)
+        << (y0 - p.input) * 1e3 << " mm";
+  }
+}
+
 }  // namespace
 }  // namespace flexure::mechanism::general
