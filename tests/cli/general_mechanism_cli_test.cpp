@@ -248,5 +248,23 @@ TEST(GeneralMechanismCli, MixedModelKeysAndRefusals) {
   expect_refused("mechanism analyze 1B-plp --model mixed", {"pivot 2", "no general form"});
 }
 
+// The inclined bistable beam example: an extensible flexure (TOML `extensible = true`) between the
+// ground and a guided shuttle; the exact model crosses the straight position and the force changes
+// sign twice, the last zero the beam path's second stable position 9.696201 mm
+// (tests/mechanisms/general_exact_stability_test.cpp compares the numbers).
+TEST(GeneralMechanismCli, InclinedBistableBeamExample) {
+  const std::string file =
+      std::string("'") + FLEXURE_SOURCE_DIR + "/docs/examples/inclined_bistable_beam.toml'";
+  const CommandResult r = run_flexure("mechanism analyze " + file + " --model exact --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const std::vector<double> load = j["input_load"].get<std::vector<double>>();
+  ASSERT_EQ(load.size(), 121u);
+  int changes = 0;
+  for (std::size_t i = 2; i < load.size(); ++i) changes += load[i] * load[i - 1] < 0.0 ? 1 : 0;
+  EXPECT_EQ(changes, 2);
+  EXPECT_NEAR(6.709203e-3 - j["equilibria"].back()["input"].get<double>(), 9.696201e-3, 1e-7);
+}
+
 }  // namespace
 }  // namespace flexure::test

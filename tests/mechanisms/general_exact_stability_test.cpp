@@ -340,16 +340,20 @@ GeneralMechanism inclined_beam(double start_travel, double stop_travel, int coun
   return m;
 }
 
-// The extensible exact model against the beam path of the same beam (docs/paths.md, `flexure path`
-// on docs/examples/inclined_bistable_path.toml, another code path: one chain with its tip
-// prescribed): where the path's unbuckled branch is the mechanism's (before the first bifurcation
-// at a travel of 1.289335 mm, pushing force 3.045964 N; after the buckled branch rejoins at
-// 7.661836 mm: the largest pull -0.562133 N at 8.046632 mm, the stable zero at 9.696201 mm).
-// Measured: the forces 1.6e-5 and 2.5e-5 below the path's relative, the zero 1.8e-5 mm early (an
-// offset of about 2e-5 of the force that tighter Newton tolerances do not change; not explained,
-// docs/mechanisms.md). The verdicts: the extensible flexure is not judged with its ends held, so
-// displacement control is not_checked; under force control the shuttle's condensed stiffness
-// makes the points where the force falls unstable (and leaves the others not_checked).
+// The extensible exact model against two independent computations of the same beam:
+// * an independent Reissner shooting (scipy's DOP853 at rtol 1e-13 and fsolve on the root loads,
+//   the beam alone clamped at 5.5 deg with its tip prescribed at a travel of 0.5 mm): pushing
+//   force 1.5605303807118 N, root moment 1.9981080274e-3 N m (to 1e-11 here);
+// * the beam path (docs/paths.md, `flexure path` on docs/examples/inclined_bistable_path.toml):
+//   the first bifurcation at 1.289335 mm under 3.045964 N, the largest pull -0.562133 N at
+//   8.046632 mm, the stable zero at 9.696201 mm (where its unbuckled branch is the mechanism's).
+//   Measured: the forces 1.6e-5 and 2.5e-5 below the path's relative, the zero 1.8e-5 mm early.
+//   The path's shooting solver (and `flexure beam --method shooting` on the same chain: 1.5605586
+//   N at 0.5 mm) differ from the independent Reissner integration by that much, this model does
+//   not: an error of the beam solver's extensible path, not of this model (docs/mechanisms.md).
+// The verdicts: the extensible flexure is not judged with its ends held, so displacement control
+// is not_checked; under force control the shuttle's condensed stiffness makes the points where
+// the force falls unstable (and leaves the others not_checked).
 TEST(GeneralExactStability, InclinedBistableBeamMatchesTheBeamPath) {
   const double y0 = 0.070 * std::sin(5.5 * kDeg);
   const GeneralPrbmResult r = solve_general_exact(inclined_beam(0.0, 12e-3, 121));
@@ -359,6 +363,9 @@ TEST(GeneralExactStability, InclinedBistableBeamMatchesTheBeamPath) {
       solve_general_exact(inclined_beam(1.289335e-3, 1.289335e-3 + 1e-9, 2));
   ASSERT_TRUE(b.converged()) << b.message;
   EXPECT_NEAR(-b.points[0].input_load, 3.045964, 1e-4 * 3.045964);
+  const GeneralPrbmResult half = solve_general_exact(inclined_beam(0.5e-3, 0.5e-3 + 1e-9, 2));
+  ASSERT_TRUE(half.converged()) << half.message;
+  EXPECT_NEAR(-half.points[0].input_load, 1.5605303807118, 1e-11 * 1.56);
   // The largest pull: a parabola through a 0.01 mm grid about it.
   const double h = 1e-5;
   const GeneralPrbmResult c =
