@@ -252,7 +252,8 @@ GeneralMechanism parse_general_mechanism_toml(const std::string& text, const std
                      "prbm",
                      "model",
                      "tolerance",
-                     "elements"},
+                     "elements",
+                     "extensible"},
                     r.item(),
                     source);
     Flexure f;
@@ -315,6 +316,13 @@ GeneralMechanism parse_general_mechanism_toml(const std::string& text, const std
         r.fail(t->get("elements"), "elements must be a whole number in [1, 2000]");
       }
       f.elements = static_cast<int>(n);
+    }
+    if (const toml::node* n = t->get("extensible")) {
+      const std::optional<bool> v = n->value<bool>();
+      if (!v) {
+        r.fail(n, "extensible must be true or false");
+      }
+      f.extensible = *v;
     }
     m.flexures.push_back(f);
   }

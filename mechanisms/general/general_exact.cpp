@@ -8,8 +8,10 @@
 #include <optional>
 #include <sstream>
 
+#include "flexure/mechanisms/general/exact_stability.h"
 #include "flexure/mechanisms/general/flexure_models.h"
 #include "flexure/mechanisms/general/prbm_assembly.h"
+#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/shooting/elastica_integrator.h"
 
@@ -24,6 +26,9 @@ using Eigen::VectorXd;
 constexpr int kEnergySamples = 257;
 // Forward-difference step of the Jacobian, scaled coordinates (lengths / size, rad).
 constexpr double kJacobianStep = 1e-7;
+// Central-difference step of the linearised Jacobian (the flexures' tips linear in their loads,
+// from the integrator's sensitivities: no integration noise; error about h^2 = 1e-12).
+constexpr double kLinearisedStep = 1e-6;
 
 std::string fmt(double v) {
   std::ostringstream out;
@@ -36,9 +41,10 @@ std::string fmt(double v) {
 // assembly's energy scale K: forces F L/K, moments M/K, EI/(K L)).
 struct FlexureBeam {
   const Flexure* flexure = nullptr;
-  SegmentChain chain;      // one flexible segment (scaled), for the integrator
-  double length = 0.0;     // scaled
-  double EI = 0.0;         // scaled
+  SegmentChain chain;   // one flexible segment (scaled), for the integrator
+  double length = 0.0;  // scaled
+  double EI = 0.0;      // scaled
+  double EA = std::numeric_limits<double>::infinity();  // scaled; infinite: inextensible
   double direction = 0.0;  // rest angle of the flexure from a to b, rad
   bool pinned_tip = false;
   // kExact: an elastica with unknowns w = its root loads (m0, Nx, Ny). Any other model (mixed):
@@ -50,6 +56,23 @@ struct FlexureBeam {
 // The tip state of a beam integrated from its root loads: x, y, theta, m in the root frame.
 struct BeamTip {
   double x = 0.0, y = 0.0, theta = 0.0, m = 0.0;
+};
+
+// An exact flexure's tip linearised in its root loads at w0 (the integrator's sensitivities).
+struct TipLinearisation {
+  Eigen::Vector3d w0;
+  Eigen::Vector4d tip0;
+  Eigen::Matrix<double, 4, 3> S;
+  BeamTip at(const Eigen::Vector3d& w) const {
+    const Eigen::Vector4d t = tip0 + S * (w - w0);
+    return {t[0], t[1], t[2], t[3]};
+  }
+};
+
+// The verdicts of one equilibrium (exact_stability.h).
+struct PointVerdicts {
+  Stability displacement_control;
+  Stability force_control;
 };
 
 // Mixed formulation: the unknowns are the bodies' coordinates q, the joints' multipliers mu, the
@@ -69,7 +92,9 @@ class ExactSystem {
         N_(a.coordinate_count()),
         m_(a.constraint_count()),
         integrator_(ElasticaIntegrator::Options{}),
-        report_integrator_(ElasticaIntegrator::Options{}) {
+        report_integrator_(ElasticaIntegrator::Options{}),
+        sensitivity_integrator_(ElasticaIntegrator::Options{}),
+        shape_integrator_(ElasticaIntegrator::Options{}) {
     const double L = a.length_scale();
     for (const Flexure& f : m.flexures) {
       FlexureBeam b;
@@ -81,6 +106,11 @@ class ExactSystem {
       b.direction = std::atan2(pb.y - pa.y, pb.x - pa.x);
       b.pinned_tip = f.prbm == PrbmKind::kFixedPinned;
       b.chain.segments.push_back(FlexibleSegment{b.length, b.EI, {}, 0.0});
+      if (f.extensible) {
+        // EA scaled as a force (F L/K): the strain N/EA is the same in both units.
+        b.EA = f.axial_rigidity() * L / a.energy_scale();
+        std::get<FlexibleSegment>(b.chain.segments.back()).EA = b.EA;
+      }
       if (!models.empty()) {
         b.model = models[beams_.size()];
         b.elements = elements[beams_.size()];
@@ -184,6 +214,8 @@ class ExactSystem {
         }
         // m(s) = m0 + Nx y(s) - Ny x(s): the root moment of the tip loads.
         m0 = w[0] - w[1] * tip.y + w[2] * tip.x;
+      } else if (!linear_.empty()) {
+        tip = linear_[i].at(w);
       } else if (!integrate(b, w, tip)) {
         return false;
       }
@@ -279,9 +311,225 @@ class ExactSystem {
         const double ma = w[0] + w[1] * p0.y - w[2] * p0.x;
         const double mb = w[0] + w[1] * p1.y - w[2] * p1.x;
         U += 0.5 * (ma * ma + mb * mb) / (2.0 * b.EI) * (p1.s - p0.s);
+        if (std::isfinite(b.EA)) {
+          // The axial strain energy N_a^2/(2 EA), N_a = N . t (Reissner; docs/extensible.md).
+          const double na = w[1] * std::cos(p0.theta) + w[2] * std::sin(p0.theta);
+          const double nb = w[1] * std::cos(p1.theta) + w[2] * std::sin(p1.theta);
+          U += 0.5 * (na * na + nb * nb) / (2.0 * b.EA) * (p1.s - p0.s);
+        }
       }
     }
     return U;
+  }
+
+  // Linearises every exact flexure's tip in its root loads at z (sensitivity integration).
+  bool linearise(const VectorXd& z) {
+    linear_.clear();
+    std::vector<TipLinearisation> lin(beams_.size());
+    for (std::size_t i = 0; i < beams_.size(); ++i) {
+      const FlexureBeam& b = beams_[i];
+      if (b.model != FlexureModel::kExact) continue;
+      const Eigen::Vector3d w = z.segment<3>(flexure_offset() + 3 * static_cast<int>(i));
+      ChainForces forces;
+      forces.m0 = w[0];
+      forces.N = {Eigen::Vector2d(w[1], w[2])};
+      forces.moment_drop = {0.0, 0.0};
+      // Parameters m0, Nx, Ny: m0 enters the start state, N the segment's force.
+      std::vector<ForceDerivative> d(3);
+      d[0].dN = {Eigen::Vector2d(0.0, 0.0)};
+      d[1].dN = {Eigen::Vector2d(1.0, 0.0)};
+      d[2].dN = {Eigen::Vector2d(0.0, 1.0)};
+      Eigen::Matrix<double, 4, Eigen::Dynamic> start = Eigen::Matrix<double, 4, 3>::Zero();
+      start(3, 0) = 1.0;
+      const std::vector<IntegrationPiece> pieces{IntegrationPiece{0, 0.0, b.length, 0.0, false}};
+      TipState end;
+      std::string error;
+      if (!sensitivity_integrator_.integrate(
+              b.chain, pieces, forces, d, Eigen::Vector4d(0, 0, 0, w[0]), start, end, error)) {
+        return false;
+      }
+      lin[i].w0 = w;
+      lin[i].tip0 = Eigen::Vector4d(end.x, end.y, end.theta, end.m);
+      lin[i].S = end.sensitivity.leftCols(3);
+    }
+    linear_ = std::move(lin);
+    return true;
+  }
+
+  // The Jacobian of the residual in z at (z, s), and its column in s (-e at the input's row):
+  // central differences with every exact flexure's tip linearised in its loads.
+  bool linearised_jacobian(const VectorXd& z, double s, MatrixXd& J) {
+    if (!linearise(z)) {
+      return false;
+    }
+    J.resize(size(), size());
+    bool ok = true;
+    for (int j = 0; j < size() && ok; ++j) {
+      const double h = kLinearisedStep * std::max(1.0, std::fabs(z[j]));
+      VectorXd zp = z, zm = z;
+      zp[j] += h;
+      zm[j] -= h;
+      VectorXd Fp, Fm;
+      ok = residual(zp, s, Fp) && residual(zm, s, Fm);
+      if (ok) J.col(j) = (Fp - Fm) / (2.0 * h);
+    }
+    linear_.clear();
+    return ok;
+  }
+
+  // Flexure i's shape at the arc lengths `stations` (scaled) from its root loads w.
+  std::vector<ShapePoint> shape_at(std::size_t i,
+                                   const Eigen::Vector3d& w,
+                                   const std::vector<double>& stations) {
+    const FlexureBeam& b = beams_[i];
+    ChainForces forces;
+    forces.m0 = w[0];
+    forces.N = {Eigen::Vector2d(w[1], w[2])};
+    forces.moment_drop = {0.0, 0.0};
+    const std::vector<IntegrationPiece> pieces{IntegrationPiece{0, 0.0, b.length, 0.0, false}};
+    TipState end;
+    std::string error;
+    std::vector<ShapePoint> shape;
+    const Eigen::Matrix<double, 4, Eigen::Dynamic> none(4, 0);
+    if (!shape_integrator_.integrate(b.chain,
+                                     pieces,
+                                     forces,
+                                     {},
+                                     Eigen::Vector4d(0, 0, 0, w[0]),
+                                     none,
+                                     end,
+                                     error,
+                                     &stations,
+                                     &shape)) {
+      throw NoConvergence("flexure '" + b.flexure->name + "': its shape could not be integrated (" +
+                          error + ")");
+    }
+    return shape;
+  }
+
+  // The verdicts of the equilibrium z at input s (exact_stability.h): each exact flexure's own
+  // second variation with its ends held, plus the condensed stiffness of the mechanism's free
+  // directions with the input held (displacement control) or free under its dead load (force
+  // control).
+  PointVerdicts judge(const VectorXd& z, double s, double critical_tolerance) {
+    PointVerdicts v;
+    MatrixXd J;
+    if (!linearised_jacobian(z, s, J)) {
+      v.displacement_control = not_checked_stability(
+          "the exact model's linearisation failed at this point (an integration did not finish)");
+      v.force_control = v.displacement_control;
+      return v;
+    }
+    const VectorXd q = z.head(N_);
+    const int n = size();
+    // Reference stiffness: the springs' unloaded stiffness and every flexure's linear bending
+    // stiffness in its current root frame (12 EI/l^3, -6 EI/l^2, 4 EI/l across and in rotation,
+    // Euler-Bernoulli; 3 EI/l^3 across a pinned tip), on the tip's motion dq. Along the flexure
+    // it counts the transverse value: an inextensible flexure's axial stiffness is infinite, and
+    // even EA/l would dwarf the bending and leave every bending direction's margin near 0.
+    MatrixXd B = a_.unloaded_stiffness(q);
+    int flexures_judged = 0;
+    int flexures_unjudged = 0;
+    int index_flexures = 0;
+    double margin_flexures = 1.0;
+    std::string flexure_notes;
+    for (std::size_t i = 0; i < beams_.size(); ++i) {
+      const FlexureBeam& b = beams_[i];
+      const int o = flexure_offset() + 3 * static_cast<int>(i);
+      const double l = b.length, EI = b.EI;
+      const int rows = b.pinned_tip ? 2 : 3;
+      const MatrixXd T = -J.block(o, 0, rows, N_);  // d(tip pose in the root frame)/dq
+      MatrixXd K = MatrixXd::Zero(rows, rows);
+      K(0, 0) = (b.pinned_tip ? 3.0 : 12.0) * EI / (l * l * l);
+      if (b.pinned_tip) {
+        K(1, 1) = 3.0 * EI / (l * l * l);
+      } else {
+        K(1, 1) = 12.0 * EI / (l * l * l);
+        K(1, 2) = K(2, 1) = -6.0 * EI / (l * l);
+        K(2, 2) = 4.0 * EI / l;
+      }
+      B += T.transpose() * K * T;
+      if (b.model != FlexureModel::kExact) {
+        flexure_notes += "; flexure '" + b.flexure->name + "' (" +
+                         std::string(flexure_model_name(b.model)) +
+                         ") judged by its tip relation only";
+        continue;
+      }
+      if (std::isfinite(b.EA)) {
+        ++flexures_unjudged;
+        flexure_notes += "; flexure '" + b.flexure->name +
+                         "' (extensible) not judged with its ends held: the second variation of "
+                         "extensible chains is not computed (docs/extensible.md)";
+        continue;
+      }
+      // The flexure with both ends held: a clamped-clamped (or clamped-pinned) chain under the
+      // end force its far body puts on its tip, which acts like a dead load in the second
+      // variation (docs/stability.md "What is computed").
+      const Eigen::Vector3d w = z.segment<3>(o);
+      SegmentChain chain = b.chain;
+      chain.end = b.pinned_tip ? EndCondition::kPinned : EndCondition::kFixed;
+      StabilityOptions so;
+      so.critical_tolerance = critical_tolerance;
+      const Stability fv = equilibrium_stability(
+          chain,
+          Reaction{w[1], w[2], 0.0},
+          [&](const std::vector<double>& st) { return shape_at(i, w, st); },
+          so);
+      if (!fv.judged()) {
+        ++flexures_unjudged;
+        flexure_notes += "; flexure '" + b.flexure->name + "' not judged: " + fv.message;
+        continue;
+      }
+      ++flexures_judged;
+      index_flexures += fv.index;
+      margin_flexures = std::min(margin_flexures, fv.margin);
+      if (fv.index > 0) {
+        flexure_notes += "; flexure '" + b.flexure->name + "' unstable with its ends held (index " +
+                         std::to_string(fv.index) + ")";
+      }
+    }
+    const MatrixXd Jg = a_.constraint_jacobian(q);
+    auto condensed = [&](const MatrixXd& Jsys, const MatrixXd& Z, const std::string& control) {
+      CondensedVerdict c;
+      if (Z.cols() > 0) {
+        MatrixXd rhs = MatrixXd::Zero(n, Z.cols());
+        rhs.topRows(N_) = Z;
+        const MatrixXd X = Jsys.fullPivLu().solve(rhs);
+        c = condensed_verdict(Z.transpose() * X.topRows(N_), Z.transpose() * B * Z);
+      }
+      const int index = c.index + index_flexures;
+      const double margin = std::min(c.margin, margin_flexures);
+      // An unjudged flexure leaves the index a lower bound (the inertia adds up): unstable is
+      // still a verdict, stable is not.
+      Stability st = flexures_unjudged > 0 && index == 0
+                         ? not_checked_stability(
+                               "no negative direction found, but not every flexure could be "
+                               "judged with its ends held")
+                         : classify_stability(index, margin, critical_tolerance, "the mechanism");
+      st.message += fmt::format(
+          " under {} control (exact model: {} free direction(s) of the bodies, condensed "
+          "stiffness index {} and margin {:.6g} against the unloaded flexures and springs; {} "
+          "flexure(s) with their ends held, index {}, lowest margin {:.6g}{})",
+          control,
+          Z.cols(),
+          c.index,
+          c.margin,
+          flexures_judged,
+          index_flexures,
+          margin_flexures,
+          flexure_notes);
+      return st;
+    };
+    MatrixXd Jd(Jg.rows() + 1, N_);
+    Jd << Jg, a_.input_gradient(q).transpose();
+    v.displacement_control = condensed(J, exact_null_space(Jd, N_), "displacement");
+    // Force control: the input coordinate free, its load lambda given: the column of lambda
+    // becomes the column of s.
+    MatrixXd Jf = J;
+    Jf.col(N_ + m_).setZero();
+    Jf(N_ + m_, N_ + m_) = -1.0;
+    v.force_control = condensed(Jf, exact_null_space(Jg, N_), "force");
+    return v;
   }
 
   double residual() const { return residual_; }
@@ -294,23 +542,68 @@ class ExactSystem {
   // For flexure_state: the integrator keeps state between calls (its step size), so the reports
   // use their own and leave the Newton iteration's numbers exactly those of the exact model.
   ElasticaIntegrator report_integrator_;
+  // The verdicts' own integrators (sensitivities; shapes), for the same reason.
+  ElasticaIntegrator sensitivity_integrator_;
+  ElasticaIntegrator shape_integrator_;
+  std::vector<TipLinearisation> linear_;  // non-empty: residual() uses these tips
   double residual_ = 0.0;
 };
 
 Stability exact_not_checked() {
-  return not_checked_stability(
-      "the exact model of a general mechanism does not judge stability yet");
+  return not_checked_stability("not judged (GeneralExactOptions::judge_stability is off)");
 }
 
 }  // namespace
+
+// The joints' structure without the flexures (a mechanism with an extensible flexure): independent
+// joints, a freedom to move, an input that moves to first order (or a start_rotation). Returns
+// the degrees of freedom with the input free.
+int check_joints(const GeneralMechanism& mechanism, const PrbmAssembly& A) {
+  const int N = A.coordinate_count();
+  const VectorXd q0 = VectorXd::Zero(N);
+  const MatrixXd Jg = A.constraint_jacobian(q0);
+  auto rank = [](const MatrixXd& M) {
+    if (M.rows() == 0) return 0;
+    Eigen::JacobiSVD<MatrixXd> svd(M);
+    const VectorXd& sv = svd.singularValues();
+    int r = 0;
+    for (int i = 0; i < sv.size(); ++i) r += sv[i] > 1e-9 * std::max(1.0, sv[0]) ? 1 : 0;
+    return r;
+  };
+  const int rg = rank(Jg);
+  if (rg < Jg.rows()) {
+    throw InvalidInput(mechanism.where(0) +
+                       "the joints are redundant in the described "
+                       "configuration (over-constrained mechanisms are not supported)");
+  }
+  const int dof = N - rg;
+  MatrixXd Jd(Jg.rows() + 1, N);
+  Jd << Jg, A.input_gradient(q0).transpose();
+  if (dof == 0) {
+    throw InvalidInput(mechanism.where(mechanism.input.line) +
+                       "input: the joints leave the mechanism no freedom to move");
+  }
+  if (rank(Jd) == rg && mechanism.input.start_rotation.empty()) {
+    throw InvalidInput(mechanism.where(mechanism.input.line) +
+                       "input: the input coordinate cannot move to first order in the described "
+                       "configuration (a dead point); give the input a start_rotation");
+  }
+  return dof;
+}
 
 void GeneralExactOptions::validate() const {
   if (!(tolerance > 0.0) || !(tolerance < 1e-3)) {
     throw InvalidInput("GeneralExactOptions.tolerance must be in (0, 1e-3)");
   }
+  if (!(critical_tolerance >= 0.0) || !std::isfinite(critical_tolerance)) {
+    throw InvalidInput("GeneralExactOptions.critical_tolerance must be finite and >= 0");
+  }
   if (max_newton_iterations < 1 || max_step_halvings < 0) {
     throw InvalidInput(
         "GeneralExactOptions.max_newton_iterations must be >= 1, max_step_halvings >= 0");
+  }
+  if (max_steps < 1 || !(max_step > 0.0) || !(max_step <= 1.0)) {
+    throw InvalidInput("GeneralExactOptions.max_steps must be >= 1 and max_step in (0, 1]");
   }
 }
 
@@ -326,13 +619,14 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
                                      std::vector<FlexureModelReport>* reports) {
   options.validate();
   mechanism.validate();
-  if (mechanism.input.control != InputControl::kDisplacement) {
-    throw InvalidInput(mechanism.where(mechanism.input.line) +
-                       "input: the exact model of a general mechanism follows displacement "
-                       "control only so far");
-  }
-  const int dof = check_general_mechanism(mechanism);
   const PrbmAssembly A(mechanism, /*assemble_flexures=*/false);
+  const bool extensible = std::any_of(mechanism.flexures.begin(),
+                                      mechanism.flexures.end(),
+                                      [](const Flexure& f) { return f.extensible; });
+  // The structural checks on the PRB linkage, unless a flexure is extensible: its PRBM element is
+  // inextensible and may lock a linkage that the extensible beam lets move (a beam between two
+  // bodies whose distance the joints fix), so the joints alone are checked then.
+  const int dof = extensible ? check_joints(mechanism, A) : check_general_mechanism(mechanism);
   ExactSystem S(mechanism, A, models, elements);
   const int N = A.coordinate_count();
   const int m = A.constraint_count();
@@ -362,7 +656,9 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
       const auto it = std::find(names.begin(), names.end(), body);
       z[3 * (it - names.begin()) + 2] = angle;
     }
-    s = grid.front();
+    // Displacement control: the first grid value; force control: the input where the rotations
+    // put it, from which the path follows the load.
+    s = in.control == InputControl::kDisplacement ? grid.front() : A.input(z.head(N));
     if (!S.newton(z, s, options.tolerance, options.max_newton_iterations, &iterations)) {
       return fail(
           "Newton did not converge at the first input value from the given "
@@ -407,8 +703,14 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
     const double strain = S.strain_energy(z);
     pt.spring_energy = A.energy_si(A.spring_energy(q) + strain);
     pt.energy = A.energy_si(A.energy(q) + strain);
-    pt.displacement_control = exact_not_checked();
-    pt.force_control = exact_not_checked();
+    if (options.judge_stability) {
+      PointVerdicts v = S.judge(z, s, options.critical_tolerance);
+      pt.displacement_control = std::move(v.displacement_control);
+      pt.force_control = std::move(v.force_control);
+    } else {
+      pt.displacement_control = exact_not_checked();
+      pt.force_control = exact_not_checked();
+    }
     for (int b = 0; b < A.described_body_count(); ++b) {
       pt.body_x.push_back(q[3 * b] * A.length_scale());
       pt.body_y.push_back(q[3 * b + 1] * A.length_scale());
@@ -430,9 +732,272 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
     result.points.push_back(std::move(pt));
   };
 
+  // The pseudo-arclength path from (z_start, s_start): force control, and displacement control
+  // where the natural-parameter continuation below fails (a limit point of the input).
+  auto arclength_path = [&](const VectorXd& z_start, double s_start, bool force) {
+    // Force control: pseudo-arclength continuation of (z, s) through the limit points of the
+    // input load (where a dead load makes the mechanism snap), as the PRBM's path
+    // (general_prbm.cpp): the curve F(z, s) = 0, the grid values of lambda recorded where the path
+    // crosses them, limit points located by bisection on the tangent's lambda component. The
+    // Jacobian is the linearised one (ExactSystem::linearised_jacobian); the arclength is
+    // measured on the bodies' coordinates, lambda and s only (the joints' multipliers and the
+    // flexures' loads follow them and are on other scales).
+    const int n = S.size();
+    // The controlled quantity in y = (z, s): lambda (force control) or s.
+    const int p = force ? N + m : n;
+    VectorXd weight = VectorXd::Zero(n + 1);
+    weight.head(N).setOnes();
+    weight[p] = 1.0;
+    weight[n] = 1.0;
+    auto F_of = [&](const VectorXd& y, VectorXd& F) { return S.residual(y.head(n), y[n], F); };
+    auto J_of = [&](const VectorXd& y, MatrixXd& J) {
+      MatrixXd Jz;
+      if (!S.linearised_jacobian(y.head(n), y[n], Jz)) return false;
+      J = MatrixXd::Zero(n, n + 1);
+      J.leftCols(n) = Jz;
+      J(N + m, n) = -1.0;
+      return true;
+    };
+    double worst = 0.0;
+    auto newton_fixed = [&](VectorXd& y, int fixed) {
+      for (int it = 0; it <= options.max_newton_iterations; ++it) {
+        VectorXd F;
+        if (!F_of(y, F)) return false;
+        const double r = F.lpNorm<Eigen::Infinity>();
+        if (r < options.tolerance) {
+          worst = std::max(worst, r);
+          return true;
+        }
+        MatrixXd J;
+        if (!J_of(y, J)) return false;
+        ++iterations;
+        MatrixXd Js(n, n);
+        Js << J.leftCols(fixed), J.rightCols(n - fixed);
+        const VectorXd dx = Js.fullPivLu().solve(-F);
+        if (!dx.allFinite()) return false;
+        for (int i = 0, k = 0; i <= n; ++i) {
+          if (i != fixed) y[i] += dx[k++];
+        }
+      }
+      return false;
+    };
+    // Unit tangent in the weighted norm, oriented along `orient` (weighted).
+    auto tangent = [&](const VectorXd& y, const VectorXd& orient, VectorXd& t) {
+      MatrixXd J;
+      if (!J_of(y, J)) return false;
+      MatrixXd M(n + 1, n + 1);
+      M.topRows(n) = J;
+      M.row(n) = orient.cwiseProduct(weight).transpose();
+      VectorXd rhs = VectorXd::Zero(n + 1);
+      rhs[n] = 1.0;
+      t = M.fullPivLu().solve(rhs);
+      const double norm = t.cwiseProduct(weight).norm();
+      if (!t.allFinite() || !(norm > 0.0)) return false;
+      t /= norm;
+      if (t.cwiseProduct(weight).dot(orient) < 0.0) t = -t;
+      return true;
+    };
+    auto corrector = [&](VectorXd& y, const VectorXd& base, const VectorXd& t, double h) {
+      const VectorXd tw = t.cwiseProduct(weight);
+      for (int it = 0; it <= options.max_newton_iterations; ++it) {
+        VectorXd F;
+        if (!F_of(y, F)) return -1;
+        VectorXd f(n + 1);
+        f.head(n) = F;
+        f[n] = tw.dot(y - base) - h;
+        if (f.lpNorm<Eigen::Infinity>() < options.tolerance) return it;
+        MatrixXd J;
+        if (!J_of(y, J)) return -1;
+        ++iterations;
+        MatrixXd M(n + 1, n + 1);
+        M.topRows(n) = J;
+        M.row(n) = tw.transpose();
+        const VectorXd dx = M.fullPivLu().solve(-f);
+        if (!dx.allFinite()) return -1;
+        y += dx;
+      }
+      return -1;
+    };
+    std::vector<double> loads = grid;  // the controlled quantity's grid values, scaled
+    if (force) {
+      for (int i = 0; i < in.count; ++i) {
+        loads[static_cast<std::size_t>(i)] =
+            A.load_scaled(in.start + (in.stop - in.start) * i / (in.count - 1));
+      }
+    }
+    std::vector<VectorXd> dense;
+    int steps = 0;
+    auto record_y = [&](const VectorXd& y) {
+      z = y.head(n);
+      s = y[n];
+      record();
+    };
+    auto follow = [&](VectorXd& yc, double target, bool recording) -> Termination {
+      VectorXd orient = VectorXd::Zero(n + 1);
+      orient[p] = target >= yc[p] ? 1.0 : -1.0;
+      VectorXd t;
+      if (!tangent(yc, orient, t)) return Termination::kNoConvergence;
+      double h = options.max_step;
+      if (recording) dense.push_back(yc);
+      while (steps < options.max_steps) {
+        VectorXd yn = yc + h * t;
+        const int its = corrector(yn, yc, t, h);
+        VectorXd tn;
+        bool ok = its >= 0 && tangent(yn, t, tn) &&
+                  t.cwiseProduct(weight).dot(tn.cwiseProduct(weight)) > 0.9;
+        if (!ok) {
+          h *= 0.5;
+          if (h < 1e-10) return Termination::kNoConvergence;
+          continue;
+        }
+        ++steps;
+        if (t[p] * tn[p] < 0.0) {
+          // A limit point of the load inside this step: bisect the arclength on the sign of the
+          // tangent's lambda component.
+          double lo = 0.0, hi = h;
+          VectorXd yl = yn;
+          for (int k = 0; k < 60 && hi - lo > 1e-13; ++k) {
+            const double mid = 0.5 * (lo + hi);
+            VectorXd ym = yc + mid * t;
+            VectorXd tm;
+            if (corrector(ym, yc, t, mid) < 0 || !tangent(ym, t, tm)) break;
+            (tm[p] * t[p] > 0.0 ? lo : hi) = mid;
+            yl = ym;
+          }
+          result.limit_inputs.push_back(A.input_si(yl[n]));
+          result.limit_loads.push_back(A.load_si(yl[p]));
+        }
+        const double from = yc[p], to = yn[p];
+        auto crossed = [&](double v) { return (v - from) * (v - to) <= 0.0 && v != from; };
+        auto solve_at = [&](double v, VectorXd& out) {
+          out = yc + ((v - from) / (to - from)) * (yn - yc);
+          out[p] = v;
+          return newton_fixed(out, p);
+        };
+        if (recording) {
+          std::vector<double> hits;
+          for (double v : loads) {
+            if (crossed(v)) hits.push_back(v);
+          }
+          std::sort(hits.begin(), hits.end(), [&](double x, double y) {
+            return to > from ? x < y : x > y;
+          });
+          for (double v : hits) {
+            VectorXd yg;
+            if (!solve_at(v, yg)) return Termination::kNoConvergence;
+            record_y(yg);
+          }
+          dense.push_back(yn);
+          // A path that keeps crossing the grid (a closed curve of a linkage driven past the end
+          // of its travel) has turned back for good: stop rather than go round it.
+          if (result.points.size() > 4 * static_cast<std::size_t>(in.count)) {
+            return Termination::kLimitPoint;
+          }
+        }
+        if (crossed(target)) {
+          VectorXd yt;
+          if (!solve_at(target, yt)) return Termination::kNoConvergence;
+          yc = yt;
+          return Termination::kConverged;
+        }
+        yc = yn;
+        t = tn;
+        if (its <= 3) h = std::min(1.5 * h, options.max_step);
+      }
+      return Termination::kLimitPoint;
+    };
+    VectorXd y(n + 1);
+    y << z_start, s_start;
+    Termination end = Termination::kConverged;
+    if (y[p] != loads.front()) {
+      end = follow(y, loads.front(), false);
+    } else {
+      worst = std::max(worst, S.residual());
+    }
+    if (end == Termination::kConverged) {
+      record_y(y);
+      result.limit_inputs.clear();
+      result.limit_loads.clear();
+      end = follow(y, loads.back(), true);
+    }
+    result.iterations = iterations;
+    result.termination = end;
+    if (end == Termination::kLimitPoint) {
+      result.message =
+          std::string("the exact model's path did not reach the end of the ") +
+          (force ? "load" : "input") + " range after " + std::to_string(steps) + " steps" +
+          (result.limit_inputs.empty()
+               ? std::string()
+               : "; it turned back at a limit point at input " + fmt(result.limit_inputs.front()));
+    } else if (end == Termination::kNoConvergence) {
+      result.message = "the exact model's continuation failed after " + std::to_string(steps) +
+                       " steps (" + std::to_string(result.points.size()) + " of " +
+                       std::to_string(in.count) + " points)";
+    }
+    // Equilibria of the unloaded mechanism: sign changes of lambda along the path, by Newton
+    // with lambda = 0.
+    for (std::size_t i = 0; i + 1 < dense.size(); ++i) {
+      const double l0 = dense[i][p], l1 = dense[i + 1][p];
+      if (!(l0 * l1 <= 0.0)) continue;
+      VectorXd ye =
+          l0 == l1 ? dense[i] : VectorXd(dense[i] + (l0 / (l0 - l1)) * (dense[i + 1] - dense[i]));
+      ye[p] = 0.0;
+      if (!newton_fixed(ye, p)) {
+        result.warn(WarningKind::kOther,
+                    "an exact equilibrium near input " + fmt(A.input_si(dense[i][n])) +
+                        " was bracketed but Newton did not converge");
+        continue;
+      }
+      const double se = A.input_si(ye[n]);
+      if (!result.equilibria.empty() &&
+          std::fabs(result.equilibria.back().input - se) <
+              1e-9 * std::max(1.0, std::fabs(se)) * (A.input_is_angle() ? 1.0 : A.length_scale())) {
+        continue;
+      }
+      GeneralEquilibrium e;
+      e.input = se;
+      e.energy = A.energy_si(A.energy(ye.head(N)) + S.strain_energy(ye.head(n)));
+      e.stability = options.judge_stability
+                        ? S.judge(ye.head(n), ye[n], options.critical_tolerance).force_control
+                        : exact_not_checked();
+      result.equilibria.push_back(std::move(e));
+    }
+    result.residual = std::max(worst, S.residual());
+    return result;
+  };
+  if (in.control == InputControl::kForce) {
+    return arclength_path(z, s, true);
+  }
+  const VectorXd z_start = z;
+  const double s_start = s;
+
   std::vector<std::pair<double, VectorXd>> path;  // (s, z) at the grid points
   for (std::size_t i = 0; i < grid.size(); ++i) {
     if (!advance(grid[i])) {
+      // A limit point of the input (or a step Newton cannot make): the whole path again by
+      // arclength, which passes limit points and records the grid values where it crosses them.
+      GeneralPrbmResult natural = result;
+      std::vector<FlexureModelReport> natural_reports;
+      if (reports != nullptr) {
+        natural_reports = *reports;
+        for (FlexureModelReport& rep : *reports) {
+          rep.loads.clear();
+          rep.tips.clear();
+        }
+      }
+      result.points.clear();
+      GeneralPrbmResult again = arclength_path(z_start, s_start, false);
+      if (again.converged() || again.points.size() > natural.points.size()) {
+        if (again.converged()) {
+          again.warn(WarningKind::kOther,
+                     "the exact model's natural-parameter continuation stopped before input " +
+                         fmt(A.input_si(grid[i])) +
+                         "; the path was followed by arclength instead (through limit points)");
+        }
+        return again;
+      }
+      result = std::move(natural);
+      if (reports != nullptr) *reports = std::move(natural_reports);
       result.iterations = iterations;
       result.termination = Termination::kNoConvergence;
       result.message = "the exact model's continuation failed before input " +
@@ -480,7 +1045,8 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
     GeneralEquilibrium e;
     e.input = A.input_si(s);
     e.energy = A.energy_si(A.energy(z.head(N)) + S.strain_energy(z));
-    e.stability = exact_not_checked();
+    e.stability = options.judge_stability ? S.judge(z, s, options.critical_tolerance).force_control
+                                          : exact_not_checked();
     result.equilibria.push_back(std::move(e));
   }
   result.iterations = iterations;

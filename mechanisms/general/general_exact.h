@@ -1,19 +1,23 @@
 #pragma once
 // The exact model of a general mechanism (issue 31; docs/mechanisms.md "General mechanisms"):
-// every flexure an inextensible elastica between its two bodies -- clamped at both ends, or
-// pinned at the far end for a flexure whose PRBM is fixed-pinned -- integrated from its root loads
-// by the shooting method's integrator (solver/shooting/elastica_integrator.h, Prince-Dormand 8(7)
-// at rtol 1e-12), and one Newton system for the whole mechanism (mixed formulation):
+// every flexure an inextensible elastica (or, with Flexure::extensible, Reissner's beam with
+// EA = E b h) between its two bodies -- clamped at both ends, or pinned at the far end for a
+// flexure whose PRBM is fixed-pinned -- integrated from its root loads by the shooting method's
+// integrator (solver/shooting/elastica_integrator.h, Prince-Dormand 8(7) at rtol 1e-12), and one
+// Newton system for the whole mechanism (mixed formulation):
 //
 //   grad V(q) - lambda grad c(q) - J_g(q)^T mu - Q(q, w) = 0,   g(q) = 0,   c(q) = s,
 //   tip_f(w_f) = pose of body b's end of flexure f in the frame of its root (3 per flexure),
 //
 // w_f = (m0, Nx, Ny) the root loads of flexure f, Q the generalised force of the flexures' end
-// loads on the bodies, V the springs and dead loads. Displacement control only, over the input
-// grid by natural-parameter continuation with a secant predictor (no limit points of the input);
-// the Jacobian is a forward difference of the residual. Equilibria of the unloaded mechanism: sign
-// changes of the input load refined by the secant method on s. Stability is not computed yet
-// (not_checked).
+// loads on the bodies, V the springs and dead loads. Displacement control: over the input grid by
+// natural-parameter continuation with a secant predictor (forward-difference Jacobian), and where
+// that stops (a limit point of the input) by pseudo-arclength continuation from the start. Force
+// control: pseudo-arclength continuation through the limit points of the load (the PRBM path's
+// algorithm, general_prbm.h; the Jacobian linearised: the flexures' tips from the integrator's
+// sensitivities). Equilibria of the unloaded mechanism: sign changes of the input load, refined
+// by the secant method on s (displacement control) or Newton at zero load (force control). Every
+// point and equilibrium is judged under both controls (exact_stability.h).
 #include <string>
 #include <vector>
 
@@ -27,17 +31,25 @@ struct GeneralExactOptions {
   double tolerance = 1e-10;  // Newton: max residual of the scaled equations
   int max_newton_iterations = 40;
   int max_step_halvings = 12;  // of the input step when Newton fails
+  // Force control (pseudo-arclength continuation): steps before giving up, and the largest step
+  // (scaled: the bodies' coordinates in lengths / size and rad, the input load, the input).
+  int max_steps = 20000;
+  double max_step = 0.05;
   // solve_general_mixed: measure each flexure's model against the exact elastica under the loads
   // it carries at every point (FlexureModelReport::measured_error; an elliptic solve each).
   bool measure_flexure_errors = false;
+  // Judge every recorded point and equilibrium (exact_stability.h): on by default; |margin| <=
+  // critical_tolerance is critical.
+  bool judge_stability = true;
+  double critical_tolerance = kCriticalMarginTolerance;
   // Throws InvalidInput naming the field.
   void validate() const;
 };
 
 // The same result type as the PRBM's: points (input, input_load, energy = the flexures' strain
-// energy plus the springs' minus the loads' work; stability not_checked), equilibria (stability
-// not_checked), no limit points. iterations: Newton iterations in all; residual: the largest
-// scaled residual of the recorded points.
+// energy plus the springs' minus the loads' work; the verdicts of exact_stability.h), equilibria
+// (judged with the input free), limit points of the controlled quantity. iterations: Newton
+// iterations in all; residual: the largest scaled residual of the recorded points.
 GeneralPrbmResult solve_general_exact(const GeneralMechanism& mechanism,
                                       const GeneralExactOptions& options = {});
 

@@ -94,11 +94,16 @@ struct Flexure {
   // auto: the largest mapped tip position error allowed, per length of the flexure (> 0).
   double tolerance = 0.0;
   int elements = 6;  // cbcm: BCM elements (the error map's CBCM has 6)
+  // The exact model only: an extensible elastica (Reissner's beam with axial strain N/EA,
+  // EA = E b h; docs/extensible.md), for a flexure that must be compressed or stretched (a beam
+  // between two bodies whose distance the joints fix). The PRBM and the ladder's models ignore it.
+  bool extensible = false;
   int line = 0;
 
   double flexural_rigidity() const {
     return youngs_modulus * width * thickness * thickness * thickness / 12.0;
   }
+  double axial_rigidity() const { return youngs_modulus * width * thickness; }
 };
 
 struct LinearSpring {

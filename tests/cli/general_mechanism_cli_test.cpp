@@ -138,8 +138,17 @@ TEST(GeneralMechanismCli, BothModels) {
                 j["models"]["prbm"]["equilibria"][i]["input"].get<double>(),
                 1e-8);
   }
-  EXPECT_EQ(exact["equilibria"][1]["stability"], "not_checked");
-  EXPECT_EQ(exact["stability"]["force_control"][0], "not_checked");
+  // The exact model's own verdicts (exact_stability.h): the PRBM's classification of the
+  // equilibria (Table 11.2), and its verdicts at the points where both models' torques slope the
+  // same way (before 8.6 deg both rise: stable under a dead torque).
+  for (int i : {0, 1, 2}) {
+    EXPECT_EQ(exact["equilibria"][i]["stability"],
+              j["models"]["prbm"]["equilibria"][i]["stability"]);
+  }
+  EXPECT_EQ(exact["equilibria"][1]["stability"], "unstable");
+  EXPECT_EQ(exact["equilibria"][1]["index"], 1);
+  EXPECT_EQ(exact["stability"]["force_control"][0], "stable");
+  EXPECT_EQ(exact["stability"]["displacement_control"][20], "stable");
 }
 
 // --model mixed on a built-in design (its general form): every flexure exact gives the catalogue's
@@ -237,6 +246,24 @@ TEST(GeneralMechanismCli, MixedModelKeysAndRefusals) {
   expect_refused("mechanism analyze 3A-sss --model mixed --material polypropylene",
                  {"--material", "--model mixed"});
   expect_refused("mechanism analyze 1B-plp --model mixed", {"pivot 2", "no general form"});
+}
+
+// The inclined bistable beam example: an extensible flexure (TOML `extensible = true`) between the
+// ground and a guided shuttle; the exact model crosses the straight position and the force changes
+// sign twice, the last zero the beam path's second stable position 9.696201 mm
+// (tests/mechanisms/general_exact_stability_test.cpp compares the numbers).
+TEST(GeneralMechanismCli, InclinedBistableBeamExample) {
+  const std::string file =
+      std::string("'") + FLEXURE_SOURCE_DIR + "/docs/examples/inclined_bistable_beam.toml'";
+  const CommandResult r = run_flexure("mechanism analyze " + file + " --model exact --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const std::vector<double> load = j["input_load"].get<std::vector<double>>();
+  ASSERT_EQ(load.size(), 121u);
+  int changes = 0;
+  for (std::size_t i = 2; i < load.size(); ++i) changes += load[i] * load[i - 1] < 0.0 ? 1 : 0;
+  EXPECT_EQ(changes, 2);
+  EXPECT_NEAR(6.709203e-3 - j["equilibria"].back()["input"].get<double>(), 9.696201e-3, 1e-7);
 }
 
 }  // namespace
