@@ -455,13 +455,6 @@ class ExactSystem {
                          ") judged by its tip relation only";
         continue;
       }
-      if (std::isfinite(b.EA)) {
-        ++flexures_unjudged;
-        flexure_notes += "; flexure '" + b.flexure->name +
-                         "' (extensible) not judged with its ends held: the second variation of "
-                         "extensible chains is not computed (docs/extensible.md)";
-        continue;
-      }
       // The flexure with both ends held: a clamped-clamped (or clamped-pinned) chain under the
       // end force its far body puts on its tip, which acts like a dead load in the second
       // variation (docs/stability.md "What is computed").

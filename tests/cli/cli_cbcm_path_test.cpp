@@ -20,10 +20,10 @@ using test::run_flexure;
 // The shooting path (docs/paths.md "Example: the inclined bistable beam"), d = the shuttle's
 // travel from y0 = L sin 5.5 deg, force = -tip_Fy.
 constexpr double kY0 = 0.0067092027;  // m
-constexpr double kBuckle = 1.289335e-3, kPush = 3.045964;
+constexpr double kBuckle = 1.289366e-3, kPush = 3.045947;
 constexpr double kUnstableZero = 6.709203e-3;
-constexpr double kPullAt = 8.046632e-3, kPull = -0.562133;
-constexpr double kStableZero = 9.696201e-3;
+constexpr double kPullAt = 8.046628e-3, kPull = -0.562119;
+constexpr double kStableZero = 9.696183e-3;
 
 std::string command(const std::string& method) {
   return fmt::format(
