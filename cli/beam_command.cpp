@@ -708,31 +708,11 @@ void run_beam(const BeamArgs& args, const BeamRequest& request) {
                     failure_hint(problem, solution)),
         std::move(reached));
   }
-  if (!problem.chain) require_finite_result(solution.alpha2, "alpha2");
-  if (physical) {
-    require_finite_result(physical->max_moment, "max_moment_Nm");
-    if (physical->max_stress) require_finite_result(*physical->max_stress, "max_stress");
-  }
-  require_finite_result(solution.tip.a_over_l, "a/l");
-  require_finite_result(solution.tip.b_over_l, "b/l");
-  require_finite_result(solution.tip.theta0, "theta0");
-  if (problem.shape_points > 0 && static_cast<int>(solution.shape.size()) != problem.shape_points) {
-    throw NoConvergence(fmt::format("method '{}' returned {} shape points instead of {}",
-                                    to_string(solution.method),
-                                    solution.shape.size(),
-                                    problem.shape_points));
-  }
+  require_complete_answer(problem, solution, physical ? &*physical : nullptr);
   warn(beam_warnings(problem, solution));
   std::optional<BeamFatigue> fatigue;
   if (!args.cycle.empty() && physical) fatigue = beam_fatigue(args, input, *physical);
-  if (fatigue && !fatigue->check.infinite_life) {
-    warn(
-        fmt::format("the {} load cycle has a finite life: about {:.3g} cycles (fatigue safety "
-                    "factor {:.3g})",
-                    load_cycle_name(fatigue->cycle),
-                    fatigue->check.cycles_to_failure,
-                    fatigue->check.safety_factor));
-  }
+  if (fatigue) warn(load_cycle_warnings(fatigue->cycle, fatigue->check));
   if (args.json) {
     Json out = to_json(input, problem, solution, physical);
     if (fatigue) add_fatigue_json(out, *fatigue);
