@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <utility>
 
 #include "flexure/solver/chain/chain_algorithm_solver.h"
@@ -291,6 +292,38 @@ void add_chain(BeamInput& input, PhysicalChain chain, bool in_si) {
   input.problem.boundary = chain.chain.end;
   input.chain = std::move(chain);
   input.chain_in_si = in_si;
+}
+
+namespace {
+
+void require_finite_answer(double value, const std::string& what) {
+  if (!std::isfinite(value)) {
+    throw NoConvergence(
+        fmt::format("{} came out as {}; no converged solution to report", what, value));
+  }
+}
+
+}  // namespace
+
+void require_complete_answer(const BeamProblem& problem,
+                             const BeamSolution& solution,
+                             const PhysicalResults* physical) {
+  if (!problem.chain) require_finite_answer(solution.alpha2, "alpha2");
+  if (physical) {
+    require_finite_answer(physical->max_moment, "max_moment_Nm");
+    if (physical->max_stress) require_finite_answer(*physical->max_stress, "max_stress");
+  }
+  require_finite_answer(solution.tip.a_over_l, "a/l");
+  require_finite_answer(solution.tip.b_over_l, "b/l");
+  require_finite_answer(solution.tip.theta0, "theta0");
+  // A method that converged but returned another number of shape points than asked (a bug to
+  // report, never a shorter curve passed on as the answer).
+  if (problem.shape_points > 0 && static_cast<int>(solution.shape.size()) != problem.shape_points) {
+    throw NoConvergence(fmt::format("method '{}' returned {} shape points instead of {}",
+                                    to_string(solution.method),
+                                    solution.shape.size(),
+                                    problem.shape_points));
+  }
 }
 
 std::vector<Warning> beam_answer_warnings(const BeamProblem& problem,

@@ -109,6 +109,15 @@ BeamInput make_beam_input(const BeamRequest& request, const BeamRequestNames& na
 void add_physical_beam(BeamInput& input, PhysicalCantilever beam);
 void add_chain(BeamInput& input, PhysicalChain chain, bool in_si);
 
+// Refuses (NoConvergence) an answer that reports convergence but misses what was asked, as every
+// front end refuses it: a value that came out NaN or infinite (Howell's alpha2 of a beam that has
+// it, the tip a/l, b/l, theta0, a physical beam's largest moment and stress), or a deflected shape
+// of another number of points than problem.shape_points. The messages name the value as the JSON
+// key of `flexure beam` does.
+void require_complete_answer(const BeamProblem& problem,
+                             const BeamSolution& solution,
+                             const PhysicalResults* physical = nullptr);
+
 // The warnings of an answer, as every front end reports them (stderr and the JSON key `warnings`
 // of `flexure beam`, FlexureWarning in Python), in this order: the solver's own (e.g. the BCM
 // beyond its stated deflection range), a PRBM outside its validity limits (kOutsideValidity,

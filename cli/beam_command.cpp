@@ -21,6 +21,7 @@
 #include "cli/modulus_output.h"
 #include "cli/physical_flags.h"
 #include "cli/warning_output.h"
+#include "flexure/beam/beam_keys.h"
 #include "flexure/beam/method_selector.h"
 #include "flexure/beam/physical_beam.h"
 #include "flexure/io/chain_toml.h"
@@ -185,7 +186,6 @@ void print_physical(const PhysicalResults& r) {
   }
 }
 
-Json number_or_null(double value);
 std::string special_points_words(const BeamSolution& solution);
 
 // "unstable, index 1, stability margin -0.215854 (the message)" (index and margin only when the
@@ -197,14 +197,6 @@ std::string stability_line(const Stability& s) {
                      s.index,
                      s.margin,
                      s.message);
-}
-
-// The stability keys (docs/cli.md): index and margin null unless the energy judged it.
-void add_stability_json(Json& out, const Stability& s) {
-  out["stability"] = std::string(stability_name(s.kind));
-  out["stability_index"] = s.judged() ? Json(s.index) : Json(nullptr);
-  out["stability_margin"] = s.judged() ? number_or_null(s.margin) : Json(nullptr);
-  out["stability_message"] = s.message;
 }
 
 void print_report(const BeamInput& input,
@@ -338,11 +330,6 @@ void print_report(const BeamInput& input,
   }
 }
 
-// NaN (a quantity the problem does not have) as null.
-Json number_or_null(double value) {
-  return std::isfinite(value) ? Json(value + 0.0) : Json(nullptr);
-}
-
 // The special points in words, for the text output ("" when none).
 std::string special_points_words(const BeamSolution& solution) {
   std::string text;
@@ -357,80 +344,7 @@ std::string special_points_words(const BeamSolution& solution) {
   return text;
 }
 
-Json reaction_json(const Reaction& r) {
-  return Json{
-      {"Fx", number_or_null(r.Fx)}, {"Fy", number_or_null(r.Fy)}, {"M", number_or_null(r.M)}};
-}
-
-// The physical keys (docs/cli.md, "Physical beams"): SI units, named with their unit where the
-// nondimensional output already uses the bare name.
-void add_physical_json(Json& out, const BeamInput& input, const PhysicalResults& r) {
-  out["units"] = "SI";
-  out["length_m"] = r.length;
-  if (input.physical) {
-    const PhysicalCantilever& b = *input.physical;
-    out["E_Pa"] = b.E;
-    out["I_m4"] = b.second_moment();
-    // The rigidity solved with: E I, or E I/(1 - nu^2) with the plate modulus.
-    out["EI_Nm2"] = r.modulus.empty() ? b.flexural_rigidity()
-                                      : r.modulus.front().effective_E * b.second_moment();
-    out["Fx_N"] = b.Fx;
-    out["Fy_N"] = b.Fy;
-    out["M_Nm"] = b.M;
-    if (b.shaped()) {
-      // A curved or tapered beam (EI_Nm2 and I_m4 above are the clamp's).
-      out["curvature_per_m"] = b.curvature;
-      out["width_tip_m"] = b.width_tip ? Json(*b.width_tip) : Json(nullptr);
-      out["thickness_tip_m"] = b.thickness_tip ? Json(*b.thickness_tip) : Json(nullptr);
-    }
-    if (b.beyond_elastica()) {
-      out["qx_N_per_m"] = b.qx;
-      out["qy_N_per_m"] = b.total_qy();  // including the self-weight
-      out["q_follower_N_per_m"] = b.q_follower;
-      if (b.extensible) {
-        out["EA_N"] = b.E * b.area().value_or(0.0);
-        out["GAs_N"] =
-            b.shear_coefficient * b.E / (2.0 * (1.0 + b.nu.value_or(0.0))) * b.area().value_or(0.0);
-      }
-    }
-  }
-  add_modulus_json(out, r.modulus);
-  out["max_axial_force_N"] = r.max_axial_force;
-  out["max_axial_strain"] = r.max_axial_strain ? Json(*r.max_axial_strain) : Json(nullptr);
-  out["tip_x"] = r.tip_x;
-  out["tip_y"] = r.tip_y;
-  out["root_moment_Nm"] = r.root_moment;
-  out["max_moment_Nm"] = r.max_moment;
-  out["max_moment_at_m"] = r.max_moment_at;
-  out["max_moment_from"] = r.max_from;
-  out["max_stress"] = r.max_stress ? Json(*r.max_stress) : Json(nullptr);
-  out["max_stress_at_m"] = r.max_stress_at ? Json(*r.max_stress_at) : Json(nullptr);
-  if (r.yield_strength) {
-    out["yield_strength"] = *r.yield_strength;
-    out["safety_factor"] = r.safety_factor ? Json(*r.safety_factor) : Json(nullptr);
-  }
-}
-
 }  // namespace
-
-// The limit and bifurcation points the shooting method's continuation passed (null for the other
-// methods): the load factor (stage 2 of a pinned or fixed straight beam: the fraction of the
-// released coordinate's travel), the tip per unit length as a_over_l, b_over_l are, and where.
-Json special_points_json(const BeamProblem& problem, const BeamSolution& solution) {
-  if (!solution.special_points_known) return Json(nullptr);
-  const double length = problem.chain ? problem.chain->total_length() : 1.0;
-  Json list = Json::array();
-  for (const SpecialPoint& sp : solution.special_points) {
-    list.push_back(Json{{"kind", to_string(sp.kind)},
-                        {"load_factor", sp.lambda},
-                        {"a_over_l", sp.tip.x / length},
-                        {"b_over_l", sp.tip.y / length},
-                        {"theta0", sp.tip.theta},
-                        {"stage", sp.stage},
-                        {"located", sp.located}});
-  }
-  return list;
-}
 
 std::vector<std::string> beam_warnings(const BeamProblem& problem, const BeamSolution& solution) {
   std::vector<std::string> out;
@@ -443,121 +357,10 @@ std::vector<std::string> beam_warnings(const BeamProblem& problem, const BeamSol
 namespace {
 
 Json to_json(const BeamInput& input,
-             const BeamProblem& problem,
              const BeamSolution& solution,
              const std::optional<PhysicalResults>& physical) {
-  Json out;
-  out["method"] = to_string(solution.method);
-  out["method_reason"] = solution.method_reason;
-  // The relative tip error the method is known to stay within (null where none is known: the chain
-  // algorithm, the PRBM off its measured map).
-  out["expected_error"] =
-      std::isfinite(solution.expected_error) ? Json(solution.expected_error) : Json(nullptr);
-  out["expected_error_per_length"] = std::isfinite(solution.expected_error_per_length)
-                                         ? Json(solution.expected_error_per_length)
-                                         : Json(nullptr);
-  // Howell's parameters; null for a chain that has none (not one uniform straight beam).
-  out["n"] = number_or_null(solution.load_ratio_n);
-  out["alpha2"] = number_or_null(solution.alpha2);
-  out["mu"] = number_or_null(solution.mu);
-  out["a_over_l"] = solution.tip.a_over_l;
-  out["b_over_l"] = solution.tip.b_over_l;
-  out["theta0"] = solution.tip.theta0;
-  out["iterations"] = solution.iterations;
-  out["converged"] = solution.converged();
-  out["branch"] = solution.branch;
-  out["inflection_points"] = solution.inflection_points;
-  out["root_moment"] = number_or_null(solution.root_moment);
-  out["limit_points"] = solution.limit_points;
-  out["target_residual"] =
-      std::isfinite(solution.target_residual) ? Json(solution.target_residual) : Json(nullptr);
-  out["first_limit_load_factor"] =
-      solution.limit_points > 0 ? Json(solution.first_limit_load_factor) : Json(nullptr);
-  out["special_points"] = special_points_json(problem, solution);
-  out["family"] = solution.family;
-  out["message"] = solution.message;
-  out["termination"] = termination_name(solution.termination);
-  out["boundary"] = to_string(problem.boundary);
-  out["reactions"] = reaction_json(solution.reactions);
-  add_stability_json(out, solution.stability);
-  out["stable_search"] = problem.stable ? Json(solution.stable_search) : Json(nullptr);
-  if (input.chain) {
-    // The chain's loads in the file's own units, whether or not it has Howell's parameters.
-    out["tip_load_chain_units"] = reaction_json(solution.chain_tip_load);
-    out["root_moment_chain_units"] = solution.chain_root_moment;
-    out["reactions_chain_units"] = reaction_json(solution.chain_reactions);
-  }
-  if (solution.method == BeamMethod::kPrbm) {
-    // PRBM validity as a result, not a phrase: the PRB angle, the limit and the verdict.
-    out["within_validity"] = solution.prbm_inside_validity;
-    out["Theta"] = solution.prbm_Theta;
-    out["theta_max"] = solution.prbm_theta_max;
-    out["validity_source"] = solution.prbm_limits_source;
-  }
-  if (solution.method == BeamMethod::kChain) {
-    out["elements"] = solution.elements;
-    out["increments"] = solution.increments;
-  }
-  if (solution.method == BeamMethod::kPrbm3r) out["constants"] = solution.model_constants;
-  if (solution.method == BeamMethod::kBcm || solution.method == BeamMethod::kCbcm) {
-    // The BCM's validity as a result: the largest element deflection against its stated 0.1.
-    out["elements"] = solution.elements;
-    out["max_element_deflection"] = solution.max_element_deflection;
-    out["within_validity"] = solution.model_inside_validity;
-    out["slenderness"] = solution.slenderness > 0.0 ? Json(solution.slenderness) : Json(nullptr);
-    // d = EA L^2/EI solved with (a chain segment's EA or the slenderness); null: inextensible.
-    out["axial_stiffness_d"] = std::isfinite(solution.axial_stiffness_d)
-                                   ? Json(solution.axial_stiffness_d)
-                                   : Json(nullptr);
-  }
-  if (problem.shape_points > 0) {
-    Json shape = Json::array();
-    for (const ShapePoint& p : solution.shape) {
-      shape.push_back(Json{{"s", p.s}, {"x", p.x}, {"y", p.y}, {"theta", p.theta}});
-    }
-    if (!physical && !problem.chain && solution.shape.size() >= 2) {
-      // Howell's beam: the internal forces per unit EI/l^2 (N, V) and EI/l (m) from the statics
-      // of the part before each point (the clamp's reaction), as for a physical beam.
-      const ShapeInternalForces f = shape_internal_forces(
-          uniform_cantilever(EndLoad{0.0, 0.0, 0.0}), solution.shape, solution.reactions);
-      for (std::size_t i = 0; i < f.moment.size() && i < shape.size(); ++i) {
-        shape[i]["N"] = f.axial[i];
-        shape[i]["V"] = f.shear[i];
-        shape[i]["m"] = f.moment[i];
-      }
-    }
-    if (physical) {
-      // The same points in SI: s, x, y in metres, the bending moment and stress.
-      for (std::size_t i = 0; i < physical->shape.size() && i < shape.size(); ++i) {
-        const PhysicalShapePoint& p = physical->shape[i];
-        shape[i]["s_m"] = p.s;
-        shape[i]["x_m"] = p.x;
-        shape[i]["y_m"] = p.y;
-        shape[i]["moment_Nm"] = p.moment;
-        shape[i]["stress_Pa"] = p.stress ? Json(*p.stress) : Json(nullptr);
-        shape[i]["axial_force_N"] = p.axial_force;
-        // Internal forces (docs/units.md "Internal forces"): N, V, m and the fibre stresses
-        // N/A -+ m c/I (null where the section's area or thickness is not given).
-        shape[i]["N_N"] = p.axial_force;
-        shape[i]["V_N"] = p.shear_force;
-        shape[i]["m_Nm"] = p.moment;
-        shape[i]["stress_pos_fibre_Pa"] =
-            p.stress_pos_fibre ? Json(*p.stress_pos_fibre) : Json(nullptr);
-        shape[i]["stress_neg_fibre_Pa"] =
-            p.stress_neg_fibre ? Json(*p.stress_neg_fibre) : Json(nullptr);
-        if (!p.stress_pos_fibre) {
-          shape[i]["stress_note"] =
-              "stress unavailable: the section's area and thickness are not given (EI or I alone)";
-        }
-      }
-    }
-    out["shape"] = std::move(shape);
-  }
-  if (physical) add_physical_json(out, input, *physical);
-  Json warnings = Json::array();
-  for (const std::string& w : beam_warnings(problem, solution)) warnings.push_back(w);
-  out["warnings"] = std::move(warnings);
-  return out;
+  return beam_keys::answer<Json>(
+      input, solution, physical ? &*physical : nullptr, BeamRequestNames::command_line());
 }
 
 // Set by beam_problem_of: the callback stops after validating, and reports the problem here.
@@ -670,71 +473,14 @@ void run_beam(const BeamArgs& args, const BeamRequest& request) {
   } catch (const bench::ToleranceBelowReach& e) {
     refuse_tolerance_below_reach(e, problem.tolerance);
   }
-  if (!solution.converged()) {
-    // What was reached, for the JSON error object (null where it is not a number).
-    Json reached;
-    reached["method"] = to_string(solution.method);
-    reached["method_reason"] = solution.method_reason;
-    reached["termination"] = termination_name(solution.termination);
-    reached["iterations"] = solution.iterations;
-    reached["load_factor"] = solution.load_factor;
-    reached["alpha2"] = solution.alpha2;
-    if (std::isfinite(solution.target_residual)) {
-      reached["target_residual"] = solution.target_residual;
-    }
-    if (solution.stability.kind != StabilityKind::kNotChecked) {
-      add_stability_json(reached, solution.stability);
-    }
-    if (problem.stable) reached["stable_search"] = solution.stable_search;
-    // The methods the message suggests (failure_advice.h), most capable first; empty when none is
-    // measured to reach further (the message then says what to change).
-    Json suggested = Json::array();
-    for (BeamMethod m : advise_after_failure(problem, solution, solution.methods_tried).methods) {
-      suggested.push_back(to_string(m));
-    }
-    reached["suggested_methods"] = std::move(suggested);
-    for (auto& [key, value] : reached.items()) {
-      if (value.is_number_float() && !std::isfinite(value.get<double>())) value = nullptr;
-    }
-    if (problem.stable && !solution.stable_search.empty()) {
-      // The answer was reached; no stable equilibrium was found from it.
-      throw NoConvergenceReport(solution.message, std::move(reached));
-    }
-    throw NoConvergenceReport(
-        fmt::format("method '{}' found no converged solution after {} iterations: {}. {}",
-                    to_string(solution.method),
-                    solution.iterations,
-                    solution.message.empty() ? "no message" : solution.message,
-                    failure_hint(problem, solution)),
-        std::move(reached));
-  }
-  if (!problem.chain) require_finite_result(solution.alpha2, "alpha2");
-  if (physical) {
-    require_finite_result(physical->max_moment, "max_moment_Nm");
-    if (physical->max_stress) require_finite_result(*physical->max_stress, "max_stress");
-  }
-  require_finite_result(solution.tip.a_over_l, "a/l");
-  require_finite_result(solution.tip.b_over_l, "b/l");
-  require_finite_result(solution.tip.theta0, "theta0");
-  if (problem.shape_points > 0 && static_cast<int>(solution.shape.size()) != problem.shape_points) {
-    throw NoConvergence(fmt::format("method '{}' returned {} shape points instead of {}",
-                                    to_string(solution.method),
-                                    solution.shape.size(),
-                                    problem.shape_points));
-  }
+  if (!solution.converged()) throw_beam_failure(problem, solution);
+  require_complete_answer(problem, solution, physical ? &*physical : nullptr);
   warn(beam_warnings(problem, solution));
   std::optional<BeamFatigue> fatigue;
   if (!args.cycle.empty() && physical) fatigue = beam_fatigue(args, input, *physical);
-  if (fatigue && !fatigue->check.infinite_life) {
-    warn(
-        fmt::format("the {} load cycle has a finite life: about {:.3g} cycles (fatigue safety "
-                    "factor {:.3g})",
-                    load_cycle_name(fatigue->cycle),
-                    fatigue->check.cycles_to_failure,
-                    fatigue->check.safety_factor));
-  }
+  if (fatigue) warn(load_cycle_warnings(fatigue->cycle, fatigue->check));
   if (args.json) {
-    Json out = to_json(input, problem, solution, physical);
+    Json out = to_json(input, solution, physical);
     if (fatigue) add_fatigue_json(out, *fatigue);
     print_json(out);  // refuses NaN/Inf anywhere
   } else {
@@ -762,19 +508,6 @@ void run_beam(const BeamArgs& args, const BeamRequest& request) {
 }
 
 }  // namespace
-
-CommandOutput run_beam_request(const BeamRequest& request) {
-  BeamArgs args;
-  args.json = true;
-  OutputCapture capture;
-  reset_exit_code();
-  run_beam(args, request);
-  CommandOutput out;
-  out.json = std::move(capture.json);
-  out.warnings = std::move(capture.warnings);
-  out.exit_code = exit_code();
-  return out;
-}
 
 BeamCommandProblem beam_problem_of(const std::vector<std::string>& args) {
   BeamCommandProblem out;

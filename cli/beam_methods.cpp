@@ -4,9 +4,11 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <utility>
 #include <vector>
 
 #include "cli/cli_common.h"
+#include "flexure/beam/beam_keys.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
 
@@ -80,6 +82,25 @@ void refuse_tolerance_below_reach(const bench::ToleranceBelowReach& e, double to
       Json{{"tolerance", tolerance},
            {"best_tolerance", e.best_tolerance()},
            {"best_method", e.best_method()}});
+}
+
+void throw_beam_failure(const BeamProblem& problem, const BeamSolution& failed) {
+  // What was reached, for the JSON error object (null where it is not a number), with the
+  // methods the message suggests (failure_advice.h), most capable first; empty when none is
+  // measured to reach further (the message then says what to change).
+  Json reached = beam_keys::failure<Json>(
+      problem, failed, advise_after_failure(problem, failed, failed.methods_tried).methods);
+  if (problem.stable && !failed.stable_search.empty()) {
+    // The answer was reached; no stable equilibrium was found from it.
+    throw NoConvergenceReport(failed.message, std::move(reached));
+  }
+  throw NoConvergenceReport(
+      fmt::format("method '{}' found no converged solution after {} iterations: {}. {}",
+                  to_string(failed.method),
+                  failed.iterations,
+                  failed.message.empty() ? "no message" : failed.message,
+                  failure_hint(problem, failed)),
+      std::move(reached));
 }
 
 }  // namespace flexure::cli

@@ -31,4 +31,11 @@ void refuse_tol_with_named_method(const CLI::Option* tol_option, const std::stri
 // where it is measured to reach further than those tried, else what to change) with the flags.
 std::string failure_hint(const BeamProblem& problem, const BeamSolution& failed);
 
+// A beam solve that did not converge, as `flexure beam` and the Python module's flexure.beam
+// report it: NoConvergenceReport (exit 3) with the message (the method, its iterations and
+// message, failure_hint; or the stable search's message when the answer was reached but no stable
+// equilibrium found from it) and the `reached` keys (beam/beam_keys.h failure, with the methods
+// the advice suggests).
+[[noreturn]] void throw_beam_failure(const BeamProblem& problem, const BeamSolution& failed);
+
 }  // namespace flexure::cli

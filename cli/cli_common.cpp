@@ -311,12 +311,16 @@ int run_app(CLI::App& app, int argc, char** argv) {
   return end_together(g_exit_code, -1.0, "", json, Json::object());
 }
 
-void print_json(const Json& object) {
+void require_finite_json(const Json& object) {
   const std::string bad = find_non_finite(object, "");
   if (!bad.empty()) {
     throw NoConvergence(
         fmt::format("result '{}' is not a finite number; no converged solution to report", bad));
   }
+}
+
+void print_json(const Json& object) {
+  require_finite_json(object);
   if (g_capture != nullptr) {
     g_capture->json = object;
   } else {

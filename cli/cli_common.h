@@ -105,6 +105,8 @@ void parse_and_run(CLI::App& app, int argc, char** argv);
 // Prints `object` as one line of JSON on stdout. Throws NoConvergence naming the key if any
 // number in it is NaN or Inf (a result is never printed as NaN).
 void print_json(const Json& object);
+// The check of print_json alone (for a JSON object handed to Python instead of printed).
+void require_finite_json(const Json& object);
 
 // Throws NoConvergence naming `what` unless `value` is finite. Used on results before printing.
 void require_finite_result(double value, const std::string& what);

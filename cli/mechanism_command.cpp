@@ -26,21 +26,21 @@
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/mechanism_stroke_file.h"
 #include "flexure/io/mechanism_toml.h"
+#include "flexure/io/mechanism_validation_file.h"
 #include "flexure/io/output_path.h"
 #include "flexure/io/parallel/mpi_world.h"
-#include "flexure/io/parallel/work_distribution.h"
-#include "flexure/io/provenance.h"
-#include "flexure/mechanisms/cfm/constant_force.h"
 #include "flexure/mechanisms/general/catalogue_general.h"
-#include "flexure/mechanisms/howell_designs.h"
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
+#include "flexure/mechanisms/mechanism_catalogue.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/mechanism_fatigue.h"
 #include "flexure/mechanisms/mechanism_geometry.h"
 #include "flexure/mechanisms/mechanism_method.h"
 #include "flexure/mechanisms/mechanism_plate.h"
+#include "flexure/mechanisms/mechanism_validation.h"
+#include "flexure/mechanisms/mechanism_warnings.h"
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/mechanisms/modified_springs.h"
 #include "flexure/solver/common/errors.h"
@@ -97,31 +97,6 @@ std::vector<int> described_pivots(const MechanismDesign& d, const std::vector<in
   std::vector<int> out;
   for (int p : pivots) out.push_back(described_pivot(d, p));
   std::sort(out.begin(), out.end());
-  return out;
-}
-
-// Every built-in design: the thesis designs, Howell's designs, then the inversions of those with
-// a type-asymmetric configuration.
-std::vector<MechanismDesign> listed_designs(const std::string& set) {
-  std::vector<MechanismDesign> out;
-  for (const MechanismDesign& d : builtin_mechanisms()) {
-    const bool modified = !d.paper_config.empty();
-    if (set == "all" || set == "builtin" || (set == "thesis" && !modified) ||
-        (set == "modified" && modified)) {
-      out.push_back(d);
-    }
-  }
-  if (set == "howell" || set == "all") {
-    out.insert(out.end(), howell_mechanisms().begin(), howell_mechanisms().end());
-  }
-  if (set == "inversions" || set == "all") {
-    for (const auto* list : {&builtin_mechanisms(), &howell_mechanisms()}) {
-      for (const auto& d : *list) {
-        // The paper's modified designs are not inverted: paper 004 describes none.
-        if (config_has_inversion(d.config) && d.paper_config.empty()) out.push_back(invert(d));
-      }
-    }
-  }
   return out;
 }
 
@@ -218,35 +193,6 @@ Json stroke_stability_json(const StrokeStability& s) {
               {"summary", s.summary}};
 }
 
-// stderr warnings: an exact state the mechanism cannot hold with its slider held.
-std::vector<std::string> stability_warnings(const MechanismAnalysis& a) {
-  std::vector<std::string> texts;
-  if (!a.has_exact_stability) return texts;
-  const StrokeStability& dc = a.stability_exact.displacement_control;
-  if (dc.unstable_points > 0) {
-    texts.push_back(fmt::format(
-        "{}: the exact model's equilibrium is unstable with the slider held at {} of {} stroke "
-        "points (least stability margin {:.3g}): the mechanism cannot hold these shapes and would "
-        "buckle into another one, which this force curve does not describe (docs/stability.md "
-        "\"Mechanisms\"){}",
-        a.design.name,
-        dc.unstable_points,
-        dc.points.size(),
-        dc.least_margin,
-        a.stable_search.empty() && exact_support(a.design) == ExactSupport::kDirectChain
-            ? "; --stable follows a stable branch instead"
-            : ""));
-  }
-  if (dc.not_checked_points > 0 || a.stability_exact.force_control.not_checked_points > 0) {
-    texts.push_back(fmt::format(
-        "{}: no stability verdict at {} stroke points of the exact model (the JSON's "
-        "not_checked lists the reasons)",
-        a.design.name,
-        std::max(dc.not_checked_points, a.stability_exact.force_control.not_checked_points)));
-  }
-  return texts;
-}
-
 Json analysis_json(const MechanismAnalysis& a) {
   const bool exact = a.has_exact && a.exact.converged();
   Json j;
@@ -301,31 +247,6 @@ Json analysis_json(const MechanismAnalysis& a) {
 // Why a percent constant force was reported as 0, or empty (constant_force.h).
 std::string force_sign_note(bool vanishes, bool changes_sign) {
   return changes_sign ? "force changes sign" : vanishes ? "force vanishes" : "";
-}
-
-// One stderr warning per model whose force is zero or changes sign within the stroke: Weight's
-// min/max ratio (thesis eq. 5.22) describes a force of one sign, so the percentage is reported as
-// 0 instead of a negative or noise-sized ratio (docs/mechanisms.md "Percent constant force").
-// The warnings of a force that vanishes within the stroke (one per model), for warn().
-std::vector<std::string> force_vanishing_warnings(const MechanismAnalysis& a, bool exact) {
-  std::vector<std::string> texts;
-  auto warn_force = [&](const char* model, const std::vector<double>& force) {
-    const ConstantForceMeasure m = constant_force_measure(force);
-    if (!m.vanishes) return;
-    texts.push_back(fmt::format(
-        "{}: the {} force {} within the stroke (min {:.4g} N, max {:.4g} N, "
-        "{}): not a constant-force mechanism over this stroke; its percent constant force is "
-        "reported as 0",
-        a.design.name,
-        model,
-        m.changes_sign ? "changes sign" : "vanishes",
-        m.min_force,
-        m.max_force,
-        force_of_label(a.force_of)));
-  };
-  warn_force("PRBM", a.prbm.force);
-  if (exact) warn_force("exact", a.force_exact);
-  return texts;
 }
 
 // The fatigue check of analyze (mechanism_fatigue.h), or why there is none.
@@ -429,48 +350,13 @@ std::string fatigue_text(const MechanismAnalysis& a, const FatigueReport& r) {
 
 std::string percent(double v) { return fmt::format("{:.2f}", 100.0 * v); }
 
-// Elements per chain of the chain-algorithm check in `mechanism validate` (corrected variant:
-// O(N^-3), 1e-9-1e-5 r2 on the built-in designs at N = 100; under 1 ms per check,
-// BM_ChainCheck100).
-constexpr int kChainCheckElements = 100;
-
-// One design of `mechanism validate`: its JSON object, its Markdown line and the numbers of the
-// --out table (ValidationColumns).
-struct ValidationRow {
-  Json json;
-  std::string line;
-  int status = 0;  // 0 exact converged, 1 exact did not converge, 2 PRBM only
-  std::vector<double> values;
-  std::vector<std::string> warnings;  // printed by rank 0 in the order of the designs
-};
-
-ValidationRow validate_design(MechanismDesign d,
-                              int points,
-                              std::optional<double> toggle_fraction,
-                              std::optional<SpringRule> rule) {
-  ValidationRow row;
-  if (toggle_fraction) d.stroke = *toggle_fraction * d.toggle_stroke();
-  if (rule && has_fixed_fixed(d)) apply_spring_rule(d, *rule);
-  AnalysisOptions o;
-  o.points = points;
-  o.exact_stress = false;
-  // Name the design in an error: the table runs many of them.
-  const MechanismAnalysis a = [&] {
-    try {
-      return analyze_mechanism(d, o);
-    } catch (const InvalidInput& e) {
-      throw InvalidInput(fmt::format("{}: {}", d.name, e.what()));
-    } catch (const NoConvergence& e) {
-      throw NoConvergence(fmt::format("{}: {}", d.name, e.what()));
-    }
-  }();
-  const bool exact = a.has_exact && a.exact.converged();
-  // Second opinion on the last stroke point: Howell's chain algorithm (corrected variant,
-  // kChainCheckElements elements per chain) on the exact model's solution.
-  std::optional<ChainCheck> check;
-  if (exact && !a.exact.points.empty()) {
-    check = chain_algorithm_check(a.exact.points.back(), kChainCheckElements);
-  }
+// One design of `mechanism validate`: its JSON object and its Markdown line (the row itself:
+// mechanisms/mechanism_validation.h).
+std::vector<std::string> format_validation_row(const MechanismValidationRow& row) {
+  const MechanismAnalysis& a = row.analysis;
+  const MechanismDesign& d = a.design;
+  const bool exact = row.exact;
+  const std::optional<ChainCheck>& check = row.chain_check;
   const std::string limit =
       a.prbm_validity_limit ? fmt::format("{:.0f}", 100.0 * *a.prbm_validity_limit / d.stroke)
       : has_fixed_fixed(d)  ? std::string("none (fixed-fixed segments: no Theta_max table)")
@@ -483,11 +369,9 @@ ValidationRow validate_design(MechanismDesign d,
   auto pcf_cell = [](double v, const std::string& note) {
     return note.empty() ? fmt::format("{:.2f}", v) : fmt::format("{:.2f} ({})", v, note);
   };
-  row.warnings = force_vanishing_warnings(a, exact);
-  for (std::string& text : stability_warnings(a)) row.warnings.push_back(std::move(text));
   // Unstable stroke points (docs/stability.md "Mechanisms"): exact with the slider held, exact
   // under a dead load, PRBM under a dead load (held, the PRBM linkage cannot move).
-  const bool exact_stability = exact && a.has_exact_stability;
+  const bool exact_stability = row.exact_stability;
   const std::string unstable_cell =
       a.stability_prbm.force_control.points.empty()
           ? std::string("-")
@@ -499,7 +383,7 @@ ValidationRow validate_design(MechanismDesign d,
                             ? std::to_string(a.stability_exact.force_control.unstable_points)
                             : std::string("-"),
                         a.stability_prbm.force_control.unstable_points);
-  row.line = fmt::format(
+  std::string line = fmt::format(
       "| {} | {} | {} | {} | {} | {} | {} | {} | {:.2f} | {} | {} |\n",
       d.name,
       a.has_exact ? (exact ? "yes" : "did not converge") : "PRBM only",
@@ -532,177 +416,43 @@ ValidationRow validate_design(MechanismDesign d,
     r["chain_check_tip_error"] = check->converged() ? Json(check->tip_error) : Json(nullptr);
     r["chain_check_closure_error"] =
         check->converged() ? Json(check->closure_error) : Json(nullptr);
-    r["chain_check_elements"] = kChainCheckElements;
+    r["chain_check_elements"] = row.chain_check_elements;
     r["chain_check_at"] = a.exact.points.back().displacement;
   }
   r.erase("displacement");
   r.erase("force_prbm");
   r.erase("force_exact");
   r.erase("prbm_within_validity");
-  row.status = !a.has_exact ? 2 : !exact ? 1 : (check && !check->converged()) ? 3 : 0;
-  const double none = std::numeric_limits<double>::quiet_NaN();
-  row.values = {
-      a.prbm.percent_constant_force,
-      exact ? a.percent_constant_force_exact : none,
-      exact ? a.max_force_error : none,
-      exact ? a.max_force_error_at / d.stroke : none,
-      a.prbm_validity_limit ? *a.prbm_validity_limit / d.stroke : -1.0,
-      a.safety_factor,
-      check && check->converged() ? check->tip_error / d.r2 : none,
-      d.stroke,
-      exact_stability ? static_cast<double>(a.stability_exact.displacement_control.unstable_points)
-                      : none,
-      exact_stability ? static_cast<double>(a.stability_exact.force_control.unstable_points) : none,
-      static_cast<double>(a.stability_prbm.force_control.unstable_points)};
-  row.json = std::move(r);
-  return row;
+  return {r.dump(), std::move(line)};
 }
 
-// The numeric datasets of `mechanism validate --out` (docs/hdf5-schema.md), in ValidationRow
-// order: name, units, description.
-const std::vector<std::array<const char*, 3>>& validation_columns() {
-  static const std::vector<std::array<const char*, 3>> columns = {
-      {"percent_constant_force", "%", "PRBM Xi' over the stroke"},
-      {"percent_constant_force_exact", "%", "exact-model Xi'; NaN where status != 0"},
-      {"max_force_error", "1", "largest |F_prbm - F_exact|/|F_exact|; NaN where status != 0"},
-      {"max_force_error_at",
-       "1",
-       "displacement of that largest error / stroke; NaN where status != 0"},
-      {"prbm_validity_limit",
-       "1",
-       "displacement where the PRBM leaves its validity limit / stroke; -1 where it never does"},
-      {"safety_factor", "1", "yield strength / the largest stress over the stroke"},
-      {"chain_check_tip_error",
-       "1",
-       "tip error / r2 of Howell's chain algorithm on the last exact point; NaN where status != "
-       "0"},
-      {"stroke", "m", "the stroke evaluated"},
-      {"unstable_points_displacement_control_exact",
-       "1",
-       "exact stroke points unstable with the slider held (docs/stability.md); NaN where status "
-       "is 1 or 2"},
-      {"unstable_points_force_control_exact",
-       "1",
-       "exact stroke points unstable under a dead slider load; NaN where status is 1 or 2"},
-      {"unstable_points_force_control_prbm",
-       "1",
-       "PRBM stroke points unstable under a dead slider load (where the force falls)"}};
-  return columns;
-}
-
-void print_validation(int points,
-                      std::optional<double> toggle_fraction,
-                      std::optional<SpringRule> rule,
-                      bool markdown,
+void print_validation(const MechanismValidationOptions& options,
                       bool json,
-                      const std::string& set,
-                      const std::string& spring_rule,
+                      DesignSet set,
                       const std::string& out,
                       const std::string& csv_path) {
+  // --out: created before any design is analysed (a wrong path fails at once); under mpirun every
+  // rank writes the designs it analysed into the one file (docs/scaling.md).
+  // --csv (or --out FILE.csv): the table of the file as CSV, one row per design (cli/csv_output.h).
+  if (!out.empty()) io::check_output_path(out);
+  const CsvOutput csv(out, csv_path);
+  const std::vector<io::FormattedValidationRow> rows =
+      io::validate_mechanisms(set, options, csv.hdf5_path(), format_validation_row);
+  if (!csv.hdf5_path().empty()) csv.write({"name"});
+  if (!parallel::world().root()) return;
   std::string table =
       "| Mechanism | Exact model | Xi' PRBM % | Xi' exact % | Xi' error (points) | max force "
       "error % | at Delta x / stroke % | PRBM validity limit (Delta x / stroke %) | SF | chain "
       "check tip error / r2 | unstable points: exact held / exact dead load / PRBM dead load |\n"
       "|---|---|---|---|---|---|---|---|---|---|---|\n";
-  const std::vector<MechanismDesign> designs = listed_designs(set);
-  const auto n = static_cast<hsize_t>(designs.size());
-  // --out: created before any design is analysed (a wrong path fails at once); under mpirun every
-  // rank writes the designs it analysed into the one file (docs/scaling.md).
-  // --csv (or --out FILE.csv): the table of the file as CSV, one row per design (cli/csv_output.h).
-  std::unique_ptr<io::AtomicHdf5File> file;
-  std::vector<io::Hdf5Dataset> columns;
-  std::optional<io::Hdf5Dataset> status;
-  if (!out.empty()) io::check_output_path(out);
-  const CsvOutput csv(out, csv_path);
-  if (!csv.hdf5_path().empty()) {
-    try {
-      file = std::make_unique<io::AtomicHdf5File>(csv.hdf5_path(), io::Hdf5Access::kCollective);
-    } catch (const io::Hdf5Error& e) {
-      throw InvalidInput(fmt::format("--out: {}", e.what()));
-    }
-    io::Hdf5Group& root = file->root();
-    root.set_attribute("designs", set);
-    root.set_attribute("points", static_cast<std::int64_t>(points));
-    root.set_attribute("mpi_ranks",
-                       static_cast<std::int64_t>(root.collective() ? parallel::world().size() : 1));
-    if (toggle_fraction) root.set_attribute("toggle_fraction", *toggle_fraction);
-    if (rule) root.set_attribute("spring_rule", spring_rule);
-    for (const auto& [name, units, description] : validation_columns()) {
-      columns.push_back(root.create_dataset(name, io::Hdf5Type::kFloat64, {n}, units, description));
-    }
-    status.emplace(root.create_dataset(
-        "status",
-        io::Hdf5Type::kInt32,
-        {n},
-        "1",
-        "0 exact model converged, 1 exact model did not converge, 2 PRBM only (no exact model), 3 "
-        "the chain-algorithm check did not converge"));
+  Json objects = Json::array();
+  for (const io::FormattedValidationRow& row : rows) {
+    objects.push_back(Json::parse(row.texts.at(0)));
+    table += row.texts.at(1);
+    warn(row.warnings);
   }
-  // Rows come back to rank 0 as text: the index, the JSON object and the Markdown line.
-  std::vector<std::string> mine;
-  parallel::DistributionOptions distribution;
-  distribution.max_block = 1;
-  distribution.describe = [&](long i) { return designs[i].name; };
-  parallel::distribute(
-      static_cast<long>(designs.size()),
-      [&](long begin, long end) -> parallel::BlockWriter {
-        auto rows = std::make_shared<std::vector<ValidationRow>>();
-        for (long i = begin; i < end; ++i) {
-          rows->push_back(validate_design(designs[i], points, toggle_fraction, rule));
-        }
-        return [&, rows, begin] {
-          for (std::size_t k = 0; k < rows->size(); ++k) {
-            const ValidationRow& row = (*rows)[k];
-            const auto at = static_cast<hsize_t>(begin) + k;
-            for (std::size_t c = 0; c < columns.size(); ++c) {
-              columns[c].write_range(at, std::span<const double>(&row.values[c], 1));
-            }
-            if (status) status->write_range(at, std::span<const int>(&row.status, 1));
-            std::string warnings;
-            for (const std::string& text : row.warnings) warnings += text + '\n';
-            mine.insert(mine.end(), {std::to_string(at), row.json.dump(), row.line, warnings});
-          }
-        };
-      },
-      distribution);
-  const std::vector<std::string> all = parallel::world().gather(mine);
-  std::vector<std::string> lines(designs.size());
-  Json rows = Json::array();
-  std::vector<Json> ordered(designs.size());
-  std::vector<std::string> warnings(designs.size());
-  for (std::size_t k = 0; k + 3 < all.size(); k += 4) {
-    const auto at = static_cast<std::size_t>(std::stoul(all[k]));
-    ordered[at] = Json::parse(all[k + 1]);
-    lines[at] = all[k + 2];
-    warnings[at] = all[k + 3];
-  }
-  for (std::size_t i = 0; i < designs.size(); ++i) {
-    rows.push_back(ordered[i]);
-    table += lines[i];
-    for (std::size_t from = 0, to; (to = warnings[i].find('\n', from)) != std::string::npos;
-         from = to + 1) {
-      warn(warnings[i].substr(from, to - from));
-    }
-  }
-  if (file) {
-    std::vector<std::string> names;
-    for (const MechanismDesign& d : designs) names.push_back(d.name);
-    file->root().write_dataset("name", names, "text", "the design");
-    io::write_provenance(file->root(),
-                         {{"status", 0, "the exact model converged"},
-                          {"status", 1, "the exact model did not converge"},
-                          {"status", 2, "PRBM only: the configuration has no exact model"},
-                          {"status", 3, "the chain-algorithm check did not converge"}});
-    columns.clear();
-    status.reset();
-    file->commit();
-    csv.write({"name"});
-  }
-  if (!parallel::world().root()) return;
   if (json) {
-    print_json(Json{{"points", points}, {"mechanisms", rows}});
-  } else if (markdown) {
-    std::cout << table;
+    print_json(Json{{"points", options.points}, {"mechanisms", objects}});
   } else {
     std::cout << table;
   }
@@ -773,7 +523,7 @@ void register_mechanism_command(CLI::App& app) {
   list->add_flag("--json", *list_json, "Print one JSON object");
   list->callback([list_json] {
     Json all = Json::array();
-    for (const auto& d : listed_designs("all")) {
+    for (const auto& d : mechanism_designs(DesignSet::kAll)) {
       if (*list_json) {
         Json j = design_json(d);
         j["exact_model"] = exact_support(d) != ExactSupport::kPrbmOnly;
@@ -964,14 +714,8 @@ void register_mechanism_command(CLI::App& app) {
     // A design file's force_of (written by `flexure design mechanism`) unless --force-of is given.
     const ForceOf force_of =
         *args->force_of_option || !d.force_of ? parse_force_of(args->force_of) : *d.force_of;
-    std::optional<io::AtomicHdf5File> file;
-    if (!csv.hdf5_path().empty()) {
-      try {
-        file.emplace(csv.hdf5_path());
-      } catch (const io::Hdf5Error& e) {
-        throw InvalidInput(fmt::format("--out: {}", e.what()));
-      }
-    }
+    std::optional<io::MechanismStrokeFile> file;
+    if (!csv.hdf5_path().empty()) file.emplace(csv.hdf5_path());
     refuse_tol_with_named_method(args->tol_option, args->no_exact ? "prbm" : args->method);
     const MechanismMethodChoice choice = [&] {
       try {
@@ -991,15 +735,7 @@ void register_mechanism_command(CLI::App& app) {
     MechanismAnalysis a = analyze_mechanism_with_modulus(d, o);
     report_forces_of(a, force_of);
     if (!a.converged()) throw NoConvergence(a.message);
-    for (int p : a.yielding_pivots) {
-      warn(
-          fmt::format("pivot {} of {} yields: max stress {:.4g} Pa >= yield strength "
-                      "{:.4g} Pa",
-                      described_pivot(d, p),
-                      d.name,
-                      a.max_stress[p - 1],
-                      d.yield_strength));
-    }
+    warn(yield_warnings(a));
     warn(force_vanishing_warnings(a, a.has_exact && o.exact));
     warn(stability_warnings(a));
     FatigueReport fatigue;
@@ -1021,12 +757,7 @@ void register_mechanism_command(CLI::App& app) {
                                           ? std::string("not done: the exact model did not run")
                                           : std::string();
     if (file) {
-      io::write_mechanism_stroke(file->root(),
-                                 a,
-                                 fatigue.fatigue ? &*fatigue.fatigue : nullptr,
-                                 args->stable,
-                                 stable_search);
-      file->commit();
+      file->write(a, fatigue.fatigue ? &*fatigue.fatigue : nullptr, args->stable, stable_search);
     }
     csv.write({"displacement"}, {"design", "shapes"});  // /shapes: per stored shape, not per point
     if (args->json) {
@@ -1358,17 +1089,12 @@ void register_mechanism_command(CLI::App& app) {
       print_spring_rules(vargs->points, vargs->json);
       return;
     }
-    std::optional<SpringRule> rule;
-    if (!vargs->spring_rule.empty()) rule = parse_spring_rule(vargs->spring_rule);
-    print_validation(vargs->points,
-                     vargs->toggle_fraction,
-                     rule,
-                     vargs->markdown,
-                     vargs->json,
-                     vargs->designs,
-                     vargs->spring_rule,
-                     vargs->out,
-                     vargs->csv);
+    MechanismValidationOptions options;
+    options.points = vargs->points;
+    options.toggle_fraction = vargs->toggle_fraction;
+    if (!vargs->spring_rule.empty()) options.spring_rule = parse_spring_rule(vargs->spring_rule);
+    print_validation(
+        options, vargs->json, design_set_from_string(vargs->designs), vargs->out, vargs->csv);
   });
 }
 

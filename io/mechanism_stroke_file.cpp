@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/mechanisms/modified_springs.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::io {
 namespace {
@@ -251,6 +253,26 @@ void write_mechanism_stroke(Hdf5Group& root,
   write_design_group(root, a.design);
   write_stroke_shapes(root, a);  // /shapes: the deformed shapes of the exact stroke
   write_provenance(root, codes);
+}
+
+MechanismStrokeFile::MechanismStrokeFile(const std::string& path) {
+  try {
+    file_ = std::make_unique<AtomicHdf5File>(path);
+  } catch (const Hdf5Error& e) {
+    throw InvalidInput(fmt::format("--out: {}", e.what()));
+  }
+}
+
+MechanismStrokeFile::~MechanismStrokeFile() = default;
+
+void MechanismStrokeFile::write(const mechanism::MechanismAnalysis& analysis,
+                                const mechanism::MechanismFatigue* fatigue,
+                                bool stable,
+                                const std::string& stable_search) {
+  if (!file_) throw std::logic_error("MechanismStrokeFile::write called twice");
+  write_mechanism_stroke(file_->root(), analysis, fatigue, stable, stable_search);
+  file_->commit();
+  file_.reset();
 }
 
 }  // namespace flexure::io

@@ -4,6 +4,7 @@
 // exact model, the stresses, the PRBM's validity, the stability of every stroke point under both
 // controls, the fatigue check, /design (the analysed half mechanism in its described form) and
 // /shapes (io/mechanism_stroke_shapes.h), with the provenance. `flexure plot` draws it.
+#include <memory>
 #include <string>
 
 #include "flexure/io/hdf5_file.h"
@@ -20,5 +21,24 @@ void write_mechanism_stroke(Hdf5Group& root,
                             const mechanism::MechanismFatigue* fatigue,
                             bool stable,
                             const std::string& stable_search);
+
+// The same file for a caller that sees no HDF5 type: opened when made (a path that cannot be
+// written fails before the stroke is solved: InvalidInput "--out: <why>"), written and renamed
+// into place by write(), once; dropped without write() it leaves nothing behind.
+class MechanismStrokeFile {
+ public:
+  explicit MechanismStrokeFile(const std::string& path);
+  ~MechanismStrokeFile();
+  MechanismStrokeFile(const MechanismStrokeFile&) = delete;
+  MechanismStrokeFile& operator=(const MechanismStrokeFile&) = delete;
+
+  void write(const mechanism::MechanismAnalysis& analysis,
+             const mechanism::MechanismFatigue* fatigue,
+             bool stable,
+             const std::string& stable_search);
+
+ private:
+  std::unique_ptr<AtomicHdf5File> file_;
+};
 
 }  // namespace flexure::io

@@ -34,4 +34,13 @@ FatigueCheck check_load_cycle(double peak_stress,
   return check_fatigue(peak_stress, low, material, strength, loading);
 }
 
+std::vector<std::string> load_cycle_warnings(LoadCycle cycle, const FatigueCheck& check) {
+  if (check.infinite_life) return {};
+  return {fmt::format(
+      "the {} load cycle has a finite life: about {:.3g} cycles (fatigue safety factor {:.3g})",
+      load_cycle_name(cycle),
+      check.cycles_to_failure,
+      check.safety_factor)};
+}
+
 }  // namespace flexure

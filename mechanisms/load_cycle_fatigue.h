@@ -8,6 +8,7 @@
 //   repeated: unloaded to the load: the fibre goes 0 -> sigma_max, sigma_m = sigma_a = sigma_max/2
 //             (eqs. 3.107-3.108).
 #include <string>
+#include <vector>
 
 #include "flexure/mechanisms/fatigue.h"
 
@@ -25,5 +26,9 @@ FatigueCheck check_load_cycle(double peak_stress,
                               const FatigueMaterial& material,
                               const PartFatigueStrength& strength,
                               FatigueLoading loading = FatigueLoading::kBending);
+
+// The warning of a cycle of finite life (about N cycles to failure, with the fatigue safety
+// factor), as every front end reports it; none for an infinite life.
+std::vector<std::string> load_cycle_warnings(LoadCycle cycle, const FatigueCheck& check);
 
 }  // namespace flexure

@@ -275,7 +275,7 @@ void check_fixed_fixed_lengths(const MechanismDesign& d) {
 
 MechanismDesign modified_design(const ModifiedConfiguration& c, SpringRule rule) {
   if (c.name == "slpm" || c.name == "lpsm") return constructed_design(c, rule);
-  // Table 5 column (dynamics/cfsm_designs.h): r2, r3, b, h, L, E; stroke 40 % (Table 6).
+  // Table 5 column (cfsm_designs.h): r2, r3, b, h, L, E; stroke 40 % (Table 6).
   const dynamics::CfsmDesign& t = dynamics::find_cfsm_design(c.class_name + "-" + c.name);
   MechanismDesign d = base_design(c, rule);
   d.r2 = t.r2;

@@ -2,7 +2,7 @@
 // The eleven "modified" constant-force slider mechanisms of Ugwuoke & Abolarin (JETIR 2023, Tables
 // 1-6) as dimensional MechanismDesigns for `flexure mechanism analyze` (docs/mechanisms.md
 // "Modified configurations"). Tables 2 and 4 are data/paper_tables_2_4.csv, Tables 5 and 6 come
-// with dynamics/cfsm_designs.h.
+// with cfsm_designs.h.
 //
 // Geometry, as Tables 1, 3, 5 and 6 imply: every flexible segment (l or s) is a strip of length
 // L_i clamped at both ends into rigid bodies and centred on its PRB pivot (a fixed-fixed segment;
@@ -66,7 +66,7 @@ void check_fixed_fixed_lengths(const MechanismDesign& design);
 inline constexpr double kModifiedYieldStrength = 200.0e3 * 6894.757293;  // Pa
 
 // The built-in design of configuration `c` (name "2B-lplm"): nine from their Table 5 column
-// (dynamics/cfsm_designs.h), 2A-slpm and 2B-lpsm constructed from Tables 1-4 (see the .cpp);
+// (cfsm_designs.h), 2A-slpm and 2B-lpsm constructed from Tables 1-4 (see the .cpp);
 // stroke 40 % of r2 + r3 (Table 6).
 MechanismDesign modified_design(const ModifiedConfiguration& c,
                                 SpringRule rule = kDefaultSpringRule);

@@ -1,8 +1,8 @@
 // flexure._core: the compiled half of the Python module (docs/python.md). Entry points:
 //  * run(args): one `flexure` command run in-process (cli/command_runner.h) with the lock on the
 //    interpreter released, its JSON object converted to Python (arrays of numbers to numpy);
-//  * beam(**values): `flexure beam --json` for one load from values, without a command line
-//    (cli::run_beam_request over the library's BeamRequest; the scalar flexure.beam);
+//  * beam(**values): `flexure beam --json` for one load from values, by the library without a
+//    command line (BeamRequest, solve_beam, the keys of beam/beam_keys.h; the scalar flexure.beam);
 //  * beam_many(args, ...): `flexure beam` at many loads on worker threads, columns written
 //    straight into numpy arrays (the vectorised flexure.beam);
 //  * the classes over the library's types (python/objects.cpp).
@@ -21,6 +21,7 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <thread>
@@ -29,7 +30,10 @@
 #include <vector>
 
 #include "cli/beam_command.h"
+#include "cli/beam_methods.h"
+#include "cli/cli_common.h"
 #include "cli/command_runner.h"
+#include "flexure/beam/beam_keys.h"
 #include "flexure/beam/beam_problem.h"
 #include "flexure/beam/beam_request.h"
 #include "flexure/solver/common/errors.h"
@@ -195,11 +199,38 @@ py::tuple run(const std::vector<std::string>& args) {
   return run_released([&] { return cli::run_command(args); });
 }
 
-// beam(...): `flexure beam --json` for keyword values (cli::run_beam_request on the library's
-// BeamRequest), the same result as run(["beam", ...]) without a command line
-// (python/flexure/_beam.py decides which applies).
+// beam(...): `flexure beam --json` for keyword values, by the library alone, the same result as
+// run(["beam", ...]) without a command line (python/flexure/_beam.py decides which applies): the
+// request checked by make_beam_input with the tool's names (so its messages), solved, the answer
+// checked (require_complete_answer), its warnings (beam_answer_warnings) and its keys written by
+// the beam layer's one writer (beam/beam_keys.h), which the command uses too; a failed solve
+// reported as the command reports it (cli::throw_beam_failure). A physical beam or a chain file
+// goes through run(): the keywords here never give one.
 py::tuple beam_request(const BeamRequest& request) {
-  return run_released([&] { return cli::run_beam_request(request); });
+  return run_released([&] {
+    if (request.physical || request.chain) {
+      throw std::logic_error("beam: a physical beam or a chain file goes through run()");
+    }
+    const BeamRequestNames names = BeamRequestNames::command_line();
+    cli::CommandOutput out;
+    const BeamInput input = make_beam_input(request, names);
+    for (const Warning& w : input.warnings) out.warnings.push_back(w.text);
+    const BeamProblem& problem = input.problem;
+    BeamSolution solution;
+    try {
+      solution = solve_beam(input.method, problem);
+    } catch (const bench::ToleranceBelowReach& e) {
+      cli::refuse_tolerance_below_reach(e, problem.tolerance);
+    }
+    if (!solution.converged()) cli::throw_beam_failure(problem, solution);
+    require_complete_answer(problem, solution);
+    for (const Warning& w : beam_answer_warnings(problem, solution, names)) {
+      out.warnings.push_back(w.text);
+    }
+    out.json = beam_keys::answer<Json>(input, solution, nullptr, names);
+    cli::require_finite_json(out.json);
+    return out;
+  });
 }
 
 // ---- a design given as a dict: TOML text for the tool's file readers ----
@@ -428,7 +459,7 @@ struct Columns {
   // warnings: the point's warnings joined by newlines (returned as a list per point).
   TextColumn method, method_reason, branch, family, message, termination, stability,
       stability_message, stable_search, warnings, validity_source, constants;
-  // special_points: the JSON text of the key (cli::special_points_json), "" for null.
+  // special_points: the JSON text of the key (beam_keys::special_points), "" for null.
   TextColumn special_points;
   std::atomic<bool> any_prbm{false}, any_chain{false}, any_prbm3r{false}, any_bcm{false};
 };
@@ -508,7 +539,7 @@ void solve_one(const cli::BeamCommandProblem& base,
     c.reaction_Fy.data[i] = finite_or_nan(s.reactions.Fy);
     c.reaction_M.data[i] = finite_or_nan(s.reactions.M);
     if (s.special_points_known) {
-      c.special_points.set(i, worker, cli::special_points_json(problem, s).dump());
+      c.special_points.set(i, worker, beam_keys::special_points<Json>(problem, s).dump());
     }
     c.stability.set(i, worker, stability_name(s.stability.kind));
     c.stability_message.set(i, worker, s.stability.message);

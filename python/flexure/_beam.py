@@ -129,7 +129,7 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
                                ("stable", stable), ("stability", stability)))
         if values is not None:
             # One load by the command's own checks and JSON object, without a command line
-            # (the library's BeamRequest, cli::run_beam_request): the same dict, messages and
+            # (the library's BeamRequest, solve_beam and beam/beam_keys.h): the same dict, messages and
             # warnings.
             kind, payload, texts, _ = _core.beam(**values)
             if texts:

@@ -11,6 +11,10 @@
 //    Howell's Theta_max) warns with kind outside_validity and points to the exact methods by the
 //    caller's name; an unstable or critical verdict warns with the tool's text; a stable PRBM
 //    answer inside its limits has none.
+//  * The answer checks every front end makes (require_complete_answer): a converged elliptic
+//    answer with the shape asked for passes; the same answer with a NaN tip, a NaN alpha2, an
+//    infinite physical stress or one shape point missing is refused as NoConvergence with the
+//    tool's words (copied from cli/beam_command.cpp before the check moved).
 #include "flexure/beam/beam_request.h"
 
 #include <gtest/gtest.h>
@@ -276,6 +280,39 @@ TEST(BeamRequest, AnswerWarningsNameTheCallersOptions) {
   EXPECT_EQ(beam_answer_warnings(p, unstable)[0].text,
             "the returned equilibrium is CRITICAL (stability margin 1e-12): a buckling or limit "
             "point, where the slightest further load makes the beam buckle or snap");
+}
+
+std::string incomplete(const BeamProblem& p, const BeamSolution& s, const PhysicalResults* r) {
+  try {
+    require_complete_answer(p, s, r);
+  } catch (const NoConvergence& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(BeamRequest, AnAnswerMissingWhatWasAskedIsRefused) {
+  BeamProblem p;
+  p.value = 2.0;
+  p.shape_points = 11;
+  const BeamSolution good = solve_beam(BeamMethod::kElliptic, p);
+  ASSERT_TRUE(good.converged()) << good.message;
+  ASSERT_EQ(good.shape.size(), 11u);
+  EXPECT_EQ(incomplete(p, good, nullptr), "");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  BeamSolution s = good;
+  s.tip.b_over_l = nan;
+  EXPECT_EQ(incomplete(p, s, nullptr), "b/l came out as nan; no converged solution to report");
+  s = good;
+  s.alpha2 = nan;
+  EXPECT_EQ(incomplete(p, s, nullptr), "alpha2 came out as nan; no converged solution to report");
+  s = good;
+  s.shape.pop_back();
+  EXPECT_EQ(incomplete(p, s, nullptr), "method 'elliptic' returned 10 shape points instead of 11");
+  PhysicalResults r;
+  r.max_moment = 1.0;
+  r.max_stress = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(incomplete(p, good, &r), "max_stress came out as inf; no converged solution to report");
 }
 
 }  // namespace
