@@ -50,6 +50,19 @@ V2 rotate(double angle, const V2& v) {
   return V2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
 }
 
+// The chain's dead tip and node forces turned by `angle` (into a frame turned by -angle); moments
+// and the follower force do not change.
+void rotate_dead_forces(SegmentChain& chain, double angle) {
+  const V2 tip = rotate(angle, V2(chain.tip_load.Fx, chain.tip_load.Fy));
+  chain.tip_load.Fx = tip.x();
+  chain.tip_load.Fy = tip.y();
+  for (NodeLoad& load : chain.node_loads) {
+    const V2 f = rotate(angle, V2(load.Fx, load.Fy));
+    load.Fx = f.x();
+    load.Fy = f.y();
+  }
+}
+
 // A solve that the contact model cannot complete (non-convergence of a free-span solve, no
 // separation point): reported as the result's message.
 struct ContactFailure : std::runtime_error {
@@ -439,14 +452,7 @@ SegmentChain ContactRun::span_chain(const SegmentChain& chain, double s_c) const
   const double theta_c = wrap_pose(s_c).theta;
   SegmentChain span = chain;
   std::get<FlexibleSegment>(span.segments.front()).length = L1_ - s_c;
-  const V2 f = rotate(-theta_c, V2(chain.tip_load.Fx, chain.tip_load.Fy));
-  span.tip_load.Fx = f.x();
-  span.tip_load.Fy = f.y();
-  for (NodeLoad& load : span.node_loads) {
-    const V2 g = rotate(-theta_c, V2(load.Fx, load.Fy));
-    load.Fx = g.x();
-    load.Fy = g.y();
-  }
+  rotate_dead_forces(span, -theta_c);
   return span;
 }
 
@@ -737,15 +743,8 @@ Stability ContactRun::verdict(bool contact, double variable) {
       const double psi = std::atan2(normal_.y(), normal_.x()) - 0.5 * std::acos(-1.0);
       SegmentChain turned = chain;
       turned.segments.insert(turned.segments.begin(), RigidSegment{0.0, -psi});
-      const V2 tip = rotate(-psi, V2(chain.tip_load.Fx, chain.tip_load.Fy));
-      turned.tip_load.Fx = tip.x();
-      turned.tip_load.Fy = tip.y();
-      for (NodeLoad& load : turned.node_loads) {
-        const V2 f = rotate(-psi, V2(load.Fx, load.Fy));
-        load.Fx = f.x();
-        load.Fy = f.y();
-        ++load.node;
-      }
+      rotate_dead_forces(turned, -psi);
+      for (NodeLoad& load : turned.node_loads) ++load.node;
       const ShapeAtStations shape = [&](const std::vector<double>& s) {
         std::vector<ShapePoint> out = shooting_shape_at(loaded, r, s, plain_options_);
         for (ShapePoint& p : out) {
