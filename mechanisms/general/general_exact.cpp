@@ -858,7 +858,7 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
             yl = ym;
           }
           result.limit_inputs.push_back(A.input_si(yl[n]));
-          result.limit_loads.push_back(A.load_si(yl[p]));
+          result.limit_loads.push_back(A.load_si(yl[N + m]));  // lambda, whichever is controlled
         }
         const double from = yc[p], to = yn[p];
         auto crossed = [&](double v) { return (v - from) * (v - to) <= 0.0 && v != from; };
