@@ -919,13 +919,24 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
       result.message =
           std::string("the exact model's path did not reach the end of the ") +
           (force ? "load" : "input") + " range after " + std::to_string(steps) + " steps" +
-          (result.limit_inputs.empty()
-               ? std::string()
-               : "; it turned back at a limit point at input " + fmt(result.limit_inputs.front()));
+          (result.limit_inputs.empty() ? std::string()
+                                       : "; it turned back at a limit point at input " +
+                                             input_value_text(in, result.limit_inputs.front()));
     } else if (end == Termination::kNoConvergence) {
       result.message = "the exact model's continuation failed after " + std::to_string(steps) +
-                       " steps (" + std::to_string(result.points.size()) + " of " +
-                       std::to_string(in.count) + " points)";
+                       " steps (" + std::to_string(result.points.size()) + " points recorded for " +
+                       std::to_string(in.count) + " grid values)";
+      // Driven past the end of its travel, the path turns back at a limit point of the input and
+      // wanders along other branches (another assembly of the linkage) until it fails: say where
+      // the travel ended, which is what the user can act on.
+      if (!result.limit_inputs.empty()) {
+        result.message += std::string("; the ") + (force ? "load" : "input") +
+                          " turned back at a limit point at input " +
+                          input_value_text(in, result.limit_inputs.front()) +
+                          (force ? std::string(" (the mechanism snaps there)")
+                                 : std::string(" (the end of the mechanism's travel this way: end "
+                                               "the input range before it)"));
+      }
     }
     // Equilibria of the unloaded mechanism: sign changes of lambda along the path, by Newton
     // with lambda = 0.

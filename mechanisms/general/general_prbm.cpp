@@ -295,6 +295,11 @@ int check_general_mechanism(const GeneralMechanism& mechanism) {
   return dof;
 }
 
+std::string input_value_text(const Input& input, double value) {
+  if (input.coordinate != InputCoordinate::kAngle) return fmt(value) + " m";
+  return fmt(value) + " rad (" + fmt(value * 180.0 / std::acos(-1.0)) + " deg)";
+}
+
 GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
                                      const GeneralPrbmOptions& options) {
   options.validate();
@@ -504,11 +509,12 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
   result.iterations = steps;
   result.termination = end;
   if (end == Termination::kLimitPoint) {
-    result.message = "the path did not reach the end of the input range after " +
-                     std::to_string(steps) + " steps" +
-                     (result.limit_inputs.empty() ? std::string()
-                                                  : "; it turned back at a limit point at input " +
-                                                        fmt(result.limit_inputs.front()));
+    result.message =
+        "the path did not reach the end of the input range after " + std::to_string(steps) +
+        " steps" +
+        (result.limit_inputs.empty() ? std::string()
+                                     : "; it turned back at a limit point at input " +
+                                           input_value_text(in, result.limit_inputs.front()));
   } else if (end == Termination::kNoConvergence) {
     result.message = "the continuation failed after " + std::to_string(steps) + " steps (" +
                      std::to_string(result.points.size()) + " of " + std::to_string(in.count) +

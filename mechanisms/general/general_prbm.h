@@ -79,6 +79,10 @@ struct GeneralPrbmResult : SolveStatus {
 // spring (naming it).
 int check_general_mechanism(const GeneralMechanism& mechanism);
 
+// A value of the input coordinate for messages, with its unit: "0.0125 m", or for an angle
+// "0.582571 rad (33.379 deg)".
+std::string input_value_text(const Input& input, double value);
+
 // Solves the PRBM of `mechanism` over its input range. Throws InvalidInput for a bad description
 // (GeneralMechanism::validate), for redundant constraints, for a body or direction that moves with
 // no stiffness while the input is held (naming the body), and for a flexure whose model is

@@ -57,6 +57,25 @@ TEST(GeneralMechanismCli, InputRangeFromTheCommandLine) {
   ASSERT_EQ(j["equilibria"].size(), 1u);  // only the toggle lies in 10..20 deg
 }
 
+// Driven past the end of its travel (35 deg; the coupler and rocker align at 33.376 deg in the
+// rigid four-bar), the exact model does not answer: exit 3, and the message says where the input
+// turned back so that the range can end before it.
+TEST(GeneralMechanismCli, InputPastTheTravelNamesTheLimit) {
+  const CommandResult r =
+      run_flexure("mechanism analyze " + kSwitch + " --model exact --input -5deg:35deg:21 --json");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  const std::string key = "turned back at a limit point at input ";
+  const std::size_t at = r.err.find(key);
+  ASSERT_NE(at, std::string::npos) << r.err;
+  const std::size_t deg = r.err.find("rad (", at);
+  ASSERT_NE(deg, std::string::npos) << r.err;
+  const double travel = std::stod(r.err.substr(deg + 5));
+  const double r1 = 36.1, r2 = 20.0, r3 = 10.0, r4 = 12.3;  // mm, Howell Table 11.1
+  const double rigid = std::acos((r2 * r2 + r1 * r1 - (r3 + r4) * (r3 + r4)) / (2 * r1 * r2)) *
+                       180 / std::numbers::pi;
+  EXPECT_NEAR(travel, rigid, 0.02) << r.err;
+}
+
 TEST(GeneralMechanismCli, Refusals) {
   expect_refused("mechanism analyze " + kSwitch + " --prbm-only", {"--prbm-only", "general"});
   expect_refused("mechanism analyze " + kSwitch + " --input '0deg:10mm:3'", {"--input STOP"});
