@@ -512,9 +512,17 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
     result.message =
         "the path did not reach the end of the input range after " + std::to_string(steps) +
         " steps" +
-        (result.limit_inputs.empty() ? std::string()
-                                     : "; it turned back at a limit point at input " +
-                                           input_value_text(in, result.limit_inputs.front()));
+        (result.limit_inputs.empty()
+             // No fold: the input creeps towards a dead point of the linkage while the load that
+             // holds it grows without bound (a rigid PRB linkage at the end of its travel).
+             ? "; it came no further than input " + input_value_text(in, A.input_si(z[si])) +
+                   ", held by an input load of " + fmt(A.load_si(z[li])) +
+                   (in.coordinate == InputCoordinate::kAngle ? " N m" : " N") +
+                   (displacement ? " (the end of the linkage's travel: end the input range before "
+                                   "it)"
+                                 : "")
+             : "; it turned back at a limit point at input " +
+                   input_value_text(in, result.limit_inputs.front()));
   } else if (end == Termination::kNoConvergence) {
     result.message = "the continuation failed after " + std::to_string(steps) + " steps (" +
                      std::to_string(result.points.size()) + " of " + std::to_string(in.count) +

@@ -74,6 +74,17 @@ TEST(GeneralMechanismCli, InputPastTheTravelNamesTheLimit) {
   const double rigid = std::acos((r2 * r2 + r1 * r1 - (r3 + r4) * (r3 + r4)) / (2 * r1 * r2)) *
                        180 / std::numbers::pi;
   EXPECT_NEAR(travel, rigid, 0.02) << r.err;
+  // The PRBM's rigid linkage creeps towards the dead point while the torque grows without bound:
+  // its message names how far it came.
+  const CommandResult p =
+      run_flexure("mechanism analyze " + kSwitch + " --model prbm --input -5deg:35deg:21 --json");
+  EXPECT_EQ(p.exit_code, 3) << p.err;
+  const std::size_t came = p.err.find("came no further than input ");
+  ASSERT_NE(came, std::string::npos) << p.err;
+  const std::size_t pdeg = p.err.find("rad (", came);
+  ASSERT_NE(pdeg, std::string::npos) << p.err;
+  EXPECT_NEAR(std::stod(p.err.substr(pdeg + 5)), rigid, 0.02) << p.err;
+  EXPECT_NE(p.err.find(" N m (the end of the linkage's travel"), std::string::npos) << p.err;
 }
 
 TEST(GeneralMechanismCli, Refusals) {
