@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 
+#include "flexure/mechanisms/general/arclength_path.h"
 #include "flexure/mechanisms/general/exact_stability.h"
 #include "flexure/mechanisms/general/flexure_models.h"
 #include "flexure/mechanisms/general/prbm_assembly.h"
@@ -751,66 +752,9 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
       J(N + m, n) = -1.0;
       return true;
     };
-    double worst = 0.0;
-    auto newton_fixed = [&](VectorXd& y, int fixed) {
-      for (int it = 0; it <= options.max_newton_iterations; ++it) {
-        VectorXd F;
-        if (!F_of(y, F)) return false;
-        const double r = F.lpNorm<Eigen::Infinity>();
-        if (r < options.tolerance) {
-          worst = std::max(worst, r);
-          return true;
-        }
-        MatrixXd J;
-        if (!J_of(y, J)) return false;
-        ++iterations;
-        MatrixXd Js(n, n);
-        Js << J.leftCols(fixed), J.rightCols(n - fixed);
-        const VectorXd dx = Js.fullPivLu().solve(-F);
-        if (!dx.allFinite()) return false;
-        for (int i = 0, k = 0; i <= n; ++i) {
-          if (i != fixed) y[i] += dx[k++];
-        }
-      }
-      return false;
-    };
-    // Unit tangent in the weighted norm, oriented along `orient` (weighted).
-    auto tangent = [&](const VectorXd& y, const VectorXd& orient, VectorXd& t) {
-      MatrixXd J;
-      if (!J_of(y, J)) return false;
-      MatrixXd M(n + 1, n + 1);
-      M.topRows(n) = J;
-      M.row(n) = orient.cwiseProduct(weight).transpose();
-      VectorXd rhs = VectorXd::Zero(n + 1);
-      rhs[n] = 1.0;
-      t = M.fullPivLu().solve(rhs);
-      const double norm = t.cwiseProduct(weight).norm();
-      if (!t.allFinite() || !(norm > 0.0)) return false;
-      t /= norm;
-      if (t.cwiseProduct(weight).dot(orient) < 0.0) t = -t;
-      return true;
-    };
-    auto corrector = [&](VectorXd& y, const VectorXd& base, const VectorXd& t, double h) {
-      const VectorXd tw = t.cwiseProduct(weight);
-      for (int it = 0; it <= options.max_newton_iterations; ++it) {
-        VectorXd F;
-        if (!F_of(y, F)) return -1;
-        VectorXd f(n + 1);
-        f.head(n) = F;
-        f[n] = tw.dot(y - base) - h;
-        if (f.lpNorm<Eigen::Infinity>() < options.tolerance) return it;
-        MatrixXd J;
-        if (!J_of(y, J)) return -1;
-        ++iterations;
-        MatrixXd M(n + 1, n + 1);
-        M.topRows(n) = J;
-        M.row(n) = tw.transpose();
-        const VectorXd dx = M.fullPivLu().solve(-f);
-        if (!dx.allFinite()) return -1;
-        y += dx;
-      }
-      return -1;
-    };
+    ArclengthPath path(
+        {n + 1, F_of, J_of, weight},
+        {options.tolerance, options.max_newton_iterations, options.max_step, options.max_steps});
     std::vector<double> loads = grid;  // the controlled quantity's grid values, scaled
     if (force) {
       for (int i = 0; i < in.count; ++i) {
@@ -818,102 +762,41 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
             A.load_scaled(in.start + (in.stop - in.start) * i / (in.count - 1));
       }
     }
-    std::vector<VectorXd> dense;
-    int steps = 0;
-    auto record_y = [&](const VectorXd& y) {
+    ArclengthPath::Follow how;
+    how.controlled = p;
+    how.limit = [&](const VectorXd& yl) {
+      result.limit_inputs.push_back(A.input_si(yl[n]));
+      result.limit_loads.push_back(A.load_si(yl[N + m]));  // lambda, whichever is controlled
+    };
+    ArclengthPath::Follow recording = how;
+    recording.grid = &loads;
+    recording.record = [&](const VectorXd& y) {
       z = y.head(n);
       s = y[n];
       record();
     };
-    auto follow = [&](VectorXd& yc, double target, bool recording) -> Termination {
-      VectorXd orient = VectorXd::Zero(n + 1);
-      orient[p] = target >= yc[p] ? 1.0 : -1.0;
-      VectorXd t;
-      if (!tangent(yc, orient, t)) return Termination::kNoConvergence;
-      double h = options.max_step;
-      if (recording) dense.push_back(yc);
-      while (steps < options.max_steps) {
-        VectorXd yn = yc + h * t;
-        const int its = corrector(yn, yc, t, h);
-        VectorXd tn;
-        bool ok = its >= 0 && tangent(yn, t, tn) &&
-                  t.cwiseProduct(weight).dot(tn.cwiseProduct(weight)) > 0.9;
-        if (!ok) {
-          h *= 0.5;
-          if (h < 1e-10) return Termination::kNoConvergence;
-          continue;
-        }
-        ++steps;
-        if (t[p] * tn[p] < 0.0) {
-          // A limit point of the load inside this step: bisect the arclength on the sign of the
-          // tangent's lambda component.
-          double lo = 0.0, hi = h;
-          VectorXd yl = yn;
-          for (int k = 0; k < 60 && hi - lo > 1e-13; ++k) {
-            const double mid = 0.5 * (lo + hi);
-            VectorXd ym = yc + mid * t;
-            VectorXd tm;
-            if (corrector(ym, yc, t, mid) < 0 || !tangent(ym, t, tm)) break;
-            (tm[p] * t[p] > 0.0 ? lo : hi) = mid;
-            yl = ym;
-          }
-          result.limit_inputs.push_back(A.input_si(yl[n]));
-          result.limit_loads.push_back(A.load_si(yl[N + m]));  // lambda, whichever is controlled
-        }
-        const double from = yc[p], to = yn[p];
-        auto crossed = [&](double v) { return (v - from) * (v - to) <= 0.0 && v != from; };
-        auto solve_at = [&](double v, VectorXd& out) {
-          out = yc + ((v - from) / (to - from)) * (yn - yc);
-          out[p] = v;
-          return newton_fixed(out, p);
-        };
-        if (recording) {
-          std::vector<double> hits;
-          for (double v : loads) {
-            if (crossed(v)) hits.push_back(v);
-          }
-          std::sort(hits.begin(), hits.end(), [&](double x, double y) {
-            return to > from ? x < y : x > y;
-          });
-          for (double v : hits) {
-            VectorXd yg;
-            if (!solve_at(v, yg)) return Termination::kNoConvergence;
-            record_y(yg);
-          }
-          dense.push_back(yn);
-          // A path that keeps crossing the grid (a closed curve of a linkage driven past the end
-          // of its travel) has turned back for good: stop rather than go round it.
-          if (result.points.size() > 4 * static_cast<std::size_t>(in.count)) {
-            return Termination::kLimitPoint;
-          }
-        }
-        if (crossed(target)) {
-          VectorXd yt;
-          if (!solve_at(target, yt)) return Termination::kNoConvergence;
-          yc = yt;
-          return Termination::kConverged;
-        }
-        yc = yn;
-        t = tn;
-        if (its <= 3) h = std::min(1.5 * h, options.max_step);
-      }
-      return Termination::kLimitPoint;
+    // A path that keeps crossing the grid (a closed curve of a linkage driven past the end of its
+    // travel) has turned back for good: stop rather than go round it.
+    recording.give_up = [&] {
+      return result.points.size() > 4 * static_cast<std::size_t>(in.count);
     };
     VectorXd y(n + 1);
     y << z_start, s_start;
     Termination end = Termination::kConverged;
+    double worst = 0.0;
     if (y[p] != loads.front()) {
-      end = follow(y, loads.front(), false);
+      end = path.follow(y, loads.front(), how);
     } else {
-      worst = std::max(worst, S.residual());
+      worst = S.residual();
     }
     if (end == Termination::kConverged) {
-      record_y(y);
+      recording.record(y);
       result.limit_inputs.clear();
       result.limit_loads.clear();
-      end = follow(y, loads.back(), true);
+      end = path.follow(y, loads.back(), recording);
     }
-    result.iterations = iterations;
+    const int steps = path.steps();
+    result.iterations = iterations + path.iterations();
     result.termination = end;
     if (end == Termination::kLimitPoint) {
       result.message =
@@ -939,19 +822,10 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
       }
     }
     // Equilibria of the unloaded mechanism: sign changes of lambda along the path, by Newton
-    // with lambda = 0.
-    for (std::size_t i = 0; i + 1 < dense.size(); ++i) {
-      const double l0 = dense[i][p], l1 = dense[i + 1][p];
-      if (!(l0 * l1 <= 0.0)) continue;
-      VectorXd ye =
-          l0 == l1 ? dense[i] : VectorXd(dense[i] + (l0 / (l0 - l1)) * (dense[i + 1] - dense[i]));
-      ye[p] = 0.0;
-      if (!newton_fixed(ye, p)) {
-        result.warn(WarningKind::kOther,
-                    "an exact equilibrium near input " + fmt(A.input_si(dense[i][n])) +
-                        " was bracketed but Newton did not converge");
-        continue;
-      }
+    // with lambda = 0 (lambda, not the controlled component: under displacement control the
+    // path's parameter is the input coordinate).
+    std::vector<VectorXd> failed;
+    for (const VectorXd& ye : path.zeros_along(N + m, &failed)) {
       const double se = A.input_si(ye[n]);
       if (!result.equilibria.empty() &&
           std::fabs(result.equilibria.back().input - se) <
@@ -966,6 +840,12 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
                         : exact_not_checked();
       result.equilibria.push_back(std::move(e));
     }
+    for (const VectorXd& yf : failed) {
+      result.warn(WarningKind::kOther,
+                  "an exact equilibrium near input " + fmt(A.input_si(yf[n])) +
+                      " was bracketed but Newton did not converge");
+    }
+    worst = std::max(worst, path.worst_residual());
     result.residual = std::max(worst, S.residual());
     return result;
   };

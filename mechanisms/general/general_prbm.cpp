@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "flexure/mechanisms/general/arclength_path.h"
 #include "flexure/mechanisms/general/prbm_assembly.h"
 #include "flexure/solver/common/errors.h"
 
@@ -137,85 +138,10 @@ class PathSolver {
     return J;
   }
 
-  // Newton on F = 0 with z[p] held; returns whether it converged (z updated in place).
-  bool newton_fixed(VectorXd& z, int p, int* iterations = nullptr) const {
-    for (int it = 0; it <= o_.max_newton_iterations; ++it) {
-      const VectorXd f = F(z);
-      const double r = f.lpNorm<Eigen::Infinity>();
-      if (!std::isfinite(r)) {
-        return false;
-      }
-      if (r < o_.tolerance) {
-        if (iterations != nullptr) {
-          *iterations = it;
-        }
-        residual_ = std::max(residual_, r);
-        return true;
-      }
-      MatrixXd J = JF(z);
-      MatrixXd Js(n_ - 1, n_ - 1);
-      Js << J.leftCols(p), J.rightCols(n_ - 1 - p);
-      const VectorXd dx = Js.fullPivLu().solve(-f);
-      if (!dx.allFinite()) {
-        return false;
-      }
-      for (int i = 0, k = 0; i < n_; ++i) {
-        if (i != p) {
-          z[i] += dx[k++];
-        }
-      }
-    }
-    return false;
-  }
-
-  // Unit tangent of the curve at z, oriented along `orient`.
-  VectorXd tangent(const VectorXd& z, const VectorXd& orient) const {
-    MatrixXd M(n_, n_);
-    M.topRows(n_ - 1) = JF(z);
-    M.row(n_ - 1) = orient.transpose();
-    VectorXd rhs = VectorXd::Zero(n_);
-    rhs[n_ - 1] = 1.0;
-    VectorXd t = M.fullPivLu().solve(rhs);
-    t.normalize();
-    if (t.dot(orient) < 0.0) {
-      t = -t;
-    }
-    return t;
-  }
-
-  // Pseudo-arclength corrector from the predictor zp along t.
-  bool corrector(VectorXd& z, const VectorXd& z_base, const VectorXd& t, double h, int* its) const {
-    for (int it = 0; it <= o_.max_newton_iterations; ++it) {
-      VectorXd f(n_);
-      f.head(n_ - 1) = F(z);
-      f[n_ - 1] = t.dot(z - z_base) - h;
-      const double r = f.lpNorm<Eigen::Infinity>();
-      if (!std::isfinite(r)) {
-        return false;
-      }
-      if (r < o_.tolerance) {
-        *its = it;
-        return true;
-      }
-      MatrixXd M(n_, n_);
-      M.topRows(n_ - 1) = JF(z);
-      M.row(n_ - 1) = t.transpose();
-      const VectorXd dx = M.fullPivLu().solve(-f);
-      if (!dx.allFinite()) {
-        return false;
-      }
-      z += dx;
-    }
-    return false;
-  }
-
-  double residual() const { return residual_; }
-
  private:
   const PrbmAssembly& a_;
   const GeneralPrbmOptions& o_;
   int N_, m_, n_;
-  mutable double residual_ = 0.0;
 };
 
 }  // namespace
@@ -314,6 +240,20 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
   }
   const PrbmAssembly A(mechanism);
   PathSolver P(A, options);
+  ArclengthCurve curve;
+  curve.size = P.size();
+  curve.residual = [&](const VectorXd& z, VectorXd& f) {
+    f = P.F(z);
+    return true;
+  };
+  curve.jacobian = [&](const VectorXd& z, MatrixXd& J) {
+    J = P.JF(z);
+    return true;
+  };
+  curve.weight = VectorXd::Ones(P.size());
+  ArclengthPath path(
+      std::move(curve),
+      {options.tolerance, options.max_newton_iterations, options.max_step, options.max_steps});
   const int N = A.coordinate_count();
   const int m = A.constraint_count();
   const int li = P.lambda_index();
@@ -341,7 +281,7 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
   // The described configuration, projected onto the constraints (s held at its value there).
   VectorXd z = VectorXd::Zero(P.size());
   z[si] = A.input(q0);
-  if (!P.newton_fixed(z, si)) {
+  if (!path.newton_fixed(z, si)) {
     result.termination = Termination::kNoConvergence;
     result.message = "Newton did not converge at the described configuration";
     return result;
@@ -382,102 +322,15 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
     result.points.push_back(std::move(pt));
   };
 
-  // Follows the curve from z with the controlled quantity moving towards `target`; records the
-  // grid values crossed when `recording`, and keeps every accepted step in `dense`.
-  std::vector<VectorXd> dense;
-  int steps = 0;
-  auto follow = [&](VectorXd& zc, double target, bool recording) -> Termination {
-    VectorXd orient = VectorXd::Zero(P.size());
-    orient[p] = target >= zc[p] ? 1.0 : -1.0;
-    VectorXd t = P.tangent(zc, orient);
-    double h = options.max_step;
-    if (recording) {
-      dense.push_back(zc);
-    }
-    while (steps < options.max_steps) {
-      VectorXd zn = zc + h * t;
-      int its = 0;
-      bool ok = P.corrector(zn, zc, t, h, &its);
-      VectorXd tn;
-      if (ok) {
-        tn = P.tangent(zn, t);
-        ok = t.dot(tn) > 0.9;  // a sharp turn: the step may have jumped to another branch
-      }
-      if (!ok) {
-        h *= 0.5;
-        if (h < 1e-10) {
-          return Termination::kNoConvergence;
-        }
-        continue;
-      }
-      ++steps;
-      if (t[p] * tn[p] < 0.0) {
-        // A limit point of the controlled quantity inside this step: bisect the arclength on the
-        // sign of the tangent's component along it.
-        double lo = 0.0, hi = h;
-        VectorXd zl = zn;
-        for (int k = 0; k < 60 && hi - lo > 1e-13; ++k) {
-          const double mid = 0.5 * (lo + hi);
-          VectorXd zm = zc + mid * t;
-          int mits = 0;
-          if (!P.corrector(zm, zc, t, mid, &mits)) {
-            break;
-          }
-          if (P.tangent(zm, t)[p] * t[p] > 0.0) {
-            lo = mid;
-          } else {
-            hi = mid;
-          }
-          zl = zm;
-        }
-        result.limit_inputs.push_back(A.input_si(zl[si]));
-        result.limit_loads.push_back(A.load_si(zl[li]));
-      }
-      // Grid values (and the target) crossed by this step, in the order of travel.
-      const double from = zc[p];
-      const double to = zn[p];
-      auto crossed = [&](double v) { return (v - from) * (v - to) <= 0.0 && v != from; };
-      auto solve_at = [&](double v, VectorXd& out) {
-        const double w = (v - from) / (to - from);
-        out = zc + w * (zn - zc);
-        out[p] = v;
-        return P.newton_fixed(out, p);
-      };
-      if (recording) {
-        std::vector<double> hits;
-        for (double v : grid) {
-          if (crossed(v)) {
-            hits.push_back(v);
-          }
-        }
-        std::sort(hits.begin(), hits.end(), [&](double x, double y) {
-          return to > from ? x < y : x > y;
-        });
-        for (double v : hits) {
-          VectorXd zg;
-          if (!solve_at(v, zg)) {
-            return Termination::kNoConvergence;
-          }
-          record(zg);
-        }
-        dense.push_back(zn);
-      }
-      if (crossed(target)) {
-        VectorXd zt;
-        if (!solve_at(target, zt)) {
-          return Termination::kNoConvergence;
-        }
-        zc = zt;
-        return Termination::kConverged;
-      }
-      zc = zn;
-      t = tn;
-      if (its <= 3) {
-        h = std::min(1.5 * h, options.max_step);
-      }
-    }
-    return Termination::kLimitPoint;
+  ArclengthPath::Follow how;
+  how.controlled = p;
+  how.limit = [&](const VectorXd& zl) {
+    result.limit_inputs.push_back(A.input_si(zl[si]));
+    result.limit_loads.push_back(A.load_si(zl[li]));
   };
+  ArclengthPath::Follow recording = how;
+  recording.grid = &grid;
+  recording.record = record;
 
   Termination end = Termination::kConverged;
   if (start_given) {
@@ -490,7 +343,7 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
     }
     z[si] = A.input(P.q(z));
     z[p] = grid.front();
-    if (!P.newton_fixed(z, p)) {
+    if (!path.newton_fixed(z, p)) {
       result.termination = Termination::kNoConvergence;
       result.message =
           "Newton did not converge at the first input value from the given "
@@ -498,14 +351,15 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
       return result;
     }
   } else if (z[p] != grid.front()) {
-    end = follow(z, grid.front(), false);
+    end = path.follow(z, grid.front(), how);
   }
   if (end == Termination::kConverged) {
     record(z);
     result.limit_inputs.clear();
     result.limit_loads.clear();
-    end = follow(z, grid.back(), true);
+    end = path.follow(z, grid.back(), recording);
   }
+  const int steps = path.steps();
   result.iterations = steps;
   result.termination = end;
   if (end == Termination::kLimitPoint) {
@@ -530,21 +384,8 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
   }
 
   // Equilibria of the unloaded mechanism: sign changes of the input load along the path.
-  for (std::size_t i = 0; i + 1 < dense.size(); ++i) {
-    const double l0 = dense[i][li];
-    const double l1 = dense[i + 1][li];
-    if (!(l0 * l1 <= 0.0)) {
-      continue;
-    }
-    VectorXd ze =
-        l0 == l1 ? dense[i] : VectorXd(dense[i] + (l0 / (l0 - l1)) * (dense[i + 1] - dense[i]));
-    ze[li] = 0.0;
-    if (!P.newton_fixed(ze, li)) {
-      result.warn(WarningKind::kOther,
-                  "an equilibrium near input " + fmt(A.input_si(dense[i][si])) +
-                      " was bracketed but Newton did not converge");
-      continue;
-    }
+  std::vector<VectorXd> failed;
+  for (const VectorXd& ze : path.zeros_along(li, &failed)) {
     const double s = A.input_si(ze[si]);
     if (!result.equilibria.empty() &&
         std::fabs(result.equilibria.back().input - s) <
@@ -562,7 +403,12 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
                           "force");
     result.equilibria.push_back(std::move(e));
   }
-  result.residual = P.residual();
+  for (const VectorXd& zf : failed) {
+    result.warn(WarningKind::kOther,
+                "an equilibrium near input " + fmt(A.input_si(zf[si])) +
+                    " was bracketed but Newton did not converge");
+  }
+  result.residual = path.worst_residual();
   return result;
 }
 
