@@ -22,7 +22,8 @@ solve_beam in C++ (beam_stability_bench's BM_SolveBeamAuto) and the command line
 stability verdict (this build and --baseline); the `edges` table the commands of issue 27 as a user runs them (a shooting
 sweep, the guided chain, the chain's element count), with the GSL + Brent yardstick of
 shooting_sweep_bench measured in the same run, and the same commands of an older build given by
---baseline BUILD (the before column). No number in a generated table is typed by hand.
+--baseline BUILD (the before column); the `general_mechanisms` table the shipped general
+mechanisms of issue 31 by both models (times, equilibria, limit points). No number in a generated table is typed by hand.
 Standard library only; the raw JSON of each program is kept with --keep DIR.
 """
 import argparse
@@ -421,6 +422,54 @@ def sweep_verdict_table(build, baseline, runs, baseline_label=None):
     return "\n".join(lines)
 
 
+# Issue 31's shipped general mechanisms (docs/mechanisms.md "Shipped examples").
+GENERAL_EXAMPLES = ["howell_bistable_switch", "parallel_guide", "double_parallelogram_stage",
+                    "cross_axis_pivot", "inclined_bistable_beam",
+                    "howell_partially_compliant_fourbar", "howell_fully_compliant_fourbar",
+                    "howell_bicycle_brakes", "howell_compliant_gripper"]
+
+
+def general_mechanisms_table(build, runs):
+    """`flexure mechanism analyze FILE --model prbm|exact --json` of each shipped general
+    mechanism: whole-process wall and CPU time (medians of `runs`), the points solved, the largest
+    input load, the unloaded equilibria with their verdicts and the limit points, all read from
+    the command's own JSON."""
+    rows = []
+    for name in GENERAL_EXAMPLES:
+        path = os.path.join(ROOT, "docs", "examples", name + ".toml")
+        for model in ("prbm", "exact"):
+            args = ["mechanism", "analyze", path, "--model", model, "--json"]
+            wall, cpu, rc = command_time(build, args, runs)
+            _, _, _, out = run_timed([os.path.join(build, "flexure")] + args)
+            d = json.loads(out)
+            if rc:
+                why = d.get("error", "")
+                rows.append((name, model, f"refused (exit {rc}): {why[:110]}...", "", "", "", ""))
+                continue
+            angle = d["input_unit"] == "rad"
+            scale, unit = (180.0 / 3.141592653589793, "deg") if angle else (1e3, "mm")
+
+            def at(x):  # a zero of a symmetric mechanism comes out at round-off: print 0
+                return f"{x * scale if abs(x * scale) > 1e-9 else 0.0:.5g} {unit}"
+            equilibria = ", ".join(f"{at(e['input'])} {e['stability']}"
+                                   for e in d.get("equilibria", [])) or "none"
+            limits = ", ".join(at(x["input"]) if isinstance(x, dict) else at(x)
+                               for x in d.get("limit_points", [])) or "none"
+            load = max(abs(v) for v in d["input_load"] if v is not None)
+            rows.append((name, model, f"{pretty(wall)} wall, {pretty(cpu)} CPU",
+                         str(len(d["input"])), f"{load:.4g} {d['input_load_unit']}", equilibria,
+                         limits))
+    lines = [f"Whole processes of `flexure mechanism analyze docs/examples/NAME.toml --model MODEL "
+             f"--json` ({flexure_version(build)}), medians of {runs} runs; CPU is the task clock "
+             f"of `perf stat`; the other columns are the command's JSON (inputs in deg for a "
+             f"rotation, mm for a displacement):", "",
+             "| mechanism | model | time | points | largest input load | unloaded equilibria "
+             "| limit points |", "|---|---|---|---|---|---|---|"]
+    for row in rows:
+        lines.append("| " + " | ".join(row) + " |")
+    return "\n".join(lines)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--build", default=os.path.join(ROOT, "build"))
@@ -448,6 +497,8 @@ def main():
         elif name == "sweep_verdict":
             table = sweep_verdict_table(args.build, args.baseline, args.edge_runs,
                                         args.baseline_label)
+        elif name == "general_mechanisms":
+            table = general_mechanisms_table(args.build, args.edge_runs)
         elif name == "edges":
             table = edges_table(args.build, args.baseline, args.edge_runs, args.baseline_label)
         elif args.from_json:
