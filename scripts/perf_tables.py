@@ -443,7 +443,7 @@ def general_mechanisms_table(build, runs):
             _, _, _, out = run_timed([os.path.join(build, "flexure")] + args)
             d = json.loads(out)
             if rc:
-                why = d.get("error", "")
+                why = d.get("error", "").replace(ROOT + os.sep, "")
                 rows.append((name, model, f"refused (exit {rc}): {why[:110]}...", "", "", "", ""))
                 continue
             angle = d["input_unit"] == "rad"

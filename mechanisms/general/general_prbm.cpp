@@ -274,7 +274,29 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
   const std::vector<std::string> all_names = A.body_names();
   result.body_names.assign(all_names.begin(), all_names.begin() + A.described_body_count());
 
-  result.degrees_of_freedom = check_general_mechanism(mechanism);
+  // The PRB elements' links keep their length: an extensible flexure has no PRBM. Where the
+  // mechanism needs the stretch to move at all (an inclined beam between a clamp and a guided
+  // shuttle: 0 degrees of freedom with rigid links) say so instead of the count of freedoms;
+  // elsewhere the PRBM answers without the axial strain, and says that too.
+  std::vector<std::string> extensible;
+  for (const Flexure& f : mechanism.flexures) {
+    if (f.extensible) extensible.push_back(f.name);
+  }
+  try {
+    result.degrees_of_freedom = check_general_mechanism(mechanism);
+  } catch (const InvalidInput& e) {
+    if (extensible.empty()) throw;
+    throw InvalidInput(std::string(e.what()) + " -- flexure '" + extensible.front() +
+                       "' is extensible (extensible = true): it moves by stretching, which the "
+                       "PRBM's rigid links cannot (their length is fixed); solve it with --model "
+                       "exact");
+  }
+  for (const std::string& name : extensible) {
+    result.warn(WarningKind::kOutsideValidity,
+                "flexure '" + name +
+                    "': extensible = true is for the exact model; the PRBM element keeps its "
+                    "length (no axial strain)");
+  }
   const bool start_given = !mechanism.input.start_rotation.empty();
   const VectorXd q0 = VectorXd::Zero(N);
 

@@ -87,6 +87,18 @@ TEST(GeneralMechanismCli, InputPastTheTravelNamesTheLimit) {
   EXPECT_NE(p.err.find(" N m (the end of the linkage's travel"), std::string::npos) << p.err;
 }
 
+TEST(GeneralMechanismCli, ThePrbmOfAnExtensibleBeamBetweenFixedPointsNamesTheStretch) {
+  // The inclined beam between a clamp and a guided shuttle moves only by stretching: its PRB
+  // linkage (rigid links) has no freedom, and the message says why and what solves it.
+  const std::string beam =
+      std::string("'") + FLEXURE_SOURCE_DIR + "/docs/examples/inclined_bistable_beam.toml'";
+  const CommandResult r = run_flexure("mechanism analyze " + beam + " --model prbm --json");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("flexure 'beam' is extensible"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--model exact"), std::string::npos) << r.err;
+  EXPECT_EQ(run_flexure("mechanism analyze " + beam + " --model exact --json").exit_code, 0);
+}
+
 TEST(GeneralMechanismCli, Refusals) {
   expect_refused("mechanism analyze " + kSwitch + " --prbm-only", {"--prbm-only", "general"});
   expect_refused("mechanism analyze " + kSwitch + " --input '0deg:10mm:3'", {"--input STOP"});
