@@ -256,6 +256,17 @@ BeamInput checked_input(const BeamRequest& r, const BeamRequestNames& names) {
         names.Fy,
         names.M));
   }
+  if ((r.alpha2 ? 1 : 0) + (r.theta0 ? 1 : 0) + (r.b_over_l ? 1 : 0) > 1) {
+    std::vector<std::string> given;
+    if (r.alpha2) given.push_back(names.alpha2);
+    if (r.theta0) given.push_back(names.theta0);
+    if (r.b_over_l) given.push_back(names.b_over_l);
+    throw InvalidInput(fmt::format("at most one of {}, {} or {} may be given (got {})",
+                                   names.alpha2,
+                                   names.theta0,
+                                   names.b_over_l,
+                                   fmt::join(given, " and ")));
+  }
   if (r.alpha2) {
     require_finite_value(*r.alpha2, names.alpha2 + " (P l^2/EI)");
     problem.given = BeamProblem::Given::kAlpha2;

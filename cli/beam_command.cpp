@@ -363,9 +363,6 @@ Json to_json(const BeamInput& input,
       input, solution, physical ? &*physical : nullptr, BeamRequestNames::command_line());
 }
 
-// Set by beam_problem_of: the callback stops after validating, and reports the problem here.
-thread_local BeamCommandProblem* t_problem_only = nullptr;
-
 // The fatigue of `--cycle`: the critical fibre's cycle at the beam's largest stress.
 struct BeamFatigue {
   FatigueMaterial material;
@@ -433,7 +430,7 @@ BeamContactArgs contact_args(const BeamArgs& args) {
 }
 
 void run_beam(const BeamArgs& args, const BeamRequest& request) {
-  if (t_problem_only == nullptr && (request.chain || !args.out.empty())) {
+  if (request.chain || !args.out.empty()) {
     if (!request.chain) {
       throw InvalidInput(
           "--out writes the HDF5 file of a contact solution: give --chain FILE with a [[contact]] "
@@ -454,10 +451,6 @@ void run_beam(const BeamArgs& args, const BeamRequest& request) {
   }
   const BeamProblem& problem = input.problem;
   const BeamMethod method = input.method;
-  if (t_problem_only != nullptr) {
-    *t_problem_only = BeamCommandProblem{problem, method, input.is_physical(), args.json};
-    return;
-  }
   BeamSolution solution;
   std::optional<PhysicalResults> physical;
   try {
@@ -508,18 +501,6 @@ void run_beam(const BeamArgs& args, const BeamRequest& request) {
 }
 
 }  // namespace
-
-BeamCommandProblem beam_problem_of(const std::vector<std::string>& args) {
-  BeamCommandProblem out;
-  struct Scope {
-    explicit Scope(BeamCommandProblem* p) { t_problem_only = p; }
-    ~Scope() { t_problem_only = nullptr; }
-  } scope(&out);
-  std::vector<std::string> command{"beam"};
-  command.insert(command.end(), args.begin(), args.end());
-  run_command(command);
-  return out;
-}
 
 void register_beam_command(CLI::App& app) {
   auto args = std::make_shared<BeamArgs>();

@@ -1,7 +1,6 @@
 #pragma once
-// `flexure beam` without the solve: the problem the command would solve for these arguments,
-// validated exactly as the tool validates them (the Python module's vectorised beam solves it
-// at many loads; python/flexure_module.cpp).
+// What `flexure beam` shares with the Python module's beam (python/flexure_module.cpp): the
+// warnings of an answer in the tool's words.
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -12,17 +11,6 @@
 #include "flexure/beam/beam_request.h"
 
 namespace flexure::cli {
-
-struct BeamCommandProblem {
-  BeamProblem problem;
-  BeamMethod method = BeamMethod::kAuto;
-  bool physical = false;  // a beam in SI units or a chain file
-  bool json = false;
-};
-
-// `args` are those of `flexure beam` (without "beam"). Throws InvalidInput with the tool's message
-// for anything the tool refuses.
-BeamCommandProblem beam_problem_of(const std::vector<std::string>& args);
 
 // The warnings of an answer that `flexure beam` prints on stderr and lists under the JSON key
 // `warnings`: a PRBM outside its validity limits, an unstable or critical equilibrium.

@@ -3,7 +3,7 @@
 //    interpreter released, its JSON object converted to Python (arrays of numbers to numpy);
 //  * beam(**values): `flexure beam --json` for one load from values, by the library without a
 //    command line (BeamRequest, solve_beam, the keys of beam/beam_keys.h; the scalar flexure.beam);
-//  * beam_many(args, ...): `flexure beam` at many loads on worker threads, columns written
+//  * beam_many(keywords, ...): `flexure beam` at many loads on worker threads, columns written
 //    straight into numpy arrays (the vectorised flexure.beam);
 //  * the classes over the library's types (python/objects.cpp).
 // The Python half (python/flexure/*.py) turns keyword arguments into the tool's flags and
@@ -476,7 +476,7 @@ void fail_point(Columns& c, std::size_t i, int worker, int status, std::string_v
 }
 
 // One load: the checks and keys of `flexure beam --json` (cli/beam_command.cpp).
-void solve_one(const cli::BeamCommandProblem& base,
+void solve_one(const BeamInput& base,
                const char* given_flag,
                double n,
                double mu,
@@ -586,11 +586,71 @@ void solve_one(const cli::BeamCommandProblem& base,
   }
 }
 
-// beam_many(args, n, mu, value, shape, threads): `flexure beam ARGS` validated once (the given
-// quantity and every option), then solved at each (n[i], mu[i], value[i]) (flat float64 arrays of
-// one length; `value` is the given alpha2, theta0 or b/l) on `threads` threads without the lock
-// on the interpreter; the columns of `flexure beam --json` shaped `shape`, plus `status`.
-py::dict beam_many(const std::vector<std::string>& args,
+// The keywords of flexure.beam as the library's beam request (beam/beam_request.h), as
+// python/flexure/_beam.py normalises them (numbers as float or int, names and angles as str,
+// switches as bool); a keyword left out keeps the command's default, and a value given is one the
+// checks see as given. Used by the scalar beam() and by beam_many().
+BeamRequest request_from_keywords(const py::dict& kw) {
+  static const char* const known[] = {
+      "n",        "mu",         "alpha2",        "theta0",     "b_over_l",  "method",
+      "boundary", "tip_x",      "tip_y",         "tip_angle",  "follower",  "shape",
+      "elements", "increments", "chain_variant", "integrator", "stability", "stable",
+      "tol",      "constants",  "slenderness"};
+  for (const auto& item : kw) {
+    const std::string key = py::str(item.first);
+    if (std::find(std::begin(known), std::end(known), key) == std::end(known)) {
+      throw py::type_error("beam: unexpected keyword '" + key + "'");
+    }
+  }
+  auto get = [&](const char* key) -> py::object {
+    return kw.contains(key) ? py::reinterpret_borrow<py::object>(kw[key]) : py::object(py::none());
+  };
+  auto number = [&](const char* key) -> std::optional<double> {
+    py::object v = get(key);
+    if (v.is_none()) return std::nullopt;
+    return v.cast<double>();
+  };
+  auto integer = [&](const char* key) -> std::optional<int> {
+    py::object v = get(key);
+    if (v.is_none()) return std::nullopt;
+    return v.cast<int>();
+  };
+  auto text = [&](const char* key) -> std::optional<std::string> {
+    py::object v = get(key);
+    if (v.is_none()) return std::nullopt;
+    return v.cast<std::string>();
+  };
+  BeamRequest r;
+  r.load_ratio_n = number("n").value_or(0.0);
+  r.mu = number("mu").value_or(0.0);
+  r.alpha2 = number("alpha2");
+  r.theta0 = text("theta0");
+  r.b_over_l = number("b_over_l");
+  if (auto v = text("method")) r.method = std::move(*v);
+  if (auto v = text("boundary")) r.boundary = std::move(*v);
+  r.tip_x = number("tip_x");
+  r.tip_y = number("tip_y");
+  r.tip_angle = text("tip_angle");
+  r.follower = number("follower").value_or(0.0);
+  r.shape_points = integer("shape");
+  r.elements = integer("elements");
+  r.increments = integer("increments").value_or(1);
+  if (auto v = text("chain_variant")) r.chain_variant = std::move(*v);
+  r.integrator = text("integrator");
+  const std::optional<std::string> stability = text("stability");
+  r.judge_stability = !stability || same_name(*stability, "on");
+  r.stable = !get("stable").is_none() && get("stable").cast<bool>();
+  r.tolerance = number("tol");
+  r.constants = text("constants");
+  r.slenderness = number("slenderness");
+  return r;
+}
+
+// beam_many(keywords, n, mu, value, shape, threads): flexure.beam's keywords validated once (the
+// given quantity and every option), then solved at each (n[i], mu[i], value[i]) (flat float64
+// arrays of one length; `value` is the given alpha2, theta0 or b/l) on `threads` threads without
+// the lock on the interpreter; the columns of `flexure beam --json` shaped `shape`, plus `status`.
+py::dict beam_many(const py::dict& keywords,
                    const py::array_t<double, py::array::c_style | py::array::forcecast>& n,
                    const py::array_t<double, py::array::c_style | py::array::forcecast>& mu,
                    const py::array_t<double, py::array::c_style | py::array::forcecast>& value,
@@ -601,15 +661,14 @@ py::dict beam_many(const std::vector<std::string>& args,
       static_cast<std::size_t>(value.size()) != count) {
     throw std::invalid_argument("beam_many: n, mu and value must have one length");
   }
-  cli::BeamCommandProblem base;
+  // Checked once, with a valid placeholder for the given load, by the library with the tool's
+  // names (so the tool's messages); a physical beam or a chain file never gets here
+  // (python/flexure/_beam.py refuses them for arrays).
+  const BeamRequest request = request_from_keywords(keywords);
+  BeamInput base;
   {
     py::gil_scoped_release release;
-    base = cli::beam_problem_of(args);  // InvalidInput for what the tool refuses
-  }
-  if (base.physical) {
-    throw InvalidInput(
-        "arrays of loads are for Howell's nondimensional beam (n, alpha2, mu, theta0, b_over_l); "
-        "solve a physical beam or a chain file one load at a time");
+    base = make_beam_input(request, BeamRequestNames::command_line());
   }
   if (base.problem.shape_points > 0) {
     throw InvalidInput("shape= returns one curve per load: give scalar loads with shape=");
@@ -730,7 +789,7 @@ PYBIND11_MODULE(_core, m) {
         "The TOML document of a dict given as JSON text (a mechanism design passed as a dict).");
   m.def("beam_many",
         &flexure::python::beam_many,
-        py::arg("args"),
+        py::arg("keywords"),
         py::arg("n"),
         py::arg("mu"),
         py::arg("value"),
@@ -739,67 +798,10 @@ PYBIND11_MODULE(_core, m) {
         "flexure beam at many loads (flat float64 arrays) on worker threads.");
   m.def(
       "beam",
-      [](std::optional<double> n,
-         std::optional<double> mu,
-         std::optional<double> alpha2,
-         std::optional<std::string> theta0,
-         std::optional<double> b_over_l,
-         std::optional<std::string> method,
-         std::optional<std::string> boundary,
-         std::optional<double> tip_x,
-         std::optional<double> tip_y,
-         std::optional<std::string> tip_angle,
-         std::optional<double> follower,
-         std::optional<int> shape,
-         std::optional<int> elements,
-         std::optional<int> increments,
-         std::optional<std::string> chain_variant,
-         std::optional<std::string> integrator,
-         std::optional<std::string> stability,
-         bool stable) {
-        // The keywords as the library's beam request (beam/beam_request.h); one left out keeps
-        // the command's default, and a value given is one the checks see as given.
-        flexure::BeamRequest r;
-        r.load_ratio_n = n.value_or(0.0);
-        r.mu = mu.value_or(0.0);
-        r.alpha2 = alpha2;
-        r.theta0 = std::move(theta0);
-        r.b_over_l = b_over_l;
-        if (method) r.method = std::move(*method);
-        if (boundary) r.boundary = std::move(*boundary);
-        r.tip_x = tip_x;
-        r.tip_y = tip_y;
-        r.tip_angle = std::move(tip_angle);
-        r.follower = follower.value_or(0.0);
-        r.shape_points = shape;
-        r.elements = elements;
-        r.increments = increments.value_or(1);
-        if (chain_variant) r.chain_variant = std::move(*chain_variant);
-        r.integrator = std::move(integrator);
-        r.judge_stability = !stability || flexure::same_name(*stability, "on");
-        r.stable = stable;
-        return flexure::python::beam_request(r);
+      [](const py::kwargs& keywords) {
+        return flexure::python::beam_request(flexure::python::request_from_keywords(keywords));
       },
-      py::kw_only(),
-      py::arg("n") = py::none(),
-      py::arg("mu") = py::none(),
-      py::arg("alpha2") = py::none(),
-      py::arg("theta0") = py::none(),
-      py::arg("b_over_l") = py::none(),
-      py::arg("method") = py::none(),
-      py::arg("boundary") = py::none(),
-      py::arg("tip_x") = py::none(),
-      py::arg("tip_y") = py::none(),
-      py::arg("tip_angle") = py::none(),
-      py::arg("follower") = py::none(),
-      py::arg("shape") = py::none(),
-      py::arg("elements") = py::none(),
-      py::arg("increments") = py::none(),
-      py::arg("chain_variant") = py::none(),
-      py::arg("integrator") = py::none(),
-      py::arg("stability") = py::none(),
-      py::arg("stable") = false,
-      "flexure beam --json for values (no command line): (kind, payload, warnings, exit_code) as "
-      "run().");
+      "flexure beam --json for keyword values (no command line): (kind, payload, warnings, "
+      "exit_code) as run().");
   flexure::python::bind_objects(m);
 }

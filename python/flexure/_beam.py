@@ -169,7 +169,8 @@ def beam(n=None, alpha2=None, mu=None, theta0=None, b_over_l=None, *, method=Non
 
 
 # The keywords _core.beam takes (the rest go through the command line), by kind of value.
-_FAST_FLOAT = frozenset(("n", "mu", "alpha2", "b_over_l", "tip_x", "tip_y", "follower"))
+_FAST_FLOAT = frozenset(("n", "mu", "alpha2", "b_over_l", "tip_x", "tip_y", "follower", "tol",
+                         "slenderness"))
 _FAST_ANGLE = frozenset(("theta0", "tip_angle"))
 _FAST_INT = frozenset(("shape", "elements", "increments"))
 # The names the command's parser accepts (case-insensitively), as it stores them.
@@ -180,7 +181,14 @@ _FAST_NAMES = {
     "integrator": frozenset(("rk8pd", "cvodes", "dormand-prince")),
     "chain_variant": frozenset(("howell", "corrected")),
     "stability": frozenset(("on", "off")),
+    "constants": frozenset(("su", "su-moment", "su-force", "flexure")),
 }
+# The keywords that describe a physical beam or a chain file: one load at a time.
+_WHOLE_BEAM = ("chain", "length", "E", "I", "width", "thickness", "Fx", "Fy", "M",
+               "yield_strength", "material", "cycle", "surface_finish", "reliability", "Kf",
+               "fatigue_factor", "ultimate_strength", "endurance_limit", "plate", "nu", "qx", "qy",
+               "q_follower", "density", "g", "extensible", "shear_coefficient", "curvature",
+               "width_tip", "thickness_tip")
 
 
 def _fast_values(pairs):
@@ -243,10 +251,9 @@ def _beam_many(loads, options, threads):
             f"the load arrays do not broadcast to one shape: {shapes}") from None
     arrays = dict(zip(arrays, broadcast))
     shape = broadcast[0].shape
-    # The options are checked once by the tool itself, with a valid placeholder load.
-    # (Two given quantities are refused by the tool, naming them.)
+    # The options are checked once by the library with the tool's names, with a valid placeholder
+    # load. (Two given quantities are refused by the tool, naming them.)
     scalar = {k: _PLACEHOLDER[k] for k in given}
-    args = ["beam"] + _command.to_flags({**scalar, **options}, switches={"stable", "extensible"})
     size = int(numpy.prod(shape)) if shape else 1
     zeros = numpy.zeros(size)
 
@@ -255,9 +262,24 @@ def _beam_many(loads, options, threads):
 
     if not given:  # the tool's own message: one of --alpha2, --theta0, --b-over-l is required
         _command.run(["beam"], options, switches={"stable"})
-    value = flat(given[0])
+    whole = [k for k in _WHOLE_BEAM if options.get(k) not in (None, False)]
+    values = None if whole else _fast_values(tuple({**scalar, **options}.items()))
+    if values is None:
+        # A physical beam, a chain file, a value of another type or a name the parser refuses:
+        # the tool's own checks word the refusal (one run with the placeholder load).
+        _command.run(["beam"], {**scalar, **options}, switches={"stable", "extensible"})
+        if whole:
+            raise _command.InvalidInput(
+                "arrays of loads are for Howell's nondimensional beam (n, alpha2, mu, theta0, "
+                "b_over_l); solve a physical beam or a chain file one load at a time")
+        odd = [k for k, v in options.items() if v is not None
+               and _fast_values(((k, v),)) is None]
+        raise _command.InvalidInput(
+            f"{', '.join(odd) or 'an option'}: give a number or a name of the documented type "
+            f"with arrays of loads")
     try:
-        result = _core.beam_many(args[1:], flat("n"), flat("mu"), value, list(shape), threads)
+        result = _core.beam_many(values, flat("n"), flat("mu"), flat(given[0]), list(shape),
+                                 threads)
     except ValueError as e:
         raise _command.InvalidInput(str(e)) from None
     unstable = result["converged"] & (result["stability"] == "unstable")

@@ -153,6 +153,19 @@ TEST(BeamRequest, RefusalsWithTheDefaultNamesNameNoFlag) {
             "tip_y is not prescribed by boundary free (it prescribes nothing)");
 }
 
+TEST(BeamRequest, TwoGivenQuantitiesAreRefusedNotOneSilentlyChosen) {
+  // The command line's parser refuses them first; a library or Python caller reaches this check.
+  BeamRequest r = alpha2(1.0);
+  r.theta0 = "0.5";
+  EXPECT_EQ(refusal(r, BeamRequestNames{}),
+            "at most one of alpha2, theta0 or b_over_l may be given (got alpha2 and theta0)");
+  r.alpha2.reset();
+  r.b_over_l = 0.1;
+  EXPECT_EQ(refusal(r, BeamRequestNames::command_line()),
+            "at most one of --alpha2, --theta0 or --b-over-l may be given (got --theta0 and "
+            "--b-over-l)");
+}
+
 TEST(BeamRequest, BuildsTheProblemTheValuesDescribe) {
   BeamRequest r;
   r.theta0 = "30deg";
