@@ -353,6 +353,13 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
     d.nu = modulus.nu;
   };
   design::MechanismDesignReport r = design::design_mechanisms(spec);
+  // --model exact: the best design refined against the exact model (R, K1, K2 and sizes), solved
+  // with the modulus the sizing used (before the designs are shown with the modulus as given).
+  std::optional<design::DimensionedDesign> refined;
+  if (args.model == "exact" && !r.designs.empty()) {
+    refined = design::refine_design_exact(spec, r.designs.front());
+    as_given(refined->design);
+  }
   for (auto& d : r.designs) as_given(d.design);
   for (auto& d : r.rejected) as_given(d.design);
   Json rejected = Json::array();
@@ -386,14 +393,6 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
              {"length_needed_subclass",
               r.length_needed ? Json(r.length_needed_subclass) : Json(nullptr)},
              {"stress_rule", stress_rule_name(spec.stress_rule)}});
-  }
-  // --model exact: the best design refined against the exact model (R, K1, K2 and sizes).
-  std::optional<design::DimensionedDesign> refined;
-  if (args.model == "exact") {
-    design::DimensionedDesign start = r.designs.front();
-    start.design.E = spec.E;  // the refinement solves with the effective modulus
-    refined = design::refine_design_exact(spec, start);
-    as_given(refined->design);
   }
   const bool refinement_failed = refined && !refined->feasible;
   const Json designs_json = [&] {
