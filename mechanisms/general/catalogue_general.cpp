@@ -46,7 +46,7 @@ GeneralMechanism general_from_design(const MechanismDesign& design, int points) 
   const double f1 = j[0].length, f2 = j[1].length, f3 = j[2].length;
   const bool long1 = j[0].type == PivotType::kLong;
   const bool long2 = j[1].type == PivotType::kLong;
-  const bool plp = long2 && cfg.middle_long_on_r2;  // link 2 a beam pinned at the ground
+  const bool plp = long2 && cfg.middle_long_on_r2;   // link 2 a beam pinned at the ground
   const bool slp = long2 && !cfg.middle_long_on_r2;  // link 3 a beam pinned at the slider
   // PRB pivots: 1 at x1, 2 at x2 = x1 + r2, 3 at x3 = x2 + r3.
   const double x1 = j[0].type == PivotType::kSmall ? f1 / 2 : long1 ? back * f1 : 0.0;

@@ -168,7 +168,10 @@ GeneralFlexureStresses exact_flexure_stresses(const GeneralMechanism& m,
         "solve_general_mixed, every flexure exact)");
   }
   GeneralFlexureStresses s = empty_stresses(m, result.points.size());
-  ElasticaIntegrator integrator(ExactMechanismSolver::Options{}.shooting.integrator_options());
+  ShootingSolver::Options so = ExactMechanismSolver::Options{}.shooting;
+  so.rtol = 1e-13;
+  so.atol = 1e-15;
+  ElasticaIntegrator integrator(so.integrator_options());
   for (std::size_t i = 0; i < m.flexures.size(); ++i) {
     const Flexure& f = m.flexures[i];
     const FlexureModelReport& report = result.flexure_models[i];
@@ -176,8 +179,7 @@ GeneralFlexureStresses exact_flexure_stresses(const GeneralMechanism& m,
       throw InvalidInput("exact_flexure_stresses: flexure '" + f.name +
                          "' is not an inextensible exact elastica in this result");
     }
-    if (report.loads.size() != result.points.size() ||
-        report.tips.size() != result.points.size()) {
+    if (report.loads.size() != result.points.size() || report.tips.size() != result.points.size()) {
       throw InvalidInput("exact_flexure_stresses: flexure '" + f.name +
                          "' has no loads at every point");
     }

@@ -676,14 +676,14 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
             const Flexure& f = mechanism.flexures[i];
             const PrbmFlexureLoads& w = st.flexures[i];
             const Vec2 pa = mechanism.point(f.a), pb = mechanism.point(f.b);
-            const double beta = std::atan2(pb.y - pa.y, pb.x - pa.x) +
-                                A.body_rotation(z.head(N), f.a.body);
+            const double beta =
+                std::atan2(pb.y - pa.y, pb.x - pa.x) + A.body_rotation(z.head(N), f.a.body);
             const double c = std::cos(beta), sn = std::sin(beta);
             const int o = S.flexure_offset() + 3 * static_cast<int>(i);
             const bool exact = models.empty() || models[i] == FlexureModel::kExact;
             // An exact flexure's unknowns are its root loads, a model flexure's its tip loads.
-            z[o] = (exact ? w.root_moment
-                          : w.root_moment - (w.tip_dx * w.Ny - w.tip_dy * w.Nx)) / K;
+            z[o] =
+                (exact ? w.root_moment : w.root_moment - (w.tip_dx * w.Ny - w.tip_dy * w.Nx)) / K;
             z[o + 1] = (c * w.Nx + sn * w.Ny) * L / K;
             z[o + 2] = (-sn * w.Nx + c * w.Ny) * L / K;
           }

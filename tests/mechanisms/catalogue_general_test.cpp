@@ -10,22 +10,22 @@
 // assembled linkage solved by continuation, the catalogue's a closed form of the slider-crank; the
 // general exact model is one Newton system over bodies and elastica, the catalogue's a shooting
 // solve of one serial chain (or crank and coupler chains).
+#include "flexure/mechanisms/general/catalogue_general.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <iostream>
-#include <cstdlib>
-#include "flexure/mechanisms/mechanism_prbm.h"
 #include <string>
 
 #include "flexure/mechanisms/cfm/constant_force.h"
-#include "flexure/mechanisms/general/catalogue_general.h"
 #include "flexure/mechanisms/general/flexure_stress.h"
 #include "flexure/mechanisms/general/general_exact.h"
 #include "flexure/mechanisms/general/general_prbm.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_catalogue.h"
+#include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism::general {
@@ -33,10 +33,25 @@ namespace {
 
 constexpr int kPoints = 10;
 constexpr double kTolerance = 1e-9;  // relative, the issue's
+// The exact stresses against the catalogue's analysis as `mechanism analyze` runs it: its own
+// stresses are converged to about 1e-9 only (shooting residual 1e-10, integrator rtol 1e-12; the
+// same analysis re-solved at rtol 1e-13 and residual 5e-13 moves them by up to 1.3e-9: 1A-spp at
+// its first point, the thin middle strip of 3A-lssm), so the 1e-9 is asserted against that
+// tightened catalogue solution and the default analysis is held to 2e-9.
+constexpr double kStressToleranceDefault = 2e-9;
 
-double relative(double a, double b) {
-  return std::fabs(a - b) / std::max(std::fabs(b), 1e-300);
+// The catalogue's exact model converged further than its defaults (see above).
+ExactMechanismSolver::Options tight_catalogue_options() {
+  ExactMechanismSolver::Options o;
+  o.shooting.newton.residual_tolerance = 5e-13;
+  o.shooting.rtol = 1e-13;
+  o.shooting.atol = 1e-15;
+  o.position_tolerance = 1e-13;
+  o.noise_floor = 1e-12;
+  return o;
 }
+
+double relative(double a, double b) { return std::fabs(a - b) / std::max(std::fabs(b), 1e-300); }
 
 // Worst relative differences over the designs, printed at the end (docs/mechanisms.md quotes
 // them).
@@ -55,7 +70,7 @@ TEST(CatalogueGeneral, AllFortyDesignsAreTheirCatalogueNumbers) {
   const std::vector<MechanismDesign> designs = mechanism_designs(DesignSet::kAll);
   ASSERT_EQ(designs.size(), 40u);
   Worst prbm_force, prbm_percent, prbm_stress, prbm_sf, exact_force, exact_percent, exact_stress,
-      safety;
+      exact_stress_default, safety;
   for (const MechanismDesign& d : designs) {
     SCOPED_TRACE(d.name);
     AnalysisOptions ao;
@@ -128,19 +143,27 @@ TEST(CatalogueGeneral, AllFortyDesignsAreTheirCatalogueNumbers) {
     EXPECT_LE(relative(pe, a.percent_constant_force_exact), kTolerance);
     exact_percent.see(relative(pe, a.percent_constant_force_exact), d.name);
     const GeneralFlexureStresses es = exact_flexure_stresses(me, e);
+    const ExactMechanismSolver::Options tight = tight_catalogue_options();
+    const ExactStrokeResult ct = exact_stroke(d, a.prbm.displacement, tight);
+    ASSERT_TRUE(ct.converged()) << ct.message;
     double max_all = max_prbm;
     for (int pivot = 1; pivot <= 3; ++pivot) {
       const std::string name = general_flexure_name(d, pivot);
       if (name.empty()) continue;
-      const std::size_t i =
-          static_cast<std::size_t>(std::find(es.names.begin(), es.names.end(), name) -
-                                   es.names.begin());
+      const std::size_t i = static_cast<std::size_t>(
+          std::find(es.names.begin(), es.names.end(), name) - es.names.begin());
       const std::vector<double>& cat = a.stress_exact[static_cast<std::size_t>(pivot - 1)];
       ASSERT_EQ(es.stress[i].size(), cat.size());
       for (std::size_t k = 0; k < cat.size(); ++k) {
-        const double r = relative(es.stress[i][k], cat[k]);
+        const double converged = exact_segment_state(d, ct.points[k], tight.shooting)
+                                     .max_stress[static_cast<std::size_t>(pivot - 1)];
+        const double r = relative(es.stress[i][k], converged);
         EXPECT_LE(r, kTolerance) << "exact stress of pivot " << pivot << " at point " << k;
         exact_stress.see(r, d.name + " pivot " + std::to_string(pivot));
+        const double r0 = relative(es.stress[i][k], cat[k]);
+        EXPECT_LE(r0, kStressToleranceDefault)
+            << "exact stress of pivot " << pivot << " at point " << k << " (default analysis)";
+        exact_stress_default.see(r0, d.name + " pivot " + std::to_string(pivot));
       }
       max_all = std::max(max_all, es.max_stress[i]);
     }
@@ -151,14 +174,17 @@ TEST(CatalogueGeneral, AllFortyDesignsAreTheirCatalogueNumbers) {
   }
   std::cout << "worst relative differences over the 40 designs:\n"
             << "  PRBM force " << prbm_force.value << " (" << prbm_force.where << ")\n"
-            << "  PRBM percent constant force " << prbm_percent.value << " ("
-            << prbm_percent.where << ")\n"
+            << "  PRBM percent constant force " << prbm_percent.value << " (" << prbm_percent.where
+            << ")\n"
             << "  PRBM stress " << prbm_stress.value << " (" << prbm_stress.where << ")\n"
             << "  PRBM safety factor " << prbm_sf.value << " (" << prbm_sf.where << ")\n"
             << "  exact force " << exact_force.value << " (" << exact_force.where << ")\n"
             << "  exact percent constant force " << exact_percent.value << " ("
             << exact_percent.where << ")\n"
-            << "  exact stress " << exact_stress.value << " (" << exact_stress.where << ")\n"
+            << "  exact stress (catalogue converged further) " << exact_stress.value << " ("
+            << exact_stress.where << ")\n"
+            << "  exact stress (default analysis) " << exact_stress_default.value << " ("
+            << exact_stress_default.where << ")\n"
             << "  safety factor " << safety.value << " (" << safety.where << ")\n";
 }
 
@@ -192,27 +218,5 @@ TEST(CatalogueGeneral, ForeignSpringRuleAndBadPointsAreNamedErrors) {
   }
 }
 
-TEST(CatalogueGeneral, DISABLED_Debug) {
-  MechanismDesign d = find_builtin_mechanism(std::getenv("DBG"));
-  AnalysisOptions ao;
-  ao.points = kPoints;
-  ao.stability = false;
-  const MechanismAnalysis a = analyze_mechanism(d, ao);
-  std::cout << "lowest_mode_start " << a.exact.lowest_mode_start << " msg " << a.exact.message << "\n";
-  GeneralMechanism m = general_from_design(d, kPoints);
-  for (auto& b : m.bodies) { std::cout << b.name << ":"; for (auto& p : b.points) std::cout << " " << p.name << "=" << p.position.x; std::cout << "\n"; }
-  for (auto& f : m.flexures) std::cout << f.name << " " << f.a.text() << " -> " << f.b.text() << " " << (int)f.prbm << " l " << f.length << "\n";
-  for (auto& r : m.input.start_rotation) std::cout << "start " << r.first << " " << r.second << "\n";
-  set_flexure_model(m, "", FlexureModel::kExact);
-  GeneralExactOptions eo;
-  eo.judge_stability = false;
-  const GeneralPrbmResult e = solve_general_mixed(m, eo);
-  std::cout << e.message << "\n";
-  for (size_t k = 0; k < e.points.size(); ++k) {
-    std::cout << k << " cat " << a.force_exact[k] << " prbm " << a.prbm.force[k] << " gen " << -e.points[k].input_load;
-    for (size_t b = 0; b < e.body_names.size(); ++b) std::cout << " " << e.body_names[b] << " " << e.points[k].body_x[b] << "," << e.points[k].body_y[b] << "," << e.points[k].body_phi[b];
-    std::cout << "\n";
-  }
-}
 }  // namespace
 }  // namespace flexure::mechanism::general
