@@ -165,6 +165,12 @@ TEST(CatalogueGeneral, AllFortyDesignsAreTheirCatalogueNumbers) {
             << "exact stress of pivot " << pivot << " at point " << k << " (default analysis)";
         exact_stress_default.see(r0, d.name + " pivot " + std::to_string(pivot));
       }
+      // The largest over the stroke, and the governing one (the larger of the two models).
+      EXPECT_LE(relative(es.max_stress[i], a.max_stress_exact[static_cast<std::size_t>(pivot - 1)]),
+                kStressToleranceDefault);
+      const double governing = std::max(ps.max_stress[i], es.max_stress[i]);
+      EXPECT_LE(relative(governing, a.max_stress[static_cast<std::size_t>(pivot - 1)]),
+                kStressToleranceDefault);
       max_all = std::max(max_all, es.max_stress[i]);
     }
     // The governing safety factor: the larger of the PRBM and exact stresses.
