@@ -26,5 +26,7 @@ void add_command_examples(CLI::App& app);
 
 // `flexure mechanism draw` (mechanism_draw_command.cpp), registered with the mechanism command.
 void register_mechanism_draw_command(CLI::App& app);
+// `flexure mechanism export` (mechanism_export_command.cpp), registered with the mechanism command.
+void register_mechanism_export_command(CLI::App& app);
 
 }  // namespace flexure::cli

@@ -11,6 +11,7 @@
 #include "flexure/mechanisms/general/arclength_path.h"
 #include "flexure/mechanisms/general/exact_stability.h"
 #include "flexure/mechanisms/general/flexure_models.h"
+#include "flexure/mechanisms/general/flexure_stress.h"
 #include "flexure/mechanisms/general/prbm_assembly.h"
 #include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/common/errors.h"
@@ -649,6 +650,49 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
     for (const auto& [body, angle] : in.start_rotation) {
       const auto it = std::find(names.begin(), names.end(), body);
       z[3 * (it - names.begin()) + 2] = angle;
+    }
+    // Under displacement control, where the mechanism's PRBM (every flexure its PRB element)
+    // reaches the first input value from the same start_rotation, Newton starts from its state
+    // (flexure_stress.h, prbm_point_statics): the bodies' poses, the input load, the joints'
+    // multipliers and each flexure's end loads. The rotations alone leave a flexure that the
+    // PRBM bends hard (a long fixed-pinned segment between two turned links: slp, plp) straight
+    // and unloaded, and Newton then finds another equilibrium (a mode of that segment).
+    if (in.control == InputControl::kDisplacement && !extensible) {
+      GeneralMechanism prbm = mechanism;
+      for (Flexure& f : prbm.flexures) f.model = FlexureModel::kPrbm;
+      try {
+        const GeneralPrbmResult first = solve_general_prbm(prbm);
+        if (!first.points.empty() && first.body_names == names) {
+          const GeneralPrbmPoint& p0 = first.points.front();
+          const PrbmPointStatics st = prbm_point_statics(prbm, p0);
+          const double L = A.length_scale(), K = A.energy_scale();
+          for (std::size_t b = 0; b < names.size(); ++b) {
+            z[3 * static_cast<int>(b)] = p0.body_x[b] / L;
+            z[3 * static_cast<int>(b) + 1] = p0.body_y[b] / L;
+            z[3 * static_cast<int>(b) + 2] = p0.body_phi[b];
+          }
+          for (int k = 0; k < m; ++k) z[N + k] = st.multipliers[static_cast<std::size_t>(k)];
+          z[N + m] = A.load_scaled(p0.input_load);
+          for (std::size_t i = 0; i < mechanism.flexures.size(); ++i) {
+            const Flexure& f = mechanism.flexures[i];
+            const PrbmFlexureLoads& w = st.flexures[i];
+            const Vec2 pa = mechanism.point(f.a), pb = mechanism.point(f.b);
+            const double beta =
+                std::atan2(pb.y - pa.y, pb.x - pa.x) + A.body_rotation(z.head(N), f.a.body);
+            const double c = std::cos(beta), sn = std::sin(beta);
+            const int o = S.flexure_offset() + 3 * static_cast<int>(i);
+            const bool exact = models.empty() || models[i] == FlexureModel::kExact;
+            // An exact flexure's unknowns are its root loads, a model flexure's its tip loads.
+            z[o] =
+                (exact ? w.root_moment : w.root_moment - (w.tip_dx * w.Ny - w.tip_dy * w.Nx)) / K;
+            z[o + 1] = (c * w.Nx + sn * w.Ny) * L / K;
+            z[o + 2] = (-sn * w.Nx + c * w.Ny) * L / K;
+          }
+        }
+      } catch (const std::exception&) {
+        // No PRBM start (a fixed-guided flexure, a PRBM that does not reach the input): the
+        // rotations alone.
+      }
     }
     // Displacement control: the first grid value; force control: the input where the rotations
     // put it, from which the path follows the load.

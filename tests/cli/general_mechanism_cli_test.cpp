@@ -287,7 +287,21 @@ TEST(GeneralMechanismCli, MixedModelKeysAndRefusals) {
   expect_refused("mechanism analyze 3A-sss --flexure-model bcm", {"--model mixed"});
   expect_refused("mechanism analyze 3A-sss --model mixed --material polypropylene",
                  {"--material", "--model mixed"});
-  expect_refused("mechanism analyze 1B-plp --model mixed", {"pivot 2", "no general form"});
+  // A long segment at pivot 2 (plp: link 2 a fixed-pinned beam pinned at the ground) has a
+  // general form too (catalogue_general.h): every flexure exact gives the catalogue's exact force.
+  const CommandResult plp =
+      run_flexure("mechanism analyze 1B-plp --model mixed --flexure-model exact --points 5 --json");
+  ASSERT_EQ(plp.exit_code, 0) << plp.err;
+  const CommandResult plp_catalogue = run_flexure("mechanism analyze 1B-plp --points 5 --json");
+  ASSERT_EQ(plp_catalogue.exit_code, 0) << plp_catalogue.err;
+  const auto pj = nlohmann::json::parse(plp.out);
+  const auto pc = nlohmann::json::parse(plp_catalogue.out);
+  ASSERT_EQ(pj["force"].size(), 5u);
+  for (std::size_t k = 0; k < 5; ++k) {
+    EXPECT_NEAR(pj["force"][k].get<double>(),
+                pc["force_exact"][k].get<double>(),
+                2e-9 * std::fabs(pc["force_exact"][k].get<double>()));
+  }
 }
 
 // The inclined bistable beam example: an extensible flexure (TOML `extensible = true`) between the

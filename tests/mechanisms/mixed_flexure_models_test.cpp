@@ -168,7 +168,7 @@ TEST(MixedFlexureModels, BadChoicesAreNamedErrors) {
   }
   EXPECT_THROW(parse_flexure_model("fem"), InvalidInput);
   EXPECT_EQ(parse_flexure_model("prbm3r"), FlexureModel::kPrbm3r);
-  EXPECT_THROW(general_from_design(find_builtin_mechanism("1B-plp"), 10), InvalidInput);
+  EXPECT_THROW(general_from_design(find_builtin_mechanism("1B-plp"), 1), InvalidInput);
 }
 
 }  // namespace
