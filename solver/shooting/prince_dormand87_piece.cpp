@@ -73,7 +73,12 @@ struct Arrays {
 // `error` the difference of the seventh- and eighth-order ones, f_end = f(s + h, y). The sums
 // are GSL's rk8pd_apply's, term by term in the same order (see the header), and so is y0's role.
 template <int kDim>
-void step(const ElasticaPieceData& piece, int Ns, int dim_runtime, double s, double h, double* y,
+void step(const ElasticaPieceData& piece,
+          int Ns,
+          int dim_runtime,
+          double s,
+          double h,
+          double* y,
           const Arrays& w) {
   const int dim = kDim > 0 ? kDim : dim_runtime;
   const int ns = kDim > 0 ? kDim / kElasticaStates - 1 : Ns;
@@ -104,8 +109,8 @@ void step(const ElasticaPieceData& piece, int Ns, int dim_runtime, double s, dou
   }
   f(s + c7 * h, t, k[6]);
   for (int i = 0; i < dim; ++i) {
-    t[i] = y0[i] + h * (a81 * k[0][i] + a84 * k[3][i] + a85 * k[4][i] + a86 * k[5][i] +
-                        a87 * k[6][i]);
+    t[i] =
+        y0[i] + h * (a81 * k[0][i] + a84 * k[3][i] + a85 * k[4][i] + a86 * k[5][i] + a87 * k[6][i]);
   }
   f(s + c8 * h, t, k[7]);
   for (int i = 0; i < dim; ++i) {
@@ -124,21 +129,20 @@ void step(const ElasticaPieceData& piece, int Ns, int dim_runtime, double s, dou
   }
   f(s + c11 * h, t, k[10]);
   for (int i = 0; i < dim; ++i) {
-    t[i] = y0[i] + h * (a121 * k[0][i] + a124 * k[3][i] + a125 * k[4][i] + a126 * k[5][i] +
-                        a127 * k[6][i] + a128 * k[7][i] + a129 * k[8][i] + a1210 * k[9][i] +
-                        a1211 * k[10][i]);
+    t[i] = y0[i] +
+           h * (a121 * k[0][i] + a124 * k[3][i] + a125 * k[4][i] + a126 * k[5][i] + a127 * k[6][i] +
+                a128 * k[7][i] + a129 * k[8][i] + a1210 * k[9][i] + a1211 * k[10][i]);
   }
   f(s + h, t, k[11]);
   for (int i = 0; i < dim; ++i) {
-    t[i] = y0[i] + h * (a131 * k[0][i] + a134 * k[3][i] + a135 * k[4][i] + a136 * k[5][i] +
-                        a137 * k[6][i] + a138 * k[7][i] + a139 * k[8][i] + a1310 * k[9][i] +
-                        a1311 * k[10][i]);
+    t[i] = y0[i] +
+           h * (a131 * k[0][i] + a134 * k[3][i] + a135 * k[4][i] + a136 * k[5][i] + a137 * k[6][i] +
+                a138 * k[7][i] + a139 * k[8][i] + a1310 * k[9][i] + a1311 * k[10][i]);
   }
   f(s + h, t, k[12]);
   for (int i = 0; i < dim; ++i) {
-    const double sum8 = b1 * k[0][i] + b6 * k[5][i] + b7 * k[6][i] + b8 * k[7][i] +
-                        b9 * k[8][i] + b10 * k[9][i] + b11 * k[10][i] + b12 * k[11][i] +
-                        b13 * k[12][i];
+    const double sum8 = b1 * k[0][i] + b6 * k[5][i] + b7 * k[6][i] + b8 * k[7][i] + b9 * k[8][i] +
+                        b10 * k[9][i] + b11 * k[10][i] + b12 * k[11][i] + b13 * k[12][i];
     const double sum7 = bh1 * k[0][i] + bh6 * k[5][i] + bh7 * k[6][i] + bh8 * k[7][i] +
                         bh9 * k[8][i] + bh10 * k[9][i] + bh11 * k[10][i] + bh12 * k[11][i];
     y[i] = y0[i] + h * sum8;
@@ -154,8 +158,8 @@ enum class Adjust { kDecrease, kKeep, kIncrease };
 // step by 0.9 r^(-1/8), at most 5x; below 0.5 it grows by 0.9 r^(-1/9), at least 1x and at most
 // 5x (8 the order of the method).
 template <int kDim>
-Adjust control(double rtol, double atol, int dim_runtime, const double* y, const double* error,
-               double& h) {
+Adjust control(
+    double rtol, double atol, int dim_runtime, const double* y, const double* error, double& h) {
   const int dim = kDim > 0 ? kDim : dim_runtime;
   double largest = DBL_MIN;
   for (int i = 0; i < dim; ++i) {
@@ -174,8 +178,12 @@ Adjust control(double rtol, double atol, int dim_runtime, const double* y, const
 }
 
 template <int kDim>
-bool integrate_fixed(const PieceRun& run, const ExplicitRkSettings& settings, Arrays w,
-                     double*& first_step_slot, double& first_h, bool& first_found) {
+bool integrate_fixed(const PieceRun& run,
+                     const ExplicitRkSettings& settings,
+                     Arrays w,
+                     double*& first_step_slot,
+                     double& first_h,
+                     bool& first_found) {
   const int dim = kDim > 0 ? kDim : kElasticaStates * (run.Ns + 1);
   double* y = run.y.data();
   double* f_start = w.k[0];
@@ -183,9 +191,9 @@ bool integrate_fixed(const PieceRun& run, const ExplicitRkSettings& settings, Ar
   elastica_rhs(run.piece, s, y, f_start, run.Ns);
   // First step: the controller's proposal after the first step of the previous integration of
   // this piece; else from the tolerance (GslRk8pdPiece's rule).
-  double h = std::min(run.s_b - run.s_a, first_step_slot != nullptr
-                                             ? *first_step_slot
-                                             : 0.5 * std::pow(settings.rtol, 1.0 / 8.0));
+  double h = std::min(
+      run.s_b - run.s_a,
+      first_step_slot != nullptr ? *first_step_slot : 0.5 * std::pow(settings.rtol, 1.0 / 8.0));
   bool first_accepted = false;
   long taken = 0;
   for (;;) {
