@@ -105,8 +105,9 @@ class TaylorStep {
     }
     // By order for the evaluation (at()): the components of one order side by side.
     for (int k = 0; k <= kOrder; ++k) {
-      for (int i = 0; i < kSize; ++i) by_order_[k][i] = a_[i][k];
-      by_order_[k][kSize] = 0.0;
+      for (int p = 0; p < kPairs; ++p) {
+        by_order_[k][p] = V2{a_[2 * p][k], 2 * p + 1 < kSize ? a_[2 * p + 1][k] : 0.0};
+      }
     }
   }
   // The step length: the last two terms of each group (elastica; u and EI u'; their sigma-
@@ -137,12 +138,12 @@ class TaylorStep {
   // Every component of the series at distance d (Horner), the components' recurrences side by
   // side (vectorised): the same operations per component, so the same values.
   void at(double d, double out[kSize]) const {
-    double r[kSize + 1];
-    for (int i = 0; i <= kSize; ++i) r[i] = by_order_[kOrder][i];
+    V2 r[kPairs];
+    for (int p = 0; p < kPairs; ++p) r[p] = by_order_[kOrder][p];
     for (int k = kOrder - 1; k >= 0; --k) {
-      for (int i = 0; i <= kSize; ++i) r[i] = r[i] * d + by_order_[k][i];
+      for (int p = 0; p < kPairs; ++p) r[p] = r[p] * d + by_order_[k][p];
     }
-    for (int i = 0; i < kSize; ++i) out[i] = r[i];
+    for (int i = 0; i < kSize; ++i) out[i] = r[i / 2][i % 2];
   }
 
  private:
@@ -157,7 +158,8 @@ class TaylorStep {
   double w_[kOrder + 1] = {};
   V2 sc_[kOrder + 1] = {};
   V2 uu_[kOrder + 1] = {};
-  alignas(64) double by_order_[kOrder + 1][kSize + 1] = {};
+  static constexpr int kPairs = (kSize + 1) / 2;
+  V2 by_order_[kOrder + 1][kPairs] = {};
 };
 
 // One integration at sigma. `f` is the eigen-condition, decreasing through 0 at every eigenvalue:
