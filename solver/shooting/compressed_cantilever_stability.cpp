@@ -1,6 +1,7 @@
 #include "flexure/solver/shooting/compressed_cantilever_stability.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <variant>
@@ -60,43 +61,53 @@ class TaylorStep {
     double* v = a_[kV];
     double* us = a_[kUs];
     double* vs = a_[kVs];
+    // The factors of the Cauchy products in pairs that share the other factor: (sin, cos) times
+    // m and (u, u_sigma) times w, each pair one two-lane multiply and add (SSE2; a lane does the
+    // operations of the scalar sum, in the same order, so the same values).
+    sc_[0] = V2{sn[0], c[0]};
+    uu_[0] = V2{u[0], us[0]};
     for (int k = 0; k < kOrder; ++k) {
       w_[k] = fx * c[k] + fy * sn[k];
       // The four Cauchy products, each summed in two interleaved halves (even and odd j): eight
       // independent sums instead of four chains of dependent additions, which bounded the
       // expansion's speed (docs/performance.md); the order of the additions changes the sums by
       // rounding only.
-      double sm = 0.0, cm = 0.0, wu = 0.0, wus = 0.0;
-      double sm2 = 0.0, cm2 = 0.0, wu2 = 0.0, wus2 = 0.0;
+      V2 scm = {0.0, 0.0}, wuu = {0.0, 0.0};
+      V2 scm2 = {0.0, 0.0}, wuu2 = {0.0, 0.0};
       int j = 0;
       for (; j + 1 <= k; j += 2) {
-        sm += sn[j] * m[k - j];
-        cm += c[j] * m[k - j];
-        wu += w_[j] * u[k - j];
-        wus += w_[j] * us[k - j];
-        sm2 += sn[j + 1] * m[k - j - 1];
-        cm2 += c[j + 1] * m[k - j - 1];
-        wu2 += w_[j + 1] * u[k - j - 1];
-        wus2 += w_[j + 1] * us[k - j - 1];
+        scm += sc_[j] * m[k - j];
+        wuu += w_[j] * uu_[k - j];
+        scm2 += sc_[j + 1] * m[k - j - 1];
+        wuu2 += w_[j + 1] * uu_[k - j - 1];
       }
       if (j == k) {
-        sm += sn[j] * m[0];
-        cm += c[j] * m[0];
-        wu += w_[j] * u[0];
-        wus += w_[j] * us[0];
+        scm += sc_[j] * m[0];
+        wuu += w_[j] * uu_[0];
       }
-      sm += sm2;
-      cm += cm2;
-      wu += wu2;
-      wus += wus2;
-      const double inv = 1.0 / (k + 1);
-      c[k + 1] = -sm * inv;
-      sn[k + 1] = cm * inv;
+      scm += scm2;
+      wuu += wuu2;
+      const double sm = scm[0], cm = scm[1], wu = wuu[0], wus = wuu[1];
+      const double inv = kInverse[k];
+      // Built from the new values in registers (reading them back from the arrays just written
+      // stalls the chain of orders on the store).
+      const double c_next = -sm * inv, sn_next = cm * inv;
+      const double u_next = v[k] * inv, us_next = vs[k] * inv;
+      c[k + 1] = c_next;
+      sn[k + 1] = sn_next;
       m[k + 1] = (fx * sn[k] - fy * c[k]) * inv;
-      u[k + 1] = v[k] * inv;
+      u[k + 1] = u_next;
       v[k + 1] = sigma * wu * inv;
-      us[k + 1] = vs[k] * inv;
+      us[k + 1] = us_next;
       vs[k + 1] = (wu + sigma * wus) * inv;
+      sc_[k + 1] = V2{sn_next, c_next};
+      uu_[k + 1] = V2{u_next, us_next};
+    }
+    // By order for the evaluation (at()): the components of one order side by side.
+    for (int k = 0; k <= kOrder; ++k) {
+      for (int p = 0; p < kPairs; ++p) {
+        by_order_[k][p] = V2{a_[2 * p][k], 2 * p + 1 < kSize ? a_[2 * p + 1][k] : 0.0};
+      }
     }
   }
   // The step length: the last two terms of each group (elastica; u and EI u'; their sigma-
@@ -124,21 +135,31 @@ class TaylorStep {
     }
     return h;
   }
-  // Every component of the series at distance d (Horner), the components' recurrences interleaved:
-  // seven independent chains of multiply-adds where one component at a time waits on each step of
-  // its own (the same operations per component, so the same values).
+  // Every component of the series at distance d (Horner), the components' recurrences side by
+  // side (vectorised): the same operations per component, so the same values.
   void at(double d, double out[kSize]) const {
-    double r[kSize];
-    for (int i = 0; i < kSize; ++i) r[i] = a_[i][kOrder];
+    V2 r[kPairs];
+    for (int p = 0; p < kPairs; ++p) r[p] = by_order_[kOrder][p];
     for (int k = kOrder - 1; k >= 0; --k) {
-      for (int i = 0; i < kSize; ++i) r[i] = r[i] * d + a_[i][k];
+      for (int p = 0; p < kPairs; ++p) r[p] = r[p] * d + by_order_[k][p];
     }
-    for (int i = 0; i < kSize; ++i) out[i] = r[i];
+    for (int i = 0; i < kSize; ++i) out[i] = r[i / 2][i % 2];
   }
 
  private:
+  using V2 = double __attribute__((vector_size(16)));
+  // 1 / (k + 1), the factor of the recurrences (a table: no division in the loop).
+  static constexpr auto kInverse = [] {
+    std::array<double, kOrder> t{};
+    for (int k = 0; k < kOrder; ++k) t[k] = 1.0 / (k + 1);
+    return t;
+  }();
   double a_[kSize][kOrder + 1] = {};
   double w_[kOrder + 1] = {};
+  V2 sc_[kOrder + 1] = {};
+  V2 uu_[kOrder + 1] = {};
+  static constexpr int kPairs = (kSize + 1) / 2;
+  V2 by_order_[kOrder + 1][kPairs] = {};
 };
 
 // One integration at sigma. `f` is the eigen-condition, decreasing through 0 at every eigenvalue:
@@ -211,7 +232,13 @@ class JacobiPasses {
         out.gamma += 0.5 * std::fabs(h) / sub * (g_before + g_after);
         g_before = g_after;
       }
-      taylor_.at(h, y);
+      // The end of the step is the last sub-point when its distance is h to the bit (always for
+      // one sub-point): the same evaluation, done once.
+      if (h * sub / sub == h) {
+        std::copy(point, point + kSize, y);
+      } else {
+        taylor_.at(h, y);
+      }
       t = last ? t_end : t + h;
       if (!std::isfinite(y[kU]) || !std::isfinite(y[kV]) || !std::isfinite(y[kUs]) ||
           !std::isfinite(y[kVs]) || !std::isfinite(y[kM])) {

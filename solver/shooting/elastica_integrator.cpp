@@ -19,7 +19,7 @@
 #include "flexure/solver/shooting/arkode_erk_piece.h"
 #include "flexure/solver/shooting/dormand_prince_piece.h"
 #include "flexure/solver/shooting/elastica_piece.h"
-#include "flexure/solver/shooting/gsl_rk8pd_piece.h"
+#include "flexure/solver/shooting/prince_dormand87_piece.h"
 
 namespace flexure {
 
@@ -194,7 +194,7 @@ ElasticaIntegrator::ElasticaIntegrator(Options options)
   const ExplicitRkSettings settings{options_.rtol, options_.atol, options_.max_steps};
   switch (options_.backend) {
     case Backend::kRk8pd:
-      d.explicit_backend = std::make_unique<GslRk8pdPiece>(settings);
+      d.explicit_backend = std::make_unique<PrinceDormand87Piece>(settings);
       break;
     case Backend::kArkodeErk:
       d.explicit_backend = std::make_unique<ArkodeErkPiece>(settings);

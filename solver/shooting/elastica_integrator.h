@@ -74,8 +74,10 @@ class ElasticaIntegrator {
  public:
   // Which integrator runs the flexible pieces (docs/theory-shooting.md §4, speed and accuracy in
   // docs/performance.md):
-  //   kRk8pd: GSL's explicit Prince-Dormand 8(7) (gsl_odeiv2_step_rk8pd), the default: the
-  //     fastest at the tolerances the solvers ask for (1e-9 ... 1e-12);
+  //   kRk8pd: the explicit Prince-Dormand 8(7), the default: the fastest at the tolerances the
+  //     solvers ask for (1e-9 ... 1e-12); GSL's gsl_odeiv2_step_rk8pd and its standard step
+  //     control, step for step, written out with the right-hand side inlined
+  //     (prince_dormand87_piece.h; GSL's own stepper is kept as its reference, gsl_rk8pd_piece.h);
   //   kCvodes: SUNDIALS CVODES (Adams, forward sensitivities), the reference;
   //   kDormandPrince: the explicit Runge-Kutta 5(4) written here, kept for comparison;
   //   kArkodeErk: SUNDIALS ARKODE's explicit stepper with the Fehlberg 13-7-8 table, measured
