@@ -10,6 +10,7 @@
 
 #include "flexure/mechanisms/general/exact_stability.h"
 #include "flexure/mechanisms/general/flexure_models.h"
+#include "flexure/mechanisms/general/flexure_point_results.h"
 #include "flexure/mechanisms/general/prbm_assembly.h"
 #include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/common/errors.h"
@@ -320,6 +321,85 @@ class ExactSystem {
       }
     }
     return U;
+  }
+
+  // Every flexure's end loads, largest stress and shape at z (flexure_point_results.h), SI, and
+  // their loads on the ground added to `ground`. An exact flexure's bending moment and axial
+  // force are those of its elastica along kEnergySamples samples (m = m0 + Nx y - Ny x,
+  // N_a = N . t in the root frame), the largest |sigma| refined by a parabola through the largest
+  // sample and its neighbours; a model flexure (mixed) gives its ends' (its model has no shape).
+  std::vector<FlexurePointResult> flexure_results(const VectorXd& z, PointLoad& ground) {
+    const VectorXd q = z.head(N_);
+    const double L = a_.length_scale(), K = a_.energy_scale();
+    std::vector<FlexurePointResult> out;
+    for (std::size_t i = 0; i < beams_.size(); ++i) {
+      const FlexureBeam& b = beams_[i];
+      const Flexure& f = *b.flexure;
+      const Eigen::Vector3d w = z.segment<3>(flexure_offset() + 3 * static_cast<int>(i));
+      const double beta = b.direction + a_.body_rotation(q, f.a.body);
+      const double c = std::cos(beta), sn = std::sin(beta);
+      const Eigen::Vector2d N(c * w[1] - sn * w[2], sn * w[1] + c * w[2]);  // global, scaled
+      const Eigen::Vector2d pa = a_.point_scaled(q, f.a), pb = a_.point_scaled(q, f.b);
+      FlexurePointResult r;
+      BeamTip tip;
+      double m0 = w[0];
+      if (b.model != FlexureModel::kExact) {
+        if (!model_state(b, w, tip)) {
+          throw NoConvergence("flexure '" + f.name + "': its model has no tip at a recorded point");
+        }
+        m0 = w[0] - w[1] * tip.y + w[2] * tip.x;
+        const double axial_b = w[1] * std::cos(tip.theta) + w[2] * std::sin(tip.theta);
+        end_stresses(r, f, b.length * L, m0 * K, w[1] * K / L, tip.m * K, axial_b * K / L);
+        r.shape_x = {pa.x() * L, pb.x() * L};
+        r.shape_y = {pa.y() * L, pb.y() * L};
+      } else {
+        std::vector<ShapePoint> shape;
+        if (!integrate(b, w, tip, &shape, kEnergySamples, &report_integrator_) ||
+            shape.size() < 3) {
+          throw NoConvergence("flexure '" + f.name + "': its shape could not be sampled");
+        }
+        r.max_from = "shape";
+        std::vector<double> ms(shape.size()), ns(shape.size()), worst(shape.size());
+        std::size_t k_max = 0;
+        for (std::size_t k = 0; k < shape.size(); ++k) {
+          const ShapePoint& p = shape[k];
+          ms[k] = (w[0] + w[1] * p.y - w[2] * p.x) * K;
+          ns[k] = (w[1] * std::cos(p.theta) + w[2] * std::sin(p.theta)) * K / L;
+          const FibreStresses st = fibre_stresses(f, ms[k], ns[k]);
+          worst[k] = std::max(std::fabs(st.pos), std::fabs(st.neg));
+          if (worst[k] > worst[k_max]) k_max = k;
+        }
+        keep_most_stressed(r, f, shape[k_max].s * L, ms[k_max], ns[k_max], true);
+        if (k_max > 0 && k_max + 1 < shape.size()) {
+          // The parabola through the largest sample and its neighbours (equal spacing h): its
+          // vertex at offset t h, t = (w- - w+)/(2 (w- - 2 w + w+)); m and N_a interpolated there.
+          const double wm = worst[k_max - 1], w0 = worst[k_max], wp = worst[k_max + 1];
+          const double den = wm - 2.0 * w0 + wp;
+          if (den < 0.0) {
+            const double t = std::clamp(0.5 * (wm - wp) / den, -1.0, 1.0);
+            auto interp = [&](const std::vector<double>& v) {
+              return v[k_max] + 0.5 * t * (v[k_max + 1] - v[k_max - 1]) +
+                     0.5 * t * t * (v[k_max + 1] - 2.0 * v[k_max] + v[k_max - 1]);
+            };
+            const double h = shape[k_max + 1].s - shape[k_max].s;
+            keep_most_stressed(r, f, (shape[k_max].s + t * h) * L, interp(ms), interp(ns), false);
+          }
+        }
+        // Every 8th sample: 33 points of the shape, global.
+        for (std::size_t k = 0; k < shape.size(); k += 8) {
+          const ShapePoint& p = shape[k];
+          r.shape_x.push_back((pa.x() + c * p.x - sn * p.y) * L);
+          r.shape_y.push_back((pa.y() + sn * p.x + c * p.y) * L);
+        }
+      }
+      // The beam pushes its root body with +N, +m0 and its tip body with -N, -m(tip).
+      r.on_a = {N.x() * K / L, N.y() * K / L, m0 * K};
+      r.on_b = {-N.x() * K / L, -N.y() * K / L, -tip.m * K};
+      if (f.a.body == "ground") add_ground_reaction(ground, r.on_a, pa.x() * L, pa.y() * L);
+      if (f.b.body == "ground") add_ground_reaction(ground, r.on_b, pb.x() * L, pb.y() * L);
+      out.push_back(std::move(r));
+    }
+    return out;
   }
 
   // Linearises every exact flexure's tip in its root loads at z (sensitivity integration).
@@ -709,6 +789,8 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
       pt.body_y.push_back(q[3 * b + 1] * A.length_scale());
       pt.body_phi.push_back(q[3 * b + 2]);
     }
+    fill_point_results(mechanism, A, q, z.segment(N, m), /*assembled_flexures=*/false, pt);
+    pt.flexures = S.flexure_results(z, pt.ground_reaction);
     if (reports != nullptr) {
       for (std::size_t i = 0; i < S.flexure_count(); ++i) {
         FlexureTipLoad load;

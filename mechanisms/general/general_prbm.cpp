@@ -379,6 +379,7 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
       pt.body_y.push_back(qq[3 * b + 1] * A.length_scale());
       pt.body_phi.push_back(qq[3 * b + 2]);
     }
+    fill_point_results(mechanism, A, qq, mu, /*assembled_flexures=*/true, pt);
     result.points.push_back(std::move(pt));
   };
 

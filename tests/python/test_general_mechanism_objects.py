@@ -101,6 +101,25 @@ def test_parallel_guide_exact_stiffness_is_24_EI_over_L_cubed():
     assert F / x == pytest.approx(24 * EI / L**3, rel=1e-4)
 
 
+def test_parallel_guide_points_report_reactions_stresses_and_shapes():
+    # At a small sideways motion each flexure is the linear clamped-guided beam: end moment
+    # 6 EI x/L^2, stress M c/I at its ends; the ground's reaction balances the input force; the
+    # JSON of the command line gives the same stresses.
+    L, b, h, E = 50 * MM, 10 * MM, 0.5 * MM, 200e9
+    EI, c = E * b * h**3 / 12, h / 2
+    r = flexure.solve_general_exact(parallel_guide(L, 20 * MM, b, h, E, 1e-3 * L))
+    p = r.points[-1]
+    x = p.input
+    for f in p.flexures:
+        assert f.max_stress == pytest.approx(6 * EI * x / L**2 * c / (EI / E), rel=1e-4)
+        assert f.max_stress_from == "shape"
+        assert len(f.shape_x) == len(f.shape_y) == 33
+        assert f.shape_x[-1] - f.shape_x[0] == pytest.approx(x, rel=1e-9)
+        assert f.on_a.fx == pytest.approx(-f.on_b.fx, rel=1e-9)
+    assert p.ground_reaction.fx == pytest.approx(-p.input_load, rel=1e-8)
+    assert p.joints == []
+
+
 def test_bad_descriptions_raise_invalid_input_naming_the_item():
     g = (flexure.GeneralMechanism("bad")
          .body("ground", {"O": (0.0, 0.0)})

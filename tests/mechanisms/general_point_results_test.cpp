@@ -1,0 +1,219 @@
+// What a general mechanism's solve reports at every point besides its input load (issue 31 item
+// 2; mechanisms/general/flexure_point_results.h): reactions, joint positions, each flexure's end
+// loads, largest stress and shape, checked against independent values -- the statics of the whole
+// mechanism (the ground's reaction balances the input load), the linear fixed-guided beam's stress
+// 6 E I delta/l^2 c/I at small motion, a standalone solve of one flexure (the elliptic elastica,
+// beam/physical_beam.h) under the end loads the mechanism reports, and Howell's fixed-pinned
+// stress at the clamp (eqs. 5.21-5.23) and PRB spring torque (eqs. 5.67-5.72).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "flexure/beam/physical_beam.h"
+#include "flexure/elements/fixed_guided_segment.h"
+#include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/mechanisms/general/general_exact.h"
+#include "flexure/mechanisms/general/general_mechanism.h"
+#include "flexure/mechanisms/general/general_prbm.h"
+
+namespace flexure::mechanism::general {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// A stage on two parallel fixed-guided flexures of length l (Howell §5.3), input: the stage's x.
+GeneralMechanism parallel_guide(double l, double E, double b, double h, double stop, int count) {
+  GeneralMechanism m;
+  m.body("ground", {{"c1", {0, 0}}, {"c2", {0.03, 0}}})
+      .body("stage", {{"c1", {0, l}}, {"c2", {0.03, l}}})
+      .flexure("left", "ground.c1", "stage.c1", b, h, E, PrbmKind::kFixedGuided)
+      .flexure("right", "ground.c2", "stage.c2", b, h, E, PrbmKind::kFixedGuided)
+      .input_coordinate(InputCoordinate::kX,
+                        "stage.c1",
+                        "",
+                        InputControl::kDisplacement,
+                        -stop,
+                        stop,
+                        count);
+  return m;
+}
+
+// The statics of the moving bodies: the ground's reaction, the input load (a force along x on
+// stage.c1 here) and the dead loads (none) sum to zero, force and moment about the origin; and the
+// ground's reaction is the opposite of the flexures' loads on it.
+void expect_balanced(const GeneralPrbmPoint& p, double x_c1, double y_c1, double scale) {
+  EXPECT_NEAR(p.ground_reaction.fx + p.input_load, 0.0, 1e-8 * scale);
+  EXPECT_NEAR(p.ground_reaction.fy, 0.0, 1e-8 * scale);
+  EXPECT_NEAR(p.ground_reaction.moment + (x_c1 * 0.0 - y_c1 * p.input_load), 0.0, 1e-8 * scale);
+  double fx = 0.0, fy = 0.0;
+  for (const FlexurePointResult& f : p.flexures) {
+    fx += f.on_a.fx;
+    fy += f.on_a.fy;
+    // Each flexure is in equilibrium: its loads on its two bodies are opposite.
+    EXPECT_NEAR(f.on_a.fx + f.on_b.fx, 0.0, 1e-9 * scale);
+    EXPECT_NEAR(f.on_a.fy + f.on_b.fy, 0.0, 1e-9 * scale);
+  }
+  EXPECT_NEAR(p.ground_reaction.fx, -fx, 1e-9 * scale);
+  EXPECT_NEAR(p.ground_reaction.fy, -fy, 1e-9 * scale);
+}
+
+TEST(GeneralPointResults, ParallelGuideReactionsBalanceAndSmallMotionStressIsTheLinearBeams) {
+  const double l = 0.022, E = 2.9e9, b = 0.007, h = 0.0008;
+  const double I = b * h * h * h / 12.0, c = h / 2.0;
+  const double delta = 1e-5 * l;
+  // The linear clamped-guided beam: end moment 6 E I delta/l^2, stress M c/I at the ends.
+  const double linear = 6.0 * E * I * delta / (l * l) * c / I;
+  const GeneralMechanism m = parallel_guide(l, E, b, h, delta, 3);
+  const GeneralPrbmResult exact = solve_general_exact(m);
+  const GeneralPrbmResult prbm = solve_general_prbm(m);
+  ASSERT_TRUE(exact.converged()) << exact.message;
+  ASSERT_TRUE(prbm.converged()) << prbm.message;
+  const double F = std::fabs(exact.points[2].input_load);
+  for (const GeneralPrbmResult* r : {&exact, &prbm}) {
+    for (const GeneralPrbmPoint& p : r->points) {
+      ASSERT_EQ(p.flexures.size(), 2u);
+      ASSERT_EQ(p.joints.size(), 0u);
+      expect_balanced(p, p.input, l + p.body_y[0], F);
+    }
+  }
+  // At +delta both flexures carry the linear beam's end moment, largest at an end; and the stage's
+  // moment balance puts axial forces +-N in them: the input force F acts at the flexures' tips'
+  // height, so the two tip moments F l/4 each are held by the couple N s (s = 0.03 m the
+  // spacing): N = F l/(2 s). The largest stress is M c/I + |N|/A.
+  const double spacing = 0.03, A = b * h;
+  auto check = [&](const GeneralPrbmPoint& p, double moment_ratio, double tol, const char* from) {
+    const double N = std::fabs(p.input_load) * l / (2.0 * spacing);
+    for (const FlexurePointResult& f : p.flexures) {
+      EXPECT_NEAR(std::fabs(f.moment) * c / I, linear * moment_ratio, tol * linear);
+      EXPECT_NEAR(std::fabs(f.axial_force), N, tol * N);
+      EXPECT_NEAR(f.max_stress, linear * moment_ratio + N / A, tol * linear);
+      EXPECT_TRUE(f.max_stress_at == 0.0 || std::fabs(f.max_stress_at - l) < 1e-12 * l);
+      EXPECT_STREQ(f.max_from, from);
+    }
+  };
+  check(exact.points[2], 1.0, 1e-4, "shape");
+  for (const FlexurePointResult& f : exact.points[2].flexures) {
+    EXPECT_EQ(f.shape_x.size(), 33u);
+    // The shape runs from the clamp to the stage.
+    EXPECT_NEAR(f.shape_y.front(), 0.0, 1e-15);
+    EXPECT_NEAR(f.shape_x.back() - f.shape_x.front(), delta, 1e-9 * delta);
+  }
+  // The PRBM's end moment is F l/4 per flexure as the beam's, with its stiffness 4 K_Theta/gamma
+  // EI/l^3 per flexure against 12 (Table 5.1, n = 0): its moment is that much higher (4.7 %).
+  const FixedPinnedConstants c0 = FixedPinnedConstants::from_table(0.0);
+  // (The axial forces +-N shift the two flexures' moments apart by N times the pivots' sideways
+  // offset, of order delta/l = 1e-5 relative.)
+  check(prbm.points[2], (4.0 * c0.K_theta / c0.gamma) / 12.0, 1e-5, "ends");
+  for (const FlexurePointResult& f : prbm.points[2].flexures) {
+    EXPECT_NEAR(std::fabs(f.moment) * c / I, linear, 0.05 * linear);
+    EXPECT_EQ(f.shape_x.size(), 4u);  // end a, the two pivots, end b
+  }
+}
+
+TEST(GeneralPointResults, ExactFlexureStressIsAStandaloneBeamsUnderTheReportedEndLoads) {
+  const double l = 0.022, E = 2.9e9, b = 0.007, h = 0.0008;
+  const GeneralPrbmResult r = solve_general_exact(parallel_guide(l, E, b, h, 0.004, 5));
+  ASSERT_TRUE(r.converged()) << r.message;
+  int compared = 0;
+  for (const GeneralPrbmPoint& p : r.points) {
+    for (const FlexurePointResult& f : p.flexures) {
+      // The loads body b (the stage) puts on the flexure's tip, in the frame of its clamp (the
+      // flexure points along +y: its x is the global y).
+      const double gx = -f.on_b.fx, gy = -f.on_b.fy;
+      PhysicalCantilever beam;
+      beam.length = l;
+      beam.E = E;
+      beam.width = b;
+      beam.thickness = h;
+      beam.Fx = gy;   // along the flexure
+      beam.Fy = -gx;  // across it, to its left
+      beam.M = -f.on_b.moment;
+      if (std::fabs(p.input) < 1e-9) continue;  // the middle point: unloaded
+      BeamProblem settings;
+      settings.shape_points = 257;
+      settings.tolerance = 1e-12;
+      const PhysicalBeamSolution s = solve_physical_beam(BeamMethod::kShooting, beam, settings);
+      ASSERT_TRUE(s.solution.converged()) << s.solution.message;
+      double largest = 0.0;
+      for (const PhysicalShapePoint& q : s.physical.shape) {
+        largest = std::max({largest, std::fabs(*q.stress_pos_fibre), std::fabs(*q.stress_neg_fibre)});
+      }
+      EXPECT_NEAR(f.max_stress, largest, 1e-8 * largest);
+      // The clamp's moment is the flexure's moment on the ground.
+      EXPECT_NEAR(f.on_a.moment, s.physical.root_moment, 1e-8 * std::fabs(s.physical.root_moment));
+      // Its tip is where the stage put it.
+      EXPECT_NEAR(s.physical.tip_y, -(p.input - 0.0), 1e-8 * l);
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 8);
+}
+
+// A flexure clamped into the ground along +x, its far end pinned to a block that the input moves
+// along y (a carriage on the ground's x guide carries the block's y guide, so the tip is free in
+// x) under a dead load Q pushing the block towards the clamp: Howell's fixed-pinned segment under
+// a transverse force P and an axial compression nP = Q.
+GeneralMechanism pushed_cantilever(double l, double E, double b, double h, double Q, double stop) {
+  GeneralMechanism m;
+  m.body("ground", {{"O", {0, 0}}, {"T", {l, 0}}})
+      .body("carriage", {{"T", {l, 0}}})
+      .body("block", {{"T", {l, 0}}})
+      .flexure("beam", "ground.O", "block.T", b, h, E, PrbmKind::kFixedPinned)
+      .slider("x-guide", "ground.T", "carriage.T", 0.0)
+      .slider("y-guide", "carriage.T", "block.T", kPi / 2)
+      .load("Q", "block.T", -Q, 0.0)
+      .input_coordinate(
+          InputCoordinate::kY, "block.T", "", InputControl::kDisplacement, 0.0, stop, 6);
+  return m;
+}
+
+TEST(GeneralPointResults, PrbmFixedPinnedStressIsHowellsAtTheClamp) {
+  const double l = 0.05, E = 2e9, b = 0.01, h = 0.001;
+  const double I = b * h * h * h / 12.0, c = h / 2.0, A = b * h, EI = E * I;
+  const double Q = 0.5 * EI / (l * l);
+  const GeneralPrbmResult r = solve_general_prbm(pushed_cantilever(l, E, b, h, Q, 0.02));
+  ASSERT_TRUE(r.converged()) << r.message;
+  ASSERT_EQ(r.points.size(), 6u);
+  const FixedPinnedSegment& element = howell_average_fixed_pinned();
+  const double gamma = element.geometry().link_length;
+  const double K = element.stiffness_coefficient() * EI / l;  // gamma K_Theta EI/l (eq. 5.72)
+  for (const GeneralPrbmPoint& p : r.points) {
+    const FlexurePointResult& f = p.flexures.at(0);
+    // The tip: the block's point (it slides along y at x = l and does not turn).
+    const double a = l + p.body_x[1], bb = p.body_y[1];
+    // Howell's P (along +y) and nP (the compressive axial force) on the tip, from the load the
+    // flexure puts on the block.
+    const double P = -f.on_b.fy, nP = f.on_b.fx;
+    const double M = P * a + nP * bb;  // eq. 5.21
+    const double top = -M * c / I - nP / A, bottom = M * c / I - nP / A;  // eqs. 5.22, 5.23
+    const double howell = std::max(std::fabs(top), std::fabs(bottom));
+    EXPECT_NEAR(f.max_stress, howell, 1e-9 * std::max(howell, 1.0));
+    EXPECT_EQ(f.max_stress_at, 0.0);
+    EXPECT_NEAR(f.stress_pos_fibre, top, 1e-9 * std::max(howell, 1.0));
+    EXPECT_NEAR(f.stress_neg_fibre, bottom, 1e-9 * std::max(howell, 1.0));
+    // The PRB link's angle from the tip (eq. 5.70: b = gamma l sin Theta) and the spring torque
+    // K Theta = F_t gamma l (eqs. 5.67-5.72) with F_t the tip force across the link.
+    const double Theta = std::asin(bb / (gamma * l));
+    const double Ft = P * std::cos(Theta) + nP * std::sin(Theta);
+    EXPECT_NEAR(K * Theta, Ft * gamma * l, 1e-8 * std::max(K * std::fabs(Theta), 1e-12));
+    // The carriage is free along x, so the y guide carries no force along x: the flexure holds Q
+    // (nP = Q), and the input load is P; the ground's reaction balances the input and Q.
+    const double scale = std::max(std::fabs(P), Q);
+    ASSERT_EQ(p.joints.size(), 2u);
+    EXPECT_NEAR(p.joints[1].on_b.fx, 0.0, 1e-9 * scale);
+    EXPECT_NEAR(nP, Q, 1e-9 * scale);
+    EXPECT_NEAR(p.input_load, P, 1e-9 * scale);
+    EXPECT_NEAR(p.joints[1].x, a, 1e-12);
+    EXPECT_NEAR(p.joints[1].y, bb, 1e-12);
+    EXPECT_NEAR(p.ground_reaction.fy + p.input_load, 0.0, 1e-9 * scale);
+    EXPECT_NEAR(p.ground_reaction.fx - Q, 0.0, 1e-9 * scale);
+    // Moment about the origin: the input force P at (a, bb) and Q at (a, bb).
+    EXPECT_NEAR(p.ground_reaction.moment + a * p.input_load + bb * Q, 0.0, 1e-9 * scale * l);
+  }
+  EXPECT_GT(r.points.back().flexures[0].max_stress, 1e6);
+}
+
+}  // namespace
+}  // namespace flexure::mechanism::general
