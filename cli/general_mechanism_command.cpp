@@ -170,9 +170,8 @@ void add_point_results_json(Json& j, const GeneralPrbmResult& r, const GeneralMe
   j["bodies"] = bodies;
   Json joints = Json::array();
   for (std::size_t k = 0; k < m.joints.size(); ++k) {
-    const bool all = std::all_of(r.points.begin(), r.points.end(), [&](const auto& p) {
-      return k < p.joints.size();
-    });
+    const bool all = std::all_of(
+        r.points.begin(), r.points.end(), [&](const auto& p) { return k < p.joints.size(); });
     if (!all) break;
     Json x = Json::array(), y = Json::array();
     for (const GeneralPrbmPoint& p : r.points) {
@@ -192,11 +191,10 @@ void add_point_results_json(Json& j, const GeneralPrbmResult& r, const GeneralMe
       point_load_json(r, [](const auto& p) -> const PointLoad& { return p.ground_reaction; });
   Json flexures = Json::array();
   for (std::size_t k = 0; k < m.flexures.size(); ++k) {
-    const bool all = !r.points.empty() && std::all_of(r.points.begin(),
-                                                      r.points.end(),
-                                                      [&](const auto& p) {
-                                                        return k < p.flexures.size();
-                                                      });
+    const bool all =
+        !r.points.empty() && std::all_of(r.points.begin(), r.points.end(), [&](const auto& p) {
+          return k < p.flexures.size();
+        });
     if (!all) break;
     Json stress = Json::array(), at = Json::array(), fibre = Json::array(), pos = Json::array(),
          neg = Json::array(), moment = Json::array(), axial = Json::array();
@@ -222,9 +220,9 @@ void add_point_results_json(Json& j, const GeneralPrbmResult& r, const GeneralMe
         {"max_stress_from", r.points.front().flexures[k].max_from},
         {"on_a",
          point_load_json(r, [&](const auto& p) -> const PointLoad& { return p.flexures[k].on_a; })},
-        {"on_b",
-         point_load_json(r,
-                         [&](const auto& p) -> const PointLoad& { return p.flexures[k].on_b; })}});
+        {"on_b", point_load_json(r, [&](const auto& p) -> const PointLoad& {
+           return p.flexures[k].on_b;
+         })}});
   }
   j["flexures"] = flexures;
 }

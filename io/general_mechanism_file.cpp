@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <span>
 
@@ -165,12 +165,12 @@ void write_bodies(Hdf5Group& g, const GeneralPrbmResult& r) {
 
 // The joints' positions and reactions, the ground's reaction and every flexure's end loads,
 // largest stress and shape per point (GeneralPrbmPoint; docs/hdf5-schema.md).
-void write_point_loads(Hdf5Group& g,
-                       const std::string& prefix,
-                       const GeneralPrbmResult& r,
-                       const std::function<const mechanism::general::PointLoad&(
-                           const GeneralPrbmPoint&)>& pick,
-                       const std::string& what) {
+void write_point_loads(
+    Hdf5Group& g,
+    const std::string& prefix,
+    const GeneralPrbmResult& r,
+    const std::function<const mechanism::general::PointLoad&(const GeneralPrbmPoint&)>& pick,
+    const std::string& what) {
   g.write_dataset(prefix + "fx",
                   std::span<const double>(per_point(r, [&](const auto& p) { return pick(p).fx; })),
                   "N",
@@ -208,18 +208,16 @@ void write_point_results(Hdf5Group& g,
     if (!all_have(&GeneralPrbmPoint::joints, k)) break;
     Hdf5Group j = joints.create_group(m.joints[k].name);
     j.set_attribute("kind", std::string(joint_kind_name(m.joints[k].kind)));
-    j.write_dataset("x",
-                    std::span<const double>(per_point(r, [&](const auto& p) {
-                      return p.joints[k].x;
-                    })),
-                    "m",
-                    "x of the joint's point of body b per point");
-    j.write_dataset("y",
-                    std::span<const double>(per_point(r, [&](const auto& p) {
-                      return p.joints[k].y;
-                    })),
-                    "m",
-                    "y of that point per point");
+    j.write_dataset(
+        "x",
+        std::span<const double>(per_point(r, [&](const auto& p) { return p.joints[k].x; })),
+        "m",
+        "x of the joint's point of body b per point");
+    j.write_dataset(
+        "y",
+        std::span<const double>(per_point(r, [&](const auto& p) { return p.joints[k].y; })),
+        "m",
+        "y of that point per point");
     write_point_loads(
         j,
         "on_b_",
@@ -235,42 +233,46 @@ void write_point_results(Hdf5Group& g,
     Hdf5Group f = flexures.create_group(m.flexures[k].name);
     f.set_attribute("max_stress_from", std::string(r.points.front().flexures[k].max_from));
     auto series = [&](const char* name, auto value, const char* unit, const std::string& what) {
-      f.write_dataset(name,
-                      std::span<const double>(per_point(r, [&](const auto& p) {
-                        return static_cast<double>(value(p.flexures[k]));
-                      })),
-                      unit,
-                      what);
+      f.write_dataset(
+          name,
+          std::span<const double>(per_point(
+              r, [&](const auto& p) { return static_cast<double>(value(p.flexures[k])); })),
+          unit,
+          what);
     };
     using FR = mechanism::general::FlexurePointResult;
-    series("max_stress",
-           [](const FR& x) { return x.max_stress; },
-           "Pa",
-           "the largest |N_a/A -+ m c/I| along the flexure, both fibres");
-    series("max_stress_at",
-           [](const FR& x) { return x.max_stress_at; },
-           "m",
-           "where it acts: arc length from end a");
-    series("max_stress_fibre",
-           [](const FR& x) { return x.max_stress_fibre; },
-           "1",
-           "+1: the fibre h/2 on the +n side (left of the tangent), -1 the other");
-    series("stress_pos_fibre",
-           [](const FR& x) { return x.stress_pos_fibre; },
-           "Pa",
-           "N_a/A - m c/I at that section");
-    series("stress_neg_fibre",
-           [](const FR& x) { return x.stress_neg_fibre; },
-           "Pa",
-           "N_a/A + m c/I at that section");
-    series("moment",
-           [](const FR& x) { return x.moment; },
-           "N m",
-           "bending moment at that section");
-    series("axial_force",
-           [](const FR& x) { return x.axial_force; },
-           "N",
-           "axial force N . t at that section (tension positive)");
+    series(
+        "max_stress",
+        [](const FR& x) { return x.max_stress; },
+        "Pa",
+        "the largest |N_a/A -+ m c/I| along the flexure, both fibres");
+    series(
+        "max_stress_at",
+        [](const FR& x) { return x.max_stress_at; },
+        "m",
+        "where it acts: arc length from end a");
+    series(
+        "max_stress_fibre",
+        [](const FR& x) { return x.max_stress_fibre; },
+        "1",
+        "+1: the fibre h/2 on the +n side (left of the tangent), -1 the other");
+    series(
+        "stress_pos_fibre",
+        [](const FR& x) { return x.stress_pos_fibre; },
+        "Pa",
+        "N_a/A - m c/I at that section");
+    series(
+        "stress_neg_fibre",
+        [](const FR& x) { return x.stress_neg_fibre; },
+        "Pa",
+        "N_a/A + m c/I at that section");
+    series(
+        "moment", [](const FR& x) { return x.moment; }, "N m", "bending moment at that section");
+    series(
+        "axial_force",
+        [](const FR& x) { return x.axial_force; },
+        "N",
+        "axial force N . t at that section (tension positive)");
     write_point_loads(
         f,
         "on_a_",
@@ -354,7 +356,7 @@ void write_geometry(Hdf5Group& root, const mechanism::general::GeneralMechanism&
   bodies.write_dataset(
       "reference_y", std::span<const double>(ry), "m", "y of that point, described configuration");
   std::vector<std::string> f_name, f_a, f_b, f_end;
-  std::vector<double> ax, ay, bx, by, length;
+  std::vector<double> ax, ay, bx, by, length, curvature;
   for (const mechanism::general::Flexure& f : m.flexures) {
     const mechanism::general::Vec2 a = m.point(f.a), b = m.point(f.b);
     f_name.push_back(f.name);
@@ -366,7 +368,8 @@ void write_geometry(Hdf5Group& root, const mechanism::general::GeneralMechanism&
     ay.push_back(a.y);
     bx.push_back(b.x);
     by.push_back(b.y);
-    length.push_back(std::hypot(b.x - a.x, b.y - a.y));
+    length.push_back(f.arc_length(std::hypot(b.x - a.x, b.y - a.y)));
+    curvature.push_back(f.curvature);
   }
   Hdf5Group flexures = geo.create_group("flexures");
   flexures.write_dataset("name", f_name, "text", "each flexure");
@@ -378,6 +381,10 @@ void write_geometry(Hdf5Group& root, const mechanism::general::GeneralMechanism&
   flexures.write_dataset("b_x", std::span<const double>(bx), "m", "end b, described");
   flexures.write_dataset("b_y", std::span<const double>(by), "m", "end b, described");
   flexures.write_dataset("length", std::span<const double>(length), "m", "its length");
+  flexures.write_dataset("curvature",
+                         std::span<const double>(curvature),
+                         "1/m",
+                         "its stress-free curvature (0: straight; else an arc from a to b)");
 }
 
 void write_flexure_models(Hdf5Group& g,

@@ -123,12 +123,20 @@ void bind_description(py::module_& m) {
              PrbmKind prbm,
              FlexureModel model,
              double tolerance,
-             int elements) -> GM& {
+             int elements,
+             double curvature,
+             double length,
+             double width_tip,
+             double thickness_tip) -> GM& {
             g.flexure(name, a, b, width, thickness, E, prbm);
             Flexure& f = g.flexures.back();
             f.model = model;
             f.tolerance = tolerance;
             f.elements = elements;
+            f.curvature = curvature;
+            f.length = length;
+            f.width_tip = width_tip;
+            f.thickness_tip = thickness_tip;
             return g;
           },
           py::arg("name"),
@@ -142,9 +150,15 @@ void bind_description(py::module_& m) {
           py::arg("model") = FlexureModel::kPrbm,
           py::arg("tolerance") = 0.0,
           py::arg("elements") = 6,
+          py::arg("curvature") = 0.0,
+          py::arg("length") = 0.0,
+          py::arg("width_tip") = 0.0,
+          py::arg("thickness_tip") = 0.0,
           self,
-          "A straight flexure from point a to point b ('body.point'): width b and thickness h "
-          "(m), Young's modulus E (Pa), its PRBM element and its model under the mixed model.")
+          "A flexure from point a to point b ('body.point'): width b and thickness h (m), Young's "
+          "modulus E (Pa), its PRBM element and its model under the mixed model; its rest shape: "
+          "a stress-free curvature (1/m: an arc from a to b of the given length, or the minor arc) "
+          "and a taper to width_tip, thickness_tip at b (m; 0: none).")
       .def(
           "linear_spring",
           [](GM& g,
@@ -337,7 +351,8 @@ void bind_results(py::module_& m) {
       .def_readonly("shape_x", &FlexurePointResult::shape_x)
       .def_readonly("shape_y", &FlexurePointResult::shape_y)
       .def("__repr__", [](const FlexurePointResult& f) {
-        return fmt::format("FlexurePointResult(max_stress={}, at={})", f.max_stress, f.max_stress_at);
+        return fmt::format(
+            "FlexurePointResult(max_stress={}, at={})", f.max_stress, f.max_stress_at);
       });
   py::class_<GeneralPrbmPoint>(m, "GeneralMechanismPoint", "One equilibrium along the input.")
       .def_readonly("input", &GeneralPrbmPoint::input)

@@ -8,8 +8,11 @@
 namespace flexure::mechanism::general {
 
 FibreStresses fibre_stresses(const Flexure& flexure, double moment, double axial) {
+  return fibre_stresses(flexure.width, flexure.thickness, moment, axial);
+}
+
+FibreStresses fibre_stresses(double b, double h, double moment, double axial) {
   // A rectangle b x h: A = b h, I/c = b h^2/6 (Howell eqs. 5.22-5.23: sigma = -+ M c/I + N/A).
-  const double b = flexure.width, h = flexure.thickness;
   const double area = b * h;
   const double modulus = b * h * h / 6.0;
   return {axial / area - moment / modulus, axial / area + moment / modulus};
@@ -17,7 +20,17 @@ FibreStresses fibre_stresses(const Flexure& flexure, double moment, double axial
 
 void keep_most_stressed(
     FlexurePointResult& r, const Flexure& flexure, double s, double m, double axial, bool first) {
-  const FibreStresses st = fibre_stresses(flexure, m, axial);
+  keep_most_stressed(r, flexure.width, flexure.thickness, s, m, axial, first);
+}
+
+void keep_most_stressed(FlexurePointResult& r,
+                        double width,
+                        double thickness,
+                        double s,
+                        double m,
+                        double axial,
+                        bool first) {
+  const FibreStresses st = fibre_stresses(width, thickness, m, axial);
   const double largest = std::max(std::fabs(st.pos), std::fabs(st.neg));
   if (!first && !(largest > r.max_stress)) return;
   r.max_stress = largest;
@@ -80,7 +93,7 @@ void fill_point_results(const GeneralMechanism& mechanism,
     const double axial_a = Px * std::cos(ta) + Py * std::sin(ta);
     const double axial_b = Px * std::cos(tb) + Py * std::sin(tb);
     const Vec2 pa = mechanism.point(f.a), pb = mechanism.point(f.b);
-    const double length = std::hypot(pb.x - pa.x, pb.y - pa.y);
+    const double length = f.arc_length(std::hypot(pb.x - pa.x, pb.y - pa.y));
     end_stresses(r, f, length, wa[2], axial_a, -wb[2], axial_b);
     for (const Vec2& p : A.flexure_prb_points_si(q, fi)) {
       r.shape_x.push_back(p.x);

@@ -64,11 +64,21 @@ struct FibreStresses {
   double neg = 0.0;
 };
 FibreStresses fibre_stresses(const Flexure& flexure, double moment, double axial);
+// The same for the rectangle width x thickness (m) of a tapered flexure's section.
+FibreStresses fibre_stresses(double width, double thickness, double moment, double axial);
 
 // Keeps in `r` the section (at `s` m from end a, moment m, axial force N_a) whose |sigma| is
 // largest; `first` replaces whatever `r` held.
 void keep_most_stressed(
     FlexurePointResult& r, const Flexure& flexure, double s, double m, double axial, bool first);
+// The same with the section width x thickness (m) there.
+void keep_most_stressed(FlexurePointResult& r,
+                        double width,
+                        double thickness,
+                        double s,
+                        double m,
+                        double axial,
+                        bool first);
 
 // The stress of a flexure whose end loads are known and whose shape is not (the PRBM, a ladder
 // model): the sections at both ends, with the bending moment and axial force there. m_a, m_b:

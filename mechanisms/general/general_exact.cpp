@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 
+#include "flexure/beam/physical_beam.h"
 #include "flexure/mechanisms/general/exact_stability.h"
 #include "flexure/mechanisms/general/flexure_models.h"
 #include "flexure/mechanisms/general/flexure_point_results.h"
@@ -48,6 +49,9 @@ struct FlexureBeam {
   double EA = std::numeric_limits<double>::infinity();  // scaled; infinite: inextensible
   double direction = 0.0;  // rest angle of the flexure from a to b, rad
   bool pinned_tip = false;
+  double rest_turn = 0.0;  // the rest tangent's turn from end a to end b (kappa0 l), rad
+  // At kEnergySamples equal arc lengths: EI (scaled) and the section (m), for a taper.
+  std::vector<double> sample_EI, sample_width, sample_thickness;
   // kExact: an elastica with unknowns w = its root loads (m0, Nx, Ny). Any other model (mixed):
   // a cantilever under its tip loads, unknowns w = (M_tip, Nx, Ny) (flexure_models.h).
   FlexureModel model = FlexureModel::kExact;
@@ -102,11 +106,40 @@ class ExactSystem {
       b.flexure = &f;
       const Vec2 pa = m.point(f.a);
       const Vec2 pb = m.point(f.b);
-      b.length = std::hypot(pb.x - pa.x, pb.y - pa.y) / L;
+      const double chord = std::hypot(pb.x - pa.x, pb.y - pa.y);
+      const double length_si = f.arc_length(chord);
+      b.length = length_si / L;
       b.EI = f.flexural_rigidity() / (a.energy_scale() * L);
-      b.direction = std::atan2(pb.y - pa.y, pb.x - pa.x);
+      // The root frame: x along the rest tangent at end a (the chord turned back by half the
+      // arc's turn for a curved flexure), in which the integrator starts at theta = 0.
+      b.direction = std::atan2(pb.y - pa.y, pb.x - pa.x) + f.end_angle_from_chord(chord, 0);
+      b.rest_turn = f.curvature * length_si;
       b.pinned_tip = f.prbm == PrbmKind::kFixedPinned;
-      b.chain.segments.push_back(FlexibleSegment{b.length, b.EI, {}, 0.0});
+      // A taper as the physical beam's (beam/physical_beam.h): EI(s) at kTaperStations stations
+      // (scaled), and the section at the samples of the energy and the stresses.
+      PhysicalCantilever section;
+      section.length = length_si;
+      section.E = f.youngs_modulus;
+      section.width = f.width;
+      section.thickness = f.thickness;
+      if (f.width_tip > 0.0) section.width_tip = f.width_tip;
+      if (f.thickness_tip > 0.0) section.thickness_tip = f.thickness_tip;
+      std::vector<double> profile;
+      if (f.tapered()) {
+        const int n = PhysicalCantilever::kTaperStations;
+        for (int k = 0; k < n; ++k) {
+          profile.push_back(f.youngs_modulus * section.second_moment_at(length_si * k / (n - 1)) /
+                            (a.energy_scale() * L));
+        }
+      }
+      for (int k = 0; k < kEnergySamples; ++k) {
+        const double s_si = length_si * k / (kEnergySamples - 1);
+        b.sample_EI.push_back(f.youngs_modulus * section.second_moment_at(s_si) /
+                              (a.energy_scale() * L));
+        b.sample_width.push_back(*section.width_at(s_si));
+        b.sample_thickness.push_back(*section.thickness_at(s_si));
+      }
+      b.chain.segments.push_back(FlexibleSegment{b.length, b.EI, profile, f.curvature * L});
       if (f.extensible) {
         // EA scaled as a force (F L/K): the strain N/EA is the same in both units.
         b.EA = f.axial_rigidity() * L / a.energy_scale();
@@ -229,9 +262,9 @@ class ExactSystem {
       const Eigen::Vector2d d = a_.point_scaled(q, f.b) - a_.point_scaled(q, f.a);
       F[o] = tip.x - (c * d.x() + sn * d.y());
       F[o + 1] = tip.y - (-sn * d.x() + c * d.y());
-      F[o + 2] = b.pinned_tip
-                     ? tip.m  // a model flexure's tip.m is its unknown M_tip
-                     : tip.theta - (a_.body_rotation(q, f.b.body) - a_.body_rotation(q, f.a.body));
+      F[o + 2] = b.pinned_tip ? tip.m  // a model flexure's tip.m is its unknown M_tip
+                              : tip.theta - b.rest_turn -
+                                    (a_.body_rotation(q, f.b.body) - a_.body_rotation(q, f.a.body));
     }
     F.head(N_) = a_.lagrangian_gradient(q, z.segment(N_, m_), z[N_ + m_]) - Q;
     F.segment(N_, m_) = a_.constraints(q);
@@ -311,7 +344,10 @@ class ExactSystem {
         const ShapePoint& p1 = shape[k];
         const double ma = w[0] + w[1] * p0.y - w[2] * p0.x;
         const double mb = w[0] + w[1] * p1.y - w[2] * p1.x;
-        U += 0.5 * (ma * ma + mb * mb) / (2.0 * b.EI) * (p1.s - p0.s);
+        // m^2/(2 EI(s)) (a taper's EI at each sample; m = EI (theta' - kappa0) for a curved one).
+        const double EIa = shape.size() == b.sample_EI.size() ? b.sample_EI[k - 1] : b.EI;
+        const double EIb = shape.size() == b.sample_EI.size() ? b.sample_EI[k] : b.EI;
+        U += 0.5 * (ma * ma / (2.0 * EIa) + mb * mb / (2.0 * EIb)) * (p1.s - p0.s);
         if (std::isfinite(b.EA)) {
           // The axial strain energy N_a^2/(2 EA), N_a = N . t (Reissner; docs/extensible.md).
           const double na = w[1] * std::cos(p0.theta) + w[2] * std::sin(p0.theta);
@@ -365,11 +401,18 @@ class ExactSystem {
           const ShapePoint& p = shape[k];
           ms[k] = (w[0] + w[1] * p.y - w[2] * p.x) * K;
           ns[k] = (w[1] * std::cos(p.theta) + w[2] * std::sin(p.theta)) * K / L;
-          const FibreStresses st = fibre_stresses(f, ms[k], ns[k]);
+          const FibreStresses st =
+              fibre_stresses(b.sample_width[k], b.sample_thickness[k], ms[k], ns[k]);
           worst[k] = std::max(std::fabs(st.pos), std::fabs(st.neg));
           if (worst[k] > worst[k_max]) k_max = k;
         }
-        keep_most_stressed(r, f, shape[k_max].s * L, ms[k_max], ns[k_max], true);
+        keep_most_stressed(r,
+                           b.sample_width[k_max],
+                           b.sample_thickness[k_max],
+                           shape[k_max].s * L,
+                           ms[k_max],
+                           ns[k_max],
+                           true);
         if (k_max > 0 && k_max + 1 < shape.size()) {
           // The parabola through the largest sample and its neighbours (equal spacing h): its
           // vertex at offset t h, t = (w- - w+)/(2 (w- - 2 w + w+)); m and N_a interpolated there.
@@ -1220,6 +1263,13 @@ GeneralPrbmResult solve_general_mixed(const GeneralMechanism& mechanism,
   std::vector<std::vector<std::string>> passed(F);
   for (std::size_t i = 0; i < F; ++i) {
     const Flexure& f = mechanism.flexures[i];
+    if (f.model != FlexureModel::kExact && (f.curved() || f.tapered())) {
+      throw InvalidInput(mechanism.where(f.line) + "flexure '" + f.name +
+                         "': " + (f.curved() ? "initially curved" : "tapered") + ", but model '" +
+                         std::string(flexure_model_name(f.model)) +
+                         "': the mixed model's other models (the ladder's and the PRBM "
+                         "cantilever's) are straight uniform beams; give it model = \"exact\"");
+    }
     if (f.model == FlexureModel::kPrbm && f.prbm == PrbmKind::kFixedGuided) {
       throw InvalidInput(mechanism.where(f.line) + "flexure '" + f.name +
                          "': model 'prbm' in the mixed model needs a cantilever PRBM element "

@@ -5,6 +5,7 @@
 
 #include "flexure/elements/fixed_guided_segment.h"
 #include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/elements/initially_curved_cantilever.h"
 #include "flexure/elements/small_length_flexural_pivot.h"
 #include "flexure/solver/common/errors.h"
 
@@ -102,9 +103,13 @@ PrbmAssembly::PrbmAssembly(const GeneralMechanism& mechanism, bool assemble_flex
     }
     const Eigen::Vector2d a = scaled(f.a);
     const Eigen::Vector2d b = scaled(f.b);
+    // The chord a -> b; a straight flexure's length. (A curved flexure's arc length enters its
+    // spring and pivot below; solve_general_prbm has refused what the PRBM does not cover, and the
+    // structural checks of the exact model need only the linkage's topology.)
     const double l = (b - a).norm();
     const Eigen::Vector2d u = (b - a) / l;
-    const double l_si = l * L;
+    const double arc_si = f.arc_length(l * L);
+    const double l_si = arc_si;
     const double EI = f.flexural_rigidity();
     const int ia = body_index(f.a.body);
     const int ib = body_index(f.b.body);
@@ -116,7 +121,8 @@ PrbmAssembly::PrbmAssembly(const GeneralMechanism& mechanism, bool assemble_flex
     items.b = ib;
     items.end_a = make_point(ia, a);
     items.end_b = make_point(ib, b);
-    items.u = u;
+    items.rest_a = std::atan2(u.y(), u.x()) + f.end_angle_from_chord(l * L, 0);
+    items.rest_b = std::atan2(u.y(), u.x()) + f.end_angle_from_chord(l * L, 1);
     items.pinned = f.prbm == PrbmKind::kFixedPinned;
     auto add_pin = [&](const Pt& pa, const Pt& pb) {
       constraints_.push_back({JointKind::kPin, pa, pb, 0.0});
@@ -138,6 +144,24 @@ PrbmAssembly::PrbmAssembly(const GeneralMechanism& mechanism, bool assemble_flex
         break;
       }
       case PrbmKind::kFixedPinned: {
+        const double kappa0 = std::fabs(f.curvature * arc_si);
+        if (f.curved() && kappa0 <= 2.0) {
+          // Howell §5.5: the initially curved cantilever. The pivot sits (1 - gamma) l along the
+          // clamp's tangent (eq. 5.119, gamma measured as if the beam were straight), the link
+          // joins it to the tip (length rho l, at Theta_i when unloaded: eqs. 5.115-5.118), and
+          // K = rho K_Theta EI/l acts on Theta - Theta_i (eqs. 5.124-5.127): its spring is
+          // relaxed in the described configuration. Table 5.2's gamma and K_Theta for |kappa0|
+          // (a negative curvature is the mirror image).
+          const InitiallyCurvedCantilever element(CurvedCantileverConstants::from_table(kappa0));
+          const Eigen::Vector2d t0 = rotate(f.end_angle_from_chord(l * L, 0), u);
+          const Eigen::Vector2d pivot = a + element.geometry().pivot_x * (arc_si / L) * t0;
+          const int link = add_link(pivot, b);
+          add_pin(make_point(ia, pivot), make_point(link, pivot));
+          add_pin(make_point(link, b), make_point(ib, b));
+          torsions_.push_back(
+              {ia, link, element.stiffness_coefficient() * EI / l_si / energy_scale_, 0.0});
+          break;
+        }
         // Howell §5.2: a link gamma l from the pivot (1 - gamma) l from the clamp to the pinned
         // far end, K = gamma K_Theta EI/l (eq. 5.72), Howell's average constants.
         const FixedPinnedSegment& element = howell_average_fixed_pinned();
@@ -570,9 +594,8 @@ std::vector<Vec2> PrbmAssembly::flexure_prb_points_si(const Eigen::VectorXd& q, 
 
 double PrbmAssembly::flexure_end_angle(const Eigen::VectorXd& q, int i, int end) const {
   const FlexureItems& it = flexure_items_.at(static_cast<std::size_t>(i));
-  const double rest = std::atan2(it.u.y(), it.u.x());
-  if (end == 0) return rest + phi(q, it.a);
-  if (!it.pinned) return rest + phi(q, it.b);
+  if (end == 0) return it.rest_a + phi(q, it.a);
+  if (!it.pinned) return it.rest_b + phi(q, it.b);
   // Pinned far end: the last PRB link (from the pivot to end b) gives the tangent.
   const std::vector<Vec2> p = flexure_prb_points_si(q, i);
   const Vec2& p1 = p[p.size() - 2];

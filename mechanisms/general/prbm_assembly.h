@@ -181,7 +181,7 @@ class PrbmAssembly {
     std::size_t torsion = 0, torsions = 0;
     int a = -1, b = -1;  // body indices of its ends
     Pt end_a, end_b;
-    Eigen::Vector2d u;  // rest direction a -> b
+    double rest_a = 0.0, rest_b = 0.0;  // rest tangents' angles at end a and end b, rad
     bool pinned = false;
   };
   std::vector<FlexureItems> flexure_items_;

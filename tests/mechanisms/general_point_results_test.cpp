@@ -17,6 +17,7 @@
 #include "flexure/mechanisms/general/general_exact.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
 #include "flexure/mechanisms/general/general_prbm.h"
+#include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism::general {
 namespace {
@@ -30,13 +31,8 @@ GeneralMechanism parallel_guide(double l, double E, double b, double h, double s
       .body("stage", {{"c1", {0, l}}, {"c2", {0.03, l}}})
       .flexure("left", "ground.c1", "stage.c1", b, h, E, PrbmKind::kFixedGuided)
       .flexure("right", "ground.c2", "stage.c2", b, h, E, PrbmKind::kFixedGuided)
-      .input_coordinate(InputCoordinate::kX,
-                        "stage.c1",
-                        "",
-                        InputControl::kDisplacement,
-                        -stop,
-                        stop,
-                        count);
+      .input_coordinate(
+          InputCoordinate::kX, "stage.c1", "", InputControl::kDisplacement, -stop, stop, count);
   return m;
 }
 
@@ -138,7 +134,8 @@ TEST(GeneralPointResults, ExactFlexureStressIsAStandaloneBeamsUnderTheReportedEn
       ASSERT_TRUE(s.solution.converged()) << s.solution.message;
       double largest = 0.0;
       for (const PhysicalShapePoint& q : s.physical.shape) {
-        largest = std::max({largest, std::fabs(*q.stress_pos_fibre), std::fabs(*q.stress_neg_fibre)});
+        largest =
+            std::max({largest, std::fabs(*q.stress_pos_fibre), std::fabs(*q.stress_neg_fibre)});
       }
       EXPECT_NEAR(f.max_stress, largest, 1e-8 * largest);
       // The clamp's moment is the flexure's moment on the ground.
@@ -186,7 +183,7 @@ TEST(GeneralPointResults, PrbmFixedPinnedStressIsHowellsAtTheClamp) {
     // Howell's P (along +y) and nP (the compressive axial force) on the tip, from the load the
     // flexure puts on the block.
     const double P = -f.on_b.fy, nP = f.on_b.fx;
-    const double M = P * a + nP * bb;  // eq. 5.21
+    const double M = P * a + nP * bb;                                     // eq. 5.21
     const double top = -M * c / I - nP / A, bottom = M * c / I - nP / A;  // eqs. 5.22, 5.23
     const double howell = std::max(std::fabs(top), std::fabs(bottom));
     EXPECT_NEAR(f.max_stress, howell, 1e-9 * std::max(howell, 1.0));
@@ -213,6 +210,172 @@ TEST(GeneralPointResults, PrbmFixedPinnedStressIsHowellsAtTheClamp) {
     EXPECT_NEAR(p.ground_reaction.moment + a * p.input_load + bb * Q, 0.0, 1e-9 * scale * l);
   }
   EXPECT_GT(r.points.back().flexures[0].max_stress, 1e6);
+}
+
+}  // namespace
+}  // namespace flexure::mechanism::general
+
+namespace flexure::mechanism::general {
+namespace {
+
+// A curved (and optionally tapered) flexure clamped into the ground with its rest tangent along
+// +x, its far end clamped into a free body whose x the input moves, under a dead force fy and
+// moment M on that body: a cantilever whose tip loads are the input load, fy and M.
+GeneralMechanism curved_cantilever(
+    double l, double kappa, double thickness_tip, double fy, double M, double stop) {
+  const Vec2 tip{std::sin(kappa * l) / kappa, (1.0 - std::cos(kappa * l)) / kappa};
+  GeneralMechanism m;
+  m.body("ground", {{"O", {0, 0}}})
+      .body("tip", {{"T", tip}})
+      .flexure("arc", "ground.O", "tip.T", 0.01, 0.001, 2e9, PrbmKind::kSmallLengthPivot)
+      .load("P", "tip.T", 0.0, fy, M)
+      .input_coordinate(
+          InputCoordinate::kX, "tip.T", "", InputControl::kDisplacement, tip.x, tip.x - stop, 4);
+  m.flexures.back().curvature = kappa;
+  m.flexures.back().length = l;
+  m.flexures.back().thickness_tip = thickness_tip;
+  return m;
+}
+
+TEST(GeneralCurvedFlexures, ExactCurvedAndTaperedCantileverIsTheStandaloneBeam) {
+  const double l = 0.05, E = 2e9, b = 0.01, h = 0.001;
+  const double EI = E * b * h * h * h / 12.0;
+  int interior = 0;
+  for (const double kappa : {0.5 / l, -1.5 / l}) {
+    for (const double thickness_tip : {0.0, 0.6e-3}) {
+      const GeneralPrbmResult r = solve_general_exact(
+          curved_cantilever(l, kappa, thickness_tip, 0.8 * EI / (l * l), 0.3 * EI / l, 0.2 * l));
+      ASSERT_TRUE(r.converged()) << r.message;
+      ASSERT_EQ(r.points.size(), 4u);
+      for (const GeneralPrbmPoint& p : r.points) {
+        const FlexurePointResult& f = p.flexures.at(0);
+        PhysicalCantilever beam;
+        beam.length = l;
+        beam.E = E;
+        beam.width = b;
+        beam.thickness = h;
+        beam.curvature = kappa;
+        if (thickness_tip > 0.0) beam.thickness_tip = thickness_tip;
+        // The tip loads: what the body puts on the flexure, in the clamp's frame (global here).
+        beam.Fx = -f.on_b.fx;
+        beam.Fy = -f.on_b.fy;
+        beam.M = -f.on_b.moment;
+        EXPECT_NEAR(beam.Fx, p.input_load, 1e-9 * EI / (l * l));
+        EXPECT_NEAR(beam.Fy, 0.8 * EI / (l * l), 1e-9 * EI / (l * l));
+        BeamProblem settings;
+        settings.shape_points = 4097;
+        settings.tolerance = 1e-12;
+        const PhysicalBeamSolution s = solve_physical_beam(BeamMethod::kShooting, beam, settings);
+        ASSERT_TRUE(s.solution.converged()) << s.solution.message;
+        // The body's point and angle (its reference is its only point, T).
+        const Vec2 tip0{std::sin(kappa * l) / kappa, (1.0 - std::cos(kappa * l)) / kappa};
+        EXPECT_NEAR(s.physical.tip_x, tip0.x + p.body_x[0], 1e-8 * l);
+        EXPECT_NEAR(s.physical.tip_y, tip0.y + p.body_y[0], 1e-8 * l);
+        EXPECT_NEAR(s.physical.theta0, kappa * l + p.body_phi[0], 1e-8);
+        EXPECT_NEAR(f.on_a.moment, s.physical.root_moment, 1e-8 * EI / l);
+        double largest = 0.0;
+        for (const PhysicalShapePoint& q : s.physical.shape) {
+          largest =
+              std::max({largest, std::fabs(*q.stress_pos_fibre), std::fabs(*q.stress_neg_fibre)});
+        }
+        // Where the largest is at an end both take it there. Inside, the mechanism refines the
+        // parabola through its largest of 257 samples and its neighbours (error of order
+        // (1/256)^3), against the largest of the standalone's 4097 samples (below the true
+        // maximum by about (1/4096)^2/8 of |sigma''| l^2): 1e-7.
+        const bool at_end = f.max_stress_at == 0.0 || std::fabs(f.max_stress_at - l) < 1e-12;
+        EXPECT_NEAR(f.max_stress, largest, (at_end ? 1e-8 : 1e-7) * largest)
+            << "kappa " << kappa << " taper " << thickness_tip << " at " << f.max_stress_at;
+        interior += at_end ? 0 : 1;
+        // The shape ends at the body's point.
+        EXPECT_NEAR(f.shape_x.back(), tip0.x + p.body_x[0], 1e-8 * l);
+        EXPECT_NEAR(f.shape_y.back(), tip0.y + p.body_y[0], 1e-8 * l);
+      }
+    }
+  }
+  EXPECT_GT(interior, 0);  // some maxima lie inside the flexure (the parabola is exercised)
+}
+
+TEST(GeneralCurvedFlexures, PrbmCurvedFixedPinnedFlexureIsHowellsTable5_2Element) {
+  const double l = 0.05, E = 2e9, b = 0.01, h = 0.001;
+  const double I = b * h * h * h / 12.0, EI = E * I, c = h / 2.0;
+  const double kappa0 = 0.5, kappa = kappa0 / l;
+  const double a_i = std::sin(kappa0) / kappa0, b_i = (1.0 - std::cos(kappa0)) / kappa0;  // 5.117-8
+  GeneralMechanism m;
+  m.body("ground", {{"O", {0, 0}}, {"T", {a_i * l, b_i * l}}})
+      .body("carriage", {{"T", {a_i * l, b_i * l}}})
+      .body("block", {{"T", {a_i * l, b_i * l}}})
+      .flexure("arc", "ground.O", "block.T", b, h, E, PrbmKind::kFixedPinned)
+      .slider("x-guide", "ground.T", "carriage.T", 0.0)
+      .slider("y-guide", "carriage.T", "block.T", kPi / 2)
+      .input_coordinate(InputCoordinate::kY,
+                        "block.T",
+                        "",
+                        InputControl::kDisplacement,
+                        b_i * l,
+                        b_i * l + 0.3 * l,
+                        5);
+  m.flexures.back().curvature = kappa;
+  const GeneralPrbmResult r = solve_general_prbm(m);
+  ASSERT_TRUE(r.converged()) << r.message;
+  // Table 5.2, kappa0 = 0.50: gamma = 0.81, K_Theta = 2.52; rho and Theta_i from eqs. 5.115-5.116
+  // (the table's rho 0.807 is these rounded).
+  const double gamma = 0.81, K_theta = 2.52;
+  const double rho = std::hypot(a_i - (1.0 - gamma), b_i);
+  EXPECT_NEAR(rho, 0.807, 5e-4);
+  const double Theta_i = std::atan2(b_i, a_i - (1.0 - gamma));
+  const double K = rho * K_theta * EI / l;  // eq. 5.127
+  for (const GeneralPrbmPoint& p : r.points) {
+    const double y = p.input;                       // the tip's b
+    const double Theta = std::asin(y / (rho * l));  // eq. 5.120
+    // eq. 5.119: a = l (1 - gamma + rho cos Theta), the block's x.
+    EXPECT_NEAR(a_i * l + p.body_x[1], l * (1.0 - gamma + rho * std::cos(Theta)), 1e-12);
+    // eqs. 5.121-5.126 with phi = 90 deg (n = 0): K (Theta - Theta_i) = rho l F cos Theta.
+    const double F = K * (Theta - Theta_i) / (rho * l * std::cos(Theta));
+    EXPECT_NEAR(p.input_load, F, 1e-9 * std::max(std::fabs(F), EI / (l * l)));
+    // eq. 5.128 with n = 0: sigma = P a c/I at the clamp.
+    const double a = a_i * l + p.body_x[1];
+    EXPECT_NEAR(p.flexures[0].max_stress, std::fabs(F) * a * c / I, 1e-9 * E * h / l);
+    EXPECT_EQ(p.flexures[0].max_stress_at, 0.0);
+  }
+  EXPECT_GT(r.points.back().input_load, 0.1 * EI / (l * l));
+}
+
+TEST(GeneralCurvedFlexures, WhatThePrbmDoesNotCoverIsANamedError) {
+  const double l = 0.05;
+  auto message = [](const GeneralMechanism& m) {
+    try {
+      solve_general_prbm(m);
+    } catch (const InvalidInput& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  // A curved flexure modelled as a small-length pivot; one past Table 5.2; a tapered one.
+  GeneralMechanism curved = curved_cantilever(l, 0.5 / l, 0.0, 0.0, 0.0, 0.01 * l);
+  EXPECT_NE(message(curved).find("flexure 'arc': initially curved"), std::string::npos)
+      << message(curved);
+  EXPECT_NE(message(curved).find("fixed-pinned"), std::string::npos);
+  GeneralMechanism far = curved_cantilever(l, 2.5 / l, 0.0, 0.0, 0.0, 0.01 * l);
+  far.flexures.back().prbm = PrbmKind::kFixedPinned;
+  EXPECT_NE(message(far).find("outside Howell's Table 5.2"), std::string::npos) << message(far);
+  GeneralMechanism tapered = parallel_guide(l, 2e9, 0.01, 0.001, 1e-4, 3);
+  tapered.flexures.back().width_tip = 0.005;
+  EXPECT_NE(message(tapered).find("flexure 'right': tapered"), std::string::npos)
+      << message(tapered);
+  // The mixed model's other models are straight: a curved flexure must be exact there.
+  curved.flexures.back().model = FlexureModel::kBcm;
+  try {
+    solve_general_mixed(curved);
+    ADD_FAILURE() << "no error";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("give it model = \"exact\""), std::string::npos)
+        << e.what();
+  }
+  // No arc of that curvature spans the ends.
+  GeneralMechanism impossible = curved_cantilever(l, 0.5 / l, 0.0, 0.0, 0.0, 0.01 * l);
+  impossible.flexures.back().length = 0.0;
+  impossible.flexures.back().curvature = 100.0 / l;
+  EXPECT_THROW(impossible.validate(), InvalidInput);
 }
 
 }  // namespace
