@@ -264,7 +264,10 @@ Json model_json(const GeneralPrbmResult& r) {
               {"steps", r.iterations}};
 }
 
-void print_model(const std::string& title, const GeneralPrbmResult& r, const Input& in) {
+void print_model(const std::string& title,
+                 const GeneralPrbmResult& r,
+                 const Input& in,
+                 const GeneralMechanism& m) {
   const bool angle = in.coordinate == InputCoordinate::kAngle;
   auto show = [&](double v) {
     return angle ? fmt::format("{:.6g} deg", v * 180.0 / 3.14159265358979323846)
@@ -295,6 +298,25 @@ void print_model(const std::string& title, const GeneralPrbmResult& r, const Inp
                              show(r.limit_inputs[i]),
                              r.limit_loads[i],
                              load_unit(in));
+  }
+  // Each flexure's largest stress along the path (the JSON's flexures[].max_stress per point).
+  for (std::size_t k = 0; k < m.flexures.size(); ++k) {
+    const GeneralPrbmPoint* worst = nullptr;
+    for (const GeneralPrbmPoint& p : r.points) {
+      if (k < p.flexures.size() &&
+          (worst == nullptr || p.flexures[k].max_stress > worst->flexures[k].max_stress)) {
+        worst = &p;
+      }
+    }
+    if (worst == nullptr) continue;
+    const FlexurePointResult& f = worst->flexures[k];
+    std::cout << fmt::format(
+        "    flexure {}: largest stress {:.6g} MPa at input {}, {:.6g} mm from end a ({})\n",
+        m.flexures[k].name,
+        f.max_stress * 1e-6,
+        show(worst->input),
+        f.max_stress_at * 1e3,
+        f.max_from);
   }
 }
 
@@ -441,7 +463,7 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
                            in.body,
                            input_control_name(in.control));
   for (const auto& [name, r] : results) {
-    print_model(name == "prbm" ? "PRBM" : name, r, in);
+    print_model(name == "prbm" ? "PRBM" : name, r, in, m);
     for (const FlexureModelReport& f : r.flexure_models) {
       std::cout << fmt::format(
           "    flexure {}: {}{}; expected tip error {}{}\n      {}\n",
