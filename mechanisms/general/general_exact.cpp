@@ -134,8 +134,11 @@ class ExactSystem {
       }
       for (int k = 0; k < kEnergySamples; ++k) {
         const double s_si = length_si * k / (kEnergySamples - 1);
-        b.sample_EI.push_back(f.youngs_modulus * section.second_moment_at(s_si) /
-                              (a.energy_scale() * L));
+        // (A uniform flexure keeps b.EI itself: its energy is the same number as before.)
+        if (f.tapered()) {
+          b.sample_EI.push_back(f.youngs_modulus * section.second_moment_at(s_si) /
+                                (a.energy_scale() * L));
+        }
         b.sample_width.push_back(*section.width_at(s_si));
         b.sample_thickness.push_back(*section.thickness_at(s_si));
       }

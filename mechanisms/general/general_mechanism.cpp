@@ -437,13 +437,15 @@ void GeneralMechanism::validate() const {
       }
       const double chord = std::fabs(2.0 * std::sin(0.5 * f.curvature * l) / f.curvature);
       if (f.length != 0.0 &&
-          (!(f.length > 0.0) || std::fabs(f.curvature * f.length) >= 2 * std::numbers::pi ||
-           std::fabs(chord - distance) > 1e-6 * distance)) {
+          (!(f.length > 0.0) || std::fabs(f.curvature * f.length) >= 2 * std::numbers::pi)) {
+        throw InvalidInput(item + ": length " + fmt(f.length) + " m with curvature " +
+                           fmt(f.curvature) + " 1/m is not an arc of less than a full circle");
+      }
+      if (f.length != 0.0 && std::fabs(chord - distance) > 1e-6 * distance) {
         throw InvalidInput(item + ": length " + fmt(f.length) + " m and curvature " +
-                           fmt(f.curvature) + " 1/m make an arc whose ends are " + fmt(chord) +
-                           " m apart (less than a full circle), but its ends " + f.a.text() +
-                           " and " + f.b.text() + " are " + fmt(distance) +
-                           " m apart in the described configuration");
+                           fmt(f.curvature) + " 1/m make an arc whose chord is " + fmt(chord) +
+                           " m, but its ends " + f.a.text() + " and " + f.b.text() + " are " +
+                           fmt(distance) + " m apart in the described configuration");
       }
     } else if (f.length != 0.0 &&
                (!std::isfinite(f.length) || std::fabs(f.length - distance) > 1e-6 * distance)) {

@@ -376,6 +376,18 @@ TEST(GeneralCurvedFlexures, WhatThePrbmDoesNotCoverIsANamedError) {
   impossible.flexures.back().length = 0.0;
   impossible.flexures.back().curvature = 100.0 / l;
   EXPECT_THROW(impossible.validate(), InvalidInput);
+  // A length whose arc does not span the ends.
+  GeneralMechanism misfit = curved_cantilever(l, 0.5 / l, 0.0, 0.0, 0.0, 0.01 * l);
+  misfit.flexures.back().length = 1.02 * l;
+  try {
+    misfit.validate();
+    ADD_FAILURE() << "no error";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("flexure 'arc': length 0.051 m and curvature 10 1/m make "
+                                         "an arc whose chord is"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
