@@ -552,3 +552,34 @@ TEST(GeneralCurvedFlexures, SeededRandomCurvedTaperedCantileversAreTheStandalone
 
 }  // namespace
 }  // namespace flexure::mechanism::general
+
+namespace flexure::mechanism::general {
+namespace {
+
+// The fixed-guided element of a general mechanism with its far body free to turn is Howell's §5.7
+// simplified fixed-fixed model (docs/mechanisms.md "PRBM elements in a mechanism"): under a small
+// tip force its compliance is (1 + gamma^2)/(4 gamma K_Theta) l^3/EI, from its two springs
+// 2 gamma K_Theta EI/l by virtual work, against the beam's 1/3 (the exact model's).
+TEST(GeneralPointResults, FixedGuidedFlexureWithAFreeFarEndIsTheSimplifiedFixedFixedModel) {
+  const double l = 0.05, E = 2e9, b = 0.01, h = 0.001;
+  const double EI = E * b * h * h * h / 12.0, delta = 1e-5 * l;
+  GeneralMechanism m;
+  m.body("ground", {{"O", {0, 0}}})
+      .body("tip", {{"T", {l, 0}}})
+      .flexure("f", "ground.O", "tip.T", b, h, E, PrbmKind::kFixedGuided)
+      .input_coordinate(
+          InputCoordinate::kY, "tip.T", "", InputControl::kDisplacement, 0.0, delta, 2);
+  const GeneralPrbmResult prbm = solve_general_prbm(m);
+  const GeneralPrbmResult exact = solve_general_exact(m);
+  ASSERT_TRUE(prbm.converged()) << prbm.message;
+  ASSERT_TRUE(exact.converged()) << exact.message;
+  const FixedPinnedConstants c = FixedPinnedConstants::from_table(0.0);
+  const double g = c.gamma;
+  const double compliance_prbm = (1.0 + g * g) / (4.0 * g * c.K_theta);
+  EXPECT_NEAR(delta / prbm.points[1].input_load * EI / (l * l * l), compliance_prbm, 1e-5);
+  EXPECT_NEAR(compliance_prbm, 0.189, 5e-4);  // Table 5.1, n = 0
+  EXPECT_NEAR(delta / exact.points[1].input_load * EI / (l * l * l), 1.0 / 3.0, 1e-5);
+}
+
+}  // namespace
+}  // namespace flexure::mechanism::general
