@@ -394,7 +394,7 @@ class ExactSystem {
       } else {
         std::vector<ShapePoint> shape;
         if (!integrate(b, w, tip, &shape, kEnergySamples, &report_integrator_) ||
-            shape.size() < 3) {
+            shape.size() != b.sample_width.size()) {
           throw NoConvergence("flexure '" + f.name + "': its shape could not be sampled");
         }
         r.max_from = "shape";
