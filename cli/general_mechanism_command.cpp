@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -140,6 +141,92 @@ bool is_general_mechanism_file(const std::string& what) {
 
 namespace {
 
+// Per point: a PointLoad's force and moment as three arrays.
+template <typename F>
+Json point_load_json(const GeneralPrbmResult& r, F pick) {
+  Json fx = Json::array(), fy = Json::array(), moment = Json::array();
+  for (const GeneralPrbmPoint& p : r.points) {
+    const PointLoad& l = pick(p);
+    fx.push_back(number_or_null(l.fx));
+    fy.push_back(number_or_null(l.fy));
+    moment.push_back(number_or_null(l.moment));
+  }
+  return Json{{"fx", fx}, {"fy", fy}, {"moment", moment}};
+}
+
+// The bodies' poses, the joints' positions and reactions, the ground's reaction and every
+// flexure's end loads and largest stress per point (GeneralPrbmPoint; docs/cli.md).
+void add_point_results_json(Json& j, const GeneralPrbmResult& r, const GeneralMechanism& m) {
+  Json bodies = Json::array();
+  for (std::size_t b = 0; b < r.body_names.size(); ++b) {
+    Json x = Json::array(), y = Json::array(), phi = Json::array();
+    for (const GeneralPrbmPoint& p : r.points) {
+      x.push_back(b < p.body_x.size() ? Json(p.body_x[b]) : Json(nullptr));
+      y.push_back(b < p.body_y.size() ? Json(p.body_y[b]) : Json(nullptr));
+      phi.push_back(b < p.body_phi.size() ? Json(p.body_phi[b]) : Json(nullptr));
+    }
+    bodies.push_back(Json{{"name", r.body_names[b]}, {"x", x}, {"y", y}, {"phi", phi}});
+  }
+  j["bodies"] = bodies;
+  Json joints = Json::array();
+  for (std::size_t k = 0; k < m.joints.size(); ++k) {
+    const bool all = std::all_of(
+        r.points.begin(), r.points.end(), [&](const auto& p) { return k < p.joints.size(); });
+    if (!all) break;
+    Json x = Json::array(), y = Json::array();
+    for (const GeneralPrbmPoint& p : r.points) {
+      x.push_back(p.joints[k].x);
+      y.push_back(p.joints[k].y);
+    }
+    joints.push_back(Json{{"name", m.joints[k].name},
+                          {"kind", joint_kind_name(m.joints[k].kind)},
+                          {"x", x},
+                          {"y", y},
+                          {"on_b", point_load_json(r, [&](const auto& p) -> const PointLoad& {
+                             return p.joints[k].on_b;
+                           })}});
+  }
+  j["joints"] = joints;
+  j["ground_reaction"] =
+      point_load_json(r, [](const auto& p) -> const PointLoad& { return p.ground_reaction; });
+  Json flexures = Json::array();
+  for (std::size_t k = 0; k < m.flexures.size(); ++k) {
+    const bool all =
+        !r.points.empty() && std::all_of(r.points.begin(), r.points.end(), [&](const auto& p) {
+          return k < p.flexures.size();
+        });
+    if (!all) break;
+    Json stress = Json::array(), at = Json::array(), fibre = Json::array(), pos = Json::array(),
+         neg = Json::array(), moment = Json::array(), axial = Json::array();
+    for (const GeneralPrbmPoint& p : r.points) {
+      const FlexurePointResult& f = p.flexures[k];
+      stress.push_back(number_or_null(f.max_stress));
+      at.push_back(number_or_null(f.max_stress_at));
+      fibre.push_back(f.max_stress_fibre);
+      pos.push_back(number_or_null(f.stress_pos_fibre));
+      neg.push_back(number_or_null(f.stress_neg_fibre));
+      moment.push_back(number_or_null(f.moment));
+      axial.push_back(number_or_null(f.axial_force));
+    }
+    flexures.push_back(Json{
+        {"name", m.flexures[k].name},
+        {"max_stress", stress},
+        {"max_stress_at", at},
+        {"max_stress_fibre", fibre},
+        {"stress_pos_fibre", pos},
+        {"stress_neg_fibre", neg},
+        {"moment_at_max_stress", moment},
+        {"axial_force_at_max_stress", axial},
+        {"max_stress_from", r.points.front().flexures[k].max_from},
+        {"on_a",
+         point_load_json(r, [&](const auto& p) -> const PointLoad& { return p.flexures[k].on_a; })},
+        {"on_b", point_load_json(r, [&](const auto& p) -> const PointLoad& {
+           return p.flexures[k].on_b;
+         })}});
+  }
+  j["flexures"] = flexures;
+}
+
 // One model's arrays, equilibria and limit points.
 Json model_json(const GeneralPrbmResult& r) {
   Json input = Json::array(), load = Json::array(), energy = Json::array();
@@ -177,7 +264,10 @@ Json model_json(const GeneralPrbmResult& r) {
               {"steps", r.iterations}};
 }
 
-void print_model(const std::string& title, const GeneralPrbmResult& r, const Input& in) {
+void print_model(const std::string& title,
+                 const GeneralPrbmResult& r,
+                 const Input& in,
+                 const GeneralMechanism& m) {
   const bool angle = in.coordinate == InputCoordinate::kAngle;
   auto show = [&](double v) {
     return angle ? fmt::format("{:.6g} deg", v * 180.0 / 3.14159265358979323846)
@@ -208,6 +298,25 @@ void print_model(const std::string& title, const GeneralPrbmResult& r, const Inp
                              show(r.limit_inputs[i]),
                              r.limit_loads[i],
                              load_unit(in));
+  }
+  // Each flexure's largest stress along the path (the JSON's flexures[].max_stress per point).
+  for (std::size_t k = 0; k < m.flexures.size(); ++k) {
+    const GeneralPrbmPoint* worst = nullptr;
+    for (const GeneralPrbmPoint& p : r.points) {
+      if (k < p.flexures.size() &&
+          (worst == nullptr || p.flexures[k].max_stress > worst->flexures[k].max_stress)) {
+        worst = &p;
+      }
+    }
+    if (worst == nullptr) continue;
+    const FlexurePointResult& f = worst->flexures[k];
+    std::cout << fmt::format(
+        "    flexure {}: largest stress {:.6g} MPa at input {}, {:.6g} mm from end a ({})\n",
+        m.flexures[k].name,
+        f.max_stress * 1e-6,
+        show(worst->input),
+        f.max_stress_at * 1e3,
+        f.max_from);
   }
 }
 
@@ -305,6 +414,7 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
     Json models = Json::object();
     for (const auto& [name, r] : results) {
       models[name] = model_json(r);
+      add_point_results_json(models[name], r, m);
       if (name == "mixed") {
         models[name]["flexure_models"] =
             flexure_models_json(r.flexure_models, request.check_flexures);
@@ -327,6 +437,10 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
              {"stability", top["stability"]},
              {"equilibria", top["equilibria"]},
              {"limit_points", top["limit_points"]},
+             {"bodies", top["bodies"]},
+             {"joints", top["joints"]},
+             {"ground_reaction", top["ground_reaction"]},
+             {"flexures", top["flexures"]},
              {"models", models}};
     if (model == "mixed") {
       out["flexure_models"] = models["mixed"]["flexure_models"];
@@ -349,7 +463,7 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
                            in.body,
                            input_control_name(in.control));
   for (const auto& [name, r] : results) {
-    print_model(name == "prbm" ? "PRBM" : name, r, in);
+    print_model(name == "prbm" ? "PRBM" : name, r, in, m);
     for (const FlexureModelReport& f : r.flexure_models) {
       std::cout << fmt::format(
           "    flexure {}: {}{}; expected tip error {}{}\n      {}\n",

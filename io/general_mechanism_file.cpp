@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <span>
 
@@ -161,6 +163,157 @@ void write_bodies(Hdf5Group& g, const GeneralPrbmResult& r) {
   }
 }
 
+// The joints' positions and reactions, the ground's reaction and every flexure's end loads,
+// largest stress and shape per point (GeneralPrbmPoint; docs/hdf5-schema.md).
+void write_point_loads(
+    Hdf5Group& g,
+    const std::string& prefix,
+    const GeneralPrbmResult& r,
+    const std::function<const mechanism::general::PointLoad&(const GeneralPrbmPoint&)>& pick,
+    const std::string& what) {
+  g.write_dataset(prefix + "fx",
+                  std::span<const double>(per_point(r, [&](const auto& p) { return pick(p).fx; })),
+                  "N",
+                  what + ": force, x");
+  g.write_dataset(prefix + "fy",
+                  std::span<const double>(per_point(r, [&](const auto& p) { return pick(p).fy; })),
+                  "N",
+                  what + ": force, y");
+  g.write_dataset(
+      prefix + "moment",
+      std::span<const double>(per_point(r, [&](const auto& p) { return pick(p).moment; })),
+      "N m",
+      what + ": moment (counter-clockwise)");
+}
+
+void write_point_results(Hdf5Group& g,
+                         const GeneralPrbmResult& r,
+                         const mechanism::general::GeneralMechanism& m) {
+  if (r.points.empty()) return;
+  Hdf5Group ground = g.create_group("ground_reaction");
+  write_point_loads(
+      ground,
+      "",
+      r,
+      [](const GeneralPrbmPoint& p) -> const mechanism::general::PointLoad& {
+        return p.ground_reaction;
+      },
+      "the load the ground puts on the mechanism per point (moment about the origin)");
+  auto all_have = [&](auto member, std::size_t k) {
+    return std::all_of(
+        r.points.begin(), r.points.end(), [&](const auto& p) { return k < (p.*member).size(); });
+  };
+  Hdf5Group joints = g.create_group("joints");
+  for (std::size_t k = 0; k < m.joints.size(); ++k) {
+    if (!all_have(&GeneralPrbmPoint::joints, k)) break;
+    Hdf5Group j = joints.create_group(m.joints[k].name);
+    j.set_attribute("kind", std::string(joint_kind_name(m.joints[k].kind)));
+    j.write_dataset(
+        "x",
+        std::span<const double>(per_point(r, [&](const auto& p) { return p.joints[k].x; })),
+        "m",
+        "x of the joint's point of body b per point");
+    j.write_dataset(
+        "y",
+        std::span<const double>(per_point(r, [&](const auto& p) { return p.joints[k].y; })),
+        "m",
+        "y of that point per point");
+    write_point_loads(
+        j,
+        "on_b_",
+        r,
+        [k](const GeneralPrbmPoint& p) -> const mechanism::general::PointLoad& {
+          return p.joints[k].on_b;
+        },
+        "the load body a puts on body b through the joint, at its point");
+  }
+  Hdf5Group flexures = g.create_group("flexures");
+  for (std::size_t k = 0; k < m.flexures.size(); ++k) {
+    if (!all_have(&GeneralPrbmPoint::flexures, k)) break;
+    Hdf5Group f = flexures.create_group(m.flexures[k].name);
+    f.set_attribute("max_stress_from", std::string(r.points.front().flexures[k].max_from));
+    auto series = [&](const char* name, auto value, const char* unit, const std::string& what) {
+      f.write_dataset(
+          name,
+          std::span<const double>(per_point(
+              r, [&](const auto& p) { return static_cast<double>(value(p.flexures[k])); })),
+          unit,
+          what);
+    };
+    using FR = mechanism::general::FlexurePointResult;
+    series(
+        "max_stress",
+        [](const FR& x) { return x.max_stress; },
+        "Pa",
+        "the largest |N_a/A -+ m c/I| along the flexure, both fibres");
+    series(
+        "max_stress_at",
+        [](const FR& x) { return x.max_stress_at; },
+        "m",
+        "where it acts: arc length from end a");
+    series(
+        "max_stress_fibre",
+        [](const FR& x) { return x.max_stress_fibre; },
+        "1",
+        "+1: the fibre h/2 on the +n side (left of the tangent), -1 the other");
+    series(
+        "stress_pos_fibre",
+        [](const FR& x) { return x.stress_pos_fibre; },
+        "Pa",
+        "N_a/A - m c/I at that section");
+    series(
+        "stress_neg_fibre",
+        [](const FR& x) { return x.stress_neg_fibre; },
+        "Pa",
+        "N_a/A + m c/I at that section");
+    series(
+        "moment", [](const FR& x) { return x.moment; }, "N m", "bending moment at that section");
+    series(
+        "axial_force",
+        [](const FR& x) { return x.axial_force; },
+        "N",
+        "axial force N . t at that section (tension positive)");
+    write_point_loads(
+        f,
+        "on_a_",
+        r,
+        [k](const GeneralPrbmPoint& p) -> const mechanism::general::PointLoad& {
+          return p.flexures[k].on_a;
+        },
+        "the load the flexure puts on body a at end a");
+    write_point_loads(
+        f,
+        "on_b_",
+        r,
+        [k](const GeneralPrbmPoint& p) -> const mechanism::general::PointLoad& {
+          return p.flexures[k].on_b;
+        },
+        "the load the flexure puts on body b at end b");
+    std::size_t samples = 0;
+    for (const GeneralPrbmPoint& p : r.points) {
+      samples = std::max(samples, p.flexures[k].shape_x.size());
+    }
+    if (samples == 0) continue;
+    for (const char* which : {"shape_x", "shape_y"}) {
+      std::vector<double> values;
+      values.reserve(r.points.size() * samples);
+      for (const GeneralPrbmPoint& p : r.points) {
+        const std::vector<double>& v =
+            std::string(which) == "shape_x" ? p.flexures[k].shape_x : p.flexures[k].shape_y;
+        for (std::size_t i = 0; i < samples; ++i) values.push_back(i < v.size() ? v[i] : kNaN);
+      }
+      f.write_dataset(which,
+                      std::span<const double>(values),
+                      {static_cast<hsize_t>(r.points.size()), static_cast<hsize_t>(samples)},
+                      "m",
+                      fmt::format("[point, sample]: the flexure's {} from end a to end b, global "
+                                  "(the exact model: the elastica at equal arc lengths; the PRBM: "
+                                  "its PRB linkage's joints; a ladder model: the chord)",
+                                  which[6]));
+    }
+  }
+}
+
 // The described configuration, for drawing the mechanism at any point: every named point of every
 // body (the ground's too), each moving body's pose reference (the centroid of its points, as the
 // assembly's: prbm_assembly.cpp) and each flexure's ends and end conditions. A point q of body B
@@ -203,7 +356,7 @@ void write_geometry(Hdf5Group& root, const mechanism::general::GeneralMechanism&
   bodies.write_dataset(
       "reference_y", std::span<const double>(ry), "m", "y of that point, described configuration");
   std::vector<std::string> f_name, f_a, f_b, f_end;
-  std::vector<double> ax, ay, bx, by, length;
+  std::vector<double> ax, ay, bx, by, length, curvature;
   for (const mechanism::general::Flexure& f : m.flexures) {
     const mechanism::general::Vec2 a = m.point(f.a), b = m.point(f.b);
     f_name.push_back(f.name);
@@ -215,7 +368,8 @@ void write_geometry(Hdf5Group& root, const mechanism::general::GeneralMechanism&
     ay.push_back(a.y);
     bx.push_back(b.x);
     by.push_back(b.y);
-    length.push_back(std::hypot(b.x - a.x, b.y - a.y));
+    length.push_back(f.arc_length(std::hypot(b.x - a.x, b.y - a.y)));
+    curvature.push_back(f.curvature);
   }
   Hdf5Group flexures = geo.create_group("flexures");
   flexures.write_dataset("name", f_name, "text", "each flexure");
@@ -227,6 +381,10 @@ void write_geometry(Hdf5Group& root, const mechanism::general::GeneralMechanism&
   flexures.write_dataset("b_x", std::span<const double>(bx), "m", "end b, described");
   flexures.write_dataset("b_y", std::span<const double>(by), "m", "end b, described");
   flexures.write_dataset("length", std::span<const double>(length), "m", "its length");
+  flexures.write_dataset("curvature",
+                         std::span<const double>(curvature),
+                         "1/m",
+                         "its stress-free curvature (0: straight; else an arc from a to b)");
 }
 
 void write_flexure_models(Hdf5Group& g,
@@ -378,6 +536,7 @@ void write_general_mechanism(Hdf5Group& root, const GeneralAnalysisOutput& out) 
     write_path(g, *r, in, name);
     write_equilibria_and_limits(g, *r, in);
     write_bodies(g, *r);
+    write_point_results(g, *r, m);
     write_flexure_models(g, r->flexure_models, out.checked_flexures);
   }
   write_provenance(root, stability_code_meanings());

@@ -253,7 +253,10 @@ GeneralMechanism parse_general_mechanism_toml(const std::string& text, const std
                      "model",
                      "tolerance",
                      "elements",
-                     "extensible"},
+                     "extensible",
+                     "curvature",
+                     "width_tip",
+                     "thickness_tip"},
                     r.item(),
                     source);
     Flexure f;
@@ -323,6 +326,16 @@ GeneralMechanism parse_general_mechanism_toml(const std::string& text, const std
         r.fail(n, "extensible must be true or false");
       }
       f.extensible = *v;
+    }
+    // The rest shape (general_mechanism.h): a stress-free curvature (1/m, or "20 1/m") and a
+    // taper to the tip's section, as `flexure beam --curvature --width-tip --thickness-tip`.
+    f.curvature = r.number("curvature", Dimension::kCurvature, false).value_or(0.0);
+    f.width_tip = r.number("width_tip", Dimension::kLength, false).value_or(0.0);
+    f.thickness_tip = r.number("thickness_tip", Dimension::kLength, false).value_or(0.0);
+    for (const char* key : {"width_tip", "thickness_tip"}) {
+      if (t->get(key) != nullptr && !(*r.number(key, Dimension::kLength, true) > 0.0)) {
+        r.fail(t->get(key), std::string(key) + " must be > 0");
+      }
     }
     m.flexures.push_back(f);
   }

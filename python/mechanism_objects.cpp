@@ -123,12 +123,20 @@ void bind_description(py::module_& m) {
              PrbmKind prbm,
              FlexureModel model,
              double tolerance,
-             int elements) -> GM& {
+             int elements,
+             double curvature,
+             double length,
+             double width_tip,
+             double thickness_tip) -> GM& {
             g.flexure(name, a, b, width, thickness, E, prbm);
             Flexure& f = g.flexures.back();
             f.model = model;
             f.tolerance = tolerance;
             f.elements = elements;
+            f.curvature = curvature;
+            f.length = length;
+            f.width_tip = width_tip;
+            f.thickness_tip = thickness_tip;
             return g;
           },
           py::arg("name"),
@@ -142,9 +150,15 @@ void bind_description(py::module_& m) {
           py::arg("model") = FlexureModel::kPrbm,
           py::arg("tolerance") = 0.0,
           py::arg("elements") = 6,
+          py::arg("curvature") = 0.0,
+          py::arg("length") = 0.0,
+          py::arg("width_tip") = 0.0,
+          py::arg("thickness_tip") = 0.0,
           self,
-          "A straight flexure from point a to point b ('body.point'): width b and thickness h "
-          "(m), Young's modulus E (Pa), its PRBM element and its model under the mixed model.")
+          "A flexure from point a to point b ('body.point'): width b and thickness h (m), Young's "
+          "modulus E (Pa), its PRBM element and its model under the mixed model; its rest shape: "
+          "a stress-free curvature (1/m: an arc from a to b of the given length, or the minor arc) "
+          "and a taper to width_tip, thickness_tip at b (m; 0: none).")
       .def(
           "linear_spring",
           [](GM& g,
@@ -307,6 +321,39 @@ void bind_results(py::module_& m) {
       .def_readonly("max_step_halvings", &GeneralExactOptions::max_step_halvings)
       .def_readonly("measure_flexure_errors", &GeneralExactOptions::measure_flexure_errors);
 
+  py::class_<PointLoad>(m, "PointLoad", "A force (N) at a point and a moment (N m) about it.")
+      .def_readonly("fx", &PointLoad::fx)
+      .def_readonly("fy", &PointLoad::fy)
+      .def_readonly("moment", &PointLoad::moment)
+      .def("__repr__", [](const PointLoad& l) {
+        return fmt::format("PointLoad(fx={}, fy={}, moment={})", l.fx, l.fy, l.moment);
+      });
+  py::class_<JointPointResult>(
+      m, "JointPointResult", "A joint at one point: its point of body b and body a's load on b.")
+      .def_readonly("x", &JointPointResult::x)
+      .def_readonly("y", &JointPointResult::y)
+      .def_readonly("on_b", &JointPointResult::on_b);
+  py::class_<FlexurePointResult>(m,
+                                 "FlexurePointResult",
+                                 "One flexure at one point: its end loads, largest stress and "
+                                 "shape (docs/mechanisms.md \"Reactions, stresses and shapes\").")
+      .def_readonly("on_a", &FlexurePointResult::on_a)
+      .def_readonly("on_b", &FlexurePointResult::on_b)
+      .def_readonly("max_stress", &FlexurePointResult::max_stress)
+      .def_readonly("max_stress_at", &FlexurePointResult::max_stress_at)
+      .def_readonly("max_stress_fibre", &FlexurePointResult::max_stress_fibre)
+      .def_readonly("stress_pos_fibre", &FlexurePointResult::stress_pos_fibre)
+      .def_readonly("stress_neg_fibre", &FlexurePointResult::stress_neg_fibre)
+      .def_readonly("moment", &FlexurePointResult::moment)
+      .def_readonly("axial_force", &FlexurePointResult::axial_force)
+      .def_property_readonly("max_stress_from",
+                             [](const FlexurePointResult& f) { return std::string(f.max_from); })
+      .def_readonly("shape_x", &FlexurePointResult::shape_x)
+      .def_readonly("shape_y", &FlexurePointResult::shape_y)
+      .def("__repr__", [](const FlexurePointResult& f) {
+        return fmt::format(
+            "FlexurePointResult(max_stress={}, at={})", f.max_stress, f.max_stress_at);
+      });
   py::class_<GeneralPrbmPoint>(m, "GeneralMechanismPoint", "One equilibrium along the input.")
       .def_readonly("input", &GeneralPrbmPoint::input)
       .def_readonly("input_load", &GeneralPrbmPoint::input_load)
@@ -317,6 +364,9 @@ void bind_results(py::module_& m) {
       .def_readonly("body_x", &GeneralPrbmPoint::body_x)
       .def_readonly("body_y", &GeneralPrbmPoint::body_y)
       .def_readonly("body_phi", &GeneralPrbmPoint::body_phi)
+      .def_readonly("joints", &GeneralPrbmPoint::joints)
+      .def_readonly("flexures", &GeneralPrbmPoint::flexures)
+      .def_readonly("ground_reaction", &GeneralPrbmPoint::ground_reaction)
       .def("__repr__", [](const GeneralPrbmPoint& p) {
         return fmt::format("GeneralMechanismPoint(input={}, input_load={})", p.input, p.input_load);
       });

@@ -8,9 +8,11 @@
 #include <optional>
 #include <sstream>
 
+#include "flexure/beam/physical_beam.h"
 #include "flexure/mechanisms/general/arclength_path.h"
 #include "flexure/mechanisms/general/exact_stability.h"
 #include "flexure/mechanisms/general/flexure_models.h"
+#include "flexure/mechanisms/general/flexure_point_results.h"
 #include "flexure/mechanisms/general/flexure_stress.h"
 #include "flexure/mechanisms/general/prbm_assembly.h"
 #include "flexure/solver/chain_model/equilibrium_stability.h"
@@ -49,6 +51,9 @@ struct FlexureBeam {
   double EA = std::numeric_limits<double>::infinity();  // scaled; infinite: inextensible
   double direction = 0.0;  // rest angle of the flexure from a to b, rad
   bool pinned_tip = false;
+  double rest_turn = 0.0;  // the rest tangent's turn from end a to end b (kappa0 l), rad
+  // At kEnergySamples equal arc lengths: EI (scaled) and the section (m), for a taper.
+  std::vector<double> sample_EI, sample_width, sample_thickness;
   // kExact: an elastica with unknowns w = its root loads (m0, Nx, Ny). Any other model (mixed):
   // a cantilever under its tip loads, unknowns w = (M_tip, Nx, Ny) (flexure_models.h).
   FlexureModel model = FlexureModel::kExact;
@@ -103,11 +108,43 @@ class ExactSystem {
       b.flexure = &f;
       const Vec2 pa = m.point(f.a);
       const Vec2 pb = m.point(f.b);
-      b.length = std::hypot(pb.x - pa.x, pb.y - pa.y) / L;
+      const double chord = std::hypot(pb.x - pa.x, pb.y - pa.y);
+      const double length_si = f.arc_length(chord);
+      b.length = length_si / L;
       b.EI = f.flexural_rigidity() / (a.energy_scale() * L);
-      b.direction = std::atan2(pb.y - pa.y, pb.x - pa.x);
+      // The root frame: x along the rest tangent at end a (the chord turned back by half the
+      // arc's turn for a curved flexure), in which the integrator starts at theta = 0.
+      b.direction = std::atan2(pb.y - pa.y, pb.x - pa.x) + f.end_angle_from_chord(chord, 0);
+      b.rest_turn = f.curvature * length_si;
       b.pinned_tip = f.prbm == PrbmKind::kFixedPinned;
-      b.chain.segments.push_back(FlexibleSegment{b.length, b.EI, {}, 0.0});
+      // A taper as the physical beam's (beam/physical_beam.h): EI(s) at kTaperStations stations
+      // (scaled), and the section at the samples of the energy and the stresses.
+      PhysicalCantilever section;
+      section.length = length_si;
+      section.E = f.youngs_modulus;
+      section.width = f.width;
+      section.thickness = f.thickness;
+      if (f.width_tip > 0.0) section.width_tip = f.width_tip;
+      if (f.thickness_tip > 0.0) section.thickness_tip = f.thickness_tip;
+      std::vector<double> profile;
+      if (f.tapered()) {
+        const int n = PhysicalCantilever::kTaperStations;
+        for (int k = 0; k < n; ++k) {
+          profile.push_back(f.youngs_modulus * section.second_moment_at(length_si * k / (n - 1)) /
+                            (a.energy_scale() * L));
+        }
+      }
+      for (int k = 0; k < kEnergySamples; ++k) {
+        const double s_si = length_si * k / (kEnergySamples - 1);
+        // (A uniform flexure keeps b.EI itself: its energy is the same number as before.)
+        if (f.tapered()) {
+          b.sample_EI.push_back(f.youngs_modulus * section.second_moment_at(s_si) /
+                                (a.energy_scale() * L));
+        }
+        b.sample_width.push_back(*section.width_at(s_si));
+        b.sample_thickness.push_back(*section.thickness_at(s_si));
+      }
+      b.chain.segments.push_back(FlexibleSegment{b.length, b.EI, profile, f.curvature * L});
       if (f.extensible) {
         // EA scaled as a force (F L/K): the strain N/EA is the same in both units.
         b.EA = f.axial_rigidity() * L / a.energy_scale();
@@ -230,9 +267,9 @@ class ExactSystem {
       const Eigen::Vector2d d = a_.point_scaled(q, f.b) - a_.point_scaled(q, f.a);
       F[o] = tip.x - (c * d.x() + sn * d.y());
       F[o + 1] = tip.y - (-sn * d.x() + c * d.y());
-      F[o + 2] = b.pinned_tip
-                     ? tip.m  // a model flexure's tip.m is its unknown M_tip
-                     : tip.theta - (a_.body_rotation(q, f.b.body) - a_.body_rotation(q, f.a.body));
+      F[o + 2] = b.pinned_tip ? tip.m  // a model flexure's tip.m is its unknown M_tip
+                              : tip.theta - b.rest_turn -
+                                    (a_.body_rotation(q, f.b.body) - a_.body_rotation(q, f.a.body));
     }
     F.head(N_) = a_.lagrangian_gradient(q, z.segment(N_, m_), z[N_ + m_]) - Q;
     F.segment(N_, m_) = a_.constraints(q);
@@ -312,7 +349,10 @@ class ExactSystem {
         const ShapePoint& p1 = shape[k];
         const double ma = w[0] + w[1] * p0.y - w[2] * p0.x;
         const double mb = w[0] + w[1] * p1.y - w[2] * p1.x;
-        U += 0.5 * (ma * ma + mb * mb) / (2.0 * b.EI) * (p1.s - p0.s);
+        // m^2/(2 EI(s)) (a taper's EI at each sample; m = EI (theta' - kappa0) for a curved one).
+        const double EIa = shape.size() == b.sample_EI.size() ? b.sample_EI[k - 1] : b.EI;
+        const double EIb = shape.size() == b.sample_EI.size() ? b.sample_EI[k] : b.EI;
+        U += 0.5 * (ma * ma / (2.0 * EIa) + mb * mb / (2.0 * EIb)) * (p1.s - p0.s);
         if (std::isfinite(b.EA)) {
           // The axial strain energy N_a^2/(2 EA), N_a = N . t (Reissner; docs/extensible.md).
           const double na = w[1] * std::cos(p0.theta) + w[2] * std::sin(p0.theta);
@@ -322,6 +362,92 @@ class ExactSystem {
       }
     }
     return U;
+  }
+
+  // Every flexure's end loads, largest stress and shape at z (flexure_point_results.h), SI, and
+  // their loads on the ground added to `ground`. An exact flexure's bending moment and axial
+  // force are those of its elastica along kEnergySamples samples (m = m0 + Nx y - Ny x,
+  // N_a = N . t in the root frame), the largest |sigma| refined by a parabola through the largest
+  // sample and its neighbours; a model flexure (mixed) gives its ends' (its model has no shape).
+  std::vector<FlexurePointResult> flexure_results(const VectorXd& z, PointLoad& ground) {
+    const VectorXd q = z.head(N_);
+    const double L = a_.length_scale(), K = a_.energy_scale();
+    std::vector<FlexurePointResult> out;
+    for (std::size_t i = 0; i < beams_.size(); ++i) {
+      const FlexureBeam& b = beams_[i];
+      const Flexure& f = *b.flexure;
+      const Eigen::Vector3d w = z.segment<3>(flexure_offset() + 3 * static_cast<int>(i));
+      const double beta = b.direction + a_.body_rotation(q, f.a.body);
+      const double c = std::cos(beta), sn = std::sin(beta);
+      const Eigen::Vector2d N(c * w[1] - sn * w[2], sn * w[1] + c * w[2]);  // global, scaled
+      const Eigen::Vector2d pa = a_.point_scaled(q, f.a), pb = a_.point_scaled(q, f.b);
+      FlexurePointResult r;
+      BeamTip tip;
+      double m0 = w[0];
+      if (b.model != FlexureModel::kExact) {
+        if (!model_state(b, w, tip)) {
+          throw NoConvergence("flexure '" + f.name + "': its model has no tip at a recorded point");
+        }
+        m0 = w[0] - w[1] * tip.y + w[2] * tip.x;
+        const double axial_b = w[1] * std::cos(tip.theta) + w[2] * std::sin(tip.theta);
+        end_stresses(r, f, b.length * L, m0 * K, w[1] * K / L, tip.m * K, axial_b * K / L);
+        r.shape_x = {pa.x() * L, pb.x() * L};
+        r.shape_y = {pa.y() * L, pb.y() * L};
+      } else {
+        std::vector<ShapePoint> shape;
+        if (!integrate(b, w, tip, &shape, kEnergySamples, &report_integrator_) ||
+            shape.size() != b.sample_width.size()) {
+          throw NoConvergence("flexure '" + f.name + "': its shape could not be sampled");
+        }
+        r.max_from = "shape";
+        std::vector<double> ms(shape.size()), ns(shape.size()), worst(shape.size());
+        std::size_t k_max = 0;
+        for (std::size_t k = 0; k < shape.size(); ++k) {
+          const ShapePoint& p = shape[k];
+          ms[k] = (w[0] + w[1] * p.y - w[2] * p.x) * K;
+          ns[k] = (w[1] * std::cos(p.theta) + w[2] * std::sin(p.theta)) * K / L;
+          const FibreStresses st =
+              fibre_stresses(b.sample_width[k], b.sample_thickness[k], ms[k], ns[k]);
+          worst[k] = std::max(std::fabs(st.pos), std::fabs(st.neg));
+          if (worst[k] > worst[k_max]) k_max = k;
+        }
+        keep_most_stressed(r,
+                           b.sample_width[k_max],
+                           b.sample_thickness[k_max],
+                           shape[k_max].s * L,
+                           ms[k_max],
+                           ns[k_max],
+                           true);
+        if (k_max > 0 && k_max + 1 < shape.size()) {
+          // The parabola through the largest sample and its neighbours (equal spacing h): its
+          // vertex at offset t h, t = (w- - w+)/(2 (w- - 2 w + w+)); m and N_a interpolated there.
+          const double wm = worst[k_max - 1], w0 = worst[k_max], wp = worst[k_max + 1];
+          const double den = wm - 2.0 * w0 + wp;
+          if (den < 0.0) {
+            const double t = std::clamp(0.5 * (wm - wp) / den, -1.0, 1.0);
+            auto interp = [&](const std::vector<double>& v) {
+              return v[k_max] + 0.5 * t * (v[k_max + 1] - v[k_max - 1]) +
+                     0.5 * t * t * (v[k_max + 1] - 2.0 * v[k_max] + v[k_max - 1]);
+            };
+            const double h = shape[k_max + 1].s - shape[k_max].s;
+            keep_most_stressed(r, f, (shape[k_max].s + t * h) * L, interp(ms), interp(ns), false);
+          }
+        }
+        // Every 8th sample: 33 points of the shape, global.
+        for (std::size_t k = 0; k < shape.size(); k += 8) {
+          const ShapePoint& p = shape[k];
+          r.shape_x.push_back((pa.x() + c * p.x - sn * p.y) * L);
+          r.shape_y.push_back((pa.y() + sn * p.x + c * p.y) * L);
+        }
+      }
+      // The beam pushes its root body with +N, +m0 and its tip body with -N, -m(tip).
+      r.on_a = {N.x() * K / L, N.y() * K / L, m0 * K};
+      r.on_b = {-N.x() * K / L, -N.y() * K / L, -tip.m * K};
+      if (f.a.body == "ground") add_ground_reaction(ground, r.on_a, pa.x() * L, pa.y() * L);
+      if (f.b.body == "ground") add_ground_reaction(ground, r.on_b, pb.x() * L, pb.y() * L);
+      out.push_back(std::move(r));
+    }
+    return out;
   }
 
   // Linearises every exact flexure's tip in its root loads at z (sensitivity integration).
@@ -754,6 +880,8 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
       pt.body_y.push_back(q[3 * b + 1] * A.length_scale());
       pt.body_phi.push_back(q[3 * b + 2]);
     }
+    fill_point_results(mechanism, A, q, z.segment(N, m), /*assembled_flexures=*/false, pt);
+    pt.flexures = S.flexure_results(z, pt.ground_reaction);
     if (reports != nullptr) {
       for (std::size_t i = 0; i < S.flexure_count(); ++i) {
         FlexureTipLoad load;
@@ -1062,6 +1190,13 @@ GeneralPrbmResult solve_general_mixed(const GeneralMechanism& mechanism,
   std::vector<std::vector<std::string>> passed(F);
   for (std::size_t i = 0; i < F; ++i) {
     const Flexure& f = mechanism.flexures[i];
+    if (f.model != FlexureModel::kExact && (f.curved() || f.tapered())) {
+      throw InvalidInput(mechanism.where(f.line) + "flexure '" + f.name +
+                         "': " + (f.curved() ? "initially curved" : "tapered") + ", but model '" +
+                         std::string(flexure_model_name(f.model)) +
+                         "': the mixed model's other models (the ladder's and the PRBM "
+                         "cantilever's) are straight uniform beams; give it model = \"exact\"");
+    }
     if (f.model == FlexureModel::kPrbm && f.prbm == PrbmKind::kFixedGuided) {
       throw InvalidInput(mechanism.where(f.line) + "flexure '" + f.name +
                          "': model 'prbm' in the mixed model needs a cantilever PRBM element "

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <numbers>
 #include <set>
 #include <sstream>
 
@@ -418,8 +420,35 @@ void GeneralMechanism::validate() const {
       throw InvalidInput(item + ": its ends " + f.a.text() + " and " + f.b.text() +
                          " coincide; a flexure has a length");
     }
-    if (f.length != 0.0 &&
-        (!std::isfinite(f.length) || std::fabs(f.length - distance) > 1e-6 * distance)) {
+    if (!std::isfinite(f.curvature) || !std::isfinite(f.width_tip) ||
+        !std::isfinite(f.thickness_tip) || f.width_tip < 0.0 || f.thickness_tip < 0.0) {
+      throw InvalidInput(item + ": curvature, width_tip and thickness_tip must be finite and the " +
+                         "tip's section >= 0 (0: the root's)");
+    }
+    if (f.tapered() && f.extensible) {
+      throw InvalidInput(item + ": a tapered flexure cannot be extensible (one EA per flexure)");
+    }
+    if (f.curved()) {
+      const double l = f.arc_length(distance);
+      if (!std::isfinite(l)) {
+        throw InvalidInput(item + ": no circular arc of curvature " + fmt(f.curvature) +
+                           " 1/m joins its ends " + f.a.text() + " and " + f.b.text() + ", " +
+                           fmt(distance) + " m apart (|kappa0| chord/2 > 1)");
+      }
+      const double chord = std::fabs(2.0 * std::sin(0.5 * f.curvature * l) / f.curvature);
+      if (f.length != 0.0 &&
+          (!(f.length > 0.0) || std::fabs(f.curvature * f.length) >= 2 * std::numbers::pi)) {
+        throw InvalidInput(item + ": length " + fmt(f.length) + " m with curvature " +
+                           fmt(f.curvature) + " 1/m is not an arc of less than a full circle");
+      }
+      if (f.length != 0.0 && std::fabs(chord - distance) > 1e-6 * distance) {
+        throw InvalidInput(item + ": length " + fmt(f.length) + " m and curvature " +
+                           fmt(f.curvature) + " 1/m make an arc whose chord is " + fmt(chord) +
+                           " m, but its ends " + f.a.text() + " and " + f.b.text() + " are " +
+                           fmt(distance) + " m apart in the described configuration");
+      }
+    } else if (f.length != 0.0 &&
+               (!std::isfinite(f.length) || std::fabs(f.length - distance) > 1e-6 * distance)) {
       throw InvalidInput(item + ": length " + fmt(f.length) + " m, but its ends " + f.a.text() +
                          " and " + f.b.text() + " are " + fmt(distance) +
                          " m apart in the described configuration (a straight flexure)");
@@ -538,6 +567,21 @@ void GeneralMechanism::validate() const {
     throw InvalidInput(item + ": count must be between 2 and 100000 (" +
                        std::to_string(input.count) + ")");
   }
+}
+
+double Flexure::arc_length(double chord) const {
+  if (!curved()) return chord;
+  if (length > 0.0) return length;
+  // chord = 2 sin(kappa0 l/2)/kappa0 on the minor arc (kappa0 l < pi).
+  const double x = 0.5 * std::fabs(curvature) * chord;
+  if (!(x <= 1.0)) return std::numeric_limits<double>::quiet_NaN();
+  return 2.0 * std::asin(x) / std::fabs(curvature);
+}
+
+double Flexure::end_angle_from_chord(double chord, int end) const {
+  // An arc turning by kappa0 l has its chord at half that turn from either end's tangent.
+  const double half_turn = 0.5 * curvature * arc_length(chord);
+  return end == 0 ? -half_turn : half_turn;
 }
 
 }  // namespace flexure::mechanism::general

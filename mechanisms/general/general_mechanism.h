@@ -98,7 +98,28 @@ struct Flexure {
   // EA = E b h; docs/extensible.md), for a flexure that must be compressed or stretched (a beam
   // between two bodies whose distance the joints fix). The PRBM and the ladder's models ignore it.
   bool extensible = false;
+  // The rest shape (docs/mechanisms.md "Curved and tapered flexures"), as a physical beam's
+  // (beam/physical_beam.h, `flexure beam --curvature --width-tip --thickness-tip`): a stress-free
+  // curvature kappa0 (1/m; positive bends to the left of the tangent: m = EI (theta' - kappa0), a
+  // chain segment's kappa0) makes the flexure a circular arc from a to b, of length `length` or,
+  // when that is 0, the minor arc over the chord; a taper makes the rectangle linear from (width,
+  // thickness) at end a to (width_tip, thickness_tip) at end b (0: the root's value). The exact
+  // model solves either (the shooting integrator's kappa0 and EI_profile); the PRBM has Howell's
+  // initially curved cantilever (§5.5, Table 5.2) for a curved fixed-pinned flexure with
+  // |kappa0 l| <= 2, and no tapered element.
+  double curvature = 0.0;
+  double width_tip = 0.0;
+  double thickness_tip = 0.0;
   int line = 0;
+
+  bool curved() const { return curvature != 0.0; }
+  bool tapered() const { return width_tip > 0.0 || thickness_tip > 0.0; }
+  // Its length (m) when its ends are `chord` apart: the chord for a straight flexure, else
+  // `length` if given, else the minor arc 2 asin(kappa0 chord/2)/kappa0 (NaN: no arc of that
+  // curvature spans the chord).
+  double arc_length(double chord) const;
+  // The angle of its rest tangent at end a (b) from the chord a -> b: -kappa0 l/2 (+kappa0 l/2).
+  double end_angle_from_chord(double chord, int end) const;
 
   double flexural_rigidity() const {
     return youngs_modulus * width * thickness * thickness * thickness / 12.0;

@@ -238,6 +238,32 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
                          "flexure as a PRBM element (solve_general_exact every one exactly)");
     }
   }
+  mechanism.validate();
+  for (const Flexure& f : mechanism.flexures) {
+    // What Howell's elements do not cover (docs/mechanisms.md "Curved and tapered flexures").
+    const std::string item = mechanism.where(f.line) + "flexure '" + f.name + "'";
+    if (f.tapered()) {
+      throw InvalidInput(item +
+                         ": tapered (width_tip, thickness_tip): the PRBM has no tapered element "
+                         "(Howell ch. 5's are uniform); solve it with --model exact");
+    }
+    if (f.curved()) {
+      const Vec2 a = mechanism.point(f.a), b = mechanism.point(f.b);
+      const double kappa0 = f.curvature * f.arc_length(std::hypot(b.x - a.x, b.y - a.y));
+      if (f.prbm != PrbmKind::kFixedPinned) {
+        throw InvalidInput(item + ": initially curved (curvature " + fmt(f.curvature) +
+                           " 1/m), but prbm = \"" + std::string(prbm_kind_name(f.prbm)) +
+                           "\": the PRBM covers a curved flexure only as Howell's initially "
+                           "curved cantilever (§5.5), prbm = \"fixed-pinned\"; or solve it with "
+                           "--model exact");
+      }
+      if (std::fabs(kappa0) > 2.0) {
+        throw InvalidInput(item + ": kappa0 = curvature x length = " + fmt(kappa0) +
+                           " is outside Howell's Table 5.2 (|kappa0| <= 2), the initially curved "
+                           "cantilever's constants; solve it with --model exact");
+      }
+    }
+  }
   const PrbmAssembly A(mechanism);
   PathSolver P(A, options);
   ArclengthCurve curve;
@@ -263,7 +289,7 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
   for (const Flexure& f : mechanism.flexures) {
     const Vec2 a = mechanism.point(f.a);
     const Vec2 b = mechanism.point(f.b);
-    const double ratio = f.thickness / std::hypot(b.x - a.x, b.y - a.y);
+    const double ratio = f.thickness / f.arc_length(std::hypot(b.x - a.x, b.y - a.y));
     if (ratio > 0.5) {
       result.warn(WarningKind::kOutsideValidity,
                   "flexure '" + f.name + "': thickness/length = " + fmt(ratio) +
@@ -341,6 +367,7 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
       pt.body_y.push_back(qq[3 * b + 1] * A.length_scale());
       pt.body_phi.push_back(qq[3 * b + 2]);
     }
+    fill_point_results(mechanism, A, qq, mu, /*assembled_flexures=*/true, pt);
     result.points.push_back(std::move(pt));
   };
 

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "flexure/mechanisms/general/flexure_models.h"
+#include "flexure/mechanisms/general/flexure_point_results.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
 #include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"
@@ -45,6 +46,14 @@ struct GeneralPrbmPoint {
   // Poses of the described moving bodies (x, y displacement in m, rotation in rad, from the
   // described configuration), in body_names order.
   std::vector<double> body_x, body_y, body_phi;
+  // Reactions, stresses and shapes (flexure_point_results.h; docs/mechanisms.md "Reactions,
+  // stresses and shapes"): each joint in description order, each flexure in description order,
+  // and the load the ground puts on the mechanism through everything attached to it (joints,
+  // flexures, springs): force, and moment about the global origin. With the input load and the
+  // dead loads it balances: ground + input + dead loads = 0 (force and moment).
+  std::vector<JointPointResult> joints;
+  std::vector<FlexurePointResult> flexures;
+  PointLoad ground_reaction;
 };
 
 struct GeneralEquilibrium {

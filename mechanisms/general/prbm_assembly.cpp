@@ -5,6 +5,7 @@
 
 #include "flexure/elements/fixed_guided_segment.h"
 #include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/elements/initially_curved_cantilever.h"
 #include "flexure/elements/small_length_flexural_pivot.h"
 #include "flexure/solver/common/errors.h"
 
@@ -102,13 +103,27 @@ PrbmAssembly::PrbmAssembly(const GeneralMechanism& mechanism, bool assemble_flex
     }
     const Eigen::Vector2d a = scaled(f.a);
     const Eigen::Vector2d b = scaled(f.b);
+    // The chord a -> b; a straight flexure's length. (A curved flexure's arc length enters its
+    // spring and pivot below; solve_general_prbm has refused what the PRBM does not cover, and the
+    // structural checks of the exact model need only the linkage's topology.)
     const double l = (b - a).norm();
     const Eigen::Vector2d u = (b - a) / l;
-    const double l_si = l * L;
+    const double arc_si = f.arc_length(l * L);
+    const double l_si = arc_si;
     const double EI = f.flexural_rigidity();
     const int ia = body_index(f.a.body);
     const int ib = body_index(f.b.body);
     const std::string item = item_name("flexure", f.name);
+    FlexureItems items;
+    items.constraint = constraints_.size();
+    items.torsion = torsions_.size();
+    items.a = ia;
+    items.b = ib;
+    items.end_a = make_point(ia, a);
+    items.end_b = make_point(ib, b);
+    items.rest_a = std::atan2(u.y(), u.x()) + f.end_angle_from_chord(l * L, 0);
+    items.rest_b = std::atan2(u.y(), u.x()) + f.end_angle_from_chord(l * L, 1);
+    items.pinned = f.prbm == PrbmKind::kFixedPinned;
     auto add_pin = [&](const Pt& pa, const Pt& pb) {
       constraints_.push_back({JointKind::kPin, pa, pb, 0.0});
       constraint_items_.push_back(item);
@@ -129,6 +144,24 @@ PrbmAssembly::PrbmAssembly(const GeneralMechanism& mechanism, bool assemble_flex
         break;
       }
       case PrbmKind::kFixedPinned: {
+        const double kappa0 = std::fabs(f.curvature * arc_si);
+        if (f.curved() && kappa0 <= 2.0) {
+          // Howell §5.5: the initially curved cantilever. The pivot sits (1 - gamma) l along the
+          // clamp's tangent (eq. 5.119, gamma measured as if the beam were straight), the link
+          // joins it to the tip (length rho l, at Theta_i when unloaded: eqs. 5.115-5.118), and
+          // K = rho K_Theta EI/l acts on Theta - Theta_i (eqs. 5.124-5.127): its spring is
+          // relaxed in the described configuration. Table 5.2's gamma and K_Theta for |kappa0|
+          // (a negative curvature is the mirror image).
+          const InitiallyCurvedCantilever element(CurvedCantileverConstants::from_table(kappa0));
+          const Eigen::Vector2d t0 = rotate(f.end_angle_from_chord(l * L, 0), u);
+          const Eigen::Vector2d pivot = a + element.geometry().pivot_x * (arc_si / L) * t0;
+          const int link = add_link(pivot, b);
+          add_pin(make_point(ia, pivot), make_point(link, pivot));
+          add_pin(make_point(link, b), make_point(ib, b));
+          torsions_.push_back(
+              {ia, link, element.stiffness_coefficient() * EI / l_si / energy_scale_, 0.0});
+          break;
+        }
         // Howell §5.2: a link gamma l from the pivot (1 - gamma) l from the clamp to the pinned
         // far end, K = gamma K_Theta EI/l (eq. 5.72), Howell's average constants.
         const FixedPinnedSegment& element = howell_average_fixed_pinned();
@@ -157,8 +190,16 @@ PrbmAssembly::PrbmAssembly(const GeneralMechanism& mechanism, bool assemble_flex
         break;
       }
     }
+    items.constraints = constraints_.size() - items.constraint;
+    items.torsions = torsions_.size() - items.torsion;
+    flexure_items_.push_back(items);
   }
   constraint_rows_ = static_cast<int>(constraint_items_.size());
+  int row = 0;
+  for (const Constraint& c : constraints_) {
+    constraint_first_row_.push_back(row);
+    row += c.kind == JointKind::kPin ? 2 : (c.kind == JointKind::kWeld ? 3 : 2);
+  }
 
   for (const TorsionSpring& s : mechanism_.torsion_springs) {
     torsions_.push_back(
@@ -447,6 +488,148 @@ void PrbmAssembly::add_wrench(const Eigen::VectorXd& q,
   add_position_gradient(q, pt, force, row);
   add_phi_gradient(pt.body, moment, row);
   generalized += row.transpose();
+}
+
+}  // namespace flexure::mechanism::general
+
+namespace flexure::mechanism::general {
+namespace {
+double cross(const Eigen::Vector2d& r, const Eigen::Vector2d& f) {
+  return r.x() * f.y() - r.y() * f.x();
+}
+}  // namespace
+
+Eigen::Vector3d PrbmAssembly::constraint_wrench(
+    const Eigen::VectorXd& q, const Eigen::VectorXd& mu, std::size_t ci, int row, int body) const {
+  // J_g^T mu is the generalised force of the constraints on the bodies (the Lagrangian's
+  // gradient grad V - J_g^T mu = 0): each row's multiplier times the row's gradient. A pin's rows
+  // (p_b - p_a) give body b the force mu at p_b and body a -mu at p_a; a slider's first row (the
+  // distance of p_b from a's line, along n) gives b mu n at p_b and a -mu n at p_b too (its
+  // dependence on phi_a is the moment arm from p_a to p_b); a relative-angle row gives b the moment
+  // mu and a -mu.
+  const Constraint& c = constraints_[ci];
+  Eigen::Vector3d w = Eigen::Vector3d::Zero();
+  const double sign = body == c.b.body ? 1.0 : (body == c.a.body ? -1.0 : 0.0);
+  if (sign == 0.0) return w;
+  const Eigen::Vector2d pb = position(q, c.b), pa = position(q, c.a);
+  Eigen::Vector2d f;
+  Eigen::Vector2d at;
+  double moment = 0.0;
+  if (c.kind == JointKind::kSlider) {
+    const Eigen::Vector2d n =
+        rotate(phi(q, c.a.body), {-std::sin(c.axis_angle), std::cos(c.axis_angle)});
+    f = mu[row] * n;
+    at = pb;
+    moment = mu[row + 1];
+  } else {
+    f = Eigen::Vector2d(mu[row], mu[row + 1]);
+    at = sign > 0.0 ? pb : pa;
+    if (c.kind == JointKind::kWeld) moment = mu[row + 2];
+  }
+  f *= sign;
+  moment *= sign;
+  w << f.x(), f.y(), moment + cross(at, f);
+  return w;
+}
+
+double PrbmAssembly::torsion_moment(const Eigen::VectorXd& q, std::size_t ti, int body) const {
+  // V = k psi^2/2, psi = phi_b - phi_a - rest: the spring turns b by -k psi and a by +k psi.
+  const Torsion& t = torsions_[ti];
+  const double psi = phi(q, t.b) - phi(q, t.a) - t.rest;
+  if (body == t.b) return -t.k * psi;
+  if (body == t.a) return t.k * psi;
+  return 0.0;
+}
+
+Eigen::Vector3d PrbmAssembly::joint_reaction_si(const Eigen::VectorXd& q,
+                                                const Eigen::VectorXd& mu,
+                                                int j) const {
+  const std::size_t ci = static_cast<std::size_t>(j);
+  const Constraint& c = constraints_.at(ci);
+  const Eigen::Vector3d w = constraint_wrench(q, mu, ci, constraint_first_row_[ci], c.b.body);
+  const Eigen::Vector2d pb = position(q, c.b);
+  const Eigen::Vector2d f(w[0], w[1]);
+  const double K = energy_scale_, L = length_scale_;
+  return {f.x() * K / L, f.y() * K / L, (w[2] - cross(pb, f)) * K};
+}
+
+Eigen::Vector3d PrbmAssembly::flexure_end_load_si(const Eigen::VectorXd& q,
+                                                  const Eigen::VectorXd& mu,
+                                                  int i,
+                                                  int end) const {
+  const FlexureItems& it = flexure_items_.at(static_cast<std::size_t>(i));
+  const int body = end == 0 ? it.a : it.b;
+  Eigen::Vector3d w = Eigen::Vector3d::Zero();
+  for (std::size_t c = it.constraint; c < it.constraint + it.constraints; ++c) {
+    w += constraint_wrench(q, mu, c, constraint_first_row_[c], body);
+  }
+  for (std::size_t t = it.torsion; t < it.torsion + it.torsions; ++t) {
+    w[2] += torsion_moment(q, t, body);
+  }
+  const Eigen::Vector2d p = position(q, end == 0 ? it.end_a : it.end_b);
+  const Eigen::Vector2d f(w[0], w[1]);
+  const double K = energy_scale_, L = length_scale_;
+  return {f.x() * K / L, f.y() * K / L, (w[2] - cross(p, f)) * K};
+}
+
+std::vector<Vec2> PrbmAssembly::flexure_prb_points_si(const Eigen::VectorXd& q, int i) const {
+  const FlexureItems& it = flexure_items_.at(static_cast<std::size_t>(i));
+  std::vector<Vec2> out;
+  auto push = [&](const Eigen::Vector2d& p) {
+    out.push_back({p.x() * length_scale_, p.y() * length_scale_});
+  };
+  push(position(q, it.end_a));
+  // Each PRB pin of the flexure joins the linkage at its point (the pivots, then end b's pin for
+  // a fixed-pinned flexure, which coincides with end b).
+  for (std::size_t c = it.constraint; c < it.constraint + it.constraints; ++c) {
+    push(position(q, constraints_[c].b));
+  }
+  const Eigen::Vector2d b = position(q, it.end_b);
+  if ((out.back().x - b.x() * length_scale_) != 0.0 ||
+      (out.back().y - b.y() * length_scale_) != 0.0) {
+    push(b);
+  }
+  return out;
+}
+
+double PrbmAssembly::flexure_end_angle(const Eigen::VectorXd& q, int i, int end) const {
+  const FlexureItems& it = flexure_items_.at(static_cast<std::size_t>(i));
+  if (end == 0) return it.rest_a + phi(q, it.a);
+  if (!it.pinned) return it.rest_b + phi(q, it.b);
+  // Pinned far end: the last PRB link (from the pivot to end b) gives the tangent.
+  const std::vector<Vec2> p = flexure_prb_points_si(q, i);
+  const Vec2& p1 = p[p.size() - 2];
+  const Vec2& p2 = p.back();
+  return std::atan2(p2.y - p1.y, p2.x - p1.x);
+}
+
+Eigen::Vector3d PrbmAssembly::ground_reaction_si(const Eigen::VectorXd& q,
+                                                 const Eigen::VectorXd& mu) const {
+  Eigen::Vector3d w = Eigen::Vector3d::Zero();
+  // The load on the ground, then negated: the load the ground puts on the mechanism.
+  for (std::size_t c = 0; c < constraints_.size(); ++c) {
+    w += constraint_wrench(q, mu, c, constraint_first_row_[c], -1);
+  }
+  for (std::size_t t = 0; t < torsions_.size(); ++t) {
+    w[2] += torsion_moment(q, t, -1);
+  }
+  for (const Linear& s : linears_) {
+    const Eigen::Vector2d d = position(q, s.b) - position(q, s.a);
+    const double length = d.norm();
+    if (!(length > 0.0)) continue;
+    // V = k (|d| - rest)^2/2: the spring pulls b by -k (|d| - rest) d/|d| and a by the opposite.
+    const Eigen::Vector2d fb = -s.k * (length - s.rest) * d / length;
+    if (s.a.body < 0) {
+      w.head<2>() -= fb;
+      w[2] += cross(position(q, s.a), -fb);
+    }
+    if (s.b.body < 0) {
+      w.head<2>() += fb;
+      w[2] += cross(position(q, s.b), fb);
+    }
+  }
+  const double K = energy_scale_, L = length_scale_;
+  return {-w[0] * K / L, -w[1] * K / L, -w[2] * K};
 }
 
 }  // namespace flexure::mechanism::general

@@ -82,6 +82,28 @@ class PrbmAssembly {
                   double moment,
                   Eigen::VectorXd& generalized) const;
 
+  // Reactions (docs/mechanisms.md "Reactions, stresses and shapes"), SI, from the multipliers mu
+  // of the constraints (the generalised force J_g^T mu acts on the bodies): (fx, fy, moment).
+  // Joint j of the description: the load body a puts on body b through it, the force at the
+  // joint's point of body b and the moment (a slider's or weld's; 0 for a pin) about it.
+  Eigen::Vector3d joint_reaction_si(const Eigen::VectorXd& q,
+                                    const Eigen::VectorXd& mu,
+                                    int j) const;
+  // Flexure i's PRB element (assembled flexures only): the load it puts on body a (end 0) or body
+  // b (end 1), the force and the moment about the flexure's end point there.
+  Eigen::Vector3d flexure_end_load_si(const Eigen::VectorXd& q,
+                                      const Eigen::VectorXd& mu,
+                                      int i,
+                                      int end) const;
+  // Flexure i's PRB linkage from end a through its pivots to end b (SI, m); its end tangents:
+  // the rest direction turned with body a at end a, and with body b at end b (clamped) or along
+  // the last PRB link (pinned).
+  std::vector<Vec2> flexure_prb_points_si(const Eigen::VectorXd& q, int i) const;
+  double flexure_end_angle(const Eigen::VectorXd& q, int i, int end) const;
+  // The load the ground puts on the mechanism through the joints, the assembled flexures' PRB
+  // elements and the springs attached to it: force and moment about the global origin (SI).
+  Eigen::Vector3d ground_reaction_si(const Eigen::VectorXd& q, const Eigen::VectorXd& mu) const;
+
   // Scales: lengths (m), energies (J = N m).
   double length_scale() const { return length_scale_; }
   double energy_scale() const { return energy_scale_; }
@@ -144,6 +166,26 @@ class PrbmAssembly {
                              const Eigen::Vector2d& weight,
                              RowRef row) const;
   void add_phi_gradient(int body, double weight, RowRef row) const;
+
+  // The wrench (force at the point, moment) of constraint c's rows starting at `row` on `body`,
+  // scaled, as (fx, fy, moment about the global origin).
+  Eigen::Vector3d constraint_wrench(
+      const Eigen::VectorXd& q, const Eigen::VectorXd& mu, std::size_t c, int row, int body) const;
+  // The torque of torsion spring t on `body`, scaled.
+  double torsion_moment(const Eigen::VectorXd& q, std::size_t t, int body) const;
+  // Per flexure (assembled): its constraints [first, first + count), their first row, and its
+  // torsion springs [first, first + count).
+  struct FlexureItems {
+    std::size_t constraint = 0, constraints = 0;
+    int row = 0;
+    std::size_t torsion = 0, torsions = 0;
+    int a = -1, b = -1;  // body indices of its ends
+    Pt end_a, end_b;
+    double rest_a = 0.0, rest_b = 0.0;  // rest tangents' angles at end a and end b, rad
+    bool pinned = false;
+  };
+  std::vector<FlexureItems> flexure_items_;
+  std::vector<int> constraint_first_row_;
 
   GeneralMechanism mechanism_;
   double length_scale_ = 1.0;

@@ -31,11 +31,12 @@ from ._core import (BcmResult, BcmSolver, CantileverCase, CbcmResult, ChainedBcm
                     Prbm3rSolver)
 # General planar mechanisms (python/mechanism_objects.cpp; docs/mechanisms.md "General
 # mechanisms"): the description, its two models' options and results, the solves.
-from ._core import (FlexureModel, FlexureModelReport, FlexureTipLoad, GeneralEquilibrium,
-                    GeneralExactOptions, GeneralMechanism, GeneralMechanismPoint,
-                    GeneralMechanismResult, GeneralPrbmOptions, InputControl, InputCoordinate,
-                    JointKind, PrbmKind, check_general_mechanism, solve_general_exact,
-                    solve_general_mixed, solve_general_prbm)
+from ._core import (FlexureModel, FlexureModelReport, FlexurePointResult, FlexureTipLoad,
+                    GeneralEquilibrium, GeneralExactOptions, GeneralMechanism,
+                    GeneralMechanismPoint, GeneralMechanismResult, GeneralPrbmOptions,
+                    InputControl, InputCoordinate, JointKind, JointPointResult, PointLoad,
+                    PrbmKind, check_general_mechanism, solve_general_exact, solve_general_mixed,
+                    solve_general_prbm)
 # The constant-force slider mechanisms (python/catalogue_objects.cpp; docs/mechanisms.md).
 from ._core import (AnalysisOptions, MechanismAnalysis, MechanismDesign, StrokeStability,
                     analyze_mechanism)
@@ -57,7 +58,8 @@ __all__ = ["beam", "path", "sweep", "cfm", "dynamics", "bench", "validate", "rea
            "BcmResult", "BcmSolver", "CantileverCase", "CbcmResult", "ChainedBcmSolver",
            "LinearBeamResult", "LinearBeamSolver", "Prbm3rConstants", "Prbm3rResult",
            "Prbm3rSolver",
-           "FlexureModel", "FlexureModelReport", "FlexureTipLoad", "GeneralEquilibrium",
+           "FlexureModel", "FlexureModelReport", "FlexurePointResult", "FlexureTipLoad",
+           "JointPointResult", "PointLoad", "GeneralEquilibrium",
            "GeneralExactOptions", "GeneralMechanism", "GeneralMechanismPoint",
            "GeneralMechanismResult", "GeneralPrbmOptions", "InputControl", "InputCoordinate",
            "JointKind", "PrbmKind", "check_general_mechanism", "solve_general_exact",

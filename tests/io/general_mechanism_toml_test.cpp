@@ -93,6 +93,24 @@ TEST(GeneralMechanismToml, ValidDescriptionSolvesToItsClosedForm) {
   EXPECT_NEAR(r.points[2].energy, 0.5 * K * std::pow(10 * kDeg, 2), 1e-10 * K);
 }
 
+TEST(GeneralMechanismToml, CurvedAndTaperedFlexureKeys) {
+  // The rest shape's keys with units, as `flexure beam --curvature --width-tip --thickness-tip`.
+  const GeneralMechanism m = parse_general_mechanism_toml(
+      pendulum("thickness = \"0.5 mm\"\nE = \"2 GPa\"\ncurvature = \"0.02 1/mm\"\n"
+               "width_tip = \"4 mm\"\nthickness_tip = \"0.4 mm\"\n"),
+      "m.toml");
+  ASSERT_EQ(m.flexures.size(), 1u);
+  EXPECT_NEAR(m.flexures[0].curvature, 20.0, 1e-12);
+  EXPECT_NEAR(m.flexures[0].width_tip, 4e-3, 1e-15);
+  EXPECT_NEAR(m.flexures[0].thickness_tip, 0.4e-3, 1e-15);
+  // The minor arc of curvature 20 1/m over the pendulum's 4 mm chord: 2 asin(0.04)/20.
+  EXPECT_NEAR(m.flexures[0].arc_length(4e-3), 2.0 * std::asin(0.04) / 20.0, 1e-15);
+  EXPECT_NE(error_of(pendulum("thickness = \"0.5 mm\"\nE = \"2 GPa\"\nwidth_tip = \"-1 mm\"\n"))
+                .find("m.toml:15: flexure 'f1': width_tip must be > 0"),
+            std::string::npos)
+      << error_of(pendulum("thickness = \"0.5 mm\"\nE = \"2 GPa\"\nwidth_tip = \"-1 mm\"\n"));
+}
+
 // An isosceles slider-crank (r2 = r3 = r) described straight, a torsion spring k between ground
 // and crank: Delta x = 2 r (1 - cos theta2), V = k theta2^2/2, so the force pushing the slider in
 // is dV/dDelta x = k theta2/(2 r sin theta2). The straight position is a dead point of the input.

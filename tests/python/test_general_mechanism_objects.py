@@ -101,6 +101,31 @@ def test_parallel_guide_exact_stiffness_is_24_EI_over_L_cubed():
     assert F / x == pytest.approx(24 * EI / L**3, rel=1e-4)
 
 
+def test_parallel_guide_points_report_reactions_stresses_and_shapes():
+    # At a small sideways motion each flexure is the linear clamped-guided beam: end moment
+    # 6 EI x/L^2, bending stress M c/I at its ends; the ground's reaction balances the input
+    # force.
+    L, b, h, E = 50 * MM, 10 * MM, 0.5 * MM, 200e9
+    EI, c = E * b * h**3 / 12, h / 2
+    r = flexure.solve_general_exact(parallel_guide(L, 20 * MM, b, h, E, 1e-3 * L))
+    p = r.points[-1]
+    x = p.input
+    # The input force F acts at the tips' height: the stage's moment balance puts axial forces
+    # +-N = F L/(2 gap) in the flexures (gap 20 mm), which add N/A to the bending stress.
+    # Both are linear theory's: the axial forces' moment N x changes them by order x/L = 1e-3.
+    N = abs(p.input_load) * L / (2 * 20 * MM)
+    for f in p.flexures:
+        assert abs(f.moment) * c / (EI / E) == pytest.approx(6 * E * x * c / L**2, rel=2e-3)
+        assert abs(f.axial_force) == pytest.approx(N, rel=2e-3)
+        assert f.max_stress == pytest.approx(6 * E * x * c / L**2 + N / (b * h), rel=2e-3)
+        assert f.max_stress_from == "shape"
+        assert len(f.shape_x) == len(f.shape_y) == 33
+        assert f.shape_x[-1] - f.shape_x[0] == pytest.approx(x, rel=1e-9)
+        assert f.on_a.fx == pytest.approx(-f.on_b.fx, rel=1e-9)
+    assert p.ground_reaction.fx == pytest.approx(-p.input_load, rel=1e-8)
+    assert p.joints == []
+
+
 def test_bad_descriptions_raise_invalid_input_naming_the_item():
     g = (flexure.GeneralMechanism("bad")
          .body("ground", {"O": (0.0, 0.0)})
