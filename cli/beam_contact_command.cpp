@@ -24,6 +24,7 @@ Json result_json(const ContactResult& r, bool physical) {
   out["contact_model"] = r.kind == "wrap"    ? "wrap from the clamp"
                          : r.kind == "tip"   ? "tip on the stop"
                          : r.kind == "point" ? "one interior point, tangent"
+                         : r.kind == "line"  ? "lying on the stop (line contact)"
                                              : "no contact";
   out["contact_kind"] = r.kind;
   out["units"] = physical ? "SI" : "consistent";
@@ -45,6 +46,8 @@ Json result_json(const ContactResult& r, bool physical) {
   c["point_force"] = Json{{"Fx", r.point_force[0]}, {"Fy", r.point_force[1]}};
   c["point_force_normal"] = r.point_force_normal;
   c["line_pressure"] = r.line_pressure;
+  c["tip_reaction_normal"] = r.tip_reaction_normal;
+  c["lying_axial_force"] = r.lying_axial_force;
   c["wrap_tension"] = r.wrap_tension;
   c["separation_moment"] = r.separation_moment;
   c["curvature_condition"] = r.curvature_condition;
@@ -117,6 +120,29 @@ void print_text(const ContactResult& r, bool physical) {
         L,
         p.theta,
         r.point_force_normal,
+        F);
+  } else if (r.kind == "line") {
+    const ChainPose& p = r.separation_points[0];
+    fmt::print(
+        "  lying on the stop over s = {:.10g} .. {:.10g}{}; separation point ({:.10g}, "
+        "{:.10g}){}, angle {:.10g} rad\n",
+        r.s_start,
+        r.s_end,
+        L,
+        p.x,
+        p.y,
+        L,
+        p.theta);
+    fmt::print(
+        "  point force at separation {:.10g}{}, line pressure {:.10g}{}, tip reaction "
+        "{:.10g}{}, axial force of the lying part {:.10g}{}\n",
+        r.point_force_normal,
+        F,
+        r.line_pressure,
+        P,
+        r.tip_reaction_normal + 0.0,
+        F,
+        r.lying_axial_force + 0.0,
         F);
   } else if (r.kind == "wrap") {
     fmt::print(

@@ -69,7 +69,7 @@ struct ContactFailure : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-enum class ContactMode { kNone, kWrap, kTip, kPoint };
+enum class ContactMode { kNone, kWrap, kTip, kPoint, kLying };
 
 class ContactRun {
  public:
@@ -95,7 +95,10 @@ class ContactRun {
   // psi(lambda) < 0 where contact holds (rigid_contact.h); also the free solution's minimum gap.
   double indicator(double lambda, double* interior_gap = nullptr);
   double gap_of(const V2& r) const;
-  double min_gap(const std::vector<ShapePoint>& shape, bool skip_last, bool skip_root) const;
+  // The smallest gap of a sampled shape (and where it is: min_gap_s_).
+  double min_gap(const std::vector<ShapePoint>& shape, bool skip_last, bool skip_root);
+  // The contact held now, in words (for the message of a second contact).
+  std::string contact_description(double variable) const;
 
   // Circle: the wrap pose at s, the free span solved from s, its curvature residual.
   ChainPose wrap_pose(double s) const;
@@ -117,6 +120,25 @@ class ContactRun {
   void solve_point(const SegmentChain& chain);
   // The mode of a contact that begins at load factor lambda (free solution penetrating there).
   ContactMode landing_mode(double lambda);
+
+  // Line contact (docs/contact.md, section 3): the beam lies on the stop over [a, L] (in the last
+  // segment). The lying part carries its loads to the stop directly (m = 0 there); the free span
+  // [0, a] is the chain cut at a under its own loads and the end force N_t tau + R_a nu, and
+  // (a, R_a) solve gap(r(a)) = 0, t(a) . nu = 0.
+  struct LyingStatics {
+    double N_t = 0.0;           // axial force of the lying part at a+ (along tau)
+    double tip_reaction = 0.0;  // the stop's concentrated reaction at the tip, -F_tip . nu
+    double pressure = 0.0;      // the stop's line pressure on the lying part, -(q + q_f n) . nu
+  };
+  void check_lying(const SegmentChain& chain) const;
+  LyingStatics lying_statics(const SegmentChain& chain, double a) const;
+  SegmentChain lying_span(const SegmentChain& chain, double a, double R) const;
+  Eigen::Vector2d lying_residual(const SegmentChain& chain, double a, double R);
+  void solve_lying(const SegmentChain& chain);
+  // The tip contact's tangent against the stop, t(L) . nu at lambda (R_n by Brent's method):
+  // <= 0 while only the tip touches; > 0 where the span behind the tip would cross the stop.
+  double tip_slope(double lambda);
+  double last_segment_start() const;
 
   void fill(double lambda, bool contact, double variable, ContactResult& out);
   // The stability verdict of the state at full load (ContactResult::stability).
@@ -148,6 +170,13 @@ class ContactRun {
   double point_s_ = 0.0;
   double point_P_ = 0.0;
   double point_phi_ = 0.0;
+  // Line contact: the separation point a, the concentrated reaction R_a there, the stop's tangent
+  // in the beam's running direction; the last tip reaction (warm start of tip_slope()).
+  double lying_a_ = 0.0;
+  double lying_R_ = 0.0;
+  V2 tau_ = V2(1, 0);
+  double tip_Rn_ = 0.0;
+  double min_gap_s_ = 0.0;  // where min_gap() found the smallest gap
 };
 
 void ContactRun::validate() {
@@ -266,15 +295,32 @@ double ContactRun::gap_of(const V2& r) const {
   return normal_.dot(r - point_);
 }
 
-double ContactRun::min_gap(const std::vector<ShapePoint>& shape,
-                           bool skip_last,
-                           bool skip_root) const {
+double ContactRun::min_gap(const std::vector<ShapePoint>& shape, bool skip_last, bool skip_root) {
   double g = std::numeric_limits<double>::infinity();
   const std::size_t n = shape.size();
   for (std::size_t i = skip_root ? 1 : 0; i + (skip_last ? 1 : 0) < n; ++i) {
-    g = std::min(g, gap_of(V2(shape[i].x, shape[i].y)));
+    const double gi = gap_of(V2(shape[i].x, shape[i].y));
+    if (gi < g) {
+      g = gi;
+      min_gap_s_ = shape[i].s;
+    }
   }
   return g;
+}
+
+std::string ContactRun::contact_description(double variable) const {
+  switch (mode_) {
+    case ContactMode::kWrap:
+      return fmt::format("wrapping it over s = 0 .. {:.6g}", variable);
+    case ContactMode::kTip:
+      return fmt::format("touching it with the tip (s = {:.6g})", length_);
+    case ContactMode::kPoint:
+      return fmt::format("touching it at s = {:.6g}", point_s_);
+    case ContactMode::kLying:
+      return fmt::format("lying on it over s = {:.6g} .. {:.6g}", lying_a_, length_);
+    default:
+      return "free of it";
+  }
 }
 
 double ContactRun::indicator(double lambda, double* interior_gap) {
@@ -441,6 +487,131 @@ ContactMode ContactRun::landing_mode(double lambda) {
   return ContactMode::kPoint;
 }
 
+double ContactRun::last_segment_start() const {
+  const Segment& last = full_.segments.back();
+  return length_ - std::visit([](const auto& x) { return x.length; }, last);
+}
+
+void ContactRun::check_lying(const SegmentChain& chain) const {
+  const auto* f = std::get_if<FlexibleSegment>(&chain.segments.back());
+  auto refuse = [](const char* why) {
+    throw ContactFailure(fmt::format(
+        "the tip contact opens into a line contact (the beam lying on the stop), which is "
+        "implemented for a last segment that is flexible, straight, inextensible and of constant "
+        "EI and load, with no tip moment: {}",
+        why));
+  };
+  if (f == nullptr) refuse("the last segment is a rigid link");
+  if (!f->EI_profile.empty() || !f->q_profile.empty()) refuse("it has an EI_profile or q_profile");
+  if (f->kappa0 != 0.0) refuse("it has a stress-free curvature kappa0");
+  if (f->extensible() || f->shear_flexible()) refuse("it is extensible or shear-flexible");
+  if (chain.tip_load.M != 0.0) refuse("a tip moment acts on the lying part");
+}
+
+ContactRun::LyingStatics ContactRun::lying_statics(const SegmentChain& chain, double a) const {
+  // The lying part (a, L] is straight along tau with m = 0, so m' = 0 makes its internal force
+  // axial, N = N_t tau; the stop balances every normal load where it acts (frictionless):
+  //   p = -(q + q_f n) . nu on the part,  R_L = -F_tip . nu at the tip,
+  // and N_t(a+) = (F_tip + integral of q over (a, L]) . tau (the follower pressure is normal).
+  const auto& f = std::get<FlexibleSegment>(chain.segments.back());
+  const double s0 = length_ - f.length;
+  const V2 n_tau(-tau_.y(), tau_.x());  // the beam's left normal on the stop
+  const V2 F_tip = V2(chain.tip_load.Fx, chain.tip_load.Fy) + chain.tip_load.follower * n_tau;
+  const std::array<double, 2> Qe = f.q_resultant(f.length), Qa = f.q_resultant(a - s0);
+  const V2 Q(Qe[0] - Qa[0], Qe[1] - Qa[1]);
+  const std::array<double, 2> q = f.q_at(a - s0);
+  LyingStatics out;
+  out.N_t = (F_tip + Q).dot(tau_);
+  out.tip_reaction = -F_tip.dot(normal_);
+  out.pressure = -(V2(q[0], q[1]) + f.q_follower * n_tau).dot(normal_);
+  return out;
+}
+
+SegmentChain ContactRun::lying_span(const SegmentChain& chain, double a, double R) const {
+  const double s0 = last_segment_start();
+  if (a - s0 <= 1e-9 * length_) {
+    throw ContactFailure(
+        "the line contact reaches back to the start of the last segment (a line contact over "
+        "several segments is not implemented)");
+  }
+  const LyingStatics st = lying_statics(chain, a);
+  SegmentChain span = chain;
+  std::get<FlexibleSegment>(span.segments.back()).length = a - s0;
+  const V2 end = st.N_t * tau_ + R * normal_;
+  span.tip_load = TipLoad{end.x(), end.y(), 0.0, 0.0};
+  return span;
+}
+
+Eigen::Vector2d ContactRun::lying_residual(const SegmentChain& chain, double a, double R) {
+  const ShootingResult r = shoot(lying_span(chain, a, R), false);
+  const V2 t(std::cos(r.tip.theta), std::sin(r.tip.theta));
+  return Eigen::Vector2d(gap_of(V2(r.tip.x, r.tip.y)) / length_, t.dot(normal_));
+}
+
+void ContactRun::solve_lying(const SegmentChain& chain) {
+  // Newton's method on (a, R_a) with a backward-difference Jacobian (a <= L) and backtracking,
+  // from the previous state (or a = L and the tip reaction where the tip contact opened).
+  check_lying(chain);
+  double EI_min = std::numeric_limits<double>::infinity();
+  for (const Segment& seg : full_.segments) {
+    if (const auto* f = std::get_if<FlexibleSegment>(&seg)) EI_min = std::min(EI_min, f->EI);
+  }
+  const double force_scale = EI_min / (length_ * length_);
+  Eigen::Vector2d z(std::min(lying_a_, length_), lying_R_);
+  Eigen::Vector2d g = lying_residual(chain, z[0], z[1]);
+  for (int it = 0; it < 60; ++it) {
+    if (std::abs(g[0]) < 1e-13 && std::abs(g[1]) < 1e-12) {
+      const ShootingResult r = shoot(lying_span(chain, z[0], z[1]), false);
+      if (std::cos(r.tip.theta) * tau_.x() + std::sin(r.tip.theta) * tau_.y() <= 0.0) {
+        throw ContactFailure("the line contact converged to a span turned against the stop");
+      }
+      lying_a_ = z[0];
+      lying_R_ = z[1];
+      return;
+    }
+    const Eigen::Vector2d h(-1e-7 * length_, 1e-7 * std::max(std::abs(z[1]), force_scale));
+    Eigen::Matrix2d J;
+    for (int c = 0; c < 2; ++c) {
+      Eigen::Vector2d zc = z;
+      zc[c] += h[c];
+      J.col(c) = (lying_residual(chain, zc[0], zc[1]) - g) / h[c];
+    }
+    const Eigen::Vector2d dz = J.fullPivLu().solve(-g);
+    if (!dz.allFinite()) throw ContactFailure("the line contact's Newton step is singular");
+    double step = 1.0;
+    bool accepted = false;
+    for (int ls = 0; ls < 30; ++ls, step *= 0.5) {
+      Eigen::Vector2d trial = z + step * dz;
+      trial[0] = std::min(trial[0], length_);
+      Eigen::Vector2d gt;
+      try {
+        gt = lying_residual(chain, trial[0], trial[1]);
+      } catch (const ContactFailure&) {
+        continue;
+      }
+      if (gt.norm() < (1.0 - 1e-4 * step) * g.norm()) {
+        z = trial;
+        g = gt;
+        accepted = true;
+        break;
+      }
+    }
+    if (!accepted) break;
+  }
+  throw ContactFailure(
+      fmt::format("the line contact (the beam lying on the stop) did not converge (residual "
+                  "{:.3g}; separation point s = {:.6g})",
+                  g.norm(),
+                  z[0]));
+}
+
+double ContactRun::tip_slope(double lambda) {
+  const SegmentChain c = chain_at(lambda);
+  tip_Rn_ = solve_tip_reaction(c, tip_Rn_);
+  const ShootingResult r = shoot(with_reaction(c, tip_Rn_), false);
+  return std::cos(r.tip.theta) * normal_.x() + std::sin(r.tip.theta) * normal_.y();
+}
+
 ChainPose ContactRun::wrap_pose(double s) const {
   const double phi = s / radius_;
   return ChainPose{radius_ * std::sin(phi), sigma_ * radius_ * (1.0 - std::cos(phi)), sigma_ * phi};
@@ -570,6 +741,7 @@ void ContactRun::fill(double lambda, bool contact, double variable, ContactResul
   out.s_start = out.s_end = 0.0;
   out.contact_force = out.point_force = {0.0, 0.0};
   out.point_force_normal = out.line_pressure = out.wrap_tension = 0.0;
+  out.tip_reaction_normal = out.lying_axial_force = 0.0;
   out.separation_moment = out.curvature_condition = 0.0;
   const int n_shape = options_.shape_points;
   if (contact && mode_ == ContactMode::kPoint) {
@@ -593,6 +765,54 @@ void ContactRun::fill(double lambda, bool contact, double variable, ContactResul
       ShootingSolver::Options os = plain_options_;
       os.shape_points = n_shape;
       out.shape = ShootingSolver(os).solve(split).shape;
+    }
+    return;
+  }
+  if (contact && mode_ == ContactMode::kLying) {
+    const double a = lying_a_, R = lying_R_;
+    const SegmentChain span = lying_span(chain, a, R);
+    const ShootingResult r = shoot(span, true);
+    const LyingStatics st = lying_statics(chain, a);
+    const ChainPose pa = r.tip;  // the separation point: the free span's end
+    const V2 tip = V2(pa.x, pa.y) + (length_ - a) * tau_;
+    out.tip = ChainPose{tip.x(), tip.y(), pa.theta};
+    out.reaction = r.reaction;  // the lying part's loads reach the clamp through the span
+    out.min_gap = min_gap(r.shape, true, false);
+    out.tip_gap = gap_of(tip);
+    out.residual = std::abs(gap_of(V2(pa.x, pa.y)));
+    out.s_start = a;
+    out.s_end = length_;
+    out.separation_s = {a};
+    out.separation_points = {pa};
+    out.point_force = {R * normal_.x(), R * normal_.y()};
+    out.point_force_normal = R;
+    out.line_pressure = st.pressure;
+    out.tip_reaction_normal = st.tip_reaction;
+    out.lying_axial_force = st.N_t;
+    const double total = R + st.pressure * (length_ - a) + st.tip_reaction;
+    out.contact_force = {total * normal_.x(), total * normal_.y()};
+    const double tol = 1e-9 * std::max({std::abs(R), std::abs(st.N_t), 1e-300});
+    if (R < -tol || st.tip_reaction < -tol ||
+        st.pressure < -1e-9 * std::max(std::abs(st.pressure), 1e-300)) {
+      throw ContactFailure(fmt::format(
+          "the line contact would need a stop that pulls (reaction at the separation point {:g}, "
+          "line pressure {:g}, tip reaction {:g}): a beam that lifts off the stop behind its tip "
+          "is not implemented",
+          R,
+          st.pressure,
+          st.tip_reaction));
+    }
+    if (n_shape > 1) {
+      const int lying_points = std::clamp(
+          static_cast<int>(std::lround(n_shape * (length_ - a) / length_)), 1, n_shape - 2);
+      ShootingSolver::Options os = plain_options_;
+      os.shape_points = n_shape - lying_points;
+      out.shape = ShootingSolver(os).solve(span).shape;
+      for (int i = 1; i <= lying_points; ++i) {
+        const double ds = (length_ - a) * i / lying_points;
+        const V2 p = V2(pa.x, pa.y) + ds * tau_;
+        out.shape.push_back(ShapePoint{a + ds, p.x(), p.y(), pa.theta});
+      }
     }
     return;
   }
@@ -765,6 +985,10 @@ Stability ContactRun::verdict(bool contact, double variable) {
       }
       return v;
     }
+    case ContactMode::kLying:
+      return not_checked_stability(
+          "the verdict of a line contact (the beam lying on the stop) is not implemented (the "
+          "separation point moves with the variation)");
     default:
       return not_checked_stability(
           "the verdict of an interior point contact is not implemented (the contact point rolls "
@@ -790,6 +1014,9 @@ ContactResult ContactRun::run() {
         case ContactMode::kPoint:
           solve_point(c);
           return point_s_;
+        case ContactMode::kLying:
+          solve_lying(c);
+          return lying_a_;
         default:
           throw ContactFailure("no contact mode");
       }
@@ -799,10 +1026,12 @@ ContactResult ContactRun::run() {
     auto check_gap = [&](double lambda, double gap, bool contact) {
       if (gap < -options_.gap_tolerance * length_) {
         throw ContactFailure(fmt::format(
-            "at load factor {:.6g} the beam would cross the {} at a second place (gap {:.3g}): "
-            "{} is not implemented",
+            "at load factor {:.6g} the beam, {}, would cross the {} at a second place near s = "
+            "{:.6g} (gap {:.3g}): {} is not implemented",
             lambda,
+            contact ? contact_description(variable) : "wrapping nothing yet",
             to_string(surface_.type),
+            min_gap_s_,
             gap,
             contact ? "more than one contact" : "contact of an interior point with this circle"));
       }
@@ -811,10 +1040,59 @@ ContactResult ContactRun::run() {
       if (!contact) return 0.0;
       return mode_ == ContactMode::kTip ? length_ : v;
     };
+    // A tip on a stop whose tangent turns past the stop's opens into a line contact (and closes
+    // back): chi = t(L) . nu of the tip contact changes sign (rigid_contact.h). chi_prev is its
+    // value at chi_lambda, the last load factor with a tip or line contact.
+    const bool stop = surface_.type == ContactSurfaceType::kLine;
+    double chi_prev = 0.0, chi_lambda = 0.0;
+    auto open_or_close = [&](double lambda) {
+      const double chi = tip_slope(lambda);
+      const bool lying = chi > 0.0;
+      if (lying != (mode_ == ContactMode::kLying)) {
+        const ScalarRootResult root = brent_root([&](double l) { return tip_slope(l); },
+                                                 chi_lambda,
+                                                 lambda,
+                                                 chi_prev,
+                                                 chi,
+                                                 ScalarRootOptions{options_.event_tolerance, 200});
+        if (!root.converged()) {
+          throw ContactFailure("the opening of the tip contact into a line did not converge");
+        }
+        out.events.push_back(ContactEvent{lying ? "line-contact" : "tip-contact", root.x});
+        if (lying) {
+          // At the opening the line contact is the tip contact: a = L, R_a = R_n - R_L.
+          tip_slope(root.x);
+          const SegmentChain at = chain_at(root.x);
+          check_lying(at);
+          tau_ = V2(normal_.y(), -normal_.x());
+          const ShootingResult r = shoot(with_reaction(at, tip_Rn_), false);
+          if (std::cos(r.tip.theta) * tau_.x() + std::sin(r.tip.theta) * tau_.y() < 0.0) {
+            tau_ = -tau_;
+          }
+          lying_a_ = length_;
+          lying_R_ = tip_Rn_ - lying_statics(at, length_).tip_reaction;
+          mode_ = ContactMode::kLying;
+        } else {
+          tip_slope(lambda);
+          variable = tip_Rn_;
+          mode_ = ContactMode::kTip;
+        }
+      }
+      chi_prev = chi;
+      chi_lambda = lambda;
+    };
     double psi_prev = indicator(0.0, &interior);
     bool contact = psi_prev < 0.0;
     if (contact) {
       mode_ = landing_mode(0.0);
+      if (stop && mode_ == ContactMode::kTip) {
+        chi_prev = tip_slope(0.0);
+        if (chi_prev > 0.0) {
+          throw ContactFailure(
+              "the beam lies on the stop at the start load (line contact at load factor 0): "
+              "start from a load with the tip alone on the stop, or none");
+        }
+      }
       variable = solve_contact(0.0, 0.0);
     } else if (wrap_) {
       check_gap(0.0, interior, false);
@@ -837,6 +1115,11 @@ ContactResult ContactRun::run() {
         if (now) {
           variable = 0.0;
           mode_ = landing_mode(lambda);
+          if (stop && mode_ == ContactMode::kTip) {
+            tip_Rn_ = 0.0;
+            chi_prev = tip_slope(root.x);
+            chi_lambda = root.x;
+          }
         } else {
           mode_ = ContactMode::kNone;
         }
@@ -846,6 +1129,9 @@ ContactResult ContactRun::run() {
         if (wrap_) check_gap(lambda, interior, false);
         variable = 0.0;
       } else {
+        if (stop && (mode_ == ContactMode::kTip || mode_ == ContactMode::kLying)) {
+          open_or_close(lambda);
+        }
         variable = solve_contact(lambda, variable);
       }
       ContactResult step;
@@ -877,10 +1163,11 @@ ContactResult ContactRun::run() {
     } else {
       out.stability = not_checked_stability("the verdict was switched off");
     }
-    out.kind = !contact                      ? "none"
-               : mode_ == ContactMode::kWrap ? "wrap"
-               : mode_ == ContactMode::kTip  ? "tip"
-                                             : "point";
+    out.kind = !contact                       ? "none"
+               : mode_ == ContactMode::kWrap  ? "wrap"
+               : mode_ == ContactMode::kTip   ? "tip"
+               : mode_ == ContactMode::kLying ? "line"
+                                              : "point";
     out.set_converged(true);
     out.message = contact ? fmt::format("in contact with the {}", to_string(surface_.type))
                           : fmt::format("free of the {}", to_string(surface_.type));
