@@ -498,6 +498,17 @@ TEST(RigidContactLine, LargeDeflectionLineContactIsAnEquilibriumOfItsFreeSpan) {
     EXPECT_NEAR(r.point_force[0] * nuy - r.point_force[1] * nux, 0.0, 1e-12);
     EXPECT_NEAR(r.tip.x, pa.x + (1.0 - a) * tx, 1e-12);
     EXPECT_NEAR(r.tip.y, pa.y + (1.0 - a) * ty, 1e-12);
+    // The first integral of the loaded elastica (N' = -q, m' = -N . n with n the left normal):
+    // d/ds [m^2/(2 EI) + N . t + q . r] = 0 on the free span. At the clamp theta = 0, r = 0 and
+    // N(0) = -(clamp force); at a- m = 0 and N . tau is the lying part's axial force:
+    //   M^2/(2 EI) - reaction.Fx = N_t + q . r(a).
+    // For a level stop d below and a load along -y alone: M = sqrt(2 EI q d), exactly.
+    EXPECT_NEAR(0.5 * r.reaction.M * r.reaction.M - r.reaction.Fx,
+                r.lying_axial_force + k.qx * pa.x + k.qy * pa.y,
+                1e-9 * 100.0);
+    if (k.nx == 0.0 && k.qx == 0.0) {
+      EXPECT_NEAR(r.reaction.M, std::sqrt(2.0 * 100.0 * 0.3), 1e-9);
+    }
     // Force balance: clamp reaction + q L + contact force = 0.
     EXPECT_NEAR(r.reaction.Fx + k.qx + r.contact_force[0], 0.0, 1e-9 * 100.0);
     EXPECT_NEAR(r.reaction.Fy + k.qy + r.contact_force[1], 0.0, 1e-9 * 100.0);
