@@ -12,6 +12,7 @@
 #include <variant>
 
 #include "flexure/solver/chain_model/held_stability.h"
+#include "flexure/solver/chain_model/second_variation.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/scalar_root.h"
 #include "flexure/solver/shooting/shooting_shape.h"
@@ -143,6 +144,7 @@ class ContactRun {
   void fill(double lambda, bool contact, double variable, ContactResult& out);
   // The stability verdict of the state at full load (ContactResult::stability).
   Stability verdict(bool contact, double variable);
+  Stability point_verdict();
 
   const SegmentChain& full_;
   RigidSurface surface_;
@@ -989,11 +991,122 @@ Stability ContactRun::verdict(bool contact, double variable) {
       return not_checked_stability(
           "the verdict of a line contact (the beam lying on the stop) is not implemented (the "
           "separation point moves with the variation)");
+    case ContactMode::kPoint:
+      return point_verdict();
     default:
-      return not_checked_stability(
-          "the verdict of an interior point contact is not implemented (the contact point rolls "
-          "along the beam and the surface's curvature enters the second variation)");
+      return not_checked_stability("no contact mode");
   }
+}
+
+// The verdict of an interior point contact with a stop (docs/contact.md, "Stability"). With the
+// contact force P > 0 the admissible variations keep the gap's minimum, c = min_s g(r(s)) >= 0,
+// so to first order nu . delta r(s_p) = int_0^s_p (nu . n) eta ds = 0 (the contact point's
+// normal coordinate held). The Lagrangian Pi - P c differs from the energy of the chain with P a
+// dead load at s_p by -P [c - g(r(s_p))], whose second variation is + P (d g_s)^2 / g_ss: the
+// contact point rolls to where the varied beam is lowest, and with d g_s = (nu . n) eta(s_p),
+// g_ss = kappa(s_p) (nu . n), the second variation gains the point term
+//     P eta(s_p)^2 / |kappa(s_p)|      (kappa = theta' on the beam's side of the stop).
+// Assembled on the chain cut at s_p (the discrete second variation of equilibrium_stability.h,
+// every 1st, 2nd and 4th sample, Romberg-extrapolated like the chain's own verdict) with the
+// constraint row and the point term added at the dof of the cut.
+Stability ContactRun::point_verdict() {
+  if (surface_.type == ContactSurfaceType::kCircle) {
+    return not_checked_stability(
+        "the verdict of an interior point contact with a circle is not implemented (the pin's "
+        "curvature adds -P (tau . delta r)^2 / R to the second variation, a term of the whole "
+        "span's displacement; a stop's is implemented)");
+  }
+  const SegmentChain chain = chain_at(1.0);
+  const V2 direction(std::cos(point_phi_), std::sin(point_phi_));
+  const SegmentChain split = split_chain(chain, point_s_, point_P_ * direction);
+  if (split.tip_load.follower != 0.0 || split.has_follower_pressure()) {
+    return not_conservative_stability("a follower load acts on the beam");
+  }
+  for (const Segment& seg : split.segments) {
+    const auto* f = std::get_if<FlexibleSegment>(&seg);
+    if (f == nullptr || f->extensible() || f->shear_flexible()) {
+      return not_checked_stability(
+          "the verdict of an interior point contact is implemented for chains of inextensible "
+          "flexible segments");
+    }
+  }
+  const ShootingResult r = shoot(split, false);
+  // Curvature on the near side of the contact point (one-sided, O(delta^2)).
+  const double delta = 1e-4 * point_s_;
+  const std::vector<ShapePoint> near = shooting_shape_at(
+      split, r, {point_s_ - 2.0 * delta, point_s_ - delta, point_s_}, plain_options_);
+  const double kappa = (3.0 * near[2].theta - 4.0 * near[1].theta + near[0].theta) / (2.0 * delta);
+  const double nu_n =
+      -normal_.x() * std::sin(near[2].theta) + normal_.y() * std::cos(near[2].theta);
+  const double g_ss = kappa * nu_n;
+  if (!(g_ss > 1e-9 / length_)) {
+    return not_checked_stability(fmt::format(
+        "the beam is as straight as the stop at the contact point (curvature {:.3g}): the point "
+        "contact is opening into a line contact",
+        kappa));
+  }
+  const double rolling = point_P_ / g_ss;
+  // Stations: each segment in a multiple of 4 equal elements (grids of every 1st, 2nd, 4th).
+  std::vector<int> elements;
+  std::vector<double> s = {0.0};
+  double start = 0.0;
+  for (const Segment& seg : split.segments) {
+    const double len = std::get<FlexibleSegment>(seg).length;
+    const int n = 4 * std::max(4, static_cast<int>(std::ceil(100.0 * len / length_)));
+    elements.push_back(n);
+    for (int i = 1; i <= n; ++i) s.push_back(start + len * i / n);
+    start += len;
+  }
+  const std::vector<ShapePoint> shape = shooting_shape_at(split, r, s, plain_options_);
+  const StabilityOptions& so = options_.stability;
+  std::array<double, 3> values{1.0, 1.0, 1.0};
+  std::array<bool, 3> found{false, false, false};
+  int index = 0;
+  for (int level = 0; level < 3; ++level) {
+    const int stride = 1 << level;
+    DiscreteSecondVariation q = discrete_second_variation(split, Reaction{}, shape, stride);
+    int total = 0;
+    for (int n : elements) total += n / stride;
+    if (q.size() != total || !q.constraints.empty()) {
+      return not_checked_stability("the second variation of the cut chain has an unexpected form");
+    }
+    // The row int_0^s_p (nu . n) eta ds on the chords of the first segment's elements
+    // (trapezoid, as the chain's own tip rows), and the rolling term at the cut's dof.
+    std::vector<double> row(static_cast<std::size_t>(total), 0.0);
+    const int n0 = elements[0] / stride;
+    for (int e = 0; e < n0; ++e) {
+      const ShapePoint& a = shape[static_cast<std::size_t>(e * stride)];
+      const ShapePoint& b = shape[static_cast<std::size_t>((e + 1) * stride)];
+      const double h = b.s - a.s;
+      const double dx = b.x - a.x, dy = b.y - a.y, chord = std::hypot(dx, dy);
+      const double v = (-normal_.x() * dy + normal_.y() * dx) / chord;
+      if (e > 0) row[static_cast<std::size_t>(e - 1)] += 0.5 * h * v;
+      row[static_cast<std::size_t>(e)] += 0.5 * h * v;
+    }
+    q.constraints.push_back(row);
+    q.axial[static_cast<std::size_t>(n0 - 1)] += rolling;
+    if (level == 0) index = constrained_count(q, -so.critical_tolerance);
+    const PencilEigenvalue e = constrained_eigenvalue(q, 1, so.eigenvalue_tolerance);
+    found[level] = e.exists;
+    values[level] = e.value;
+  }
+  double lowest = 1.0;
+  if (found[0] && found[1] && found[2]) {
+    const double r_fine = (4.0 * values[0] - values[1]) / 3.0;
+    const double r_coarse = (4.0 * values[1] - values[2]) / 3.0;
+    lowest = std::min(1.0, (16.0 * r_fine - r_coarse) / 15.0);
+  } else if (found[0]) {
+    lowest = std::min(1.0, values[0]);
+  }
+  Stability v = classify_stability(index, lowest, so.critical_tolerance, "the beam");
+  v.message = fmt::format(
+      "{} (the contact point s = {:.9g} held along the stop's normal by the force {:.6g}, rolling "
+      "term P/|kappa| = {:.6g})",
+      v.message,
+      point_s_,
+      point_P_,
+      rolling);
+  return v;
 }
 
 ContactResult ContactRun::run() {

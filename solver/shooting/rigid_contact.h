@@ -124,8 +124,10 @@ struct ContactResult : SolveStatus {
   // variation on the variations the contact admits. A contact with positive pressure holds the
   // beam to the surface there (bilateral to second order): the wrap is held to the circle, so the
   // free span is judged as a cantilever clamped at the separation point; a tip on a stop has its
-  // normal coordinate held. Without contact, the free beam's verdict. An interior point contact
-  // is not judged (not_checked, the message says why); nor is an unconverged result.
+  // normal coordinate held; an interior point on a stop has its normal coordinate held and the
+  // rolling of the contact point adds P eta(s_p)^2 / |kappa(s_p)|. Without contact, the free
+  // beam's verdict. An interior point contact with a circle and a line contact are not judged
+  // (not_checked, the message says why); nor is an unconverged result.
   Stability stability;
 };
 
