@@ -21,6 +21,9 @@ void write_contact_hdf5(const std::string& path, const ContactResult& r, bool ph
   root.set_attribute("surface", to_string(r.surface));
   root.set_attribute("in_contact", static_cast<std::int64_t>(r.in_contact ? 1 : 0));
   root.set_attribute("contact_kind", r.kind);
+  // The [[contact]] table (1-based) whose surface is touched; 0 when none.
+  root.set_attribute("contact_table",
+                     static_cast<std::int64_t>(r.in_contact ? r.surface_index + 1 : 0));
   root.set_attribute("load_factor", r.load_factor);
   // The stability verdict (docs/contact.md "Stability"): its name, the count of negative
   // directions (-1 where not judged) and the margin (NaN where not judged).

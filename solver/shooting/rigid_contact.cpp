@@ -89,8 +89,19 @@ class ContactRun {
 
   ContactResult run();
 
+  // Several surfaces (RigidContactSolver::solve with a list): this run's surface is contact
+  // `self` (1-based, for messages); the others must stay clear of the beam at every step.
+  void set_others(int self, std::vector<RigidSurface> others, std::vector<int> ids) {
+    self_id_ = self;
+    others_ = std::move(others);
+    other_ids_ = std::move(ids);
+  }
+
  private:
   void validate();
+  // The smallest gap of a root-frame shape to the other surfaces (other_gap_, where and which).
+  void note_other_gaps(const std::vector<ShapePoint>& shape);
+  std::string surface_name() const;
   SegmentChain chain_at(double lambda) const;
   ShootingResult shoot(const SegmentChain& chain, bool sampled);
   // psi(lambda) < 0 where contact holds (rigid_contact.h); also the free solution's minimum gap.
@@ -179,7 +190,42 @@ class ContactRun {
   V2 tau_ = V2(1, 0);
   double tip_Rn_ = 0.0;
   double min_gap_s_ = 0.0;  // where min_gap() found the smallest gap
+  // Several surfaces: this one's table number and the others.
+  int self_id_ = 0;
+  std::vector<RigidSurface> others_;
+  std::vector<int> other_ids_;
+  double other_gap_ = std::numeric_limits<double>::infinity();
+  double other_s_ = 0.0;
+  int other_index_ = -1;
 };
+
+// The gap of a point to a surface: the distance to the circle minus its radius, or the signed
+// distance to the line along its (normalised) normal.
+double surface_gap(const RigidSurface& surface, const V2& r) {
+  if (surface.type == ContactSurfaceType::kCircle) {
+    return (r - V2(surface.center[0], surface.center[1])).norm() - surface.radius;
+  }
+  const V2 n(surface.normal[0], surface.normal[1]);
+  return n.dot(r - V2(surface.point[0], surface.point[1])) / n.norm();
+}
+
+void ContactRun::note_other_gaps(const std::vector<ShapePoint>& shape) {
+  for (std::size_t j = 0; j < others_.size(); ++j) {
+    for (const ShapePoint& p : shape) {
+      const double g = surface_gap(others_[j], V2(p.x, p.y));
+      if (g < other_gap_) {
+        other_gap_ = g;
+        other_s_ = p.s;
+        other_index_ = static_cast<int>(j);
+      }
+    }
+  }
+}
+
+std::string ContactRun::surface_name() const {
+  if (self_id_ == 0) return to_string(surface_.type);
+  return fmt::format("{} (contact {})", to_string(surface_.type), self_id_);
+}
 
 void ContactRun::validate() {
   full_.validate();
@@ -313,15 +359,16 @@ double ContactRun::min_gap(const std::vector<ShapePoint>& shape, bool skip_last,
 std::string ContactRun::contact_description(double variable) const {
   switch (mode_) {
     case ContactMode::kWrap:
-      return fmt::format("wrapping it over s = 0 .. {:.6g}", variable);
+      return fmt::format("wrapping the {} over s = 0 .. {:.6g}", surface_name(), variable);
     case ContactMode::kTip:
-      return fmt::format("touching it with the tip (s = {:.6g})", length_);
+      return fmt::format("touching the {} with its tip (s = {:.6g})", surface_name(), length_);
     case ContactMode::kPoint:
-      return fmt::format("touching it at s = {:.6g}", point_s_);
+      return fmt::format("touching the {} at s = {:.6g}", surface_name(), point_s_);
     case ContactMode::kLying:
-      return fmt::format("lying on it over s = {:.6g} .. {:.6g}", lying_a_, length_);
+      return fmt::format(
+          "lying on the {} over s = {:.6g} .. {:.6g}", surface_name(), lying_a_, length_);
     default:
-      return "free of it";
+      return fmt::format("free of the {}", surface_name());
   }
 }
 
@@ -744,6 +791,8 @@ void ContactRun::fill(double lambda, bool contact, double variable, ContactResul
   out.contact_force = out.point_force = {0.0, 0.0};
   out.point_force_normal = out.line_pressure = out.wrap_tension = 0.0;
   out.tip_reaction_normal = out.lying_axial_force = 0.0;
+  other_gap_ = std::numeric_limits<double>::infinity();
+  other_index_ = -1;
   out.separation_moment = out.curvature_condition = 0.0;
   const int n_shape = options_.shape_points;
   if (contact && mode_ == ContactMode::kPoint) {
@@ -755,6 +804,7 @@ void ContactRun::fill(double lambda, bool contact, double variable, ContactResul
     out.tip = r.tip;
     out.reaction = r.reaction;
     out.min_gap = min_gap(r.shape, false, false);
+    note_other_gaps(r.shape);
     out.tip_gap = gap_of(V2(r.tip.x, r.tip.y));
     out.residual = std::abs(gap_of(V2(pose.x, pose.y)));
     out.s_start = out.s_end = point_s_;
@@ -780,6 +830,16 @@ void ContactRun::fill(double lambda, bool contact, double variable, ContactResul
     out.tip = ChainPose{tip.x(), tip.y(), pa.theta};
     out.reaction = r.reaction;  // the lying part's loads reach the clamp through the span
     out.min_gap = min_gap(r.shape, true, false);
+    note_other_gaps(r.shape);
+    if (!others_.empty()) {
+      std::vector<ShapePoint> lying;
+      for (int i = 1; i <= 50; ++i) {
+        const double ds = (length_ - a) * i / 50.0;
+        const V2 p = V2(pa.x, pa.y) + ds * tau_;
+        lying.push_back(ShapePoint{a + ds, p.x(), p.y(), pa.theta});
+      }
+      note_other_gaps(lying);
+    }
     out.tip_gap = gap_of(tip);
     out.residual = std::abs(gap_of(V2(pa.x, pa.y)));
     out.s_start = a;
@@ -827,6 +887,7 @@ void ContactRun::fill(double lambda, bool contact, double variable, ContactResul
       out.tip = r.tip;
       out.reaction = r.reaction;
       out.min_gap = min_gap(r.shape, false, true);
+      note_other_gaps(r.shape);
       out.tip_gap = gap_of(V2(r.tip.x, r.tip.y));
       out.residual = 0.0;
       if (n_shape > 1) {
@@ -851,6 +912,15 @@ void ContactRun::fill(double lambda, bool contact, double variable, ContactResul
     const ShapePoint tip = to_root(ShapePoint{length_ - s_c, r.tip.x, r.tip.y, r.tip.theta}, 0.0);
     out.tip = ChainPose{tip.x, tip.y, tip.theta};
     out.min_gap = min_gap(span_shape, false, true);
+    note_other_gaps(span_shape);
+    if (!others_.empty()) {
+      std::vector<ShapePoint> wrap;
+      for (int i = 0; i <= 50; ++i) {
+        const ChainPose p = wrap_pose(s_c * i / 50.0);
+        wrap.push_back(ShapePoint{s_c * i / 50.0, p.x, p.y, p.theta});
+      }
+      note_other_gaps(wrap);
+    }
     out.tip_gap = gap_of(V2(tip.x, tip.y));
     // Statics of the wrap (rigid_contact.h): N(s_c+) from the free span, rotated back.
     const V2 N = rotate(pc.theta, V2(-r.reaction.Fx, -r.reaction.Fy));
@@ -906,6 +976,7 @@ void ContactRun::fill(double lambda, bool contact, double variable, ContactResul
   out.tip = r.tip;
   out.reaction = r.reaction;
   out.min_gap = min_gap(r.shape, contact, false);
+  note_other_gaps(r.shape);
   out.tip_gap = gap_of(V2(r.tip.x, r.tip.y));
   out.residual = contact ? std::abs(out.tip_gap) : 0.0;
   if (contact) {
@@ -1142,8 +1213,8 @@ ContactResult ContactRun::run() {
             "at load factor {:.6g} the beam, {}, would cross the {} at a second place near s = "
             "{:.6g} (gap {:.3g}): {} is not implemented",
             lambda,
-            contact ? contact_description(variable) : "wrapping nothing yet",
-            to_string(surface_.type),
+            contact ? contact_description(variable) : "free of it",
+            surface_name(),
             min_gap_s_,
             gap,
             contact ? "more than one contact" : "contact of an interior point with this circle"));
@@ -1249,6 +1320,23 @@ ContactResult ContactRun::run() {
       }
       ContactResult step;
       fill(lambda, contact, variable, step);
+      if (other_gap_ < -options_.gap_tolerance * length_) {
+        const RigidSurface& o = others_[static_cast<std::size_t>(other_index_)];
+        throw ContactFailure(fmt::format(
+            "at load factor {:.6g} the beam, {}, would cross the {} (contact {}) near s = {:.6g} "
+            "(gap {:.3g}): {}",
+            lambda,
+            contact_description(variable),
+            to_string(o.type),
+            other_ids_[static_cast<std::size_t>(other_index_)],
+            other_s_,
+            other_gap_,
+            contact ? "several contacts at once are not implemented"
+            : out.events.empty()
+                ? "the beam meets that surface first"
+                : "landing on another surface after leaving this one is not implemented (one "
+                  "surface per continuation)"));
+      }
       if (contact) {
         check_gap(lambda, step.min_gap, true);
         if (step.point_force_normal < -1e-9 * std::max(1.0, std::abs(step.point_force_normal))) {
@@ -1304,6 +1392,57 @@ ContactResult RigidContactSolver::solve(const SegmentChain& chain,
   options_.validate();
   ContactRun run(chain, surface, start_tip_load, options_);
   return run.run();
+}
+
+ContactResult RigidContactSolver::solve(const SegmentChain& chain,
+                                        const std::vector<RigidSurface>& surfaces,
+                                        const TipLoad& start_tip_load) const {
+  options_.validate();
+  if (surfaces.empty()) throw InvalidInput("contact: no surface given");
+  if (surfaces.size() == 1) return solve(chain, surfaces.front(), start_tip_load);
+  // One continuation per surface, every other surface checked for crossing at each step: the run
+  // whose surface is the one touched (or any, with none touched) holds along the whole path.
+  std::vector<ContactRun> runs;
+  runs.reserve(surfaces.size());
+  for (std::size_t i = 0; i < surfaces.size(); ++i) {
+    runs.emplace_back(chain, surfaces[i], start_tip_load, options_);  // validates every surface
+    std::vector<RigidSurface> others;
+    std::vector<int> ids;
+    for (std::size_t j = 0; j < surfaces.size(); ++j) {
+      if (j == i) continue;
+      others.push_back(surfaces[j]);
+      ids.push_back(static_cast<int>(j) + 1);
+    }
+    runs.back().set_others(static_cast<int>(i) + 1, std::move(others), std::move(ids));
+  }
+  std::optional<ContactResult> touched, free, failed;
+  std::vector<std::string> failures;
+  long solves = 0;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    ContactResult r = runs[i].run();
+    r.surface_index = static_cast<int>(i);
+    solves += r.shooting_solves;
+    if (r.converged()) {
+      if (r.in_contact && !touched) touched = std::move(r);
+      if (!r.in_contact && !free) free = std::move(r);
+    } else {
+      failures.push_back(r.message);
+      if (!failed || r.load_factor > failed->load_factor) failed = std::move(r);
+    }
+  }
+  if (touched || free) {
+    ContactResult out = touched ? std::move(*touched) : std::move(*free);
+    out.shooting_solves = solves;
+    return out;
+  }
+  // Every run met a second surface: the furthest one's failure first, then the others'.
+  ContactResult out = std::move(*failed);
+  const std::string first = out.message;
+  for (const std::string& m : failures) {
+    if (m != first) out.message += "; and " + m;
+  }
+  out.shooting_solves = solves;
+  return out;
 }
 
 }  // namespace flexure

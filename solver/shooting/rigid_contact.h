@@ -82,6 +82,7 @@ struct ContactPathPoint {
 struct ContactResult : SolveStatus {
   // residual: |m(s_c) - sigma EI/R| (circle) or |gap at the tip| (line) at the returned point
   ContactSurfaceType surface = ContactSurfaceType::kCircle;
+  int surface_index = 0;  // several surfaces: the one this result is about (0-based)
   bool in_contact = false;
   // How the beam touches at the returned point: "none", "wrap" (a circle wrapped from the
   // clamp), "tip" (the tip on a stop), "point" (one interior point, tangent) or "line" (the beam
@@ -157,6 +158,16 @@ class RigidContactSolver {
   // `start_tip_load`: the tip load at lambda = 0 (default: none).
   ContactResult solve(const SegmentChain& chain,
                       const RigidSurface& surface,
+                      const TipLoad& start_tip_load = {}) const;
+
+  // Several surfaces, at most one touched at a time (docs/contact.md, "Several surfaces"): one
+  // continuation per surface with every other one checked for crossing at each step (the 401
+  // samples of the shape). The result is the run whose surface the beam touches (surface_index),
+  // or the free beam; where the beam would touch two at once, the failure of the run that came
+  // furthest, naming both contacts (converged() false). Throws InvalidInput for an empty list or
+  // any surface the single-surface solve refuses.
+  ContactResult solve(const SegmentChain& chain,
+                      const std::vector<RigidSurface>& surfaces,
                       const TipLoad& start_tip_load = {}) const;
 
   const Options& options() const { return options_; }

@@ -183,6 +183,34 @@ TEST(CliContact, ALeafSpringLyingOnAStop) {
   EXPECT_FALSE(std::filesystem::exists(dir / "s.csv"));
 }
 
+TEST(CliContact, TwoSurfacesOneTouched) {
+  // A pin above the beam and a stop below: the stop (table 2) is touched; its JSON says which.
+  // A pin under the span as well: exit 3 naming both tables.
+  test::ScratchDir dir;
+  const std::string head =
+      "[[segment]]\ntype = \"flexible\"\nlength = 1.0\nEI = 1.0\n[tip_load]\nFy = -8.0\n";
+  const std::string stop =
+      "[[contact]]\ntype = \"line\"\npoint = [0.0, -0.3]\nnormal = [0.0, 1.0]\n";
+  const std::string file = (dir / "two.toml").string();
+  std::ofstream(file) << head
+                      << "[[contact]]\ntype = \"circle\"\ncenter = [0.5, 0.3]\nradius = 0.1\n"
+                      << stop;
+  const Json j = run_json("beam --chain " + file);
+  ASSERT_FALSE(j.empty());
+  EXPECT_EQ(j["contact_table"], 2);
+  EXPECT_EQ(j["contact_kind"], "tip");
+  EXPECT_NEAR(j["tip"]["y"].get<double>(), -0.3, 1e-12);
+  const std::string both = (dir / "both.toml").string();
+  std::ofstream(both) << head << stop
+                      << "[[contact]]\ntype = \"circle\"\ncenter = [0.6, -0.22]\nradius = 0.1\n";
+  const test::CommandResult r = run_flexure("beam --chain " + both + " --json");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  const Json e = Json::parse(r.out);
+  const std::string message = e["error"];
+  EXPECT_NE(message.find("contact 1"), std::string::npos) << message;
+  EXPECT_NE(message.find("contact 2"), std::string::npos) << message;
+}
+
 TEST(CliContact, UnsupportedCombinationsAreRefused) {
   test::ScratchDir dir;
   auto write = [&](const std::string& name, const std::string& contact) {
@@ -197,7 +225,9 @@ TEST(CliContact, UnsupportedCombinationsAreRefused) {
   test::expect_refused("beam --chain " + ok + " --method chain", {"shooting"});
   test::expect_refused("beam --chain " + ok + " --stable", {"--stable"});
   test::expect_refused("path --chain " + ok, {"contact"});
-  test::expect_refused("beam --chain " + write("two.toml", circle + circle), {"only one"});
+  test::expect_refused(
+      "beam --chain " + write("two.toml", circle + "steps = 4\n" + circle + "steps = 5\n"),
+      {"steps differs"});
   test::expect_refused("beam --chain " + write("key.toml", circle + "friction = 0.3\n"),
                        {"friction"});
   test::expect_refused("beam --chain " + write("type.toml", "[[contact]]\ntype = \"sphere\"\n"),

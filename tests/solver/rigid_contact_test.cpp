@@ -16,6 +16,8 @@
 //     stiff one-sided penalty foundation on its nodes, minimised by Newton's method under load
 //     stepping, written here; it converges to the contact solution as N and the stiffness grow;
 //   * a seeded random cross-check of both surfaces against the penalty chain and the balances;
+//   * several surfaces: one touched gives that surface's own solution; two met are named, never
+//     answered;
 //   * unsupported combinations are refused with the reason.
 #include "flexure/solver/shooting/rigid_contact.h"
 
@@ -705,6 +707,54 @@ TEST(RigidContactRandom, BothSurfacesAgainstThePenaltyChainAndTheBalances) {
   }
   EXPECT_GE(wraps, 2);
   EXPECT_GE(tips, 2);
+}
+
+// ---- Several surfaces -------------------------------------------------------------------------
+
+TEST(RigidContactSeveral, OneOfTwoSurfacesTouchedIsThatSurfacesSolution) {
+  // A pin above the beam that it never reaches and a stop below that its tip lands on: the
+  // two-surface solve is the stop's own solve (the same numbers), whichever order they are given.
+  const SegmentChain c = cantilever(1.0, 1.0, 0.0, -5.0);
+  RigidSurface pin = circle(0.3, 0.1);
+  pin.center = {0.5, 0.3};
+  const RigidSurface stop = line(0.0, -0.3, 0.0, 1.0);
+  const ContactResult alone = RigidContactSolver(options()).solve(c, stop);
+  ASSERT_TRUE(alone.converged()) << alone.message;
+  for (int order = 0; order < 2; ++order) {
+    const std::vector<RigidSurface> both =
+        order == 0 ? std::vector<RigidSurface>{pin, stop} : std::vector<RigidSurface>{stop, pin};
+    const ContactResult r = RigidContactSolver(options()).solve(c, both);
+    ASSERT_TRUE(r.converged()) << r.message;
+    EXPECT_EQ(r.surface_index, order == 0 ? 1 : 0);
+    EXPECT_EQ(r.kind, "tip");
+    EXPECT_EQ(r.tip.x, alone.tip.x);
+    EXPECT_EQ(r.point_force_normal, alone.point_force_normal);
+    EXPECT_EQ(r.reaction.M, alone.reaction.M);
+    ASSERT_EQ(r.events.size(), 1u);
+    EXPECT_EQ(r.events[0].load_factor, alone.events[0].load_factor);
+  }
+  // Neither touched: the free beam.
+  const ContactResult none =
+      RigidContactSolver(options()).solve(cantilever(1.0, 1.0, 0.0, -0.5), {pin, stop});
+  ASSERT_TRUE(none.converged()) << none.message;
+  EXPECT_FALSE(none.in_contact);
+}
+
+TEST(RigidContactSeveral, TwoSurfacesMetAreNamedNotAnswered) {
+  // A pin under the span and a stop under the tip: the beam lands on the pin, slides off it and
+  // meets the stop (or, followed on the stop, crosses the pin): not an answer, both named.
+  const SegmentChain c = cantilever(1.0, 1.0, 0.0, -8.0);
+  RigidSurface pin = circle(0.3, 0.1);
+  pin.center = {0.6, -0.22};
+  const ContactResult r = RigidContactSolver(options()).solve(c, {line(0.0, -0.3, 0.0, 1.0), pin});
+  EXPECT_FALSE(r.converged());
+  EXPECT_NE(r.message.find("contact 1"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("contact 2"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("several contacts at once"), std::string::npos) << r.message;
+  EXPECT_THROW(RigidContactSolver(options()).solve(c, std::vector<RigidSurface>{}), InvalidInput);
+  // A bad surface among several is refused like a bad one alone.
+  EXPECT_THROW(RigidContactSolver(options()).solve(c, {line(0.0, 0.1, 0.0, 1.0), pin}),
+               InvalidInput);
 }
 
 // ---- Refusals ----------------------------------------------------------------------------------
