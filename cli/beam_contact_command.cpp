@@ -24,11 +24,14 @@ Json result_json(const ContactResult& r, bool physical) {
   out["contact_model"] = r.kind == "wrap"    ? "wrap from the clamp"
                          : r.kind == "tip"   ? "tip on the stop"
                          : r.kind == "point" ? "one interior point, tangent"
+                         : r.kind == "line"  ? "lying on the stop (line contact)"
                                              : "no contact";
   out["contact_kind"] = r.kind;
   out["units"] = physical ? "SI" : "consistent";
   out["termination"] = std::string(termination_name(r.termination));
   out["surface"] = to_string(r.surface);
+  // The [[contact]] table (1-based) whose surface the beam touches; null when free.
+  out["contact_table"] = r.in_contact ? Json(r.surface_index + 1) : Json(nullptr);
   out["in_contact"] = r.in_contact;
   out["load_factor"] = r.load_factor;
   Json c;
@@ -45,6 +48,8 @@ Json result_json(const ContactResult& r, bool physical) {
   c["point_force"] = Json{{"Fx", r.point_force[0]}, {"Fy", r.point_force[1]}};
   c["point_force_normal"] = r.point_force_normal;
   c["line_pressure"] = r.line_pressure;
+  c["tip_reaction_normal"] = r.tip_reaction_normal;
+  c["lying_axial_force"] = r.lying_axial_force;
   c["wrap_tension"] = r.wrap_tension;
   c["separation_moment"] = r.separation_moment;
   c["curvature_condition"] = r.curvature_condition;
@@ -89,14 +94,25 @@ Json result_json(const ContactResult& r, bool physical) {
   return out;
 }
 
-void print_text(const ContactResult& r, bool physical) {
+void print_text(const ContactResult& r, bool physical, std::size_t surfaces) {
   const char* L = physical ? " m" : "";
   const char* F = physical ? " N" : "";
   const char* P = physical ? " N/m" : "";
   const char* M = physical ? " N m" : "";
-  fmt::print("Contact with a rigid {} (frictionless), method shooting, {} continuation steps\n",
-             to_string(r.surface),
-             r.steps);
+  if (surfaces > 1) {
+    fmt::print(
+        "Contact with {} rigid surfaces (frictionless), method shooting, {} continuation steps; "
+        "{}\n",
+        surfaces,
+        r.steps,
+        r.in_contact
+            ? fmt::format("touching contact {}, a {}", r.surface_index + 1, to_string(r.surface))
+            : std::string("touching none"));
+  } else {
+    fmt::print("Contact with a rigid {} (frictionless), method shooting, {} continuation steps\n",
+               to_string(r.surface),
+               r.steps);
+  }
   for (const ContactEvent& e : r.events) {
     fmt::print("  {} at load factor {:.10g}\n", e.kind, e.load_factor);
   }
@@ -117,6 +133,29 @@ void print_text(const ContactResult& r, bool physical) {
         L,
         p.theta,
         r.point_force_normal,
+        F);
+  } else if (r.kind == "line") {
+    const ChainPose& p = r.separation_points[0];
+    fmt::print(
+        "  lying on the stop over s = {:.10g} .. {:.10g}{}; separation point ({:.10g}, "
+        "{:.10g}){}, angle {:.10g} rad\n",
+        r.s_start,
+        r.s_end,
+        L,
+        p.x,
+        p.y,
+        L,
+        p.theta);
+    fmt::print(
+        "  point force at separation {:.10g}{}, line pressure {:.10g}{}, tip reaction "
+        "{:.10g}{}, axial force of the lying part {:.10g}{}\n",
+        r.point_force_normal,
+        F,
+        r.line_pressure,
+        P,
+        r.tip_reaction_normal + 0.0,
+        F,
+        r.lying_axial_force + 0.0,
         F);
   } else if (r.kind == "wrap") {
     fmt::print(
@@ -187,15 +226,21 @@ bool run_beam_contact(const BeamContactArgs& args) {
         fmt::format("{} is not available with a [[contact]] (docs/contact.md)", args.refused_flag));
   }
   if (!args.out.empty()) io::check_output_path(args.out);
-  const io::ChainFile::Contact& contact = file.contacts.front();
+  // Several tables: several surfaces, one continuation (its start load and steps from the table
+  // that gives them; chain_toml checks they agree).
+  std::vector<RigidSurface> surfaces;
+  TipLoad start;
   RigidContactSolver::Options options;
-  if (contact.steps) options.steps = *contact.steps;
+  for (const io::ChainFile::Contact& contact : file.contacts) {
+    surfaces.push_back(contact.surface);
+    if (contact.start_given) start = contact.start_tip_load;
+    if (contact.steps) options.steps = *contact.steps;
+  }
   if (args.integrator) {
     options.shooting.backend = integrator_backend_from_string(*args.integrator);
   }
   if (args.shape_points > 0) options.shape_points = std::max(args.shape_points, 2);
-  const ContactResult r =
-      RigidContactSolver(options).solve(file.chain, contact.surface, contact.start_tip_load);
+  const ContactResult r = RigidContactSolver(options).solve(file.chain, surfaces, start);
   if (!r.converged()) {
     Json reached;
     reached["method"] = "shooting";
@@ -220,7 +265,7 @@ bool run_beam_contact(const BeamContactArgs& args) {
     if (!args.out.empty()) out["out"] = args.out;
     print_json(out);
   } else {
-    print_text(r, file.physical);
+    print_text(r, file.physical, surfaces.size());
     if (!args.out.empty()) fmt::print("  written: {}\n", args.out);
   }
   return true;

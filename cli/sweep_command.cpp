@@ -103,6 +103,16 @@ TipPrescription sweep_tip(const SweepBeamArgs& args, bool physical) {
 BeamSweepGrid make_chain_grid(const SweepBeamArgs& args) {
   const io::ChainFile file = io::read_chain_file(args.chain_file);
   warn(file.warnings);
+  if (!file.contacts.empty()) {
+    // A sweep point would be the free beam's equilibrium, which crosses the surface once loaded
+    // onto it: refused rather than answered wrongly.
+    throw InvalidInput(fmt::format(
+        "sweep beam --chain {}: the file has a [[contact]] (a {}), which a sweep does not solve; "
+        "solve each load with `flexure beam --chain FILE` (its load continuation reports "
+        "landing, lift-off and the contact forces; docs/contact.md)",
+        args.chain_file,
+        to_string(file.contacts.front().surface.type)));
+  }
   const PhysicalFlags& f = args.physical;
   for (const std::string* other : {&f.length,
                                    &f.E,

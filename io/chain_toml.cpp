@@ -432,6 +432,7 @@ void read_contacts(const toml::node& node, Reader& r, ChainFile& file) {
       contact.start_tip_load.Fx = r.number(st, "Fx", w, Dimension::kForce).value_or(0.0);
       contact.start_tip_load.Fy = r.number(st, "Fy", w, Dimension::kForce).value_or(0.0);
       contact.start_tip_load.M = r.number(st, "M", w, Dimension::kMoment).value_or(0.0);
+      contact.start_given = true;
     }
     if (const toml::node* s = t.get("steps")) {
       const std::optional<int64_t> v = s->value<int64_t>();
@@ -442,10 +443,30 @@ void read_contacts(const toml::node& node, Reader& r, ChainFile& file) {
     }
     file.contacts.push_back(contact);
   }
-  if (file.contacts.size() > 1) {
-    toml_fail(source,
-              file.contacts[1].line,
-              "only one [[contact]] is implemented (several surfaces at once are not)");
+  // Several surfaces share one continuation: its start load and steps once (or equal).
+  const ChainFile::Contact* first_start = nullptr;
+  const ChainFile::Contact* first_steps = nullptr;
+  for (const ChainFile::Contact& c : file.contacts) {
+    if (c.start_given) {
+      if (first_start != nullptr && (c.start_tip_load.Fx != first_start->start_tip_load.Fx ||
+                                     c.start_tip_load.Fy != first_start->start_tip_load.Fy ||
+                                     c.start_tip_load.M != first_start->start_tip_load.M)) {
+        toml_fail(source,
+                  c.line,
+                  "start_tip_load differs between [[contact]] tables: the surfaces share one load "
+                  "continuation, so give its start load once");
+      }
+      if (first_start == nullptr) first_start = &c;
+    }
+    if (c.steps) {
+      if (first_steps != nullptr && *c.steps != *first_steps->steps) {
+        toml_fail(source,
+                  c.line,
+                  "steps differs between [[contact]] tables: the surfaces share one load "
+                  "continuation, so give its steps once");
+      }
+      if (first_steps == nullptr) first_steps = &c;
+    }
   }
 }
 

@@ -40,10 +40,12 @@ struct ChainFile : PhysicalChain {
   std::vector<std::optional<SegmentSection>> sections;
   std::vector<std::string> warnings;  // likely unit mistakes, for stderr (solver/common/quantity.h)
   // [[contact]] tables (docs/contact.md): a rigid circle or straight stop, the tip load the
-  // continuation starts from and its step count. Empty: no contact.
+  // continuation starts from and its step count. Empty: no contact. Several tables: several
+  // surfaces, one continuation (its start load and steps given in one table, or equal).
   struct Contact {
     RigidSurface surface;
     TipLoad start_tip_load;
+    bool start_given = false;  // start_tip_load was in the table
     std::optional<int> steps;
     int line = 0;  // of the [[contact]] table, for messages
   };

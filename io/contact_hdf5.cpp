@@ -21,6 +21,9 @@ void write_contact_hdf5(const std::string& path, const ContactResult& r, bool ph
   root.set_attribute("surface", to_string(r.surface));
   root.set_attribute("in_contact", static_cast<std::int64_t>(r.in_contact ? 1 : 0));
   root.set_attribute("contact_kind", r.kind);
+  // The [[contact]] table (1-based) whose surface is touched; 0 when none.
+  root.set_attribute("contact_table",
+                     static_cast<std::int64_t>(r.in_contact ? r.surface_index + 1 : 0));
   root.set_attribute("load_factor", r.load_factor);
   // The stability verdict (docs/contact.md "Stability"): its name, the count of negative
   // directions (-1 where not judged) and the margin (NaN where not judged).
@@ -58,8 +61,19 @@ void write_contact_hdf5(const std::string& path, const ContactResult& r, bool ph
                        r.point_force_normal,
                        force,
                        "magnitude of the concentrated contact force along the surface normal");
-  contact.write_scalar(
-      "line_pressure", r.line_pressure, pressure, "circle: contact pressure T/R on the wrap");
+  contact.write_scalar("line_pressure",
+                       r.line_pressure,
+                       pressure,
+                       "circle: contact pressure T/R on the wrap; line contact: the stop's "
+                       "pressure on the lying part");
+  contact.write_scalar("tip_reaction_normal",
+                       r.tip_reaction_normal,
+                       force,
+                       "line contact: the stop's concentrated normal reaction at the tip");
+  contact.write_scalar("lying_axial_force",
+                       r.lying_axial_force,
+                       force,
+                       "line contact: axial force of the lying part at the separation point");
   contact.write_scalar(
       "wrap_tension", r.wrap_tension, force, "circle: tangential force T along the wrap");
   contact.write_scalar(
@@ -87,8 +101,10 @@ void write_contact_hdf5(const std::string& path, const ContactResult& r, bool ph
     lf.push_back(e.load_factor);
     kinds.push_back(e.kind);
   }
-  events.write_dataset("load_factor", lf, "1", "load factor of each landing or lift-off");
-  events.write_dataset("kind", kinds, "text", "landing or lift-off");
+  events.write_dataset(
+      "load_factor", lf, "1", "load factor of each landing, lift-off, line-contact or tip-contact");
+  events.write_dataset(
+      "kind", kinds, "text", "landing, lift-off, line-contact (opening) or tip-contact (closing)");
 
   Hdf5Group path_group = root.create_group("path");
   std::vector<double> plf, ps, pn, pi, px, py, pt;

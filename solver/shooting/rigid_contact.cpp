@@ -12,6 +12,7 @@
 #include <variant>
 
 #include "flexure/solver/chain_model/held_stability.h"
+#include "flexure/solver/chain_model/second_variation.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/scalar_root.h"
 #include "flexure/solver/shooting/shooting_shape.h"
@@ -69,7 +70,7 @@ struct ContactFailure : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-enum class ContactMode { kNone, kWrap, kTip, kPoint };
+enum class ContactMode { kNone, kWrap, kTip, kPoint, kLying };
 
 class ContactRun {
  public:
@@ -88,14 +89,28 @@ class ContactRun {
 
   ContactResult run();
 
+  // Several surfaces (RigidContactSolver::solve with a list): this run's surface is contact
+  // `self` (1-based, for messages); the others must stay clear of the beam at every step.
+  void set_others(int self, std::vector<RigidSurface> others, std::vector<int> ids) {
+    self_id_ = self;
+    others_ = std::move(others);
+    other_ids_ = std::move(ids);
+  }
+
  private:
   void validate();
+  // The smallest gap of a root-frame shape to the other surfaces (other_gap_, where and which).
+  void note_other_gaps(const std::vector<ShapePoint>& shape);
+  std::string surface_name() const;
   SegmentChain chain_at(double lambda) const;
   ShootingResult shoot(const SegmentChain& chain, bool sampled);
   // psi(lambda) < 0 where contact holds (rigid_contact.h); also the free solution's minimum gap.
   double indicator(double lambda, double* interior_gap = nullptr);
   double gap_of(const V2& r) const;
-  double min_gap(const std::vector<ShapePoint>& shape, bool skip_last, bool skip_root) const;
+  // The smallest gap of a sampled shape (and where it is: min_gap_s_).
+  double min_gap(const std::vector<ShapePoint>& shape, bool skip_last, bool skip_root);
+  // The contact held now, in words (for the message of a second contact).
+  std::string contact_description(double variable) const;
 
   // Circle: the wrap pose at s, the free span solved from s, its curvature residual.
   ChainPose wrap_pose(double s) const;
@@ -118,9 +133,29 @@ class ContactRun {
   // The mode of a contact that begins at load factor lambda (free solution penetrating there).
   ContactMode landing_mode(double lambda);
 
+  // Line contact (docs/contact.md, section 3): the beam lies on the stop over [a, L] (in the last
+  // segment). The lying part carries its loads to the stop directly (m = 0 there); the free span
+  // [0, a] is the chain cut at a under its own loads and the end force N_t tau + R_a nu, and
+  // (a, R_a) solve gap(r(a)) = 0, t(a) . nu = 0.
+  struct LyingStatics {
+    double N_t = 0.0;           // axial force of the lying part at a+ (along tau)
+    double tip_reaction = 0.0;  // the stop's concentrated reaction at the tip, -F_tip . nu
+    double pressure = 0.0;      // the stop's line pressure on the lying part, -(q + q_f n) . nu
+  };
+  void check_lying(const SegmentChain& chain) const;
+  LyingStatics lying_statics(const SegmentChain& chain, double a) const;
+  SegmentChain lying_span(const SegmentChain& chain, double a, double R) const;
+  Eigen::Vector2d lying_residual(const SegmentChain& chain, double a, double R);
+  void solve_lying(const SegmentChain& chain);
+  // The tip contact's tangent against the stop, t(L) . nu at lambda (R_n by Brent's method):
+  // <= 0 while only the tip touches; > 0 where the span behind the tip would cross the stop.
+  double tip_slope(double lambda);
+  double last_segment_start() const;
+
   void fill(double lambda, bool contact, double variable, ContactResult& out);
   // The stability verdict of the state at full load (ContactResult::stability).
   Stability verdict(bool contact, double variable);
+  Stability point_verdict();
 
   const SegmentChain& full_;
   RigidSurface surface_;
@@ -148,7 +183,49 @@ class ContactRun {
   double point_s_ = 0.0;
   double point_P_ = 0.0;
   double point_phi_ = 0.0;
+  // Line contact: the separation point a, the concentrated reaction R_a there, the stop's tangent
+  // in the beam's running direction; the last tip reaction (warm start of tip_slope()).
+  double lying_a_ = 0.0;
+  double lying_R_ = 0.0;
+  V2 tau_ = V2(1, 0);
+  double tip_Rn_ = 0.0;
+  double min_gap_s_ = 0.0;  // where min_gap() found the smallest gap
+  // Several surfaces: this one's table number and the others.
+  int self_id_ = 0;
+  std::vector<RigidSurface> others_;
+  std::vector<int> other_ids_;
+  double other_gap_ = std::numeric_limits<double>::infinity();
+  double other_s_ = 0.0;
+  int other_index_ = -1;
 };
+
+// The gap of a point to a surface: the distance to the circle minus its radius, or the signed
+// distance to the line along its (normalised) normal.
+double surface_gap(const RigidSurface& surface, const V2& r) {
+  if (surface.type == ContactSurfaceType::kCircle) {
+    return (r - V2(surface.center[0], surface.center[1])).norm() - surface.radius;
+  }
+  const V2 n(surface.normal[0], surface.normal[1]);
+  return n.dot(r - V2(surface.point[0], surface.point[1])) / n.norm();
+}
+
+void ContactRun::note_other_gaps(const std::vector<ShapePoint>& shape) {
+  for (std::size_t j = 0; j < others_.size(); ++j) {
+    for (const ShapePoint& p : shape) {
+      const double g = surface_gap(others_[j], V2(p.x, p.y));
+      if (g < other_gap_) {
+        other_gap_ = g;
+        other_s_ = p.s;
+        other_index_ = static_cast<int>(j);
+      }
+    }
+  }
+}
+
+std::string ContactRun::surface_name() const {
+  if (self_id_ == 0) return to_string(surface_.type);
+  return fmt::format("{} (contact {})", to_string(surface_.type), self_id_);
+}
 
 void ContactRun::validate() {
   full_.validate();
@@ -266,15 +343,33 @@ double ContactRun::gap_of(const V2& r) const {
   return normal_.dot(r - point_);
 }
 
-double ContactRun::min_gap(const std::vector<ShapePoint>& shape,
-                           bool skip_last,
-                           bool skip_root) const {
+double ContactRun::min_gap(const std::vector<ShapePoint>& shape, bool skip_last, bool skip_root) {
   double g = std::numeric_limits<double>::infinity();
   const std::size_t n = shape.size();
   for (std::size_t i = skip_root ? 1 : 0; i + (skip_last ? 1 : 0) < n; ++i) {
-    g = std::min(g, gap_of(V2(shape[i].x, shape[i].y)));
+    const double gi = gap_of(V2(shape[i].x, shape[i].y));
+    if (gi < g) {
+      g = gi;
+      min_gap_s_ = shape[i].s;
+    }
   }
   return g;
+}
+
+std::string ContactRun::contact_description(double variable) const {
+  switch (mode_) {
+    case ContactMode::kWrap:
+      return fmt::format("wrapping the {} over s = 0 .. {:.6g}", surface_name(), variable);
+    case ContactMode::kTip:
+      return fmt::format("touching the {} with its tip (s = {:.6g})", surface_name(), length_);
+    case ContactMode::kPoint:
+      return fmt::format("touching the {} at s = {:.6g}", surface_name(), point_s_);
+    case ContactMode::kLying:
+      return fmt::format(
+          "lying on the {} over s = {:.6g} .. {:.6g}", surface_name(), lying_a_, length_);
+    default:
+      return fmt::format("free of the {}", surface_name());
+  }
 }
 
 double ContactRun::indicator(double lambda, double* interior_gap) {
@@ -441,6 +536,131 @@ ContactMode ContactRun::landing_mode(double lambda) {
   return ContactMode::kPoint;
 }
 
+double ContactRun::last_segment_start() const {
+  const Segment& last = full_.segments.back();
+  return length_ - std::visit([](const auto& x) { return x.length; }, last);
+}
+
+void ContactRun::check_lying(const SegmentChain& chain) const {
+  const auto* f = std::get_if<FlexibleSegment>(&chain.segments.back());
+  auto refuse = [](const char* why) {
+    throw ContactFailure(fmt::format(
+        "the tip contact opens into a line contact (the beam lying on the stop), which is "
+        "implemented for a last segment that is flexible, straight, inextensible and of constant "
+        "EI and load, with no tip moment: {}",
+        why));
+  };
+  if (f == nullptr) refuse("the last segment is a rigid link");
+  if (!f->EI_profile.empty() || !f->q_profile.empty()) refuse("it has an EI_profile or q_profile");
+  if (f->kappa0 != 0.0) refuse("it has a stress-free curvature kappa0");
+  if (f->extensible() || f->shear_flexible()) refuse("it is extensible or shear-flexible");
+  if (chain.tip_load.M != 0.0) refuse("a tip moment acts on the lying part");
+}
+
+ContactRun::LyingStatics ContactRun::lying_statics(const SegmentChain& chain, double a) const {
+  // The lying part (a, L] is straight along tau with m = 0, so m' = 0 makes its internal force
+  // axial, N = N_t tau; the stop balances every normal load where it acts (frictionless):
+  //   p = -(q + q_f n) . nu on the part,  R_L = -F_tip . nu at the tip,
+  // and N_t(a+) = (F_tip + integral of q over (a, L]) . tau (the follower pressure is normal).
+  const auto& f = std::get<FlexibleSegment>(chain.segments.back());
+  const double s0 = length_ - f.length;
+  const V2 n_tau(-tau_.y(), tau_.x());  // the beam's left normal on the stop
+  const V2 F_tip = V2(chain.tip_load.Fx, chain.tip_load.Fy) + chain.tip_load.follower * n_tau;
+  const std::array<double, 2> Qe = f.q_resultant(f.length), Qa = f.q_resultant(a - s0);
+  const V2 Q(Qe[0] - Qa[0], Qe[1] - Qa[1]);
+  const std::array<double, 2> q = f.q_at(a - s0);
+  LyingStatics out;
+  out.N_t = (F_tip + Q).dot(tau_);
+  out.tip_reaction = -F_tip.dot(normal_);
+  out.pressure = -(V2(q[0], q[1]) + f.q_follower * n_tau).dot(normal_);
+  return out;
+}
+
+SegmentChain ContactRun::lying_span(const SegmentChain& chain, double a, double R) const {
+  const double s0 = last_segment_start();
+  if (a - s0 <= 1e-9 * length_) {
+    throw ContactFailure(
+        "the line contact reaches back to the start of the last segment (a line contact over "
+        "several segments is not implemented)");
+  }
+  const LyingStatics st = lying_statics(chain, a);
+  SegmentChain span = chain;
+  std::get<FlexibleSegment>(span.segments.back()).length = a - s0;
+  const V2 end = st.N_t * tau_ + R * normal_;
+  span.tip_load = TipLoad{end.x(), end.y(), 0.0, 0.0};
+  return span;
+}
+
+Eigen::Vector2d ContactRun::lying_residual(const SegmentChain& chain, double a, double R) {
+  const ShootingResult r = shoot(lying_span(chain, a, R), false);
+  const V2 t(std::cos(r.tip.theta), std::sin(r.tip.theta));
+  return Eigen::Vector2d(gap_of(V2(r.tip.x, r.tip.y)) / length_, t.dot(normal_));
+}
+
+void ContactRun::solve_lying(const SegmentChain& chain) {
+  // Newton's method on (a, R_a) with a backward-difference Jacobian (a <= L) and backtracking,
+  // from the previous state (or a = L and the tip reaction where the tip contact opened).
+  check_lying(chain);
+  double EI_min = std::numeric_limits<double>::infinity();
+  for (const Segment& seg : full_.segments) {
+    if (const auto* f = std::get_if<FlexibleSegment>(&seg)) EI_min = std::min(EI_min, f->EI);
+  }
+  const double force_scale = EI_min / (length_ * length_);
+  Eigen::Vector2d z(std::min(lying_a_, length_), lying_R_);
+  Eigen::Vector2d g = lying_residual(chain, z[0], z[1]);
+  for (int it = 0; it < 60; ++it) {
+    if (std::abs(g[0]) < 1e-13 && std::abs(g[1]) < 1e-12) {
+      const ShootingResult r = shoot(lying_span(chain, z[0], z[1]), false);
+      if (std::cos(r.tip.theta) * tau_.x() + std::sin(r.tip.theta) * tau_.y() <= 0.0) {
+        throw ContactFailure("the line contact converged to a span turned against the stop");
+      }
+      lying_a_ = z[0];
+      lying_R_ = z[1];
+      return;
+    }
+    const Eigen::Vector2d h(-1e-7 * length_, 1e-7 * std::max(std::abs(z[1]), force_scale));
+    Eigen::Matrix2d J;
+    for (int c = 0; c < 2; ++c) {
+      Eigen::Vector2d zc = z;
+      zc[c] += h[c];
+      J.col(c) = (lying_residual(chain, zc[0], zc[1]) - g) / h[c];
+    }
+    const Eigen::Vector2d dz = J.fullPivLu().solve(-g);
+    if (!dz.allFinite()) throw ContactFailure("the line contact's Newton step is singular");
+    double step = 1.0;
+    bool accepted = false;
+    for (int ls = 0; ls < 30; ++ls, step *= 0.5) {
+      Eigen::Vector2d trial = z + step * dz;
+      trial[0] = std::min(trial[0], length_);
+      Eigen::Vector2d gt;
+      try {
+        gt = lying_residual(chain, trial[0], trial[1]);
+      } catch (const ContactFailure&) {
+        continue;
+      }
+      if (gt.norm() < (1.0 - 1e-4 * step) * g.norm()) {
+        z = trial;
+        g = gt;
+        accepted = true;
+        break;
+      }
+    }
+    if (!accepted) break;
+  }
+  throw ContactFailure(
+      fmt::format("the line contact (the beam lying on the stop) did not converge (residual "
+                  "{:.3g}; separation point s = {:.6g})",
+                  g.norm(),
+                  z[0]));
+}
+
+double ContactRun::tip_slope(double lambda) {
+  const SegmentChain c = chain_at(lambda);
+  tip_Rn_ = solve_tip_reaction(c, tip_Rn_);
+  const ShootingResult r = shoot(with_reaction(c, tip_Rn_), false);
+  return std::cos(r.tip.theta) * normal_.x() + std::sin(r.tip.theta) * normal_.y();
+}
+
 ChainPose ContactRun::wrap_pose(double s) const {
   const double phi = s / radius_;
   return ChainPose{radius_ * std::sin(phi), sigma_ * radius_ * (1.0 - std::cos(phi)), sigma_ * phi};
@@ -570,6 +790,9 @@ void ContactRun::fill(double lambda, bool contact, double variable, ContactResul
   out.s_start = out.s_end = 0.0;
   out.contact_force = out.point_force = {0.0, 0.0};
   out.point_force_normal = out.line_pressure = out.wrap_tension = 0.0;
+  out.tip_reaction_normal = out.lying_axial_force = 0.0;
+  other_gap_ = std::numeric_limits<double>::infinity();
+  other_index_ = -1;
   out.separation_moment = out.curvature_condition = 0.0;
   const int n_shape = options_.shape_points;
   if (contact && mode_ == ContactMode::kPoint) {
@@ -581,6 +804,7 @@ void ContactRun::fill(double lambda, bool contact, double variable, ContactResul
     out.tip = r.tip;
     out.reaction = r.reaction;
     out.min_gap = min_gap(r.shape, false, false);
+    note_other_gaps(r.shape);
     out.tip_gap = gap_of(V2(r.tip.x, r.tip.y));
     out.residual = std::abs(gap_of(V2(pose.x, pose.y)));
     out.s_start = out.s_end = point_s_;
@@ -596,6 +820,64 @@ void ContactRun::fill(double lambda, bool contact, double variable, ContactResul
     }
     return;
   }
+  if (contact && mode_ == ContactMode::kLying) {
+    const double a = lying_a_, R = lying_R_;
+    const SegmentChain span = lying_span(chain, a, R);
+    const ShootingResult r = shoot(span, true);
+    const LyingStatics st = lying_statics(chain, a);
+    const ChainPose pa = r.tip;  // the separation point: the free span's end
+    const V2 tip = V2(pa.x, pa.y) + (length_ - a) * tau_;
+    out.tip = ChainPose{tip.x(), tip.y(), pa.theta};
+    out.reaction = r.reaction;  // the lying part's loads reach the clamp through the span
+    out.min_gap = min_gap(r.shape, true, false);
+    note_other_gaps(r.shape);
+    if (!others_.empty()) {
+      std::vector<ShapePoint> lying;
+      for (int i = 1; i <= 50; ++i) {
+        const double ds = (length_ - a) * i / 50.0;
+        const V2 p = V2(pa.x, pa.y) + ds * tau_;
+        lying.push_back(ShapePoint{a + ds, p.x(), p.y(), pa.theta});
+      }
+      note_other_gaps(lying);
+    }
+    out.tip_gap = gap_of(tip);
+    out.residual = std::abs(gap_of(V2(pa.x, pa.y)));
+    out.s_start = a;
+    out.s_end = length_;
+    out.separation_s = {a};
+    out.separation_points = {pa};
+    out.point_force = {R * normal_.x(), R * normal_.y()};
+    out.point_force_normal = R;
+    out.line_pressure = st.pressure;
+    out.tip_reaction_normal = st.tip_reaction;
+    out.lying_axial_force = st.N_t;
+    const double total = R + st.pressure * (length_ - a) + st.tip_reaction;
+    out.contact_force = {total * normal_.x(), total * normal_.y()};
+    const double tol = 1e-9 * std::max({std::abs(R), std::abs(st.N_t), 1e-300});
+    if (R < -tol || st.tip_reaction < -tol ||
+        st.pressure < -1e-9 * std::max(std::abs(st.pressure), 1e-300)) {
+      throw ContactFailure(fmt::format(
+          "the line contact would need a stop that pulls (reaction at the separation point {:g}, "
+          "line pressure {:g}, tip reaction {:g}): a beam that lifts off the stop behind its tip "
+          "is not implemented",
+          R,
+          st.pressure,
+          st.tip_reaction));
+    }
+    if (n_shape > 1) {
+      const int lying_points = std::clamp(
+          static_cast<int>(std::lround(n_shape * (length_ - a) / length_)), 1, n_shape - 2);
+      ShootingSolver::Options os = plain_options_;
+      os.shape_points = n_shape - lying_points;
+      out.shape = ShootingSolver(os).solve(span).shape;
+      for (int i = 1; i <= lying_points; ++i) {
+        const double ds = (length_ - a) * i / lying_points;
+        const V2 p = V2(pa.x, pa.y) + ds * tau_;
+        out.shape.push_back(ShapePoint{a + ds, p.x(), p.y(), pa.theta});
+      }
+    }
+    return;
+  }
   if (surface_.type == ContactSurfaceType::kCircle) {
     if (!contact) {
       ShootingSolver::Options o = sampled_options_;
@@ -605,6 +887,7 @@ void ContactRun::fill(double lambda, bool contact, double variable, ContactResul
       out.tip = r.tip;
       out.reaction = r.reaction;
       out.min_gap = min_gap(r.shape, false, true);
+      note_other_gaps(r.shape);
       out.tip_gap = gap_of(V2(r.tip.x, r.tip.y));
       out.residual = 0.0;
       if (n_shape > 1) {
@@ -629,6 +912,15 @@ void ContactRun::fill(double lambda, bool contact, double variable, ContactResul
     const ShapePoint tip = to_root(ShapePoint{length_ - s_c, r.tip.x, r.tip.y, r.tip.theta}, 0.0);
     out.tip = ChainPose{tip.x, tip.y, tip.theta};
     out.min_gap = min_gap(span_shape, false, true);
+    note_other_gaps(span_shape);
+    if (!others_.empty()) {
+      std::vector<ShapePoint> wrap;
+      for (int i = 0; i <= 50; ++i) {
+        const ChainPose p = wrap_pose(s_c * i / 50.0);
+        wrap.push_back(ShapePoint{s_c * i / 50.0, p.x, p.y, p.theta});
+      }
+      note_other_gaps(wrap);
+    }
     out.tip_gap = gap_of(V2(tip.x, tip.y));
     // Statics of the wrap (rigid_contact.h): N(s_c+) from the free span, rotated back.
     const V2 N = rotate(pc.theta, V2(-r.reaction.Fx, -r.reaction.Fy));
@@ -684,6 +976,7 @@ void ContactRun::fill(double lambda, bool contact, double variable, ContactResul
   out.tip = r.tip;
   out.reaction = r.reaction;
   out.min_gap = min_gap(r.shape, contact, false);
+  note_other_gaps(r.shape);
   out.tip_gap = gap_of(V2(r.tip.x, r.tip.y));
   out.residual = contact ? std::abs(out.tip_gap) : 0.0;
   if (contact) {
@@ -765,11 +1058,126 @@ Stability ContactRun::verdict(bool contact, double variable) {
       }
       return v;
     }
-    default:
+    case ContactMode::kLying:
       return not_checked_stability(
-          "the verdict of an interior point contact is not implemented (the contact point rolls "
-          "along the beam and the surface's curvature enters the second variation)");
+          "the verdict of a line contact (the beam lying on the stop) is not implemented (the "
+          "separation point moves with the variation)");
+    case ContactMode::kPoint:
+      return point_verdict();
+    default:
+      return not_checked_stability("no contact mode");
   }
+}
+
+// The verdict of an interior point contact with a stop (docs/contact.md, "Stability"). With the
+// contact force P > 0 the admissible variations keep the gap's minimum, c = min_s g(r(s)) >= 0,
+// so to first order nu . delta r(s_p) = int_0^s_p (nu . n) eta ds = 0 (the contact point's
+// normal coordinate held). The Lagrangian Pi - P c differs from the energy of the chain with P a
+// dead load at s_p by -P [c - g(r(s_p))], whose second variation is + P (d g_s)^2 / g_ss: the
+// contact point rolls to where the varied beam is lowest, and with d g_s = (nu . n) eta(s_p),
+// g_ss = kappa(s_p) (nu . n), the second variation gains the point term
+//     P eta(s_p)^2 / |kappa(s_p)|      (kappa = theta' on the beam's side of the stop).
+// Assembled on the chain cut at s_p (the discrete second variation of equilibrium_stability.h,
+// every 1st, 2nd and 4th sample, Romberg-extrapolated like the chain's own verdict) with the
+// constraint row and the point term added at the dof of the cut.
+Stability ContactRun::point_verdict() {
+  if (surface_.type == ContactSurfaceType::kCircle) {
+    return not_checked_stability(
+        "the verdict of an interior point contact with a circle is not implemented (the pin's "
+        "curvature adds -P (tau . delta r)^2 / R to the second variation, a term of the whole "
+        "span's displacement; a stop's is implemented)");
+  }
+  const SegmentChain chain = chain_at(1.0);
+  const V2 direction(std::cos(point_phi_), std::sin(point_phi_));
+  const SegmentChain split = split_chain(chain, point_s_, point_P_ * direction);
+  if (split.tip_load.follower != 0.0 || split.has_follower_pressure()) {
+    return not_conservative_stability("a follower load acts on the beam");
+  }
+  for (const Segment& seg : split.segments) {
+    const auto* f = std::get_if<FlexibleSegment>(&seg);
+    if (f == nullptr || f->extensible() || f->shear_flexible()) {
+      return not_checked_stability(
+          "the verdict of an interior point contact is implemented for chains of inextensible "
+          "flexible segments");
+    }
+  }
+  const ShootingResult r = shoot(split, false);
+  // Curvature on the near side of the contact point (one-sided, O(delta^2)).
+  const double delta = 1e-4 * point_s_;
+  const std::vector<ShapePoint> near = shooting_shape_at(
+      split, r, {point_s_ - 2.0 * delta, point_s_ - delta, point_s_}, plain_options_);
+  const double kappa = (3.0 * near[2].theta - 4.0 * near[1].theta + near[0].theta) / (2.0 * delta);
+  const double nu_n =
+      -normal_.x() * std::sin(near[2].theta) + normal_.y() * std::cos(near[2].theta);
+  const double g_ss = kappa * nu_n;
+  if (!(g_ss > 1e-9 / length_)) {
+    return not_checked_stability(fmt::format(
+        "the beam is as straight as the stop at the contact point (curvature {:.3g}): the point "
+        "contact is opening into a line contact",
+        kappa));
+  }
+  const double rolling = point_P_ / g_ss;
+  // Stations: each segment in a multiple of 4 equal elements (grids of every 1st, 2nd, 4th).
+  std::vector<int> elements;
+  std::vector<double> s = {0.0};
+  double start = 0.0;
+  for (const Segment& seg : split.segments) {
+    const double len = std::get<FlexibleSegment>(seg).length;
+    const int n = 4 * std::max(4, static_cast<int>(std::ceil(100.0 * len / length_)));
+    elements.push_back(n);
+    for (int i = 1; i <= n; ++i) s.push_back(start + len * i / n);
+    start += len;
+  }
+  const std::vector<ShapePoint> shape = shooting_shape_at(split, r, s, plain_options_);
+  const StabilityOptions& so = options_.stability;
+  std::array<double, 3> values{1.0, 1.0, 1.0};
+  std::array<bool, 3> found{false, false, false};
+  int index = 0;
+  for (int level = 0; level < 3; ++level) {
+    const int stride = 1 << level;
+    DiscreteSecondVariation q = discrete_second_variation(split, Reaction{}, shape, stride);
+    int total = 0;
+    for (int n : elements) total += n / stride;
+    if (q.size() != total || !q.constraints.empty()) {
+      return not_checked_stability("the second variation of the cut chain has an unexpected form");
+    }
+    // The row int_0^s_p (nu . n) eta ds on the chords of the first segment's elements
+    // (trapezoid, as the chain's own tip rows), and the rolling term at the cut's dof.
+    std::vector<double> row(static_cast<std::size_t>(total), 0.0);
+    const int n0 = elements[0] / stride;
+    for (int e = 0; e < n0; ++e) {
+      const ShapePoint& a = shape[static_cast<std::size_t>(e * stride)];
+      const ShapePoint& b = shape[static_cast<std::size_t>((e + 1) * stride)];
+      const double h = b.s - a.s;
+      const double dx = b.x - a.x, dy = b.y - a.y, chord = std::hypot(dx, dy);
+      const double v = (-normal_.x() * dy + normal_.y() * dx) / chord;
+      if (e > 0) row[static_cast<std::size_t>(e - 1)] += 0.5 * h * v;
+      row[static_cast<std::size_t>(e)] += 0.5 * h * v;
+    }
+    q.constraints.push_back(row);
+    q.axial[static_cast<std::size_t>(n0 - 1)] += rolling;
+    if (level == 0) index = constrained_count(q, -so.critical_tolerance);
+    const PencilEigenvalue e = constrained_eigenvalue(q, 1, so.eigenvalue_tolerance);
+    found[level] = e.exists;
+    values[level] = e.value;
+  }
+  double lowest = 1.0;
+  if (found[0] && found[1] && found[2]) {
+    const double r_fine = (4.0 * values[0] - values[1]) / 3.0;
+    const double r_coarse = (4.0 * values[1] - values[2]) / 3.0;
+    lowest = std::min(1.0, (16.0 * r_fine - r_coarse) / 15.0);
+  } else if (found[0]) {
+    lowest = std::min(1.0, values[0]);
+  }
+  Stability v = classify_stability(index, lowest, so.critical_tolerance, "the beam");
+  v.message = fmt::format(
+      "{} (the contact point s = {:.9g} held along the stop's normal by the force {:.6g}, rolling "
+      "term P/|kappa| = {:.6g})",
+      v.message,
+      point_s_,
+      point_P_,
+      rolling);
+  return v;
 }
 
 ContactResult ContactRun::run() {
@@ -790,6 +1198,9 @@ ContactResult ContactRun::run() {
         case ContactMode::kPoint:
           solve_point(c);
           return point_s_;
+        case ContactMode::kLying:
+          solve_lying(c);
+          return lying_a_;
         default:
           throw ContactFailure("no contact mode");
       }
@@ -799,10 +1210,12 @@ ContactResult ContactRun::run() {
     auto check_gap = [&](double lambda, double gap, bool contact) {
       if (gap < -options_.gap_tolerance * length_) {
         throw ContactFailure(fmt::format(
-            "at load factor {:.6g} the beam would cross the {} at a second place (gap {:.3g}): "
-            "{} is not implemented",
+            "at load factor {:.6g} the beam, {}, would cross the {} at a second place near s = "
+            "{:.6g} (gap {:.3g}): {} is not implemented",
             lambda,
-            to_string(surface_.type),
+            contact ? contact_description(variable) : "free of it",
+            surface_name(),
+            min_gap_s_,
             gap,
             contact ? "more than one contact" : "contact of an interior point with this circle"));
       }
@@ -811,10 +1224,59 @@ ContactResult ContactRun::run() {
       if (!contact) return 0.0;
       return mode_ == ContactMode::kTip ? length_ : v;
     };
+    // A tip on a stop whose tangent turns past the stop's opens into a line contact (and closes
+    // back): chi = t(L) . nu of the tip contact changes sign (rigid_contact.h). chi_prev is its
+    // value at chi_lambda, the last load factor with a tip or line contact.
+    const bool stop = surface_.type == ContactSurfaceType::kLine;
+    double chi_prev = 0.0, chi_lambda = 0.0;
+    auto open_or_close = [&](double lambda) {
+      const double chi = tip_slope(lambda);
+      const bool lying = chi > 0.0;
+      if (lying != (mode_ == ContactMode::kLying)) {
+        const ScalarRootResult root = brent_root([&](double l) { return tip_slope(l); },
+                                                 chi_lambda,
+                                                 lambda,
+                                                 chi_prev,
+                                                 chi,
+                                                 ScalarRootOptions{options_.event_tolerance, 200});
+        if (!root.converged()) {
+          throw ContactFailure("the opening of the tip contact into a line did not converge");
+        }
+        out.events.push_back(ContactEvent{lying ? "line-contact" : "tip-contact", root.x});
+        if (lying) {
+          // At the opening the line contact is the tip contact: a = L, R_a = R_n - R_L.
+          tip_slope(root.x);
+          const SegmentChain at = chain_at(root.x);
+          check_lying(at);
+          tau_ = V2(normal_.y(), -normal_.x());
+          const ShootingResult r = shoot(with_reaction(at, tip_Rn_), false);
+          if (std::cos(r.tip.theta) * tau_.x() + std::sin(r.tip.theta) * tau_.y() < 0.0) {
+            tau_ = -tau_;
+          }
+          lying_a_ = length_;
+          lying_R_ = tip_Rn_ - lying_statics(at, length_).tip_reaction;
+          mode_ = ContactMode::kLying;
+        } else {
+          tip_slope(lambda);
+          variable = tip_Rn_;
+          mode_ = ContactMode::kTip;
+        }
+      }
+      chi_prev = chi;
+      chi_lambda = lambda;
+    };
     double psi_prev = indicator(0.0, &interior);
     bool contact = psi_prev < 0.0;
     if (contact) {
       mode_ = landing_mode(0.0);
+      if (stop && mode_ == ContactMode::kTip) {
+        chi_prev = tip_slope(0.0);
+        if (chi_prev > 0.0) {
+          throw ContactFailure(
+              "the beam lies on the stop at the start load (line contact at load factor 0): "
+              "start from a load with the tip alone on the stop, or none");
+        }
+      }
       variable = solve_contact(0.0, 0.0);
     } else if (wrap_) {
       check_gap(0.0, interior, false);
@@ -837,6 +1299,11 @@ ContactResult ContactRun::run() {
         if (now) {
           variable = 0.0;
           mode_ = landing_mode(lambda);
+          if (stop && mode_ == ContactMode::kTip) {
+            tip_Rn_ = 0.0;
+            chi_prev = tip_slope(root.x);
+            chi_lambda = root.x;
+          }
         } else {
           mode_ = ContactMode::kNone;
         }
@@ -846,10 +1313,30 @@ ContactResult ContactRun::run() {
         if (wrap_) check_gap(lambda, interior, false);
         variable = 0.0;
       } else {
+        if (stop && (mode_ == ContactMode::kTip || mode_ == ContactMode::kLying)) {
+          open_or_close(lambda);
+        }
         variable = solve_contact(lambda, variable);
       }
       ContactResult step;
       fill(lambda, contact, variable, step);
+      if (other_gap_ < -options_.gap_tolerance * length_) {
+        const RigidSurface& o = others_[static_cast<std::size_t>(other_index_)];
+        throw ContactFailure(fmt::format(
+            "at load factor {:.6g} the beam, {}, would cross the {} (contact {}) near s = {:.6g} "
+            "(gap {:.3g}): {}",
+            lambda,
+            contact_description(variable),
+            to_string(o.type),
+            other_ids_[static_cast<std::size_t>(other_index_)],
+            other_s_,
+            other_gap_,
+            contact ? "several contacts at once are not implemented"
+            : out.events.empty()
+                ? "the beam meets that surface first"
+                : "landing on another surface after leaving this one is not implemented (one "
+                  "surface per continuation)"));
+      }
       if (contact) {
         check_gap(lambda, step.min_gap, true);
         if (step.point_force_normal < -1e-9 * std::max(1.0, std::abs(step.point_force_normal))) {
@@ -877,10 +1364,11 @@ ContactResult ContactRun::run() {
     } else {
       out.stability = not_checked_stability("the verdict was switched off");
     }
-    out.kind = !contact                      ? "none"
-               : mode_ == ContactMode::kWrap ? "wrap"
-               : mode_ == ContactMode::kTip  ? "tip"
-                                             : "point";
+    out.kind = !contact                       ? "none"
+               : mode_ == ContactMode::kWrap  ? "wrap"
+               : mode_ == ContactMode::kTip   ? "tip"
+               : mode_ == ContactMode::kLying ? "line"
+                                              : "point";
     out.set_converged(true);
     out.message = contact ? fmt::format("in contact with the {}", to_string(surface_.type))
                           : fmt::format("free of the {}", to_string(surface_.type));
@@ -904,6 +1392,57 @@ ContactResult RigidContactSolver::solve(const SegmentChain& chain,
   options_.validate();
   ContactRun run(chain, surface, start_tip_load, options_);
   return run.run();
+}
+
+ContactResult RigidContactSolver::solve(const SegmentChain& chain,
+                                        const std::vector<RigidSurface>& surfaces,
+                                        const TipLoad& start_tip_load) const {
+  options_.validate();
+  if (surfaces.empty()) throw InvalidInput("contact: no surface given");
+  if (surfaces.size() == 1) return solve(chain, surfaces.front(), start_tip_load);
+  // One continuation per surface, every other surface checked for crossing at each step: the run
+  // whose surface is the one touched (or any, with none touched) holds along the whole path.
+  std::vector<ContactRun> runs;
+  runs.reserve(surfaces.size());
+  for (std::size_t i = 0; i < surfaces.size(); ++i) {
+    runs.emplace_back(chain, surfaces[i], start_tip_load, options_);  // validates every surface
+    std::vector<RigidSurface> others;
+    std::vector<int> ids;
+    for (std::size_t j = 0; j < surfaces.size(); ++j) {
+      if (j == i) continue;
+      others.push_back(surfaces[j]);
+      ids.push_back(static_cast<int>(j) + 1);
+    }
+    runs.back().set_others(static_cast<int>(i) + 1, std::move(others), std::move(ids));
+  }
+  std::optional<ContactResult> touched, free, failed;
+  std::vector<std::string> failures;
+  long solves = 0;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    ContactResult r = runs[i].run();
+    r.surface_index = static_cast<int>(i);
+    solves += r.shooting_solves;
+    if (r.converged()) {
+      if (r.in_contact && !touched) touched = std::move(r);
+      if (!r.in_contact && !free) free = std::move(r);
+    } else {
+      failures.push_back(r.message);
+      if (!failed || r.load_factor > failed->load_factor) failed = std::move(r);
+    }
+  }
+  if (touched || free) {
+    ContactResult out = touched ? std::move(*touched) : std::move(*free);
+    out.shooting_solves = solves;
+    return out;
+  }
+  // Every run met a second surface: the furthest one's failure first, then the others'.
+  ContactResult out = std::move(*failed);
+  const std::string first = out.message;
+  for (const std::string& m : failures) {
+    if (m != first) out.message += "; and " + m;
+  }
+  out.shooting_solves = solves;
+  return out;
 }
 
 }  // namespace flexure

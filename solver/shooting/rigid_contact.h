@@ -20,6 +20,12 @@
 // g = normal . (r - point) >= 0. Tip contact: a normal reaction R_n >= 0 at the tip with
 // R_n g = 0 (complementarity); R_n is found by Brent's method on the tip gap.
 //
+// Line contact: past the load where the tip's tangent turns along the stop (t(L) . nu = 0), the
+// beam lies on the stop over [a, L]: m = 0 and a straight part there, the stop carrying the
+// lying part's normal loads directly (line pressure), and at a a concentrated reaction R_a; the
+// free span [0, a] ends on the stop, tangent to it, with m(a) = 0. (a, R_a) solve
+// gap(r(a)) = 0, t(a) . nu = 0 by Newton's method; each tip -> line change is an event.
+//
 // Point contact (a circle clear of the unloaded beam, e.g. a pin the beam is pressed over, or a
 // stop met mid-span while the tip is free): the beam touches at one interior point s_p, tangent to
 // the surface, with a force P along the surface normal grad g; the chain is cut at s_p and
@@ -58,7 +64,8 @@ struct RigidSurface {
 
 // Landing (contact begins) or lift-off (contact ends) along the continuation.
 struct ContactEvent {
-  std::string kind;          // "landing" or "lift-off"
+  std::string kind;          // "landing", "lift-off", "line-contact" (the tip contact opens into
+                             // a line contact) or "tip-contact" (it closes back to the tip)
   double load_factor = 0.0;  // located to RigidContactSolver::Options::event_tolerance
 };
 
@@ -75,23 +82,32 @@ struct ContactPathPoint {
 struct ContactResult : SolveStatus {
   // residual: |m(s_c) - sigma EI/R| (circle) or |gap at the tip| (line) at the returned point
   ContactSurfaceType surface = ContactSurfaceType::kCircle;
+  int surface_index = 0;  // several surfaces: the one this result is about (0-based)
   bool in_contact = false;
   // How the beam touches at the returned point: "none", "wrap" (a circle wrapped from the
-  // clamp), "tip" (the tip on a stop) or "point" (one interior point, tangent).
+  // clamp), "tip" (the tip on a stop), "point" (one interior point, tangent) or "line" (the beam
+  // lying on a stop from the separation point to its tip).
   std::string kind = "none";
   double load_factor = 0.0;  // reached (1 when converged)
   // Contact region on the beam (arc lengths from the root); equal ends for point contact, both 0
   // without contact.
   double s_start = 0.0;
   double s_end = 0.0;
-  // Separation points (circle: s_c, where the beam leaves the circle) and their poses.
+  // Separation points (circle: s_c, where the beam leaves the circle; line contact: a, where it
+  // leaves the stop) and their poses.
   std::vector<double> separation_s;
   std::vector<ChainPose> separation_points;
   // Contact loads on the beam, root frame.
   std::array<double, 2> contact_force{0.0, 0.0};  // total: point force + pressure resultant
-  std::array<double, 2> point_force{0.0, 0.0};    // concentrated force (at s_c, or at the tip)
+  std::array<double, 2> point_force{0.0, 0.0};    // concentrated force (at s_c or a, or the tip)
   double point_force_normal = 0.0;                // its magnitude along the surface normal, >= 0
-  double line_pressure = 0.0;        // circle: p = T/R on the wrap (force per length), >= 0
+  double line_pressure = 0.0;        // circle: p = T/R on the wrap; line contact: the stop's
+                                     // pressure on the lying part, -(q + q_f n) . nu (force per
+                                     // length), >= 0
+  double tip_reaction_normal = 0.0;  // line contact: the stop's concentrated reaction at the tip
+                                     // (the tip load's normal part), >= 0
+  double lying_axial_force = 0.0;    // line contact: N . tau of the lying part at the separation
+                                     // point (the load along the stop it carries to the span)
   double wrap_tension = 0.0;         // circle: T, the constant tangential force on the wrap
   double separation_moment = 0.0;    // circle: m(s_c+) of the free span
   double curvature_condition = 0.0;  // circle: m(s_c+) - sigma EI/R (0 at the solution)
@@ -109,8 +125,10 @@ struct ContactResult : SolveStatus {
   // variation on the variations the contact admits. A contact with positive pressure holds the
   // beam to the surface there (bilateral to second order): the wrap is held to the circle, so the
   // free span is judged as a cantilever clamped at the separation point; a tip on a stop has its
-  // normal coordinate held. Without contact, the free beam's verdict. An interior point contact
-  // is not judged (not_checked, the message says why); nor is an unconverged result.
+  // normal coordinate held; an interior point on a stop has its normal coordinate held and the
+  // rolling of the contact point adds P eta(s_p)^2 / |kappa(s_p)|. Without contact, the free
+  // beam's verdict. An interior point contact with a circle and a line contact are not judged
+  // (not_checked, the message says why); nor is an unconverged result.
   Stability stability;
 };
 
@@ -140,6 +158,16 @@ class RigidContactSolver {
   // `start_tip_load`: the tip load at lambda = 0 (default: none).
   ContactResult solve(const SegmentChain& chain,
                       const RigidSurface& surface,
+                      const TipLoad& start_tip_load = {}) const;
+
+  // Several surfaces, at most one touched at a time (docs/contact.md, "Several surfaces"): one
+  // continuation per surface with every other one checked for crossing at each step (the 401
+  // samples of the shape). The result is the run whose surface the beam touches (surface_index),
+  // or the free beam; where the beam would touch two at once, the failure of the run that came
+  // furthest, naming both contacts (converged() false). Throws InvalidInput for an empty list or
+  // any surface the single-surface solve refuses.
+  ContactResult solve(const SegmentChain& chain,
+                      const std::vector<RigidSurface>& surfaces,
                       const TipLoad& start_tip_load = {}) const;
 
   const Options& options() const { return options_; }
