@@ -96,7 +96,8 @@ struct Flexure {
   int elements = 6;  // cbcm: BCM elements (the error map's CBCM has 6)
   // The exact model only: an extensible elastica (Reissner's beam with axial strain N/EA,
   // EA = E b h; docs/extensible.md), for a flexure that must be compressed or stretched (a beam
-  // between two bodies whose distance the joints fix). The PRBM and the ladder's models ignore it.
+  // between two bodies whose distance the joints fix). The mixed model's CBCM takes it too (its
+  // axial stiffness d = EA l^2/EI); the PRBM and the other ladder models ignore it.
   bool extensible = false;
   int line = 0;
 
