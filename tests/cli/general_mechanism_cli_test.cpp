@@ -316,5 +316,37 @@ TEST(GeneralMechanismCli, InclinedBistableBeamExample) {
   EXPECT_NEAR(flip, 1.289366e-3, 2e-6);
 }
 
+// The same file with --model mixed: its flexure's `model = "cbcm"` (6 elements, extensible). The
+// force zeros within the CBCM's measured error of the exact model's (6.068895 and 9.696183 mm;
+// measured +5.6e-4 and +5.4e-4 mm, tests/mechanisms/general_cbcm_test.cpp), and the held
+// shuttle's verdict turns unstable at the beam path's bifurcation 1.289366 mm (the margin's zero
+// interpolated on the 0.1 mm grid: measured 3.2e-4 mm off, as the exact model's 3.1e-4).
+TEST(GeneralMechanismCli, InclinedBistableBeamWithTheCbcm) {
+  const std::string file =
+      std::string("'") + FLEXURE_SOURCE_DIR + "/docs/examples/inclined_bistable_beam.toml'";
+  const CommandResult r = run_flexure("mechanism analyze " + file + " --model mixed --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["flexure_models"][0]["model"], "cbcm");
+  EXPECT_EQ(j["flexure_models"][0]["elements"], 6);
+  ASSERT_EQ(j["equilibria"].size(), 3u);
+  const double y0 = 6.709203e-3;
+  EXPECT_NEAR(y0 - j["equilibria"][1]["input"].get<double>(), 6.068895e-3, 6e-7);
+  EXPECT_NEAR(y0 - j["equilibria"][2]["input"].get<double>(), 9.696183e-3, 6e-7);
+  EXPECT_EQ(j["equilibria"][1]["stability"], "unstable");
+  EXPECT_EQ(j["equilibria"][2]["stability"], "stable");
+  const std::vector<double> input = j["input"].get<std::vector<double>>();
+  const std::vector<double> margin =
+      j["stability"]["displacement_control_margin"].get<std::vector<double>>();
+  double flip = -1.0;
+  for (std::size_t i = 1; i < margin.size() && flip < 0.0; ++i) {
+    if (margin[i - 1] > 0.0 && margin[i] <= 0.0) {
+      const double t = margin[i - 1] / (margin[i - 1] - margin[i]);
+      flip = input[0] - (input[i - 1] + t * (input[i] - input[i - 1]));
+    }
+  }
+  EXPECT_NEAR(flip, 1.289366e-3, 2e-6);
+}
+
 }  // namespace
 }  // namespace flexure::test
