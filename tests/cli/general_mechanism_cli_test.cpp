@@ -347,7 +347,7 @@ TEST(GeneralMechanismCli, InclinedBistableBeamExample) {
   EXPECT_NEAR(flip, 1.289366e-3, 2e-6);
 }
 
-// The same file with --model mixed: its flexure's `model = "cbcm"` (6 elements, extensible). The
+// The same file with --model mixed --flexure-model cbcm (6 elements, extensible). The
 // force zeros within the CBCM's measured error of the exact model's (6.068895 and 9.696183 mm;
 // measured +5.6e-4 and +5.4e-4 mm, tests/mechanisms/general_cbcm_test.cpp), and the held
 // shuttle's verdict turns unstable at the beam path's bifurcation 1.289366 mm (the margin's zero
@@ -355,7 +355,8 @@ TEST(GeneralMechanismCli, InclinedBistableBeamExample) {
 TEST(GeneralMechanismCli, InclinedBistableBeamWithTheCbcm) {
   const std::string file =
       std::string("'") + FLEXURE_SOURCE_DIR + "/docs/examples/inclined_bistable_beam.toml'";
-  const CommandResult r = run_flexure("mechanism analyze " + file + " --model mixed --json");
+  const CommandResult r =
+      run_flexure("mechanism analyze " + file + " --model mixed --flexure-model cbcm --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["flexure_models"][0]["model"], "cbcm");
