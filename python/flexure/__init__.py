@@ -34,8 +34,9 @@ from ._core import (BcmResult, BcmSolver, CantileverCase, CbcmResult, ChainedBcm
 from ._core import (FlexureModel, FlexureModelReport, FlexureTipLoad, GeneralEquilibrium,
                     GeneralExactOptions, GeneralMechanism, GeneralMechanismPoint,
                     GeneralMechanismResult, GeneralPrbmOptions, InputControl, InputCoordinate,
-                    JointKind, PrbmKind, check_general_mechanism, solve_general_exact,
-                    solve_general_mixed, solve_general_prbm)
+                    JointKind, PrbmKind, StableSelection, check_general_mechanism,
+                    select_stable_points, solve_general_exact, solve_general_mixed,
+                    solve_general_prbm)
 # The constant-force slider mechanisms (python/catalogue_objects.cpp; docs/mechanisms.md).
 from ._core import (AnalysisOptions, MechanismAnalysis, MechanismDesign, StrokeStability,
                     analyze_mechanism)
@@ -60,8 +61,9 @@ __all__ = ["beam", "path", "sweep", "cfm", "dynamics", "bench", "validate", "rea
            "FlexureModel", "FlexureModelReport", "FlexureTipLoad", "GeneralEquilibrium",
            "GeneralExactOptions", "GeneralMechanism", "GeneralMechanismPoint",
            "GeneralMechanismResult", "GeneralPrbmOptions", "InputControl", "InputCoordinate",
-           "JointKind", "PrbmKind", "check_general_mechanism", "solve_general_exact",
-           "solve_general_mixed", "solve_general_prbm",
+           "JointKind", "PrbmKind", "StableSelection", "check_general_mechanism",
+           "select_stable_points", "solve_general_exact", "solve_general_mixed",
+           "solve_general_prbm",
            "AnalysisOptions", "MechanismAnalysis", "MechanismDesign", "StrokeStability",
            "analyze_mechanism"]
 
