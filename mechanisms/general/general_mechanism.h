@@ -73,9 +73,10 @@ enum class PrbmKind {
 // exact` solves every one as an elastica, whatever this says; `--model mixed`
 // (solve_general_mixed, general_exact.h) gives each flexure the model named here: the exact
 // elastica, its PRBM element (small-length or fixed-pinned), a rung of the model ladder
-// (elements/: linear theory, the BCM, Su's PR-3R, the chained BCM) as a cantilever under the end
-// loads its far body puts on it, or `auto`: the cheapest rung whose mapped tip error at the loads
-// it carries is within `tolerance` of its length (docs/mechanisms.md "A model per flexure").
+// (elements/: linear theory, the BCM, Su's PR-3R as a cantilever under the end loads its far body
+// puts on it; the chained BCM marched from its root loads), or `auto`: the cheapest rung whose
+// mapped tip error at the loads it carries is within `tolerance` of its length (docs/mechanisms.md
+// "A model per flexure").
 enum class FlexureModel { kPrbm, kExact, kLinear, kBcm, kPrbm3r, kCbcm, kAuto };
 
 // A straight flexure from point a (on one body) to point b (on another) in the described
