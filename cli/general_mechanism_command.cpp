@@ -15,6 +15,7 @@
 #include "flexure/io/toml_support.h"
 #include "flexure/mechanisms/general/general_exact.h"
 #include "flexure/mechanisms/general/general_prbm.h"
+#include "flexure/mechanisms/general/stable_selection.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/quantity.h"
 
@@ -330,8 +331,8 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
                               "takes --flexure-model, --flexure-tol, --check-flexures, --points, "
                               "--out, --csv and --json"
                             : " belongs to the constant-force designs; a general mechanism file "
-                              "takes --model, --input, --points, --out, --csv, --json and, with "
-                              "--model mixed, --flexure-model, --flexure-tol and "
+                              "takes --model, --input, --points, --stable, --out, --csv, --json "
+                              "and, with --model mixed, --flexure-model, --flexure-tol and "
                               "--check-flexures"));
   }
   const std::string model = request.model.empty() ? "prbm" : request.model;
@@ -386,6 +387,19 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
     }
     if (!r.converged()) {
       throw NoConvergence(fmt::format("{}: {}: {}", m.name, name, r.message));
+    }
+  }
+  // --stable: each model's path replaced by its stable equilibria (stable_selection.h).
+  std::string stable_search;
+  if (request.stable) {
+    for (auto& [name, r] : results) {
+      StableSelection selection = select_stable_points(m, r);
+      if (!selection.stable) {
+        throw NoConvergence(fmt::format("{}: {}: --stable: {}", m.name, name, selection.search));
+      }
+      stable_search += (stable_search.empty() ? "" : "; ") +
+                       (results.size() > 1 ? name + ": " : std::string()) + selection.search;
+      r = std::move(selection.result);
     }
   }
   const GeneralPrbmResult& first = results.front().second;
@@ -452,6 +466,8 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
       out["force"] = io::design_stroke_force(first);
       out["force_of"] = "half";
     }
+    out["stable"] = request.stable;
+    out["stable_search"] = request.stable ? Json(stable_search) : Json(nullptr);
     out["out"] = hdf5_out.empty() ? Json(nullptr) : Json(hdf5_out);
     out["csv"] = csv_out.empty() ? Json(nullptr) : Json(csv_out);
     print_json(out);
@@ -462,6 +478,7 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
                            input_coordinate_name(in.coordinate),
                            in.body,
                            input_control_name(in.control));
+  if (request.stable) std::cout << fmt::format("  --stable: {}\n", stable_search);
   for (const auto& [name, r] : results) {
     print_model(name == "prbm" ? "PRBM" : name, r, in, m);
     for (const FlexureModelReport& f : r.flexure_models) {

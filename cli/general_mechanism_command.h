@@ -28,6 +28,9 @@ struct GeneralAnalyzeRequest {
   std::string csv;
   bool json = false;
   int points = 0;  // --points when given, else 0
+  // --stable: at every grid value the equilibrium stable under the input's control
+  // (mechanisms/general/stable_selection.h); exit 3 where none was found.
+  bool stable = false;
   // The first flag of the constant-force analysis given on the command line (--method,
   // --material, ...), empty when none: refused for the general form, which does not use it.
   std::string foreign_flag;

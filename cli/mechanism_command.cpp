@@ -640,7 +640,8 @@ void register_mechanism_command(CLI::App& app) {
                     args->stable,
                     "Exact model: where the stroke from the PRBM start is unstable with the "
                     "slider held, follow a stable branch instead (serial chains; the JSON's "
-                    "stable_search says what was done)");
+                    "stable_search says what was done). A general mechanism file: at every "
+                    "input the equilibrium stable under its control (exit 3 where none is found)");
   args->fatigue.add_to(*analyze);
   analyze->callback([args, analyze] {
     require_in_range(args->points, "--points", 2, 100000);
@@ -657,6 +658,7 @@ void register_mechanism_command(CLI::App& app) {
       request.flexure_models = args->flexure_models;
       request.flexure_tol = args->flexure_tol;
       request.check_flexures = args->check_flexures;
+      request.stable = args->stable;
       if (!general_file) {
         // A constant-force design in its general form (catalogue_general.h).
         const MechanismDesign d = resolve(args->what);
@@ -680,7 +682,8 @@ void register_mechanism_command(CLI::App& app) {
           if (option->count() == 0 || option->get_positional() || name == "--points" ||
               name == "--json" || name == "--model" || (general_file && name == "--input") ||
               name == "--out" || name == "--csv" || name == "--flexure-model" ||
-              name == "--flexure-tol" || name == "--check-flexures" || name == "--help") {
+              name == "--flexure-tol" || name == "--check-flexures" ||
+              (general_file && name == "--stable") || name == "--help") {
             continue;
           }
           if (request.foreign_flag.empty()) request.foreign_flag = name;

@@ -14,6 +14,7 @@
 #include "flexure/mechanisms/general/general_exact.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
 #include "flexure/mechanisms/general/general_prbm.h"
+#include "flexure/mechanisms/general/stable_selection.h"
 #include "python/object_support.h"
 
 namespace py = pybind11;
@@ -445,6 +446,25 @@ void bind_results(py::module_& m) {
       py::arg("mechanism"),
       py::arg("options") = GeneralExactOptions{},
       "Each flexure under its own model (GeneralMechanism.set_flexure_model).");
+  py::class_<StableSelection>(
+      m,
+      "StableSelection",
+      "select_stable_points' answer (docs/mechanisms.md \"Stable equilibria (--stable)\"): "
+      "result (the path with one stable point per grid value), stable, grid_values, "
+      "without_stable, snaps, search.")
+      .def_readonly("result", &StableSelection::result)
+      .def_readonly("stable", &StableSelection::stable)
+      .def_readonly("grid_values", &StableSelection::grid_values)
+      .def_readonly("without_stable", &StableSelection::without_stable)
+      .def_readonly("snaps", &StableSelection::snaps)
+      .def_readonly("search", &StableSelection::search);
+  m.def("select_stable_points",
+        &select_stable_points,
+        py::arg("mechanism"),
+        py::arg("path"),
+        "At each grid value of the controlled quantity the traced equilibrium stable under the "
+        "input's control, continuing the branch of the value before (`mechanism analyze "
+        "--stable`).");
   m.def("check_general_mechanism",
         &check_general_mechanism,
         py::arg("mechanism"),

@@ -5,10 +5,12 @@
 // In the mixed Newton system a flexure that is not exact is a cantilever clamped into its root
 // body and loaded at its tip by the end loads of its far body: its unknowns are those tip loads
 // (the exact flexures keep their root loads), and the model gives the tip's pose in the root
-// frame. The models are the beam's --method rungs (elements/): linear theory, the BCM, Su's PR-3R
-// (general constants), the chained BCM, and the flexure's own PRBM element (small-length: a pin at
-// mid-length, K = EI/l, Howell eq. 5.14; fixed-pinned: Howell's average 1R, pivot (1 - gamma) l
-// from the clamp, K = gamma K_Theta EI/l, eq. 5.72).
+// frame. The CBCM is the exception: it keeps the root loads too and is marched from them
+// (elements/cbcm_march.h), which needs no load path (model_tip's CBCM remains for callers that
+// give tip loads). The models are the beam's --method rungs (elements/): linear theory, the BCM,
+// Su's PR-3R (general constants), the chained BCM, and the flexure's own PRBM element
+// (small-length: a pin at mid-length, K = EI/l, Howell eq. 5.14; fixed-pinned: Howell's average 1R,
+// pivot (1 - gamma) l from the clamp, K = gamma K_Theta EI/l, eq. 5.72).
 //
 // The expected error of a rung is the tip position error per length that the model ladder's map
 // gives at the loads the flexure carries (beam/ladder_selector.h: 1.5 times the largest measured

@@ -9,6 +9,8 @@
 #include <sstream>
 
 #include "flexure/beam/physical_beam.h"
+#include "flexure/elements/beam_constraint_model.h"
+#include "flexure/elements/cbcm_march.h"
 #include "flexure/mechanisms/general/arclength_path.h"
 #include "flexure/mechanisms/general/exact_stability.h"
 #include "flexure/mechanisms/general/flexure_models.h"
@@ -54,10 +56,15 @@ struct FlexureBeam {
   double rest_turn = 0.0;  // the rest tangent's turn from end a to end b (kappa0 l), rad
   // At kEnergySamples equal arc lengths: EI (scaled) and the section (m), for a taper.
   std::vector<double> sample_EI, sample_width, sample_thickness;
-  // kExact: an elastica with unknowns w = its root loads (m0, Nx, Ny). Any other model (mixed):
-  // a cantilever under its tip loads, unknowns w = (M_tip, Nx, Ny) (flexure_models.h).
+  // kExact: an elastica with unknowns w = its root loads (m0, Nx, Ny). kCbcm (mixed): the
+  // chained BCM marched from the same root loads (cbcm_march.h): a flexure whose tip under dead
+  // loads would snap (the inclined bistable beam) stays regular, as the exact one does. Any other
+  // model (mixed): a cantilever under its tip loads, unknowns w = (M_tip, Nx, Ny)
+  // (flexure_models.h).
   FlexureModel model = FlexureModel::kExact;
   int elements = 6;
+  // Unknowns w are the root loads (the exact elastica and the marched CBCM).
+  bool root_loads() const { return model == FlexureModel::kExact || model == FlexureModel::kCbcm; }
 };
 
 // The tip state of a beam integrated from its root loads: x, y, theta, m in the root frame.
@@ -216,15 +223,39 @@ class ExactSystem {
     return true;
   }
 
+  // A CBCM flexure's tip (scaled, root frame; tip.m the bending moment there) marched from its
+  // root loads w = (m0, Nx, Ny) (scaled); `march` (optional) keeps the nodes (per length).
+  static bool cbcm_state(const FlexureBeam& b,
+                         const Eigen::Vector3d& w,
+                         BeamTip& tip,
+                         CbcmMarchResult* march = nullptr) {
+    const double l = b.length, EI = b.EI;
+    const double inverse_d = std::isfinite(b.EA) ? EI / (b.EA * l * l) : 0.0;
+    CbcmMarchResult r;
+    if (!cbcm_march(b.elements,
+                    inverse_d,
+                    w[0] * l / EI,
+                    w[1] * l * l / EI,
+                    w[2] * l * l / EI,
+                    r,
+                    march != nullptr)) {
+      return false;
+    }
+    tip = {r.x * l, r.y * l, r.theta, r.m * EI / l};
+    if (march != nullptr) *march = std::move(r);
+    return true;
+  }
+
   // The nondimensional tip loads and tip of flexure i at z (any model); false if not computable.
   bool flexure_state(const VectorXd& z, std::size_t i, FlexureTipLoad& load, FlexureTip& t) {
     const FlexureBeam& b = beams_[i];
     const Eigen::Vector3d w = z.segment<3>(flexure_offset() + 3 * static_cast<int>(i));
     BeamTip tip;
-    if (b.model != FlexureModel::kExact) {
+    if (!b.root_loads()) {
       return model_state(b, w, tip, &load, &t);
     }
-    if (!integrate(b, w, tip, nullptr, 0, &report_integrator_)) {
+    if (b.model == FlexureModel::kCbcm ? !cbcm_state(b, w, tip)
+                                       : !integrate(b, w, tip, nullptr, 0, &report_integrator_)) {
       return false;
     }
     const double l2 = b.length * b.length / b.EI;
@@ -247,7 +278,11 @@ class ExactSystem {
       const Eigen::Vector3d w = z.segment<3>(o);
       BeamTip tip;
       double m0 = w[0];
-      if (b.model != FlexureModel::kExact) {
+      if (b.model == FlexureModel::kCbcm) {
+        if (!cbcm_state(b, w, tip)) {
+          return false;
+        }
+      } else if (b.model != FlexureModel::kExact) {
         if (!model_state(b, w, tip)) {
           return false;
         }
@@ -535,6 +570,45 @@ class ExactSystem {
     return shape;
   }
 
+  // A CBCM flexure's shape at the arc lengths `stations` (scaled) from its root loads w: each
+  // element's BCM cubic between its nodes (y(xi) = (3y - theta) xi^2 + (theta - 2y) xi^3 per
+  // element length, its axial displacement x spread evenly), root frame, scaled.
+  static std::vector<ShapePoint> cbcm_shape_at(const FlexureBeam& b,
+                                               const Eigen::Vector3d& w,
+                                               const std::vector<double>& stations) {
+    BeamTip tip;
+    CbcmMarchResult march;
+    if (!cbcm_state(b, w, tip, &march)) {
+      throw InvalidInput("the CBCM march failed at these loads");
+    }
+    const int n = b.elements;
+    const double l = b.length, h = 1.0 / n;
+    std::vector<ShapePoint> shape;
+    shape.reserve(stations.size());
+    for (double st : stations) {
+      const double u = std::clamp(st / l, 0.0, 1.0) * n;
+      const int j = std::min(static_cast<int>(u), n - 1);
+      const double xi = u - j;
+      const ChainPose& a = march.nodes[static_cast<std::size_t>(j)];
+      const ChainPose& e = march.nodes[static_cast<std::size_t>(j + 1)];
+      const double c = std::cos(a.theta), sn = std::sin(a.theta);
+      const double dx = (e.x - a.x) / h, dy = (e.y - a.y) / h;
+      const double ax = c * dx + sn * dy;  // 1 + x_j
+      const double yj = -sn * dx + c * dy;
+      const double th = e.theta - a.theta;
+      const double Y = (3.0 * yj - th) * xi * xi + (th - 2.0 * yj) * xi * xi * xi;
+      const double dY = 2.0 * (3.0 * yj - th) * xi + 3.0 * (th - 2.0 * yj) * xi * xi;
+      const double lx = h * ax * xi, ly = h * Y;
+      ShapePoint p;
+      p.s = st;
+      p.x = l * (a.x + c * lx - sn * ly);
+      p.y = l * (a.y + sn * lx + c * ly);
+      p.theta = a.theta + std::atan2(dY, ax);
+      shape.push_back(p);
+    }
+    return shape;
+  }
+
   // The verdicts of the equilibrium z at input s (exact_stability.h): each exact flexure's own
   // second variation with its ends held, plus the condensed stiffness of the mechanism's free
   // directions with the input held (displacement control) or free under its dead load (force
@@ -577,7 +651,7 @@ class ExactSystem {
         K(2, 2) = 4.0 * EI / l;
       }
       B += T.transpose() * K * T;
-      if (b.model != FlexureModel::kExact) {
+      if (!b.root_loads()) {
         flexure_notes += "; flexure '" + b.flexure->name + "' (" +
                          std::string(flexure_model_name(b.model)) +
                          ") judged by its tip relation only";
@@ -591,11 +665,28 @@ class ExactSystem {
       chain.end = b.pinned_tip ? EndCondition::kPinned : EndCondition::kFixed;
       StabilityOptions so;
       so.critical_tolerance = critical_tolerance;
-      const Stability fv = equilibrium_stability(
-          chain,
-          Reaction{w[1], w[2], 0.0},
-          [&](const std::vector<double>& st) { return shape_at(i, w, st); },
-          so);
+      Stability fv;
+      if (b.model == FlexureModel::kCbcm) {
+        // The CBCM has no energy of its own here (cbcm_path.h: not assembled): the elastica's
+        // second variation on the CBCM's shape (each element's cubic), at the verdict's
+        // stations without refinement. Its margin is the exact one's to the CBCM's accuracy
+        // (docs/mechanisms.md "The inclined bistable beam with the CBCM").
+        try {
+          const Reaction support{w[1], w[2], 0.0};
+          fv = equilibrium_stability(
+              chain, support, cbcm_shape_at(b, w, stability_stations(chain, support, so)), so);
+          fv.message += " (the elastica's second variation on the CBCM's shape)";
+        } catch (const InvalidInput& e) {
+          fv = not_checked_stability(std::string("the CBCM's shape could not be judged: ") +
+                                     e.what());
+        }
+      } else {
+        fv = equilibrium_stability(
+            chain,
+            Reaction{w[1], w[2], 0.0},
+            [&](const std::vector<double>& st) { return shape_at(i, w, st); },
+            so);
+      }
       if (!fv.judged()) {
         ++flexures_unjudged;
         flexure_notes += "; flexure '" + b.flexure->name + "' not judged: " + fv.message;
@@ -1309,6 +1400,44 @@ GeneralPrbmResult solve_general_mixed(const GeneralMechanism& mechanism,
           rung_title(r.model, 6),
           mapped,
           passed[i].empty() ? std::string() : "; cheaper, but not within it: " + joined(passed[i]));
+    }
+  }
+  // A CBCM flexure: its elements' largest deflection against the BCM's stated range (|y| <= 0.1
+  // of an element, Awtar et al.), from the tip loads and tips recorded (m0 = mu - Fx y + Fy x).
+  for (std::size_t i = 0; i < F; ++i) {
+    const FlexureModelReport& r = reports[i];
+    if (r.model != FlexureModel::kCbcm) continue;
+    const Flexure& f = mechanism.flexures[i];
+    const Vec2 pa = mechanism.point(f.a), pb = mechanism.point(f.b);
+    const double l = std::hypot(pb.x - pa.x, pb.y - pa.y);
+    // 1/d = EI/(EA l^2) = t^2/(12 l^2) (rectangle).
+    const double inverse_d = f.extensible ? f.thickness * f.thickness / (12.0 * l * l) : 0.0;
+    double largest = 0.0;
+    for (std::size_t k = 0; k < r.loads.size(); ++k) {
+      const FlexureTipLoad& l = r.loads[k];
+      const FlexureTip& t = r.tips[k];
+      CbcmMarchResult march;
+      if (cbcm_march(r.elements, inverse_d, l.mu - l.Fx * t.y + l.Fy * t.x, l.Fx, l.Fy, march)) {
+        largest = std::max(largest, march.max_element_deflection);
+      }
+    }
+    if (largest > bcm::kValidDeflection) {
+      result.warn(WarningKind::kOther,
+                  fmt::format("flexure '{}': an element of its CBCM ({} elements) deflects {:.3g} "
+                              "of its length, past the BCM's stated range {} (Awtar et al.): use "
+                              "more elements",
+                              f.name,
+                              r.elements,
+                              largest,
+                              bcm::kValidDeflection));
+    }
+    if (!result.converged()) {
+      result.message += fmt::format(
+          "; flexure '{}' is a CBCM of {} elements: too few elements can give the chain a fold "
+          "the elastica does not have (docs/mechanisms.md \"The inclined bistable beam with the "
+          "CBCM\"), more follow the elastica closer",
+          f.name,
+          r.elements);
     }
   }
   result.flexure_models = std::move(reports);

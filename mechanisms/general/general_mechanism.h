@@ -73,9 +73,10 @@ enum class PrbmKind {
 // exact` solves every one as an elastica, whatever this says; `--model mixed`
 // (solve_general_mixed, general_exact.h) gives each flexure the model named here: the exact
 // elastica, its PRBM element (small-length or fixed-pinned), a rung of the model ladder
-// (elements/: linear theory, the BCM, Su's PR-3R, the chained BCM) as a cantilever under the end
-// loads its far body puts on it, or `auto`: the cheapest rung whose mapped tip error at the loads
-// it carries is within `tolerance` of its length (docs/mechanisms.md "A model per flexure").
+// (elements/: linear theory, the BCM, Su's PR-3R as a cantilever under the end loads its far body
+// puts on it; the chained BCM marched from its root loads), or `auto`: the cheapest rung whose
+// mapped tip error at the loads it carries is within `tolerance` of its length (docs/mechanisms.md
+// "A model per flexure").
 enum class FlexureModel { kPrbm, kExact, kLinear, kBcm, kPrbm3r, kCbcm, kAuto };
 
 // A straight flexure from point a (on one body) to point b (on another) in the described
@@ -96,7 +97,8 @@ struct Flexure {
   int elements = 6;  // cbcm: BCM elements (the error map's CBCM has 6)
   // The exact model only: an extensible elastica (Reissner's beam with axial strain N/EA,
   // EA = E b h; docs/extensible.md), for a flexure that must be compressed or stretched (a beam
-  // between two bodies whose distance the joints fix). The PRBM and the ladder's models ignore it.
+  // between two bodies whose distance the joints fix). The mixed model's CBCM takes it too (its
+  // axial stiffness d = EA l^2/EI); the PRBM and the other ladder models ignore it.
   bool extensible = false;
   // The rest shape (docs/mechanisms.md "Curved and tapered flexures"), as a physical beam's
   // (beam/physical_beam.h, `flexure beam --curvature --width-tip --thickness-tip`): a stress-free

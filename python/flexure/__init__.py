@@ -35,7 +35,8 @@ from ._core import (FlexureModel, FlexureModelReport, FlexurePointResult, Flexur
                     GeneralEquilibrium, GeneralExactOptions, GeneralMechanism,
                     GeneralMechanismPoint, GeneralMechanismResult, GeneralPrbmOptions,
                     InputControl, InputCoordinate, JointKind, JointPointResult, PointLoad,
-                    PrbmKind, check_general_mechanism, solve_general_exact, solve_general_mixed,
+                    PrbmKind, StableSelection, check_general_mechanism, select_stable_points,
+                    solve_general_exact, solve_general_mixed,
                     solve_general_prbm)
 # The constant-force slider mechanisms (python/catalogue_objects.cpp; docs/mechanisms.md).
 from ._core import (AnalysisOptions, MechanismAnalysis, MechanismDesign, StrokeStability,
@@ -62,8 +63,9 @@ __all__ = ["beam", "path", "sweep", "cfm", "dynamics", "bench", "validate", "rea
            "JointPointResult", "PointLoad", "GeneralEquilibrium",
            "GeneralExactOptions", "GeneralMechanism", "GeneralMechanismPoint",
            "GeneralMechanismResult", "GeneralPrbmOptions", "InputControl", "InputCoordinate",
-           "JointKind", "PrbmKind", "check_general_mechanism", "solve_general_exact",
-           "solve_general_mixed", "solve_general_prbm",
+           "JointKind", "PrbmKind", "StableSelection", "check_general_mechanism",
+           "select_stable_points", "solve_general_exact", "solve_general_mixed",
+           "solve_general_prbm",
            "AnalysisOptions", "MechanismAnalysis", "MechanismDesign", "StrokeStability",
            "analyze_mechanism"]
 

@@ -139,3 +139,25 @@ def test_bad_descriptions_raise_invalid_input_naming_the_item():
         flexure.GeneralMechanism().body("a", {"P": (0.0, 0.0)}).point("nobody.P")
     with pytest.raises(flexure.InvalidInput, match="tolerance"):
         flexure.GeneralPrbmOptions(tolerance=-1.0)
+
+
+def test_stable_points_of_the_switch_under_torque_control():
+    # select_stable_points (`mechanism analyze --stable`): loading the switch by a dead torque
+    # from 0 to 1.2 N m it keeps its first branch up to 0.2 N m and snaps to the second before
+    # 0.3 N m (the limit torque 0.2676 N m of the path lies between them).
+    m = flexure.GeneralMechanism.from_toml(str(EXAMPLES / "howell_bistable_switch.toml"))
+    m.input(flexure.InputCoordinate.angle, "crank.O2", "crank.A",
+            control=flexure.InputControl.force, start=0.0, stop=1.2, count=13)
+    path = quiet(flexure.solve_general_prbm, m)
+    assert path.converged()
+    assert len(path.points) == 19
+    s = flexure.select_stable_points(m, path)
+    assert s.stable and s.snaps == 1 and s.grid_values == 13 and s.without_stable == 0
+    assert "between 0.2 N m and 0.3 N m" in s.search
+    assert 0.2 < path.limit_loads[0] < 0.3
+    loads = s.result.input_load
+    assert loads == pytest.approx([0.1 * k for k in range(13)], abs=1e-9)
+    angles = s.result.input
+    assert all(a < path.limit_inputs[0] for a in angles[:3])
+    assert all(a > path.limit_inputs[1] for a in angles[3:])
+    assert all(p.force_control.kind == flexure.StabilityKind.stable for p in s.result.points)
