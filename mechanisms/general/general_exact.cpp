@@ -420,10 +420,13 @@ class ExactSystem {
       BeamTip tip;
       double m0 = w[0];
       if (b.model != FlexureModel::kExact) {
-        if (!model_state(b, w, tip)) {
+        // A CBCM flexure is marched from its root loads w = (m0, Nx, Ny); any other model takes
+        // its tip loads w = (M_tip, Nx, Ny).
+        const bool cbcm = b.model == FlexureModel::kCbcm;
+        if (cbcm ? !cbcm_state(b, w, tip) : !model_state(b, w, tip)) {
           throw NoConvergence("flexure '" + f.name + "': its model has no tip at a recorded point");
         }
-        m0 = w[0] - w[1] * tip.y + w[2] * tip.x;
+        if (!cbcm) m0 = w[0] - w[1] * tip.y + w[2] * tip.x;
         const double axial_b = w[1] * std::cos(tip.theta) + w[2] * std::sin(tip.theta);
         end_stresses(r, f, b.length * L, m0 * K, w[1] * K / L, tip.m * K, axial_b * K / L);
         r.shape_x = {pa.x() * L, pb.x() * L};
