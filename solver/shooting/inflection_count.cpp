@@ -25,50 +25,23 @@ void CurvatureRecorder::accepted_step(const ElasticaPieceData& piece,
                                       const double* f1) {
   const MomentQuintic m(piece, s0, y0, f0, s1, y1, f1);
   const double kappa0 = piece.segment->kappa0;
-  const double start = y0[kElasticaM] * piece.inv_EI(s0) + kappa0;
-  const double end = y1[kElasticaM] * piece.inv_EI(s1) + kappa0;
-  if (piece.segment->EI_profile.empty()) {
-    // inv_EI(s) is 1/EI at every s: the extrema wait for samples().
-    current_.steps.push_back({m, piece.inv_EI(s0), kappa0, start, end, -1, -1});
-    return;
-  }
-  // With an EI profile the extrema of m are close to those of the curvature, and the step ends
-  // still bound every sign change to the step.
   const double h = s1 - s0;
-  const int begin = static_cast<int>(current_.values.size());
+  current_.push_back(y0[kElasticaM] * piece.inv_EI(s0) + kappa0);
+  // With a constant EI the extrema of m are those of the curvature m/EI + kappa0. With an EI
+  // profile they are close to them, and the step ends still bound every sign change to the step.
   for (double t : m.interior_extrema()) {
-    current_.values.push_back(m(t) * piece.inv_EI(s0 + t * h) + kappa0);
+    current_.push_back(m(t) * piece.inv_EI(s0 + t * h) + kappa0);
   }
-  current_.steps.push_back(
-      {m, 0.0, kappa0, start, end, begin, static_cast<int>(current_.values.size())});
-}
-
-const std::vector<double>& CurvatureRecorder::samples() const {
-  if (expanded_) return samples_;
-  samples_.clear();
-  for (const StepRecord& r : accepted_.steps) {
-    samples_.push_back(r.start);
-    if (r.values_begin >= 0) {
-      samples_.insert(samples_.end(),
-                      accepted_.values.begin() + r.values_begin,
-                      accepted_.values.begin() + r.values_end);
-    } else {
-      // With a constant EI the extrema of m are those of the curvature m/EI + kappa0.
-      for (double t : r.m.interior_extrema()) samples_.push_back(r.m(t) * r.inv_EI + r.kappa0);
-    }
-    samples_.push_back(r.end);
-  }
-  expanded_ = true;
-  return samples_;
+  current_.push_back(y1[kElasticaM] * piece.inv_EI(s1) + kappa0);
 }
 
 int CurvatureRecorder::inflection_points() const {
-  return sign_changes(samples(), 1e-9 * largest_curvature());
+  return sign_changes(accepted_, 1e-9 * largest_curvature());
 }
 
 double CurvatureRecorder::largest_curvature() const {
   double largest = 0.0;
-  for (double v : samples()) largest = std::max(largest, std::fabs(v));
+  for (double v : accepted_) largest = std::max(largest, std::fabs(v));
   return largest;
 }
 

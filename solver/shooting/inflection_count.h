@@ -16,7 +16,6 @@
 
 #include "flexure/solver/shooting/elastica_integrator.h"
 #include "flexure/solver/shooting/elastica_piece.h"
-#include "flexure/solver/shooting/moment_interpolant.h"
 #include "flexure/solver/shooting/newton.h"
 #include "flexure/solver/shooting/shooting_problem.h"
 
@@ -45,10 +44,7 @@ class CurvatureRecorder : public StepObserver, public NewtonRecorder {
   StepObserver* observer() override { return this; }
   void begin_evaluation() override { current_.clear(); }
   void accept_evaluation() override {
-    accepted_.steps.swap(current_.steps);
-    accepted_.values.swap(current_.values);
-    samples_.clear();
-    expanded_ = false;
+    accepted_.swap(current_);
     have_accepted_ = true;
   }
   bool has_accepted() const { return have_accepted_; }
@@ -59,34 +55,7 @@ class CurvatureRecorder : public StepObserver, public NewtonRecorder {
   double largest_curvature() const;
 
  private:
-  // One accepted step. Newton makes several evaluations and only the accepted one's count is
-  // used, so the interior extrema of the moment (the zeros of its quartic derivative, the costly
-  // part) are found only when the count is asked: a step keeps its quintic and its constant
-  // 1/EI. With an EI profile the curvature at the extrema needs the segment, which need not
-  // outlive the integration: those values are taken at once, into Evaluation::values.
-  struct StepRecord {
-    MomentQuintic m;
-    double inv_EI;  // 1/EI of a constant EI (deferred records)
-    double kappa0;
-    double start, end;  // the curvature at the step's ends
-    int values_begin;   // -1: deferred; else the extrema's curvature in values[begin, end)
-    int values_end;
-  };
-  struct Evaluation {
-    std::vector<StepRecord> steps;
-    std::vector<double> values;
-    void clear() {
-      steps.clear();
-      values.clear();
-    }
-  };
-  // The curvature samples of the accepted evaluation in s: the ends of every step and the
-  // moment's interior extrema between them.
-  const std::vector<double>& samples() const;
-
-  Evaluation current_, accepted_;
-  mutable std::vector<double> samples_;
-  mutable bool expanded_ = false;
+  std::vector<double> current_, accepted_;
   bool have_accepted_ = false;
 };
 

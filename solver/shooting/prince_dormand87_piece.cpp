@@ -209,7 +209,7 @@ Adjust control(
   if (largest < 0.5) {
     if (largest < 1e-7) {
       h *= 5.0;
-    } else if (largest <= 0.4) {
+    } else if (largest <= 0.3875) {
       h *= std::max(std::min(0.9 / std::pow(largest, 1.0 / 9.0), 5.0), 1.0);
     }  // else the factor is 1
     return Adjust::kIncrease;
