@@ -124,6 +124,10 @@ struct ElasticaIntegrator::Impl {
   FlexibleSegment dummy;
   std::unique_ptr<ExplicitPieceIntegrator> explicit_backend;  // every backend but kCvodes
   std::vector<double> packed;  // state and sensitivities of the explicit backends
+  // Scratch of integrate(), kept so that a call reuses their storage (a sweep point makes dozens
+  // of calls; their allocations were a few per cent of its time).
+  Eigen::Matrix<double, 4, Eigen::Dynamic> S;
+  Eigen::Matrix<double, 2, Eigen::Dynamic> dG, dN_end;
 
   ~Impl() {
     if (yS != nullptr) N_VDestroyVectorArray(yS, sens_count);
@@ -270,7 +274,8 @@ bool ElasticaIntegrator::integrate(
   }
 
   Eigen::Vector4d state = start;
-  Eigen::Matrix<double, 4, Eigen::Dynamic> S = start_sensitivity;
+  Eigen::Matrix<double, 4, Eigen::Dynamic>& S = d.S;
+  S = start_sensitivity;
   const bool want_shape = shape_s != nullptr && shape != nullptr;
   std::size_t next_shape = 0;
   if (want_shape) {
@@ -316,11 +321,11 @@ bool ElasticaIntegrator::integrate(
   // G: the follower pressures' resultant accumulated since the start of these pieces (they start
   // at the clamp whenever a follower pressure acts: ShootingProblem makes no cuts then), and dG/dp.
   Eigen::Vector2d G = Eigen::Vector2d::Zero();
-  Eigen::Matrix<double, 2, Eigen::Dynamic> dG =
-      Eigen::Matrix<double, 2, Eigen::Dynamic>::Zero(2, Ns);
+  Eigen::Matrix<double, 2, Eigen::Dynamic>& dG = d.dG;
+  dG.setZero(2, Ns);
   Eigen::Vector2d N_end = Eigen::Vector2d::Zero();
-  Eigen::Matrix<double, 2, Eigen::Dynamic> dN_end =
-      Eigen::Matrix<double, 2, Eigen::Dynamic>::Zero(2, Ns);
+  Eigen::Matrix<double, 2, Eigen::Dynamic>& dN_end = d.dN_end;
+  dN_end.setZero(2, Ns);
   const double lf = forces.load_factor;
   for (const IntegrationPiece& piece : pieces) {
     const int j = piece.segment;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 #include <utility>
 
@@ -254,6 +255,7 @@ bool ShootingProblem::evaluate(const Eigen::VectorXd& z,
   // link or a node load), so d(end)/d(x, y at the cut) is the unit vector of x or y; theta and m
   // get a column each.
   std::vector<ForceDerivative> force_derivs;
+  force_derivs.reserve(3);      // Nx, Ny, lambda
   std::vector<int> force_cols;  // global column of each force sensitivity
   if (want_jacobian) {
     for (int idx : {index_Nx_, index_Ny_}) {
@@ -288,11 +290,19 @@ bool ShootingProblem::evaluate(const Eigen::VectorXd& z,
     std::vector<ForceDerivative> derivs;
     Eigen::Matrix<double, 4, Eigen::Dynamic> start_sens;
   };
-  const auto columns = [&](int free_start) {
+  // `last_use`: force_derivs is not needed after this call, so its vectors are moved, not copied.
+  const auto columns = [&](int free_start, bool last_use) {
     Columns c;
     c.start = want_jacobian ? free_start : 0;
+    c.derivs.reserve(c.start + force_derivs.size());
     c.derivs.resize(c.start);
-    c.derivs.insert(c.derivs.end(), force_derivs.begin(), force_derivs.end());
+    if (last_use) {
+      c.derivs.insert(c.derivs.end(),
+                      std::make_move_iterator(force_derivs.begin()),
+                      std::make_move_iterator(force_derivs.end()));
+    } else {
+      c.derivs.insert(c.derivs.end(), force_derivs.begin(), force_derivs.end());
+    }
     const int Ns = static_cast<int>(c.derivs.size());
     c.start_sens = Eigen::Matrix<double, 4, Eigen::Dynamic>::Zero(4, Ns);
     if (c.start == 1) c.start_sens(3, 0) = 1.0;  // m
@@ -302,8 +312,8 @@ bool ShootingProblem::evaluate(const Eigen::VectorXd& z,
     }
     return c;
   };
-  const Columns at_clamp = columns(1);
-  const Columns at_cut = M > 1 ? columns(2) : Columns{};
+  const Columns at_cut = M > 1 ? columns(2, false) : Columns{};
+  const Columns at_clamp = columns(1, true);
 
   out.residual.setZero(nz);
   if (want_jacobian) out.jacobian.setZero(nz, nz);
