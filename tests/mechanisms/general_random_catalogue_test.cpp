@@ -15,7 +15,12 @@
 //      1-3 degrees) and extrapolated to Delta x = 0, where the PRBM's limit has a closed form and
 //      the exact one is the straight chain's buckling load (serial chains: ssp, slp, sss).
 // Draws the catalogue refuses (MechanismDesign::finalise: an s flexure past half its link, a
-// section outside the slender-beam limits, b < h) are skipped and counted; a minimum must pass.
+// section outside the slender-beam limits, b < h, a stroke past the toggle) are skipped and
+// counted, as are draws whose catalogue exact stroke does not converge; a minimum must pass.
+// Small-length flexures are drawn at 0.05-0.25 of their link: longer ones (toward the catalogue's
+// limit of half the link) can sway on their own below the linkage's buckling load, and the
+// general and the catalogue's exact strokes then may follow different equilibrium branches (a
+// 2A-ssp draw with its middle flexure at 0.45 of its link: up to 53 % apart; docs/mechanisms.md).
 #include <gtest/gtest.h>
 
 #include <algorithm>
