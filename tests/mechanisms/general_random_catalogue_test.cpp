@@ -154,6 +154,20 @@ TEST(GeneralRandomCatalogue, RandomCatalogueDesignsGeneralAgainstCatalogue) {
         // compare with. Counted, and held to a few of the draws below.
         ++catalogue_failed;
         std::cout << "no catalogue exact stroke for " << d.name << ": " << a.message << "\n";
+        GeneralExactOptions eo;
+        eo.judge_stability = false;
+        const GeneralPrbmResult e = solve_general_exact(general_from_design(d, kPoints), eo);
+        std::cout << "  the general exact model: " << (e.converged() ? "converged" : e.message)
+                  << "; R " << d.R() << ", stroke/toggle " << d.stroke / d.toggle_stroke()
+                  << ", flexure length/link, h/length:";
+        for (int p = 1; p <= 3; ++p) {
+          const JointDesign& j = d.joints[static_cast<std::size_t>(p - 1)];
+          if (j.type != PivotType::kPin) {
+            std::cout << " " << j.length / associated_link_length(d, p) << ", "
+                      << j.thickness / j.length << ";";
+          }
+        }
+        std::cout << "\n";
         continue;
       }
       ASSERT_TRUE(a.has_exact) << a.exact_note;
