@@ -107,7 +107,9 @@ Json flexure_models_json(const std::vector<FlexureModelReport>& reports, bool ch
            {"requested", flexure_model_name(r.requested)},
            {"model", flexure_model_name(r.model)},
            {"tolerance", r.requested == FlexureModel::kAuto ? Json(r.tolerance) : Json(nullptr)},
-           {"elements", r.model == FlexureModel::kCbcm ? Json(r.elements) : Json(nullptr)},
+           {"elements",
+            r.model == FlexureModel::kCbcm || r.model == FlexureModel::kChain ? Json(r.elements)
+                                                                              : Json(nullptr)},
            {"method_reason", r.reason},
            {"expected_error_per_length", number_or_null(r.expected_error_per_length)},
            {"unmapped_points", r.unmapped_points},

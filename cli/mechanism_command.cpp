@@ -612,7 +612,8 @@ void register_mechanism_command(CLI::App& app) {
   analyze->add_option("--flexure-model",
                       args->flexure_models,
                       "--model mixed: the model of every flexure (exact, prbm, linear, bcm, "
-                      "prbm3r, cbcm, auto) or of named ones, NAME=MODEL,... (built-in designs: "
+                      "prbm3r, cbcm, chain, auto; cbcm and chain take the file's elements, "
+                      "default 6 and 100) or of named ones, NAME=MODEL,... (built-in designs: "
                       "f1, f2, f3 by pivot)");
   analyze->add_option("--flexure-tol",
                       args->flexure_tol,

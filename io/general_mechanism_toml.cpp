@@ -299,7 +299,8 @@ GeneralMechanism parse_general_mechanism_toml(const std::string& text, const std
     } catch (const InvalidInput& e) {
       r.fail(t->get("model"), e.what());
     }
-    // auto's tolerance (per length of the flexure) and the CBCM's elements (--model mixed).
+    // auto's tolerance (per length of the flexure) and the CBCM's or the chain algorithm's
+    // elements (--model mixed; absent: the model's default, 6 or 100, Flexure::model_elements).
     if (t->get("tolerance") != nullptr) {
       if (f.model != FlexureModel::kAuto) {
         r.fail(t->get("tolerance"), "tolerance belongs to model = \"auto\"");
@@ -311,12 +312,13 @@ GeneralMechanism parse_general_mechanism_toml(const std::string& text, const std
              "error per length of the flexure, e.g. tolerance = 1e-3)");
     }
     if (t->get("elements") != nullptr) {
-      if (f.model != FlexureModel::kCbcm) {
-        r.fail(t->get("elements"), "elements belongs to model = \"cbcm\"");
+      if (f.model != FlexureModel::kCbcm && f.model != FlexureModel::kChain) {
+        r.fail(t->get("elements"), "elements belongs to model = \"cbcm\" or \"chain\"");
       }
       const double n = *r.number("elements", std::nullopt, true);
       if (n != std::floor(n) || n < 1 || n > 2000) {
-        r.fail(t->get("elements"), "elements must be a whole number in [1, 2000]");
+        r.fail(t->get("elements"),
+               fmt::format("elements must be a whole number in [1, 2000] (got {:g})", n));
       }
       f.elements = static_cast<int>(n);
     }

@@ -92,7 +92,9 @@ std::string general_mechanism_to_toml(const GeneralMechanism& m, const std::stri
       out << "model = " << quoted(std::string(flexure_model_name(f.model))) << "\n";
     }
     if (f.model == FlexureModel::kAuto) out << "tolerance = " << number(f.tolerance) << "\n";
-    if (f.model == FlexureModel::kCbcm) out << "elements = " << f.elements << "\n";
+    if ((f.model == FlexureModel::kCbcm || f.model == FlexureModel::kChain) && f.elements != 0) {
+      out << "elements = " << f.elements << "\n";
+    }
     if (f.extensible) out << "extensible = true\n";
   }
   for (const LinearSpring& s : m.linear_springs) {

@@ -40,6 +40,7 @@ void bind_kinds(py::module_& m) {
       .value("bcm", FlexureModel::kBcm)
       .value("prbm3r", FlexureModel::kPrbm3r)
       .value("cbcm", FlexureModel::kCbcm)
+      .value("chain", FlexureModel::kChain)
       .value("auto", FlexureModel::kAuto);
   py::enum_<InputCoordinate>(m, "InputCoordinate", "x, y of a body point, or a line's angle.")
       .value("x", InputCoordinate::kX)
@@ -150,7 +151,7 @@ void bind_description(py::module_& m) {
           py::arg("prbm") = PrbmKind::kSmallLengthPivot,
           py::arg("model") = FlexureModel::kPrbm,
           py::arg("tolerance") = 0.0,
-          py::arg("elements") = 6,
+          py::arg("elements") = 0,
           py::arg("curvature") = 0.0,
           py::arg("length") = 0.0,
           py::arg("width_tip") = 0.0,

@@ -12,6 +12,7 @@
 #include "flexure/elements/linear_beam.h"
 #include "flexure/elements/prbm3r.h"
 #include "flexure/elements/small_length_flexural_pivot.h"
+#include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism::general {
@@ -44,7 +45,8 @@ bool prbm_element_tip(PrbmKind kind,
     if (why != nullptr) {
       *why =
           "the fixed-guided PRBM element has two pivots and is not a cantilever under tip loads; "
-          "choose exact, linear, bcm, prbm3r or cbcm for it (or --model prbm for every flexure)";
+          "choose exact, linear, bcm, prbm3r, cbcm or chain for it (or --model prbm for every "
+          "flexure)";
     }
     return false;
   }
@@ -124,6 +126,24 @@ bool model_tip(FlexureModel model,
         const CbcmResult r = ChainedBcmSolver(o).solve(c);
         if (!r.converged()) break;
         tip = from_pose(r.tip_pose());
+        return true;
+      }
+      case FlexureModel::kChain: {
+        // Howell's chain algorithm (§7.2) on the cantilever under the dead tip loads, followed
+        // from the unloaded beam (the branch a mechanism starts on), as `flexure beam --method
+        // chain`, but with exactly the N asked for: its self-check may not double the elements,
+        // since a count that changed between two residuals of the mechanism's Newton system
+        // would make the tip jump by the discretisation error.
+        ChainAlgorithmSolver::Options o;
+        o.elements = elements;
+        o.refine_elements = false;
+        o.record_load_path = false;
+        const ChainResult r = ChainAlgorithmSolver(o).solve(c.load);
+        if (!r.converged()) {
+          if (why != nullptr) *why = "the chain algorithm did not converge: " + r.message;
+          return false;
+        }
+        tip = from_pose(r.tip_pose);
         return true;
       }
       default:
@@ -212,7 +232,9 @@ double mapped_flexure_error(FlexureModel model, int elements, const FlexureTipLo
       method = BeamMethod::kCbcm;
       break;
     default:
-      return kNaN;  // the PRBM element's average constants are not the map's 1R model
+      // The PRBM element's average constants are not the map's 1R model; the chain algorithm
+      // (any N) is not on the map.
+      return kNaN;
   }
   double n = 0.0, alpha2 = 0.0, mu = 0.0;
   if (!howell_load(load, n, alpha2, mu)) return kNaN;

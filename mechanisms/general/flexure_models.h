@@ -8,7 +8,8 @@
 // frame. The CBCM is the exception: it keeps the root loads too and is marched from them
 // (elements/cbcm_march.h), which needs no load path (model_tip's CBCM remains for callers that
 // give tip loads). The models are the beam's --method rungs (elements/): linear theory, the BCM,
-// Su's PR-3R (general constants), the chained BCM, and the flexure's own PRBM element
+// Su's PR-3R (general constants), the chained BCM, Howell's chain algorithm (§7.2, N elements,
+// solver/chain/chain_algorithm_solver.h), and the flexure's own PRBM element
 // (small-length: a pin at mid-length, K = EI/l, Howell eq. 5.14; fixed-pinned: Howell's average 1R,
 // pivot (1 - gamma) l from the clamp, K = gamma K_Theta EI/l, eq. 5.72).
 //
@@ -19,7 +20,7 @@
 // flexure in a mechanism carries its pin force nearly along it). A load outside both maps (|n| >
 // 100, alpha2 above 10 or, for |n| > 2, above 2, |mu| > 2, no transverse force with an axial one)
 // or a model they do not describe (the PRBM element with its average constants, a CBCM of other
-// than 6 elements) has none.
+// than 6 elements, the chain algorithm) has none.
 #include <cmath>
 #include <limits>
 #include <string>
@@ -40,9 +41,9 @@ struct FlexureTip {
   double x = 1.0, y = 0.0, theta = 0.0;
 };
 
-// The tip of a flexure of `model` (prbm, linear, bcm, prbm3r or cbcm with `elements`) under
-// `load`. False, with the reason in `why`, where the model has no answer (the BCM past its
-// buckling load, a PR-3R or CBCM path that does not converge, a fixed-guided PRBM element).
+// The tip of a flexure of `model` (prbm, linear, bcm, prbm3r, or cbcm or chain with `elements`)
+// under `load`. False, with the reason in `why`, where the model has no answer (the BCM past its
+// buckling load, a PR-3R, CBCM or chain path that does not converge, a fixed-guided PRBM element).
 bool model_tip(FlexureModel model,
                PrbmKind prbm,
                int elements,
@@ -72,7 +73,7 @@ struct FlexureModelReport {
   std::string name;                               // the flexure's
   FlexureModel requested = FlexureModel::kExact;  // its model key (auto, or the model itself)
   FlexureModel model = FlexureModel::kExact;      // the model solved with
-  int elements = 6;                               // cbcm
+  int elements = 6;                               // cbcm, chain
   double tolerance = 0.0;                         // auto's, per length (0: none given)
   std::string reason;                             // which model and why
   // The largest mapped tip error per length over the recorded points: 0 for the exact elastica,

@@ -1224,6 +1224,8 @@ std::string rung_title(FlexureModel m, int elements) {
       return "PR-3R (Su)";
     case FlexureModel::kCbcm:
       return fmt::format("the CBCM ({} elements)", elements);
+    case FlexureModel::kChain:
+      return fmt::format("the chain algorithm ({} elements)", elements);
     case FlexureModel::kPrbm:
       return "its PRBM element";
     case FlexureModel::kExact:
@@ -1295,9 +1297,11 @@ GeneralPrbmResult solve_general_mixed(const GeneralMechanism& mechanism,
       throw InvalidInput(mechanism.where(f.line) + "flexure '" + f.name +
                          "': model 'prbm' in the mixed model needs a cantilever PRBM element "
                          "(small-length or fixed-pinned); the fixed-guided element has two "
-                         "pivots: choose exact, linear, bcm, prbm3r, cbcm or auto for it");
+                         "pivots: choose exact, linear, bcm, prbm3r, cbcm, chain or auto for it");
     }
-    if (f.model == FlexureModel::kCbcm) elements[i] = f.elements;
+    if (f.model == FlexureModel::kCbcm || f.model == FlexureModel::kChain) {
+      elements[i] = f.model_elements();
+    }
     models[i] = f.model == FlexureModel::kAuto ? ladder.front() : f.model;
   }
   GeneralPrbmResult result;

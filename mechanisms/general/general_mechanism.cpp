@@ -56,6 +56,8 @@ std::string_view flexure_model_name(FlexureModel model) {
       return "prbm3r";
     case FlexureModel::kCbcm:
       return "cbcm";
+    case FlexureModel::kChain:
+      return "chain";
     case FlexureModel::kAuto:
       return "auto";
   }
@@ -69,13 +71,14 @@ FlexureModel parse_flexure_model(std::string_view name) {
                          FlexureModel::kBcm,
                          FlexureModel::kPrbm3r,
                          FlexureModel::kCbcm,
+                         FlexureModel::kChain,
                          FlexureModel::kAuto}) {
     if (flexure_model_name(m) == name) {
       return m;
     }
   }
   throw InvalidInput("model '" + std::string(name) +
-                     "' is not one of prbm, exact, linear, bcm, prbm3r, cbcm, auto");
+                     "' is not one of prbm, exact, linear, bcm, prbm3r, cbcm, chain, auto");
 }
 
 void set_flexure_model(GeneralMechanism& mechanism,
@@ -89,9 +92,15 @@ void set_flexure_model(GeneralMechanism& mechanism,
     names += (names.empty() ? "" : ", ") + f.name;
     if (!flexure.empty() && f.name != flexure) continue;
     found = true;
-    f.model = model;
     if (tolerance != 0.0) f.tolerance = tolerance;
-    if (elements != 0) f.elements = elements;
+    // A count given for another model (a CBCM's 24 elements) is not this one's: a new model
+    // without elements takes its own default (Flexure::model_elements).
+    if (elements != 0) {
+      f.elements = elements;
+    } else if (f.model != model) {
+      f.elements = 0;
+    }
+    f.model = model;
   }
   if (!found) {
     throw InvalidInput("no flexure named '" + flexure + "' in " + mechanism.name +
@@ -465,9 +474,14 @@ void GeneralMechanism::validate() const {
       throw InvalidInput(item + ": model 'auto' needs a tolerance in (0, 1), the largest mapped " +
                          "tip error per length of the flexure (got " + fmt(f.tolerance) + ")");
     }
-    if (f.model == FlexureModel::kCbcm && (f.elements < 1 || f.elements > 2000)) {
-      throw InvalidInput(item + ": model 'cbcm' needs elements in [1, 2000] (got " +
-                         std::to_string(f.elements) + ")");
+    if ((f.model == FlexureModel::kCbcm || f.model == FlexureModel::kChain) &&
+        (f.elements < 0 || f.elements > 2000)) {
+      throw InvalidInput(item + ": model '" + std::string(flexure_model_name(f.model)) +
+                         "' needs elements in [1, 2000] (0: its default, " +
+                         std::to_string(f.model == FlexureModel::kChain
+                                            ? Flexure::kDefaultChainElements
+                                            : Flexure::kDefaultCbcmElements) +
+                         "; got " + std::to_string(f.elements) + ")");
     }
     links[f.a.body].insert(f.b.body);
     links[f.b.body].insert(f.a.body);

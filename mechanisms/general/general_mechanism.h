@@ -74,10 +74,12 @@ enum class PrbmKind {
 // (solve_general_mixed, general_exact.h) gives each flexure the model named here: the exact
 // elastica, its PRBM element (small-length or fixed-pinned), a rung of the model ladder
 // (elements/: linear theory, the BCM, Su's PR-3R as a cantilever under the end loads its far body
-// puts on it; the chained BCM marched from its root loads), or `auto`: the cheapest rung whose
+// puts on it; the chained BCM marched from its root loads), Howell's chain algorithm (§7.2, N rigid
+// elements; solver/chain/) as the same cantilever under its tip loads, or `auto`: the cheapest rung
+// whose
 // mapped tip error at the loads it carries is within `tolerance` of its length (docs/mechanisms.md
-// "A model per flexure").
-enum class FlexureModel { kPrbm, kExact, kLinear, kBcm, kPrbm3r, kCbcm, kAuto };
+// "A model per flexure"; the ladder of `auto` has no chain: the error maps do not describe it).
+enum class FlexureModel { kPrbm, kExact, kLinear, kBcm, kPrbm3r, kCbcm, kChain, kAuto };
 
 // A straight flexure from point a (on one body) to point b (on another) in the described
 // configuration; its length is their distance (a given length must agree to 1e-6).
@@ -94,7 +96,10 @@ struct Flexure {
   FlexureModel model = FlexureModel::kPrbm;
   // auto: the largest mapped tip position error allowed, per length of the flexure (> 0).
   double tolerance = 0.0;
-  int elements = 6;  // cbcm: BCM elements (the error map's CBCM has 6)
+  // cbcm: BCM elements; chain: the chain algorithm's rigid elements N. 0: the model's default
+  // (model_elements(): the CBCM's 6, the error map's; the chain's 100, as `flexure beam --method
+  // chain`).
+  int elements = 0;
   // The exact model only: an extensible elastica (Reissner's beam with axial strain N/EA,
   // EA = E b h; docs/extensible.md), for a flexure that must be compressed or stretched (a beam
   // between two bodies whose distance the joints fix). The mixed model's CBCM takes it too (its
@@ -113,6 +118,14 @@ struct Flexure {
   double width_tip = 0.0;
   double thickness_tip = 0.0;
   int line = 0;
+
+  // The elements its model uses: `elements`, or the model's default when 0 (see there).
+  int model_elements() const {
+    if (elements != 0) return elements;
+    return model == FlexureModel::kChain ? kDefaultChainElements : kDefaultCbcmElements;
+  }
+  static constexpr int kDefaultCbcmElements = 6;
+  static constexpr int kDefaultChainElements = 100;
 
   bool curved() const { return curvature != 0.0; }
   bool tapered() const { return width_tip > 0.0 || thickness_tip > 0.0; }
@@ -183,7 +196,7 @@ struct Input {
 
 std::string_view prbm_kind_name(PrbmKind kind);    // "small-length", "fixed-pinned", "fixed-guided"
 std::string_view joint_kind_name(JointKind kind);  // "pin", "slider", "weld"
-// "prbm", "exact", "linear", "bcm", "prbm3r", "cbcm", "auto" (the beam's --method names).
+// "prbm", "exact", "linear", "bcm", "prbm3r", "cbcm", "chain", "auto" (the beam's --method names).
 std::string_view flexure_model_name(FlexureModel model);
 // The model of that name; throws InvalidInput listing the names.
 FlexureModel parse_flexure_model(std::string_view name);
@@ -256,7 +269,8 @@ struct GeneralMechanism {
 };
 
 // Sets the model of the flexure named `flexure` (every flexure when empty) of `mechanism`, with
-// auto's tolerance (per length; kept when 0) and the CBCM's elements (kept when 0). Throws
+// auto's tolerance (per length; kept when 0) and the CBCM's or chain's elements (kept when 0 and
+// the model is unchanged; a new model without elements takes its default). Throws
 // InvalidInput for an unknown flexure, listing the mechanism's.
 void set_flexure_model(GeneralMechanism& mechanism,
                        const std::string& flexure,

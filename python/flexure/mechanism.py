@@ -96,7 +96,7 @@ def analyze(mechanism, *, points=None, method=None, tol=None, out=None, prbm_onl
     model       'prbm' | 'exact' | 'both' | 'mixed' (`--model`; mixed: each flexure its own model
                 of the ladder, docs/models.md; mixed also takes a built-in design)
     flexure_models  with model='mixed' (`--flexure-model`): one model for every flexure ('exact',
-                'prbm', 'linear', 'bcm', 'prbm3r', 'cbcm', 'auto'), or a dict {flexure name:
+                'prbm', 'linear', 'bcm', 'prbm3r', 'cbcm', 'chain', 'auto'), or a dict {flexure name:
                 model} (built-in designs: 'f1', 'f2', 'f3' by pivot), or the CLI's text
                 'NAME=MODEL,...'
     flexure_tol auto's tolerance, the largest mapped tip error per length (`--flexure-tol`)

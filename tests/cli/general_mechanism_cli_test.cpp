@@ -290,8 +290,9 @@ TEST(GeneralMechanismCli, MixedModelKeysAndRefusals) {
   };
   expect_refused("mechanism analyze " + with("model = \"auto\"") + " --model mixed",
                  {"switch.toml:", "needs a tolerance"});
-  expect_refused("mechanism analyze " + with("model = \"fem\"") + " --model mixed",
-                 {"switch.toml:", "not one of prbm, exact, linear, bcm, prbm3r, cbcm, auto"});
+  expect_refused(
+      "mechanism analyze " + with("model = \"fem\"") + " --model mixed",
+      {"switch.toml:", "not one of prbm, exact, linear, bcm, prbm3r, cbcm, chain, auto"});
   expect_refused("mechanism analyze " + with("model = \"bcm\"\nelements = 4") + " --model mixed",
                  {"elements belongs to model = \"cbcm\""});
   const CommandResult r =
@@ -311,6 +312,23 @@ TEST(GeneralMechanismCli, MixedModelKeysAndRefusals) {
   for (int i : {0, 2}) {
     EXPECT_NEAR(
         j["equilibria"][i]["input"].get<double>(), x["equilibria"][i]["input"].get<double>(), 1e-8);
+  }
+  // The chain algorithm per flexure: its default 100 elements, a bad count refused with the line.
+  expect_refused("mechanism analyze " + with("model = \"chain\"\nelements = 0") + " --model mixed",
+                 {"switch.toml:", "flexure", "elements must be a whole number in [1, 2000]"});
+  const CommandResult chain = run_flexure("mechanism analyze " + kSwitch +
+                                          " --model mixed --flexure-model chain "
+                                          "--input '-5deg:33deg:39' --json");
+  ASSERT_EQ(chain.exit_code, 0) << chain.err;
+  const auto c = nlohmann::json::parse(chain.out);
+  EXPECT_EQ(c["flexure_models"][0]["model"], "chain");
+  EXPECT_EQ(c["flexure_models"][0]["elements"], 100);
+  EXPECT_TRUE(c["flexure_models"][0]["expected_error_per_length"].is_null());
+  // Its stable positions, where the flexure is unstressed, are the exact model's.
+  ASSERT_EQ(c["equilibria"].size(), 3u);
+  for (int i : {0, 2}) {
+    EXPECT_NEAR(
+        c["equilibria"][i]["input"].get<double>(), x["equilibria"][i]["input"].get<double>(), 1e-8);
   }
   expect_refused("mechanism analyze 3A-sss --model mixed --flexure-model f7=bcm",
                  {"f7", "f1, f2, f3"});

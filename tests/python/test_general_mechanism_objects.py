@@ -101,6 +101,24 @@ def test_parallel_guide_exact_stiffness_is_24_EI_over_L_cubed():
     assert F / x == pytest.approx(24 * EI / L**3, rel=1e-4)
 
 
+def test_parallel_guide_chain_flexures_meet_the_exact_model():
+    # Howell's chain algorithm per flexure (FlexureModel.chain) on the shipped parallel guide's
+    # Delrin strips (docs/examples/parallel_guide.toml: l = 22 mm, b = 7 mm, h = 0.8 mm,
+    # E = 2.9 GPa, x to 4 mm): the exact model's input loads within the chain's discretisation
+    # error (measured 7e-7 of the largest load at N = 25, third order or better in 1/N:
+    # tests/mechanisms/general_chain_flexure_test.cpp).
+    guide = parallel_guide(22 * MM, 20 * MM, 7 * MM, 0.8 * MM, 2.9e9, 4 * MM)
+    exact = flexure.solve_general_mixed(guide.set_flexure_model("", flexure.FlexureModel.exact))
+    chain = flexure.solve_general_mixed(guide.set_flexure_model("", flexure.FlexureModel.chain,
+                                                                elements=25))
+    assert exact.converged() and chain.converged()
+    assert [f.model for f in chain.flexure_models] == [flexure.FlexureModel.chain] * 2
+    assert [f.elements for f in chain.flexure_models] == [25, 25]
+    scale = max(abs(F) for F in exact.input_load)
+    worst = max(abs(a - e) for a, e in zip(chain.input_load, exact.input_load))
+    assert 0 < worst < 2e-6 * scale
+
+
 def test_parallel_guide_points_report_reactions_stresses_and_shapes():
     # At a small sideways motion each flexure is the linear clamped-guided beam: end moment
     # 6 EI x/L^2, bending stress M c/I at its ends; the ground's reaction balances the input
