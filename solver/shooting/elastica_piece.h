@@ -142,15 +142,16 @@ inline double moment_second_derivative(const ElasticaPieceData& piece,
   return -cross_r2N - cross_r1dN;
 }
 
-// Right-hand side of the state and of `Ns` sensitivity columns packed as [state(4), S(:,0), ...]:
+// Right-hand side of a plain (inextensible) piece's state and of `Ns` sensitivity columns packed
+// as [state(4), S(:,0), ...]:
 //   x' = cos theta, y' = sin theta, theta' = m/EI + kappa0, m' = N_x sin theta - N_y cos theta,
 //   S' = J S + df/dp with df/dN_x = (0, 0, 0, sin theta), df/dN_y = (0, 0, 0, -cos theta).
-inline void elastica_rhs(
-    const ElasticaPieceData& piece, double s, const double* y, double* dy, int Ns) {
-  if (piece.extended) {
-    reissner_rhs(piece, s, y, dy, Ns);
-    return;
-  }
+// `Count` is int, or std::integral_constant<int, N> where the column count is known when compiled
+// (the written-out Prince-Dormand stepper, prince_dormand87_piece.cpp: the loop then unrolls; the
+// values are the same).
+template <class Count>
+inline void plain_elastica_rhs(
+    const ElasticaPieceData& piece, double s, const double* y, double* dy, Count Ns) {
   const double c = std::cos(y[kElasticaTheta]);
   const double sn = std::sin(y[kElasticaTheta]);
   const double inv_EI = piece.inv_EI(s);
@@ -159,7 +160,7 @@ inline void elastica_rhs(
   dy[kElasticaTheta] = y[kElasticaM] * inv_EI + piece.segment->kappa0;
   dy[kElasticaM] = piece.Nx * sn - piece.Ny * c;
   const double dm_dtheta = piece.Nx * c + piece.Ny * sn;
-  for (int i = 0; i < Ns; ++i) {
+  for (int i = 0; i < static_cast<int>(Ns); ++i) {
     const double* S = y + kElasticaStates * (i + 1);
     double* dS = dy + kElasticaStates * (i + 1);
     dS[kElasticaX] = -sn * S[kElasticaTheta];
@@ -167,6 +168,16 @@ inline void elastica_rhs(
     dS[kElasticaTheta] = inv_EI * S[kElasticaM];
     dS[kElasticaM] = dm_dtheta * S[kElasticaTheta] + piece.dN[i].x() * sn - piece.dN[i].y() * c;
   }
+}
+
+// The same for any piece: Reissner's extensible and shear-flexible piece has its own.
+inline void elastica_rhs(
+    const ElasticaPieceData& piece, double s, const double* y, double* dy, int Ns) {
+  if (piece.extended) {
+    reissner_rhs(piece, s, y, dy, Ns);
+    return;
+  }
+  plain_elastica_rhs(piece, s, y, dy, Ns);
 }
 
 // Where an explicit backend writes the pose at the requested arc lengths: it stops exactly on

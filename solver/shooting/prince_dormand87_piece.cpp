@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <type_traits>
 #include <utility>
 
 namespace flexure {
@@ -69,32 +70,6 @@ struct Arrays {
   double* f_end;
 };
 
-// elastica_rhs (elastica_piece.h) of a plain elastica piece with kNs sensitivity columns, its
-// expressions unchanged (so its values), inlined into the stages with the columns unrolled: a
-// call per stage and a loop of run-time length cost as much as the arithmetic.
-template <int kNs>
-inline void plain_elastica_rhs(const ElasticaPieceData& piece,
-                               double s,
-                               const double* y,
-                               double* dy) {
-  const double c = std::cos(y[kElasticaTheta]);
-  const double sn = std::sin(y[kElasticaTheta]);
-  const double inv_EI = piece.inv_EI(s);
-  dy[kElasticaX] = c;
-  dy[kElasticaY] = sn;
-  dy[kElasticaTheta] = y[kElasticaM] * inv_EI + piece.segment->kappa0;
-  dy[kElasticaM] = piece.Nx * sn - piece.Ny * c;
-  const double dm_dtheta = piece.Nx * c + piece.Ny * sn;
-  for (int i = 0; i < kNs; ++i) {
-    const double* S = y + kElasticaStates * (i + 1);
-    double* dS = dy + kElasticaStates * (i + 1);
-    dS[kElasticaX] = -sn * S[kElasticaTheta];
-    dS[kElasticaY] = c * S[kElasticaTheta];
-    dS[kElasticaTheta] = inv_EI * S[kElasticaM];
-    dS[kElasticaM] = dm_dtheta * S[kElasticaTheta] + piece.dN[i].x() * sn - piece.dN[i].y() * c;
-  }
-}
-
 // One step from (s, y) of length h, k[0] = f(s, y) given: y becomes the eighth-order solution,
 // `error` the difference of the seventh- and eighth-order ones, f_end = f(s + h, y). The sums
 // are GSL's rk8pd_apply's, term by term in the same order (see the header), and so is y0's role.
@@ -115,7 +90,8 @@ void step(const ElasticaPieceData& piece,
   const auto f = [&](double at, const double* state, double* out) {
     if constexpr (kDim > 0) {
       if (!piece.extended) {
-        plain_elastica_rhs<kDim / kElasticaStates - 1>(piece, at, state, out);
+        plain_elastica_rhs(
+            piece, at, state, out, std::integral_constant<int, kDim / kElasticaStates - 1>{});
         return;
       }
     }
