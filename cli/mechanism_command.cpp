@@ -19,6 +19,7 @@
 #include "cli/csv_output.h"
 #include "cli/fatigue_flags.h"
 #include "cli/general_mechanism_command.h"
+#include "cli/mechanism_argument.h"
 #include "cli/mechanism_geometry_output.h"
 #include "cli/modulus_output.h"
 #include "cli/slow_progress.h"
@@ -53,14 +54,6 @@ using namespace flexure::mechanism;
 
 const char* pivot_letter(PivotType t) {
   return t == PivotType::kPin ? "p" : t == PivotType::kSmall ? "s" : "l";
-}
-
-MechanismDesign resolve(const std::string& what) {
-  const bool is_file = what.size() > 5 && what.substr(what.size() - 5) == ".toml";
-  if (!is_file) return find_builtin_mechanism(what);
-  MechanismFile file = load_mechanism_file(what);
-  warn(file.warnings);
-  return std::move(file.design);
 }
 
 Json or_null(bool present, double value) { return present ? Json(value) : Json(nullptr); }
@@ -662,7 +655,7 @@ void register_mechanism_command(CLI::App& app) {
       request.stable = args->stable;
       if (!general_file) {
         // A constant-force design in its general form (catalogue_general.h).
-        const MechanismDesign d = resolve(args->what);
+        const MechanismDesign d = mechanism_design_argument(args->what);
         request.mechanism = mechanism::general::general_from_design(d, args->points);
         request.design_x0 =
             request.mechanism->input.start + stroke_displacements(d, args->points).front();
@@ -709,7 +702,7 @@ void register_mechanism_command(CLI::App& app) {
     }
     if (!args->out.empty()) io::check_output_path(args->out);
     const CsvOutput csv(args->out, args->csv);
-    MechanismDesign d = resolve(args->what);
+    MechanismDesign d = mechanism_design_argument(args->what);
     if (!args->spring_rule.empty()) apply_spring_rule(d, parse_spring_rule(args->spring_rule));
     if (!args->material.empty()) apply_material_flag(d, args->material);
     apply_plate_flags(d, args->plate, args->nu);
@@ -922,7 +915,7 @@ void register_mechanism_command(CLI::App& app) {
     }
     if (!hdf5_out.empty()) io::check_output_path(hdf5_out);
     if (!csv_out.empty()) io::check_output_path(csv_out, targs->csv.empty() ? "--out" : "--csv");
-    MechanismDesign d = resolve(targs->what);
+    MechanismDesign d = mechanism_design_argument(targs->what);
     if (!targs->material.empty()) apply_material_flag(d, targs->material);
     // A design file's force_of (written by `flexure design mechanism`) unless --force-of is given.
     o.force_of =

@@ -8,6 +8,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/mechanism_argument.h"
 #include "cli/mechanism_geometry_output.h"
 #include "flexure/io/mechanism_drawing.h"
 #include "flexure/io/mechanism_toml.h"
@@ -53,16 +54,7 @@ void register_mechanism_draw_command(CLI::App& app) {
   draw->add_flag("--json", args->json, "Print one JSON object");
   draw->callback([args] {
     check_drawing_path(args->out, "--out");
-    const bool is_file =
-        args->what.size() > 5 && args->what.substr(args->what.size() - 5) == ".toml";
-    mechanism::MechanismDesign d;
-    if (is_file) {
-      mechanism::MechanismFile file = mechanism::load_mechanism_file(args->what);
-      warn(file.warnings);
-      d = std::move(file.design);
-    } else {
-      d = mechanism::find_builtin_mechanism(args->what);
-    }
+    const mechanism::MechanismDesign d = mechanism_design_argument(args->what);
     mechanism::MechanismGeometry g = mechanism::mechanism_geometry(d);
     const std::string text = geometry_text(g, args->unit);  // checks --unit before writing
     io::DrawingOptions options;

@@ -10,6 +10,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/mechanism_argument.h"
 #include "flexure/io/general_mechanism_toml_writer.h"
 #include "flexure/io/mechanism_toml.h"
 #include "flexure/io/output_path.h"
@@ -43,16 +44,7 @@ void register_mechanism_export_command(CLI::App& app) {
   cmd->callback([args] {
     require_in_range(args->points, "--points", 2, 100000);
     if (!args->out.empty()) io::check_output_path(args->out);
-    const bool is_file =
-        args->what.size() > 5 && args->what.substr(args->what.size() - 5) == ".toml";
-    mechanism::MechanismDesign d;
-    if (is_file) {
-      mechanism::MechanismFile file = mechanism::load_mechanism_file(args->what);
-      warn(file.warnings);
-      d = std::move(file.design);
-    } else {
-      d = mechanism::find_builtin_mechanism(args->what);
-    }
+    const mechanism::MechanismDesign d = mechanism_design_argument(args->what);
     const std::string text = mechanism::general::design_as_general_toml(d, args->points);
     if (args->out.empty()) {
       std::cout << text;
