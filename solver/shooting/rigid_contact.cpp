@@ -70,6 +70,57 @@ struct ContactFailure : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Newton's method for the small contact systems (the interior point's (s, P, phi), the line
+// contact's (a, R_a)): a finite-difference Jacobian, one residual per column with step h(z)[c]
+// (a negative step differences backwards), a full-pivot LU step, and backtracking until |g|
+// falls by the Armijo factor (1 - 1e-4 step). `project` keeps a trial in the unknowns' domain;
+// a trial whose residual throws ContactFailure is halved again. Returns true when every
+// |g[i]| < tol[i] (z and g then hold the solution), false when a step found no decrease or 60
+// steps passed; throws ContactFailure(`singular`) on a non-finite step.
+template <int N, class Residual, class StepSizes, class Project>
+bool damped_newton(Residual&& residual,
+                   StepSizes&& steps,
+                   Project&& project,
+                   const Eigen::Matrix<double, N, 1>& tol,
+                   const char* singular,
+                   Eigen::Matrix<double, N, 1>& z,
+                   Eigen::Matrix<double, N, 1>& g) {
+  using Vec = Eigen::Matrix<double, N, 1>;
+  g = residual(z);
+  for (int it = 0; it < 60; ++it) {
+    if ((g.array().abs() < tol.array()).all()) return true;
+    const Vec h = steps(z);
+    Eigen::Matrix<double, N, N> J;
+    for (int c = 0; c < N; ++c) {
+      Vec zc = z;
+      zc[c] += h[c];
+      J.col(c) = (residual(zc) - g) / h[c];
+    }
+    const Vec dz = J.fullPivLu().solve(-g);
+    if (!dz.allFinite()) throw ContactFailure(singular);
+    double step = 1.0;
+    bool accepted = false;
+    for (int ls = 0; ls < 30; ++ls, step *= 0.5) {
+      Vec trial = z + step * dz;
+      project(trial);
+      Vec gt;
+      try {
+        gt = residual(trial);
+      } catch (const ContactFailure&) {
+        continue;
+      }
+      if (gt.norm() < (1.0 - 1e-4 * step) * g.norm()) {
+        z = trial;
+        g = gt;
+        accepted = true;
+        break;
+      }
+    }
+    if (!accepted) return false;
+  }
+  return false;
+}
+
 enum class ContactMode { kNone, kWrap, kTip, kPoint, kLying };
 
 class ContactRun {
@@ -107,6 +158,9 @@ class ContactRun {
   // psi(lambda) < 0 where contact holds (rigid_contact.h); also the free solution's minimum gap.
   double indicator(double lambda, double* interior_gap = nullptr);
   double gap_of(const V2& r) const;
+  // EI_min / L^2 over the flexible segments: the force scale of the contact systems' Newton
+  // steps.
+  double most_flexible_force_scale() const;
   // The smallest gap of a sampled shape (and where it is: min_gap_s_).
   double min_gap(const std::vector<ShapePoint>& shape, bool skip_last, bool skip_root);
   // The contact held now, in words (for the message of a second contact).
@@ -465,51 +519,37 @@ Eigen::Vector3d ContactRun::point_residual(const SegmentChain& chain,
       gap_of(rp) / length_, t.dot(grad), direction.x() * grad.y() - direction.y() * grad.x());
 }
 
-void ContactRun::solve_point(const SegmentChain& chain) {
-  // Newton's method on (s, P, phi) with a forward-difference Jacobian (each column a shooting
-  // solve) and backtracking on |g|; from the previous contact state (or the landing point).
+double ContactRun::most_flexible_force_scale() const {
   double EI_min = std::numeric_limits<double>::infinity();
   for (const Segment& seg : full_.segments) {
     if (const auto* f = std::get_if<FlexibleSegment>(&seg)) EI_min = std::min(EI_min, f->EI);
   }
-  const double force_scale = EI_min / (length_ * length_);
+  return EI_min / (length_ * length_);
+}
+
+void ContactRun::solve_point(const SegmentChain& chain) {
+  // Newton's method on (s, P, phi) with a forward-difference Jacobian (each column a shooting
+  // solve) and backtracking on |g|; from the previous contact state (or the landing point).
+  const double force_scale = most_flexible_force_scale();
   Eigen::Vector3d z(point_s_, point_P_, point_phi_);
-  Eigen::Vector3d g = point_residual(chain, z, nullptr);
-  for (int it = 0; it < 60; ++it) {
-    if (std::abs(g[0]) < 1e-13 && std::abs(g[1]) < 1e-12 && std::abs(g[2]) < 1e-12) {
-      point_s_ = z[0];
-      point_P_ = z[1];
-      point_phi_ = z[2];
-      return;
-    }
-    const Eigen::Vector3d h(1e-7 * length_, 1e-7 * std::max(std::abs(z[1]), force_scale), 1e-7);
-    Eigen::Matrix3d J;
-    for (int c = 0; c < 3; ++c) {
-      Eigen::Vector3d zc = z;
-      zc[c] += h[c];
-      J.col(c) = (point_residual(chain, zc, nullptr) - g) / h[c];
-    }
-    const Eigen::Vector3d dz = J.fullPivLu().solve(-g);
-    if (!dz.allFinite()) throw ContactFailure("the point contact's Newton step is singular");
-    double step = 1.0;
-    bool accepted = false;
-    for (int ls = 0; ls < 30; ++ls, step *= 0.5) {
-      Eigen::Vector3d trial = z + step * dz;
-      trial[0] = std::clamp(trial[0], 1e-6 * length_, length_ * (1.0 - 1e-6));
-      Eigen::Vector3d gt;
-      try {
-        gt = point_residual(chain, trial, nullptr);
-      } catch (const ContactFailure&) {
-        continue;
-      }
-      if (gt.norm() < (1.0 - 1e-4 * step) * g.norm()) {
-        z = trial;
-        g = gt;
-        accepted = true;
-        break;
-      }
-    }
-    if (!accepted) break;
+  Eigen::Vector3d g;
+  const bool converged = damped_newton<3>(
+      [&](const Eigen::Vector3d& zz) { return point_residual(chain, zz, nullptr); },
+      [&](const Eigen::Vector3d& zz) {
+        return Eigen::Vector3d(1e-7 * length_, 1e-7 * std::max(std::abs(zz[1]), force_scale), 1e-7);
+      },
+      [&](Eigen::Vector3d& trial) {
+        trial[0] = std::clamp(trial[0], 1e-6 * length_, length_ * (1.0 - 1e-6));
+      },
+      Eigen::Vector3d(1e-13, 1e-12, 1e-12),
+      "the point contact's Newton step is singular",
+      z,
+      g);
+  if (converged) {
+    point_s_ = z[0];
+    point_P_ = z[1];
+    point_phi_ = z[2];
+    return;
   }
   throw ContactFailure(
       fmt::format("the interior point contact did not converge (residual {:.3g})", g.norm()));
@@ -601,51 +641,28 @@ void ContactRun::solve_lying(const SegmentChain& chain) {
   // Newton's method on (a, R_a) with a backward-difference Jacobian (a <= L) and backtracking,
   // from the previous state (or a = L and the tip reaction where the tip contact opened).
   check_lying(chain);
-  double EI_min = std::numeric_limits<double>::infinity();
-  for (const Segment& seg : full_.segments) {
-    if (const auto* f = std::get_if<FlexibleSegment>(&seg)) EI_min = std::min(EI_min, f->EI);
-  }
-  const double force_scale = EI_min / (length_ * length_);
+  const double force_scale = most_flexible_force_scale();
   Eigen::Vector2d z(std::min(lying_a_, length_), lying_R_);
-  Eigen::Vector2d g = lying_residual(chain, z[0], z[1]);
-  for (int it = 0; it < 60; ++it) {
-    if (std::abs(g[0]) < 1e-13 && std::abs(g[1]) < 1e-12) {
-      const ShootingResult r = shoot(lying_span(chain, z[0], z[1]), false);
-      if (std::cos(r.tip.theta) * tau_.x() + std::sin(r.tip.theta) * tau_.y() <= 0.0) {
-        throw ContactFailure("the line contact converged to a span turned against the stop");
-      }
-      lying_a_ = z[0];
-      lying_R_ = z[1];
-      return;
+  Eigen::Vector2d g;
+  // Backward differences in a: the span cannot be longer than the beam (a <= L).
+  const bool converged = damped_newton<2>(
+      [&](const Eigen::Vector2d& zz) { return lying_residual(chain, zz[0], zz[1]); },
+      [&](const Eigen::Vector2d& zz) {
+        return Eigen::Vector2d(-1e-7 * length_, 1e-7 * std::max(std::abs(zz[1]), force_scale));
+      },
+      [&](Eigen::Vector2d& trial) { trial[0] = std::min(trial[0], length_); },
+      Eigen::Vector2d(1e-13, 1e-12),
+      "the line contact's Newton step is singular",
+      z,
+      g);
+  if (converged) {
+    const ShootingResult r = shoot(lying_span(chain, z[0], z[1]), false);
+    if (std::cos(r.tip.theta) * tau_.x() + std::sin(r.tip.theta) * tau_.y() <= 0.0) {
+      throw ContactFailure("the line contact converged to a span turned against the stop");
     }
-    const Eigen::Vector2d h(-1e-7 * length_, 1e-7 * std::max(std::abs(z[1]), force_scale));
-    Eigen::Matrix2d J;
-    for (int c = 0; c < 2; ++c) {
-      Eigen::Vector2d zc = z;
-      zc[c] += h[c];
-      J.col(c) = (lying_residual(chain, zc[0], zc[1]) - g) / h[c];
-    }
-    const Eigen::Vector2d dz = J.fullPivLu().solve(-g);
-    if (!dz.allFinite()) throw ContactFailure("the line contact's Newton step is singular");
-    double step = 1.0;
-    bool accepted = false;
-    for (int ls = 0; ls < 30; ++ls, step *= 0.5) {
-      Eigen::Vector2d trial = z + step * dz;
-      trial[0] = std::min(trial[0], length_);
-      Eigen::Vector2d gt;
-      try {
-        gt = lying_residual(chain, trial[0], trial[1]);
-      } catch (const ContactFailure&) {
-        continue;
-      }
-      if (gt.norm() < (1.0 - 1e-4 * step) * g.norm()) {
-        z = trial;
-        g = gt;
-        accepted = true;
-        break;
-      }
-    }
-    if (!accepted) break;
+    lying_a_ = z[0];
+    lying_R_ = z[1];
+    return;
   }
   throw ContactFailure(
       fmt::format("the line contact (the beam lying on the stop) did not converge (residual "
