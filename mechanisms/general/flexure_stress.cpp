@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/mechanisms/general/flexure_point_results.h"
 #include "flexure/mechanisms/general/prbm_assembly.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/solver/common/errors.h"
@@ -20,10 +21,12 @@ double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
 
 Eigen::Vector2d vec(const Vec2& v) { return {v.x, v.y}; }
 
-// sigma = |M| c/I + |P|/A of a rectangular b x h section (c = h/2, I = b h^3/12, A = b h).
+// sigma = |M| c/I + |P|/A of a rectangular b x h section: the fibre stresses of
+// flexure_point_results.h with the moment and the force both counted positive (the catalogue's
+// rule adds the magnitudes whatever the force's direction).
 double section_stress(const Flexure& f, double moment, double force) {
-  const double I = f.width * f.thickness * f.thickness * f.thickness / 12.0;
-  return std::abs(moment) * 0.5 * f.thickness / I + std::abs(force) / (f.width * f.thickness);
+  const FibreStresses st = fibre_stresses(f, std::abs(moment), std::abs(force));
+  return std::max(std::abs(st.pos), std::abs(st.neg));
 }
 
 GeneralFlexureStresses empty_stresses(const GeneralMechanism& m, std::size_t points) {
