@@ -6,6 +6,8 @@
 #include <cmath>
 #include <deque>
 
+#include "flexure/solver/chain/anderson_mixing.h"
+
 namespace flexure {
 
 namespace {
@@ -149,12 +151,9 @@ ConstrainedReport converge_constrained_chain(const ChainDiscretisation& d,
   const int m = std::max(0, options.anderson_depth);
   const int per_iteration = 1 + n;
   ConstrainedReport report;
-  Eigen::VectorXd x, g, f, f_prev, g_prev;
+  Eigen::VectorXd x, g, f;
   pack(geometry, z, tip, l, x);
-  const int size = static_cast<int>(x.size());
-  Eigen::MatrixXd dF(size, std::max(1, m)), dG(size, std::max(1, m));
-  int stored = 0, head = 0;
-  bool have_prev = false;
+  AndersonMixing mixing(x.size(), m);
   double best = INFINITY;
   // The best change so far after each iteration: the rate of convergence over a window of them.
   std::deque<double> best_history;
@@ -168,17 +167,16 @@ ConstrainedReport converge_constrained_chain(const ChainDiscretisation& d,
     report.passes += step.passes;
     ++report.iterations;
     if (!ok) {
-      if (!have_prev) {
+      if (!mixing.has_previous()) {
         report.failed_element = step.failed_element;
         report.failure =
             fmt::format("element {} buckled (eq. 7.30 has no inverse)", step.failed_element);
         return report;
       }
       // The extrapolated state buckled an element: restart from the last plain image.
-      x = g_prev;
+      x = mixing.previous_image();
       unpack(x, tip, l, current, zc);
-      stored = head = 0;
-      have_prev = false;
+      mixing.restart();
       continue;
     }
     pack(step.image, step.z, tip, l, g);
@@ -195,10 +193,7 @@ ConstrainedReport converge_constrained_chain(const ChainDiscretisation& d,
       report.set_converged(true);
       return report;
     }
-    if (report.change > 1e3 * best) {  // the extrapolation has lost its way: restart it
-      stored = head = 0;
-      have_prev = false;
-    }
+    if (report.change > 1e3 * best) mixing.restart();  // the extrapolation has lost its way
     best = std::min(best, report.change);
     best_history.push_back(best);
     // A budget from the measured rate: over the last kRateWindow iterations the best change fell
@@ -232,22 +227,7 @@ ConstrainedReport converge_constrained_chain(const ChainDiscretisation& d,
         break;
       }
     }
-    if (m > 0 && have_prev) {
-      dF.col(head) = f - f_prev;
-      dG.col(head) = g - g_prev;
-      head = (head + 1) % m;
-      stored = std::min(stored + 1, m);
-    }
-    f_prev = f;
-    g_prev = g;
-    have_prev = true;
-    x = g;
-    if (stored > 0) {
-      Eigen::MatrixXd gram = dF.leftCols(stored).transpose() * dF.leftCols(stored);
-      gram.diagonal().array() += 1e-12 * gram.diagonal().maxCoeff() + 1e-300;
-      const Eigen::VectorXd gamma = gram.ldlt().solve(dF.leftCols(stored).transpose() * f);
-      if (gamma.allFinite()) x.noalias() -= dG.leftCols(stored) * gamma;
-    }
+    x = mixing.next(g, f);
     unpack(x, tip, l, current, zc);
   }
   if (report.failure.empty()) {
@@ -255,7 +235,7 @@ ConstrainedReport converge_constrained_chain(const ChainDiscretisation& d,
         "the passes did not converge in {} passes (change {:.3g})", report.passes, report.change);
   }
   // Out of passes: the last plain image, a consistent chain geometry.
-  if (have_prev) unpack(g_prev, tip, l, geometry, z);
+  if (mixing.has_previous()) unpack(mixing.previous_image(), tip, l, geometry, z);
   return report;
 }
 

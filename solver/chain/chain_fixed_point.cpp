@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flexure/solver/chain/anderson_mixing.h"
+
 namespace flexure {
 
 namespace {
@@ -67,34 +69,26 @@ FixedPointReport converge_chain(const ChainDiscretisation& d,
                                 const FixedPointOptions& options) {
   if (options.anderson_depth <= 0) return plain_passes(d, loads, geometry, options);
 
-  // Anderson acceleration, type II (Walker & Ni 2011): x+ = G(x) - dG * gamma with gamma the
-  // least-squares fit of the residual f = G(x) - x by the last m residual differences dF.
+  // Anderson acceleration (anderson_mixing.h) of the passes.
   const double l = options.length_scale;
-  const int m = options.anderson_depth;
   FixedPointReport report;
   ChainGeometry image;
-  Eigen::VectorXd x, g, f, f_prev, g_prev;
+  Eigen::VectorXd x, g, f;
   pack(geometry, l, x);
-  const int n = static_cast<int>(x.size());
-  Eigen::MatrixXd dF(n, m), dG(n, m);
-  int stored = 0;  // columns in use
-  int head = 0;    // next column to overwrite
-  bool have_prev = false;
+  AndersonMixing mixing(x.size(), options.anderson_depth);
   double best = INFINITY;
   while (report.passes < options.max_passes) {
     const ChainPassReport r = chain_pass(d, loads, geometry, options.pass, image);
     ++report.passes;
     if (!r.ok) {
-      if (!have_prev) {
+      if (!mixing.has_previous()) {
         report.failed_element = r.failed_element;
         return report;
       }
       // The extrapolated geometry buckled an element: restart from the last plain image.
-      unpack(g_prev, l, geometry);
-      x = g_prev;
-      stored = 0;
-      head = 0;
-      have_prev = false;
+      x = mixing.previous_image();
+      unpack(x, l, geometry);
+      mixing.restart();
       continue;
     }
     pack(image, l, g);
@@ -108,35 +102,13 @@ FixedPointReport converge_chain(const ChainDiscretisation& d,
     }
     // Restart the history when the residual grows a lot: the extrapolation has lost its way.
     const double kRestartGrowth = 1e3;
-    if (report.change > kRestartGrowth * best) {
-      stored = 0;
-      head = 0;
-      have_prev = false;
-    }
+    if (report.change > kRestartGrowth * best) mixing.restart();
     best = std::min(best, report.change);
-    if (have_prev) {
-      dF.col(head) = f - f_prev;
-      dG.col(head) = g - g_prev;
-      head = (head + 1) % m;
-      stored = std::min(stored + 1, m);
-    }
-    f_prev = f;
-    g_prev = g;
-    have_prev = true;
-    x = g;
-    if (stored > 0) {
-      // Normal equations of the m-column fit (m <= 50, so m x m is cheap); a relative Tikhonov
-      // term keeps them solvable when the columns become nearly dependent close to convergence.
-      Eigen::MatrixXd gram = dF.leftCols(stored).transpose() * dF.leftCols(stored);
-      const double kRidge = 1e-12;
-      gram.diagonal().array() += kRidge * gram.diagonal().maxCoeff() + 1e-300;
-      const Eigen::VectorXd gamma = gram.ldlt().solve(dF.leftCols(stored).transpose() * f);
-      if (gamma.allFinite()) x.noalias() -= dG.leftCols(stored) * gamma;
-    }
+    x = mixing.next(g, f);
     unpack(x, l, geometry);
   }
   // Out of passes: return the last plain image, which is a consistent chain geometry.
-  if (have_prev) unpack(g_prev, l, geometry);
+  if (mixing.has_previous()) unpack(mixing.previous_image(), l, geometry);
   return report;
 }
 

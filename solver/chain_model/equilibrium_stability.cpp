@@ -518,56 +518,13 @@ struct Grids {
   std::vector<Grid> levels;
   double tolerance = 1e-12;
 
-  // The k-th eigenvalue, extrapolated over the grids (Romberg): the discrete eigenvalues are
-  // lambda + c1 h^2 + c2 h^4 + O(h^6) (uniform elements, symmetric quadrature), so
-  // R1 = (4 lambda_{h/2} - lambda_h) / 3 = lambda + O(h^4) and (16 R1_{h/2} - R1_h) / 15 =
-  // lambda + O(h^6).
-  // Solved from the coarsest grid to the finest, each starting from the previous grids'
-  // extrapolation (a few Newton steps instead of a search).
-  // `error` (optional): an estimate of the returned value's error, the difference between the
-  // best and the second-best extrapolation (HUGE_VAL on one grid).
+  // The k-th eigenvalue, extrapolated over the grids (second_variation.h,
+  // extrapolated_eigenvalue).
   double eigenvalue(int k, double* error = nullptr, double* fine_value = nullptr) const {
-    if (error != nullptr) *error = HUGE_VAL;
-    const std::size_t n = levels.size();
-    std::vector<double> values(n);  // fine to coarse
-    std::vector<bool> found(n, false);
-    bool have_guess = false;
-    double guess = 0.0, radius = 0.0;
-    for (std::size_t level = n; level-- > 0;) {
-      const PencilEigenvalue e = constrained_eigenvalue(
-          levels[level].q, k, tolerance, have_guess ? &guess : nullptr, radius);
-      if (!e.exists) {
-        have_guess = false;  // a coarse grid may lack an eigenvalue close to 1
-        continue;
-      }
-      values[level] = e.value;
-      found[level] = true;
-      if (level + 1 < n && found[level + 1]) {
-        const double change = e.value - values[level + 1];
-        guess = e.value + change / 4.0;  // Richardson's prediction of the next finer grid
-        radius = 0.1 * std::fabs(change) + 1e-12;
-      } else {
-        guess = e.value;
-        radius = 0.05 * std::max(1.0, std::fabs(e.value));
-      }
-      have_guess = true;
-    }
-    if (!found[0]) {
-      if (error != nullptr) *error = 0.0;
-      if (fine_value != nullptr) *fine_value = 1.0;
-      return 1.0;
-    }
-    if (fine_value != nullptr) *fine_value = values[0];
-    if (n == 1 || !found[1]) return std::min(1.0, values[0]);
-    const double r_fine = (4.0 * values[0] - values[1]) / 3.0;
-    if (n == 2 || !found[2]) {
-      if (error != nullptr) *error = std::fabs(r_fine - values[0]);
-      return std::min(1.0, r_fine);
-    }
-    const double r_coarse = (4.0 * values[1] - values[2]) / 3.0;
-    const double romberg = (16.0 * r_fine - r_coarse) / 15.0;
-    if (error != nullptr) *error = std::fabs(romberg - r_fine);
-    return std::min(1.0, romberg);
+    std::vector<const DiscreteSecondVariation*> q;
+    q.reserve(levels.size());
+    for (const auto& level : levels) q.push_back(&level.q);
+    return extrapolated_eigenvalue(q, k, tolerance, error, fine_value);
   }
 };
 

@@ -430,4 +430,52 @@ std::vector<std::vector<double>> combine_rows(
   return rows;
 }
 
+double extrapolated_eigenvalue(const std::vector<const DiscreteSecondVariation*>& levels,
+                               int k,
+                               double tolerance,
+                               double* error,
+                               double* fine_value) {
+  if (error != nullptr) *error = HUGE_VAL;
+  const std::size_t n = levels.size();
+  std::vector<double> values(n);  // fine to coarse
+  std::vector<bool> found(n, false);
+  bool have_guess = false;
+  double guess = 0.0, radius = 0.0;
+  for (std::size_t level = n; level-- > 0;) {
+    const PencilEigenvalue e =
+        constrained_eigenvalue(*levels[level], k, tolerance, have_guess ? &guess : nullptr, radius);
+    if (!e.exists) {
+      have_guess = false;  // a coarse grid may lack an eigenvalue close to 1
+      continue;
+    }
+    values[level] = e.value;
+    found[level] = true;
+    if (level + 1 < n && found[level + 1]) {
+      const double change = e.value - values[level + 1];
+      guess = e.value + change / 4.0;  // Richardson's prediction of the next finer grid
+      radius = 0.1 * std::fabs(change) + 1e-12;
+    } else {
+      guess = e.value;
+      radius = 0.05 * std::max(1.0, std::fabs(e.value));
+    }
+    have_guess = true;
+  }
+  if (!found[0]) {
+    if (error != nullptr) *error = 0.0;
+    if (fine_value != nullptr) *fine_value = 1.0;
+    return 1.0;
+  }
+  if (fine_value != nullptr) *fine_value = values[0];
+  if (n == 1 || !found[1]) return std::min(1.0, values[0]);
+  const double r_fine = (4.0 * values[0] - values[1]) / 3.0;
+  if (n == 2 || !found[2]) {
+    if (error != nullptr) *error = std::fabs(r_fine - values[0]);
+    return std::min(1.0, r_fine);
+  }
+  const double r_coarse = (4.0 * values[1] - values[2]) / 3.0;
+  const double romberg = (16.0 * r_fine - r_coarse) / 15.0;
+  if (error != nullptr) *error = std::fabs(romberg - r_fine);
+  return std::min(1.0, romberg);
+}
+
 }  // namespace flexure

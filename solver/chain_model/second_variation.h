@@ -87,6 +87,21 @@ PencilEigenvalue constrained_eigenvalue(const DiscreteSecondVariation& q,
                                         const double* guess = nullptr,
                                         double guess_radius = 0.0);
 
+// The k-th constrained eigenvalue over a ladder of grids of one problem (`levels[0]` the finest,
+// each next one with every 2nd sample of the one before), Romberg-extrapolated: the discrete
+// eigenvalues are lambda + c1 h^2 + c2 h^4 + O(h^6) (uniform elements, symmetric quadrature), so
+// R1 = (4 lambda_{h/2} - lambda_h)/3 = lambda + O(h^4) and (16 R1_{h/2} - R1_h)/15 = lambda +
+// O(h^6). Solved from the coarsest grid to the finest, each starting from the previous grids'
+// extrapolation (a few Newton steps instead of a search). Returns at most 1 (1 when the finest
+// grid has no k-th eigenvalue below 1). `error` (optional): the difference between the best and
+// the second-best extrapolation (HUGE_VAL on one grid, 0 without an eigenvalue); `fine_value`
+// (optional): the finest grid's own eigenvalue.
+double extrapolated_eigenvalue(const std::vector<const DiscreteSecondVariation*>& levels,
+                               int k,
+                               double tolerance,
+                               double* error = nullptr,
+                               double* fine_value = nullptr);
+
 // Solves the bordered system [a B + b W, C^T; C, 0] [x; mu] = [rhs; 0] by a sparse LU with partial
 // pivoting, so a B + b W may be indefinite or singular as long as the bordered matrix is not (it is
 // nonsingular exactly where a B + b W is nonsingular on ker C and C has full row rank). `rhs` and
