@@ -1,7 +1,8 @@
-"""The dimensional design of constant-force slider mechanisms as objects (python/design_objects.cpp):
-MechanismSpec built by keyword gives the designs of `flexure design mechanism --json` for the same
-specification (the same library call), design_mechanisms reports progress per sub-class, and a
-KeyboardInterrupt from the callable stops it."""
+"""The dimensional design of constant-force slider mechanisms as objects
+(python/design_objects.cpp): MechanismSpec built by keyword gives the designs of
+`flexure design mechanism --json` for the same specification (the same library call),
+design_mechanisms reports progress per sub-class, and a KeyboardInterrupt from the callable (or
+Ctrl-C) stops it."""
 import math
 import os
 import signal

@@ -17,8 +17,8 @@ import subprocess
 import sys
 import xml.etree.ElementTree as ET
 
-TIP = re.compile(r"^(shooting|chain algorithm):\s+tip x = (\S+) m\s+y = (\S+) m\s+theta = (\S+) rad"
-                 r"(?:\s+\((\d+) elements\))?", re.M)
+TIP = re.compile(r"^(shooting|chain algorithm):\s+tip x = (\S+) m\s+y = (\S+) m\s+"
+                 r"theta = (\S+) rad(?:\s+\((\d+) elements\))?", re.M)
 
 
 def tips(text):
