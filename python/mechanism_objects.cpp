@@ -433,20 +433,34 @@ void bind_results(py::module_& m) {
       "stability under both controls, unloaded equilibria).");
   m.def(
       "solve_general_exact",
-      [](const GeneralMechanism& g, const GeneralExactOptions& o) {
-        return solve_released<GeneralPrbmResult>([&] { return solve_general_exact(g, o); });
+      [](const GeneralMechanism& g, const GeneralExactOptions& o, py::object progress) {
+        ProgressBridge bridge(std::move(progress));
+        GeneralExactOptions with = o;
+        with.progress = [&bridge](std::size_t done, std::size_t total) { bridge(done, total); };
+        return bridge.run<GeneralPrbmResult>([&] { return solve_general_exact(g, with); });
       },
       py::arg("mechanism"),
       py::arg("options") = GeneralExactOptions{},
-      "The exact model of a general mechanism: every flexure an elastica, one Newton system.");
+      py::kw_only(),
+      py::arg("progress") = py::none(),
+      "The exact model of a general mechanism: every flexure an elastica, one Newton system. "
+      "`progress(done, total)` is called after each "
+      "recorded point (total: the input's count); Ctrl-C stops it at the next point.");
   m.def(
       "solve_general_mixed",
-      [](const GeneralMechanism& g, const GeneralExactOptions& o) {
-        return solve_released<GeneralPrbmResult>([&] { return solve_general_mixed(g, o); });
+      [](const GeneralMechanism& g, const GeneralExactOptions& o, py::object progress) {
+        ProgressBridge bridge(std::move(progress));
+        GeneralExactOptions with = o;
+        with.progress = [&bridge](std::size_t done, std::size_t total) { bridge(done, total); };
+        return bridge.run<GeneralPrbmResult>([&] { return solve_general_mixed(g, with); });
       },
       py::arg("mechanism"),
       py::arg("options") = GeneralExactOptions{},
-      "Each flexure under its own model (GeneralMechanism.set_flexure_model).");
+      py::kw_only(),
+      py::arg("progress") = py::none(),
+      "Each flexure under its own model (GeneralMechanism.set_flexure_model). `progress(done, "
+      "total)` is called after each "
+      "recorded point (total: the input's count); Ctrl-C stops it at the next point.");
   py::class_<StableSelection>(
       m,
       "StableSelection",

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstddef>
 #include <optional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -92,7 +93,8 @@ class ProgressBridge {
       PyErr_Restore(type_.release().ptr(), value_.release().ptr(), trace_.release().ptr());
       throw pybind11::error_already_set();
     }
-    emit_warnings(*result);
+    // A result that is a SolveStatus carries warnings (a design report does not).
+    if constexpr (std::is_base_of_v<SolveStatus, Result>) emit_warnings(*result);
     return std::move(*result);
   }
 
@@ -115,5 +117,7 @@ void bind_ladder_objects(pybind11::module_& m);
 void bind_mechanism_objects(pybind11::module_& m);
 // The constant-force slider mechanisms of the catalogue (python/catalogue_objects.cpp).
 void bind_catalogue_objects(pybind11::module_& m);
+// The dimensional design of those mechanisms (python/design_objects.cpp).
+void bind_design_objects(pybind11::module_& m);
 
 }  // namespace flexure::python

@@ -193,6 +193,11 @@ void bind_section(py::module_& m) {
       .def_readonly("density", &Material::density)
       .def("__repr__",
            [](const Material& mat) { return fmt::format("Material(E={}, nu={})", mat.E, mat.nu); });
+  m.def("flexural_rigidity",
+        &flexural_rigidity,
+        py::arg("section"),
+        py::arg("material"),
+        "E I of the section in the material (both validated): E b h^3/12 for a rectangle.");
 }
 
 void bind_chain(py::module_& m) {
@@ -749,6 +754,7 @@ void bind_objects(py::module_& m) {
   bind_ladder_objects(m);
   bind_mechanism_objects(m);
   bind_catalogue_objects(m);
+  bind_design_objects(m);
 }
 
 }  // namespace flexure::python

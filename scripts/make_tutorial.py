@@ -106,6 +106,17 @@ The stroke curves, stresses and the design go to an HDF5 file for plotting
     ("run", "mechanism analyze docs/examples/mechanism_lpp.toml --points 11 --out {tmp}/lpp.h5"),
     ("text", """Next: docs/cli.md lists every command and key; docs/mechanisms.md explains the models and their
 validation; `flexure help COMMAND` prints examples for each command.
+
+## Tutorial programs: the library from C++ and Python
+
+The same strip, with a rigid link on its tip, built from the library's objects instead of flags
+([examples/tutorial/step-1](../examples/tutorial/step-1/README.md)): `step-1.cc`, a C++ program
+built against the installed package that links `flexure::beam` alone, and `step-1.py`, the same in
+Python. Each makes a `Section`, a `Material`, a `FlexibleSegment`, a `RigidSegment` and a
+`TipLoad` into a `SegmentChain`, solves it by the shooting method and by Howell's chain algorithm,
+prints both tips and their difference, and plots both deflected shapes (SVG from C++, PNG with
+matplotlib from Python). The test suite builds and runs both (ctest `Install.TutorialStep1*`,
+pytest `tests/python/test_tutorial.py`).
 """),
 ]
 

@@ -450,6 +450,10 @@ MechanismDesignReport design_mechanisms(const MechanismSpec& spec) {
   MechanismDesignReport report;
   report.screens = design_screens(spec);
   const RowSelection selection(spec);
+  std::size_t total = 0, done = 0;
+  for (const cfm::CfmSubclass* row : selection.rows()) {
+    total += selection.selected(*row, spec.length.upper) ? 1 : 0;
+  }
   for (const cfm::CfmSubclass* row : selection.rows()) {
     if (!selection.selected(*row, spec.length.upper)) {
       // --minimize takes every row; the thesis's choice by the longest length.
@@ -461,6 +465,7 @@ MechanismDesignReport design_mechanisms(const MechanismSpec& spec) {
                                    : size_smallest(spec, sizer, selection);
     apply_spec_material(spec, design);
     (design.feasible ? report.designs : report.rejected).push_back(std::move(design));
+    if (spec.progress) spec.progress(++done, total);
   }
   // Nothing feasible: the shortest length at which a sub-class is feasible by the full sizing
   // (so the length hint, fed back, is feasible). A scan up from the longest length over every
@@ -478,6 +483,7 @@ MechanismDesignReport design_mechanisms(const MechanismSpec& spec) {
     double best = std::numeric_limits<double>::infinity();
     for (double l = spec.length.upper; l < std::min(cap, best);) {
       const double next = std::min({cap, l * 1.25, best});
+      if (spec.progress) spec.progress(total, total);
       for (const auto& sizer : sizers) {
         const cfm::CfmSubclass* row = &sizer->row();
         if (searched.count(row) > 0 || !selection.selected(*row, next) ||

@@ -20,6 +20,8 @@
 // an l segment's clamp moment included -- must both leave the safety factor; the thesis's eq. 8.5
 // (the primary flexure's spring rotation alone) on request, to reproduce ch. 8's examples.
 #include <array>
+#include <cstddef>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
@@ -118,6 +120,11 @@ struct MechanismSpec {
   // factor the fatigue check asks for, while safety_factor is raised to the static one that gives
   // the rest -> full stroke cycle that fatigue safety factor (docs/fatigue.md).
   std::optional<double> fatigue_safety_factor;
+  // Called after each sub-class the specification admits is sized (with its exact evaluation),
+  // (done, total) over those sub-classes, and with (total, total) at each length of the search
+  // that follows when none is feasible; done never decreases. For a progress display; a caller
+  // stops a long synthesis by throwing from it (the Python module does on Ctrl-C). Empty: none.
+  std::function<void(std::size_t done, std::size_t total)> progress;
 
   // Throws InvalidInput naming the first field outside its range (non-finite, <= 0, a range with
   // lower > upper, an unknown configuration).

@@ -953,6 +953,7 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
     return true;
   };
 
+  std::size_t reported = 0;  // options.progress: points reported, never decreasing
   auto record = [&]() {
     GeneralPrbmPoint pt;
     const VectorXd q = z.head(N);
@@ -990,6 +991,10 @@ GeneralPrbmResult solve_exact_system(const GeneralMechanism& mechanism,
       }
     }
     result.points.push_back(std::move(pt));
+    if (options.progress) {
+      reported = std::min(std::max(reported, result.points.size()), grid.size());
+      options.progress(reported, grid.size());
+    }
   };
 
   // The pseudo-arclength path from (z_start, s_start): force control, and displacement control
@@ -1306,12 +1311,21 @@ GeneralPrbmResult solve_general_mixed(const GeneralMechanism& mechanism,
   }
   GeneralPrbmResult result;
   std::vector<FlexureModelReport> reports;
+  // Progress over the passes, never decreasing: a later pass reports no more than the first did.
+  GeneralExactOptions pass_options = options;
+  std::size_t reported = 0;
+  if (options.progress) {
+    pass_options.progress = [&](std::size_t done, std::size_t total) {
+      reported = std::max(reported, done);
+      options.progress(reported, total);
+    };
+  }
   // Each pass with a change moves at least one auto flexure up a rung: at most
   // F (ladder size) passes change something, and one more confirms.
   const std::size_t max_passes = F * ladder.size() + 1;
   for (std::size_t pass = 0; pass < max_passes; ++pass) {
     reports.assign(F, FlexureModelReport{});
-    result = solve_exact_system(mechanism, options, models, elements, &reports);
+    result = solve_exact_system(mechanism, pass_options, models, elements, &reports);
     bool changed = false;
     for (std::size_t i = 0; i < F; ++i) {
       const Flexure& f = mechanism.flexures[i];

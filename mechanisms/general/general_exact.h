@@ -18,6 +18,8 @@
 // sensitivities). Equilibria of the unloaded mechanism: sign changes of the input load, refined
 // by the secant method on s (displacement control) or Newton at zero load (force control). Every
 // point and equilibrium is judged under both controls (exact_stability.h).
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -42,6 +44,11 @@ struct GeneralExactOptions {
   // critical_tolerance is critical.
   bool judge_stability = true;
   double critical_tolerance = kCriticalMarginTolerance;
+  // Called after each recorded point of the path: (done, count), count the input's grid values,
+  // done never decreasing and at most count (the mixed model's later passes report (count,
+  // count)). For a progress display; a caller stops a long solve by throwing from it (the Python
+  // module does on Ctrl-C). Empty: no calls.
+  std::function<void(std::size_t done, std::size_t total)> progress;
   // Throws InvalidInput naming the field.
   void validate() const;
 };

@@ -17,6 +17,7 @@ from ._command import FlexureWarning, InvalidInput, NoConvergence, run as _run
 from ._read import read
 # The library's own types (python/objects.cpp; docs/python.md "Objects"): under their C++ names,
 # constructible with keyword arguments; results carry termination, message and warnings.
+from ._core import flexural_rigidity
 from ._core import (BeamMethod, BeamProblem, BeamSolution, ChainAlgorithmSolver, ChainPose,
                     ChainResult, ChainVariant, EllipticBranch, EllipticResult, EllipticSolver,
                     EndCondition, EndLoad, FlexibleSegment, Integrator, Material, NodeLoad,
@@ -41,6 +42,10 @@ from ._core import (FlexureModel, FlexureModelReport, FlexurePointResult, Flexur
 # The constant-force slider mechanisms (python/catalogue_objects.cpp; docs/mechanisms.md).
 from ._core import (AnalysisOptions, MechanismAnalysis, MechanismDesign, StrokeStability,
                     analyze_mechanism)
+# Their dimensional design (python/design_objects.cpp; docs/design.md "Dimensional design").
+from ._core import (DesignRanking, DimensionedDesign, FlexureOrientation, MechanismDesignReport,
+                    MechanismSpec, SizeObjective, StressRule, design_mechanisms,
+                    refine_design_exact)
 
 __version__ = _core.version
 git_commit = _core.git_commit
@@ -67,7 +72,10 @@ __all__ = ["beam", "path", "sweep", "cfm", "dynamics", "bench", "validate", "rea
            "select_stable_points", "solve_general_exact", "solve_general_mixed",
            "solve_general_prbm",
            "AnalysisOptions", "MechanismAnalysis", "MechanismDesign", "StrokeStability",
-           "analyze_mechanism"]
+           "analyze_mechanism",
+           "DesignRanking", "DimensionedDesign", "FlexureOrientation", "MechanismDesignReport",
+           "MechanismSpec", "SizeObjective", "StressRule", "design_mechanisms",
+           "refine_design_exact", "flexural_rigidity"]
 
 
 def _one_value_each(command, options):

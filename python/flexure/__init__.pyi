@@ -258,6 +258,8 @@ TipPose: Any
 TipPrescription: Any
 WarningKind: Any
 
+def flexural_rigidity(section: Any, material: Any) -> float: ...
+
 # The cheaper models of the ladder (python/ladder_objects.cpp; docs/models.md): solve(problem:
 # CantileverCase | EndLoad), ChainedBcmSolver also solve(chain: SegmentChain); Options by keyword.
 BcmResult: Any
@@ -288,8 +290,8 @@ JointKind: Any
 PrbmKind: Any
 
 def solve_general_prbm(mechanism: Any, options: Any = ...) -> Any: ...
-def solve_general_exact(mechanism: Any, options: Any = ...) -> Any: ...
-def solve_general_mixed(mechanism: Any, options: Any = ...) -> Any: ...
+def solve_general_exact(mechanism: Any, options: Any = ..., *, progress: Any = ...) -> Any: ...
+def solve_general_mixed(mechanism: Any, options: Any = ..., *, progress: Any = ...) -> Any: ...
 def check_general_mechanism(mechanism: Any) -> int: ...
 StableSelection: Any
 def select_stable_points(mechanism: Any, path: Any) -> Any: ...
@@ -302,6 +304,20 @@ MechanismDesign: Any
 StrokeStability: Any
 
 def analyze_mechanism(design: Any, options: Any = ..., *, progress: Any = ...) -> Any: ...
+
+# Their dimensional design (python/design_objects.cpp; docs/design.md): MechanismSpec(force=,
+# stroke=, E=, length=, ...) in SI units; design_mechanisms(spec, progress=callable) ->
+# MechanismDesignReport (.designs best first, .rejected with .binding); refine_design_exact.
+DesignRanking: Any
+DimensionedDesign: Any
+FlexureOrientation: Any
+MechanismDesignReport: Any
+MechanismSpec: Any
+SizeObjective: Any
+StressRule: Any
+
+def design_mechanisms(spec: Any, *, progress: Any = ...) -> Any: ...
+def refine_design_exact(spec: Any, design: Any) -> Any: ...
 
 def solve_beam(problem: Any, method: Any = ...) -> Any: ...
 def solve_physical_chain(chain: Any, method: Any = ..., tolerance: float = ...,

@@ -179,3 +179,33 @@ def test_stable_points_of_the_switch_under_torque_control():
     assert all(a < path.limit_inputs[0] for a in angles[:3])
     assert all(a > path.limit_inputs[1] for a in angles[3:])
     assert all(p.force_control.kind == flexure.StabilityKind.stable for p in s.result.points)
+
+
+def test_exact_progress_and_keyboard_interrupt():
+    # The exact stroke reports each recorded point, (done, count) with done increasing to count,
+    # and stops with the exception its callable raises; the module keeps working.
+    L, b, h, E = 50 * MM, 10 * MM, 0.5 * MM, 200e9
+    guide = parallel_guide(L, 20 * MM, b, h, E, 0.2 * L)
+    calls = []
+    r = flexure.solve_general_exact(guide, progress=lambda d, t: calls.append((d, t)))
+    assert r.converged() and len(r.points) == 5
+    assert calls == [(k, 5) for k in range(1, 6)]
+    mixed = []
+    auto = (parallel_guide(L, 20 * MM, b, h, E, 0.2 * L)
+            .set_flexure_model("left", flexure.FlexureModel.auto, tolerance=1e-3)
+            .set_flexure_model("right", flexure.FlexureModel.auto, tolerance=1e-3))
+    assert flexure.solve_general_mixed(auto, progress=lambda d, t: mixed.append(d)).converged()
+    assert mixed and mixed == sorted(mixed) and mixed[-1] == 5
+
+    seen = []
+
+    def stop(done, total):
+        seen.append(done)
+        if done == 2:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        flexure.solve_general_exact(guide, progress=stop)
+    assert seen == [1, 2]
+    again = flexure.solve_general_exact(guide)
+    assert again.input_load == pytest.approx(r.input_load, rel=1e-12)
