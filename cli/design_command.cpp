@@ -138,7 +138,7 @@ design::CfmDesignProblem make_problem(const DesignCfmArgs& args) {
       require_in_range(args.pcf_min, "--pcf-min (percent constant force)", 1e-9, 100.0 - 1e-9);
       p.pcf_min = args.pcf_min;
     }
-    p.orientation = args.orientation;
+    p.orientation = design::orientation_rules_from_string(args.orientation);
   }
   apply_rule_limits(args.rule_limits, p.orientation_limits);
   if (*args.K1_option) p.fixed_K1 = args.K1;
@@ -174,7 +174,7 @@ Json design_json(const design::CfmDesignProblem& p,
   j["objective"] = to_string(p.objective);
   j["objective_value"] = s.best.objective;
   j["pcf_min"] = p.pcf_min ? Json(*p.pcf_min) : Json(nullptr);
-  j["orientation"] = p.orientation;
+  j["orientation"] = to_string(p.orientation);
   j["variables"] = s.variables;
   j["subclass"] = s.nearest_subclass ? Json(*s.nearest_subclass) : Json(nullptr);
   Json constraints = Json::array();

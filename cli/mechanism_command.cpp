@@ -23,6 +23,7 @@
 #include "cli/mechanism_geometry_output.h"
 #include "cli/modulus_output.h"
 #include "cli/slow_progress.h"
+#include "cli/warning_output.h"
 #include "flexure/benchmarks/studies/mechanism_tolerance.h"
 #include "flexure/io/hdf5_file.h"
 #include "flexure/io/mechanism_stroke_file.h"
@@ -732,9 +733,7 @@ void register_mechanism_command(CLI::App& app) {
     MechanismAnalysis a = analyze_mechanism_with_modulus(d, o);
     report_forces_of(a, force_of);
     if (!a.converged()) throw NoConvergence(a.message);
-    warn(yield_warnings(a));
-    warn(force_vanishing_warnings(a, a.has_exact && o.exact));
-    warn(stability_warnings(a));
+    warn(a.warnings);  // yield, vanishing force, stability (analysis_warnings)
     FatigueReport fatigue;
     try {
       fatigue.fatigue = mechanism_fatigue(a, design_fatigue_material(a.design), fatigue_options);

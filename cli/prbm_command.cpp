@@ -66,12 +66,12 @@ void require_converged(const PrbmDerivation& d) {
 
 Json derivation_json(const PrbmDerivation& d) {
   Json j;
-  j["segment"] = d.segment;
-  if (d.segment != "end-moment") {
+  j["segment"] = std::string(to_string(d.segment));
+  if (d.segment != PrbmSegment::kEndMoment) {
     j["n"] = d.load_ratio_n;
     j["phi_deg"] = d.phi / kDeg;
   }
-  if (d.segment == "initially-curved") {
+  if (d.segment == PrbmSegment::kInitiallyCurved) {
     j["kappa0"] = d.kappa0;
     j["rho"] = d.rho;
     j["theta_i_deg"] = d.theta_i / kDeg;
@@ -115,11 +115,11 @@ void run_derive(const PrbmArgs& args) {
     return;
   }
   fmt::print("{} segment{}{}\n",
-             d.segment,
-             d.segment != "end-moment"
+             to_string(d.segment),
+             d.segment != PrbmSegment::kEndMoment
                  ? fmt::format(", n = {}, phi = {:.2f} deg", d.load_ratio_n, d.phi / kDeg)
                  : "",
-             d.segment == "initially-curved"
+             d.segment == PrbmSegment::kInitiallyCurved
                  ? fmt::format(", kappa0 = {}, rho = {:.5f}, Theta_i = {:.3f} deg",
                                d.kappa0,
                                d.rho,

@@ -443,7 +443,7 @@ CbcmPathResult trace_cbcm_controlled_path(const SegmentChain& chain,
       if (locate(X, Xn, fold_test, at)) {
         ++out.limit_points;
         CbcmSpecialPoint sp;
-        sp.kind = "limit_point";
+        sp.kind = SpecialPointKind::kLimitPoint;
         sp.point = state_of(p, model, at, true, stage, branch, 2);
         sp.index = static_cast<int>(out.points.size());
         sp.index_after = sp.index + 1;
@@ -459,7 +459,7 @@ CbcmPathResult trace_cbcm_controlled_path(const SegmentChain& chain,
       ++bifurcations;
       ++out.bifurcation_points;
       CbcmSpecialPoint sp;
-      sp.kind = "bifurcation";
+      sp.kind = SpecialPointKind::kBifurcation;
       sp.located = located;
       sp.point = state_of(p, model, at, true, stage, branch, 4);
       sp.index = static_cast<int>(out.points.size());
@@ -605,7 +605,7 @@ CbcmPathResult trace_cbcm_controlled_path(const SegmentChain& chain,
     return conjugate(state_of(p, model, state, true, stage, branch, 1), coordinate);
   };
   const auto force_point =
-      [&](const char* kind, const VectorXd& state, int before, bool located, int row_branch) {
+      [&](ForcePointKind kind, const VectorXd& state, int before, bool located, int row_branch) {
         CbcmForcePoint f;
         f.kind = kind;
         f.point = state_of(p, model, state, true, stage, row_branch, 1);
@@ -613,7 +613,7 @@ CbcmPathResult trace_cbcm_controlled_path(const SegmentChain& chain,
         f.force = conjugate(f.point, coordinate);
         f.index_before = before;
         f.located = located;
-        if (f.kind == "force_zero") {
+        if (f.kind == ForcePointKind::kZero) {
           VectorXd tz;
           int s = 0;
           VectorXd dir = VectorXd::Zero(nz + 1);
@@ -651,7 +651,7 @@ CbcmPathResult trace_cbcm_controlled_path(const SegmentChain& chain,
           states[i],
           [&](const VectorXd& s, const VectorXd&) { return force_at(s); },
           at);
-      force_point("force_zero", at, static_cast<int>(offset + i - 1), ok, row_branch);
+      force_point(ForcePointKind::kZero, at, static_cast<int>(offset + i - 1), ok, row_branch);
     }
     if (i + 1 < count) {
       const bool maximum = F[i] > F[i - 1] && F[i] > F[i + 1];
@@ -659,7 +659,7 @@ CbcmPathResult trace_cbcm_controlled_path(const SegmentChain& chain,
       if (!maximum && !minimum) continue;
       const int status = out.points[offset + i].status;
       if (status == 4) {  // a corner where the path switched: the point itself
-        force_point(maximum ? "force_maximum" : "force_minimum",
+        force_point(maximum ? ForcePointKind::kMaximum : ForcePointKind::kMinimum,
                     states[i],
                     static_cast<int>(offset + i - 1),
                     true,
@@ -709,7 +709,7 @@ CbcmPathResult trace_cbcm_controlled_path(const SegmentChain& chain,
           best = f1 > f2 ? X1 : X2;
         }
       }
-      force_point(maximum ? "force_maximum" : "force_minimum",
+      force_point(maximum ? ForcePointKind::kMaximum : ForcePointKind::kMinimum,
                   best ? *best : states[i],
                   static_cast<int>(offset + i - 1),
                   best.has_value(),

@@ -66,7 +66,7 @@ struct CbcmPathPoint {
 };
 
 struct CbcmSpecialPoint {
-  std::string kind;  // "limit_point" or "bifurcation"
+  SpecialPointKind kind = SpecialPointKind::kLimitPoint;  // as the shooting path's (to_string)
   CbcmPathPoint point;
   int index = -1, index_after = -1;
   bool located = true;
@@ -74,7 +74,7 @@ struct CbcmSpecialPoint {
 };
 
 struct CbcmForcePoint {
-  std::string kind;  // "force_zero", "force_maximum", "force_minimum"
+  ForcePointKind kind = ForcePointKind::kZero;  // as the shooting path's (to_string)
   CbcmPathPoint point;
   double coordinate = 0.0, force = 0.0;
   double slope = 0.0;  // at a zero: d force / d coordinate on the path; 0 at an extremum

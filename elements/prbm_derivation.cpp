@@ -380,12 +380,33 @@ PrbmDerivation derive_fixed_pinned(double n, const PrbmDerivationOptions& option
     d.set_converged(false);
     d.message = fmt::format("refining Theta_max failed: {}", e.what());
   }
-  d.segment = "fixed-pinned";
+  d.segment = PrbmSegment::kFixedPinned;
   d.load_ratio_n = n;
   d.phi = phi;
   d.theta_max_K_source = source;
   if (failures > 0) d.message += "; sampling stopped early: " + failure;
   return d;
+}
+
+std::string_view to_string(PrbmSegment segment) {
+  switch (segment) {
+    case PrbmSegment::kFixedPinned:
+      return "fixed-pinned";
+    case PrbmSegment::kEndMoment:
+      return "end-moment";
+    case PrbmSegment::kInitiallyCurved:
+      return "initially-curved";
+  }
+  return "unknown";
+}
+
+PrbmSegment prbm_segment_from_string(std::string_view name) {
+  for (PrbmSegment s :
+       {PrbmSegment::kFixedPinned, PrbmSegment::kEndMoment, PrbmSegment::kInitiallyCurved}) {
+    if (name == to_string(s)) return s;
+  }
+  throw InvalidInput(fmt::format(
+      "segment '{}' is unknown (allowed: fixed-pinned, end-moment, initially-curved)", name));
 }
 
 PrbmDerivation derive_end_moment(const PrbmDerivationOptions& options) {
@@ -402,7 +423,7 @@ PrbmDerivation derive_end_moment(const PrbmDerivationOptions& options) {
   // K = gamma K_theta (eq. 5.111) and mu = K Theta, so K_theta Theta is fitted to mu / gamma.
   const auto tangential = [](const PathSample& s, double, double gamma) { return s.load / gamma; };
   PrbmDerivation d = derive_from_path(samples, exact, tangential, 0.0, options);
-  d.segment = "end-moment";
+  d.segment = PrbmSegment::kEndMoment;
   d.phi = std::numbers::pi;
   d.theta_max_K_source = "Theta_max(gamma) (Howell gives one limit for the end moment)";
   return d;
@@ -594,7 +615,7 @@ PrbmDerivation derive_on_curved_path(CurvedPath& path,
   } else {
     d.message = path.refusal;
   }
-  d.segment = "initially-curved";
+  d.segment = PrbmSegment::kInitiallyCurved;
   d.kappa0 = path.kappa0;
   d.load_ratio_n = path.n;
   d.phi = path.phi;

@@ -30,6 +30,7 @@
 //     (curved beams: that value scaled by (phi - Theta_i)/phi).
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "flexure/solver/common/status.h"
@@ -91,12 +92,21 @@ struct PrbmDerivationOptions {
   void validate() const;
 };
 
+// The segment a derivation is for: fixed-pinned under a tip force (Howell §5.2), the end moment
+// (§5.4), the initially curved cantilever (§5.5).
+enum class PrbmSegment { kFixedPinned, kEndMoment, kInitiallyCurved };
+// "fixed-pinned", "end-moment", "initially-curved": the names of `flexure prbm --segment` and of
+// the JSON key "segment".
+std::string_view to_string(PrbmSegment segment);
+// The segment of that name; throws InvalidInput quoting the name and listing the allowed ones.
+PrbmSegment prbm_segment_from_string(std::string_view name);
+
 struct PrbmDerivation : SolveStatus {
   // message: what limited the result, or why it failed
   // iterations: exact tip evaluations (samples + root-finding refinements)
   // residual: |error/delta - error_limit| at the refined Theta_max(gamma)
 
-  std::string segment;  // "fixed-pinned", "end-moment" or "initially-curved"
+  PrbmSegment segment = PrbmSegment::kFixedPinned;
   double load_ratio_n = 0.0;
   double kappa0 = 0.0;   // initial curvature l/R_i (0 unless initially curved)
   double rho = 0.0;      // PRB link length / l at the derived gamma (eq. 5.116; gamma if straight)

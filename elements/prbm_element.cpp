@@ -5,21 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "flexure/solver/common/errors.h"
 
 namespace flexure {
-
-void RectangularSection::validate() const {
-  const auto positive = [](double value, const char* what) {
-    if (!std::isfinite(value) || value <= 0.0) {
-      throw InvalidInput(fmt::format("{} = {} must be a finite number > 0", what, value));
-    }
-  };
-  positive(width, "section width w");
-  positive(thickness, "section thickness h");
-  positive(youngs_modulus, "Young's modulus E");
-}
 
 double PrbmElement::spring_constant(double EI, double length) const {
   if (!std::isfinite(EI) || EI <= 0.0) {
@@ -135,10 +125,16 @@ double PrbmElement::axial_force(double /*Theta*/, const EndLoad& load) const { r
 
 SectionStress PrbmElement::max_stress(double Theta,
                                       const EndLoad& load,
-                                      const RectangularSection& section,
+                                      const Section& section,
+                                      const Material& material,
                                       double length) const {
-  section.validate();
-  const double EI = section.flexural_rigidity();
+  const double EI = flexural_rigidity(section, material);  // validates both
+  const std::optional<double> area = section.area();
+  if (!area || !(section.thickness > 0.0)) {
+    throw InvalidInput(
+        "the stress of a PRB element needs the section's area and thickness (N/A and M c/I with "
+        "c = h/2): give a rectangle (Section::rectangle)");
+  }
   if (!std::isfinite(length) || length <= 0.0) {
     throw InvalidInput(fmt::format("segment length l = {} must be a finite number > 0", length));
   }
@@ -148,8 +144,8 @@ SectionStress PrbmElement::max_stress(double Theta,
   const double c = section.thickness / 2.0;
   const double I = section.second_moment();
   // Howell eqs. 5.22-5.25: the top fibre is compressed by a positive (counter-clockwise) moment.
-  s.sigma_top = -s.bending_moment * c / I + s.axial_force / section.area();
-  s.sigma_bottom = s.bending_moment * c / I + s.axial_force / section.area();
+  s.sigma_top = -s.bending_moment * c / I + s.axial_force / *area;
+  s.sigma_bottom = s.bending_moment * c / I + s.axial_force / *area;
   s.sigma_max = std::max(std::abs(s.sigma_top), std::abs(s.sigma_bottom));
   return s;
 }

@@ -17,22 +17,10 @@
 #include <string>
 
 #include "flexure/solver/common/end_load.h"
+#include "flexure/solver/common/section.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure {
-
-// Rectangular cross-section and material of the flexible segment, in any consistent units.
-struct RectangularSection {
-  double width = 0.0;           // w, out of the plane of bending
-  double thickness = 0.0;       // h, in the plane of bending (c = h/2)
-  double youngs_modulus = 0.0;  // E
-
-  double area() const { return width * thickness; }
-  double second_moment() const { return width * thickness * thickness * thickness / 12.0; }
-  double flexural_rigidity() const { return youngs_modulus * second_moment(); }
-  // Throws InvalidInput naming the quantity unless all three are finite and > 0.
-  void validate() const;
-};
 
 // The rigid-link layout of the model, nondimensional (divided by l).
 struct PrbGeometry {
@@ -119,10 +107,13 @@ class PrbmElement {
   // (tension positive); default: the clamp, M = mu + a Fy - b Fx (eq. 5.21), N = Fx.
   virtual double max_moment(double Theta, const EndLoad& load) const;
   virtual double axial_force(double Theta, const EndLoad& load) const;
-  // Dimensional stress for `load` (nondimensional) on a segment of `length` with `section`.
+  // Dimensional stress for `load` (nondimensional) on a segment of `length` with `section` in
+  // `material` (solver/common/section.h; EI = E I). Both are validated; the section must give its
+  // area and thickness (a rectangle: N/A and M c/I with c = h/2), else InvalidInput.
   SectionStress max_stress(double Theta,
                            const EndLoad& load,
-                           const RectangularSection& section,
+                           const Section& section,
+                           const Material& material,
                            double length) const;
 };
 

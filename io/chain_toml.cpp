@@ -587,7 +587,6 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
                       ": density, g, extensible, nu, shear_coefficient and plate need the "
                       "section (E with width and thickness, or with I and A) in physical units");
       }
-      file.sections.emplace_back();
       file.segments.emplace_back();
       continue;
     }
@@ -614,14 +613,14 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
                            keys.material->source));
       }
     }
-    SegmentSection section;
-    section.E = keys.E->si;
-    section.I = keys.I ? *keys.I : *keys.width * std::pow(*keys.thickness, 3) / 12.0;
-    section.thickness = keys.thickness;
-    if (keys.area) section.area = keys.area;
-    if (keys.width) section.area = *keys.width * *keys.thickness;
+    // E, I = b h^3/12 or the given I, and the area b h or the given A (the same numbers as the
+    // Section and Material of `file.segments` below).
+    const double E = keys.E->si;
+    const double I = keys.I ? *keys.I : *keys.width * std::pow(*keys.thickness, 3) / 12.0;
+    std::optional<double> area = keys.area;
+    if (keys.width) area = *keys.width * *keys.thickness;
     auto& segment = std::get<FlexibleSegment>(chain.segments[k]);
-    if ((keys.density || keys.extensible) && !section.area) {
+    if ((keys.density || keys.extensible) && !area) {
       toml_fail(source,
                 keys.line,
                 where +
@@ -637,10 +636,9 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
       if (!(*keys.density > 0.0)) toml_fail(source, keys.line, where + ".density must be > 0");
       const double g = keys.g.value_or(9.80665);
       if (!(g >= 0.0)) toml_fail(source, keys.line, where + ".g must be >= 0");
-      const double weight = *keys.density * *section.area * g;
+      const double weight = *keys.density * *area * g;
       segment.qy -= segment.q_profile.empty() ? weight : 0.0;
       for (auto& q : segment.q_profile) q[1] -= weight;
-      section.weight_per_length = weight;
     }
     if (keys.extensible) {
       if (!nu) {
@@ -664,8 +662,8 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
       if (!(kappa > 0.0 && kappa <= 1.0)) {
         toml_fail(source, keys.line, where + ".shear_coefficient must be in (0, 1]");
       }
-      segment.EA = section.E * *section.area;
-      segment.GAs = kappa * section.E / (2.0 * (1.0 + *nu)) * *section.area;
+      segment.EA = E * *area;
+      segment.GAs = kappa * E / (2.0 * (1.0 + *nu)) * *area;
     } else if (keys.shear_coefficient) {
       toml_fail(
           source, keys.line, where + ": shear_coefficient is used with extensible = true only");
@@ -679,12 +677,12 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
       try {
         plate = plate_rule_from_string(*keys.plate, where + ".plate");
         const ModulusChoice choice = choose_modulus(
-            plate == PlateRule::kAuto ? PlateRule::kOff : plate, section.E, nu, {}, {}, {}, where);
+            plate == PlateRule::kAuto ? PlateRule::kOff : plate, E, nu, {}, {}, {}, where);
         if (plate == PlateRule::kAuto) {
           // Checked now (nu, width and thickness), decided after the solve.
-          choose_modulus(PlateRule::kAuto, section.E, nu, keys.width, keys.thickness, 0.0, where);
+          choose_modulus(PlateRule::kAuto, E, nu, keys.width, keys.thickness, 0.0, where);
         }
-        segment.EI = choice.effective_E * section.I;
+        segment.EI = choice.effective_E * I;
       } catch (const InvalidInput& e) {
         toml_fail(source, keys.line, e.what());
       }
@@ -697,7 +695,6 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
                 keys.line,
                 where + ": nu is used with extensible = true or plate = \"on\"/\"auto\" only");
     }
-    file.sections.push_back(section);
     // The same as the library's types: the rectangle or the general I (with its thickness), and
     // the material (nu where extensible gives it, else the default; the yield strength below).
     SegmentProperties properties{keys.width ? Section::rectangle(*keys.width, *keys.thickness)

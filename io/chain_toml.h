@@ -20,24 +20,11 @@
 
 namespace flexure::io {
 
-// The section of a flexible segment in SI units: EI = E I, and the bending stress M c / I with
-// c = thickness / 2 when the thickness is known.
-struct SegmentSection {
-  double E = 0.0;                   // Pa
-  double I = 0.0;                   // m^4
-  std::optional<double> thickness;  // m
-  std::optional<double> area;       // m^2: width thickness, or A (the axial stress N/A)
-  double weight_per_length = 0.0;   // N/m: rho A g where density is given (self-weight)
-};
-
 // A chain file is a PhysicalChain (beam/physical_beam.h: the chain, each flexible segment's
 // Section and Material where it gives one, the file's yield_strength, which the reader also puts
 // into every such segment's Material) and what only a file says.
 struct ChainFile : PhysicalChain {
-  bool physical = false;  // SI units (units = "SI" or a value written with a unit)
-  // Per segment, as PhysicalChain::segments in the reader's earlier form (E, I, thickness, area,
-  // self-weight); kept for existing callers.
-  std::vector<std::optional<SegmentSection>> sections;
+  bool physical = false;              // SI units (units = "SI" or a value written with a unit)
   std::vector<std::string> warnings;  // likely unit mistakes, for stderr (solver/common/quantity.h)
   // [[contact]] tables (docs/contact.md): a rigid circle or straight stop, the tip load the
   // continuation starts from and its step count. Empty: no contact. Several tables: several

@@ -21,7 +21,7 @@ void write_history(Hdf5Group& root,
   root.set_attribute("stroke_percent", problem.stroke_percent);
   root.set_attribute("objective", to_string(problem.objective));
   root.set_attribute("pcf_min", problem.pcf_min.value_or(0.0));
-  root.set_attribute("orientation", problem.orientation);
+  root.set_attribute("orientation", to_string(problem.orientation));
   root.set_attribute("seed", static_cast<std::int64_t>(seed));
   root.set_attribute("algorithm",
                      "Halton scan, NLopt COBYLA / Nelder-Mead local runs per region of the "

@@ -87,8 +87,8 @@ void check_loads(const MechanismDesign& d) {
   for (int p = 1; p <= 3; ++p) {
     const JointDesign& j = d.joints[p - 1];
     if (j.type == PivotType::kPin) continue;
-    const RectangularSection section = j.section(d.E);
-    const double EI = section.flexural_rigidity();
+    const Section section = j.section();  // a rectangle: its area is known
+    const double EI = j.flexural_rigidity(d.material_properties());
     // Each value was finite and > 0, but their product can leave double precision (a 1e-200 m
     // strip has h^3 = 0): the springs would be 0 or inf and the PRBM force 0/0.
     const double k = d.spring_constant(p);
@@ -121,7 +121,7 @@ void check_loads(const MechanismDesign& d) {
           EI,
           L::kMaxLoadParameter));
     }
-    const double strain = P / (d.E * section.area());
+    const double strain = P / (d.E * *section.area());
     if (strain > L::kMaxAxialStrain) {
       throw InvalidInput(fmt::format(
           "{} segment {}: axial strain |P|/(EA) = {:.4g} (largest PRBM pin force {:.4g} N, "
@@ -131,7 +131,7 @@ void check_loads(const MechanismDesign& d) {
           pivot_table(p),
           strain,
           P,
-          section.area(),
+          *section.area(),
           L::kMaxAxialStrain));
     }
   }
@@ -283,9 +283,17 @@ double MechanismDesign::toggle_stroke() const {
   return cfm::toggle_stroke_percent(R()) / 100.0 * (r2 + r3);
 }
 
+Material MechanismDesign::material_properties() const {
+  Material m;
+  m.E = E;
+  if (nu) m.nu = *nu;
+  if (yield_strength > 0.0) m.yield_strength = yield_strength;
+  return m;
+}
+
 double MechanismDesign::spring_constant(int pivot) const {
   const JointDesign& j = joints[pivot - 1];
-  const double EI = j.section(E).flexural_rigidity();
+  const double EI = j.flexural_rigidity(material_properties());
   switch (j.type) {
     case PivotType::kPin:
       return 0.0;

@@ -20,6 +20,7 @@
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
 #include "flexure/mechanisms/force_of.h"
 #include "flexure/solver/common/plate_modulus.h"
+#include "flexure/solver/common/section.h"
 
 namespace flexure::mechanism {
 
@@ -49,9 +50,21 @@ struct JointDesign {
   char paper_letter = 0;       // kFixedFixed: the paper's letter, 'l' or 's' (Table 2/5 factor)
   double table2_factor = 0.3;  // kFixedFixed 'l': n of Table 2's n gamma K_theta EI/L
 
-  // The rectangular cross-section (elements/prbm_element.h) in a material of Young's modulus E:
-  // second moment b h^3/12, area b h, flexural rigidity E b h^3/12.
-  RectangularSection section(double E) const { return {width, thickness, E}; }
+  // The strip's cross-section as the library's one Section (solver/common/section.h): the
+  // rectangle b x h, second moment b h^3/12, section modulus b h^2/6, area b h. Not validated
+  // here (a pin has no strip): finalise() checks every flexible pivot's width and thickness.
+  Section section() const {
+    Section s;
+    s.shape = Section::Shape::kRectangle;
+    s.width = width;
+    s.thickness = thickness;
+    return s;
+  }
+  // E I = E b h^3/12 of the strip in `material` (the EI of Howell eqs. 5.14 and 5.72). Not
+  // validated either: check_loads (mechanism.cpp) reports a product outside double precision.
+  double flexural_rigidity(const Material& material) const {
+    return material.E * section().second_moment();
+  }
 };
 
 struct MechanismDesign {
@@ -92,6 +105,11 @@ struct MechanismDesign {
   // (--force-of): a design file's `force_of` key, which `flexure design mechanism` writes for the
   // force it was specified by. Empty: one half (every model computes one half, force_of.h).
   std::optional<ForceOf> force_of;
+
+  // E (the effective modulus once the plate rule is applied), nu where given (else Material's
+  // default) and S_y (where set, > 0) as the library's one Material (solver/common/section.h),
+  // which the stiffness and stress code reads. `material` above is the data/materials.csv id.
+  Material material_properties() const;
 
   const cfm::CfmConfiguration& configuration() const;
   double R() const { return r3 / r2; }

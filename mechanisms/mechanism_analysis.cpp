@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "flexure/mechanisms/cfm/constant_force.h"
+#include "flexure/mechanisms/mechanism_warnings.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {
@@ -148,6 +149,7 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
   a.iterations = last.iterations;
   a.residual = last.residual;
   if (!a.converged()) a.message = fmt::format("{}: {}", d.name, last.message);
+  a.warnings = analysis_warnings(a);
   return a;
 }
 
@@ -158,6 +160,9 @@ void report_forces_of(MechanismAnalysis& a, ForceOf of) {
   a.prbm.mean_force *= factor;
   a.mean_force_exact *= factor;
   a.force_of = of;
+  // The force-vanishing warnings quote the forces and say whose force they are: renewed (the
+  // analysis's warnings are exactly analysis_warnings()).
+  a.warnings = analysis_warnings(a);
 }
 
 std::vector<StrokeStabilityEntry> stroke_stability_entries(const MechanismAnalysis& a) {

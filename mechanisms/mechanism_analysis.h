@@ -54,6 +54,9 @@ struct AnalysisOptions {
 // was asked for and exists, the exact stroke converged; otherwise the exact stroke's termination
 // with the message "<design>: <solver message>". iterations and residual are the exact stroke's
 // (Newton iterations in all, its largest residual), the PRBM's where no exact stroke ran.
+// warnings: yielding pivots, forces that vanish or change sign, exact states the mechanism cannot
+// hold (analysis_warnings, mechanism_warnings.h), which the CLI prints and Python raises as
+// FlexureWarning.
 struct MechanismAnalysis : SolveStatus {
   MechanismDesign design;
   PrbmStrokeResult prbm;

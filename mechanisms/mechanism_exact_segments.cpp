@@ -51,8 +51,8 @@ void add_segment(const MechanismDesign& design,
   const int pivot = j < part.pivots.size() ? part.pivots[j] : 0;
   if (pivot == 0) return;
   const JointDesign& jd = design.joints[pivot - 1];
-  const RectangularSection section = jd.section(design.E);
-  const double sigma = m_max * 0.5 * jd.thickness / section.second_moment() + N / section.area();
+  const Section section = jd.section();  // a rectangle: its area is known
+  const double sigma = m_max * 0.5 * jd.thickness / section.second_moment() + N / *section.area();
   st.max_stress[pivot - 1] = std::max(st.max_stress[pivot - 1], sigma);
   st.pivot_strain_energy[pivot - 1] += U;
   st.pivot_rotation[pivot - 1] += rotation;

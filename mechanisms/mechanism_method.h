@@ -46,11 +46,4 @@ struct MechanismMethodChoice {
 MechanismMethodChoice choose_mechanism_method(const MechanismDesign& design,
                                               MechanismMethod method,
                                               double tolerance);
-// deprecated: use MechanismMethod (the name as `mechanism_method_from_string` reads it).
-inline MechanismMethodChoice choose_mechanism_method(const MechanismDesign& design,
-                                                     const std::string& method,
-                                                     double tolerance) {
-  return choose_mechanism_method(design, mechanism_method_from_string(method), tolerance);
-}
-
 }  // namespace flexure::mechanism

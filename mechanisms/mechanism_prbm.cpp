@@ -69,7 +69,7 @@ PrbmState prbm_state(const MechanismDesign& design, double displacement) {
   for (int p = 1; p <= 3; ++p) {
     const JointDesign& j = design.joints[p - 1];
     if (j.type == PivotType::kPin) continue;
-    const RectangularSection section = j.section(design.E);
+    const Section section = j.section();  // a rectangle: its area is known
     const double I = section.second_moment(), half_h = 0.5 * j.thickness;
     double M = 0.0;
     if (j.type == PivotType::kSmall) {
@@ -77,7 +77,7 @@ PrbmState prbm_state(const MechanismDesign& design, double displacement) {
       // A fixed-fixed strip turned by psi between its two rigid bodies is bent to the curvature
       // psi/L whatever spring rule the force uses: M = (EI/L) psi (pure bending).
       const double K = j.segment == SegmentKind::kFixedFixed
-                           ? section.flexural_rigidity() / j.length
+                           ? j.flexural_rigidity(design.material_properties()) / j.length
                            : design.spring_constant(p);
       M = K * psi;
     } else {
@@ -94,7 +94,7 @@ PrbmState prbm_state(const MechanismDesign& design, double displacement) {
       M = cross(ex - cx, ey - cy, s.pin_force_x, s.pin_force_y);
     }
     s.moment[p - 1] = M;
-    s.stress[p - 1] = std::abs(M) * half_h / I + P / section.area();
+    s.stress[p - 1] = std::abs(M) * half_h / I + P / *section.area();
   }
   return s;
 }

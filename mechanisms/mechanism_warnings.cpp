@@ -73,4 +73,16 @@ std::vector<std::string> stability_warnings(const MechanismAnalysis& a) {
   return texts;
 }
 
+std::vector<Warning> analysis_warnings(const MechanismAnalysis& a) {
+  std::vector<Warning> out;
+  const auto add = [&out](WarningKind kind, std::vector<std::string> texts) {
+    for (std::string& text : texts) out.push_back({kind, std::move(text)});
+  };
+  add(WarningKind::kYield, yield_warnings(a));
+  // force_exact is filled exactly when the exact stroke ran and converged.
+  add(WarningKind::kForceVanishes, force_vanishing_warnings(a, !a.force_exact.empty()));
+  add(WarningKind::kOther, stability_warnings(a));
+  return out;
+}
+
 }  // namespace flexure::mechanism

@@ -24,4 +24,12 @@ std::vector<std::string> force_vanishing_warnings(const MechanismAnalysis& analy
 // "Mechanisms"), and stroke points without a verdict.
 std::vector<std::string> stability_warnings(const MechanismAnalysis& analysis);
 
+// The three above on the library's one warning channel (SolveStatus::warnings,
+// solver/common/status.h), in this order: yield (WarningKind::kYield), vanishing forces
+// (kForceVanishes; the exact force where the exact stroke ran and converged), stability (kOther).
+// analyze_mechanism puts them into MechanismAnalysis::warnings and report_forces_of renews them
+// (their forces are in the unit reported), so the CLI prints them and Python raises a
+// FlexureWarning for each.
+std::vector<Warning> analysis_warnings(const MechanismAnalysis& analysis);
+
 }  // namespace flexure::mechanism

@@ -30,7 +30,7 @@ CfmDesignProblem subclass(const std::string& config,
   p.stroke_percent = d;
   p.objective = pcf_min ? DesignObjective::kMaxPsi : DesignObjective::kMaxPcf;
   p.pcf_min = pcf_min;
-  p.orientation = orientation;
+  p.orientation = flexure::design::orientation_rules_from_string(orientation);
   p.model = flexure::design::default_model_options(p.objective);
   return p;
 }

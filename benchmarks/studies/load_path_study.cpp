@@ -302,7 +302,7 @@ PathTable cbcm_table(const PathRequest& r) {
                                            "judges every point"));
   for (const CbcmSpecialPoint& sp : path.special_points) {
     PathSpecialPoint out;
-    out.kind = sp.kind;
+    out.kind = to_string(sp.kind);
     out.load_factor = sp.point.lambda;
     out.index = sp.index;
     out.index_after = sp.index_after;
@@ -313,7 +313,7 @@ PathTable cbcm_table(const PathRequest& r) {
   const bool angle = r.control->coordinate == TipCoordinate::kTheta;
   for (const CbcmForcePoint& f : path.force_points) {
     PathForcePoint out;
-    out.kind = f.kind;
+    out.kind = to_string(f.kind);
     out.load_factor = f.point.lambda;
     out.coordinate = f.coordinate * (angle ? 1.0 : u.length);
     out.force = f.force * (angle ? u.moment : u.force);
@@ -330,7 +330,7 @@ PathTable cbcm_table(const PathRequest& r) {
   t.bifurcation_points = path.bifurcation_points;
   if (path.limit_points > 0) {
     for (const CbcmSpecialPoint& sp : path.special_points) {
-      if (sp.kind == "limit_point") {
+      if (sp.kind == SpecialPointKind::kLimitPoint) {
         t.first_limit_load_factor = sp.point.lambda;
         break;
       }

@@ -36,6 +36,40 @@ const char* to_string(DesignObjective objective) {
   return "?";
 }
 
+char to_char(OrientationRule rule) {
+  switch (rule) {
+    case OrientationRule::kInPlane:
+      return 'I';
+    case OrientationRule::kOutOfPlane:
+      return 'O';
+    case OrientationRule::kPossiblyOutOfPlane:
+      return 'o';
+  }
+  return '?';
+}
+
+std::vector<OrientationRule> orientation_rules_from_string(const std::string& flags) {
+  std::vector<OrientationRule> rules;
+  for (char f : flags) {
+    if (f == 'I') {
+      rules.push_back(OrientationRule::kInPlane);
+    } else if (f == 'O') {
+      rules.push_back(OrientationRule::kOutOfPlane);
+    } else if (f == 'o') {
+      rules.push_back(OrientationRule::kPossiblyOutOfPlane);
+    } else {
+      throw InvalidInput(fmt::format("orientation '{}': use the thesis's flags I, O and o", flags));
+    }
+  }
+  return rules;
+}
+
+std::string to_string(const std::vector<OrientationRule>& rules) {
+  std::string flags;
+  for (OrientationRule r : rules) flags.push_back(to_char(r));
+  return flags;
+}
+
 DesignObjective design_objective_from_string(const std::string& name) {
   for (const auto& [o, text] : kObjectives) {
     if (same_name(name, text)) return o;
@@ -87,12 +121,6 @@ void CfmDesignProblem::validate() const {
         stroke_percent,
         lo,
         hi));
-  }
-  for (char f : orientation) {
-    if (f != 'I' && f != 'O' && f != 'o') {
-      throw InvalidInput(
-          fmt::format("orientation '{}': use the thesis's flags I, O and o", orientation));
-    }
   }
   const bool needs_pcf =
       objective == DesignObjective::kMaxPsi || objective == DesignObjective::kMinDn;
@@ -224,11 +252,11 @@ void constraint_values(const CfmDesignProblem& problem,
   // meets them (C = D = 1 there, or no flexure), so the constraint count stays fixed.
   const auto value = [](const std::optional<double>& v) { return v.value_or(1.0); };
   for (int i = 0; i < 3; ++i) {
-    for (char f : problem.orientation) {
-      if (f == 'I') {
+    for (OrientationRule f : problem.orientation) {
+      if (f == OrientationRule::kInPlane) {
         out.push_back({value(o.D_min[i]), limits.I_D_min_max, true, ConstraintKind::kRatio});
       } else {
-        const Bounds& D = f == 'O' ? limits.O_D_equal : limits.o_D_equal;
+        const Bounds& D = f == OrientationRule::kOutOfPlane ? limits.O_D_equal : limits.o_D_equal;
         out.push_back({value(o.C[i]), limits.C_min, false, ConstraintKind::kRatio});
         out.push_back({value(o.D_equal[i]), D.lower, false, ConstraintKind::kRatio});
         out.push_back({value(o.D_equal[i]), D.upper, true, ConstraintKind::kRatio});
@@ -251,11 +279,13 @@ CfmDesignEvaluation evaluate_design(const CfmDesignProblem& problem,
   const OrientationLimits& limits = problem.orientation_limits;
   for (int i = 0; !problem.orientation.empty() && i < 3; ++i) {
     const std::string pivot = fmt::format("pivot {}", i + 1);
-    for (char f : problem.orientation) {
-      if (f == 'I') {
+    for (OrientationRule rule : problem.orientation) {
+      const char f = to_char(rule);
+      if (rule == OrientationRule::kInPlane) {
         names.push_back(fmt::format("{} I: D_min <= {:g}", pivot, limits.I_D_min_max));
       } else {
-        const Bounds& D = f == 'O' ? limits.O_D_equal : limits.o_D_equal;
+        const Bounds& D =
+            rule == OrientationRule::kOutOfPlane ? limits.O_D_equal : limits.o_D_equal;
         names.push_back(fmt::format("{} {}: C >= {:g}", pivot, f, limits.C_min));
         names.push_back(fmt::format("{} {}: D_equal >= {:g}", pivot, f, D.lower));
         names.push_back(fmt::format("{} {}: D_equal <= {:g}", pivot, f, D.upper));

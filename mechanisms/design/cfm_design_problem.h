@@ -32,6 +32,21 @@ const char* to_string(DesignObjective objective);
 // Throws InvalidInput naming the allowed values.
 DesignObjective design_objective_from_string(const std::string& name);
 
+// An orientation rule of the thesis (Table 5.4, eqs. 6.10-6.11), applied to every flexure but the
+// primary one; a sub-class name carries them as trailing flags ("slp-a95Io").
+enum class OrientationRule {
+  kInPlane,             // I: D_min <= 1
+  kOutOfPlane,          // O: C >= 1 and 0.5 <= D_equal <= 2
+  kPossiblyOutOfPlane,  // o: C >= 1 and 0.1 <= D_equal <= 10
+};
+// The thesis's flag: 'I', 'O' or 'o'.
+char to_char(OrientationRule rule);
+// The rules of a flag string ("IO", "o"; empty: none), in its order (the order of the
+// constraints). Throws InvalidInput quoting the text and naming the allowed flags I, O and o.
+std::vector<OrientationRule> orientation_rules_from_string(const std::string& flags);
+// The flags of `rules` in their order ("IO"; empty for none): the JSON's and HDF5's text.
+std::string to_string(const std::vector<OrientationRule>& rules);
+
 // The range of R whose toggle stroke is at least d (eq. 2.16 solved for R, docs/design.md):
 // q = (1 - d/100)^2, R in [(1 - q)/(1 + q), (1 + q)/(1 - q)] (every R for d = 100 is not allowed:
 // throws InvalidInput unless 0 < d < 100).
@@ -55,8 +70,8 @@ struct CfmDesignProblem {
   std::string config;            // spp, lpp, psp, plp, ssp, slp, sps, lps, sss
   double stroke_percent = 16.0;  // d
   DesignObjective objective = DesignObjective::kMaxPcf;
-  std::optional<double> pcf_min;  // Xi' >= this (required by max-psi and min-dn)
-  std::string orientation;        // any of "I", "O", "o" (e.g. "IO"); empty: no rule
+  std::optional<double> pcf_min;             // Xi' >= this (required by max-psi and min-dn)
+  std::vector<OrientationRule> orientation;  // empty: no rule (orientation_rules_from_string)
   OrientationLimits orientation_limits;
   // Bounds (searched in log scale); R is further limited by the toggle interval. The thesis
   // states none; these hold every printed optimum (docs/design.md).

@@ -539,7 +539,7 @@ CfmSynthesisResult synthesize_cfm(const CfmDesignProblem& problem,
   // One NLopt constraint per rule and pivot (cfm_design_problem.cpp), a count fixed by the
   // problem; the toggle limit is in the bounds of R.
   std::size_t m = problem.pcf_min ? 1 : 0;
-  for (char f : problem.orientation) m += f == 'I' ? 3 : 9;
+  for (OrientationRule f : problem.orientation) m += f == OrientationRule::kInPlane ? 3 : 9;
   fine.set_constraint_count(m);
   coarse.set_constraint_count(m);
   // Without constraints the objective (a max/min ratio over the stroke) has kinks at its optimum,

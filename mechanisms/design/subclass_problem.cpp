@@ -29,7 +29,7 @@ SubclassProblem subclass_problem(const cfm::CfmSubclass& row) {
   } else {
     p.objective = DesignObjective::kMaxPsi;
     p.pcf_min = std::stod(digits);
-    p.orientation = subclass_flags(name);
+    p.orientation = orientation_rules_from_string(subclass_flags(name));
   }
   p.model = default_model_options(p.objective);
   for (const std::string& v : p.variables()) {

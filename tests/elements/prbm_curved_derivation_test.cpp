@@ -103,6 +103,8 @@ TEST(CurvedCantileverDerivation, StraightLimitReproducesTheFixedPinnedDerivation
     const PrbmDerivation straight = derive_fixed_pinned(n, fast_options());
     ASSERT_TRUE(curved.converged()) << curved.message;
     ASSERT_TRUE(straight.converged()) << straight.message;
+    EXPECT_EQ(curved.segment, PrbmSegment::kInitiallyCurved);
+    EXPECT_EQ(straight.segment, PrbmSegment::kFixedPinned);
     EXPECT_NEAR(curved.gamma, straight.gamma, kSameGammaTolerance) << "n = " << n;
     EXPECT_NEAR(
         curved.theta_max_gamma / kDeg, straight.theta_max_gamma / kDeg, kSameThetaMaxToleranceDeg)

@@ -19,6 +19,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "flexure/elements/prbm_tables.h"
 #include "flexure/solver/common/errors.h"
@@ -68,6 +69,7 @@ TEST(PrbErrorFunction, MatchesIndependentValuesForVerticalLoad) {
 TEST(EndMomentDerivation, ReproducesHowellGammaToFourDigits) {
   const PrbmDerivation d = derive_end_moment();
   ASSERT_TRUE(d.converged()) << d.message;
+  EXPECT_EQ(d.segment, PrbmSegment::kEndMoment);
   EXPECT_NEAR(d.gamma, kEndMomentBook.gamma, 0.5e-4);  // 0.7346, 4 digits
   EXPECT_NEAR(d.theta0_at_theta_max / kDeg, kEndMomentBook.theta0_max_deg, 0.1);  // 124.4 deg
   // The error at Theta_max is the 0.5 % limit (root found on the closed form).
@@ -102,6 +104,7 @@ TEST(FixedPinnedDerivation, ReproducesTable51ForRowsNAtLeastMinusOne) {
     if (row.load_ratio_n < -1.0) continue;
     const PrbmDerivation d = derive_fixed_pinned(row.load_ratio_n);
     ASSERT_TRUE(d.converged()) << "n = " << row.load_ratio_n << ": " << d.message;
+    EXPECT_EQ(d.segment, PrbmSegment::kFixedPinned);
     EXPECT_NEAR(d.gamma, row.gamma, kGammaTolerance) << "n = " << row.load_ratio_n;
     EXPECT_NEAR(d.theta_max_gamma / kDeg, row.theta_max_gamma_deg, kThetaMaxToleranceDeg)
         << "n = " << row.load_ratio_n;
@@ -141,6 +144,24 @@ TEST(FixedPinnedDerivation, DerivedGammaIsALocalMaximiserOfThetaMax) {
   above.gamma_min = best.gamma + 0.002;
   EXPECT_LE(derive_fixed_pinned(1.0, below).theta_max_gamma, best.theta_max_gamma);
   EXPECT_LE(derive_fixed_pinned(1.0, above).theta_max_gamma, best.theta_max_gamma);
+}
+
+TEST(PrbmSegment, NamesRoundTripAndAnUnknownNameListsTheAllowedOnes) {
+  EXPECT_EQ(to_string(PrbmSegment::kFixedPinned), "fixed-pinned");
+  EXPECT_EQ(to_string(PrbmSegment::kEndMoment), "end-moment");
+  EXPECT_EQ(to_string(PrbmSegment::kInitiallyCurved), "initially-curved");
+  for (PrbmSegment s :
+       {PrbmSegment::kFixedPinned, PrbmSegment::kEndMoment, PrbmSegment::kInitiallyCurved}) {
+    EXPECT_EQ(prbm_segment_from_string(to_string(s)), s);
+  }
+  try {
+    prbm_segment_from_string("fixed-guided");
+    ADD_FAILURE() << "no exception";
+  } catch (const InvalidInput& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("'fixed-guided'"), std::string::npos) << what;
+    EXPECT_NE(what.find("fixed-pinned, end-moment, initially-curved"), std::string::npos) << what;
+  }
 }
 
 TEST(FixedPinnedDerivation, RejectsInvalidInput) {

@@ -27,6 +27,7 @@
 #include "flexure/elements/prbm_tables.h"
 #include "flexure/elements/small_length_flexural_pivot.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/section.h"
 
 namespace flexure {
 namespace {
@@ -38,7 +39,8 @@ double printed(double half_unit) { return half_unit + 1e-9; }
 
 // --- Small-length flexural pivot example (L = 5 in, l = 0.5 in, 0.75 x 0.03 in, E = 2e5 psi) ----
 constexpr double kSlfpL = 5.0, kSlfpl = 0.5;
-const RectangularSection kSlfpSection{0.75, 0.03, 2.0e5};
+const Section kSlfpSection = Section::rectangle(0.75, 0.03);
+const Material kSlfpMaterial{2.0e5};
 // The book carries its rounded I = 1.7e-6 in^4 (K = 0.68 in lb) into every later number (eqs.
 // 5.27-5.39), so the load chain uses it; the exact I = 1.6875e-6 gives F = 0.0953 lb, not 0.096.
 constexpr double kSlfpBookEI = 2.0e5 * 1.7e-6;
@@ -47,8 +49,9 @@ TEST(SmallLengthFlexuralPivot, BookExampleForTheRequiredDeflection) {
   const SmallLengthFlexuralPivot pivot(kSlfpL / kSlfpl);
   const double EI = kSlfpBookEI;
   EXPECT_NEAR(kSlfpSection.second_moment(), 1.7e-6, printed(0.05e-6));  // eq. 5.26 (erratum 10^-6)
-  EXPECT_NEAR(
-      pivot.spring_constant(kSlfpSection.flexural_rigidity(), kSlfpl), 0.68, printed(0.005));
+  EXPECT_NEAR(pivot.spring_constant(flexural_rigidity(kSlfpSection, kSlfpMaterial), kSlfpl),
+              0.68,
+              printed(0.005));
   const double Theta = std::asin(3.0 / (kSlfpL + kSlfpl / 2.0));  // eq. 5.28
   EXPECT_NEAR(Theta, 0.608, printed(0.0005));
   EXPECT_NEAR(pivot.tip(Theta).a_over_l * kSlfpl, 4.56, printed(0.005));  // eq. 5.29
@@ -57,9 +60,9 @@ TEST(SmallLengthFlexuralPivot, BookExampleForTheRequiredDeflection) {
   const double F = alpha2 * EI / (kSlfpl * kSlfpl);
   EXPECT_NEAR(F, 0.096, printed(0.0005));  // eq. 5.33
   // Stress with the exact section: the nondimensional load for F on the exact EI.
-  const double alpha2_exact = F * kSlfpl * kSlfpl / kSlfpSection.flexural_rigidity();
+  const double alpha2_exact = F * kSlfpl * kSlfpl / flexural_rigidity(kSlfpSection, kSlfpMaterial);
   const SectionStress s =
-      pivot.max_stress(Theta, EndLoad{0.0, alpha2_exact, 0.0}, kSlfpSection, kSlfpl);
+      pivot.max_stress(Theta, EndLoad{0.0, alpha2_exact, 0.0}, kSlfpSection, kSlfpMaterial, kSlfpl);
   EXPECT_NEAR(s.sigma_max, 3900.0, printed(50.0));  // eq. 5.34, 2 significant figures
 }
 
@@ -77,15 +80,17 @@ TEST(SmallLengthFlexuralPivot, BookIterativeExampleSolvesEquation535) {
   EXPECT_NEAR(eq.tip.a_over_l * kSlfpl, 4.50520, 1e-5);
   EXPECT_NEAR(eq.tip.b_over_l * kSlfpl, 3.07502, 1e-5);
   // Eq. 5.39 prints 4200 psi from a = 4.71 in (erratum); sigma = F a c/I with a = 4.50520 in.
-  const double alpha2_exact = 0.1 * kSlfpl * kSlfpl / kSlfpSection.flexural_rigidity();
-  const SectionStress s =
-      pivot.max_stress(eq.Theta, EndLoad{0.0, alpha2_exact, 0.0}, kSlfpSection, kSlfpl);
+  const double alpha2_exact =
+      0.1 * kSlfpl * kSlfpl / flexural_rigidity(kSlfpSection, kSlfpMaterial);
+  const SectionStress s = pivot.max_stress(
+      eq.Theta, EndLoad{0.0, alpha2_exact, 0.0}, kSlfpSection, kSlfpMaterial, kSlfpl);
   EXPECT_NEAR(s.sigma_max, 0.1 * 4.50520 * 0.015 / 1.6875e-6, 0.5);
 }
 
 // --- Fixed-pinned worked example: steel, l = 20 in, 1.25 x 1/32 in, b = 10 in --------------------
 constexpr double kFpl = 20.0;
-const RectangularSection kFpSection{1.25, 1.0 / 32.0, 30.0e6};
+const Section kFpSection = Section::rectangle(1.25, 1.0 / 32.0);
+const Material kFpSteel{30.0e6};
 
 FixedPinnedConstants example_constants(double n, double gamma, double K_theta, double c_theta) {
   FixedPinnedConstants c = FixedPinnedConstants::from_table(n);
@@ -97,7 +102,7 @@ FixedPinnedConstants example_constants(double n, double gamma, double K_theta, d
 
 TEST(FixedPinnedSegment, BookExampleVerticalLoadPrbmSide) {
   const FixedPinnedSegment seg(example_constants(0.0, 0.85, 2.68, 1.24));
-  const double EI = kFpSection.flexural_rigidity();
+  const double EI = flexural_rigidity(kFpSection, kFpSteel);
   EXPECT_NEAR(kFpSection.second_moment(), 3.18e-6, printed(0.005e-6));
   EXPECT_NEAR(seg.spring_constant(EI, kFpl), 10.9, printed(0.05));  // eq. 5.81
   const double Theta = std::asin(10.0 / (0.85 * kFpl));             // eq. 5.82
@@ -107,7 +112,8 @@ TEST(FixedPinnedSegment, BookExampleVerticalLoadPrbmSide) {
   EXPECT_NEAR(P, 0.50, printed(0.005));                              // eq. 5.83
   EXPECT_NEAR(seg.tip(Theta).a_over_l * kFpl, 16.7, printed(0.05));  // eq. 5.84
   EXPECT_NEAR(seg.tip(Theta).theta0, 0.78, printed(0.005));          // eq. 5.86
-  const SectionStress s = seg.max_stress(Theta, EndLoad::howell(0.0, alpha2), kFpSection, kFpl);
+  const SectionStress s =
+      seg.max_stress(Theta, EndLoad::howell(0.0, alpha2), kFpSection, kFpSteel, kFpl);
   EXPECT_NEAR(s.sigma_max, 41000.0, printed(500.0));  // eq. 5.85, 2 significant figures
   // The virtual-work relation and the tangential-force form (eq. 5.59) are the same equation.
   EXPECT_NEAR(seg.load_factor_at(Theta, EndLoad::howell(0.0, 1.0)), alpha2, 1e-12);
@@ -115,7 +121,7 @@ TEST(FixedPinnedSegment, BookExampleVerticalLoadPrbmSide) {
 
 TEST(FixedPinnedSegment, BookExampleAngledLoadPrbmSide) {
   const FixedPinnedSegment seg(example_constants(1.0, 0.84, 2.62, 1.2467));
-  const double EI = kFpSection.flexural_rigidity();
+  const double EI = flexural_rigidity(kFpSection, kFpSteel);
   EXPECT_NEAR(seg.spring_constant(EI, kFpl), 10.5, printed(0.05));  // eq. 5.91
   const double Theta = std::asin(10.0 / (0.84 * kFpl));
   EXPECT_NEAR(Theta, 0.638, printed(0.0005));  // eq. 5.92
@@ -126,7 +132,8 @@ TEST(FixedPinnedSegment, BookExampleAngledLoadPrbmSide) {
   // Eq. 5.95 uses gamma = 0.85 instead of 0.84 (erratum); both give 16.7 in.
   EXPECT_NEAR(seg.tip(Theta).a_over_l * kFpl, 16.7, printed(0.05));
   EXPECT_NEAR(seg.tip(Theta).theta0, 0.79, printed(0.005));  // eq. 5.96
-  const SectionStress s = seg.max_stress(Theta, EndLoad::howell(1.0, alpha2), kFpSection, kFpl);
+  const SectionStress s =
+      seg.max_stress(Theta, EndLoad::howell(1.0, alpha2), kFpSection, kFpSteel, kFpl);
   EXPECT_NEAR(s.sigma_top, -37400.0, printed(50.0));  // eq. 5.97, 3 significant figures
   EXPECT_LT(s.axial_force, 0.0);                      // n = 1: compressive
 }
@@ -271,9 +278,10 @@ TEST(FixedGuidedSegment, BookEndEffectorSpringConstant) {
   c.gamma = 0.85;
   c.K_theta = 2.65;
   const FixedGuidedSegment seg(c);
-  const RectangularSection section{7e-3, 0.8e-3, 2.9e9};
+  const Section section = Section::rectangle(7e-3, 0.8e-3);
+  const Material delrin{2.9e9};
   EXPECT_NEAR(section.second_moment(), 2.99e-13, printed(0.005e-13));
-  EXPECT_NEAR(seg.spring_constant(section.flexural_rigidity(), 22e-3), 0.18, printed(0.005));
+  EXPECT_NEAR(seg.spring_constant(flexural_rigidity(section, delrin), 22e-3), 0.18, printed(0.005));
   // Recomputed with the book's rounded I = 2.99e-13 m^4: 0.1776.
   EXPECT_NEAR(seg.spring_constant(2.9e9 * 2.99e-13, 22e-3), 0.1776, 5e-5);
 }
@@ -282,9 +290,11 @@ TEST(SmallLengthFlexuralPivot, BookBistableSwitchSpringConstant) {
   // §5.10 bistable switch: polypropylene E = 200,000 psi, l = 0.13 in, 0.25 x 0.08 in:
   // I = 1.07e-5 in^4, K = EI/l = 16.4 in lb/rad.
   const SmallLengthFlexuralPivot pivot(10.0);
-  const RectangularSection section{0.25, 0.08, 2.0e5};
+  const Section section = Section::rectangle(0.25, 0.08);
+  const Material polypropylene{2.0e5};
   EXPECT_NEAR(section.second_moment(), 1.07e-5, printed(0.005e-5));
-  EXPECT_NEAR(pivot.spring_constant(section.flexural_rigidity(), 0.13), 16.4, printed(0.05));
+  EXPECT_NEAR(
+      pivot.spring_constant(flexural_rigidity(section, polypropylene), 0.13), 16.4, printed(0.05));
 }
 
 TEST(FixedGuidedSegment, MatchesTheExactAntisymmetricSolutionWithinThePrbmAccuracy) {
@@ -339,7 +349,8 @@ TEST(PinnedPinnedSegment, StraightSegmentIsATwoForceMember) {
   const PrbEquilibrium eq = seg.solve(EndLoad{0.0, 0.1, 0.0});
   ASSERT_TRUE(eq.converged()) << eq.message;
   EXPECT_NEAR(eq.Theta, kPi / 2.0, 1e-12);
-  const SectionStress s = seg.max_stress(0.0, EndLoad{-2.0, 0.0, 0.0}, {1.0, 0.1, 1.0}, 1.0);
+  const SectionStress s = seg.max_stress(
+      0.0, EndLoad{-2.0, 0.0, 0.0}, Section::rectangle(1.0, 0.1), Material{1.0}, 1.0);
   EXPECT_EQ(s.bending_moment, 0.0);
   EXPECT_NEAR(s.sigma_top, -2.0 * 1.0 * (1.0 * 0.001 / 12.0) / 0.1, 1e-15);  // N/A, N = Fx EI/l^2
 }
@@ -352,8 +363,16 @@ TEST(PrbmElements, RejectInvalidInput) {
   const FixedPinnedSegment seg(FixedPinnedConstants::from_table(0.0));
   EXPECT_THROW(seg.generalized_load(0.2, EndLoad{0.0, 1.0, 0.5}), InvalidInput);
   EXPECT_THROW(seg.alpha2_at(kPi / 2.0), InvalidInput);  // Theta at the force angle
-  EXPECT_THROW(seg.max_stress(0.2, EndLoad{0.0, 1.0, 0.0}, RectangularSection{1.0, 0.0, 1.0}, 1.0),
-               InvalidInput);
+  Section flat;  // an unvalidated rectangle without thickness
+  flat.width = 1.0;
+  EXPECT_THROW(seg.max_stress(0.2, EndLoad{0.0, 1.0, 0.0}, flat, Material{1.0}, 1.0), InvalidInput);
+  EXPECT_THROW(
+      seg.max_stress(0.2, EndLoad{0.0, 1.0, 0.0}, Section::rectangle(1.0, 0.1), Material{}, 1.0),
+      InvalidInput);  // E = 0
+  // A general section has no area for N/A.
+  EXPECT_THROW(
+      seg.max_stress(0.2, EndLoad{0.0, 1.0, 0.0}, Section::general(1e-3, 0.1), Material{1.0}, 1.0),
+      InvalidInput);
   EXPECT_THROW(seg.solve(EndLoad{std::nan(""), 1.0, 0.0}), InvalidInput);
   EXPECT_THROW(CurvedCantileverConstants::from_table(2.5), InvalidInput);
 }

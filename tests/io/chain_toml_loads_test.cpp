@@ -67,8 +67,9 @@ nu = 0.3
   EXPECT_NEAR(first(f).qx, 1000.0, 1e-12);
   EXPECT_NEAR(first(f).EA, 200e9 * A, 1e-3);
   EXPECT_NEAR(first(f).GAs, 5.0 / 6.0 * 200e9 / 2.6 * A, 1e-3);
-  ASSERT_TRUE(f.sections.at(0).has_value());
-  EXPECT_NEAR(*f.sections[0]->area, A, 1e-18);
+  ASSERT_TRUE(f.segments.at(0).has_value());
+  ASSERT_TRUE(f.segments[0]->cross_section_area().has_value());
+  EXPECT_NEAR(*f.segments[0]->cross_section_area(), A, 1e-18);
   // g given, and a section by I and A with its own shear coefficient.
   const io::ChainFile g = io::parse_chain_file(R"(
 units = "SI"

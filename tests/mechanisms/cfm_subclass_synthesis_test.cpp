@@ -60,7 +60,7 @@ Posed pose(const cfm::CfmSubclass& row) {
   if (p.max_psi) {
     q.objective = DesignObjective::kMaxPsi;
     q.pcf_min = std::stod(m[3].str());
-    q.orientation = m[4].str();
+    q.orientation = orientation_rules_from_string(m[4].str());
     loosen_violated_rules(row.name, q.orientation_limits);
   } else {
     q.objective = DesignObjective::kMaxPcf;
@@ -103,7 +103,7 @@ std::vector<std::string> unmet_rules(const Posed& p, const cfm::CfmResult& found
     if (!r.C[i]) continue;  // a pin
     const double C = *r.C[i], De = *r.D_equal[i], Dm = *r.D_min[i];
     const std::string pivot = "pivot " + std::to_string(i + 1);
-    for (char flag : q.orientation) {
+    for (char flag : to_string(q.orientation)) {
       if (flag == 'I') need(Dm <= l.I_D_min_max + kSlack, pivot + " I: D_min", Dm);
       if (flag == 'O' || flag == 'o') need(C >= l.C_min - kSlack, pivot + ": C", C);
       const Bounds& b = flag == 'O' ? l.O_D_equal : l.o_D_equal;

@@ -145,7 +145,7 @@ TEST(CfmSynthesis, SameSeedSameAnswer) {
   q.stroke_percent = 40.0;
   q.objective = DesignObjective::kMaxPsi;
   q.pcf_min = 90.0;
-  q.orientation = "I";
+  q.orientation = {OrientationRule::kInPlane};
   q.model = default_model_options(q.objective);
   const CfmSynthesisResult c = synthesize_cfm(q), d = synthesize_cfm(q);
   EXPECT_EQ(c.x, d.x);
@@ -191,8 +191,9 @@ TEST(CfmSynthesis, BadProblemsAreClearErrors) {
   p.config = "xyz";
   EXPECT_THROW(synthesize_cfm(p), InvalidInput);
   p.config = "lpp";
-  p.orientation = "X";
-  EXPECT_THROW(synthesize_cfm(p), InvalidInput);
+  // Orientation rules are an enum; their flag text is checked where it is read.
+  EXPECT_THROW(orientation_rules_from_string("X"), InvalidInput);
+  EXPECT_THROW(orientation_rules_from_string("IX"), InvalidInput);
 }
 
 }  // namespace

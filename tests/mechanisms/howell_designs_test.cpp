@@ -72,7 +72,7 @@ TEST(HowellDesigns, Example2MomentOfInertiaThicknessAndForce) {
   // Printed h = 3.18 mm (0.125 in): the mm value rounds 3.175 mm, so it is checked in inches.
   EXPECT_NEAR(j.thickness / kInch, 0.125, 0.0005);
   // eq. 10.18: I = 33.86 mm^4. h = 0.125 in exactly gives 33.87: the book rounded h from I.
-  EXPECT_NEAR(j.section(d.E).second_moment() / 1e-12, 33.86, 1e-3 * 33.86);
+  EXPECT_NEAR(j.section().second_moment() / 1e-12, 33.86, 1e-3 * 33.86);
   // F = K_theta E I Phi/L^2 (k = gamma K_theta EI/L and r2 = gamma L: gamma cancels). The library
   // uses K_theta = 2.65; the book's 2.6 for this loading (Howell §6 slider example, gamma = 0.83)
   // turns the library's force into the printed 1.68 N.

@@ -29,13 +29,31 @@ TEST(MechanismMethod, MeasuredErrorTableMatchesTheExactModel) {
 
 TEST(MechanismMethod, AutoUsesThePrbmOnlyWhenItsErrorFitsTheTolerance) {
   const MechanismDesign spp = find_builtin_mechanism("1A-spp");  // measured 0.70 %
-  EXPECT_EQ(choose_mechanism_method(spp, "auto", 0.02).method, MechanismMethod::kPrbm);
-  EXPECT_EQ(choose_mechanism_method(spp, "auto", 0.005).method, MechanismMethod::kExact);
-  EXPECT_EQ(choose_mechanism_method(spp, "auto", 1e-6).method, MechanismMethod::kExact);
+  EXPECT_EQ(choose_mechanism_method(spp, MechanismMethod::kAuto, 0.02).method,
+            MechanismMethod::kPrbm);
+  EXPECT_EQ(choose_mechanism_method(spp, MechanismMethod::kAuto, 0.005).method,
+            MechanismMethod::kExact);
+  EXPECT_EQ(choose_mechanism_method(spp, MechanismMethod::kAuto, 1e-6).method,
+            MechanismMethod::kExact);
   const MechanismDesign plp = find_builtin_mechanism("1B-plp");  // measured 13.8 %
-  EXPECT_EQ(choose_mechanism_method(plp, "auto", 0.1).method, MechanismMethod::kExact);
-  EXPECT_EQ(choose_mechanism_method(plp, "prbm", 1e-6).method, MechanismMethod::kPrbm);
-  EXPECT_THROW(choose_mechanism_method(plp, "auto", 0.0), InvalidInput);
+  EXPECT_EQ(choose_mechanism_method(plp, MechanismMethod::kAuto, 0.1).method,
+            MechanismMethod::kExact);
+  EXPECT_EQ(choose_mechanism_method(plp, MechanismMethod::kPrbm, 1e-6).method,
+            MechanismMethod::kPrbm);
+  EXPECT_THROW(choose_mechanism_method(plp, MechanismMethod::kAuto, 0.0), InvalidInput);
+}
+
+TEST(MechanismMethod, NamesRoundTripAndAnUnknownNameListsTheAllowedOnes) {
+  for (MechanismMethod m :
+       {MechanismMethod::kAuto, MechanismMethod::kPrbm, MechanismMethod::kExact}) {
+    EXPECT_EQ(mechanism_method_from_string(to_string(m)), m);
+  }
+  try {
+    mechanism_method_from_string("elliptic");
+    ADD_FAILURE() << "no exception";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("auto, prbm, exact"), std::string::npos) << e.what();
+  }
 }
 
 TEST(MechanismMethod, CliReportsTheChoice) {

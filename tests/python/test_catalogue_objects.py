@@ -99,3 +99,17 @@ def test_ctrl_c_interrupts_a_long_analysis_without_a_callable():
     assert proc.returncode != 0
     assert "KeyboardInterrupt" in err, err
     assert elapsed < 5.0
+
+
+def test_analysis_warnings_are_flexure_warnings_with_the_command_lines_text():
+    # The example's strip in a material with a yield strength of 1 MPa yields: the analysis's
+    # warning (MechanismAnalysis.warnings, the one channel) is a FlexureWarning, worded as the
+    # command line prints it.
+    text = (pathlib.Path(__file__).resolve().parents[2] / "docs" / "examples"
+            / "mechanism_lpp.toml").read_text().replace("yield_strength = 34.5e6",
+                                                         "yield_strength = 1e6")
+    design = flexure.MechanismDesign.from_toml_text(text, "weak.toml")
+    with pytest.warns(flexure.FlexureWarning,
+                      match=r"pivot 1 of lpp-example yields: max stress .* >= yield strength "
+                            r"1e\+06 Pa"):
+        flexure.analyze_mechanism(design, flexure.AnalysisOptions(points=10, exact=False))
