@@ -24,12 +24,26 @@ install(FILES ${PROJECT_SOURCE_DIR}/include/flexure/flexure.h
 string(REPLACE ";" "\n" FLEXURE_PUBLIC_HEADER_LINES "${FLEXURE_PUBLIC_HEADERS}")
 file(WRITE ${PROJECT_BINARY_DIR}/public_headers.txt "${FLEXURE_PUBLIC_HEADER_LINES}\n")
 
+# Two export sets (issue 28): the beam component (core, solvers, elements, beam: Eigen, GSL,
+# SUNDIALS and fmt, no file format) and the rest (mechanisms, io, studies, the umbrella, HDF5,
+# toml++, NLopt). `find_package(flexure COMPONENTS beam)` loads only the first
+# (cmake/flexureConfig.cmake.in), so a beam-only consumer finds and links no HDF5 and no toml++.
+set(FLEXURE_BEAM_COMPONENT_TARGETS flexure_core flexure_solvers flexure_elements flexure_beam)
 get_property(FLEXURE_LAYER_TARGETS GLOBAL PROPERTY FLEXURE_LAYER_TARGETS)
-install(TARGETS ${FLEXURE_LAYER_TARGETS} flexure_library flexure_hdf5
+set(FLEXURE_FULL_TARGETS ${FLEXURE_LAYER_TARGETS})
+list(REMOVE_ITEM FLEXURE_FULL_TARGETS ${FLEXURE_BEAM_COMPONENT_TARGETS})
+install(TARGETS ${FLEXURE_BEAM_COMPONENT_TARGETS}
+        EXPORT flexureBeamTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(TARGETS ${FLEXURE_FULL_TARGETS} flexure_library flexure_hdf5
         EXPORT flexureTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS flexure RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(EXPORT flexureBeamTargets
+        NAMESPACE flexure::
+        DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/flexure)
 install(EXPORT flexureTargets
         NAMESPACE flexure::
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/flexure)
