@@ -21,6 +21,8 @@ constexpr double kPi = std::numbers::pi;
 constexpr int kOrder = 24;
 constexpr double kTruncation = 1e-16;
 constexpr int kMaxSteps = 100000;
+// Sub-points of one step evaluated in one call of TaylorStep::at_angle.
+constexpr int kChunk = 16;
 // The re-integrated far end must meet the solution within this (rad; relative for the moment): the
 // solve converges to about 1e-11; a larger gap means the result is not this chain's equilibrium.
 constexpr double kTipAngleCheck = 1e-8;
@@ -66,6 +68,10 @@ class TaylorStep {
     // operations of the scalar sum, in the same order, so the same values).
     sc_[0] = V2{sn[0], c[0]};
     uu_[0] = V2{u[0], us[0]};
+    by_order_[0][0] = V2{c[0], sn[0]};
+    by_order_[0][1] = V2{m[0], u[0]};
+    by_order_[0][2] = V2{v[0], us[0]};
+    by_order_[0][3] = V2{vs[0], 0.0};
     for (int k = 0; k < kOrder; ++k) {
       w_[k] = fx * c[k] + fy * sn[k];
       // The four Cauchy products, each summed in two interleaved halves (even and odd j): eight
@@ -102,12 +108,12 @@ class TaylorStep {
       vs[k + 1] = (wu + sigma * wus) * inv;
       sc_[k + 1] = V2{sn_next, c_next};
       uu_[k + 1] = V2{u_next, us_next};
-    }
-    // By order for the evaluation (at()): the components of one order side by side.
-    for (int k = 0; k <= kOrder; ++k) {
-      for (int p = 0; p < kPairs; ++p) {
-        by_order_[k][p] = V2{a_[2 * p][k], 2 * p + 1 < kSize ? a_[2 * p + 1][k] : 0.0};
-      }
+      // By order for the evaluation (at()): the components of one order side by side, stored
+      // as they are made (a transposing pass afterwards reloaded every coefficient).
+      by_order_[k + 1][0] = V2{c_next, sn_next};
+      by_order_[k + 1][1] = V2{m[k + 1], u_next};
+      by_order_[k + 1][2] = V2{v[k + 1], us_next};
+      by_order_[k + 1][3] = V2{vs[k + 1], 0.0};
     }
   }
   // The step length: the last two terms of each group (elastica; u and EI u'; their sigma-
@@ -145,6 +151,23 @@ class TaylorStep {
     }
     for (int i = 0; i < kSize; ++i) out[i] = r[i / 2][i % 2];
   }
+  // The tangent (cos, sin) and u, EI u' at `count` distances d[0..count) (the Pruefer angle's
+  // sub-points): the pairs of at() that hold them, by the same Horner recurrences (so the same
+  // values), the sub-points' recurrences interleaved in groups of up to kGroup so that they
+  // overlap (one Horner recurrence is a chain of dependent multiplies and adds).
+  void at_angle(const double* d, int count, double* c, double* s, double* u, double* v) const {
+    for (int first = 0; first < count; first += kGroup) {
+      const int n = std::min(kGroup, count - first);
+      if (n == kGroup) {
+        at_angle_group<kGroup>(d + first, c + first, s + first, u + first, v + first);
+      } else {
+        for (int i = 0; i < n; ++i) {
+          at_angle_group<1>(
+              d + first + i, c + first + i, s + first + i, u + first + i, v + first + i);
+        }
+      }
+    }
+  }
 
  private:
   using V2 = double __attribute__((vector_size(16)));
@@ -159,6 +182,26 @@ class TaylorStep {
   V2 sc_[kOrder + 1] = {};
   V2 uu_[kOrder + 1] = {};
   static constexpr int kPairs = (kSize + 1) / 2;
+  // Sub-points evaluated together by at_angle: three pairs each, 3 x 4 = 12 accumulators.
+  static constexpr int kGroup = 4;
+  template <int N>
+  void at_angle_group(const double* d, double* c, double* s, double* u, double* v) const {
+    V2 r[N][3];
+    for (int j = 0; j < N; ++j) {
+      for (int p = 0; p < 3; ++p) r[j][p] = by_order_[kOrder][p];
+    }
+    for (int k = kOrder - 1; k >= 0; --k) {
+      for (int j = 0; j < N; ++j) {
+        for (int p = 0; p < 3; ++p) r[j][p] = r[j][p] * d[j] + by_order_[k][p];
+      }
+    }
+    for (int j = 0; j < N; ++j) {
+      c[j] = r[j][0][0];
+      s[j] = r[j][0][1];
+      u[j] = r[j][1][1];
+      v[j] = r[j][2][0];
+    }
+  }
   V2 by_order_[kOrder + 1][kPairs] = {};
 };
 
@@ -218,20 +261,29 @@ class JacobiPasses {
       if (last) h = t_end - t;
       // Sub-points for the angle (and the compression integral of the straight column's guess).
       const int sub = std::max(1, static_cast<int>(std::ceil(std::fabs(h) / h_turn)));
-      double point[kSize];
-      for (int k = 1; k <= sub; ++k) {
-        const double d = h * k / sub;
-        taylor_.at(d, point);
-        const double now = std::atan2(point[kU], point[kV]);
+      const auto advance = [&](double c, double sn, double u, double v) {
+        const double now = std::atan2(u, v);
         double turn = now - angle;
         if (turn > kPi) turn -= 2.0 * kPi;
         if (turn <= -kPi) turn += 2.0 * kPi;
         phi += turn;
         angle = now;
-        const double g_after = compression(point[kCos], point[kSin]);
+        const double g_after = compression(c, sn);
         out.gamma += 0.5 * std::fabs(h) / sub * (g_before + g_after);
         g_before = g_after;
+      };
+      // The sub-points before the step's end: only the tangent and u, EI u', several at a time
+      // (TaylorStep::at_angle; the same values as at()).
+      for (int k0 = 1; k0 < sub; k0 += kChunk) {
+        const int n = std::min(kChunk, sub - k0);
+        double d[kChunk], c[kChunk], sn[kChunk], u[kChunk], v[kChunk];
+        for (int i = 0; i < n; ++i) d[i] = h * (k0 + i) / sub;
+        taylor_.at_angle(d, n, c, sn, u, v);
+        for (int i = 0; i < n; ++i) advance(c[i], sn[i], u[i], v[i]);
       }
+      double point[kSize];
+      taylor_.at(h * sub / sub, point);
+      advance(point[kCos], point[kSin], point[kU], point[kV]);
       // The end of the step is the last sub-point when its distance is h to the bit (always for
       // one sub-point): the same evaluation, done once.
       if (h * sub / sub == h) {
@@ -246,10 +298,14 @@ class JacobiPasses {
       }
       // Keep the linear solution of order one (it grows exponentially in tension): the angle
       // and its derivative are invariant under scaling u, v, u_sigma, v_sigma together.
-      const double r = std::hypot(y[kU], y[kV]);
-      if (r > 1e100 || r < 1e-100) {
-        for (int k = kU; k < kSize; ++k) y[k] /= r;
-        angle = std::atan2(y[kU], y[kV]);
+      // (hypot only near the limits: r lies between max(|u|, |v|) and sqrt(2) times it.)
+      const double larger = std::max(std::fabs(y[kU]), std::fabs(y[kV]));
+      if (larger > 7e99 || larger < 1e-100) {
+        const double r = std::hypot(y[kU], y[kV]);
+        if (r > 1e100 || r < 1e-100) {
+          for (int k = kU; k < kSize; ++k) y[k] /= r;
+          angle = std::atan2(y[kU], y[kV]);
+        }
       }
     }
     // The count from the unwrapped angle; the eigen-condition from the modified angle
