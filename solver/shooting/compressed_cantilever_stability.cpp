@@ -9,6 +9,11 @@
 #include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/shooting/tension_stability.h"
 
+// The four-lane (AVX2) expansion, chosen at run time (TaylorStep).
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__x86_64__)
+#define FLEXURE_JACOBI_AVX2 1
+#endif
+
 namespace flexure {
 namespace {
 
@@ -54,7 +59,39 @@ struct Jacobi {
 // differentiation; Jorba & Zou 2005): a_{k+1} = (the right-hand side)_k / (k + 1).
 class TaylorStep {
  public:
+  // Where the processor has AVX2 the expansion and the evaluations run on four lanes
+  // (expand_avx2 and the others below): each lane does the operations of the two-lane code in
+  // the same order (no fused multiply-add: AVX2 alone enables none), so the same values, with half
+  // the instructions; the Cauchy products of the expansion bound the verdict's speed.
   void expand(const double y[kSize], double fx, double fy, double sigma) {
+#ifdef FLEXURE_JACOBI_AVX2
+    if (kAvx2) {
+      expand_avx2(y, fx, fy, sigma);
+      return;
+    }
+#endif
+    expand_sse(y, fx, fy, sigma);
+  }
+  void at(double d, double out[kSize]) const {
+#ifdef FLEXURE_JACOBI_AVX2
+    if (kAvx2) {
+      at_avx2(d, out);
+      return;
+    }
+#endif
+    at_sse(d, out);
+  }
+  void at_angle(const double* d, int count, double* c, double* s, double* u, double* v) const {
+#ifdef FLEXURE_JACOBI_AVX2
+    if (kAvx2) {
+      at_angle_avx2(d, count, c, s, u, v);
+      return;
+    }
+#endif
+    at_angle_sse(d, count, c, s, u, v);
+  }
+
+  void expand_sse(const double y[kSize], double fx, double fy, double sigma) {
     for (int i = 0; i < kSize; ++i) a_[i][0] = y[i];
     double* c = a_[kCos];
     double* sn = a_[kSin];
@@ -143,7 +180,7 @@ class TaylorStep {
   }
   // Every component of the series at distance d (Horner), the components' recurrences side by
   // side (vectorised): the same operations per component, so the same values.
-  void at(double d, double out[kSize]) const {
+  void at_sse(double d, double out[kSize]) const {
     V2 r[kPairs];
     for (int p = 0; p < kPairs; ++p) r[p] = by_order_[kOrder][p];
     for (int k = kOrder - 1; k >= 0; --k) {
@@ -155,7 +192,7 @@ class TaylorStep {
   // sub-points): the pairs of at() that hold them, by the same Horner recurrences (so the same
   // values), the sub-points' recurrences interleaved in groups of up to kGroup so that they
   // overlap (one Horner recurrence is a chain of dependent multiplies and adds).
-  void at_angle(const double* d, int count, double* c, double* s, double* u, double* v) const {
+  void at_angle_sse(const double* d, int count, double* c, double* s, double* u, double* v) const {
     for (int first = 0; first < count; first += kGroup) {
       const int n = std::min(kGroup, count - first);
       if (n == kGroup) {
@@ -168,6 +205,105 @@ class TaylorStep {
       }
     }
   }
+
+#ifdef FLEXURE_JACOBI_AVX2
+  // expand_sse on four lanes: (sin, cos, w, w) times (m, m, u, u_sigma) is both pairs of Cauchy
+  // products at once; the even and odd halves and their order as there.
+  __attribute__((target("avx2"))) void expand_avx2(const double y[kSize],
+                                                   double fx,
+                                                   double fy,
+                                                   double sigma) {
+    for (int i = 0; i < kSize; ++i) a_[i][0] = y[i];
+    double* c = a_[kCos];
+    double* sn = a_[kSin];
+    double* m = a_[kM];
+    double* u = a_[kU];
+    double* v = a_[kV];
+    double* us = a_[kUs];
+    double* vs = a_[kVs];
+    mu_[0] = V4{m[0], m[0], u[0], us[0]};
+    by_order4_[0][0] = V4{c[0], sn[0], m[0], u[0]};
+    by_order4_[0][1] = V4{v[0], us[0], vs[0], 0.0};
+    for (int k = 0; k < kOrder; ++k) {
+      const double w = fx * c[k] + fy * sn[k];
+      scw_[k] = V4{sn[k], c[k], w, w};
+      V4 acc = {0.0, 0.0, 0.0, 0.0}, acc2 = {0.0, 0.0, 0.0, 0.0};
+      int j = 0;
+      for (; j + 1 <= k; j += 2) {
+        acc += scw_[j] * mu_[k - j];
+        acc2 += scw_[j + 1] * mu_[k - j - 1];
+      }
+      if (j == k) acc += scw_[j] * mu_[0];
+      acc += acc2;
+      const double sm = acc[0], cm = acc[1], wu = acc[2], wus = acc[3];
+      const double inv = kInverse[k];
+      const double c_next = -sm * inv, sn_next = cm * inv;
+      const double u_next = v[k] * inv, us_next = vs[k] * inv;
+      const double m_next = (fx * sn[k] - fy * c[k]) * inv;
+      const double v_next = sigma * wu * inv;
+      const double vs_next = (wu + sigma * wus) * inv;
+      c[k + 1] = c_next;
+      sn[k + 1] = sn_next;
+      m[k + 1] = m_next;
+      u[k + 1] = u_next;
+      v[k + 1] = v_next;
+      us[k + 1] = us_next;
+      vs[k + 1] = vs_next;
+      mu_[k + 1] = V4{m_next, m_next, u_next, us_next};
+      by_order4_[k + 1][0] = V4{c_next, sn_next, m_next, u_next};
+      by_order4_[k + 1][1] = V4{v_next, us_next, vs_next, 0.0};
+    }
+  }
+  __attribute__((target("avx2"))) void at_avx2(double d, double out[kSize]) const {
+    V4 r0 = by_order4_[kOrder][0], r1 = by_order4_[kOrder][1];
+    for (int k = kOrder - 1; k >= 0; --k) {
+      r0 = r0 * d + by_order4_[k][0];
+      r1 = r1 * d + by_order4_[k][1];
+    }
+    out[kCos] = r0[0];
+    out[kSin] = r0[1];
+    out[kM] = r0[2];
+    out[kU] = r0[3];
+    out[kV] = r1[0];
+    out[kUs] = r1[1];
+    out[kVs] = r1[2];
+  }
+  __attribute__((target("avx2"))) void at_angle_avx2(
+      const double* d, int count, double* c, double* s, double* u, double* v) const {
+    constexpr int kAvxGroup = 4;  // 4 sub-points x 2 accumulators
+    int first = 0;
+    for (; first + kAvxGroup <= count; first += kAvxGroup) {
+      V4 r[kAvxGroup][2];
+      for (int j = 0; j < kAvxGroup; ++j) {
+        r[j][0] = by_order4_[kOrder][0];
+        r[j][1] = by_order4_[kOrder][1];
+      }
+      for (int k = kOrder - 1; k >= 0; --k) {
+        for (int j = 0; j < kAvxGroup; ++j) {
+          r[j][0] = r[j][0] * d[first + j] + by_order4_[k][0];
+          r[j][1] = r[j][1] * d[first + j] + by_order4_[k][1];
+        }
+      }
+      for (int j = 0; j < kAvxGroup; ++j) {
+        c[first + j] = r[j][0][0];
+        s[first + j] = r[j][0][1];
+        u[first + j] = r[j][0][3];
+        v[first + j] = r[j][1][0];
+      }
+    }
+    for (; first < count; ++first) {
+      V4 r0 = by_order4_[kOrder][0], r1 = by_order4_[kOrder][1];
+      for (int k = kOrder - 1; k >= 0; --k) {
+        r0 = r0 * d[first] + by_order4_[k][0];
+        r1 = r1 * d[first] + by_order4_[k][1];
+      }
+      c[first] = r0[0];
+      s[first] = r0[1];
+      u[first] = r0[3];
+      v[first] = r1[0];
+    }
+  }
+#endif
 
  private:
   using V2 = double __attribute__((vector_size(16)));
@@ -182,6 +318,14 @@ class TaylorStep {
   V2 sc_[kOrder + 1] = {};
   V2 uu_[kOrder + 1] = {};
   static constexpr int kPairs = (kSize + 1) / 2;
+#ifdef FLEXURE_JACOBI_AVX2
+  using V4 = double __attribute__((vector_size(32)));
+  inline static const bool kAvx2 = __builtin_cpu_supports("avx2");
+  V4 scw_[kOrder + 1] = {};
+  V4 mu_[kOrder + 1] = {};
+  // by order: (cos, sin, m, u) and (EI u', u_sigma, EI u_sigma', 0)
+  V4 by_order4_[kOrder + 1][2] = {};
+#endif
   // Sub-points evaluated together by at_angle: three pairs each, 3 x 4 = 12 accumulators.
   static constexpr int kGroup = 4;
   template <int N>
