@@ -227,15 +227,31 @@ class TaylorStep {
     for (int k = 0; k < kOrder; ++k) {
       const double w = fx * c[k] + fy * sn[k];
       scw_[k] = V4{sn[k], c[k], w, w};
+      // The terms before the newest (j < k) on four lanes; the newest, j = k, last into its half
+      // (even or odd j) as in expand_sse, on two lanes each: the newest coefficients go from the
+      // registers into (sin, cos) times m without waiting for w or crossing lanes, which is the
+      // chain from one order to the next (the older terms are ready early).
       V4 acc = {0.0, 0.0, 0.0, 0.0}, acc2 = {0.0, 0.0, 0.0, 0.0};
       int j = 0;
-      for (; j + 1 <= k; j += 2) {
+      for (; j + 2 <= k; j += 2) {
         acc += scw_[j] * mu_[k - j];
         acc2 += scw_[j + 1] * mu_[k - j - 1];
       }
-      if (j == k) acc += scw_[j] * mu_[0];
-      acc += acc2;
-      const double sm = acc[0], cm = acc[1], wu = acc[2], wus = acc[3];
+      if (j + 1 == k) acc += scw_[j] * mu_[1];
+      V2 sc_lo = {acc[0], acc[1]}, wu_hi = {acc[2], acc[3]};
+      V2 sc_lo2 = {acc2[0], acc2[1]}, wu_hi2 = {acc2[2], acc2[3]};
+      const V2 newest_sc = V2{sn[k], c[k]} * m[0];
+      const V2 newest_wu = w * V2{u[0], us[0]};
+      if (k % 2 == 0) {
+        sc_lo += newest_sc;
+        wu_hi += newest_wu;
+      } else {
+        sc_lo2 += newest_sc;
+        wu_hi2 += newest_wu;
+      }
+      sc_lo += sc_lo2;
+      wu_hi += wu_hi2;
+      const double sm = sc_lo[0], cm = sc_lo[1], wu = wu_hi[0], wus = wu_hi[1];
       const double inv = kInverse[k];
       const double c_next = -sm * inv, sn_next = cm * inv;
       const double u_next = v[k] * inv, us_next = vs[k] * inv;
