@@ -383,10 +383,12 @@ class JacobiPasses {
  public:
   // From the clamp (theta 0, moment m0) or, `backward`, from the tip (theta_tip, m_tip).
   JacobiPasses(double fx, double fy, double m0, double theta_tip, double m_tip, bool backward)
-      : m0_(m0), theta_tip_(theta_tip), m_tip_(m_tip), backward_(backward) {
+      : m0_(m0), m_tip_(m_tip), backward_(backward) {
     params_.fx = fx;
     params_.fy = fy;
     force_ = std::hypot(fx, fy);
+    cos_tip_ = std::cos(theta_tip);  // once, not in every pass
+    sin_tip_ = std::sin(theta_tip);
   }
 
   Pass run(double sigma) {
@@ -395,8 +397,8 @@ class JacobiPasses {
     // Forward: u(0) = 0, EI u'(0) = 1. Backward: u(L) = 1, EI u'(L) = 0.
     double y[kSize] = {1.0, 0.0, m0_, 0.0, 1.0, 0.0, 0.0};
     if (backward_) {
-      y[kCos] = std::cos(theta_tip_);
-      y[kSin] = std::sin(theta_tip_);
+      y[kCos] = cos_tip_;
+      y[kSin] = sin_tip_;
       y[kM] = m_tip_;
       y[kU] = 1.0;
       y[kV] = 0.0;
@@ -501,7 +503,8 @@ class JacobiPasses {
 
  private:
   Jacobi params_;
-  double m0_ = 0.0, theta_tip_ = 0.0, m_tip_ = 0.0, force_ = 0.0;
+  double m0_ = 0.0, m_tip_ = 0.0, force_ = 0.0;
+  double cos_tip_ = 1.0, sin_tip_ = 0.0;
   bool backward_ = false;
   TaylorStep taylor_;
 };
