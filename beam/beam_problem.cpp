@@ -175,7 +175,12 @@ BeamSolution solve_elliptic(const BeamProblem& problem) {
     const ShapeAtStations shape = [&](const std::vector<double>& s) {
       return solver.shape_at(result, s);
     };
-    solution.stability = judge(chain, Reaction{}, shape, problem.stability_options);
+    // A shape without inflection nowhere compressed: margin 1 from the tip angle alone, no
+    // eigenproblem (tension_stability.h; 15 us of the 18 us of a scalar answer,
+    // docs/performance.md); otherwise the discrete second variation.
+    const std::optional<Stability> fast = tensioned_cantilever_stability(
+        chain, result.tip.theta0, result.inflection_points, problem.stability_options);
+    solution.stability = fast ? *fast : judge(chain, Reaction{}, shape, problem.stability_options);
     if (wants_stable_search(problem, solution)) {
       seek_stable(problem, chain, shape, Reaction{}, problem.shape_points, solution);
     }

@@ -12,9 +12,18 @@
 // end-moment sweep mu 0:8 at alpha2 = 2, n = 1 (off the ray: every point from zero load).
 // /verdict:1 with the stability verdict of every point (the default of `sweep beam`), /verdict:0
 // without it (`--stability off`).
+//   BM_JacobiVerdict         the verdict alone of the compressed sweep (/case:1): the Jacobi
+//                            equation along each point's solution
+//                            (compressed_cantilever_stability.h) from the margin the sweep predicts
+//                            from the last four points' margins (guess:1, as `sweep beam` does) or
+//                            from the straight column's guess (guess:0, a single answer)
 #include <benchmark/benchmark.h>
 
+#include <optional>
+#include <vector>
+
 #include "flexure/beam/beam_sweep_solver.h"
+#include "flexure/solver/shooting/compressed_cantilever_stability.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 #include "gsl_brent_reference.h"
 
@@ -88,6 +97,55 @@ void BM_ShootingSweepShape401(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_ShootingSweepShape401)->Unit(benchmark::kMicrosecond);
+
+// The verdict alone: the 500 solutions of the compressed sweep (/case:1) solved once, then each
+// judged in order, with the guess the sweep would give it (the Lagrange polynomial through the
+// last four margins, beam_sweep_solver.cpp) or none.
+void BM_JacobiVerdict(benchmark::State& state) {
+  const bool guessed = state.range(0) != 0;
+  struct Point {
+    SegmentChain chain;
+    ShootingResult result;
+    std::optional<double> guess;
+  };
+  static const std::vector<Point> points = [] {
+    const BeamSweepGrid grid = sweep_case(1);
+    std::vector<Point> out;
+    std::vector<double> alpha2, margin;
+    for (long i = 0; i < grid.size(); ++i) {
+      const BeamProblem problem = grid.at(i);
+      Point p{problem.to_chain(problem.value), {}, std::nullopt};
+      p.result = solve_shooting(p.chain, beam_shooting_options(problem, 0));
+      const std::size_t k = std::min<std::size_t>(4, margin.size());
+      if (k > 0) {
+        double guess = 0.0;
+        for (std::size_t a = margin.size() - k; a < margin.size(); ++a) {
+          double w = 1.0;
+          for (std::size_t b = margin.size() - k; b < margin.size(); ++b) {
+            if (a != b) w *= (problem.value - alpha2[b]) / (alpha2[a] - alpha2[b]);
+          }
+          guess += w * margin[a];
+        }
+        p.guess = guess;
+      }
+      const std::optional<Stability> v =
+          compressed_cantilever_stability(p.chain, p.result, {}, p.guess);
+      alpha2.push_back(problem.value);
+      margin.push_back(v ? v->margin : 0.0);
+      out.push_back(std::move(p));
+    }
+    return out;
+  }();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Point& p = points[i++ % points.size()];
+    const std::optional<Stability> v =
+        compressed_cantilever_stability(p.chain, p.result, {}, guessed ? p.guess : std::nullopt);
+    if (!v) state.SkipWithError("the Jacobi verdict declined");
+    benchmark::DoNotOptimize(v);
+  }
+}
+BENCHMARK(BM_JacobiVerdict)->Arg(1)->Arg(0)->ArgName("guess")->Unit(benchmark::kMicrosecond);
 
 using flexure_bench::BM_GslBrentReference;
 BENCHMARK(BM_GslBrentReference);

@@ -9,6 +9,11 @@
 #include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/shooting/tension_stability.h"
 
+// The four-lane (AVX2) expansion, chosen at run time (TaylorStep).
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__x86_64__)
+#define FLEXURE_JACOBI_AVX2 1
+#endif
+
 namespace flexure {
 namespace {
 
@@ -21,6 +26,8 @@ constexpr double kPi = std::numbers::pi;
 constexpr int kOrder = 24;
 constexpr double kTruncation = 1e-16;
 constexpr int kMaxSteps = 100000;
+// Sub-points of one step evaluated in one call of TaylorStep::at_angle.
+constexpr int kChunk = 16;
 // The re-integrated far end must meet the solution within this (rad; relative for the moment): the
 // solve converges to about 1e-11; a larger gap means the result is not this chain's equilibrium.
 constexpr double kTipAngleCheck = 1e-8;
@@ -52,7 +59,39 @@ struct Jacobi {
 // differentiation; Jorba & Zou 2005): a_{k+1} = (the right-hand side)_k / (k + 1).
 class TaylorStep {
  public:
+  // Where the processor has AVX2 the expansion and the evaluations run on four lanes
+  // (expand_avx2 and the others below): each lane does the operations of the two-lane code in
+  // the same order (no fused multiply-add: AVX2 alone enables none), so the same values, with half
+  // the instructions; the Cauchy products of the expansion bound the verdict's speed.
   void expand(const double y[kSize], double fx, double fy, double sigma) {
+#ifdef FLEXURE_JACOBI_AVX2
+    if (kAvx2) {
+      expand_avx2(y, fx, fy, sigma);
+      return;
+    }
+#endif
+    expand_sse(y, fx, fy, sigma);
+  }
+  void at(double d, double out[kSize]) const {
+#ifdef FLEXURE_JACOBI_AVX2
+    if (kAvx2) {
+      at_avx2(d, out);
+      return;
+    }
+#endif
+    at_sse(d, out);
+  }
+  void at_angle(const double* d, int count, double* c, double* s, double* u, double* v) const {
+#ifdef FLEXURE_JACOBI_AVX2
+    if (kAvx2) {
+      at_angle_avx2(d, count, c, s, u, v);
+      return;
+    }
+#endif
+    at_angle_sse(d, count, c, s, u, v);
+  }
+
+  void expand_sse(const double y[kSize], double fx, double fy, double sigma) {
     for (int i = 0; i < kSize; ++i) a_[i][0] = y[i];
     double* c = a_[kCos];
     double* sn = a_[kSin];
@@ -66,6 +105,10 @@ class TaylorStep {
     // operations of the scalar sum, in the same order, so the same values).
     sc_[0] = V2{sn[0], c[0]};
     uu_[0] = V2{u[0], us[0]};
+    by_order_[0][0] = V2{c[0], sn[0]};
+    by_order_[0][1] = V2{m[0], u[0]};
+    by_order_[0][2] = V2{v[0], us[0]};
+    by_order_[0][3] = V2{vs[0], 0.0};
     for (int k = 0; k < kOrder; ++k) {
       w_[k] = fx * c[k] + fy * sn[k];
       // The four Cauchy products, each summed in two interleaved halves (even and odd j): eight
@@ -102,12 +145,12 @@ class TaylorStep {
       vs[k + 1] = (wu + sigma * wus) * inv;
       sc_[k + 1] = V2{sn_next, c_next};
       uu_[k + 1] = V2{u_next, us_next};
-    }
-    // By order for the evaluation (at()): the components of one order side by side.
-    for (int k = 0; k <= kOrder; ++k) {
-      for (int p = 0; p < kPairs; ++p) {
-        by_order_[k][p] = V2{a_[2 * p][k], 2 * p + 1 < kSize ? a_[2 * p + 1][k] : 0.0};
-      }
+      // By order for the evaluation (at()): the components of one order side by side, stored
+      // as they are made (a transposing pass afterwards reloaded every coefficient).
+      by_order_[k + 1][0] = V2{c_next, sn_next};
+      by_order_[k + 1][1] = V2{m[k + 1], u_next};
+      by_order_[k + 1][2] = V2{v[k + 1], us_next};
+      by_order_[k + 1][3] = V2{vs[k + 1], 0.0};
     }
   }
   // The step length: the last two terms of each group (elastica; u and EI u'; their sigma-
@@ -137,7 +180,7 @@ class TaylorStep {
   }
   // Every component of the series at distance d (Horner), the components' recurrences side by
   // side (vectorised): the same operations per component, so the same values.
-  void at(double d, double out[kSize]) const {
+  void at_sse(double d, double out[kSize]) const {
     V2 r[kPairs];
     for (int p = 0; p < kPairs; ++p) r[p] = by_order_[kOrder][p];
     for (int k = kOrder - 1; k >= 0; --k) {
@@ -145,6 +188,138 @@ class TaylorStep {
     }
     for (int i = 0; i < kSize; ++i) out[i] = r[i / 2][i % 2];
   }
+  // The tangent (cos, sin) and u, EI u' at `count` distances d[0..count) (the Pruefer angle's
+  // sub-points): the pairs of at() that hold them, by the same Horner recurrences (so the same
+  // values), the sub-points' recurrences interleaved in groups of up to kGroup so that they
+  // overlap (one Horner recurrence is a chain of dependent multiplies and adds).
+  void at_angle_sse(const double* d, int count, double* c, double* s, double* u, double* v) const {
+    for (int first = 0; first < count; first += kGroup) {
+      const int n = std::min(kGroup, count - first);
+      if (n == kGroup) {
+        at_angle_group<kGroup>(d + first, c + first, s + first, u + first, v + first);
+      } else {
+        for (int i = 0; i < n; ++i) {
+          at_angle_group<1>(
+              d + first + i, c + first + i, s + first + i, u + first + i, v + first + i);
+        }
+      }
+    }
+  }
+
+#ifdef FLEXURE_JACOBI_AVX2
+  // expand_sse on four lanes: (sin, cos, w, w) times (m, m, u, u_sigma) is both pairs of Cauchy
+  // products at once; the even and odd halves and their order as there.
+  __attribute__((target("avx2"))) void expand_avx2(const double y[kSize],
+                                                   double fx,
+                                                   double fy,
+                                                   double sigma) {
+    for (int i = 0; i < kSize; ++i) a_[i][0] = y[i];
+    double* c = a_[kCos];
+    double* sn = a_[kSin];
+    double* m = a_[kM];
+    double* u = a_[kU];
+    double* v = a_[kV];
+    double* us = a_[kUs];
+    double* vs = a_[kVs];
+    mu_[0] = V4{m[0], m[0], u[0], us[0]};
+    by_order4_[0][0] = V4{c[0], sn[0], m[0], u[0]};
+    by_order4_[0][1] = V4{v[0], us[0], vs[0], 0.0};
+    for (int k = 0; k < kOrder; ++k) {
+      const double w = fx * c[k] + fy * sn[k];
+      scw_[k] = V4{sn[k], c[k], w, w};
+      // The terms before the newest (j < k) on four lanes; the newest, j = k, last into its half
+      // (even or odd j) as in expand_sse, on two lanes each: the newest coefficients go from the
+      // registers into (sin, cos) times m without waiting for w or crossing lanes, which is the
+      // chain from one order to the next (the older terms are ready early).
+      V4 acc = {0.0, 0.0, 0.0, 0.0}, acc2 = {0.0, 0.0, 0.0, 0.0};
+      int j = 0;
+      for (; j + 2 <= k; j += 2) {
+        acc += scw_[j] * mu_[k - j];
+        acc2 += scw_[j + 1] * mu_[k - j - 1];
+      }
+      if (j + 1 == k) acc += scw_[j] * mu_[1];
+      V2 sc_lo = {acc[0], acc[1]}, wu_hi = {acc[2], acc[3]};
+      V2 sc_lo2 = {acc2[0], acc2[1]}, wu_hi2 = {acc2[2], acc2[3]};
+      const V2 newest_sc = V2{sn[k], c[k]} * m[0];
+      const V2 newest_wu = w * V2{u[0], us[0]};
+      if (k % 2 == 0) {
+        sc_lo += newest_sc;
+        wu_hi += newest_wu;
+      } else {
+        sc_lo2 += newest_sc;
+        wu_hi2 += newest_wu;
+      }
+      sc_lo += sc_lo2;
+      wu_hi += wu_hi2;
+      const double sm = sc_lo[0], cm = sc_lo[1], wu = wu_hi[0], wus = wu_hi[1];
+      const double inv = kInverse[k];
+      const double c_next = -sm * inv, sn_next = cm * inv;
+      const double u_next = v[k] * inv, us_next = vs[k] * inv;
+      const double m_next = (fx * sn[k] - fy * c[k]) * inv;
+      const double v_next = sigma * wu * inv;
+      const double vs_next = (wu + sigma * wus) * inv;
+      c[k + 1] = c_next;
+      sn[k + 1] = sn_next;
+      m[k + 1] = m_next;
+      u[k + 1] = u_next;
+      v[k + 1] = v_next;
+      us[k + 1] = us_next;
+      vs[k + 1] = vs_next;
+      mu_[k + 1] = V4{m_next, m_next, u_next, us_next};
+      by_order4_[k + 1][0] = V4{c_next, sn_next, m_next, u_next};
+      by_order4_[k + 1][1] = V4{v_next, us_next, vs_next, 0.0};
+    }
+  }
+  __attribute__((target("avx2"))) void at_avx2(double d, double out[kSize]) const {
+    V4 r0 = by_order4_[kOrder][0], r1 = by_order4_[kOrder][1];
+    for (int k = kOrder - 1; k >= 0; --k) {
+      r0 = r0 * d + by_order4_[k][0];
+      r1 = r1 * d + by_order4_[k][1];
+    }
+    out[kCos] = r0[0];
+    out[kSin] = r0[1];
+    out[kM] = r0[2];
+    out[kU] = r0[3];
+    out[kV] = r1[0];
+    out[kUs] = r1[1];
+    out[kVs] = r1[2];
+  }
+  __attribute__((target("avx2"))) void at_angle_avx2(
+      const double* d, int count, double* c, double* s, double* u, double* v) const {
+    constexpr int kAvxGroup = 4;  // 4 sub-points x 2 accumulators
+    int first = 0;
+    for (; first + kAvxGroup <= count; first += kAvxGroup) {
+      V4 r[kAvxGroup][2];
+      for (int j = 0; j < kAvxGroup; ++j) {
+        r[j][0] = by_order4_[kOrder][0];
+        r[j][1] = by_order4_[kOrder][1];
+      }
+      for (int k = kOrder - 1; k >= 0; --k) {
+        for (int j = 0; j < kAvxGroup; ++j) {
+          r[j][0] = r[j][0] * d[first + j] + by_order4_[k][0];
+          r[j][1] = r[j][1] * d[first + j] + by_order4_[k][1];
+        }
+      }
+      for (int j = 0; j < kAvxGroup; ++j) {
+        c[first + j] = r[j][0][0];
+        s[first + j] = r[j][0][1];
+        u[first + j] = r[j][0][3];
+        v[first + j] = r[j][1][0];
+      }
+    }
+    for (; first < count; ++first) {
+      V4 r0 = by_order4_[kOrder][0], r1 = by_order4_[kOrder][1];
+      for (int k = kOrder - 1; k >= 0; --k) {
+        r0 = r0 * d[first] + by_order4_[k][0];
+        r1 = r1 * d[first] + by_order4_[k][1];
+      }
+      c[first] = r0[0];
+      s[first] = r0[1];
+      u[first] = r0[3];
+      v[first] = r1[0];
+    }
+  }
+#endif
 
  private:
   using V2 = double __attribute__((vector_size(16)));
@@ -159,6 +334,34 @@ class TaylorStep {
   V2 sc_[kOrder + 1] = {};
   V2 uu_[kOrder + 1] = {};
   static constexpr int kPairs = (kSize + 1) / 2;
+#ifdef FLEXURE_JACOBI_AVX2
+  using V4 = double __attribute__((vector_size(32)));
+  inline static const bool kAvx2 = __builtin_cpu_supports("avx2");
+  V4 scw_[kOrder + 1] = {};
+  V4 mu_[kOrder + 1] = {};
+  // by order: (cos, sin, m, u) and (EI u', u_sigma, EI u_sigma', 0)
+  V4 by_order4_[kOrder + 1][2] = {};
+#endif
+  // Sub-points evaluated together by at_angle: three pairs each, 3 x 4 = 12 accumulators.
+  static constexpr int kGroup = 4;
+  template <int N>
+  void at_angle_group(const double* d, double* c, double* s, double* u, double* v) const {
+    V2 r[N][3];
+    for (int j = 0; j < N; ++j) {
+      for (int p = 0; p < 3; ++p) r[j][p] = by_order_[kOrder][p];
+    }
+    for (int k = kOrder - 1; k >= 0; --k) {
+      for (int j = 0; j < N; ++j) {
+        for (int p = 0; p < 3; ++p) r[j][p] = r[j][p] * d[j] + by_order_[k][p];
+      }
+    }
+    for (int j = 0; j < N; ++j) {
+      c[j] = r[j][0][0];
+      s[j] = r[j][0][1];
+      u[j] = r[j][1][1];
+      v[j] = r[j][2][0];
+    }
+  }
   V2 by_order_[kOrder + 1][kPairs] = {};
 };
 
@@ -180,10 +383,12 @@ class JacobiPasses {
  public:
   // From the clamp (theta 0, moment m0) or, `backward`, from the tip (theta_tip, m_tip).
   JacobiPasses(double fx, double fy, double m0, double theta_tip, double m_tip, bool backward)
-      : m0_(m0), theta_tip_(theta_tip), m_tip_(m_tip), backward_(backward) {
+      : m0_(m0), m_tip_(m_tip), backward_(backward) {
     params_.fx = fx;
     params_.fy = fy;
     force_ = std::hypot(fx, fy);
+    cos_tip_ = std::cos(theta_tip);  // once, not in every pass
+    sin_tip_ = std::sin(theta_tip);
   }
 
   Pass run(double sigma) {
@@ -192,8 +397,8 @@ class JacobiPasses {
     // Forward: u(0) = 0, EI u'(0) = 1. Backward: u(L) = 1, EI u'(L) = 0.
     double y[kSize] = {1.0, 0.0, m0_, 0.0, 1.0, 0.0, 0.0};
     if (backward_) {
-      y[kCos] = std::cos(theta_tip_);
-      y[kSin] = std::sin(theta_tip_);
+      y[kCos] = cos_tip_;
+      y[kSin] = sin_tip_;
       y[kM] = m_tip_;
       y[kU] = 1.0;
       y[kV] = 0.0;
@@ -218,20 +423,29 @@ class JacobiPasses {
       if (last) h = t_end - t;
       // Sub-points for the angle (and the compression integral of the straight column's guess).
       const int sub = std::max(1, static_cast<int>(std::ceil(std::fabs(h) / h_turn)));
-      double point[kSize];
-      for (int k = 1; k <= sub; ++k) {
-        const double d = h * k / sub;
-        taylor_.at(d, point);
-        const double now = std::atan2(point[kU], point[kV]);
+      const auto advance = [&](double c, double sn, double u, double v) {
+        const double now = std::atan2(u, v);
         double turn = now - angle;
         if (turn > kPi) turn -= 2.0 * kPi;
         if (turn <= -kPi) turn += 2.0 * kPi;
         phi += turn;
         angle = now;
-        const double g_after = compression(point[kCos], point[kSin]);
+        const double g_after = compression(c, sn);
         out.gamma += 0.5 * std::fabs(h) / sub * (g_before + g_after);
         g_before = g_after;
+      };
+      // The sub-points before the step's end: only the tangent and u, EI u', several at a time
+      // (TaylorStep::at_angle; the same values as at()).
+      for (int k0 = 1; k0 < sub; k0 += kChunk) {
+        const int n = std::min(kChunk, sub - k0);
+        double d[kChunk], c[kChunk], sn[kChunk], u[kChunk], v[kChunk];
+        for (int i = 0; i < n; ++i) d[i] = h * (k0 + i) / sub;
+        taylor_.at_angle(d, n, c, sn, u, v);
+        for (int i = 0; i < n; ++i) advance(c[i], sn[i], u[i], v[i]);
       }
+      double point[kSize];
+      taylor_.at(h * sub / sub, point);
+      advance(point[kCos], point[kSin], point[kU], point[kV]);
       // The end of the step is the last sub-point when its distance is h to the bit (always for
       // one sub-point): the same evaluation, done once.
       if (h * sub / sub == h) {
@@ -246,10 +460,14 @@ class JacobiPasses {
       }
       // Keep the linear solution of order one (it grows exponentially in tension): the angle
       // and its derivative are invariant under scaling u, v, u_sigma, v_sigma together.
-      const double r = std::hypot(y[kU], y[kV]);
-      if (r > 1e100 || r < 1e-100) {
-        for (int k = kU; k < kSize; ++k) y[k] /= r;
-        angle = std::atan2(y[kU], y[kV]);
+      // (hypot only near the limits: r lies between max(|u|, |v|) and sqrt(2) times it.)
+      const double larger = std::max(std::fabs(y[kU]), std::fabs(y[kV]));
+      if (larger > 7e99 || larger < 1e-100) {
+        const double r = std::hypot(y[kU], y[kV]);
+        if (r > 1e100 || r < 1e-100) {
+          for (int k = kU; k < kSize; ++k) y[k] /= r;
+          angle = std::atan2(y[kU], y[kV]);
+        }
       }
     }
     // The count from the unwrapped angle; the eigen-condition from the modified angle
@@ -285,7 +503,8 @@ class JacobiPasses {
 
  private:
   Jacobi params_;
-  double m0_ = 0.0, theta_tip_ = 0.0, m_tip_ = 0.0, force_ = 0.0;
+  double m0_ = 0.0, m_tip_ = 0.0, force_ = 0.0;
+  double cos_tip_ = 1.0, sin_tip_ = 0.0;
   bool backward_ = false;
   TaylorStep taylor_;
 };

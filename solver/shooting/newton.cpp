@@ -8,8 +8,12 @@
 namespace flexure {
 
 Eigen::VectorXd robust_solve(const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
+  // One decomposition object per thread, its buffers kept between calls (a sweep point's Newton
+  // solve takes one or two of these small systems, and their allocations showed in the profile of
+  // the shooting sweep, docs/performance.md); compute() does what the constructor did.
+  thread_local Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr;
   qr.setThreshold(1e-13);
+  qr.compute(A);
   if (qr.rank() == A.cols()) return qr.solve(b);
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(A);
   cod.setThreshold(1e-13);

@@ -1,6 +1,8 @@
 #include "flexure/solver/shooting/tension_stability.h"
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <variant>
 
 namespace flexure {
@@ -47,6 +49,33 @@ std::optional<Stability> tensioned_cantilever_stability(const SegmentChain& chai
   if (!(largest_m * largest_m < (1.0 - kFirstIntegralSlack) * 2.0 * EI * (C + F))) {
     return std::nullopt;
   }
+  return stable();
+}
+
+std::optional<Stability> tensioned_cantilever_stability(const SegmentChain& chain,
+                                                        double tip_angle,
+                                                        int inflection_points,
+                                                        const StabilityOptions& options) {
+  if (!tension_verdict_applies(chain) || inflection_points != 0 || !std::isfinite(tip_angle)) {
+    return std::nullopt;
+  }
+  options.validate();
+  const double Fx = chain.tip_load.Fx, Fy = chain.tip_load.Fy;
+  const auto stable = [&] {
+    return classify_stability(0, 1.0, options.critical_tolerance, "the beam");
+  };
+  if (Fx == 0.0 && Fy == 0.0) return stable();
+  if (!std::isfinite(Fx) || !std::isfinite(Fy)) return std::nullopt;
+  // F . t at the clamp (theta = 0) and at the tip.
+  if (!(Fx >= 0.0) || !(Fx * std::cos(tip_angle) + Fy * std::sin(tip_angle) >= 0.0)) {
+    return std::nullopt;
+  }
+  // The antiparallel angle theta_F + pi, the first of its copies above the lower end of the range.
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  const double lower = std::min(0.0, tip_angle), upper = std::max(0.0, tip_angle);
+  const double antiparallel = std::atan2(Fy, Fx) + std::numbers::pi;
+  const double first_above = antiparallel + kTwoPi * std::ceil((lower - antiparallel) / kTwoPi);
+  if (first_above <= upper) return std::nullopt;
   return stable();
 }
 

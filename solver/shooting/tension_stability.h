@@ -46,6 +46,19 @@ std::optional<Stability> tensioned_cantilever_stability(const SegmentChain& chai
                                                         const ShootingResult& result,
                                                         const StabilityOptions& options = {});
 
+// The same verdict for a solution known by its tip angle whose tangent angle is monotone along the
+// beam (no inflection point: the curvature EI theta' = m keeps its sign), e.g. the elliptic
+// solution (EllipticResult::inflection_points, tip.theta0). Its tangent then takes exactly the
+// angles between 0 and tip_angle, on which F . t = |F| cos(theta - theta_F) is smallest at an end
+// or at the antiparallel angle theta_F + pi: the beam is nowhere compressed when F . t >= 0 at both
+// ends and theta_F + pi (+ 2 pi k) lies outside that range. Then: stable, index 0, margin 1, as
+// above; otherwise (or with inflection points) nullopt. tests/solver/tension_stability_test.cpp
+// checks it against equilibrium_stability() on the elliptic shape on seeded random loads.
+std::optional<Stability> tensioned_cantilever_stability(const SegmentChain& chain,
+                                                        double tip_angle,
+                                                        int inflection_points,
+                                                        const StabilityOptions& options = {});
+
 // The part of the test that needs no solution: whether `chain` is a uniform one-segment
 // cantilever with a free end under dead tip loads only (the chains the first integral covers).
 bool tension_verdict_applies(const SegmentChain& chain);

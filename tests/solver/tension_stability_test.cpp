@@ -127,6 +127,65 @@ TEST(TensionStability, RandomLoadsAgreeWithTheGeneralVerdict) {
   EXPECT_GE(tally.with_limit_points, 8);
 }
 
+// The verdict from the tip angle of a shape without inflection (the elliptic solution's,
+// tensioned_cantilever_stability(chain, tip_angle, inflection_points)) against the general verdict
+// on the elliptic shape and F . t sampled at 2001 points of it: Howell's loads with n from -5 to 2
+// and end moments, seeded. Wherever it answers it equals the general verdict exactly and the
+// shape is nowhere compressed; wherever the shape has no inflection and is nowhere compressed it
+// answers.
+TEST(TensionStability, EllipticTipAngleVerdictAgreesWithTheGeneralVerdict) {
+  std::mt19937_64 rng(28028);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const EllipticSolver solver;
+  int solved = 0, answered = 0, declined_compressed = 0, declined_inflection = 0;
+  for (int i = 0; i < 400; ++i) {
+    const double n = -5.0 + 7.0 * unit(rng), alpha2 = 0.1 + 15.0 * unit(rng);
+    const double mu = unit(rng) < 0.4 ? 0.0 : -2.0 + 4.0 * unit(rng);
+    const EndLoad load = EndLoad::howell(n, alpha2, mu);
+    EllipticResult r;
+    try {
+      r = solver.solve(load);
+    } catch (const std::exception&) {
+      continue;  // beyond the elliptic solver's domain
+    }
+    if (!r.converged()) continue;
+    ++solved;
+    const SegmentChain chain = uniform_cantilever(r.load);
+    const std::optional<Stability> fast =
+        tensioned_cantilever_stability(chain, r.tip.theta0, r.inflection_points);
+    std::vector<double> s;
+    for (int k = 0; k <= 2000; ++k) s.push_back(k / 2000.0);
+    double least = HUGE_VAL;
+    for (const ShapePoint& p : solver.shape_at(r, s)) {
+      least = std::min(least, r.load.Fx * std::cos(p.theta) + r.load.Fy * std::sin(p.theta));
+    }
+    const double force = std::hypot(r.load.Fx, r.load.Fy);
+    const std::string what = "n " + std::to_string(n) + ", alpha2 " + std::to_string(alpha2) +
+                             ", mu " + std::to_string(mu);
+    if (fast) {
+      ++answered;
+      const Stability general = equilibrium_stability(
+          chain, Reaction{}, [&](const std::vector<double>& at) { return solver.shape_at(r, at); });
+      EXPECT_EQ(fast->kind, general.kind) << what;
+      EXPECT_EQ(fast->index, general.index) << what;
+      EXPECT_EQ(fast->margin, general.margin) << what;
+      EXPECT_EQ(fast->message, general.message) << what;
+      EXPECT_GE(least, -1e-12 * force) << what;
+    } else if (r.inflection_points != 0) {
+      ++declined_inflection;
+    } else {
+      ++declined_compressed;
+      EXPECT_LT(least, 1e-12 * force) << "declined a shape nowhere compressed: " << what;
+    }
+  }
+  std::cout << "elliptic: solved " << solved << ", answered " << answered
+            << ", declined (compressed) " << declined_compressed << ", declined (inflection) "
+            << declined_inflection << "\n";
+  EXPECT_GE(solved, 300);
+  EXPECT_GE(answered, 60);
+  EXPECT_GE(declined_compressed, 60);
+}
+
 TEST(TensionStability, StraightColumnsMatchTheirClosedForms) {
   const double euler = kPi * kPi / 4.0;
   for (const double P : {0.5, 2.0, 3.0, 10.0, 30.0, 65.0}) {
