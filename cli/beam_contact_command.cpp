@@ -6,9 +6,9 @@
 
 #include "cli/cli_common.h"
 #include "flexure/io/chain_toml.h"
-#include "flexure/io/contact_hdf5.h"
-#include "flexure/io/hdf5_file.h"
-#include "flexure/io/output_path.h"
+#include "flexure/io/contact_file.h"
+#include "flexure/io/platform/hdf5_error.h"
+#include "flexure/io/platform/output_path.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
 #include "flexure/solver/shooting/rigid_contact.h"

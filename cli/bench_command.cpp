@@ -13,7 +13,7 @@
 #include "cli/commands.h"
 #include "cli/csv_output.h"
 #include "flexure/benchmarks/studies/bench_run.h"
-#include "flexure/io/temp_file_cleanup.h"
+#include "flexure/io/platform/temp_file_cleanup.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "cli/mpi_launch.h"
-#include "flexure/io/parallel/mpi_world.h"
+#include "flexure/io/platform/mpi_world.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/evenly_spaced.h"
 

@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "cli/command_table.h"
-#include "flexure/io/provenance.h"
+#include "flexure/io/platform/provenance.h"
 
 namespace flexure::cli {
 

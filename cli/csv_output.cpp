@@ -8,8 +8,8 @@
 #include <limits>
 
 #include "flexure/io/csv_table.h"
-#include "flexure/io/output_path.h"
-#include "flexure/io/parallel/mpi_world.h"
+#include "flexure/io/platform/mpi_world.h"
+#include "flexure/io/platform/output_path.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {

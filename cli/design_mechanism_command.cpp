@@ -16,7 +16,7 @@
 #include "cli/modulus_output.h"
 #include "flexure/io/mechanism_geometry_toml.h"
 #include "flexure/io/mechanism_toml.h"
-#include "flexure/io/output_path.h"
+#include "flexure/io/platform/output_path.h"
 #include "flexure/mechanisms/design/mechanism_synthesis.h"
 #include "flexure/mechanisms/force_of.h"
 #include "flexure/mechanisms/material_library.h"

@@ -28,7 +28,7 @@
 #include "flexure/benchmarks/studies/dynamics_study.h"
 #include "flexure/benchmarks/studies/dynamics_study_file.h"
 #include "flexure/io/mechanism_toml.h"
-#include "flexure/io/output_path.h"
+#include "flexure/io/platform/output_path.h"
 #include "flexure/mechanisms/cfsm_designs.h"
 #include "flexure/mechanisms/dynamics/dynamics_design.h"
 #include "flexure/mechanisms/force_of.h"

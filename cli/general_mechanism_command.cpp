@@ -10,8 +10,8 @@
 #include "cli/csv_output.h"
 #include "flexure/io/general_mechanism_file.h"
 #include "flexure/io/general_mechanism_toml.h"
-#include "flexure/io/hdf5_file.h"
-#include "flexure/io/output_path.h"
+#include "flexure/io/platform/hdf5_error.h"
+#include "flexure/io/platform/output_path.h"
 #include "flexure/io/toml_support.h"
 #include "flexure/mechanisms/general/general_exact.h"
 #include "flexure/mechanisms/general/general_prbm.h"
@@ -413,9 +413,7 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
   output.checked_flexures = request.check_flexures;
   if (!hdf5_out.empty()) {
     try {
-      io::AtomicHdf5File file(hdf5_out);
-      io::write_general_mechanism(file.root(), output);
-      file.commit();
+      io::write_general_mechanism_hdf5(hdf5_out, output);
     } catch (const io::Hdf5Error& e) {
       throw InvalidInput(fmt::format("--out: {}", e.what()));
     }

@@ -15,9 +15,11 @@
 //  4. With --json print exactly one object with print_json() (it refuses NaN/Inf); otherwise a
 //     short readable report on stdout. Errors never go to stdout: run_app() prints them as one
 //     line on stderr.
-//  5. Output files are written with io::AtomicHdf5File (temp name + rename), opened BEFORE the
-//     solve so that an unwritable path fails fast with exit 2. Every dataset gets units and a
-//     description, and the root io::write_provenance (io/provenance.h; docs/hdf5-schema.md).
+//  5. Output files are written by the library's writers (io/, benchmarks/studies/; a command
+//     makes no HDF5 call itself): a temporary name renamed into place, so whole or not at all,
+//     checked or opened BEFORE the solve so that an unwritable path fails fast with exit 2. Every
+//     dataset gets units and a description, and the root the provenance (io/platform/provenance.h;
+//     docs/hdf5-schema.md).
 //  6. Beam problems are solved by the library's solve_beam (beam/beam_problem.h); a
 //     new method is plugged in there (docs/architecture.md), not in the commands.
 // Nested commands (`sweep beam`) use get_or_add_subcommand() so that several files can add
@@ -28,8 +30,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/command_table.h"
-#include "flexure/io/hdf5_file.h"
-#include "flexure/io/provenance.h"
+#include "flexure/io/platform/provenance.h"
 #include "flexure/solver/common/gsl_guard.h"
 
 int main(int argc, char** argv) {

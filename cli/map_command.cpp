@@ -14,9 +14,8 @@
 #include "cli/csv_output.h"
 #include "cli/slow_progress.h"
 #include "flexure/benchmarks/studies/cfm_map.h"
-#include "flexure/io/hdf5_file.h"
-#include "flexure/io/output_path.h"
-#include "flexure/io/provenance.h"
+#include "flexure/io/platform/output_path.h"
+#include "flexure/io/platform/provenance.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {

@@ -25,12 +25,11 @@
 #include "cli/slow_progress.h"
 #include "cli/warning_output.h"
 #include "flexure/benchmarks/studies/mechanism_tolerance.h"
-#include "flexure/io/hdf5_file.h"
 #include "flexure/io/mechanism_stroke_file.h"
 #include "flexure/io/mechanism_toml.h"
 #include "flexure/io/mechanism_validation_file.h"
-#include "flexure/io/output_path.h"
-#include "flexure/io/parallel/mpi_world.h"
+#include "flexure/io/platform/mpi_world.h"
+#include "flexure/io/platform/output_path.h"
 #include "flexure/mechanisms/general/catalogue_general.h"
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/mechanism.h"
@@ -928,9 +927,7 @@ void register_mechanism_command(CLI::App& app) {
     }
     // Every rank holds the whole study (mechanism_tolerance.h); rank 0 writes the file.
     if (!hdf5_out.empty() && parallel::world().root()) {
-      io::AtomicHdf5File file(hdf5_out);
-      write_tolerance_file(file.root(), s);
-      file.commit();
+      write_tolerance_hdf5(hdf5_out, s);
     }
     if (!csv_out.empty() && parallel::world().root()) {
       io::write_csv(csv_out, tolerance_csv_columns(s), targs->csv.empty() ? "--out" : "--csv");

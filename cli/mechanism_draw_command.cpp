@@ -12,7 +12,7 @@
 #include "cli/mechanism_geometry_output.h"
 #include "flexure/io/mechanism_drawing.h"
 #include "flexure/io/mechanism_toml.h"
-#include "flexure/io/output_path.h"
+#include "flexure/io/platform/output_path.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_exact_geometry.h"
 #include "flexure/mechanisms/mechanism_geometry.h"

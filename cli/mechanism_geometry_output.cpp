@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "flexure/io/output_path.h"
+#include "flexure/io/platform/output_path.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/quantity.h"
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "flexure/io/parallel/mpi_world.h"
-#include "flexure/io/parallel/work_distribution.h"
+#include "flexure/io/platform/mpi_world.h"
+#include "flexure/io/platform/work_distribution.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {

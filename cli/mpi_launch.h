@@ -15,7 +15,7 @@ void silence_stdout_of_other_ranks();
 void restore_stdout();
 
 // Rank 0 of an MPI run: one line on stderr with the items each rank computed (the balance of the
-// dynamic distribution, io/parallel/work_distribution.h); nothing in a run of one rank.
+// dynamic distribution, io/platform/work_distribution.h); nothing in a run of one rank.
 void report_balance();
 
 }  // namespace flexure::cli

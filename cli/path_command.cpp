@@ -7,7 +7,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
-#include <memory>
 #include <optional>
 
 #include "cli/beam_methods.h"
@@ -19,8 +18,7 @@
 #include "flexure/benchmarks/studies/load_path_study.h"
 #include "flexure/benchmarks/studies/path_shapes_xdmf.h"
 #include "flexure/io/chain_toml.h"
-#include "flexure/io/hdf5_file.h"
-#include "flexure/io/output_path.h"
+#include "flexure/io/platform/output_path.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
 #include "flexure/solver/common/quantity.h"
@@ -429,18 +427,12 @@ void run_path(const PathArgs& args) {
   require_out_or_csv(args.out, args.csv);
   if (!args.out.empty()) io::check_output_path(args.out);
   const CsvOutput csv(args.out, args.csv);
-  std::unique_ptr<io::AtomicHdf5File> output;
-  try {
-    output = std::make_unique<io::AtomicHdf5File>(csv.hdf5_path());
-  } catch (const io::Hdf5Error& e) {
-    throw InvalidInput(fmt::format("--out {}: {}", csv.written_path(), e.what()));
-  }
+  PathFile output(csv.hdf5_path(), fmt::format("--out {}", csv.written_path()));
   const auto start = std::chrono::steady_clock::now();
   const PathTable t = run_load_path(request);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  write_path_file(output->root(), t);
-  output->commit();
+  output.write(t);
   csv.write({"load_factor"}, {"special_points", "force_points", "shapes"});
   // With --shapes, the XDMF sidecar that ParaView opens (io/shapes_xdmf.h); not for a hidden
   // temporary HDF5 file (--out FILE.csv, or --csv alone), which is removed.

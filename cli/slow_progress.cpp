@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <memory>
 
-#include "flexure/io/parallel/mpi_world.h"
+#include "flexure/io/platform/mpi_world.h"
 
 namespace flexure::cli {
 

@@ -13,7 +13,7 @@
 #include "cli/csv_output.h"
 #include "flexure/benchmarks/studies/validation_checks.h"
 #include "flexure/benchmarks/studies/validation_file.h"
-#include "flexure/io/output_path.h"
+#include "flexure/io/platform/output_path.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {

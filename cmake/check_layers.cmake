@@ -15,8 +15,10 @@
 # map), and links no file format.
 # The mechanisms' sub-folders are ranked too: the tables compiled in (data) below the constant-force
 # configurations and their PRBM (cfm), below the assembled mechanisms and their exact model, below
-# dynamics, design and the general mechanisms, which nothing else in the layer includes. io is one
-# node until its platform code and its formats are split (issue 28).
+# dynamics, design and the general mechanisms, which nothing else in the layer includes. io is split:
+# its platform (io/platform: atomic HDF5 files, provenance, output paths, temporary-file cleanup,
+# MPI ranks and work division) needs only solver/common and sits below the models; the formats
+# (the rest of io/: TOML readers, domain writers, drawings, the beam-sweep engine) sit above them.
 cmake_minimum_required(VERSION 3.22)  # IN_LIST, list(POP_FRONT)
 set(layer_graph
   "solver/common:"
@@ -34,7 +36,8 @@ set(layer_graph
   "mechanisms/dynamics:mechanisms"
   "mechanisms/design:mechanisms"
   "mechanisms/general:mechanisms"
-  "io:mechanisms/dynamics,mechanisms/design,mechanisms/general"
+  "io/platform:solver/common"
+  "io:mechanisms/dynamics,mechanisms/design,mechanisms/general,io/platform"
   "benchmarks/studies:io,beam")
 # Headers any file may include: generated, no dependencies.
 set(allowed_everywhere "version.h")

@@ -11,8 +11,8 @@
 #include <mutex>
 #include <thread>
 
-#include "flexure/io/parallel/mpi_world.h"
-#include "flexure/io/parallel/work_distribution.h"
+#include "flexure/io/platform/mpi_world.h"
+#include "flexure/io/platform/work_distribution.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/evenly_spaced.h"
 

@@ -19,7 +19,7 @@
 //   /stability_index  int32    negative directions of the energy; -1 where not judged (3, 4)
 //   /stability_margin float64  lowest eigenvalue / bending stiffness; NaN where not judged
 // Root attributes: method, load_ratio_n, mu, tolerance, count, converged_count and the
-// provenance of io/provenance.h (status_meanings from beam_sweep_code_meanings()).
+// provenance of io/platform/provenance.h (status_meanings from beam_sweep_code_meanings()).
 // NaN in a stored float dataset means "no solution" (flagged by status = 1), except in
 // /stability_margin, where it means "not judged" (flagged by /stability 3 or 4).
 #include <functional>
@@ -27,8 +27,8 @@
 #include <string>
 #include <vector>
 
-#include "flexure/io/hdf5_file.h"
-#include "flexure/io/provenance.h"
+#include "flexure/io/platform/hdf5_file.h"
+#include "flexure/io/platform/provenance.h"
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"

@@ -8,8 +8,8 @@
 #include <functional>
 #include <stdexcept>
 
-#include "flexure/io/hdf5_file.h"
-#include "flexure/io/output_path.h"
+#include "flexure/io/platform/hdf5_file.h"
+#include "flexure/io/platform/output_path.h"
 
 namespace flexure::io {
 namespace {

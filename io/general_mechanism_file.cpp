@@ -9,7 +9,7 @@
 #include <limits>
 #include <span>
 
-#include "flexure/io/provenance.h"
+#include "flexure/io/platform/provenance.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::io {
@@ -540,6 +540,12 @@ void write_general_mechanism(Hdf5Group& root, const GeneralAnalysisOutput& out) 
     write_flexure_models(g, r->flexure_models, out.checked_flexures);
   }
   write_provenance(root, stability_code_meanings());
+}
+
+void write_general_mechanism_hdf5(const std::string& path, const GeneralAnalysisOutput& out) {
+  AtomicHdf5File file(path);
+  write_general_mechanism(file.root(), out);
+  file.commit();
 }
 
 std::vector<CsvColumn> general_mechanism_csv_columns(const GeneralAnalysisOutput& out,

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "flexure/io/csv_table.h"
-#include "flexure/io/hdf5_file.h"
+#include "flexure/io/platform/hdf5_file.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
 #include "flexure/mechanisms/general/general_prbm.h"
 
@@ -41,6 +41,10 @@ std::string general_input_load_unit(const mechanism::general::Input& input);
 
 // Writes the analysis into `root` with its provenance (the file is committed by the caller).
 void write_general_mechanism(Hdf5Group& root, const GeneralAnalysisOutput& out);
+
+// Writes the analysis (write_general_mechanism) to the HDF5 file `path`, whole or not at all
+// (AtomicHdf5File). Throws Hdf5Error when the file cannot be written.
+void write_general_mechanism_hdf5(const std::string& path, const GeneralAnalysisOutput& out);
 
 // The table of the analysis, one row per point of the first model: for a design, displacement
 // [m] and force [N (half)]; then input, input_load, energy and the stability verdicts and margins

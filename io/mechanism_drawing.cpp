@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "flexure/io/output_path.h"
+#include "flexure/io/platform/output_path.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::io {

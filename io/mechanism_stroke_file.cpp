@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "flexure/io/mechanism_stroke_shapes.h"
-#include "flexure/io/provenance.h"
+#include "flexure/io/platform/provenance.h"
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/modified_designs.h"
 #include "flexure/mechanisms/modified_springs.h"

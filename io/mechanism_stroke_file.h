@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "flexure/io/hdf5_file.h"
+#include "flexure/io/platform/hdf5_file.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_fatigue.h"
 

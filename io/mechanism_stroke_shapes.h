@@ -5,7 +5,7 @@
 // bent centreline and each rigid link's two ends, in the order they sit at rest -- placed as the
 // drawings place the end of the stroke (mechanisms/mechanism_exact_geometry.h), and the same
 // stations at rest. `flexure plot` draws them and animates the stroke (python/flexure_plot).
-#include "flexure/io/hdf5_file.h"
+#include "flexure/io/platform/hdf5_file.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 
 namespace flexure::io {

@@ -2,7 +2,7 @@
 // `flexure mechanism validate`: the table over a set of built-in designs (one
 // mechanism::validate_mechanism row per design, mechanisms/mechanism_validation.h), divided over
 // the ranks of an MPI run one design at a time (a design takes milliseconds to seconds: dynamic
-// balancing, io/parallel/work_distribution.h) and written to one HDF5 file (docs/hdf5-schema.md
+// balancing, io/platform/work_distribution.h) and written to one HDF5 file (docs/hdf5-schema.md
 // "flexure mechanism validate --out"; every rank writes the rows it computed, docs/scaling.md).
 //
 // The rows come back to rank 0 as the text that the caller's `format` made of them on the rank

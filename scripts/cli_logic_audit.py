@@ -15,7 +15,13 @@ rewrites the list. Standard library only.
 
     python3 scripts/cli_logic_audit.py --hdf5
 
-prints the lines of cli/ that name HDF5 (the issue's "no HDF5 call in cli/"), and
+prints the HDF5 calls of cli/ (the issue's "no HDF5 call in cli/"): a line of code (not a
+comment) that uses the HDF5 C API or hdf5.h, opens a file itself (AtomicHdf5File, Hdf5File) or
+writes into one (Hdf5Group, write_dataset, set_attribute, ...). It then lists, for
+information only, the other lines that name HDF5: flags and help texts (--hdf5, "the HDF5 file
+of ..."), paths handed to a library writer (csv.hdf5_path()), calls of the library's writers
+(write_*_hdf5) and the catch of io::Hdf5Error that maps a failed write to exit 2; these are not
+calls and do not make it fail. And
 
     python3 scripts/cli_logic_audit.py --raw-stderr
 
@@ -36,6 +42,14 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 HDF5_TOKENS = re.compile(
     r"Hdf5|hdf5|write_dataset|set_attribute|create_group|create_dataset|write_range|"
     r"write_scalar|write_provenance|H5[A-Z]")
+# What counts as an HDF5 call: the C API (H5Fcreate, H5T_NATIVE_DOUBLE, hid_t), its headers, the
+# library's file types (opening a file: AtomicHdf5File, Hdf5File; writing into one: Hdf5Group,
+# Hdf5Dataset) and their write methods, and the header that exposes them (hdf5_file.h).
+HDF5_CALLS = re.compile(
+    r"\bH5[A-Z][A-Za-z]*_?\w*\(|\bH5[A-Z]_[A-Z]|\bhid_t\b|\bherr_t\b|[<\"/]hdf5\.h|H5Cpp|"
+    r"AtomicHdf5|Hdf5File|Hdf5Group|Hdf5Dataset|hdf5_file\.h|"
+    r"\b(write_dataset|set_attribute|create_group|create_dataset|write_range|write_scalar|"
+    r"write_provenance)\(")
 RAW_STDERR = re.compile(r"fmt::print\(\s*stderr|std::cerr|fprintf\(\s*stderr|fputs\([^)]*stderr")
 
 
@@ -166,6 +180,30 @@ def grep(pattern, files):
     return 1 if found else 0
 
 
+def hdf5_calls(files):
+    """The HDF5 calls of `files` (HDF5_CALLS in code, comments left out); exit 1 when any. The
+    other lines naming HDF5 are listed after them as mentions, which do not count."""
+    calls, mentions = [], []
+    for path in files:
+        with open(path, encoding="utf-8") as f:
+            for number, line in enumerate(f, 1):
+                code = line.split("//", 1)[0]
+                where = f"{os.path.relpath(path, ROOT)}:{number}: {line.rstrip()}"
+                if HDF5_CALLS.search(code):
+                    calls.append(where)
+                elif HDF5_TOKENS.search(line):
+                    mentions.append(where)
+    print(f"HDF5 calls in cli/: {len(calls)}")
+    for where in calls:
+        print(f"  {where}")
+    print(f"other lines naming HDF5 (flags, help texts, comments, paths handed to the library's "
+          f"writers, write_*_hdf5 calls, the io::Hdf5Error catch; not calls): {len(mentions)}")
+    for where in mentions:
+        print(f"  {where}")
+    print(f"{len(calls)} HDF5 call(s), {len(mentions)} other mention(s)", file=sys.stderr)
+    return 1 if calls else 0
+
+
 def raw_warnings(files):
     """Statements (from a write to stderr to the next ';') whose text says "warning"."""
     found = 0
@@ -188,14 +226,14 @@ def main():
     parser.add_argument("--blocks", default=os.path.join(ROOT, "scripts", "cli_logic_blocks.txt"))
     parser.add_argument("--source", default=os.path.join(ROOT, "cli"), help="the cli/ folder")
     parser.add_argument("--update", action="store_true", help="move ranges whose anchor moved")
-    parser.add_argument("--hdf5", action="store_true", help="list the lines of cli/ naming HDF5")
+    parser.add_argument("--hdf5", action="store_true", help="list the HDF5 calls of cli/ (then the other lines naming HDF5)")
     parser.add_argument("--raw-stderr", action="store_true",
                         help="list warnings written to stderr by cli/*_command.cpp")
     args = parser.parse_args()
     if args.hdf5:
         files = sorted(glob.glob(os.path.join(args.source, "*.cpp")) +
                        glob.glob(os.path.join(args.source, "*.h")))
-        return grep(HDF5_TOKENS, files)
+        return hdf5_calls(files)
     if args.raw_stderr:
         return raw_warnings(sorted(glob.glob(os.path.join(args.source, "*_command.cpp"))))
     return audit(args)

@@ -5,7 +5,7 @@
 
 Reads every .h and .cpp of the library folders (solver/, elements/, beam/, mechanisms/, io/,
 benchmarks/studies/, include/flexure/) and both include styles, "flexure/..." and <flexure/...>.
-A file belongs to the folder it sits in (solver/shooting, mechanisms/cfm, io/parallel, ...).
+A file belongs to the folder it sits in (solver/shooting, mechanisms/cfm, io/platform, ...).
 
   --edges        folder -> folder edges with the number of includes and the including files
   --cycles       cycles between folders (strongly connected components of the folder graph) with

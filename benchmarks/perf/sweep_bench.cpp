@@ -10,7 +10,7 @@
 #include <string>
 
 #include "flexure/io/beam_sweep.h"
-#include "flexure/io/hdf5_file.h"
+#include "flexure/io/platform/hdf5_file.h"
 #include "flexure/solver/common/gsl_guard.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 

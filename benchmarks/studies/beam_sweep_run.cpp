@@ -14,8 +14,8 @@
 #include "flexure/beam/physical_beam.h"
 #include "flexure/benchmarks/studies/shapes_group.h"
 #include "flexure/io/beam_sweep.h"
-#include "flexure/io/hdf5_file.h"
-#include "flexure/io/parallel/mpi_world.h"
+#include "flexure/io/platform/hdf5_file.h"
+#include "flexure/io/platform/mpi_world.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure {

@@ -5,9 +5,9 @@
 // calls this; the library decides everything else.
 //
 // The file is opened when the BeamSweepFile is made, so that a path that cannot be written fails
-// before any point is solved, and it appears whole or not at all (io/hdf5_file.h AtomicHdf5File).
-// Under mpirun every rank writes its blocks into the one file (docs/scaling.md). No HDF5 type is
-// visible here.
+// before any point is solved, and it appears whole or not at all (io/platform/hdf5_file.h
+// AtomicHdf5File). Under mpirun every rank writes its blocks into the one file (docs/scaling.md).
+// No HDF5 type is visible here.
 #include <functional>
 #include <memory>
 #include <string>

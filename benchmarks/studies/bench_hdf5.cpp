@@ -8,8 +8,8 @@
 #include <thread>
 
 #include "flexure/benchmarks/studies/bench_run.h"
-#include "flexure/io/hdf5_file.h"
-#include "flexure/io/provenance.h"
+#include "flexure/io/platform/hdf5_file.h"
+#include "flexure/io/platform/provenance.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 
 namespace flexure::bench {

@@ -8,8 +8,9 @@
 
 namespace flexure::bench {
 
-// File-level attributes (root group) besides the provenance every file has (io/provenance.h:
-// tool_version, git_commit, command_line, creation_time, status_meanings).
+// File-level attributes (root group) besides the provenance every file has
+// (io/platform/provenance.h: tool_version, git_commit, command_line, creation_time,
+// status_meanings).
 struct BenchFileInfo {
   std::string machine;  // host name, OS, CPU architecture, hardware threads
   bool quick = false;

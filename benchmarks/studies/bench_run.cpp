@@ -11,8 +11,8 @@
 #include "flexure/benchmarks/studies/bench_hdf5.h"
 #include "flexure/benchmarks/studies/bench_problems.h"
 #include "flexure/benchmarks/studies/bench_solve.h"
-#include "flexure/io/hdf5_file.h"
-#include "flexure/io/output_path.h"
+#include "flexure/io/platform/hdf5_file.h"
+#include "flexure/io/platform/output_path.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/solver/common/errors.h"
 

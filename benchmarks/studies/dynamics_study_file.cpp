@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "flexure/io/hdf5_file.h"
-#include "flexure/io/provenance.h"
+#include "flexure/io/platform/hdf5_file.h"
+#include "flexure/io/platform/provenance.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure {

@@ -5,8 +5,8 @@
 // one period of the force history per --history frequency in /history/0, /history/1, ...
 //
 // The file is opened when the writer is made (a path that cannot be written fails before the
-// study runs) and appears whole or not at all (io/hdf5_file.h AtomicHdf5File): write() fills and
-// commits it. No HDF5 type is visible here.
+// study runs) and appears whole or not at all (io/platform/hdf5_file.h AtomicHdf5File): write()
+// fills and commits it. No HDF5 type is visible here.
 #include <memory>
 #include <string>
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -844,6 +846,26 @@ void write_path_file(io::Hdf5Group& root, const PathTable& t) {
   root.set_attribute("shape_points", static_cast<std::int64_t>(t.shape_points));
   root.set_attribute("message", t.message);
   io::write_provenance(root, path_code_meanings());
+}
+
+PathFile::PathFile(const std::string& path, const std::string& shown_as) : path_(path) {
+  try {
+    file_ = std::make_unique<io::AtomicHdf5File>(path);
+  } catch (const io::Hdf5Error& e) {
+    throw InvalidInput(fmt::format("{}: {}", shown_as, e.what()));
+  }
+}
+
+PathFile::~PathFile() = default;
+PathFile::PathFile(PathFile&&) noexcept = default;
+PathFile& PathFile::operator=(PathFile&&) noexcept = default;
+
+void PathFile::write(const PathTable& table) {
+  if (!file_ || file_->committed()) {
+    throw std::logic_error(path_ + ": a PathFile is written once only");
+  }
+  write_path_file(file_->root(), table);
+  file_->commit();
 }
 
 }  // namespace flexure

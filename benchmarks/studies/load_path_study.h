@@ -4,13 +4,14 @@
 // followed on request, displacement control, shapes) or by the chain algorithm's load increments,
 // as a table of path points and special points, and its HDF5 file (docs/hdf5-schema.md
 // "flexure path", docs/cli.md "flexure path").
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "flexure/benchmarks/studies/shapes_group.h"
-#include "flexure/io/hdf5_file.h"
-#include "flexure/io/provenance.h"
+#include "flexure/io/platform/hdf5_file.h"
+#include "flexure/io/platform/provenance.h"
 #include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/stability.h"
@@ -186,5 +187,27 @@ ShapesView path_shapes_view(const PathTable& table);
 // Writes the table to `root` (datasets, /special_points, /shapes, attributes and provenance;
 // docs/hdf5-schema.md "flexure path").
 void write_path_file(io::Hdf5Group& root, const PathTable& table);
+
+// The HDF5 file of `flexure path`, opened when the writer is made so that a path that cannot be
+// written fails before the path is solved (exit 2), and appearing whole or not at all
+// (AtomicHdf5File): write() fills it with write_path_file and commits it; a writer destroyed
+// before write() leaves nothing behind.
+class PathFile {
+ public:
+  // Creates the temporary file next to `path`. Throws InvalidInput "<shown_as>: <why>" when the
+  // file cannot be written there (`shown_as` names the file as the user gave it, e.g. "--out
+  // x.csv" when `path` is the hidden HDF5 file behind a CSV table).
+  PathFile(const std::string& path, const std::string& shown_as);
+  ~PathFile();
+  PathFile(PathFile&&) noexcept;
+  PathFile& operator=(PathFile&&) noexcept;
+
+  // Writes the table and renames the file into place. Once only.
+  void write(const PathTable& table);
+
+ private:
+  std::string path_;
+  std::unique_ptr<io::AtomicHdf5File> file_;
+};
 
 }  // namespace flexure

@@ -11,9 +11,9 @@
 #include <random>
 #include <span>
 
-#include "flexure/io/parallel/mpi_world.h"
-#include "flexure/io/parallel/work_distribution.h"
-#include "flexure/io/provenance.h"
+#include "flexure/io/platform/mpi_world.h"
+#include "flexure/io/platform/provenance.h"
+#include "flexure/io/platform/work_distribution.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/errors.h"
 
@@ -392,6 +392,12 @@ void write_tolerance_file(io::Hdf5Group& root, const ToleranceStudy& s) {
     }
   }
   io::write_provenance(root, {});
+}
+
+void write_tolerance_hdf5(const std::string& path, const ToleranceStudy& study) {
+  io::AtomicHdf5File file(path);
+  write_tolerance_file(file.root(), study);
+  file.commit();
 }
 
 std::vector<io::CsvColumn> tolerance_csv_columns(const ToleranceStudy& s) {

@@ -10,7 +10,7 @@
 // for small spreads.
 //
 // Under mpirun (docs/scaling.md) the analyses -- the 2 x parameters of the central differences and
-// the samples, one item each -- are divided over the ranks (io/parallel/work_distribution.h); the
+// the samples, one item each -- are divided over the ranks (io/platform/work_distribution.h); the
 // draws are made up front from the one seeded stream, every item is computed alone from the same
 // input, and the results come back to every rank in item order, so that any number of ranks gives
 // the serial study bit for bit.
@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "flexure/io/csv_table.h"
-#include "flexure/io/hdf5_file.h"
+#include "flexure/io/platform/hdf5_file.h"
 #include "flexure/mechanisms/force_of.h"
 #include "flexure/mechanisms/mechanism.h"
 
@@ -87,6 +87,10 @@ ToleranceStudy mechanism_tolerance(const MechanismDesign& design, const Toleranc
 // (design, distribution, samples, seed, spreads, force_of, mpi_ranks), /parameters, /draws, and per
 // quantity a group with its values, sensitivities and statistics.
 void write_tolerance_file(io::Hdf5Group& root, const ToleranceStudy& study);
+
+// Writes the study (write_tolerance_file) to the HDF5 file `path`, whole or not at all
+// (AtomicHdf5File). Throws Hdf5Error when the file cannot be written.
+void write_tolerance_hdf5(const std::string& path, const ToleranceStudy& study);
 
 // The samples as a CSV table (docs/cli.md "CSV output"), one row per sample: `sample` (0-based, as
 // the failure messages count), the relative change of each parameter (`draws/thickness_1`, ...,

@@ -5,9 +5,9 @@
 #include <memory>
 
 #include "flexure/benchmarks/studies/model_map.h"
-#include "flexure/io/hdf5_file.h"
-#include "flexure/io/output_path.h"
-#include "flexure/io/provenance.h"
+#include "flexure/io/platform/hdf5_file.h"
+#include "flexure/io/platform/output_path.h"
+#include "flexure/io/platform/provenance.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::studies {

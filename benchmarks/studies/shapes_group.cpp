@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "flexure/io/output_path.h"
+#include "flexure/io/platform/output_path.h"
 #include "flexure/io/shapes_xdmf.h"
 
 namespace flexure {

@@ -7,11 +7,11 @@
 #include <memory>
 #include <optional>
 
-#include "flexure/io/hdf5_file.h"
-#include "flexure/io/output_path.h"
-#include "flexure/io/parallel/mpi_world.h"
-#include "flexure/io/parallel/work_distribution.h"
-#include "flexure/io/provenance.h"
+#include "flexure/io/platform/hdf5_file.h"
+#include "flexure/io/platform/mpi_world.h"
+#include "flexure/io/platform/output_path.h"
+#include "flexure/io/platform/provenance.h"
+#include "flexure/io/platform/work_distribution.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::studies {

@@ -1,7 +1,7 @@
 #pragma once
 // `flexure design cfm --all-subclasses`: every thesis sub-class re-derived
 // (mechanisms/design/subclass_rederivation.h), divided over the ranks of an MPI run one row at a
-// time (a row takes 5 ms to several seconds: dynamic balancing, io/parallel/work_distribution.h),
+// time (a row takes 5 ms to several seconds: dynamic balancing, io/platform/work_distribution.h),
 // and the table written to one HDF5 file (docs/hdf5-schema.md "flexure design cfm
 // --all-subclasses").
 #include <cstddef>

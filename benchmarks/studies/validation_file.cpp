@@ -7,8 +7,8 @@
 #include <type_traits>
 #include <vector>
 
-#include "flexure/io/hdf5_file.h"
-#include "flexure/io/provenance.h"
+#include "flexure/io/platform/hdf5_file.h"
+#include "flexure/io/platform/provenance.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure {

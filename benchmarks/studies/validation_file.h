@@ -4,9 +4,9 @@
 // and the root attributes all_passed, count, rel_error_definition and the provenance.
 //
 // The file is opened when the writer is made, so that a path that cannot be written fails before
-// the checks run, and it appears whole or not at all (io/hdf5_file.h AtomicHdf5File): write()
-// fills and commits it; a writer destroyed before write() leaves nothing behind. No HDF5 type is
-// visible here.
+// the checks run, and it appears whole or not at all (io/platform/hdf5_file.h AtomicHdf5File):
+// write() fills and commits it; a writer destroyed before write() leaves nothing behind. No HDF5
+// type is visible here.
 #include <memory>
 #include <string>
 

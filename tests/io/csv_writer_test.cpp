@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "flexure/io/csv_table.h"
-#include "flexure/io/hdf5_file.h"
-#include "flexure/io/provenance.h"
+#include "flexure/io/platform/hdf5_file.h"
+#include "flexure/io/platform/provenance.h"
 
 namespace flexure::io {
 namespace {

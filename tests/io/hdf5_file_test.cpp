@@ -4,9 +4,9 @@
 // removed when not committed or after a failed write) is checked by listing the directory; an
 // unwritable target fails before anything is written, naming the path. Every dataset carries the
 // units and description it was written with, a dataset without them is refused, and commit()
-// refuses a file without the provenance of io/provenance.h (checked against the literal strings
-// written and against flexure/version.h); shell_quote against hand-quoted strings.
-#include "flexure/io/hdf5_file.h"
+// refuses a file without the provenance of io/platform/provenance.h (checked against the literal
+// strings written and against flexure/version.h); shell_quote against hand-quoted strings.
+#include "flexure/io/platform/hdf5_file.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -17,7 +17,7 @@
 #include <limits>
 #include <random>
 
-#include "flexure/io/provenance.h"
+#include "flexure/io/platform/provenance.h"
 #include "flexure/version.h"
 #include "tests/support/cli_test_support.h"
 

@@ -1,7 +1,7 @@
 // What is checked against what: a `flexure ... --out` run stopped by SIGTERM or SIGINT while it
 // computes leaves nothing behind: its hidden temporary (seen in the directory before the signal)
-// is removed by io/temp_file_cleanup.h's handler, no target is created, and the process still
-// dies by that signal (the handler re-raises it).
+// is removed by io/platform/temp_file_cleanup.h's handler, no target is created, and the process
+// still dies by that signal (the handler re-raises it).
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>

@@ -17,7 +17,7 @@
 //   are gone or whose number a younger process now has; those of live processes, of other hosts
 //   and files of other forms stay. A `sweep beam` killed with SIGKILL leaves its temporary, and
 //   the next run to the same --out leaves only its file (issue 27).
-#include "flexure/io/output_path.h"
+#include "flexure/io/platform/output_path.h"
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
@@ -35,8 +35,8 @@
 #include <thread>
 #include <vector>
 
-#include "flexure/io/hdf5_file.h"
-#include "flexure/io/provenance.h"
+#include "flexure/io/platform/hdf5_file.h"
+#include "flexure/io/platform/provenance.h"
 #include "flexure/solver/common/errors.h"
 #include "tests/support/cli_test_support.h"
 

@@ -12,8 +12,8 @@
 #include <thread>
 #include <vector>
 
-#include "flexure/io/parallel/mpi_world.h"
-#include "flexure/io/parallel/work_distribution.h"
+#include "flexure/io/platform/mpi_world.h"
+#include "flexure/io/platform/work_distribution.h"
 
 int main(int argc, char** argv) {
   if (argc != 6 && argc != 7) {

@@ -15,7 +15,7 @@
 #include <set>
 #include <thread>
 
-#include "flexure/io/output_path.h"
+#include "flexure/io/platform/output_path.h"
 #include "tests/support/cli_test_support.h"
 
 namespace flexure::test {

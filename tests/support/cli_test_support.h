@@ -1,7 +1,7 @@
 #pragma once
 // Helpers for the tests that run the built `flexure` binary (FLEXURE_BINARY): run a command line
 // with stdout and stderr captured to files, make scratch directories, read HDF5 data back with the
-// plain C API (independently of io/hdf5_file.h).
+// plain C API (independently of io/platform/hdf5_file.h).
 #include <hdf5.h>
 #include <sys/wait.h>
 #include <unistd.h>

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/io/hdf5_file.h"
+#include "flexure/io/platform/hdf5_file.h"
 
 namespace flexure::io {
 

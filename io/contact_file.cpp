@@ -1,10 +1,10 @@
-#include "flexure/io/contact_hdf5.h"
+#include "flexure/io/contact_file.h"
 
 #include <limits>
 #include <vector>
 
-#include "flexure/io/hdf5_file.h"
-#include "flexure/io/provenance.h"
+#include "flexure/io/platform/hdf5_file.h"
+#include "flexure/io/platform/provenance.h"
 
 namespace flexure::io {
 

@@ -1,4 +1,4 @@
-#include "flexure/io/parallel/work_distribution.h"
+#include "flexure/io/platform/work_distribution.h"
 
 #include <fmt/format.h>
 #include <signal.h>
@@ -17,8 +17,8 @@
 #include <utility>
 #include <vector>
 
-#include "flexure/io/parallel/mpi_world.h"
-#include "flexure/io/temp_file_cleanup.h"
+#include "flexure/io/platform/mpi_world.h"
+#include "flexure/io/platform/temp_file_cleanup.h"
 
 #ifdef FLEXURE_WITH_MPI
 #include <mpi.h>
@@ -50,7 +50,7 @@ std::vector<long> balance;  // items_per_rank()
 // sequence leaves a second: rank 0 names the blocks when the process that started it (mpirun or
 // its daemon) sends one. Nothing is removed here: a SIGCONT that resumes a job stopped by job
 // control (mpirun forwards those only with orte_forward_job_control set) must not cost the output
-// file; the temporary files are removed on SIGTERM as before (io/temp_file_cleanup.cpp).
+// file; the temporary files are removed on SIGTERM as before (io/platform/temp_file_cleanup.cpp).
 extern "C" void name_blocks_on_launcher_sigcont(int, siginfo_t* info, void*) {
   if (info == nullptr || info->si_code != SI_USER || info->si_pid != ::getppid()) return;
   const int saved_errno = errno;

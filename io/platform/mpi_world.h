@@ -50,7 +50,7 @@ class World {
 
   // Ends every rank of the run at once (MPI_Abort) with `exit_code`; in a run of one rank,
   // std::exit. Never returns. Removes this process's registered temporary files first
-  // (io/temp_file_cleanup.h): no destructor runs after MPI_Abort.
+  // (io/platform/temp_file_cleanup.h): no destructor runs after MPI_Abort.
   [[noreturn]] void abort(int exit_code) const;
 
   // The largest of every rank's `code`, and rank 0's own, once every rank has called it; nullopt

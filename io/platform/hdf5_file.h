@@ -15,7 +15,8 @@
 // Self-describing files (docs/hdf5-schema.md "Every file"): every dataset carries the string
 // attributes `units` ("1" dimensionless, "rad", "N", "m", "Pa", "s", ...; "text" for strings) and
 // a one-line `description`. There is no write_dataset without them, so a writer cannot forget
-// them. The root carries the provenance of io/provenance.h; commit() refuses a file without it.
+// them. The root carries the provenance of io/platform/provenance.h; commit() refuses a file
+// without it.
 #include <hdf5.h>
 
 #include <cstdint>
@@ -25,12 +26,9 @@
 #include <string>
 #include <vector>
 
-namespace flexure::io {
+#include "flexure/io/platform/hdf5_error.h"
 
-class Hdf5Error : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+namespace flexure::io {
 
 // Switches off HDF5's automatic error stack printing (process-wide, once). Called by every
 // constructor below; errors are reported as exceptions instead.
@@ -202,7 +200,7 @@ class Hdf5Group {
 class AtomicHdf5File {
  public:
   // Creates the temporary file next to `path`. Throws Hdf5Error naming `path` and the reason if
-  // it cannot be written and renamed into place (io/output_path.h: missing or read-only
+  // it cannot be written and renamed into place (io/platform/output_path.h: missing or read-only
   // directory, a name over the file-name limit, a directory or device in its place, a file of
   // another user in a sticky directory), before any work is done.
   //
@@ -217,7 +215,7 @@ class AtomicHdf5File {
 
   // Closes the file (closing every group still open) and renames it over `path`. Throws
   // Hdf5Error and removes the temporary if the root lacks an attribute of
-  // provenance_attribute_names() (io/provenance.h: write_provenance was not called), or if
+  // provenance_attribute_names() (io/platform/provenance.h: write_provenance was not called), or if
   // closing or renaming fails. Call at most once. kCollective: every rank calls it; the outcome
   // (rank 0's rename) is the same on every rank.
   void commit();

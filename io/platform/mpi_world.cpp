@@ -1,4 +1,4 @@
-#include "flexure/io/parallel/mpi_world.h"
+#include "flexure/io/platform/mpi_world.h"
 
 #include <fmt/format.h>
 
@@ -10,7 +10,7 @@
 #include <mutex>
 #include <thread>
 
-#include "flexure/io/temp_file_cleanup.h"
+#include "flexure/io/platform/temp_file_cleanup.h"
 
 #ifdef FLEXURE_WITH_MPI
 #include <hdf5.h>

@@ -1,4 +1,4 @@
-#include "flexure/io/hdf5_file.h"
+#include "flexure/io/platform/hdf5_file.h"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -13,10 +13,10 @@
 #include <mutex>
 #include <utility>
 
-#include "flexure/io/output_path.h"
-#include "flexure/io/parallel/mpi_world.h"
-#include "flexure/io/provenance.h"
-#include "flexure/io/temp_file_cleanup.h"
+#include "flexure/io/platform/mpi_world.h"
+#include "flexure/io/platform/output_path.h"
+#include "flexure/io/platform/provenance.h"
+#include "flexure/io/platform/temp_file_cleanup.h"
 
 namespace flexure::io {
 

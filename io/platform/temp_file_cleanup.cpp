@@ -1,4 +1,4 @@
-#include "flexure/io/temp_file_cleanup.h"
+#include "flexure/io/platform/temp_file_cleanup.h"
 
 #include <unistd.h>
 
@@ -9,7 +9,7 @@
 #include <cstring>
 #include <mutex>
 
-#include "flexure/io/parallel/work_distribution.h"
+#include "flexure/io/platform/work_distribution.h"
 
 namespace flexure::io {
 namespace {

@@ -1,4 +1,4 @@
-#include "flexure/io/output_path.h"
+#include "flexure/io/platform/output_path.h"
 
 #include <fmt/format.h>
 #include <pwd.h>
@@ -19,7 +19,7 @@
 #include <string_view>
 #include <vector>
 
-#include "flexure/io/temp_file_cleanup.h"
+#include "flexure/io/platform/temp_file_cleanup.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::io {

@@ -47,8 +47,8 @@ std::vector<long> items_per_rank();
 // For a signal handler (async-signal-safe): writes the blocks in progress on the ranks, as rank 0
 // knows them ("rank 1 items 40-59 (then 60-79)"), to `fd`; nothing outside a distribute() on
 // rank 0, and only the first call of a distribute() writes. A distribute() on rank 0 installs the
-// handlers of io/temp_file_cleanup.h, which call it, and one for the SIGCONT with which mpirun
-// opens its stop sequence (work_distribution.cpp: the SIGTERM after it leaves milliseconds).
+// handlers of io/platform/temp_file_cleanup.h, which call it, and one for the SIGCONT with which
+// mpirun opens its stop sequence (work_distribution.cpp: the SIGTERM after it leaves milliseconds).
 void write_blocks_in_progress(int fd);
 
 }  // namespace flexure::parallel

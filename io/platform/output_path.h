@@ -1,8 +1,8 @@
 #pragma once
 // Checks that an output file can be written where the user asked, before any work is done.
 //
-// flexure writes every output file whole or not at all (io/hdf5_file.h): a temporary file is
-// created next to the target and renamed over it when complete. Everything that can make the
+// flexure writes every output file whole or not at all (io/platform/hdf5_file.h): a temporary file
+// is created next to the target and renamed over it when complete. Everything that can make the
 // creation or the rename fail is checked here, so that a command taking --out fails in milliseconds
 // (exit 2) instead of after a sweep of many minutes: the name's length, the directory, what the
 // target is now (a directory, a device or FIFO, which rename() would replace), and the

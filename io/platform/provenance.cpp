@@ -1,4 +1,4 @@
-#include "flexure/io/provenance.h"
+#include "flexure/io/platform/provenance.h"
 
 #include <fmt/format.h>
 
@@ -10,7 +10,7 @@
 #include <string_view>
 #include <utility>
 
-#include "flexure/io/parallel/mpi_world.h"
+#include "flexure/io/platform/mpi_world.h"
 #include "flexure/version.h"
 
 namespace flexure::io {
