@@ -9,11 +9,7 @@
 #include <string>
 
 #include "flexure/beam/beam_solution_parts.h"
-#include "flexure/elements/beam_constraint_model.h"
-#include "flexure/elements/cantilever_case.h"
-#include "flexure/elements/chained_bcm.h"
-#include "flexure/elements/linear_beam.h"
-#include "flexure/elements/prbm3r.h"
+#include "flexure/elements/ladder_models.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/inverse/tip_target.h"
 

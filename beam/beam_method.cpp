@@ -2,8 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "flexure/elements/chained_bcm.h"
-#include "flexure/elements/prbm3r.h"
+#include "flexure/elements/ladder_models.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"

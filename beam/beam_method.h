@@ -14,10 +14,10 @@ enum class BeamMethod {
   kChain,     // Howell's chain algorithm (solver/chain)
   kPrbm,      // pseudo-rigid-body model (elements/prbm_cantilever.h)
   // The cheaper models of the ladder (beam_ladder.h, docs/models.md):
-  kLinear,  // linear Euler-Bernoulli theory (elements/linear_beam.h)
-  kPrbm3r,  // Su's pseudo-rigid-body 3R model (elements/prbm3r.h)
-  kBcm,     // the beam-constraint model, one element (elements/beam_constraint_model.h)
-  kCbcm,    // the chained beam-constraint model (elements/chained_bcm.h)
+  kLinear,  // linear Euler-Bernoulli theory (elements/ladder_models.h)
+  kPrbm3r,  // Su's pseudo-rigid-body 3R model (elements/ladder_models.h)
+  kBcm,     // the beam-constraint model, one element (elements/ladder_models.h)
+  kCbcm,    // the chained beam-constraint model (elements/ladder_models.h)
 };
 
 // "auto", "elliptic", "shooting", "chain", "prbm", "linear", "prbm3r", "bcm", "cbcm", in the order

@@ -19,7 +19,7 @@
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"
-#include "flexure/solver/shooting/elastica_integrator.h"
+#include "flexure/solver/shooting/shooting_options.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {
@@ -43,7 +43,7 @@ struct BeamProblem {
   // Shooting method: the integrator of the flexible segments. GSL's Prince-Dormand 8(7) is the
   // default, 20-35x cheaper per solve than CVODES (the reference) at rtol 1e-9 ... 1e-12 and at
   // least as accurate for these small non-stiff systems (docs/performance.md, "Shooting").
-  ElasticaIntegrator::Backend integrator = ElasticaIntegrator::Backend::kRk8pd;
+  IntegratorBackend integrator = IntegratorBackend::kRk8pd;
   std::optional<SegmentChain> chain;  // a chain of segments (overrides the loads above)
   // `auto` picks the cheapest method whose relative error is within this (method_selector.h).
   double tolerance = 1e-6;

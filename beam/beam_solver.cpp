@@ -5,7 +5,7 @@
 #include <cmath>
 #include <utility>
 
-#include "flexure/elements/prbm3r.h"
+#include "flexure/elements/ladder_models.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure {

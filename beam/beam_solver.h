@@ -18,7 +18,7 @@
 #include "flexure/beam/beam_method.h"
 #include "flexure/beam/beam_problem.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
-#include "flexure/solver/shooting/elastica_integrator.h"
+#include "flexure/solver/shooting/shooting_options.h"
 
 namespace flexure {
 
@@ -29,7 +29,7 @@ class BeamSolver {
     // auto: the relative tip error allowed when it chooses a method (method_selector.h).
     double auto_tolerance = 1e-6;
     // Shooting: the integrator of the flexible segments (GSL's Prince-Dormand 8(7) by default).
-    ElasticaIntegrator::Backend integrator = ElasticaIntegrator::Backend::kRk8pd;
+    IntegratorBackend integrator = IntegratorBackend::kRk8pd;
     int elements = 100;  // chain algorithm: N elements (Howell sec. 5.11)
     int increments = 1;  // chain algorithm: load increments to start with (halved on failure)
     ChainVariant chain_variant = ChainVariant::kCorrected;

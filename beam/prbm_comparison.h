@@ -13,10 +13,9 @@
 #include <string_view>
 #include <variant>
 
-#include "flexure/elements/end_moment_segment.h"
-#include "flexure/elements/fixed_pinned_segment.h"
 #include "flexure/elements/prbm_derivation.h"
 #include "flexure/elements/prbm_element.h"
+#include "flexure/elements/prbm_segments.h"
 #include "flexure/solver/common/end_load.h"
 
 namespace flexure {

@@ -13,8 +13,7 @@
 #include "cli/csv_output.h"
 #include "cli/slow_progress.h"
 #include "flexure/benchmarks/studies/model_map.h"
-#include "flexure/elements/prbm3r.h"
-#include "flexure/elements/prbm3r_derivation.h"
+#include "flexure/elements/ladder_models.h"
 #include "flexure/io/platform/output_path.h"
 #include "flexure/io/platform/provenance.h"
 #include "flexure/solver/common/errors.h"
@@ -186,7 +185,7 @@ void run_models_map(const ModelsMapArgs& a) {
 }
 
 // `flexure models prbm3r-constants`: derives the PR-3R constants against the exact elastica
-// (elements/prbm3r_derivation.h) and prints data/prbm3r_flexure_constants.csv, or a summary.
+// (elements/ladder_models.h) and prints data/prbm3r_flexure_constants.csv, or a summary.
 void run_prbm3r_constants(bool json) {
   const Prbm3rDerivation d = derive_prbm3r_constants();
   if (!d.converged()) {

@@ -1,27 +1,24 @@
-# `cmake --install build --prefix P` installs the layer libraries, the public headers (those the
-# umbrella <flexure/flexure.h> reaches; internal headers stay out) and a CMake package, so that an
-# outside project can do
+# `cmake --install build --prefix P` installs the layer libraries, the public headers (the explicit
+# list of cmake/FlexurePublicHeaders.cmake; internal headers stay out) and a CMake package, so that
+# an outside project can do
 #   find_package(flexure REQUIRED)
 #   target_link_libraries(app PRIVATE flexure::flexure)
 include(CMakePackageConfigHelpers)
+include(${CMAKE_CURRENT_LIST_DIR}/FlexurePublicHeaders.cmake)
 
-flexure_header_closure(FLEXURE_PUBLIC_HEADERS include/flexure/flexure.h)
-# A header added to the public closure re-runs the configure step, so the install rules follow.
-set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${FLEXURE_PUBLIC_HEADERS}
-                                                              include/flexure/flexure.h)
-list(REMOVE_ITEM FLEXURE_PUBLIC_HEADERS include/flexure/flexure.h)
 foreach(header ${FLEXURE_PUBLIC_HEADERS})
-  # A module header (include/flexure/beam.h) installs beside flexure.h.
-  string(REGEX REPLACE "^include/flexure/" "" header_in_package "${header}")
-  get_filename_component(dir ${header_in_package} DIRECTORY)
+  get_filename_component(dir ${header} DIRECTORY)
   install(FILES ${PROJECT_SOURCE_DIR}/${header}
           DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/flexure/${dir})
 endforeach()
-install(FILES ${PROJECT_SOURCE_DIR}/include/flexure/flexure.h
-              ${PROJECT_BINARY_DIR}/include/flexure/version.h
+# The umbrella and the module headers install beside the generated version.h.
+list(TRANSFORM FLEXURE_MODULE_HEADERS PREPEND ${PROJECT_SOURCE_DIR}/ OUTPUT_VARIABLE module_paths)
+install(FILES ${module_paths} ${PROJECT_BINARY_DIR}/include/flexure/version.h
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/flexure)
-# For tests/consumer: the list of installed public headers.
-string(REPLACE ";" "\n" FLEXURE_PUBLIC_HEADER_LINES "${FLEXURE_PUBLIC_HEADERS}")
+# For the layer check and tests/consumers/headers: every installed header but the generated
+# version.h, the module headers first (relative to the source root).
+string(REPLACE ";" "\n" FLEXURE_PUBLIC_HEADER_LINES
+               "${FLEXURE_MODULE_HEADERS};${FLEXURE_PUBLIC_HEADERS}")
 file(WRITE ${PROJECT_BINARY_DIR}/public_headers.txt "${FLEXURE_PUBLIC_HEADER_LINES}\n")
 
 # Two export sets (issue 28): the beam component (core, solvers, elements, beam: Eigen, GSL,

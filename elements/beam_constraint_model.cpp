@@ -1,10 +1,9 @@
-#include "flexure/elements/beam_constraint_model.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
+#include "flexure/elements/ladder_models.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure {

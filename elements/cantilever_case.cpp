@@ -1,7 +1,6 @@
-#include "flexure/elements/cantilever_case.h"
-
 #include <fmt/format.h>
 
+#include "flexure/elements/ladder_models.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "flexure/elements/beam_constraint_model.h"
+#include "flexure/elements/ladder_models.h"
 
 namespace flexure {
 

@@ -1,5 +1,5 @@
 #pragma once
-// The chained BCM integrated from its root loads (chained_bcm.h; docs/mechanisms.md "A model per
+// The chained BCM integrated from its root loads (ladder_models.h; docs/mechanisms.md "A model per
 // flexure"): the CBCM's initial-value form, as the shooting method integrates the elastica from
 // the loads at its root.
 //
@@ -10,7 +10,7 @@
 // own displacement: p = F . t_j, f = F . n_j (both times h^2) and the moment about its tip node,
 //   m_j h = M_j h - (1 + x_j) f + y_j p,   M_j the moment about its root node,
 // since the tip node lies h [(1 + x_j) t_j + y_j n_j] beyond the root node. With the BCM relations
-// [f; m_j] = K(p) [y_j; theta_j] and x_j = p/d_e - u'Pu/2 - p u'Qu (beam_constraint_model.h,
+// [f; m_j] = K(p) [y_j; theta_j] and x_j = p/d_e - u'Pu/2 - p u'Qu (ladder_models.h,
 // d_e = d/N^2) that is two equations in (y_j, theta_j), solved by Newton from the linear solution
 // (at most a few iterations: the quadratic term is O(f h^2 y^2)). The next element starts at the
 // tip node, turned theta_j, with M_{j+1} = m_j. The equations are those of ChainedBcmSolver (the

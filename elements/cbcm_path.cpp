@@ -8,8 +8,8 @@
 #include <limits>
 #include <optional>
 
-#include "flexure/elements/beam_constraint_model.h"
 #include "flexure/elements/chained_bcm_model.h"
+#include "flexure/elements/ladder_models.h"
 #include "flexure/elements/load_path_newton.h"
 #include "flexure/solver/common/errors.h"
 

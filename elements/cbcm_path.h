@@ -1,5 +1,5 @@
 #pragma once
-// The displacement-controlled equilibrium path of the chained BCM and of the BCM (chained_bcm.h;
+// The displacement-controlled equilibrium path of the chained BCM and of the BCM (ladder_models.h;
 // docs/models.md "Paths under displacement control"): `flexure path --method cbcm|bcm --control
 // tip-x|tip-y|tip-angle`, the problem Ma and Chen made the CBCM for (inclined and bistable beams
 // whose guided end is moved along a path).
@@ -31,7 +31,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/elements/chained_bcm.h"
+#include "flexure/elements/ladder_models.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/common/status.h"
@@ -96,7 +96,7 @@ struct CbcmPathResult : SolveStatus {
 };
 
 // The path of `chain` with `control.coordinate` moved to `control.target` (root frame, the chain's
-// units; rad). Throws InvalidInput for a chain the CBCM does not model (chained_bcm.h), a one-way
+// units; rad). Throws InvalidInput for a chain the CBCM does not model (ladder_models.h), a one-way
 // control (shooting only), or bad options. A path that stops early returns completed == false
 // (SolveStatus) with the message; the points up to there are kept.
 CbcmPathResult trace_cbcm_controlled_path(const SegmentChain& chain,

@@ -1,5 +1,3 @@
-#include "flexure/elements/chained_bcm.h"
-
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
@@ -7,8 +5,8 @@
 #include <cmath>
 #include <limits>
 
-#include "flexure/elements/beam_constraint_model.h"
 #include "flexure/elements/chained_bcm_model.h"
+#include "flexure/elements/ladder_models.h"
 #include "flexure/elements/load_path_newton.h"
 #include "flexure/solver/chain_model/tip_reach.h"
 #include "flexure/solver/common/errors.h"

@@ -1,7 +1,7 @@
 #pragma once
-// The chained BCM's discretised segment (chained_bcm.h): the chain in the flexible segment's units,
-// the N elements' BCM relations as a residual, and the displacement control of one tip coordinate
-// (cbcm_path.h). Internal to elements/ (Eigen types; not installed).
+// The chained BCM's discretised segment (ladder_models.h): the chain in the flexible segment's
+// units, the N elements' BCM relations as a residual, and the displacement control of one tip
+// coordinate (cbcm_path.h). Internal to elements/ (Eigen types; not installed).
 #include <Eigen/Dense>
 #include <cmath>
 #include <limits>
@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "flexure/elements/beam_constraint_model.h"
+#include "flexure/elements/ladder_models.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 
 namespace flexure::detail::cbcm {
@@ -187,7 +187,7 @@ class Discretisation {
 };
 
 // The chain in the flexible segment's units; throws InvalidInput naming `model` for a chain outside
-// the model's class (chained_bcm.h). `controlled` (0 x, 1 y, 2 theta; -1 none): a tip coordinate
+// the model's class (ladder_models.h). `controlled` (0 x, 1 y, 2 theta; -1 none): a tip coordinate
 // moved by displacement control, given an unknown reaction even where the end leaves it free.
 Prepared prepare(const SegmentChain& chain, const std::string& model, int controlled = -1);
 

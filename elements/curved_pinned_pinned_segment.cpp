@@ -1,11 +1,10 @@
-#include "flexure/elements/curved_pinned_pinned_segment.h"
-
 #include <fmt/format.h>
 
 #include <cmath>
 #include <utility>
 
 #include "flexure/elements/prbm_curve_fits.h"
+#include "flexure/elements/prbm_segments.h"
 #include "flexure/elements/prbm_tables.h"
 #include "flexure/solver/common/errors.h"
 

@@ -8,9 +8,9 @@ namespace flexure::data {
 EmbeddedFile howell_table_5_1();  // Howell 2001, Table 5.1: fixed-pinned segment
 EmbeddedFile howell_table_5_2();  // Howell 2001, Table 5.2: initially curved cantilever
 EmbeddedFile howell_table_5_3();  // Howell 2001, Table 5.3: initially curved pinned-pinned
-// Su 2009: the PR-3R model's published constants (prbm3r.h).
+// Su 2009: the PR-3R model's published constants (ladder_models.h).
 EmbeddedFile su_prbm3r_constants();
-// The PR-3R constants derived by flexure (prbm3r_derivation.h).
+// The PR-3R constants derived by flexure (ladder_models.h).
 EmbeddedFile prbm3r_flexure_constants();
 
 }  // namespace flexure::data

@@ -1,10 +1,9 @@
-#include "flexure/elements/fixed_fixed_segment.h"
-
 #include <fmt/format.h>
 
 #include <cmath>
 #include <utility>
 
+#include "flexure/elements/prbm_segments.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure {

@@ -1,7 +1,7 @@
-#include "flexure/elements/fixed_guided_segment.h"
-
 #include <cmath>
 #include <utility>
+
+#include "flexure/elements/prbm_segments.h"
 
 namespace flexure {
 

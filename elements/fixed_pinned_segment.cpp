@@ -1,5 +1,3 @@
-#include "flexure/elements/fixed_pinned_segment.h"
-
 #include <fmt/format.h>
 
 #include <cmath>
@@ -7,6 +5,7 @@
 #include <utility>
 
 #include "flexure/elements/prbm_curve_fits.h"
+#include "flexure/elements/prbm_segments.h"
 #include "flexure/elements/prbm_tables.h"
 #include "flexure/solver/common/errors.h"
 

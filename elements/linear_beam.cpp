@@ -1,5 +1,4 @@
-#include "flexure/elements/linear_beam.h"
-
+#include "flexure/elements/ladder_models.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure {

@@ -1,11 +1,10 @@
-#include "flexure/elements/prbm3r.h"
-
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
 #include <cmath>
 
 #include "flexure/elements/data_files.h"
+#include "flexure/elements/ladder_models.h"
 #include "flexure/elements/load_path_newton.h"
 #include "flexure/solver/common/csv_table.h"
 #include "flexure/solver/common/errors.h"
@@ -169,7 +168,7 @@ Prbm3rResult Prbm3rSolver::solve(const CantileverCase& problem) const {
     return true;
   };
   // d r_i / d theta_j = k_i delta_ij + (y_tip - y_m) Fy + (x_tip - x_m) Fx, m = max(i, j): the
-  // Hessian of V (elements/prbm3r.h).
+  // Hessian of V (elements/ladder_models.h).
   const auto jacobian = [&](const Eigen::VectorXd& z, double lambda, Eigen::MatrixXd& J) {
     const std::array<ChainPose, 5> p = joints(angles_of(z));
     const double Fx = lambda * load.Fx, Fy = lambda * load.Fy;

@@ -1,5 +1,3 @@
-#include "flexure/elements/prbm3r_derivation.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -8,6 +6,7 @@
 #include <functional>
 #include <numeric>
 
+#include "flexure/elements/ladder_models.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 
@@ -246,7 +245,7 @@ std::string prbm3r_constants_csv(const Prbm3rDerivation& d, const std::string& p
   const auto rounded = [](double x) { return std::round(x * 1e6) / 1e6; };
   const double g1 = rounded(c.gamma[1]), g2 = rounded(c.gamma[2]), g3 = rounded(c.gamma[3]);
   return fmt::format(
-      "# PR-3R model constants derived by flexure (elements/prbm3r_derivation.h, docs/models.md):\n"
+      "# PR-3R model constants derived by flexure (elements/ladder_models.h, docs/models.md):\n"
       "# the link lengths gamma0..gamma3 (times l) and spring stiffnesses k1..k3 (times EI/l) "
       "that\n"
       "# minimise the RMS over a load domain of e^2 = (relative tip position error)^2 + (relative\n"

@@ -2,9 +2,7 @@
 
 #include <cmath>
 
-#include "flexure/elements/end_moment_segment.h"
-#include "flexure/elements/fixed_guided_segment.h"
-#include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/elements/prbm_segments.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure {

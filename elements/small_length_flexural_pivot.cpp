@@ -1,10 +1,9 @@
-#include "flexure/elements/small_length_flexural_pivot.h"
-
 #include <fmt/format.h>
 
 #include <cmath>
 #include <numbers>
 
+#include "flexure/elements/prbm_segments.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure {

@@ -9,7 +9,7 @@
 #include <set>
 #include <sstream>
 
-#include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/elements/prbm_segments.h"
 #include "flexure/io/toml_support.h"
 #include "flexure/mechanisms/material_library.h"
 #include "flexure/mechanisms/mechanism_fatigue.h"

@@ -6,8 +6,7 @@
 #include <cctype>
 #include <cmath>
 
-#include "flexure/elements/fixed_pinned_segment.h"
-#include "flexure/elements/small_length_flexural_pivot.h"
+#include "flexure/elements/prbm_segments.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/mechanisms/howell_designs.h"

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <deque>
 
+#include "flexure/mechanisms/mechanism_second_variation.h"
 #include "flexure/mechanisms/prbm_virtual_work.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/shooting/shooting_problem.h"

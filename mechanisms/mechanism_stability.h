@@ -38,11 +38,12 @@
 
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/mechanisms/mechanism_second_variation.h"
 #include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/common/stability.h"
 
 namespace flexure::mechanism {
+
+struct MechanismPath;  // mechanism_second_variation.h (internal)
 
 enum class SliderControl { kDisplacement, kForce };
 // "displacement control", "force control".

@@ -7,7 +7,7 @@
 #include <cctype>
 #include <cmath>
 
-#include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/elements/prbm_segments.h"
 #include "flexure/mechanisms/cfsm_designs.h"
 #include "flexure/mechanisms/data/data_files.h"
 #include "flexure/solver/common/csv_table.h"

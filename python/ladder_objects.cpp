@@ -8,11 +8,7 @@
 #include <string>
 #include <utility>
 
-#include "flexure/elements/beam_constraint_model.h"
-#include "flexure/elements/cantilever_case.h"
-#include "flexure/elements/chained_bcm.h"
-#include "flexure/elements/linear_beam.h"
-#include "flexure/elements/prbm3r.h"
+#include "flexure/elements/ladder_models.h"
 #include "python/object_support.h"
 
 namespace py = pybind11;

@@ -31,6 +31,7 @@
 #include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
+#include "flexure/solver/shooting/elastica_integrator.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 #include "python/object_support.h"
 

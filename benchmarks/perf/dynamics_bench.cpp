@@ -7,8 +7,7 @@
 #include <numbers>
 
 #include "flexure/mechanisms/cfsm_designs.h"
-#include "flexure/mechanisms/dynamics/forward_dynamics.h"
-#include "flexure/mechanisms/dynamics/inverse_dynamics.h"
+#include "flexure/mechanisms/dynamics/dynamics.h"
 
 namespace {
 

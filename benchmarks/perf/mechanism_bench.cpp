@@ -19,6 +19,7 @@
 #include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/mechanisms/mechanism_stability.h"
 #include "flexure/solver/common/gsl_guard.h"
+#include "flexure/solver/shooting/elastica_integrator.h"
 
 namespace {
 

@@ -13,6 +13,7 @@
 #include <numbers>
 
 #include "flexure/solver/chain_model/segment_chain.h"
+#include "flexure/solver/shooting/elastica_integrator.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {

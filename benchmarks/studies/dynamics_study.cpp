@@ -5,7 +5,7 @@
 #include <chrono>
 #include <cmath>
 
-#include "flexure/mechanisms/dynamics/forward_dynamics.h"
+#include "flexure/mechanisms/dynamics/dynamics.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure {

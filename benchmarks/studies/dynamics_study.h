@@ -16,9 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "flexure/mechanisms/dynamics/dynamics.h"
 #include "flexure/mechanisms/dynamics/dynamics_design.h"
-#include "flexure/mechanisms/dynamics/inverse_dynamics.h"
-#include "flexure/mechanisms/dynamics/slider_crank_dynamics.h"
 #include "flexure/mechanisms/force_of.h"
 #include "flexure/solver/common/status.h"
 
@@ -37,7 +36,7 @@ struct DynamicsStudyOptions {
   std::vector<double> history_omegas{10.472, 31.416, 62.832};  // rad/s; paper Figs. 11-13
   mechanism::ForceOf force_of = mechanism::ForceOf::kWholeMechanism;
   // Samples of the static nominal force: the mean over Delta x = k stroke/N, k = 1..N, as
-  // `mechanism analyze --points N` samples its stroke (inverse_dynamics.h static_nominal_force).
+  // `mechanism analyze --points N` samples its stroke (dynamics.h static_nominal_force).
   int static_force_points = 1000;
   // Called after each frequency of the sweep with (done, total).
   std::function<void(std::size_t done, std::size_t total)> progress;

@@ -13,24 +13,28 @@
 // Core: errors, results' status and warnings, end loads, sections and materials, stability.
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/plate_modulus.h"
 #include "flexure/solver/common/quantity.h"
 #include "flexure/solver/common/section.h"
 #include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/version.h"
 
-// The solvers: elliptic integrals, shooting, Howell's chain algorithm, tip targets.
+// The solvers: elliptic integrals, shooting (with its options and load paths, the shape at any arc
+// length, rigid contact), Howell's chain algorithm, the stability verdict, tip targets.
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/inverse/tip_target.h"
+#include "flexure/solver/shooting/rigid_contact.h"
+#include "flexure/solver/shooting/shooting_options.h"
+#include "flexure/solver/shooting/shooting_shape.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 // The beam layer: problems by any method, the method choice, physical beams and chains.
 #include "flexure/beam/beam_method.h"
 #include "flexure/beam/beam_problem.h"
-#include "flexure/beam/beam_request.h"
 #include "flexure/beam/beam_solver.h"
 #include "flexure/beam/method_selector.h"
 #include "flexure/beam/physical_beam.h"

@@ -2,8 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "flexure/elements/fixed_pinned_segment.h"
-#include "flexure/elements/small_length_flexural_pivot.h"
+#include "flexure/elements/prbm_segments.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
 

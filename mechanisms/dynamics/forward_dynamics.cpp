@@ -1,5 +1,3 @@
-#include "flexure/mechanisms/dynamics/forward_dynamics.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -7,6 +5,7 @@
 #include <limits>
 #include <span>
 
+#include "flexure/mechanisms/dynamics/dynamics.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/ode/ode_integrator.h"
 

@@ -1,11 +1,10 @@
-#include "flexure/mechanisms/dynamics/inverse_dynamics.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
+#include "flexure/mechanisms/dynamics/dynamics.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::dynamics {

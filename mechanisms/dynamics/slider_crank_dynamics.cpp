@@ -1,10 +1,9 @@
-#include "flexure/mechanisms/dynamics/slider_crank_dynamics.h"
-
 #include <fmt/format.h>
 
 #include <cmath>
 
 #include "flexure/mechanisms/cfm/slider_crank.h"
+#include "flexure/mechanisms/dynamics/dynamics.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::dynamics {

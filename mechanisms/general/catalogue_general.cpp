@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/elements/prbm_segments.h"
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/mechanisms/modified_designs.h"

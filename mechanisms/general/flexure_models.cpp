@@ -5,13 +5,8 @@
 
 #include "flexure/beam/beam_problem.h"
 #include "flexure/beam/ladder_selector.h"
-#include "flexure/elements/beam_constraint_model.h"
-#include "flexure/elements/cantilever_case.h"
-#include "flexure/elements/chained_bcm.h"
-#include "flexure/elements/fixed_pinned_segment.h"
-#include "flexure/elements/linear_beam.h"
-#include "flexure/elements/prbm3r.h"
-#include "flexure/elements/small_length_flexural_pivot.h"
+#include "flexure/elements/ladder_models.h"
+#include "flexure/elements/prbm_segments.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/common/errors.h"
 

@@ -9,8 +9,8 @@
 #include <sstream>
 
 #include "flexure/beam/physical_beam.h"
-#include "flexure/elements/beam_constraint_model.h"
 #include "flexure/elements/cbcm_march.h"
+#include "flexure/elements/ladder_models.h"
 #include "flexure/mechanisms/general/arclength_path.h"
 #include "flexure/mechanisms/general/exact_stability.h"
 #include "flexure/mechanisms/general/flexure_models.h"

@@ -3,10 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "flexure/elements/fixed_guided_segment.h"
-#include "flexure/elements/fixed_pinned_segment.h"
-#include "flexure/elements/initially_curved_cantilever.h"
-#include "flexure/elements/small_length_flexural_pivot.h"
+#include "flexure/elements/prbm_segments.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism::general {

@@ -46,12 +46,13 @@
 #include <string>
 #include <vector>
 
-#include "flexure/solver/chain_model/second_variation.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/common/stability.h"
 
 namespace flexure {
+
+struct DiscreteSecondVariation;  // second_variation.h (internal)
 
 struct StabilityOptions {
   // |margin| <= this is critical (stability.h says why 1e-6).

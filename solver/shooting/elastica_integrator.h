@@ -22,6 +22,7 @@
 
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
+#include "flexure/solver/shooting/shooting_options.h"
 
 namespace flexure {
 
@@ -56,47 +57,14 @@ struct IntegrationPiece {
   bool crosses_far_node = false;
 };
 
-// State at the end of an integration (the tip for the last stretch of the chain).
-struct TipState {
-  double x = 0.0;
-  double y = 0.0;
-  double theta = 0.0;
-  double m = 0.0;
-  Eigen::Matrix<double, 4, Eigen::Dynamic> sensitivity;  // d(x, y, theta, m)/dp, one column per p
-  // Internal force just before the end (on the last segment integrated) and dN/dp.
-  Eigen::Vector2d N = Eigen::Vector2d::Zero();
-  Eigen::Matrix<double, 2, Eigen::Dynamic> N_sensitivity;
-};
-
 class StepObserver;  // elastica_piece.h
 
 class ElasticaIntegrator {
  public:
-  // Which integrator runs the flexible pieces (docs/theory-shooting.md §4, speed and accuracy in
-  // docs/performance.md):
-  //   kRk8pd: the explicit Prince-Dormand 8(7), the default: the fastest at the tolerances the
-  //     solvers ask for (1e-9 ... 1e-12); GSL's gsl_odeiv2_step_rk8pd and its standard step
-  //     control, step for step, written out with the right-hand side inlined
-  //     (prince_dormand87_piece.h; GSL's own stepper is kept as its reference, gsl_rk8pd_piece.h);
-  //   kCvodes: SUNDIALS CVODES (Adams, forward sensitivities), the reference;
-  //   kDormandPrince: the explicit Runge-Kutta 5(4) written here, kept for comparison;
-  //   kArkodeErk: SUNDIALS ARKODE's explicit stepper with the Fehlberg 13-7-8 table, measured
-  //     against kRk8pd (slower: N_Vector overhead per step).
-  enum class Backend { kRk8pd, kCvodes, kDormandPrince, kArkodeErk };
-  struct Options {
-    Backend backend = Backend::kRk8pd;  // which integrator runs the flexible pieces
-    double rtol = 1e-12;      // relative tolerance of the local error test (every backend)
-    double atol = 1e-14;      // absolute tolerance on every state component
-    long max_steps = 200000;  // steps per segment piece before giving up
-    bool adams = true;        // Adams-Moulton (non-stiff); false = BDF for very stiff loads
-    bool sensitivity_error_control = true;  // include sensitivities in the local error test
-    bool fixed_point = true;  // Adams only: fixed-point corrector (no Jacobian, no dense
-                              // solve; the elastica is not stiff); false = Newton + dense
-
-    // Throws InvalidInput naming the first field outside its range.
-    void validate() const;
-  };
-
+  // The backends and the integrator's settings (shooting_options.h: IntegratorBackend,
+  // IntegratorOptions), under their old names.
+  using Backend = IntegratorBackend;
+  using Options = IntegratorOptions;
   explicit ElasticaIntegrator(Options options);
   ~ElasticaIntegrator();
   ElasticaIntegrator(const ElasticaIntegrator&) = delete;
@@ -144,10 +112,5 @@ class ElasticaIntegrator {
   std::vector<double>* shape_moment_ = nullptr;
   std::unique_ptr<Impl> impl_;
 };
-
-// Command-line names of the backends: "rk8pd", "cvodes", "dormand-prince", "arkode-erk".
-const char* to_string(ElasticaIntegrator::Backend backend);
-// Accepts those names (case-insensitive); throws InvalidInput naming the allowed ones otherwise.
-ElasticaIntegrator::Backend integrator_backend_from_string(const std::string& name);
 
 }  // namespace flexure

@@ -9,23 +9,10 @@
 #include <string>
 
 #include "flexure/solver/common/status.h"
+#include "flexure/solver/shooting/shooting_options.h"
 #include "flexure/solver/shooting/shooting_problem.h"
 
 namespace flexure {
-
-struct NewtonOptions {
-  double residual_tolerance = 1e-10;  // converged when max |g_i| is below this
-  double step_tolerance = 1e-13;      // ...or the step is below this (relative) and max |g_i| is
-                                      // below 1e3 * residual_tolerance (integration noise floor)
-  int max_iterations = 25;            // Newton iterations per solve
-  int max_backtracks = 10;            // step halvings in the line search before giving up
-  // > 0: a trial point of the line search may cost at most this times the integration steps of
-  // the current point (and at least kMinTrialSteps); a costlier one is abandoned as a failed
-  // trial, so the step is halved. A trial far from the current point (loads many times its own)
-  // costs many steps and is almost never accepted: in the exact mechanism strokes such trials
-  // took most of the work (3A-lssm, mechanism_exact.h). 0: no limit.
-  double trial_cost_factor = 0.0;
-};
 
 struct NewtonOutcome : SolveStatus {
   bool damped = false;  // a step shorter than the full Newton step was taken

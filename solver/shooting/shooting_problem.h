@@ -29,6 +29,7 @@
 
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/shooting/elastica_integrator.h"
+#include "flexure/solver/shooting/shooting_options.h"
 
 namespace flexure {
 
@@ -54,12 +55,6 @@ struct Homotopy {
   std::optional<ChainPose> tip_start;   // default: the stress-free tip
   std::optional<ChainPose> tip_target;  // default: chain.prescribed_tip()
   std::optional<PrescribedMask> mask;   // default: prescribed_mask(chain.end)
-};
-
-struct MultipleShootingOptions {
-  double amplification_budget = 2.5;  // max sqrt(|N|/EI) * (part length): growth <= e^budget
-  int min_parts_per_segment = 1;      // lower bound on the parts of every flexible segment
-  int max_parts_per_segment = 64;     // upper bound (keeps the Newton system small)
 };
 
 class ShootingProblem {

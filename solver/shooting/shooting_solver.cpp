@@ -6,12 +6,25 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
+#include "flexure/solver/chain_model/tip_reach.h"
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/shooting/continuation.h"
 #include "flexure/solver/shooting/control_points.h"
+#include "flexure/solver/shooting/elastica_integrator.h"
 #include "flexure/solver/shooting/inflection_count.h"
+#include "flexure/solver/shooting/newton.h"
+#include "flexure/solver/shooting/shooting_problem.h"
 
 namespace flexure {
+
+// The two stages of a straight chain with both end coordinates prescribed (run_two_stages).
+struct ShootingSolver::TwoStageRun {
+  bool release_x = true;
+  std::optional<ShootingProblem> p1, p2;
+  LoadPath s1, s2;
+};
 
 void ShootingSolver::Options::validate() const {
   const Options& o = *this;

@@ -24,15 +24,17 @@
 #include <vector>
 
 #include "flexure/solver/chain_model/segment_chain.h"
-#include "flexure/solver/chain_model/tip_reach.h"
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/common/status.h"
-#include "flexure/solver/shooting/continuation.h"
-#include "flexure/solver/shooting/elastica_integrator.h"
-#include "flexure/solver/shooting/newton.h"
-#include "flexure/solver/shooting/shooting_problem.h"
+#include "flexure/solver/shooting/shooting_options.h"
 
 namespace flexure {
+
+// The machinery behind the solver (internal headers, not installed): the residual and the
+// integrator (shooting_problem.h, elastica_integrator.h) and how the load factor enters.
+class ShootingProblem;
+class ElasticaIntegrator;
+struct Homotopy;
 
 // How solve() reached its answer (the `method` text says the same for people).
 enum class ShootingPath {
@@ -125,8 +127,8 @@ class ShootingSolver {
     double atol = 1e-14;  // integrator absolute tolerance
     bool adams = true;    // CVODES only: Adams-Moulton; false = BDF
     // GSL's Prince-Dormand 8(7) by default, the fastest at these tolerances; kCvodes is the
-    // reference, kDormandPrince the former built-in 5(4) (elastica_integrator.h).
-    ElasticaIntegrator::Backend backend = ElasticaIntegrator::Backend::kRk8pd;
+    // reference, kDormandPrince the former built-in 5(4) (shooting_options.h).
+    IntegratorBackend backend = IntegratorBackend::kRk8pd;
     NewtonOptions newton;                       // Newton corrector tolerances and iteration limits
     ContinuationOptions continuation;           // used when the direct attempt fails or is disabled
     MultipleShootingOptions multiple_shooting;  // how finely large loads are cut (see
@@ -144,8 +146,8 @@ class ShootingSolver {
     void validate() const;
 
     // The integrator settings these options imply (tolerances, method, backend).
-    ElasticaIntegrator::Options integrator_options() const {
-      ElasticaIntegrator::Options io;
+    IntegratorOptions integrator_options() const {
+      IntegratorOptions io;
       io.rtol = rtol;
       io.atol = atol;
       io.adams = adams;
@@ -203,11 +205,7 @@ class ShootingSolver {
                         double lambda,
                         ShootingResult result,
                         const TipState* known_tip = nullptr) const;
-  struct TwoStageRun {
-    bool release_x = true;
-    std::optional<ShootingProblem> p1, p2;
-    LoadPath s1, s2;
-  };
+  struct TwoStageRun;  // shooting_solver.cpp
   TwoStageRun run_two_stages(const SegmentChain& chain,
                              ElasticaIntegrator& integrator,
                              bool record_path) const;

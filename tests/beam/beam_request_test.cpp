@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "flexure/solver/common/errors.h"
+#include "flexure/solver/shooting/elastica_integrator.h"
 
 namespace flexure {
 namespace {

@@ -13,7 +13,7 @@
 #include <utility>
 
 #include "flexure/beam/method_selector.h"
-#include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/elements/prbm_segments.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 

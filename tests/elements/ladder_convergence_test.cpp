@@ -18,10 +18,7 @@
 #include <cmath>
 #include <vector>
 
-#include "flexure/elements/beam_constraint_model.h"
-#include "flexure/elements/chained_bcm.h"
-#include "flexure/elements/linear_beam.h"
-#include "flexure/elements/prbm3r.h"
+#include "flexure/elements/ladder_models.h"
 #include "flexure/elements/prbm_cantilever.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/shooting/shooting_solver.h"

@@ -14,6 +14,8 @@
 //    links at both ends (reactions included);
 //  * PR-3R against its own statics and stability, and the guided end's small-load limit;
 //  * what each model refuses, with the reason and the model that can.
+#include "flexure/elements/ladder_models.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -23,10 +25,6 @@
 #include <random>
 #include <string>
 
-#include "flexure/elements/beam_constraint_model.h"
-#include "flexure/elements/chained_bcm.h"
-#include "flexure/elements/linear_beam.h"
-#include "flexure/elements/prbm3r.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/shooting/shooting_solver.h"
@@ -127,8 +125,8 @@ TEST(LadderSmallLoads, LinearBcmAndCbcmReduceToLinearTheory) {
 }
 
 TEST(LadderSmallLoads, Prbm3rWithSusConstantsIsTwoPercentSoft) {
-  // The linear limit of the PR-3R model (elements/prbm3r.h), computed here from the published
-  // link lengths (joints at s = 0.10, 0.45, 0.85) and springs.
+  // The linear limit of the PR-3R model (elements/ladder_models.h), computed here from the
+  // published link lengths (joints at s = 0.10, 0.45, 0.85) and springs.
   const double s[3] = {0.10, 0.45, 0.85};
   const double k[3] = {3.51, 2.99, 2.58};
   double bF = 0, tF = 0, tM = 0;
@@ -430,7 +428,8 @@ TEST(Prbm3r, SatisfiesItsStaticsAndIsStableOnTheLoadPath) {
     const Prbm3rSolver solver;
     const Prbm3rResult r = solver.solve(c);
     ASSERT_TRUE(r.converged()) << r.message;
-    // k_i theta_i = moment of the tip loads about joint i (elements/prbm3r.h), recomputed here.
+    // k_i theta_i = moment of the tip loads about joint i (elements/ladder_models.h), recomputed
+    // here.
     const auto p = solver.joints(r.joint_angles);
     const Prbm3rConstants& k = solver.options().constants;
     for (int j = 1; j <= 3; ++j) {

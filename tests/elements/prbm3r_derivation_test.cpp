@@ -1,14 +1,12 @@
-// flexure's own PR-3R constants (elements/prbm3r_derivation.h): the stored set
+// flexure's own PR-3R constants (elements/ladder_models.h): the stored set
 // (data/prbm3r_flexure_constants.csv) is what the derivation gives today, it beats Su's general set
 // on the stated domain by the stated objective (computed here independently of the derivation's
 // code from the elliptic solver), and the data file round-trips.
-#include "flexure/elements/prbm3r_derivation.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "flexure/elements/prbm3r.h"
+#include "flexure/elements/ladder_models.h"
 #include "flexure/solver/common/csv_table.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
@@ -16,7 +14,7 @@
 namespace flexure {
 namespace {
 
-// The objective of prbm3r_derivation.h, written out again: RMS over the domain of the relative
+// The objective of ladder_models.h, written out again: RMS over the domain of the relative
 // tip position and angle errors.
 double objective(const Prbm3rConstants& constants, const Prbm3rDerivationOptions& domain) {
   Prbm3rSolver::Options o;

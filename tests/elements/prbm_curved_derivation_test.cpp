@@ -21,8 +21,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "flexure/elements/initially_curved_cantilever.h"
 #include "flexure/elements/prbm_derivation.h"
+#include "flexure/elements/prbm_segments.h"
 #include "flexure/elements/prbm_tables.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"

@@ -16,16 +16,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "flexure/elements/curved_pinned_pinned_segment.h"
-#include "flexure/elements/end_moment_segment.h"
-#include "flexure/elements/fixed_fixed_segment.h"
-#include "flexure/elements/fixed_guided_segment.h"
-#include "flexure/elements/fixed_pinned_segment.h"
-#include "flexure/elements/initially_curved_cantilever.h"
-#include "flexure/elements/pinned_pinned_segment.h"
 #include "flexure/elements/prbm_curve_fits.h"
+#include "flexure/elements/prbm_segments.h"
 #include "flexure/elements/prbm_tables.h"
-#include "flexure/elements/small_length_flexural_pivot.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/section.h"
 

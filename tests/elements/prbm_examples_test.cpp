@@ -11,8 +11,8 @@
 
 #include <cmath>
 
-#include "flexure/elements/fixed_pinned_segment.h"
 #include "flexure/elements/prbm_derivation.h"
+#include "flexure/elements/prbm_segments.h"
 #include "flexure/solver/common/section.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 

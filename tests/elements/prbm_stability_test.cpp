@@ -22,10 +22,8 @@
 #include <memory>
 #include <random>
 
-#include "flexure/elements/end_moment_segment.h"
-#include "flexure/elements/fixed_guided_segment.h"
-#include "flexure/elements/fixed_pinned_segment.h"
 #include "flexure/elements/prbm_cantilever.h"
+#include "flexure/elements/prbm_segments.h"
 
 namespace flexure {
 namespace {

@@ -23,8 +23,7 @@
 #include <numbers>
 #include <vector>
 
-#include "flexure/mechanisms/dynamics/forward_dynamics.h"
-#include "flexure/mechanisms/dynamics/slider_crank_dynamics.h"
+#include "flexure/mechanisms/dynamics/dynamics.h"
 
 namespace flexure::dynamics {
 namespace {

@@ -20,7 +20,7 @@
 
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/mechanisms/cfsm_designs.h"
-#include "flexure/mechanisms/dynamics/inverse_dynamics.h"
+#include "flexure/mechanisms/dynamics/dynamics.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::dynamics {

@@ -12,9 +12,8 @@
 #include <numbers>
 #include <random>
 
-#include "flexure/elements/cantilever_case.h"
 #include "flexure/elements/cbcm_march.h"
-#include "flexure/elements/chained_bcm.h"
+#include "flexure/elements/ladder_models.h"
 #include "flexure/mechanisms/general/general_exact.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
 

@@ -8,7 +8,7 @@
 #include <numbers>
 #include <string>
 
-#include "flexure/elements/fixed_guided_segment.h"
+#include "flexure/elements/prbm_segments.h"
 #include "flexure/io/general_mechanism_toml.h"
 #include "flexure/mechanisms/general/general_exact.h"
 #include "flexure/mechanisms/general/general_mechanism.h"

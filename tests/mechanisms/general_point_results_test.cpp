@@ -19,8 +19,7 @@
 #include <string>
 
 #include "flexure/beam/physical_beam.h"
-#include "flexure/elements/fixed_guided_segment.h"
-#include "flexure/elements/fixed_pinned_segment.h"
+#include "flexure/elements/prbm_segments.h"
 #include "flexure/io/general_mechanism_toml.h"
 #include "flexure/mechanisms/general/general_exact.h"
 #include "flexure/mechanisms/general/general_mechanism.h"

@@ -26,8 +26,7 @@
 
 #include "flexure/io/mechanism_toml.h"
 #include "flexure/mechanisms/cfsm_designs.h"
-#include "flexure/mechanisms/dynamics/inverse_dynamics.h"
-#include "flexure/mechanisms/dynamics/slider_crank_dynamics.h"
+#include "flexure/mechanisms/dynamics/dynamics.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"

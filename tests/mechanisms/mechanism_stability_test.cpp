@@ -35,6 +35,7 @@
 #include "flexure/mechanisms/howell_designs.h"
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
+#include "flexure/mechanisms/mechanism_second_variation.h"
 #include "flexure/mechanisms/prbm_virtual_work.h"
 #include "flexure/solver/chain_model/jacobi_stability.h"
 #include "flexure/solver/common/gsl_guard.h"

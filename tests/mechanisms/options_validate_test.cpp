@@ -7,14 +7,14 @@
 
 #include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm_exact.h"
-#include "flexure/mechanisms/dynamics/forward_dynamics.h"
-#include "flexure/mechanisms/dynamics/inverse_dynamics.h"
+#include "flexure/mechanisms/dynamics/dynamics.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/ode/ode_integrator.h"
+#include "flexure/solver/shooting/elastica_integrator.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {

@@ -23,6 +23,7 @@
 #include <string>
 
 #include "flexure/solver/elliptic/elliptic_solver.h"
+#include "flexure/solver/shooting/elastica_integrator.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {

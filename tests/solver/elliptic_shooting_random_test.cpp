@@ -22,6 +22,7 @@
 
 #include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
+#include "flexure/solver/shooting/elastica_integrator.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {

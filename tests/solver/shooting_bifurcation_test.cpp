@@ -37,7 +37,9 @@
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/gsl_guard.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
+#include "flexure/solver/shooting/elastica_integrator.h"
 #include "flexure/solver/shooting/path_point_stability.h"
+#include "flexure/solver/shooting/shooting_problem.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {

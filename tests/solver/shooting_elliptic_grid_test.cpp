@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "flexure/solver/elliptic/elliptic_solver.h"
+#include "flexure/solver/shooting/elastica_integrator.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {

@@ -20,6 +20,8 @@
 
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
+#include "flexure/solver/shooting/elastica_integrator.h"
+#include "flexure/solver/shooting/shooting_problem.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {

@@ -26,6 +26,7 @@
 
 #include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/jacobi_stability.h"
+#include "flexure/solver/chain_model/second_variation.h"
 #include "flexure/solver/common/scalar_root.h"
 
 namespace flexure {

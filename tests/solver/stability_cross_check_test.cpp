@@ -32,6 +32,8 @@
 #include "flexure/solver/common/scalar_root.h"
 #include "flexure/solver/elliptic/elastica_closed_form.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
+#include "flexure/solver/shooting/elastica_integrator.h"
+#include "flexure/solver/shooting/shooting_problem.h"
 #include "flexure/solver/shooting/shooting_shape.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 #include "tests/support/stability_test_support.h"

@@ -14,9 +14,7 @@
 #include <random>
 #include <string>
 
-#include "flexure/elements/beam_constraint_model.h"
-#include "flexure/elements/chained_bcm.h"
-#include "flexure/elements/prbm3r.h"
+#include "flexure/elements/ladder_models.h"
 #include "flexure/elements/prbm_cantilever.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/shooting/shooting_solver.h"

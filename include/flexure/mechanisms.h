@@ -1,0 +1,41 @@
+#pragma once
+// flexure's compliant mechanisms in one include: mechanism designs and the built-in catalogues
+// (Howell's, the modified designs, Weight's constant-force slider mechanisms), their analysis by
+// the PRBM and the exact model with stresses and stability, the method choice, the constant-force
+// configurations, the dynamics of the slider-crank, and general mechanisms (any topology of rigid
+// bodies and flexures). Link `flexure::mechanisms` (or `flexure::flexure`).
+//
+//   #include <flexure/mechanisms.h>
+//   namespace fm = flexure::mechanism;
+//   const fm::MechanismAnalysis a = fm::analyze_mechanism(fm::howell_mechanisms().front(), {});
+#include "flexure/prbm.h"
+
+// Designs, their geometry and the catalogues.
+#include "flexure/mechanisms/cfsm_designs.h"
+#include "flexure/mechanisms/howell_designs.h"
+#include "flexure/mechanisms/mechanism.h"
+#include "flexure/mechanisms/mechanism_geometry.h"
+#include "flexure/mechanisms/modified_designs.h"
+
+// Analysis: PRBM and exact strokes, stresses, stability, the method choice.
+#include "flexure/mechanisms/mechanism_analysis.h"
+#include "flexure/mechanisms/mechanism_exact.h"
+#include "flexure/mechanisms/mechanism_method.h"
+#include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/mechanism_stability.h"
+#include "flexure/mechanisms/prbm_validity.h"
+
+// Constant-force mechanisms: Weight's configurations, their PRBM and exact models.
+#include "flexure/mechanisms/cfm/cfm_configuration.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
+#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm_exact.h"
+
+// Dynamics of the slider-crank: inverse and forward.
+#include "flexure/mechanisms/dynamics/dynamics.h"
+#include "flexure/mechanisms/dynamics/dynamics_design.h"
+
+// General mechanisms: any topology, by the PRBM and the exact model.
+#include "flexure/mechanisms/general/general_exact.h"
+#include "flexure/mechanisms/general/general_mechanism.h"
+#include "flexure/mechanisms/general/general_prbm.h"
