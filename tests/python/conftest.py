@@ -94,3 +94,34 @@ def _same(a, b, rtol, skip, where):
     else:
         assert isinstance(a, (int, float)) and not isinstance(a, bool), f"{where}: {a!r}"
         assert abs(a - b) <= rtol * max(1.0, abs(b)), f"{where}: {a!r} != {b!r}"
+
+
+def _interrupt_python(code, timeout):
+    """Runs `code` in a fresh interpreter, which prints 'started' before its long call and
+    'finished' after it; sends SIGINT 1 s after 'started' and checks that the call ended with
+    KeyboardInterrupt (not finished, a non-zero exit). Returns the seconds from the signal to the
+    end of the process."""
+    import signal
+    import time
+    proc = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, env=dict(os.environ))
+    try:
+        assert proc.stdout.readline().strip() == "started"
+        time.sleep(1.0)
+        sent = time.monotonic()
+        proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=timeout)
+        elapsed = time.monotonic() - sent
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+    assert "finished" not in out
+    assert proc.returncode != 0
+    assert "KeyboardInterrupt" in err, err
+    return elapsed
+
+
+@pytest.fixture(scope="session")
+def interrupt_python():
+    """A function (code, timeout) -> seconds from SIGINT to the end (_interrupt_python)."""
+    return _interrupt_python

@@ -1,12 +1,7 @@
 """The constant-force slider mechanisms as Python objects (python/catalogue_objects.cpp):
 analyze_mechanism on a MechanismDesign gives the command line's numbers and Weight's example 1
 force, reports progress, and stops on KeyboardInterrupt (a raising callable, and Ctrl-C)."""
-import os
 import pathlib
-import signal
-import subprocess
-import sys
-import time
 
 import pytest
 
@@ -74,7 +69,7 @@ def test_a_callable_that_raises_stops_the_analysis():
                                      flexure.AnalysisOptions(points=5)).converged()
 
 
-def test_ctrl_c_interrupts_a_long_analysis_without_a_callable():
+def test_ctrl_c_interrupts_a_long_analysis_without_a_callable(interrupt_python):
     # About a minute of work without the interrupt; SIGINT 1 s after it starts must end it with
     # KeyboardInterrupt within a few seconds (the bindings look for signals every 50 ms).
     code = ("import flexure, sys\n"
@@ -82,23 +77,7 @@ def test_ctrl_c_interrupts_a_long_analysis_without_a_callable():
             "print('started', flush=True)\n"
             "flexure.analyze_mechanism(d, flexure.AnalysisOptions(points=100000))\n"
             "print('finished', flush=True)\n")
-    env = dict(os.environ)
-    proc = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True, env=env)
-    try:
-        assert proc.stdout.readline().strip() == "started"
-        time.sleep(1.0)
-        sent = time.monotonic()
-        proc.send_signal(signal.SIGINT)
-        out, err = proc.communicate(timeout=30)
-        elapsed = time.monotonic() - sent
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-    assert "finished" not in out
-    assert proc.returncode != 0
-    assert "KeyboardInterrupt" in err, err
-    assert elapsed < 5.0
+    assert interrupt_python(code, timeout=30) < 5.0
 
 
 def test_analysis_warnings_are_flexure_warnings_with_the_command_lines_text():
