@@ -29,11 +29,10 @@
 #include "flexure/benchmarks/studies/dynamics_study_file.h"
 #include "flexure/io/mechanism_toml.h"
 #include "flexure/io/platform/output_path.h"
-#include "flexure/mechanisms/cfsm_designs.h"
+#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/dynamics/dynamics_design.h"
 #include "flexure/mechanisms/force_of.h"
 #include "flexure/mechanisms/material_library.h"
-#include "flexure/mechanisms/modified_designs.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {

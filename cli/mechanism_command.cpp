@@ -42,7 +42,7 @@
 #include "flexure/mechanisms/mechanism_plate.h"
 #include "flexure/mechanisms/mechanism_validation.h"
 #include "flexure/mechanisms/mechanism_warnings.h"
-#include "flexure/mechanisms/modified_designs.h"
+#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/modified_springs.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/quantity.h"

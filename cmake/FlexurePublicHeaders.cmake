@@ -48,10 +48,9 @@ set(FLEXURE_PUBLIC_HEADERS
   elements/prbm_segments.h
   elements/prbm_tables.h
   # mechanisms.h: designs, analysis, constant-force mechanisms, dynamics, general mechanisms.
-  mechanisms/cfsm_designs.h
+  mechanisms/builtin_designs.h
   mechanisms/fatigue.h
   mechanisms/force_of.h
-  mechanisms/howell_designs.h
   mechanisms/material_library.h
   mechanisms/mechanism.h
   mechanisms/mechanism_analysis.h
@@ -61,7 +60,6 @@ set(FLEXURE_PUBLIC_HEADERS
   mechanisms/mechanism_method.h
   mechanisms/mechanism_prbm.h
   mechanisms/mechanism_stability.h
-  mechanisms/modified_designs.h
   mechanisms/prbm_validity.h
   mechanisms/cfm/cfm_configuration.h
   mechanisms/cfm/cfm_model.h

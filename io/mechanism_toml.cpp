@@ -13,7 +13,7 @@
 #include "flexure/io/toml_support.h"
 #include "flexure/mechanisms/material_library.h"
 #include "flexure/mechanisms/mechanism_fatigue.h"
-#include "flexure/mechanisms/modified_designs.h"
+#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/quantity.h"
 

@@ -1,4 +1,4 @@
-#include "flexure/mechanisms/cfsm_designs.h"
+#include "flexure/mechanisms/builtin_designs.h"
 
 #include <fmt/format.h>
 

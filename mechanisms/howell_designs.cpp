@@ -1,4 +1,4 @@
-#include "flexure/mechanisms/howell_designs.h"
+#include "flexure/mechanisms/builtin_designs.h"
 
 #include <fmt/format.h>
 

@@ -7,12 +7,11 @@
 #include <cmath>
 
 #include "flexure/elements/prbm_segments.h"
+#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
-#include "flexure/mechanisms/howell_designs.h"
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
-#include "flexure/mechanisms/modified_designs.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
 
@@ -380,7 +379,7 @@ const std::vector<MechanismDesign>& builtin_mechanisms() {
                                        : subclass_design(cfm::find_thesis_subclass(cfg.name + "-a"),
                                                          cfg.class_name + "-" + cfg.name));
     }
-    // The eleven modified configurations of paper 004 (modified_designs.h).
+    // The eleven modified configurations of paper 004 (builtin_designs.h).
     for (const auto& d : modified_designs()) list.push_back(d);
     return list;
   }();

@@ -10,7 +10,7 @@
 // link 2 (at the ground, or plp) or link 3 (slp), and its characteristic pivot is (1 - gamma) l
 // from its clamp, with Howell's average gamma (howell_average_fixed_pinned(),
 // elements/fixed_pinned_segment.h). The modified configurations of paper 004 add fixed-fixed
-// segments (SegmentKind below; modified_designs.h). Units: SI (m, Pa, N) throughout.
+// segments (SegmentKind below; builtin_designs.h). Units: SI (m, Pa, N) throughout.
 #include <array>
 #include <optional>
 #include <string>
@@ -119,7 +119,7 @@ struct MechanismDesign {
   // stiffness coefficients times EI/l:
   //   s: K = EI/l (SmallLengthFlexuralPivot, Howell eq. 5.14);  l: K = gamma K_theta EI/l
   //   (howell_average_fixed_pinned(), eq. 5.72; Weight 2001 §2.2); a fixed-fixed segment by
-  //   `spring_rule` (spring_rule_factor in modified_designs.h).
+  //   `spring_rule` (spring_rule_factor in builtin_designs.h).
   double spring_constant(int pivot) const;
   // Fills the derived flexible lengths (s: 0.1 r_i if unset; l: r_i/gamma) and checks every value.
   // Throws InvalidInput naming the quantity and the allowed range: unknown configuration, r2, r3,
@@ -186,7 +186,7 @@ void size_flexures_for_spring_ratios(
 // (thesis §8.5.1, Table 8.4).
 const std::vector<MechanismDesign>& builtin_mechanisms();
 // Accepts "1A-lpp" or "lpp" (case-insensitive), any thesis sub-class ("lpp-b"), Howell's designs
-// (howell_designs.h: "howell-1A-spp-b", "howell-ex1", ...) and the inversion of any of them with a
+// (builtin_designs.h: "howell-1A-spp-b", "howell-ex1", ...) and the inversion of any of them with a
 // type-asymmetric configuration ("1A-lpp'", "1A-lpp-inv", "ppl"; inversion.h); throws
 // InvalidInput listing the names.
 MechanismDesign find_builtin_mechanism(const std::string& name);

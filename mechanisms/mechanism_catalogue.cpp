@@ -7,7 +7,7 @@
 #include <cctype>
 #include <utility>
 
-#include "flexure/mechanisms/howell_designs.h"
+#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/solver/common/errors.h"
 

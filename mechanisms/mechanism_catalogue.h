@@ -2,8 +2,8 @@
 // The sets of built-in constant-force designs that `flexure mechanism list` and `mechanism
 // validate --designs` go through (docs/mechanisms.md, docs/validation.md): the thesis designs
 // (Weight 2001, one per configuration), the modified designs of the dynamics paper (paper 004),
-// Howell's Table 10.1 designs (howell_designs.h) and the inversions of those with a type-asymmetric
-// configuration (inversion.h).
+// Howell's Table 10.1 designs (builtin_designs.h) and the inversions of those with a
+// type-asymmetric configuration (inversion.h).
 #include <string>
 #include <vector>
 

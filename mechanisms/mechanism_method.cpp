@@ -7,7 +7,7 @@
 
 #include "flexure/beam/method_selector.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/mechanisms/modified_designs.h"
+#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {

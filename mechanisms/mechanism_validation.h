@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/mechanisms/modified_designs.h"
 
 namespace flexure::mechanism {
 
@@ -22,7 +22,7 @@ struct MechanismValidationOptions {
   int points = 50;  // stroke points (AnalysisOptions::points)
   // Stroke of every design = this fraction of its toggle stroke, in [1e-6, 1); none: the design's.
   std::optional<double> toggle_fraction;
-  // Spring rule of the designs with fixed-fixed segments (modified_designs.h); none: the design's.
+  // Spring rule of the designs with fixed-fixed segments (builtin_designs.h); none: the design's.
   std::optional<SpringRule> spring_rule;
   int chain_check_elements = kValidationChainCheckElements;
 

@@ -1,5 +1,3 @@
-#include "flexure/mechanisms/modified_designs.h"
-
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
@@ -8,7 +6,7 @@
 #include <cmath>
 
 #include "flexure/elements/prbm_segments.h"
-#include "flexure/mechanisms/cfsm_designs.h"
+#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/data/data_files.h"
 #include "flexure/solver/common/csv_table.h"
 #include "flexure/solver/common/errors.h"
@@ -275,7 +273,7 @@ void check_fixed_fixed_lengths(const MechanismDesign& d) {
 
 MechanismDesign modified_design(const ModifiedConfiguration& c, SpringRule rule) {
   if (c.name == "slpm" || c.name == "lpsm") return constructed_design(c, rule);
-  // Table 5 column (cfsm_designs.h): r2, r3, b, h, L, E; stroke 40 % (Table 6).
+  // Table 5 column (builtin_designs.h): r2, r3, b, h, L, E; stroke 40 % (Table 6).
   const dynamics::CfsmDesign& t = dynamics::find_cfsm_design(c.class_name + "-" + c.name);
   MechanismDesign d = base_design(c, rule);
   d.r2 = t.r2;

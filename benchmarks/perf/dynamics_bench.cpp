@@ -6,7 +6,7 @@
 
 #include <numbers>
 
-#include "flexure/mechanisms/cfsm_designs.h"
+#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/dynamics/dynamics.h"
 
 namespace {

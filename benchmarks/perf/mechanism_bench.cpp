@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/mechanisms/howell_designs.h"
+#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_exact.h"

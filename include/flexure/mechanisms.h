@@ -11,11 +11,9 @@
 #include "flexure/prbm.h"
 
 // Designs, their geometry and the catalogues.
-#include "flexure/mechanisms/cfsm_designs.h"
-#include "flexure/mechanisms/howell_designs.h"
+#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_geometry.h"
-#include "flexure/mechanisms/modified_designs.h"
 
 // Analysis: PRBM and exact strokes, stresses, stability, the method choice.
 #include "flexure/mechanisms/mechanism_analysis.h"

@@ -2,8 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "flexure/mechanisms/cfsm_designs.h"
-#include "flexure/mechanisms/modified_designs.h"
+#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::dynamics {

@@ -1,7 +1,7 @@
 #pragma once
 // What `flexure dynamics` runs: the slider-crank parameters of one design (PRBM links r2, r3, the
 // torsion springs of one half, the masses), from a built-in design of the paper's Table 5
-// (cfsm_designs.h) or from any dimensional MechanismDesign, e.g. a TOML file (docs/dynamics.md
+// (builtin_designs.h) or from any dimensional MechanismDesign, e.g. a TOML file (docs/dynamics.md
 // "Designs from TOML", docs/mechanisms.md "TOML").
 //
 // The springs follow a rule, reported as `spring_rule`:
@@ -9,7 +9,7 @@
 //                      reproduces the paper's Table 6 F_Nom, docs/dynamics.md §2);
 //   "pure-bending", "table2", "table5"
 //                      computed from each strip's b, h, L and E as `flexure mechanism analyze`
-//                      does (modified_designs.h spring_rule_factor; k = EI/L for pure bending,
+//                      does (builtin_designs.h spring_rule_factor; k = EI/L for pure bending,
 //                      Howell eq. 5.14);
 //   "given"            the TOML file's [dynamics] spring_constants;
 //   none               a thesis design without fixed-fixed segments: its springs have one rule
@@ -56,7 +56,7 @@ struct DynamicsData {
 enum class MassesNeeded { kAll, kLinksOnly, kNone };
 
 // Built-in design `name` of the paper's Table 5 (case-insensitive) with the printed springs, or
-// with those of `rule` computed from the printed strip dimensions (modified_designs.h). Throws
+// with those of `rule` computed from the printed strip dimensions (builtin_designs.h). Throws
 // InvalidInput for an unknown name, listing the nine. `material` (a row of data/materials.csv)
 // replaces the strips' E for the springs of `rule`; with the printed springs (no rule), which are
 // constants, it is refused (InvalidInput).

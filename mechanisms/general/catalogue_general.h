@@ -13,7 +13,7 @@
 // link 2 a fixed-pinned segment r2/gamma long pinned at the ground pin and clamped into link 3
 // (1 - gamma) l after pivot 2; p: a pin), pivot 3 r3 further (s: centred on it, the slider at its
 // far end; p: a pin), the slider on the x axis. A modified design's fixed-fixed segments are
-// centred small-length flexures of their own length (modified_designs.h). Bodies are ground,
+// centred small-length flexures of their own length (builtin_designs.h). Bodies are ground,
 // crank (link 2), coupler (link 3), slider -- a link that is a flexible segment is no body --,
 // flexures f1, f2, f3 and pins p1, p2, p3 by pivot. An inversion (inversion.h) is described from
 // its fixed block: mirrored along the axis (the fixed block at 0), the blocks' and links' roles

@@ -14,7 +14,7 @@
 #include <numbers>
 
 #include "flexure/mechanisms/cfm/slider_crank.h"
-#include "flexure/mechanisms/cfsm_designs.h"
+#include "flexure/mechanisms/builtin_designs.h"
 #include "tests/support/cli_test_support.h"
 
 namespace flexure {

@@ -15,7 +15,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "flexure/mechanisms/cfsm_designs.h"
+#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/dynamics/dynamics.h"
 
 namespace flexure::dynamics {

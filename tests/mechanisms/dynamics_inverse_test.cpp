@@ -19,7 +19,7 @@
 #include <numbers>
 
 #include "flexure/mechanisms/cfm/slider_crank.h"
-#include "flexure/mechanisms/cfsm_designs.h"
+#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/dynamics/dynamics.h"
 #include "flexure/solver/common/errors.h"
 

@@ -1,4 +1,4 @@
-// What is checked against what: the named Howell designs (mechanisms/howell_designs.h) against the
+// What is checked against what: the named Howell designs (mechanisms/builtin_designs.h) against the
 // numbers printed in Howell's Compliant Mechanisms §10.1 (Table 10.1, §10.1.4-10.1.6):
 //  * worked examples of §10.1.4: k1 = 151 N mm/rad and F = 0.92 N (example 1); I = 33.86 mm^4,
 //    h = 3.18 mm and F = 1.68 N (example 2, the force rescaled from the library's K_theta = 2.65
@@ -9,14 +9,13 @@
 //    50-point stroke, within the tolerances the class-table test uses (printed rounding);
 //  * Table C.2: the yield strength is the 4500 psi end of polypropylene's range;
 //  * the exact model (independent elastica solution) runs through every design's stroke.
-#include "flexure/mechanisms/howell_designs.h"
-
 #include <gtest/gtest.h>
 
 #include <cctype>
 #include <cmath>
 #include <string>
 
+#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/cfm_comparison.h"

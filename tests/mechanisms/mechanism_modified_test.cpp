@@ -1,5 +1,5 @@
 // What is checked against what (the eleven modified configurations of paper 004 as dimensional
-// designs, mechanisms/modified_designs.h):
+// designs, mechanisms/builtin_designs.h):
 //  * Table 5's printed spring constants against the Table 5 rule (0.6 n gamma K_theta EI/L, 2 EI/L)
 //    evaluated from Table 5's printed h, L, b, E -- and against Table 2's rule (half of it);
 //  * Table 5's printed lengths and r2 + r3 against Table 3's rule (3/7 or 0.1 of the rigid
@@ -25,13 +25,12 @@
 #include <nlohmann/json.hpp>
 
 #include "flexure/io/mechanism_toml.h"
-#include "flexure/mechanisms/cfsm_designs.h"
+#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/dynamics/dynamics.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
-#include "flexure/mechanisms/modified_designs.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/gsl_guard.h"
 #include "tests/support/cli_test_support.h"

@@ -19,7 +19,7 @@
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/cfm/constant_force.h"
 #include "flexure/mechanisms/cfm_comparison.h"
-#include "flexure/mechanisms/howell_designs.h"
+#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/solver/common/errors.h"
 

@@ -9,10 +9,9 @@
 
 #include "flexure/io/mechanism_toml.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
-#include "flexure/mechanisms/howell_designs.h"
+#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
-#include "flexure/mechanisms/modified_designs.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {
