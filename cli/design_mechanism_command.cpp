@@ -19,7 +19,7 @@
 #include "flexure/io/platform/output_path.h"
 #include "flexure/mechanisms/design/mechanism_synthesis.h"
 #include "flexure/mechanisms/force_of.h"
-#include "flexure/mechanisms/material_library.h"
+#include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/mechanisms/mechanism_exact_geometry.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/quantity.h"

@@ -32,7 +32,7 @@
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/dynamics/dynamics_design.h"
 #include "flexure/mechanisms/force_of.h"
-#include "flexure/mechanisms/material_library.h"
+#include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {

@@ -3,8 +3,7 @@
 #include <fmt/format.h>
 
 #include "cli/cli_common.h"
-#include "flexure/mechanisms/material_library.h"
-#include "flexure/mechanisms/mechanism_fatigue.h"
+#include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/quantity.h"
 

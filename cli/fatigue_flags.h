@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "flexure/mechanisms/fatigue.h"
+#include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/mechanisms/mechanism.h"
 
 namespace flexure::cli {

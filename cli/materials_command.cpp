@@ -1,4 +1,4 @@
-// `flexure materials`: the rows of data/materials.csv (mechanisms/material_library.h;
+// `flexure materials`: the rows of data/materials.csv (mechanisms/materials_fatigue.h;
 // docs/materials.md), as a table or one JSON object {"materials": [...]}.
 #include <fmt/format.h>
 
@@ -9,7 +9,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "flexure/mechanisms/material_library.h"
+#include "flexure/mechanisms/materials_fatigue.h"
 
 namespace flexure::cli {
 namespace {

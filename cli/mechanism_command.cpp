@@ -30,19 +30,19 @@
 #include "flexure/io/mechanism_validation_file.h"
 #include "flexure/io/platform/mpi_world.h"
 #include "flexure/io/platform/output_path.h"
+#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/general/catalogue_general.h"
 #include "flexure/mechanisms/inversion.h"
+#include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_catalogue.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/mechanisms/mechanism_fatigue.h"
 #include "flexure/mechanisms/mechanism_geometry.h"
 #include "flexure/mechanisms/mechanism_method.h"
 #include "flexure/mechanisms/mechanism_plate.h"
 #include "flexure/mechanisms/mechanism_validation.h"
 #include "flexure/mechanisms/mechanism_warnings.h"
-#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/modified_springs.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/quantity.h"
@@ -242,7 +242,7 @@ std::string force_sign_note(bool vanishes, bool changes_sign) {
   return changes_sign ? "force changes sign" : vanishes ? "force vanishes" : "";
 }
 
-// The fatigue check of analyze (mechanism_fatigue.h), or why there is none.
+// The fatigue check of analyze (materials_fatigue.h), or why there is none.
 struct FatigueReport {
   std::optional<MechanismFatigue> fatigue;
   std::string note;  // why not checked

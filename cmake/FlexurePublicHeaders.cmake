@@ -49,13 +49,11 @@ set(FLEXURE_PUBLIC_HEADERS
   elements/prbm_tables.h
   # mechanisms.h: designs, analysis, constant-force mechanisms, dynamics, general mechanisms.
   mechanisms/builtin_designs.h
-  mechanisms/fatigue.h
   mechanisms/force_of.h
-  mechanisms/material_library.h
+  mechanisms/materials_fatigue.h
   mechanisms/mechanism.h
   mechanisms/mechanism_analysis.h
   mechanisms/mechanism_exact.h
-  mechanisms/mechanism_fatigue.h
   mechanisms/mechanism_geometry.h
   mechanisms/mechanism_method.h
   mechanisms/mechanism_prbm.h

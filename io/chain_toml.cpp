@@ -11,7 +11,7 @@
 #include <utility>
 
 #include "flexure/io/toml_support.h"
-#include "flexure/mechanisms/material_library.h"
+#include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
 #include "flexure/solver/common/plate_modulus.h"

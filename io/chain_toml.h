@@ -9,7 +9,7 @@
 // its section (E with I, or E with width and thickness) and the file a yield_strength, and only
 // then are results reported in metres, newtons and pascals. `material = "NAME"` (the file's, or a
 // segment's own) supplies E, nu and the yield strength from data/materials.csv
-// (mechanisms/material_library.h); explicit values replace it with a warning.
+// (mechanisms/materials_fatigue.h); explicit values replace it with a warning.
 #include <optional>
 #include <string>
 #include <vector>

@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "flexure/io/toml_support.h"
-#include "flexure/mechanisms/material_library.h"
+#include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/quantity.h"
 

@@ -9,7 +9,7 @@
 
 #include "flexure/io/platform/hdf5_file.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
-#include "flexure/mechanisms/mechanism_fatigue.h"
+#include "flexure/mechanisms/materials_fatigue.h"
 
 namespace flexure::io {
 

@@ -11,8 +11,7 @@
 
 #include "flexure/elements/prbm_segments.h"
 #include "flexure/io/toml_support.h"
-#include "flexure/mechanisms/material_library.h"
-#include "flexure/mechanisms/mechanism_fatigue.h"
+#include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/quantity.h"

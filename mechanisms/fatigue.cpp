@@ -1,4 +1,4 @@
-#include "flexure/mechanisms/fatigue.h"
+#include "flexure/mechanisms/materials_fatigue.h"
 
 #include <fmt/format.h>
 

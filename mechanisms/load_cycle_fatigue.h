@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/mechanisms/fatigue.h"
+#include "flexure/mechanisms/materials_fatigue.h"
 
 namespace flexure {
 

@@ -1,4 +1,4 @@
-#include "flexure/mechanisms/material_library.h"
+#include "flexure/mechanisms/materials_fatigue.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

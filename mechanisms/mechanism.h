@@ -83,8 +83,8 @@ struct MechanismDesign {
   PlateRule plate = PlateRule::kOff;
   std::optional<double> nu;
   std::vector<ModulusChoice> modulus;
-  // The material beyond E and S_y, for the fatigue check (fatigue.h, docs/fatigue.md): the
-  // data/materials.csv id it was taken from (empty: given by value), S_ut, the uncorrected
+  // The material beyond E and S_y, for the fatigue check (materials_fatigue.h, docs/fatigue.md):
+  // the data/materials.csv id it was taken from (empty: given by value), S_ut, the uncorrected
   // endurance limit S_e' (or fatigue strength S_f' at endurance_cycles), brittleness.
   std::string material;
   std::optional<double> ultimate_strength;  // Pa

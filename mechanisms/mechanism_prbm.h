@@ -31,7 +31,7 @@ struct PrbmState {
   std::array<double, 3> stress{};  // largest stress of each flexible pivot, Pa (0 for a pin)
   // The bending moment behind each stress with its sign (K psi at an s pivot, the pin force's
   // moment about the clamp of an l segment), N m: whether a fibre's stress changes sign over a
-  // stroke (mechanism_fatigue.h).
+  // stroke (materials_fatigue.h).
   std::array<double, 3> moment{};
 };
 

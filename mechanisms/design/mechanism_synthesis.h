@@ -29,8 +29,8 @@
 
 #include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/force_of.h"
+#include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/mechanisms/mechanism.h"
-#include "flexure/mechanisms/mechanism_fatigue.h"
 
 namespace flexure::design {
 
@@ -107,12 +107,12 @@ struct MechanismSpec {
   SectionBounds bounds;
   SizeObjective minimize = SizeObjective::kNone;
   // The material beyond E and S_y (a data/materials.csv id or given values), written onto every
-  // design (MechanismDesign's fields of the same names; mechanism_fatigue.h).
+  // design (MechanismDesign's fields of the same names; materials_fatigue.h).
   std::string material;
   std::optional<double> ultimate_strength, endurance_limit, endurance_cycles;
   bool ductile = true;
   // Set: keep only designs whose modified Goodman safety factor over rest -> full stroke -> rest
-  // (Howell eq. 3.110, mechanism_fatigue.h) is at least safety_factor; the others are rejected
+  // (Howell eq. 3.110, materials_fatigue.h) is at least safety_factor; the others are rejected
   // with binding "fatigue: ...". Needs ultimate_strength and endurance_limit. With a fatigue
   // strength (no endurance limit) that is a life of at least endurance_cycles, not infinite.
   std::optional<FatigueOptions> fatigue;

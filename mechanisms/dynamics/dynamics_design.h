@@ -18,7 +18,7 @@
 #include <optional>
 #include <string>
 
-#include "flexure/mechanisms/material_library.h"
+#include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/mechanisms/mechanism.h"
 
 namespace flexure::dynamics {

@@ -1,5 +1,6 @@
-// What is checked against what: the fatigue analysis of Howell 2001, §3.3 (mechanisms/fatigue.h)
-// against Howell's worked examples, each input copied from the book:
+// What is checked against what: the fatigue analysis of Howell 2001, §3.3
+// (mechanisms/materials_fatigue.h) against Howell's worked examples, each input copied from the
+// book:
 //  * completely reversed bending of a 1095 hot-rolled cantilever (eqs. 3.88-3.103): the Marin
 //    factors to the digits printed, S_e = 12.7 kpsi (12.85 unrounded, docs/errata.md), SF = 1.6,
 //    and the life at twice the load (4.71e5 cycles printed from S_e = 12.7 and b_f = -0.31);
@@ -12,13 +13,12 @@
 //  * Table 3.4 against the normal-distribution rule it is made from (c = 1 - 0.08 z; its last
 //    column belongs to 99.9999999 %, docs/errata.md);
 //  * the S-N line through its defining points (eqs. 3.56-3.69), and bad input.
-#include "flexure/mechanisms/fatigue.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
+#include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure {

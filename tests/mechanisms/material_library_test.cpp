@@ -1,14 +1,13 @@
-// What is checked against what: data/materials.csv (mechanisms/material_library.h) against
+// What is checked against what: data/materials.csv (mechanisms/materials_fatigue.h) against
 // Howell 2001, Appendix C as printed (values written out here from the book: Tables C.1-C.6), the
 // uncorrected fatigue strengths against Howell's estimates recomputed from each row's S_ut (eqs.
 // 3.70, 3.72, 3.132), and the name lookup with its error for an unknown name.
-#include "flexure/mechanisms/material_library.h"
-
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "flexure/mechanisms/data/data_files.h"
+#include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/solver/common/csv_table.h"
 #include "flexure/solver/common/errors.h"
 #include "tests/support/data_file_support.h"

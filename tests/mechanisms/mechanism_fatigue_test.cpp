@@ -1,4 +1,4 @@
-// What is checked against what (mechanisms/mechanism_fatigue.h, io/mechanism_toml.cpp's material):
+// What is checked against what (mechanisms/materials_fatigue.h, io/mechanism_toml.cpp's material):
 //  * a mechanism's fatigue check against the same check written out here from Howell's equations
 //    (eqs. 3.74, 3.76 with Table 3.3, 3.77/3.81, Table 3.4, 3.84, 3.107-3.110) on the stresses
 //    `analyze` reports: the tensile face of each flexure cycles between 0 at rest and its largest
@@ -8,8 +8,6 @@
 //  * the TOML material: material = "NAME", a [material] name the library knows (values replace
 //    the library's, with a note), an unknown name without values (error with the closest ids),
 //    and the writer's round trip of the fatigue values.
-#include "flexure/mechanisms/mechanism_fatigue.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,7 +15,7 @@
 #include <string>
 
 #include "flexure/io/mechanism_toml.h"
-#include "flexure/mechanisms/material_library.h"
+#include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/errors.h"

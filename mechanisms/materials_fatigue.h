@@ -1,4 +1,12 @@
 #pragma once
+// Materials and fatigue in one header: the material library, the stress-life fatigue of a
+// flexure, and the fatigue of a mechanism's flexures over its working cycle.
+//
+// The materials of data/materials.csv (Howell 2001, Appendix C, Tables C.1-C.6, and Howell's
+// polysilicon of §3.2.2): elastic constants, strengths, the uncorrected endurance limit S_e' or
+// fatigue strength S_f' (Howell eqs. 3.70, 3.72, 3.132) and density, each with its source, for
+// `--material NAME` and `material = "NAME"` (docs/materials.md). Units: SI (Pa, kg/m^3).
+//
 // Fatigue of a flexure by the stress-life method of Howell 2001, §3.3: the uncorrected endurance
 // limit S_e' (or fatigue strength S_f' at a stated life) of the material, the Marin factors of the
 // part (eqs. 3.74-3.84, Tables 3.3-3.4), the mean and alternating stresses of a load cycle (eqs.
@@ -6,10 +14,73 @@
 // S_e/sigma_a, §3.3.11), the yield check (eq. 3.112) and the life of a stress above the endurance
 // limit from the S-N line (eqs. 3.56-3.69). docs/fatigue.md. Units: SI (Pa, m) except where a
 // function says otherwise.
+//
+// Fatigue of a mechanism's flexures over its working cycle: rest (the as-made position, where
+// every flexure is unstressed) to the full stroke and back, checked by the modified Goodman
+// criterion of Howell 2001, §3.3 (above; docs/fatigue.md).
+//
+// Each flexible pivot's stress over the stroke is the governing one `mechanism analyze` reports
+// (the larger of the PRBM and exact values at each stroke point: the largest |m| h/(2I) + |N|/A
+// of the segment), signed by the PRBM bending moment at that point (PrbmState::moment). A fibre
+// on one face sees that signed history, the other face its negative; each starts from 0 at rest.
+// For a pivot whose moment keeps its sign -- every built-in design -- the tensile face cycles
+// between 0 and sigma_max: sigma_m = sigma_a = sigma_max/2 (eqs. 3.107-3.108), as in Howell's
+// orthoplanar spring and bistable switch. Each pivot has its own size factor (d_e of its b x h,
+// eq. 3.81); the critical pivot is the one with the lowest Goodman safety factor.
+#include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
-#include "flexure/mechanisms/material_library.h"
+#include "flexure/mechanisms/mechanism.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
+#include "flexure/solver/common/section.h"
+
+namespace flexure {
+
+// Whether the material's fatigue strength is an endurance limit (infinite life below it) or a
+// fatigue strength at a stated life (Howell §3.3.2).
+enum class FatigueStrengthKind { kEnduranceLimit, kFatigueStrength };
+
+struct MaterialGrade {
+  std::string id;           // "steel-1095-hr"
+  std::string designation;  // "1095 HR", as the source prints it
+  std::string family;       // "carbon-steel", "polymer", ... (the table's class column)
+  std::string source;       // "Howell Table C.5 (E nu density: Table C.1)"
+  double E = 0.0;           // Pa
+  std::optional<double> nu;
+  std::optional<double> yield_strength;     // S_y, Pa
+  std::optional<double> ultimate_strength;  // S_ut, Pa
+  // S_e' or S_f' of a polished specimen, Pa; fatigue_cycles is the life of S_f' (empty for an
+  // endurance limit).
+  std::optional<double> fatigue_strength;
+  std::optional<FatigueStrengthKind> fatigue_kind;
+  std::optional<double> fatigue_cycles;
+  std::optional<double> density;  // kg/m^3
+  bool ductile = true;
+  std::string fatigue_source;  // how fatigue_strength was obtained
+  std::string notes;           // creep and stress relaxation of polymers; what the row lacks
+
+  // The strength a static safety factor divides: S_y of a ductile material; S_ut of a brittle
+  // one (Coulomb-Mohr with sigma_3 >= 0, Howell eq. 3.44). Empty when the row has neither.
+  std::optional<double> static_strength() const;
+  // E, nu (0.3 when the source gives none: a shear modulus is then an estimate), S_y, density.
+  Material material() const;
+};
+
+// Every row of data/materials.csv, in the file's order (parsed once).
+const std::vector<MaterialGrade>& material_library();
+
+// The row whose id or designation matches `name`, ignoring case, blanks and punctuation
+// ("1095 HR", "steel-1095-hr", "Steel 1095 HR"). Throws InvalidInput for an unknown name, listing
+// the closest ids (sharing a word with the name, or within a small edit distance) and pointing to
+// `flexure materials`.
+const MaterialGrade& find_material(const std::string& name);
+
+// Up to `count` ids closest to `name` (for messages).
+std::vector<std::string> closest_material_ids(const std::string& name, std::size_t count = 6);
+
+}  // namespace flexure
 
 namespace flexure {
 
@@ -149,3 +220,39 @@ double required_endurance_limit(double alternating_stress,
                                 double safety_factor = 1.0);
 
 }  // namespace flexure
+
+namespace flexure::mechanism {
+
+struct PivotFatigue {
+  bool present = false;              // a flexible pivot
+  double equivalent_diameter = 0.0;  // d_e, m (eq. 3.81)
+  PartFatigueStrength strength;
+  FatigueCheck check;                // of the face with the lower safety factor
+  bool moment_changes_sign = false;  // the PRBM moment takes both signs over the stroke
+};
+
+struct MechanismFatigue {
+  FatigueMaterial material;
+  FatigueOptions options;
+  std::array<PivotFatigue, 3> pivots;  // stored (original) pivot order, 1..3 -> [0..2]
+  int critical_pivot = 0;              // 1..3, lowest safety factor
+  const PivotFatigue& critical() const { return pivots[critical_pivot - 1]; }
+};
+
+// The fatigue material of a design: its S_ut and S_e' (from a data/materials.csv row or given),
+// S_y and brittleness. Throws InvalidInput naming what is missing ("--ultimate-strength",
+// the TOML key) in library words: "the design's material has no ultimate strength S_ut".
+FatigueMaterial design_fatigue_material(const MechanismDesign& design);
+
+// The check of an analysed stroke (analysis.prbm over the stroke; the exact stresses where
+// analysis.has_exact_stress).
+MechanismFatigue mechanism_fatigue(const MechanismAnalysis& analysis,
+                                   const FatigueMaterial& material,
+                                   const FatigueOptions& options);
+
+// Sets E, nu-free S_y, S_ut, S_e' (and its life), ductility and the id of `grade` on `design`;
+// a brittle grade's static strength is its S_ut (Howell eq. 3.44). Throws InvalidInput when the
+// row has no yield (or ultimate) strength for the static safety factor.
+void apply_material(MechanismDesign& design, const MaterialGrade& grade);
+
+}  // namespace flexure::mechanism
