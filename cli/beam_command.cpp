@@ -24,7 +24,7 @@
 #include "flexure/beam/beam_keys.h"
 #include "flexure/beam/method_selector.h"
 #include "flexure/beam/physical_beam.h"
-#include "flexure/io/chain_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/load_cycle_fatigue.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"

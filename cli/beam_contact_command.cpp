@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "cli/cli_common.h"
-#include "flexure/io/chain_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/io/contact_file.h"
 #include "flexure/io/platform/hdf5_error.h"
 #include "flexure/io/platform/output_path.h"

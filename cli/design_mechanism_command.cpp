@@ -15,7 +15,7 @@
 #include "cli/mechanism_geometry_output.h"
 #include "cli/modulus_output.h"
 #include "flexure/io/mechanism_geometry_toml.h"
-#include "flexure/io/mechanism_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/io/platform/output_path.h"
 #include "flexure/mechanisms/design/mechanism_synthesis.h"
 #include "flexure/mechanisms/force_of.h"

@@ -27,7 +27,7 @@
 #include "cli/slow_progress.h"
 #include "flexure/benchmarks/studies/dynamics_study.h"
 #include "flexure/benchmarks/studies/dynamics_study_file.h"
-#include "flexure/io/mechanism_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/io/platform/output_path.h"
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/dynamics/dynamics_design.h"

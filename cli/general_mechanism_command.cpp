@@ -9,7 +9,7 @@
 #include "cli/cli_common.h"
 #include "cli/csv_output.h"
 #include "flexure/io/general_mechanism_file.h"
-#include "flexure/io/general_mechanism_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/io/platform/hdf5_error.h"
 #include "flexure/io/platform/output_path.h"
 #include "flexure/io/toml_support.h"

@@ -1,6 +1,6 @@
 #pragma once
 // `flexure mechanism analyze FILE.toml` for the general form of a mechanism ([[body]] tables,
-// io/general_mechanism_toml.h; docs/mechanisms.md "General mechanisms"): parse, solve, print.
+// io/toml_files.h; docs/mechanisms.md "General mechanisms"): parse, solve, print.
 #include <optional>
 #include <string>
 

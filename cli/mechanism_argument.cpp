@@ -3,7 +3,7 @@
 #include <utility>
 
 #include "cli/cli_common.h"
-#include "flexure/io/mechanism_toml.h"
+#include "flexure/io/toml_files.h"
 
 namespace flexure::cli {
 

@@ -26,7 +26,7 @@
 #include "cli/warning_output.h"
 #include "flexure/benchmarks/studies/mechanism_tolerance.h"
 #include "flexure/io/mechanism_stroke_file.h"
-#include "flexure/io/mechanism_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/io/mechanism_validation_file.h"
 #include "flexure/io/platform/mpi_world.h"
 #include "flexure/io/platform/output_path.h"

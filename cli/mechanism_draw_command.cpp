@@ -11,7 +11,7 @@
 #include "cli/mechanism_argument.h"
 #include "cli/mechanism_geometry_output.h"
 #include "flexure/io/mechanism_drawing.h"
-#include "flexure/io/mechanism_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/io/platform/output_path.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_exact_geometry.h"

@@ -17,7 +17,7 @@
 #include "flexure/beam/beam_problem.h"
 #include "flexure/benchmarks/studies/load_path_study.h"
 #include "flexure/benchmarks/studies/path_shapes_xdmf.h"
-#include "flexure/io/chain_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/io/platform/output_path.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"

@@ -17,7 +17,7 @@
 #include "cli/slow_progress.h"
 #include "flexure/beam/beam_sweep_grid.h"
 #include "flexure/benchmarks/studies/beam_sweep_run.h"
-#include "flexure/io/chain_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/io/platform/mpi_world.h"
 #include "flexure/io/platform/output_path.h"
 #include "flexure/solver/common/errors.h"

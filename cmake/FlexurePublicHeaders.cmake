@@ -76,7 +76,5 @@ set(FLEXURE_PUBLIC_HEADERS
   mechanisms/design/cfm_synthesis.h
   mechanisms/design/mechanism_synthesis.h
   # studies.h: files (TOML) and drawings.
-  io/chain_toml.h
-  io/general_mechanism_toml.h
   io/mechanism_drawing.h
-  io/mechanism_toml.h)
+  io/toml_files.h)

@@ -1,6 +1,6 @@
 #pragma once
 // Writes a general planar mechanism (mechanisms/general/general_mechanism.h) as the TOML form that
-// io/general_mechanism_toml.h reads ([[body]], [[joint]], [[flexure]], [[spring]], [[load]],
+// io/toml_files.h reads ([[body]], [[joint]], [[flexure]], [[spring]], [[load]],
 // [input]; docs/mechanisms.md "General mechanisms"): every number in SI, printed with the
 // shortest decimal that reads back to the same double, so that reading the text gives the same
 // description (names, points, sections, moduli, models, input and its start_rotation) to the bit,

@@ -1,4 +1,4 @@
-#include "flexure/io/mechanism_toml.h"
+#include "flexure/io/toml_files.h"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>

@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "flexure/io/mechanism_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_plate.h"

@@ -424,7 +424,7 @@ PathUnits PathUnits::si(double length_m, double EI_Nm2) {
 }
 
 PathUnits PathUnits::chain_file(bool physical) {
-  // A physical file's values are SI already (io/chain_toml.h): factors 1, units m, N, N m.
+  // A physical file's values are SI already (io/toml_files.h): factors 1, units m, N, N m.
   if (physical) return si(1.0, 1.0);
   return PathUnits{std::string("chain file"),
                    1.0,

@@ -31,7 +31,7 @@ struct PathUnits {
   std::string moment_unit = "1";
   // Howell's nondimensional beam; a physical beam of length L and rigidity EI in SI (m, N, N m);
   // a chain file in its own units, or in SI (m, N, N m) when the file is physical (units = "SI"
-  // or a value written with a unit; io/chain_toml.h).
+  // or a value written with a unit; io/toml_files.h).
   static PathUnits nondimensional() { return {}; }
   static PathUnits si(double length_m, double EI_Nm2);
   static PathUnits chain_file(bool physical = false);

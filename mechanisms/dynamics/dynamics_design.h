@@ -41,7 +41,7 @@ struct DynamicsDesign {
   double E = 0.0;                          // that modulus, Pa (0: no material given)
 };
 
-// The optional [dynamics] table of a mechanism TOML file (io/mechanism_toml.h): what a dimensional
+// The optional [dynamics] table of a mechanism TOML file (io/toml_files.h): what a dimensional
 // design lacks for dynamics. `source` and `line` place it for messages.
 struct DynamicsData {
   std::optional<double> m2;        // kg, link 2 of one half (a uniform bar, J = m r^2/12)

@@ -11,7 +11,7 @@
 // (measured from +x), so that a crank angle reads as in Howell's figures.
 //
 // The same description comes from the C++ builder below and from TOML
-// (io/general_mechanism_toml.h); `validate()` checks it and throws InvalidInput naming the item,
+// (io/toml_files.h); `validate()` checks it and throws InvalidInput naming the item,
 // and, for a TOML description, the file and line ("switch.toml:31: flexure 'f4': ...").
 #include <string>
 #include <utility>

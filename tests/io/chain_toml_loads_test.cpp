@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-#include "flexure/io/chain_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure {

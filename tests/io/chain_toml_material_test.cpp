@@ -1,4 +1,4 @@
-// `material = "NAME"` in a chain file (io/chain_toml.h; docs/chain-toml.md "Materials"): at the
+// `material = "NAME"` in a chain file (io/toml_files.h; docs/chain-toml.md "Materials"): at the
 // top of the file or in a [[segment]], a row of data/materials.csv supplies E, nu (where plate or
 // extensible needs it) and the yield strength; an explicit E, nu or yield_strength replaces the
 // library's value with a warning; bad names, a material without physical units, a material with
@@ -11,7 +11,7 @@
 #include <string>
 #include <variant>
 
-#include "flexure/io/chain_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure {

@@ -1,13 +1,12 @@
-// The TOML form of a general mechanism (io/general_mechanism_toml.h): the shipped example reads
+// The TOML form of a general mechanism (io/toml_files.h): the shipped example reads
 // and solves to Howell's Table 11.2, and bad descriptions are errors naming file, line and item.
-#include "flexure/io/general_mechanism_toml.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 #include <string>
 
+#include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/general/general_prbm.h"
 #include "flexure/solver/common/errors.h"
 

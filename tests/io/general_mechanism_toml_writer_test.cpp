@@ -1,5 +1,5 @@
 // The general mechanism TOML writer (io/general_mechanism_toml_writer.h): every description it
-// writes reads back (io/general_mechanism_toml.h) as the same description to the bit -- the 40
+// writes reads back (io/toml_files.h) as the same description to the bit -- the 40
 // built-in designs' general forms (catalogue_general.h) and the shipped general examples -- and a
 // read-back design solves to the same PRBM numbers.
 #include "flexure/io/general_mechanism_toml_writer.h"
@@ -12,7 +12,7 @@
 #include <sstream>
 #include <string>
 
-#include "flexure/io/general_mechanism_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/general/catalogue_general.h"
 #include "flexure/mechanisms/general/general_prbm.h"
 #include "flexure/mechanisms/mechanism_catalogue.h"

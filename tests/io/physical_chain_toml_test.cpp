@@ -1,4 +1,4 @@
-// Chains in physical units read from TOML (io/chain_toml.h) and solved by the beam layer
+// Chains in physical units read from TOML (io/toml_files.h) and solved by the beam layer
 // (beam/physical_beam.h), checked against:
 //  * Howell's small-length flexural pivot of sec. 5.1 as a chain file in inches and pounds
 //    (polypropylene, 0.096 lb: b = 3 in, sigma = F a c/I = 3900 psi);
@@ -11,7 +11,7 @@
 #include <optional>
 
 #include "flexure/beam/physical_beam.h"
-#include "flexure/io/chain_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/solver/common/errors.h"
 #include "tests/support/physical_beam_support.h"
 

@@ -1,5 +1,5 @@
 // The chain file's plate key (docs/chain-toml.md segment.plate, docs/plate-modulus.md), read into
-// the library's PhysicalChain (io/chain_toml.h), checked against:
+// the library's PhysicalChain (io/toml_files.h), checked against:
 //  * what the reader must fill: each segment's SegmentProperties::plate and material nu, the
 //    segment's EI as E I/(1 - nu^2) for "on" and E I for "auto" (by hand);
 //  * the same chain solved from the file and built from objects with the same properties: the tip
@@ -13,7 +13,7 @@
 #include <string>
 
 #include "flexure/beam/physical_beam.h"
-#include "flexure/io/chain_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure {

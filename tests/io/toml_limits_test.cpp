@@ -13,7 +13,7 @@
 #include <fstream>
 #include <string>
 
-#include "flexure/io/chain_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/io/toml_support.h"
 #include "flexure/solver/common/errors.h"
 #include "tests/support/cli_test_support.h"

@@ -11,7 +11,7 @@
 #include <iostream>
 #include <string>
 
-#include "flexure/io/general_mechanism_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/general/flexure_models.h"
 #include "flexure/mechanisms/general/general_exact.h"
 #include "flexure/mechanisms/general/general_mechanism.h"

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "flexure/elements/prbm_segments.h"
-#include "flexure/io/general_mechanism_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/general/general_exact.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
 #include "flexure/mechanisms/general/general_prbm.h"

@@ -20,7 +20,7 @@
 
 #include "flexure/beam/physical_beam.h"
 #include "flexure/elements/prbm_segments.h"
-#include "flexure/io/general_mechanism_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/general/general_exact.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
 #include "flexure/mechanisms/general/general_prbm.h"

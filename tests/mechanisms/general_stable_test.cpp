@@ -10,7 +10,7 @@
 #include <numbers>
 #include <string>
 
-#include "flexure/io/general_mechanism_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/general/general_exact.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
 #include "flexure/mechanisms/general/general_prbm.h"

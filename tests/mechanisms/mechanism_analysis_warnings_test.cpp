@@ -14,7 +14,7 @@
 #include <algorithm>
 #include <string>
 
-#include "flexure/io/mechanism_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/force_of.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"

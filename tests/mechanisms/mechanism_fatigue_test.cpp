@@ -14,7 +14,7 @@
 #include <cmath>
 #include <string>
 
-#include "flexure/io/mechanism_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"

@@ -24,7 +24,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "flexure/io/mechanism_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/dynamics/dynamics.h"
 #include "flexure/mechanisms/mechanism.h"

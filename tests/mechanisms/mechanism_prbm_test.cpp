@@ -14,7 +14,7 @@
 #include <cmath>
 #include <string>
 
-#include "flexure/io/mechanism_toml.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/cfm/constant_force.h"

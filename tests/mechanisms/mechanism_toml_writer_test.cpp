@@ -1,4 +1,4 @@
-// The TOML writer (io/mechanism_toml.h mechanism_toml) against the reader: every built-in design
+// The TOML writer (io/toml_files.h mechanism_toml) against the reader: every built-in design
 // -- the nine thesis configurations, Howell's designs, the modified designs of paper 004 and
 // every thesis sub-class -- written and read back gives the same design, bit for bit, and the
 // same PRBM stroke.
@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "flexure/io/mechanism_toml.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/builtin_designs.h"
+#include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/solver/common/errors.h"
