@@ -27,12 +27,12 @@
 #include "cli/slow_progress.h"
 #include "flexure/benchmarks/studies/dynamics_study.h"
 #include "flexure/benchmarks/studies/dynamics_study_file.h"
-#include "flexure/io/toml_files.h"
 #include "flexure/io/platform/output_path.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/dynamics/dynamics_design.h"
-#include "flexure/mechanisms/force_of.h"
 #include "flexure/mechanisms/materials_fatigue.h"
+#include "flexure/mechanisms/mechanism.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::cli {

@@ -26,10 +26,10 @@
 #include "cli/warning_output.h"
 #include "flexure/benchmarks/studies/mechanism_tolerance.h"
 #include "flexure/io/mechanism_stroke_file.h"
-#include "flexure/io/toml_files.h"
 #include "flexure/io/mechanism_validation_file.h"
 #include "flexure/io/platform/mpi_world.h"
 #include "flexure/io/platform/output_path.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/general/catalogue_general.h"
 #include "flexure/mechanisms/inversion.h"
@@ -193,7 +193,7 @@ Json analysis_json(const MechanismAnalysis& a) {
   j["units"] = "SI: m, N, Pa";
   // The bending modulus solved with (docs/plate-modulus.md); design.E is the modulus as given.
   if (!a.design.modulus.empty()) add_modulus_json(j, a.design.modulus);
-  // What force_prbm, force_exact and the mean forces are the force of (force_of.h).
+  // What force_prbm, force_exact and the mean forces are the force of (mechanism.h).
   j["force_of"] = force_of_label(a.force_of);
   j["spring_rule"] =
       has_fixed_fixed(a.design) ? Json(spring_rule_name(a.design.spring_rule)) : Json(nullptr);

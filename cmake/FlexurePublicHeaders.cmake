@@ -49,7 +49,6 @@ set(FLEXURE_PUBLIC_HEADERS
   elements/prbm_tables.h
   # mechanisms.h: designs, analysis, constant-force mechanisms, dynamics, general mechanisms.
   mechanisms/builtin_designs.h
-  mechanisms/force_of.h
   mechanisms/materials_fatigue.h
   mechanisms/mechanism.h
   mechanisms/mechanism_analysis.h

@@ -20,7 +20,7 @@ struct CsvColumn {
 };
 
 // A force's unit that says whose force it is, for the force columns of a symmetric mechanism
-// (mechanisms/force_of.h): "N (half)" for one half, "N (whole)" for the whole mechanism.
+// (mechanisms/mechanism.h): "N (half)" for one half, "N (whole)" for the whole mechanism.
 // `force_of` is the output key's value ("one half", "whole symmetric mechanism") or the option's
 // ("half", "whole"); throws std::invalid_argument for anything else.
 std::string force_unit(const std::string& force_of);

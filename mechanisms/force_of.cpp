@@ -1,7 +1,6 @@
-#include "flexure/mechanisms/force_of.h"
-
 #include <fmt/format.h>
 
+#include "flexure/mechanisms/mechanism.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
 

@@ -16,7 +16,6 @@
 #include <string>
 #include <vector>
 
-#include "flexure/mechanisms/force_of.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
@@ -109,7 +108,7 @@ struct MechanismAnalysis : SolveStatus {
 MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const AnalysisOptions& options);
 
 // Rescales the slider forces of `analysis` (see MechanismAnalysis::force_of) to the force of `of`:
-// F_whole = 2 F_half (force_of.h). Ratios (percent constant force, force errors), displacements
+// F_whole = 2 F_half (mechanism.h). Ratios (percent constant force, force errors), displacements
 // and stresses do not change.
 void report_forces_of(MechanismAnalysis& analysis, ForceOf of);
 

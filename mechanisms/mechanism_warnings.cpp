@@ -5,8 +5,8 @@
 #include <algorithm>
 
 #include "flexure/mechanisms/cfm/constant_force.h"
-#include "flexure/mechanisms/force_of.h"
 #include "flexure/mechanisms/inversion.h"
+#include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 
 namespace flexure::mechanism {

@@ -73,7 +73,7 @@ DynamicsStudy run_dynamics_study(const dynamics::DynamicsDesign& design,
   study.zero_inertia = o.zero_inertia;
   study.omegas = o.omegas;
   study.static_force_points = o.static_force_points;
-  // The model computes the whole mechanism; one half is exactly half of it (force_of.h).
+  // The model computes the whole mechanism; one half is exactly half of it (mechanism.h).
   const double to_reported =
       mechanism::force_of_factor(mechanism::ForceOf::kWholeMechanism, o.force_of);
 

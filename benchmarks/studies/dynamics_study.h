@@ -7,7 +7,7 @@
 //   Delta x(t) = preload + stroke (1 - cos omega t)/2,   preload, stroke in % of r2 + r3.
 //
 // The model (mechanisms/dynamics) computes the whole symmetric mechanism: two halves and one
-// slider. Every force of the study is reported as `force_of` says (mechanisms/force_of.h: one
+// slider. Every force of the study is reported as `force_of` says (mechanisms/mechanism.h: one
 // half is exactly half of the whole, with the slider's inertia shared equally).
 #include <array>
 #include <cstddef>
@@ -18,7 +18,7 @@
 
 #include "flexure/mechanisms/dynamics/dynamics.h"
 #include "flexure/mechanisms/dynamics/dynamics_design.h"
-#include "flexure/mechanisms/force_of.h"
+#include "flexure/mechanisms/mechanism.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure {

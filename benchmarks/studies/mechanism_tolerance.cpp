@@ -349,7 +349,7 @@ void write_tolerance_file(io::Hdf5Group& root, const ToleranceStudy& s) {
   root.set_attribute("samples", static_cast<std::int64_t>(o.samples));
   root.set_attribute("seed", static_cast<std::int64_t>(o.seed));
   root.set_attribute("failed_samples", static_cast<std::int64_t>(s.failed_samples));
-  // What mean_force_prbm and mean_force_exact are the force of (force_of.h), as in the JSON.
+  // What mean_force_prbm and mean_force_exact are the force of (mechanism.h), as in the JSON.
   root.set_attribute("force_of", force_of_label(o.force_of));
   root.set_attribute("mpi_ranks", static_cast<std::int64_t>(s.mpi_ranks));
   root.set_attribute("spread_thickness", o.spread.thickness);

@@ -21,7 +21,6 @@
 
 #include "flexure/io/csv_table.h"
 #include "flexure/io/platform/hdf5_file.h"
-#include "flexure/mechanisms/force_of.h"
 #include "flexure/mechanisms/mechanism.h"
 
 namespace flexure::mechanism {
@@ -44,7 +43,7 @@ struct ToleranceOptions {
   std::uint64_t seed = 1;
   bool exact = true;  // also the exact model (else PRBM only)
   int points = 50;    // stroke points of each analysis
-  // What the mean forces are the force of (force_of.h): one half, as `mechanism analyze` reports
+  // What the mean forces are the force of (mechanism.h): one half, as `mechanism analyze` reports
   // by default, or the whole symmetric mechanism (= 2 x half).
   ForceOf force_of = ForceOf::kOneHalf;
   // Throws InvalidInput naming the field: spreads finite in [0, 0.3) (a normal draw is cut at

@@ -28,7 +28,6 @@
 #include <vector>
 
 #include "flexure/mechanisms/cfm/cfm_model.h"
-#include "flexure/mechanisms/force_of.h"
 #include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/mechanisms/mechanism.h"
 
@@ -79,7 +78,7 @@ struct SectionBounds {
 
 struct MechanismSpec {
   double force = 0.0;  // N, mean slider force of one half (eq. 8.2's F)
-  // What the user's force was the force of (force_of.h): labels the designs (their notes and the
+  // What the user's force was the force of (mechanism.h): labels the designs (their notes and the
   // `force_of` their files carry); `force` above is one half's whatever it says.
   mechanism::ForceOf force_of = mechanism::ForceOf::kOneHalf;
   double stroke = 0.0;                   // m, slider travel (eq. 8.6's disp)

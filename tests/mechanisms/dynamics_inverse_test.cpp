@@ -11,15 +11,15 @@
 //    force is below its static value, no dip with all inertias zero, a wider band without slider
 //    mass; the frequency of lowest peak-to-peak force against Table 10 (one fitted preload);
 //  - one half (halves = 1 with half the slider mass) against the whole mechanism: exactly half the
-//    force at every sample, with inertia, friction and the axial term (force_of.h, the factor
+//    force at every sample, with inertia, friction and the axial term (mechanism.h, the factor
 //    `flexure dynamics --force-of half` applies).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/mechanisms/builtin_designs.h"
+#include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/mechanisms/dynamics/dynamics.h"
 #include "flexure/solver/common/errors.h"
 

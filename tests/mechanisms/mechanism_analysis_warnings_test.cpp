@@ -15,7 +15,6 @@
 #include <string>
 
 #include "flexure/io/toml_files.h"
-#include "flexure/mechanisms/force_of.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_warnings.h"

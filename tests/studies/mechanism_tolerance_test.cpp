@@ -129,7 +129,7 @@ TEST(MechanismTolerance, SeedReproducesAndBadOptionsAreRefused) {
 namespace flexure::mechanism {
 namespace {
 
-// force_of: the whole symmetric mechanism is two halves in parallel (force_of.h), so every sampled
+// force_of: the whole symmetric mechanism is two halves in parallel (mechanism.h), so every sampled
 // mean force, its statistics and sensitivities are exactly twice the half's (a factor of 2 is
 // exact in floating point); the percent constant force and the safety factor do not change. The
 // nominal half force is the one `mechanism analyze` reports, computed here independently.
