@@ -5,10 +5,10 @@
 #include <cmath>
 
 #include "cli/cli_common.h"
-#include "flexure/io/toml_files.h"
 #include "flexure/io/contact_file.h"
 #include "flexure/io/platform/hdf5_error.h"
 #include "flexure/io/platform/output_path.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
 #include "flexure/solver/shooting/rigid_contact.h"

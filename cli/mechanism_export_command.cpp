@@ -12,8 +12,8 @@
 #include "cli/commands.h"
 #include "cli/mechanism_argument.h"
 #include "flexure/io/general_mechanism_toml_writer.h"
-#include "flexure/io/toml_files.h"
 #include "flexure/io/platform/output_path.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/mechanism.h"
 
 namespace flexure::cli {

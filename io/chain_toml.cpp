@@ -1,5 +1,3 @@
-#include "flexure/io/toml_files.h"
-
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
@@ -10,6 +8,7 @@
 #include <set>
 #include <utility>
 
+#include "flexure/io/toml_files.h"
 #include "flexure/io/toml_support.h"
 #include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/solver/common/errors.h"

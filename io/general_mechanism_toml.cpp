@@ -1,11 +1,10 @@
-#include "flexure/io/toml_files.h"
-
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
 #include <cmath>
 #include <optional>
 
+#include "flexure/io/toml_files.h"
 #include "flexure/io/toml_support.h"
 #include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/solver/common/errors.h"

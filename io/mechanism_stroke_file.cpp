@@ -11,8 +11,8 @@
 
 #include "flexure/io/mechanism_stroke_shapes.h"
 #include "flexure/io/platform/provenance.h"
-#include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/builtin_designs.h"
+#include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/modified_springs.h"
 #include "flexure/solver/common/errors.h"
 

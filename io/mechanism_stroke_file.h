@@ -8,8 +8,8 @@
 #include <string>
 
 #include "flexure/io/platform/hdf5_file.h"
-#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/materials_fatigue.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 
 namespace flexure::io {
 

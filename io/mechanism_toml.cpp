@@ -1,5 +1,3 @@
-#include "flexure/io/toml_files.h"
-
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
@@ -10,9 +8,10 @@
 #include <sstream>
 
 #include "flexure/elements/prbm_segments.h"
+#include "flexure/io/toml_files.h"
 #include "flexure/io/toml_support.h"
-#include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/mechanisms/builtin_designs.h"
+#include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/quantity.h"
 

@@ -1,7 +1,6 @@
-#include "flexure/mechanisms/builtin_designs.h"
-
 #include <fmt/format.h>
 
+#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/data/data_files.h"
 #include "flexure/solver/common/csv_table.h"
 #include "flexure/solver/common/errors.h"

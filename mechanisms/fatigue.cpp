@@ -1,11 +1,10 @@
-#include "flexure/mechanisms/materials_fatigue.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure {

@@ -1,5 +1,3 @@
-#include "flexure/mechanisms/builtin_designs.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -7,6 +5,7 @@
 #include <cmath>
 
 #include "flexure/elements/prbm_segments.h"
+#include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/solver/common/errors.h"

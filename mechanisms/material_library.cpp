@@ -1,5 +1,3 @@
-#include "flexure/mechanisms/materials_fatigue.h"
-
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -8,6 +6,7 @@
 #include <set>
 
 #include "flexure/mechanisms/data/data_files.h"
+#include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/solver/common/csv_table.h"
 #include "flexure/solver/common/errors.h"
 

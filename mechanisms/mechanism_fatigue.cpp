@@ -1,10 +1,9 @@
-#include "flexure/mechanisms/materials_fatigue.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
+#include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/solver/common/errors.h"
 

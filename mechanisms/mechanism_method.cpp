@@ -6,8 +6,8 @@
 #include <map>
 
 #include "flexure/beam/method_selector.h"
-#include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/builtin_designs.h"
+#include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/mechanisms/builtin_designs.h"
+#include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {

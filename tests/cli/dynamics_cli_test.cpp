@@ -13,8 +13,8 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
-#include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/mechanisms/builtin_designs.h"
+#include "flexure/mechanisms/cfm/slider_crank.h"
 #include "tests/support/cli_test_support.h"
 
 namespace flexure {

@@ -17,8 +17,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/builtin_designs.h"
+#include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
