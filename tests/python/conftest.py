@@ -125,3 +125,24 @@ def _interrupt_python(code, timeout):
 def interrupt_python():
     """A function (code, timeout) -> seconds from SIGINT to the end (_interrupt_python)."""
     return _interrupt_python
+
+
+class InterruptingProgress:
+    """A progress callable that records each `done` it is given and raises KeyboardInterrupt
+    when `done` reaches `at` (the Python side of Ctrl-C inside a long library call)."""
+
+    def __init__(self, at):
+        self.at = at
+        self.seen = []
+
+    def __call__(self, done, total):
+        self.seen.append(done)
+        if done == self.at:
+            raise KeyboardInterrupt
+
+
+@pytest.fixture
+def interrupting_progress():
+    """InterruptingProgress(at): a fresh progress callable that stops a call at step `at`."""
+    return InterruptingProgress
+

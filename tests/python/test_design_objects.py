@@ -81,7 +81,7 @@ def test_designs_equal_the_command_lines(cli):
     assert a.mean_force_prbm == pytest.approx(best.force_prbm, rel=1e-9)
 
 
-def test_progress_reaches_the_total_and_keyboard_interrupt_stops_it():
+def test_progress_reaches_the_total_and_keyboard_interrupt_stops_it(interrupting_progress):
     spec = flexure.MechanismSpec(force=10.0, stroke=0.01, E=200e9, yield_strength=1.2e9,
                                  safety_factor=1.5, length=(0.06, 0.15), exact=False)
     calls = []
@@ -92,16 +92,10 @@ def test_progress_reaches_the_total_and_keyboard_interrupt_stops_it():
     assert [d for d, _ in calls[:total]] == list(range(1, total + 1))
     assert all(t == total for _, t in calls)
 
-    seen = []
-
-    def stop(done, total):
-        seen.append(done)
-        if done == 2:
-            raise KeyboardInterrupt
-
+    stop = interrupting_progress(2)
     with pytest.raises(KeyboardInterrupt):
         flexure.design_mechanisms(spec, progress=stop)
-    assert seen == [1, 2]
+    assert stop.seen == [1, 2]
     # The module keeps working after the interrupted call, with the same answer.
     again = flexure.design_mechanisms(spec)
     assert [d.subclass for d in again.designs] == [d.subclass for d in report.designs]

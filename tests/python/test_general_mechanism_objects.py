@@ -181,7 +181,7 @@ def test_stable_points_of_the_switch_under_torque_control():
     assert all(p.force_control.kind == flexure.StabilityKind.stable for p in s.result.points)
 
 
-def test_exact_progress_and_keyboard_interrupt():
+def test_exact_progress_and_keyboard_interrupt(interrupting_progress):
     # The exact stroke reports each recorded point, (done, count) with done increasing to count,
     # and stops with the exception its callable raises; the module keeps working.
     L, b, h, E = 50 * MM, 10 * MM, 0.5 * MM, 200e9
@@ -197,15 +197,9 @@ def test_exact_progress_and_keyboard_interrupt():
     assert flexure.solve_general_mixed(auto, progress=lambda d, t: mixed.append(d)).converged()
     assert mixed and mixed == sorted(mixed) and mixed[-1] == 5
 
-    seen = []
-
-    def stop(done, total):
-        seen.append(done)
-        if done == 2:
-            raise KeyboardInterrupt
-
+    stop = interrupting_progress(2)
     with pytest.raises(KeyboardInterrupt):
         flexure.solve_general_exact(guide, progress=stop)
-    assert seen == [1, 2]
+    assert stop.seen == [1, 2]
     again = flexure.solve_general_exact(guide)
     assert again.input_load == pytest.approx(r.input_load, rel=1e-12)
