@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "flexure/beam/ladder_selector.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

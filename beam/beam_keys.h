@@ -17,8 +17,7 @@
 #include "flexure/beam/beam_problem.h"
 #include "flexure/beam/beam_request.h"
 #include "flexure/beam/physical_beam.h"
-#include "flexure/solver/common/plate_modulus.h"
-#include "flexure/solver/common/stability.h"
+#include "flexure/solver/common/section.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::beam_keys {

@@ -10,7 +10,7 @@
 
 #include "flexure/beam/beam_solution_parts.h"
 #include "flexure/elements/ladder_models.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/inverse/tip_target.h"
 
 namespace flexure {

@@ -4,7 +4,7 @@
 
 #include "flexure/elements/ladder_models.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 

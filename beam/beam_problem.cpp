@@ -13,7 +13,7 @@
 #include "flexure/beam/method_selector.h"
 #include "flexure/elements/prbm_cantilever.h"
 #include "flexure/solver/chain_model/equilibrium_stability.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/inverse/tip_target.h"
 #include "flexure/solver/shooting/compressed_cantilever_stability.h"

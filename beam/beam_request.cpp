@@ -8,9 +8,9 @@
 #include <utility>
 
 #include "flexure/solver/chain/chain_algorithm_solver.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
-#include "flexure/solver/common/quantity.h"
+#include "flexure/solver/common/section.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/elastica_integrator.h"
 
 namespace flexure {

@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "flexure/elements/ladder_models.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/evenly_spaced.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

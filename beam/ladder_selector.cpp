@@ -10,7 +10,7 @@
 
 #include "flexure/beam/data_files.h"
 #include "flexure/solver/common/csv_table.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::bench {
 namespace {

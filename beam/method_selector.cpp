@@ -12,7 +12,7 @@
 #include "flexure/elements/prbm_cantilever.h"
 #include "flexure/solver/common/csv_table.h"
 #include "flexure/solver/common/end_load.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

@@ -16,7 +16,7 @@
 #include <utility>
 
 #include "flexure/beam/beam_method.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 

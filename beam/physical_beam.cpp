@@ -9,7 +9,7 @@
 #include <tuple>
 #include <variant>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

@@ -10,7 +10,6 @@
 
 #include "flexure/beam/beam_problem.h"
 #include "flexure/solver/chain_model/segment_chain.h"
-#include "flexure/solver/common/plate_modulus.h"
 #include "flexure/solver/common/section.h"
 
 namespace flexure {

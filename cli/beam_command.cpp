@@ -26,9 +26,9 @@
 #include "flexure/beam/physical_beam.h"
 #include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/load_cycle_fatigue.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
-#include "flexure/solver/common/quantity.h"
+#include "flexure/solver/common/section.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 namespace {
@@ -72,7 +72,7 @@ struct BeamArgs {
   CLI::Option* tip_y_option = nullptr;
   CLI::Option* tip_angle_option = nullptr;
   CLI::Option* chain_option = nullptr;
-  // A physical cantilever (SI, or values with units: 50mm, 200GPa, 5N; solver/common/quantity.h).
+  // A physical cantilever (SI, or values with units: 50mm, 200GPa, 5N; solver/common/section.h).
   PhysicalFlags physical;
   // Fatigue of a load cycle of the physical beam (load_cycle_fatigue.h; docs/fatigue.md).
   std::string cycle;

@@ -9,8 +9,8 @@
 #include "flexure/io/platform/hdf5_error.h"
 #include "flexure/io/platform/output_path.h"
 #include "flexure/io/toml_files.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/rigid_contact.h"
 
 namespace flexure::cli {

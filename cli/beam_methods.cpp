@@ -9,8 +9,8 @@
 
 #include "cli/cli_common.h"
 #include "flexure/beam/beam_keys.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 

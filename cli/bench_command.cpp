@@ -14,7 +14,7 @@
 #include "cli/csv_output.h"
 #include "flexure/benchmarks/studies/bench_run.h"
 #include "flexure/io/platform/temp_file_cleanup.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 namespace {

@@ -31,7 +31,7 @@
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/cfm_comparison.h"
 #include "flexure/mechanisms/cfm_exact.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 namespace {

@@ -12,8 +12,8 @@
 
 #include "cli/mpi_launch.h"
 #include "flexure/io/platform/mpi_world.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/evenly_spaced.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 namespace {

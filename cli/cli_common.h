@@ -22,7 +22,7 @@
 #include <utility>
 #include <vector>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 

@@ -10,7 +10,7 @@
 #include "flexure/io/csv_table.h"
 #include "flexure/io/platform/mpi_world.h"
 #include "flexure/io/platform/output_path.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 bool is_csv_path(const std::string& path) {

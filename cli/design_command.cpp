@@ -23,7 +23,7 @@
 #include "flexure/mechanisms/design/cfm_synthesis.h"
 #include "flexure/mechanisms/design/subclass_problem.h"
 #include "flexure/mechanisms/design/subclass_rederivation.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 namespace {

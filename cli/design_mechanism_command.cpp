@@ -21,8 +21,8 @@
 #include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_exact_geometry.h"
-#include "flexure/solver/common/errors.h"
-#include "flexure/solver/common/quantity.h"
+#include "flexure/solver/common/section.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 namespace {

@@ -33,7 +33,7 @@
 #include "flexure/mechanisms/dynamics/dynamics_design.h"
 #include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/mechanisms/mechanism.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 namespace {

@@ -16,8 +16,8 @@
 #include "flexure/mechanisms/general/general_exact.h"
 #include "flexure/mechanisms/general/general_prbm.h"
 #include "flexure/mechanisms/general/stable_selection.h"
-#include "flexure/solver/common/errors.h"
-#include "flexure/solver/common/quantity.h"
+#include "flexure/solver/common/section.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 namespace {

@@ -8,8 +8,8 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 namespace {

@@ -16,7 +16,7 @@
 #include "flexure/benchmarks/studies/cfm_map.h"
 #include "flexure/io/platform/output_path.h"
 #include "flexure/io/platform/provenance.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 namespace {

@@ -44,8 +44,8 @@
 #include "flexure/mechanisms/mechanism_validation.h"
 #include "flexure/mechanisms/mechanism_warnings.h"
 #include "flexure/mechanisms/modified_springs.h"
-#include "flexure/solver/common/errors.h"
-#include "flexure/solver/common/quantity.h"
+#include "flexure/solver/common/section.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 namespace {
@@ -161,7 +161,7 @@ Json validity_json(const PrbmStrokeValidity& v, double stroke) {
   return j;
 }
 
-// One model's verdicts under one control as parallel arrays (stability.h names; JSON keys of
+// One model's verdicts under one control as parallel arrays (status.h names; JSON keys of
 // docs/cli.md "flexure mechanism"), with the stretches in words.
 Json stroke_stability_json(const StrokeStability& s) {
   Json kinds = Json::array(), index = Json::array(), margin = Json::array();

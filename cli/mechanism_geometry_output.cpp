@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 
 #include "flexure/io/platform/output_path.h"
-#include "flexure/solver/common/errors.h"
-#include "flexure/solver/common/quantity.h"
+#include "flexure/solver/common/section.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 namespace {

@@ -22,7 +22,7 @@ Json dimensions_json(const std::vector<io::DrawingDimension>& dims);
 
 // Indented lines: each flexure's length, width and thickness, each rigid link's length, the
 // pivots' positions at rest and at the end of the stroke, the overall length, in `unit` (a length
-// unit solver/common/quantity.h knows, e.g. "mm", "in").
+// unit solver/common/section.h knows, e.g. "mm", "in").
 std::string geometry_text(const mechanism::MechanismGeometry& g,
                           const std::string& unit,
                           const std::string& indent = "  ");

@@ -16,8 +16,8 @@
 #include "flexure/elements/ladder_models.h"
 #include "flexure/io/platform/output_path.h"
 #include "flexure/io/platform/provenance.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/version.h"
 
 namespace flexure::cli {

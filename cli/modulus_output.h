@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "cli/cli_common.h"
-#include "flexure/solver/common/plate_modulus.h"
+#include "flexure/solver/common/section.h"
 
 namespace flexure::cli {
 

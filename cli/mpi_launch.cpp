@@ -11,7 +11,7 @@
 
 #include "flexure/io/platform/mpi_world.h"
 #include "flexure/io/platform/work_distribution.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 namespace {

@@ -19,9 +19,9 @@
 #include "flexure/benchmarks/studies/path_shapes_xdmf.h"
 #include "flexure/io/platform/output_path.h"
 #include "flexure/io/toml_files.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
-#include "flexure/solver/common/quantity.h"
+#include "flexure/solver/common/section.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure::cli {

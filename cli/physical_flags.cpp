@@ -8,8 +8,8 @@
 
 #include "cli/cli_common.h"
 #include "flexure/mechanisms/materials_fatigue.h"
-#include "flexure/solver/common/errors.h"
-#include "flexure/solver/common/quantity.h"
+#include "flexure/solver/common/section.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 namespace {

@@ -24,8 +24,8 @@
 #include "flexure/elements/prbm_derivation.h"
 #include "flexure/elements/prbm_segments.h"
 #include "flexure/elements/prbm_tables.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 namespace {

@@ -20,9 +20,9 @@
 #include "flexure/io/platform/mpi_world.h"
 #include "flexure/io/platform/output_path.h"
 #include "flexure/io/toml_files.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
-#include "flexure/solver/common/quantity.h"
+#include "flexure/solver/common/section.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 namespace {

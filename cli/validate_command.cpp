@@ -14,7 +14,7 @@
 #include "flexure/benchmarks/studies/validation_checks.h"
 #include "flexure/benchmarks/studies/validation_file.h"
 #include "flexure/io/platform/output_path.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 namespace {

@@ -19,11 +19,7 @@ set(FLEXURE_MODULE_HEADERS
 set(FLEXURE_PUBLIC_HEADERS
   # beam.h: core, the solvers, the beam layer.
   solver/common/end_load.h
-  solver/common/errors.h
-  solver/common/plate_modulus.h
-  solver/common/quantity.h
   solver/common/section.h
-  solver/common/stability.h
   solver/common/status.h
   solver/chain/chain_algorithm_solver.h
   solver/chain_model/equilibrium_stability.h

@@ -1,7 +1,7 @@
 #include <fmt/format.h>
 
 #include "flexure/elements/ladder_models.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 

@@ -11,7 +11,7 @@
 #include "flexure/elements/chained_bcm_model.h"
 #include "flexure/elements/ladder_models.h"
 #include "flexure/elements/load_path_newton.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

@@ -9,7 +9,7 @@
 #include "flexure/elements/ladder_models.h"
 #include "flexure/elements/load_path_newton.h"
 #include "flexure/solver/chain_model/tip_reach.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "flexure/solver/chain_model/tip_reach.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::detail::cbcm {
 

@@ -4,7 +4,7 @@
 #include <utility>
 
 #include "flexure/elements/prbm_segments.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 

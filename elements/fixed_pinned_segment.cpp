@@ -7,7 +7,7 @@
 #include "flexure/elements/prbm_curve_fits.h"
 #include "flexure/elements/prbm_segments.h"
 #include "flexure/elements/prbm_tables.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

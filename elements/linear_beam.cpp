@@ -1,5 +1,5 @@
 #include "flexure/elements/ladder_models.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 

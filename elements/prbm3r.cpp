@@ -7,8 +7,8 @@
 #include "flexure/elements/ladder_models.h"
 #include "flexure/elements/load_path_newton.h"
 #include "flexure/solver/common/csv_table.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

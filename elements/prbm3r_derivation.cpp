@@ -7,7 +7,7 @@
 #include <numeric>
 
 #include "flexure/elements/ladder_models.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 
 namespace flexure {

@@ -13,7 +13,6 @@
 #include "flexure/elements/prbm_element.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
-#include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "flexure/elements/prbm_tables.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 
 namespace flexure {

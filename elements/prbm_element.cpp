@@ -7,7 +7,7 @@
 #include <numbers>
 #include <optional>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "flexure/elements/prbm_segments.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 

@@ -23,7 +23,7 @@
 // and 4 K_Theta EI/l^2 (the exact ones are pi^2/4 and pi^2 EI/l^2; K_Theta = 2.65 at n = 0).
 #include "flexure/elements/prbm_element.h"
 #include "flexure/solver/common/end_load.h"
-#include "flexure/solver/common/stability.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 
@@ -40,7 +40,7 @@ PrbmEnergyCurvature prbm_energy_curvature(const PrbmElement& element,
                                           const EndLoad& load);
 
 // The verdict: margin = V'' / k; index 1 where the margin is below -critical_tolerance,
-// classified as stability.h says (subject "the PRBM").
+// classified as status.h says (subject "the PRBM").
 Stability prbm_stability(const PrbmElement& element,
                          double Theta,
                          const EndLoad& load,

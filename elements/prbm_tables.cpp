@@ -6,7 +6,7 @@
 
 #include "flexure/elements/data_files.h"
 #include "flexure/solver/common/csv_table.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 

@@ -30,7 +30,6 @@
 #include "flexure/io/platform/hdf5_file.h"
 #include "flexure/io/platform/provenance.h"
 #include "flexure/solver/common/end_load.h"
-#include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::io {

@@ -11,10 +11,9 @@
 #include "flexure/io/toml_files.h"
 #include "flexure/io/toml_support.h"
 #include "flexure/mechanisms/materials_fatigue.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
-#include "flexure/solver/common/plate_modulus.h"
-#include "flexure/solver/common/quantity.h"
+#include "flexure/solver/common/section.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::io {
 namespace {

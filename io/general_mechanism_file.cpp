@@ -10,7 +10,7 @@
 #include <span>
 
 #include "flexure/io/platform/provenance.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::io {
 namespace {

@@ -7,8 +7,8 @@
 #include "flexure/io/toml_files.h"
 #include "flexure/io/toml_support.h"
 #include "flexure/mechanisms/materials_fatigue.h"
-#include "flexure/solver/common/errors.h"
-#include "flexure/solver/common/quantity.h"
+#include "flexure/solver/common/section.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism::general {
 namespace {

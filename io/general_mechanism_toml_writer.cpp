@@ -8,7 +8,7 @@
 
 #include "flexure/mechanisms/general/catalogue_general.h"
 #include "flexure/mechanisms/mechanism_plate.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism::general {
 namespace {

@@ -8,7 +8,7 @@
 #include <limits>
 
 #include "flexure/io/platform/output_path.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::io {
 namespace {

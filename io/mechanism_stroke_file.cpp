@@ -14,7 +14,7 @@
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/modified_springs.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::io {
 namespace {

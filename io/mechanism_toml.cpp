@@ -12,8 +12,8 @@
 #include "flexure/io/toml_support.h"
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/materials_fatigue.h"
-#include "flexure/solver/common/errors.h"
-#include "flexure/solver/common/quantity.h"
+#include "flexure/solver/common/section.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 namespace {
@@ -23,7 +23,7 @@ using io::line_of;
 using io::toml_fail;
 
 // A positive finite number at `key` (required unless `fallback` is given); a quantity of
-// `dimension` may also be written with a unit, "50 mm" (solver/common/quantity.h). Plain numbers
+// `dimension` may also be written with a unit, "50 mm" (solver/common/section.h). Plain numbers
 // are SI.
 double positive(const toml::table& t,
                 const std::string& key,

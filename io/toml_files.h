@@ -8,7 +8,7 @@
 // InvalidInput errors that name the file, the key and its line.
 //
 // A file is in physical units (SI) when it says units = "SI" or writes any value with a unit
-// ("50 mm", "200 GPa", "4.33 N"; solver/common/quantity.h). Only then may a flexible segment give
+// ("50 mm", "200 GPa", "4.33 N"; solver/common/section.h). Only then may a flexible segment give
 // its section (E with I, or E with width and thickness) and the file a yield_strength, and only
 // then are results reported in metres, newtons and pascals. `material = "NAME"` (the file's, or a
 // segment's own) supplies E, nu and the yield strength from data/materials.csv
@@ -46,7 +46,7 @@ namespace flexure::io {
 // into every such segment's Material) and what only a file says.
 struct ChainFile : PhysicalChain {
   bool physical = false;              // SI units (units = "SI" or a value written with a unit)
-  std::vector<std::string> warnings;  // likely unit mistakes, for stderr (solver/common/quantity.h)
+  std::vector<std::string> warnings;  // likely unit mistakes, for stderr (solver/common/section.h)
   // [[contact]] tables (docs/contact.md): a rigid circle or straight stop, the tip load the
   // continuation starts from and its step count. Empty: no contact. Several tables: several
   // surfaces, one continuation (its start load and steps given in one table, or equal).
@@ -90,7 +90,7 @@ MechanismDesign load_mechanism_toml(const std::string& path);
 struct MechanismFile {
   MechanismDesign design;
   dynamics::DynamicsData dynamics;
-  // Likely unit mistakes, for stderr (solver/common/quantity.h): a modulus below 1e6 Pa (lengths
+  // Likely unit mistakes, for stderr (solver/common/section.h): a modulus below 1e6 Pa (lengths
   // are in metres), a flexure thicker than a tenth of its length.
   std::vector<std::string> warnings;
 };

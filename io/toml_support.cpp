@@ -9,7 +9,7 @@
 #include <fstream>
 #include <vector>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::io {
 

@@ -8,7 +8,7 @@
 #include <functional>
 #include <string>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cfm {
 namespace {

@@ -3,8 +3,8 @@
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/data/data_files.h"
 #include "flexure/solver/common/csv_table.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::dynamics {
 namespace {

@@ -1,8 +1,8 @@
 #include <fmt/format.h>
 
 #include "flexure/mechanisms/mechanism.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 

@@ -6,8 +6,8 @@
 #include <cctype>
 
 #include "flexure/mechanisms/prbm_virtual_work.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 

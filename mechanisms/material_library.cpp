@@ -8,7 +8,7 @@
 #include "flexure/mechanisms/data/data_files.h"
 #include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/solver/common/csv_table.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

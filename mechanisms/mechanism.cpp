@@ -12,8 +12,8 @@
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 namespace {

@@ -18,7 +18,6 @@
 
 #include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
-#include "flexure/solver/common/plate_modulus.h"
 #include "flexure/solver/common/section.h"
 
 // What a slider force is the force of. A constant-force slider mechanism is symmetric (thesis

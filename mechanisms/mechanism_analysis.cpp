@@ -7,7 +7,7 @@
 
 #include "flexure/mechanisms/cfm/constant_force.h"
 #include "flexure/mechanisms/mechanism_warnings.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 

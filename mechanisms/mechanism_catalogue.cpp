@@ -9,7 +9,7 @@
 
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/inversion.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 namespace {

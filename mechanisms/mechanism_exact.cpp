@@ -8,7 +8,7 @@
 #include "flexure/elements/prbm_segments.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/mechanisms/mechanism_stability.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 namespace {

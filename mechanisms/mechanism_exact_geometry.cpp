@@ -7,7 +7,7 @@
 #include <variant>
 
 #include "flexure/mechanisms/mechanism_analysis.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_shape.h"
 
 namespace flexure::mechanism {

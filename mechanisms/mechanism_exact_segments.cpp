@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/segment_moments.h"
 
 namespace flexure::mechanism {

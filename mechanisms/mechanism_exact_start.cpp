@@ -8,7 +8,7 @@
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/mechanisms/mechanism_stability.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_problem.h"
 
 namespace flexure::mechanism {

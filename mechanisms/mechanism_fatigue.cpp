@@ -5,7 +5,7 @@
 
 #include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 

@@ -6,7 +6,7 @@
 
 #include "flexure/elements/prbm_segments.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 namespace {

@@ -8,7 +8,7 @@
 #include "flexure/beam/method_selector.h"
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 

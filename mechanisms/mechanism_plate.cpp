@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 

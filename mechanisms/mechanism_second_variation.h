@@ -35,7 +35,7 @@
 
 #include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/second_variation.h"
-#include "flexure/solver/common/stability.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 

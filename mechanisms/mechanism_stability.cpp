@@ -9,7 +9,7 @@
 
 #include "flexure/mechanisms/mechanism_second_variation.h"
 #include "flexure/mechanisms/prbm_virtual_work.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_problem.h"
 
 namespace flexure::mechanism {

@@ -11,7 +11,7 @@
 // Both are judged from the second variation of the total potential energy of the half mechanism
 // (one half, as every model here computes; "The whole mechanism" in docs/stability.md says what
 // changes for two halves on one slider) and reported in the vocabulary of
-// solver/common/stability.h: kind, index (negative directions), margin.
+// solver/common/status.h: kind, index (negative directions), margin.
 //
 // PRBM. The pseudo-rigid-body linkage has one degree of freedom, the slider's travel Delta x
 // (Howell ch. 5; thesis §2.1.1); its energy is V = sum k_i psi_i^2 / 2 on the loop-closure
@@ -39,7 +39,7 @@
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/solver/chain_model/equilibrium_stability.h"
-#include "flexure/solver/common/stability.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 

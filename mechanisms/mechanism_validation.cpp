@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "flexure/mechanisms/mechanism_warnings.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 

@@ -7,7 +7,7 @@
 
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 std::array<std::optional<double>, 3> equivalent_spring_ratios(const MechanismDesign& design,

@@ -36,9 +36,9 @@
 #include "flexure/beam/beam_keys.h"
 #include "flexure/beam/beam_problem.h"
 #include "flexure/beam/beam_request.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/gsl_guard.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/version.h"
 #include "python/objects.h"
 

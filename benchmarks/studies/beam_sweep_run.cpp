@@ -16,7 +16,7 @@
 #include "flexure/io/beam_sweep.h"
 #include "flexure/io/platform/hdf5_file.h"
 #include "flexure/io/platform/mpi_world.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

@@ -10,7 +10,7 @@
 
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::bench {
 namespace {

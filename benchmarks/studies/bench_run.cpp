@@ -14,7 +14,7 @@
 #include "flexure/io/platform/hdf5_file.h"
 #include "flexure/io/platform/output_path.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::bench {
 namespace {

@@ -8,7 +8,7 @@
 #include "flexure/elements/prbm_cantilever.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 

@@ -7,7 +7,7 @@
 
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
 #include "flexure/mechanisms/cfm_exact.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::studies {
 namespace {

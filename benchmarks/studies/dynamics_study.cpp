@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "flexure/mechanisms/dynamics/dynamics.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

@@ -15,7 +15,7 @@
 #include "flexure/benchmarks/studies/shapes_group.h"
 #include "flexure/elements/cbcm_path.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/path_point_stability.h"
 
 namespace flexure {

@@ -15,7 +15,7 @@
 #include "flexure/io/platform/provenance.h"
 #include "flexure/io/platform/work_distribution.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 namespace {

@@ -8,7 +8,7 @@
 #include <limits>
 
 #include "flexure/beam/beam_problem.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::studies {
 namespace {

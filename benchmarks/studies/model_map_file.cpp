@@ -8,7 +8,7 @@
 #include "flexure/io/platform/hdf5_file.h"
 #include "flexure/io/platform/output_path.h"
 #include "flexure/io/platform/provenance.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::studies {
 namespace {

@@ -12,7 +12,7 @@
 #include "flexure/io/platform/output_path.h"
 #include "flexure/io/platform/provenance.h"
 #include "flexure/io/platform/work_distribution.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::studies {
 namespace {

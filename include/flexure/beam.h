@@ -12,11 +12,7 @@
 
 // Core: errors, results' status and warnings, end loads, sections and materials, stability.
 #include "flexure/solver/common/end_load.h"
-#include "flexure/solver/common/errors.h"
-#include "flexure/solver/common/plate_modulus.h"
-#include "flexure/solver/common/quantity.h"
 #include "flexure/solver/common/section.h"
-#include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/version.h"
 

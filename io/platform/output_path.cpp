@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "flexure/io/platform/temp_file_cleanup.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::io {
 namespace {

@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 
 #include "flexure/elements/prbm_segments.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cfm {
 

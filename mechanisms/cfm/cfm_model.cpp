@@ -8,7 +8,7 @@
 
 #include "flexure/mechanisms/cfm/constant_force.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cfm {
 namespace {

@@ -9,8 +9,8 @@
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
 #include "flexure/mechanisms/data/data_files.h"
 #include "flexure/solver/common/csv_table.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cfm {
 namespace {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "flexure/mechanisms/cfm/slider_crank.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cfm {
 namespace {

@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::design {
 namespace {

@@ -12,7 +12,7 @@
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/cfm_exact.h"
 #include "flexure/mechanisms/design/halton.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::design {
 namespace {

@@ -11,7 +11,7 @@
 #include "flexure/mechanisms/design/feasibility.h"
 #include "flexure/mechanisms/design/subclass_problem.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::design {
 namespace {

@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "flexure/mechanisms/builtin_designs.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::dynamics {
 namespace {

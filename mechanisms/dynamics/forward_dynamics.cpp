@@ -6,7 +6,7 @@
 #include <span>
 
 #include "flexure/mechanisms/dynamics/dynamics.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/ode/ode_integrator.h"
 
 namespace flexure::dynamics {

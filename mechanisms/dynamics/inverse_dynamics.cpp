@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "flexure/mechanisms/dynamics/dynamics.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::dynamics {
 

@@ -4,7 +4,7 @@
 
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/mechanisms/dynamics/dynamics.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::dynamics {
 namespace {

@@ -8,7 +8,7 @@
 #include "flexure/elements/ladder_models.h"
 #include "flexure/elements/prbm_segments.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism::general {
 namespace {

@@ -8,7 +8,7 @@
 #include "flexure/mechanisms/general/flexure_point_results.h"
 #include "flexure/mechanisms/general/prbm_assembly.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/segment_moments.h"
 #include "flexure/solver/shooting/shooting_problem.h"
 

@@ -8,7 +8,7 @@
 #include <set>
 #include <sstream>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism::general {
 namespace {

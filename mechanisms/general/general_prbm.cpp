@@ -6,7 +6,7 @@
 
 #include "flexure/mechanisms/general/arclength_path.h"
 #include "flexure/mechanisms/general/prbm_assembly.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism::general {
 namespace {

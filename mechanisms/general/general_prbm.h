@@ -21,7 +21,6 @@
 #include "flexure/mechanisms/general/flexure_models.h"
 #include "flexure/mechanisms/general/flexure_point_results.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
-#include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism::general {

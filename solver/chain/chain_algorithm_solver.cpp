@@ -13,7 +13,7 @@
 #include "flexure/solver/chain/chain_transfer.h"
 #include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/tip_reach.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 

@@ -21,7 +21,6 @@
 
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
-#include "flexure/solver/common/stability.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure {

@@ -11,7 +11,7 @@
 
 #include "flexure/solver/chain_model/held_stability.h"
 #include "flexure/solver/chain_model/second_variation.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

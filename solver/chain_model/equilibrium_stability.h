@@ -14,7 +14,7 @@
 //     x(L) prescribed: int sin(theta) eta ds = 0,  y(L): int cos(theta) eta ds = 0,  theta(L):
 //     eta(L) = 0;
 // eta is constant along a rigid link. The equilibrium is stable when Q is positive definite on
-// them. Reported (solver/common/stability.h):
+// them. Reported (solver/common/status.h):
 //   index  = the number of constrained eigenvalues of Q eta = lambda B eta below -tolerance,
 //   margin = the lowest of them, B[eta] = int EI eta'^2 ds the unloaded bending stiffness:
 //            1 for an unloaded chain, 1 - P/P_cr for a straight column under an axial load P,
@@ -48,14 +48,14 @@
 
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
-#include "flexure/solver/common/stability.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 
 struct DiscreteSecondVariation;  // second_variation.h (internal)
 
 struct StabilityOptions {
-  // |margin| <= this is critical (stability.h says why 1e-6).
+  // |margin| <= this is critical (status.h says why 1e-6).
   double critical_tolerance = kCriticalMarginTolerance;
   // Each discrete eigenvalue is found to this times max(1, |lambda|).
   double eigenvalue_tolerance = 1e-12;

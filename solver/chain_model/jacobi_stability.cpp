@@ -10,8 +10,8 @@
 #include <numbers>
 #include <variant>
 
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/gsl_guard.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

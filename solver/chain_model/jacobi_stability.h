@@ -36,7 +36,7 @@
 
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
-#include "flexure/solver/common/stability.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 
@@ -73,7 +73,7 @@ class JacobiSecondVariation {
   int unconstrained_count(double lambda) const;
   // The k-th (k >= 1) constrained eigenvalue below 1 by bisection, or 1 when there are fewer.
   double eigenvalue(int k) const;
-  // Index at -critical_tolerance, margin = eigenvalue(1), classified as in stability.h.
+  // Index at -critical_tolerance, margin = eigenvalue(1), classified as in status.h.
   Stability verdict() const;
   // int sqrt(sigma max(0, N . t) / EI) ds at lambda: the Jacobi solutions grow like its
   // exponential in tension, and the constraint correction, a difference of such solutions, loses

@@ -9,7 +9,7 @@
 #include <cstddef>
 #include <limits>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

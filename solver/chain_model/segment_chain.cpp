@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 

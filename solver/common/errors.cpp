@@ -1,6 +1,6 @@
-#include "flexure/solver/common/errors.h"
-
 #include <fmt/format.h>
+
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 

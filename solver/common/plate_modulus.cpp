@@ -1,12 +1,11 @@
-#include "flexure/solver/common/plate_modulus.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/section.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

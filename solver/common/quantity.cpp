@@ -1,5 +1,3 @@
-#include "flexure/solver/common/quantity.h"
-
 #include <fmt/format.h>
 
 #include <array>
@@ -7,8 +5,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
+#include "flexure/solver/common/section.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::io {
 namespace {

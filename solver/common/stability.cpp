@@ -1,11 +1,9 @@
-#include "flexure/solver/common/stability.h"
-
 #include <fmt/format.h>
 
 #include <array>
 #include <cstddef>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

@@ -6,7 +6,7 @@
 #include <limits>
 #include <numbers>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/carlson_integrals.h"
 
 namespace flexure::elliptic {

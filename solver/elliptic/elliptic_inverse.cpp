@@ -6,9 +6,9 @@
 #include <numbers>
 #include <optional>
 
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/load_search.h"
 #include "flexure/solver/common/scalar_root.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/elliptic/howell_branch.h"
 #include "flexure/solver/elliptic/howell_deflection.h"

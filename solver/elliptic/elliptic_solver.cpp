@@ -6,7 +6,7 @@
 #include <numbers>
 #include <string>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elastica_closed_form.h"
 #include "flexure/solver/elliptic/howell_branch.h"
 #include "flexure/solver/elliptic/load_continuation.h"

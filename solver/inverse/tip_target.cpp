@@ -5,8 +5,8 @@
 #include <cmath>
 #include <vector>
 
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/load_search.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 
 namespace flexure {

@@ -12,7 +12,7 @@
 #include <exception>
 #include <stdexcept>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

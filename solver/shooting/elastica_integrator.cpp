@@ -15,7 +15,7 @@
 #include <stdexcept>
 #include <variant>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/arkode_erk_piece.h"
 #include "flexure/solver/shooting/dormand_prince_piece.h"
 #include "flexure/solver/shooting/elastica_piece.h"

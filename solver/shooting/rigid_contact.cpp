@@ -13,8 +13,8 @@
 
 #include "flexure/solver/chain_model/held_stability.h"
 #include "flexure/solver/chain_model/second_variation.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/scalar_root.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_shape.h"
 
 namespace flexure {

@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 

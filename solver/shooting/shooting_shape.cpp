@@ -6,7 +6,7 @@
 #include <string>
 
 #include "flexure/solver/chain_model/held_stability.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/elastica_integrator.h"
 #include "flexure/solver/shooting/path_point_stability.h"
 #include "flexure/solver/shooting/shooting_problem.h"

@@ -9,7 +9,7 @@
 #include <optional>
 
 #include "flexure/solver/chain_model/tip_reach.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/continuation.h"
 #include "flexure/solver/shooting/control_points.h"
 #include "flexure/solver/shooting/elastica_integrator.h"

@@ -12,7 +12,7 @@
 #include <variant>
 
 #include "flexure/solver/chain_model/second_variation.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_shape.h"
 
 namespace flexure {

@@ -19,7 +19,7 @@
 #include <random>
 
 #include "flexure/elements/prbm_cantilever.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/elastica_integrator.h"
 
 namespace flexure {

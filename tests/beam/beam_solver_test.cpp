@@ -15,7 +15,7 @@
 #include <random>
 #include <string>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

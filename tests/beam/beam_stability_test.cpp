@@ -26,7 +26,7 @@
 
 #include "flexure/beam/beam_problem.h"
 #include "flexure/solver/chain_model/jacobi_stability.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 
 namespace flexure {

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

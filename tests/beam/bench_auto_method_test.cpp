@@ -14,7 +14,7 @@
 
 #include "flexure/beam/method_selector.h"
 #include "flexure/elements/prbm_segments.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 
 namespace flexure {

@@ -23,7 +23,7 @@
 #include "flexure/beam/data_files.h"
 #include "flexure/beam/ladder_selector.h"
 #include "flexure/beam/method_selector.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "tests/support/data_file_support.h"
 

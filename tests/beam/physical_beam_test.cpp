@@ -21,7 +21,7 @@
 #include <random>
 #include <string>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "tests/support/physical_beam_support.h"
 
 namespace flexure {

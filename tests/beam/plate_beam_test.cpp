@@ -21,7 +21,7 @@
 #include <string>
 
 #include "flexure/beam/physical_beam.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

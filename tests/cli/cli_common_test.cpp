@@ -9,7 +9,7 @@
 
 #include <limits>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cli {
 namespace {

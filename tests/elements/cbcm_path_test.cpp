@@ -19,7 +19,7 @@
 #include <iostream>
 #include <random>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {

@@ -25,7 +25,7 @@
 #include <random>
 #include <string>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 

@@ -8,7 +8,7 @@
 
 #include "flexure/elements/ladder_models.h"
 #include "flexure/solver/common/csv_table.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 
 namespace flexure {

@@ -22,7 +22,7 @@
 #include <string>
 
 #include "flexure/elements/prbm_tables.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 
 namespace flexure {

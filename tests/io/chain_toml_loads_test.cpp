@@ -8,7 +8,7 @@
 #include <string>
 
 #include "flexure/io/toml_files.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

@@ -12,7 +12,7 @@
 #include <variant>
 
 #include "flexure/io/toml_files.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

@@ -8,7 +8,7 @@
 
 #include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/general/general_prbm.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism::general {
 namespace {

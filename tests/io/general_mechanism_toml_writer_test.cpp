@@ -16,7 +16,7 @@
 #include "flexure/mechanisms/general/catalogue_general.h"
 #include "flexure/mechanisms/general/general_prbm.h"
 #include "flexure/mechanisms/mechanism_catalogue.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism::general {
 namespace {

@@ -12,7 +12,7 @@
 #include <thread>
 
 #include "flexure/io/beam_sweep.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/version.h"
 #include "tests/support/cli_test_support.h"
 

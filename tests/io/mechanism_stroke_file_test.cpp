@@ -12,7 +12,7 @@
 
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "tests/support/cli_test_support.h"
 
 namespace flexure::test {

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "tests/support/cli_test_support.h"
 
 namespace flexure::test {

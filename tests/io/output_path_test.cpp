@@ -37,7 +37,7 @@
 
 #include "flexure/io/platform/hdf5_file.h"
 #include "flexure/io/platform/provenance.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "tests/support/cli_test_support.h"
 
 namespace flexure::io {

@@ -12,7 +12,7 @@
 
 #include "flexure/beam/physical_beam.h"
 #include "flexure/io/toml_files.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "tests/support/physical_beam_support.h"
 
 namespace flexure {

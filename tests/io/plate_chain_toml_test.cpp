@@ -14,7 +14,7 @@
 
 #include "flexure/beam/physical_beam.h"
 #include "flexure/io/toml_files.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

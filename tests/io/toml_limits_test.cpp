@@ -15,7 +15,7 @@
 
 #include "flexure/io/toml_files.h"
 #include "flexure/io/toml_support.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "tests/support/cli_test_support.h"
 
 namespace flexure::io {

@@ -26,7 +26,7 @@
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_catalogue.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism::general {
 namespace {

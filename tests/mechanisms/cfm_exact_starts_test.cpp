@@ -10,7 +10,7 @@
 
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/design/cfm_exact_refinement.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::design {
 namespace {

@@ -23,7 +23,7 @@
 #include <string>
 
 #include "flexure/mechanisms/cfm/slider_crank.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::cfm {
 namespace {

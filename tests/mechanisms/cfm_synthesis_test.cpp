@@ -11,7 +11,7 @@
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::design {
 namespace {

@@ -19,7 +19,7 @@
 #include <limits>
 
 #include "flexure/mechanisms/materials_fatigue.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

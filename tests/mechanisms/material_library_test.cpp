@@ -9,7 +9,7 @@
 #include "flexure/mechanisms/data/data_files.h"
 #include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/solver/common/csv_table.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "tests/support/data_file_support.h"
 
 namespace flexure {

@@ -19,7 +19,7 @@
 #include "flexure/mechanisms/design/feasibility.h"
 #include "flexure/mechanisms/design/mechanism_synthesis.h"
 #include "flexure/mechanisms/mechanism.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::design {
 namespace {

@@ -14,7 +14,7 @@
 
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 namespace {

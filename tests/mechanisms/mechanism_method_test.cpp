@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "flexure/mechanisms/mechanism_analysis.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "tests/support/cli_test_support.h"
 
 namespace flexure::mechanism {

@@ -31,8 +31,8 @@
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/gsl_guard.h"
+#include "flexure/solver/common/status.h"
 #include "tests/support/cli_test_support.h"
 #include "tests/support/mechanism_test_support.h"
 

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "flexure/mechanisms/mechanism.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 namespace {

@@ -21,7 +21,7 @@
 #include "flexure/mechanisms/cfm/constant_force.h"
 #include "flexure/mechanisms/cfm_comparison.h"
 #include "flexure/mechanisms/mechanism.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 namespace {

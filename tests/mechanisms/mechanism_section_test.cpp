@@ -16,8 +16,8 @@
 
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/section.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 namespace {

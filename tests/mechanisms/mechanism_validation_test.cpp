@@ -22,7 +22,7 @@
 
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/mechanism_catalogue.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 namespace {

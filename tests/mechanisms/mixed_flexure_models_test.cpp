@@ -12,7 +12,7 @@
 #include "flexure/mechanisms/general/flexure_models.h"
 #include "flexure/mechanisms/general/general_exact.h"
 #include "flexure/mechanisms/mechanism.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism::general {
 namespace {

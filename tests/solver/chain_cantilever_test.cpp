@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "flexure/solver/chain/chain_algorithm_solver.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 
 namespace flexure {

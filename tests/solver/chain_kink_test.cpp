@@ -18,7 +18,7 @@
 
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/chain_model/segment_chain.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 #include "tests/support/cli_test_support.h"
 

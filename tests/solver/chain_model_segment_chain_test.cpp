@@ -11,7 +11,7 @@
 #include <numbers>
 
 #include "flexure/solver/chain_model/segment_chain.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

@@ -16,8 +16,8 @@
 #include <optional>
 #include <random>
 
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/load_search.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/elliptic/howell_deflection.h"
 

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "flexure/solver/common/csv_table.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elastica_closed_form.h"
 #include "flexure/solver/elliptic/tip_chart.h"
 #include "flexure/solver/shooting/shooting_solver.h"

@@ -18,7 +18,7 @@
 #include <string>
 
 #include "flexure/solver/chain/chain_algorithm_solver.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/inverse/tip_target.h"
 #include "flexure/solver/shooting/shooting_solver.h"

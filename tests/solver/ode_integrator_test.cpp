@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

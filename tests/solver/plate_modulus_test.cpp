@@ -1,4 +1,4 @@
-// What is checked against what (solver/common/plate_modulus.h, docs/plate-modulus.md):
+// What is checked against what (solver/common/section.h, docs/plate-modulus.md):
 //  * the share of the plate stiffening, plate_fraction(beta, nu), against an independent numerical
 //    solution of the strip's edge problem: f'''' + 4 f = 0 on [0, t] integrated by classical RK4
 //    from the centre line (f'(0) = f'''(0) = 0, two unknown starting values fitted to the free
@@ -13,8 +13,6 @@
 //    needs no nu; on or auto without nu, auto without a width, bad names are InvalidInput naming
 //    the field; auto picks the plate for a 127 mm x 1.31 mm strip bent to R = 0.1 m (beta = 123)
 //    and the beam for a 1.31 mm square bar at the same curvature (beta = 0.013).
-#include "flexure/solver/common/plate_modulus.h"
-
 #include <gtest/gtest.h>
 
 #include <array>
@@ -22,7 +20,8 @@
 #include <functional>
 #include <string>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/section.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 namespace {

@@ -1,17 +1,16 @@
-// Unit suffixes (solver/common/quantity.h) against the exact definitions: 1 in = 0.0254 m and 1 lbf
+// Unit suffixes (solver/common/section.h) against the exact definitions: 1 in = 0.0254 m and 1 lbf
 // = 4.4482216152605 N exactly (NIST SP 811, appendix B), so 1 psi = 6894.757293168361 Pa; SI
 // prefixes are powers of ten. Plain numbers are SI. Wrong dimensions, unknown units and near misses
 // are errors naming the option; the three unit-mistake warnings fire on the documented thresholds
 // only.
-#include "flexure/solver/common/quantity.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 #include <string>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/section.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::io {
 namespace {

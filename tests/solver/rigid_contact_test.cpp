@@ -28,7 +28,7 @@
 #include <random>
 
 #include "flexure/solver/chain_model/segment_chain.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {

@@ -34,8 +34,8 @@
 #include <numbers>
 #include <random>
 
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/gsl_guard.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/shooting/elastica_integrator.h"
 #include "flexure/solver/shooting/path_point_stability.h"

@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "flexure/solver/chain_model/segment_chain.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 

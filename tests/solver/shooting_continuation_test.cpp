@@ -16,7 +16,7 @@
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/chain_model/tip_reach.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {

@@ -18,7 +18,7 @@
 #include <sstream>
 #include <string>
 
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/shooting/elastica_integrator.h"
 #include "flexure/solver/shooting/shooting_problem.h"

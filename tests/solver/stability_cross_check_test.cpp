@@ -28,8 +28,8 @@
 
 #include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/jacobi_stability.h"
-#include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/scalar_root.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elastica_closed_form.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/shooting/elastica_integrator.h"

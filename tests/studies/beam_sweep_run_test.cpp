@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "flexure/beam/beam_problem.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "tests/support/cli_test_support.h"
 
 namespace flexure::test {

@@ -32,7 +32,7 @@
 #include <vector>
 
 #include "flexure/benchmarks/studies/bench_run.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "tests/support/cli_test_support.h"
 

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "flexure/benchmarks/studies/dynamics_study_file.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "tests/support/cli_test_support.h"
 
 namespace flexure::test {

@@ -16,7 +16,7 @@
 #include <string>
 
 #include "flexure/mechanisms/mechanism_analysis.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 namespace {

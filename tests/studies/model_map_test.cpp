@@ -16,7 +16,7 @@
 
 #include "flexure/elements/ladder_models.h"
 #include "flexure/elements/prbm_cantilever.h"
-#include "flexure/solver/common/errors.h"
+#include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure::studies {
