@@ -14,11 +14,9 @@
 
 #include "flexure/beam/beam_method.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
-#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/common/status.h"
-#include "flexure/solver/shooting/shooting_options.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {

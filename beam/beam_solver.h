@@ -18,7 +18,7 @@
 #include "flexure/beam/beam_method.h"
 #include "flexure/beam/beam_problem.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
-#include "flexure/solver/shooting/shooting_options.h"
+#include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {
 

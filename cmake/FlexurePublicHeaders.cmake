@@ -22,14 +22,10 @@ set(FLEXURE_PUBLIC_HEADERS
   solver/common/section.h
   solver/common/status.h
   solver/chain/chain_algorithm_solver.h
-  solver/chain_model/equilibrium_stability.h
   solver/chain_model/segment_chain.h
-  solver/elliptic/elastica_parameters.h
   solver/elliptic/elliptic_solver.h
   solver/inverse/tip_target.h
   solver/shooting/rigid_contact.h
-  solver/shooting/shooting_options.h
-  solver/shooting/shooting_shape.h
   solver/shooting/shooting_solver.h
   beam/beam_method.h
   beam/beam_problem.h

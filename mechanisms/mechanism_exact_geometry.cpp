@@ -8,7 +8,7 @@
 
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/status.h"
-#include "flexure/solver/shooting/shooting_shape.h"
+#include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure::mechanism {
 namespace {

@@ -2,7 +2,7 @@
 // The exact (elastica) shapes of a mechanism's flexures at the end of the stroke, for drawings
 // (io/mechanism_drawing.h, docs/drawings.md): the exact model's solved point at Delta x = stroke
 // (mechanism_exact.h, the stroke `mechanism analyze` solves) is integrated again from its unknowns
-// at chosen arc lengths (solver/shooting/shooting_shape.h) -- every flexible segment's two ends
+// at chosen arc lengths (solver/shooting/shooting_solver.h) -- every flexible segment's two ends
 // and `samples` points along it, every rigid piece's two ends -- and placed in the drawing frame
 // of mechanism_geometry.h: the chain's root at the ground attachment (the ground clamp of an s or
 // l pivot 1, pin 1), +x along the slider axis; a middle-pin coupler chain from the displaced

@@ -1,7 +1,7 @@
 #pragma once
 // The second variation of the total potential energy of a mechanism's elastic path, from the
 // ground to the slider through pins: the discretisation of the chain's stability verdict
-// (solver/chain_model/equilibrium_stability.h, docs/stability.md) extended to the exact models of
+// (solver/chain_model/segment_chain.h, docs/stability.md) extended to the exact models of
 // mechanisms whose elastic system is not one segment chain (docs/stability.md "Mechanisms").
 //
 // A mechanism of docs/mechanisms.md is, seen from the ground, one path of flexures and rigid links
@@ -26,15 +26,15 @@
 // The linear algebra is the chain's: B tridiagonal (zero across a hinge), W = (N . t) lumped
 // diagonal, at most two constraint rows, the bordered-matrix inertia and Newton's method on the
 // bordered determinant of solver/chain_model/second_variation.h, Romberg over the grids of every
-// node, every 2nd and every 4th (equilibrium_stability.h). Only the eigenvalues' lower bracket
+// node, every 2nd and every 4th (segment_chain.h). Only the eigenvalues' lower bracket
 // differs: the chain's bound from B's flexibility does not exist where B is singular, so it is
 // found by the inertia count (count(lo) = 0).
 #include <array>
 #include <string_view>
 #include <vector>
 
-#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/second_variation.h"
+#include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {

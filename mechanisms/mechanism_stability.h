@@ -28,7 +28,7 @@
 // Exact. The elastic path from the ground to the slider (mechanism_second_variation.h), with the
 // shape, the internal force and the reactions of the solved point; margin as a chain's (1
 // unloaded, 1 - P/P_cr for a column, 0 critical). A serial chain (ssp, slp, sss) is judged by
-// solver/chain_model/equilibrium_stability.h itself wherever its end is one of the chain's end
+// solver/chain_model/segment_chain.h itself wherever its end is one of the chain's end
 // conditions (displacement control: pinned or fixed; force control with a pin at the slider:
 // slider end); the path's discretisation judges the rest (the force control of a flexure clamped
 // into the slider: y and angle held, x free; the pinned crank of psp and plp; the rigid two-force
@@ -38,7 +38,7 @@
 
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/solver/chain_model/equilibrium_stability.h"
+#include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
@@ -63,7 +63,7 @@ PointStability prbm_point_stability(const MechanismDesign& design,
 // Exact verdicts of a converged point of ExactMechanismSolver for `design` (kNotChecked with the
 // reason for an unconverged point). The shape is integrated again from the point's unknowns at
 // the stations the verdict needs, doubled until the margin's estimated error is below
-// options.margin_accuracy (equilibrium_stability.h). Throws NoConvergence when that integration
+// options.margin_accuracy (segment_chain.h). Throws NoConvergence when that integration
 // fails or does not close the mechanism (the tip misses the slider joint or pivot 2 by more than
 // 1e-7 of the slider's distance).
 PointStability exact_point_stability(const MechanismDesign& design,

@@ -1,4 +1,4 @@
-// Speed of the stability verdict (solver/chain_model/equilibrium_stability.h), for
+// Speed of the stability verdict (solver/chain_model/segment_chain.h), for
 // docs/performance.md. One iteration = one verdict from a shape already sampled at the stations
 // (BM_Verdict*), or the sampling itself (BM_Shape*), or the independent Jacobi method
 // (BM_JacobiReference, a test reference). The yardstick, measured in the same run, is one elliptic
@@ -13,10 +13,9 @@
 
 #include <vector>
 
-#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/jacobi_stability.h"
+#include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
-#include "flexure/solver/shooting/shooting_shape.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {

@@ -12,7 +12,6 @@
 #include "flexure/benchmarks/studies/shapes_group.h"
 #include "flexure/io/platform/hdf5_file.h"
 #include "flexure/io/platform/provenance.h"
-#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_solver.h"

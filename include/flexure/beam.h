@@ -19,13 +19,10 @@
 // The solvers: elliptic integrals, shooting (with its options and load paths, the shape at any arc
 // length, rigid contact), Howell's chain algorithm, the stability verdict, tip targets.
 #include "flexure/solver/chain/chain_algorithm_solver.h"
-#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/inverse/tip_target.h"
 #include "flexure/solver/shooting/rigid_contact.h"
-#include "flexure/solver/shooting/shooting_options.h"
-#include "flexure/solver/shooting/shooting_shape.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 // The beam layer: problems by any method, the method choice, physical beams and chains.

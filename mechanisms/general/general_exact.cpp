@@ -17,7 +17,7 @@
 #include "flexure/mechanisms/general/flexure_point_results.h"
 #include "flexure/mechanisms/general/flexure_stress.h"
 #include "flexure/mechanisms/general/prbm_assembly.h"
-#include "flexure/solver/chain_model/equilibrium_stability.h"
+#include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/elastica_integrator.h"
 

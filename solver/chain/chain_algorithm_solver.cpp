@@ -11,7 +11,7 @@
 #include "flexure/solver/chain/chain_fixed_point.h"
 #include "flexure/solver/chain/chain_pass.h"
 #include "flexure/solver/chain/chain_transfer.h"
-#include "flexure/solver/chain_model/equilibrium_stability.h"
+#include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/chain_model/tip_reach.h"
 #include "flexure/solver/common/status.h"
 

@@ -1,5 +1,3 @@
-#include "flexure/solver/chain_model/equilibrium_stability.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -11,6 +9,7 @@
 
 #include "flexure/solver/chain_model/held_stability.h"
 #include "flexure/solver/chain_model/second_variation.h"
+#include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure {

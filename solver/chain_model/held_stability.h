@@ -1,11 +1,10 @@
 #pragma once
-// The stability verdict with the tip coordinates held given explicitly (equilibrium_stability.h
+// The stability verdict with the tip coordinates held given explicitly (segment_chain.h
 // takes them from the chain's end condition): a path under displacement control holds the
 // controlled coordinate too, and the first stage of a staged path releases one, so the equilibrium
 // is judged under the constraints it is actually held by (docs/stability.md, "Points of a path").
 // A free end with its x held, say, is no end condition of segment_chain.h, but it is a constraint
 // of the second variation: int sin(theta) eta ds = 0.
-#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 
 namespace flexure {

@@ -1,6 +1,6 @@
 #pragma once
 // Stability of a segment chain's equilibrium from the continuous Jacobi equation: the independent
-// second method behind equilibrium_stability.h (docs/stability.md, "Method 2"). It shares no
+// second method behind segment_chain.h (docs/stability.md, "Method 2"). It shares no
 // discretisation with the discrete second variation; the tests compare the two.
 //
 // The second variation Q[eta] = int EI eta'^2 + (N . t) eta^2 ds (eta(0) = 0) and the count of its

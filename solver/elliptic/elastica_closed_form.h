@@ -13,8 +13,8 @@
 // near the separatrix is formed from sin(t/2) and cos(t/2) without cancellation. Shooting from the
 // tip (rather than from the clamp with the root moment) is well conditioned for tension loads,
 // where the beam approaches the pendulum's unstable top towards the tip.
-#include "flexure/solver/elliptic/elastica_parameters.h"
 #include "flexure/solver/elliptic/elliptic_functions.h"
+#include "flexure/solver/elliptic/elliptic_solver.h"
 
 namespace flexure::elliptic {
 

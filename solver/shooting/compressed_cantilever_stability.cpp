@@ -6,7 +6,7 @@
 #include <numbers>
 #include <variant>
 
-#include "flexure/solver/chain_model/equilibrium_stability.h"
+#include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/shooting/tension_stability.h"
 
 // The four-lane (AVX2) expansion, chosen at run time (TaylorStep).

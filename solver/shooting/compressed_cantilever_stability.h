@@ -5,7 +5,7 @@
 // Jacobi equation along the solution").
 //
 // The second variation Q[eta] = int EI eta'^2 + (F . t) eta^2 ds (eta(0) = 0, free tip angle;
-// equilibrium_stability.h) has, relative to B[eta] = int EI eta'^2 ds, an eigenvalue lambda < 1
+// segment_chain.h) has, relative to B[eta] = int EI eta'^2 ds, an eigenvalue lambda < 1
 // where B + sigma W is singular, sigma = 1 / (1 - lambda), W[eta] = int (F . t) eta^2 ds: where the
 // Jacobi equation (EI u')' = sigma (F . t) u has a solution with u(0) = 0 and EI u'(L) = 0 (the
 // natural condition of the free tip). By Sturm oscillation (the count of Method 2 in
@@ -50,7 +50,6 @@
 // forms of the straight column.
 #include <optional>
 
-#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_solver.h"

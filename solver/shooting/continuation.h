@@ -16,8 +16,8 @@
 
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/newton.h"
-#include "flexure/solver/shooting/shooting_options.h"
 #include "flexure/solver/shooting/shooting_problem.h"
+#include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {
 

@@ -22,7 +22,7 @@
 
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
-#include "flexure/solver/shooting/shooting_options.h"
+#include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {
 
@@ -61,7 +61,7 @@ class StepObserver;  // elastica_piece.h
 
 class ElasticaIntegrator {
  public:
-  // The backends and the integrator's settings (shooting_options.h: IntegratorBackend,
+  // The backends and the integrator's settings (shooting_solver.h: IntegratorBackend,
   // IntegratorOptions), under their old names.
   using Backend = IntegratorBackend;
   using Options = IntegratorOptions;

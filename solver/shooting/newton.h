@@ -9,8 +9,8 @@
 #include <string>
 
 #include "flexure/solver/common/status.h"
-#include "flexure/solver/shooting/shooting_options.h"
 #include "flexure/solver/shooting/shooting_problem.h"
+#include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {
 

@@ -8,7 +8,6 @@
 // controlled coordinate too, whose conjugate load is then the support's reaction. So one
 // equilibrium can be unstable under load control and stable under displacement control.
 
-#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 

@@ -15,7 +15,7 @@
 #include "flexure/solver/chain_model/second_variation.h"
 #include "flexure/solver/common/scalar_root.h"
 #include "flexure/solver/common/status.h"
-#include "flexure/solver/shooting/shooting_shape.h"
+#include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {
 
@@ -1094,7 +1094,7 @@ Stability ContactRun::verdict(bool contact, double variable) {
 // contact point rolls to where the varied beam is lowest, and with d g_s = (nu . n) eta(s_p),
 // g_ss = kappa(s_p) (nu . n), the second variation gains the point term
 //     P eta(s_p)^2 / |kappa(s_p)|      (kappa = theta' on the beam's side of the stop).
-// Assembled on the chain cut at s_p (the discrete second variation of equilibrium_stability.h,
+// Assembled on the chain cut at s_p (the discrete second variation of segment_chain.h,
 // every 1st, 2nd and 4th sample, Romberg-extrapolated like the chain's own verdict) with the
 // constraint row and the point term added at the dof of the cut.
 Stability ContactRun::point_verdict() {

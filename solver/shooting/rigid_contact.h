@@ -42,7 +42,6 @@
 #include <string>
 #include <vector>
 
-#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/common/status.h"
@@ -142,7 +141,7 @@ class RigidContactSolver {
     int gap_samples = 401;             // shape samples for the penetration check
     int shape_points = 0;              // > 1: return the shape at this many points
     bool judge_stability = true;       // ContactResult::stability (false: not_checked)
-    StabilityOptions stability;        // its accuracy (equilibrium_stability.h)
+    StabilityOptions stability;        // its accuracy (segment_chain.h)
     // Throws InvalidInput naming the first field outside its range.
     void validate() const;
   };

@@ -29,7 +29,7 @@
 
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/shooting/elastica_integrator.h"
-#include "flexure/solver/shooting/shooting_options.h"
+#include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {
 

@@ -1,5 +1,3 @@
-#include "flexure/solver/shooting/shooting_shape.h"
-
 #include <fmt/format.h>
 
 #include <cmath>
@@ -10,6 +8,7 @@
 #include "flexure/solver/shooting/elastica_integrator.h"
 #include "flexure/solver/shooting/path_point_stability.h"
 #include "flexure/solver/shooting/shooting_problem.h"
+#include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {
 
@@ -69,7 +68,7 @@ Stability path_point_stability(const SegmentChain& chain,
         fmt::format("a follower force of {:.6g} acts at the tip", chain.tip_load.follower));
   }
   // The same equilibrium with every tip load dead and given: the support's reactions act like dead
-  // loads in the second variation (equilibrium_stability.h), the held coordinates are its
+  // loads in the second variation (segment_chain.h), the held coordinates are its
   // constraints.
   SegmentChain free = chain;
   free.end = EndCondition::kFree;

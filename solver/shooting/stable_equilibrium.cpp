@@ -13,7 +13,7 @@
 
 #include "flexure/solver/chain_model/second_variation.h"
 #include "flexure/solver/common/status.h"
-#include "flexure/solver/shooting/shooting_shape.h"
+#include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {
 namespace {

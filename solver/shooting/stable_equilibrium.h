@@ -31,7 +31,6 @@
 #include <string>
 #include <vector>
 
-#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_solver.h"

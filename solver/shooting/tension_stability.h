@@ -2,7 +2,7 @@
 // The stability verdict of a uniform cantilever under a dead tip load that is nowhere compressed,
 // without an eigenproblem (docs/stability.md, "A cantilever in tension").
 //
-// The second variation Q[eta] = int EI eta'^2 + int (N . t) eta^2 (equilibrium_stability.h) has
+// The second variation Q[eta] = int EI eta'^2 + int (N . t) eta^2 (segment_chain.h) has
 // margin 1 + min over eta of int (N . t) eta^2 / int EI eta'^2: exactly 1 (no eigenvalue below 1;
 // index 0, stable) when N . t >= 0 along the whole beam, and below 1 as soon as any stretch is
 // compressed. For one uniform flexible segment (no EI profile, kappa0 = 0, no distributed or
@@ -30,7 +30,6 @@
 // random loads.
 #include <optional>
 
-#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_solver.h"

@@ -19,7 +19,7 @@
 #include <sstream>
 
 #include "flexure/solver/chain/chain_algorithm_solver.h"
-#include "flexure/solver/chain_model/equilibrium_stability.h"
+#include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/scalar_root.h"
 #include "flexure/solver/elliptic/elastica_closed_form.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
@@ -153,7 +153,7 @@ TEST(ChainSelfCheck, UnstableFixedPointsOfThePassesAreRefused) {
       EXPECT_NEAR(c.tip_pose.theta0, exact, kChainTolerance);
     } else {
       // Refused for the reason this test is about: the state the passes reached is an unstable
-      // equilibrium (the second variation has a negative direction, equilibrium_stability.h) away
+      // equilibrium (the second variation has a negative direction, segment_chain.h) away
       // from the load path's end, and the message says so and names the way out (shooting).
       ++refused;
       EXPECT_NE(c.message.find("unstable"), std::string::npos) << c.message;

@@ -20,7 +20,7 @@
 #include <sstream>
 #include <string>
 
-#include "flexure/solver/chain_model/equilibrium_stability.h"
+#include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/shooting/elastica_integrator.h"
 #include "flexure/solver/shooting/shooting_solver.h"

@@ -1,5 +1,5 @@
 // The stability verdict against closed forms (docs/stability.md, "Validation"), by both methods:
-// the discrete second variation (equilibrium_stability.h) and the continuous Jacobi count
+// the discrete second variation (segment_chain.h) and the continuous Jacobi count
 // (jacobi_stability.h).
 //
 //  * Straight cantilever under an axial compression P: the critical loads are (2k - 1)^2 pi^2 / 4
@@ -24,9 +24,9 @@
 #include <numbers>
 #include <vector>
 
-#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/jacobi_stability.h"
 #include "flexure/solver/chain_model/second_variation.h"
+#include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/scalar_root.h"
 
 namespace flexure {

@@ -1,6 +1,6 @@
 // The stability verdict by two independent methods (issue 27; docs/stability.md, "Validation"):
 //   method 1, equilibrium_stability(): the discrete second variation on sampled positions,
-//     bordered-matrix inertia and Newton/Romberg eigenvalues (equilibrium_stability.h);
+//     bordered-matrix inertia and Newton/Romberg eigenvalues (segment_chain.h);
 //   method 2, JacobiSecondVariation: the continuous Jacobi equation, a Pruefer-angle count with
 //     the constraint correction by inhomogeneous Jacobi solutions and bisection for the margin
 //     (jacobi_stability.h), on a theta(s) of its own: the elastica integrated from the clamp's
@@ -26,15 +26,14 @@
 #include <sstream>
 #include <string>
 
-#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/jacobi_stability.h"
+#include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/scalar_root.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elastica_closed_form.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/shooting/elastica_integrator.h"
 #include "flexure/solver/shooting/shooting_problem.h"
-#include "flexure/solver/shooting/shooting_shape.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 #include "tests/support/stability_test_support.h"
 

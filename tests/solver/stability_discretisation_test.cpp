@@ -17,9 +17,9 @@
 #include <random>
 #include <vector>
 
-#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/jacobi_stability.h"
 #include "flexure/solver/chain_model/second_variation.h"
+#include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/elastica_integrator.h"
 #include "flexure/solver/shooting/shooting_problem.h"

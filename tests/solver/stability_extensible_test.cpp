@@ -1,5 +1,5 @@
 // The stability verdict of extensible and shear-flexible (Reissner) chains and of chains under dead
-// distributed loads (docs/extensible.md, "Stability"; equilibrium_stability.h), against values
+// distributed loads (docs/extensible.md, "Stability"; segment_chain.h), against values
 // that share nothing with the verdict's condensed second variation and its compliant constraints:
 //
 //  * Straight columns (L = 1, EI = 1) under an axial compression P, from the linearised
@@ -33,9 +33,8 @@
 #include <numbers>
 #include <vector>
 
-#include "flexure/solver/chain_model/equilibrium_stability.h"
+#include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/scalar_root.h"
-#include "flexure/solver/shooting/shooting_shape.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {

@@ -25,11 +25,10 @@
 #include <random>
 #include <string>
 
-#include "flexure/solver/chain_model/equilibrium_stability.h"
 #include "flexure/solver/chain_model/jacobi_stability.h"
 #include "flexure/solver/chain_model/second_variation.h"
+#include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/status.h"
-#include "flexure/solver/shooting/shooting_shape.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 #include "tests/support/stability_test_support.h"
 

@@ -24,9 +24,8 @@
 #include <sstream>
 #include <string>
 
-#include "flexure/solver/chain_model/equilibrium_stability.h"
+#include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
-#include "flexure/solver/shooting/shooting_shape.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 #include "tests/support/cantilever_load_families.h"
 

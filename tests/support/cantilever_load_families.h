@@ -13,10 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "flexure/solver/chain_model/equilibrium_stability.h"
+#include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
-#include "flexure/solver/shooting/shooting_shape.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure::test {
