@@ -6,7 +6,7 @@
 // A rung qualifies when its mapped error bound E per length (ladder_selector.h: 1.5 times the
 // largest error at the measured loads around this one) gives, with the tip displacement d of its
 // own answer, a relative error bound E / (d - E) within problem.tolerance (the relative tip error
-// of --tol, method_selector.h); the 1R PRBM also has to be inside Howell's validity limits. The
+// of --tol, beam_problem.h); the 1R PRBM also has to be inside Howell's validity limits. The
 // rungs are tried cheapest first and only while they are cheaper than the elliptic solution at
 // this load; a rung whose bound cannot meet the tolerance whatever its answer (E / 2 > tolerance,
 // as the exact displacement is at most 2 l) is passed over without a solve.

@@ -13,7 +13,6 @@
 #include <utility>
 #include <vector>
 
-#include "flexure/beam/beam_method.h"
 #include "flexure/beam/beam_problem.h"
 #include "flexure/beam/beam_request.h"
 #include "flexure/beam/physical_beam.h"

@@ -12,7 +12,6 @@
 //     profile (the shooting method and the chain algorithm solve those).
 // A given tip angle or deflection (the inverse problems) is solved for the free cantilever by the
 // model's own forward solves (solver/inverse/tip_target.h).
-#include "flexure/beam/beam_method.h"
 #include "flexure/beam/beam_problem.h"
 
 namespace flexure {

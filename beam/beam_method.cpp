@@ -1,7 +1,6 @@
-#include "flexure/beam/beam_method.h"
-
 #include <fmt/format.h>
 
+#include "flexure/beam/beam_problem.h"
 #include "flexure/elements/ladder_models.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/common/status.h"

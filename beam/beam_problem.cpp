@@ -10,7 +10,6 @@
 #include "flexure/beam/beam_auto_ladder.h"
 #include "flexure/beam/beam_ladder.h"
 #include "flexure/beam/beam_solution_parts.h"
-#include "flexure/beam/method_selector.h"
 #include "flexure/elements/prbm_cantilever.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/status.h"

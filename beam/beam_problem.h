@@ -1,23 +1,89 @@
 #pragma once
+// Beam problems in one header: BeamProblem and solve_beam, the methods (BeamMethod), the solver
+// object (BeamSolver) and the choice of auto.
+//
 // A beam problem solved by any method: the cantilever of Howell ch. 2 with an end load (or any
 // segment chain and end condition), forward (the load is given) or inverse (the tip angle theta0
 // or the deflection b/l is given and the load alpha2 is found), with the method named or chosen by
 // `auto`. This is what `flexure beam`, `flexure sweep beam` and `flexure validate` call.
 //
-// To add a method: a value of BeamMethod (beam_method.h), a branch in solve_beam()
+// To add a method: a value of BeamMethod (below), a branch in solve_beam()
 // (beam_problem.cpp) that fills a BeamSolution from that solver's result, and, if `auto` should
 // consider it, a rule in method_selector.cpp (docs/architecture.md, "Adding a beam method").
+//
+// The methods that solve a beam problem: their names as the
+// tool spells them, and the convergence tolerance each one works to.
+//
+// A beam solver in the library's one calling style (a solver object with validated Options, a
+// result that derives from SolveStatus): the method and its numerical settings here, the problem
+// (what is loaded and what is given) in BeamProblem.
+//
+//   flexure::BeamSolver::Options options;
+//   options.method = flexure::BeamMethod::kShooting;
+//   const flexure::BeamSolver solver(options);  // InvalidInput for a bad setting, naming it
+//   flexure::BeamProblem problem;
+//   problem.value = 3.0;  // alpha2 = P l^2/EI
+//   const flexure::BeamSolution s = solver.solve(problem);
+//
+// solve_beam(method, problem) stays the shorthand; it reads the same settings from the
+// problem's fields (elements, increments, chain_variant, integrator, tolerance, ...), which
+// BeamSolver::solve overwrites with the Options.
+//
+// Method `auto`: the cheapest model whose error for this load is within the tolerance
+// ("model no more than a scene needs": the cheapest model that meets the tolerance).
+//
+// Order of preference (cheapest model first): the PRBM fixed-pinned segment (one pivot, one
+// spring), the exact elliptic solution, the shooting solver. The PRBM is taken only when
+//   * the load is one Howell's fixed-pinned element models (free cantilever, tip force, mu = 0,
+//     -5 <= n <= 10 from Table 5.1),
+//   * its PRB angle is inside the validity limits Theta_max(gamma) and Theta_max(K_theta)
+//     (Howell eqs. 5.47, 5.63), and
+//   * the error measured by `flexure bench` (cantilever_force/prbm, the accuracy map of
+//     docs/benchmarks.md) at the neighbouring measured loads is within the tolerance.
+// The elliptic solution (error ~1e-14) serves every other free cantilever with dead loads; the
+// shooting solver (rtol 1e-12; measured error below 1e-9) every other chain and end condition.
+#include <array>
 #include <limits>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
-#include "flexure/beam/beam_method.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_solver.h"
+
+namespace flexure {
+
+enum class BeamMethod {
+  kAuto,      // the cheapest method whose error is within the tolerance (choose_beam_method)
+  kElliptic,  // exact elliptic-integral elastica (solver/elliptic)
+  kShooting,  // shooting method with continuation (solver/shooting)
+  kChain,     // Howell's chain algorithm (solver/chain)
+  kPrbm,      // pseudo-rigid-body model (elements/prbm_cantilever.h)
+  // The cheaper models of the ladder (beam_ladder.h, docs/models.md):
+  kLinear,  // linear Euler-Bernoulli theory (elements/ladder_models.h)
+  kPrbm3r,  // Su's pseudo-rigid-body 3R model (elements/ladder_models.h)
+  kBcm,     // the beam-constraint model, one element (elements/ladder_models.h)
+  kCbcm,    // the chained beam-constraint model (elements/ladder_models.h)
+};
+
+// "auto", "elliptic", "shooting", "chain", "prbm", "linear", "prbm3r", "bcm", "cbcm", in the order
+// of the enum.
+inline constexpr std::array<const char*, 9> kBeamMethodNames = {
+    "auto", "elliptic", "shooting", "chain", "prbm", "linear", "prbm3r", "bcm", "cbcm"};
+
+const char* to_string(BeamMethod method);
+// Throws InvalidInput naming the allowed names.
+BeamMethod beam_method_from_string(std::string_view name);
+
+// The convergence tolerance the method works to (recorded in output files); kAuto: elliptic's.
+double beam_method_tolerance(BeamMethod method);
+
+}  // namespace flexure
 
 namespace flexure {
 
@@ -42,7 +108,7 @@ struct BeamProblem {
   // least as accurate for these small non-stiff systems (docs/performance.md, "Shooting").
   IntegratorBackend integrator = IntegratorBackend::kRk8pd;
   std::optional<SegmentChain> chain;  // a chain of segments (overrides the loads above)
-  // `auto` picks the cheapest method whose relative error is within this (method_selector.h).
+  // `auto` picks the cheapest method whose relative error is within this (choose_beam_method).
   double tolerance = 1e-6;
   // The cheaper models of the ladder (beam_ladder.h): the chained BCM's number of elements N, the
   // PR-3R model's constants (Prbm3rConstants::by_name: su, su-moment, su-force, flexure), the
@@ -154,12 +220,12 @@ struct BeamSolution : SolveStatus {
 
 // The method `auto` resolves to for this problem: the cheapest whose error is within
 // problem.tolerance (PRBM inside its validity limits and measured accuracy, else elliptic for
-// Howell's free cantilever, else shooting), with the reason (method_selector.h). A named method
+// Howell's free cantilever, else shooting), with the reason (choose_beam_method). A named method
 // resolves to itself.
 struct MethodResolution {
   BeamMethod method = BeamMethod::kElliptic;
   std::string reason;
-  // The relative tip error the method is known to stay within (method_selector.h); NaN where it
+  // The relative tip error the method is known to stay within (choose_beam_method); NaN where it
   // depends on the discretisation (chain) or is not measured (PRBM off the map).
   double expected_error = std::numeric_limits<double>::quiet_NaN();
 };
@@ -196,3 +262,126 @@ BeamSolution beam_solution_from_shooting(const BeamProblem& problem,
                                          std::optional<double> margin_guess = std::nullopt);
 
 }  // namespace flexure
+
+namespace flexure {
+
+class BeamSolver {
+ public:
+  struct Options {
+    BeamMethod method = BeamMethod::kAuto;
+    // auto: the relative tip error allowed when it chooses a method (choose_beam_method).
+    double auto_tolerance = 1e-6;
+    // Shooting: the integrator of the flexible segments (GSL's Prince-Dormand 8(7) by default).
+    IntegratorBackend integrator = IntegratorBackend::kRk8pd;
+    int elements = 100;  // chain algorithm: N elements (Howell sec. 5.11)
+    int increments = 1;  // chain algorithm: load increments to start with (halved on failure)
+    ChainVariant chain_variant = ChainVariant::kCorrected;
+    int shape_points = 0;  // 0: no shape; otherwise >= 2 points from s = 0 to s = 1
+    // The model ladder (beam_ladder.h): the chained BCM's elements, the PR-3R constants, the
+    // slenderness L/t of the BCM and CBCM (0: inextensible).
+    int cbcm_elements = 6;
+    std::string prbm3r_constants = "su";
+    double slenderness = 0.0;
+    bool judge_stability = true;  // the stability verdict of the answer (docs/stability.md)
+    bool stable = false;          // return a stable equilibrium (BeamProblem::stable)
+    // Throws InvalidInput naming the setting and its allowed range.
+    void validate() const;
+  };
+
+  BeamSolver() : BeamSolver(Options{}) {}
+  explicit BeamSolver(Options options);
+
+  const Options& options() const { return options_; }
+  // solve_beam(options.method, problem) with the problem's settings replaced by the Options.
+  BeamSolution solve(const BeamProblem& problem) const;
+
+ private:
+  Options options_;
+};
+
+// The Options a problem's own settings amount to (for a caller of solve_beam moving to
+// BeamSolver).
+BeamSolver::Options beam_solver_options(BeamMethod method, const BeamProblem& problem);
+
+}  // namespace flexure
+
+namespace flexure {
+
+struct AutoMethodRequest {
+  double load_ratio_n = 0.0;
+  double alpha2 = 0.0;  // NaN when the load is not given (inverse problems)
+  double mu = 0.0;
+  bool plain_cantilever = true;  // free end, dead loads, uniform straight beam
+  double tolerance = 1e-6;       // relative error allowed (tip position error / deflection)
+  // Set when auto's pass over the model ladder (beam_auto_ladder.h) has judged the cheap models,
+  // the 1R PRBM among them, at this load and taken none: why, for the reason; the PRBM is then not
+  // considered again.
+  std::string ladder_verdict;
+};
+
+struct AutoMethodChoice {
+  BeamMethod method = BeamMethod::kElliptic;  // kPrbm, kElliptic or kShooting
+  std::string reason;                         // one sentence: why this method and not a cheaper one
+  double expected_error = 0.0;  // the error bound the choice rests on (relative tip error)
+};
+
+// The relative tip errors (|tip - exact tip| / tip displacement, the measure of the tolerance) the
+// exact methods are known to stay within (docs/benchmarks.md). Forward problems: the elliptic
+// solver's scalar solves converge to 1e-14 relative (bound 1e-13); the shooting method at rtol
+// 1e-12 is measured below 1e-9 on the benchmark set. Inverse problems end when the tip quantity
+// is within 1e-10 (elliptic) or 1e-8 (shooting) of its target (solve_beam), which bounds them.
+inline constexpr double kEllipticErrorBound = 1e-13;
+inline constexpr double kEllipticInverseErrorBound = 1e-10;
+inline constexpr double kShootingErrorBound = 1e-9;
+inline constexpr double kShootingInverseErrorBound = 1e-8;
+// The bound of an exact method (kElliptic or kShooting; NaN for the others, whose error depends on
+// the load and the discretisation).
+double exact_method_error_bound(BeamMethod method, bool inverse);
+
+// A tolerance below what every method that can answer reaches: the answer would miss it, so the
+// problem is refused before any solve (exit code 2). Names the smallest tolerance that can be met.
+class ToleranceBelowReach : public InvalidInput {
+ public:
+  ToleranceBelowReach(const std::string& message, double best_tolerance, std::string best_method)
+      : InvalidInput(message),
+        best_tolerance_(best_tolerance),
+        best_method_(std::move(best_method)) {}
+  double best_tolerance() const { return best_tolerance_; }
+  const std::string& best_method() const { return best_method_; }  // "elliptic", "exact", ...
+
+ private:
+  double best_tolerance_;
+  std::string best_method_;
+};
+
+// Throws ToleranceBelowReach when `tolerance` is below the bound of `method` (an exact method that
+// auto falls back to).
+void require_tolerance_within_reach(double tolerance, BeamMethod method, bool inverse);
+
+// Throws InvalidInput unless the tolerance is finite and > 0, and ToleranceBelowReach when it is
+// below the error bound of the most accurate method for this problem.
+AutoMethodChoice choose_beam_method(const AutoMethodRequest& request);
+
+// The PRBM's relative tip-position error measured by `flexure bench` for the fixed-pinned segment
+// at (n, alpha2): 1.5 times the largest value at the measured loads around it
+// (data/method_auto_error_map.csv, compiled into the library). NaN outside the measured range
+// (-2 <= n <= 3, 0.5 <= alpha2 <= 20).
+double prbm_measured_error(double load_ratio_n, double alpha2);
+
+}  // namespace flexure
+
+// Compatibility: the method choice was in namespace flexure::bench while it lived in the studies
+// layer (issue 28 moved it to the beam layer). Existing code that names bench:: keeps compiling.
+namespace flexure::bench {
+using flexure::AutoMethodChoice;
+using flexure::AutoMethodRequest;
+using flexure::choose_beam_method;
+using flexure::exact_method_error_bound;
+using flexure::kEllipticErrorBound;
+using flexure::kEllipticInverseErrorBound;
+using flexure::kShootingErrorBound;
+using flexure::kShootingInverseErrorBound;
+using flexure::prbm_measured_error;
+using flexure::require_tolerance_within_reach;
+using flexure::ToleranceBelowReach;
+}  // namespace flexure::bench

@@ -11,7 +11,6 @@
 #include <string>
 #include <vector>
 
-#include "flexure/beam/beam_method.h"
 #include "flexure/beam/beam_problem.h"
 #include "flexure/beam/physical_beam.h"
 #include "flexure/solver/common/status.h"

@@ -1,10 +1,9 @@
-#include "flexure/beam/beam_solver.h"
-
 #include <fmt/format.h>
 
 #include <cmath>
 #include <utility>
 
+#include "flexure/beam/beam_problem.h"
 #include "flexure/elements/ladder_models.h"
 #include "flexure/solver/common/status.h"
 

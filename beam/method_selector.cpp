@@ -1,5 +1,3 @@
-#include "flexure/beam/method_selector.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -8,6 +6,7 @@
 #include <limits>
 #include <vector>
 
+#include "flexure/beam/beam_problem.h"
 #include "flexure/beam/data_files.h"
 #include "flexure/elements/prbm_cantilever.h"
 #include "flexure/solver/common/csv_table.h"

@@ -22,7 +22,7 @@
 #include "cli/physical_flags.h"
 #include "cli/warning_output.h"
 #include "flexure/beam/beam_keys.h"
-#include "flexure/beam/method_selector.h"
+#include "flexure/beam/beam_problem.h"
 #include "flexure/beam/physical_beam.h"
 #include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/load_cycle_fatigue.h"

@@ -5,9 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "flexure/beam/beam_method.h"
 #include "flexure/beam/beam_problem.h"
-#include "flexure/beam/method_selector.h"
 #include "flexure/benchmarks/studies/failure_advice.h"
 
 namespace flexure::cli {

@@ -27,10 +27,7 @@ set(FLEXURE_PUBLIC_HEADERS
   solver/inverse/tip_target.h
   solver/shooting/rigid_contact.h
   solver/shooting/shooting_solver.h
-  beam/beam_method.h
   beam/beam_problem.h
-  beam/beam_solver.h
-  beam/method_selector.h
   beam/physical_beam.h
   # prbm.h: pseudo-rigid-body models, the model ladder's beam models.
   beam/prbm_comparison.h

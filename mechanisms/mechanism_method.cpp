@@ -5,7 +5,7 @@
 #include <cmath>
 #include <map>
 
-#include "flexure/beam/method_selector.h"
+#include "flexure/beam/beam_problem.h"
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/solver/common/status.h"

@@ -19,7 +19,6 @@
 #include <variant>
 #include <vector>
 
-#include "flexure/beam/beam_method.h"
 #include "flexure/beam/beam_problem.h"
 #include "flexure/beam/physical_beam.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/beam/beam_method.h"
+#include "flexure/beam/beam_problem.h"
 #include "flexure/beam/beam_sweep_grid.h"
 
 namespace flexure {

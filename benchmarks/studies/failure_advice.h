@@ -14,7 +14,6 @@
 #include <string>
 #include <vector>
 
-#include "flexure/beam/beam_method.h"
 #include "flexure/beam/beam_problem.h"
 
 namespace flexure {

@@ -9,7 +9,7 @@
 // end, the shooting method (rtol 1e-12) for a guided end. A model's error at a point:
 //   position_error = |(a, b) - (a, b)_exact| (per length l), angle_error = |theta0 - theta0_exact|,
 //   relative_error = position_error / |(a - 1, b)_exact| (the tip displacement; the measure of
-//   `--tol`, method_selector.h).
+//   `--tol`, beam_problem.h).
 // Its time per solve: the library call solve_beam (beam_problem.h) without a shape, repeated at
 // each point until `min_seconds` have passed, the mean taken (so that a closed form taking
 // microseconds is timed as well as a shooting solve taking milliseconds). That includes the few
@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/beam/beam_method.h"
+#include "flexure/beam/beam_problem.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 
 namespace flexure::studies {

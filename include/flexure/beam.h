@@ -26,8 +26,5 @@
 #include "flexure/solver/shooting/shooting_solver.h"
 
 // The beam layer: problems by any method, the method choice, physical beams and chains.
-#include "flexure/beam/beam_method.h"
 #include "flexure/beam/beam_problem.h"
-#include "flexure/beam/beam_solver.h"
-#include "flexure/beam/method_selector.h"
 #include "flexure/beam/physical_beam.h"

@@ -1,4 +1,4 @@
-// What is checked against what: BeamSolver (beam/beam_solver.h), the solver object with Options,
+// What is checked against what: BeamSolver (beam/beam_problem.h), the solver object with Options,
 // against the shorthand solve_beam(method, problem) it stands for.
 //  * Seeded random loads x every exact method, auto and the PRBM (tip forces only): the solver's
 //  answer equals solve_beam's
@@ -7,14 +7,13 @@
 //  * The Options' settings reach the solve: the chain algorithm with 20 elements differs from 100,
 //    and equals solve_beam with problem.elements = 20; a shape of K points has K points.
 //  * validate(): every bad setting is InvalidInput naming it.
-#include "flexure/beam/beam_solver.h"
-
 #include <gtest/gtest.h>
 
 #include <limits>
 #include <random>
 #include <string>
 
+#include "flexure/beam/beam_problem.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure {

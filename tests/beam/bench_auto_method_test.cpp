@@ -1,4 +1,4 @@
-// What is checked against what: `--method auto` (beam/method_selector.h).
+// What is checked against what: `--method auto` (beam/beam_problem.h).
 //  * With a loose tolerance inside the PRBM validity limits it picks the PRBM, and the PRBM's
 //    error at that load, measured here against the INDEPENDENT exact elliptic solution, is
 //    indeed within the tolerance (so the embedded accuracy map does not flatter the PRBM).
@@ -12,7 +12,7 @@
 #include <string>
 #include <utility>
 
-#include "flexure/beam/method_selector.h"
+#include "flexure/beam/beam_problem.h"
 #include "flexure/elements/prbm_segments.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"

@@ -22,7 +22,6 @@
 #include "flexure/beam/beam_problem.h"
 #include "flexure/beam/data_files.h"
 #include "flexure/beam/ladder_selector.h"
-#include "flexure/beam/method_selector.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "tests/support/data_file_support.h"
@@ -294,7 +293,7 @@ TEST(LadderAuto, ToleranceTighterThanEveryCheapModelGoesToTheExactMethods) {
       << loose.method_reason;
 }
 
-// Off the ladder's map (n > 2) the 1R PRBM's own measured map (method_selector.h, to n = 3)
+// Off the ladder's map (n > 2) the 1R PRBM's own measured map (beam_problem.h, to n = 3)
 // still applies, and the reason says the load is off the ladder's map.
 TEST(LadderAuto, OffTheMapThePrbmsOwnMapStillApplies) {
   const BeamSolution s = solve_beam(BeamMethod::kAuto, cantilever(2.5, 1.0, 0.0, 0.1));

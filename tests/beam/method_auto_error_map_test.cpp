@@ -7,8 +7,8 @@
 #include <cmath>
 #include <string>
 
+#include "flexure/beam/beam_problem.h"
 #include "flexure/beam/data_files.h"
-#include "flexure/beam/method_selector.h"
 #include "tests/support/data_file_support.h"
 
 namespace flexure {
