@@ -13,9 +13,7 @@
 #include <string_view>
 #include <variant>
 
-#include "flexure/elements/prbm_derivation.h"
 #include "flexure/elements/prbm_element.h"
-#include "flexure/elements/prbm_segments.h"
 #include "flexure/solver/common/end_load.h"
 
 namespace flexure {
@@ -24,7 +22,7 @@ namespace flexure {
 enum class PrbmConstantsSource {
   kTable,      // Howell's Table 5.1 (FixedPinnedConstants::from_table)
   kCurveFits,  // curve fits eqs. 5.48, 5.60-5.62 (FixedPinnedConstants::from_curve_fits)
-  kDerived,    // derived from the exact solution (derive_fixed_pinned, prbm_derivation.h)
+  kDerived,    // derived from the exact solution (derive_fixed_pinned, prbm_element.h)
 };
 
 // "table", "fits", "derived", in the order of the enum.

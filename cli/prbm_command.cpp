@@ -21,9 +21,7 @@
 #include "cli/commands.h"
 #include "flexure/beam/prbm_comparison.h"
 #include "flexure/elements/prbm_curve_fits.h"
-#include "flexure/elements/prbm_derivation.h"
-#include "flexure/elements/prbm_segments.h"
-#include "flexure/elements/prbm_tables.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/solver/common/names.h"
 #include "flexure/solver/common/status.h"
 

@@ -32,10 +32,7 @@ set(FLEXURE_PUBLIC_HEADERS
   # prbm.h: pseudo-rigid-body models, the model ladder's beam models.
   beam/prbm_comparison.h
   elements/ladder_models.h
-  elements/prbm_derivation.h
   elements/prbm_element.h
-  elements/prbm_segments.h
-  elements/prbm_tables.h
   # mechanisms.h: designs, analysis, constant-force mechanisms, dynamics, general mechanisms.
   mechanisms/builtin_designs.h
   mechanisms/materials_fatigue.h

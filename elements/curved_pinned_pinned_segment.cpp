@@ -4,8 +4,7 @@
 #include <utility>
 
 #include "flexure/elements/prbm_curve_fits.h"
-#include "flexure/elements/prbm_segments.h"
-#include "flexure/elements/prbm_tables.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure {

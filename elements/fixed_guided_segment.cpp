@@ -1,7 +1,7 @@
 #include <cmath>
 #include <utility>
 
-#include "flexure/elements/prbm_segments.h"
+#include "flexure/elements/prbm_element.h"
 
 namespace flexure {
 

@@ -4,9 +4,7 @@
 #include <numbers>
 #include <utility>
 
-#include "flexure/elements/prbm_derivation.h"
-#include "flexure/elements/prbm_segments.h"
-#include "flexure/elements/prbm_tables.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure {

@@ -286,7 +286,7 @@ class ChainedBcmSolver {
 // large deflection of cantilever beams subject to tip loads", J. Mechanisms Robotics 1:021008,
 // 2009; docs/models.md): four rigid links of lengths gamma0..gamma3 (times l, from the clamp)
 // joined by three revolute joints with torsion springs k1..k3 (times EI/l). Unlike Howell's 1R
-// model (one pivot, elements/prbm_segments.h) it carries a tip force at any angle together
+// model (one pivot, elements/prbm_element.h) it carries a tip force at any angle together
 // with an end moment.
 //
 // Kinematics (nondimensional, clamp at the origin along +x): joint i (i = 1..3) sits at the end of
@@ -379,7 +379,7 @@ class Prbm3rSolver {
 };
 
 // PR-3R constants derived by flexure itself (docs/models.md, "PR-3R constants"), the way
-// prbm_derivation.h re-derives Howell's 1R constants: the link lengths gamma0..gamma3 and spring
+// prbm_element.h re-derives Howell's 1R constants: the link lengths gamma0..gamma3 and spring
 // stiffnesses k1..k3 (above) that minimise the PR-3R model's error against the exact
 // elliptic elastica over a stated domain of tip loads.
 //

@@ -1,5 +1,3 @@
-#include "flexure/elements/prbm_derivation.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -7,7 +5,7 @@
 #include <limits>
 #include <numbers>
 
-#include "flexure/elements/prbm_tables.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 

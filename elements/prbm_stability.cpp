@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "flexure/elements/prbm_segments.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure {

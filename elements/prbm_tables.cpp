@@ -1,10 +1,9 @@
-#include "flexure/elements/prbm_tables.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 
 #include "flexure/elements/data_files.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/solver/common/csv_table.h"
 #include "flexure/solver/common/status.h"
 

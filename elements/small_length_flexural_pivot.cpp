@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "flexure/elements/prbm_segments.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure {

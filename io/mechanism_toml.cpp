@@ -7,7 +7,7 @@
 #include <set>
 #include <sstream>
 
-#include "flexure/elements/prbm_segments.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/io/toml_files.h"
 #include "flexure/io/toml_support.h"
 #include "flexure/mechanisms/builtin_designs.h"

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "flexure/elements/prbm_segments.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/mechanisms/mechanism_stability.h"
 #include "flexure/solver/common/status.h"

@@ -5,7 +5,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "flexure/elements/prbm_segments.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/broyden_newton_2d.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/mechanism_prbm.h"

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "flexure/elements/prbm_segments.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/solver/common/status.h"
 

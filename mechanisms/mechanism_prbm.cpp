@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "flexure/elements/prbm_segments.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/cfm/constant_force.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/mechanisms/inversion.h"

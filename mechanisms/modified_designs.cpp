@@ -5,7 +5,7 @@
 #include <cctype>
 #include <cmath>
 
-#include "flexure/elements/prbm_segments.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/data/data_files.h"
 #include "flexure/solver/common/csv_table.h"

@@ -7,8 +7,7 @@
 #include <limits>
 #include <numbers>
 
-#include "flexure/elements/prbm_segments.h"
-#include "flexure/elements/prbm_tables.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
 

@@ -10,8 +10,7 @@
 //  4. BM_ExactTip: one exact tip from EllipticSolver::solve_for_tip_angle (the unit of work).
 #include <benchmark/benchmark.h>
 
-#include "flexure/elements/prbm_derivation.h"
-#include "flexure/elements/prbm_tables.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 
 namespace {

@@ -10,7 +10,4 @@
 #include "flexure/beam.h"
 #include "flexure/beam/prbm_comparison.h"
 #include "flexure/elements/ladder_models.h"
-#include "flexure/elements/prbm_derivation.h"
 #include "flexure/elements/prbm_element.h"
-#include "flexure/elements/prbm_segments.h"
-#include "flexure/elements/prbm_tables.h"

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/elements/prbm_segments.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/mechanism_prbm.h"

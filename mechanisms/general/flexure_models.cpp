@@ -6,7 +6,7 @@
 #include "flexure/beam/beam_problem.h"
 #include "flexure/beam/ladder_selector.h"
 #include "flexure/elements/ladder_models.h"
-#include "flexure/elements/prbm_segments.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/common/status.h"
 

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "flexure/elements/prbm_segments.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/general/flexure_point_results.h"
 #include "flexure/mechanisms/general/prbm_assembly.h"
 #include "flexure/mechanisms/mechanism_exact.h"

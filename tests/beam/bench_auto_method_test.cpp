@@ -13,7 +13,7 @@
 #include <utility>
 
 #include "flexure/beam/beam_problem.h"
-#include "flexure/elements/prbm_segments.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 

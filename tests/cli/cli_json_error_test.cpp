@@ -15,7 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
-#include "flexure/elements/prbm_segments.h"
+#include "flexure/elements/prbm_element.h"
 #include "tests/support/cli_test_support.h"
 
 namespace flexure {

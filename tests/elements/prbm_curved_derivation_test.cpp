@@ -21,9 +21,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "flexure/elements/prbm_derivation.h"
-#include "flexure/elements/prbm_segments.h"
-#include "flexure/elements/prbm_tables.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "tests/support/elastica_reference.h"

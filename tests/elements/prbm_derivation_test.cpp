@@ -13,15 +13,13 @@
 //  * K_theta is the least-squares slope of eqs. 5.56-5.59 over Table 5.1's Theta_max(K_theta) (an
 //    input: Howell states no criterion for it), recomputed by the test from exact tips;
 //  * the derived gamma is a maximiser: Theta_max at gamma +- 0.002 is not larger.
-#include "flexure/elements/prbm_derivation.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 #include <string>
 
-#include "flexure/elements/prbm_tables.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 

@@ -17,8 +17,7 @@
 #include <numbers>
 
 #include "flexure/elements/prbm_curve_fits.h"
-#include "flexure/elements/prbm_segments.h"
-#include "flexure/elements/prbm_tables.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/solver/common/section.h"
 #include "flexure/solver/common/status.h"
 

@@ -11,8 +11,7 @@
 
 #include <cmath>
 
-#include "flexure/elements/prbm_derivation.h"
-#include "flexure/elements/prbm_segments.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/solver/common/section.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 

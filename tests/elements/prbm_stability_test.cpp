@@ -23,7 +23,7 @@
 #include <random>
 
 #include "flexure/elements/prbm_cantilever.h"
-#include "flexure/elements/prbm_segments.h"
+#include "flexure/elements/prbm_element.h"
 
 namespace flexure {
 namespace {

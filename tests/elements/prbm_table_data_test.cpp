@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "flexure/elements/data_files.h"
-#include "flexure/elements/prbm_tables.h"
+#include "flexure/elements/prbm_element.h"
 #include "tests/support/data_file_support.h"
 
 namespace flexure {

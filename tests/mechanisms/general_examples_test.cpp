@@ -8,7 +8,7 @@
 #include <numbers>
 #include <string>
 
-#include "flexure/elements/prbm_segments.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/general/general_exact.h"
 #include "flexure/mechanisms/general/general_mechanism.h"

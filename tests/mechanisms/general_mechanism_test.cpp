@@ -13,7 +13,7 @@
 #include <numbers>
 #include <random>
 
-#include "flexure/elements/prbm_segments.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/general/catalogue_general.h"
 #include "flexure/mechanisms/general/general_exact.h"
 #include "flexure/mechanisms/general/general_prbm.h"

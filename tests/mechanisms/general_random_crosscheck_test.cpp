@@ -18,7 +18,7 @@
 #include <numbers>
 #include <random>
 
-#include "flexure/elements/prbm_segments.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/general/general_exact.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
 #include "flexure/mechanisms/general/general_prbm.h"
