@@ -38,8 +38,6 @@
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_catalogue.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/mechanisms/mechanism_geometry.h"
-#include "flexure/mechanisms/mechanism_method.h"
 #include "flexure/mechanisms/mechanism_plate.h"
 #include "flexure/mechanisms/mechanism_validation.h"
 #include "flexure/mechanisms/mechanism_warnings.h"

@@ -53,8 +53,6 @@ set(FLEXURE_PUBLIC_HEADERS
   mechanisms/mechanism.h
   mechanisms/mechanism_analysis.h
   mechanisms/mechanism_exact.h
-  mechanisms/mechanism_geometry.h
-  mechanisms/mechanism_method.h
   mechanisms/mechanism_prbm.h
   mechanisms/mechanism_stability.h
   mechanisms/prbm_validity.h

@@ -13,12 +13,10 @@
 // Designs, their geometry and the catalogues.
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/mechanism.h"
-#include "flexure/mechanisms/mechanism_geometry.h"
 
 // Analysis: PRBM and exact strokes, stresses, stability, the method choice.
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/mechanisms/mechanism_method.h"
 #include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/mechanisms/mechanism_stability.h"
 #include "flexure/mechanisms/prbm_validity.h"
