@@ -52,10 +52,6 @@ set(FLEXURE_PUBLIC_HEADERS
   mechanisms/materials_fatigue.h
   mechanisms/mechanism.h
   mechanisms/mechanism_analysis.h
-  mechanisms/mechanism_exact.h
-  mechanisms/mechanism_prbm.h
-  mechanisms/mechanism_stability.h
-  mechanisms/prbm_validity.h
   mechanisms/cfm/cfm_configuration.h
   mechanisms/cfm/cfm_model.h
   mechanisms/cfm/cfm_subclasses.h

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "flexure/mechanisms/cfm/constant_force.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::cfm {

@@ -5,7 +5,7 @@
 // sized by the PRBM rules of thesis Table 8.1 (an l segment r/gamma long, an s pivot 0.1 r long,
 // mechanism.h) with flexural rigidities in the ratios K1 = k2/k1, K2 = k3/k1 imply (thesis eqs.
 // 2.11-2.12; class 1B: k2 is the reference, eq. 2.19) -- and solved over the stroke both ways, the
-// PRBM (mechanism_prbm.h) and the exact model (mechanism_exact.h), starting from the straight
+// PRBM (mechanism_analysis.h) and the exact model (mechanism_exact.h), starting from the straight
 // position. Forces are reported in the nondimensional form of the PRBM, Phi = F r2/k1 (class 1B:
 // F r2/k2; thesis eq. 2.13), so Phi_exact is directly comparable with CfmResult::Phi.
 //
@@ -16,7 +16,7 @@
 
 #include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/mechanism.h"
-#include "flexure/mechanisms/mechanism_exact.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::cfm {
@@ -28,7 +28,7 @@ mechanism::MechanismDesign cfm_equivalent_design(
 
 struct CfmExactOptions {
   int points = 50;  // equally spaced stroke points Delta x = k d (r2 + r3)/points, k = 1..points
-  mechanism::ExactMechanismSolver::Options solver;  // the exact model's solver settings
+  mechanism::ExactMechanismOptions solver;  // the exact model's solver settings
   // Called after every exact stroke point, (done, points); empty: no calls (a progress display:
   // `cfm --table --exact` runs 68 strokes).
   mechanism::StrokeProgress progress;

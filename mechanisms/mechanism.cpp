@@ -11,7 +11,7 @@
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/mechanisms/inversion.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
 

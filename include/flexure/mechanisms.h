@@ -10,16 +10,12 @@
 //   const fm::MechanismAnalysis a = fm::analyze_mechanism(fm::howell_mechanisms().front(), {});
 #include "flexure/prbm.h"
 
-// Designs, their geometry and the catalogues.
+// Designs, their geometry, the catalogues and the PRBM-or-exact choice.
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/mechanism.h"
 
-// Analysis: PRBM and exact strokes, stresses, stability, the method choice.
+// Analysis: PRBM and exact strokes, stresses, stability, where the PRBM stays valid.
 #include "flexure/mechanisms/mechanism_analysis.h"
-#include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
-#include "flexure/mechanisms/mechanism_stability.h"
-#include "flexure/mechanisms/prbm_validity.h"
 
 // Constant-force mechanisms: Weight's configurations, their PRBM and exact models.
 #include "flexure/mechanisms/cfm/cfm_configuration.h"

@@ -21,7 +21,6 @@
 #include "flexure/mechanisms/design/subclass_problem.h"
 #include "flexure/mechanisms/design/subclass_sizing.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::design {

@@ -8,7 +8,7 @@
 #include "flexure/elements/prbm_segments.h"
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/inversion.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism::general {

@@ -1,7 +1,7 @@
 #pragma once
 // The largest stress of every flexure of a general mechanism at each recorded point, computed from
 // the general models' own solutions (docs/mechanisms.md "The catalogue as general mechanisms"),
-// with the catalogue's stress rules (mechanism_prbm.h, mechanism_exact.h) so that a built-in
+// with the catalogue's stress rules (mechanism_analysis.h, mechanism_exact.h) so that a built-in
 // design's general form (catalogue_general.h) gives the catalogue's stresses:
 //
 //  * PRBM (solve_general_prbm): sigma = |M| h/(2I) + |P|/A, P the force the flexure's PRB pin

@@ -15,9 +15,8 @@
 #include "flexure/mechanisms/general/general_mechanism.h"
 #include "flexure/mechanisms/general/general_prbm.h"
 #include "flexure/mechanisms/mechanism.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
-#include "flexure/mechanisms/mechanism_stability.h"
 
 namespace flexure::mechanism::general {
 namespace {
@@ -287,7 +286,7 @@ TEST(GeneralExactStability, CrankDrivenPastItsTravelStopsAtTheLimitPoint) {
 
 // The catalogue's constant-force designs rebuilt as general mechanisms (catalogue_general.h):
 // the general exact model's verdicts against the catalogue's own exact verdicts
-// (exact_point_stability, mechanism_stability.h: its chains' second variation along the path it
+// (exact_point_stability, mechanism_analysis.h: its chains' second variation along the path it
 // judges, independent code), kind and index under both controls at every stroke point.
 TEST(GeneralExactStability, CatalogueDesignsVerdictsMatchTheCatalogueExactModel) {
   int compared = 0, unstable = 0;

@@ -18,8 +18,8 @@
 #include "flexure/mechanisms/general/general_exact.h"
 #include "flexure/mechanisms/general/general_prbm.h"
 #include "flexure/mechanisms/mechanism.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism::general {

@@ -21,7 +21,6 @@
 #include "flexure/mechanisms/cfm_comparison.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
 #include "tests/support/cfm_test_support.h"
 #include "tests/support/cli_test_support.h"
 

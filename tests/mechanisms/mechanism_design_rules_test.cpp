@@ -16,7 +16,6 @@
 #include "flexure/mechanisms/design/section_family.h"
 #include "flexure/mechanisms/design/subclass_sizing.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
 
 namespace flexure::design {
 namespace {

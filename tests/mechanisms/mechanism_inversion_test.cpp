@@ -22,7 +22,6 @@
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/mechanisms/prbm_virtual_work.h"
 #include "flexure/solver/common/errors.h"
 #include "tests/support/cli_test_support.h"

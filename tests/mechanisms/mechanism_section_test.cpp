@@ -15,7 +15,7 @@
 #include <cmath>
 
 #include "flexure/mechanisms/mechanism.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/section.h"
 

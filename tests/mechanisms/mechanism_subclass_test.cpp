@@ -9,7 +9,7 @@
 #include "flexure/mechanisms/cfm/cfm_configuration.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/mechanism.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 
 namespace flexure::mechanism {
 namespace {

@@ -11,7 +11,7 @@
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/mechanism.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/errors.h"
 
 namespace flexure::mechanism {
