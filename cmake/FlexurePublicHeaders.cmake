@@ -52,10 +52,7 @@ set(FLEXURE_PUBLIC_HEADERS
   mechanisms/materials_fatigue.h
   mechanisms/mechanism.h
   mechanisms/mechanism_analysis.h
-  mechanisms/cfm/cfm_configuration.h
   mechanisms/cfm/cfm_model.h
-  mechanisms/cfm/cfm_subclasses.h
-  mechanisms/cfm_exact.h
   mechanisms/dynamics/dynamics_design.h
   mechanisms/dynamics/dynamics.h
   mechanisms/general/flexure_models.h

@@ -1,5 +1,3 @@
-#include "flexure/mechanisms/cfm_exact.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>

@@ -8,7 +8,7 @@
 
 #include "flexure/elements/prbm_segments.h"
 #include "flexure/mechanisms/builtin_designs.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/mechanism_analysis.h"

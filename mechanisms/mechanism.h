@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "flexure/elements/prbm_element.h"
-#include "flexure/mechanisms/cfm/cfm_configuration.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/solver/common/plate_modulus.h"
 #include "flexure/solver/common/section.h"
 

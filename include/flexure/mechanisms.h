@@ -14,14 +14,12 @@
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/mechanism.h"
 
-// Analysis: PRBM and exact strokes, stresses, stability, where the PRBM stays valid.
+// Analysis: PRBM and exact strokes, stresses, stability, where the PRBM stays valid; the exact
+// model of a nondimensional constant-force mechanism.
 #include "flexure/mechanisms/mechanism_analysis.h"
 
-// Constant-force mechanisms: Weight's configurations, their PRBM and exact models.
-#include "flexure/mechanisms/cfm/cfm_configuration.h"
+// Constant-force mechanisms: Weight's configurations, their PRBM and the printed sub-classes.
 #include "flexure/mechanisms/cfm/cfm_model.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
-#include "flexure/mechanisms/cfm_exact.h"
 
 // Dynamics of the slider-crank: inverse and forward.
 #include "flexure/mechanisms/dynamics/dynamics.h"

@@ -1,8 +1,7 @@
-#include "flexure/mechanisms/cfm/cfm_configuration.h"
-
 #include <fmt/format.h>
 
 #include "flexure/elements/prbm_segments.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
 

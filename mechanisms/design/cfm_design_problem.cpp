@@ -6,7 +6,7 @@
 #include <array>
 #include <cmath>
 
-#include "flexure/mechanisms/cfm/cfm_configuration.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
 

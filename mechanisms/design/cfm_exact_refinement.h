@@ -1,12 +1,12 @@
 #pragma once
 // Optimisation of a constant-force mechanism against the exact model (docs/design.md "Against
 // the exact model"; no source did this: the thesis optimised the PRBM only). The objective is the
-// exact percent constant force Xi'_exact of `flexure cfm --exact` (cfm_exact.h: the equivalent
-// design r2 + r3 = 1 with the PRBM sizing rules of Table 8.1, stroke from the straight position),
-// maximised over the problem's free variables from a start (the PRBM optimum or a thesis
-// sub-class) by NLopt's COBYLA in log scale, under the problem's toggle, orientation and bounds
-// (orientation rules evaluated by the PRBM model, as the thesis defines them). The PRBM's
-// Xi' >= pcf_min becomes Xi'_exact >= pcf_min.
+// exact percent constant force Xi'_exact of `flexure cfm --exact` (mechanism_analysis.h,
+// solve_cfm_exact: the equivalent design r2 + r3 = 1 with the PRBM sizing rules of Table 8.1,
+// stroke from the straight position), maximised over the problem's free variables from a start (the
+// PRBM optimum or a thesis sub-class) by NLopt's COBYLA in log scale, under the problem's toggle,
+// orientation and bounds (orientation rules evaluated by the PRBM model, as the thesis defines
+// them). The PRBM's Xi' >= pcf_min becomes Xi'_exact >= pcf_min.
 //
 // The inextensible elastica's force depends on the flexural rigidities only, so at fixed geometry
 // Xi'_exact depends on (config, R, K1, K2, d) alone, not on the size or the material: the

@@ -11,8 +11,7 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "flexure/mechanisms/cfm/cfm_configuration.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm_comparison.h"
 #include "flexure/mechanisms/design/cfm_exact_refinement.h"
 #include "flexure/mechanisms/design/feasibility.h"

@@ -2,8 +2,7 @@
 
 #include <chrono>
 
-#include "flexure/mechanisms/cfm/cfm_configuration.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/design/cfm_exact_refinement.h"
 #include "flexure/mechanisms/design/subclass_problem.h"
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "flexure/mechanisms/cfm/cfm_configuration.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm_comparison.h"
 #include "flexure/mechanisms/design/feasibility.h"
 #include "flexure/mechanisms/design/subclass_problem.h"

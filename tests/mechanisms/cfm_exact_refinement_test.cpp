@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/design/subclass_problem.h"
 #include "flexure/solver/common/errors.h"
 

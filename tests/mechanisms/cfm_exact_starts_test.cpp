@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/design/cfm_exact_refinement.h"
 #include "flexure/solver/common/errors.h"
 
