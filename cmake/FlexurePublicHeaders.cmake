@@ -53,7 +53,6 @@ set(FLEXURE_PUBLIC_HEADERS
   mechanisms/mechanism.h
   mechanisms/mechanism_analysis.h
   mechanisms/cfm/cfm_model.h
-  mechanisms/dynamics/dynamics_design.h
   mechanisms/dynamics/dynamics.h
   mechanisms/general/flexure_models.h
   mechanisms/general/flexure_point_results.h

@@ -23,7 +23,6 @@
 
 // Dynamics of the slider-crank: inverse and forward.
 #include "flexure/mechanisms/dynamics/dynamics.h"
-#include "flexure/mechanisms/dynamics/dynamics_design.h"
 
 // General mechanisms: any topology, by the PRBM and the exact model.
 #include "flexure/mechanisms/general/general_exact.h"
