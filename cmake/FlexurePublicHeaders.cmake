@@ -54,11 +54,8 @@ set(FLEXURE_PUBLIC_HEADERS
   mechanisms/mechanism_analysis.h
   mechanisms/cfm/cfm_model.h
   mechanisms/dynamics/dynamics.h
-  mechanisms/general/flexure_models.h
-  mechanisms/general/flexure_point_results.h
-  mechanisms/general/general_exact.h
+  mechanisms/general/general_analysis.h
   mechanisms/general/general_mechanism.h
-  mechanisms/general/general_prbm.h
   # design.h: constant-force and mechanism design.
   mechanisms/design/cfm_design_problem.h
   mechanisms/design/cfm_exact_refinement.h

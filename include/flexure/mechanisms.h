@@ -25,6 +25,5 @@
 #include "flexure/mechanisms/dynamics/dynamics.h"
 
 // General mechanisms: any topology, by the PRBM and the exact model.
-#include "flexure/mechanisms/general/general_exact.h"
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
-#include "flexure/mechanisms/general/general_prbm.h"

@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
-#include "flexure/mechanisms/general/general_prbm.h"
 
 namespace flexure::mechanism::general {
 
@@ -34,8 +34,8 @@ struct GeneralFlexureStresses {
 
 // The statics of one PRBM point: the multipliers of the assembled PRBM (prbm_assembly.h: scaled,
 // joints first, then each flexure's PRB pins) and, per flexure, the end loads its PRB element
-// carries, in the exact model's terms (general_exact.h): the force N its tip body puts on its tip
-// (global, N), its root moment m0 (N m; m(s) = m0 - r(s) x N along it, r from the root), the
+// carries, in the exact model's terms (general_analysis.h): the force N its tip body puts on its
+// tip (global, N), its root moment m0 (N m; m(s) = m0 - r(s) x N along it, r from the root), the
 // moment behind its stress (K psi of a small-length pivot at its pivot, the clamp moment of a
 // fixed-pinned segment) and the tip's position relative to the root (global, m).
 struct PrbmFlexureLoads {
