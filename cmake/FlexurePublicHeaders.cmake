@@ -57,8 +57,6 @@ set(FLEXURE_PUBLIC_HEADERS
   mechanisms/general/general_analysis.h
   mechanisms/general/general_mechanism.h
   # design.h: constant-force and mechanism design.
-  mechanisms/design/cfm_design_problem.h
-  mechanisms/design/cfm_exact_refinement.h
   mechanisms/design/cfm_synthesis.h
   mechanisms/design/mechanism_synthesis.h
   # studies.h: files (TOML) and drawings.

@@ -149,7 +149,7 @@ struct CfmResult : SolveStatus {
   // min over the sampled stroke of alpha_j/alpha_i for every pair (j, i) of distinct sprung
   // pivots (+inf on the diagonal, for a pin, and where alpha_i is never positive): C_i is
   // alpha_ratio_min[p - 1][i]. A synthesis asks what C would be were another pivot the primary
-  // one (mechanisms/design/cfm_design_problem.h).
+  // one (mechanisms/design/cfm_synthesis.h).
   std::array<std::array<double, 3>, 3> alpha_ratio_min{};
   double d_N_max = 0.0;  // normal displacement of pivot 2 at the end of the stroke, % r_tot
                          // (eq. 5.45)

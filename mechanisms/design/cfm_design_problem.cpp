@@ -1,5 +1,3 @@
-#include "flexure/mechanisms/design/cfm_design_problem.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -7,6 +5,7 @@
 #include <cmath>
 
 #include "flexure/mechanisms/cfm/cfm_model.h"
+#include "flexure/mechanisms/design/cfm_synthesis.h"
 #include "flexure/solver/common/errors.h"
 #include "flexure/solver/common/names.h"
 

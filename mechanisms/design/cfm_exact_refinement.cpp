@@ -1,5 +1,3 @@
-#include "flexure/mechanisms/design/cfm_exact_refinement.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -10,6 +8,7 @@
 #include <utility>
 
 #include "flexure/mechanisms/cfm/cfm_model.h"
+#include "flexure/mechanisms/design/cfm_synthesis.h"
 #include "flexure/mechanisms/design/halton.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/errors.h"

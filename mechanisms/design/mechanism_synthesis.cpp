@@ -13,7 +13,7 @@
 
 #include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm_comparison.h"
-#include "flexure/mechanisms/design/cfm_exact_refinement.h"
+#include "flexure/mechanisms/design/cfm_synthesis.h"
 #include "flexure/mechanisms/design/feasibility.h"
 #include "flexure/mechanisms/design/length_search.h"
 #include "flexure/mechanisms/design/section_family.h"

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "flexure/mechanisms/cfm/cfm_model.h"
-#include "flexure/mechanisms/design/cfm_design_problem.h"
+#include "flexure/mechanisms/design/cfm_synthesis.h"
 
 namespace flexure::design {
 
