@@ -7,7 +7,7 @@
 
 #include "cli/cli_common.h"
 #include "flexure/mechanisms/cfm/cfm_model.h"
-#include "flexure/mechanisms/cfm_exact.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 
 namespace flexure::cli {
 

@@ -8,7 +8,7 @@
 //   flexure cfm --list [--json]               the built-in sub-classes and table rows
 //   flexure cfm --table [--markdown|--json]   every printed row recomputed (exit 1 if one fails)
 //   ... --exact [--exact-points N]            also the exact (elastica) model of the same
-//                                             mechanism (mechanisms/cfm_exact.h); with
+//                                             mechanism (mechanisms/mechanism_analysis.h); with
 //                                             --table: PRBM vs exact for the sub-class rows
 //
 // A stroke past the toggle position is clamped as in the thesis (stroke_percent reports the
@@ -28,9 +28,8 @@
 #include "cli/commands.h"
 #include "cli/warning_output.h"
 #include "flexure/mechanisms/cfm/cfm_model.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/cfm_comparison.h"
-#include "flexure/mechanisms/cfm_exact.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::cli {

@@ -10,7 +10,7 @@
 
 #include "cli/cfm_cli_support.h"
 #include "cli/slow_progress.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm_comparison.h"
 #include "flexure/solver/common/status.h"
 

@@ -17,9 +17,7 @@
 #include "flexure/io/design_history_file.h"
 #include "flexure/io/platform/mpi_world.h"
 #include "flexure/io/platform/output_path.h"
-#include "flexure/mechanisms/cfm/cfm_configuration.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
-#include "flexure/mechanisms/design/cfm_exact_refinement.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/design/cfm_synthesis.h"
 #include "flexure/mechanisms/design/subclass_problem.h"
 #include "flexure/mechanisms/design/subclass_rederivation.h"
@@ -200,7 +198,7 @@ Json design_json(const design::CfmDesignProblem& p,
 
 // --model exact: from the PRBM optimum, the printed sub-classes of the same configuration and
 // stroke and a Halton sequence, the exact model's percent constant force maximised under the same
-// constraints (cfm_exact_refinement.h).
+// constraints (cfm_synthesis.h).
 void run_exact(const DesignCfmArgs& args,
                const design::CfmDesignProblem& problem,
                const design::CfmSynthesisResult& prbm,

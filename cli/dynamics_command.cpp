@@ -13,7 +13,7 @@
 // mechanism unless --force-of half) over one period of Delta x(t) = preload + stroke (1 - cos
 // omega t)/2, and the percent constant force 100 min/max. The HDF5 file also holds the force
 // history at the --history frequencies (default: the paper's Figs. 11-13, 10.472, 31.416 and
-// 62.832 rad/s). The design comes from dynamics/dynamics_design.h.
+// 62.832 rad/s). The design comes from dynamics/dynamics.h.
 #include <fmt/format.h>
 
 #include <memory>
@@ -30,7 +30,7 @@
 #include "flexure/io/platform/output_path.h"
 #include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/builtin_designs.h"
-#include "flexure/mechanisms/dynamics/dynamics_design.h"
+#include "flexure/mechanisms/dynamics/dynamics.h"
 #include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/solver/common/status.h"
@@ -85,7 +85,7 @@ void run_list(const DynamicsArgs& args) {
 }
 
 // The design: a built-in name of the paper's Table 5 or a mechanism TOML file with a [dynamics]
-// table (dynamics_design.h says which springs and masses each gives).
+// table (dynamics.h says which springs and masses each gives).
 DynamicsDesign resolve_design(const DynamicsArgs& args) {
   std::optional<mechanism::SpringRule> rule;
   if (!args.spring_rule.empty()) rule = mechanism::parse_spring_rule(args.spring_rule);

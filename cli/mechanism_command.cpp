@@ -38,8 +38,6 @@
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_catalogue.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/mechanisms/mechanism_geometry.h"
-#include "flexure/mechanisms/mechanism_method.h"
 #include "flexure/mechanisms/mechanism_plate.h"
 #include "flexure/mechanisms/mechanism_validation.h"
 #include "flexure/mechanisms/mechanism_warnings.h"
@@ -136,8 +134,8 @@ Json design_json(const MechanismDesign& d) {
   return out;
 }
 
-// The PRBM's validity over the stroke (prbm_validity.h): what is outside Table 5.1, where, and the
-// PRBM's force error there (null where the exact model was not solved).
+// The PRBM's validity over the stroke (mechanism_analysis.h): what is outside Table 5.1, where, and
+// the PRBM's force error there (null where the exact model was not solved).
 Json validity_json(const PrbmStrokeValidity& v, double stroke) {
   const auto number = [](double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); };
   Json j;

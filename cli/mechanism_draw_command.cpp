@@ -15,7 +15,6 @@
 #include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_exact_geometry.h"
-#include "flexure/mechanisms/mechanism_geometry.h"
 
 namespace flexure::cli {
 

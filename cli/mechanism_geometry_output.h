@@ -1,5 +1,5 @@
 #pragma once
-// The buildable geometry of a mechanism design (mechanisms/mechanism_geometry.h) as the tool
+// The buildable geometry of a mechanism design (mechanisms/mechanism.h) as the tool
 // prints it: the JSON object under the key "geometry" (`mechanism analyze --json`, every design of
 // `design mechanism --json`, `mechanism draw --json`) and the text block of the text outputs, in
 // a length unit of the user's. docs/drawings.md.
@@ -7,7 +7,7 @@
 
 #include "cli/cli_common.h"
 #include "flexure/io/mechanism_drawing.h"
-#include "flexure/mechanisms/mechanism_geometry.h"
+#include "flexure/mechanisms/mechanism.h"
 
 namespace flexure::cli {
 

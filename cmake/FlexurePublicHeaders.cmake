@@ -38,26 +38,11 @@ set(FLEXURE_PUBLIC_HEADERS
   mechanisms/materials_fatigue.h
   mechanisms/mechanism.h
   mechanisms/mechanism_analysis.h
-  mechanisms/mechanism_exact.h
-  mechanisms/mechanism_geometry.h
-  mechanisms/mechanism_method.h
-  mechanisms/mechanism_prbm.h
-  mechanisms/mechanism_stability.h
-  mechanisms/prbm_validity.h
-  mechanisms/cfm/cfm_configuration.h
   mechanisms/cfm/cfm_model.h
-  mechanisms/cfm/cfm_subclasses.h
-  mechanisms/cfm_exact.h
-  mechanisms/dynamics/dynamics_design.h
   mechanisms/dynamics/dynamics.h
-  mechanisms/general/flexure_models.h
-  mechanisms/general/flexure_point_results.h
-  mechanisms/general/general_exact.h
+  mechanisms/general/general_analysis.h
   mechanisms/general/general_mechanism.h
-  mechanisms/general/general_prbm.h
   # design.h: constant-force and mechanism design.
-  mechanisms/design/cfm_design_problem.h
-  mechanisms/design/cfm_exact_refinement.h
   mechanisms/design/cfm_synthesis.h
   mechanisms/design/mechanism_synthesis.h
   # studies.h: files (TOML) and drawings.

@@ -10,8 +10,6 @@
 #include <memory>
 #include <string>
 
-#include "flexure/mechanisms/design/cfm_design_problem.h"
-#include "flexure/mechanisms/design/cfm_exact_refinement.h"
 #include "flexure/mechanisms/design/cfm_synthesis.h"
 
 namespace flexure::io {

@@ -362,7 +362,7 @@ void write_geometry(Hdf5Group& root, const mechanism::general::GeneralMechanism&
     f_name.push_back(f.name);
     f_a.push_back(f.a.body);
     f_b.push_back(f.b.body);
-    // The far end is a pin for a fixed-pinned flexure in both models (general_exact.h).
+    // The far end is a pin for a fixed-pinned flexure in both models (general_analysis.h).
     f_end.emplace_back(f.prbm == mechanism::general::PrbmKind::kFixedPinned ? "pinned" : "clamped");
     ax.push_back(a.x);
     ay.push_back(a.y);

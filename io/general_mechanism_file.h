@@ -12,8 +12,8 @@
 
 #include "flexure/io/csv_table.h"
 #include "flexure/io/platform/hdf5_file.h"
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
-#include "flexure/mechanisms/general/general_prbm.h"
 
 namespace flexure::io {
 

@@ -1,5 +1,5 @@
 #pragma once
-// Drawings of a mechanism's buildable geometry (mechanisms/mechanism_geometry.h) to scale in
+// Drawings of a mechanism's buildable geometry (mechanisms/mechanism.h) to scale in
 // millimetres: SVG (renders in a browser; viewBox in mm, one <g id=LAYER> per layer) and DXF
 // (ASCII R12, POLYLINE entities on named layers, $INSUNITS = mm) for CAD programs and laser
 // cutters. Layers: LINKS (rigid link centrelines), FLEXURES (each flexure's outline, its real
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/mechanisms/mechanism_geometry.h"
+#include "flexure/mechanisms/mechanism.h"
 
 namespace flexure::io {
 

@@ -1,11 +1,11 @@
 #pragma once
-// The buildable geometry (mechanisms/mechanism_geometry.h) as a TOML table `[geometry]` that
+// The buildable geometry (mechanisms/mechanism.h) as a TOML table `[geometry]` that
 // `flexure design mechanism --out` appends to the design it writes (docs/drawings.md). The table
 // is written for the builder and read back by nobody: parse_mechanism_toml accepts it and ignores
 // it, since every number in it follows from the design's own keys.
 #include <string>
 
-#include "flexure/mechanisms/mechanism_geometry.h"
+#include "flexure/mechanisms/mechanism.h"
 
 namespace flexure::io {
 

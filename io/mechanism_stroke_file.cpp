@@ -147,7 +147,7 @@ void write_mechanism_stroke(Hdf5Group& root,
     root.set_attribute("prbm_validity_limit", *a.prbm_validity_limit);
     attribute_units += "; prbm_validity_limit: m";
   }
-  // What is outside Table 5.1 and how large the PRBM's error is there (prbm_validity.h); the
+  // What is outside Table 5.1 and how large the PRBM's error is there (mechanism_analysis.h); the
   // errors are NaN where the exact model was not solved or no point falls in the group.
   const PrbmStrokeValidity& v = a.prbm_validity;
   root.set_attribute("prbm_validity", describe_validity(v, a.design.stroke));

@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_exact_geometry.h"
-#include "flexure/mechanisms/mechanism_geometry.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::io {

@@ -74,7 +74,7 @@ double nonnegative(const toml::node& node, const std::string& name, const std::s
 }
 
 // [dynamics]: m2, m3, m_slider (kg) and spring_constants = [k1, k2, k3] (N m per half), all
-// optional here; flexure dynamics says which it needs (dynamics_design.h).
+// optional here; flexure dynamics says which it needs (dynamics.h).
 dynamics::DynamicsData parse_dynamics_table(const toml::table& root, const std::string& source) {
   dynamics::DynamicsData data;
   data.source = source;

@@ -27,13 +27,13 @@
 // Reads a MechanismDesign from TOML (format: docs/mechanisms.md "TOML description"; examples in
 // docs/examples/mechanism_*.toml). Errors throw InvalidInput "SOURCE:LINE: message" naming the key.
 // The optional [dynamics] table (masses, spring constants) is what `flexure dynamics` needs beyond
-// the design (mechanisms/dynamics/dynamics_design.h); it is checked here and ignored by analyze.
+// the design (mechanisms/dynamics/dynamics.h); it is checked here and ignored by analyze.
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "flexure/beam/physical_beam.h"
-#include "flexure/mechanisms/dynamics/dynamics_design.h"
+#include "flexure/mechanisms/dynamics/dynamics.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/solver/chain_model/segment_chain.h"

@@ -1,12 +1,10 @@
-#include "flexure/mechanisms/cfm_exact.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
 #include "flexure/mechanisms/cfm/constant_force.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::cfm {

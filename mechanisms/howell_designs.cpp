@@ -6,7 +6,7 @@
 
 #include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/builtin_designs.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/solver/common/names.h"
 #include "flexure/solver/common/status.h"

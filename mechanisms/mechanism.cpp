@@ -8,10 +8,10 @@
 
 #include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/builtin_designs.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/mechanisms/inversion.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/names.h"
 #include "flexure/solver/common/status.h"
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "flexure/mechanisms/cfm/constant_force.h"
+#include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/mechanism_warnings.h"
 #include "flexure/solver/common/status.h"
 

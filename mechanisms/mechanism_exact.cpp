@@ -6,8 +6,7 @@
 #include <cmath>
 
 #include "flexure/elements/prbm_element.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
-#include "flexure/mechanisms/mechanism_stability.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
@@ -123,7 +122,7 @@ PhysicalChain physical_chain(const MechanismDesign& d) {
 ExactMechanismSolver::ExactMechanismSolver(MechanismDesign design)
     : ExactMechanismSolver(std::move(design), Options{}) {}
 
-void ExactMechanismSolver::Options::validate() const {
+void ExactMechanismOptions::validate() const {
   shooting.validate();
   const auto positive = [](double value, const char* name) {
     if (!(value > 0.0) || !std::isfinite(value)) {

@@ -39,17 +39,13 @@
 #include <vector>
 
 #include "flexure/mechanisms/mechanism.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure::mechanism {
-
-enum class ExactSupport { kDirectChain, kTwoForceCoupler, kPinnedMiddle, kPinnedEnds, kPrbmOnly };
-ExactSupport exact_support(const MechanismDesign& design);
-// Why a configuration is PRBM-only (empty when an exact model exists).
-std::string exact_support_reason(const MechanismDesign& design);
 
 // The physical chain (dimensional): from the ground clamp to the slider (kDirectChain) or to
 // pivot 2 (kTwoForceCoupler, kPinnedMiddle, which adds coupler_chain); from the ground pin, with a
@@ -66,99 +62,10 @@ struct PhysicalChain {
 };
 PhysicalChain physical_chain(const MechanismDesign& design);
 
-struct ExactPoint : SolveStatus {
-  double displacement = 0.0;  // Delta x, m
-  double force = 0.0;         // slider input force, N (= -x reaction of the slider on the chain)
-  double Nx = 0.0, Ny = 0.0;  // internal force of the chain (force on the chain's tip), N
-  double m0 = 0.0;            // bending moment at the ground clamp, N m
-  double phi = 0.0;  // coupler angle above the axis (two-force, middle pin); crank angle alpha
-                     // at the ground pin (kPinnedEnds), rad
-  // The solved chain, NONDIMENSIONAL (lengths / length_scale, EI / EI_scale; the shooting solver's
-  // Newton tolerances are absolute, so the chain is solved in units where lengths and loads are
-  // O(1)): kDirectChain with its slider end condition; kTwoForceCoupler the crank as a free
-  // cantilever under the dead coupler force.
-  SegmentChain chain;
-  // Two-force case: d(mismatch)/d(Q, phi), row-major, to start the next point's Newton iteration.
-  std::array<double, 4> jacobian{};
-  double length_scale = 1.0;     // m (the undeflected slider position)
-  double EI_scale = 1.0;         // N m^2 (the largest flexural rigidity)
-  std::vector<double> unknowns;  // shooting unknowns, to start the next point
-  // kPinnedMiddle: the coupler cantilever (nondimensional, its own frame), its unknowns and its
-  // root moment at the slider clamp (N m, own frame).
-  SegmentChain coupler_chain;
-  std::vector<double> coupler_unknowns;
-  double coupler_m0 = 0.0;
-  // kPinnedMiddle: determinant of the tangent matrix (Jacobian of the closure and pin-moment
-  // residuals in the pin force, root moments and cut states) at the solution, nondimensional. A
-  // change of sign between stroke points (with the same multiple-shooting cuts) means a singular
-  // point was passed (fold or bifurcation).
-  double stiffness_determinant = 0.0;
-  // kDirectChain: sign of det dg/dz of the shooting problem at the solution (0: not known). It
-  // changes at every fold and bifurcation of the stroke, so between stroke points with the same
-  // multiple-shooting cuts a change means Newton landed on another branch (exact_stroke).
-  int jacobian_sign = 0;
-  // iterations: shooting Newton iterations, all solves of this point
-  // residual: shooting residual; two-force case |pivot 2 mismatch|/slider_x0
-};
-
 class ExactMechanismSolver {
  public:
-  struct Options {
-    // Inner shooting solves: GSL's rk8pd at rtol 1e-12 (the shooting default; about 4x fewer
-    // right-hand sides than the Dormand-Prince 5(4) used before, docs/performance.md).
-    // A Newton trial may cost at most 4 times the integration of the current point
-    // (NewtonOptions::trial_cost_factor): the far trials of an undamped step (loads 100x the
-    // solution's on the thin strips of 3A-lssm) cost most of its stroke's work and are rejected.
-    ShootingSolver::Options shooting = [] {
-      ShootingSolver::Options o;
-      o.rtol = 1e-12;
-      o.atol = 1e-14;
-      o.newton.trial_cost_factor = 4.0;
-      return o;
-    }();
-    double position_tolerance = 1e-10;  // middle pin: |pivot 2 mismatch| / slider_x0
-    // Middle pin: a Newton step that no longer decreases the mismatch ends the iteration as
-    // converged when the mismatch is below this (integrator rtol 1e-12 times the FD Jacobian).
-    double noise_floor = 1e-9;
-    int max_newton_iterations = 30;  // Newton steps per point on (Q, phi), (F, alpha) or, for the
-                                     // middle pin, (P, root moments)
-    bool reuse_jacobian = false;     // two-force case: start from the previous point's Jacobian
-    // Work budget of a stroke (docs/mechanisms.md "Work budget"), counted in integrator steps so
-    // that the same design gives up at the same point on any machine, under a sanitizer or on a
-    // loaded one: exact_stroke gives up, each remaining solve returning converged = false with a
-    // message naming the budget, once work_budget + work_budget_per_point * (stroke points)
-    // integrator steps have been spent by all its solves (the shooting solver's own steps are
-    // counted when it returns, the middle-pin Newton's at every evaluation). An rk8pd step costs
-    // about 2.5 Dormand-Prince steps (about 1.1e6 steps/s here), so the budget, 4e7 + 2e5 per
-    // point when steps were Dormand-Prince's, was halved to keep its time (about 20 s). The slowest
-    // built-in stroke takes 4.4e5 steps (3A-lssm at 5 points, where the start strategies run) and
-    // 5.1e4 at the default 50 points, so the budget leaves a factor of about 45; near a fold or
-    // with very unequal flexures the start strategies and substeps could otherwise run for minutes
-    // (issue 11). A large value lifts it.
-    double work_budget = 2e7;            // integrator steps
-    double work_budget_per_point = 1e5;  // integrator steps per stroke point
-    // Set by exact_stroke (solve() called directly has none): the steps spent so far by every
-    // solver of the stroke, shared between them, and the limit.
-    std::shared_ptr<long> work_spent;
-    double work_limit = 0.0;  // 0: no limit
-    // Newton trial points that load a flexible segment beyond |F| L^2/EI = this are not
-    // integrated (counted as failed evaluations, so the step is damped): the designs are limited
-    // to 1e3 (SlenderBeamLimits), and 1e4 is EllipticSolver's domain. A Newton step of the
-    // pinned-ends model of 1B-plp near its toggle tried F L^2/EI = 2e8, one shooting solve
-    // there took 21 s.
-    double max_load_parameter = 1e4;
-    // exact_stroke of a serial chain (`mechanism analyze --stable`): when a point of the stroke
-    // from the PRBM start is unstable with the slider held, return instead the stable stroke of
-    // exact_stable_stroke (from the branch of the straight chain's lowest buckling mode, stable
-    // neighbours taken where it turns unstable); ExactStrokeResult::stable_search says what was
-    // done. Off by default: the documented answer is the proportional one, labelled by its
-    // verdicts. 3A-lssm: 11.03-19.53 N, 3A-lslm: 11.30-43.63 N, stable at every point
-    // (docs/stability.md "Mechanisms").
-    bool stable_start = false;
-
-    // Throws InvalidInput naming the first field outside its range.
-    void validate() const;
-  };
+  // The settings (mechanism_analysis.h).
+  using Options = ExactMechanismOptions;
 
   explicit ExactMechanismSolver(MechanismDesign design);
   ExactMechanismSolver(MechanismDesign design, Options options);
@@ -207,30 +114,6 @@ class ExactMechanismSolver {
 
 // work_budget + work_budget_per_point * points.
 double exact_work_limit(const ExactMechanismSolver::Options& options, std::size_t points);
-
-struct ExactStrokeResult : SolveStatus {
-  std::vector<ExactPoint> points;
-  // converged(): every point converged
-  long integrator_steps = 0;  // work spent by all solves of the stroke (see Options::work_budget)
-  // The first point solved from the PRBM start was unstable with the slider held, and the stroke
-  // starts on the branch of the straight chain's lowest buckling mode instead
-  // (exact_lowest_mode_point). When that branch cannot be followed to the end, exact_stroke
-  // returns the stroke from the PRBM start (this flag then false, the message saying so).
-  bool lowest_mode_start = false;
-  // With Options::stable_start: what was done, in words (the branch followed and how many stable
-  // neighbours were taken at pitchforks, "not needed: ..." when the PRBM start's stroke is stable,
-  // or why the proportional stroke was kept); empty without it.
-  std::string stable_search;
-};
-ExactStrokeResult exact_stroke(const MechanismDesign& design,
-                               const std::vector<double>& displacements);
-// `progress(done, total)`, if set, is called after every stroke point (for a progress display on
-// long strokes, e.g. near a fold where substeps multiply the work).
-using StrokeProgress = std::function<void(std::size_t done, std::size_t total)>;
-ExactStrokeResult exact_stroke(const MechanismDesign& design,
-                               const std::vector<double>& displacements,
-                               const ExactMechanismSolver::Options& options,
-                               const StrokeProgress& progress = nullptr);
 
 // The stable stroke of a serial chain (mechanism_exact_stable.cpp): starts from the PRBM start
 // when its first point is stable with the slider held, else on the branch of the straight chain's

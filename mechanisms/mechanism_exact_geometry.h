@@ -4,7 +4,7 @@
 // (mechanism_exact.h, the stroke `mechanism analyze` solves) is integrated again from its unknowns
 // at chosen arc lengths (solver/shooting/shooting_solver.h) -- every flexible segment's two ends
 // and `samples` points along it, every rigid piece's two ends -- and placed in the drawing frame
-// of mechanism_geometry.h: the chain's root at the ground attachment (the ground clamp of an s or
+// of mechanism.h: the chain's root at the ground attachment (the ground clamp of an s or
 // l pivot 1, pin 1), +x along the slider axis; a middle-pin coupler chain from the displaced
 // slider clamp back to pivot 2 (its frame turned by pi, mechanism_exact_pin.cpp); a two-force
 // coupler as the straight line from the crank's tip to the slider pin.
@@ -14,8 +14,8 @@
 // PRBM's own error (docs/validation.md).
 #include <string>
 
+#include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/mechanisms/mechanism_geometry.h"
 
 namespace flexure::mechanism {
 

@@ -7,8 +7,8 @@
 
 #include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/broyden_newton_2d.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/solver/shooting/shooting_problem.h"
 
 namespace flexure::mechanism {

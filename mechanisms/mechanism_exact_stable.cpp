@@ -18,8 +18,8 @@
 #include <cmath>
 #include <memory>
 
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/mechanisms/mechanism_stability.h"
 
 namespace flexure::mechanism {
 namespace {

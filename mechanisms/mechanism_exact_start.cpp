@@ -5,9 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
-#include "flexure/mechanisms/mechanism_stability.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_problem.h"
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "flexure/mechanisms/materials_fatigue.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {

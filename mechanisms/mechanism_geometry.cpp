@@ -1,11 +1,10 @@
-#include "flexure/mechanisms/mechanism_geometry.h"
-
 #include <fmt/format.h>
 
 #include <cmath>
 
 #include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
+#include "flexure/mechanisms/mechanism.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {

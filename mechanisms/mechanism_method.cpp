@@ -1,5 +1,3 @@
-#include "flexure/mechanisms/mechanism_method.h"
-
 #include <fmt/format.h>
 
 #include <cmath>
@@ -7,6 +5,7 @@
 
 #include "flexure/beam/beam_problem.h"
 #include "flexure/mechanisms/builtin_designs.h"
+#include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/solver/common/status.h"
 

@@ -1,5 +1,3 @@
-#include "flexure/mechanisms/mechanism_prbm.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -9,6 +7,7 @@
 #include "flexure/mechanisms/cfm/constant_force.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/mechanisms/inversion.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {

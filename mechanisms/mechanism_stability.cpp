@@ -1,5 +1,3 @@
-#include "flexure/mechanisms/mechanism_stability.h"
-
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
@@ -7,6 +5,8 @@
 #include <cmath>
 #include <deque>
 
+#include "flexure/mechanisms/mechanism_analysis.h"
+#include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/mechanism_second_variation.h"
 #include "flexure/mechanisms/prbm_virtual_work.h"
 #include "flexure/solver/common/status.h"

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "flexure/mechanisms/builtin_designs.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {

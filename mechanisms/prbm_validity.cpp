@@ -1,5 +1,3 @@
-#include "flexure/mechanisms/prbm_validity.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -9,7 +7,7 @@
 
 #include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/inversion.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 
 namespace flexure::mechanism {
 namespace {

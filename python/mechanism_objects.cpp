@@ -11,9 +11,8 @@
 #include <vector>
 
 #include "flexure/io/toml_files.h"
-#include "flexure/mechanisms/general/general_exact.h"
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
-#include "flexure/mechanisms/general/general_prbm.h"
 #include "flexure/mechanisms/general/stable_selection.h"
 #include "python/object_support.h"
 

@@ -10,7 +10,7 @@ docs/models.md "auto across the ladder").
 With --grid axial it writes data/ladder_auto_error_map_axial.csv instead: the same measurements
 over loads where the axial force dominates (|n| from 2 to 100 at small alpha2), the loads a
 flexure inside a mechanism carries (a pin force nearly along it); the mechanisms' model per
-flexure reads both (mechanisms/general/flexure_models.h; docs/mechanisms.md "A model per flexure").
+flexure reads both (mechanisms/general/general_mechanism.h; docs/mechanisms.md "A model per flexure").
 
     /usr/bin/python3 scripts/make_ladder_auto_map.py --flexure build/flexure --grid axial \
         --out data/ladder_auto_error_map_axial.csv

@@ -10,7 +10,6 @@
 #include <benchmark/benchmark.h>
 
 #include "flexure/mechanisms/cfm/cfm_model.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
 
 namespace {
 

@@ -15,9 +15,8 @@
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/mechanism.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
-#include "flexure/mechanisms/mechanism_stability.h"
 #include "flexure/solver/common/gsl_guard.h"
 #include "flexure/solver/shooting/elastica_integrator.h"
 
@@ -84,7 +83,7 @@ BENCHMARK_CAPTURE(BM_ExactStresses50, lssm_sampled801, "3A-lssm", true)
     ->Unit(benchmark::kMillisecond);
 
 // Stability verdicts of every point of a 50-point stroke under both controls
-// (mechanisms/mechanism_stability.h): the PRBM's (closed form) and the exact model's (the shape
+// (mechanisms/mechanism_analysis.h): the PRBM's (closed form) and the exact model's (the shape
 // integrated again at the stations, the second variation of the chain or of the mechanism's path).
 void BM_PrbmStability50(benchmark::State& state, const char* name) {
   MechanismDesign d = find_builtin_mechanism(name);

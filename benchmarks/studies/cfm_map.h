@@ -3,7 +3,7 @@
 // docs/design.md "Design-space maps"): over a grid of R, d, K1, K2, the PRBM's mean Phi, percent
 // constant force and Psi, the toggle stroke (the stroke limit of eq. 2.16, and whether the
 // requested d was clamped to it) and, with the exact model, the exact Xi', exact mean Phi and the
-// PRBM's largest force error against it (cfm_exact.h).
+// PRBM's largest force error against it (mechanisms/mechanism_analysis.h, solve_cfm_exact).
 #include <cstddef>
 #include <functional>
 #include <string>

@@ -17,7 +17,6 @@
 #include <vector>
 
 #include "flexure/mechanisms/dynamics/dynamics.h"
-#include "flexure/mechanisms/dynamics/dynamics_design.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/solver/common/status.h"
 

@@ -4,7 +4,5 @@
 // mechanisms to a specification (force, stroke, material, sections). Link `flexure::mechanisms`
 // (or `flexure::flexure`).
 #include "flexure/mechanisms.h"
-#include "flexure/mechanisms/design/cfm_design_problem.h"
-#include "flexure/mechanisms/design/cfm_exact_refinement.h"
 #include "flexure/mechanisms/design/cfm_synthesis.h"
 #include "flexure/mechanisms/design/mechanism_synthesis.h"

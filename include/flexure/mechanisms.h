@@ -10,30 +10,20 @@
 //   const fm::MechanismAnalysis a = fm::analyze_mechanism(fm::howell_mechanisms().front(), {});
 #include "flexure/prbm.h"
 
-// Designs, their geometry and the catalogues.
+// Designs, their geometry, the catalogues and the PRBM-or-exact choice.
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/mechanism.h"
-#include "flexure/mechanisms/mechanism_geometry.h"
 
-// Analysis: PRBM and exact strokes, stresses, stability, the method choice.
+// Analysis: PRBM and exact strokes, stresses, stability, where the PRBM stays valid; the exact
+// model of a nondimensional constant-force mechanism.
 #include "flexure/mechanisms/mechanism_analysis.h"
-#include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/mechanisms/mechanism_method.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
-#include "flexure/mechanisms/mechanism_stability.h"
-#include "flexure/mechanisms/prbm_validity.h"
 
-// Constant-force mechanisms: Weight's configurations, their PRBM and exact models.
-#include "flexure/mechanisms/cfm/cfm_configuration.h"
+// Constant-force mechanisms: Weight's configurations, their PRBM and the printed sub-classes.
 #include "flexure/mechanisms/cfm/cfm_model.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
-#include "flexure/mechanisms/cfm_exact.h"
 
 // Dynamics of the slider-crank: inverse and forward.
 #include "flexure/mechanisms/dynamics/dynamics.h"
-#include "flexure/mechanisms/dynamics/dynamics_design.h"
 
 // General mechanisms: any topology, by the PRBM and the exact model.
-#include "flexure/mechanisms/general/general_exact.h"
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
-#include "flexure/mechanisms/general/general_prbm.h"

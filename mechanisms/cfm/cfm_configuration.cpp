@@ -1,8 +1,7 @@
-#include "flexure/mechanisms/cfm/cfm_configuration.h"
-
 #include <fmt/format.h>
 
 #include "flexure/elements/prbm_element.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/solver/common/names.h"
 #include "flexure/solver/common/status.h"
 

@@ -1,12 +1,10 @@
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cctype>
 #include <deque>
 
-#include "flexure/mechanisms/cfm/cfm_configuration.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/data/data_files.h"
 #include "flexure/solver/common/csv_table.h"
 #include "flexure/solver/common/names.h"

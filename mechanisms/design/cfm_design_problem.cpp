@@ -1,12 +1,11 @@
-#include "flexure/mechanisms/design/cfm_design_problem.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-#include "flexure/mechanisms/cfm/cfm_configuration.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
+#include "flexure/mechanisms/design/cfm_synthesis.h"
 #include "flexure/solver/common/names.h"
 #include "flexure/solver/common/status.h"
 

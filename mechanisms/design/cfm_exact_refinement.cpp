@@ -1,5 +1,3 @@
-#include "flexure/mechanisms/design/cfm_exact_refinement.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -9,9 +7,10 @@
 #include <string>
 #include <utility>
 
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
-#include "flexure/mechanisms/cfm_exact.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
+#include "flexure/mechanisms/design/cfm_synthesis.h"
 #include "flexure/mechanisms/design/halton.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::design {

@@ -8,8 +8,7 @@
 #include <limits>
 #include <nlopt.hpp>
 
-#include "flexure/mechanisms/cfm/cfm_configuration.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/design/halton.h"
 #include "flexure/solver/common/status.h"
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "flexure/mechanisms/cfm/cfm_configuration.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 
 namespace flexure::design {
 

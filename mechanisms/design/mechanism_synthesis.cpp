@@ -11,17 +11,15 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "flexure/mechanisms/cfm/cfm_configuration.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm_comparison.h"
-#include "flexure/mechanisms/design/cfm_exact_refinement.h"
+#include "flexure/mechanisms/design/cfm_synthesis.h"
 #include "flexure/mechanisms/design/feasibility.h"
 #include "flexure/mechanisms/design/length_search.h"
 #include "flexure/mechanisms/design/section_family.h"
 #include "flexure/mechanisms/design/subclass_problem.h"
 #include "flexure/mechanisms/design/subclass_sizing.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::design {

@@ -218,7 +218,7 @@ MechanismDesignReport design_mechanisms(const MechanismSpec& spec);
 
 // Beyond the thesis (docs/design.md "Against the exact model"): the feasible design `prbm_design`
 // refined against the exact model. R, K1, K2 maximise the exact percent constant force at the
-// design's stroke d under the sub-class's orientation rules and Xi' floor (cfm_exact_refinement.h;
+// design's stroke d under the sub-class's orientation rules and Xi' floor (cfm_synthesis.h;
 // Xi'_exact depends on them and d only), the links are re-derived at the same l_tot, and all
 // thicknesses are scaled together until the exact mean force is the specified one (the
 // elastica's force scales as h^3 at fixed geometry, its bending stress as h); the widths follow

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
-#include "flexure/mechanisms/design/cfm_design_problem.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
+#include "flexure/mechanisms/design/cfm_synthesis.h"
 
 namespace flexure::design {
 

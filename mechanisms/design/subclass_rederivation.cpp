@@ -2,9 +2,8 @@
 
 #include <chrono>
 
-#include "flexure/mechanisms/cfm/cfm_configuration.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
-#include "flexure/mechanisms/design/cfm_exact_refinement.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
+#include "flexure/mechanisms/design/cfm_synthesis.h"
 #include "flexure/mechanisms/design/subclass_problem.h"
 
 namespace flexure::design {

@@ -1,6 +1,6 @@
 #pragma once
 // Every thesis sub-class re-derived from its own problem (subclass_problem.h): the PRBM synthesis
-// (cfm_synthesis.h) and, optionally, the optimum of the exact model (cfm_exact_refinement.h), next
+// (cfm_synthesis.h) and, optionally, the optimum of the exact model (refine_cfm_exact), next
 // to the printed point (`flexure design cfm --all-subclasses`; docs/design.md).
 #include <cstddef>
 #include <functional>
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/design/cfm_synthesis.h"
 
 namespace flexure::design {

@@ -6,11 +6,11 @@
 #include <cmath>
 #include <limits>
 
-#include "flexure/mechanisms/cfm/cfm_configuration.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm_comparison.h"
 #include "flexure/mechanisms/design/feasibility.h"
 #include "flexure/mechanisms/design/subclass_problem.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::design {
@@ -101,9 +101,9 @@ ExactAt exact_at(const mechanism::MechanismDesign& d, int points) {
 }
 
 // The largest t whose PRBM stresses stay below S. At fixed E I every PRBM stress is
-// sigma(t) = a t + c t^2 (mechanism_prbm.h: bending by a spring moment or the clamp moment of the
-// pin force, M h/(2I), grows like t at fixed I; the axial |P|/(b h) like t^2 at fixed b h^3), so
-// two strokes, at t1 and t1/2, give a and c of every point and pivot exactly.
+// sigma(t) = a t + c t^2 (mechanism_analysis.h: bending by a spring moment or the clamp moment of
+// the pin force, M h/(2I), grows like t at fixed I; the axial |P|/(b h) like t^2 at fixed b h^3),
+// so two strokes, at t1 and t1/2, give a and c of every point and pivot exactly.
 std::optional<double> prbm_thickness_limit(
     mechanism::MechanismDesign& d, const SectionFamily& f, double t1, double S, int points) {
   const PrbmAt one = prbm_at(d, f, t1, points);

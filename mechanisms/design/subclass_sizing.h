@@ -9,7 +9,6 @@
 #include <string>
 
 #include "flexure/mechanisms/cfm/cfm_model.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/design/mechanism_synthesis.h"
 #include "flexure/mechanisms/design/section_family.h"
 #include "flexure/mechanisms/mechanism_analysis.h"

@@ -1,8 +1,7 @@
-#include "flexure/mechanisms/dynamics/dynamics_design.h"
-
 #include <fmt/format.h>
 
 #include "flexure/mechanisms/builtin_designs.h"
+#include "flexure/mechanisms/dynamics/dynamics.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::dynamics {

@@ -8,7 +8,7 @@
 #include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/inversion.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism::general {

@@ -1,6 +1,6 @@
 #pragma once
 // The stability verdict of an equilibrium of the exact (or mixed) model of a general mechanism
-// (general_exact.h; docs/mechanisms.md "Stability of the exact model", docs/stability.md
+// (general_analysis.h; docs/mechanisms.md "Stability of the exact model", docs/stability.md
 // "Mechanisms").
 //
 // The total potential energy Pi(q, u) of the mechanism -- the bodies' coordinates q and the

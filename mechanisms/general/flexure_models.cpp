@@ -1,5 +1,3 @@
-#include "flexure/mechanisms/general/flexure_models.h"
-
 #include <algorithm>
 #include <cmath>
 
@@ -7,6 +5,7 @@
 #include "flexure/beam/ladder_selector.h"
 #include "flexure/elements/ladder_models.h"
 #include "flexure/elements/prbm_element.h"
+#include "flexure/mechanisms/general/general_mechanism.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/common/status.h"
 

@@ -1,8 +1,6 @@
-#include "flexure/mechanisms/general/flexure_point_results.h"
-
 #include <cmath>
 
-#include "flexure/mechanisms/general/general_prbm.h"
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/mechanisms/general/prbm_assembly.h"
 
 namespace flexure::mechanism::general {

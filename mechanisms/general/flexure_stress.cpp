@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "flexure/elements/prbm_element.h"
-#include "flexure/mechanisms/general/flexure_point_results.h"
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/mechanisms/general/prbm_assembly.h"
 #include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/solver/common/status.h"
@@ -22,7 +22,7 @@ double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
 Eigen::Vector2d vec(const Vec2& v) { return {v.x, v.y}; }
 
 // sigma = |M| c/I + |P|/A of a rectangular b x h section: the fibre stresses of
-// flexure_point_results.h with the moment and the force both counted positive (the catalogue's
+// general_analysis.h with the moment and the force both counted positive (the catalogue's
 // rule adds the magnitudes whatever the force's direction).
 double section_stress(const Flexure& f, double moment, double force) {
   const FibreStresses st = fibre_stresses(f, std::abs(moment), std::abs(force));
@@ -93,7 +93,7 @@ PrbmPointStatics prbm_point_statics(const GeneralMechanism& m, const GeneralPrbm
     q[3 * hidden + 2] = std::atan2(cross(rest, now), rest.dot(now));
     ++hidden;
   }
-  // The multipliers: J_g^T mu = grad V - lambda grad c (general_prbm.h), least squares. The
+  // The multipliers: J_g^T mu = grad V - lambda grad c (general_analysis.h), least squares. The
   // constraint force on the coordinates is J_g^T mu: a pin g = p_b - p_a pushes its b side with
   // +mu.
   const double lambda = A.load_scaled(p.input_load);

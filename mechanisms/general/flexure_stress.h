@@ -1,7 +1,7 @@
 #pragma once
 // The largest stress of every flexure of a general mechanism at each recorded point, computed from
 // the general models' own solutions (docs/mechanisms.md "The catalogue as general mechanisms"),
-// with the catalogue's stress rules (mechanism_prbm.h, mechanism_exact.h) so that a built-in
+// with the catalogue's stress rules (mechanism_analysis.h, mechanism_exact.h) so that a built-in
 // design's general form (catalogue_general.h) gives the catalogue's stresses:
 //
 //  * PRBM (solve_general_prbm): sigma = |M| h/(2I) + |P|/A, P the force the flexure's PRB pin
@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
-#include "flexure/mechanisms/general/general_prbm.h"
 
 namespace flexure::mechanism::general {
 
@@ -34,8 +34,8 @@ struct GeneralFlexureStresses {
 
 // The statics of one PRBM point: the multipliers of the assembled PRBM (prbm_assembly.h: scaled,
 // joints first, then each flexure's PRB pins) and, per flexure, the end loads its PRB element
-// carries, in the exact model's terms (general_exact.h): the force N its tip body puts on its tip
-// (global, N), its root moment m0 (N m; m(s) = m0 - r(s) x N along it, r from the root), the
+// carries, in the exact model's terms (general_analysis.h): the force N its tip body puts on its
+// tip (global, N), its root moment m0 (N m; m(s) = m0 - r(s) x N along it, r from the root), the
 // moment behind its stress (K psi of a small-length pivot at its pivot, the clamp moment of a
 // fixed-pinned segment) and the tip's position relative to the root (global, m).
 struct PrbmFlexureLoads {

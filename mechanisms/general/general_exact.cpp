@@ -1,5 +1,3 @@
-#include "flexure/mechanisms/general/general_exact.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -13,9 +11,9 @@
 #include "flexure/elements/ladder_models.h"
 #include "flexure/mechanisms/general/arclength_path.h"
 #include "flexure/mechanisms/general/exact_stability.h"
-#include "flexure/mechanisms/general/flexure_models.h"
-#include "flexure/mechanisms/general/flexure_point_results.h"
 #include "flexure/mechanisms/general/flexure_stress.h"
+#include "flexure/mechanisms/general/general_analysis.h"
+#include "flexure/mechanisms/general/general_mechanism.h"
 #include "flexure/mechanisms/general/prbm_assembly.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/status.h"
@@ -60,7 +58,7 @@ struct FlexureBeam {
   // chained BCM marched from the same root loads (cbcm_march.h): a flexure whose tip under dead
   // loads would snap (the inclined bistable beam) stays regular, as the exact one does. Any other
   // model (mixed): a cantilever under its tip loads, unknowns w = (M_tip, Nx, Ny)
-  // (flexure_models.h).
+  // (general_mechanism.h).
   FlexureModel model = FlexureModel::kExact;
   int elements = 6;
   // Unknowns w are the root loads (the exact elastica and the marched CBCM).
@@ -399,7 +397,7 @@ class ExactSystem {
     return U;
   }
 
-  // Every flexure's end loads, largest stress and shape at z (flexure_point_results.h), SI, and
+  // Every flexure's end loads, largest stress and shape at z (general_analysis.h), SI, and
   // their loads on the ground added to `ground`. An exact flexure's bending moment and axial
   // force are those of its elastica along kEnergySamples samples (m = m0 + Nx y - Ny x,
   // N_a = N . t in the root frame), the largest |sigma| refined by a parabola through the largest

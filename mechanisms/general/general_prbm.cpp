@@ -1,10 +1,9 @@
-#include "flexure/mechanisms/general/general_prbm.h"
-
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "flexure/mechanisms/general/arclength_path.h"
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/mechanisms/general/prbm_assembly.h"
 #include "flexure/solver/common/status.h"
 

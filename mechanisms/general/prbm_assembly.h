@@ -36,7 +36,7 @@ class PrbmAssembly {
  public:
   // Validates the description (GeneralMechanism::validate) and assembles its PRBM. With
   // `assemble_flexures` false the flexures add nothing (no PRB pins, springs or links): the exact
-  // model (general_exact.h) adds them as elastica between their bodies instead.
+  // model (general_analysis.h) adds them as elastica between their bodies instead.
   explicit PrbmAssembly(const GeneralMechanism& mechanism, bool assemble_flexures = true);
 
   int coordinate_count() const { return 3 * static_cast<int>(bodies_.size()); }

@@ -19,8 +19,8 @@
 // and no stable equilibrium was found there.
 #include <string>
 
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
-#include "flexure/mechanisms/general/general_prbm.h"
 
 namespace flexure::mechanism::general {
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "flexure/io/toml_files.h"
-#include "flexure/mechanisms/general/general_prbm.h"
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism::general {

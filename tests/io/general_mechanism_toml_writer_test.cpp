@@ -14,7 +14,7 @@
 
 #include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/general/catalogue_general.h"
-#include "flexure/mechanisms/general/general_prbm.h"
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/mechanisms/mechanism_catalogue.h"
 #include "flexure/solver/common/status.h"
 

@@ -19,7 +19,6 @@
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact_geometry.h"
-#include "flexure/mechanisms/mechanism_geometry.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::io {

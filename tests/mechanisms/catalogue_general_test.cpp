@@ -21,8 +21,7 @@
 
 #include "flexure/mechanisms/cfm/constant_force.h"
 #include "flexure/mechanisms/general/flexure_stress.h"
-#include "flexure/mechanisms/general/general_exact.h"
-#include "flexure/mechanisms/general/general_prbm.h"
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_catalogue.h"
 #include "flexure/mechanisms/mechanism_exact.h"
@@ -194,7 +193,7 @@ TEST(CatalogueGeneral, AllFortyDesignsAreTheirCatalogueNumbers) {
             << "  safety factor " << safety.value << " (" << safety.where << ")\n";
 }
 
-// The mixed model with every flexure exact is the exact model (general_exact.h), so the test
+// The mixed model with every flexure exact is the exact model (general_analysis.h), so the test
 // above measures solve_general_exact: checked here on an slp design and an inversion.
 TEST(CatalogueGeneral, AllExactMixedIsTheExactModel) {
   for (const char* name : {"2A-slp", "1B-plp'"}) {

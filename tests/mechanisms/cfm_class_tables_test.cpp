@@ -17,7 +17,6 @@
 #include <string>
 
 #include "flexure/mechanisms/cfm/cfm_model.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/cfm_comparison.h"
 #include "tests/support/cfm_test_support.h"
 

@@ -1,16 +1,15 @@
-// Optimisation against the exact model (mechanisms/design/cfm_exact_refinement.h): from a thesis
+// Optimisation against the exact model (mechanisms/design/cfm_synthesis.h): from a thesis
 // sub-class, the refined design's exact percent constant force is at least the sub-class's own
 // (checked by an independent exact solve at twice the points), its constraints hold, and a run is
 // reproducible.
-#include "flexure/mechanisms/design/cfm_exact_refinement.h"
-
 #include <gtest/gtest.h>
 
 #include <iostream>
 #include <string>
 #include <vector>
 
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
+#include "flexure/mechanisms/design/cfm_synthesis.h"
 #include "flexure/mechanisms/design/subclass_problem.h"
 #include "flexure/solver/common/status.h"
 

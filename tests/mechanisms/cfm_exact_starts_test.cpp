@@ -1,4 +1,4 @@
-// The starts of `flexure design cfm --model exact` (cfm_exact_refinement.h
+// The starts of `flexure design cfm --model exact` (cfm_synthesis.h
 // exact_refinement_starts): the PRBM optimum first, then exactly the printed sub-classes of the
 // same configuration and stroke that the thesis did not clamp at the toggle position (its own
 // toggle_clamped annotation, not the closed-form R interval the function uses) and that lie inside
@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
-#include "flexure/mechanisms/design/cfm_exact_refinement.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
+#include "flexure/mechanisms/design/cfm_synthesis.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::design {

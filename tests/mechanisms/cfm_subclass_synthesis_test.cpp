@@ -21,9 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "flexure/mechanisms/cfm/cfm_configuration.h"
 #include "flexure/mechanisms/cfm/cfm_model.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/mechanisms/design/cfm_synthesis.h"
 

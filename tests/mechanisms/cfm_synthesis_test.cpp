@@ -8,8 +8,7 @@
 #include <cmath>
 #include <string>
 
-#include "flexure/mechanisms/cfm/cfm_configuration.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/solver/common/status.h"
 

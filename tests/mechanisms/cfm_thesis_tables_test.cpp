@@ -19,7 +19,6 @@
 #include <string>
 
 #include "flexure/mechanisms/cfm/cfm_model.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/cfm_comparison.h"
 #include "flexure/solver/common/status.h"
 #include "tests/support/cfm_test_support.h"

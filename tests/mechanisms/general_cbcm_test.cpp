@@ -14,7 +14,7 @@
 
 #include "flexure/elements/cbcm_march.h"
 #include "flexure/elements/ladder_models.h"
-#include "flexure/mechanisms/general/general_exact.h"
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
 
 namespace flexure::mechanism::general {

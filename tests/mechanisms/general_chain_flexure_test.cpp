@@ -1,5 +1,5 @@
 // Howell's chain algorithm as the model of a flexure of a general mechanism (`--model mixed`,
-// model = "chain" with `elements`; solve_general_mixed, general_exact.h; docs/mechanisms.md "A
+// model = "chain" with `elements`; solve_general_mixed, general_analysis.h; docs/mechanisms.md "A
 // model per flexure"): the shipped parallel guide with both flexures `chain` against the same
 // mechanism with both exact, the error falling with the chain's N at its measured order, and an
 // invalid `elements` refused naming the flexure and the file line.
@@ -12,8 +12,7 @@
 #include <string>
 
 #include "flexure/io/toml_files.h"
-#include "flexure/mechanisms/general/flexure_models.h"
-#include "flexure/mechanisms/general/general_exact.h"
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
 #include "flexure/solver/common/status.h"
 

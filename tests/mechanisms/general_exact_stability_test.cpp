@@ -1,6 +1,6 @@
 // Stability of the exact model of a general mechanism (mechanisms/general/exact_stability.h,
-// general_exact.h; docs/mechanisms.md "Stability of the exact model") against independent values:
-// Howell's bistable switch (its verdicts against the sign of the exact model's own energy
+// general_analysis.h; docs/mechanisms.md "Stability of the exact model") against independent
+// values: Howell's bistable switch (its verdicts against the sign of the exact model's own energy
 // curvature d(input load)/d(input), the PRBM's classification of its equilibria, Table 11.2), a
 // parallel-guiding stage (stable, 24 EI/L^3), and a column loaded axially through a mechanism,
 // whose verdict must flip at its Euler load 4 pi^2 EI/L^2 (clamped at both ends, axially free) with
@@ -11,13 +11,11 @@
 #include <numbers>
 
 #include "flexure/mechanisms/general/catalogue_general.h"
-#include "flexure/mechanisms/general/general_exact.h"
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
-#include "flexure/mechanisms/general/general_prbm.h"
 #include "flexure/mechanisms/mechanism.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
-#include "flexure/mechanisms/mechanism_stability.h"
 
 namespace flexure::mechanism::general {
 namespace {
@@ -287,7 +285,7 @@ TEST(GeneralExactStability, CrankDrivenPastItsTravelStopsAtTheLimitPoint) {
 
 // The catalogue's constant-force designs rebuilt as general mechanisms (catalogue_general.h):
 // the general exact model's verdicts against the catalogue's own exact verdicts
-// (exact_point_stability, mechanism_stability.h: its chains' second variation along the path it
+// (exact_point_stability, mechanism_analysis.h: its chains' second variation along the path it
 // judges, independent code), kind and index under both controls at every stroke point.
 TEST(GeneralExactStability, CatalogueDesignsVerdictsMatchTheCatalogueExactModel) {
   int compared = 0, unstable = 0;

@@ -10,9 +10,8 @@
 
 #include "flexure/elements/prbm_element.h"
 #include "flexure/io/toml_files.h"
-#include "flexure/mechanisms/general/general_exact.h"
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
-#include "flexure/mechanisms/general/general_prbm.h"
 
 namespace flexure::mechanism::general {
 namespace {

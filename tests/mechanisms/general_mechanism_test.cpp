@@ -15,11 +15,10 @@
 
 #include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/general/catalogue_general.h"
-#include "flexure/mechanisms/general/general_exact.h"
-#include "flexure/mechanisms/general/general_prbm.h"
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/mechanisms/mechanism.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism::general {
@@ -446,7 +445,7 @@ TEST(GeneralMechanismPrbm, RandomFourBarsLoadIsTheEnergysSlopeAndVerdictsItsCurv
   EXPECT_GT(judged, 1000);
 }
 
-// The exact model (general_exact.h): each flexure an elastica between its bodies.
+// The exact model (general_analysis.h): each flexure an elastica between its bodies.
 
 TEST(GeneralMechanismExact, ParallelGuideSmallDisplacementStiffnessIs24EIOverL3) {
   const double L = 0.05, E = 2e9, b = 0.01, h = 1e-3;

@@ -10,9 +10,8 @@
 #include <string>
 
 #include "flexure/io/toml_files.h"
-#include "flexure/mechanisms/general/general_exact.h"
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
-#include "flexure/mechanisms/general/general_prbm.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism::general {

@@ -1,5 +1,5 @@
 // What a general mechanism's solve reports at every point besides its input load (issue 31 item
-// 2; mechanisms/general/flexure_point_results.h): reactions, joint positions, each flexure's end
+// 2; mechanisms/general/general_analysis.h): reactions, joint positions, each flexure's end
 // loads, largest stress and shape, checked against independent values -- the statics of the whole
 // mechanism (the ground's reaction balances the input load), the linear fixed-guided beam's stress
 // 6 E I delta/l^2 c/I at small motion, a standalone solve of one flexure (the elliptic elastica,
@@ -21,9 +21,8 @@
 #include "flexure/beam/physical_beam.h"
 #include "flexure/elements/prbm_element.h"
 #include "flexure/io/toml_files.h"
-#include "flexure/mechanisms/general/general_exact.h"
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
-#include "flexure/mechanisms/general/general_prbm.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism::general {

@@ -31,8 +31,7 @@
 #include <vector>
 
 #include "flexure/mechanisms/general/catalogue_general.h"
-#include "flexure/mechanisms/general/general_exact.h"
-#include "flexure/mechanisms/general/general_prbm.h"
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"

@@ -19,9 +19,8 @@
 #include <random>
 
 #include "flexure/elements/prbm_element.h"
-#include "flexure/mechanisms/general/general_exact.h"
+#include "flexure/mechanisms/general/general_analysis.h"
 #include "flexure/mechanisms/general/general_mechanism.h"
-#include "flexure/mechanisms/general/general_prbm.h"
 
 namespace flexure::mechanism::general {
 namespace {

@@ -17,11 +17,9 @@
 
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/cfm/cfm_model.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/cfm_comparison.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
 #include "tests/support/cfm_test_support.h"
 #include "tests/support/cli_test_support.h"
 

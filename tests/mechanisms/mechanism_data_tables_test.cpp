@@ -12,7 +12,7 @@
 #include <string>
 
 #include "flexure/mechanisms/builtin_designs.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/data/data_files.h"
 #include "flexure/solver/common/csv_table.h"
 #include "tests/support/data_file_support.h"

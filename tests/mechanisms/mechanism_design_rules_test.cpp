@@ -10,13 +10,12 @@
 #include <cmath>
 #include <string>
 
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/design/length_search.h"
 #include "flexure/mechanisms/design/mechanism_synthesis.h"
 #include "flexure/mechanisms/design/section_family.h"
 #include "flexure/mechanisms/design/subclass_sizing.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
 
 namespace flexure::design {
 namespace {

@@ -14,7 +14,7 @@
 #include <set>
 #include <string>
 
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm_comparison.h"
 #include "flexure/mechanisms/design/feasibility.h"
 #include "flexure/mechanisms/design/mechanism_synthesis.h"

@@ -15,8 +15,8 @@
 #include <string>
 
 #include "flexure/mechanisms/mechanism.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/solver/common/gsl_guard.h"
 
 namespace flexure::mechanism {

@@ -1,10 +1,8 @@
-// The buildable geometry (mechanisms/mechanism_geometry.h) against values computed here by other
+// The buildable geometry (mechanisms/mechanism.h) against values computed here by other
 // routes: the slider-crank's end-of-stroke pose from the law of cosines (not the library's
 // asin/loop-closure form, cfm/slider_crank.h), the overall length from the exact model's physical
 // chain (mechanism_exact.h, built separately from Table 8.1), the l segments from gamma = 0.85
 // (Howell §5.2), and the parts laid end to end without gaps or overlaps.
-#include "flexure/mechanisms/mechanism_geometry.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>

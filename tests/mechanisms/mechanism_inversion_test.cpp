@@ -18,11 +18,10 @@
 #include <string>
 
 #include "flexure/mechanisms/builtin_designs.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/mechanisms/prbm_virtual_work.h"
 #include "flexure/solver/common/status.h"
 #include "tests/support/cli_test_support.h"

@@ -2,12 +2,11 @@
 // `flexure mechanism analyze --method auto` against freshly computed PRBM-vs-exact strokes of the
 // built-in designs (the exact model is the independent reference); the choice of auto at loose and
 // tight tolerances; the CLI keys `method` and `method_reason`.
-#include "flexure/mechanisms/mechanism_method.h"
-
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
+#include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/status.h"
 #include "tests/support/cli_test_support.h"

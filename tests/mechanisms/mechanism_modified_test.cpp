@@ -30,7 +30,6 @@
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
 #include "flexure/solver/common/gsl_guard.h"
 #include "flexure/solver/common/status.h"
 #include "tests/support/cli_test_support.h"

@@ -7,8 +7,6 @@
 //  * the thesis design example 1 (1A-lpp, Weight 2001 Table 8.4): required force F = 25 lbf;
 //  * bad input (unknown names, negative sizes, strokes past the toggle position) and the TOML
 //    loader's messages (key and line).
-#include "flexure/mechanisms/mechanism_prbm.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,10 +15,10 @@
 #include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/cfm/cfm_model.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
 #include "flexure/mechanisms/cfm/constant_force.h"
 #include "flexure/mechanisms/cfm_comparison.h"
 #include "flexure/mechanisms/mechanism.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {

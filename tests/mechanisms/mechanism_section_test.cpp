@@ -15,7 +15,7 @@
 #include <cmath>
 
 #include "flexure/mechanisms/mechanism.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/section.h"
 #include "flexure/solver/common/status.h"
 

@@ -1,4 +1,4 @@
-// Stability verdicts of mechanism stroke points (mechanisms/mechanism_stability.h,
+// Stability verdicts of mechanism stroke points (mechanisms/mechanism_analysis.h,
 // docs/stability.md "Mechanisms"). What is checked against what:
 //  * PRBM, force control: the stiffness V'' = dF/dDelta x behind the margin against central
 //    differences of the PRBM force array (Richardson from two step sizes), and the verdict's sign
@@ -21,8 +21,6 @@
 //    index plus 1 where the exact force falls (central differences of the force array): the
 //    exchange of stability at a fold of the load (Maddocks 1987, "Stability and folds");
 //    inversions judged like their originals.
-#include "flexure/mechanisms/mechanism_stability.h"
-
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -35,6 +33,7 @@
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/inversion.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
+#include "flexure/mechanisms/mechanism_exact.h"
 #include "flexure/mechanisms/mechanism_second_variation.h"
 #include "flexure/mechanisms/prbm_virtual_work.h"
 #include "flexure/solver/chain_model/jacobi_stability.h"

@@ -6,10 +6,9 @@
 
 #include <cmath>
 
-#include "flexure/mechanisms/cfm/cfm_configuration.h"
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/mechanism.h"
-#include "flexure/mechanisms/mechanism_prbm.h"
+#include "flexure/mechanisms/mechanism_analysis.h"
 
 namespace flexure::mechanism {
 namespace {

@@ -1,4 +1,4 @@
-// A model per flexure of a mechanism (solve_general_mixed, general_exact.h; docs/mechanisms.md
+// A model per flexure of a mechanism (solve_general_mixed, general_analysis.h; docs/mechanisms.md
 // "A model per flexure") on the built-in constant-force designs in their general form
 // (catalogue_general.h), against the all-exact analysis of the same mechanism.
 #include <gtest/gtest.h>
@@ -9,8 +9,8 @@
 #include <string>
 
 #include "flexure/mechanisms/general/catalogue_general.h"
-#include "flexure/mechanisms/general/flexure_models.h"
-#include "flexure/mechanisms/general/general_exact.h"
+#include "flexure/mechanisms/general/general_analysis.h"
+#include "flexure/mechanisms/general/general_mechanism.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/solver/common/status.h"
 

@@ -6,7 +6,6 @@
 #include <string>
 
 #include "flexure/mechanisms/cfm/cfm_model.h"
-#include "flexure/mechanisms/cfm_exact.h"
 #include "flexure/mechanisms/dynamics/dynamics.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/mechanisms/mechanism_exact.h"

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <string>
 
-#include "flexure/mechanisms/cfm/cfm_subclasses.h"
+#include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm_comparison.h"
 
 namespace flexure::cfm {
