@@ -21,12 +21,12 @@ Json pose_json(const ChainPose& p) { return Json{{"x", p.x}, {"y", p.y}, {"theta
 Json result_json(const ContactResult& r, bool physical) {
   Json out;
   out["method"] = "shooting";
-  out["contact_model"] = r.kind == "wrap"    ? "wrap from the clamp"
-                         : r.kind == "tip"   ? "tip on the stop"
-                         : r.kind == "point" ? "one interior point, tangent"
-                         : r.kind == "line"  ? "lying on the stop (line contact)"
-                                             : "no contact";
-  out["contact_kind"] = r.kind;
+  out["contact_model"] = r.kind == ContactKind::kWrap    ? "wrap from the clamp"
+                         : r.kind == ContactKind::kTip   ? "tip on the stop"
+                         : r.kind == ContactKind::kPoint ? "one interior point, tangent"
+                         : r.kind == ContactKind::kLine  ? "lying on the stop (line contact)"
+                                                         : "no contact";
+  out["contact_kind"] = to_string(r.kind);
   out["units"] = physical ? "SI" : "consistent";
   out["termination"] = std::string(termination_name(r.termination));
   out["surface"] = to_string(r.surface);
@@ -61,7 +61,7 @@ Json result_json(const ContactResult& r, bool physical) {
   out["tip_load"] = Json{{"Fx", r.tip_load.Fx}, {"Fy", r.tip_load.Fy}, {"M", r.tip_load.M}};
   Json events = Json::array();
   for (const ContactEvent& e : r.events) {
-    events.push_back(Json{{"kind", e.kind}, {"load_factor", e.load_factor}});
+    events.push_back(Json{{"kind", to_string(e.kind)}, {"load_factor", e.load_factor}});
   }
   out["events"] = std::move(events);
   Json path = Json::array();
@@ -114,14 +114,14 @@ void print_text(const ContactResult& r, bool physical, std::size_t surfaces) {
                r.steps);
   }
   for (const ContactEvent& e : r.events) {
-    fmt::print("  {} at load factor {:.10g}\n", e.kind, e.load_factor);
+    fmt::print("  {} at load factor {:.10g}\n", to_string(e.kind), e.load_factor);
   }
   if (!r.in_contact) {
     fmt::print("  free of the {} at full load (smallest gap {:.6g}{})\n",
                to_string(r.surface),
                r.min_gap,
                L);
-  } else if (r.kind == "point") {
+  } else if (r.kind == ContactKind::kPoint) {
     const ChainPose& p = r.separation_points[0];
     fmt::print(
         "  touching at one point s = {:.10g}{} ({:.10g}, {:.10g}){}, tangent, angle {:.10g} "
@@ -134,7 +134,7 @@ void print_text(const ContactResult& r, bool physical, std::size_t surfaces) {
         p.theta,
         r.point_force_normal,
         F);
-  } else if (r.kind == "line") {
+  } else if (r.kind == ContactKind::kLine) {
     const ChainPose& p = r.separation_points[0];
     fmt::print(
         "  lying on the stop over s = {:.10g} .. {:.10g}{}; separation point ({:.10g}, "
@@ -157,7 +157,7 @@ void print_text(const ContactResult& r, bool physical, std::size_t surfaces) {
         F,
         r.lying_axial_force + 0.0,
         F);
-  } else if (r.kind == "wrap") {
+  } else if (r.kind == ContactKind::kWrap) {
     fmt::print(
         "  wrapped over s = 0 .. {:.10g}{}; separation point ({:.10g}, {:.10g}){}, angle "
         "{:.10g} rad\n",
@@ -248,7 +248,7 @@ bool run_beam_contact(const BeamContactArgs& args) {
     reached["load_factor"] = r.load_factor;
     Json events = Json::array();
     for (const ContactEvent& e : r.events) {
-      events.push_back(Json{{"kind", e.kind}, {"load_factor", e.load_factor}});
+      events.push_back(Json{{"kind", to_string(e.kind)}, {"load_factor", e.load_factor}});
     }
     reached["events"] = std::move(events);
     throw NoConvergenceReport(r.message, std::move(reached));

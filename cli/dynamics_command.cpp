@@ -209,7 +209,7 @@ void run_dynamics(const DynamicsArgs& args) {
              {"out", args.out.empty() ? Json(nullptr) : Json(args.out)},
              {"csv", csv.wanted() ? Json(csv.csv_path()) : Json(nullptr)},
              {"force_of", force_of_label},
-             {"spring_rule", d.spring_rule ? Json(*d.spring_rule) : Json(nullptr)},
+             {"spring_rule", d.spring_rule ? Json(to_string(*d.spring_rule)) : Json(nullptr)},
              {"material", d.material ? Json(*d.material) : Json(nullptr)},
              {"spring_constants", d.k},
              {"stroke", motion.stroke},
@@ -239,7 +239,8 @@ void run_dynamics(const DynamicsArgs& args) {
         d.k[0],
         d.k[1],
         d.k[2],
-        d.spring_rule ? "spring rule " + *d.spring_rule : std::string("thesis springs"));
+        d.spring_rule ? fmt::format("spring rule {}", to_string(*d.spring_rule))
+                      : std::string("thesis springs"));
     fmt::print("{:>12} {:>12} {:>12} {:>12} {:>8}\n",
                "omega rad/s",
                "mean N",

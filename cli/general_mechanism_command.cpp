@@ -336,8 +336,11 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
                               "and, with --model mixed, --flexure-model, --flexure-tol and "
                               "--check-flexures"));
   }
-  const std::string model = request.model.empty() ? "prbm" : request.model;
-  if (model != "mixed" &&
+  const io::GeneralAnalysisModel model =
+      request.model.empty() ? io::GeneralAnalysisModel::kPrbm
+                            : io::general_analysis_model_from_string(request.model);
+  const bool mixed = model == io::GeneralAnalysisModel::kMixed;
+  if (!mixed &&
       (!request.flexure_models.empty() || request.flexure_tol != 0.0 || request.check_flexures)) {
     throw InvalidInput(
         "--flexure-model, --flexure-tol and --check-flexures apply to --model mixed (a model "
@@ -371,13 +374,13 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
   m.validate();
   const Input& in = m.input;
   std::vector<std::pair<std::string, GeneralPrbmResult>> results;
-  if (model == "prbm" || model == "both") {
+  if (model == io::GeneralAnalysisModel::kPrbm || model == io::GeneralAnalysisModel::kBoth) {
     results.emplace_back("prbm", solve_general_prbm(m));
   }
-  if (model == "exact" || model == "both") {
+  if (model == io::GeneralAnalysisModel::kExact || model == io::GeneralAnalysisModel::kBoth) {
     results.emplace_back("exact", solve_general_exact(m));
   }
-  if (model == "mixed") {
+  if (mixed) {
     GeneralExactOptions o;
     o.measure_flexure_errors = request.check_flexures;
     results.emplace_back("mixed", solve_general_mixed(m, o));
@@ -437,7 +440,7 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
     const Json& top = models[results.front().first];
     Json out{{"name", m.name},
              {"form", "general"},
-             {"model", model},
+             {"model", to_string(model)},
              {"input_body", in.body},
              {"input_coordinate", input_coordinate_name(in.coordinate)},
              {"control", input_control_name(in.control)},
@@ -455,7 +458,7 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
              {"ground_reaction", top["ground_reaction"]},
              {"flexures", top["flexures"]},
              {"models", models}};
-    if (model == "mixed") {
+    if (mixed) {
       out["flexure_models"] = models["mixed"]["flexure_models"];
     }
     if (request.mechanism) {

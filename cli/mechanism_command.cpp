@@ -240,24 +240,21 @@ std::string force_sign_note(bool vanishes, bool changes_sign) {
   return changes_sign ? "force changes sign" : vanishes ? "force vanishes" : "";
 }
 
-// The fatigue check of analyze (materials_fatigue.h), or why there is none.
-struct FatigueReport {
-  std::optional<MechanismFatigue> fatigue;
-  std::string note;  // why not checked
-};
-
 Json number_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
 
 // The keys beside the static safety factor: fatigue_safety_factor, alternating_stress,
 // mean_stress, endurance_limit (the corrected S_e of the critical pivot), and the details.
-void add_fatigue_json(Json& j, const MechanismAnalysis& a, const FatigueReport& r) {
+void add_fatigue_json(Json& j,
+                      const MechanismAnalysis& a,
+                      const MechanismFatigueReport& r,
+                      const std::string& note) {
   if (!r.fatigue) {
     for (const char* key :
          {"fatigue_safety_factor", "alternating_stress", "mean_stress", "endurance_limit"}) {
       j[key] = nullptr;
     }
     j["fatigue"] = nullptr;
-    j["fatigue_note"] = r.note;
+    j["fatigue_note"] = note;
     return;
   }
   const MechanismFatigue& f = *r.fatigue;
@@ -312,31 +309,12 @@ void add_fatigue_json(Json& j, const MechanismAnalysis& a, const FatigueReport& 
   j["fatigue_note"] = nullptr;
 }
 
-std::string fatigue_text(const MechanismAnalysis& a, const FatigueReport& r) {
-  if (!r.fatigue) return fmt::format("  fatigue: not checked: {}\n", r.note);
-  const MechanismFatigue& f = *r.fatigue;
-  const PivotFatigue& c = f.critical();
-  const std::string life =
-      c.check.infinite_life
-          ? (f.material.fatigue_cycles ? fmt::format("life >= {:.3g} cycles (no endurance limit)",
-                                                     *f.material.fatigue_cycles)
-                                       : std::string("infinite life"))
-          : fmt::format("FINITE LIFE, about {:.3g} cycles", c.check.cycles_to_failure);
-  return fmt::format(
-      "  fatigue (rest to full stroke, pivot {}): sigma_a {:.5g} Pa, sigma_m {:.5g} Pa, S_e "
-      "{:.5g} Pa (S_e' {:.5g} Pa x Marin {:.3f}: {}, R {:g}, K_f {:g}); fatigue safety factor "
-      "{:.3f} (modified Goodman), {}\n",
-      described_pivot(a.design, f.critical_pivot),
-      c.check.alternating_stress,
-      c.check.mean_stress,
-      c.check.endurance_limit,
-      f.material.uncorrected_strength,
-      c.strength.factors.product(),
-      surface_finish_name(f.options.finish),
-      f.options.reliability,
-      f.options.K_f,
-      c.check.safety_factor,
-      life);
+// The fatigue line of analyze's text: the check (fatigue_summary), or why there is none.
+std::string fatigue_text(const MechanismAnalysis& a,
+                         const MechanismFatigueReport& r,
+                         const std::string& note) {
+  if (!r.fatigue) return fmt::format("  fatigue: not checked: {}\n", note);
+  return fmt::format("  {}\n", fatigue_summary(a.design, *r.fatigue));
 }
 
 std::string percent(double v) { return fmt::format("{:.2f}", 100.0 * v); }
@@ -731,18 +709,15 @@ void register_mechanism_command(CLI::App& app) {
     report_forces_of(a, force_of);
     if (!a.converged()) throw NoConvergence(a.message);
     warn(a.warnings);  // yield, vanishing force, stability (analysis_warnings)
-    FatigueReport fatigue;
-    try {
-      fatigue.fatigue = mechanism_fatigue(a, design_fatigue_material(a.design), fatigue_options);
-    } catch (const InvalidInput& e) {
-      fatigue.note = fmt::format(
-          "{}; give --material NAME (`flexure materials`) or --ultimate-strength and "
-          "--endurance-limit",
-          e.what());
-    }
-    if (fatigue.fatigue && !fatigue.fatigue->critical().check.infinite_life) {
-      warn(fmt::format("{}: {}", d.name, fatigue_text(a, fatigue).substr(2)));
-    }
+    const MechanismFatigueReport fatigue = mechanism_fatigue_report(a, fatigue_options);
+    warn(fatigue.warnings);  // a finite life
+    // Why there is no fatigue check, with the flags that give the missing strengths.
+    const std::string fatigue_note = fatigue.fatigue
+                                         ? std::string()
+                                         : fmt::format(
+                                               "{}; give --material NAME (`flexure materials`) or "
+                                               "--ultimate-strength and --endurance-limit",
+                                               fatigue.not_checked);
     // What --stable did (JSON `stable_search`, HDF5 attribute); empty without --stable.
     const std::string stable_search = !args->stable              ? std::string()
                                       : !a.stable_search.empty() ? a.stable_search
@@ -755,7 +730,7 @@ void register_mechanism_command(CLI::App& app) {
     csv.write({"displacement"}, {"design", "shapes"});  // /shapes: per stored shape, not per point
     if (args->json) {
       Json j = analysis_json(a);
-      add_fatigue_json(j, a, fatigue);
+      add_fatigue_json(j, a, fatigue, fatigue_note);
       j["method"] = to_string(choice.method);
       j["method_reason"] = choice.reason;
       j["stable"] = args->stable;
@@ -804,7 +779,7 @@ void register_mechanism_command(CLI::App& app) {
                              a.max_stress_all,
                              a.safety_factor,
                              a.yielding_pivots.empty() ? "" : " (YIELDS)");
-    std::cout << fatigue_text(a, fatigue);
+    std::cout << fatigue_text(a, fatigue, fatigue_note);
     std::cout << geometry_text(mechanism_geometry(d), "mm");
     const std::vector<StrokeStabilityEntry> entries = stroke_stability_entries(a);
     if (!entries.empty()) {
@@ -917,12 +892,7 @@ void register_mechanism_command(CLI::App& app) {
     o.force_of =
         *targs->force_of_option || !d.force_of ? parse_force_of(targs->force_of) : *d.force_of;
     const ToleranceStudy s = mechanism_tolerance(d, o);
-    if (s.failed_samples > 0) {
-      warn(fmt::format("{} of {} samples could not be analysed and are left out (first: {})",
-                       s.failed_samples,
-                       o.samples,
-                       s.first_failure));
-    }
+    warn(s.warnings);  // samples left out
     // Every rank holds the whole study (mechanism_tolerance.h); rank 0 writes the file.
     if (!hdf5_out.empty() && parallel::world().root()) {
       write_tolerance_hdf5(hdf5_out, s);

@@ -24,7 +24,7 @@ Json geometry_json(const mechanism::MechanismGeometry& g) {
   for (const auto& f : g.flexures) {
     flexures.push_back(
         Json{{"pivot", f.pivot},
-             {"kind", f.kind},
+             {"kind", to_string(f.kind)},
              {"length", f.length},
              {"width", f.width},
              {"thickness", f.thickness},
@@ -119,7 +119,7 @@ std::string geometry_text(const mechanism::MechanismGeometry& g,
     s += fmt::format("{}  flexure {} ({}): length {}, width {}, thickness {}; from x = {} to {}\n",
                      indent,
                      f.pivot,
-                     f.kind,
+                     to_string(f.kind),
                      v(f.length),
                      v(f.width),
                      v(f.thickness),

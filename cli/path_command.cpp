@@ -296,7 +296,7 @@ Json point_state_json(const Point& p) {
 }
 
 Json special_point_json(const PathSpecialPoint& p) {
-  Json j{{"kind", p.kind},
+  Json j{{"kind", to_string(p.kind)},
          {"load_factor", p.load_factor},
          {"index", maybe_index(p.index)},
          {"index_after", maybe_index(p.index_after)}};
@@ -306,7 +306,7 @@ Json special_point_json(const PathSpecialPoint& p) {
 }
 
 Json force_point_json(const PathForcePoint& p) {
-  Json j{{"kind", p.kind},
+  Json j{{"kind", to_string(p.kind)},
          {"load_factor", p.load_factor},
          {"coordinate", p.coordinate},
          {"force", p.force},
@@ -348,7 +348,7 @@ std::string stability_control_words(const PathTable& t) {
              : fmt::format("under displacement control of {} in the moving stage", t.control);
 }
 
-Json special_points_json(const PathTable& t, const char* kind) {
+Json special_points_json(const PathTable& t, SpecialPointKind kind) {
   Json list = Json::array();
   for (const PathSpecialPoint* p : t.of_kind(kind)) list.push_back(special_point_json(*p));
   return list;
@@ -374,7 +374,7 @@ void print_text(const PathTable& t, const PathArgs& args, const std::string& wri
     fmt::print(
         "  {} at load factor {:.10g}{} (path point {}): tip x = {:.8g}{}, y = {:.8g}{}, angle = "
         "{:.8g} rad; clamp reaction Fx = {:.8g}{}, Fy = {:.8g}{}, M = {:.8g}{}{}\n",
-        p.kind == "limit_point" ? "limit point" : "bifurcation",
+        p.kind == SpecialPointKind::kLimitPoint ? "limit point" : "bifurcation",
         p.load_factor,
         p.located ? "" : " (not located)",
         p.index >= 0 ? p.index : p.index_after,
@@ -396,9 +396,9 @@ void print_text(const PathTable& t, const PathArgs& args, const std::string& wri
     const char* cu = angle ? " rad" : m;
     const char* fu = angle ? Nm : N;
     fmt::print("  {} of the {} load at {} = {:.10g}{} (load factor {:.10g}{}): {} = {:.8g}{}{}\n",
-               p.kind == "force_zero"      ? "zero crossing"
-               : p.kind == "force_maximum" ? "maximum"
-                                           : "minimum",
+               p.kind == ForcePointKind::kZero      ? "zero crossing"
+               : p.kind == ForcePointKind::kMaximum ? "maximum"
+                                                    : "minimum",
                angle ? "tip-angle" : t.control,
                t.control,
                p.coordinate + 0.0,
@@ -408,7 +408,7 @@ void print_text(const PathTable& t, const PathArgs& args, const std::string& wri
                angle ? "tip M" : (t.control == "tip-x" ? "tip Fx" : "tip Fy"),
                p.force + 0.0,
                fu,
-               p.kind == "force_zero" && std::isfinite(p.slope)
+               p.kind == ForcePointKind::kZero && std::isfinite(p.slope)
                    ? fmt::format(", slope {:.6g}", p.slope)
                    : std::string());
   }
@@ -457,8 +457,8 @@ void run_path(const PathArgs& args) {
     out["first_limit_load_factor"] =
         t.first_limit_load_factor ? Json(*t.first_limit_load_factor) : Json(nullptr);
     out["bifurcation_points"] = t.bifurcation_points;
-    out["bifurcations"] = special_points_json(t, "bifurcation");
-    out["limit_point_list"] = special_points_json(t, "limit_point");
+    out["bifurcations"] = special_points_json(t, SpecialPointKind::kBifurcation);
+    out["limit_point_list"] = special_points_json(t, SpecialPointKind::kLimitPoint);
     // Displacement control: the force-displacement curve's zeros and extrema (null under load
     // control).
     if (t.control == "load") {
@@ -469,7 +469,7 @@ void run_path(const PathArgs& args) {
       int zeros = 0;
       for (const PathForcePoint& p : t.force_points) {
         list.push_back(force_point_json(p));
-        zeros += p.kind == "force_zero" ? 1 : 0;
+        zeros += p.kind == ForcePointKind::kZero ? 1 : 0;
       }
       out["force_points"] = std::move(list);
       out["force_zero_crossings"] = zeros;

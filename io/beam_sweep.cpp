@@ -345,7 +345,7 @@ void BeamSweepWriter::finish(long converged_count) {
       if (metadata.given == "theta0") group.set_attribute("attribute_units", "given_value: rad");
     }
   }
-  group.set_attribute("method", metadata.method);
+  group.set_attribute("method", std::string(to_string(metadata.method)));
   group.set_attribute("mpi_ranks",
                       static_cast<std::int64_t>(group.collective() ? parallel::world().size() : 1));
   if (!n_axis) group.set_attribute("load_ratio_n", metadata.load_ratio_n);

@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "flexure/beam/beam_problem.h"
 #include "flexure/io/platform/hdf5_file.h"
 #include "flexure/io/platform/provenance.h"
 #include "flexure/solver/common/end_load.h"
@@ -115,9 +116,9 @@ struct BeamSweepAxis {
 
 // What produced the table, stored as attributes.
 struct BeamSweepMetadata {
-  std::string method;
-  double load_ratio_n = 0.0;  // stored when it is not an axis
-  double mu = 0.0;            // stored when it is not an axis
+  BeamMethod method = BeamMethod::kAuto;  // the method that solved it (attribute "method")
+  double load_ratio_n = 0.0;              // stored when it is not an axis
+  double mu = 0.0;                        // stored when it is not an axis
   double tolerance = 0.0;
   // The axes in order: the datasets are shaped by their counts (one axis: 1-D; two: a grid,
   // row-major). Empty: a 1-D sweep over the table's alpha2 (the layout above, no /axes group;

@@ -20,7 +20,7 @@ void write_contact_hdf5(const std::string& path, const ContactResult& r, bool ph
                     {"path/in_contact", 1, "in contact with the surface"}});
   root.set_attribute("surface", to_string(r.surface));
   root.set_attribute("in_contact", static_cast<std::int64_t>(r.in_contact ? 1 : 0));
-  root.set_attribute("contact_kind", r.kind);
+  root.set_attribute("contact_kind", std::string(to_string(r.kind)));
   // The [[contact]] table (1-based) whose surface is touched; 0 when none.
   root.set_attribute("contact_table",
                      static_cast<std::int64_t>(r.in_contact ? r.surface_index + 1 : 0));
@@ -99,7 +99,7 @@ void write_contact_hdf5(const std::string& path, const ContactResult& r, bool ph
   std::vector<std::string> kinds;
   for (const ContactEvent& e : r.events) {
     lf.push_back(e.load_factor);
-    kinds.push_back(e.kind);
+    kinds.push_back(to_string(e.kind));
   }
   events.write_dataset(
       "load_factor", lf, "1", "load factor of each landing, lift-off, line-contact or tip-contact");

@@ -1,8 +1,10 @@
 #include "flexure/io/general_mechanism_file.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -472,6 +474,9 @@ void add_path_columns(std::vector<CsvColumn>& columns,
   }
 }
 
+constexpr std::array<const char*, 4> kGeneralAnalysisModelNames = {
+    "prbm", "exact", "both", "mixed"};
+
 void check(const GeneralAnalysisOutput& out) {
   if (out.mechanism == nullptr || out.results.empty()) {
     throw std::invalid_argument("general mechanism output: no mechanism or no model solved");
@@ -479,6 +484,18 @@ void check(const GeneralAnalysisOutput& out) {
 }
 
 }  // namespace
+
+const char* to_string(GeneralAnalysisModel model) {
+  return kGeneralAnalysisModelNames[static_cast<std::size_t>(model)];
+}
+
+GeneralAnalysisModel general_analysis_model_from_string(std::string_view name) {
+  for (std::size_t i = 0; i < kGeneralAnalysisModelNames.size(); ++i) {
+    if (name == kGeneralAnalysisModelNames[i]) return static_cast<GeneralAnalysisModel>(i);
+  }
+  throw InvalidInput(fmt::format(
+      "model '{}' is unknown (allowed: {})", name, fmt::join(kGeneralAnalysisModelNames, ", ")));
+}
 
 std::vector<double> design_stroke_displacement(const GeneralPrbmResult& r, double x0) {
   return per_point(r, [x0](const GeneralPrbmPoint& p) { return x0 - p.input; });
@@ -503,7 +520,7 @@ void write_general_mechanism(Hdf5Group& root, const GeneralAnalysisOutput& out) 
   const GeneralPrbmResult& first = *out.results.front().second;
   root.set_attribute("mechanism", m.name);
   root.set_attribute("form", "general");
-  root.set_attribute("model", out.model);
+  root.set_attribute("model", std::string(to_string(out.model)));
   root.set_attribute("first_model", out.results.front().first);
   root.set_attribute("input_body", in.body);
   root.set_attribute("input_coordinate", std::string(input_coordinate_name(in.coordinate)));

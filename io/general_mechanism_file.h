@@ -7,6 +7,7 @@
 // mixed model, the model of every flexure. `flexure plot` draws the file (python/flexure_plot).
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -17,12 +18,20 @@
 
 namespace flexure::io {
 
+// The models `mechanism analyze --model` solves a general mechanism with: the PRBM, the exact
+// model, both (PRBM first), or a model per flexure (mixed; general_exact.h).
+enum class GeneralAnalysisModel { kPrbm, kExact, kBoth, kMixed };
+// "prbm", "exact", "both", "mixed" (the --model names, the JSON key and HDF5 attribute `model`).
+const char* to_string(GeneralAnalysisModel model);
+// The model of that name; throws InvalidInput listing the four.
+GeneralAnalysisModel general_analysis_model_from_string(std::string_view name);
+
 // One analysis: the models solved, in the command's order (the first one's arrays are the
 // root's, as the JSON's top-level arrays are), and, for a constant-force design in its general
 // form, the slider's undeflected x (m) that turns the input into the stroke Delta x.
 struct GeneralAnalysisOutput {
   const mechanism::general::GeneralMechanism* mechanism = nullptr;
-  std::string model;  // "prbm", "exact", "both" or "mixed" (the --model given)
+  GeneralAnalysisModel model = GeneralAnalysisModel::kPrbm;  // the --model given
   std::vector<std::pair<std::string, const mechanism::general::GeneralPrbmResult*>> results;
   std::optional<double> design_x0;  // set for a built-in design (its stroke and slider force)
   bool checked_flexures = false;    // --check-flexures: the mixed model's measured errors

@@ -14,6 +14,7 @@ namespace flexure::io {
 namespace {
 
 using mechanism::FlexureGeometry;
+using mechanism::FlexureKind;
 using mechanism::GeometryPoint;
 using mechanism::MechanismGeometry;
 using mechanism::PivotType;
@@ -58,8 +59,8 @@ std::string coord(double metres) { return fmt::format("{:.15g}", metres * kMm); 
 // Scale of the drawing's decorations (text, blocks, offsets): the PRBM length r2 + r3.
 double scale(const MechanismGeometry& g) { return g.r2 + g.r3; }
 
-std::string kind_letter(const std::string& kind) {
-  return kind == "long" ? "l" : kind == "small" ? "s" : kind;
+std::string kind_letter(FlexureKind kind) {
+  return kind == FlexureKind::kLong ? "l" : kind == FlexureKind::kSmall ? "s" : to_string(kind);
 }
 
 // The rest outline of a flexure: its real length by its real thickness.

@@ -31,7 +31,7 @@ std::string geometry_toml(const mechanism::MechanismGeometry& g) {
   s += fmt::format("deformed_model = \"{}\"\n", g.deformed_model);
   for (const auto& f : g.flexures) {
     s += "\n[[geometry.flexures]]\n";
-    s += fmt::format("pivot = {}\nkind = \"{}\"\n", f.pivot, f.kind);
+    s += fmt::format("pivot = {}\nkind = \"{}\"\n", f.pivot, to_string(f.kind));
     s += fmt::format(
         "length = {}\nwidth = {}\nthickness = {}\n", n17(f.length), n17(f.width), n17(f.thickness));
     s += fmt::format("rest_start = {}\nrest_end = {}\n", point(f.rest_start), point(f.rest_end));

@@ -35,6 +35,7 @@
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
 #include "flexure/solver/common/section.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure {
 
@@ -249,6 +250,24 @@ FatigueMaterial design_fatigue_material(const MechanismDesign& design);
 MechanismFatigue mechanism_fatigue(const MechanismAnalysis& analysis,
                                    const FatigueMaterial& material,
                                    const FatigueOptions& options);
+
+// The fatigue check `mechanism analyze` reports beside the static safety factor: the check of the
+// stroke with the design's own fatigue material (design_fatigue_material), or why there is none.
+struct MechanismFatigueReport {
+  std::optional<MechanismFatigue> fatigue;
+  std::string not_checked;  // why there is no check (the library's reason); empty when checked
+  // A finite life (the critical pivot's stress above the corrected endurance limit):
+  // "NAME: fatigue_summary(...)" (kSafetyFactor); empty otherwise.
+  std::vector<Warning> warnings;
+};
+MechanismFatigueReport mechanism_fatigue_report(const MechanismAnalysis& analysis,
+                                                const FatigueOptions& options);
+
+// The check in one line, pivots numbered as the design is described (inversion.h): "fatigue (rest
+// to full stroke, pivot P): sigma_a ... Pa, sigma_m ... Pa, S_e ... Pa (S_e' ... Pa x Marin ...:
+// FINISH, R ..., K_f ...); fatigue safety factor ... (modified Goodman), LIFE" with LIFE "infinite
+// life", "life >= N cycles (no endurance limit)" or "FINITE LIFE, about N cycles".
+std::string fatigue_summary(const MechanismDesign& design, const MechanismFatigue& fatigue);
 
 // Sets E, nu-free S_y, S_ut, S_e' (and its life), ductility and the id of `grade` on `design`;
 // a brittle grade's static strength is its S_ut (Howell eq. 3.44). Throws InvalidInput when the

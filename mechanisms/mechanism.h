@@ -239,10 +239,18 @@ struct GeometryPoint {
   double y = 0.0;  // m
 };
 
+// What a flexible segment is: a small-length flexure (s, centred on its pivot), a long one (l,
+// fixed-pinned) or a fixed-fixed strip.
+enum class FlexureKind { kSmall, kLong, kFixedFixed };
+// "small", "long", "fixed-fixed" (the JSON and TOML key `kind` of a flexure's geometry).
+const char* to_string(FlexureKind kind);
+// The kind of that name; throws InvalidInput listing the three.
+FlexureKind flexure_kind_from_string(std::string_view name);
+
 // One flexible segment.
 struct FlexureGeometry {
-  int pivot = 0;           // PRB pivot it realises, 1..3
-  std::string kind;        // "small" (s, centred), "long" (l, fixed-pinned), "fixed-fixed"
+  int pivot = 0;  // PRB pivot it realises, 1..3
+  FlexureKind kind = FlexureKind::kSmall;
   double length = 0.0;     // physical flexible length, m
   double width = 0.0;      // out-of-plane width b, m
   double thickness = 0.0;  // in-plane thickness h, m
@@ -307,8 +315,8 @@ struct MechanismGeometry {
 // design whose stroke is past the toggle position or whose lengths are not positive.
 MechanismGeometry mechanism_geometry(const MechanismDesign& design);
 
-// "small", "long" or "fixed-fixed" for pivot `pivot` (1..3) of a design; "" for a pin.
-std::string flexure_kind_name(const MechanismDesign& design, int pivot);
+// The kind of the flexure at pivot `pivot` (1..3) of a design; none for a pin.
+std::optional<FlexureKind> flexure_kind(const MechanismDesign& design, int pivot);
 
 // `flexure mechanism analyze --method auto --tol T`: model no more than the design needs. The PRBM
 // stroke costs microseconds, the exact stroke tens of milliseconds; auto uses the PRBM alone when

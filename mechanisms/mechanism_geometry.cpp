@@ -1,4 +1,5 @@
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cmath>
 
@@ -40,11 +41,27 @@ struct Placement {
 
 }  // namespace
 
-std::string flexure_kind_name(const MechanismDesign& design, int pivot) {
+namespace {
+constexpr std::array<const char*, 3> kFlexureKindNames = {"small", "long", "fixed-fixed"};
+}  // namespace
+
+const char* to_string(FlexureKind kind) {
+  return kFlexureKindNames[static_cast<std::size_t>(kind)];
+}
+
+FlexureKind flexure_kind_from_string(std::string_view name) {
+  for (std::size_t i = 0; i < kFlexureKindNames.size(); ++i) {
+    if (name == kFlexureKindNames[i]) return static_cast<FlexureKind>(i);
+  }
+  throw InvalidInput(fmt::format(
+      "flexure kind '{}' is unknown (allowed: {})", name, fmt::join(kFlexureKindNames, ", ")));
+}
+
+std::optional<FlexureKind> flexure_kind(const MechanismDesign& design, int pivot) {
   const JointDesign& j = design.joints[pivot - 1];
-  if (j.type == PivotType::kPin) return "";
-  if (j.segment == SegmentKind::kFixedFixed) return "fixed-fixed";
-  return j.type == PivotType::kLong ? "long" : "small";
+  if (j.type == PivotType::kPin) return std::nullopt;
+  if (j.segment == SegmentKind::kFixedFixed) return FlexureKind::kFixedFixed;
+  return j.type == PivotType::kLong ? FlexureKind::kLong : FlexureKind::kSmall;
 }
 
 MechanismGeometry mechanism_geometry(const MechanismDesign& d) {
@@ -94,7 +111,7 @@ MechanismGeometry mechanism_geometry(const MechanismDesign& d) {
     const JointDesign& jd = j[pivot - 1];
     FlexureGeometry f;
     f.pivot = pivot;
-    f.kind = flexure_kind_name(d, pivot);
+    f.kind = flexure_kind(d, pivot).value();  // called for flexures only, never a pin
     f.length = jd.length;
     f.width = jd.width;
     f.thickness = jd.thickness;

@@ -52,7 +52,8 @@ const std::filesystem::path& scratch_dir() {
 
 void write_file(const io::BeamSweepTable& table) {
   io::AtomicHdf5File file((scratch_dir() / "sweep.h5").string());
-  io::write_beam_sweep(file.root(), table, io::BeamSweepMetadata{"elliptic", 0.0, 0.0, 1e-14});
+  io::write_beam_sweep(
+      file.root(), table, io::BeamSweepMetadata{BeamMethod::kElliptic, 0.0, 0.0, 1e-14});
   file.commit();
 }
 
@@ -91,7 +92,7 @@ void BM_StreamedSweep(benchmark::State& state) {
   for (auto _ : state) {
     io::AtomicHdf5File file((scratch_dir() / "streamed.h5").string());
     io::BeamSweepWriter writer(
-        file.root(), count, io::BeamSweepMetadata{"elliptic", 0.0, 0.0, 1e-14}, layout);
+        file.root(), count, io::BeamSweepMetadata{BeamMethod::kElliptic, 0.0, 0.0, 1e-14}, layout);
     const io::BeamSweepSummary summary = io::stream_beam_sweep(
         count,
         [&](long i) {

@@ -267,7 +267,7 @@ BeamSweepRun BeamSweepFile::run(const BeamSweepGrid& grid,
   sweep.min_block = beam_sweep_min_block(out.method);
   sweep.progress = options.progress;
   io::BeamSweepMetadata metadata;
-  metadata.method = to_string(out.method);
+  metadata.method = out.method;
   metadata.load_ratio_n = grid.base.load_ratio_n;
   metadata.mu = grid.base.mu;
   metadata.tolerance = beam_method_tolerance(out.method);

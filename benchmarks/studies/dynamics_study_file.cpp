@@ -50,7 +50,9 @@ void write_study(io::Hdf5Group& root, const DynamicsStudy& s) {
   if (s.paper_nominal_force) root.set_attribute("paper_nominal_force", *s.paper_nominal_force);
   root.set_attribute("natural_frequency", s.natural_frequency);
   root.set_attribute("force_of", force_of_label);
-  root.set_attribute("spring_rule", s.design.spring_rule.value_or("none"));
+  root.set_attribute(
+      "spring_rule",
+      std::string(s.design.spring_rule ? dynamics::to_string(*s.design.spring_rule) : "none"));
   root.set_attribute("attribute_units",
                      fmt::format("stroke_m, preload_m: m; friction_C1, friction_C2, friction_C3: "
                                  "N m; axial_alpha: rad; static_nominal_force, "

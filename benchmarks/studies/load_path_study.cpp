@@ -82,7 +82,7 @@ void copy_path_counts(const Path& path, PathTable& t) {
 
 PathSpecialPoint to_table(const SpecialPoint& sp, const PathUnits& u) {
   PathSpecialPoint out;
-  out.kind = to_string(sp.kind);
+  out.kind = sp.kind;
   out.load_factor = sp.lambda;
   out.index = sp.index;
   out.index_after = sp.index_after;
@@ -94,7 +94,7 @@ PathSpecialPoint to_table(const SpecialPoint& sp, const PathUnits& u) {
 PathForcePoint to_table(const ForcePoint& f, const PathUnits& u, TipCoordinate coordinate) {
   const bool angle = coordinate == TipCoordinate::kTheta;
   PathForcePoint out;
-  out.kind = to_string(f.kind);
+  out.kind = f.kind;
   out.load_factor = f.lambda;
   out.coordinate = f.coordinate * (angle ? 1.0 : u.length);
   out.force = f.force * (angle ? u.moment : u.force);
@@ -269,7 +269,7 @@ PathTable shooting_table(const PathRequest& r) {
   int number = 0;
   for (std::size_t i = 0; i < t.special_points.size(); ++i) {
     const PathSpecialPoint& b = t.special_points[i];
-    if (b.kind != "bifurcation") continue;
+    if (b.kind != SpecialPointKind::kBifurcation) continue;
     ++number;
     if (b.switched) continue;
     t.warnings.push_back(bifurcation_warning(
@@ -304,7 +304,7 @@ PathTable cbcm_table(const PathRequest& r) {
                                            "judges every point"));
   for (const CbcmSpecialPoint& sp : path.special_points) {
     PathSpecialPoint out;
-    out.kind = to_string(sp.kind);
+    out.kind = sp.kind;
     out.load_factor = sp.point.lambda;
     out.index = sp.index;
     out.index_after = sp.index_after;
@@ -315,7 +315,7 @@ PathTable cbcm_table(const PathRequest& r) {
   const bool angle = r.control->coordinate == TipCoordinate::kTheta;
   for (const CbcmForcePoint& f : path.force_points) {
     PathForcePoint out;
-    out.kind = to_string(f.kind);
+    out.kind = f.kind;
     out.load_factor = f.point.lambda;
     out.coordinate = f.coordinate * (angle ? 1.0 : u.length);
     out.force = f.force * (angle ? u.moment : u.force);
@@ -342,7 +342,7 @@ PathTable cbcm_table(const PathRequest& r) {
   for (const Warning& w : path.warnings) t.warnings.push_back(w.text);
   int number = 0;
   for (const PathSpecialPoint& b : t.special_points) {
-    if (b.kind != "bifurcation") continue;
+    if (b.kind != SpecialPointKind::kBifurcation) continue;
     ++number;
     if (b.switched) continue;
     t.warnings.push_back(bifurcation_warning(b, number, false, false, true));
@@ -507,7 +507,7 @@ void PathRequest::validate() const {
   }
 }
 
-std::vector<const PathSpecialPoint*> PathTable::of_kind(const std::string& kind) const {
+std::vector<const PathSpecialPoint*> PathTable::of_kind(SpecialPointKind kind) const {
   std::vector<const PathSpecialPoint*> out;
   for (const PathSpecialPoint& sp : special_points) {
     if (sp.kind == kind) out.push_back(&sp);
@@ -661,7 +661,7 @@ void write_force_points(io::Hdf5Group& root, const PathTable& t) {
   std::vector<double> lambda, c, f, slope;
   std::vector<int> index, located;
   for (const PathForcePoint& p : t.force_points) {
-    kind.push_back(p.kind);
+    kind.push_back(to_string(p.kind));
     lambda.push_back(p.load_factor);
     c.push_back(p.coordinate);
     f.push_back(p.force);
@@ -798,7 +798,7 @@ void write_path_file(io::Hdf5Group& root, const PathTable& t) {
   std::vector<double> lambda;
   std::vector<int> index, after, located, switched;
   for (const PathSpecialPoint& p : t.special_points) {
-    kind.push_back(p.kind);
+    kind.push_back(to_string(p.kind));
     lambda.push_back(p.load_factor);
     index.push_back(p.index);
     after.push_back(p.index_after);

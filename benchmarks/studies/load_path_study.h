@@ -74,7 +74,8 @@ struct PathRequest {
 
 // A located fold (limit point) or bifurcation, in the units of the table.
 struct PathSpecialPoint {
-  std::string kind;  // "limit_point" or "bifurcation"
+  // Its name ("limit_point", "bifurcation"): to_string (shooting_options.h).
+  SpecialPointKind kind = SpecialPointKind::kLimitPoint;
   double load_factor = 0.0;
   int index = -1;        // row of the path table holding the point itself (-1: not stored)
   int index_after = -1;  // first row after it (-1: none, the path stopped there)
@@ -90,7 +91,8 @@ struct PathSpecialPoint {
 // A zero or extremum of the support's force on the moved coordinate of a displacement-controlled
 // path (ForcePoint, control_points.h), in the units of the table.
 struct PathForcePoint {
-  std::string kind;          // "force_zero", "force_maximum" or "force_minimum"
+  // Its name ("force_zero", "force_maximum", "force_minimum"): to_string (shooting_options.h).
+  ForcePointKind kind = ForcePointKind::kZero;
   double load_factor = 0.0;  // path parameter (fraction moved)
   double coordinate = 0.0;   // the moved coordinate (length unit, or rad)
   double force = 0.0;        // the support's load on it (force unit, or moment unit)
@@ -164,7 +166,7 @@ struct PathTable {
   std::vector<std::string> warnings;
 
   std::size_t size() const { return load_factor.size(); }
-  std::vector<const PathSpecialPoint*> of_kind(const std::string& kind) const;
+  std::vector<const PathSpecialPoint*> of_kind(SpecialPointKind kind) const;
   std::vector<StabilityStretch> stability_stretches() const;
 };
 

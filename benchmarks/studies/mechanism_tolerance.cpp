@@ -302,6 +302,14 @@ ToleranceStudy mechanism_tolerance(const MechanismDesign& design, const Toleranc
       study.quantities[i].values.push_back(items.values[item * nq + i]);
     }
   }
+  if (study.failed_samples > 0) {
+    study.warnings.push_back(
+        {WarningKind::kOther,
+         fmt::format("{} of {} samples could not be analysed and are left out (first: {})",
+                     study.failed_samples,
+                     o.samples,
+                     study.first_failure)});
+  }
   // A uniform draw on [-a, a] has standard deviation a/sqrt(3); the normal one (cut at 3.5
   // sigma) sigma to 1e-3.
   const double std_factor =

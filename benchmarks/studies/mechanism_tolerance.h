@@ -22,6 +22,7 @@
 #include "flexure/io/csv_table.h"
 #include "flexure/io/platform/hdf5_file.h"
 #include "flexure/mechanisms/mechanism.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
 
@@ -76,7 +77,10 @@ struct ToleranceStudy {
   std::vector<ToleranceStats> quantities;
   int failed_samples = 0;     // samples whose design or analysis failed (left out)
   std::string first_failure;  // the first one's reason
-  int mpi_ranks = 1;          // the ranks the analyses were divided over
+  // For people: "N of M samples could not be analysed and are left out (first: ...)" when
+  // failed_samples > 0 (kOther).
+  std::vector<Warning> warnings;
+  int mpi_ranks = 1;  // the ranks the analyses were divided over
 };
 
 // Throws InvalidInput for bad options or a design that cannot be analysed at its nominal values.

@@ -8,6 +8,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "flexure/mechanisms/materials_fatigue.h"
@@ -271,7 +272,7 @@ class ForwardDynamics {
 // (builtin_designs.h) or from any dimensional MechanismDesign, e.g. a TOML file (docs/dynamics.md
 // "Designs from TOML", docs/mechanisms.md "TOML").
 //
-// The springs follow a rule, reported as `spring_rule`:
+// The springs follow a rule (DynamicsSpringRule), reported as `spring_rule`:
 //   "table5-printed"   the constants printed in the paper's Table 5 (the built-in default: it
 //                      reproduces the paper's Table 6 F_Nom, docs/dynamics.md §2);
 //   "pure-bending", "table2", "table5"
@@ -282,22 +283,29 @@ class ForwardDynamics {
 //   none               a thesis design without fixed-fixed segments: its springs have one rule
 //                      (s: EI/l, Howell eq. 5.14; l: gamma K_theta EI/l, eq. 5.72), as in analyze.
 
-inline constexpr const char* kTable5PrintedSprings = "table5-printed";
-inline constexpr const char* kGivenSprings = "given";
+// The rule the springs of a DynamicsDesign follow (above).
+enum class DynamicsSpringRule { kTable5Printed, kPureBending, kTable2, kTable5, kGiven };
+// "table5-printed", "pure-bending", "table2", "table5", "given" (the JSON key and HDF5 attribute
+// `spring_rule`; the middle three are mechanism::spring_rule_name's).
+const char* to_string(DynamicsSpringRule rule);
+// The rule of that name; throws InvalidInput listing the five.
+DynamicsSpringRule dynamics_spring_rule_from_string(std::string_view name);
+// A mechanism's spring rule (pure-bending, table2, table5) as the dynamics reports it.
+DynamicsSpringRule dynamics_spring_rule(mechanism::SpringRule rule);
 
 struct DynamicsDesign {
   std::string name;
-  double r2 = 0.0;                         // PRBM crank, m
-  double r3 = 0.0;                         // PRBM coupler, m
-  double m2 = 0.0;                         // link 2 of one half, kg
-  double m3 = 0.0;                         // link 3 of one half, kg
-  double m_slider = 0.0;                   // the one slider, kg
-  std::array<double, 3> k{};               // torsion springs of one half at pivots 1-3, N m
-  std::optional<std::string> spring_rule;  // see above
-  double F_nom_paper = 0.0;                // Table 6 F_Nom of the whole mechanism, N (0: none)
-  std::optional<double> stroke;            // the design's own stroke, m (a TOML file's)
-  std::optional<std::string> material;     // the material whose E set the springs (--material)
-  double E = 0.0;                          // that modulus, Pa (0: no material given)
+  double r2 = 0.0;                                // PRBM crank, m
+  double r3 = 0.0;                                // PRBM coupler, m
+  double m2 = 0.0;                                // link 2 of one half, kg
+  double m3 = 0.0;                                // link 3 of one half, kg
+  double m_slider = 0.0;                          // the one slider, kg
+  std::array<double, 3> k{};                      // torsion springs of one half at pivots 1-3, N m
+  std::optional<DynamicsSpringRule> spring_rule;  // none: a thesis design's one rule (above)
+  double F_nom_paper = 0.0;             // Table 6 F_Nom of the whole mechanism, N (0: none)
+  std::optional<double> stroke;         // the design's own stroke, m (a TOML file's)
+  std::optional<std::string> material;  // the material whose E set the springs (--material)
+  double E = 0.0;                       // that modulus, Pa (0: no material given)
 };
 
 // The optional [dynamics] table of a mechanism TOML file (io/toml_files.h): what a dimensional

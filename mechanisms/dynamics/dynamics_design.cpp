@@ -1,4 +1,5 @@
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/dynamics/dynamics.h"
@@ -15,12 +16,40 @@ std::array<double, 3> spring_constants(const MechanismDesign& d) {
   return {d.spring_constant(1), d.spring_constant(2), d.spring_constant(3)};
 }
 
-std::optional<std::string> rule_name(const MechanismDesign& d) {
+std::optional<DynamicsSpringRule> design_rule(const MechanismDesign& d) {
   if (!mechanism::has_fixed_fixed(d)) return std::nullopt;
-  return mechanism::spring_rule_name(d.spring_rule);
+  return dynamics_spring_rule(d.spring_rule);
 }
 
+constexpr std::array<const char*, 5> kDynamicsSpringRuleNames = {
+    "table5-printed", "pure-bending", "table2", "table5", "given"};
+
 }  // namespace
+
+const char* to_string(DynamicsSpringRule rule) {
+  return kDynamicsSpringRuleNames[static_cast<std::size_t>(rule)];
+}
+
+DynamicsSpringRule dynamics_spring_rule_from_string(std::string_view name) {
+  for (std::size_t i = 0; i < kDynamicsSpringRuleNames.size(); ++i) {
+    if (name == kDynamicsSpringRuleNames[i]) return static_cast<DynamicsSpringRule>(i);
+  }
+  throw InvalidInput(fmt::format("dynamics spring rule '{}' is unknown (allowed: {})",
+                                 name,
+                                 fmt::join(kDynamicsSpringRuleNames, ", ")));
+}
+
+DynamicsSpringRule dynamics_spring_rule(SpringRule rule) {
+  switch (rule) {
+    case SpringRule::kPureBending:
+      return DynamicsSpringRule::kPureBending;
+    case SpringRule::kTable2:
+      return DynamicsSpringRule::kTable2;
+    case SpringRule::kTable5:
+      return DynamicsSpringRule::kTable5;
+  }
+  throw InvalidInput("unknown spring rule");
+}
 
 DynamicsDesign builtin_dynamics_design(const std::string& name,
                                        std::optional<SpringRule> rule,
@@ -53,10 +82,10 @@ DynamicsDesign builtin_dynamics_design(const std::string& name,
       d.E = material->E;
     }
     d.k = spring_constants(m);
-    d.spring_rule = mechanism::spring_rule_name(*rule);
+    d.spring_rule = dynamics_spring_rule(*rule);
   } else {
     d.k = t.k;
-    d.spring_rule = kTable5PrintedSprings;
+    d.spring_rule = DynamicsSpringRule::kTable5Printed;
   }
   return d;
 }
@@ -141,12 +170,12 @@ DynamicsDesign dynamics_design(MechanismDesign design,
       }
     }
     d.k = k;
-    d.spring_rule = kGivenSprings;
+    d.spring_rule = DynamicsSpringRule::kGiven;
     return d;
   }
   if (rule) mechanism::apply_spring_rule(design, *rule);
   d.k = spring_constants(design);
-  d.spring_rule = rule_name(design);
+  d.spring_rule = design_rule(design);
   return d;
 }
 

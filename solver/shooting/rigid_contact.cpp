@@ -3,6 +3,7 @@
 #include "flexure/solver/shooting/rigid_contact.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -21,6 +22,37 @@ namespace flexure {
 
 const char* to_string(ContactSurfaceType type) {
   return type == ContactSurfaceType::kCircle ? "circle" : "line";
+}
+
+namespace {
+constexpr std::array<const char*, 4> kContactEventKindNames = {
+    "landing", "lift-off", "line-contact", "tip-contact"};
+constexpr std::array<const char*, 5> kContactKindNames = {"none", "wrap", "tip", "point", "line"};
+}  // namespace
+
+const char* to_string(ContactEventKind kind) {
+  return kContactEventKindNames[static_cast<std::size_t>(kind)];
+}
+
+ContactEventKind contact_event_kind_from_string(std::string_view name) {
+  for (std::size_t i = 0; i < kContactEventKindNames.size(); ++i) {
+    if (name == kContactEventKindNames[i]) return static_cast<ContactEventKind>(i);
+  }
+  throw InvalidInput(fmt::format("contact event kind '{}' is unknown (allowed: {})",
+                                 name,
+                                 fmt::join(kContactEventKindNames, ", ")));
+}
+
+const char* to_string(ContactKind kind) {
+  return kContactKindNames[static_cast<std::size_t>(kind)];
+}
+
+ContactKind contact_kind_from_string(std::string_view name) {
+  for (std::size_t i = 0; i < kContactKindNames.size(); ++i) {
+    if (name == kContactKindNames[i]) return static_cast<ContactKind>(i);
+  }
+  throw InvalidInput(fmt::format(
+      "contact kind '{}' is unknown (allowed: {})", name, fmt::join(kContactKindNames, ", ")));
 }
 
 void RigidContactSolver::Options::validate() const {
@@ -1259,7 +1291,8 @@ ContactResult ContactRun::run() {
         if (!root.converged()) {
           throw ContactFailure("the opening of the tip contact into a line did not converge");
         }
-        out.events.push_back(ContactEvent{lying ? "line-contact" : "tip-contact", root.x});
+        out.events.push_back(ContactEvent{
+            lying ? ContactEventKind::kLineContact : ContactEventKind::kTipContact, root.x});
         if (lying) {
           // At the opening the line contact is the tip contact: a = L, R_a = R_n - R_L.
           tip_slope(root.x);
@@ -1312,7 +1345,8 @@ ContactResult ContactRun::run() {
                                                  psi,
                                                  ScalarRootOptions{options_.event_tolerance, 200});
         if (!root.converged()) throw ContactFailure("a landing or lift-off point did not converge");
-        out.events.push_back(ContactEvent{now ? "landing" : "lift-off", root.x});
+        out.events.push_back(
+            ContactEvent{now ? ContactEventKind::kLanding : ContactEventKind::kLiftOff, root.x});
         if (now) {
           variable = 0.0;
           mode_ = landing_mode(lambda);
@@ -1381,11 +1415,11 @@ ContactResult ContactRun::run() {
     } else {
       out.stability = not_checked_stability("the verdict was switched off");
     }
-    out.kind = !contact                       ? "none"
-               : mode_ == ContactMode::kWrap  ? "wrap"
-               : mode_ == ContactMode::kTip   ? "tip"
-               : mode_ == ContactMode::kLying ? "line"
-                                              : "point";
+    out.kind = !contact                       ? ContactKind::kNone
+               : mode_ == ContactMode::kWrap  ? ContactKind::kWrap
+               : mode_ == ContactMode::kTip   ? ContactKind::kTip
+               : mode_ == ContactMode::kLying ? ContactKind::kLine
+                                              : ContactKind::kPoint;
     out.set_converged(true);
     out.message = contact ? fmt::format("in contact with the {}", to_string(surface_.type))
                           : fmt::format("free of the {}", to_string(surface_.type));

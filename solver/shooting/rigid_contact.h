@@ -40,6 +40,7 @@
 // located by Brent's method and reported as an event.
 #include <array>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "flexure/solver/chain_model/segment_chain.h"
@@ -60,12 +61,28 @@ struct RigidSurface {
   std::array<double, 2> normal{0.0, 1.0};  // line normal toward the beam (normalised on use)
 };
 
+// What happens at an event of the continuation: contact begins (landing) or ends (lift-off), the
+// tip contact opens into a line contact or closes back to the tip.
+enum class ContactEventKind { kLanding, kLiftOff, kLineContact, kTipContact };
+// "landing", "lift-off", "line-contact", "tip-contact" (the JSON key and HDF5 dataset `kind`).
+const char* to_string(ContactEventKind kind);
+// The kind of that name; throws InvalidInput listing the four.
+ContactEventKind contact_event_kind_from_string(std::string_view name);
+
 // Landing (contact begins) or lift-off (contact ends) along the continuation.
 struct ContactEvent {
-  std::string kind;          // "landing", "lift-off", "line-contact" (the tip contact opens into
-                             // a line contact) or "tip-contact" (it closes back to the tip)
+  ContactEventKind kind = ContactEventKind::kLanding;
   double load_factor = 0.0;  // located to RigidContactSolver::Options::event_tolerance
 };
+
+// How the beam touches at the returned point: not at all, a circle wrapped from the clamp, the tip
+// on a stop, one interior point (tangent), or the beam lying on a stop from the separation point
+// to its tip.
+enum class ContactKind { kNone, kWrap, kTip, kPoint, kLine };
+// "none", "wrap", "tip", "point", "line" (the JSON key and HDF5 attribute `contact_kind`).
+const char* to_string(ContactKind kind);
+// The kind of that name; throws InvalidInput listing the five.
+ContactKind contact_kind_from_string(std::string_view name);
 
 // One step of the continuation.
 struct ContactPathPoint {
@@ -82,11 +99,8 @@ struct ContactResult : SolveStatus {
   ContactSurfaceType surface = ContactSurfaceType::kCircle;
   int surface_index = 0;  // several surfaces: the one this result is about (0-based)
   bool in_contact = false;
-  // How the beam touches at the returned point: "none", "wrap" (a circle wrapped from the
-  // clamp), "tip" (the tip on a stop), "point" (one interior point, tangent) or "line" (the beam
-  // lying on a stop from the separation point to its tip).
-  std::string kind = "none";
-  double load_factor = 0.0;  // reached (1 when converged)
+  ContactKind kind = ContactKind::kNone;  // how the beam touches at the returned point
+  double load_factor = 0.0;               // reached (1 when converged)
   // Contact region on the beam (arc lengths from the root); equal ends for point contact, both 0
   // without contact.
   double s_start = 0.0;

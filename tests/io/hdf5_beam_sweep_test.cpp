@@ -150,7 +150,7 @@ TEST(BeamSweep, FileLayoutReadsBackWithTheCApi) {
   const BeamSweepTable table = run_beam_sweep(alpha2, linear_point);
   {
     AtomicHdf5File file(path.string());
-    write_beam_sweep(file.root(), table, BeamSweepMetadata{"linear", 0.5, -0.25, 1e-14});
+    write_beam_sweep(file.root(), table, BeamSweepMetadata{BeamMethod::kLinear, 0.5, -0.25, 1e-14});
     file.commit();
   }
   hid_t file = test::open_read_only(path);

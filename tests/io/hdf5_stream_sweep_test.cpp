@@ -98,9 +98,9 @@ void write_both(const test::ScratchDir& dir,
 
 TEST(StreamedSweep, FileEqualsTheWholeTableWritten) {
   test::ScratchDir dir;
-  write_both(dir, 101, BeamSweepMetadata{"fake", 0.5, 0.0, 1e-12}, false);
-  write_both(dir, 101, BeamSweepMetadata{"fake", 0.5, 0.0, 1e-12}, true);
-  BeamSweepMetadata grid{"fake", 0.0, 0.25, 1e-12};
+  write_both(dir, 101, BeamSweepMetadata{BeamMethod::kLinear, 0.5, 0.0, 1e-12}, false);
+  write_both(dir, 101, BeamSweepMetadata{BeamMethod::kLinear, 0.5, 0.0, 1e-12}, true);
+  BeamSweepMetadata grid{BeamMethod::kLinear, 0.0, 0.25, 1e-12};
   grid.axes = {{"alpha2", 0.0, 1.0, 6, "1", "axis 1"},
                {"load_ratio_n", -1.0, 1.0, 5, "1", "axis 2"}};
   write_both(dir, 30, grid, false);
@@ -138,7 +138,8 @@ TEST(StreamedSweep, MemoryDoesNotGrowWithTheNumberOfPoints) {
   ASSERT_GT(before, 0);
   {
     AtomicHdf5File file((dir / "big.h5").string());
-    BeamSweepWriter writer(file.root(), kPoints, BeamSweepMetadata{"fake", 0.0, 0.0, 1e-12});
+    BeamSweepWriter writer(
+        file.root(), kPoints, BeamSweepMetadata{BeamMethod::kLinear, 0.0, 0.0, 1e-12});
     stream_beam_sweep(kPoints, fake, options, writer);
     file.commit();
   }

@@ -8,6 +8,7 @@
 //  * the TOML material: material = "NAME", a [material] name the library knows (values replace
 //    the library's, with a note), an unknown name without values (error with the closest ids),
 //    and the writer's round trip of the fatigue values.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -106,6 +107,55 @@ TEST(MechanismFatigue, MissingStrengthsAreNamed) {
   EXPECT_THROW(apply_material(t, find_material("copper")), InvalidInput);  // no S_y in Table C.1
   apply_material(t, find_material("ti-6al-4v-annealed"));                  // S_y, S_ut, no S_e'
   EXPECT_THROW(design_fatigue_material(t), InvalidInput);
+}
+
+// mechanism_fatigue_report: the check `mechanism analyze` prints, with the warning of a finite life
+// in the report (not composed by the tool). 1A-lpp in ss-410-ht: over its whole stroke the Goodman
+// safety factor of pivot 1 is below 1 (finite life, warned with the critical pivot, the safety
+// factor and the cycles of the check); over 30 % of it, above 1 (infinite life, no warning).
+// Without S_ut there is no check, and the reason names what is missing.
+TEST(MechanismFatigue, ReportWarnsOfAFiniteLife) {
+  MechanismDesign d = find_builtin_mechanism("1A-lpp");
+  AnalysisOptions o;
+  o.points = 20;
+  o.exact = false;
+  o.stability = false;
+  const MechanismFatigueReport none = mechanism_fatigue_report(analyze_mechanism(d, o), {});
+  EXPECT_FALSE(none.fatigue.has_value());
+  EXPECT_NE(none.not_checked.find("ultimate strength"), std::string::npos) << none.not_checked;
+  EXPECT_TRUE(none.warnings.empty());
+
+  apply_material(d, find_material("ss-410-ht"));
+  const MechanismFatigueReport finite =
+      mechanism_fatigue_report(analyze_mechanism(d, o), FatigueOptions{});
+  ASSERT_TRUE(finite.fatigue.has_value()) << finite.not_checked;
+  const FatigueCheck& c = finite.fatigue->critical().check;
+  // Eq. 3.110 on the reported stresses and strengths.
+  const double S_ut = finite.fatigue->material.ultimate_strength;
+  EXPECT_NEAR(c.safety_factor,
+              1.0 / (c.alternating_stress / c.endurance_limit + c.mean_stress / S_ut),
+              1e-12);
+  ASSERT_LT(c.safety_factor, 1.0);
+  ASSERT_EQ(finite.warnings.size(), 1u);
+  EXPECT_EQ(finite.warnings[0].kind, WarningKind::kSafetyFactor);
+  const std::string& text = finite.warnings[0].text;
+  EXPECT_EQ(text.rfind("1A-lpp: fatigue (rest to full stroke, pivot 1): ", 0), 0u) << text;
+  EXPECT_NE(
+      text.find(fmt::format("fatigue safety factor {:.3f} (modified Goodman)", c.safety_factor)),
+      std::string::npos)
+      << text;
+  EXPECT_NE(text.find(fmt::format("FINITE LIFE, about {:.3g} cycles", c.cycles_to_failure)),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.back(), 's');  // one sentence, no line break
+
+  d.stroke *= 0.3;
+  const MechanismFatigueReport infinite =
+      mechanism_fatigue_report(analyze_mechanism(d, o), FatigueOptions{});
+  ASSERT_TRUE(infinite.fatigue.has_value());
+  ASSERT_GE(infinite.fatigue->critical().check.safety_factor, 1.0);
+  EXPECT_TRUE(infinite.warnings.empty());
+  EXPECT_NE(fatigue_summary(d, *infinite.fatigue).find(", infinite life"), std::string::npos);
 }
 
 const char* kBody = R"(

@@ -108,7 +108,7 @@ TEST(MechanismGeometry, LongSegmentsAreRoverGammaWithTheirPivotAtGammaL) {
   for (const MechanismDesign& d : designs()) {
     const MechanismGeometry g = mechanism_geometry(d);
     for (const auto& f : g.flexures) {
-      if (f.kind != "long") continue;
+      if (f.kind != FlexureKind::kLong) continue;
       ++seen;
       const double r = f.pivot == 1 ? d.r2 : d.configuration().middle_long_on_r2 ? d.r2 : d.r3;
       EXPECT_NEAR(0.85 * f.length, r, 1e-9 * r) << d.name;  // Howell's average gamma

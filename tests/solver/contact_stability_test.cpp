@@ -183,7 +183,7 @@ TEST(ContactStability, CantileverOnACylinderIsStableByTheEnergy) {
     o.shape_points = 4001;
     const ContactResult r = RigidContactSolver(o).solve(chain, circle);
     ASSERT_TRUE(r.converged()) << r.message;
-    ASSERT_EQ(r.kind, "wrap");
+    ASSERT_EQ(r.kind, ContactKind::kWrap);
     ASSERT_TRUE(r.stability.judged()) << r.stability.message;
     EXPECT_EQ(r.stability.kind, StabilityKind::kStable) << r.stability.message;
     // The free span from the shape (uniform from s_c on).
@@ -230,7 +230,7 @@ TEST(ContactStability, TipOnAStopHeldAlongItsNormal) {
     o.shape_points = 4001;
     const ContactResult r = RigidContactSolver(o).solve(chain, stop);
     ASSERT_TRUE(r.converged()) << r.message;
-    ASSERT_EQ(r.kind, "tip");
+    ASSERT_EQ(r.kind, ContactKind::kTip);
     ASSERT_TRUE(r.stability.judged()) << r.stability.message;
     const double norm = std::hypot(c.nx, c.ny);
     const double nx = c.nx / norm, ny = c.ny / norm;
@@ -280,7 +280,7 @@ TEST(ContactStability, PointContactOnAStopIsJudgedByTheEnergy) {
     o.shape_points = 4001;
     const ContactResult r = RigidContactSolver(o).solve(chain, stop);
     ASSERT_TRUE(r.converged()) << r.message;
-    ASSERT_EQ(r.kind, "point");
+    ASSERT_EQ(r.kind, ContactKind::kPoint);
     ASSERT_TRUE(r.stability.judged()) << r.stability.message;
     const double norm = std::hypot(c.nx, c.ny);
     Span sp;
@@ -345,7 +345,7 @@ TEST(ContactStability, FreeStateIsTheBeamsOwnVerdictAndPointContactIsNotChecked)
   down.tip_load.Fy = -3.0;
   const ContactResult p = RigidContactSolver().solve(down, pin);
   ASSERT_TRUE(p.converged()) << p.message;
-  ASSERT_EQ(p.kind, "point");
+  ASSERT_EQ(p.kind, ContactKind::kPoint);
   EXPECT_EQ(p.stability.kind, StabilityKind::kNotChecked);
   EXPECT_NE(p.stability.message.find("interior point contact with a circle"), std::string::npos);
 }

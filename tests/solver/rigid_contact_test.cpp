@@ -223,7 +223,7 @@ TEST(RigidContactCircle, SmallLoadsMatchLinearTheory) {
   ASSERT_TRUE(r.converged()) << r.message;
   ASSERT_TRUE(r.in_contact);
   ASSERT_EQ(r.events.size(), 1u);
-  EXPECT_EQ(r.events[0].kind, "landing");
+  EXPECT_EQ(r.events[0].kind, ContactEventKind::kLanding);
   EXPECT_NEAR(r.events[0].load_factor, EI / (R * F * L), 1e-4);  // F L = EI/R
   const double free_span = L - r.separation_s.at(0);
   EXPECT_NEAR(free_span, EI / (F * R), 1e-4 * free_span);  // F a = EI/R
@@ -334,7 +334,7 @@ TEST(RigidContactLine, ProppedCantileverUnderUniformLoad) {
   EXPECT_NEAR(r.tip.y, -d, 1e-12);
   // Force balance: clamp reaction + load q L + contact force = 0.
   EXPECT_NEAR(r.reaction.Fy - q + r.contact_force[1], 0.0, 1e-10 * q);
-  EXPECT_EQ(r.kind, "tip");
+  EXPECT_EQ(r.kind, ContactKind::kTip);
 }
 
 // ---- Line contact: the beam lying on the stop ------------------------------------------------
@@ -355,10 +355,10 @@ TEST(RigidContactLine, LineContactSmallLoadsMatchTheClosedForm) {
     std::get<FlexibleSegment>(c.segments[0]).qy = -q;
     const ContactResult r = RigidContactSolver(options()).solve(c, line(0.0, -d, 0.0, 1.0));
     ASSERT_TRUE(r.converged()) << r.message;
-    ASSERT_EQ(r.kind, "line");
+    ASSERT_EQ(r.kind, ContactKind::kLine);
     ASSERT_EQ(r.events.size(), 2u);
-    EXPECT_EQ(r.events[0].kind, "landing");
-    EXPECT_EQ(r.events[1].kind, "line-contact");
+    EXPECT_EQ(r.events[0].kind, ContactEventKind::kLanding);
+    EXPECT_EQ(r.events[1].kind, ContactEventKind::kLineContact);
     // Measured: 3e-10 relative everywhere (the geometric terms are O(d^2)).
     EXPECT_NEAR(r.events[0].load_factor, 8.0 / ratio, 1e-8 * 8.0 / ratio);
     EXPECT_NEAR(r.events[1].load_factor, 72.0 / ratio, 1e-8 * 72.0 / ratio);
@@ -420,7 +420,7 @@ TEST(RigidContactLine, LiftOffAlongTheContinuation) {
             .solve(cantilever(1.0, 1.0, 0.0, 1.0), line(0.0, -d, 0.0, 1.0), start);
     ASSERT_TRUE(r.converged()) << r.message;
     ASSERT_EQ(r.events.size(), 1u);
-    EXPECT_EQ(r.events[0].kind, "lift-off");
+    EXPECT_EQ(r.events[0].kind, ContactEventKind::kLiftOff);
     EXPECT_NEAR(-5.0 + 6.0 * r.events[0].load_factor, -F_land, 1e-9);
     EXPECT_FALSE(r.in_contact);
     EXPECT_TRUE(r.path.front().in_contact);
@@ -469,7 +469,7 @@ TEST(RigidContactLine, LargeDeflectionLineContactIsAnEquilibriumOfItsFreeSpan) {
     o.shape_points = 4001;
     const ContactResult r = RigidContactSolver(o).solve(c, s);
     ASSERT_TRUE(r.converged()) << r.message;
-    ASSERT_EQ(r.kind, "line");
+    ASSERT_EQ(r.kind, ContactKind::kLine);
     const double nn = std::hypot(k.nx, k.ny);
     const double nux = k.nx / nn, nuy = k.ny / nn;
     const double tx = nuy, ty = -nux;  // the stop's direction, the beam running along +x
@@ -573,7 +573,7 @@ TEST(RigidContactLine, PenaltyChainConvergesToTheLineContact) {
   const RigidSurface s = line(0.0, -0.3, 0.0, 1.0);
   const ContactResult r = RigidContactSolver(options()).solve(c, s);
   ASSERT_TRUE(r.converged()) << r.message;
-  ASSERT_EQ(r.kind, "line");
+  ASSERT_EQ(r.kind, ContactKind::kLine);
   PenaltyChain p;
   p.N = 200;
   p.qy = -100.0;
@@ -726,7 +726,7 @@ TEST(RigidContactSeveral, OneOfTwoSurfacesTouchedIsThatSurfacesSolution) {
     const ContactResult r = RigidContactSolver(options()).solve(c, both);
     ASSERT_TRUE(r.converged()) << r.message;
     EXPECT_EQ(r.surface_index, order == 0 ? 1 : 0);
-    EXPECT_EQ(r.kind, "tip");
+    EXPECT_EQ(r.kind, ContactKind::kTip);
     EXPECT_EQ(r.tip.x, alone.tip.x);
     EXPECT_EQ(r.point_force_normal, alone.point_force_normal);
     EXPECT_EQ(r.reaction.M, alone.reaction.M);

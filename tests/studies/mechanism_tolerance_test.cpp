@@ -10,8 +10,10 @@
 //    reproduces the draws; bad options are refused.
 #include "flexure/benchmarks/studies/mechanism_tolerance.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -102,6 +104,55 @@ TEST(MechanismTolerance, GroupSensitivityIsTheCommonModeDerivative) {
   EXPECT_NEAR(s.quantities[0].sensitivity[0] / fd, 1.0, 1e-5);
   // The force of a PRBM spring scales as h^3 at fixed geometry: dF/d(rel h) = 3 F.
   EXPECT_NEAR(fd / s.quantities[0].nominal, 3.0, 1e-5);
+}
+
+// A sample drawn past the toggle position cannot be analysed (MechanismDesign::finalise refuses
+// its stroke): the study leaves it out and says so in its warnings, one sentence with the count
+// and the first reason (the tool prints it; Python raises FlexureWarning). The stroke sits 0.2 %
+// below the toggle of the nominal links, the links spread 1 %: the samples past the toggle are
+// counted here from the draws, independently of the study's analyses.
+TEST(MechanismTolerance, SamplesPastTheToggleAreLeftOutWithAWarning) {
+  MechanismDesign d = find_builtin_mechanism("1A-lpp");
+  d.stroke = (1.0 - 2e-3) * d.toggle_stroke();
+  ToleranceOptions o;
+  o.spread = {0.0, 0.0, 0.01, 0.0};
+  o.samples = 20;
+  o.exact = false;
+  o.points = 10;
+  const ToleranceStudy s = mechanism_tolerance(d, o);
+  const std::size_t np = s.parameters.size();
+  const auto column = [&](const char* name) {
+    return static_cast<std::size_t>(std::find(s.parameters.begin(), s.parameters.end(), name) -
+                                    s.parameters.begin());
+  };
+  const std::size_t r2 = column("r2"), r3 = column("r3");
+  ASSERT_LT(r2, np);
+  ASSERT_LT(r3, np);
+  int past = 0, first = -1;
+  for (int k = 0; k < o.samples; ++k) {
+    MechanismDesign x = d;
+    x.r2 *= 1.0 + s.draws[k * np + r2];
+    x.r3 *= 1.0 + s.draws[k * np + r3];
+    if (d.stroke > x.toggle_stroke()) {
+      if (past++ == 0) first = k;
+    }
+  }
+  ASSERT_GT(past, 0);
+  ASSERT_LT(past, o.samples - 2);
+  EXPECT_EQ(s.failed_samples, past);
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_EQ(s.warnings[0].kind, WarningKind::kOther);
+  const std::string head = fmt::format(
+      "{} of 20 samples could not be analysed and are left out (first: sample {}: ", past, first);
+  EXPECT_EQ(s.warnings[0].text.rfind(head, 0), 0u) << s.warnings[0].text;
+  EXPECT_NE(s.warnings[0].text.find("past the toggle position"), std::string::npos)
+      << s.warnings[0].text;
+  // Without failures, no warning.
+  o.spread = {0.0, 0.0, 1e-4, 0.0};
+  d.stroke = 0.5 * d.toggle_stroke();
+  const ToleranceStudy fine = mechanism_tolerance(d, o);
+  EXPECT_EQ(fine.failed_samples, 0);
+  EXPECT_TRUE(fine.warnings.empty());
 }
 
 TEST(MechanismTolerance, SeedReproducesAndBadOptionsAreRefused) {
