@@ -11,6 +11,8 @@
 // The inextensible elastica's force depends on the flexural rigidities only, so at fixed geometry
 // Xi'_exact depends on (config, R, K1, K2, d) alone, not on the size or the material: the
 // nondimensional optimum serves every dimensioned design of it.
+#include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "flexure/mechanisms/design/cfm_design_problem.h"
@@ -31,6 +33,14 @@ struct ExactRefinementOptions {
   // given starts: the exact objective has several optima where the PRBM's has one. Negative: two
   // per free variable (the default of `flexure design cfm --model exact`).
   int sequence_starts = 0;
+  // Called after each exact stroke: (done, total), total = 1 + runs (max_evaluations + 1), the
+  // most the refinement can take -- the first start's confirmation, then per local run (the
+  // starts and the sequence's) at most max_evaluations strokes of the search and its
+  // confirmation at confirm_points. A run that stops before its limit moves done to its end, so
+  // done never decreases and ends at total. For a progress display; a caller stops a long
+  // refinement by throwing from it (the exception propagates out of NLopt unchanged; nothing is
+  // returned). Empty: no calls.
+  std::function<void(std::size_t done, std::size_t total)> progress;
   void validate() const;
 };
 

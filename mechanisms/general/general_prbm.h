@@ -15,6 +15,8 @@
 // null space of J_g (force control: the input free under its dead load lambda) or of [J_g; grad c]
 // (displacement control) -- gives the verdict: index = its negative eigenvalues, margin = the
 // lowest eigenvalue relative to the springs' unloaded stiffness B (1 unloaded, 0 critical).
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,11 @@ struct GeneralPrbmOptions {
   int max_steps = 20000;   // arclength steps before giving up
   double max_step = 0.05;  // arclength step, scaled units (lengths / size, rad)
   double critical_tolerance = kCriticalMarginTolerance;
+  // Called after each recorded point of the path: (done, count), count the input's grid values,
+  // done never decreasing and at most count (GeneralExactOptions::progress's convention). For a
+  // progress display; a caller stops a long solve by throwing from it (the exception propagates;
+  // the Python module does on Ctrl-C). Empty: no calls.
+  std::function<void(std::size_t done, std::size_t total)> progress;
   // Throws InvalidInput naming the field.
   void validate() const;
 };
