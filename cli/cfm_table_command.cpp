@@ -275,7 +275,7 @@ void run_exact_table(const CfmArgs& args) {
   const cfm::ExactTableReport report = cfm::compare_exact_table(
       args.exact_rows == "a" ? cfm::ExactTableRows::kSubclassA : cfm::ExactTableRows::kAll,
       make_exact_options(args),
-      slow_progress("cfm --table --exact: stroke points"),
+      stoppable_progress("cfm --table --exact: stroke points"),
       print_row);
   if (args.json) print_json(Json{{"points", args.exact_points}, {"subclasses", rows}});
   if (!report.all_converged) set_exit_code(kExitNoConvergence);

@@ -206,6 +206,7 @@ void run_exact(const DesignCfmArgs& args,
                std::optional<io::DesignHistoryFile>& file) {
   design::ExactRefinementOptions o;
   o.sequence_starts = args.exact_starts;  // -1: two per free variable
+  o.progress = stoppable_progress("design cfm " + problem.config + " --model exact: exact strokes");
   const design::CfmExactRefinement r = design::refine_cfm_exact_from_prbm(problem, prbm, o);
   if (!r.converged()) {
     throw NoConvergenceReport(

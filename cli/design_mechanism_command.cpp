@@ -14,6 +14,7 @@
 #include "cli/fatigue_flags.h"
 #include "cli/mechanism_geometry_output.h"
 #include "cli/modulus_output.h"
+#include "cli/slow_progress.h"
 #include "flexure/io/mechanism_geometry_toml.h"
 #include "flexure/io/platform/output_path.h"
 #include "flexure/io/toml_files.h"
@@ -337,7 +338,8 @@ std::string toml_comment(const design::DimensionedDesign& d,
 
 void run_design_mechanism(const DesignMechanismArgs& args) {
   const mechanism::ForceOf of = mechanism::parse_force_of(args.force_of);
-  const design::MechanismSpec spec = make_spec(args, of);
+  design::MechanismSpec spec = make_spec(args, of);
+  spec.progress = stoppable_progress("design mechanism: sub-classes");
   if (!args.out.empty()) io::check_output_path(args.out);
   if (!args.csv.empty()) io::check_output_path(args.csv, "--csv");
   if (!args.drawing.empty()) check_drawing_path(args.drawing, "--drawing");
@@ -357,7 +359,9 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
   // with the modulus the sizing used (before the designs are shown with the modulus as given).
   std::optional<design::DimensionedDesign> refined;
   if (args.model == "exact" && !r.designs.empty()) {
-    refined = design::refine_design_exact(spec, r.designs.front());
+    design::MechanismSpec refine = spec;
+    refine.progress = stoppable_progress("design mechanism --model exact: exact strokes");
+    refined = design::refine_design_exact(refine, r.designs.front());
     as_given(refined->design);
   }
   for (auto& d : r.designs) as_given(d.design);

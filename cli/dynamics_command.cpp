@@ -163,7 +163,7 @@ void run_dynamics(const DynamicsArgs& args) {
   o.zero_inertia = args.zero_inertia;
   o.history_omegas = args.history;
   o.force_of = force_of;
-  o.progress = slow_progress("dynamics");
+  o.progress = stoppable_progress("dynamics");
   dynamics_study_setup(d, o);  // throws (exit 2) past the toggle position
 
   // Open the output first: an unwritable path fails before any work (exit 2).

@@ -8,6 +8,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/csv_output.h"
+#include "cli/slow_progress.h"
 #include "flexure/io/general_mechanism_file.h"
 #include "flexure/io/platform/hdf5_error.h"
 #include "flexure/io/platform/output_path.h"
@@ -374,15 +375,22 @@ void analyze_general_mechanism(const GeneralAnalyzeRequest& request) {
   m.validate();
   const Input& in = m.input;
   std::vector<std::pair<std::string, GeneralPrbmResult>> results;
+  // Per recorded point of each model's path (a terminal's progress line; the Python module's
+  // callable and Ctrl-C).
   if (model == io::GeneralAnalysisModel::kPrbm || model == io::GeneralAnalysisModel::kBoth) {
-    results.emplace_back("prbm", solve_general_prbm(m));
+    GeneralPrbmOptions o;
+    o.progress = stoppable_progress(m.name + ": PRBM path points");
+    results.emplace_back("prbm", solve_general_prbm(m, o));
   }
   if (model == io::GeneralAnalysisModel::kExact || model == io::GeneralAnalysisModel::kBoth) {
-    results.emplace_back("exact", solve_general_exact(m));
+    GeneralExactOptions o;
+    o.progress = stoppable_progress(m.name + ": exact path points");
+    results.emplace_back("exact", solve_general_exact(m, o));
   }
   if (mixed) {
     GeneralExactOptions o;
     o.measure_flexure_errors = request.check_flexures;
+    o.progress = stoppable_progress(m.name + ": mixed model path points");
     results.emplace_back("mixed", solve_general_mixed(m, o));
   }
   for (const auto& [name, r] : results) {

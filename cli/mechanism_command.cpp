@@ -704,7 +704,7 @@ void register_mechanism_command(CLI::App& app) {
     o.points = args->points;
     o.exact = choice.exact;
     o.stable = args->stable;
-    o.progress = slow_progress(d.name + ": exact model, stroke points and stresses");
+    o.progress = stoppable_progress(d.name + ": exact model, stroke points and stresses");
     MechanismAnalysis a = analyze_mechanism_with_modulus(d, o);
     report_forces_of(a, force_of);
     if (!a.converged()) throw NoConvergence(a.message);

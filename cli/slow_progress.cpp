@@ -7,12 +7,16 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <utility>
 
 #include "flexure/io/platform/mpi_world.h"
 
 namespace flexure::cli {
 
 namespace {
+
+// The thread's ProgressSink (empty: none).
+thread_local std::function<void(std::size_t, std::size_t)> current_sink;
 
 // Seconds between progress lines under mpirun: FLEXURE_PROGRESS_SECONDS (a batch job may want
 // them rarer), else 10 (docs/scaling.md).
@@ -84,6 +88,21 @@ std::function<void(std::size_t, std::size_t)> slow_progress(std::string label) {
     if (done >= total) std::fputc('\n', stderr);
     std::fflush(stderr);
   };
+}
+
+ProgressSink::ProgressSink(std::function<void(std::size_t, std::size_t)> sink)
+    : previous_(std::exchange(current_sink, std::move(sink))) {}
+
+ProgressSink::~ProgressSink() { current_sink = std::move(previous_); }
+
+std::function<void(std::size_t, std::size_t)> stoppable_progress(std::string label) {
+  std::function<void(std::size_t, std::size_t)> terminal = slow_progress(std::move(label));
+  if (!current_sink) return terminal;
+  return
+      [terminal = std::move(terminal), sink = current_sink](std::size_t done, std::size_t total) {
+        if (terminal) terminal(done, total);
+        sink(done, total);
+      };
 }
 
 }  // namespace flexure::cli

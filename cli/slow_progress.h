@@ -12,4 +12,25 @@ namespace flexure::cli {
 
 std::function<void(std::size_t done, std::size_t total)> slow_progress(std::string label);
 
+// The progress a program that runs the commands in-process (run_command, command_runner.h: the
+// Python module) wants of every step of their long work, on its own thread, while the object
+// lives. The sink may throw to stop the command (the Python module does on Ctrl-C and when its
+// progress callable raises); only stoppable_progress's hooks call it.
+class ProgressSink {
+ public:
+  explicit ProgressSink(std::function<void(std::size_t done, std::size_t total)> sink);
+  ~ProgressSink();
+  ProgressSink(const ProgressSink&) = delete;
+  ProgressSink& operator=(const ProgressSink&) = delete;
+
+ private:
+  std::function<void(std::size_t, std::size_t)> previous_;
+};
+
+// slow_progress(label) and, at every step, the ProgressSink of the thread that asks for it (if
+// any). For work whose progress hook may throw to stop it: called on the command's own thread,
+// its state RAII (no worker thread left running, an output file atomic), such as the dynamics
+// study's rows, the exact CFM design's strokes, a mechanism's exact stroke.
+std::function<void(std::size_t done, std::size_t total)> stoppable_progress(std::string label);
+
 }  // namespace flexure::cli

@@ -341,7 +341,7 @@ void run_sweep_beam(const SweepBeamArgs& args) {
   options.shape_points = args.shapes;
   // By elapsed time, not by count: silent for the first second, then "sweep beam: k/n (t s)" on a
   // terminal (a shooting sweep of 2000 loads takes about 40 s).
-  if (auto progress = slow_progress("sweep beam")) {
+  if (auto progress = stoppable_progress("sweep beam")) {
     options.progress = [progress](long done, long total) {
       progress(static_cast<std::size_t>(done), static_cast<std::size_t>(total));
     };

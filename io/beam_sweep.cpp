@@ -81,7 +81,8 @@ BeamSweepTable run_beam_sweep(long total,
         const long begin = next.fetch_add(chunk);
         if (begin >= total || begin >= error_at.load()) break;
         const long end = std::min(total, begin + chunk);
-        for (i = begin; i < end && i < error_at.load(); ++i) {
+        for (i = begin; i < end && i < error_at.load() && !stop.load(std::memory_order_relaxed);
+             ++i) {
           BeamSweepPoint point;
           try {
             point = solve(i);
@@ -133,10 +134,19 @@ BeamSweepTable run_beam_sweep(long total,
   if (options.progress) {
     // The caller reports progress between its own chunks; helpers never touch the terminal.
     std::thread caller_worker(work);
-    while (done.load() < total && !stop.load() &&
-           error_at.load() == std::numeric_limits<long>::max()) {
-      options.progress(done.load(), total);
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    try {
+      while (done.load() < total && !stop.load() &&
+             error_at.load() == std::numeric_limits<long>::max()) {
+        options.progress(done.load(), total);
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      }
+    } catch (...) {
+      // A progress hook that throws stops the sweep (the Python module's Ctrl-C): the threads
+      // finish the load they are at and are joined before the exception goes on.
+      stop = true;
+      caller_worker.join();
+      for (std::thread& helper : helpers) helper.join();
+      throw;
     }
     caller_worker.join();
   } else {

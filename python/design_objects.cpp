@@ -3,7 +3,8 @@
 // with keyword construction, design_mechanisms with a progress callable (Ctrl-C stops it between
 // sub-classes: python/object_support.h, ProgressBridge), its report of feasible designs (best
 // first) and rejected ones (closest first, with the binding constraint), and the refinement of a
-// design against the exact model. The same library calls as `flexure design mechanism`.
+// design against the exact model (with a progress callable too, per exact stroke). The same library
+// calls as `flexure design mechanism`.
 #include <fmt/format.h>
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>
@@ -250,14 +251,21 @@ void bind_calls(py::module_& m) {
       "the callable) stops the call at the next one.");
   m.def(
       "refine_design_exact",
-      [](const MechanismSpec& spec, const DimensionedDesign& design) {
-        py::gil_scoped_release release;
-        return refine_design_exact(spec, design);
+      [](const MechanismSpec& spec, const DimensionedDesign& design, py::object progress) {
+        ProgressBridge bridge(std::move(progress));
+        MechanismSpec s = spec;
+        s.progress = [&bridge](std::size_t done, std::size_t total) { bridge(done, total); };
+        return bridge.run<DimensionedDesign>([&] { return refine_design_exact(s, design); });
       },
       py::arg("spec"),
       py::arg("design"),
-      "A feasible design refined against the exact model (`design mechanism --model exact`); "
-      "no progress callable yet: Ctrl-C is seen when it returns.");
+      py::kw_only(),
+      py::arg("progress") = py::none(),
+      "A feasible design refined against the exact model (`design mechanism --model exact`). "
+      "`progress(done, total)` is called after each exact stroke, total the most the search "
+      "can take (1 + runs * 301: one run from the sub-class and two per free variable); a "
+      "run that stops early moves done to its end. Ctrl-C (or an exception from the callable) "
+      "stops it at the next stroke.");
 }
 
 }  // namespace

@@ -33,6 +33,7 @@
 #include "cli/beam_methods.h"
 #include "cli/cli_common.h"
 #include "cli/command_runner.h"
+#include "cli/slow_progress.h"
 #include "flexure/beam/beam_keys.h"
 #include "flexure/beam/beam_problem.h"
 #include "flexure/beam/beam_request.h"
@@ -40,6 +41,7 @@
 #include "flexure/solver/common/names.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/version.h"
+#include "python/object_support.h"
 #include "python/objects.h"
 
 namespace py = pybind11;
@@ -164,16 +166,26 @@ py::object to_python(const Json& j) {
 
 // run(args) -> (kind, payload, warnings, exit_code): kind "ok" (payload: the JSON object),
 // "invalid" (InvalidInput: payload the message), "no_convergence" (payload (message, reached)),
-// "error" (anything else). The Python half raises the matching exception.
+// "error" (anything else). The Python half raises the matching exception. With a `bridge`, the
+// command's stoppable steps (cli/slow_progress.h) call it: a progress callable, and Ctrl-C, which
+// raise their exception here whatever the command did after it (python/object_support.h).
 template <class Command>
-py::tuple run_released(Command&& command) {
+py::tuple run_released(Command&& command, ProgressBridge* bridge = nullptr) {
   cli::CommandOutput out;
   std::string kind = "ok", message;
   Json reached = Json::object();
   {
     py::gil_scoped_release release;
     try {
-      out = command();
+      if (bridge == nullptr) {
+        out = command();
+      } else {
+        const cli::ProgressSink sink(
+            [bridge](std::size_t done, std::size_t total) { (*bridge)(done, total); });
+        out = command();
+      }
+    } catch (const ProgressBridge::Stopped&) {
+      kind = "stopped";  // raised below, with the lock
     } catch (const InvalidInput& e) {
       kind = "invalid";
       message = e.what();
@@ -189,14 +201,16 @@ py::tuple run_released(Command&& command) {
       message = e.what();
     }
   }
+  if (bridge != nullptr) bridge->raise_if_stopped();
   py::list warnings;
   for (const std::string& w : out.warnings) warnings.append(w);
   if (kind == "ok") return py::make_tuple(kind, to_python(out.json), warnings, out.exit_code);
   return py::make_tuple(kind, py::make_tuple(message, to_python(reached)), warnings, 0);
 }
 
-py::tuple run(const std::vector<std::string>& args) {
-  return run_released([&] { return cli::run_command(args); });
+py::tuple run(const std::vector<std::string>& args, py::object progress) {
+  ProgressBridge bridge(std::move(progress));
+  return run_released([&] { return cli::run_command(args); }, &bridge);
 }
 
 // beam(...): `flexure beam --json` for keyword values, by the library alone, the same result as
@@ -689,17 +703,28 @@ py::dict beam_many(const py::dict& keywords,
   const double* pn = n.data();
   const double* pmu = mu.data();
   const double* pv = value.data();
+  // Ctrl-C between the calling thread's chunks (at most every 50 ms, python/object_support.h):
+  // the other workers stop at their next chunk and are joined before KeyboardInterrupt is raised.
+  ProgressBridge interrupt{py::none()};
   {
     py::gil_scoped_release release;
-    std::atomic<std::size_t> next{0};
+    std::atomic<std::size_t> next{0}, solved{0};
+    std::atomic<bool> stopped{false};
     constexpr std::size_t kChunk = 256;
     auto work = [&](int worker) {
-      for (;;) {
+      while (!stopped.load(std::memory_order_relaxed)) {
         const std::size_t start = next.fetch_add(kChunk);
         if (start >= count) return;
         const std::size_t stop = std::min(count, start + kChunk);
         for (std::size_t i = start; i < stop; ++i) {
           solve_one(base, given_flag, pn[i], pmu[i], pv[i], c, i, worker);
+        }
+        solved += stop - start;
+        if (worker != 0) continue;
+        try {
+          interrupt(solved.load(), count);
+        } catch (const ProgressBridge::Stopped&) {
+          stopped = true;
         }
       }
     };
@@ -708,6 +733,7 @@ py::dict beam_many(const py::dict& keywords,
     work(0);
     for (std::thread& t : pool) t.join();
   }
+  interrupt.raise_if_stopped();
   py::dict out;
   out["method"] = c.method.to_numpy(shape);
   out["method_reason"] = c.method_reason.to_numpy(shape);
@@ -781,8 +807,14 @@ PYBIND11_MODULE(_core, m) {
   m.def("run",
         &flexure::python::run,
         py::arg("args"),
+        py::kw_only(),
+        py::arg("progress") = py::none(),
         "Runs one flexure command (the tool's arguments, without 'flexure') in this process: "
-        "(kind, payload, warnings, exit_code).");
+        "(kind, payload, warnings, exit_code). `progress(done, total)` is called at each step of "
+        "the commands whose long work can be stopped (dynamics, design cfm --model exact, design "
+        "mechanism, "
+        "mechanism analyze's exact stroke, cfm --table --exact, sweep beam); Ctrl-C (or an "
+        "exception from the callable) stops them at the next step.");
   m.def("toml_text",
         &flexure::python::toml_text,
         py::arg("json_text"),

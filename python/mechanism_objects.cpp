@@ -423,13 +423,20 @@ void bind_results(py::module_& m) {
 
   m.def(
       "solve_general_prbm",
-      [](const GeneralMechanism& g, const GeneralPrbmOptions& o) {
-        return solve_released<GeneralPrbmResult>([&] { return solve_general_prbm(g, o); });
+      [](const GeneralMechanism& g, const GeneralPrbmOptions& o, py::object progress) {
+        ProgressBridge bridge(std::move(progress));
+        GeneralPrbmOptions with = o;
+        with.progress = [&bridge](std::size_t done, std::size_t total) { bridge(done, total); };
+        return bridge.run<GeneralPrbmResult>([&] { return solve_general_prbm(g, with); });
       },
       py::arg("mechanism"),
       py::arg("options") = GeneralPrbmOptions{},
+      py::kw_only(),
+      py::arg("progress") = py::none(),
       "The PRBM of a general mechanism over its input range (continuation through limit points, "
-      "stability under both controls, unloaded equilibria).");
+      "stability under both controls, unloaded equilibria). `progress(done, total)` is called "
+      "after each recorded point (total: the input's count); Ctrl-C stops it at the next "
+      "point.");
   m.def(
       "solve_general_exact",
       [](const GeneralMechanism& g, const GeneralExactOptions& o, py::object progress) {
@@ -472,13 +479,23 @@ void bind_results(py::module_& m) {
       .def_readonly("without_stable", &StableSelection::without_stable)
       .def_readonly("snaps", &StableSelection::snaps)
       .def_readonly("search", &StableSelection::search);
-  m.def("select_stable_points",
-        &select_stable_points,
-        py::arg("mechanism"),
-        py::arg("path"),
-        "At each grid value of the controlled quantity the traced equilibrium stable under the "
-        "input's control, continuing the branch of the value before (`mechanism analyze "
-        "--stable`).");
+  m.def(
+      "select_stable_points",
+      [](const GeneralMechanism& g, const GeneralPrbmResult& path, py::object progress) {
+        ProgressBridge bridge(std::move(progress));
+        return bridge.run<StableSelection>([&] {
+          return select_stable_points(
+              g, path, [&bridge](std::size_t done, std::size_t total) { bridge(done, total); });
+        });
+      },
+      py::arg("mechanism"),
+      py::arg("path"),
+      py::kw_only(),
+      py::arg("progress") = py::none(),
+      "At each grid value of the controlled quantity the traced equilibrium stable under the "
+      "input's control, continuing the branch of the value before (`mechanism analyze "
+      "--stable`). `progress(done, total)` is called after each grid value (total: the "
+      "input's count); Ctrl-C stops it at the next one.");
   m.def("check_general_mechanism",
         &check_general_mechanism,
         py::arg("mechanism"),

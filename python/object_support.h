@@ -89,13 +89,17 @@ class ProgressBridge {
     } catch (...) {
       if (!stopped_) throw;
     }
-    if (stopped_) {
-      PyErr_Restore(type_.release().ptr(), value_.release().ptr(), trace_.release().ptr());
-      throw pybind11::error_already_set();
-    }
+    raise_if_stopped();
     // A result that is a SolveStatus carries warnings (a design report does not).
     if constexpr (std::is_base_of_v<SolveStatus, Result>) emit_warnings(*result);
     return std::move(*result);
+  }
+
+  // Raises the kept exception, if a step stopped the call (the interpreter lock held).
+  void raise_if_stopped() {
+    if (!stopped_) return;
+    PyErr_Restore(type_.release().ptr(), value_.release().ptr(), trace_.release().ptr());
+    throw pybind11::error_already_set();
   }
 
  private:

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <exception>
 #include <nlopt.hpp>
 #include <optional>
 #include <string>
@@ -31,6 +33,23 @@ struct ExactSearch {
   std::optional<CfmDesignEvaluation> last_prbm;
   int run = 0;  // the local run under way
   std::vector<SynthesisEvaluation> history;
+  // options.progress: strokes counted (the budget of the runs before this one plus this run's
+  // strokes, at most its limit), the budget, and an exception it threw inside NLopt (whose C++
+  // wrapper would turn it into a generic failure), rethrown when NLopt returns.
+  std::size_t done = 0, total = 0, run_base = 0;
+  int run_strokes = 0;  // evaluations (exact strokes) of the local run under way
+  std::exception_ptr stopped;
+
+  void report(std::size_t next_done) {
+    if (!options.progress) return;
+    done = std::max(done, std::min(next_done, total));
+    options.progress(done, total);
+  }
+  // Moves the count to the end of the local run just finished (its confirmation counted).
+  void end_run() {
+    run_base += static_cast<std::size_t>(options.max_evaluations) + 1;
+    report(run_base);
+  }
 
   ExactSearch(const CfmDesignProblem& p,
               CfmDesignProblem constraints,
@@ -44,6 +63,7 @@ struct ExactSearch {
     std::vector<double> x(y.size());
     std::transform(y.begin(), y.end(), x.begin(), [](double v) { return std::exp(v); });
     ++evaluations;
+    const int run_evaluations = ++run_strokes;
     try {
       last_prbm = evaluate_design(constraints_problem, model, x);
     } catch (const InvalidInput&) {
@@ -71,6 +91,7 @@ struct ExactSearch {
       e.feasible = worst <= 1e-9;
     }
     history.push_back(e);
+    report(run_base + static_cast<std::size_t>(std::min(run_evaluations, options.max_evaluations)));
   }
 };
 
@@ -79,15 +100,25 @@ struct Slot {
   std::size_t index;  // a PRBM constraint, or npos for Xi'_exact >= pcf_min
 };
 
+// evaluate() inside NLopt: an exception (from options.progress) is kept and NLopt told to stop.
+void evaluate_in_nlopt(ExactSearch& s, const std::vector<double>& y) {
+  try {
+    s.evaluate(y);
+  } catch (...) {
+    s.stopped = std::current_exception();
+    throw nlopt::forced_stop();
+  }
+}
+
 double objective(const std::vector<double>& y, std::vector<double>&, void* data) {
   auto* s = static_cast<ExactSearch*>(data);
-  s->evaluate(y);
+  evaluate_in_nlopt(*s, y);
   return -s->last_pcf;
 }
 
 double constraint(const std::vector<double>& y, std::vector<double>&, void* data) {
   auto* slot = static_cast<Slot*>(data);
-  slot->search->evaluate(y);
+  evaluate_in_nlopt(*slot->search, y);
   if (!slot->search->last_prbm) return kPenalty;
   if (slot->index == std::string::npos)
     return *slot->search->problem.pcf_min - slot->search->last_pcf;
@@ -143,6 +174,7 @@ LocalResult run_local(ExactSearch& s,
                       const ExactRefinementOptions& options) {
   const std::size_t n = y.size();
   s.last_y.clear();
+  s.run_strokes = 0;
   s.evaluate(y);
   const std::size_t count = s.last_prbm ? s.last_prbm->constraints.size() : 0;
   nlopt::opt opt(nlopt::LN_COBYLA, static_cast<unsigned>(n));
@@ -177,6 +209,7 @@ LocalResult run_local(ExactSearch& s,
   } catch (const std::runtime_error&) {
     best = y;  // NLopt's generic failure: keep the start
   }
+  if (s.stopped) std::rethrow_exception(s.stopped);  // options.progress threw: stop here
   out.y = best;
   return out;
 }
@@ -241,6 +274,7 @@ CfmExactRefinement refine_cfm_exact(const CfmDesignProblem& problem,
   CfmDesignProblem prbm_constraints = problem;
   prbm_constraints.pcf_min.reset();
   ExactSearch s(problem, prbm_constraints, options, cfm::CfmModel(problem.model));
+  s.total = 1 + ys.size() * (static_cast<std::size_t>(options.max_evaluations) + 1);
   const auto feasible_at = [&](const std::vector<double>& x, double pcf) {
     try {
       const CfmDesignEvaluation e = evaluate_design(prbm_constraints, s.model, x);
@@ -252,6 +286,8 @@ CfmExactRefinement refine_cfm_exact(const CfmDesignProblem& problem,
   out.start = starts.front();
   out.start_percent_constant_force_exact =
       exact_percent_constant_force(problem, out.start, options.confirm_points, options.work_budget);
+  s.run_base = 1;
+  s.report(1);
   out.x = out.start;
   out.percent_constant_force_exact = out.start_percent_constant_force_exact;
   bool best_feasible = feasible_at(out.x, out.percent_constant_force_exact);
@@ -262,6 +298,7 @@ CfmExactRefinement refine_cfm_exact(const CfmDesignProblem& problem,
     const std::vector<double> x = exp_of(local.y);
     const double pcf =
         exact_percent_constant_force(problem, x, options.confirm_points, options.work_budget);
+    s.end_run();
     const bool feasible = feasible_at(x, pcf);
     // Feasible beats infeasible; then the higher confirmed Xi'_exact.
     if ((feasible && !best_feasible) ||

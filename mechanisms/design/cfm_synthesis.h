@@ -13,6 +13,8 @@
 // Psi jump where it changes; within a region they are smooth). The answer is the best design of
 // the full sampling met at any evaluation: feasible first, then by objective.
 #include <array>
+#include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -245,6 +247,14 @@ struct ExactRefinementOptions {
   // given starts: the exact objective has several optima where the PRBM's has one. Negative: two
   // per free variable (the default of `flexure design cfm --model exact`).
   int sequence_starts = 0;
+  // Called after each exact stroke: (done, total), total = 1 + runs (max_evaluations + 1), the
+  // most the refinement can take -- the first start's confirmation, then per local run (the
+  // starts and the sequence's) at most max_evaluations strokes of the search and its
+  // confirmation at confirm_points. A run that stops before its limit moves done to its end, so
+  // done never decreases and ends at total. For a progress display; a caller stops a long
+  // refinement by throwing from it (the exception propagates out of NLopt unchanged; nothing is
+  // returned). Empty: no calls.
+  std::function<void(std::size_t done, std::size_t total)> progress;
   void validate() const;
 };
 

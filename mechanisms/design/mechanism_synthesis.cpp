@@ -559,6 +559,7 @@ DimensionedDesign refine_design_exact(const MechanismSpec& spec,
   const std::vector<double>& start = sub.printed;
   ExactRefinementOptions o;
   o.sequence_starts = static_cast<int>(2 * start.size());
+  o.progress = spec.progress;  // per exact stroke (ExactRefinementOptions::progress)
   const CfmExactRefinement r = refine_cfm_exact(problem, {start}, o);
   if (!r.converged()) {
     DimensionedDesign failed = prbm_design;

@@ -121,8 +121,11 @@ struct MechanismSpec {
   std::optional<double> fatigue_safety_factor;
   // Called after each sub-class the specification admits is sized (with its exact evaluation),
   // (done, total) over those sub-classes, and with (total, total) at each length of the search
-  // that follows when none is feasible; done never decreases. For a progress display; a caller
-  // stops a long synthesis by throwing from it (the Python module does on Ctrl-C). Empty: none.
+  // that follows when none is feasible; done never decreases. refine_design_exact calls it after
+  // each exact stroke instead, with ExactRefinementOptions::progress's (done, total): total = 1 +
+  // (1 + 2 free variables) * 301 for its one start, its sequence starts and the default
+  // max_evaluations. For a progress display; a caller stops a long synthesis by throwing from it
+  // (the Python module does on Ctrl-C). Empty: none.
   std::function<void(std::size_t done, std::size_t total)> progress;
 
   // Throws InvalidInput naming the first field outside its range (non-finite, <= 0, a range with

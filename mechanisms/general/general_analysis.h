@@ -139,6 +139,11 @@ struct GeneralPrbmOptions {
   int max_steps = 20000;   // arclength steps before giving up
   double max_step = 0.05;  // arclength step, scaled units (lengths / size, rad)
   double critical_tolerance = kCriticalMarginTolerance;
+  // Called after each recorded point of the path: (done, count), count the input's grid values,
+  // done never decreasing and at most count (GeneralExactOptions::progress's convention). For a
+  // progress display; a caller stops a long solve by throwing from it (the exception propagates;
+  // the Python module does on Ctrl-C). Empty: no calls.
+  std::function<void(std::size_t done, std::size_t total)> progress;
   // Throws InvalidInput naming the field.
   void validate() const;
 };

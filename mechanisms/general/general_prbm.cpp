@@ -344,6 +344,7 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
         scaled_param(in.start + (in.stop - in.start) * i / (in.count - 1));
   }
 
+  std::size_t reported = 0;  // options.progress: points reported, never decreasing
   auto record = [&](const VectorXd& zz) {
     const VectorXd qq = P.q(zz);
     const VectorXd mu = P.mu(zz);
@@ -368,6 +369,11 @@ GeneralPrbmResult solve_general_prbm(const GeneralMechanism& mechanism,
     }
     fill_point_results(mechanism, A, qq, mu, /*assembled_flexures=*/true, pt);
     result.points.push_back(std::move(pt));
+    if (options.progress) {
+      // A value crossed again after a limit point records a point more than the grid has.
+      reported = std::min(std::max(reported, result.points.size()), grid.size());
+      options.progress(reported, grid.size());
+    }
   };
 
   ArclengthPath::Follow how;

@@ -19,8 +19,10 @@ std::string controlled_text(const Input& in, double v) {
 
 }  // namespace
 
-StableSelection select_stable_points(const GeneralMechanism& mechanism,
-                                     const GeneralPrbmResult& path) {
+StableSelection select_stable_points(
+    const GeneralMechanism& mechanism,
+    const GeneralPrbmResult& path,
+    const std::function<void(std::size_t done, std::size_t total)>& progress) {
   if (path.points.empty()) {
     throw InvalidInput("--stable: the path recorded no points to choose from");
   }
@@ -45,6 +47,9 @@ StableSelection select_stable_points(const GeneralMechanism& mechanism,
     unstable_on_path += verdict(p).kind == StabilityKind::kStable ? 0 : 1;
   }
   const GeneralPrbmPoint* previous = nullptr;
+  const auto grid_value_done = [&](int k) {
+    if (progress) progress(static_cast<std::size_t>(k + 1), static_cast<std::size_t>(in.count));
+  };
   for (int k = 0; k < in.count; ++k) {
     const double v = in.start + (in.stop - in.start) * k / (in.count - 1);
     const double tolerance = 1e-9 * std::max(span, std::fabs(v));
@@ -63,6 +68,7 @@ StableSelection select_stable_points(const GeneralMechanism& mechanism,
     if (chosen == nullptr) {
       missing.push_back(v);
       if (first != nullptr) out.result.points.push_back(*first);
+      grid_value_done(k);
       continue;
     }
     if (previous != nullptr) {
@@ -80,6 +86,7 @@ StableSelection select_stable_points(const GeneralMechanism& mechanism,
     }
     out.result.points.push_back(*chosen);
     previous = chosen;
+    grid_value_done(k);
   }
   out.without_stable = static_cast<int>(missing.size());
   out.snaps = static_cast<int>(snaps.size());

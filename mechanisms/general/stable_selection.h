@@ -17,6 +17,8 @@
 // A grid value where the path recorded no stable point is reported: the model does not switch
 // branches at bifurcations (an unstable branch whose stable neighbour branches off is not traced),
 // and no stable equilibrium was found there.
+#include <cstddef>
+#include <functional>
 #include <string>
 
 #include "flexure/mechanisms/general/general_analysis.h"
@@ -37,8 +39,13 @@ struct StableSelection {
 };
 
 // The selection for `path`, traced for `mechanism` (its input's grid and control). Throws
-// InvalidInput for a path with no points.
-StableSelection select_stable_points(const GeneralMechanism& mechanism,
-                                     const GeneralPrbmResult& path);
+// InvalidInput for a path with no points. `progress(done, count)`, if set, is called after each
+// grid value (count: the input's); it scans the path's points once per value, so a path of many
+// points on a fine grid takes a while. A caller stops it by throwing from `progress` (the
+// exception propagates; nothing is returned).
+StableSelection select_stable_points(
+    const GeneralMechanism& mechanism,
+    const GeneralPrbmResult& path,
+    const std::function<void(std::size_t done, std::size_t total)>& progress = {});
 
 }  // namespace flexure::mechanism::general

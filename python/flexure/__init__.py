@@ -160,7 +160,7 @@ def sweep(*, out, alpha2=None, theta0=None, b_over_l=None, n=None, mu=None, meth
           Fy=None, M=None, material=None, plate=None, nu=None, qx=None, qy=None,
           q_follower=None, density=None, g=None, extensible=False, shear_coefficient=None,
           curvature=None, width_tip=None, thickness_tip=None,
-          chain=None, shapes=None):  # noqa: E741 - the tool's --I
+          chain=None, shapes=None, progress=None):  # noqa: E741 - the tool's --I
     """A beam sweep written to HDF5: `flexure sweep beam` (docs/hdf5-schema.md).
 
     alpha2, theta0, b_over_l, n, mu: a value or 'START:STOP:COUNT' (one or two axes); method;
@@ -174,6 +174,9 @@ def sweep(*, out, alpha2=None, theta0=None, b_over_l=None, n=None, mu=None, meth
     chain TOML file whose tip load Fx, Fy, M (ranges) is swept. shapes: K shape points at every
     sweep point, stored in /shapes of out with internal forces (and fibre stresses of a physical
     rectangle) and an XDMF sidecar (the summary's 'xdmf'); points x K at most 5e6.
+    progress(done, total): called about every 0.1 s with the points solved (total: the grid's),
+    and with (total, total) at the end; Ctrl-C or an exception it raises stops the sweep and no
+    `out` file is written (docs/python.md "Progress and Ctrl-C").
 
     Example:
       >>> flexure.sweep(alpha2="0:20:1001", n="0:2:3", out="sweep.h5")     # doctest: +SKIP
@@ -193,12 +196,14 @@ def sweep(*, out, alpha2=None, theta0=None, b_over_l=None, n=None, mu=None, meth
                    curvature=curvature, width_tip=width_tip,
                    thickness_tip=thickness_tip, chain=chain, shapes=shapes)
     _one_value_each("sweep", options)
-    return _run(["sweep", "beam"], options, switches={"compress", "extensible"})
+    return _run(["sweep", "beam"], options, switches={"compress", "extensible"},
+                progress=progress)
 
 
 def cfm(*, config=None, R=None, K1=None, K2=None, d=None, subclass=None, sampling=None,
         points=None, curve=False, list=False, table=False, exact=False, exact_points=None,
-        exact_max_iterations=None, exact_rows=None):  # noqa: A002 - the tool's flag --list
+        exact_max_iterations=None, exact_rows=None,
+        progress=None):  # noqa: A002 - the tool's flag --list
     """Nondimensional constant-force mechanism analysis (Weight's thesis): `flexure cfm`.
 
     config ('1A', '2B', ...), R, K1, K2, d or a thesis subclass ('lpp-b'); sampling, points;
@@ -206,7 +211,9 @@ def cfm(*, config=None, R=None, K1=None, K2=None, d=None, subclass=None, samplin
     the thesis tables; exact=True also evaluates the exact model (exact_points,
     exact_max_iterations, exact_rows). R = r3/r2, K1 = k2/k1, K2 = k3/k1 (nondimensional), d the
     stroke in % of r2 + r3. Returns the dict `flexure cfm --json` prints (Phi, Psi, Xi, percent
-    constant force, ...).
+    constant force, ...). progress(done, total): called after each exact stroke point of
+    table=True, exact=True (total: rows times exact_points); Ctrl-C or an exception it raises
+    stops the table (docs/python.md "Progress and Ctrl-C").
 
     Example:
       >>> flexure.cfm(subclass="lpp-b", exact=True)                        # doctest: +SKIP
@@ -215,12 +222,13 @@ def cfm(*, config=None, R=None, K1=None, K2=None, d=None, subclass=None, samplin
                               sampling=sampling, points=points, curve=curve, list=list,
                               table=table, exact=exact, exact_points=exact_points,
                               exact_max_iterations=exact_max_iterations, exact_rows=exact_rows),
-                switches={"curve", "list", "table", "exact"})
+                switches={"curve", "list", "table", "exact"}, progress=progress)
 
 
 def dynamics(*, mechanism=None, omega=None, out=None, stroke_percent=None, spring_rule=None,
              force_of=None, preload_percent=None, samples=None, friction=None, axial_alpha=None,
-             zero_slider_mass=False, zero_inertia=False, history=None, list=False):  # noqa: A002
+             zero_slider_mass=False, zero_inertia=False, history=None, list=False,
+             progress=None):  # noqa: A002
     """Inverse dynamics of a modified constant-force slider mechanism: `flexure dynamics`.
 
     mechanism: a design of the paper's Table 5 ('2B-lplm') or a TOML file with a [dynamics]
@@ -228,6 +236,9 @@ def dynamics(*, mechanism=None, omega=None, out=None, stroke_percent=None, sprin
     friction (C1, C2, C3 in N m), axial_alpha, zero_slider_mass, zero_inertia, history (rad/s),
     spring_rule, force_of ('whole' | 'half'); out: also write HDF5; list=True lists the designs.
     Returns the dict `flexure dynamics --json` prints (forces in N, times in s, omega in rad/s).
+    progress(done, total): called after each frequency (total: omega's COUNT); Ctrl-C or an
+    exception it raises stops the study, and no `out` file is written (docs/python.md
+    "Progress and Ctrl-C").
 
     Example:
       >>> flexure.dynamics(mechanism="2B-lplm", omega="5:50:10")           # doctest: +SKIP
@@ -238,7 +249,7 @@ def dynamics(*, mechanism=None, omega=None, out=None, stroke_percent=None, sprin
                                    samples=samples, friction=friction, axial_alpha=axial_alpha,
                                    zero_slider_mass=zero_slider_mass, zero_inertia=zero_inertia,
                                    history=history, list=list),
-                switches={"zero_slider_mass", "zero_inertia", "list"})
+                switches={"zero_slider_mass", "zero_inertia", "list"}, progress=progress)
 
 
 def bench(*, out, quick=False, problems=None, methods=None, resume=False, stop_after=None):

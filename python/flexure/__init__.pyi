@@ -1,6 +1,6 @@
 # Type stubs of the flexure module (docs/python.md): names and types for editors and checkers.
 import os
-from typing import Any, Sequence, Union
+from typing import Any, Callable, Sequence, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -170,6 +170,7 @@ def sweep(
     thickness_tip: Quantity | None = ...,
     chain: Path | None = ...,
     shapes: int | None = ...,
+    progress: Callable[[int, int], object] | None = ...,
 ) -> Result: ...
 def cfm(
     *,
@@ -188,6 +189,7 @@ def cfm(
     exact_points: int | None = ...,
     exact_max_iterations: int | None = ...,
     exact_rows: str | None = ...,
+    progress: Callable[[int, int], object] | None = ...,
 ) -> Result: ...
 def dynamics(
     *,
@@ -205,6 +207,7 @@ def dynamics(
     zero_inertia: bool = ...,
     history: Sequence[float] | None = ...,
     list: bool = ...,
+    progress: Callable[[int, int], object] | None = ...,
 ) -> Result: ...
 def bench(
     *,
@@ -289,12 +292,12 @@ InputCoordinate: Any
 JointKind: Any
 PrbmKind: Any
 
-def solve_general_prbm(mechanism: Any, options: Any = ...) -> Any: ...
+def solve_general_prbm(mechanism: Any, options: Any = ..., *, progress: Any = ...) -> Any: ...
 def solve_general_exact(mechanism: Any, options: Any = ..., *, progress: Any = ...) -> Any: ...
 def solve_general_mixed(mechanism: Any, options: Any = ..., *, progress: Any = ...) -> Any: ...
 def check_general_mechanism(mechanism: Any) -> int: ...
 StableSelection: Any
-def select_stable_points(mechanism: Any, path: Any) -> Any: ...
+def select_stable_points(mechanism: Any, path: Any, *, progress: Any = ...) -> Any: ...
 
 # The constant-force slider mechanisms (python/catalogue_objects.cpp): MechanismDesign.builtin(name),
 # .from_toml(path), .from_toml_text(text); analyze_mechanism(design, options, progress=callable).
@@ -307,7 +310,8 @@ def analyze_mechanism(design: Any, options: Any = ..., *, progress: Any = ...) -
 
 # Their dimensional design (python/design_objects.cpp; docs/design.md): MechanismSpec(force=,
 # stroke=, E=, length=, ...) in SI units; design_mechanisms(spec, progress=callable) ->
-# MechanismDesignReport (.designs best first, .rejected with .binding); refine_design_exact.
+# MechanismDesignReport (.designs best first, .rejected with .binding); refine_design_exact(spec,
+# design, progress=callable).
 DesignRanking: Any
 DimensionedDesign: Any
 FlexureOrientation: Any
@@ -317,7 +321,7 @@ SizeObjective: Any
 StressRule: Any
 
 def design_mechanisms(spec: Any, *, progress: Any = ...) -> Any: ...
-def refine_design_exact(spec: Any, design: Any) -> Any: ...
+def refine_design_exact(spec: Any, design: Any, *, progress: Any = ...) -> Any: ...
 
 def solve_beam(problem: Any, method: Any = ...) -> Any: ...
 def solve_physical_chain(chain: Any, method: Any = ..., tolerance: float = ...,

@@ -82,13 +82,16 @@ def emit(texts, stacklevel):
         warnings.warn(text, FlexureWarning, stacklevel=stacklevel + 1)
 
 
-def run(command, options, positional=(), switches=(), json=True):
+def run(command, options, positional=(), switches=(), json=True, progress=None):
     """Runs `flexure COMMAND [positional] --flags [--json]` in this process and returns its JSON
-    object as a dict (arrays of numbers as numpy arrays). Raises InvalidInput / NoConvergence."""
+    object as a dict (arrays of numbers as numpy arrays). Raises InvalidInput / NoConvergence.
+    progress(done, total), if given, is called at each step of the commands whose long work can
+    be stopped (docs/python.md "Progress and Ctrl-C"); an exception it raises (or Ctrl-C) stops
+    the command and propagates."""
     args = list(command) + [os.fspath(p) for p in positional] + to_flags(options, switches)
     if json:
         args.append("--json")
-    kind, payload, texts, exit_code = _core.run(args)
+    kind, payload, texts, exit_code = _core.run(args, progress=progress)
     emit(texts, stacklevel=3)
     if kind != "ok":
         raise_for(kind, payload)

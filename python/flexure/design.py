@@ -5,7 +5,7 @@ from . import _command
 def cfm(*, config=None, d=None, objective=None, subclass=None, pcf_min=None, orientation=None,
         rule_limits=None, K1=None, K2=None, sampling=None, points=None, starts=None,
         scan_points=None, coarse_stride=None, seed=None, model=None, exact_starts=None,
-        out=None, all_subclasses=False):
+        out=None, all_subclasses=False, progress=None):
     """Synthesis of R, K1, K2 for an objective under the thesis's constraints: `flexure design cfm`.
 
     config     'spp', 'lpp', 'psp', 'plp', 'ssp', 'slp', 'sps', 'lps' or 'sss' (config, d and
@@ -33,6 +33,10 @@ def cfm(*, config=None, d=None, objective=None, subclass=None, pcf_min=None, ori
     subclass (the thesis sub-class within 1 %, or None), constraints, evaluations, converged,
     seconds (the synthesis's wall time).
     Raises NoConvergence when no feasible design is found.
+    progress   with model='exact': progress(done, total) after each exact stroke of the search,
+               total the most it can take (1 + runs * 301 with the default evaluation limit;
+               a run that stops early moves done to its end); Ctrl-C or an exception it raises
+               stops it (docs/python.md "Progress and Ctrl-C")
 
     Example:
       >>> flexure.design.cfm(config="lpp", d=40, objective="min-xi")["R"]   # doctest: +SKIP
@@ -46,7 +50,7 @@ def cfm(*, config=None, d=None, objective=None, subclass=None, pcf_min=None, ori
                                                 coarse_stride=coarse_stride, seed=seed,
                                                 model=model, exact_starts=exact_starts, out=out,
                                                 all_subclasses=all_subclasses),
-                        switches=("all_subclasses",))
+                        switches=("all_subclasses",), progress=progress)
 
 
 def _range(keyword, value):
@@ -65,7 +69,7 @@ def mechanism(*, force, stroke, safety_factor, length_range, E=None, width_range
               max_width_to_thickness=None, max_width_to_length=None, force_tolerance=None,
               allow_infeasible=False, material=None, fatigue=False, surface_finish=None,
               reliability=None, Kf=None, fatigue_factor=None, ultimate_strength=None,
-              endurance_limit=None, plate=None, nu=None):
+              endurance_limit=None, plate=None, nu=None, progress=None):
     """Dimensional design from a specification (thesis ch. 8): `flexure design mechanism`.
 
     force, stroke, E, yield_strength   numbers in SI (N, m, Pa) or strings with units ('25lbf',
@@ -98,6 +102,10 @@ def mechanism(*, force, stroke, safety_factor, length_range, E=None, width_range
                     endurance_limit; docs/fatigue.md)
     plate           'off' or 'on': size the strips with E or E/(1 - nu^2) (nu: Poisson's ratio,
                     default the material's; docs/plate-modulus.md)
+    progress        progress(done, total) after each sub-class (as flexure.design_mechanisms),
+                    then with model='exact' after each exact stroke of the refinement (as
+                    flexure.refine_design_exact, a second count from 1); Ctrl-C or an exception
+                    it raises stops it (docs/python.md "Progress and Ctrl-C")
     Returns the dict `flexure design mechanism --json` prints: designs (best first; each with
     subclass, r2, r3, segment_lengths, width, thicknesses, required_yield_strength, force_prbm,
     force_exact, percent_constant_force_prbm/_exact, safety_factor_prbm/_exact, ...), rejected
@@ -126,4 +134,5 @@ def mechanism(*, force, stroke, safety_factor, length_range, E=None, width_range
              surface_finish=surface_finish, reliability=reliability, Kf=Kf,
              fatigue_factor=fatigue_factor, ultimate_strength=ultimate_strength,
              endurance_limit=endurance_limit, plate=plate, nu=nu),
-        switches=("in_plane", "out_of_plane", "no_exact", "allow_infeasible", "fatigue"))
+        switches=("in_plane", "out_of_plane", "no_exact", "allow_infeasible", "fatigue"),
+        progress=progress)

@@ -1,4 +1,4 @@
-from typing import Any
+from typing import Any, Callable
 
 def cfm(
     *,
@@ -21,6 +21,7 @@ def cfm(
     exact_starts: int | None = ...,
     out: str | None = ...,
     all_subclasses: bool = ...,
+    progress: Callable[[int, int], object] | None = ...,
 ) -> dict[str, Any]: ...
 
 def mechanism(
@@ -59,4 +60,5 @@ def mechanism(
     endurance_limit: float | str | None = ...,
     plate: str | None = ...,
     nu: float | None = ...,
+    progress: Callable[[int, int], object] | None = ...,
 ) -> dict[str, Any]: ...

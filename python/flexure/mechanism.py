@@ -70,7 +70,8 @@ def analyze(mechanism, *, points=None, method=None, tol=None, out=None, prbm_onl
             spring_rule=None, force_of=None, material=None, surface_finish=None,
             reliability=None, Kf=None, fatigue_factor=None, ultimate_strength=None,
             endurance_limit=None, plate=None, nu=None, stable=False, model=None,
-            flexure_models=None, flexure_tol=None, check_flexures=False, input=None):  # noqa: A002
+            flexure_models=None, flexure_tol=None, check_flexures=False, input=None,
+            progress=None):  # noqa: A002
     """Force curve of a constant-force mechanism over its stroke: `flexure mechanism analyze`.
 
     mechanism   a built-in name ('1A-lpp', '2B-lplm', a thesis sub-class 'lpp-b', an inversion
@@ -103,6 +104,10 @@ def analyze(mechanism, *, points=None, method=None, tol=None, out=None, prbm_onl
     check_flexures  True (`--check-flexures`): measure each flexure's model against the exact
                 elastica under its loads (measured_error_per_length)
     input       the input range 'START:STOP:COUNT' with units ('-5deg:33deg:77'; `--input`)
+    progress    progress(done, total) after each point of a constant-force mechanism's exact
+                stroke (as analyze_mechanism's), or of a general mechanism's path (each model
+                its own count, as solve_general_prbm's and solve_general_exact's); Ctrl-C or an
+                exception it raises stops it (docs/python.md "Progress and Ctrl-C")
 
     Example:
       >>> r = flexure.mechanism.analyze("1A-lpp", points=20, method="exact")   # doctest: +SKIP
@@ -124,7 +129,8 @@ def analyze(mechanism, *, points=None, method=None, tol=None, out=None, prbm_onl
                                  flexure_tol=flexure_tol, check_flexures=check_flexures,
                                  input=input),
                             positional=[argument],
-                            switches={"prbm_only", "stable", "check_flexures"})
+                            switches={"prbm_only", "stable", "check_flexures"},
+                            progress=progress)
     finally:
         if temporary:
             os.unlink(temporary)

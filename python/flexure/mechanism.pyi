@@ -1,5 +1,5 @@
 import os
-from typing import Any, Union
+from typing import Any, Callable, Union
 
 Design = Union[str, os.PathLike[str], dict[str, Any]]
 
@@ -29,6 +29,7 @@ def analyze(
     flexure_tol: float | None = ...,
     check_flexures: bool = ...,
     input: str | None = ...,
+    progress: Callable[[int, int], object] | None = ...,
 ) -> dict[str, Any]: ...
 def tolerance(
     mechanism: Design,

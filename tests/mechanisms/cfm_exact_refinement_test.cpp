@@ -4,8 +4,10 @@
 // reproducible.
 #include <gtest/gtest.h>
 
+#include <cstddef>
 #include <iostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "flexure/mechanisms/cfm/cfm_model.h"
@@ -60,6 +62,53 @@ TEST(CfmExactRefinement, SameProblemSameAnswer) {
   EXPECT_EQ(a.evaluations, b.evaluations);
   EXPECT_EQ(a.percent_constant_force_exact, b.percent_constant_force_exact);
   EXPECT_GE(a.percent_constant_force_exact, a.start_percent_constant_force_exact);
+}
+
+// ExactRefinementOptions::progress: one call for the first start's confirmation, one per
+// evaluation of the search and one at the end of each local run (its confirmation), against the
+// budget 1 + runs (max_evaluations + 1); the answer is the one without it.
+TEST(CfmExactRefinement, ProgressCountsTheBudgetAndLeavesTheAnswer) {
+  std::vector<double> start;
+  const CfmDesignProblem p = problem_of(cfm::find_thesis_subclass("lps-b95I"), start);
+  ExactRefinementOptions o;
+  o.sequence_starts = 2;  // three local runs
+  o.max_evaluations = 40;
+  const CfmExactRefinement plain = refine_cfm_exact(p, {start}, o);
+  std::vector<std::pair<std::size_t, std::size_t>> calls;
+  o.progress = [&](std::size_t done, std::size_t total) { calls.emplace_back(done, total); };
+  const CfmExactRefinement with = refine_cfm_exact(p, {start}, o);
+  const std::size_t total = 1 + 3 * (40 + 1);
+  ASSERT_FALSE(calls.empty());
+  EXPECT_EQ(calls.size(), 1 + static_cast<std::size_t>(with.evaluations) + 3);
+  EXPECT_EQ(calls.front(), std::make_pair(std::size_t{1}, total));
+  EXPECT_EQ(calls.back(), std::make_pair(total, total));
+  for (std::size_t i = 1; i < calls.size(); ++i) {
+    EXPECT_EQ(calls[i].second, total);
+    EXPECT_GE(calls[i].first, calls[i - 1].first) << "call " << i;
+  }
+  EXPECT_EQ(with.x, plain.x);
+  EXPECT_EQ(with.evaluations, plain.evaluations);
+  EXPECT_EQ(with.percent_constant_force_exact, plain.percent_constant_force_exact);
+  EXPECT_EQ(with.termination, plain.termination);
+}
+
+// A progress hook that throws inside NLopt's search (the fifth evaluation of the first run)
+// stops the refinement with its own exception, not NLopt's generic failure, and is not called
+// again.
+TEST(CfmExactRefinement, AThrowingProgressStopsTheSearch) {
+  struct Stop {};
+  std::vector<double> start;
+  const CfmDesignProblem p = problem_of(cfm::find_thesis_subclass("lps-b95I"), start);
+  ExactRefinementOptions o;
+  o.sequence_starts = 2;
+  o.max_evaluations = 40;
+  std::vector<std::size_t> seen;
+  o.progress = [&](std::size_t done, std::size_t) {
+    seen.push_back(done);
+    if (done == 5) throw Stop{};
+  };
+  EXPECT_THROW(refine_cfm_exact(p, {start}, o), Stop);
+  EXPECT_EQ(seen, (std::vector<std::size_t>{1, 2, 3, 4, 5}));
 }
 
 TEST(CfmExactRefinement, RefusesAStartOutsideItsBounds) {

@@ -7,8 +7,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstddef>
 #include <numbers>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/general/general_analysis.h"
@@ -112,6 +115,62 @@ TEST(GeneralStable, NoStableEquilibriumWhereOnlyTheUnstableBranchIsTraced) {
   EXPECT_FALSE(s.stable);
   EXPECT_EQ(s.without_stable, 64) << s.search;
   EXPECT_NE(s.search.find("does not switch branches"), std::string::npos) << s.search;
+}
+
+// GeneralPrbmOptions::progress and select_stable_points' progress on the switch under torque
+// control: the path records 19 points at the 13 torques (three crossings of those below the limit
+// point), one call each, done never decreasing and capped at 13; the selection calls once per
+// torque. Neither changes the answer, and a hook that throws stops either call with its exception.
+TEST(GeneralStable, ProgressOfThePrbmPathAndTheSelection) {
+  struct Stop {};
+  const GeneralMechanism up = switch_under_torque(0.0, 1.2);
+  const GeneralPrbmResult plain = solve_general_prbm(up);
+  ASSERT_TRUE(plain.converged()) << plain.message;
+  ASSERT_EQ(plain.points.size(), 19u);
+  std::vector<std::pair<std::size_t, std::size_t>> calls;
+  GeneralPrbmOptions o;
+  o.progress = [&](std::size_t done, std::size_t total) { calls.emplace_back(done, total); };
+  const GeneralPrbmResult path = solve_general_prbm(up, o);
+  ASSERT_EQ(path.points.size(), plain.points.size());
+  for (std::size_t i = 0; i < path.points.size(); ++i) {
+    EXPECT_EQ(path.points[i].input, plain.points[i].input) << i;
+    EXPECT_EQ(path.points[i].input_load, plain.points[i].input_load) << i;
+  }
+  ASSERT_EQ(calls.size(), 19u);
+  EXPECT_EQ(calls.front(), std::make_pair(std::size_t{1}, std::size_t{13}));
+  EXPECT_EQ(calls.back(), std::make_pair(std::size_t{13}, std::size_t{13}));
+  for (std::size_t i = 1; i < calls.size(); ++i) {
+    EXPECT_EQ(calls[i].second, 13u);
+    EXPECT_GE(calls[i].first, calls[i - 1].first) << i;
+  }
+
+  std::vector<std::size_t> grid;
+  const StableSelection with =
+      select_stable_points(up, path, [&](std::size_t done, std::size_t total) {
+        EXPECT_EQ(total, 13u);
+        grid.push_back(done);
+      });
+  const StableSelection without = select_stable_points(up, path);
+  EXPECT_EQ(grid, (std::vector<std::size_t>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13}));
+  EXPECT_EQ(with.search, without.search);
+  ASSERT_EQ(with.result.points.size(), without.result.points.size());
+  for (std::size_t i = 0; i < with.result.points.size(); ++i) {
+    EXPECT_EQ(with.result.points[i].input, without.result.points[i].input) << i;
+  }
+
+  std::vector<std::size_t> seen;
+  o.progress = [&](std::size_t done, std::size_t) {
+    seen.push_back(done);
+    if (done == 2) throw Stop{};
+  };
+  EXPECT_THROW(solve_general_prbm(up, o), Stop);
+  EXPECT_EQ(seen, (std::vector<std::size_t>{1, 2}));
+  EXPECT_THROW(select_stable_points(up,
+                                    path,
+                                    [](std::size_t done, std::size_t) {
+                                      if (done == 3) throw Stop{};
+                                    }),
+               Stop);
 }
 
 }  // namespace
