@@ -179,6 +179,10 @@ struct PhysicalBeamSolution {
   BeamSolution solution;
   PhysicalResults physical;
   std::vector<double> segment_max_moment;  // chains with plate = "auto": largest |m| per segment
+
+  // The solve's status is the BeamSolution's (one SolveStatus, not a copy that could differ).
+  const SolveStatus& status() const noexcept { return solution; }
+  bool converged() const noexcept { return solution.converged(); }
 };
 PhysicalBeamSolution solve_physical_beam(BeamMethod method,
                                          const PhysicalCantilever& beam,

@@ -368,26 +368,13 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
   for (auto& d : r.rejected) as_given(d.design);
   Json rejected = Json::array();
   for (const auto& d : r.rejected) rejected.push_back(design_json(d, factor, spec.force));
-  const auto mm_hint = [](double l) {
-    return fmt::format("{:.4g} mm", design::length_hint(l) * 1e3);
-  };
   if (r.designs.empty()) {
-    std::string message = "design mechanism: no sub-class meets the specification";
-    if (!r.rejected.empty()) {
-      message += fmt::format("; the closest, {}, fails on {}",
-                             r.rejected.front().subclass,
-                             r.rejected.front().binding);
-      if (r.length_needed) {
-        message += fmt::format(
-            ". The shortest mechanism that meets it: l_tot = {} ({}, by the full sizing; give "
-            "--length-range up to it)",
-            mm_hint(*r.length_needed),
-            r.length_needed_subclass);
-      }
-    } else {
-      message +=
-          " (no sub-class passed the filters --config, --pcf-min, --in-plane/--out-of-plane "
-          "for this stroke)";
+    // The library's message (design_status.h) and the flags that act on it.
+    std::string message = "design mechanism: " + r.message;
+    if (r.rejected.empty()) {
+      message += " (see --config, --pcf-min, --in-plane/--out-of-plane)";
+    } else if (r.length_needed) {
+      message += "; give --length-range up to it";
     }
     throw NoConvergenceReport(
         message,
@@ -468,21 +455,8 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
                 : fmt::format("; nothing written to {} (--allow-infeasible writes it)", args.out)),
         reached);
   }
-  // The thesis's rule lists designs that its own stresses would not pass: say which.
-  std::vector<std::string> short_of;
-  for (const design::SafetyShortfall& s :
-       design::designs_short_of_safety_factor(r, spec.safety_factor)) {
-    short_of.push_back(fmt::format("{} {:.3g}", s.subclass, s.safety_factor));
-  }
-  if (!short_of.empty()) {
-    warn(fmt::format(
-        "{} of {} designs miss safety factor {:g} by the PRBM or exact stresses (eq. 8.5, "
-        "--stress-rule thesis, leaves out the axial stress and the clamp moment): {}",
-        short_of.size(),
-        r.designs.size(),
-        spec.safety_factor,
-        fmt::join(short_of, ", ")));
-  }
+  // Designs short of the safety factor by their own stresses (design_status.h).
+  warn(r.warnings);
   if (!args.csv.empty()) {
     // One row per feasible design, the JSON `designs` keys as columns (docs/cli.md).
     static const std::map<std::string, std::string> kUnits = {

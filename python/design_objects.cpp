@@ -166,12 +166,13 @@ void bind_spec(py::module_& m) {
 
 void bind_report(py::module_& m) {
   using D = DimensionedDesign;
-  py::class_<D>(m,
-                "DimensionedDesign",
-                "One sub-class dimensioned for the specification: feasible (with its PRBM and "
-                "exact values, and `design` ready for analyze_mechanism) or not (`binding` says "
-                "which constraint, `shortfall` by how much). Lengths m, stresses Pa, forces N "
-                "(one half).")
+  py::class_<D, SolveStatus>(
+      m,
+      "DimensionedDesign",
+      "One sub-class dimensioned for the specification: feasible (with its PRBM and exact values, "
+      "and `design` ready for analyze_mechanism) or not (`binding` says which constraint, "
+      "`shortfall` by how much). A SolveStatus: `termination` converged or infeasible. Lengths m, "
+      "stresses Pa, forces N (one half).")
       .def_readonly("subclass", &D::subclass)
       .def_property_readonly("config", [](const D& d) { return std::string(d.config); })
       .def_readonly("feasible", &D::feasible)
@@ -216,11 +217,13 @@ void bind_report(py::module_& m) {
                           : fmt::format(
                                 "DimensionedDesign('{}', not feasible: {})", d.subclass, d.binding);
       });
-  py::class_<MechanismDesignReport>(
+  py::class_<MechanismDesignReport, SolveStatus>(
       m,
       "MechanismDesignReport",
       "The designs of a specification: `designs` feasible, best first; `rejected` with why, "
-      "closest first; with nothing feasible, `length_needed` (m) and its sub-class.")
+      "closest first; with nothing feasible, `length_needed` (m) and its sub-class. A "
+      "SolveStatus: `termination` converged with a feasible design, else infeasible (`message` "
+      "says why); `warnings` (raised as FlexureWarning) name designs short of the safety factor.")
       .def_readonly("designs", &MechanismDesignReport::designs)
       .def_readonly("rejected", &MechanismDesignReport::rejected)
       .def_readonly("length_needed", &MechanismDesignReport::length_needed)

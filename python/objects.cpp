@@ -60,7 +60,8 @@ void bind_status(py::module_& m) {
       .value("converged", Termination::kConverged)
       .value("no_convergence", Termination::kNoConvergence)
       .value("limit_point", Termination::kLimitPoint)
-      .value("invalid_input", Termination::kInvalidInput);
+      .value("invalid_input", Termination::kInvalidInput)
+      .value("infeasible", Termination::kInfeasible);
   py::enum_<WarningKind>(m, "WarningKind")
       .value("units", WarningKind::kUnits)
       .value("outside_validity", WarningKind::kOutsideValidity)
@@ -704,7 +705,12 @@ void bind_physical(py::module_& m) {
       .def_readonly("yield_strength", &PhysicalResults::yield_strength);
   py::class_<PhysicalBeamSolution>(m, "PhysicalBeamSolution")
       .def_readonly("solution", &PhysicalBeamSolution::solution)
-      .def_readonly("physical", &PhysicalBeamSolution::physical);
+      .def_readonly("physical", &PhysicalBeamSolution::physical)
+      .def_property_readonly(
+          "status",
+          [](const PhysicalBeamSolution& p) -> const SolveStatus& { return p.status(); },
+          py::return_value_policy::reference_internal)
+      .def("converged", &PhysicalBeamSolution::converged);
   m.def(
       "solve_physical_chain",
       [](const PhysicalChain& chain, BeamMethod method, double tolerance, int shape_points) {

@@ -14,6 +14,7 @@
 #include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm_comparison.h"
 #include "flexure/mechanisms/design/cfm_synthesis.h"
+#include "flexure/mechanisms/design/design_status.h"
 #include "flexure/mechanisms/design/feasibility.h"
 #include "flexure/mechanisms/design/length_search.h"
 #include "flexure/mechanisms/design/section_family.h"
@@ -417,7 +418,10 @@ DesignScreens design_screens(const MechanismSpec& spec) {
   return s;
 }
 
-MechanismDesignReport design_mechanisms(const MechanismSpec& spec) {
+namespace {
+
+// design_mechanisms without the report's status.
+MechanismDesignReport size_designs(const MechanismSpec& spec) {
   spec.validate();
   if (spec.fatigue && !spec.fatigue_safety_factor) {
     // Size for fatigue: a flexure cycling 0 -> sigma_max has sigma_m = sigma_a = sigma_max/2, so
@@ -441,7 +445,7 @@ MechanismDesignReport design_mechanisms(const MechanismSpec& spec) {
       raised = std::max(spec.safety_factor, *spec.yield_strength / allowed);
       sized.safety_factor = *raised;
     }
-    MechanismDesignReport r = design_mechanisms(sized);
+    MechanismDesignReport r = size_designs(sized);
     r.sizing_safety_factor = raised;
     return r;
   }
@@ -531,6 +535,14 @@ MechanismDesignReport design_mechanisms(const MechanismSpec& spec) {
   return report;
 }
 
+}  // namespace
+
+MechanismDesignReport design_mechanisms(const MechanismSpec& spec) {
+  MechanismDesignReport report = size_designs(spec);
+  stamp_report_status(spec, report);
+  return report;
+}
+
 double length_hint(double l_tot) { return round_up_4(l_tot); }
 
 std::string specified_force_text(const MechanismSpec& spec) {
@@ -543,8 +555,11 @@ std::string specified_force_text(const MechanismSpec& spec) {
       spec.force);
 }
 
-DimensionedDesign refine_design_exact(const MechanismSpec& spec,
-                                      const DimensionedDesign& prbm_design) {
+namespace {
+
+// refine_design_exact without the design's status.
+DimensionedDesign refine_against_exact(const MechanismSpec& spec,
+                                       const DimensionedDesign& prbm_design) {
   spec.validate();
   if (!prbm_design.feasible) {
     throw InvalidInput(
@@ -717,6 +732,15 @@ DimensionedDesign refine_design_exact(const MechanismSpec& spec,
   return out;
 }
 
+}  // namespace
+
+DimensionedDesign refine_design_exact(const MechanismSpec& spec,
+                                      const DimensionedDesign& prbm_design) {
+  DimensionedDesign out = refine_against_exact(spec, prbm_design);
+  stamp_design_status(out);
+  return out;
+}
+
 std::vector<SafetyShortfall> designs_short_of_safety_factor(const MechanismDesignReport& report,
                                                             double safety_factor) {
   std::vector<SafetyShortfall> out;
@@ -744,6 +768,7 @@ DimensionedDesign design_for_output(const MechanismDesignReport& report,
                               prbm_design ? "; this is the PRBM design" : "");
     out.design.note = "NOT FEASIBLE: " + out.binding + ". " + out.design.note;
   }
+  stamp_design_status(out);
   return out;
 }
 

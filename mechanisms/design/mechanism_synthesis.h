@@ -30,6 +30,7 @@
 #include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/mechanisms/mechanism.h"
+#include "flexure/solver/common/status.h"
 
 namespace flexure::design {
 
@@ -136,7 +137,8 @@ struct MechanismSpec {
 // Which way l_tot would have to move to cure an infeasible design (at the length tried).
 enum class LengthCure { kNone, kLonger, kShorter };
 
-struct DimensionedDesign {
+// A SolveStatus: kConverged when feasible; kInfeasible, with `binding` as the message, when not.
+struct DimensionedDesign : SolveStatus {
   std::string subclass;  // "lpp-b"
   const char* config = "";
   bool feasible = false;
@@ -200,7 +202,11 @@ struct DesignScreens {
   std::string lpp_subclass;
 };
 
-struct MechanismDesignReport {
+// A SolveStatus: kConverged with at least one feasible design; kInfeasible otherwise, the message
+// naming the closest design's binding constraint and the shortest length that would do. Its
+// warnings: feasible designs short of the safety factor by their PRBM or exact stresses (possible
+// under StressRule::kThesis, see SafetyShortfall below).
+struct MechanismDesignReport : SolveStatus {
   std::vector<DimensionedDesign> designs;   // feasible, best first
   std::vector<DimensionedDesign> rejected;  // closest first
   DesignScreens screens;

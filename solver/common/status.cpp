@@ -8,8 +8,8 @@ namespace flexure {
 
 std::string_view termination_name(Termination termination) {
   // In the order of the enum.
-  static constexpr std::array<std::string_view, 4> kNames = {
-      "converged", "no_convergence", "limit_point", "invalid_input"};
+  static constexpr std::array<std::string_view, 5> kNames = {
+      "converged", "no_convergence", "limit_point", "invalid_input", "infeasible"};
   return kNames.at(static_cast<std::size_t>(termination));
 }
 

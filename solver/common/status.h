@@ -77,10 +77,11 @@ enum class Termination {
   kNoConvergence,  // the iteration or continuation stopped without meeting it
   kLimitPoint,     // a limit point (fold) of the load path was reached: past it the structure snaps
   kInvalidInput,   // the input is outside the method's domain; nothing was solved
+  kInfeasible,     // solved, but no answer meets the specification (a design constraint binds)
 };
 
-// Stable lower-case names: "converged", "no_convergence", "limit_point", "invalid_input" (the
-// values of the JSON key "termination").
+// Stable lower-case names: "converged", "no_convergence", "limit_point", "invalid_input",
+// "infeasible" (the values of the JSON key "termination").
 std::string_view termination_name(Termination termination);
 
 // "; the path passed N limit point(s): under load control the beam would snap at the first, at

@@ -53,6 +53,9 @@ TEST(PhysicalBeam, EqualsTheNondimensionalSolveScaledByHand) {
     b.yield_strength = 1e9;
     const PhysicalBeamSolution got = solve_physical_beam(BeamMethod::kElliptic, b, {});
     ASSERT_TRUE(got.solution.converged()) << got.solution.message;
+    // One status, the solution's (not a copy).
+    ASSERT_EQ(&got.status(), static_cast<const SolveStatus*>(&got.solution));
+    ASSERT_TRUE(got.converged());
 
     BeamProblem by_hand;
     by_hand.value = alpha2;

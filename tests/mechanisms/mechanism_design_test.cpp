@@ -173,6 +173,20 @@ TEST(MechanismSynthesis, ExampleOneWithAWeakMaterialNamesTheStrengthNeeded) {
       << r.rejected.front().binding;
   ASSERT_TRUE(r.rejected.front().shortfall.has_value());
   EXPECT_GT(*r.rejected.front().shortfall, 1.0);
+  // The report is a SolveStatus (design_status.h): infeasible, its message naming the closest
+  // design and the constraint that binds it; each rejected design is infeasible by its binding.
+  EXPECT_EQ(r.termination, Termination::kInfeasible);
+  EXPECT_FALSE(r.converged());
+  EXPECT_EQ(
+      r.message.rfind("no sub-class meets the specification; the closest, " +
+                          r.rejected.front().subclass + ", fails on " + r.rejected.front().binding,
+                      0),
+      0u)
+      << r.message;
+  for (const DimensionedDesign& d : r.rejected) {
+    EXPECT_EQ(d.termination, Termination::kInfeasible) << d.subclass;
+    EXPECT_EQ(d.message, d.binding) << d.subclass;
+  }
 }
 
 // Example 2 (§8.5.2): phosphor bronze, 3 mN over 7.5 mm, l_tot = 150 mm, h 1.5-2.0 mm, SF 1.1,
@@ -407,6 +421,23 @@ TEST(MechanismSynthesis, ThesisRuleDesignsShortOfTheSafetyFactorAreNamed) {
     }
   }
   EXPECT_TRUE(designs_short_of_safety_factor(r, 0.5).empty());
+  // The report says so itself, in its one warning channel: converged, and one safety-factor
+  // warning counting exactly the designs named above (the tool prints it, Python raises it).
+  EXPECT_TRUE(r.converged()) << r.message;
+  ASSERT_DOUBLE_EQ(spec.safety_factor, 1.2);
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_EQ(r.warnings[0].kind, WarningKind::kSafetyFactor);
+  const std::string count = std::to_string(short_of.size()) + " of " +
+                            std::to_string(r.designs.size()) + " designs miss safety factor 1.2";
+  EXPECT_EQ(r.warnings[0].text.rfind(count, 0), 0u) << r.warnings[0].text;
+  EXPECT_NE(r.warnings[0].text.find("lpp-b 1.0"), std::string::npos) << r.warnings[0].text;
+  for (const DimensionedDesign& d : r.designs) {
+    EXPECT_TRUE(d.converged()) << d.subclass;
+    EXPECT_TRUE(d.message.empty()) << d.subclass;
+  }
+  // At a safety factor every design meets by its own stresses, no warning.
+  spec.safety_factor = 0.5;
+  EXPECT_TRUE(design_mechanisms(spec).warnings.empty());
 }
 
 // What `design mechanism --out` writes: the best design, or the refinement; a refinement that
@@ -425,6 +456,9 @@ TEST(MechanismSynthesis, DesignForOutputMarksAFailedRefinement) {
             "the refinement against the exact model failed: the Xi' floor; this is the PRBM "
             "design");
   EXPECT_EQ(written.design.note.rfind("NOT FEASIBLE: " + written.binding, 0), 0u);
+  EXPECT_EQ(written.termination, Termination::kInfeasible);
+  EXPECT_EQ(written.message, written.binding);
+  EXPECT_TRUE(design_for_output(r, std::nullopt).converged());
   EXPECT_THROW(design_for_output(MechanismDesignReport{}, std::nullopt), std::logic_error);
 }
 
