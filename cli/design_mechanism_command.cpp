@@ -15,6 +15,7 @@
 #include "cli/mechanism_geometry_output.h"
 #include "cli/modulus_output.h"
 #include "cli/slow_progress.h"
+#include "cli/warning_output.h"
 #include "flexure/io/mechanism_geometry_toml.h"
 #include "flexure/io/platform/output_path.h"
 #include "flexure/io/toml_files.h"

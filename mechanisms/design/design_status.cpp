@@ -1,6 +1,7 @@
 #include "flexure/mechanisms/design/design_status.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <string>
 #include <vector>
