@@ -126,8 +126,8 @@ design::MechanismSpec make_spec(const DesignMechanismArgs& a, mechanism::ForceOf
   mechanism::MechanismDesign m;
   if (!a.material.empty()) {
     const MaterialGrade& g = find_material(a.material);
-    m.material = g.id;
-    m.E = g.E;
+    m.material_id = g.id;
+    m.material.E = g.E;
     m.ultimate_strength = g.ultimate_strength;
     m.endurance_limit = g.fatigue_strength;
     m.endurance_cycles = g.fatigue_cycles;
@@ -137,20 +137,22 @@ design::MechanismSpec make_spec(const DesignMechanismArgs& a, mechanism::ForceOf
   if (!a.E.empty()) {
     const io::Quantity E = io::parse_quantity(a.E, Dimension::kStress, "--E");
     warn(io::modulus_warning(E, "--E"));
-    if (m.E > 0.0 && m.E != E.si) {
-      warn(fmt::format(
-          "--E {:.6g} Pa replaces the {:.6g} Pa of material '{}'", E.si, m.E, m.material));
+    if (m.material.E > 0.0 && m.material.E != E.si) {
+      warn(fmt::format("--E {:.6g} Pa replaces the {:.6g} Pa of material '{}'",
+                       E.si,
+                       m.material.E,
+                       m.material_id));
     }
-    m.E = E.si;
+    m.material.E = E.si;
   }
   // The plate modulus (docs/plate-modulus.md): the strips are sized with E/(1 - nu^2).
-  s.E = plate_choice(a, m.material).effective_E;
+  s.E = plate_choice(a, m.material_id).effective_E;
   if (*a.yield_option) {
     s.yield_strength =
         io::parse_quantity(a.yield_strength, Dimension::kStress, "--yield-strength").si;
   }
   a.fatigue_flags.apply_strengths(m);
-  s.material = m.material;
+  s.material = m.material_id;
   s.ultimate_strength = m.ultimate_strength;
   s.endurance_limit = m.endurance_limit;
   s.endurance_cycles = m.endurance_cycles;
@@ -253,14 +255,14 @@ Json design_json(const design::DimensionedDesign& d, double force_factor, double
   j["required_yield_strength"] = d.required_yield_strength;
   j["required_yield_strength_prbm"] = d.required_yield_strength_prbm;
   j["required_yield_strength_exact"] = optional_json(d.required_yield_strength_exact);
-  j["yield_strength"] = d.design.yield_strength;
+  j["yield_strength"] = d.design.material.yield_strength.value_or(0.0);
   j["force_prbm"] = d.force_prbm * force_factor;
   j["force_exact"] = d.force_exact ? Json(*d.force_exact * force_factor) : Json(nullptr);
   j["percent_constant_force_prbm"] = d.percent_constant_force_prbm;
   j["percent_constant_force_exact"] = optional_json(d.percent_constant_force_exact);
   j["safety_factor_prbm"] = d.safety_factor_prbm;
   j["safety_factor_exact"] = optional_json(d.safety_factor_exact);
-  j["safety_factor_eq_8_5"] = d.design.yield_strength / d.primary_stress;
+  j["safety_factor_eq_8_5"] = d.design.material.yield_strength.value_or(0.0) / d.primary_stress;
   // Relative to the specified force (both of one half here).
   j["force_error_exact"] =
       d.force_exact ? Json(*d.force_exact / specified_force - 1.0) : Json(nullptr);
@@ -351,9 +353,9 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
   // same strips (plate = "on" and [material].nu; mechanism analyze applies it).
   const auto as_given = [&](mechanism::MechanismDesign& d) {
     if (!modulus.plate) return;
-    d.E = modulus.E;
+    d.material.E = modulus.E;
     d.plate = modulus.rule;
-    d.nu = modulus.nu;
+    d.set_nu(modulus.nu);
   };
   design::MechanismDesignReport r = design::design_mechanisms(spec);
   // --model exact: the best design refined against the exact model (R, K1, K2 and sizes), solved
@@ -537,7 +539,7 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
         size,
         d.safety_factor_prbm,
         d.safety_factor_exact ? fmt::format("{:.3g}", *d.safety_factor_exact) : "n/a",
-        d.design.yield_strength * 1e-6,
+        d.design.material.yield_strength.value_or(0.0) * 1e-6,
         d.required_yield_strength * 1e-6,
         d.force_prbm * factor,
         d.force_exact ? fmt::format("{:.4g} N", *d.force_exact * factor) : "n/a",
@@ -569,7 +571,7 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
         best.percent_constant_force_exact.value_or(0.0),
         x.safety_factor_exact.value_or(0.0),
         x.safety_factor_prbm,
-        x.design.yield_strength * 1e-6,
+        x.design.material.yield_strength.value_or(0.0) * 1e-6,
         x.exact_evaluations);
   }
   fmt::print("{}", design_geometry_text(drawn, length_unit_of(args.stroke)));

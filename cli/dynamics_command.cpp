@@ -100,11 +100,12 @@ DynamicsDesign resolve_design(const DynamicsArgs& args) {
                                               : dynamics::MassesNeeded::kAll;
     DynamicsDesign d =
         dynamics::dynamics_design(file.design, file.dynamics, needed, rule, material);
-    if (material != nullptr && file.design.E > 0.0 && file.design.E != material->E) {
+    const double E = file.design.material.E;
+    if (material != nullptr && E > 0.0 && E != material->E) {
       warn(fmt::format("--material {}: E {:.6g} Pa replaces the file's {:.6g} Pa in the springs",
                        material->id,
                        material->E,
-                       file.design.E));
+                       E));
     }
     return d;
   }

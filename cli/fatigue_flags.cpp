@@ -71,7 +71,7 @@ void FatigueFlags::apply_strengths(mechanism::MechanismDesign& design) const {
           flag,
           v,
           *field,
-          design.material.empty() ? "the design" : "material '" + design.material + "'"));
+          design.material_id.empty() ? "the design" : "material '" + design.material_id + "'"));
     }
     field = v;
     if (is_endurance) design.endurance_cycles.reset();
@@ -102,15 +102,15 @@ FatigueMaterial FatigueFlags::fatigue_material_of(const std::string& material,
 
 void apply_material_flag(mechanism::MechanismDesign& design, const std::string& name) {
   const MaterialGrade& g = find_material(name);
-  const double E = design.E, S_y = design.yield_strength;
+  const double E = design.material.E, S_y = design.material.yield_strength.value_or(0.0);
   mechanism::apply_material(design, g);
-  if (E > 0.0 && (E != design.E || S_y != design.yield_strength)) {
+  if (E > 0.0 && (E != design.material.E || S_y != design.material.yield_strength.value_or(0.0))) {
     warn(
         fmt::format("--material {}: E {:.6g} Pa and S_y {:.6g} Pa replace the design's {:.6g} "
                     "Pa and {:.6g} Pa",
                     g.id,
-                    design.E,
-                    design.yield_strength,
+                    design.material.E,
+                    design.material.yield_strength.value_or(0.0),
                     E,
                     S_y));
   }

@@ -61,15 +61,21 @@ void apply_plate_flags(MechanismDesign& d, const std::string& plate, const std::
   if (!nu.empty()) {
     const io::Quantity q = io::parse_quantity(nu, io::Dimension::kAngle, "--nu");
     if (q.has_unit()) throw InvalidInput("--nu is a plain number without a unit");
-    d.nu = q.si;
+    d.set_nu(q.si);
   }
   if (!plate.empty()) d.plate = plate_rule_from_string(plate, "--plate");
-  if (d.plate != PlateRule::kOff && !d.nu) {
+  // With plate on or auto the modulus choice checks nu; off, finalise() would refuse it as the
+  // design's Material::nu: named here by the flag the user wrote.
+  if (!nu.empty() && d.plate == PlateRule::kOff &&
+      !(std::isfinite(d.material.nu) && d.material.nu > -1.0 && d.material.nu < 0.5)) {
+    throw InvalidInput(fmt::format("--nu must be finite and in (-1, 0.5) (got {})", d.material.nu));
+  }
+  if (d.plate != PlateRule::kOff && !d.nu_given) {
     throw InvalidInput(
         fmt::format("--plate {} needs Poisson's ratio: give --nu (the design '{}' has none{})",
                     to_string(d.plate),
                     d.name,
-                    d.material.empty() ? "" : ", nor has its material row"));
+                    d.material_id.empty() ? "" : ", nor has its material row"));
   }
 }
 
@@ -122,8 +128,8 @@ Json design_json(const MechanismDesign& d) {
       {"class", d.configuration().class_name},
       {"r2", m.r2},
       {"r3", m.r3},
-      {"E", d.modulus.empty() ? d.E : d.modulus.front().E},
-      {"yield_strength", d.yield_strength},
+      {"E", d.modulus.empty() ? d.material.E : d.modulus.front().E},
+      {"yield_strength", d.material.yield_strength.value_or(0.0)},
       {"stroke", d.stroke},
       {"toggle_stroke", d.toggle_stroke()},
       {"joints", joints},
@@ -908,7 +914,7 @@ void register_mechanism_command(CLI::App& app) {
              {"seed", o.seed},
              {"method", o.exact ? "exact" : "prbm"},
              {"force_of", force_of_label(o.force_of)},
-             {"material", d.material.empty() ? Json(nullptr) : Json(d.material)},
+             {"material", d.material_id.empty() ? Json(nullptr) : Json(d.material_id)},
              {"spread",
               Json{{"thickness", o.spread.thickness},
                    {"width", o.spread.width},

@@ -56,8 +56,11 @@ void write_design_group(Hdf5Group& root, const MechanismDesign& d) {
   if (has_fixed_fixed(d)) g.set_attribute("spring_rule", spring_rule_name(d.spring_rule));
   g.write_scalar("r2", m.r2, "m", "PRBM link at the fixed body (pivot 1 to pivot 2)");
   g.write_scalar("r3", m.r3, "m", "PRBM link at the sliding body (pivot 2 to pivot 3)");
-  g.write_scalar("E", d.E, "Pa", "Young's modulus of the material");
-  g.write_scalar("yield_strength", d.yield_strength, "Pa", "yield strength of the material");
+  g.write_scalar("E", d.material.E, "Pa", "Young's modulus of the material");
+  g.write_scalar("yield_strength",
+                 d.material.yield_strength.value_or(0.0),
+                 "Pa",
+                 "yield strength of the material");
   g.write_scalar("stroke", d.stroke, "m", "slider travel Delta x at the end of the stroke");
   g.write_scalar(
       "toggle_stroke", d.toggle_stroke(), "m", "largest stroke: the toggle position of the PRBM");

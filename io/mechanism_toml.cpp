@@ -234,8 +234,8 @@ MechanismFile parse_mechanism_file(const std::string& text, const std::string& s
         if (m.get("yield_strength") == nullptr) {
           toml_fail(source, line_of(*m.get("name")), fmt::format("material.name: {}", e.what()));
         }
-        d.material = grade->id;  // S_y comes from the table below
-        d.E = grade->E;
+        d.material_id = grade->id;  // S_y comes from the table below
+        d.material.E = grade->E;
         d.ultimate_strength = grade->ultimate_strength;
         d.endurance_limit = grade->fatigue_strength;
         d.endurance_cycles = grade->fatigue_cycles;
@@ -262,9 +262,10 @@ MechanismFile parse_mechanism_file(const std::string& text, const std::string& s
       }
       return v;
     };
-    d.E = value("E", io::Dimension::kStress, grade ? d.E : 0.0);
-    d.yield_strength =
-        value("yield_strength", io::Dimension::kStress, grade ? d.yield_strength : 0.0);
+    d.material.E = value("E", io::Dimension::kStress, grade ? d.material.E : 0.0);
+    d.material.yield_strength = value("yield_strength",
+                                      io::Dimension::kStress,
+                                      grade ? d.material.yield_strength.value_or(0.0) : 0.0);
     if (m.get("ultimate_strength") != nullptr || d.ultimate_strength) {
       d.ultimate_strength =
           value("ultimate_strength", io::Dimension::kStress, d.ultimate_strength.value_or(0.0));
@@ -279,7 +280,7 @@ MechanismFile parse_mechanism_file(const std::string& text, const std::string& s
       if (!v || !(*v > -1.0 && *v < 0.5)) {
         toml_fail(source, line_of(*nu), "material.nu must be a number in (-1, 0.5)");
       }
-      d.nu = *v;
+      d.set_nu(*v);
     }
     if (m.get("endurance_cycles") != nullptr) {
       d.endurance_cycles =
@@ -296,7 +297,7 @@ MechanismFile parse_mechanism_file(const std::string& text, const std::string& s
     } catch (const InvalidInput& e) {
       toml_fail(source, line_of(*plate), e.what());
     }
-    if (d.plate != PlateRule::kOff && !d.nu) {
+    if (d.plate != PlateRule::kOff && !d.nu_given) {
       toml_fail(source,
                 line_of(*plate),
                 fmt::format("plate = \"{}\" needs Poisson's ratio: give [material].nu (or a "
@@ -451,7 +452,7 @@ MechanismFile parse_mechanism_file(const std::string& text, const std::string& s
     if (!text.empty()) file.warnings.push_back(fmt::format("{}: {}", source, text));
   };
   for (const std::string& n : material_notes) warn(n);
-  warn(io::modulus_warning({d.E, ""}, "material.E"));
+  warn(io::modulus_warning({d.material.E, ""}, "material.E"));
   for (std::size_t k = 0; k < d.joints.size(); ++k) {
     const JointDesign& j = d.joints[k];
     if (j.thickness > 0.0 && j.length > 0.0) {
@@ -535,14 +536,16 @@ std::string mechanism_toml(const MechanismDesign& d, const std::string& comment)
     out += fmt::format("spring_rule = {}\n", toml_string(spring_rule_name(d.spring_rule)));
   }
   out += "\n[material]\n";
-  if (!d.material.empty()) {
+  if (!d.material_id.empty()) {
     out += fmt::format("name = {}  # data/materials.csv (`flexure materials`)\n",
-                       toml_string(d.material));
+                       toml_string(d.material_id));
   }
-  if (d.plate != PlateRule::kOff && d.nu) out += fmt::format("nu = {}\n", toml_number(*d.nu));
+  if (d.plate != PlateRule::kOff && d.nu_given) {
+    out += fmt::format("nu = {}\n", toml_number(d.material.nu));
+  }
   out += fmt::format("E = {}               # Pa\nyield_strength = {}  # Pa\n",
-                     toml_number(d.E),
-                     toml_number(d.yield_strength));
+                     toml_number(d.material.E),
+                     toml_number(d.material.yield_strength.value_or(0.0)));
   if (d.ultimate_strength) {
     out += fmt::format("ultimate_strength = {}  # Pa\n", toml_number(*d.ultimate_strength));
   }

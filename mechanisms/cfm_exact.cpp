@@ -34,8 +34,8 @@ mechanism::MechanismDesign cfm_equivalent_design(
                   stroke_percent);
   d.r2 = 1.0 / (R + 1.0);
   d.r3 = R / (R + 1.0);
-  d.E = 1.0;
-  d.yield_strength = 1.0;  // stresses are not reported
+  d.material.E = 1.0;
+  d.material.yield_strength = 1.0;  // stresses are not reported
   d.stroke = stroke_percent / 100.0;
   // The model clamps at the toggle position exactly; keep rounding from tripping finalise().
   d.stroke = std::min(d.stroke, d.toggle_stroke());

@@ -49,8 +49,8 @@ MechanismDesign table_design(const std::string& name,
   d.note = note;
   d.r2 = r2;
   d.r3 = row->R * r2;
-  d.E = kE;
-  d.yield_strength = kYield;
+  d.material.E = kE;
+  d.material.yield_strength = kYield;
   d.stroke = row_stroke(*row, d.r2 + d.r3);
   for (auto& j : d.joints) j.length = kFlexureLength;  // kept by the sizing (only pins reset)
   size_flexures_for_spring_ratios(
@@ -76,8 +76,8 @@ MechanismDesign example_2_lpp() {
       gamma);
   d.r2 = gamma * kLongLength;  // finalise() sets the segment length r2/gamma = L
   d.r3 = row->R * d.r2;
-  d.E = kE;
-  d.yield_strength = kYield;
+  d.material.E = kE;
+  d.material.yield_strength = kYield;
   d.stroke = row_stroke(*row, d.r2 + d.r3);
   d.joints[0] = JointDesign{PivotType::kLong, 0.0, kLongThickness, kWidth};
   d.finalise();

@@ -86,7 +86,7 @@ void check_loads(const MechanismDesign& d) {
     const JointDesign& j = d.joints[p - 1];
     if (j.type == PivotType::kPin) continue;
     const Section section = j.section();  // a rectangle: its area is known
-    const double EI = j.flexural_rigidity(d.material_properties());
+    const double EI = j.flexural_rigidity(d.material);
     // Each value was finite and > 0, but their product can leave double precision (a 1e-200 m
     // strip has h^3 = 0): the springs would be 0 or inf and the PRBM force 0/0.
     const double k = d.spring_constant(p);
@@ -99,7 +99,7 @@ void check_loads(const MechanismDesign& d) {
           pivot_table(p),
           EI,
           k,
-          d.E,
+          d.material.E,
           j.width,
           j.thickness));
     }
@@ -119,7 +119,7 @@ void check_loads(const MechanismDesign& d) {
           EI,
           L::kMaxLoadParameter));
     }
-    const double strain = P / (d.E * *section.area());
+    const double strain = P / (d.material.E * *section.area());
     if (strain > L::kMaxAxialStrain) {
       throw InvalidInput(fmt::format(
           "{} segment {}: axial strain |P|/(EA) = {:.4g} (largest PRBM pin force {:.4g} N, "
@@ -198,8 +198,8 @@ MechanismDesign subclass_design(const cfm::CfmSubclass& row, const std::string& 
   const double r_tot = 0.1;
   d.r2 = r_tot / (row.R + 1.0);
   d.r3 = r_tot - d.r2;
-  d.E = 1.4e9;
-  d.yield_strength = 34.5e6;
+  d.material.E = 1.4e9;
+  d.material.yield_strength = 34.5e6;
   const double stroke_percent =
       std::min(row.stroke_percent, 0.999 * cfm::toggle_stroke_percent(row.R));
   d.stroke = stroke_percent / 100.0 * r_tot;
@@ -239,8 +239,8 @@ MechanismDesign thesis_example_lpp() {
   // l_tot = r2/gamma + r3 (thesis Table 5.1 lambda for lpp).
   d.r2 = l_tot / (1.0 / long_segment_gamma() + row.R);
   d.r3 = row.R * d.r2;
-  d.E = 30.0e6 * kPsi;
-  d.yield_strength = 167.0e3 * kPsi;
+  d.material.E = 30.0e6 * kPsi;
+  d.material.yield_strength = 167.0e3 * kPsi;
   d.stroke = 4.0 * kInch;
   d.joints[0] = JointDesign{PivotType::kLong, 0.0, 0.04865 * kInch, 5.0 * kInch};
   d.finalise();
@@ -281,17 +281,9 @@ double MechanismDesign::toggle_stroke() const {
   return cfm::toggle_stroke_percent(R()) / 100.0 * (r2 + r3);
 }
 
-Material MechanismDesign::material_properties() const {
-  Material m;
-  m.E = E;
-  if (nu) m.nu = *nu;
-  if (yield_strength > 0.0) m.yield_strength = yield_strength;
-  return m;
-}
-
 double MechanismDesign::spring_constant(int pivot) const {
   const JointDesign& j = joints[pivot - 1];
-  const double EI = j.flexural_rigidity(material_properties());
+  const double EI = j.flexural_rigidity(material);
   switch (j.type) {
     case PivotType::kPin:
       return 0.0;
@@ -312,8 +304,11 @@ void MechanismDesign::finalise() {
   const auto& cfg = cfm::find_cfm_configuration(config);  // throws for an unknown name
   require_positive(r2, "r2 (PRBM crank length, m)");
   require_positive(r3, "r3 (PRBM coupler length, m)");
-  require_positive(E, "E (Young's modulus, Pa)");
-  require_positive(yield_strength, "yield_strength (Pa)");
+  // The messages name the design's fields as a design file writes them; material.validate() then
+  // checks what they do not (nu, a density), naming Material's field.
+  require_positive(material.E, "E (Young's modulus, Pa)");
+  require_positive(material.yield_strength.value_or(0.0), "yield_strength (Pa)");
+  material.validate();
   require_positive(stroke, "stroke (slider travel, m)");
   for (int p = 1; p <= 3; ++p) {
     JointDesign& j = joints[p - 1];

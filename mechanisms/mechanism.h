@@ -97,19 +97,22 @@ struct MechanismDesign {
   double r2 = 0.0;                    // PRBM crank length, m (pivot 1 to pivot 2)
   double r3 = 0.0;                    // PRBM coupler length, m (pivot 2 to pivot 3)
   std::array<JointDesign, 3> joints;  // pivot 1 (ground), 2 (middle), 3 (slider)
-  double E = 0.0;                     // Young's modulus, Pa
-  double yield_strength = 0.0;        // Pa
+  // The strips' material as the library's one Material (solver/common/section.h): E (Pa; the
+  // effective modulus once the plate rule is applied), nu (Poisson's ratio: Material's default
+  // unless nu_given) and S_y (Pa; required by finalise()), read by the stiffness and stress code.
+  Material material;
   // The bending modulus of the strips (docs/plate-modulus.md): off E, on E/(1 - nu^2), auto by
-  // the Searle parameter. nu from the material (library row, [material].nu, --nu). Applied by
-  // analyze_mechanism_with_modulus (mechanism_plate.h), which replaces E by the effective modulus
-  // and records the choice (and the E as given) in `modulus`.
+  // the Searle parameter. nu from the material (library row, [material].nu, --nu): nu_given says
+  // whether material.nu was given (the plate rules need it, a design file writes it). Applied by
+  // analyze_mechanism_with_modulus (mechanism_plate.h), which replaces material.E by the effective
+  // modulus and records the choice (and the E as given) in `modulus`.
   PlateRule plate = PlateRule::kOff;
-  std::optional<double> nu;
+  bool nu_given = false;
   std::vector<ModulusChoice> modulus;
   // The material beyond E and S_y, for the fatigue check (materials_fatigue.h, docs/fatigue.md):
   // the data/materials.csv id it was taken from (empty: given by value), S_ut, the uncorrected
   // endurance limit S_e' (or fatigue strength S_f' at endurance_cycles), brittleness.
-  std::string material;
+  std::string material_id;
   std::optional<double> ultimate_strength;  // Pa
   std::optional<double> endurance_limit;    // Pa
   std::optional<double> endurance_cycles;   // life of a fatigue strength; empty: endurance limit
@@ -129,10 +132,15 @@ struct MechanismDesign {
   // force it was specified by. Empty: one half (every model computes one half, ForceOf above).
   std::optional<ForceOf> force_of;
 
-  // E (the effective modulus once the plate rule is applied), nu where given (else Material's
-  // default) and S_y (where set, > 0) as the library's one Material (solver/common/section.h),
-  // which the stiffness and stress code reads. `material` above is the data/materials.csv id.
-  Material material_properties() const;
+  // Poisson's ratio where given (nu_given), else empty: what the plate rules and a design file
+  // read. set_nu gives it (or, empty, returns material.nu to Material's default).
+  std::optional<double> given_nu() const {
+    return nu_given ? std::optional<double>(material.nu) : std::nullopt;
+  }
+  void set_nu(std::optional<double> nu) {
+    nu_given = nu.has_value();
+    material.nu = nu.value_or(Material{}.nu);
+  }
 
   const cfm::CfmConfiguration& configuration() const;
   double R() const { return r3 / r2; }

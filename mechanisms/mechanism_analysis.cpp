@@ -139,11 +139,12 @@ MechanismAnalysis analyze_mechanism(const MechanismDesign& design, const Analysi
   }
   for (int i = 0; i < 3; ++i) {
     a.max_stress_all = std::max(a.max_stress_all, a.max_stress[i]);
-    if (d.joints[i].type != PivotType::kPin && a.max_stress[i] >= d.yield_strength) {
+    if (d.joints[i].type != PivotType::kPin &&
+        a.max_stress[i] >= d.material.yield_strength.value_or(0.0)) {
       a.yielding_pivots.push_back(i + 1);
     }
   }
-  a.safety_factor = d.yield_strength / a.max_stress_all;
+  a.safety_factor = d.material.yield_strength.value_or(0.0) / a.max_stress_all;
   const bool exact_ran = a.has_exact && options.exact;
   const SolveStatus& last = exact_ran ? static_cast<const SolveStatus&>(a.exact) : a.prbm;
   a.termination = last.termination;

@@ -22,7 +22,7 @@ bool is_pin(const MechanismDesign& d, int pivot) {
 void add_flexible(PhysicalChain& pc, const MechanismDesign& d, int pivot, double length) {
   FlexibleSegment f;
   f.length = length;
-  f.EI = d.joints[pivot - 1].flexural_rigidity(d.material_properties());
+  f.EI = d.joints[pivot - 1].flexural_rigidity(d.material);
   pc.chain.segments.emplace_back(f);
   pc.flexible_pivot.push_back(pivot);
 }

@@ -10,8 +10,9 @@
 namespace flexure::mechanism {
 
 FatigueMaterial design_fatigue_material(const MechanismDesign& design) {
-  const std::string which = design.material.empty() ? std::string("the design's material")
-                                                    : fmt::format("material '{}'", design.material);
+  const std::string which = design.material_id.empty()
+                                ? std::string("the design's material")
+                                : fmt::format("material '{}'", design.material_id);
   if (!design.ultimate_strength) {
     throw InvalidInput(fmt::format(
         "{} has no ultimate strength S_ut, which the fatigue check needs (Howell eq. 3.110)",
@@ -27,9 +28,9 @@ FatigueMaterial design_fatigue_material(const MechanismDesign& design) {
   m.ultimate_strength = *design.ultimate_strength;
   m.uncorrected_strength = *design.endurance_limit;
   m.fatigue_cycles = design.endurance_cycles;
-  m.yield_strength = design.yield_strength;
+  m.yield_strength = design.material.yield_strength.value_or(0.0);
   m.ductile = design.ductile;
-  m.source = design.material.empty() ? "given" : "data/materials.csv: " + design.material;
+  m.source = design.material_id.empty() ? "given" : "data/materials.csv: " + design.material_id;
   m.validate();
   return m;
 }
@@ -95,10 +96,10 @@ void apply_material(MechanismDesign& design, const MaterialGrade& grade) {
         grade.source,
         grade.ductile ? "yield" : "ultimate"));
   }
-  design.material = grade.id;
-  design.E = grade.E;
-  design.nu = grade.nu;
-  design.yield_strength = *strength;
+  design.material_id = grade.id;
+  design.material.E = grade.E;
+  design.set_nu(grade.nu);
+  design.material.yield_strength = *strength;
   design.ultimate_strength = grade.ultimate_strength;
   design.endurance_limit = grade.fatigue_strength;
   design.endurance_cycles = grade.fatigue_cycles;

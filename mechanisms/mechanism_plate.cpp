@@ -14,8 +14,8 @@ void apply_plate_modulus(MechanismDesign& design) {
                     design.name));
   }
   const ModulusChoice choice =
-      choose_modulus(design.plate, design.E, design.nu, {}, {}, {}, design.name);
-  design.E = choice.effective_E;
+      choose_modulus(design.plate, design.material.E, design.given_nu(), {}, {}, {}, design.name);
+  design.material.E = choice.effective_E;
   design.modulus = {choice};
 }
 
@@ -26,7 +26,8 @@ MechanismAnalysis analyze_mechanism_with_modulus(MechanismDesign design,
     return analyze_mechanism(design, options);
   }
   // Checked before the first analysis: nu, and a width and thickness on every strip (they are).
-  choose_modulus(PlateRule::kAuto, design.E, design.nu, 1.0, 1.0, 0.0, design.name);
+  choose_modulus(
+      PlateRule::kAuto, design.material.E, design.given_nu(), 1.0, 1.0, 0.0, design.name);
   MechanismAnalysis first = analyze_mechanism(design, options);
   std::vector<ModulusChoice> choices;
   bool all_plates = true;
@@ -34,10 +35,10 @@ MechanismAnalysis analyze_mechanism_with_modulus(MechanismDesign design,
     const JointDesign& j = first.design.joints[p - 1];
     if (j.type == PivotType::kPin) continue;
     // The largest bending stress sigma = E kappa h/2 gives the largest curvature.
-    const double curvature = 2.0 * first.max_stress[p - 1] / (design.E * j.thickness);
+    const double curvature = 2.0 * first.max_stress[p - 1] / (design.material.E * j.thickness);
     choices.push_back(choose_modulus(PlateRule::kAuto,
-                                     design.E,
-                                     design.nu,
+                                     design.material.E,
+                                     design.given_nu(),
                                      j.width,
                                      j.thickness,
                                      curvature,
@@ -61,7 +62,7 @@ MechanismAnalysis analyze_mechanism_with_modulus(MechanismDesign design,
     first.design.modulus = choices;
     return first;
   }
-  design.E = choices.front().effective_E;
+  design.material.E = choices.front().effective_E;
   design.modulus = choices;
   return analyze_mechanism(design, options);
 }

@@ -76,7 +76,7 @@ PrbmState prbm_state(const MechanismDesign& design, double displacement) {
       // A fixed-fixed strip turned by psi between its two rigid bodies is bent to the curvature
       // psi/L whatever spring rule the force uses: M = (EI/L) psi (pure bending).
       const double K = j.segment == SegmentKind::kFixedFixed
-                           ? j.flexural_rigidity(design.material_properties()) / j.length
+                           ? j.flexural_rigidity(design.material) / j.length
                            : design.spring_constant(p);
       M = K * psi;
     } else {
@@ -130,7 +130,7 @@ PrbmStrokeResult prbm_stroke(const MechanismDesign& design, int points) {
       r.critical_pivot = p + 1;
     }
   }
-  r.safety_factor = design.yield_strength / r.max_stress_all;
+  r.safety_factor = design.material.yield_strength.value_or(0.0) / r.max_stress_all;
   r.mean_force = sum / points;
   const ConstantForceMeasure cf = constant_force_measure(r.force);
   r.percent_constant_force = cf.percent;

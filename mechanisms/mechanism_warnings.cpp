@@ -19,7 +19,7 @@ std::vector<std::string> yield_warnings(const MechanismAnalysis& a) {
                     described_pivot(a.design, p),
                     a.design.name,
                     a.max_stress[p - 1],
-                    a.design.yield_strength));
+                    a.design.material.yield_strength.value_or(0.0)));
   }
   return texts;
 }

@@ -75,8 +75,8 @@ MechanismDesign base_design(const ModifiedConfiguration& c, SpringRule rule) {
   d.name = c.class_name + "-" + c.name;
   d.paper_config = c.name;
   d.config = c.thesis_pattern();
-  d.E = kE;
-  d.yield_strength = kModifiedYieldStrength;
+  d.material.E = kE;
+  d.material.yield_strength = kModifiedYieldStrength;
   d.spring_rule = rule;
   for (int i = 0; i < 3; ++i) {
     JointDesign& j = d.joints[i];
@@ -120,7 +120,7 @@ MechanismDesign constructed_design(const ModifiedConfiguration& c, SpringRule ru
     if (j.type == PivotType::kPin) continue;
     j.length = L[p - 1];
     const double k = sib.k[p - 1] * scale;
-    j.thickness = std::cbrt(12.0 * k * j.length / (table5_factor(c, p) * d.E * j.width));
+    j.thickness = std::cbrt(12.0 * k * j.length / (table5_factor(c, p) * d.material.E * j.width));
   }
   d.stroke = kStrokeFraction * (d.r2 + d.r3);
   d.note = fmt::format(
@@ -278,7 +278,7 @@ MechanismDesign modified_design(const ModifiedConfiguration& c, SpringRule rule)
   MechanismDesign d = base_design(c, rule);
   d.r2 = t.r2;
   d.r3 = t.r3;
-  d.E = t.E;
+  d.material.E = t.E;
   for (int i = 0; i < 3; ++i) {
     JointDesign& j = d.joints[i];
     if (j.type == PivotType::kPin) continue;

@@ -19,7 +19,7 @@ std::array<std::optional<double>, 3> equivalent_spring_ratios(const MechanismDes
   for (int p = 0; p < 3; ++p) {
     if (!st.has_pivot[p]) continue;
     const JointDesign& j = design.joints[p];
-    const double EI_over_L = j.flexural_rigidity(design.material_properties()) / j.length;
+    const double EI_over_L = j.flexural_rigidity(design.material) / j.length;
     ratio[p] =
         2.0 * st.pivot_strain_energy[p] / (st.pivot_rotation[p] * st.pivot_rotation[p]) / EI_over_L;
   }

@@ -59,8 +59,18 @@ void bind_design(py::module_& m) {
       .def_readonly("note", &MechanismDesign::note)
       .def_readonly("r2", &MechanismDesign::r2)
       .def_readonly("r3", &MechanismDesign::r3)
-      .def_readonly("E", &MechanismDesign::E)
-      .def_readonly("yield_strength", &MechanismDesign::yield_strength)
+      // E and yield_strength read the design's Material (kept as attributes of their own).
+      .def_property_readonly("E", [](const MechanismDesign& d) { return d.material.E; })
+      .def_property_readonly(
+          "yield_strength",
+          [](const MechanismDesign& d) { return d.material.yield_strength.value_or(0.0); })
+      .def_readonly("material", &MechanismDesign::material, "The strips' Material (E, nu, S_y).")
+      .def_property_readonly(
+          "material_id",
+          [](const MechanismDesign& d) -> py::object {
+            return d.material_id.empty() ? py::object(py::none()) : py::str(d.material_id);
+          },
+          "The data/materials.csv id the material came from, or None (given by value).")
       .def_readonly("stroke", &MechanismDesign::stroke)
       .def("__repr__", [](const MechanismDesign& d) {
         return fmt::format("MechanismDesign('{}': {}, r2 = {} m, r3 = {} m, stroke {} m)",

@@ -50,7 +50,7 @@ std::vector<Parameter> parameters_of(const MechanismDesign& d) {
                      x.joints[p].length *= f;
                    }});
   }
-  out.push_back({"E", 3, [](MechanismDesign& x, double f) { x.E *= f; }});
+  out.push_back({"E", 3, [](MechanismDesign& x, double f) { x.material.E *= f; }});
   return out;
 }
 

@@ -261,7 +261,7 @@ double round_up_4(double m) {
 // runs the design's own analysis (exact where spec.exact), as `mechanism analyze` would.
 void apply_spec_material(const MechanismSpec& spec, DimensionedDesign& out) {
   mechanism::MechanismDesign& d = out.design;
-  d.material = spec.material;
+  d.material_id = spec.material;
   d.ultimate_strength = spec.ultimate_strength;
   d.endurance_limit = spec.endurance_limit;
   d.endurance_cycles = spec.endurance_cycles;
@@ -704,13 +704,13 @@ DimensionedDesign refine_against_exact(const MechanismSpec& spec,
                                       out.l_tot);
   out.required_yield_strength = spec.safety_factor * out.primary_stress;
   if (!spec.yield_strength) {
-    d.yield_strength =
+    d.material.yield_strength =
         spec.stress_rule == StressRule::kThesis
             ? *out.required_yield_strength_exact
             : std::max(*out.required_yield_strength_exact, out.required_yield_strength_prbm);
   }
-  out.safety_factor_exact = d.yield_strength / s_exact;
-  out.safety_factor_prbm = d.yield_strength / a->prbm.max_stress_all;
+  out.safety_factor_exact = d.material.yield_strength.value_or(0.0) / s_exact;
+  out.safety_factor_prbm = d.material.yield_strength.value_or(0.0) / a->prbm.max_stress_all;
   const double h_primary = out.thickness[p - 1];
   out.footprint = mechanism_footprint(d, out.l_tot, spec.points);
   out.flexure_volume = flexure_volume(d);

@@ -316,8 +316,9 @@ mechanism::MechanismDesign SubclassSizer::geometry(double l) const {
   const double r_tot = l / model_.lambda;
   d.r2 = r_tot / (model_.R + 1.0);
   d.r3 = model_.R * d.r2;
-  d.E = spec_.E;
-  d.yield_strength = spec_.yield_strength.value_or(1.0);  // set once the stresses are known
+  d.material.E = spec_.E;
+  d.material.yield_strength =
+      spec_.yield_strength.value_or(1.0);  // set once the stresses are known
   d.stroke = spec_.stroke;
   d.force_of = spec_.force_of;
   for (int i = 0; i < 3; ++i) d.joints[i].type = cfg.pivots[i];
@@ -521,14 +522,14 @@ DimensionedDesign SubclassSizer::at(double l,
   }
   // Without a given yield strength the design carries the strength it needs by every stress the
   // models compute, so that its file analyses without yielding.
-  d.yield_strength =
+  d.material.yield_strength =
       spec.yield_strength.value_or(std::max({out.required_yield_strength,
                                              out.required_yield_strength_prbm,
                                              out.required_yield_strength_exact.value_or(0.0)}));
   out.force_prbm = s.prbm.mean_force;
   out.percent_constant_force_prbm = s.prbm.percent_constant_force;
-  out.safety_factor_prbm = d.yield_strength / s.prbm.max_stress_all;
-  if (exact_stress > 0.0) out.safety_factor_exact = d.yield_strength / exact_stress;
+  out.safety_factor_prbm = *d.material.yield_strength / s.prbm.max_stress_all;
+  if (exact_stress > 0.0) out.safety_factor_exact = *d.material.yield_strength / exact_stress;
   out.footprint = mechanism_footprint(d, l, spec.points);
   out.flexure_volume = flexure_volume(d);
   out.width_to_thickness = max_width_to_thickness(f, h);

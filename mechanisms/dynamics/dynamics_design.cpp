@@ -77,7 +77,7 @@ DynamicsDesign builtin_dynamics_design(const std::string& name,
     MechanismDesign m =
         mechanism::modified_design(mechanism::find_modified_configuration(t.name), *rule);
     if (material != nullptr) {
-      m.E = material->E;  // k = EI/L and its factors (modified_springs.h) scale with E
+      m.material.E = material->E;  // k = EI/L and its factors (modified_springs.h) scale with E
       d.material = material->id;
       d.E = material->E;
     }
@@ -143,8 +143,8 @@ DynamicsDesign dynamics_design(MechanismDesign design,
           where,
           material->id));
     }
-    design.E = material->E;
-    design.material = material->id;
+    design.material.E = material->E;
+    design.material_id = material->id;
     d.material = material->id;
     d.E = material->E;
   }

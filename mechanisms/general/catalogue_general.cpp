@@ -152,7 +152,7 @@ GeneralMechanism general_from_design(const MechanismDesign& design, int points) 
                 ref(it.rb, it.pb),
                 jd.width,
                 jd.thickness,
-                d.E,
+                d.material.E,
                 it.prbm);
     } else {
       m.pin("p" + std::to_string(pivot), ref(it.ra, it.pa), ref(it.rb, it.pb));

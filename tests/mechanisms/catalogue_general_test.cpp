@@ -116,7 +116,7 @@ TEST(CatalogueGeneral, AllFortyDesignsAreTheirCatalogueNumbers) {
                 kTolerance);
       max_prbm = std::max(max_prbm, ps.max_stress[i]);
     }
-    const double sf_prbm = d.yield_strength / max_prbm;
+    const double sf_prbm = *d.material.yield_strength / max_prbm;
     EXPECT_LE(relative(sf_prbm, a.prbm.safety_factor), kTolerance);
     prbm_sf.see(relative(sf_prbm, a.prbm.safety_factor), d.name);
 
@@ -173,7 +173,7 @@ TEST(CatalogueGeneral, AllFortyDesignsAreTheirCatalogueNumbers) {
       max_all = std::max(max_all, es.max_stress[i]);
     }
     // The governing safety factor: the larger of the PRBM and exact stresses.
-    const double sf = d.yield_strength / max_all;
+    const double sf = *d.material.yield_strength / max_all;
     EXPECT_LE(relative(sf, a.safety_factor), kTolerance);
     safety.see(relative(sf, a.safety_factor), d.name);
   }

@@ -83,8 +83,9 @@ MechanismDesign random_design(const MechanismDesign& base, std::mt19937& rng, in
   const double R = base.R() * in(0.7, 1.4);
   d.r2 = r_tot / (1.0 + R);
   d.r3 = r_tot - d.r2;
-  d.E = base.E * in(0.5, 2.0);
-  d.yield_strength = base.yield_strength * 1e3;  // the stress is not what is checked here
+  d.material.E = base.material.E * in(0.5, 2.0);
+  d.material.yield_strength =
+      *base.material.yield_strength * 1e3;  // the stress is not what is checked here
   for (int p = 1; p <= 3; ++p) {
     JointDesign& j = d.joints[static_cast<std::size_t>(p - 1)];
     const JointDesign& j0 = base.joints[static_cast<std::size_t>(p - 1)];

@@ -144,8 +144,8 @@ TEST(HowellDesigns, MaterialAndClassMapping) {
     const MechanismDesign& d = howell_mechanisms()[i];
     EXPECT_EQ(d.name, expected[i][0]);
     EXPECT_EQ(d.config, expected[i][1]);
-    EXPECT_NEAR(d.E, 1655e6, 1.0);
-    EXPECT_NEAR(d.yield_strength, 4500.0 * 6894.757293, 1.0);  // Table C.2 lower end
+    EXPECT_NEAR(d.material.E, 1655e6, 1.0);
+    EXPECT_NEAR(*d.material.yield_strength, 4500.0 * 6894.757293, 1.0);  // Table C.2 lower end
     // Aliases: lower case, without the class.
     EXPECT_EQ(find_builtin_mechanism(d.name.substr(0, 7) + d.name.substr(10)).name, d.name);
     std::string upper = d.name;

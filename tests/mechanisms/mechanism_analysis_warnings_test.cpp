@@ -38,7 +38,7 @@ TEST(MechanismAnalysisWarnings, YieldingPivotsWarnWithTheirStress) {
   const MechanismAnalysis fine = analyze_mechanism(d, o);
   ASSERT_GT(fine.safety_factor, 1.0);
   EXPECT_TRUE(of_kind(fine, WarningKind::kYield).empty());
-  d.yield_strength = 1e6;  // far below the strip's stress
+  d.material.yield_strength = 1e6;  // far below the strip's stress
   const MechanismAnalysis a = analyze_mechanism(d, o);
   ASSERT_TRUE(a.converged()) << a.message;
   const auto yields = of_kind(a, WarningKind::kYield);

@@ -74,8 +74,8 @@ Checked analyse(const mechanism::MechanismDesign& design, int points = 50) {
   const mechanism::MechanismAnalysis a = mechanism::analyze_mechanism(design, o);
   EXPECT_TRUE(a.has_exact && a.exact.converged() && a.has_exact_stress) << design.name;
   Checked c;
-  c.sf_prbm = design.yield_strength / a.prbm.max_stress_all;
-  c.sf_exact = design.yield_strength /
+  c.sf_prbm = *design.material.yield_strength / a.prbm.max_stress_all;
+  c.sf_exact = *design.material.yield_strength /
                *std::max_element(a.max_stress_exact.begin(), a.max_stress_exact.end());
   c.force_exact = a.mean_force_exact;
   return c;

@@ -56,7 +56,7 @@ TEST(MechanismExact, LppCrankIsTheEllipticFixedPinnedBeam) {
     ASSERT_TRUE(p.converged()) << p.message;
     previous = p;
     const double l = d.joints[0].length;
-    const double EI = d.joints[0].flexural_rigidity(d.material_properties());
+    const double EI = d.joints[0].flexural_rigidity(d.material);
     // Coupler force applied directly to the fixed-pinned beam, Howell's nondimensional load.
     EndLoad load{p.Nx * l * l / EI, p.Ny * l * l / EI, 0.0};
     const EllipticResult e = EllipticSolver().solve(load);
@@ -212,7 +212,7 @@ TEST(MechanismExact, Lps90CrankStartsJustAboveItsEulerLoad) {
   const ExactPoint p = ExactMechanismSolver(d).solve(d.stroke / 50.0);
   ASSERT_TRUE(p.converged()) << p.message;
   const double l = d.joints[0].length;
-  const double EI = d.joints[0].flexural_rigidity(d.material_properties());
+  const double EI = d.joints[0].flexural_rigidity(d.material);
   const double euler = M_PI * M_PI * EI / (4.0 * l * l);
   const double ratio = std::hypot(p.Nx, p.Ny) / euler;
   EXPECT_GT(ratio, 1.0);

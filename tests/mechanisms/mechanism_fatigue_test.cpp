@@ -75,7 +75,7 @@ TEST(MechanismFatigue, NoBuiltInDesignsMomentChangesSignOverItsStroke) {
   int checked = 0;
   for (MechanismDesign d : builtin_mechanisms()) {
     apply_material(d, find_material("steel-1095-hr"));
-    d.E = find_builtin_mechanism(d.name).E;  // keep the design's own forces
+    d.material.E = find_builtin_mechanism(d.name).material.E;  // keep the design's own forces
     AnalysisOptions o;
     o.points = 50;
     o.exact = false;
@@ -172,9 +172,9 @@ TEST(MechanismTomlMaterial, ByNameTableAndErrors) {
   const MaterialGrade& pp = find_material("polypropylene");
   MechanismFile f =
       parse_mechanism_file(std::string("material = \"Polypropylene\"\n") + kBody, "a.toml");
-  EXPECT_EQ(f.design.material, "polypropylene");
-  EXPECT_DOUBLE_EQ(f.design.E, pp.E);
-  EXPECT_DOUBLE_EQ(f.design.yield_strength, *pp.yield_strength);
+  EXPECT_EQ(f.design.material_id, "polypropylene");
+  EXPECT_DOUBLE_EQ(f.design.material.E, pp.E);
+  EXPECT_DOUBLE_EQ(*f.design.material.yield_strength, *pp.yield_strength);
   EXPECT_DOUBLE_EQ(*f.design.ultimate_strength, *pp.ultimate_strength);
   EXPECT_DOUBLE_EQ(*f.design.endurance_limit, *pp.fatigue_strength);
   EXPECT_TRUE(f.warnings.empty());
@@ -182,8 +182,8 @@ TEST(MechanismTomlMaterial, ByNameTableAndErrors) {
   // A known name with an E of its own: E replaced, with a note; the rest from the library.
   f = parse_mechanism_file(std::string(kBody) + "[material]\nname = \"polypropylene\"\nE = 1.4e9\n",
                            "b.toml");
-  EXPECT_DOUBLE_EQ(f.design.E, 1.4e9);
-  EXPECT_DOUBLE_EQ(f.design.yield_strength, *pp.yield_strength);
+  EXPECT_DOUBLE_EQ(f.design.material.E, 1.4e9);
+  EXPECT_DOUBLE_EQ(*f.design.material.yield_strength, *pp.yield_strength);
   ASSERT_EQ(f.warnings.size(), 1u);
   EXPECT_NE(f.warnings[0].find("material.E = 1.4e+09 replaces"), std::string::npos)
       << f.warnings[0];
@@ -193,7 +193,7 @@ TEST(MechanismTomlMaterial, ByNameTableAndErrors) {
                                "[material]\nname = \"spring steel\"\nE = 2e11\n"
                                "yield_strength = 1e9\n",
                            "c.toml");
-  EXPECT_TRUE(f.design.material.empty());
+  EXPECT_TRUE(f.design.material_id.empty());
   EXPECT_FALSE(f.design.ultimate_strength);
 
   // Without them it must be known.
@@ -224,9 +224,9 @@ TEST(MechanismTomlMaterial, ByNameTableAndErrors) {
   const MechanismDesign al =
       parse_mechanism_toml(std::string("material = \"al-7075-t6\"\n") + kBody, "al.toml");
   const MechanismDesign al_back = parse_mechanism_toml(mechanism_toml(al), "back");
-  EXPECT_EQ(al_back.material, "al-7075-t6");
+  EXPECT_EQ(al_back.material_id, "al-7075-t6");
   EXPECT_EQ(*al_back.endurance_cycles, 5e8);
-  EXPECT_EQ(al_back.E, al.E);
+  EXPECT_EQ(al_back.material.E, al.material.E);
 }
 
 }  // namespace

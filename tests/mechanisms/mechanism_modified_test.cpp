@@ -184,8 +184,7 @@ TEST(MechanismModified, ExactSmallStrokeIsTheBucklingLoadAndThePrbmItsShortStrip
     s.joints[0].length *= shrink;
     s.joints[0].thickness *= std::cbrt(shrink);
     s.finalise();
-    const double EI = s.joints[0].flexural_rigidity(s.material_properties()),
-                 L = s.joints[0].length;
+    const double EI = s.joints[0].flexural_rigidity(s.material), L = s.joints[0].length;
     const double F_cr = buckling_load(EI, L, s.r2, s.r3);
     const ExactMechanismSolver solver(s);
     const ExactPoint p1 = solver.solve(1e-3 * s.stroke);

@@ -20,7 +20,7 @@ namespace {
 
 TEST(MechanismPlate, StrokeForcesScaleByOneOverOneMinusNuSquared) {
   MechanismDesign off = find_builtin_mechanism("1A-lpp");
-  off.nu = 0.3;
+  off.set_nu(0.3);
   MechanismDesign on = off;
   on.plate = PlateRule::kOn;
   AnalysisOptions o;
@@ -33,14 +33,14 @@ TEST(MechanismPlate, StrokeForcesScaleByOneOverOneMinusNuSquared) {
     EXPECT_NEAR(b.prbm.force[i] / a.prbm.force[i], 1.0 / 0.91, 1e-11);
     EXPECT_NEAR(b.force_exact[i] / a.force_exact[i], 1.0 / 0.91, 1e-11);
   }
-  EXPECT_EQ(b.design.modulus.at(0).E, off.E);
-  EXPECT_NEAR(b.design.E, off.E / 0.91, 1e-15 * off.E);
+  EXPECT_EQ(b.design.modulus.at(0).E, off.material.E);
+  EXPECT_NEAR(b.design.material.E, off.material.E / 0.91, 1e-15 * off.material.E);
   EXPECT_FALSE(a.design.modulus.at(0).plate);
 }
 
 TEST(MechanismPlate, AutoByTheSearleParameterOfTheStrip) {
   MechanismDesign d = find_builtin_mechanism("1A-lpp");
-  d.nu = 0.3;
+  d.set_nu(0.3);
   d.plate = PlateRule::kAuto;
   AnalysisOptions o;
   o.points = 12;
@@ -49,18 +49,18 @@ TEST(MechanismPlate, AutoByTheSearleParameterOfTheStrip) {
   const MechanismAnalysis beam = analyze_mechanism(plain, o);
   const MechanismAnalysis a = analyze_mechanism_with_modulus(d, o);
   const JointDesign& j = d.joints[0];
-  const double kappa = 2.0 * beam.max_stress[0] / (d.E * j.thickness);
+  const double kappa = 2.0 * beam.max_stress[0] / (d.material.E * j.thickness);
   const double beta = j.width * j.width * kappa / j.thickness;
   ASSERT_EQ(a.design.modulus.size(), 1u);  // one flexible strip (lpp)
   EXPECT_NEAR(*a.design.modulus[0].beta, beta, 1e-9 * beta);
   EXPECT_GT(beta, 50.0);
   EXPECT_TRUE(a.design.modulus[0].plate);
-  EXPECT_NEAR(a.design.E, d.E / 0.91, 1e-15 * d.E);
+  EXPECT_NEAR(a.design.material.E, d.material.E / 0.91, 1e-15 * d.material.E);
 }
 
 TEST(MechanismPlate, PlateWithoutNuIsAnError) {
   MechanismDesign d = find_builtin_mechanism("1A-lpp");
-  d.nu.reset();
+  d.set_nu(std::nullopt);
   d.plate = PlateRule::kOn;
   try {
     analyze_mechanism_with_modulus(d, AnalysisOptions{});

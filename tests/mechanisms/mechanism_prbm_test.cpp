@@ -190,7 +190,7 @@ TEST(MechanismPrbm, GeometryOutsideSlenderBeamTheoryIsRefused) {
   };
   const double alpha2 = number_after("load parameter |P| L^2/(EI) = ");
   const double P = number_after("largest PRBM pin force ");
-  const double EI = d.E * d.joints[0].width * std::pow(5e-6, 3) / 12.0;
+  const double EI = d.material.E * d.joints[0].width * std::pow(5e-6, 3) / 12.0;
   EXPECT_NEAR(alpha2, P * std::pow(d.joints[0].length, 2) / EI, 1e-3 * alpha2);
   EXPECT_NE(why.find("ground pivot 1 segment [ground]"), std::string::npos) << why;
   const double h_limit = 5e-6 * std::cbrt(alpha2 / SlenderBeamLimits::kMaxLoadParameter);
@@ -208,7 +208,7 @@ TEST(MechanismPrbm, GeometryOutsideSlenderBeamTheoryIsRefused) {
   why = refusal(d);
   const double strain = number_after("axial strain |P|/(EA) = ");
   EXPECT_NEAR(strain,
-              number_after("largest PRBM pin force ") / (d.E * d.joints[0].width * 10e-6),
+              number_after("largest PRBM pin force ") / (d.material.E * d.joints[0].width * 10e-6),
               1e-3 * strain);
   EXPECT_GT(strain, SlenderBeamLimits::kMaxAxialStrain);
   // Every built-in design, Howell design and thesis sub-class lies inside all four limits.
@@ -256,7 +256,7 @@ TEST(MechanismToml, ExampleFileLoads) {
   EXPECT_DOUBLE_EQ(d.joints[0].length, 2.73e-3);         // given
   EXPECT_NEAR(d.joints[1].length, 0.1 * 0.05, 1e-15);    // default 0.1 r_ave
   EXPECT_NEAR(d.joints[2].length, 0.1 * 0.0727, 1e-15);  // default 0.1 r3
-  EXPECT_DOUBLE_EQ(d.E, 207e9);
+  EXPECT_DOUBLE_EQ(d.material.E, 207e9);
 }
 
 void expect_error(const std::string& text, const std::string& needle) {

@@ -24,8 +24,8 @@ void expect_same(const MechanismDesign& a, const MechanismDesign& b) {
   EXPECT_EQ(a.note, b.note) << a.name;
   EXPECT_EQ(a.r2, b.r2) << a.name;
   EXPECT_EQ(a.r3, b.r3) << a.name;
-  EXPECT_EQ(a.E, b.E) << a.name;
-  EXPECT_EQ(a.yield_strength, b.yield_strength) << a.name;
+  EXPECT_EQ(a.material.E, b.material.E) << a.name;
+  EXPECT_EQ(a.material.yield_strength, b.material.yield_strength) << a.name;
   EXPECT_EQ(a.stroke, b.stroke) << a.name;
   EXPECT_EQ(a.spring_rule, b.spring_rule) << a.name;
   for (int p = 0; p < 3; ++p) {

@@ -41,6 +41,16 @@ def test_a_design_from_toml_text_needs_no_file():
         flexure.MechanismDesign.from_toml_text("config = 'nope'\n", "bad.toml")
 
 
+def test_a_design_holds_its_material_and_keeps_e_and_yield_strength():
+    # Howell's example 1 (Compliant Mechanisms §10.1.4): polypropylene E = 1655 MPa, and the
+    # lower end of Table C.2's tensile yield strength, 4500 psi.
+    d = flexure.MechanismDesign.builtin("howell-ex1")
+    assert d.material.E == 1655e6
+    assert d.material.yield_strength == pytest.approx(4500 * 6894.757293, rel=1e-15)
+    assert d.E == d.material.E and d.yield_strength == d.material.yield_strength
+    assert d.material_id is None  # given by value, not a data/materials.csv row
+
+
 def test_progress_is_monotone_and_reaches_the_total():
     calls = []
     flexure.analyze_mechanism(flexure.MechanismDesign.builtin("1A-lpp"),
