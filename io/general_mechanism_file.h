@@ -19,7 +19,7 @@
 namespace flexure::io {
 
 // The models `mechanism analyze --model` solves a general mechanism with: the PRBM, the exact
-// model, both (PRBM first), or a model per flexure (mixed; general_exact.h).
+// model, both (PRBM first), or a model per flexure (mixed; general_analysis.h).
 enum class GeneralAnalysisModel { kPrbm, kExact, kBoth, kMixed };
 // "prbm", "exact", "both", "mixed" (the --model names, the JSON key and HDF5 attribute `model`).
 const char* to_string(GeneralAnalysisModel model);

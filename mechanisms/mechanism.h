@@ -363,7 +363,7 @@ struct MechanismMethodChoice {
 
 // `tolerance` is the relative force error allowed. With kAuto, a tolerance below
 // kExactForceErrorBound (when the PRBM does not meet it either) throws bench::ToleranceBelowReach
-// (method_selector.h): no model meets it.
+// (beam_problem.h): no model meets it.
 MechanismMethodChoice choose_mechanism_method(const MechanismDesign& design,
                                               MechanismMethod method,
                                               double tolerance);

@@ -218,7 +218,7 @@ PrbmStrokeResult prbm_stroke(const MechanismDesign& design, int points);
 // Both are judged from the second variation of the total potential energy of the half mechanism
 // (one half, as every model here computes; "The whole mechanism" in docs/stability.md says what
 // changes for two halves on one slider) and reported in the vocabulary of
-// solver/common/stability.h: kind, index (negative directions), margin.
+// solver/common/status.h: kind, index (negative directions), margin.
 //
 // PRBM. The pseudo-rigid-body linkage has one degree of freedom, the slider's travel Delta x
 // (Howell ch. 5; thesis §2.1.1); its energy is V = sum k_i psi_i^2 / 2 on the loop-closure
@@ -235,7 +235,7 @@ PrbmStrokeResult prbm_stroke(const MechanismDesign& design, int points);
 // Exact. The elastic path from the ground to the slider (mechanism_second_variation.h), with the
 // shape, the internal force and the reactions of the solved point; margin as a chain's (1
 // unloaded, 1 - P/P_cr for a column, 0 critical). A serial chain (ssp, slp, sss) is judged by
-// solver/chain_model/equilibrium_stability.h itself wherever its end is one of the chain's end
+// solver/chain_model/segment_chain.h itself wherever its end is one of the chain's end
 // conditions (displacement control: pinned or fixed; force control with a pin at the slider:
 // slider end); the path's discretisation judges the rest (the force control of a flexure clamped
 // into the slider: y and angle held, x free; the pinned crank of psp and plp; the rigid two-force
@@ -261,7 +261,7 @@ PointStability prbm_point_stability(const MechanismDesign& design,
 // Exact verdicts of a converged point of ExactMechanismSolver for `design` (kNotChecked with the
 // reason for an unconverged point). The shape is integrated again from the point's unknowns at
 // the stations the verdict needs, doubled until the margin's estimated error is below
-// options.margin_accuracy (equilibrium_stability.h). Throws NoConvergence when that integration
+// options.margin_accuracy (segment_chain.h). Throws NoConvergence when that integration
 // fails or does not close the mechanism (the tip misses the slider joint or pivot 2 by more than
 // 1e-7 of the slider's distance).
 PointStability exact_point_stability(const MechanismDesign& design,

@@ -74,7 +74,7 @@ struct PathRequest {
 
 // A located fold (limit point) or bifurcation, in the units of the table.
 struct PathSpecialPoint {
-  // Its name ("limit_point", "bifurcation"): to_string (shooting_options.h).
+  // Its name ("limit_point", "bifurcation"): to_string (shooting_solver.h).
   SpecialPointKind kind = SpecialPointKind::kLimitPoint;
   double load_factor = 0.0;
   int index = -1;        // row of the path table holding the point itself (-1: not stored)
@@ -91,7 +91,7 @@ struct PathSpecialPoint {
 // A zero or extremum of the support's force on the moved coordinate of a displacement-controlled
 // path (ForcePoint, control_points.h), in the units of the table.
 struct PathForcePoint {
-  // Its name ("force_zero", "force_maximum", "force_minimum"): to_string (shooting_options.h).
+  // Its name ("force_zero", "force_maximum", "force_minimum"): to_string (shooting_solver.h).
   ForcePointKind kind = ForcePointKind::kZero;
   double load_factor = 0.0;  // path parameter (fraction moved)
   double coordinate = 0.0;   // the moved coordinate (length unit, or rad)

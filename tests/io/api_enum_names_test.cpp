@@ -1,7 +1,7 @@
 // What is checked against what (issue 28: methods and models are enums in the C++ API, their text
 // the old strings): for every enum that replaced a string field -- the contact event and contact
-// kinds (solver/shooting/rigid_contact.h), a flexure's geometric kind (mechanism_geometry.h), the
-// dynamics' spring rule (dynamics_design.h), the general analysis's --model
+// kinds (solver/shooting/rigid_contact.h), a flexure's geometric kind (mechanism.h), the
+// dynamics' spring rule (dynamics.h), the general analysis's --model
 // (io/general_mechanism_file.h) -- each value's name is the text the field held before, written
 // out here, and the parser returns the value for it; an unknown name is refused with InvalidInput
 // naming every valid one. The beam sweep's method is a BeamMethod, whose names beam_method_test

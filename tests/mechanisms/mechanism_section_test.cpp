@@ -19,7 +19,7 @@
 
 #include <cmath>
 
-#include "flexure/elements/prbm_segments.h"
+#include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/mechanism.h"
 #include "flexure/mechanisms/mechanism_analysis.h"
