@@ -3,20 +3,17 @@
 #include "flexure/beam/beam_problem.h"
 #include "flexure/elements/ladder_models.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
+#include "flexure/solver/common/enum_names.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/elliptic/elliptic_solver.h"
 #include "flexure/solver/shooting/shooting_solver.h"
 
 namespace flexure {
 
-const char* to_string(BeamMethod method) { return kBeamMethodNames[static_cast<int>(method)]; }
+const char* to_string(BeamMethod method) { return enum_name(kBeamMethodNames, method); }
 
 BeamMethod beam_method_from_string(std::string_view name) {
-  for (std::size_t i = 0; i < kBeamMethodNames.size(); ++i) {
-    if (name == kBeamMethodNames[i]) return static_cast<BeamMethod>(i);
-  }
-  throw InvalidInput(
-      fmt::format("method '{}' is unknown (allowed: {})", name, fmt::join(kBeamMethodNames, ", ")));
+  return enum_from_name<BeamMethod>(kBeamMethodNames, name, "method");
 }
 
 double beam_method_tolerance(BeamMethod method) {

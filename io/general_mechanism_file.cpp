@@ -12,6 +12,7 @@
 #include <span>
 
 #include "flexure/io/platform/provenance.h"
+#include "flexure/solver/common/enum_names.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::io {
@@ -486,15 +487,11 @@ void check(const GeneralAnalysisOutput& out) {
 }  // namespace
 
 const char* to_string(GeneralAnalysisModel model) {
-  return kGeneralAnalysisModelNames[static_cast<std::size_t>(model)];
+  return enum_name(kGeneralAnalysisModelNames, model);
 }
 
 GeneralAnalysisModel general_analysis_model_from_string(std::string_view name) {
-  for (std::size_t i = 0; i < kGeneralAnalysisModelNames.size(); ++i) {
-    if (name == kGeneralAnalysisModelNames[i]) return static_cast<GeneralAnalysisModel>(i);
-  }
-  throw InvalidInput(fmt::format(
-      "model '{}' is unknown (allowed: {})", name, fmt::join(kGeneralAnalysisModelNames, ", ")));
+  return enum_from_name<GeneralAnalysisModel>(kGeneralAnalysisModelNames, name, "model");
 }
 
 std::vector<double> design_stroke_displacement(const GeneralPrbmResult& r, double x0) {

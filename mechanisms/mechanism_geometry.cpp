@@ -6,6 +6,7 @@
 #include "flexure/elements/prbm_element.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
 #include "flexure/mechanisms/mechanism.h"
+#include "flexure/solver/common/enum_names.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism {
@@ -45,16 +46,10 @@ namespace {
 constexpr std::array<const char*, 3> kFlexureKindNames = {"small", "long", "fixed-fixed"};
 }  // namespace
 
-const char* to_string(FlexureKind kind) {
-  return kFlexureKindNames[static_cast<std::size_t>(kind)];
-}
+const char* to_string(FlexureKind kind) { return enum_name(kFlexureKindNames, kind); }
 
 FlexureKind flexure_kind_from_string(std::string_view name) {
-  for (std::size_t i = 0; i < kFlexureKindNames.size(); ++i) {
-    if (name == kFlexureKindNames[i]) return static_cast<FlexureKind>(i);
-  }
-  throw InvalidInput(fmt::format(
-      "flexure kind '{}' is unknown (allowed: {})", name, fmt::join(kFlexureKindNames, ", ")));
+  return enum_from_name<FlexureKind>(kFlexureKindNames, name, "flexure kind");
 }
 
 std::optional<FlexureKind> flexure_kind(const MechanismDesign& design, int pivot) {

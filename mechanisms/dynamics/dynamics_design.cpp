@@ -3,6 +3,7 @@
 
 #include "flexure/mechanisms/builtin_designs.h"
 #include "flexure/mechanisms/dynamics/dynamics.h"
+#include "flexure/solver/common/enum_names.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::dynamics {
@@ -26,17 +27,10 @@ constexpr std::array<const char*, 5> kDynamicsSpringRuleNames = {
 
 }  // namespace
 
-const char* to_string(DynamicsSpringRule rule) {
-  return kDynamicsSpringRuleNames[static_cast<std::size_t>(rule)];
-}
+const char* to_string(DynamicsSpringRule rule) { return enum_name(kDynamicsSpringRuleNames, rule); }
 
 DynamicsSpringRule dynamics_spring_rule_from_string(std::string_view name) {
-  for (std::size_t i = 0; i < kDynamicsSpringRuleNames.size(); ++i) {
-    if (name == kDynamicsSpringRuleNames[i]) return static_cast<DynamicsSpringRule>(i);
-  }
-  throw InvalidInput(fmt::format("dynamics spring rule '{}' is unknown (allowed: {})",
-                                 name,
-                                 fmt::join(kDynamicsSpringRuleNames, ", ")));
+  return enum_from_name<DynamicsSpringRule>(kDynamicsSpringRuleNames, name, "dynamics spring rule");
 }
 
 DynamicsSpringRule dynamics_spring_rule(SpringRule rule) {

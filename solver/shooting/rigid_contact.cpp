@@ -14,6 +14,7 @@
 
 #include "flexure/solver/chain_model/held_stability.h"
 #include "flexure/solver/chain_model/second_variation.h"
+#include "flexure/solver/common/enum_names.h"
 #include "flexure/solver/common/scalar_root.h"
 #include "flexure/solver/common/status.h"
 #include "flexure/solver/shooting/shooting_solver.h"
@@ -30,29 +31,16 @@ constexpr std::array<const char*, 4> kContactEventKindNames = {
 constexpr std::array<const char*, 5> kContactKindNames = {"none", "wrap", "tip", "point", "line"};
 }  // namespace
 
-const char* to_string(ContactEventKind kind) {
-  return kContactEventKindNames[static_cast<std::size_t>(kind)];
-}
+const char* to_string(ContactEventKind kind) { return enum_name(kContactEventKindNames, kind); }
 
 ContactEventKind contact_event_kind_from_string(std::string_view name) {
-  for (std::size_t i = 0; i < kContactEventKindNames.size(); ++i) {
-    if (name == kContactEventKindNames[i]) return static_cast<ContactEventKind>(i);
-  }
-  throw InvalidInput(fmt::format("contact event kind '{}' is unknown (allowed: {})",
-                                 name,
-                                 fmt::join(kContactEventKindNames, ", ")));
+  return enum_from_name<ContactEventKind>(kContactEventKindNames, name, "contact event kind");
 }
 
-const char* to_string(ContactKind kind) {
-  return kContactKindNames[static_cast<std::size_t>(kind)];
-}
+const char* to_string(ContactKind kind) { return enum_name(kContactKindNames, kind); }
 
 ContactKind contact_kind_from_string(std::string_view name) {
-  for (std::size_t i = 0; i < kContactKindNames.size(); ++i) {
-    if (name == kContactKindNames[i]) return static_cast<ContactKind>(i);
-  }
-  throw InvalidInput(fmt::format(
-      "contact kind '{}' is unknown (allowed: {})", name, fmt::join(kContactKindNames, ", ")));
+  return enum_from_name<ContactKind>(kContactKindNames, name, "contact kind");
 }
 
 void RigidContactSolver::Options::validate() const {
