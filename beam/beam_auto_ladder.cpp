@@ -21,7 +21,8 @@ constexpr double kDeg = 180.0 / 3.14159265358979323846;
 // inextensible beam (BeamProblem's defaults), under dead loads on a free end.
 bool map_applies(const BeamProblem& p) {
   return p.is_plain_cantilever() && p.given == BeamProblem::Given::kAlpha2 && !p.stable &&
-         p.cbcm_elements == 6 && p.prbm3r_constants == "su" && p.slenderness == 0.0;
+         p.cbcm_elements == 6 && p.prbm3r_constants == Prbm3rConstantSet::kSu &&
+         p.slenderness == 0.0;
 }
 
 bool mapped_settings(BeamMethod method, const BeamProblem& p) {
@@ -31,7 +32,7 @@ bool mapped_settings(BeamMethod method, const BeamProblem& p) {
     case BeamMethod::kBcm:
       return true;
     case BeamMethod::kPrbm3r:
-      return p.prbm3r_constants == "su";
+      return p.prbm3r_constants == Prbm3rConstantSet::kSu;
     case BeamMethod::kCbcm:
       return p.cbcm_elements == 6;
     default:
@@ -62,13 +63,15 @@ std::string rung_name(BeamMethod m) {
 bool guided_map_applies(const BeamProblem& p) {
   return !p.chain && p.boundary == EndCondition::kGuided && p.follower == 0.0 &&
          p.given == BeamProblem::Given::kAlpha2 && !p.stable && p.mu == 0.0 &&
-         p.cbcm_elements == 6 && p.prbm3r_constants == "su" && p.slenderness == 0.0;
+         p.cbcm_elements == 6 && p.prbm3r_constants == Prbm3rConstantSet::kSu &&
+         p.slenderness == 0.0;
 }
 
 // An inverse problem (a given theta0 or b/l) on a free cantilever with the map's settings.
 bool inverse_map_applies(const BeamProblem& p) {
   return p.is_plain_cantilever() && p.given != BeamProblem::Given::kAlpha2 && !p.stable &&
-         p.cbcm_elements == 6 && p.prbm3r_constants == "su" && p.slenderness == 0.0;
+         p.cbcm_elements == 6 && p.prbm3r_constants == Prbm3rConstantSet::kSu &&
+         p.slenderness == 0.0;
 }
 
 // A chain the ladder's maps describe: one straight, uniform, inextensible and shear-rigid flexible
@@ -113,7 +116,7 @@ std::optional<BeamProblem> mapped_chain(const BeamProblem& p, std::string& why) 
   } else if (c.end != EndCondition::kFree && c.end != EndCondition::kGuided) {
     why = fmt::format("a {} end; the maps are of the free and the guided end", to_string(c.end));
   } else if (!(p.given == BeamProblem::Given::kAlpha2 && !p.stable && p.cbcm_elements == 6 &&
-               p.prbm3r_constants == "su" && p.slenderness == 0.0)) {
+               p.prbm3r_constants == Prbm3rConstantSet::kSu && p.slenderness == 0.0)) {
     why =
         "the maps are of the default model settings (CBCM 6 elements, Su's PR-3R constants, "
         "no slenderness) and of the proportional-loading answer";

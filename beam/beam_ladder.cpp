@@ -102,7 +102,7 @@ BeamSolution solve_linear(const BeamProblem& p, double alpha2, int shape_points)
 BeamSolution solve_prbm3r(const BeamProblem& p, double alpha2, int shape_points) {
   const CantileverCase c = case_of(p, alpha2);
   Prbm3rSolver::Options options;
-  options.constants = Prbm3rConstants::by_name(p.prbm3r_constants);
+  options.constants = Prbm3rConstants::of(p.prbm3r_constants);
   const Prbm3rSolver solver(options);
   const Prbm3rResult r = solver.solve(c);
   BeamSolution s;

@@ -50,6 +50,7 @@
 #include <utility>
 #include <vector>
 
+#include "flexure/elements/ladder_models.h"
 #include "flexure/solver/chain/chain_algorithm_solver.h"
 #include "flexure/solver/chain_model/segment_chain.h"
 #include "flexure/solver/common/end_load.h"
@@ -111,10 +112,10 @@ struct BeamProblem {
   // `auto` picks the cheapest method whose relative error is within this (choose_beam_method).
   double tolerance = 1e-6;
   // The cheaper models of the ladder (beam_ladder.h): the chained BCM's number of elements N, the
-  // PR-3R model's constants (Prbm3rConstants::by_name: su, su-moment, su-force, flexure), the
+  // PR-3R model's stored constants (elements/ladder_models.h: Su's general set by default), the
   // slenderness L/t of the BCM and CBCM (d = 12 (L/t)^2; 0: inextensible, the default).
   int cbcm_elements = 6;
-  std::string prbm3r_constants = "su";
+  Prbm3rConstantSet prbm3r_constants = Prbm3rConstantSet::kSu;
   double slenderness = 0.0;
   // The stability verdict of the answer (BeamSolution::stability; docs/stability.md): on by
   // default; false leaves it not_checked (a sweep that does not want its cost). Its settings:
@@ -280,7 +281,7 @@ class BeamSolver {
     // The model ladder (beam_ladder.h): the chained BCM's elements, the PR-3R constants, the
     // slenderness L/t of the BCM and CBCM (0: inextensible).
     int cbcm_elements = 6;
-    std::string prbm3r_constants = "su";
+    Prbm3rConstantSet prbm3r_constants = Prbm3rConstantSet::kSu;
     double slenderness = 0.0;
     bool judge_stability = true;  // the stability verdict of the answer (docs/stability.md)
     bool stable = false;          // return a stable equilibrium (BeamProblem::stable)

@@ -66,7 +66,7 @@ void add_ladder_settings(const BeamRequest& r,
                       names.method,
                       r.method));
     }
-    problem.prbm3r_constants = to_lower(*r.constants);
+    problem.prbm3r_constants = prbm3r_constant_set_from_string(*r.constants);
   }
   if (r.slenderness) {
     if (!same_name(r.method, "bcm") && !same_name(r.method, "cbcm")) {

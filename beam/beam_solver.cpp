@@ -34,7 +34,7 @@ void BeamSolver::Options::validate() const {
                     "inextensible beam",
                     slenderness));
   }
-  Prbm3rConstants::by_name(prbm3r_constants);  // InvalidInput naming the known sets
+  Prbm3rConstants::of(prbm3r_constants);  // InvalidInput for a value outside the enum
 }
 
 BeamSolver::BeamSolver(Options options) : options_(std::move(options)) { options_.validate(); }

@@ -304,6 +304,15 @@ class ChainedBcmSolver {
 //   1/k_i.
 // With Su's general constants b/l = 0.34066 Fy: 2.2 % softer than the exact Fy/3 (the constants
 // trade small-load accuracy for large deflections); theta0 = 0.4985 Fy + 1.0069 M.
+// The stored sets of PR-3R constants (below): Su's general set, Su's sets fitted to an end moment
+// and to a transverse force, and flexure's own (derived against the exact elastica).
+enum class Prbm3rConstantSet { kSu, kSuMoment, kSuForce, kFlexure };
+// "su", "su-moment", "su-force", "flexure" (the `--constants` choices and the JSON/HDF5 names).
+const char* to_string(Prbm3rConstantSet set);
+// The set of that name (case-insensitive); throws InvalidInput "PR-3R constants 'NAME' are unknown
+// (allowed: su, su-moment, su-force, flexure)".
+Prbm3rConstantSet prbm3r_constant_set_from_string(std::string_view name);
+
 struct Prbm3rConstants {
   std::array<double, 4> gamma{};  // link lengths / l, clamp to tip; sum 1
   std::array<double, 3> k{};      // spring stiffnesses / (EI/l), clamp to tip
@@ -318,6 +327,8 @@ struct Prbm3rConstants {
   // The set flexure derives itself against the exact elastica (below),
   // stored in data/prbm3r_flexure_constants.csv with its objective and load domain.
   static Prbm3rConstants flexure();
+  // The stored set `set`.
+  static Prbm3rConstants of(Prbm3rConstantSet set);
   // By name (case-insensitive): su, su-moment, su-force, flexure. Throws InvalidInput listing them.
   static Prbm3rConstants by_name(std::string_view name);
   // The names by_name takes, in that order.

@@ -7,6 +7,7 @@
 #include "flexure/elements/ladder_models.h"
 #include "flexure/elements/load_path_newton.h"
 #include "flexure/solver/common/csv_table.h"
+#include "flexure/solver/common/enum_names.h"
 #include "flexure/solver/common/names.h"
 #include "flexure/solver/common/status.h"
 
@@ -56,19 +57,43 @@ Prbm3rConstants Prbm3rConstants::flexure() {
   return c;
 }
 
+namespace {
+constexpr std::array<const char*, 4> kSetNames = {"su", "su-moment", "su-force", "flexure"};
+}  // namespace
+
+const char* to_string(Prbm3rConstantSet set) { return enum_name(kSetNames, set); }
+
+Prbm3rConstantSet prbm3r_constant_set_from_string(std::string_view name) {
+  const std::string lower = to_lower(name);
+  for (std::size_t i = 0; i < kSetNames.size(); ++i) {
+    if (lower == kSetNames[i]) return static_cast<Prbm3rConstantSet>(i);
+  }
+  throw InvalidInput(fmt::format(
+      "PR-3R constants '{}' are unknown (allowed: {})", name, fmt::join(kSetNames, ", ")));
+}
+
+Prbm3rConstants Prbm3rConstants::of(Prbm3rConstantSet set) {
+  switch (set) {
+    case Prbm3rConstantSet::kSu:
+      return su();
+    case Prbm3rConstantSet::kSuMoment:
+      return su_moment();
+    case Prbm3rConstantSet::kSuForce:
+      return su_force();
+    case Prbm3rConstantSet::kFlexure:
+      return flexure();
+  }
+  throw InvalidInput(fmt::format("Prbm3rConstantSet {} is not a stored set of PR-3R constants",
+                                 static_cast<int>(set)));
+}
+
 const std::vector<std::string>& Prbm3rConstants::names() {
-  static const std::vector<std::string> n = {"su", "su-moment", "su-force", "flexure"};
+  static const std::vector<std::string> n(kSetNames.begin(), kSetNames.end());
   return n;
 }
 
 Prbm3rConstants Prbm3rConstants::by_name(std::string_view name) {
-  const std::string lower = to_lower(name);
-  if (lower == "su") return su();
-  if (lower == "su-moment") return su_moment();
-  if (lower == "su-force") return su_force();
-  if (lower == "flexure") return flexure();
-  throw InvalidInput(fmt::format(
-      "PR-3R constants '{}' are unknown (allowed: {})", name, fmt::join(names(), ", ")));
+  return of(prbm3r_constant_set_from_string(name));
 }
 
 double Prbm3rConstants::joint_arc_length(int i) const {

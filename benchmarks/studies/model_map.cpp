@@ -210,7 +210,8 @@ ModelMap compute_model_map(const ModelMapSpec& spec,
     m.method = method;
     if (method == BeamMethod::kCbcm) m.settings = fmt::format("elements {}", spec.cbcm_elements);
     if (method == BeamMethod::kChain) m.settings = fmt::format("elements {}", spec.chain_elements);
-    if (method == BeamMethod::kPrbm3r) m.settings = "constants " + spec.prbm3r_constants;
+    if (method == BeamMethod::kPrbm3r)
+      m.settings = std::string("constants ") + to_string(spec.prbm3r_constants);
     m.values.resize(count);
     map.models.push_back(std::move(m));
   }

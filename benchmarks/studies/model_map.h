@@ -42,7 +42,7 @@ struct ModelMapSpec {
   // (linear, prbm, prbm3r, bcm, cbcm, chain, shooting; the reference is not repeated).
   std::vector<BeamMethod> models;
   int cbcm_elements = 6;
-  std::string prbm3r_constants = "su";
+  Prbm3rConstantSet prbm3r_constants = Prbm3rConstantSet::kSu;
   int chain_elements = 100;
   double min_seconds = 2e-4;  // timing per point and model
 

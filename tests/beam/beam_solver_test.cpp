@@ -103,8 +103,30 @@ TEST(BeamSolver, ValidateNamesTheSetting) {
   EXPECT_NE(with([](auto& o) { o.shape_points = 1; }).find("shape_points"), std::string::npos);
   EXPECT_NE(with([](auto& o) { o.cbcm_elements = 0; }).find("cbcm_elements"), std::string::npos);
   EXPECT_NE(with([](auto& o) { o.slenderness = -1.0; }).find("slenderness"), std::string::npos);
-  EXPECT_NE(with([](auto& o) { o.prbm3r_constants = "nope"; }).find("PR-3R constants 'nope'"),
+  EXPECT_NE(with([](auto& o) {
+              o.prbm3r_constants = static_cast<Prbm3rConstantSet>(7);
+            }).find("Prbm3rConstantSet 7"),
             std::string::npos);
+}
+
+// The stored PR-3R sets by name: each name gives the set whose to_string it is, case-insensitive;
+// an unknown name is refused listing the four.
+TEST(BeamSolverOptions, Prbm3rConstantSetNames) {
+  for (Prbm3rConstantSet set : {Prbm3rConstantSet::kSu,
+                                Prbm3rConstantSet::kSuMoment,
+                                Prbm3rConstantSet::kSuForce,
+                                Prbm3rConstantSet::kFlexure}) {
+    EXPECT_EQ(prbm3r_constant_set_from_string(to_string(set)), set);
+    EXPECT_EQ(Prbm3rConstants::of(set).name, to_string(set));
+  }
+  EXPECT_EQ(prbm3r_constant_set_from_string("SU-Moment"), Prbm3rConstantSet::kSuMoment);
+  try {
+    prbm3r_constant_set_from_string("nope");
+    ADD_FAILURE() << "an unknown set was accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_STREQ(e.what(),
+                 "PR-3R constants 'nope' are unknown (allowed: su, su-moment, su-force, flexure)");
+  }
 }
 
 }  // namespace

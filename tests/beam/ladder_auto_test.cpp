@@ -313,7 +313,7 @@ TEST(LadderAuto, NamedModelsReportTheirMappedError) {
   EXPECT_LE(distance(s.tip, exact.tip), s.expected_error_per_length);
   EXPECT_TRUE(std::isnan(solve_beam(BeamMethod::kChain, p).expected_error_per_length));
   BeamProblem other_constants = p;
-  other_constants.prbm3r_constants = "flexure";  // not the map's settings
+  other_constants.prbm3r_constants = Prbm3rConstantSet::kFlexure;  // not the map's settings
   EXPECT_TRUE(
       std::isnan(solve_beam(BeamMethod::kPrbm3r, other_constants).expected_error_per_length));
 }

@@ -55,7 +55,7 @@ std::optional<TipPose> direct_tip(BeamMethod method,
       return TipPose{1.0, Fy / 3.0 + c.load.mu / 2.0, Fy / 2.0 + c.load.mu};
     case BeamMethod::kPrbm3r: {
       Prbm3rSolver::Options o;
-      o.constants = Prbm3rConstants::by_name(spec.prbm3r_constants);
+      o.constants = Prbm3rConstants::of(spec.prbm3r_constants);
       const Prbm3rResult r = Prbm3rSolver(o).solve(c);
       if (!r.converged()) return std::nullopt;
       return r.tip;
