@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <utility>
+
 #include "cli/command_table.h"
+#include "cli/slow_progress.h"
 #include "flexure/io/platform/provenance.h"
 
 namespace flexure::cli {
@@ -13,7 +16,8 @@ void register_all_commands(CLI::App& app) {
   register_commands_for(app, names);
 }
 
-CommandOutput run_command(const std::vector<std::string>& args) {
+CommandOutput run_command(const std::vector<std::string>& args,
+                          std::function<void(std::size_t done, std::size_t total)> progress) {
   CLI::App app{"flexure: exact large-deflection beams and compliant mechanisms", "flexure"};
   register_commands_for(app, args);
   std::vector<std::string> words{"flexure"};
@@ -24,6 +28,8 @@ CommandOutput run_command(const std::vector<std::string>& args) {
   OutputCapture capture;
   // Files written by the command record the command line it stands for.
   const io::CommandLineScope command_line(words);
+  // The run's progress, like its output capture, belongs to this thread for the call.
+  const ProgressSink sink(std::move(progress));
   reset_exit_code();
   try {
     parse_and_run(app, static_cast<int>(words.size()), argv.data());

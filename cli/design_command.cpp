@@ -307,7 +307,7 @@ void run_all_subclasses(const DesignCfmArgs& args) {
   table.seed = args.seed;
   // Under mpirun the rows are divided over the ranks; rank 0 gets them all back and prints.
   const std::vector<design::SubclassRederivation> rows =
-      studies::subclass_table(table, slow_progress("design cfm --all-subclasses"));
+      studies::subclass_table(table, stoppable_progress("design cfm --all-subclasses"));
   csv.write({"name"});
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -378,6 +378,7 @@ void run_design_cfm(const DesignCfmArgs& args) {
   options.scan_points = args.scan_points;
   options.coarse_stride = args.coarse_stride;
   options.seed = args.seed;
+  options.progress = stoppable_progress("design cfm " + problem.config + ": PRBM synthesis");
   const CsvOutput csv(args.out, args.csv);
   options.record_history = !csv.hdf5_path().empty();
   // The output file is checked and opened before the search (a wrong path fails at once).

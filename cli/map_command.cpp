@@ -62,7 +62,7 @@ void run_map_cfm(const MapCfmArgs& a) {
   require_out_or_csv(a.out, a.csv);
   const CsvOutput csv(a.out, a.csv);
   const studies::CfmMapSummary m =
-      studies::write_cfm_map(spec, csv.hdf5_path(), slow_progress("map cfm " + spec.config));
+      studies::write_cfm_map(spec, csv.hdf5_path(), stoppable_progress("map cfm " + spec.config));
   csv.write({"R", "d", "K1", "K2"});
   if (a.json) {
     print_json(Json{{"out", csv.out_json()},

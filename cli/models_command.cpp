@@ -122,8 +122,7 @@ void run_models_map(const ModelsMapArgs& a) {
   if (!a.models.empty()) spec.models = models_of(a.models);
   spec.cbcm_elements = a.elements;
   spec.chain_elements = a.chain_elements;
-  spec.prbm3r_constants = to_lower(a.constants);
-  (void)Prbm3rConstants::by_name(spec.prbm3r_constants);  // InvalidInput naming the sets
+  spec.prbm3r_constants = prbm3r_constant_set_from_string(a.constants);
   spec.min_seconds = a.min_seconds;
   spec.validate();
   require_out_or_csv(a.out, a.csv);
@@ -131,7 +130,7 @@ void run_models_map(const ModelsMapArgs& a) {
   const CsvOutput csv(a.out, a.csv);
 
   const auto start = std::chrono::steady_clock::now();
-  const studies::ModelMap map = studies::compute_model_map(spec, slow_progress("models map"));
+  const studies::ModelMap map = studies::compute_model_map(spec, stoppable_progress("models map"));
   studies::write_model_map(map, csv.hdf5_path());
   csv.write({"n", "alpha2", spec.boundary == EndCondition::kGuided ? "tip_angle" : "mu"});
   const double seconds =

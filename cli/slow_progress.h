@@ -12,10 +12,10 @@ namespace flexure::cli {
 
 std::function<void(std::size_t done, std::size_t total)> slow_progress(std::string label);
 
-// The progress a program that runs the commands in-process (run_command, command_runner.h: the
-// Python module) wants of every step of their long work, on its own thread, while the object
-// lives. The sink may throw to stop the command (the Python module does on Ctrl-C and when its
-// progress callable raises); only stoppable_progress's hooks call it.
+// The progress run_command's caller (command_runner.h: the Python module) wants of every step of
+// the command's long work, on the command's thread, while the object lives: run_command installs
+// its `progress` argument for the call, as it does its output capture. The sink may throw to stop
+// the command; only stoppable_progress's hooks call it.
 class ProgressSink {
  public:
   explicit ProgressSink(std::function<void(std::size_t done, std::size_t total)> sink);

@@ -33,7 +33,6 @@
 #include "cli/beam_methods.h"
 #include "cli/cli_common.h"
 #include "cli/command_runner.h"
-#include "cli/slow_progress.h"
 #include "flexure/beam/beam_keys.h"
 #include "flexure/beam/beam_problem.h"
 #include "flexure/beam/beam_request.h"
@@ -167,8 +166,9 @@ py::object to_python(const Json& j) {
 // run(args) -> (kind, payload, warnings, exit_code): kind "ok" (payload: the JSON object),
 // "invalid" (InvalidInput: payload the message), "no_convergence" (payload (message, reached)),
 // "error" (anything else). The Python half raises the matching exception. With a `bridge`, the
-// command's stoppable steps (cli/slow_progress.h) call it: a progress callable, and Ctrl-C, which
-// raise their exception here whatever the command did after it (python/object_support.h).
+// command's stoppable steps (run_command's progress, cli/command_runner.h) call it: a progress
+// callable, and Ctrl-C, which raise their exception here whatever the command did after it
+// (python/object_support.h).
 template <class Command>
 py::tuple run_released(Command&& command, ProgressBridge* bridge = nullptr) {
   cli::CommandOutput out;
@@ -177,13 +177,7 @@ py::tuple run_released(Command&& command, ProgressBridge* bridge = nullptr) {
   {
     py::gil_scoped_release release;
     try {
-      if (bridge == nullptr) {
-        out = command();
-      } else {
-        const cli::ProgressSink sink(
-            [bridge](std::size_t done, std::size_t total) { (*bridge)(done, total); });
-        out = command();
-      }
+      out = command();
     } catch (const ProgressBridge::Stopped&) {
       kind = "stopped";  // raised below, with the lock
     } catch (const InvalidInput& e) {
@@ -210,7 +204,12 @@ py::tuple run_released(Command&& command, ProgressBridge* bridge = nullptr) {
 
 py::tuple run(const std::vector<std::string>& args, py::object progress) {
   ProgressBridge bridge(std::move(progress));
-  return run_released([&] { return cli::run_command(args); }, &bridge);
+  return run_released(
+      [&] {
+        return cli::run_command(
+            args, [&bridge](std::size_t done, std::size_t total) { bridge(done, total); });
+      },
+      &bridge);
 }
 
 // beam(...): `flexure beam --json` for keyword values, by the library alone, the same result as

@@ -549,6 +549,17 @@ CfmSynthesisResult synthesize_cfm(const CfmDesignProblem& problem,
   // Step 1: the scan.
   const int scan_points =
       options.scan_points > 0 ? options.scan_points : (n == 1 ? 32 : (n == 2 ? 256 : 1024));
+  const int starts = options.starts > 0 ? options.starts : (n == 2 ? 4 : 3);
+  const int polish = options.polish > 0 ? options.polish : 2;
+  // Progress (SynthesisOptions::progress): one step per scan point and per local run.
+  const std::size_t steps = static_cast<std::size_t>(scan_points) +
+                            views.size() * static_cast<std::size_t>(starts) +
+                            (two_phase ? static_cast<std::size_t>(polish) : 0);
+  std::size_t steps_done = 0;
+  const auto step_done = [&] {
+    ++steps_done;
+    if (options.progress) options.progress(steps_done, steps);
+  };
   constexpr int kBases[] = {2, 3, 5};
   std::vector<Sample> scan;
   scan.reserve(static_cast<std::size_t>(scan_points));
@@ -560,6 +571,7 @@ CfmSynthesisResult synthesize_cfm(const CfmDesignProblem& problem,
     global.all_views = true;
     if (const Sample* p = global.at(y)) scan.push_back(*p);
     global.all_views = false;
+    step_done();
   }
 
   // One local run from a sample in view v: an infeasible start is first brought to feasibility
@@ -577,11 +589,11 @@ CfmSynthesisResult synthesize_cfm(const CfmDesignProblem& problem,
       if (s.run_best) y = s.run_best->y;
     }
     by_test.push_back(run_local(s, y, settings));
+    step_done();
   };
 
   // Step 2: in each view, local runs from the best distinct scan points, with initial steps of
   // about the scan's spacing.
-  const int starts = options.starts > 0 ? options.starts : (n == 2 ? 4 : 3);
   const double spacing = 1.0 / std::pow(static_cast<double>(scan_points), 1.0 / n);
   LocalSettings coarse_settings;
   coarse_settings.algorithm = local;
@@ -640,7 +652,6 @@ CfmSynthesisResult synthesize_cfm(const CfmDesignProblem& problem,
     const double window = problem.objective == DesignObjective::kMaxPcf
                               ? 0.005
                               : (problem.objective == DesignObjective::kMinXi ? 5e-5 : 1e-3);
-    const int polish = options.polish > 0 ? options.polish : 2;
     const Optimum& first = optima.front();
     std::vector<Optimum> chosen;
     for (const Optimum& o : optima) {
@@ -658,6 +669,7 @@ CfmSynthesisResult synthesize_cfm(const CfmDesignProblem& problem,
       if (fine.run_best) fine.known_optima.push_back(fine.run_best->y);
     }
   }
+  if (options.progress && steps_done < steps) options.progress(steps, steps);
   out.evaluations = coarse.evaluations + fine.evaluations;
   out.fine_evaluations = fine.evaluations;
   out.iterations = out.evaluations;

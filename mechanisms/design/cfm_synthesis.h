@@ -187,6 +187,12 @@ struct SynthesisOptions {
   double xtol_rel = 1e-6;         // final stopping test: absolute on log(R), log(K), i.e. relative
   unsigned long seed = 20011208;  // NLopt's random seed (the scan is a fixed sequence)
   bool record_history = false;    // fill CfmSynthesisResult::history (`design cfm --out`)
+  // Called after each scan point of step 1 and each local run of steps 2 and 3 with (done,
+  // total): total = the scan points plus the most local runs steps 2 and 3 can make (fewer are
+  // run where the scan has fewer distinct starts), and (total, total) at the end; done never
+  // decreases. For a progress display; a caller stops a synthesis by throwing from it (the
+  // Python module does on Ctrl-C). Never called from inside NLopt. Empty: none.
+  std::function<void(std::size_t done, std::size_t total)> progress;
   void validate() const;
 };
 

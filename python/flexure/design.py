@@ -33,10 +33,12 @@ def cfm(*, config=None, d=None, objective=None, subclass=None, pcf_min=None, ori
     subclass (the thesis sub-class within 1 %, or None), constraints, evaluations, converged,
     seconds (the synthesis's wall time).
     Raises NoConvergence when no feasible design is found.
-    progress   with model='exact': progress(done, total) after each exact stroke of the search,
-               total the most it can take (1 + runs * 301 with the default evaluation limit;
-               a run that stops early moves done to its end); Ctrl-C or an exception it raises
-               stops it (docs/python.md "Progress and Ctrl-C")
+    progress   progress(done, total) after each scan point and local run of the PRBM synthesis
+               (total: the scan points plus the most local runs; (total, total) at its end) and,
+               with model='exact', then after each exact stroke of the search, total the most it
+               can take (1 + runs * 301 with the default evaluation limit; a run that stops early
+               moves done to its end); Ctrl-C or an exception it raises stops it
+               (docs/python.md "Progress and Ctrl-C")
 
     Example:
       >>> flexure.design.cfm(config="lpp", d=40, objective="min-xi")["R"]   # doctest: +SKIP

@@ -1,4 +1,4 @@
-from typing import Any
+from typing import Any, Callable
 
 def cfm(
     *,
@@ -10,4 +10,5 @@ def cfm(
     K2: float | str | None = ...,
     model: str | None = ...,
     exact_points: int | None = ...,
+    progress: Callable[[int, int], object] | None = ...,
 ) -> dict[str, Any]: ...

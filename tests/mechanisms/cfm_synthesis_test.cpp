@@ -7,6 +7,8 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "flexure/mechanisms/cfm/cfm_model.h"
 #include "flexure/mechanisms/cfm/slider_crank.h"
@@ -151,6 +153,39 @@ TEST(CfmSynthesis, SameSeedSameAnswer) {
   EXPECT_EQ(c.evaluations, d.evaluations);
   EXPECT_EQ(c.fine_evaluations, d.fine_evaluations);
   EXPECT_EQ(c.best.objective, d.best.objective);
+}
+
+// SynthesisOptions::progress: one step per scan point (the first 32 calls, in order), one per
+// local run, (total, total) last with total = 32 scan points + 3 starts counted from the options;
+// the answer is the one without it, and an exception thrown from it stops the synthesis.
+TEST(CfmSynthesis, ProgressCountsScanPointsAndLocalRuns) {
+  const CfmDesignProblem p = min_xi_problem(row("table2.1-1A-a"));
+  SynthesisOptions o;
+  o.scan_points = 32;
+  o.starts = 3;
+  o.coarse_stride = 1;  // one phase: no polish step
+  const CfmSynthesisResult plain = synthesize_cfm(p, o);
+  std::vector<std::pair<std::size_t, std::size_t>> calls;
+  o.progress = [&](std::size_t done, std::size_t total) { calls.emplace_back(done, total); };
+  const CfmSynthesisResult s = synthesize_cfm(p, o);
+  EXPECT_EQ(s.x, plain.x);
+  EXPECT_EQ(s.evaluations, plain.evaluations);
+  ASSERT_GE(calls.size(), 33u);
+  for (std::size_t k = 0; k < 32; ++k) {
+    EXPECT_EQ(calls[k], std::make_pair(k + 1, std::size_t{35}));
+  }
+  for (std::size_t k = 1; k < calls.size(); ++k) {
+    EXPECT_GE(calls[k].first, calls[k - 1].first);
+    EXPECT_EQ(calls[k].second, 35u);
+  }
+  EXPECT_EQ(calls.back(), std::make_pair(std::size_t{35}, std::size_t{35}));
+  EXPECT_LE(calls.size(), 32u + static_cast<std::size_t>(s.starts) + 1u);
+
+  struct Stop {};
+  o.progress = [](std::size_t done, std::size_t) {
+    if (done == 5) throw Stop{};
+  };
+  EXPECT_THROW(synthesize_cfm(p, o), Stop);
 }
 
 // The coarse sampling (CfmOptions::stride) is a subset of the full one with its mean on straight

@@ -1,11 +1,12 @@
 """Progress callables and Ctrl-C on the long calls that had none (docs/python.md "Progress and
 Ctrl-C"): solve_general_prbm and select_stable_points (per recorded point, per grid value),
 refine_design_exact (per exact stroke, against its budget), and the command functions whose work
-stops between steps (flexure.dynamics per frequency, flexure.design.cfm(model="exact") per exact
-stroke, flexure.mechanism.analyze per point of the exact stroke). For each: the steps reach a
-total counted independently, the answer is the one without a callable, and a KeyboardInterrupt
-from the callable (conftest's interrupting_progress) stops the call after the step it raises
-at."""
+stops between steps (flexure.dynamics per frequency, flexure.design.cfm per scan point and local
+run of its PRBM synthesis and, with model="exact", per exact stroke, flexure.mechanism.analyze
+per point of the exact stroke, flexure.map.cfm per block of points). For each: the steps reach
+a total counted independently, the answer is the one without a callable, and a
+KeyboardInterrupt from the callable (conftest's interrupting_progress) stops the call after the
+step it raises at."""
 import math
 import pathlib
 import warnings
@@ -131,6 +132,10 @@ def test_exact_cfm_design_reports_each_stroke(interrupting_progress):
     runs = r["exact_starts"]
     assert runs >= 2
     total = 1 + runs * (300 + 1)
+    # First the PRBM synthesis (its own total, ending at it), then the exact strokes.
+    first_exact = next(i for i, (_, t) in enumerate(calls) if t == total)
+    synthesis, calls = calls[:first_exact], calls[first_exact:]
+    assert synthesis and synthesis[-1][0] == synthesis[-1][1] != total
     assert all(t == total for _, t in calls)
     dones = [d for d, _ in calls]
     assert dones == sorted(dones) and dones[0] == 1 and dones[-1] == total
@@ -142,6 +147,26 @@ def test_exact_cfm_design_reports_each_stroke(interrupting_progress):
     with pytest.raises(KeyboardInterrupt):
         flexure.design.cfm(**args, progress=stop)
     assert stop.seen == [1, 2]
+
+
+def test_prbm_cfm_design_reports_its_scan_and_local_runs(interrupting_progress):
+    # One phase (coarse_stride 1: no polish), one region (lpp: R alone): 40 scan points and at
+    # most 2 local runs, so 42 steps; the scan's points come first, in order.
+    args = dict(config="lpp", d=40, objective="max-pcf", scan_points=40, starts=2,
+                coarse_stride=1)
+    plain = flexure.design.cfm(**args)
+    calls = []
+    r = flexure.design.cfm(**args, progress=lambda d, t: calls.append((d, t)))
+    assert calls[:40] == [(k, 42) for k in range(1, 41)]
+    dones = [d for d, _ in calls]
+    assert dones == sorted(dones) and calls[-1] == (42, 42) and len(calls) <= 43
+    for key in ("R", "percent_constant_force", "evaluations"):
+        assert r[key] == plain[key], key
+
+    stop = interrupting_progress(3)
+    with pytest.raises(KeyboardInterrupt):
+        flexure.design.cfm(**args, progress=stop)
+    assert stop.seen == [1, 2, 3]
 
 
 def test_mechanism_analyze_reports_the_exact_stroke(interrupting_progress):
@@ -160,6 +185,28 @@ def test_mechanism_analyze_reports_the_exact_stroke(interrupting_progress):
         flexure.mechanism.analyze("1A-lpp", points=20, method="exact", progress=stop)
     assert stop.seen == [1, 2]
     assert math.isfinite(flexure.mechanism.analyze("1A-lpp", points=5)["mean_force_exact"])
+
+
+def test_cfm_map_reports_its_blocks_and_writes_nothing_when_stopped(tmp_path, interrupting_progress):
+    # 40 points of the exact model in blocks of 16 (cfm_map_file.cpp): 16, 32, 40 of 40.
+    args = dict(config="lpp", R="0.5:1.5:40", d=40, model="exact", exact_points=10)
+    plain = flexure.map.cfm(**args, out=str(tmp_path / "plain.h5"))
+    calls = []
+    r = flexure.map.cfm(**args, out=str(tmp_path / "progress.h5"),
+                        progress=lambda d, t: calls.append((d, t)))
+    assert calls == [(16, 40), (32, 40), (40, 40)]
+    assert r["ok"] == plain["ok"] == 40
+    key = "percent_constant_force_exact"
+    np.testing.assert_array_equal(flexure.read(str(tmp_path / "progress.h5"))[key],
+                                  flexure.read(str(tmp_path / "plain.h5"))[key])
+
+    stopped = tmp_path / "stopped"
+    stopped.mkdir()
+    stop = interrupting_progress(16)
+    with pytest.raises(KeyboardInterrupt):
+        flexure.map.cfm(**args, out=str(stopped / "map.h5"), progress=stop)
+    assert stop.seen == [16]
+    assert list(stopped.iterdir()) == []  # written whole at the end or not at all
 
 
 def test_sweep_reports_its_points_and_writes_nothing_when_stopped(tmp_path):
