@@ -5,6 +5,7 @@ from typing import Any, Callable, Sequence, Union
 import numpy as np
 import numpy.typing as npt
 
+from . import cli as cli
 from . import design as design
 from . import map as map
 from . import mechanism as mechanism

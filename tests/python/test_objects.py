@@ -300,3 +300,20 @@ def test_chained_bcm_object_takes_the_segments_ea():
     assert abs(r.axial_stiffness / (12 * (L / h) ** 2) - 1) < 1e-9
     with pytest.raises(flexure.InvalidInput, match="EA"):
         flexure.ChainedBcmSolver(flexure.ChainedBcmSolver.Options(slenderness=46.667)).solve(chain)
+
+
+def test_command_functions_live_under_flexure_cli_and_keep_their_names():
+    # Issue 28 item 7: the command functions are flexure.cli's; the first names are the same
+    # function objects, so existing scripts are unchanged.
+    import flexure.cli
+    for name in ("beam", "path", "sweep", "cfm", "dynamics", "bench", "validate", "materials",
+                 "read"):
+        assert getattr(flexure.cli, name) is getattr(flexure, name), name
+    for name in ("design", "mechanism", "prbm", "map"):
+        assert getattr(flexure.cli, name) is getattr(flexure, name), name
+    assert flexure.cli.design.cfm is flexure.design.cfm
+    assert all(hasattr(flexure.cli, n) for n in flexure.cli.__all__)
+    # The command function and the solver object answer Howell's example 2.9.2 alike.
+    by_command = flexure.cli.beam(alpha2=HOWELL_ALPHA2, method="elliptic")
+    assert abs(by_command["theta0"] - 1.0) < 1e-6
+    assert abs(by_command["a_over_l"] - HOWELL_A) < 1e-7
