@@ -132,7 +132,8 @@ design::MechanismSpec make_spec(const DesignMechanismArgs& a, mechanism::ForceOf
     m.endurance_limit = g.fatigue_strength;
     m.endurance_cycles = g.fatigue_cycles;
     m.ductile = g.ductile;
-    if (!*a.yield_option && g.static_strength()) s.yield_strength = g.static_strength();
+    if (!*a.yield_option && g.static_strength()) s.material.yield_strength = g.static_strength();
+    s.material.density = g.density;
   }
   if (!a.E.empty()) {
     const io::Quantity E = io::parse_quantity(a.E, Dimension::kStress, "--E");
@@ -146,13 +147,15 @@ design::MechanismSpec make_spec(const DesignMechanismArgs& a, mechanism::ForceOf
     m.material.E = E.si;
   }
   // The plate modulus (docs/plate-modulus.md): the strips are sized with E/(1 - nu^2).
-  s.E = plate_choice(a, m.material_id).effective_E;
+  const ModulusChoice modulus = plate_choice(a, m.material_id);
+  s.material.E = modulus.effective_E;
+  if (modulus.nu) s.material.nu = *modulus.nu;
   if (*a.yield_option) {
-    s.yield_strength =
+    s.material.yield_strength =
         io::parse_quantity(a.yield_strength, Dimension::kStress, "--yield-strength").si;
   }
   a.fatigue_flags.apply_strengths(m);
-  s.material = m.material_id;
+  s.material_id = m.material_id;
   s.ultimate_strength = m.ultimate_strength;
   s.endurance_limit = m.endurance_limit;
   s.endurance_cycles = m.endurance_cycles;
@@ -408,7 +411,7 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
       {"minimize", args.minimize.empty() ? Json(nullptr) : Json(args.minimize)},
       {"section_bounds", bounds_json(spec.bounds)},
       {"force_tolerance_percent", 100.0 * spec.force_tolerance},
-      {"material", spec.material.empty() ? Json(nullptr) : Json(spec.material)},
+      {"material", spec.material_id.empty() ? Json(nullptr) : Json(spec.material_id)},
       {"modulus_rule", modulus.modulus_rule()},
       {"effective_E", modulus.effective_E},
       {"modulus", Json::array({modulus_choice_json(modulus)})},
@@ -504,7 +507,7 @@ void run_design_mechanism(const DesignMechanismArgs& args) {
         "safety factor {:g} (modified Goodman, S_e of {}; docs/fatigue.md)\n",
         *r.sizing_safety_factor,
         spec.safety_factor,
-        spec.material.empty() ? std::string("the given S_e'") : spec.material);
+        spec.material_id.empty() ? std::string("the given S_e'") : spec.material_id);
   }
   fmt::print(
       "{} feasible design{} ({} rejected), {}; forces of {}; safety factor {:g} by the {} "

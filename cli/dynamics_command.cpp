@@ -211,7 +211,7 @@ void run_dynamics(const DynamicsArgs& args) {
              {"csv", csv.wanted() ? Json(csv.csv_path()) : Json(nullptr)},
              {"force_of", force_of_label},
              {"spring_rule", d.spring_rule ? Json(to_string(*d.spring_rule)) : Json(nullptr)},
-             {"material", d.material ? Json(*d.material) : Json(nullptr)},
+             {"material", d.material ? Json(d.material_id) : Json(nullptr)},
              {"spring_constants", d.k},
              {"stroke", motion.stroke},
              {"preload", motion.preload},

@@ -266,7 +266,7 @@ GeneralMechanism parse_general_mechanism_toml(const std::string& text, const std
     // A missing section is left at 0 for validate(), which names it as such.
     f.width = r.number("width", Dimension::kLength, false).value_or(0.0);
     f.thickness = r.number("thickness", Dimension::kLength, false).value_or(0.0);
-    f.youngs_modulus = r.number("E", Dimension::kStress, false).value_or(0.0);
+    f.material.E = r.number("E", Dimension::kStress, false).value_or(0.0);
     // E from the flexure's material, else the file's; a flexure's own E replaces the file's
     // material (a flexure of another stock), but not its own material (give one of the two).
     const MaterialGrade* material = file_material;
@@ -277,8 +277,8 @@ GeneralMechanism parse_general_mechanism_toml(const std::string& text, const std
       material = material_of(*n, r.item() + ".material");
     }
     if (material != nullptr && t->get("E") == nullptr) {
-      f.youngs_modulus = material->E;
-      f.material = material->id;
+      f.material = material->material();  // E, nu, S_y, density of the library's row
+      f.material_id = material->id;
     }
     f.length = r.number("length", Dimension::kLength, false).value_or(0.0);
     const std::string prbm = r.string("prbm", false).value_or("small-length");

@@ -85,7 +85,7 @@ std::string general_mechanism_to_toml(const GeneralMechanism& m, const std::stri
   for (const Flexure& f : m.flexures) {
     out << "\n[[flexure]]\nname = " << quoted(f.name) << "\na = " << quoted(f.a.text())
         << "\nb = " << quoted(f.b.text()) << "\nwidth = " << number(f.width)
-        << "\nthickness = " << number(f.thickness) << "\nE = " << number(f.youngs_modulus)
+        << "\nthickness = " << number(f.thickness) << "\nE = " << number(f.material.E)
         << "\nprbm = " << quoted(std::string(prbm_kind_name(f.prbm))) << "\n";
     if (f.length > 0.0) out << "length = " << number(f.length) << "\n";
     if (f.model != FlexureModel::kPrbm) {

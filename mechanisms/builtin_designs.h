@@ -147,9 +147,11 @@ struct CfsmDesign {
   double width_b = 0.0;          // flexure width, m
   std::array<double, 3> h{};     // flexure thicknesses, m (0 for a pin)
   std::array<double, 3> l{};     // flexure lengths, m (0 for a pin)
-  double E = 0.0;                // Young's modulus, Pa
-  double F_nom_paper = 0.0;      // Table 6 nominal force of the whole mechanism, N (0: none)
-  double Phi_paper = 0.0;        // Table 6 mean non-dimensional force (0: not printed)
+  // The strips' material as the library's one Material: Table 5's E (Pa) alone (the paper gives
+  // no nu, yield strength or density; modified_design adds kModifiedYieldStrength).
+  Material material;
+  double F_nom_paper = 0.0;  // Table 6 nominal force of the whole mechanism, N (0: none)
+  double Phi_paper = 0.0;    // Table 6 mean non-dimensional force (0: not printed)
 };
 
 // The nine designs with a Table 5 column, in the paper's order.

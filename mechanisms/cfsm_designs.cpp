@@ -46,7 +46,7 @@ std::vector<CfsmDesign> make_designs() {
       x.l[p] = t5.number_or(i, fmt::format("L{}", p + 1), 0.0) * mm;
     }
     x.width_b = t5.number(i, "b") * mm;
-    x.E = t5.number(i, "E") * GPa;
+    x.material.E = t5.number(i, "E") * GPa;
     x.F_nom_paper = t6.number(i, "F_nom");
     x.Phi_paper = t6.number_or(i, "Phi", 0.0);
     d.push_back(x);

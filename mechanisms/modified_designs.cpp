@@ -278,7 +278,7 @@ MechanismDesign modified_design(const ModifiedConfiguration& c, SpringRule rule)
   MechanismDesign d = base_design(c, rule);
   d.r2 = t.r2;
   d.r3 = t.r3;
-  d.material.E = t.E;
+  d.material.E = t.material.E;
   for (int i = 0; i < 3; ++i) {
     JointDesign& j = d.joints[i];
     if (j.type == PivotType::kPin) continue;

@@ -71,9 +71,10 @@ void bind_spec(py::module_& m) {
                             "the sizes (`flexure design mechanism`'s flags; docs/design.md).")
       .def(py::init([](double force,
                        double stroke,
-                       double E,
+                       std::optional<double> E,
                        RangeArg length,
                        std::optional<double> yield_strength,
+                       std::optional<Material> material,
                        double safety_factor,
                        RangeArg width,
                        RangeArg thickness,
@@ -91,9 +92,22 @@ void bind_spec(py::module_& m) {
              MechanismSpec s;
              s.force = force;
              s.stroke = stroke;
-             s.E = E;
+             // The material as a Material, or as E (and S_y) alone; E or S_y beside a Material
+             // would be a second value for the same field.
+             if (material) {
+               if (E || yield_strength) {
+                 throw InvalidInput(
+                     "MechanismSpec: give the material either as material=Material(...) or as "
+                     "E= (and yield_strength=), not both");
+               }
+               s.material = *material;
+             } else if (E) {
+               s.material.E = *E;
+               s.material.yield_strength = yield_strength;
+             } else {
+               throw InvalidInput("MechanismSpec: give the material: E= (Pa) or material=");
+             }
              s.length = range_of(length);
-             s.yield_strength = yield_strength;
              s.safety_factor = safety_factor;
              s.width = range_of(width);
              s.thickness = range_of(thickness);
@@ -114,9 +128,10 @@ void bind_spec(py::module_& m) {
            py::kw_only(),
            py::arg("force"),
            py::arg("stroke"),
-           py::arg("E"),
+           py::arg("E") = std::optional<double>(),
            py::arg("length"),
            py::arg("yield_strength") = std::optional<double>(),
+           py::arg("material") = std::optional<Material>(),
            py::arg("safety_factor") = 1.0,
            py::arg("width") = py::none(),
            py::arg("thickness") = py::none(),
@@ -131,13 +146,17 @@ void bind_spec(py::module_& m) {
            py::arg("max_width_to_thickness") = SectionBounds{}.max_width_to_thickness,
            py::arg("max_width_to_length") = SectionBounds{}.max_width_to_length,
            py::arg("minimize") = SizeObjective::kNone,
-           "force: N (one half, eq. 8.2's F); stroke: m; E: Pa; length, width, thickness: m, a "
+           "force: N (one half, eq. 8.2's F); stroke: m; E: Pa (or material: a Material with E, "
+           "nu, yield_strength, density); length, width, thickness: m, a "
            "value or (lower, upper), width and thickness None for free; force_tolerance: a "
            "fraction (0.10 = 10 %). Validated: a bad field raises InvalidInput naming it.")
       .def_readonly("force", &MechanismSpec::force)
       .def_readonly("stroke", &MechanismSpec::stroke)
-      .def_readonly("E", &MechanismSpec::E)
-      .def_readonly("yield_strength", &MechanismSpec::yield_strength)
+      .def_property_readonly("E", [](const MechanismSpec& s) { return s.material.E; })
+      .def_property_readonly("yield_strength",
+                             [](const MechanismSpec& s) { return s.material.yield_strength; })
+      .def_readonly("material", &MechanismSpec::material, "The strips' Material.")
+      .def_readonly("material_id", &MechanismSpec::material_id)
       .def_readonly("safety_factor", &MechanismSpec::safety_factor)
       .def_property_readonly(
           "length",
@@ -158,7 +177,7 @@ void bind_spec(py::module_& m) {
         return fmt::format("MechanismSpec(force={}, stroke={}, E={}, length=({}, {}))",
                            s.force,
                            s.stroke,
-                           s.E,
+                           s.material.E,
                            s.length.lower,
                            s.length.upper);
       });

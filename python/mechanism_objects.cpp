@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -120,7 +121,7 @@ void bind_description(py::module_& m) {
              const std::string& b,
              double width,
              double thickness,
-             double E,
+             std::optional<double> E,
              PrbmKind prbm,
              FlexureModel model,
              double tolerance,
@@ -128,9 +129,16 @@ void bind_description(py::module_& m) {
              double curvature,
              double length,
              double width_tip,
-             double thickness_tip) -> GM& {
-            g.flexure(name, a, b, width, thickness, E, prbm);
+             double thickness_tip,
+             std::optional<Material> material) -> GM& {
+            // E alone, or a whole Material (E, nu, S_y, density); not both.
+            if (E.has_value() == material.has_value()) {
+              throw InvalidInput("flexure '" + name +
+                                 "': give its material as E= (Pa) or as material=, one of them");
+            }
+            g.flexure(name, a, b, width, thickness, E ? *E : material->E, prbm);
             Flexure& f = g.flexures.back();
+            if (material) f.material = *material;
             f.model = model;
             f.tolerance = tolerance;
             f.elements = elements;
@@ -146,7 +154,7 @@ void bind_description(py::module_& m) {
           py::kw_only(),
           py::arg("width"),
           py::arg("thickness"),
-          py::arg("E"),
+          py::arg("E") = std::optional<double>(),
           py::arg("prbm") = PrbmKind::kSmallLengthPivot,
           py::arg("model") = FlexureModel::kPrbm,
           py::arg("tolerance") = 0.0,
@@ -155,9 +163,11 @@ void bind_description(py::module_& m) {
           py::arg("length") = 0.0,
           py::arg("width_tip") = 0.0,
           py::arg("thickness_tip") = 0.0,
+          py::arg("material") = std::optional<Material>(),
           self,
           "A flexure from point a to point b ('body.point'): width b and thickness h (m), Young's "
-          "modulus E (Pa), its PRBM element and its model under the mixed model; its rest shape: "
+          "modulus E (Pa) or a material (a Material), its PRBM element and its model under the "
+          "mixed model; its rest shape: "
           "a stress-free curvature (1/m: an arc from a to b of the given length, or the minor arc) "
           "and a taper to width_tip, thickness_tip at b (m; 0: none).")
       .def(

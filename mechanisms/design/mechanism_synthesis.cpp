@@ -139,7 +139,7 @@ bool needs_full_search(const MechanismSpec& spec) {
 LengthProbe probe(const MechanismSpec& spec, const DimensionedDesign& d) {
   LengthProbe p;
   p.feasible = d.feasible;
-  if (!spec.yield_strength || spec.stress_rule != StressRule::kComputed) return p;
+  if (!spec.material.yield_strength || spec.stress_rule != StressRule::kComputed) return p;
   if (d.feasible) {
     const double sf = std::min(d.safety_factor_prbm, d.safety_factor_exact.value_or(1e300));
     if (sf > 0.0) p.stress_ratio = spec.safety_factor / sf;
@@ -261,7 +261,7 @@ double round_up_4(double m) {
 // runs the design's own analysis (exact where spec.exact), as `mechanism analyze` would.
 void apply_spec_material(const MechanismSpec& spec, DimensionedDesign& out) {
   mechanism::MechanismDesign& d = out.design;
-  d.material_id = spec.material;
+  d.material_id = spec.material_id;
   d.ultimate_strength = spec.ultimate_strength;
   d.endurance_limit = spec.endurance_limit;
   d.endurance_cycles = spec.endurance_cycles;
@@ -297,8 +297,8 @@ void apply_spec_material(const MechanismSpec& spec, DimensionedDesign& out) {
 void MechanismSpec::validate() const {
   check_positive(force, "force");
   check_positive(stroke, "stroke");
-  check_positive(E, "E");
-  if (yield_strength) check_positive(*yield_strength, "yield strength");
+  check_positive(material.E, "E");
+  if (material.yield_strength) check_positive(*material.yield_strength, "yield strength");
   check_positive(safety_factor, "safety factor");
   // Physical ranges wide enough for any mechanism (MEMS to machinery) that keep every derived
   // size finite in double precision.
@@ -310,8 +310,9 @@ void MechanismSpec::validate() const {
   };
   within(force, 1e-9, 1e9, "force", "N");
   within(stroke, 1e-9, 1e3, "stroke", "m");
-  within(E, 1e3, 1e13, "E", "Pa");
-  if (yield_strength) within(*yield_strength, 1.0, 1e12, "yield strength", "Pa");
+  within(material.E, 1e3, 1e13, "E", "Pa");
+  if (material.yield_strength) within(*material.yield_strength, 1.0, 1e12, "yield strength", "Pa");
+  material.validate();  // nu and the density, naming Material's field
   within(safety_factor, 1e-3, 1e3, "safety factor", "");
   for (const auto& [r, what] : {std::pair{&length, "length range"},
                                 std::pair{&width, "width range"},
@@ -323,7 +324,7 @@ void MechanismSpec::validate() const {
   check_range(length, "length range");
   check_range(width, "width range", true);
   check_range(thickness, "thickness range", true);
-  if (std::isinf(width.upper) && std::isinf(thickness.upper) && !yield_strength) {
+  if (std::isinf(width.upper) && std::isinf(thickness.upper) && !material.yield_strength) {
     throw InvalidInput(
         "with the width free, the thickness needs a bound: give --width-range, "
         "--thickness-range or --yield-strength");
@@ -338,9 +339,10 @@ void MechanismSpec::validate() const {
       throw InvalidInput(fmt::format(
           "the fatigue check needs the material's ultimate strength S_ut and endurance limit S_e'"
           "{} (Howell eqs. 3.74, 3.110)",
-          material.empty()
+          material_id.empty()
               ? std::string()
-              : fmt::format(" ('{}' lacks {})", material, !ultimate_strength ? "S_ut" : "S_e'")));
+              : fmt::format(
+                    " ('{}' lacks {})", material_id, !ultimate_strength ? "S_ut" : "S_e'")));
     }
   }
   if (points < 2 || points > 10000) {
@@ -381,9 +383,9 @@ DesignScreens design_screens(const MechanismSpec& spec) {
   }
   s.stroke_percent_min = stroke_percent_for(spec.stroke, spec.length.upper, lambda_low);
   s.stroke_percent_max = stroke_percent_for(spec.stroke, spec.length.lower, lambda_high);
-  if (!spec.yield_strength) return s;
-  s.omega = *spec.yield_strength / spec.E;  // eq. 4.18
-  constexpr double kScreenExponent = 0.5;   // n of the thesis's screens (Table 8.2, ex. 2, 3)
+  if (!spec.material.yield_strength) return s;
+  s.omega = *spec.material.yield_strength / spec.material.E;  // eq. 4.18
+  constexpr double kScreenExponent = 0.5;  // n of the thesis's screens (Table 8.2, ex. 2, 3)
   if (spec.thickness.lower > 0.0) {
     s.M_max = stress_screen_M(s.omega,
                               spec.safety_factor,
@@ -412,8 +414,11 @@ DesignScreens design_screens(const MechanismSpec& spec) {
   const double d = stroke_percent_for(spec.stroke, spec.length.upper, m.lambda);
   s.lpp_thickness_max = max_primary_thickness(
       s.omega, spec.safety_factor, m.lambda, lpp.M, lpp.n, d, spec.length.upper);
-  s.lpp_force_max = design_force(
-      force_coefficient(m), spec.E, spec.width.upper, *s.lpp_thickness_max, spec.length.upper);
+  s.lpp_force_max = design_force(force_coefficient(m),
+                                 spec.material.E,
+                                 spec.width.upper,
+                                 *s.lpp_thickness_max,
+                                 spec.length.upper);
   s.Psi_min = spec.force / *s.lpp_force_max;
   return s;
 }
@@ -432,7 +437,7 @@ MechanismDesignReport size_designs(const MechanismSpec& spec) {
     MechanismSpec sized = spec;
     sized.fatigue_safety_factor = spec.safety_factor;
     std::optional<double> raised;
-    if (spec.yield_strength) {
+    if (spec.material.yield_strength) {
       FatigueMaterial m;
       m.ultimate_strength = *spec.ultimate_strength;
       m.uncorrected_strength = *spec.endurance_limit;
@@ -442,7 +447,7 @@ MechanismDesignReport size_designs(const MechanismSpec& spec) {
       const double allowed = 2.0 * s.corrected * m.ultimate_strength /
                              ((s.corrected + m.ultimate_strength) * spec.safety_factor) /
                              s.stress_factor;
-      raised = std::max(spec.safety_factor, *spec.yield_strength / allowed);
+      raised = std::max(spec.safety_factor, *spec.material.yield_strength / allowed);
       sized.safety_factor = *raised;
     }
     MechanismDesignReport r = size_designs(sized);
@@ -695,7 +700,7 @@ DimensionedDesign refine_against_exact(const MechanismSpec& spec,
   out.force_prbm = a->prbm.mean_force;
   out.percent_constant_force_prbm = a->prbm.percent_constant_force;
   out.required_yield_strength_prbm = spec.safety_factor * a->prbm.max_stress_all;
-  out.primary_stress = primary_stress(spec.E,
+  out.primary_stress = primary_stress(spec.material.E,
                                       m.lambda,
                                       prbm_design.M,
                                       prbm_design.n,
@@ -703,7 +708,7 @@ DimensionedDesign refine_against_exact(const MechanismSpec& spec,
                                       out.thickness[p - 1],
                                       out.l_tot);
   out.required_yield_strength = spec.safety_factor * out.primary_stress;
-  if (!spec.yield_strength) {
+  if (!spec.material.yield_strength) {
     d.material.yield_strength =
         spec.stress_rule == StressRule::kThesis
             ? *out.required_yield_strength_exact
@@ -716,15 +721,15 @@ DimensionedDesign refine_against_exact(const MechanismSpec& spec,
   out.flexure_volume = flexure_volume(d);
   out.width_to_thickness = max_width_to_thickness(family, h_primary);
   out.width_to_length = max_width(family, h_primary) / out.l_tot;
-  if (spec.stress_rule == StressRule::kThesis && spec.yield_strength &&
-      *out.required_yield_strength_exact > *spec.yield_strength) {
+  if (spec.stress_rule == StressRule::kThesis && spec.material.yield_strength &&
+      *out.required_yield_strength_exact > *spec.material.yield_strength) {
     reject(out,
            fmt::format("stress: the refined design needs S_y >= {:.4g} MPa by its exact "
                        "stresses at SF {:g}; the material has {:.4g} MPa",
                        *out.required_yield_strength_exact * 1e-6,
                        spec.safety_factor,
-                       *spec.yield_strength * 1e-6),
-           *out.required_yield_strength_exact / *spec.yield_strength);
+                       *spec.material.yield_strength * 1e-6),
+           *out.required_yield_strength_exact / *spec.material.yield_strength);
     return out;
   }
   out.feasible = true;

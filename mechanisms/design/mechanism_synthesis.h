@@ -82,9 +82,11 @@ struct MechanismSpec {
   // What the user's force was the force of (mechanism.h): labels the designs (their notes and the
   // `force_of` their files carry); `force` above is one half's whatever it says.
   mechanism::ForceOf force_of = mechanism::ForceOf::kOneHalf;
-  double stroke = 0.0;                   // m, slider travel (eq. 8.6's disp)
-  double E = 0.0;                        // Pa
-  std::optional<double> yield_strength;  // Pa; without it the design reports what it needs
+  double stroke = 0.0;  // m, slider travel (eq. 8.6's disp)
+  // The strips' material as the library's one Material (solver/common/section.h), copied onto
+  // every design (MechanismDesign::material): E (Pa; the effective modulus once the plate rule is
+  // applied), S_y (Pa; without it the design reports the strength it needs), nu and the density.
+  Material material;
   double safety_factor = 1.0;
   LengthRange length;  // l_tot, total length of one half's links (eq. 5.1)
   // b and h of every flexure; free_range() where the specification leaves them open (the width
@@ -106,9 +108,10 @@ struct MechanismSpec {
   double force_tolerance = 0.10;
   SectionBounds bounds;
   SizeObjective minimize = SizeObjective::kNone;
-  // The material beyond E and S_y (a data/materials.csv id or given values), written onto every
-  // design (MechanismDesign's fields of the same names; materials_fatigue.h).
-  std::string material;
+  // Where the material came from and what fatigue needs beyond Material (a data/materials.csv id,
+  // empty when given by value; S_ut, S_e' or S_f'), written onto every design (MechanismDesign's
+  // fields of the same names; materials_fatigue.h).
+  std::string material_id;
   std::optional<double> ultimate_strength, endurance_limit, endurance_cycles;
   bool ductile = true;
   // Set: keep only designs whose modified Goodman safety factor over rest -> full stroke -> rest

@@ -164,7 +164,7 @@ StressedSection choose_section(const MechanismSpec& spec,
     return true;
   };
   const bool computed = spec.stress_rule == StressRule::kComputed;
-  if (!computed || !spec.yield_strength) {
+  if (!computed || !spec.material.yield_strength) {
     double t = policy == SectionPolicy::kWidest ? I.lo : I.hi;
     if (!computed && t_thesis && policy == SectionPolicy::kThickest) {
       t = std::max(I.lo, std::min(I.hi, *t_thesis));
@@ -185,8 +185,8 @@ StressedSection choose_section(const MechanismSpec& spec,
   }
 
   // kComputed with a yield strength: sigma <= S = S_y/SF by the PRBM and the exact stresses.
-  const double SF = spec.safety_factor, S = *spec.yield_strength / SF;
-  const double S_y = *spec.yield_strength;
+  const double SF = spec.safety_factor, S = *spec.material.yield_strength / SF;
+  const double S_y = *spec.material.yield_strength;
   // The thickest section aims a rounding below the allowed stress, so that its safety factor
   // reads no less than the one asked for.
   const double S_aim = S * (1.0 - 1e-9);
@@ -316,9 +316,12 @@ mechanism::MechanismDesign SubclassSizer::geometry(double l) const {
   const double r_tot = l / model_.lambda;
   d.r2 = r_tot / (model_.R + 1.0);
   d.r3 = model_.R * d.r2;
-  d.material.E = spec_.E;
+  // The specification's material; nu stays the design's own (MechanismDesign::nu_given: the
+  // caller gives it with the plate rule it belongs to).
+  d.material.E = spec_.material.E;
   d.material.yield_strength =
-      spec_.yield_strength.value_or(1.0);  // set once the stresses are known
+      spec_.material.yield_strength.value_or(1.0);  // set once the stresses are known
+  d.material.density = spec_.material.density;
   d.stroke = spec_.stroke;
   d.force_of = spec_.force_of;
   for (int i = 0; i < 3; ++i) d.joints[i].type = cfg.pivots[i];
@@ -338,7 +341,7 @@ mechanism::MechanismDesign SubclassSizer::geometry(double l) const {
 SectionFamily SubclassSizer::family(const mechanism::MechanismDesign& g, double l) const {
   SectionFamily f;
   // Eq. 8.2: F = c E b_p h_p^3/l_tot^2.
-  f.K = spec_.force * l * l / (force_coefficient(model_).c * spec_.E);
+  f.K = spec_.force * l * l / (force_coefficient(model_).c * spec_.material.E);
   f.tau = tau_;
   f.w = w_;
   for (int i = 0; i < 3; ++i) {
@@ -376,7 +379,7 @@ DimensionedDesign SubclassSizer::at(double l,
   out.section_rule = section_rule_;
   const cfm::CfmResult& m = model_;
   const double lambda = m.lambda;
-  const double E = spec.E, F = spec.force;
+  const double E = spec.material.E, F = spec.force;
   const bool thesis = spec.stress_rule == StressRule::kThesis;
 
   // The stroke first (eq. 8.6).
@@ -394,8 +397,8 @@ DimensionedDesign SubclassSizer::at(double l,
   }
   // Thesis Method 1 per sub-class (eqs. 8.5, 8.17): even the thinnest primary flexure must stay
   // below S_y/SF by eq. 8.5.
-  if (thesis && spec.yield_strength && spec.thickness.lower > 0.0) {
-    const double omega = *spec.yield_strength / E;
+  if (thesis && spec.material.yield_strength && spec.thickness.lower > 0.0) {
+    const double omega = *spec.material.yield_strength / E;
     const double h_min = spec.thickness.lower;
     const double M_max =
         stress_screen_M(omega, spec.safety_factor, lambda, out.n, h_min, out.stroke_percent, l);
@@ -446,9 +449,14 @@ DimensionedDesign SubclassSizer::at(double l,
     return out;
   }
   std::optional<double> t_thesis;
-  if (thesis && spec.yield_strength) {
-    t_thesis = max_primary_thickness(
-        *spec.yield_strength / E, spec.safety_factor, lambda, out.M, out.n, out.stroke_percent, l);
+  if (thesis && spec.material.yield_strength) {
+    t_thesis = max_primary_thickness(*spec.material.yield_strength / E,
+                                     spec.safety_factor,
+                                     lambda,
+                                     out.M,
+                                     out.n,
+                                     out.stroke_percent,
+                                     l);
   }
   const bool exact = spec.exact && depth == SizingDepth::kFull;
   // Under the thesis's rule the exact model only reports: it runs after eq. 8.5 passed.
@@ -469,19 +477,19 @@ DimensionedDesign SubclassSizer::at(double l,
   out.primary_stress = primary_stress(E, lambda, out.M, out.n, out.stroke_percent, h, l);
   out.required_yield_strength = spec.safety_factor * out.primary_stress;
   out.required_yield_strength_prbm = spec.safety_factor * s.prbm.max_stress_all;
-  if (thesis && spec.yield_strength &&
-      out.required_yield_strength > *spec.yield_strength * (1.0 + kSlack)) {
+  if (thesis && spec.material.yield_strength &&
+      out.required_yield_strength > *spec.material.yield_strength * (1.0 + kSlack)) {
     reject(out,
            fmt::format("stress: needs S_y >= {:.4g} MPa at SF {:g} (eq. 8.5), the material has "
                        "{:.4g} MPa; the primary flexure would have to be h <= {} (has {}{})",
                        out.required_yield_strength * 1e-6,
                        spec.safety_factor,
-                       *spec.yield_strength * 1e-6,
+                       *spec.material.yield_strength * 1e-6,
                        mm(*t_thesis),
                        mm(h),
                        *t_thesis < I.lo ? fmt::format(", the least that {} allows", I.lo_reason)
                                         : std::string()),
-           out.required_yield_strength / *spec.yield_strength,
+           out.required_yield_strength / *spec.material.yield_strength,
            LengthCure::kLonger);
     return out;
   }
@@ -522,10 +530,10 @@ DimensionedDesign SubclassSizer::at(double l,
   }
   // Without a given yield strength the design carries the strength it needs by every stress the
   // models compute, so that its file analyses without yielding.
-  d.material.yield_strength =
-      spec.yield_strength.value_or(std::max({out.required_yield_strength,
-                                             out.required_yield_strength_prbm,
-                                             out.required_yield_strength_exact.value_or(0.0)}));
+  d.material.yield_strength = spec.material.yield_strength.value_or(
+      std::max({out.required_yield_strength,
+                out.required_yield_strength_prbm,
+                out.required_yield_strength_exact.value_or(0.0)}));
   out.force_prbm = s.prbm.mean_force;
   out.percent_constant_force_prbm = s.prbm.percent_constant_force;
   out.safety_factor_prbm = *d.material.yield_strength / s.prbm.max_stress_all;

@@ -302,10 +302,12 @@ struct DynamicsDesign {
   double m_slider = 0.0;                          // the one slider, kg
   std::array<double, 3> k{};                      // torsion springs of one half at pivots 1-3, N m
   std::optional<DynamicsSpringRule> spring_rule;  // none: a thesis design's one rule (above)
-  double F_nom_paper = 0.0;             // Table 6 F_Nom of the whole mechanism, N (0: none)
-  std::optional<double> stroke;         // the design's own stroke, m (a TOML file's)
-  std::optional<std::string> material;  // the material whose E set the springs (--material)
-  double E = 0.0;                       // that modulus, Pa (0: no material given)
+  double F_nom_paper = 0.0;      // Table 6 F_Nom of the whole mechanism, N (0: none)
+  std::optional<double> stroke;  // the design's own stroke, m (a TOML file's)
+  // The material whose E set the springs (--material: a row of data/materials.csv) as the
+  // library's one Material (solver/common/section.h), and its id; empty: none was given.
+  std::optional<Material> material;
+  std::string material_id;
 };
 
 // The optional [dynamics] table of a mechanism TOML file (io/toml_files.h): what a dimensional

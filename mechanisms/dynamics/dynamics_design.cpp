@@ -72,8 +72,8 @@ DynamicsDesign builtin_dynamics_design(const std::string& name,
         mechanism::modified_design(mechanism::find_modified_configuration(t.name), *rule);
     if (material != nullptr) {
       m.material.E = material->E;  // k = EI/L and its factors (modified_springs.h) scale with E
-      d.material = material->id;
-      d.E = material->E;
+      d.material = material->material();
+      d.material_id = material->id;
     }
     d.k = spring_constants(m);
     d.spring_rule = dynamics_spring_rule(*rule);
@@ -139,8 +139,8 @@ DynamicsDesign dynamics_design(MechanismDesign design,
     }
     design.material.E = material->E;
     design.material_id = material->id;
-    d.material = material->id;
-    d.E = material->E;
+    d.material = material->material();
+    d.material_id = material->id;
   }
   if (data.spring_constants) {
     if (rule) {

@@ -126,7 +126,7 @@ class ExactSystem {
       // (scaled), and the section at the samples of the energy and the stresses.
       PhysicalCantilever section;
       section.length = length_si;
-      section.E = f.youngs_modulus;
+      section.E = f.material.E;
       section.width = f.width;
       section.thickness = f.thickness;
       if (f.width_tip > 0.0) section.width_tip = f.width_tip;
@@ -135,7 +135,7 @@ class ExactSystem {
       if (f.tapered()) {
         const int n = PhysicalCantilever::kTaperStations;
         for (int k = 0; k < n; ++k) {
-          profile.push_back(f.youngs_modulus * section.second_moment_at(length_si * k / (n - 1)) /
+          profile.push_back(f.material.E * section.second_moment_at(length_si * k / (n - 1)) /
                             (a.energy_scale() * L));
         }
       }
@@ -143,7 +143,7 @@ class ExactSystem {
         const double s_si = length_si * k / (kEnergySamples - 1);
         // (A uniform flexure keeps b.EI itself: its energy is the same number as before.)
         if (f.tapered()) {
-          b.sample_EI.push_back(f.youngs_modulus * section.second_moment_at(s_si) /
+          b.sample_EI.push_back(f.material.E * section.second_moment_at(s_si) /
                                 (a.energy_scale() * L));
         }
         b.sample_width.push_back(*section.width_at(s_si));

@@ -187,7 +187,7 @@ GeneralMechanism& GeneralMechanism::flexure(const std::string& flexure_name,
                                             const std::string& b,
                                             double width,
                                             double thickness,
-                                            double youngs_modulus,
+                                            double E,
                                             PrbmKind prbm) {
   const std::string what = "flexure '" + flexure_name + "'";
   Flexure f;
@@ -196,7 +196,7 @@ GeneralMechanism& GeneralMechanism::flexure(const std::string& flexure_name,
   f.b = parse_point_ref(b, what);
   f.width = width;
   f.thickness = thickness;
-  f.youngs_modulus = youngs_modulus;
+  f.material.E = E;
   f.prbm = prbm;
   flexures.push_back(f);
   return *this;
@@ -420,8 +420,8 @@ void GeneralMechanism::validate() const {
                          "finite and > 0 (width " +
                          fmt(f.width) + " m, thickness " + fmt(f.thickness) + " m)");
     }
-    if (!(f.youngs_modulus > 0.0) || !std::isfinite(f.youngs_modulus)) {
-      throw InvalidInput(item + ": missing or invalid Young's modulus E (" + fmt(f.youngs_modulus) +
+    if (!(f.material.E > 0.0) || !std::isfinite(f.material.E)) {
+      throw InvalidInput(item + ": missing or invalid Young's modulus E (" + fmt(f.material.E) +
                          " Pa)");
     }
     const double distance = std::hypot(pb.x - pa.x, pb.y - pa.y);

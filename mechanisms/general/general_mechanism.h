@@ -19,6 +19,8 @@
 #include <utility>
 #include <vector>
 
+#include "flexure/solver/common/section.h"
+
 namespace flexure::mechanism::general {
 
 struct Vec2 {
@@ -89,11 +91,13 @@ struct Flexure {
   std::string name;
   PointRef a;
   PointRef b;
-  double width = 0.0;           // b, out of the plane, m
-  double thickness = 0.0;       // h, in the plane, m
-  double youngs_modulus = 0.0;  // E, Pa
-  std::string material;         // the material E came from (data/materials.csv id), or empty
-  double length = 0.0;          // l, m; 0: the distance from a to b
+  double width = 0.0;      // b, out of the plane, m (at end a when tapered)
+  double thickness = 0.0;  // h, in the plane, m (at end a when tapered)
+  // Its material as the library's one Material (solver/common/section.h): E (Pa) bends it; a row
+  // of the library (`material = "steel-1095-hr"` in TOML) brings its nu, S_y and density along.
+  Material material;
+  std::string material_id;  // the data/materials.csv id of `material`, or empty (given by value)
+  double length = 0.0;      // l, m; 0: the distance from a to b
   PrbmKind prbm = PrbmKind::kSmallLengthPivot;
   FlexureModel model = FlexureModel::kPrbm;
   // auto: the largest mapped tip position error allowed, per length of the flexure (> 0).
@@ -138,10 +142,19 @@ struct Flexure {
   // The angle of its rest tangent at end a (b) from the chord a -> b: -kappa0 l/2 (+kappa0 l/2).
   double end_angle_from_chord(double chord, int end) const;
 
-  double flexural_rigidity() const {
-    return youngs_modulus * width * thickness * thickness * thickness / 12.0;
+  // The section at end a as the library's Section: the rectangle width x thickness (validated by
+  // GeneralMechanism::validate, not here).
+  Section section() const {
+    Section s;
+    s.width = width;
+    s.thickness = thickness;
+    return s;
   }
-  double axial_rigidity() const { return youngs_modulus * width * thickness; }
+  // E b h^3/12 and E b h at end a (the product in this order: results stay bitwise as before).
+  double flexural_rigidity() const {
+    return material.E * width * thickness * thickness * thickness / 12.0;
+  }
+  double axial_rigidity() const { return material.E * width * thickness; }
 };
 
 struct LinearSpring {
@@ -230,7 +243,7 @@ struct GeneralMechanism {
                             const std::string& b,
                             double width,
                             double thickness,
-                            double youngs_modulus,
+                            double E,
                             PrbmKind prbm);
   GeneralMechanism& linear_spring(const std::string& name,
                                   const std::string& a,

@@ -8,6 +8,7 @@
 
 #include "flexure/io/toml_files.h"
 #include "flexure/mechanisms/general/general_analysis.h"
+#include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/solver/common/status.h"
 
 namespace flexure::mechanism::general {
@@ -23,7 +24,7 @@ TEST(GeneralMechanismToml, HowellBistableSwitchExampleReproducesTable11_2) {
   ASSERT_EQ(m.bodies.size(), 4u);
   ASSERT_EQ(m.flexures.size(), 1u);
   EXPECT_NEAR(m.flexures[0].thickness, 2.3e-3, 1e-15);
-  EXPECT_NEAR(m.flexures[0].youngs_modulus, 1.4e9, 1e-3);
+  EXPECT_NEAR(m.flexures[0].material.E, 1.4e9, 1e-3);
   EXPECT_NEAR(m.input.stop, 33.0 * kDeg, 1e-15);
   const GeneralPrbmResult r = solve_general_prbm(m);
   ASSERT_TRUE(r.converged()) << r.message;
@@ -90,6 +91,28 @@ TEST(GeneralMechanismToml, ValidDescriptionSolvesToItsClosedForm) {
   ASSERT_EQ(r.points.size(), 3u);
   EXPECT_NEAR(r.points[2].input_load, K * 10 * kDeg, 1e-10 * K);
   EXPECT_NEAR(r.points[2].energy, 0.5 * K * std::pow(10 * kDeg, 2), 1e-10 * K);
+}
+
+// `material = "NAME"` gives the flexure the library row's whole Material (data/materials.csv,
+// Howell Tables C.5 and C.1: 1095 HR steel, E 206.8 GPa, S_y 460 MPa, 7800 kg/m^3) and its id; a
+// flexure's own E is a Material with E alone.
+TEST(GeneralMechanismToml, MaterialKeyGivesTheWholeMaterial) {
+  const MaterialGrade& row = find_material("steel-1095-hr");
+  const GeneralMechanism m = parse_general_mechanism_toml(
+      pendulum("thickness = \"0.5 mm\"\nmaterial = \"steel-1095-hr\"\n"), "m.toml");
+  const Flexure& f = m.flexures.at(0);
+  EXPECT_EQ(f.material_id, "steel-1095-hr");
+  EXPECT_EQ(f.material.E, row.E);
+  ASSERT_TRUE(f.material.yield_strength && row.yield_strength);
+  EXPECT_EQ(*f.material.yield_strength, *row.yield_strength);
+  EXPECT_EQ(f.material.density, row.density);
+  const double EI = row.E * 5e-3 * std::pow(0.5e-3, 3) / 12.0;
+  EXPECT_NEAR(f.flexural_rigidity(), EI, 1e-14 * EI);
+  const GeneralMechanism given =
+      parse_general_mechanism_toml(pendulum("thickness = \"0.5 mm\"\nE = \"2 GPa\"\n"), "m.toml");
+  EXPECT_EQ(given.flexures.at(0).material.E, 2e9);
+  EXPECT_TRUE(given.flexures.at(0).material_id.empty());
+  EXPECT_FALSE(given.flexures.at(0).material.yield_strength.has_value());
 }
 
 TEST(GeneralMechanismToml, CurvedAndTaperedFlexureKeys) {

@@ -58,7 +58,7 @@ void expect_same(const GeneralMechanism& a, const GeneralMechanism& b) {
     EXPECT_EQ(fa.b.text(), fb.b.text());
     EXPECT_EQ(fa.width, fb.width);
     EXPECT_EQ(fa.thickness, fb.thickness);
-    EXPECT_EQ(fa.youngs_modulus, fb.youngs_modulus);
+    EXPECT_EQ(fa.material.E, fb.material.E);
     EXPECT_EQ(fa.prbm, fb.prbm);
     EXPECT_EQ(fa.model, fb.model);
     EXPECT_EQ(fa.extensible, fb.extensible);

@@ -95,7 +95,7 @@ TEST(DynamicsInverse, Table5SpringsAreTwiceTable2Formulas) {
     for (int i = 0; i < 3; ++i) {
       if (d.pivots[i] == 'p') continue;
       const double gamma_K_theta = d.pivots[i] == 'l' ? 0.85 * 2.65 : 1.0;
-      const double EI = d.E * d.width_b * std::pow(d.h[i], 3) / 12.0;
+      const double EI = d.material.E * d.width_b * std::pow(d.h[i], 3) / 12.0;
       const double k_table2 = row.c[i] * gamma_K_theta * EI / d.l[i];
       // The factor 2 (docs/dynamics.md "Spring constants") holds for every pivot of Table 5.
       EXPECT_NEAR(d.k[i], 2.0 * k_table2, kSpringTolerance * d.k[i])

@@ -56,7 +56,7 @@ TEST(GeneralExamples, LinearMotionFlexureIsHowells5_10) {
   const GeneralMechanism m = example("double_parallelogram_stage.toml");
   ASSERT_EQ(m.flexures.size(), 4u);
   for (const Flexure& f : m.flexures) {
-    EXPECT_NEAR(f.flexural_rigidity() / f.youngs_modulus, 2.99e-13, 0.005e-13) << f.name;
+    EXPECT_NEAR(f.flexural_rigidity() / f.material.E, 2.99e-13, 0.005e-13) << f.name;
     EXPECT_NEAR(2 * 0.85 * 2.65 * f.flexural_rigidity() / f.length, 0.18, 0.005) << f.name;
     EXPECT_NEAR(f.flexural_rigidity(), kEI, 1e-12 * kEI);
   }
@@ -247,7 +247,7 @@ TEST(GeneralExamples, HowellPartiallyCompliantFourBarIsEquation6_171) {
   EXPECT_NEAR(I3 / std::pow(kIn, 4), 2.7e-6, 0.05e-6);
   EXPECT_NEAR(I4 / std::pow(kIn, 4), 3.3e-7, 0.05e-7);
   for (const Flexure& f : m.flexures) {
-    EXPECT_NEAR(f.youngs_modulus, E, 1e-6 * E) << f.name;
+    EXPECT_NEAR(f.material.E, E, 1e-6 * E) << f.name;
   }
   // theta3o = 43.8 deg, theta4o = 112.8 deg (eqs. 6.163, 6.164) at theta2 = 90 deg.
   const FourBar::Angles o = fb.at(kPi / 2);

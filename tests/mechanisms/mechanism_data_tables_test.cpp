@@ -174,7 +174,7 @@ TEST(MechanismDataTables, PaperTable5And6) {
   EXPECT_EQ(d.h[1], 0.0);
   EXPECT_DOUBLE_EQ(d.l[2], 24.0e-3);
   EXPECT_DOUBLE_EQ(d.width_b, 25.4e-3);
-  EXPECT_DOUBLE_EQ(d.E, 207e9);
+  EXPECT_DOUBLE_EQ(d.material.E, 207e9);
   EXPECT_EQ(d.F_nom_paper, 109.2944);
   EXPECT_EQ(d.Phi_paper, 1.0827);
   const dynamics::CfsmDesign& first = dynamics::cfsm_designs().front();

@@ -31,8 +31,8 @@ MechanismSpec steel_20N() {
   MechanismSpec s;
   s.force = 20.0;
   s.stroke = 10e-3;
-  s.E = 200e9;
-  s.yield_strength = 1200e6;
+  s.material.E = 200e9;
+  s.material.yield_strength = 1200e6;
   s.safety_factor = 1.5;
   s.length = {30e-3, 150e-3};
   s.width = MechanismSpec::free_range();
@@ -45,8 +45,8 @@ MechanismSpec spring_steel_25lbf() {
   MechanismSpec s;
   s.force = 25.0 * kPoundForce;
   s.stroke = 4.0 * kInch;
-  s.E = 30e6 * kPsi;
-  s.yield_strength = 167e3 * kPsi;
+  s.material.E = 30e6 * kPsi;
+  s.material.yield_strength = 167e3 * kPsi;
   s.safety_factor = 1.5;
   s.length = {10.0 * kInch, 20.0 * kInch};
   s.width = MechanismSpec::free_range();

@@ -94,7 +94,7 @@ MechanismSpec example_1() {
   MechanismSpec s;
   s.force = 25.0 * kPoundForce;
   s.stroke = 4.0 * kInch;
-  s.E = 30.0e6 * kPsi;
+  s.material.E = 30.0e6 * kPsi;
   s.safety_factor = 1.2;
   s.length = {12.0 * kInch, 15.0 * kInch};
   s.width = {3.0 * kInch, 5.0 * kInch};
@@ -109,7 +109,8 @@ TEST(MechanismSynthesis, ExampleOneGivesTheThesisDesign) {
   // "b = 8.99 in" at h = 0.04 in: the thesis used lpp-a's lambda 1.097 (lpp-b's is 1.0936).
   const cfm::CfmResult lpp_b = model_of("lpp-b");
   EXPECT_NEAR(
-      width_for_force(force_coefficient(lpp_b), spec.force, spec.E, 0.04 * kInch, 15.0 * kInch) /
+      width_for_force(
+          force_coefficient(lpp_b), spec.force, spec.material.E, 0.04 * kInch, 15.0 * kInch) /
           kInch,
       8.99 * std::pow(1.097 / lpp_b.lambda, 2),
       0.01);
@@ -165,7 +166,7 @@ TEST(MechanismSynthesis, FreeRangesFollowFromTheForce) {
 // names the strength needed.
 TEST(MechanismSynthesis, ExampleOneWithAWeakMaterialNamesTheStrengthNeeded) {
   MechanismSpec spec = example_1();
-  spec.yield_strength = 150.0 * kKsi;
+  spec.material.yield_strength = 150.0 * kKsi;
   const MechanismDesignReport r = design_mechanisms(spec);
   ASSERT_TRUE(r.designs.empty());
   ASSERT_FALSE(r.rejected.empty());
@@ -212,8 +213,8 @@ TEST(MechanismSynthesis, ExampleTwoHasNoInPlaneSssDesign) {
   MechanismSpec s;
   s.force = 3e-3;
   s.stroke = 7.5e-3;
-  s.E = 110e9;
-  s.yield_strength = 552e6;
+  s.material.E = 110e9;
+  s.material.yield_strength = 552e6;
   s.safety_factor = 1.1;
   s.length = {0.15, 0.15};
   s.width = {1e-3, 20e-3};
@@ -241,8 +242,8 @@ MechanismSpec example_3(double h_max_inch) {
   MechanismSpec s;
   s.force = 100.0 * kPoundForce;
   s.stroke = 6.0 * kInch;
-  s.E = 30.0e6 * kPsi;
-  s.yield_strength = 200.0 * kKsi;
+  s.material.E = 30.0e6 * kPsi;
+  s.material.yield_strength = 200.0 * kKsi;
   s.safety_factor = 1.0;
   s.length = {24.0 * kInch, 24.0 * kInch};
   s.width = {5.0 * kInch, 5.0 * kInch};
@@ -304,7 +305,7 @@ TEST(MechanismSynthesis, OutOfPlaneWidestFlexureTakesTheWidestWidth) {
   MechanismSpec s;
   s.force = 10.0;
   s.stroke = 25e-3;
-  s.E = 200e9;
+  s.material.E = 200e9;
   s.safety_factor = 1.5;
   s.length = {0.08, 0.1};
   s.thickness = {1e-6, 30e-3};
@@ -333,7 +334,7 @@ TEST(MechanismSynthesis, AConfigurationDoesNotDropOutAtSixteenPercent) {
     MechanismSpec s;
     s.force = 10.0;
     s.stroke = stroke;
-    s.E = 200e9;
+    s.material.E = 200e9;
     s.safety_factor = 1.5;
     s.length = {0.1, 0.1};
     s.width = {1e-3, 10e-3};
@@ -351,7 +352,7 @@ TEST(MechanismSynthesis, ExactRefinementMustMeetTheFloor) {
   MechanismSpec s;
   s.force = 10.0;
   s.stroke = 36.5e-3;
-  s.E = 200e9;
+  s.material.E = 200e9;
   s.safety_factor = 1.5;
   s.length = {0.1, 0.1};
   s.width = {1e-3, 10e-3};
@@ -400,7 +401,7 @@ TEST(MechanismSynthesis, RefusesInconsistentSpecifications) {
 // rounded: 1 %).
 TEST(MechanismSynthesis, ThesisRuleDesignsShortOfTheSafetyFactorAreNamed) {
   MechanismSpec spec = example_1();
-  spec.yield_strength = 170.0 * kKsi;
+  spec.material.yield_strength = 170.0 * kKsi;
   const MechanismDesignReport r = design_mechanisms(spec);
   ASSERT_FALSE(r.designs.empty());
   const std::vector<SafetyShortfall> short_of = designs_short_of_safety_factor(r, 1.2);

@@ -50,6 +50,25 @@ def test_spec_is_built_by_keyword_and_validated():
         flexure.MechanismSpec(**EXAMPLE_1, strok=1.0)
 
 
+def test_spec_takes_a_material_object_and_gives_the_same_designs():
+    # The same specification with its material as a Material: the same designs, to the bit, and
+    # the material's other fields carried onto every design; E beside a Material is refused.
+    by_value = flexure.MechanismSpec(**EXAMPLE_1, yield_strength=170e3 * PSI)
+    steel = flexure.Material(E=EXAMPLE_1["E"], yield_strength=170e3 * PSI, density=7850.0)
+    spec = flexure.MechanismSpec(**{k: v for k, v in EXAMPLE_1.items() if k != "E"},
+                                 material=steel)
+    assert spec.E == by_value.E and spec.yield_strength == by_value.yield_strength
+    assert spec.material.density == 7850.0 and spec.material_id == ""
+    a, b = flexure.design_mechanisms(by_value), flexure.design_mechanisms(spec)
+    assert [d.subclass for d in a.designs] == [d.subclass for d in b.designs]
+    assert [d.thicknesses for d in a.designs] == [d.thicknesses for d in b.designs]
+    assert all(d.design.material.density == 7850.0 for d in b.designs)
+    with pytest.raises(flexure.InvalidInput, match="not both"):
+        flexure.MechanismSpec(**EXAMPLE_1, material=steel)
+    with pytest.raises(flexure.InvalidInput, match="give the material"):
+        flexure.MechanismSpec(**{k: v for k, v in EXAMPLE_1.items() if k != "E"})
+
+
 def test_designs_equal_the_command_lines(cli):
     report = flexure.design_mechanisms(flexure.MechanismSpec(**EXAMPLE_1))
     j = cli.json("design", "mechanism", *cli_args(EXAMPLE_1))

@@ -101,6 +101,29 @@ def test_parallel_guide_exact_stiffness_is_24_EI_over_L_cubed():
     assert F / x == pytest.approx(24 * EI / L**3, rel=1e-4)
 
 
+def test_flexure_takes_a_material_object():
+    # material=Material(...) instead of E=: the same stiffness 24 EI/L^3 (the E is the Material's);
+    # E and material together, or neither, are refused naming the flexure.
+    L, b, h = 50 * MM, 10 * MM, 0.5 * MM
+    steel = flexure.Material(E=200e9, nu=0.29, yield_strength=1.2e9, density=7850.0)
+    g = (flexure.GeneralMechanism("guide")
+         .body("ground", {"L": (0.0, 0.0), "R": (20 * MM, 0.0)})
+         .body("shuttle", {"L": (0.0, L), "R": (20 * MM, L)})
+         .flexure("left", "ground.L", "shuttle.L", width=b, thickness=h, material=steel,
+                  prbm=flexure.PrbmKind.fixed_guided)
+         .flexure("right", "ground.R", "shuttle.R", width=b, thickness=h, material=steel,
+                  prbm=flexure.PrbmKind.fixed_guided)
+         .input(flexure.InputCoordinate.x, "shuttle.L", start=0.0, stop=1e-3 * L, count=5))
+    by_E = flexure.solve_general_exact(parallel_guide(L, 20 * MM, b, h, 200e9, 1e-3 * L))
+    by_material = flexure.solve_general_exact(g)
+    assert list(by_material.input_load) == list(by_E.input_load)
+    base = flexure.GeneralMechanism("x").body("a", {"P": (0.0, 0.0)}).body("b", {"P": (0.0, L)})
+    with pytest.raises(flexure.InvalidInput, match="'f'.*one of them"):
+        base.flexure("f", "a.P", "b.P", width=b, thickness=h, E=200e9, material=steel)
+    with pytest.raises(flexure.InvalidInput, match="'f'.*one of them"):
+        base.flexure("f", "a.P", "b.P", width=b, thickness=h)
+
+
 def test_parallel_guide_chain_flexures_meet_the_exact_model():
     # Howell's chain algorithm per flexure (FlexureModel.chain) on the shipped parallel guide's
     # Delrin strips (docs/examples/parallel_guide.toml: l = 22 mm, b = 7 mm, h = 0.8 mm,

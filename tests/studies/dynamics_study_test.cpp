@@ -23,6 +23,8 @@
 #include <vector>
 
 #include "flexure/benchmarks/studies/dynamics_study_file.h"
+#include "flexure/mechanisms/builtin_designs.h"
+#include "flexure/mechanisms/materials_fatigue.h"
 #include "flexure/solver/common/status.h"
 #include "tests/support/cli_test_support.h"
 
@@ -39,6 +41,28 @@ DynamicsStudyOptions options(std::vector<double> omegas) {
   o.omegas = std::move(omegas);
   o.history_omegas = {0.0, 31.416};
   return o;
+}
+
+// A material for the springs (`flexure dynamics --material`): the design holds the library row's
+// whole Material and its id, and its springs k = EI/L (pure bending, Howell eq. 5.14) scale with
+// E alone against the same strips in Table 5's E of 207 GPa.
+TEST(DynamicsDesignMaterial, SpringsScaleWithTheMaterialsModulus) {
+  const MaterialGrade& ss = find_material("ss-301-cr");
+  const DynamicsDesign table5 =
+      dynamics::builtin_dynamics_design("2B-lplm", mechanism::SpringRule::kPureBending);
+  const DynamicsDesign steel =
+      dynamics::builtin_dynamics_design("2B-lplm", mechanism::SpringRule::kPureBending, &ss);
+  EXPECT_FALSE(table5.material.has_value());
+  EXPECT_TRUE(table5.material_id.empty());
+  ASSERT_TRUE(steel.material.has_value());
+  EXPECT_EQ(steel.material->E, ss.E);
+  EXPECT_EQ(steel.material->yield_strength, ss.yield_strength);
+  EXPECT_EQ(steel.material_id, "ss-301-cr");
+  const double E_table5 = dynamics::find_cfsm_design("2B-lplm").material.E;
+  EXPECT_EQ(E_table5, 207e9);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(steel.k[i], table5.k[i] * ss.E / E_table5, 1e-12 * table5.k[i]) << "pivot " << i;
+  }
 }
 
 TEST(DynamicsStudy, StrokeAndPreloadArePercentagesOfTheLinkLengths) {
