@@ -115,7 +115,7 @@ void add_physical(J& out, const BeamInput& input, const PhysicalResults& r) {
   out["length_m"] = r.length;
   if (input.physical) {
     const PhysicalCantilever& b = *input.physical;
-    out["E_Pa"] = b.E;
+    out["E_Pa"] = b.material.E;
     out["I_m4"] = b.second_moment();
     // The rigidity solved with: E I, or E I/(1 - nu^2) with the plate modulus.
     out["EI_Nm2"] = r.modulus.empty() ? b.flexural_rigidity()
@@ -134,9 +134,11 @@ void add_physical(J& out, const BeamInput& input, const PhysicalResults& r) {
       out["qy_N_per_m"] = b.total_qy();  // including the self-weight
       out["q_follower_N_per_m"] = b.q_follower;
       if (b.extensible) {
-        out["EA_N"] = b.E * b.area().value_or(0.0);
-        out["GAs_N"] =
-            b.shear_coefficient * b.E / (2.0 * (1.0 + b.nu.value_or(0.0))) * b.area().value_or(0.0);
+        // An extensible beam has nu (validate()); the product in PhysicalCantilever::to_chain's
+        // order.
+        out["EA_N"] = b.material.E * b.area().value_or(0.0);
+        out["GAs_N"] = b.shear_coefficient * b.material.E / (2.0 * (1.0 + b.material.nu)) *
+                       b.area().value_or(0.0);
       }
     }
   }

@@ -322,31 +322,67 @@ void require_positive(double value, const char* what) {
   }
 }
 
+// The checks validate() makes before the section's, shared with set_section() so that a front
+// end's messages come in one order.
+void validate_length_and_modulus(const PhysicalCantilever& beam) {
+  require_positive(beam.length, "--length (beam length, m)");
+  require_positive(beam.material.E, "--E (Young's modulus, Pa)");
+}
+
+void require_nu_in_range(double nu) {
+  if (!(nu > -1.0 && nu < 0.5)) {
+    throw InvalidInput(fmt::format("--nu must be in (-1, 0.5) (got {:g})", nu));
+  }
+}
+
 }  // namespace
 
-void PhysicalCantilever::validate() const {
-  require_positive(length, "--length (beam length, m)");
-  require_positive(E, "--E (Young's modulus, Pa)");
+void PhysicalCantilever::set_section(std::optional<double> I,
+                                     std::optional<double> width,
+                                     std::optional<double> thickness) {
+  validate_length_and_modulus(*this);
   if (I.has_value() == (width.has_value() || thickness.has_value())) {
     throw InvalidInput(
         "the section is either --I (area moment of inertia, m^4) or --width and --thickness "
         "(rectangle, I = b h^3/12): give exactly one of them");
   }
+  section = Section{};
   if (I) {
-    require_positive(*I, "--I (area moment of inertia, m^4)");
-  } else {
-    if (!width || !thickness) {
-      throw InvalidInput("a rectangular section needs both --width and --thickness");
-    }
-    require_positive(*width, "--width (section width, m)");
-    require_positive(*thickness, "--thickness (section thickness in the plane of bending, m)");
+    section.shape = Section::Shape::kGeneral;
+    section.I = *I;
+    return;
   }
+  if (!width || !thickness) {
+    throw InvalidInput("a rectangular section needs both --width and --thickness");
+  }
+  // Unchecked here: validate() names a bad width or thickness by its flag.
+  section.shape = Section::Shape::kRectangle;
+  section.width = *width;
+  section.thickness = *thickness;
+}
+
+void PhysicalCantilever::validate() const {
+  validate_length_and_modulus(*this);
+  if (rectangle()) {
+    require_positive(section.width, "--width (section width, m)");
+    require_positive(section.thickness,
+                     "--thickness (section thickness in the plane of bending, m)");
+  } else {
+    require_positive(section.I, "--I (area moment of inertia, m^4)");
+    // A general section's thickness is 0 where unknown; given, it is checked as a rectangle's.
+    if (section.thickness != 0.0) {
+      require_positive(section.thickness,
+                       "--thickness (section thickness in the plane of bending, m)");
+    }
+  }
+  // What no flag gives: an I on a rectangle (Section::I), a width on a general section.
+  section.validate();
   require_finite(Fx, "--Fx (tip force along the undeformed beam, N)");
   require_finite(Fy, "--Fy (tip force perpendicular to the undeformed beam, N)");
   require_finite(M, "--M (tip moment, N m)");
-  if (yield_strength) {
-    require_positive(*yield_strength, "--yield-strength (Pa)");
-    if (!thickness) {
+  if (material.yield_strength) {
+    require_positive(*material.yield_strength, "--yield-strength (Pa)");
+    if (!section.section_modulus()) {
       throw InvalidInput(
           "--yield-strength needs the stress, and the stress M c/I needs the thickness: give the "
           "section as --width and --thickness instead of --I");
@@ -355,46 +391,50 @@ void PhysicalCantilever::validate() const {
   require_finite(qx, "--qx (distributed load along the beam, N/m)");
   require_finite(qy, "--qy (distributed load across the beam, N/m)");
   require_finite(q_follower, "--pressure (follower pressure, N/m)");
-  if ((density || extensible) && !area()) {
+  if ((material.density || extensible) && !area()) {
     throw InvalidInput(
         "--density and --extensible need the section's area: give the section as --width and "
         "--thickness");
   }
-  if (density) require_positive(*density, "--density (kg/m^3)");
+  if (material.density) require_positive(*material.density, "--density (kg/m^3)");
   if (!(std::isfinite(g) && g >= 0.0)) {
     throw InvalidInput(fmt::format("--g must be a finite number >= 0 (got {:g})", g));
   }
   if (extensible) {
-    if (!nu) throw InvalidInput("--extensible needs Poisson's ratio --nu");
-    if (!(*nu > -1.0 && *nu < 0.5)) {
-      throw InvalidInput(fmt::format("--nu must be in (-1, 0.5) (got {:g})", *nu));
-    }
+    if (!nu_given) throw InvalidInput("--extensible needs Poisson's ratio --nu");
+    require_nu_in_range(material.nu);
     if (!(shear_coefficient > 0.0 && shear_coefficient <= 1.0)) {
       throw InvalidInput(
           fmt::format("--shear-coefficient must be in (0, 1] (got {:g})", shear_coefficient));
     }
-  } else if (nu && !plate_given) {
+  } else if (nu_given && !plate_given) {
     throw InvalidInput("--nu is used with --extensible or --plate on/auto only");
   }
   if (plate != PlateRule::kOff) {
-    if (!nu) {
+    if (!nu_given) {
       throw InvalidInput(fmt::format(
           "--plate {} needs Poisson's ratio --nu (or a --material whose row gives nu): the "
           "plate modulus is E/(1 - nu^2)",
           to_string(plate)));
     }
-    if (!(*nu > -1.0 && *nu < 0.5)) {
-      throw InvalidInput(fmt::format("--nu must be in (-1, 0.5) (got {:g})", *nu));
-    }
-    if (plate == PlateRule::kAuto && !(width && thickness)) {
+    require_nu_in_range(material.nu);
+    if (plate == PlateRule::kAuto && !rectangle()) {
       throw InvalidInput(
           "--plate auto needs the strip's width and thickness (the Searle parameter b^2/(R h)): "
           "give the section as --width and --thickness, or choose --plate on or off");
     }
   }
+  // Given with --plate off, nu is unused but still a Poisson's ratio.
+  if (nu_given) require_nu_in_range(material.nu);
+  if (!nu_given && material.nu != Material{}.nu) {
+    throw InvalidInput(fmt::format(
+        "Material::nu = {:g} is set but not given (nu_given is false, so it would be ignored): "
+        "give Poisson's ratio by PhysicalCantilever::set_nu",
+        material.nu));
+  }
   require_finite(curvature, "--curvature (stress-free curvature, 1/m)");
   if (tapered()) {
-    if (!width || !thickness) {
+    if (!rectangle()) {
       throw InvalidInput(
           "a taper (--width-tip, --thickness-tip) varies the rectangle: give the section as "
           "--width and --thickness");
@@ -419,6 +459,8 @@ void PhysicalCantilever::validate() const {
                                     std::pair{prescribed.theta, "--tip-angle (rad)"}}) {
     if (value) require_finite(*value, what);
   }
+  // The rest of the Material (its E, S_y, density and a given nu are checked above).
+  material.validate();
   const double EI = flexural_rigidity();
   if (!(std::isfinite(EI) && EI > 0.0)) {
     throw InvalidInput(
@@ -429,30 +471,29 @@ void PhysicalCantilever::validate() const {
 }
 
 std::optional<double> PhysicalCantilever::width_at(double s) const {
-  if (!width) return std::nullopt;
+  if (!rectangle()) return std::nullopt;
   const double t = std::clamp(s / length, 0.0, 1.0);
-  return width_tip ? *width + t * (*width_tip - *width) : *width;
+  return width_tip ? section.width + t * (*width_tip - section.width) : section.width;
 }
 
 std::optional<double> PhysicalCantilever::thickness_at(double s) const {
-  if (!thickness) return std::nullopt;
+  if (section.thickness == 0.0) return std::nullopt;  // a general section without h
   const double t = std::clamp(s / length, 0.0, 1.0);
-  return thickness_tip ? *thickness + t * (*thickness_tip - *thickness) : *thickness;
+  return thickness_tip ? section.thickness + t * (*thickness_tip - section.thickness)
+                       : section.thickness;
 }
 
 double PhysicalCantilever::second_moment_at(double s) const {
-  if (I) return *I;
-  return width_at(s).value_or(0.0) * std::pow(thickness_at(s).value_or(0.0), 3) / 12.0;
+  if (!rectangle() || !tapered()) return second_moment();
+  return Section{Section::Shape::kRectangle, *width_at(s), *thickness_at(s)}.second_moment();
 }
 
 double PhysicalCantilever::bending_modulus() const {
   const bool applied = plate == PlateRule::kOn || (plate == PlateRule::kAuto && plate_applied);
-  return applied && nu ? E / (1.0 - *nu * *nu) : E;
+  return applied && nu_given ? material.E / (1.0 - material.nu * material.nu) : material.E;
 }
 
-double PhysicalCantilever::second_moment() const {
-  return I ? *I : width.value_or(0.0) * std::pow(thickness.value_or(0.0), 3) / 12.0;
-}
+double PhysicalCantilever::second_moment() const { return section.second_moment(); }
 
 BeamProblem PhysicalCantilever::to_problem(BeamProblem problem) const {
   validate();
@@ -511,8 +552,8 @@ SegmentChain PhysicalCantilever::to_chain(EndCondition end,
     for (int k = 0; k < n; ++k) {
       const double at = length * k / (n - 1);
       segment.EI_profile.push_back(second_moment_at(at) / root_I);
-      if (density) {
-        const double weight = *density * *width_at(at) * *thickness_at(at) * g;
+      if (material.density) {
+        const double weight = *material.density * *width_at(at) * *thickness_at(at) * g;
         segment.q_profile.push_back(
             {qx * force_scale * length, (qy - weight) * force_scale * length});
       }
@@ -520,8 +561,9 @@ SegmentChain PhysicalCantilever::to_chain(EndCondition end,
   }
   if (extensible) {
     const double A = area().value_or(0.0);
-    segment.EA = E * A * force_scale;
-    segment.GAs = shear_coefficient * E / (2.0 * (1.0 + *nu)) * A * force_scale;
+    // (Not material.shear_modulus() times k: k E/(2 (1 + nu)) keeps the product's order.)
+    segment.EA = material.E * A * force_scale;
+    segment.GAs = shear_coefficient * material.E / (2.0 * (1.0 + material.nu)) * A * force_scale;
   }
   for (const auto& [value, name] : {std::pair{chain.tip_load.Fx, "Fx L^2/EI"},
                                     std::pair{chain.tip_load.Fy, "Fy L^2/EI"},
@@ -608,14 +650,15 @@ PhysicalBeamSolution solve_cantilever(BeamMethod method,
   SectionSpan span;
   span.s0 = 0.0;
   span.s1 = 1.0;
-  if (beam.thickness) span.section_modulus = beam.second_moment() / (0.5 * *beam.thickness);
+  span.section_modulus = beam.section.section_modulus();  // I/c, c = h/2
   span.fibre_area = beam.area();
   if (beam.tapered()) span.tapered = &beam;
   if (beam.extensible) {
     span.area = beam.area();
-    span.EA = beam.E * beam.area().value_or(0.0);
+    span.EA = beam.material.E * beam.area().value_or(0.0);
   }
-  out.physical = evaluate(out.solution, scale, {span}, beam.yield_strength, shape_points, step);
+  out.physical =
+      evaluate(out.solution, scale, {span}, beam.material.yield_strength, shape_points, step);
   if (out.solution.method != BeamMethod::kPrbm) thin_shape(out.solution, shape_points, step);
   return out;
 }
@@ -642,7 +685,7 @@ void PhysicalCantilever::fibre_sections(int points,
                                         std::vector<double>& area) const {
   modulus.clear();
   area.clear();
-  if (!width || !thickness || points < 2) return;
+  if (!rectangle() || points < 2) return;
   for (int k = 0; k < points; ++k) {
     const double at = length * k / (points - 1);
     modulus.push_back(second_moment_at(at) / (0.5 * *thickness_at(at)));
@@ -658,8 +701,13 @@ PhysicalBeamSolution solve_physical_beam(BeamMethod method,
   beam.plate_applied = false;
   if (beam.plate != PlateRule::kAuto) {
     PhysicalBeamSolution out = solve_cantilever(method, beam, problem);
-    out.physical.modulus = {
-        choose_modulus(beam.plate, beam.E, beam.nu, beam.width, beam.thickness, {}, "the beam")};
+    out.physical.modulus = {choose_modulus(beam.plate,
+                                           beam.material.E,
+                                           beam.given_nu(),
+                                           beam.width_at(0.0),
+                                           beam.thickness_at(0.0),
+                                           {},
+                                           "the beam")};
     return out;
   }
   // auto: the Searle parameter at the largest curvature |M|/EI of the beam solved with E decides
@@ -667,8 +715,13 @@ PhysicalBeamSolution solve_physical_beam(BeamMethod method,
   PhysicalBeamSolution first = solve_cantilever(method, beam, problem);
   if (!first.solution.converged()) return first;
   const double curvature = first.physical.max_moment / beam.flexural_rigidity();
-  const ModulusChoice choice = choose_modulus(
-      PlateRule::kAuto, beam.E, beam.nu, beam.width, beam.thickness, curvature, "the beam");
+  const ModulusChoice choice = choose_modulus(PlateRule::kAuto,
+                                              beam.material.E,
+                                              beam.given_nu(),
+                                              beam.width_at(0.0),
+                                              beam.thickness_at(0.0),
+                                              curvature,
+                                              "the beam");
   if (!choice.plate) {
     first.physical.modulus = {choice};
     return first;

@@ -17,25 +17,32 @@ namespace flexure {
 // An initially straight cantilever of uniform section, clamped at the origin along +x, loaded at
 // its free end. Fx and Fy are in the beam's frame: +x along the undeformed beam from the clamp, +y
 // perpendicular; M counter-clockwise.
+//
+// Its cross-section and material are the library's one Section and Material (solver/common/
+// section.h, as a PhysicalChain's segments have them): the section is the rectangle b x h (width
+// out of the plane of bending, thickness in it: I = b h^3/12) or a general section given by I,
+// with its thickness h where known (the stress M c/I needs c = h/2); the material gives E, the
+// yield strength S_y for the safety factor, the density of the self-weight and Poisson's ratio.
+// Poisson's ratio is used only where given (nu_given: the extensible beam, plate on or auto): set
+// it with set_nu(), which keeps material.nu and nu_given together. A front end that reads I, width
+// and thickness separately builds the section with set_section() (which refuses a section given
+// twice or half a rectangle); validate() names a bad value by its flag (--width, --E, ...).
 struct PhysicalCantilever {
-  double length = 0.0;                   // L, m
-  double E = 0.0;                        // Young's modulus, Pa
-  std::optional<double> I;               // m^4 (or width and thickness)
-  std::optional<double> width;           // b, m
-  std::optional<double> thickness;       // h, m (in the plane of bending)
-  double Fx = 0.0;                       // N
-  double Fy = 0.0;                       // N
-  double M = 0.0;                        // N m
-  std::optional<double> yield_strength;  // Pa
+  double length = 0.0;    // L, m
+  Section section;        // at the clamp for a tapered beam; m, m^4
+  Material material;      // E and S_y in Pa, density in kg/m^3, nu
+  bool nu_given = false;  // whether material.nu was given (see set_nu)
+  double Fx = 0.0;        // N
+  double Fy = 0.0;        // N
+  double M = 0.0;         // N m
   // Distributed loads and extension (docs/distributed-loads.md, docs/extensible.md); any of them
   // makes the beam a one-segment chain (shooting or chain method).
-  double qx = 0.0;                // dead load per unit length along the undeformed beam, N/m
-  double qy = 0.0;                // dead load per unit length perpendicular to it, N/m
-  double q_follower = 0.0;        // pressure along the deflected normal, N/m
-  std::optional<double> density;  // kg/m^3: self-weight rho A g along -y (needs the rectangle)
-  double g = 9.80665;             // m/s^2
-  bool extensible = false;        // EA = E A, GAs = k E A / (2 (1 + nu)) (needs the rectangle)
-  std::optional<double> nu;       // Poisson's ratio (extensible, plate on or auto)
+  double qx = 0.0;          // dead load per unit length along the undeformed beam, N/m
+  double qy = 0.0;          // dead load per unit length perpendicular to it, N/m
+  double q_follower = 0.0;  // pressure along the deflected normal, N/m
+  // material.density (kg/m^3) adds the self-weight rho A g along -y (needs the rectangle).
+  double g = 9.80665;       // m/s^2
+  bool extensible = false;  // EA = E A, GAs = k E A / (2 (1 + nu)) (needs the rectangle and nu)
   double shear_coefficient = 5.0 / 6.0;  // Timoshenko's k of the rectangle
   // The bending modulus (docs/plate-modulus.md): off E, on E/(1 - nu^2), auto by the Searle
   // parameter b^2/(R h) at the beam's largest curvature. plate_applied is the decision the
@@ -60,32 +67,55 @@ struct PhysicalCantilever {
 
   // Whether any of the above is given.
   bool beyond_elastica() const {
-    return qx != 0.0 || qy != 0.0 || q_follower != 0.0 || density.has_value() || extensible;
+    return qx != 0.0 || qy != 0.0 || q_follower != 0.0 || material.density.has_value() ||
+           extensible;
   }
   // A stress-free curvature or a taper: not Howell's straight uniform beam (a one-segment chain,
   // solved by the shooting or chain method).
   bool shaped() const { return curvature != 0.0 || tapered(); }
   bool tapered() const { return width_tip.has_value() || thickness_tip.has_value(); }
-  // width thickness, where the section is a rectangle (at the clamp, for a tapered beam).
-  std::optional<double> area() const {
-    if (width && thickness) return *width * *thickness;
-    return std::nullopt;
+  bool rectangle() const { return section.shape == Section::Shape::kRectangle; }
+
+  // Poisson's ratio where given (nu_given), else empty: what the extensible beam and the plate
+  // rules read. set_nu gives it (or, empty, returns material.nu to Material's default).
+  std::optional<double> given_nu() const {
+    return nu_given ? std::optional<double>(material.nu) : std::nullopt;
   }
+  void set_nu(std::optional<double> nu) {
+    nu_given = nu.has_value();
+    material.nu = nu.value_or(Material{}.nu);
+  }
+  // The section from the values a front end reads one by one, each given or not: I alone (a
+  // general section without a thickness), or width and thickness (the rectangle). Throws
+  // InvalidInput naming --I, --width and --thickness for neither, both, or half a rectangle; the
+  // values themselves are checked by validate() (a 0 or NaN width is refused there, naming
+  // --width). The length and material.E are checked first, as validate() checks them before the
+  // section: set them before calling it, and the messages come in validate()'s order.
+  void set_section(std::optional<double> I,
+                   std::optional<double> width,
+                   std::optional<double> thickness);
+
+  // b h, where the section is a rectangle (at the clamp, for a tapered beam).
+  std::optional<double> area() const { return section.area(); }
   // The rectangle at arc length s (m) of a tapered beam, linear from the clamp to the tip; the
-  // root's for a beam without a taper. Width and thickness as given (nullopt with --I).
+  // root's for a beam without a taper. The width of a rectangle only; the thickness where known.
   std::optional<double> width_at(double s) const;
   std::optional<double> thickness_at(double s) const;
-  // b h^3/12 at s (I for a section given by I).
+  // b h^3/12 at s (I for a general section).
   double second_moment_at(double s) const;
   // The dead load per unit length including the self-weight, N/m (at the clamp for a taper, whose
   // self-weight varies along it: self_weight_profile()).
-  double total_qy() const { return qy - (density ? *density * area().value_or(0.0) * g : 0.0); }
+  double total_qy() const {
+    return qy - (material.density ? *material.density * area().value_or(0.0) * g : 0.0);
+  }
 
-  // Throws InvalidInput naming the bad field: lengths, modulus and section > 0 and finite, I or
-  // (width and thickness) but not both, finite loads, a yield strength > 0 with a section to
-  // compute a stress in.
+  // Throws InvalidInput naming the bad field by its flag (--length, --E, --I, --width, ...):
+  // length, modulus and section > 0 and finite, finite loads, a yield strength > 0 with a thickness
+  // to compute a stress with, a density or extension with the rectangle, nu where a rule needs it
+  // and in (-1, 0.5), a taper of the rectangle; then Section::validate() and Material::validate()
+  // for what no flag gives (an I on a rectangle: Section::I), and material.nu set without set_nu().
   void validate() const;
-  // I, or b h^3 / 12 for the rectangle.
+  // section.second_moment(): I, or b h^3/12 for the rectangle.
   double second_moment() const;
   // E, or E/(1 - nu^2) when the plate modulus applies (plate on, or auto decided for it).
   double bending_modulus() const;
@@ -106,7 +136,7 @@ struct PhysicalCantilever {
   SegmentChain to_chain() const { return to_chain(end, prescribed); }
   // The section modulus I/c (m^3) and area (m^2) at `points` equally spaced arc lengths from the
   // clamp to the tip (the section there, for a taper): the fibre stresses N/A -+ m c/I of shapes
-  // (`flexure path --shapes`). Both empty without the rectangle (a section given by I).
+  // (`flexure path --shapes`). Both empty without the rectangle (a general section).
   void fibre_sections(int points, std::vector<double>& modulus, std::vector<double>& area) const;
   // Stations of a taper's EI_profile (and self-weight profile): a width taper makes EI linear in s
   // (exact with any count); a thickness taper cubic, whose linear interpolation between 1025

@@ -212,7 +212,7 @@ void print_report(const BeamInput& input,
         "m^2); tip load Fx = {:g} N, Fy = {:g} N, M = {:g} N m\n",
         to_string(solution.method),
         b.length,
-        b.E,
+        b.material.E,
         b.second_moment(),
         // The rigidity solved with (E I, or E I/(1 - nu^2) with the plate modulus).
         physical && !physical->modulus.empty()
@@ -379,7 +379,7 @@ BeamFatigue beam_fatigue(const BeamArgs& args, const BeamInput& input, const Phy
   f.material = args.fatigue.fatigue_material_of(args.physical.material, r.yield_strength);
   const PhysicalCantilever& b = *input.physical;
   f.strength = part_fatigue_strength(
-      f.material, f.options, equivalent_diameter_rectangle(*b.width, *b.thickness));
+      f.material, f.options, equivalent_diameter_rectangle(b.section.width, b.section.thickness));
   f.check = check_load_cycle(r.max_stress.value_or(0.0), f.cycle, f.material, f.strength);
   return f;
 }
@@ -442,7 +442,7 @@ void run_beam(const BeamArgs& args, const BeamRequest& request) {
   }
   const BeamInput input = make_input(args, request);
   if (!args.cycle.empty()) {
-    if (!input.physical || !input.physical->thickness) {
+    if (!input.physical || !input.physical->rectangle()) {
       throw InvalidInput(
           "--cycle checks a physical cantilever with a rectangular section: give --length, --E "
           "(or --material), --width and --thickness");

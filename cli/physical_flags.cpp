@@ -123,59 +123,66 @@ PhysicalCantilever PhysicalFlags::parse() const {
   beam.length = io::parse_quantity(length, Dimension::kLength, "--length").si;
   const io::Quantity modulus =
       E.empty() ? io::Quantity{grade->E, ""} : io::parse_quantity(E, Dimension::kStress, "--E");
-  beam.E = modulus.si;
+  beam.material.E = modulus.si;
   if (grade != nullptr && !E.empty()) {
-    warn(fmt::format(
-        "--E {:.6g} Pa replaces the {:.6g} Pa of material '{}'", beam.E, grade->E, grade->id));
+    warn(fmt::format("--E {:.6g} Pa replaces the {:.6g} Pa of material '{}'",
+                     beam.material.E,
+                     grade->E,
+                     grade->id));
   }
-  beam.I = quantity_option(I, Dimension::kSecondMoment, "--I");
-  beam.width = quantity_option(width, Dimension::kLength, "--width");
-  beam.thickness = quantity_option(thickness, Dimension::kLength, "--thickness");
+  // The section's values as given; which of them are given is checked with the length and
+  // modulus by set_section() below, in validate()'s order.
+  const std::optional<double> I_given = quantity_option(I, Dimension::kSecondMoment, "--I");
+  const std::optional<double> width_given = quantity_option(width, Dimension::kLength, "--width");
+  const std::optional<double> thickness_given =
+      quantity_option(thickness, Dimension::kLength, "--thickness");
   beam.Fx = quantity_option(Fx, Dimension::kForce, "--Fx").value_or(0.0);
   beam.Fy = quantity_option(Fy, Dimension::kForce, "--Fy").value_or(0.0);
   beam.M = quantity_option(M, Dimension::kMoment, "--M").value_or(0.0);
-  beam.yield_strength = quantity_option(yield_strength, Dimension::kStress, "--yield-strength");
+  beam.material.yield_strength =
+      quantity_option(yield_strength, Dimension::kStress, "--yield-strength");
   beam.qx = quantity_option(qx, Dimension::kForcePerLength, "--qx").value_or(0.0);
   beam.qy = quantity_option(qy, Dimension::kForcePerLength, "--qy").value_or(0.0);
   beam.q_follower =
       quantity_option(q_follower, Dimension::kForcePerLength, "--q-follower").value_or(0.0);
-  beam.density = quantity_option(density, Dimension::kDensity, "--density");
+  beam.material.density = quantity_option(density, Dimension::kDensity, "--density");
   if (!g.empty()) {
-    if (!beam.density) throw InvalidInput("--g is the gravity of the self-weight; give --density");
+    if (!beam.material.density)
+      throw InvalidInput("--g is the gravity of the self-weight; give --density");
     beam.g = io::parse_quantity(g, Dimension::kAcceleration, "--g").si;
   }
   beam.extensible = extensible;
   beam.curvature = quantity_option(curvature, Dimension::kCurvature, "--curvature").value_or(0.0);
   beam.width_tip = quantity_option(width_tip, Dimension::kLength, "--width-tip");
   beam.thickness_tip = quantity_option(thickness_tip, Dimension::kLength, "--thickness-tip");
-  if (!nu.empty()) beam.nu = plain_number(nu, "--nu");
+  if (!nu.empty()) beam.set_nu(plain_number(nu, "--nu"));
   if (!plate.empty()) {
     beam.plate = plate_rule_from_string(plate, "--plate");
     beam.plate_given = true;
   }
   // The material's Poisson's ratio where the plate modulus needs one and --nu is not given.
-  if (beam.plate != PlateRule::kOff && !beam.nu && grade != nullptr) beam.nu = grade->nu;
+  if (beam.plate != PlateRule::kOff && !beam.nu_given && grade != nullptr) beam.set_nu(grade->nu);
   if (!shear_coefficient.empty()) {
     if (!extensible) throw InvalidInput("--shear-coefficient is used with --extensible only");
     beam.shear_coefficient = plain_number(shear_coefficient, "--shear-coefficient");
   }
   if (grade != nullptr) {
     const std::optional<double> strength = grade->static_strength();
-    if (beam.yield_strength && strength && *beam.yield_strength != *strength) {
+    std::optional<double>& given_strength = beam.material.yield_strength;
+    if (given_strength && strength && *given_strength != *strength) {
       warn(fmt::format("--yield-strength {:.6g} Pa replaces the {:.6g} Pa of material '{}'",
-                       *beam.yield_strength,
+                       *given_strength,
                        *strength,
                        grade->id));
     }
     // The material's strength where the command reports a safety factor and the section gives a
     // stress (a thickness).
-    if (!beam.yield_strength && with_yield_strength && !thickness.empty()) {
-      beam.yield_strength = strength;
-    }
+    if (!given_strength && with_yield_strength && !thickness.empty()) given_strength = strength;
   }
+  beam.set_section(I_given, width_given, thickness_given);
   beam.validate();
   warn(io::modulus_warning(modulus, "--E"));
-  if (beam.thickness) warn(io::thickness_warning(*beam.thickness, beam.length, "--thickness"));
+  if (thickness_given) warn(io::thickness_warning(*thickness_given, beam.length, "--thickness"));
   return beam;
 }
 

@@ -126,9 +126,8 @@ class ExactSystem {
       // (scaled), and the section at the samples of the energy and the stresses.
       PhysicalCantilever section;
       section.length = length_si;
-      section.E = f.material.E;
-      section.width = f.width;
-      section.thickness = f.thickness;
+      section.material.E = f.material.E;
+      section.section = f.section();
       if (f.width_tip > 0.0) section.width_tip = f.width_tip;
       if (f.thickness_tip > 0.0) section.thickness_tip = f.thickness_tip;
       std::vector<double> profile;

@@ -220,8 +220,8 @@ TEST(BeamRequest, ABeamGivenWholeKeepsTheSettings) {
   BeamInput in = make_beam_input(r);
   PhysicalCantilever beam;
   beam.length = 0.1;
-  beam.E = 200e9;
-  beam.I = 1e-12;
+  beam.material.E = 200e9;
+  beam.section = Section::general(1e-12);
   beam.Fy = 1.0;
   add_physical_beam(in, beam);
   ASSERT_TRUE(in.physical.has_value());

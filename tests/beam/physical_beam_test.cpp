@@ -38,11 +38,12 @@ TEST(PhysicalBeam, EqualsTheNondimensionalSolveScaledByHand) {
   for (int trial = 0; trial < 40; ++trial) {
     PhysicalCantilever b;
     b.length = 0.01 + 0.5 * unit(rng);
-    b.E = 1e9 + 2e11 * unit(rng);
-    b.width = 0.002 + 0.02 * unit(rng);
-    b.thickness = b.length * (0.002 + 0.05 * unit(rng));
-    const double I = *b.width * std::pow(*b.thickness, 3) / 12.0;
-    const double EI = b.E * I;
+    b.material.E = 1e9 + 2e11 * unit(rng);
+    const double width = 0.002 + 0.02 * unit(rng);
+    const double thickness = b.length * (0.002 + 0.05 * unit(rng));
+    b.section = Section::rectangle(width, thickness);
+    const double I = width * std::pow(thickness, 3) / 12.0;
+    const double EI = b.material.E * I;
     // Loads of Howell's moderate range: alpha2 in (0.1, 4), n in (-2, 2), mu in (-1, 1).
     const double alpha2 = 0.1 + 3.9 * unit(rng);
     const double n = -2.0 + 4.0 * unit(rng);
@@ -50,7 +51,7 @@ TEST(PhysicalBeam, EqualsTheNondimensionalSolveScaledByHand) {
     b.Fy = alpha2 * EI / (b.length * b.length);
     b.Fx = -n * b.Fy;
     b.M = mu * EI / b.length;
-    b.yield_strength = 1e9;
+    b.material.yield_strength = 1e9;
     const PhysicalBeamSolution got = solve_physical_beam(BeamMethod::kElliptic, b, {});
     ASSERT_TRUE(got.solution.converged()) << got.solution.message;
     // One status, the solution's (not a copy).
@@ -71,7 +72,7 @@ TEST(PhysicalBeam, EqualsTheNondimensionalSolveScaledByHand) {
     const double moment_scale = EI / b.length;
     EXPECT_NEAR(p.root_moment, ref.root_moment * moment_scale, 1e-10 * moment_scale) << trial;
     ASSERT_TRUE(p.max_stress.has_value());
-    EXPECT_NEAR(*p.max_stress, p.max_moment * 0.5 * *b.thickness / I, 1e-12 * *p.max_stress);
+    EXPECT_NEAR(*p.max_stress, p.max_moment * 0.5 * thickness / I, 1e-12 * *p.max_stress);
     EXPECT_NEAR(*p.safety_factor, 1e9 / *p.max_stress, 1e-12 * *p.safety_factor);
     EXPECT_GE(p.max_moment, std::fabs(p.root_moment) * (1 - 1e-15));
     EXPECT_GE(p.max_moment, std::fabs(b.M) * (1 - 1e-12));
@@ -119,8 +120,8 @@ TEST(PhysicalBeam, HowellAluminiumRodSection292) {
   // P = 17.3839 N, a/l = 0.7383564, b/l = 0.6103718 (elliptic integrals, 8 digits).
   PhysicalCantilever rod;
   rod.length = 0.1;
-  rod.E = 71.7e9;
-  rod.I = std::numbers::pi * std::pow(0.002, 4) / 64.0;
+  rod.material.E = 71.7e9;
+  rod.section = Section::general(std::numbers::pi * std::pow(0.002, 4) / 64.0);
   rod.Fy = 17.3839;
   const PhysicalBeamSolution got = solve_physical_beam(BeamMethod::kElliptic, rod, {});
   ASSERT_TRUE(got.solution.converged());
@@ -223,14 +224,30 @@ TEST(PhysicalBeam, AxialLoadHasNoLoadRatioAndBadInputNamesTheField) {
   PhysicalCantilever b = strip(0, 1, 0);
   b.length = -1;
   EXPECT_NE(message(b).find("--length"), std::string::npos);
-  b = strip(0, 1, 0);
-  b.I = 1e-12;
-  EXPECT_NE(message(b).find("exactly one"), std::string::npos);
+  // A section given twice, or half a rectangle, is refused where the values are read one by one.
+  auto section_message = [](std::optional<double> I,
+                            std::optional<double> width,
+                            std::optional<double> thickness) -> std::string {
+    PhysicalCantilever b = strip(0, 1, 0);
+    try {
+      b.set_section(I, width, thickness);
+    } catch (const InvalidInput& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_NE(section_message(1e-12, 0.01, std::nullopt).find("exactly one"), std::string::npos);
+  EXPECT_NE(section_message(1e-12, std::nullopt, 0.0005).find("exactly one"), std::string::npos);
+  EXPECT_NE(section_message({}, {}, {}).find("exactly one"), std::string::npos);
+  EXPECT_NE(section_message({}, 0.01, {}).find("needs both --width and --thickness"),
+            std::string::npos);
+  EXPECT_EQ(section_message(1e-12, {}, {}), "");
+  EXPECT_EQ(section_message({}, 0.01, 0.0005), "");
   b = strip(0, 1, 0);
   b.Fy = std::nan("");
   EXPECT_NE(message(b).find("--Fy"), std::string::npos);
   b = strip(0, 1, 0);
-  b.thickness.reset();
+  b.section.thickness = 0.0;
   EXPECT_NE(message(b).find("--thickness"), std::string::npos);
 }
 

@@ -29,11 +29,10 @@ namespace {
 PhysicalCantilever steel_strip(double width, double thickness) {
   PhysicalCantilever b;
   b.length = 0.1;
-  b.E = 200e9;
-  b.nu = 0.3;
+  b.material.E = 200e9;
+  b.set_nu(0.3);
   b.plate_given = true;
-  b.width = width;
-  b.thickness = thickness;
+  b.section = Section::rectangle(width, thickness);
   return b;
 }
 
@@ -42,14 +41,14 @@ TEST(PlateBeam, ForceControlScalesExactly) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int trial = 0; trial < 12; ++trial) {
     PhysicalCantilever off = steel_strip(0.01 + 0.1 * unit(rng), 0.0005 + 0.001 * unit(rng));
-    off.nu = 0.1 + 0.38 * unit(rng);
+    off.set_nu(0.1 + 0.38 * unit(rng));
     const double EI = off.flexural_rigidity();
     off.Fy = (0.2 + 3.0 * unit(rng)) * EI / (off.length * off.length);
     off.Fx = (-1.0 + 2.0 * unit(rng)) * off.Fy;
     off.M = (-0.5 + unit(rng)) * EI / off.length;
     PhysicalCantilever on = off;
     on.plate = PlateRule::kOn;
-    const double k = 1.0 / (1.0 - *off.nu * *off.nu);
+    const double k = 1.0 / (1.0 - off.material.nu * off.material.nu);
     on.Fx *= k;
     on.Fy *= k;
     on.M *= k;
@@ -63,7 +62,7 @@ TEST(PlateBeam, ForceControlScalesExactly) {
       EXPECT_NEAR(b.physical.root_moment / a.physical.root_moment, k, 1e-11);
       ASSERT_EQ(b.physical.modulus.size(), 1u);
       EXPECT_TRUE(b.physical.modulus[0].plate);
-      EXPECT_NEAR(b.physical.modulus[0].effective_E, off.E * k, 1e-15 * off.E);
+      EXPECT_NEAR(b.physical.modulus[0].effective_E, off.material.E * k, 1e-15 * off.material.E);
       EXPECT_FALSE(a.physical.modulus[0].plate);
     }
   }
@@ -101,13 +100,13 @@ TEST(PlateBeam, PureBendingAndAutoByTheSearleParameter) {
     PhysicalCantilever b = steel_strip(width, 0.00131);
     b.plate = PlateRule::kAuto;
     const double I = width * std::pow(0.00131, 3) / 12.0;
-    b.M = b.E * I / R;  // curvature 1/R with the beam modulus
+    b.M = b.material.E * I / R;  // curvature 1/R with the beam modulus
     const PhysicalBeamSolution s = solve_physical_beam(BeamMethod::kShooting, b, BeamProblem{});
     ASSERT_TRUE(s.solution.converged());
     const ModulusChoice& c = s.physical.modulus.at(0);
     EXPECT_NEAR(*c.beta, width * width / (R * 0.00131), 1e-9 * *c.beta);
     EXPECT_EQ(c.plate, plate) << width;
-    const double E_eff = plate ? b.E / 0.91 : b.E;
+    const double E_eff = plate ? b.material.E / 0.91 : b.material.E;
     EXPECT_NEAR(s.physical.theta0, b.M * b.length / (E_eff * I), 1e-9);
   }
 }
@@ -124,16 +123,16 @@ std::string message_of(const std::function<void()>& f) {
 
 TEST(PlateBeam, ClearErrors) {
   PhysicalCantilever b = steel_strip(0.127, 0.00131);
-  b.nu.reset();
+  b.set_nu(std::nullopt);
   b.plate = PlateRule::kOn;
   b.Fy = 1.0;
   EXPECT_NE(message_of([&] { b.validate(); }).find("--plate on needs Poisson's ratio --nu"),
             std::string::npos);
   PhysicalCantilever general;
   general.length = 0.1;
-  general.E = 200e9;
-  general.I = 1e-12;
-  general.nu = 0.3;
+  general.material.E = 200e9;
+  general.section = Section::general(1e-12);
+  general.set_nu(0.3);
   general.plate = PlateRule::kAuto;
   general.plate_given = true;
   EXPECT_NE(message_of([&] { general.validate(); }).find("--plate auto needs the strip's width"),

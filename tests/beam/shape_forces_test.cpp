@@ -20,9 +20,8 @@ namespace {
 PhysicalCantilever tutorial_strip() {
   PhysicalCantilever b;
   b.length = 0.05;
-  b.E = 200e9;
-  b.width = 0.01;
-  b.thickness = 0.0005;
+  b.material.E = 200e9;
+  b.section = Section::rectangle(0.01, 0.0005);
   b.Fx = -2.5;
   b.Fy = 4.330127;
   b.M = 0.01;

@@ -126,9 +126,8 @@ TEST(GeneralPointResults, ExactFlexureStressIsAStandaloneBeamsUnderTheReportedEn
       const double gx = -f.on_b.fx, gy = -f.on_b.fy;
       PhysicalCantilever beam;
       beam.length = l;
-      beam.E = E;
-      beam.width = b;
-      beam.thickness = h;
+      beam.material.E = E;
+      beam.section = Section::rectangle(b, h);
       beam.Fx = gy;   // along the flexure
       beam.Fy = -gx;  // across it, to its left
       beam.M = -f.on_b.moment;
@@ -257,9 +256,8 @@ TEST(GeneralCurvedFlexures, ExactCurvedAndTaperedCantileverIsTheStandaloneBeam) 
         const FlexurePointResult& f = p.flexures.at(0);
         PhysicalCantilever beam;
         beam.length = l;
-        beam.E = E;
-        beam.width = b;
-        beam.thickness = h;
+        beam.material.E = E;
+        beam.section = Section::rectangle(b, h);
         beam.curvature = kappa;
         if (thickness_tip > 0.0) beam.thickness_tip = thickness_tip;
         // The tip loads: what the body puts on the flexure, in the clamp's frame (global here).
@@ -526,9 +524,8 @@ TEST(GeneralCurvedFlexures, SeededRandomCurvedTaperedCantileversAreTheStandalone
     const FlexurePointResult& f = p.flexures.at(0);
     PhysicalCantilever beam;
     beam.length = l;
-    beam.E = E;
-    beam.width = b;
-    beam.thickness = h;
+    beam.material.E = E;
+    beam.section = Section::rectangle(b, h);
     beam.curvature = kappa0 / l;
     beam.thickness_tip = taper * h;
     beam.Fx = -f.on_b.fx;

@@ -14,9 +14,8 @@ constexpr double kPsi = kPound / (kInch * kInch);
 inline PhysicalCantilever strip(double Fx, double Fy, double M) {
   PhysicalCantilever b;
   b.length = 0.05;
-  b.E = 200e9;
-  b.width = 0.01;
-  b.thickness = 0.0005;
+  b.material.E = 200e9;
+  b.section = Section::rectangle(0.01, 0.0005);
   b.Fx = Fx;
   b.Fy = Fy;
   b.M = M;
