@@ -303,8 +303,9 @@ Segment read_segment(const toml::table& t,
           toml_fail(r.source, line_of(t), fmt::format("{}.{} must be > 0", where, name));
         }
       }
-      const double I =
-          section.I ? *section.I : *section.width * std::pow(*section.thickness, 3) / 12.0;
+      const double I = section.I
+                           ? *section.I
+                           : Section::rectangle(*section.width, *section.thickness).second_moment();
       s.EI = section.E->si * I;
     } else {
       s.EI = EI.value_or(1.0);
@@ -614,7 +615,8 @@ ChainFile parse_chain_file(const std::string& text, const std::string& source) {
     // E, I = b h^3/12 or the given I, and the area b h or the given A (the same numbers as the
     // Section and Material of `file.segments` below).
     const double E = keys.E->si;
-    const double I = keys.I ? *keys.I : *keys.width * std::pow(*keys.thickness, 3) / 12.0;
+    const double I =
+        keys.I ? *keys.I : Section::rectangle(*keys.width, *keys.thickness).second_moment();
     std::optional<double> area = keys.area;
     if (keys.width) area = *keys.width * *keys.thickness;
     auto& segment = std::get<FlexibleSegment>(chain.segments[k]);

@@ -1,5 +1,7 @@
 #include "flexure/mechanisms/general/catalogue_general.h"
 
+#include <fmt/format.h>
+
 #include <array>
 #include <cmath>
 #include <string>
@@ -64,20 +66,20 @@ GeneralMechanism general_from_design(const MechanismDesign& design, int points) 
   };
   std::vector<Item> items;
   auto s_pivot = [&](int pivot, Role ra, Role rb, double x, double l) {
-    const std::string c = "c" + std::to_string(pivot);
+    const std::string c = fmt::format("c{}", pivot);
     pts.push_back({ra, c, x - l / 2});
     pts.push_back({rb, c, x + l / 2});
     items.push_back({true, pivot, ra, rb, c, c, PrbmKind::kSmallLengthPivot});
   };
   auto pin = [&](int pivot, Role ra, Role rb, double x) {
-    const std::string p = "p" + std::to_string(pivot);
+    const std::string p = fmt::format("p{}", pivot);
     pts.push_back({ra, p, x});
     pts.push_back({rb, p, x});
     items.push_back({false, pivot, ra, rb, p, p, PrbmKind::kSmallLengthPivot});
   };
   // A fixed-pinned segment clamped into `clamp` at x_clamp, pinned to `pinned` at x_pin.
   auto l_segment = [&](int pivot, Role clamp, double x_clamp, Role pinned, double x_pin) {
-    const std::string c = "c" + std::to_string(pivot), p = "p" + std::to_string(pivot);
+    const std::string c = fmt::format("c{}", pivot), p = fmt::format("p{}", pivot);
     pts.push_back({clamp, c, x_clamp});
     pts.push_back({pinned, p, x_pin});
     items.push_back({true, pivot, clamp, pinned, c, p, PrbmKind::kFixedPinned});
@@ -147,7 +149,7 @@ GeneralMechanism general_from_design(const MechanismDesign& design, int points) 
     const int pivot = inv ? 4 - it.pivot : it.pivot;
     if (it.flexure) {
       const JointDesign& jd = j[static_cast<std::size_t>(it.pivot - 1)];
-      m.flexure("f" + std::to_string(pivot),
+      m.flexure(fmt::format("f{}", pivot),
                 ref(it.ra, it.pa),
                 ref(it.rb, it.pb),
                 jd.width,
@@ -155,7 +157,7 @@ GeneralMechanism general_from_design(const MechanismDesign& design, int points) 
                 d.material.E,
                 it.prbm);
     } else {
-      m.pin("p" + std::to_string(pivot), ref(it.ra, it.pa), ref(it.rb, it.pb));
+      m.pin(fmt::format("p{}", pivot), ref(it.ra, it.pa), ref(it.rb, it.pb));
     }
   }
   m.slider("guide", "ground.S", "slider.S", 0.0);
@@ -191,7 +193,7 @@ std::string general_flexure_name(const MechanismDesign& design, int pivot) {
     throw InvalidInput("general_flexure_name: pivot must be 1, 2 or 3");
   }
   if (design.joints[static_cast<std::size_t>(pivot - 1)].type == PivotType::kPin) return "";
-  return "f" + std::to_string(design.inverted ? 4 - pivot : pivot);
+  return fmt::format("f{}", design.inverted ? 4 - pivot : pivot);
 }
 
 }  // namespace flexure::mechanism::general

@@ -150,11 +150,9 @@ struct Flexure {
     s.thickness = thickness;
     return s;
   }
-  // E b h^3/12 and E b h at end a (the product in this order: results stay bitwise as before).
-  double flexural_rigidity() const {
-    return material.E * width * thickness * thickness * thickness / 12.0;
-  }
-  double axial_rigidity() const { return material.E * width * thickness; }
+  // E I = E b h^3/12 and E A = E b h at end a, of section() and material.
+  double flexural_rigidity() const { return material.E * section().second_moment(); }
+  double axial_rigidity() const { return material.E * section().area().value_or(0.0); }
 };
 
 struct LinearSpring {
