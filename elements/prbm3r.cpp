@@ -64,10 +64,8 @@ constexpr std::array<const char*, 4> kSetNames = {"su", "su-moment", "su-force",
 const char* to_string(Prbm3rConstantSet set) { return enum_name(kSetNames, set); }
 
 Prbm3rConstantSet prbm3r_constant_set_from_string(std::string_view name) {
-  const std::string lower = to_lower(name);
-  for (std::size_t i = 0; i < kSetNames.size(); ++i) {
-    if (lower == kSetNames[i]) return static_cast<Prbm3rConstantSet>(i);
-  }
+  // Case-insensitive, and a refusal in the words `--constants` always used (not enum_from_name's).
+  if (const auto set = enum_find<Prbm3rConstantSet>(kSetNames, to_lower(name))) return *set;
   throw InvalidInput(fmt::format(
       "PR-3R constants '{}' are unknown (allowed: {})", name, fmt::join(kSetNames, ", ")));
 }

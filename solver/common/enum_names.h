@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <string_view>
 
 #include "flexure/solver/common/status.h"
@@ -18,15 +19,22 @@ const char* enum_name(const std::array<const char*, N>& names, Enum value) {
   return names[static_cast<std::size_t>(value)];
 }
 
+// The value named exactly `name`, or empty (for a parser whose refusal says more).
+template <typename Enum, std::size_t N>
+std::optional<Enum> enum_find(const std::array<const char*, N>& names, std::string_view name) {
+  for (std::size_t i = 0; i < N; ++i) {
+    if (name == names[i]) return static_cast<Enum>(i);
+  }
+  return std::nullopt;
+}
+
 // The value named exactly `name`; throws InvalidInput "WHAT 'NAME' is unknown (allowed: a, b,
 // ...)".
 template <typename Enum, std::size_t N>
 Enum enum_from_name(const std::array<const char*, N>& names,
                     std::string_view name,
                     std::string_view what) {
-  for (std::size_t i = 0; i < N; ++i) {
-    if (name == names[i]) return static_cast<Enum>(i);
-  }
+  if (const std::optional<Enum> value = enum_find<Enum>(names, name)) return *value;
   throw InvalidInput(
       fmt::format("{} '{}' is unknown (allowed: {})", what, name, fmt::join(names, ", ")));
 }
